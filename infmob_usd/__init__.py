@@ -1,0 +1,33 @@
+"""infmob-usd: procedural, simulation-ready articulated objects as OpenUSD and URDF.
+
+>>> import infmob_usd
+>>> obj = infmob_usd.generate("kitchen_cabinet", seed=3)
+>>> folder = obj.save("out")        # out/kitchen_cabinet_000003/
+"""
+
+from .api import generate, get_category, list_categories
+from .errors import (
+    GeometryError,
+    InfmobError,
+    ModelError,
+    OutputError,
+    ParameterError,
+    UnknownCategoryError,
+)
+from .model import ArticulatedObject
+
+from ._version import __version__
+
+__all__ = [
+    "ArticulatedObject",
+    "GeometryError",
+    "InfmobError",
+    "ModelError",
+    "OutputError",
+    "ParameterError",
+    "UnknownCategoryError",
+    "__version__",
+    "generate",
+    "get_category",
+    "list_categories",
+]

@@ -1,0 +1,82 @@
+"""The public API: ``generate``, ``list_categories``, ``get_category``."""
+
+from __future__ import annotations
+
+from types import ModuleType
+from typing import Any
+
+from . import physical
+from .errors import ParameterError, UnknownCategoryError
+from .model import ArticulatedObject, build
+from .seeding import streams
+
+TEXTURE_SIZES = tuple(2**k for k in range(4, 13))
+
+
+def list_categories() -> list[str]:
+    """Every category id, in the order they are documented."""
+    from .categories import CATEGORIES
+
+    return list(CATEGORIES)
+
+
+def get_category(category: str) -> ModuleType:
+    """The module of a category; unknown ids raise a message listing the valid ones."""
+    from .categories import CATEGORIES
+
+    if not isinstance(category, str) or category not in CATEGORIES:
+        raise UnknownCategoryError(
+            f"unknown category {category!r}; valid categories: {', '.join(CATEGORIES)}"
+        )
+    return CATEGORIES[category]
+
+
+def check_texture_size(size: Any) -> int:
+    if isinstance(size, bool) or not isinstance(size, int) or size not in TEXTURE_SIZES:
+        raise ParameterError(
+            f"texture size must be a power of two from {TEXTURE_SIZES[0]} to {TEXTURE_SIZES[-1]},"
+            f" got {size!r}"
+        )
+    return size
+
+
+def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides: Any) -> ArticulatedObject:
+    """Generate one object: a pure function of ``(category, seed, overrides)``.
+
+    Parameters
+    ----------
+    category : str
+        One of :func:`list_categories`.
+    seed : int
+        Non-negative; the same seed gives the same object, byte for byte.
+    texture_size : int
+        Edge of every texture map in pixels (power of two, 16..4096).
+    **overrides
+        Parameter values (see ``infmob params CATEGORY``); validated against the
+        category schema.
+    """
+    from .materials import FAMILIES, sample_look, synthesize
+
+    module = get_category(category)
+    check_texture_size(texture_size)
+    rng = streams(category, seed)
+    params = module.SCHEMA.sample(rng["params"], overrides)
+    bp = module.build(params, rng["structure"], rng["geometry"])
+    physical.rest_on_ground(bp)
+    looks = {slot: sample_look(family, rng["materials"]) for slot, family in bp.materials.items()}
+    used = sorted({p.material for part in bp.parts.values() for p in part.pieces})
+    densities = {slot: FAMILIES[bp.materials[slot]].density for slot in used if slot in bp.materials}
+    links, joints = build(bp, densities)
+    looks = {slot: looks[slot] for slot in used}
+    textures = {slot: synthesize(look, texture_size) for slot, look in looks.items()}
+    return ArticulatedObject(
+        category=category,
+        seed=int(seed),
+        params=params,
+        overrides=module.SCHEMA.validate(overrides),
+        links=links,
+        joints=joints,
+        materials=looks,
+        textures=textures,
+        texture_size=texture_size,
+    )

@@ -1,0 +1,128 @@
+"""What a category hands the core: parts in world coordinates, joints, growth rules.
+
+A :class:`Blueprint` is a tree of :class:`Part` s joined by
+:class:`~infmob_usd.joints.JointSpec` s, all at rest in world coordinates
+(metres, Z up, front faces +X), plus the material family of every material
+slot its pieces name. :class:`Growth` holds a category's growth rules as data:
+which children a node requires, which it may grow and with what chance, and
+which alternatives it picks between.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import ModelError
+from .geometry import Piece
+from .joints import JointSpec
+from .params import Flag
+
+
+@dataclass
+class Part:
+    """A rigid part: a unique name, a semantic label and its pieces (world space)."""
+
+    name: str
+    label: str
+    pieces: list[Piece] = field(default_factory=list)
+
+
+@dataclass
+class Blueprint:
+    """Parts and joints of one object at rest, as a category builds it."""
+
+    category: str
+    materials: dict[str, str] = field(default_factory=dict)  # slot -> family
+    parts: dict[str, Part] = field(default_factory=dict)
+    joints: list[JointSpec] = field(default_factory=list)
+
+    def add(self, name: str, label: str, pieces: Iterable[Piece]) -> str:
+        """Add a part and return its name."""
+        if name in self.parts:
+            raise ModelError(f"duplicate part name {name!r}")
+        pieces = list(pieces)
+        if not pieces:
+            raise ModelError(f"part {name!r} has no pieces")
+        self.parts[name] = Part(name, label, pieces)
+        return name
+
+    def extend(self, name: str, pieces: Iterable[Piece]) -> None:
+        """Add more pieces to an existing part."""
+        self.parts[name].pieces.extend(pieces)
+
+    def join(self, spec: JointSpec) -> None:
+        """Declare a joint; the child must not have a parent yet."""
+        for end in (spec.parent, spec.child):
+            if end not in self.parts:
+                raise ModelError(f"joint {spec.parent}->{spec.child}: no part named {end!r}")
+        if any(j.child == spec.child for j in self.joints):
+            raise ModelError(f"part {spec.child!r} already has a parent joint")
+        self.joints.append(spec)
+
+    @property
+    def root(self) -> str:
+        """The one part that is nobody's child."""
+        children = {j.child for j in self.joints}
+        roots = [n for n in self.parts if n not in children]
+        if len(roots) != 1:
+            raise ModelError(f"a blueprint needs exactly one root part, found {roots}")
+        return roots[0]
+
+    def bounds(self) -> np.ndarray:
+        """``(2, 3)`` bounds of every piece at rest."""
+        b = np.array([p.bounds for part in self.parts.values() for p in part.pieces])
+        return np.array([b[:, 0].min(0), b[:, 1].max(0)])
+
+
+@dataclass(frozen=True)
+class Rule:
+    """The growth rule of one node of a category's articulation tree.
+
+    ``required``: children it always has. ``optional``: branches it may grow,
+    with their chance (object-wide decisions, each also a ``has_<branch>``
+    parameter the user can force). ``one_of``: alternatives with weights,
+    drawn per instance from the structure stream.
+    """
+
+    required: tuple[str, ...] = ()
+    optional: dict[str, float] = field(default_factory=dict)
+    one_of: dict[str, float] = field(default_factory=dict)
+
+
+class Growth:
+    """A category's growth rules as a table, readable and printable."""
+
+    def __init__(self, **rules: Rule) -> None:
+        self.rules = rules
+
+    def flags(self) -> tuple[Flag, ...]:
+        """One ``has_<branch>`` parameter per optional branch."""
+        return tuple(
+            Flag(f"has_{branch}", doc=f"optional branch of {node}", p=p)
+            for node, rule in self.rules.items()
+            for branch, p in rule.optional.items()
+        )
+
+    def choose(self, node: str, rng: np.random.Generator) -> str:
+        """Draw one of the node's alternatives by weight."""
+        alts = self.rules[node].one_of
+        names = list(alts)
+        w = np.array([alts[n] for n in names], float)
+        return names[int(rng.choice(len(names), p=w / w.sum()))]
+
+    def table(self) -> str:
+        lines = []
+        for node, r in self.rules.items():
+            parts = []
+            if r.required:
+                parts.append("requires " + ", ".join(r.required))
+            if r.optional:
+                parts.append("may grow " + ", ".join(f"{b} ({p:g})" for b, p in r.optional.items()))
+            if r.one_of:
+                total = sum(r.one_of.values())
+                parts.append("one of " + " / ".join(f"{b} ({w / total:.2f})" for b, w in r.one_of.items()))
+            lines.append(f"{node}: " + "; ".join(parts))
+        return "\n".join(lines)

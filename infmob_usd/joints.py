@@ -1,0 +1,148 @@
+"""Joint kinds, their declaration in world space, and their expansion.
+
+A category declares a :class:`JointSpec` in world coordinates at rest: the kind,
+the parent and child parts, and one :class:`Dof` per degree of freedom (type,
+pivot, axis, limits). Simple kinds have one DoF; compound kinds are chains that
+the core expands through light dummy links (see :data:`KINDS`).
+
+Limits are radians for rotations and metres for slides. Rest is 0 and lies in
+``[lower, upper]``; a joint with a closed state has ``lower == 0`` (closed).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import ModelError
+
+SIMPLE = ("fixed", "revolute", "continuous", "prismatic")
+
+KINDS: dict[str, tuple[str, ...]] = {
+    "fixed": (),
+    "revolute": ("revolute",),
+    "continuous": ("continuous",),
+    "prismatic": ("prismatic",),
+    "revolute_prismatic": ("prismatic", "revolute"),
+    "continuous_prismatic": ("prismatic", "continuous"),
+    "limited_planar": ("prismatic", "prismatic", "revolute"),
+    "limited_floating": ("prismatic", "prismatic", "prismatic"),
+    "flip_revolute": ("revolute", "revolute"),
+}
+"""Each kind and the simple DoF chain it expands to, parent side first."""
+
+
+@dataclass(frozen=True)
+class Dof:
+    """One degree of freedom in world coordinates at rest."""
+
+    type: str  # "revolute" | "continuous" | "prismatic"
+    origin: tuple[float, float, float]
+    axis: tuple[float, float, float]
+    lower: float = 0.0
+    upper: float = 0.0
+
+    def __post_init__(self) -> None:
+        if self.type not in ("revolute", "continuous", "prismatic"):
+            raise ModelError(f"unknown DoF type {self.type!r}")
+        o, a = np.asarray(self.origin, float), np.asarray(self.axis, float)
+        if o.shape != (3,) or a.shape != (3,) or not np.isfinite(o).all() or not np.isfinite(a).all():
+            raise ModelError(f"DoF origin and axis must be finite 3-vectors, got {self.origin}, {self.axis}")
+        n = float(np.linalg.norm(a))
+        if n < 1e-9:
+            raise ModelError("DoF axis must not be zero")
+        object.__setattr__(self, "axis", tuple(float(x) for x in a / n))
+        object.__setattr__(self, "origin", tuple(float(x) for x in o))
+        if self.type == "continuous":
+            object.__setattr__(self, "lower", -math.pi)
+            object.__setattr__(self, "upper", math.pi)
+        elif not (self.lower <= 0.0 <= self.upper) or self.lower == self.upper:
+            raise ModelError(
+                f"{self.type} limits [{self.lower}, {self.upper}] must contain the rest value 0"
+                " and not be empty"
+            )
+
+
+@dataclass(frozen=True)
+class JointSpec:
+    """A joint between two parts, as a category declares it."""
+
+    kind: str
+    parent: str
+    child: str
+    dofs: tuple[Dof, ...] = ()
+    role: str = "default"
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ModelError(f"unknown joint kind {self.kind!r}; valid kinds: {', '.join(KINDS)}")
+        want = KINDS[self.kind]
+        got = tuple(d.type for d in self.dofs)
+        if got != want:
+            raise ModelError(f"{self.kind} joint {self.parent}->{self.child} needs DoFs {want}, got {got}")
+
+    @property
+    def movable(self) -> bool:
+        return self.kind != "fixed"
+
+
+V3 = Sequence[float]
+
+
+def fixed(parent: str, child: str) -> JointSpec:
+    return JointSpec("fixed", parent, child, (), "fixed")
+
+
+def revolute(parent: str, child: str, pivot: V3, axis: V3, lower: float, upper: float,
+             role: str = "hinge") -> JointSpec:
+    return JointSpec("revolute", parent, child, (Dof("revolute", pivot, axis, lower, upper),), role)
+
+
+def continuous(parent: str, child: str, pivot: V3, axis: V3, role: str = "knob") -> JointSpec:
+    return JointSpec("continuous", parent, child, (Dof("continuous", pivot, axis),), role)
+
+
+def prismatic(parent: str, child: str, origin: V3, axis: V3, lower: float, upper: float,
+              role: str = "slide") -> JointSpec:
+    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role)
+
+
+def revolute_prismatic(parent: str, child: str, pivot: V3, axis: V3, turn: tuple[float, float],
+                       slide_axis: V3, slide: tuple[float, float], role: str = "telescope") -> JointSpec:
+    """Slide along ``slide_axis`` then turn about ``axis`` through ``pivot`` (a lamp pole)."""
+    return JointSpec("revolute_prismatic", parent, child, (
+        Dof("prismatic", pivot, slide_axis, *slide), Dof("revolute", pivot, axis, *turn)), role)
+
+
+def continuous_prismatic(parent: str, child: str, pivot: V3, axis: V3, slide: tuple[float, float],
+                         role: str = "lid") -> JointSpec:
+    """Turn freely about ``axis`` and slide along it (a screw cap, a lid)."""
+    return JointSpec("continuous_prismatic", parent, child, (
+        Dof("prismatic", pivot, axis, *slide), Dof("continuous", pivot, axis)), role)
+
+
+def limited_planar(parent: str, child: str, pivot: V3, slide_axes: tuple[V3, V3],
+                   slides: tuple[tuple[float, float], tuple[float, float]], axis: V3,
+                   turn: tuple[float, float], role: str = "plate") -> JointSpec:
+    """Two bounded slides and a bounded turn (a plate in a rack)."""
+    return JointSpec("limited_planar", parent, child, (
+        Dof("prismatic", pivot, slide_axes[0], *slides[0]),
+        Dof("prismatic", pivot, slide_axes[1], *slides[1]),
+        Dof("revolute", pivot, axis, *turn)), role)
+
+
+def limited_floating(parent: str, child: str, origin: V3, axes: tuple[V3, V3, V3],
+                     slides: tuple[tuple[float, float], ...], role: str = "grate") -> JointSpec:
+    """Three bounded slides (an oven grate lifted out of its rack)."""
+    return JointSpec("limited_floating", parent, child, tuple(
+        Dof("prismatic", origin, a, *s) for a, s in zip(axes, slides)), role)
+
+
+def flip_revolute(parent: str, child: str, pivot0: V3, axis0: V3, turn0: tuple[float, float],
+                  pivot1: V3, axis1: V3, turn1: tuple[float, float], role: str = "hinge") -> JointSpec:
+    """Two hinge lines in series (a towel ring, a folding lid)."""
+    return JointSpec("flip_revolute", parent, child, (
+        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role)

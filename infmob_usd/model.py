@@ -1,0 +1,177 @@
+"""The articulated-object model: links with frames at joint pivots, simple joints.
+
+:func:`build` turns a world-space :class:`~infmob_usd.blueprint.Blueprint` into an
+:class:`ArticulatedObject`: every link frame is placed at the pivot of the joint
+that moves it (the root at the world origin), world-aligned at rest, and every
+compound joint becomes a chain of simple joints through dummy links carrying
+:data:`~infmob_usd.mass.DUMMY_MASS`. Pieces are stored in link-local metres.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ._version import __version__
+from .blueprint import Blueprint
+from .errors import ModelError
+from .geometry import Piece
+from .mass import DUMMY_INERTIA, DUMMY_MASS, inertial
+from .physical import dynamics
+
+
+@dataclass
+class Link:
+    """A rigid body. ``origin`` is its frame's world position at rest (axes = world axes)."""
+
+    name: str
+    label: str
+    origin: np.ndarray
+    pieces: list[Piece]
+    mass: float
+    com: np.ndarray  # (3,) link frame
+    inertia: np.ndarray  # (3, 3) about com, link axes
+    dummy: bool = False
+
+
+@dataclass
+class Joint:
+    """A simple joint. ``origin`` = the child link's frame (world, at rest); ``axis`` is world = local."""
+
+    name: str
+    type: str  # fixed | revolute | continuous | prismatic
+    parent: str
+    child: str
+    origin: np.ndarray
+    axis: np.ndarray
+    lower: float
+    upper: float
+    damping: float
+    friction: float
+    effort: float
+    velocity: float
+    kind: str  # the declared kind this joint belongs to (may be compound)
+    role: str
+    group: str  # the child part of the declared joint; a compound chain shares it
+
+    @property
+    def movable(self) -> bool:
+        return self.type != "fixed"
+
+
+@dataclass
+class ArticulatedObject:
+    """One generated object, complete in memory, ready to be written."""
+
+    category: str
+    seed: int
+    params: dict[str, Any]
+    overrides: dict[str, Any]
+    links: list[Link]
+    joints: list[Joint]
+    materials: dict[str, Any]  # slot -> materials.Look
+    textures: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # slot -> map -> image
+    texture_size: int = 512
+    growth: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        return f"{self.category}_{self.seed:06d}"
+
+    @property
+    def version(self) -> str:
+        return __version__
+
+    def bounds(self) -> np.ndarray:
+        """``(2, 3)`` world bounds of every piece at rest."""
+        b = np.array([p.bounds + link.origin for link in self.links for p in link.pieces])
+        return np.array([b[:, 0].min(0), b[:, 1].max(0)])
+
+    def link(self, name: str) -> Link:
+        for link in self.links:
+            if link.name == name:
+                return link
+        raise KeyError(name)
+
+    @property
+    def movable_joints(self) -> list[Joint]:
+        return [j for j in self.joints if j.movable]
+
+    def joint_kinds(self) -> dict[str, int]:
+        """Histogram of declared kinds of movable joints (a compound chain counts once)."""
+        groups = {j.group: j.kind for j in self.joints if j.movable}
+        return dict(sorted(Counter(groups.values()).items()))
+
+    def save(self, folder: str | Path) -> Path:
+        """Write the object into ``folder/<name>/`` (atomically) and return that path."""
+        from .layers import write_object
+
+        return write_object(self, Path(folder))
+
+
+def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[Joint]]:
+    """Place frames and expand compound joints. ``densities``: slot -> kg/m^3."""
+    root = bp.root
+    by_parent: dict[str, list] = {}
+    for spec in bp.joints:
+        by_parent.setdefault(spec.parent, []).append(spec)
+
+    links: list[Link] = []
+    joints: list[Joint] = []
+
+    def make_link(name: str, label: str, origin: np.ndarray, world_pieces: list[Piece],
+                  dummy: bool = False) -> None:
+        local = [p.translated(-origin) for p in world_pieces]
+        if dummy:
+            mass, com, inertia = DUMMY_MASS, np.zeros(3), np.eye(3) * DUMMY_INERTIA
+        else:
+            for p in local:
+                if p.material not in densities:
+                    raise ModelError(f"part {name!r} uses material slot {p.material!r} with no family")
+            mass, com, inertia = inertial((p, densities[p.material]) for p in local)
+        links.append(Link(name, label, origin, local, mass, com, inertia, dummy))
+
+    root_part = bp.parts[root]
+    make_link(root, root_part.label, np.zeros(3), root_part.pieces)
+    queue = [root]
+    while queue:
+        parent = queue.pop(0)
+        for spec in by_parent.get(parent, []):
+            part = bp.parts[spec.child]
+            dyn = dynamics(spec.role)
+            if spec.kind == "fixed":
+                b = np.array([p.bounds for p in part.pieces])
+                origin = (b[:, 0].min(0) + b[:, 1].max(0)) / 2
+                make_link(part.name, part.label, origin, part.pieces)
+                joints.append(Joint(f"joint_{part.name}", "fixed", parent, part.name, origin,
+                                    np.array([1.0, 0, 0]), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                    "fixed", spec.role, part.name))
+            else:
+                chain_parent = parent
+                n = len(spec.dofs)
+                for i, dof in enumerate(spec.dofs):
+                    last = i == n - 1
+                    child = part.name if last else f"{part.name}_dummy{i}"
+                    # a joint's frame is its child's frame, so every link of the chain
+                    # sits at the pivot of the DoF that moves it (axes stay world-aligned)
+                    origin = np.asarray(dof.origin, float)
+                    if last:
+                        make_link(child, part.label, origin, part.pieces)
+                    else:
+                        make_link(child, "dummy", origin, [], dummy=True)
+                    jname = f"joint_{part.name}" if n == 1 else f"joint_{part.name}_{i}"
+                    joints.append(Joint(jname, dof.type, chain_parent, child, origin,
+                                        np.asarray(dof.axis, float), float(dof.lower), float(dof.upper),
+                                        dyn.damping, dyn.friction, dyn.effort, dyn.velocity,
+                                        spec.kind, spec.role, part.name))
+                    chain_parent = child
+            queue.append(part.name)
+    reached = {link.name for link in links if not link.dummy}
+    missing = set(bp.parts) - reached
+    if missing:
+        raise ModelError(f"parts not connected to the root {root!r}: {sorted(missing)}")
+    return links, joints

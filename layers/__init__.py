@@ -1,0 +1,70 @@
+"""Every writer: USD layers, URDF + meshes, textures, semantics and metadata.
+
+:func:`write_object` writes one object folder atomically: everything goes into a
+hidden temporary folder beside the target, which is renamed into place only
+when complete, so a crash never leaves a half-written asset under its real name.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+from infmob_usd.errors import OutputError
+
+from .meta import write_metadata, write_semantics
+from .urdf import write_urdf
+from .usd import write_usd
+
+TEXTURES = "textures"
+
+
+def check_output_dir(out: Path) -> Path:
+    """Create ``out`` if needed; raise :class:`OutputError` if it cannot hold objects."""
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise OutputError(f"output path {str(out)!r} is a file; give a folder (--out DIR)")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise OutputError(f"cannot create output folder {str(out)!r}: {e.strerror}; choose another --out") from None
+    if not os.access(out, os.W_OK | os.X_OK):
+        raise OutputError(f"output folder {str(out)!r} is not writable; choose another --out")
+    return out
+
+
+def write_textures(obj, folder: Path) -> None:
+    from infmob_usd.materials import encode_png
+
+    tex = folder / TEXTURES
+    tex.mkdir()
+    for slot, maps in obj.textures.items():
+        for name, img in maps.items():
+            (tex / f"{slot}_{name}.png").write_bytes(encode_png(img))
+
+
+def write_object(obj, out: Path) -> Path:
+    """Write ``obj`` to ``out/<name>/`` and return that folder (replaced if it exists)."""
+    out = check_output_dir(out)
+    final = out / obj.name
+    tmp = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".tmp", dir=out))
+    try:
+        write_textures(obj, tmp)
+        write_usd(obj, tmp)
+        write_urdf(obj, tmp)
+        write_semantics(obj, tmp)
+        write_metadata(obj, tmp)
+        os.chmod(tmp, 0o755)
+        if final.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".old", dir=out))
+            os.replace(final, old / "x")
+            os.replace(tmp, final)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            os.replace(tmp, final)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return final
