@@ -6,7 +6,7 @@ from types import ModuleType
 from typing import Any
 
 from . import physical
-from .errors import ParameterError, UnknownCategoryError
+from .errors import ModelError, ParameterError, UnknownCategoryError
 from .model import ArticulatedObject, build
 from .seeding import streams
 
@@ -55,25 +55,39 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
         Parameter values (see ``infmob params CATEGORY``); validated against the
         category schema.
     """
-    from .materials import FAMILIES, sample_look, synthesize
-
     module = get_category(category)
     check_texture_size(texture_size)
     rng = streams(category, seed)
     params = module.SCHEMA.sample(rng["params"], overrides)
     bp = module.build(params, rng["structure"], rng["geometry"])
+    return assemble(bp, seed, rng["materials"], texture_size, params, module.SCHEMA.validate(overrides))
+
+
+def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict | None = None,
+             overrides: dict | None = None) -> ArticulatedObject:
+    """Turn a world-space blueprint into an object: ground it, frame it, dress it.
+
+    ``materials_rng`` draws one look per declared material slot (in declaration
+    order, used or not, so optional parts never reshuffle the others).
+    """
+    from .materials import FAMILIES, sample_look, synthesize
+
+    check_texture_size(texture_size)
     physical.rest_on_ground(bp)
-    looks = {slot: sample_look(family, rng["materials"]) for slot, family in bp.materials.items()}
+    looks = {slot: sample_look(family, materials_rng) for slot, family in bp.materials.items()}
     used = sorted({p.material for part in bp.parts.values() for p in part.pieces})
-    densities = {slot: FAMILIES[bp.materials[slot]].density for slot in used if slot in bp.materials}
+    missing = [slot for slot in used if slot not in bp.materials]
+    if missing:
+        raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
+    densities = {slot: FAMILIES[bp.materials[slot]].density for slot in used}
     links, joints = build(bp, densities)
     looks = {slot: looks[slot] for slot in used}
     textures = {slot: synthesize(look, texture_size) for slot, look in looks.items()}
     return ArticulatedObject(
-        category=category,
+        category=bp.category,
         seed=int(seed),
-        params=params,
-        overrides=module.SCHEMA.validate(overrides),
+        params=params or {},
+        overrides=overrides or {},
         links=links,
         joints=joints,
         materials=looks,

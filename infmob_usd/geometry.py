@@ -108,19 +108,30 @@ class Piece:
         return n / np.where(length > 0, length, 1.0)
 
     def corner_normals(self) -> np.ndarray:
-        """``(m, 3, 3)`` per face-corner normals: smooth below :data:`CREASE_DEG`."""
+        """``(m, 3, 3)`` per face-corner normals.
+
+        Each corner averages (area-weighted) the normals of the faces around its
+        vertex that lie within :data:`CREASE_DEG` of its own face, so a cylinder's
+        side is smooth and its caps stay flat.
+        """
         fn = self.face_normals()
         tri = self.vertices[self.faces]
-        area = 0.5 * np.linalg.norm(
-            np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1
-        )
-        vn = np.zeros_like(self.vertices)
-        for k in range(3):
-            np.add.at(vn, self.faces[:, k], fn * area[:, None])
-        vn /= np.maximum(np.linalg.norm(vn, axis=1, keepdims=True), 1e-12)
-        cn = vn[self.faces]  # (m, 3, 3)
-        smooth = np.einsum("mkj,mj->mk", cn, fn) >= math.cos(math.radians(CREASE_DEG))
-        return np.where(smooth[..., None], cn, fn[:, None, :])
+        area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+        vert = self.faces.ravel()  # vertex of each corner; corner c belongs to face c // 3
+        order = np.argsort(vert, kind="stable")
+        counts = np.bincount(vert, minlength=len(self.vertices))
+        start = np.concatenate([[0], np.cumsum(counts)[:-1]])
+        k = counts[vert[order]]  # group size of each sorted corner
+        a = np.repeat(order, k)  # each corner paired with every corner of its vertex
+        first = np.repeat(start[vert[order]], k)
+        b = order[first + np.arange(len(a)) - np.repeat(np.cumsum(k) - k, k)]
+        fa, fb = a // 3, b // 3
+        keep = np.einsum("ij,ij->i", fn[fa], fn[fb]) >= math.cos(math.radians(CREASE_DEG))
+        acc = np.zeros((len(vert), 3))
+        np.add.at(acc, a[keep], fn[fb[keep]] * area[fb[keep], None])
+        length = np.linalg.norm(acc, axis=1, keepdims=True)
+        acc = np.where(length > 1e-15, acc / np.maximum(length, 1e-15), fn[np.arange(len(vert)) // 3])
+        return acc.reshape(-1, 3, 3)
 
     def corner_uvs(self) -> np.ndarray:
         """``(m, 3, 2)`` box-projected UVs, :data:`UV_TILE` metres per repeat."""

@@ -106,11 +106,38 @@ class ArticulatedObject:
         groups = {j.group: j.kind for j in self.joints if j.movable}
         return dict(sorted(Counter(groups.values()).items()))
 
+    def poses(self, q: dict[str, float] | None = None) -> dict[str, np.ndarray]:
+        """World ``(4, 4)`` pose of every link frame with joints at ``q`` (name -> value; default 0)."""
+        q = q or {}
+        origin = {link.name: link.origin for link in self.links}
+        pose = {self.links[0].name: _translation(origin[self.links[0].name])}
+        for j in self.joints:  # parents always come before their children
+            value = float(q.get(j.name, 0.0))
+            motion = np.eye(4)
+            if j.type == "prismatic":
+                motion[:3, 3] = j.axis * value
+            elif j.type in ("revolute", "continuous"):
+                motion[:3, :3] = _axis_angle(j.axis, value)
+            pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ motion
+        return pose
+
     def save(self, folder: str | Path) -> Path:
         """Write the object into ``folder/<name>/`` (atomically) and return that path."""
         from .layers import write_object
 
         return write_object(self, Path(folder))
+
+
+def _translation(t) -> np.ndarray:
+    m = np.eye(4)
+    m[:3, 3] = t
+    return m
+
+
+def _axis_angle(axis: np.ndarray, angle: float) -> np.ndarray:
+    """Rodrigues: ``(3, 3)`` rotation by ``angle`` radians about the unit ``axis``."""
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
 
 
 def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[Joint]]:

@@ -22,7 +22,7 @@ MESHES = "meshes"
 
 
 def _f(x: float) -> str:
-    s = f"{float(x):.6g}"
+    s = f"{float(x):.9g}"
     return "0" if s == "-0" else s
 
 

@@ -1,0 +1,81 @@
+import numpy as np
+import pytest
+import trimesh
+
+from infmob_usd import geometry as g
+from infmob_usd.errors import GeometryError
+
+
+def _closed(piece):
+    return trimesh.Trimesh(piece.vertices, piece.faces, process=False)
+
+
+def test_box_bounds_volume_and_convex():
+    b = g.box([0.2, 0.4, 0.6], [1, 2, 3], "m")
+    assert np.allclose(b.bounds, [[0.9, 1.8, 2.7], [1.1, 2.2, 3.3]])
+    assert b.volume() == pytest.approx(0.048)
+    assert len(b.convex) == 1
+
+
+def test_bevelled_box_is_smaller_and_convex():
+    b = g.box([1, 1, 1], [0, 0, 0], "m", bevel=0.05)
+    assert 0.98 < b.volume() < 1.0
+    assert _closed(b).is_watertight
+
+
+def test_panel_with_holes_keeps_the_hollow_for_collisions():
+    p = g.panel([0, 0, 0], [0.02, 1, 1], "m", "x", holes=[(0.1, 0.1, 0.4, 0.9), (0.6, 0.1, 0.9, 0.9)])
+    assert _closed(p).is_watertight
+    expected = 0.02 * (1 - 2 * 0.3 * 0.8)
+    assert p.volume() == pytest.approx(expected, rel=1e-6)
+    hull_volume = sum(g.convex_hull(c).volume for c in p.convex)
+    assert hull_volume == pytest.approx(expected, rel=1e-6)  # exact decomposition, nothing filled
+    centre_of_hole = np.array([0.01, 0.25, 0.5])
+    for c in p.convex:
+        assert not g.convex_hull(c).contains([centre_of_hole])[0]
+
+
+def test_shell_is_hollow_and_revolve_is_solid():
+    s = g.shell([(0.15, 0.0), (0.08, 0.2)], 0.004, "m")
+    assert _closed(s).is_watertight
+    for c in s.convex:
+        assert not g.convex_hull(c).contains([[0, 0, 0.1]])[0]
+    r = g.revolve([(0, 0), (0.1, 0), (0.1, 0.2), (0, 0.2)], "m", sections=64)
+    assert r.volume() == pytest.approx(np.pi * 0.01 * 0.2, rel=0.01)
+
+
+def test_uvs_have_one_texel_density():
+    small = g.box([0.1, 0.1, 0.1], [0, 0, 0], "m")
+    big = g.box([1.0, 1.0, 1.0], [0, 0, 0], "m")
+    span = lambda p: np.ptp(p.corner_uvs().reshape(-1, 2), axis=0)  # noqa: E731
+    assert np.allclose(span(big) / span(small), 10)
+    assert np.allclose(span(big), 1.0 / g.UV_TILE)
+
+
+def test_corner_normals_split_at_box_edges_and_smooth_on_cylinders():
+    b = g.box([1, 1, 1], [0, 0, 0], "m")
+    n = b.corner_normals()
+    assert np.allclose(np.abs(n).max(axis=2), 1.0)  # flat faces: axis-aligned normals
+    c = g.cylinder([0, 0, 0], [0, 0, 1], 0.5, "m", sections=32)
+    side = np.abs(c.face_normals()[:, 2]) < 0.1
+    cn = c.corner_normals()[side]
+    assert np.allclose(np.linalg.norm(cn[..., :2], axis=-1), 1.0, atol=1e-6)
+    assert not np.allclose(cn[:, 0], cn[:, 1])  # smooth: corners differ within a face
+
+
+def test_corrupt_meshes_are_rejected_with_a_clear_error():
+    v = np.zeros((3, 3))
+    with pytest.raises(GeometryError, match="NaN"):
+        g.Piece(np.array([[0, 0, 0], [1, 0, 0], [np.nan, 1, 0]]), [[0, 1, 2]], "m")
+    with pytest.raises(GeometryError, match="missing vertex"):
+        g.Piece(v, [[0, 1, 5]], "m")
+    with pytest.raises(GeometryError, match="positive"):
+        g.box([0, 1, 1], [0, 0, 0], "m")
+
+
+def test_handles_are_named_handle():
+    for pieces in (g.bar_handle([0, 0, 0], [1, 0, 0], [0, 1, 0], 0.2, "h"),
+                   g.knob_handle([0, 0, 0], [1, 0, 0], "h"),
+                   g.pull_handle([0, 0, 0], [1, 0, 0], [0, 1, 0], 0.2, "h")):
+        assert all(p.name == "handle" for p in pieces)
+        assert min(p.bounds[0, 0] for p in pieces) >= -1e-9  # stands off the face, never inside it

@@ -1,0 +1,170 @@
+import json
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+from pxr import Sdf, Usd, UsdGeom, UsdPhysics, UsdShade
+
+from infmob_usd.errors import OutputError
+from zoo import zoo
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    obj = zoo()
+    return obj, obj.save(tmp_path_factory.mktemp("zoo"))
+
+
+def test_folder_layout(written):
+    obj, folder = written
+    assert folder.name == "zoo_000000"
+    for rel in ["zoo_000000.usda", "zoo_000000.urdf", "payload/contents.usda", "payload/geometry.usdc",
+                "payload/materials.usda", "payload/physics.usda", "semantics.txt", "metadata.json",
+                "textures/body_basecolor.png", "textures/part_normal.png"]:
+        assert (folder / rel).is_file(), rel
+    assert not [p for p in folder.parent.iterdir() if p.name.startswith(".")]  # no temp folders left
+
+
+def test_interface_layer(written):
+    obj, folder = written
+    stage = Usd.Stage.Open(str(folder / "zoo_000000.usda"))
+    root = stage.GetDefaultPrim()
+    assert root.GetPath() == Sdf.Path("/zoo_000000")
+    assert Usd.ModelAPI(root).GetKind() == "component"
+    assert Usd.ModelAPI(root).GetAssetInfo()["name"] == "zoo_000000"
+    assert UsdGeom.GetStageUpAxis(stage) == "Z" and UsdGeom.GetStageMetersPerUnit(stage) == 1.0
+    assert UsdPhysics.GetStageKilogramsPerUnit(stage) == 1.0
+    assert root.GetAttribute("semantics:labels:class").Get() == ["zoo"]
+    layer = Sdf.Layer.FindOrOpen(str(folder / "zoo_000000.usda"))
+    payloads = layer.GetPrimAtPath("/zoo_000000").payloadList.GetAddedOrExplicitItems()
+    assert [p.assetPath for p in payloads] == ["./payload/contents.usda"]
+    contents = Sdf.Layer.FindOrOpen(str(folder / "payload/contents.usda"))
+    assert list(contents.subLayerPaths) == ["./physics.usda", "./materials.usda", "./geometry.usdc"]
+    assert open(folder / "payload/geometry.usdc", "rb").read(8) == b"PXR-USDC"
+
+
+def test_layers_hold_only_their_own_kind_of_fact(written):
+    _, folder = written
+    geo = (folder / "payload/geometry.usdc")
+    text = Sdf.Layer.FindOrOpen(str(geo)).ExportToString()
+    assert "physics" not in text and "material:binding" not in text
+    mats = (folder / "payload/materials.usda").read_text()
+    assert "physics" not in mats and "points" not in mats
+    phys = (folder / "payload/physics.usda").read_text()
+    assert "UsdPreviewSurface" not in phys and "point3f[] points" not in phys
+
+
+def test_bodies_meshes_and_materials(written):
+    obj, folder = written
+    stage = Usd.Stage.Open(str(folder / "zoo_000000.usda"))
+    bodies = [p for p in stage.Traverse() if p.HasAPI(UsdPhysics.RigidBodyAPI)]
+    assert len(bodies) == len(obj.links)
+    for body in bodies:
+        assert body.GetParent() == stage.GetDefaultPrim()  # flat siblings
+        mass = UsdPhysics.MassAPI(body)
+        assert mass.GetMassAttr().Get() > 0
+        assert mass.GetPrincipalAxesAttr().HasAuthoredValue()
+    for mesh in (UsdGeom.Mesh(p) for p in stage.Traverse() if p.IsA(UsdGeom.Mesh)):
+        assert mesh.GetSubdivisionSchemeAttr().Get() == "none"
+        prim = mesh.GetPrim()
+        if "collisions" in str(prim.GetPath()):
+            assert mesh.GetPurposeAttr().Get() == "guide"
+            assert UsdPhysics.MeshCollisionAPI(prim).GetApproximationAttr().Get() == "convexHull"
+        else:
+            assert UsdShade.MaterialBindingAPI(prim).ComputeBoundMaterial()[0]
+            st = UsdGeom.PrimvarsAPI(prim).GetPrimvar("st")
+            assert st.GetInterpolation() == "faceVarying"
+    tex = stage.GetPrimAtPath("/zoo_000000/Looks/body/basecolorTexture")
+    assert tex.GetAttribute("inputs:sourceColorSpace").Get() == "sRGB"
+    normal = stage.GetPrimAtPath("/zoo_000000/Looks/body/normalTexture")
+    assert normal.GetAttribute("inputs:sourceColorSpace").Get() == "raw"
+    assert tuple(normal.GetAttribute("inputs:bias").Get()) == (-1, -1, -1, 0)
+
+
+def test_principal_axes_reproduce_the_inertia_tensor(written):
+    obj, folder = written
+    stage = Usd.Stage.Open(str(folder / "zoo_000000.usda"))
+    link = max(obj.links, key=lambda link: link.mass)
+    mass = UsdPhysics.MassAPI(stage.GetPrimAtPath(f"/zoo_000000/{link.name}"))
+    d = np.array(mass.GetDiagonalInertiaAttr().Get())
+    q = mass.GetPrincipalAxesAttr().Get()
+    from pxr import Gf
+
+    r = np.array(Gf.Matrix3d(Gf.Rotation(Gf.Quatd(q))).GetTranspose())  # column-vector convention
+    assert np.allclose(r @ np.diag(d) @ r.T, link.inertia, rtol=1e-4, atol=1e-7)
+
+
+def test_joints_in_usd(written):
+    obj, folder = written
+    stage = Usd.Stage.Open(str(folder / "zoo_000000.usda"))
+    joints = {p.GetName(): p for p in stage.Traverse() if p.IsA(UsdPhysics.Joint)}
+    assert len(joints) == len(obj.joints) + 1  # + the fixed joint to the world
+    root_joint = UsdPhysics.Joint(joints["root_joint"])
+    assert not root_joint.GetBody0Rel().GetTargets() and len(root_joint.GetBody1Rel().GetTargets()) == 1
+    rev = joints["joint_rev_part"]
+    assert rev.GetAttribute("physics:upperLimit").Get() == pytest.approx(90.0)  # degrees
+    assert rev.GetAttribute("physics:axis").Get() == "X"
+    assert rev.GetAttribute("drive:angular:physics:stiffness").Get() == 0
+    assert rev.GetAttribute("drive:angular:physics:damping").Get() > 0
+    cont = joints["joint_cont_part"]
+    assert not cont.GetAttribute("physics:lowerLimit").HasAuthoredValue()
+    pris = joints["joint_pris_part"]
+    assert pris.GetAttribute("physics:upperLimit").Get() == pytest.approx(0.2)  # metres
+
+
+def test_urdf(written):
+    obj, folder = written
+    root = ET.parse(folder / "zoo_000000.urdf").getroot()
+    links = {el.get("name"): el for el in root.findall("link")}
+    assert set(links) == {link.name for link in obj.links}
+    for el in links.values():
+        inertia = el.find("inertial/inertia")
+        t = np.array([[float(inertia.get(f"i{a}{b}" if f"i{a}{b}" in inertia.attrib else f"i{b}{a}"))
+                       for b in "xyz"] for a in "xyz"])
+        assert np.all(np.linalg.eigvalsh(t) > 0)
+        for mesh in el.iter("mesh"):
+            assert not mesh.get("filename").startswith("/")
+            assert (folder / mesh.get("filename")).is_file()
+    joints = {el.get("name"): el for el in root.findall("joint")}
+    rev = joints["joint_rev_part"]
+    assert float(rev.find("limit").get("upper")) == pytest.approx(math.pi / 2)  # radians
+    assert rev.find("dynamics").get("damping")
+    assert joints["joint_cont_part"].get("type") == "continuous"
+    assert joints["joint_cont_part"].find("limit").get("lower") is None
+
+
+def test_semantics_and_metadata(written):
+    obj, folder = written
+    rows = [line.split() for line in (folder / "semantics.txt").read_text().splitlines()]
+    assert ["rev_part", "hinge", "part"] in rows and ["pris_part", "slider", "part"] in rows
+    assert ["lf_part", "free", "part"] in rows and ["base", "static", "body"] in rows
+    assert not any("dummy" in r[0] for r in rows)
+    meta = json.loads((folder / "metadata.json").read_text())
+    assert meta["category"] == "zoo" and meta["seed"] == 0
+    assert meta["counts"]["declared_movable_joints"] == 8
+    assert meta["joint_kinds"]["limited_floating"] == 1
+
+
+def test_save_replaces_an_existing_object_atomically(tmp_path):
+    obj = zoo()
+    first = obj.save(tmp_path)
+    (first / "stale.txt").write_text("old")
+    second = obj.save(tmp_path)
+    assert first == second and not (second / "stale.txt").exists()
+    assert [p.name for p in tmp_path.iterdir()] == ["zoo_000000"]
+
+
+def test_a_failed_write_leaves_nothing(tmp_path):
+    obj = zoo()
+    obj.textures["body"]["basecolor"] = "not an image"
+    with pytest.raises(Exception):
+        obj.save(tmp_path)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_unwritable_or_file_output_is_a_clear_error(tmp_path):
+    f = tmp_path / "file"
+    f.write_text("x")
+    with pytest.raises(OutputError, match="is a file"):
+        zoo().save(f)

@@ -1,0 +1,81 @@
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import joints as J
+from infmob_usd.errors import ModelError
+from infmob_usd.mass import DUMMY_MASS
+from zoo import zoo, zoo_blueprint
+
+CHAIN = {"fixed_part": 1, "rev_part": 1, "cont_part": 1, "pris_part": 1, "rp_part": 2, "cp_part": 2,
+         "lp_part": 3, "lf_part": 3, "fr_part": 2}
+
+
+def test_every_kind_expands_into_its_chain():
+    obj = zoo()
+    for group, n in CHAIN.items():
+        chain = [j for j in obj.joints if j.group == group]
+        assert len(chain) == n, group
+        assert tuple(j.type for j in chain) == (J.KINDS[chain[0].kind] or ("fixed",))
+        assert chain[-1].child == group
+        for a, b in zip(chain, chain[1:]):  # consecutive through dummy links
+            assert a.child == b.parent and obj.link(a.child).dummy
+    assert obj.joint_kinds() == {k: 1 for k in J.KINDS if k != "fixed"}
+
+
+def test_dummy_links_are_light_but_never_zero():
+    obj = zoo()
+    dummies = [link for link in obj.links if link.dummy]
+    assert len(dummies) == sum(n - 1 for n in CHAIN.values())
+    for d in dummies:
+        assert d.mass == DUMMY_MASS > 0
+        assert np.all(np.linalg.eigvalsh(d.inertia) > 0)
+        assert not d.pieces
+
+
+def test_links_sit_at_their_pivots_and_masses_follow_density():
+    obj = zoo()
+    rev = obj.link("rev_part")
+    assert np.allclose(rev.origin[:2], [0, np.linspace(-0.85, 0.85, 9)[1]])
+    # a 6 cm plastic cube (density from the plastic family)
+    from infmob_usd.materials import FAMILIES
+
+    assert rev.mass == pytest.approx(0.06**3 * FAMILIES["plastic"].density, rel=1e-6)
+    assert np.allclose(rev.com, 0, atol=1e-9)  # the cube's centre is the pivot
+    for link in obj.links:
+        assert np.all(np.linalg.eigvalsh(link.inertia) > 0)
+
+
+def test_object_rests_on_the_ground():
+    obj = zoo()
+    assert obj.bounds()[0, 2] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_forward_kinematics_moves_children_along_axes():
+    obj = zoo()
+    p = obj.poses({"joint_pris_part": 0.2, "joint_rev_part": math.pi / 2})
+    rest = obj.poses()
+    assert np.allclose(p["pris_part"][:3, 3] - rest["pris_part"][:3, 3], [0.2, 0, 0])
+    r = p["rev_part"][:3, :3]
+    assert np.allclose(r @ [1, 0, 0], [0, 1, 0])  # +90 deg about +Z
+
+
+def test_flip_revolute_has_two_distinct_hinge_lines():
+    obj = zoo()
+    a, b = [j for j in obj.joints if j.group == "fr_part"]
+    assert not np.allclose(a.origin, b.origin)
+
+
+def test_bad_joint_specs_are_rejected():
+    with pytest.raises(ModelError, match="contain the rest value"):
+        J.revolute("a", "b", (0, 0, 0), (0, 0, 1), 0.5, 1.0)
+    with pytest.raises(ModelError, match="axis must not be zero"):
+        J.prismatic("a", "b", (0, 0, 0), (0, 0, 0), 0.0, 1.0)
+    with pytest.raises(ModelError, match="unknown joint kind"):
+        J.JointSpec("screw", "a", "b")
+    bp = zoo_blueprint()
+    with pytest.raises(ModelError, match="already has a parent"):
+        bp.join(J.fixed("base", "rev_part"))
+    with pytest.raises(ModelError, match="no part named"):
+        bp.join(J.fixed("base", "ghost"))

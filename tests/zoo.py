@@ -1,0 +1,41 @@
+"""A hand-built object with one joint of every kind, independent of any category."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd import joints as J
+from infmob_usd.api import assemble
+from infmob_usd.blueprint import Blueprint
+
+
+def zoo_blueprint() -> Blueprint:
+    bp = Blueprint("zoo", materials={"body": "painted", "part": "plastic"})
+    bp.add("base", "body", [g.box_between([-0.1, -1.0, 0.0], [0.1, 1.0, 0.05], "body")])
+    xs = np.linspace(-0.85, 0.85, 9)
+    z = 0.3
+
+    def part(name, k):
+        return bp.add(name, "part", [g.box([0.06, 0.06, 0.06], [0.0, xs[k], z], "part")])
+
+    bp.join(J.fixed("base", part("fixed_part", 0)))
+    bp.join(J.revolute("base", part("rev_part", 1), (0, xs[1], z), (0, 0, 1), 0.0, math.pi / 2))
+    bp.join(J.continuous("base", part("cont_part", 2), (0, xs[2], z), (0, 0, 1)))
+    bp.join(J.prismatic("base", part("pris_part", 3), (0, xs[3], z), (1, 0, 0), 0.0, 0.2))
+    bp.join(J.revolute_prismatic("base", part("rp_part", 4), (0, xs[4], z), (0, 0, 1), (-1.0, 1.0),
+                                 (0, 0, 1), (0.0, 0.1)))
+    bp.join(J.continuous_prismatic("base", part("cp_part", 5), (0, xs[5], z), (0, 0, 1), (0.0, 0.05)))
+    bp.join(J.limited_planar("base", part("lp_part", 6), (0, xs[6], z), ((0, 1, 0), (0, 0, 1)),
+                             ((-0.05, 0.05), (0.0, 0.1)), (1, 0, 0), (-0.3, 0.3)))
+    bp.join(J.limited_floating("base", part("lf_part", 7), (0, xs[7], z), ((1, 0, 0), (0, 1, 0), (0, 0, 1)),
+                               ((0.0, 0.1), (-0.02, 0.02), (0.0, 0.05))))
+    bp.join(J.flip_revolute("base", part("fr_part", 8), (0.03, xs[8], z), (0, 1, 0), (0.0, 1.0),
+                            (-0.03, xs[8], z), (0, 1, 0), (0.0, 1.0)))
+    return bp
+
+
+def zoo(seed: int = 0, texture_size: int = 32):
+    return assemble(zoo_blueprint(), seed, np.random.default_rng(seed), texture_size)

@@ -1,0 +1,205 @@
+"""USD checks of a written object: validators, physics parse, joint frames, files, URDF agreement."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+from pxr import Gf, Usd, UsdGeom, UsdPhysics, UsdUtils, UsdValidation
+
+from .files import load_metadata, parse_urdf
+from .result import CheckResult
+
+POS_TOL = 1e-4  # m
+ROT_TOL = 1e-3  # rad
+
+_VALIDATORS = None
+
+
+def _validators():
+    global _VALIDATORS
+    if _VALIDATORS is None:
+        _VALIDATORS = UsdValidation.ValidationRegistry().GetOrLoadAllValidators()
+    return _VALIDATORS
+
+
+def usd_validators(stage: Usd.Stage) -> CheckResult:
+    """Every registered ``pxr.UsdValidation`` validator: zero errors."""
+    errors = UsdValidation.ValidationContext(_validators()).Validate(stage)
+    bad = [e for e in errors if e.GetType() == UsdValidation.ValidationErrorType.Error]
+    detail = "; ".join(f"{e.GetName()}: {e.GetMessage()[:160]}" for e in bad[:5])
+    return CheckResult("usd_validators", not bad, detail or f"{len(_validators())} validators, 0 errors")
+
+
+def _load_physics(stage: Usd.Stage) -> dict:
+    fn = getattr(UsdPhysics, "LoadUsdPhysicsFromRange")
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        return fn(stage, ["/"])
+
+
+def physics_parse(stage: Usd.Stage, meta: dict) -> CheckResult:
+    """UsdPhysics parse: one articulation, one rigid body per link, the joints of the metadata."""
+    parsed = _load_physics(stage)
+    counts = {}
+    for key, value in parsed.items():
+        counts[str(key).split(".")[-1]] = len(value[0])
+    want_links = len(meta["links"])
+    want = {"RevoluteJoint": 0, "PrismaticJoint": 0, "FixedJoint": 1}  # + the root's joint to the world
+    for j in meta["joints"]:
+        want["PrismaticJoint" if j["type"] == "prismatic" else
+             "FixedJoint" if j["type"] == "fixed" else "RevoluteJoint"] += 1
+    problems = []
+    if counts.get("Articulation", 0) != 1:
+        problems.append(f"{counts.get('Articulation', 0)} articulations (want 1)")
+    if counts.get("RigidBody", 0) != want_links:
+        problems.append(f"{counts.get('RigidBody', 0)} rigid bodies (want {want_links})")
+    for k, n in want.items():
+        if counts.get(k, 0) != n:
+            problems.append(f"{counts.get(k, 0)} {k} (want {n})")
+    return CheckResult("usd_physics", not problems, "; ".join(problems) or
+                       ", ".join(f"{k}={v}" for k, v in sorted(counts.items())))
+
+
+def _local(pos, rot) -> Gf.Matrix4d:
+    m = Gf.Matrix4d(1.0)
+    m.SetRotateOnly(Gf.Quatd(rot))
+    m.SetTranslateOnly(Gf.Vec3d(pos))
+    return m
+
+
+def joint_frames(stage: Usd.Stage) -> CheckResult:
+    """world(body0) * local0 == world(body1) * local1 for every joint (no OpenUSD validator checks it)."""
+    cache = UsdGeom.XformCache()
+    worst, bad = 0.0, []
+    n = 0
+    for prim in stage.Traverse():
+        if not prim.IsA(UsdPhysics.Joint):
+            continue
+        j = UsdPhysics.Joint(prim)
+        b0, b1 = j.GetBody0Rel().GetTargets(), j.GetBody1Rel().GetTargets()
+        if len(b1) != 1 or len(b0) > 1:
+            bad.append(f"{prim.GetName()}: body0={len(b0)} body1={len(b1)} targets")
+            continue
+        w1 = _local(j.GetLocalPos1Attr().Get(), j.GetLocalRot1Attr().Get()) * \
+            cache.GetLocalToWorldTransform(stage.GetPrimAtPath(b1[0]))
+        if b0:
+            w0 = _local(j.GetLocalPos0Attr().Get(), j.GetLocalRot0Attr().Get()) * \
+                cache.GetLocalToWorldTransform(stage.GetPrimAtPath(b0[0]))
+        else:  # attached to the world: the world frame is local0
+            w0 = _local(j.GetLocalPos0Attr().Get(), j.GetLocalRot0Attr().Get())
+            if not b0 and prim.IsA(UsdPhysics.FixedJoint):
+                n += 1
+                continue  # a fixed base joint may leave the world frame implicit
+        dp = (w0.ExtractTranslation() - w1.ExtractTranslation()).GetLength()
+        q0 = w0.ExtractRotationQuat()
+        q1 = w1.ExtractRotationQuat()
+        d = abs(Gf.Dot(q0, q1))
+        da = 2 * math.acos(min(1.0, d))
+        worst = max(worst, dp)
+        n += 1
+        if dp > POS_TOL or da > ROT_TOL:
+            bad.append(f"{prim.GetName()}: frames differ by {dp * 1000:.2f} mm / {math.degrees(da):.2f} deg")
+    return CheckResult("joint_frames", not bad, "; ".join(bad[:5]) or f"{n} joints agree (worst {worst:.1e} m)")
+
+
+def files_exist(folder: Path, usd_path: Path) -> CheckResult:
+    """Every layer, texture and mesh any file refers to exists, by a relative path."""
+    layers, assets, unresolved = UsdUtils.ComputeAllDependencies(str(usd_path))
+    missing = [str(p) for p in unresolved]
+    absolute = [a for a in assets if not Path(a).resolve().is_relative_to(folder.resolve())]
+    urdf = folder / f"{folder.name}.urdf"
+    text = urdf.read_text()
+    refs = re.findall(r'filename="([^"]+)"', text)
+    for ref in refs:
+        if Path(ref).is_absolute():
+            absolute.append(ref)
+        elif not (folder / ref).is_file():
+            missing.append(ref)
+    for mtl in (folder / "meshes").glob("*.mtl"):
+        for line in mtl.read_text().splitlines():
+            parts = line.split()
+            if parts and parts[0].startswith(("map_", "norm")) and not (mtl.parent / parts[-1]).is_file():
+                missing.append(f"{mtl.name}: {parts[-1]}")
+    problems = [f"missing {m}" for m in missing[:5]] + [f"absolute path {a}" for a in absolute[:5]]
+    return CheckResult("files", not problems, "; ".join(problems) or
+                       f"{len(layers)} layers, {len(assets)} USD assets, {len(refs)} URDF meshes present")
+
+
+def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict) -> CheckResult:
+    """The URDF has the same links and joints (type, parent, child, axis, limits) as the USD."""
+    urdf = parse_urdf(folder / f"{folder.name}.urdf")
+    root = stage.GetDefaultPrim()
+    bodies = {p.GetName() for p in Usd.PrimRange(root) if p.HasAPI(UsdPhysics.RigidBodyAPI)}
+    problems = []
+    if bodies != set(urdf.links):
+        problems.append(f"links differ: only USD {sorted(bodies - set(urdf.links))[:3]},"
+                        f" only URDF {sorted(set(urdf.links) - bodies)[:3]}")
+    cache = UsdGeom.XformCache()
+    for prim in Usd.PrimRange(root):
+        if not prim.IsA(UsdPhysics.Joint) or not UsdPhysics.Joint(prim).GetBody0Rel().GetTargets():
+            continue
+        name = prim.GetName()
+        uj = urdf.joints.get(name)
+        if uj is None:
+            problems.append(f"joint {name} missing from URDF")
+            continue
+        j = UsdPhysics.Joint(prim)
+        b0 = j.GetBody0Rel().GetTargets()[0].name
+        b1 = j.GetBody1Rel().GetTargets()[0].name
+        if (b0, b1) != (uj.parent, uj.child):
+            problems.append(f"{name}: USD {b0}->{b1}, URDF {uj.parent}->{uj.child}")
+        kind = ("prismatic" if prim.IsA(UsdPhysics.PrismaticJoint) else
+                "fixed" if prim.IsA(UsdPhysics.FixedJoint) else "revolute")
+        utype = "revolute" if uj.type == "continuous" else uj.type
+        if kind != utype:
+            problems.append(f"{name}: USD {kind}, URDF {uj.type}")
+            continue
+        if kind == "fixed":
+            continue
+        # world axis of the USD joint: localRot0 applied to its X axis, in body0's world frame
+        rot = Gf.Matrix4d(1.0).SetRotateOnly(Gf.Quatd(j.GetLocalRot0Attr().Get()))
+        w0 = cache.GetLocalToWorldTransform(stage.GetPrimAtPath(j.GetBody0Rel().GetTargets()[0]))
+        axis = np.array((rot * w0).TransformDir(Gf.Vec3d(1, 0, 0)))
+        if np.linalg.norm(axis - uj.axis / np.linalg.norm(uj.axis)) > 1e-4:
+            problems.append(f"{name}: axis USD {axis.round(4)} vs URDF {uj.axis}")
+        lo, hi = prim.GetAttribute("physics:lowerLimit").Get(), prim.GetAttribute("physics:upperLimit").Get()
+        if uj.type == "continuous":
+            if lo is not None and math.isfinite(lo):
+                problems.append(f"{name}: continuous in URDF but limited in USD")
+            continue
+        scale = math.pi / 180 if kind == "revolute" else 1.0
+        if lo is None or hi is None or uj.lower is None or abs(lo * scale - uj.lower) > 1e-5 or \
+                abs(hi * scale - uj.upper) > 1e-5:
+            problems.append(f"{name}: limits USD {lo},{hi} vs URDF {uj.lower},{uj.upper}")
+    n_meta = len(meta["joints"])
+    if len(urdf.joints) != n_meta:
+        problems.append(f"URDF has {len(urdf.joints)} joints, metadata {n_meta}")
+    return CheckResult("usd_urdf_agree", not problems, "; ".join(problems[:5]) or
+                       f"{len(bodies)} links, {len(urdf.joints)} joints agree")
+
+
+def check_usd(folder: Path) -> list[CheckResult]:
+    """All USD-side checks of one object folder."""
+    folder = Path(folder)
+    usd_path = folder / f"{folder.name}.usda"
+    try:
+        meta = load_metadata(folder)
+    except (OSError, ValueError) as e:
+        return [CheckResult("metadata", False, f"metadata.json unreadable: {e}")]
+    if not usd_path.is_file():
+        return [CheckResult("usd_open", False, f"{usd_path.name} is missing")]
+    stage = Usd.Stage.Open(str(usd_path))
+    if stage is None:
+        return [CheckResult("usd_open", False, f"{usd_path.name} does not open")]
+    return [
+        usd_validators(stage),
+        physics_parse(stage, meta),
+        joint_frames(stage),
+        files_exist(folder, usd_path),
+        usd_urdf_agree(stage, folder, meta),
+    ]
