@@ -44,7 +44,7 @@ GAP = 0.003  # between neighbouring fronts and between moving parts and the carc
 
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
-    W, H, D, t, ft = p["width"], p["height"], p["depth"], p["board"], p["front_thickness"]
+    W, H, D, t = p["width"], p["height"], p["depth"], p["board"]
     bp = Blueprint("kitchen_cabinet", materials={
         "body": p["body_finish"], "front": p["body_finish"], "handle": p["handle_finish"],
         "plinth": "plastic", "top": "wood",

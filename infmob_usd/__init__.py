@@ -5,6 +5,7 @@
 >>> folder = obj.save("out")        # out/kitchen_cabinet_000003/
 """
 
+from ._version import __version__
 from .api import generate, get_category, list_categories
 from .errors import (
     GeometryError,
@@ -15,8 +16,6 @@ from .errors import (
     UnknownCategoryError,
 )
 from .model import ArticulatedObject
-
-from ._version import __version__
 
 __all__ = [
     "ArticulatedObject",

@@ -2,6 +2,8 @@
 
 * one visual OBJ (+ MTL with PBR texture maps) per link and material slot,
   named ``handle_*`` where the pieces are handles (ManiSkill looks for that);
+  no ``<material>`` elements: colours live in the MTL, and SAPIEN's loader would
+  need a render device to build URDF materials;
 * one collision OBJ per convex piece (SAPIEN hulls each collision file);
 * ``<inertial>`` with the full tensor about the centre of mass;
 * ``<limit>`` with effort and velocity, ``<dynamics damping friction>``.
@@ -78,8 +80,6 @@ def write_urdf(obj, folder: Path) -> Path:
     for slot, look in obj.materials.items():
         (meshes / f"{slot}.mtl").write_text(_mtl(slot, look))
     out = [f'<?xml version="1.0"?>\n<robot name={quoteattr(obj.name)}>']
-    for slot, look in obj.materials.items():
-        out.append(f'  <material name="{slot}"><color rgba="{_v(look.base_color)} {_f(look.opacity)}"/></material>')
     for link in obj.links:
         out.append(f'  <link name="{link.name}">')
         for vname, slot, pieces, _role in visual_groups(link):
@@ -87,8 +87,7 @@ def write_urdf(obj, folder: Path) -> Path:
             v, f, n, uv = merge_pieces(pieces)
             write_obj(meshes / fname, v, f, n, uv, mtl=f"{slot}.mtl", material=slot)
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
-                       f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry>'
-                       f'<material name="{slot}"/></visual>')
+                       f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
         for i, (hv, hf) in enumerate(h for p in link.pieces for h in p.hulls()):
             fname = f"{link.name}__collision_{i:03d}.obj"
             write_obj(meshes / fname, hv, hf)

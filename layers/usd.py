@@ -84,7 +84,7 @@ def write_usd(obj, folder: Path) -> Path:
         xf.AddTranslateOp().Set(Gf.Vec3d(*map(float, link.origin)))
         xf.AddOrientOp().Set(Gf.Quatf(1.0))
         _label(xf.GetPrim(), link.label)
-        for vname, slot, pieces, role in visual_groups(link):
+        for vname, _slot, pieces, role in visual_groups(link):
             verts, faces, normals, uvs = merge_pieces(pieces)
             mesh = _mesh(stage, f"{lp}/visuals/{vname}", verts, faces)
             mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(normals.reshape(-1, 3).astype(np.float32)))

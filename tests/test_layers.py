@@ -5,9 +5,9 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 from pxr import Sdf, Usd, UsdGeom, UsdPhysics, UsdShade
+from zoo import zoo
 
 from infmob_usd.errors import OutputError
-from zoo import zoo
 
 
 @pytest.fixture(scope="module")
@@ -158,7 +158,7 @@ def test_save_replaces_an_existing_object_atomically(tmp_path):
 def test_a_failed_write_leaves_nothing(tmp_path):
     obj = zoo()
     obj.textures["body"]["basecolor"] = "not an image"
-    with pytest.raises(Exception):
+    with pytest.raises((TypeError, ValueError, AttributeError)):
         obj.save(tmp_path)
     assert list(tmp_path.iterdir()) == []
 

@@ -29,15 +29,16 @@ class ObjectReport:
 
 
 def validate_object(folder: str | Path, sim: bool = True) -> ObjectReport:
-    """Validate one object folder; ``sim`` adds SAPIEN (and ManiSkill) checks."""
+    """Validate one object folder; ``sim`` adds the SAPIEN and ManiSkill checks."""
     from .usd_check import check_usd
 
     folder = Path(folder)
     report = ObjectReport(folder, check_usd(folder))
     if sim:
-        from .sim import check_sapien
+        from .sim import check_maniskill, check_sapien
 
         report.checks += check_sapien(folder)
+        report.checks += check_maniskill(folder)
     return report
 
 

@@ -1,0 +1,172 @@
+"""SAPIEN and ManiSkill checks on generated objects (real simulators, CPU, no renderer)."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import shutil
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("sapien")
+
+from infmob_usd.validate import sim  # noqa: E402
+from zoo import zoo  # noqa: E402
+
+import infmob_usd  # noqa: E402
+
+pytestmark = pytest.mark.sim
+
+SEEDS = (0, 1, 2)
+CASES = [(c, s) for c in infmob_usd.list_categories() for s in SEEDS]
+SAPIEN_NAMES = ["sapien_load", *sim.SAPIEN_CHECKS]
+
+
+@pytest.fixture(scope="module")
+def objects(tmp_path_factory) -> dict[tuple[str, int], Path]:
+    out = tmp_path_factory.mktemp("sim_objects")
+    return {(c, s): Path(infmob_usd.generate(c, s, texture_size=16).save(out))
+            for c, s in CASES}
+
+
+@pytest.fixture(scope="module")
+def good(tmp_path_factory) -> Path:
+    """The zoo: one joint of every kind (compound ones through dummy links)."""
+    return Path(zoo(texture_size=16).save(tmp_path_factory.mktemp("sim_zoo")))
+
+
+def _by_name(results):
+    return {r.name: r for r in results}
+
+
+def _assert_all_pass(results, names):
+    res = _by_name(results)
+    assert list(res) == names
+    failed = {n: r.detail for n, r in res.items() if not r.ok}
+    assert not failed, failed
+
+
+@pytest.mark.parametrize("category,seed", CASES, ids=[f"{c}-{s}" for c, s in CASES])
+def test_generated_objects_pass_sapien(objects, category, seed):
+    _assert_all_pass(sim.check_sapien(objects[category, seed]), SAPIEN_NAMES)
+
+
+@pytest.mark.parametrize("category,seed", CASES, ids=[f"{c}-{s}" for c, s in CASES])
+def test_generated_objects_pass_maniskill(objects, category, seed):
+    pytest.importorskip("mani_skill")
+    _assert_all_pass(sim.check_maniskill(objects[category, seed]), ["maniskill_load"])
+
+
+def test_every_joint_kind_passes(good):
+    _assert_all_pass(sim.check_sapien(good), SAPIEN_NAMES)
+    meta = json.loads((good / "metadata.json").read_text())
+    assert {j["type"] for j in meta["joints"]} == {"fixed", "revolute", "continuous", "prismatic"}
+
+
+def test_load_sapien_gives_a_fixed_physics_only_articulation(good):
+    scene, art = sim.load_sapien(next(good.glob("*.urdf")))
+    meta = json.loads((good / "metadata.json").read_text())
+    assert len(art.links) == len(meta["links"])
+    assert art.links[0].joint.type == "fixed"
+    for _ in range(10):
+        scene.step()
+    assert abs(float(art.qpos.sum())) < 0.1
+
+
+# ----------------------------------------------------------------------------- broken assets
+
+
+def _copy(src: Path, tmp_path: Path) -> Path:
+    dst = tmp_path / src.name
+    shutil.copytree(src, dst)
+    return dst
+
+
+def _edit_urdf(folder: Path, edit) -> None:
+    path = next(folder.glob("*.urdf"))
+    tree = ET.parse(path)
+    edit(tree.getroot())
+    tree.write(path, xml_declaration=True, encoding="utf-8")
+
+
+def _joint(root, name):
+    return next(j for j in root.iter("joint") if j.get("name") == name)
+
+
+def test_inverted_limits_fail_load_and_drive(good, tmp_path):
+    bad = _copy(good, tmp_path)
+
+    def invert(root):
+        lim = _joint(root, "joint_pris_part").find("limit")
+        lim.set("lower", "0.15")
+        lim.set("upper", "0.05")
+
+    _edit_urdf(bad, invert)
+    res = _by_name(sim.check_sapien(bad))
+    assert not res["sapien_load"].ok
+    assert "joint_pris_part: limits lower 0.15 >= upper 0.05" in res["sapien_load"].detail
+    assert not res["sapien_drive"].ok
+    assert "joint_pris_part" in res["sapien_drive"].detail
+
+
+def test_zero_axis_fails_load(good, tmp_path):
+    bad = _copy(good, tmp_path)
+    _edit_urdf(bad, lambda root: _joint(root, "joint_rev_part").find("axis").set("xyz", "0 0 0"))
+    res = _by_name(sim.check_sapien(bad, checks=[]))
+    assert not res["sapien_load"].ok
+    detail = res["sapien_load"].detail
+    assert "joint_rev_part: URDF axis [0.0, 0.0, 0.0] has no direction" in detail
+    assert "joint joint_rev_part: axis" in detail  # SAPIEN's silent 1 0 0 != metadata 0 0 1
+
+
+def test_zero_mass_fails_load(good, tmp_path):
+    bad = _copy(good, tmp_path)
+
+    def zero(root):
+        link = next(x for x in root.iter("link") if x.get("name") == "pris_part")
+        link.find("inertial/mass").set("value", "0")
+
+    _edit_urdf(bad, zero)
+    res = _by_name(sim.check_sapien(bad, checks=[]))
+    assert not res["sapien_load"].ok
+    assert "link pris_part: mass" in res["sapien_load"].detail
+
+
+def test_missing_collision_mesh_fails_sapien_and_maniskill(objects, tmp_path):
+    bad = _copy(objects[CASES[0]], tmp_path)
+    victim = sorted((bad / "meshes").glob("*collision*.obj"))[-1]
+    victim.unlink()
+    res = _by_name(sim.check_sapien(bad, checks=[]))
+    detail = res["sapien_load"].detail
+    assert not res["sapien_load"].ok
+    assert f"File not found: meshes/{victim.name}" in detail
+    assert "collision shapes, URDF has" in detail
+    if importlib.util.find_spec("mani_skill") is not None:
+        ms = _by_name(sim.check_maniskill(bad))["maniskill_load"]
+        assert not ms.ok and victim.name in ms.detail
+
+
+def test_a_joint_blocked_by_the_ground_fails_drive(good, tmp_path):
+    bad = _copy(good, tmp_path)
+
+    def downward(root):
+        joint = _joint(root, "joint_pris_part")  # part bottom 0.27 m above the floor
+        joint.find("axis").set("xyz", "0 0 -1")
+        joint.find("limit").set("upper", "0.5")
+
+    _edit_urdf(bad, downward)
+    res = _by_name(sim.check_sapien(bad, checks=["sapien_drive"]))
+    drive = res["sapien_drive"]
+    assert not drive.ok
+    assert "joint_pris_part -> upper 0.5: stopped at 0.27" in drive.detail, drive.detail
+
+
+def test_missing_sapien_raises_with_install_hint(monkeypatch, good):
+    monkeypatch.setattr(sim, "_SAPIEN", None)
+    monkeypatch.setitem(sys.modules, "sapien", None)
+    with pytest.raises(sim.SimUnavailableError, match=r"pip install -e \.\[sim\]"):
+        sim.check_sapien(good)
+    assert issubclass(sim.SimUnavailableError, RuntimeError)

@@ -1,0 +1,794 @@
+"""Simulator checks of a written object folder: SAPIEN 3 and ManiSkill 3, physics only, on CPU.
+
+The URDF of an object folder is loaded the way a user's simulator loads it, into a physics-only
+CPU scene (``sapien.Scene([PhysxCpuSystem()])``: no renderer, no Vulkan device), with the root
+link fixed, and compared with ``metadata.json``; then the articulation is driven and left to rest.
+
+Checks
+------
+``sapien_load``
+    The URDF loads; links, joints, joint types, limits, masses, collision shapes and joint frames
+    (pivot and axis at rest) agree with ``metadata.json`` and the URDF; SAPIEN logged no warning
+    or error (a missing mesh file, a zero mass ... are logged, not raised, by SAPIEN).
+``sapien_drive``
+    Every movable joint, driven alone while stiff drives hold the others at rest, reaches its
+    lower and its upper limit (continuous joints: -pi/2 and +pi/2) within 5 % of its range.
+``sapien_rest``
+    Passive joints (URDF damping, SAPIEN's joint friction, stiffness 0), gravity on, 1 s: the
+    largest joint displacement (informational unless ``max_displacement`` is given) and no NaN.
+``maniskill_load``
+    The URDF loads through ManiSkill's own URDF loader into a CPU ``ManiSkillScene`` without a
+    renderer, fixed base, with the links and active joints of ``metadata.json``.
+
+More SAPIEN checks plug in with :func:`sapien_check`: a function of a :class:`SimContext`
+returning a :class:`CheckResult`. :func:`check_sapien` loads the object once, runs each
+registered check on the same scene (state reset in between) and times it.
+
+SAPIEN pitfalls handled here
+----------------------------
+* A URDF ``<visual>`` with a ``<material>`` makes SAPIEN's loader create a ``RenderMaterial``
+  at parse time, which needs a rendering device even with ``render_backend="none"`` in
+  ManiSkill; our writer therefore puts colours in the MTL only, and both stock loaders
+  work headless. Visual records are cleared before building the SAPIEN scene (physics only).
+* SAPIEN 3.0.3's URDF loader applies ``<dynamics damping>`` (as drive damping) but not
+  ``<dynamics friction>``, nor ``<limit effort velocity>``: joints keep PhysX friction
+  coefficient 0.05, an infinite force limit and a velocity limit of 100.
+* A joint axis of norm < 1e-3 silently becomes ``1 0 0``; a zero or missing mass is silently
+  replaced by the mass of the collision shapes at density 1000; a missing collision mesh is
+  logged and skipped. The load check compares against metadata to catch all three.
+* SAPIEN logs from C++ straight to file descriptor 2; :func:`capture_native_log` redirects
+  that descriptor to read the log back (and re-emits it, so nothing is swallowed).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import ctypes
+import json
+import logging
+import math
+import os
+import re
+import sys
+import tempfile
+import time
+import warnings
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .result import CheckResult
+
+__all__ = [
+    "CheckResult",
+    "JointState",
+    "NativeLog",
+    "SAPIEN_CHECKS",
+    "SimContext",
+    "SimUnavailableError",
+    "capture_native_log",
+    "check_maniskill",
+    "check_sapien",
+    "load_maniskill",
+    "load_sapien",
+    "sapien_check",
+]
+
+INSTALL_HINT = "pip install -e .[sim]"
+
+# Tolerances against metadata.json (the URDF writes 6 significant digits).
+POS_TOL = 1e-3  # m, joint pivot at rest
+AXIS_TOL = 1e-3  # 1 - |cos| between simulated and declared joint axis
+LIMIT_TOL = 1e-4  # absolute, on top of a relative 1e-5
+MASS_RTOL = 1e-3
+
+# Drive check: acceleration-mode drives (gains independent of the link's mass), a joint velocity
+# cap so that a traversal takes about 1 / DRIVE_SPEED s (no tunnelling through thin panels).
+DRIVE_STIFFNESS = 1.0e4  # 1/s^2  (omega = 100 rad/s; gravity sag g/K ~ 1 mm)
+DRIVE_DAMPING = 200.0  # 1/s    (critical: 2 sqrt(K))
+DRIVE_SPEED = 2.5  # ranges per second
+DRIVE_TOL = 0.05  # fraction of the range
+DRIVE_MAX_TIME = 2.0  # s of simulated time per target
+CONTINUOUS_TARGET = math.pi / 2
+CHECK_EVERY = 6  # steps between convergence tests
+
+REST_TIME = 1.0  # s
+
+# Native log lines that fail a check, and the ones known to be harmless.
+_LOG_LEVEL = re.compile(r"\[(warn|warning|error|critical)\]\s*(.*)", re.IGNORECASE)
+BENIGN_LOG_PATTERNS: list[re.Pattern[str]] = []
+_QUIET_WARNINGS = (DeprecationWarning, PendingDeprecationWarning, FutureWarning, ImportWarning)
+
+# SAPIEN joint types per URDF/metadata joint type.
+_SIM_TYPES = {
+    "fixed": {"fixed"},
+    "prismatic": {"prismatic"},
+    "revolute": {"revolute_unwrapped", "revolute"},
+    "continuous": {"revolute"},
+}
+
+
+class SimUnavailableError(RuntimeError):
+    """SAPIEN (or ManiSkill) cannot be imported: install the ``sim`` extra."""
+
+
+# --------------------------------------------------------------------------- imports
+
+
+_SAPIEN: Any = None
+_MANISKILL: dict[str, Any] | None = None
+
+
+def _import_sapien():
+    """Import SAPIEN once, quietly; :class:`SimUnavailableError` if it cannot be imported."""
+    global _SAPIEN
+    if _SAPIEN is None:
+        try:
+            with warnings.catch_warnings():
+                # physics-only use needs no Vulkan: SAPIEN's fallback warning is noise here
+                warnings.filterwarnings("ignore", message=".*libvulkan.*")
+                import sapien
+                import sapien.physx  # noqa: F401
+        except (ImportError, OSError) as exc:
+            raise SimUnavailableError(
+                f"SAPIEN is not importable ({exc}); install the simulators with `{INSTALL_HINT}`"
+            ) from exc
+        sapien.set_log_level("warn")
+        _SAPIEN = sapien
+    return _SAPIEN
+
+
+def _import_maniskill() -> dict[str, Any]:
+    """Import the few ManiSkill pieces used here, once per process (the import takes seconds)."""
+    global _MANISKILL
+    if _MANISKILL is None:
+        _import_sapien()
+        try:
+            from mani_skill.envs.scene import ManiSkillScene
+            from mani_skill.envs.utils.system.backend import parse_sim_and_render_backend
+            from mani_skill.utils.building.urdf_loader import URDFLoader
+        except (ImportError, OSError) as exc:
+            raise SimUnavailableError(
+                f"ManiSkill is not importable ({exc}); install the simulators with "
+                f"`{INSTALL_HINT}`"
+            ) from exc
+        _MANISKILL = {
+            "ManiSkillScene": ManiSkillScene,
+            "parse_backend": parse_sim_and_render_backend,
+            "URDFLoader": URDFLoader,
+        }
+    return _MANISKILL
+
+
+# --------------------------------------------------------------------------- native log
+
+
+@dataclass
+class NativeLog:
+    """Lines written to file descriptor 2 (SAPIEN's C++ log, PhysX errors) and Python warnings."""
+
+    lines: list[str] = field(default_factory=list)
+
+    @property
+    def problems(self) -> list[str]:
+        """Warning, error and critical messages, minus :data:`BENIGN_LOG_PATTERNS`."""
+        out = []
+        for line in self.lines:
+            m = _LOG_LEVEL.search(line)
+            if m and not any(p.search(line) for p in BENIGN_LOG_PATTERNS):
+                out.append(f"{m.group(1).lower()}: {m.group(2).strip()}")
+        return out
+
+
+def _fflush_all() -> None:
+    with contextlib.suppress(Exception):
+        ctypes.CDLL(None).fflush(None)
+
+
+@contextlib.contextmanager
+def capture_native_log(echo: bool = True) -> Iterator[NativeLog]:
+    """Redirect file descriptor 2 (and Python warnings) into a :class:`NativeLog`.
+
+    Parameters
+    ----------
+    echo : bool
+        Write what was captured back to ``sys.stderr`` afterwards, so nothing is swallowed.
+    """
+    log = NativeLog()
+    sys.stderr.flush()
+    _fflush_all()
+    saved = os.dup(2)
+    tmp = tempfile.TemporaryFile()
+    try:
+        os.dup2(tmp.fileno(), 2)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                yield log
+            finally:
+                _fflush_all()
+                os.dup2(saved, 2)
+        tmp.seek(0)
+        text = tmp.read().decode("utf-8", errors="replace")
+        log.lines += text.splitlines()
+        for w in caught:
+            if issubclass(w.category, _QUIET_WARNINGS):  # not about the asset: pass them on
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+            else:
+                log.lines.append(f"[warning] {w.category.__name__}: {w.message}")
+        if echo and text:
+            sys.stderr.write(text)
+    finally:
+        os.close(saved)
+        tmp.close()
+
+
+# --------------------------------------------------------------------------- loading
+
+
+def load_sapien(urdf: str | Path, *, ground: bool = True, timestep: float = 1 / 240):
+    """Load a URDF into a physics-only SAPIEN 3 scene on the CPU.
+
+    Collision shapes come from the URDF (one convex hull per collision file), visuals are
+    dropped (no renderer), inertials are taken as written, and the root link is fixed.
+
+    Parameters
+    ----------
+    urdf : str or Path
+        The URDF file; mesh paths are resolved relative to it.
+    ground : bool
+        Add a ground plane at z = 0 (physics only).
+    timestep : float
+        Simulation time step in seconds.
+
+    Returns
+    -------
+    tuple of (sapien.Scene, sapien.physx.PhysxArticulation)
+
+    Raises
+    ------
+    SimUnavailableError
+        SAPIEN cannot be imported (``pip install -e .[sim]``).
+    FileNotFoundError
+        The URDF does not exist.
+    RuntimeError
+        The URDF does not describe exactly one articulation.
+    """
+    sapien = _import_sapien()
+    from sapien.wrapper.urdf_loader import URDFLoader
+
+    urdf = Path(urdf)
+    if not urdf.is_file():
+        raise FileNotFoundError(f"no URDF at {urdf}")
+    scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
+    scene.set_timestep(timestep)
+    if ground:
+        scene.add_ground(0.0, render=False)
+    loader = URDFLoader()
+    loader.set_scene(scene)
+    loader.fix_root_link = True
+    articulation_builders, actor_builders, _cameras = loader.parse(str(urdf))
+    for builder in articulation_builders:
+        for link_builder in builder.link_builders:
+            link_builder.visual_records = []  # physics only: no render device needed
+    if len(articulation_builders) != 1 or actor_builders:
+        raise RuntimeError(
+            f"{urdf.name}: {len(articulation_builders)} articulations and {len(actor_builders)} "
+            "free bodies (want one articulation)"
+        )
+    articulation = articulation_builders[0].build(fix_root_link=True)
+    return scene, articulation
+
+
+def load_maniskill(urdf: str | Path, *, name: str = "object"):
+    """Load a URDF through ManiSkill's URDF loader into a CPU ``ManiSkillScene`` with no renderer.
+
+    Uses ``mani_skill.utils.building.urdf_loader.URDFLoader`` (via
+    ``ManiSkillScene.create_urdf_loader``'s class), unmodified, on a scene built from
+    ``parse_sim_and_render_backend("physx_cpu", "none")``. This works headless because our
+    URDFs carry no ``<material>`` elements (SAPIEN would need a render device for them).
+
+    Returns
+    -------
+    tuple of (ManiSkillScene, mani_skill.utils.structs.Articulation)
+    """
+    sapien = _import_sapien()
+    ms = _import_maniskill()
+    urdf = Path(urdf)
+    if not urdf.is_file():
+        raise FileNotFoundError(f"no URDF at {urdf}")
+    backend = ms["parse_backend"]("physx_cpu", "none")
+    scene = ms["ManiSkillScene"](
+        [sapien.Scene([sapien.physx.PhysxCpuSystem()])], device=backend.device, backend=backend
+    )
+    loader = ms["URDFLoader"]()
+    loader.set_scene(scene)
+    loader.fix_root_link = True
+    loader.name = name
+    parsed = loader.parse(str(urdf))
+    builders = parsed["articulation_builders"]
+    if len(builders) != 1 or parsed["actor_builders"]:
+        raise RuntimeError(
+            f"{urdf.name}: {len(builders)} articulations and {len(parsed['actor_builders'])} "
+            "free bodies (want one articulation)"
+        )
+    builders[0].initial_pose = sapien.Pose()
+    articulation = builders[0].build(name=name, fix_root_link=True)
+    return scene, articulation
+
+
+# --------------------------------------------------------------------------- context
+
+
+@dataclass
+class JointState:
+    """Drive and limit settings of one movable joint as loaded (restored between checks)."""
+
+    stiffness: float
+    damping: float
+    friction: float
+    max_velocity: float
+    lower: float
+    upper: float
+
+
+@dataclass
+class SimContext:
+    """One loaded object, shared by the SAPIEN checks.
+
+    Attributes
+    ----------
+    folder, urdf : Path
+        The object folder and its URDF.
+    meta : dict
+        ``metadata.json``.
+    scene, articulation
+        The SAPIEN scene and fixed-base articulation.
+    joints : list
+        The movable (active) joints, in qpos order.
+    loaded : list of JointState
+        Their settings right after loading (URDF damping, SAPIEN friction ...).
+    rest_qpos : numpy.ndarray
+        The rest configuration: zero clipped into the limits.
+    """
+
+    folder: Path
+    urdf: Path
+    meta: dict
+    scene: Any
+    articulation: Any
+    joints: list
+    loaded: list[JointState]
+    rest_qpos: np.ndarray
+
+    @property
+    def timestep(self) -> float:
+        return float(self.scene.get_timestep())
+
+    def reset(self, qpos: np.ndarray | None = None) -> None:
+        """Restore the loaded joint settings, zero drive targets, put the object at rest."""
+        for j, s in zip(self.joints, self.loaded, strict=True):
+            j.set_drive_property(s.stiffness, s.damping, mode="force")
+            j.set_friction(s.friction)
+            j.set_max_velocity(s.max_velocity)
+        self.hold(self.rest_qpos if qpos is None else qpos)
+
+    def hold(self, qpos: np.ndarray) -> None:
+        """Set the configuration, zero velocities, and drive targets equal to ``qpos``."""
+        art = self.articulation
+        qpos = np.asarray(qpos, dtype=np.float32)
+        art.set_qpos(qpos)
+        art.set_qvel(np.zeros(art.dof, dtype=np.float32))
+        for j, q in zip(self.joints, qpos, strict=True):
+            j.set_drive_target(float(q))
+            j.set_drive_velocity_target(0.0)
+
+    def step(self, n: int = 1) -> None:
+        for _ in range(n):
+            self.scene.step()
+
+
+SimCheck = Callable[[SimContext], CheckResult]
+SAPIEN_CHECKS: dict[str, SimCheck] = {}
+
+
+def sapien_check(name: str) -> Callable[[SimCheck], SimCheck]:
+    """Register a SAPIEN check run by :func:`check_sapien` (in registration order)."""
+
+    def register(fn: SimCheck) -> SimCheck:
+        SAPIEN_CHECKS[name] = fn
+        return fn
+
+    return register
+
+
+def _find_urdf(folder: Path, meta: dict) -> Path:
+    rel = meta.get("files", {}).get("urdf")
+    if rel:
+        return folder / rel
+    found = sorted(folder.glob("*.urdf"))
+    return found[0] if found else folder / f"{folder.name}.urdf"
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.4g}"
+
+
+def _short(items: Sequence[str], n: int = 6) -> str:
+    items = list(items)
+    more = f" (+{len(items) - n} more)" if len(items) > n else ""
+    return "; ".join(items[:n]) + more
+
+
+def _movable(meta: dict) -> list[dict]:
+    return [j for j in meta["joints"] if j["type"] != "fixed"]
+
+
+# --------------------------------------------------------------------------- sapien_load
+
+
+def _load_problems(ctx: SimContext) -> list[str]:
+    """Everything in the loaded articulation that disagrees with metadata.json and the URDF."""
+    from .files import parse_urdf
+
+    meta, art = ctx.meta, ctx.articulation
+    problems: list[str] = []
+
+    # links
+    want_links = [link["name"] for link in meta["links"]]
+    got_links = [link.name for link in art.links]
+    if sorted(want_links) != sorted(got_links):
+        missing = sorted(set(want_links) - set(got_links))
+        extra = sorted(set(got_links) - set(want_links))
+        problems.append(f"{len(got_links)} links (want {len(want_links)}); "
+                        f"missing {missing}, unexpected {extra}")
+
+    # joints: every joint by name and type, movable ones in the active list
+    sim_joints = {j.name: j for j in art.joints if j.name}
+    want_movable = [j["name"] for j in _movable(meta)]
+    got_movable = [j.name for j in ctx.joints]
+    if sorted(want_movable) != sorted(got_movable):
+        problems.append(f"{len(got_movable)} movable joints (want {len(want_movable)}); "
+                        f"missing {sorted(set(want_movable) - set(got_movable))}, "
+                        f"unexpected {sorted(set(got_movable) - set(want_movable))}")
+    missing_fixed = [j["name"] for j in meta["joints"] if j["name"] not in sim_joints]
+    if missing_fixed and not problems:
+        problems.append(f"joints missing in SAPIEN: {missing_fixed}")
+
+    # masses (SAPIEN silently replaces a zero mass by density x collision volume)
+    mass = {link.name: float(link.mass) for link in art.links}
+    for link in meta["links"]:
+        want = link.get("mass")
+        got = mass.get(link["name"])
+        if want is None or got is None:
+            continue
+        if not math.isclose(got, want, rel_tol=MASS_RTOL, abs_tol=1e-9):
+            problems.append(f"link {link['name']}: mass {_fmt(got)} kg in SAPIEN, "
+                            f"{_fmt(want)} kg in metadata")
+
+    # collision shapes: one convex shape per <collision> (a missing file is skipped silently)
+    try:
+        urdf_model = parse_urdf(ctx.urdf)
+        for link in art.links:
+            want = len(urdf_model.links.get(link.name, {}).get("collision", []))
+            got = len(link.collision_shapes)
+            if got != want:
+                problems.append(f"link {link.name}: {got} collision shapes, URDF has {want}")
+        for name, uj in urdf_model.joints.items():
+            if uj.type != "fixed" and np.linalg.norm(uj.axis) < 1e-3:
+                problems.append(f"joint {name}: URDF axis {uj.axis.tolist()} has no direction "
+                                "(SAPIEN silently uses 1 0 0)")
+    except Exception as exc:  # the URDF already loaded in SAPIEN: report, do not crash
+        problems.append(f"URDF re-parse failed: {exc!r}")
+
+    # joint types, limits, frames at rest (links are world-aligned at rest: axis world = local)
+    ctx.articulation.set_qpos(np.zeros(art.dof, dtype=np.float32))
+    for j in meta["joints"]:
+        sj = sim_joints.get(j["name"])
+        if sj is None:
+            continue
+        if sj.type not in _SIM_TYPES.get(j["type"], set()):
+            problems.append(f"joint {j['name']}: SAPIEN type {sj.type!r} for URDF {j['type']!r}")
+            continue
+        pose = sj.get_global_pose()
+        p = np.asarray(pose.p, float)
+        if "origin" in j and np.linalg.norm(p - np.asarray(j["origin"], float)) > POS_TOL:
+            problems.append(f"joint {j['name']}: pivot at rest {np.round(p, 4).tolist()}, "
+                            f"metadata {j['origin']}")
+        if j["type"] == "fixed":
+            continue
+        axis = pose.to_transformation_matrix()[:3, 0]
+        want_axis = np.asarray(j.get("axis", axis), float)
+        norm = np.linalg.norm(want_axis)
+        if norm < 1e-9 or 1 - abs(float(axis @ want_axis) / norm) > AXIS_TOL:
+            problems.append(f"joint {j['name']}: axis {np.round(axis, 4).tolist()} in SAPIEN, "
+                            f"metadata {j.get('axis')}")
+        lo, hi = (float(x) for x in sj.get_limit()[0])
+        if j["type"] == "continuous":
+            if np.isfinite(lo) or np.isfinite(hi):
+                problems.append(f"joint {j['name']}: continuous but limited [{lo}, {hi}]")
+            continue
+        if not lo < hi:
+            problems.append(f"joint {j['name']}: limits lower {_fmt(lo)} >= upper {_fmt(hi)}")
+        for label, got, key in (("lower", lo, "lower"), ("upper", hi, "upper")):
+            want = j.get(key)
+            if want is not None and abs(got - want) > LIMIT_TOL + 1e-5 * abs(want):
+                problems.append(f"joint {j['name']}: {label} {_fmt(got)} in SAPIEN, "
+                                f"{_fmt(want)} in metadata")
+        if lo < hi and not lo - LIMIT_TOL <= 0.0 <= hi + LIMIT_TOL:
+            problems.append(f"joint {j['name']}: rest q=0 outside limits [{_fmt(lo)}, {_fmt(hi)}]")
+    return problems
+
+
+# --------------------------------------------------------------------------- sapien_drive
+
+
+def _drive_targets(lo: float, hi: float) -> tuple[list[tuple[str, float]], float]:
+    """Targets (upper first, then the full traverse to lower) and the tolerance for one joint."""
+    if not (np.isfinite(lo) and np.isfinite(hi)):
+        return [("+pi/2", CONTINUOUS_TARGET), ("-pi/2", -CONTINUOUS_TARGET)], DRIVE_TOL * math.pi
+    return [("upper", hi), ("lower", lo)], DRIVE_TOL * (hi - lo)
+
+
+@sapien_check("sapien_drive")
+def drive_check(ctx: SimContext) -> CheckResult:
+    """Drive every movable joint alone to both ends of its range; the others held at rest.
+
+    Drives are acceleration-mode PD (``DRIVE_STIFFNESS``, ``DRIVE_DAMPING``) on every joint,
+    joint friction 0 (PhysX's coefficient model holds light parts), the driven joint's velocity
+    capped at ``DRIVE_SPEED`` ranges per second. A target counts as reached when the joint is
+    within ``DRIVE_TOL`` of its range; each target gets ``DRIVE_MAX_TIME`` s of simulation.
+    """
+    failures: list[str] = []
+    max_steps = int(round(DRIVE_MAX_TIME / ctx.timestep))
+    disturbed = (0.0, "")  # largest displacement of a held joint (a hint of self-collision)
+    for i, joint in enumerate(ctx.joints):
+        ctx.reset()
+        for j in ctx.joints:
+            j.set_drive_property(DRIVE_STIFFNESS, DRIVE_DAMPING, mode="acceleration")
+            j.set_friction(0.0)
+        lo, hi = (float(x) for x in joint.get_limit()[0])
+        targets, tol = _drive_targets(lo, hi)
+        if not tol > 0:
+            failures.append(f"{joint.name}: empty or inverted range [{_fmt(lo)}, {_fmt(hi)}]")
+            continue
+        span = (hi - lo) if np.isfinite(hi - lo) else 2 * CONTINUOUS_TARGET
+        joint.set_max_velocity(float(DRIVE_SPEED * span))
+        for label, target in targets:
+            start = float(ctx.articulation.qpos[i])
+            joint.set_drive_target(float(target))
+            q = start
+            for _ in range(0, max_steps, CHECK_EVERY):
+                ctx.step(CHECK_EVERY)
+                q = float(ctx.articulation.qpos[i])
+                if not np.isfinite(q) or abs(q - target) <= tol:
+                    break
+            if not np.isfinite(q):
+                failures.append(f"{joint.name} -> {label}: qpos became {q}")
+                break
+            held = np.abs(np.asarray(ctx.articulation.qpos, float) - ctx.rest_qpos)
+            held[i] = 0.0
+            if held.size and held.max() > disturbed[0]:
+                k = int(np.argmax(held))
+                disturbed = (float(held[k]), f"{ctx.joints[k].name} while driving {joint.name}")
+            if abs(q - target) > tol:
+                moved = (q - start) / (target - start) if target != start else 0.0
+                failures.append(
+                    f"{joint.name} -> {label} {_fmt(target)}: stopped at {_fmt(q)} "
+                    f"({moved:.0%} of the way from {_fmt(start)}, tol {_fmt(tol)})"
+                )
+    ctx.reset()
+    n = len(ctx.joints)
+    info = f"held joints moved at most {disturbed[0]:.3g}" + (
+        f" ({disturbed[1]})" if disturbed[1] else "")
+    if failures:
+        return CheckResult("sapien_drive", False,
+                           f"{len(failures)} of {2 * n} targets missed: {_short(failures)}; {info}")
+    return CheckResult("sapien_drive", True,
+                       f"{n} joints reached both ends (tol 5% of range); {info}")
+
+
+# --------------------------------------------------------------------------- sapien_rest
+
+
+def rest_displacement(ctx: SimContext, duration: float = REST_TIME) -> tuple[float, str, bool]:
+    """Simulate the passive object at rest; return (max displacement, its joint, finite?)."""
+    ctx.reset()
+    art = ctx.articulation
+    steps = max(1, int(round(duration / ctx.timestep)))
+    worst = np.zeros(art.dof)
+    finite = True
+    for _ in range(steps):
+        ctx.scene.step()
+        q = np.asarray(art.qpos, float)
+        if not np.all(np.isfinite(q)):
+            finite = False
+            break
+        worst = np.maximum(worst, np.abs(q - ctx.rest_qpos))
+    ctx.reset()
+    if art.dof == 0:
+        return 0.0, "", finite
+    k = int(np.argmax(worst))
+    return float(worst[k]), ctx.joints[k].name, finite
+
+
+def make_rest_check(max_displacement: float | None = None) -> SimCheck:
+    """A rest check; with ``max_displacement`` (m or rad) it fails above that threshold."""
+
+    def rest_check(ctx: SimContext) -> CheckResult:
+        disp, name, finite = rest_displacement(ctx)
+        frictions = sorted({round(s.friction, 4) for s in ctx.loaded})
+        detail = (f"max joint displacement {disp:.3g} ({name or 'no joints'}) over {REST_TIME:g} s "
+                  f"passive (URDF damping, joint friction coefficient {frictions}, gravity on)")
+        if not finite:
+            return CheckResult("sapien_rest", False, "qpos became NaN/inf at rest; " + detail)
+        if max_displacement is not None and disp > max_displacement:
+            return CheckResult("sapien_rest", False,
+                               f"{detail} > allowed {max_displacement:g}")
+        return CheckResult("sapien_rest", True, detail)
+
+    rest_check.__doc__ = "Passive joints, gravity, 1 s: no NaN; displacement reported."
+    return rest_check
+
+
+SAPIEN_CHECKS["sapien_rest"] = make_rest_check(None)
+
+
+# --------------------------------------------------------------------------- entry points
+
+
+def _read_meta(folder: Path) -> dict:
+    return json.loads((folder / "metadata.json").read_text())
+
+
+def _context(folder: Path, meta: dict, urdf: Path, scene, articulation) -> SimContext:
+    joints = list(articulation.get_active_joints())
+    loaded = []
+    rest = []
+    for j in joints:
+        lo, hi = (float(x) for x in j.get_limit()[0])
+        loaded.append(JointState(float(j.stiffness), float(j.damping), float(j.friction),
+                                 float(j.max_velocity), lo, hi))
+        rest.append(min(max(0.0, lo), hi) if lo <= hi else 0.0)
+    return SimContext(folder, urdf, meta, scene, articulation, joints, loaded,
+                      np.asarray(rest, dtype=float))
+
+
+def check_sapien(folder: str | Path, checks: Sequence[str] | None = None,
+                 timestep: float = 1 / 240) -> list[CheckResult]:
+    """Load one object folder in SAPIEN and run the simulator checks.
+
+    Parameters
+    ----------
+    folder : str or Path
+        An object folder (``metadata.json`` + URDF + meshes).
+    checks : sequence of str, optional
+        Names from :data:`SAPIEN_CHECKS` to run after ``sapien_load`` (default: all).
+    timestep : float
+        Simulation time step.
+
+    Returns
+    -------
+    list of CheckResult
+        ``sapien_load`` first, then one result per check. When loading fails, the other
+        checks fail with "not run".
+
+    Raises
+    ------
+    SimUnavailableError
+        SAPIEN is not installed.
+    """
+    _import_sapien()
+    folder = Path(folder)
+    names = list(SAPIEN_CHECKS) if checks is None else list(checks)
+    unknown = [n for n in names if n not in SAPIEN_CHECKS]
+    if unknown:
+        raise ValueError(f"unknown SAPIEN checks {unknown}; known: {list(SAPIEN_CHECKS)}")
+
+    t0 = time.perf_counter()
+    ctx = None
+    try:
+        meta = _read_meta(folder)
+        urdf = _find_urdf(folder, meta)
+        with capture_native_log() as log:
+            scene, art = load_sapien(urdf, timestep=timestep)
+        ctx = _context(folder, meta, urdf, scene, art)
+        problems = [f"SAPIEN {p}" for p in log.problems] + _load_problems(ctx)
+        detail = (_short(problems) if problems else
+                  f"{len(art.links)} links, {len(ctx.joints)} movable joints as in metadata")
+        load = CheckResult("sapien_load", not problems, detail)
+    except SimUnavailableError:
+        raise
+    except Exception as exc:
+        load = CheckResult("sapien_load", False, f"load failed: {type(exc).__name__}: {exc}")
+    load.detail += f" [{time.perf_counter() - t0:.2f} s]"
+    results = [load]
+    if ctx is None:
+        return results + [CheckResult(n, False, "not run: sapien_load failed") for n in names]
+
+    for name in names:
+        t0 = time.perf_counter()
+        try:
+            with capture_native_log() as log:
+                result = SAPIEN_CHECKS[name](ctx)
+            if log.problems:
+                result = CheckResult(name, False, f"SAPIEN {_short(log.problems)}; {result.detail}")
+        except Exception as exc:
+            result = CheckResult(name, False, f"crashed: {type(exc).__name__}: {exc}")
+        result.detail += f" [{time.perf_counter() - t0:.2f} s]"
+        results.append(result)
+    return results
+
+
+class _LogCollector(logging.Handler):
+    def __init__(self) -> None:
+        super().__init__(logging.WARNING)
+        self.messages: list[str] = []
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.messages.append(f"{record.levelname.lower()}: {record.getMessage()[:200]}")
+
+
+def check_maniskill(folder: str | Path) -> list[CheckResult]:
+    """Load one object folder through ManiSkill's URDF loader (CPU physics, no renderer).
+
+    Returns
+    -------
+    list of CheckResult
+        ``maniskill_load``: loads with a fixed base; link and active-joint names and counts as
+        in ``metadata.json``; 10 physics steps keep qpos finite; no SAPIEN or ManiSkill
+        warning logged.
+
+    Raises
+    ------
+    SimUnavailableError
+        SAPIEN or ManiSkill is not installed.
+    """
+    _import_maniskill()
+    folder = Path(folder)
+    t0 = time.perf_counter()
+    collector = _LogCollector()
+    ms_logger = logging.getLogger("mani_skill")
+    ms_logger.addHandler(collector)
+    try:
+        meta = _read_meta(folder)
+        urdf = _find_urdf(folder, meta)
+        with capture_native_log() as log:
+            scene, art = load_maniskill(urdf, name=meta.get("name", folder.name))
+            for _ in range(10):
+                scene.step()
+            qpos = art.get_qpos().cpu().numpy()
+        problems = [f"SAPIEN {p}" for p in log.problems]
+        problems += [f"ManiSkill {m}" for m in collector.messages]
+        want_links = sorted(link["name"] for link in meta["links"])
+        got_links = sorted(link.name for link in art.links)
+        if got_links != want_links:
+            problems.append(f"{len(got_links)} links (want {len(want_links)}): missing "
+                            f"{sorted(set(want_links) - set(got_links))}, unexpected "
+                            f"{sorted(set(got_links) - set(want_links))}")
+        want_joints = sorted(j["name"] for j in _movable(meta))
+        got_joints = sorted(j.name for j in art.active_joints)
+        if got_joints != want_joints:
+            problems.append(f"{len(got_joints)} active joints (want {len(want_joints)}): missing "
+                            f"{sorted(set(want_joints) - set(got_joints))}, unexpected "
+                            f"{sorted(set(got_joints) - set(want_joints))}")
+        root = art._objs[0].links[0].joint.type
+        if root != "fixed":
+            problems.append(f"root link joint {root!r}, want 'fixed'")
+        if not np.all(np.isfinite(qpos)):
+            problems.append("qpos not finite after 10 steps")
+        detail = _short(problems) if problems else (
+            f"{len(got_links)} links, {len(got_joints)} active joints, fixed base")
+        result = CheckResult("maniskill_load", not problems, detail)
+    except SimUnavailableError:
+        raise
+    except Exception as exc:
+        result = CheckResult("maniskill_load", False,
+                             f"load failed: {type(exc).__name__}: {exc}")
+    finally:
+        ms_logger.removeHandler(collector)
+    result.detail += f" [{time.perf_counter() - t0:.2f} s]"
+    return [result]
