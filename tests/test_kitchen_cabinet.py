@@ -2,6 +2,7 @@ import numpy as np
 import pytest
 
 import infmob_usd
+
 from collide import overlap
 
 SEEDS = range(8)

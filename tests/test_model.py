@@ -6,6 +6,7 @@ import pytest
 from infmob_usd import joints as J
 from infmob_usd.errors import ModelError
 from infmob_usd.mass import DUMMY_MASS
+
 from zoo import zoo, zoo_blueprint
 
 CHAIN = {"fixed_part": 1, "rev_part": 1, "cont_part": 1, "pris_part": 1, "rp_part": 2, "cp_part": 2,

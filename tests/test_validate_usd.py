@@ -4,6 +4,7 @@ import shutil
 import pytest
 
 from infmob_usd.validate.usd_check import check_usd
+
 from zoo import zoo
 
 

@@ -34,7 +34,7 @@ def usd_validators(stage: Usd.Stage) -> CheckResult:
 
 
 def _load_physics(stage: Usd.Stage) -> dict:
-    fn = getattr(UsdPhysics, "LoadUsdPhysicsFromRange")
+    fn = UsdPhysics.LoadUsdPhysicsFromRange
     import warnings
 
     with warnings.catch_warnings():
