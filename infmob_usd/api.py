@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from types import ModuleType
 from typing import Any
 
@@ -57,10 +58,16 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
     """
     module = get_category(category)
     check_texture_size(texture_size)
+    t0 = time.perf_counter()
     rng = streams(category, seed)
     params = module.SCHEMA.sample(rng["params"], overrides)
+    t1 = time.perf_counter()
     bp = module.build(params, rng["structure"], rng["geometry"])
-    return assemble(bp, seed, rng["materials"], texture_size, params, module.SCHEMA.validate(overrides))
+    t2 = time.perf_counter()
+    obj = assemble(bp, seed, rng["materials"], texture_size, params, module.SCHEMA.validate(overrides))
+    obj.timings = {"sampling": t1 - t0, "geometry": t2 - t1 + obj.timings["geometry"],
+                   "textures": obj.timings["textures"]}
+    return obj
 
 
 def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict | None = None,
@@ -73,6 +80,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     from .materials import FAMILIES, sample_look, synthesize
 
     check_texture_size(texture_size)
+    t0 = time.perf_counter()
     physical.rest_on_ground(bp)
     looks = {slot: sample_look(family, materials_rng) for slot, family in bp.materials.items()}
     used = sorted({p.material for part in bp.parts.values() for p in part.pieces})
@@ -82,7 +90,9 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     densities = {slot: FAMILIES[bp.materials[slot]].density for slot in used}
     links, joints = build(bp, densities)
     looks = {slot: looks[slot] for slot in used}
+    t1 = time.perf_counter()
     textures = {slot: synthesize(look, texture_size) for slot, look in looks.items()}
+    t2 = time.perf_counter()
     return ArticulatedObject(
         category=bp.category,
         seed=int(seed),
@@ -93,4 +103,5 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         materials=looks,
         textures=textures,
         texture_size=texture_size,
+        timings={"geometry": t1 - t0, "textures": t2 - t1},
     )

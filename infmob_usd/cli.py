@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -21,14 +22,21 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("category")
 
     g = sub.add_parser("generate", help="generate objects: DIR/CATEGORY/CATEGORY_SSSSSS/ per seed")
-    g.add_argument("category")
-    g.add_argument("--count", type=int, default=1, help="number of objects (seeds S..S+N-1); default 1")
+    g.add_argument("category", help="a category id, a comma list of them, or `all`")
+    g.add_argument("--count", type=int, default=1, help="objects per category (seeds S..S+N-1); default 1")
     g.add_argument("--seed", type=int, default=0, help="first seed S; default 0")
     g.add_argument("--out", default="infmob_out", help="output folder DIR; default ./infmob_out")
     g.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a parameter (repeatable); see `infmob params CATEGORY`")
     g.add_argument("--texture-size", type=int, default=512, metavar="PX",
                    help="texture edge in pixels, a power of two 16..4096; default 512")
+    g.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+                   help="parallel worker processes; default: all cores")
+    g.add_argument("--backend", choices=("process", "ray"), default="process",
+                   help="process pool (default) or a Ray cluster (pip install -e '.[ray]')")
+    g.add_argument("--address", default=None, help="Ray cluster address (with --backend ray)")
+    g.add_argument("--overwrite", action="store_true",
+                   help="regenerate objects that already exist (default: skip them, resuming a run)")
 
     v = sub.add_parser("validate", help="check object folders: USD, URDF agreement and SAPIEN")
     v.add_argument("paths", nargs="+", metavar="PATH", help="an object folder or a folder of them")
@@ -60,27 +68,53 @@ def cmd_params(args) -> int:
     return 0
 
 
+def _categories(spec: str) -> list[str]:
+    from .api import get_category, list_categories
+
+    if spec == "all":
+        return list_categories()
+    names = [c.strip() for c in spec.split(",") if c.strip()]
+    for name in names:
+        get_category(name)
+    return names
+
+
 def cmd_generate(args) -> int:
-    from .api import check_texture_size, generate, get_category
+    from .api import check_texture_size, get_category
+    from .batch import Job, run_batch
     from .layers import check_output_dir
     from .params import parse_assignment
 
-    module = get_category(args.category)
+    categories = _categories(args.category)
     overrides = dict(parse_assignment(s) for s in args.set)
-    module.SCHEMA.validate(overrides)  # fail before anything is written
+    for category in categories:  # fail before anything is written
+        get_category(category).SCHEMA.validate(overrides)
     check_texture_size(args.texture_size)
     if args.count < 1:
         return _fail(f"--count must be at least 1, got {args.count}")
     if args.seed < 0:
         return _fail(f"--seed must be non-negative, got {args.seed}")
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        return _fail(f"output path {str(out)!r} is a file; give a folder (--out DIR)")
-    target = check_output_dir(out / args.category)
-    for seed in range(args.seed, args.seed + args.count):
-        obj = generate(args.category, seed=seed, texture_size=args.texture_size, **overrides)
-        print(obj.save(target), flush=True)
-    return 0
+    if args.workers < 1:
+        return _fail(f"--workers must be at least 1, got {args.workers}")
+    out = check_output_dir(Path(args.out))
+    jobs = [Job(c, seed, tuple(sorted(overrides.items())), args.texture_size)
+            for c in categories for seed in range(args.seed, args.seed + args.count)]
+
+    def show(row: dict) -> None:
+        if "error" in row:
+            print(f"infmob: {row['category']} seed {row['seed']} failed: {row['error']}"
+                  f" (traceback: {out / row['traceback']})", file=sys.stderr, flush=True)
+        else:
+            print(out / row["folder"], flush=True)
+
+    rows = run_batch(jobs, out, workers=args.workers, overwrite=args.overwrite, backend=args.backend,
+                     address=args.address, on_row=show)
+    skipped = len(jobs) - len(rows)
+    if skipped:
+        print(f"infmob: {skipped} object(s) already complete in {out}, skipped (--overwrite to redo)",
+              file=sys.stderr)
+    failed = sum(1 for r in rows if "error" in r)
+    return 1 if failed else 0
 
 
 def cmd_validate(args) -> int:

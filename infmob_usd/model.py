@@ -76,7 +76,7 @@ class ArticulatedObject:
     materials: dict[str, Any]  # slot -> materials.Look
     textures: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # slot -> map -> image
     texture_size: int = 512
-    growth: dict[str, Any] = field(default_factory=dict)
+    timings: dict[str, float] = field(default_factory=dict)  # seconds per stage; never written to files
 
     @property
     def name(self) -> str:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import shutil
 import tempfile
+import time
 from pathlib import Path
 
 from infmob_usd.errors import OutputError
@@ -51,11 +52,11 @@ def write_object(obj, out: Path) -> Path:
     final = out / obj.name
     tmp = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".tmp", dir=out))
     try:
-        write_textures(obj, tmp)
-        write_usd(obj, tmp)
-        write_urdf(obj, tmp)
-        write_semantics(obj, tmp)
-        write_metadata(obj, tmp)
+        for stage, writer in (("textures_io", write_textures), ("usd", write_usd), ("urdf", write_urdf),
+                              ("metadata", write_semantics), ("metadata", write_metadata)):
+            t0 = time.perf_counter()
+            writer(obj, tmp)
+            obj.timings[stage] = obj.timings.get(stage, 0.0) + time.perf_counter() - t0
         os.chmod(tmp, 0o755)
         if final.exists():
             old = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".old", dir=out))

@@ -5,9 +5,10 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 from pxr import Sdf, Usd, UsdGeom, UsdPhysics, UsdShade
-from zoo import zoo
 
 from infmob_usd.errors import OutputError
+
+from zoo import zoo
 
 
 @pytest.fixture(scope="module")
