@@ -42,6 +42,11 @@ def _parser() -> argparse.ArgumentParser:
     v.add_argument("paths", nargs="+", metavar="PATH", help="an object folder or a folder of them")
     v.add_argument("--no-sim", action="store_true", help="skip the SAPIEN checks (USD and URDF only)")
     v.add_argument("--verbose", "-v", action="store_true", help="print every check, not only failures")
+    st = sub.add_parser("stats", help="dataset statistics: joint counts, kinds, tree depth, tree edit distance")
+    st.add_argument("folder", metavar="DIR")
+    st.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    st.add_argument("--max-pairs", type=int, default=2000,
+                    help="at most this many (seeded, sampled) object pairs per group for mean TED; default 2000")
     return ap
 
 
@@ -140,7 +145,20 @@ def cmd_validate(args) -> int:
     return 0 if n_ok == len(folders) else 1
 
 
-COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate}
+def cmd_stats(args) -> int:
+    import json
+
+    from .validate.stats import dataset_stats, format_stats
+
+    stats = dataset_stats(args.folder, max_pairs=args.max_pairs)
+    if not stats["overall"]["objects"]:
+        return _fail(f"no object folders (with metadata.json) under {args.folder}")
+    print(json.dumps(stats, indent=2) if args.json else format_stats(stats))
+    return 0
+
+
+COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
+            "stats": cmd_stats}
 
 
 def main(argv: list[str] | None = None) -> int:

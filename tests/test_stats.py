@@ -1,0 +1,60 @@
+import json
+
+from infmob_usd.cli import main
+from infmob_usd.validate.stats import Tree, dataset_stats, ted, tree_from_metadata
+
+
+def T(label, *kids):
+    return Tree(label, list(kids))
+
+
+def test_ted_hand_computed_values():
+    a = T("a", T("b"), T("c"))
+    assert ted(a, a) == 0
+    assert ted(a, T("a", T("b"))) == 1  # delete c
+    assert ted(a, T("x", T("b"), T("c"))) == 1  # relabel the root
+    assert ted(T("a", T("b", T("c"))), T("a", T("c"))) == 1  # delete the middle node
+    assert ted(T("a"), T("a", T("b"), T("c"), T("d"))) == 3
+    # the classic example of Zhang & Shasha (1989): f(d(a, c(b)), e) -> f(c(d(a, b)), e) costs 2
+    t1 = T("f", T("d", T("a"), T("c", T("b"))), T("e"))
+    t2 = T("f", T("c", T("d", T("a"), T("b"))), T("e"))
+    assert ted(t1, t2) == 2
+    assert ted(t1, t2) == ted(t2, t1)
+
+
+def test_tree_from_metadata_collapses_dummies_and_orders_children():
+    meta = {
+        "links": [{"name": n, "label": lab, "dummy": d} for n, lab, d in [
+            ("base", "body", False), ("lid_dummy0", "dummy", True), ("lid", "lid", False),
+            ("knob", "knob", False), ("door", "door", False)]],
+        "joints": [
+            {"parent": "base", "child": "door", "kind": "revolute"},
+            {"parent": "base", "child": "lid_dummy0", "kind": "continuous_prismatic"},
+            {"parent": "lid_dummy0", "child": "lid", "kind": "continuous_prismatic"},
+            {"parent": "lid", "child": "knob", "kind": "fixed"},
+        ],
+    }
+    t = tree_from_metadata(meta)
+    assert t.label == "root:body" and t.size() == 4 and t.depth() == 2
+    assert [c.label for c in t.children] == ["continuous_prismatic:lid", "revolute:door"]
+    assert t.children[0].children[0].label == "fixed:knob"
+
+
+def test_dataset_stats_on_generated_objects(tmp_path, capsys):
+    assert main(["generate", "kitchen_cabinet", "--count", "3", "--out", str(tmp_path),
+                 "--texture-size", "16", "--workers", "1"]) == 0
+    capsys.readouterr()
+    stats = dataset_stats(tmp_path)
+    s = stats["categories"]["kitchen_cabinet"]
+    metas = [json.loads(p.read_text()) for p in sorted(tmp_path.rglob("metadata.json"))]
+    joints = [sum(m["joint_kinds"].values()) for m in metas]
+    assert s["objects"] == 3 and s["ted_pairs"] == 3
+    assert abs(s["mean_joints"] - sum(joints) / 3) < 1e-12
+    trees = [tree_from_metadata(m) for m in metas]
+    expected = (ted(trees[0], trees[1]) + ted(trees[0], trees[2]) + ted(trees[1], trees[2])) / 3
+    assert abs(s["mean_ted"] - expected) < 1e-12
+    assert main(["stats", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "kitchen_cabinet" in out and "Infinite Mobility" in out and "78.62" in out
+    assert main(["stats", "--json", str(tmp_path)]) == 0
+    assert json.loads(capsys.readouterr().out)["overall"]["objects"] == 3
