@@ -21,7 +21,7 @@ $(STAMP): pyproject.toml | sysdeps
 	$(BIN)/pip install -q --upgrade pip
 	# torch first, pinned: mani-skill then finds it satisfied (another torch pulls gigabytes of CUDA)
 	$(BIN)/pip install -q torch==2.13.0
-	$(BIN)/pip install -q -e ".[sim,dev]"
+	$(BIN)/pip install -q -e ".[sim,dev,ray]"
 	touch $(STAMP)
 
 demo: $(STAMP)

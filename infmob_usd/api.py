@@ -89,11 +89,12 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
     densities = {slot: FAMILIES[bp.materials[slot]].density for slot in used}
     links, joints = build(bp, densities)
+    physical.ensure_gaps(links, joints)
     looks = {slot: looks[slot] for slot in used}
     t1 = time.perf_counter()
     textures = {slot: synthesize(look, texture_size) for slot, look in looks.items()}
     t2 = time.perf_counter()
-    return ArticulatedObject(
+    obj = ArticulatedObject(
         category=bp.category,
         seed=int(seed),
         params=params or {},
@@ -105,3 +106,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         texture_size=texture_size,
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
+    physical.limit_to_ground(obj)
+    obj.timings["geometry"] += time.perf_counter() - t2
+    return obj

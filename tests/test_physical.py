@@ -1,0 +1,63 @@
+import math
+
+import numpy as np
+import pytest
+
+from collide import overlap
+from infmob_usd import geometry as g
+from infmob_usd import joints as J
+from infmob_usd.api import assemble
+from infmob_usd.blueprint import Blueprint
+from infmob_usd.errors import ModelError
+from infmob_usd.physical import DYNAMICS, GROUND_TOL, _lowest, gap_size
+
+
+def _make(bp):
+    return assemble(bp, 0, np.random.default_rng(0), 16)
+
+
+def test_a_bottom_hinged_door_on_a_low_body_gets_a_reduced_limit():
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("body", "body", [g.box_between([-0.3, -0.3, 0.0], [0.3, 0.3, 0.1], "m")])
+    # a 0.5 m door hinged 0.1 m above the floor, allowed to open 135 deg: its top edge would
+    # sweep 0.25 m below the floor; it may only pass horizontal by about asin(0.1 / 0.5)
+    bp.add("door", "door", [g.box_between([0.302, -0.25, 0.1], [0.322, 0.25, 0.6], "m")])
+    bp.join(J.revolute("body", "door", (0.322, 0, 0.1), (0, 1, 0), 0.0, 0.75 * math.pi))
+    obj = _make(bp)
+    door = obj.joints[0]
+    assert math.pi / 2 < door.upper < math.pi / 2 + math.asin(0.1 / 0.5) + 0.01
+    assert _lowest(obj, {door.name: door.upper}) >= -GROUND_TOL
+    assert _lowest(obj, {door.name: door.upper + 0.02}) < -GROUND_TOL  # the limit is tight
+
+
+def test_a_continuous_joint_through_the_ground_is_an_error():
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("body", "body", [g.box_between([-0.1, -0.1, 0.0], [0.1, 0.1, 0.05], "m")])
+    bp.add("arm", "arm", [g.box_between([0.11, -0.02, 0.0], [0.5, 0.02, 0.04], "m")])
+    bp.join(J.continuous("body", "arm", (0.11, 0, 0.02), (0, 1, 0)))
+    with pytest.raises(ModelError, match="raise it"):
+        _make(bp)
+
+
+def test_a_drawer_flush_with_its_carcass_gets_eroded_collision_not_visuals():
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("carcass", "body", [g.box_between([-0.3, -0.3, 0.0], [0.3, 0.3, 0.02], "m")])
+    # the drawer sits directly on the carcass bottom (zero clearance)
+    drawer = g.box_between([-0.25, -0.2, 0.02], [0.3, 0.2, 0.2], "m")
+    bp.add("drawer", "drawer", [drawer])
+    bp.join(J.prismatic("carcass", "drawer", (0.3, 0, 0.02), (1, 0, 0), 0.0, 0.3))
+    obj = _make(bp)
+    link = obj.link("drawer")
+    hull = link.pieces[0].convex[0] + link.origin
+    gap = gap_size(np.ptp(drawer.vertices, axis=0))
+    assert gap == pytest.approx(0.02 * 0.18)
+    assert hull[:, 2].min() >= 0.02 + gap - 1e-9  # collision lifted clear of the carcass
+    assert np.allclose(link.pieces[0].vertices + link.origin, drawer.vertices)  # visual unchanged
+    rest = obj.poses()
+    assert overlap(obj.link("carcass"), rest["carcass"], link, rest["drawer"], pad=0) == 0
+
+
+def test_dynamics_have_a_role_for_every_joint_family():
+    for role in ("hinge", "slide", "knob", "button", "wheel", "lid", "swivel", "telescope"):
+        d = DYNAMICS[role]
+        assert d.damping > 0 and d.friction >= 0 and d.effort > 0 and d.velocity > 0
