@@ -3,7 +3,6 @@ import shutil
 
 import pytest
 
-from infmob_usd import batch
 from infmob_usd.batch import Job, run_batch
 from infmob_usd.validate import validate_object
 

@@ -3,13 +3,14 @@ import math
 import numpy as np
 import pytest
 
-from collide import overlap
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.api import assemble
 from infmob_usd.blueprint import Blueprint
 from infmob_usd.errors import ModelError
 from infmob_usd.physical import DYNAMICS, GROUND_TOL, _lowest, gap_size
+
+from collide import overlap
 
 
 def _make(bp):
