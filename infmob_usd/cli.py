@@ -47,6 +47,12 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--json", action="store_true", help="print JSON instead of a table")
     st.add_argument("--max-pairs", type=int, default=2000,
                     help="at most this many (seeded, sampled) object pairs per group for mean TED; default 2000")
+    b = sub.add_parser("bench", help="benchmark: seconds per object by stage, memory, parallel efficiency")
+    b.add_argument("--categories", default="all", help="comma list or `all` (default)")
+    b.add_argument("--count", type=int, default=10, help="objects per category; default 10")
+    b.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="workers for the parallel run")
+    b.add_argument("--texture-size", type=int, default=512, metavar="PX")
+    b.add_argument("--json", action="store_true", help="print JSON instead of a table")
     return ap
 
 
@@ -157,8 +163,23 @@ def cmd_stats(args) -> int:
     return 0
 
 
+def cmd_bench(args) -> int:
+    import json
+
+    from .api import check_texture_size
+    from .validate.bench import format_bench, run_bench
+
+    categories = _categories(args.categories)
+    check_texture_size(args.texture_size)
+    if args.count < 1 or args.workers < 1:
+        return _fail("--count and --workers must be at least 1")
+    res = run_bench(categories, args.count, args.texture_size, args.workers)
+    print(json.dumps(res, indent=2) if args.json else format_bench(res))
+    return 0
+
+
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
-            "stats": cmd_stats}
+            "stats": cmd_stats, "bench": cmd_bench}
 
 
 def main(argv: list[str] | None = None) -> int:
