@@ -1,0 +1,291 @@
+"""The microwave category: parts, joints, clearances at every joint state, overrides, seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import linprog
+from scipy.spatial import ConvexHull
+
+from infmob_usd import physical
+from infmob_usd.categories import microwave as mw
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+SEEDS = range(10)
+LABELS = {"body", "door", "plate", "button", "knob", "control_panel"}
+
+
+def make(seed, **overrides):
+    r = streams("microwave", seed)
+    p = mw.SCHEMA.sample(r["params"], overrides)
+    bp = mw.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+# -- convex geometry helpers ---------------------------------------------------------
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def moved(points, dof, q):
+    """Points of a child part after its one DoF moved by ``q`` (radians or metres)."""
+    if dof.type == "prismatic":
+        return points + np.asarray(dof.axis) * q
+    o = np.asarray(dof.origin)
+    return (points - o) @ rotation(dof.axis, q).T + o
+
+
+def hulls(part, dof=None, q=0.0):
+    out = []
+    for piece in part.pieces:
+        for c in piece.convex:
+            out.append(moved(c, dof, q) if dof is not None else c)
+    return out
+
+
+def depth(a, b):
+    """Radius of the largest ball inside both convex hulls (<= 0: they do not overlap).
+
+    For disjoint hulls it is minus the amount every face must be pushed out for the
+    two to meet, a lower bound of half their distance.
+    """
+    lo = np.maximum(a.min(0), b.min(0))
+    hi = np.minimum(a.max(0), b.max(0))
+    if (lo - hi > 0.01).any():
+        return -0.005  # far apart along an axis
+    eq = np.vstack([ConvexHull(a).equations, ConvexHull(b).equations])  # n.x + d <= 0, |n| = 1
+    res = linprog([0, 0, 0, -1], A_ub=np.c_[eq[:, :3], np.ones(len(eq))], b_ub=-eq[:, 3],
+                  bounds=[(None, None)] * 3 + [(None, 1.0)], method="highs")
+    assert res.status == 0
+    return -res.fun
+
+
+def max_depth(hs_a, hs_b):
+    return max((depth(a, b) for a in hs_a for b in hs_b), default=-1.0)
+
+
+def others(bp, name):
+    """Convex hulls of every part except ``name``, at rest."""
+    return [h for n, part in bp.parts.items() if n != name for h in hulls(part)]
+
+
+# -- parts and labels ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_required_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    want = {"body": "body", "door": "door", "plate": "plate", "control_panel": "control_panel"}
+    for name, label in want.items():
+        assert bp.parts[name].label == label
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    door = bp.parts["door"]
+    assert any(pc.material == "glass" for pc in door.pieces)
+    assert bp.materials["glass"] == "glass" and bp.materials["plate"] == "glass"
+    assert bp.materials["body"] == p["body_finish"] in ("painted", "brushed_metal", "plastic")
+    assert bp.materials["interior"] in ("enamel", "painted")
+    assert bp.materials["button"] == bp.materials["knob"] == "plastic"
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        for pc in part.pieces:
+            assert pc.convex, f"{part.name}: a piece without collision"
+    # the model builds: every link has a positive mass
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_size_is_a_countertop_microwave(seed):
+    p, bp = make(seed)
+    body = np.array([pc.bounds for pc in bp.parts["body"].pieces])
+    size = body[:, 1].max(0) - body[:, 0].min(0)
+    assert size[1] == pytest.approx(p["width"], abs=0.003)
+    assert size[2] == pytest.approx(p["height"], abs=1e-6)
+    assert 0.44 <= p["width"] <= 0.62 and 0.25 <= p["height"] <= 0.36
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+
+
+# -- joints ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_kinds_axes_and_limits(seed):
+    p, bp = make(seed)
+    door = by_child(bp, "door")
+    assert door.kind == "revolute" and door.parent == "body"
+    d = door.dofs[0]
+    assert d.axis == pytest.approx((0, 0, -1))
+    assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
+    # pivot on the door's front face at its left (min Y) edge
+    lo, hi = np.array([pc.bounds for pc in bp.parts["door"].pieces if pc.name != "handle"]).transpose(1, 0, 2)
+    assert d.origin[0] == pytest.approx(hi[:, 0].max())
+    assert d.origin[1] == pytest.approx(lo[:, 1].min())
+
+    plate = by_child(bp, "plate")
+    assert plate.kind == "continuous" and plate.parent == "body"
+    assert abs(plate.dofs[0].axis[2]) == pytest.approx(1.0)
+
+    assert by_child(bp, "control_panel").kind == "fixed"
+    for name, part in bp.parts.items():
+        j = next((j for j in bp.joints if j.child == name), None)
+        if part.label == "button":
+            assert j.kind == "prismatic" and j.parent == "control_panel"
+            b = j.dofs[0]
+            assert b.axis == pytest.approx((-1, 0, 0)) and b.lower == 0.0
+            lo, hi = part.pieces[0].bounds
+            assert b.upper == pytest.approx((hi[2] - lo[2]) / 8, rel=1e-6)
+            # a pressed button still stands proud of the fascia
+            face = bp.parts["control_panel"].pieces[0].bounds[1, 0]
+            assert hi[0] - b.upper > face
+        elif part.label == "knob":
+            assert j.kind == "continuous" and j.parent == "control_panel"
+            assert abs(j.dofs[0].axis[0]) == pytest.approx(1.0)
+    assert 2 <= len(movable(bp)) <= 14
+
+
+# -- clearances ----------------------------------------------------------------------------
+
+TOUCH = 5e-4  # m: deepest overlap tolerated between two collision hulls
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_door_sweep_never_enters_the_rest(seed):
+    _, bp = make(seed)
+    dof = by_child(bp, "door").dofs[0]
+    rest = others(bp, "door")
+    for frac in (0.0, 0.25, 0.5, 0.75, 1.0):
+        door = hulls(bp.parts["door"], dof, dof.lower + frac * (dof.upper - dof.lower))
+        assert max_depth(door, rest) < TOUCH, f"door overlaps at {frac:.0%} open"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_moving_parts_are_clear_at_rest(seed):
+    """Every moving part keeps >= 2 mm from everything else at rest."""
+    _, bp = make(seed)
+    for j in movable(bp):
+        d = max_depth(hulls(bp.parts[j.child]), others(bp, j.child))
+        assert -2 * d >= 0.0019, f"{j.child} is within 2 mm of another part"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_buttons_knobs_plate_move_freely(seed):
+    _, bp = make(seed)
+    for j in movable(bp):
+        if j.child == "door":
+            continue
+        dof = j.dofs[0]
+        qs = [dof.upper] if dof.type == "prismatic" else [0.7, math.pi / 2, 2.5, -1.3]
+        rest = others(bp, j.child)
+        for q in qs:
+            assert max_depth(hulls(bp.parts[j.child], dof, q), rest) < TOUCH, f"{j.child} at {q}"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground_at_the_limits(seed):
+    _, bp = make(seed)
+    for j in movable(bp):
+        dof = j.dofs[0]
+        for q in (dof.lower, dof.upper):
+            pts = np.vstack([pc.vertices for pc in bp.parts[j.child].pieces])
+            assert moved(pts, dof, q)[:, 2].min() >= -1e-9
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_plate_lies_inside_the_cavity(seed):
+    _, bp = make(seed)
+    liner = [pc for pc in bp.parts["body"].pieces if pc.material == "interior"]
+    inner = np.array([pc.bounds for pc in liner])
+    floor = min(liner, key=lambda pc: pc.bounds[1, 2])  # the liner wall with the lowest top
+    floor_top = floor.bounds[1, 2]
+    cav_lo = np.array([inner[:, 0, 0].min(), inner[:, 0, 1].min(), floor_top])
+    cav_hi = inner[:, 1].max(0)
+    plate = np.array([pc.bounds for pc in bp.parts["plate"].pieces])
+    lo, hi = plate[:, 0].min(0), plate[:, 1].max(0)
+    assert (lo > cav_lo).all() and (hi < cav_hi).all()
+    # it rests just above the floor, spins about its own centre, and the door closes in front
+    assert 0.002 <= lo[2] - floor_top <= 0.006
+    axis = by_child(bp, "plate").dofs[0].origin
+    assert axis[:2] == pytest.approx(((lo + hi) / 2)[:2], abs=1e-3)
+    assert hi[0] < min(pc.bounds[0, 0] for pc in bp.parts["door"].pieces)
+    glass = [pc for pc in bp.parts["plate"].pieces if pc.material == "plate"]
+    assert glass and max(pc.bounds[1, 2] for pc in glass) == pytest.approx(hi[2])
+
+
+# -- overrides, growth, determinism ----------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(3, has_knob=False)
+    assert not any(part.label == "knob" for part in bp.parts.values())
+    _, bp = make(3, has_knob=True, knob_count=2, has_buttons=False)
+    assert sorted(n for n, part in bp.parts.items() if part.label == "knob") == ["knob_0", "knob_1"]
+    assert not any(n.startswith("button_") for n in bp.parts)
+    _, bp = make(3, has_buttons=True, button_rows=2, door_opener="bar")
+    assert sum(n.startswith("button_") for n in bp.parts) == 6
+    assert "door_release" not in bp.parts
+    assert any(pc.name == "handle" for pc in bp.parts["door"].pieces)
+    _, bp = make(3, door_opener="release_button")
+    assert bp.parts["door_release"].label == "button"
+    assert not any(pc.name == "handle" for pc in bp.parts["door"].pieces)
+    p, _ = make(3, width=0.5, body_finish="brushed_metal")
+    assert p["width"] == 0.5 and p["body_finish"] == "brushed_metal"
+
+
+@pytest.mark.parametrize("bad", [{"width": 0.9}, {"height": 0.1}, {"door_opener": "lever"},
+                                 {"button_rows": 4}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_smallest_and_busiest_panel_fit():
+    """Three rows of buttons, two dials and a release on the smallest front still fit."""
+    over = dict(width=0.44, height=0.25, panel_fraction=0.2, has_buttons=True, button_rows=3,
+                has_knob=True, knob_count=2, door_opener="release_button", knob_radius=0.028)
+    _, bp = make(0, **over)
+    panel = bp.parts["control_panel"].pieces[0].bounds
+    for part in bp.parts.values():
+        if part.label in ("button", "knob"):
+            lo, hi = np.array([pc.bounds for pc in part.pieces]).transpose(1, 0, 2)
+            assert (lo[:, 1:].min(0) > panel[0, 1:]).all() and (hi[:, 1:].max(0) < panel[1, 1:]).all()
+    assert len(movable(bp)) == 14
+    for j in movable(bp):
+        if j.child != "door":
+            assert -2 * max_depth(hulls(bp.parts[j.child]), others(bp, j.child)) >= 0.0019
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2
+    assert list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices) and np.array_equal(x.faces, y.faces)
+
+
+def test_seeds_differ_in_ways_a_person_sees():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("body_finish", "door_opener", "has_knob", "has_buttons", "button_shape"):
+        assert len({p[name] for p in params}) > 1, name
+    counts = [len(movable(make(s)[1])) for s in range(20)]
+    assert min(counts) < max(counts)
