@@ -2,7 +2,9 @@
 
 X is depth (fronts face +X), Y is width, Z is up. Drawers slide out along +X;
 doors hinge about a vertical axis on the front face at the column edge and swing
-outward; double doors when a column is wider than 0.6 m.
+outward; double doors when a column is wider than 0.6 m. A door hinged on the
+cabinet's outer side may open up to ``door_angle``; one hinged beside another
+column stops where the leaf and its handle would leave its own column.
 """
 
 from __future__ import annotations
@@ -36,7 +38,8 @@ SCHEMA = Schema((
     Choice("body_finish", "carcass and front material", choices=("painted", "wood")),
     Choice("handle_finish", "handle material", choices=("brushed_metal", "chrome", "plastic")),
     Float("drawer_travel", "drawer opening as a fraction of depth", "", 0.5, 0.75),
-    Float("door_angle", "door opening angle", "rad", math.pi / 2, 0.65 * math.pi),
+    Float("door_angle", "opening angle of a door hinged on the cabinet's outer side", "rad", math.pi / 2,
+          0.65 * math.pi),
     *GROWTH.flags(),
 ))
 
@@ -90,7 +93,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
             _drawers(bp, carcass, p, c, rows, (ya, yb), (fy0, fy1), (cz0, cz1), (fz0, fz1), handles)
         elif kind == "doors":
             _shelf(bp, carcass, (xb, xf), (ya, yb), (cz0 + cz1) / 2, t)
-            _doors(bp, carcass, p, c, (fy0, fy1), (fz0, fz1), handles)
+            _doors(bp, carcass, p, c, n_cols, (fy0, fy1), (fz0, fz1), handles)
         else:
             for k in range(1, 1 + int(structure.integers(1, 3))):
                 _shelf(bp, carcass, (xb, xf), (ya, yb), cz0 + (cz1 - cz0) * k / 3, t)
@@ -143,22 +146,31 @@ def _drawers(bp, carcass, p, c, rows, ys, fys, zs, fzs, handles):
                             role="slide"))
 
 
-def _doors(bp, carcass, p, c, fys, fzs, handles):
+def _doors(bp, carcass, p, c, n_cols, fys, fzs, handles):
     ft = p["front_thickness"]
     xf = p["depth"] / 2 + GAP
     width = fys[1] - fys[0]
-    leaves = [(fys[0], fys[1], "left")] if width <= 0.6 else [
-        (fys[0], (fys[0] + fys[1]) / 2 - GAP / 2, "left"), ((fys[0] + fys[1]) / 2 + GAP / 2, fys[1], "right")]
-    if width <= 0.6 and c % 2 == 1:
-        leaves = [(fys[0], fys[1], "right")]
+    mid = (fys[0] + fys[1]) / 2
+    if width > 0.6:  # double doors, hinged at both outer edges
+        leaves = [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
+    else:  # one leaf, hinged on the side facing the nearer end of the cabinet
+        leaves = [(fys[0], fys[1], "left" if c < n_cols / 2 else "right")]
     for k, (ya, yb, hinge) in enumerate(leaves):
         name = f"door_{c}_{k}"
         pieces = [g.box_between([xf, ya, fzs[0]], [xf + ft, yb, fzs[1]], "front", bevel=0.002)]
+        reach, standoff = yb - ya, ft  # how far the leaf reaches from its hinge, and stands proud
         if handles:
             hy = yb - 0.05 if hinge == "left" else ya + 0.05
             hz = fzs[0] + 0.8 * (fzs[1] - fzs[0]) if fzs[1] - fzs[0] < 0.9 else fzs[0] + 0.6 * (fzs[1] - fzs[0])
-            pieces += _handle(p, (xf + ft, hy, hz), (0.0, 0.0, 1.0), min(0.3 * (fzs[1] - fzs[0]), 0.3))
+            handle = _handle(p, (xf + ft, hy, hz), (0.0, 0.0, 1.0), min(0.3 * (fzs[1] - fzs[0]), 0.3))
+            pieces += handle
+            proud = max(piece.bounds[1, 0] for piece in handle) - xf
+            reach, standoff = (abs(hy - (ya if hinge == "left" else yb)), proud)
         bp.add(name, "door", pieces)
         # hinge on the front face at the outer edge; the axis sign makes it swing out (+X)
         hy, axis = (ya, (0, 0, -1)) if hinge == "left" else (yb, (0, 0, 1))
-        bp.join(J.revolute(carcass, name, (xf + ft, hy, fzs[0]), axis, 0.0, p["door_angle"], role="hinge"))
+        outer = (hinge == "left" and c == 0 and k == 0) or (hinge == "right" and c == n_cols - 1)
+        # beside another column the open leaf and its handle must stay within this column's
+        # width (else they sweep into the neighbour's open drawers or door): tan(angle) <= reach / proud
+        limit = p["door_angle"] if outer else min(p["door_angle"], math.atan2(reach, standoff) - 0.01)
+        bp.join(J.revolute(carcass, name, (xf + ft, hy, fzs[0]), axis, 0.0, limit, role="hinge"))

@@ -38,10 +38,24 @@ def _parser() -> argparse.ArgumentParser:
     g.add_argument("--overwrite", action="store_true",
                    help="regenerate objects that already exist (default: skip them, resuming a run)")
 
-    v = sub.add_parser("validate", help="check object folders: USD, URDF agreement and SAPIEN")
-    v.add_argument("paths", nargs="+", metavar="PATH", help="an object folder or a folder of them")
-    v.add_argument("--no-sim", action="store_true", help="skip the SAPIEN checks (USD and URDF only)")
+    v = sub.add_parser("validate", help="check object folders: USD, URDF agreement, SAPIEN (and --sim physics)",
+                       description="Validate object folders. Default: USD checks + SAPIEN (the URDF loads, every "
+                       "movable joint reaches both limits). --sim adds rest under gravity, ground, "
+                       "self-collision, parent/child intersection and ManiSkill loading.")
+    v.add_argument("paths", nargs="+", metavar="PATH",
+                   help="an object folder or a folder of them (with --sweep: category ids, or `all`)")
+    v.add_argument("--sim", action="store_true", help="add the physical-plausibility checks")
+    v.add_argument("--usd-only", action="store_true", help="skip every simulator check")
+    v.add_argument("--report", metavar="FILE", help="write a JSON report of every check to FILE")
+    v.add_argument("--sweep", type=int, metavar="N",
+                   help="generate seeds 0..N-1 of each category given as PATH into a temporary folder"
+                   " (or --out) and validate them; prints pass rates")
+    v.add_argument("--out", help="with --sweep: keep the generated objects in this folder")
+    v.add_argument("--texture-size", type=int, default=64, metavar="PX",
+                   help="with --sweep: texture size of the generated objects; default 64")
+    v.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="with --sweep: generation workers")
     v.add_argument("--verbose", "-v", action="store_true", help="print every check, not only failures")
+
     st = sub.add_parser("stats", help="dataset statistics: joint counts, kinds, tree depth, tree edit distance")
     st.add_argument("folder", metavar="DIR")
     st.add_argument("--json", action="store_true", help="print JSON instead of a table")
@@ -129,26 +143,60 @@ def cmd_generate(args) -> int:
 
 
 def cmd_validate(args) -> int:
-    from .validate import find_objects, validate_object  # noqa: I001
+    import json
+    import shutil
+    import tempfile
 
-    folders = find_objects(args.paths)
-    if not folders:
-        return _fail(f"no object folders (with metadata.json) under {' '.join(args.paths)}")
-    n_ok = 0
-    tally: dict[str, int] = {}
-    for folder in folders:
-        report = validate_object(folder, sim=not args.no_sim)
-        n_ok += report.ok
-        status = "ok  " if report.ok else "FAIL"
-        fails = "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
-        print(f"{status} {folder}" + (f"  [{fails}]" if fails else ""), flush=True)
-        for c in report.checks:
-            tally[c.name] = tally.get(c.name, 0) + c.ok
+    from .validate import find_objects, validate_object
+    from .validate.files import load_metadata
+    from .validate.report import report_json, summary_table
+
+    if args.usd_only and args.sim:
+        return _fail("--usd-only and --sim contradict each other; choose one")
+    tmp = None
+    if args.sweep is not None:
+        from .batch import Job, run_batch
+
+        if args.sweep < 1:
+            return _fail(f"--sweep must be at least 1, got {args.sweep}")
+        categories = [c for spec in args.paths for c in _categories(spec)]
+        out = Path(args.out) if args.out else Path(tmp := tempfile.mkdtemp(prefix="infmob-sweep-"))
+        jobs = [Job(c, s, (), args.texture_size) for c in categories for s in range(args.sweep)]
+        rows = run_batch(jobs, out, workers=args.workers)
+        for r in rows:
+            if "error" in r:
+                print(f"FAIL {r['category']} seed {r['seed']}: generation failed: {r['error']}")
+        paths = [str(out / c) for c in categories]
+    else:
+        paths = args.paths
+    try:
+        folders = find_objects(paths)
+        if not folders:
+            return _fail(f"no object folders (with metadata.json) under {' '.join(paths)}")
+        rows = []
+        n_ok = 0
+        for folder in folders:
+            report = validate_object(folder, sim=not args.usd_only, physics=args.sim)
+            n_ok += report.ok
+            status = "ok  " if report.ok else "FAIL"
+            fails = "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
+            print(f"{status} {folder}" + (f"  [{fails}]" if fails else ""), flush=True)
             if args.verbose:
-                print(f"      {'ok  ' if c.ok else 'FAIL'} {c.name}: {c.detail}")
-    print(f"\n{n_ok}/{len(folders)} objects passed")
-    print("  " + "  ".join(f"{k} {v}/{len(folders)}" for k, v in tally.items()))
-    return 0 if n_ok == len(folders) else 1
+                for c in report.checks:
+                    print(f"      {'ok  ' if c.ok else 'FAIL'} {c.name}: {c.detail}")
+            try:
+                category = load_metadata(folder)["category"]
+            except (OSError, ValueError, KeyError):
+                category = "?"
+            rows.append((category, report.checks, folder.name))
+        print(f"\n{n_ok}/{len(folders)} objects passed every check\n")
+        print(summary_table(rows))
+        if args.report:
+            Path(args.report).write_text(json.dumps(report_json(rows), indent=2) + "\n")
+        return 0 if n_ok == len(folders) else 1
+    finally:
+        if tmp:
+            shutil.rmtree(tmp, ignore_errors=True)
 
 
 def cmd_stats(args) -> int:

@@ -31,7 +31,7 @@ def test_generate_writes_seeded_folders(capsys, tmp_path):
     lines = out.split()
     assert sorted(p.rsplit("/", 1)[-1] for p in lines) == ["kitchen_cabinet_000005", "kitchen_cabinet_000006"]
     assert (tmp_path / "kitchen_cabinet" / "kitchen_cabinet_000006" / "kitchen_cabinet_000006.usda").is_file()
-    code, out, _ = run(capsys, "validate", "--no-sim", str(tmp_path))
+    code, out, _ = run(capsys, "validate", "--usd-only", str(tmp_path))
     assert code == 0 and "2/2 objects passed" in out
 
 
@@ -68,7 +68,7 @@ def test_validate_fails_with_status_1_on_a_broken_object(capsys, tmp_path):
     assert run(capsys, "generate", "kitchen_cabinet", "--out", str(tmp_path), "--texture-size", "16")[0] == 0
     folder = tmp_path / "kitchen_cabinet" / "kitchen_cabinet_000000"
     next((folder / "meshes").glob("*collision_000.obj")).unlink()
-    code, out, _ = run(capsys, "validate", "--no-sim", str(folder))
+    code, out, _ = run(capsys, "validate", "--usd-only", str(folder))
     assert code == 1 and "FAIL" in out and "0/1 objects passed" in out
 
 

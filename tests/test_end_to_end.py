@@ -1,4 +1,4 @@
-"""Every category x seeds 0..4: generate, save, validate (USD + SAPIEN + ManiSkill); determinism."""
+"""Every category x seeds 0..4: generate, save, validate (USD, SAPIEN, geometry, ManiSkill); determinism."""
 
 import hashlib
 
@@ -28,7 +28,7 @@ def test_generate_save_validate(category, seed, tmp_path):
     assert obj.movable_joints, "every category has something that moves"
     assert all(link.label for link in obj.links)
     folder = obj.save(tmp_path)
-    report = validate_object(folder, sim=True)
+    report = validate_object(folder, sim=True, physics=True)
     assert report.ok, "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
 
 

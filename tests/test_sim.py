@@ -13,16 +13,18 @@ import pytest
 
 pytest.importorskip("sapien")
 
-from infmob_usd.validate import sim  # noqa: E402
-from zoo import zoo  # noqa: E402
-
 import infmob_usd  # noqa: E402
+from infmob_usd.validate import sim  # noqa: E402
+
+from zoo import zoo  # noqa: E402
 
 pytestmark = pytest.mark.sim
 
 SEEDS = (0, 1, 2)
 CASES = [(c, s) for c in infmob_usd.list_categories() for s in SEEDS]
-SAPIEN_NAMES = ["sapien_load", *sim.SAPIEN_CHECKS]
+# "rest" is left to tests/test_physics_checks.py, which records the known failures (lamp, zoo)
+# as strict xfails; every other SAPIEN check must pass everywhere.
+SAPIEN_NAMES = ["sapien_load", *(n for n in sim.SAPIEN_CHECKS if n != "rest")]
 
 
 @pytest.fixture(scope="module")
@@ -51,7 +53,7 @@ def _assert_all_pass(results, names):
 
 @pytest.mark.parametrize("category,seed", CASES, ids=[f"{c}-{s}" for c, s in CASES])
 def test_generated_objects_pass_sapien(objects, category, seed):
-    _assert_all_pass(sim.check_sapien(objects[category, seed]), SAPIEN_NAMES)
+    _assert_all_pass(sim.check_sapien(objects[category, seed], checks=SAPIEN_NAMES[1:]), SAPIEN_NAMES)
 
 
 @pytest.mark.parametrize("category,seed", CASES, ids=[f"{c}-{s}" for c, s in CASES])
@@ -61,7 +63,7 @@ def test_generated_objects_pass_maniskill(objects, category, seed):
 
 
 def test_every_joint_kind_passes(good):
-    _assert_all_pass(sim.check_sapien(good), SAPIEN_NAMES)
+    _assert_all_pass(sim.check_sapien(good, checks=SAPIEN_NAMES[1:]), SAPIEN_NAMES)
     meta = json.loads((good / "metadata.json").read_text())
     assert {j["type"] for j in meta["joints"]} == {"fixed", "revolute", "continuous", "prismatic"}
 
@@ -96,7 +98,7 @@ def _joint(root, name):
     return next(j for j in root.iter("joint") if j.get("name") == name)
 
 
-def test_inverted_limits_fail_load_and_drive(good, tmp_path):
+def test_inverted_limits_fail_load_and_reach(good, tmp_path):
     bad = _copy(good, tmp_path)
 
     def invert(root):
@@ -108,8 +110,8 @@ def test_inverted_limits_fail_load_and_drive(good, tmp_path):
     res = _by_name(sim.check_sapien(bad))
     assert not res["sapien_load"].ok
     assert "joint_pris_part: limits lower 0.15 >= upper 0.05" in res["sapien_load"].detail
-    assert not res["sapien_drive"].ok
-    assert "joint_pris_part" in res["sapien_drive"].detail
+    assert not res["reach"].ok
+    assert "joint_pris_part" in res["reach"].detail
 
 
 def test_zero_axis_fails_load(good, tmp_path):
@@ -149,7 +151,7 @@ def test_missing_collision_mesh_fails_sapien_and_maniskill(objects, tmp_path):
         assert not ms.ok and victim.name in ms.detail
 
 
-def test_a_joint_blocked_by_the_ground_fails_drive(good, tmp_path):
+def test_a_joint_blocked_by_the_ground_fails_reach(good, tmp_path):
     bad = _copy(good, tmp_path)
 
     def downward(root):
@@ -158,8 +160,8 @@ def test_a_joint_blocked_by_the_ground_fails_drive(good, tmp_path):
         joint.find("limit").set("upper", "0.5")
 
     _edit_urdf(bad, downward)
-    res = _by_name(sim.check_sapien(bad, checks=["sapien_drive"]))
-    drive = res["sapien_drive"]
+    res = _by_name(sim.check_sapien(bad, checks=["reach"]))
+    drive = res["reach"]
     assert not drive.ok
     assert "joint_pris_part -> upper 0.5: stopped at 0.27" in drive.detail, drive.detail
 

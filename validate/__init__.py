@@ -1,8 +1,15 @@
 """Reading finished object folders back, as a user's simulator would.
 
-:func:`validate_object` runs the USD checks (:mod:`.usd_check`) and, with
-``sim=True``, the simulator checks (:mod:`.sim`) of one folder. It never trusts
-the model in memory: it reads the written files.
+:func:`validate_object` runs, on the written files only (never the model in memory):
+
+* always: the USD checks (:mod:`.usd_check`): every ``pxr.UsdValidation`` validator,
+  the UsdPhysics parse, joint-frame agreement, referenced files, USD/URDF agreement;
+* with ``sim`` (default): SAPIEN physics on CPU (:mod:`.sim`): the URDF loads
+  (``sapien_load``) and every movable joint driven alone reaches both limits (``reach``);
+* with ``physics``: the plausibility checks of ``infmob validate --sim``: passive
+  joints hold still under gravity (``rest``), the geometric ``ground``,
+  ``self_collision`` and ``parent_child`` checks (:mod:`.physics`), and loading
+  through ManiSkill (``maniskill_load``).
 """
 
 from __future__ import annotations
@@ -28,16 +35,21 @@ class ObjectReport:
         return [c for c in self.checks if not c.ok]
 
 
-def validate_object(folder: str | Path, sim: bool = True) -> ObjectReport:
-    """Validate one object folder; ``sim`` adds the SAPIEN and ManiSkill checks."""
+def validate_object(folder: str | Path, sim: bool = True, physics: bool = False) -> ObjectReport:
+    """Validate one object folder (see the module docstring for what each flag adds)."""
     from .usd_check import check_usd
 
     folder = Path(folder)
     report = ObjectReport(folder, check_usd(folder))
-    if sim:
-        from .sim import check_maniskill, check_sapien
+    if sim or physics:
+        from .sim import check_sapien
 
-        report.checks += check_sapien(folder)
+        report.checks += check_sapien(folder, checks=["reach", "rest"] if physics else ["reach"])
+    if physics:
+        from .physics import check_physics
+        from .sim import check_maniskill
+
+        report.checks += check_physics(folder)
         report.checks += check_maniskill(folder)
     return report
 
