@@ -1,0 +1,430 @@
+"""Material families as data, and seeded sampling of one appearance (a :class:`Look`).
+
+A :class:`Family` describes a kind of material: its physical density, the
+palette it is painted from, the ranges of its PBR parameters and the ranges of
+the knobs that drive texture synthesis (see :mod:`infmob_usd.materials.synth`).
+:func:`sample_look` draws one concrete :class:`Look` from a family with an
+explicitly passed :class:`numpy.random.Generator`; a look is plain, hashable,
+JSON-able data that fully determines its synthesized texture maps.
+
+Colour conventions: palettes are written as sRGB hex strings (as one would pick
+them in an image editor); :attr:`Look.base_color` is *linear* RGB.
+"""
+
+from __future__ import annotations
+
+import colorsys
+from dataclasses import asdict, dataclass
+from typing import Any
+
+import numpy as np
+
+__all__ = ["FAMILIES", "Family", "Look", "sample_look", "srgb_to_linear"]
+
+Range = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Family:
+    """One material family.
+
+    Attributes
+    ----------
+    name : str
+        Family key, e.g. ``"wood"``.
+    density : float
+        Density of the solid material in kg/m^3.
+    style : str
+        Texture synthesis style used by :func:`~infmob_usd.materials.synth.synthesize`:
+        one of ``"wood"``, ``"brushed"``, ``"coating"``, ``"speckle"``, ``"woven"``.
+    palette : tuple of (str, str)
+        ``(variant name, sRGB hex colour)`` pairs; one is drawn uniformly.
+    hsv_jitter : tuple of float
+        ``(hue shift, relative saturation, relative value)`` half-widths of the
+        uniform jitter applied to the drawn palette colour (in sRGB HSV).
+    roughness : tuple of float
+        Range of the mean roughness.
+    metallic : float
+        Metallic value (constant over the surface).
+    opacity : tuple of float
+        Range of the opacity (``(1, 1)`` for opaque families).
+    color_variation : tuple of float
+        Range of the relative per-pixel colour variation (std of the tint field).
+    roughness_variation : tuple of float
+        Range of the absolute roughness variation around the mean.
+    bump : tuple of float
+        Range of the RMS slope of the normal map (tangent of the typical tilt).
+    scale : tuple of float
+        Range of the main feature frequency in cycles per UV unit across V
+        (growth rings for wood, streaks for brushed metal, orange peel for
+        coatings, speckle for plastics, threads for fabric).
+    anisotropy : tuple of float
+        Range of the elongation of the main features along U (1 = isotropic).
+    """
+
+    name: str
+    density: float
+    style: str
+    palette: tuple[tuple[str, str], ...]
+    hsv_jitter: tuple[float, float, float]
+    roughness: Range
+    metallic: float
+    opacity: Range
+    color_variation: Range
+    roughness_variation: Range
+    bump: Range
+    scale: Range
+    anisotropy: Range
+
+
+@dataclass(frozen=True)
+class Look:
+    """One sampled appearance of a family; plain Python data, hashable and JSON-able.
+
+    Attributes
+    ----------
+    family : str
+        Family key.
+    variant : str
+        Name of the palette entry the colour was drawn from (e.g. ``"walnut"``).
+    base_color : tuple of float
+        Mean colour, *linear* RGB in [0, 1].
+    roughness : float
+        Mean roughness in [0, 1].
+    metallic : float
+        Metallic value in [0, 1].
+    opacity : float
+        Opacity in [0, 1]; 1 except for glass.
+    noise_seed : int
+        Seed of every random draw made by texture synthesis (0 <= seed < 2**53).
+    color_variation, roughness_variation, bump, scale, anisotropy : float
+        Synthesis knobs, see :class:`Family`.
+    """
+
+    family: str
+    variant: str
+    base_color: tuple[float, float, float]
+    roughness: float
+    metallic: float
+    opacity: float
+    noise_seed: int
+    color_variation: float
+    roughness_variation: float
+    bump: float
+    scale: float
+    anisotropy: float
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return the look as a JSON-serialisable dict (``base_color`` as a list)."""
+        d = asdict(self)
+        d["base_color"] = list(self.base_color)
+        return d
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> Look:
+        """Rebuild a look from :meth:`to_dict` output."""
+        return cls(**{**d, "base_color": tuple(float(c) for c in d["base_color"])})
+
+
+_OPAQUE = (1.0, 1.0)
+
+FAMILIES: dict[str, Family] = {
+    f.name: f
+    for f in (
+        Family(
+            name="wood",
+            density=650.0,
+            style="wood",
+            palette=(
+                ("oak", "#C49A6C"),
+                ("walnut", "#6B4A33"),
+                ("birch", "#E0C595"),
+                ("cherry", "#9E5B3A"),
+                ("maple", "#DDB883"),
+                ("teak", "#A8763E"),
+            ),
+            hsv_jitter=(0.015, 0.10, 0.10),
+            roughness=(0.45, 0.7),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.22, 0.38),
+            roughness_variation=(0.04, 0.08),
+            bump=(0.02, 0.05),
+            scale=(4.0, 11.0),
+            anisotropy=(14.0, 30.0),
+        ),
+        Family(
+            name="painted",
+            density=750.0,
+            style="coating",
+            palette=(
+                ("white", "#F0F0EC"),
+                ("off_white", "#E8E1D0"),
+                ("light_grey", "#C6C7C5"),
+                ("grey", "#8A8C8E"),
+                ("charcoal", "#3C3E41"),
+                ("sage", "#9CAF88"),
+                ("navy", "#1F2F4F"),
+                ("black", "#1C1C1C"),
+                ("pastel_blue", "#AFC8DC"),
+                ("pastel_pink", "#E6C3C3"),
+                ("pastel_yellow", "#EFE0A6"),
+                ("pastel_green", "#BFDCC4"),
+            ),
+            hsv_jitter=(0.01, 0.06, 0.05),
+            roughness=(0.3, 0.55),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.008, 0.02),
+            roughness_variation=(0.02, 0.04),
+            bump=(0.01, 0.025),
+            scale=(70.0, 110.0),
+            anisotropy=(1.0, 1.3),
+        ),
+        Family(
+            name="brushed_metal",
+            density=7850.0,
+            style="brushed",
+            palette=(
+                ("stainless", "#C4C5C6"),
+                ("stainless_dark", "#B3B5B8"),
+                ("stainless_warm", "#C8C6C1"),
+            ),
+            hsv_jitter=(0.01, 0.05, 0.04),
+            roughness=(0.25, 0.45),
+            metallic=1.0,
+            opacity=_OPAQUE,
+            color_variation=(0.03, 0.06),
+            roughness_variation=(0.05, 0.09),
+            bump=(0.03, 0.06),
+            scale=(140.0, 200.0),
+            anisotropy=(60.0, 120.0),
+        ),
+        Family(
+            name="plastic",
+            density=1100.0,
+            style="speckle",
+            palette=(
+                ("black", "#1E1E1E"),
+                ("white", "#EDEDEA"),
+                ("light_grey", "#BEBFC0"),
+                ("dark_grey", "#505254"),
+                ("red", "#C0282D"),
+                ("blue", "#1F5FBF"),
+                ("yellow", "#F2C200"),
+                ("green", "#2E9E4F"),
+                ("orange", "#F26B1D"),
+                ("teal", "#138A8A"),
+            ),
+            hsv_jitter=(0.01, 0.06, 0.06),
+            roughness=(0.35, 0.6),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.015, 0.035),
+            roughness_variation=(0.03, 0.06),
+            bump=(0.015, 0.04),
+            scale=(110.0, 170.0),
+            anisotropy=(1.0, 1.0),
+        ),
+        Family(
+            name="glass",
+            density=2500.0,
+            style="coating",
+            palette=(
+                ("clear", "#F2F6F4"),
+                ("clear_blue", "#E4EEF2"),
+                ("bottle_green", "#5E9C6A"),
+                ("bottle_blue", "#5A86B5"),
+                ("amber", "#8C5A2B"),
+            ),
+            hsv_jitter=(0.01, 0.05, 0.04),
+            roughness=(0.02, 0.08),
+            metallic=0.0,
+            opacity=(0.15, 0.35),
+            color_variation=(0.003, 0.008),
+            roughness_variation=(0.003, 0.008),
+            bump=(0.003, 0.008),
+            scale=(6.0, 16.0),
+            anisotropy=(1.0, 2.0),
+        ),
+        Family(
+            name="ceramic",
+            density=2400.0,
+            style="coating",
+            palette=(
+                ("white", "#F4F2EC"),
+                ("cream", "#EFE5CC"),
+                ("ivory", "#F3ECDA"),
+                ("light_grey", "#D9D9D6"),
+                ("pastel_blue", "#BCD3E3"),
+                ("pastel_green", "#C9DEC5"),
+                ("pastel_pink", "#EBCACA"),
+            ),
+            hsv_jitter=(0.01, 0.06, 0.03),
+            roughness=(0.1, 0.25),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.005, 0.012),
+            roughness_variation=(0.01, 0.02),
+            bump=(0.004, 0.012),
+            scale=(20.0, 45.0),
+            anisotropy=(1.0, 1.2),
+        ),
+        Family(
+            name="rubber",
+            density=1200.0,
+            style="speckle",
+            palette=(
+                ("black", "#1A1A1A"),
+                ("soft_black", "#222222"),
+                ("deep_black", "#141414"),
+                ("dark_grey", "#2C2C2C"),
+            ),
+            hsv_jitter=(0.0, 0.0, 0.08),
+            roughness=(0.8, 0.95),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.04, 0.07),
+            roughness_variation=(0.02, 0.04),
+            bump=(0.05, 0.1),
+            scale=(150.0, 220.0),
+            anisotropy=(1.0, 1.0),
+        ),
+        Family(
+            name="chrome",
+            density=7850.0,
+            style="coating",
+            palette=(
+                ("chrome", "#DADCDE"),
+                ("chrome_cool", "#CFD3D7"),
+                ("chrome_bright", "#E6E7E8"),
+            ),
+            hsv_jitter=(0.005, 0.05, 0.02),
+            roughness=(0.05, 0.15),
+            metallic=1.0,
+            opacity=_OPAQUE,
+            color_variation=(0.002, 0.006),
+            roughness_variation=(0.005, 0.01),
+            bump=(0.002, 0.005),
+            scale=(50.0, 90.0),
+            anisotropy=(1.0, 1.0),
+        ),
+        Family(
+            name="enamel",
+            density=7850.0,
+            style="coating",
+            palette=(
+                ("white", "#F1F1EE"),
+                ("black", "#181818"),
+                ("red", "#B5231F"),
+                ("cream", "#EDE1C0"),
+                ("cobalt", "#22458C"),
+                ("green", "#2F6B4F"),
+            ),
+            hsv_jitter=(0.01, 0.05, 0.05),
+            roughness=(0.15, 0.3),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.006, 0.015),
+            roughness_variation=(0.01, 0.025),
+            bump=(0.006, 0.015),
+            scale=(40.0, 80.0),
+            anisotropy=(1.0, 1.3),
+        ),
+        Family(
+            name="fabric",
+            density=300.0,
+            style="woven",
+            palette=(
+                ("charcoal", "#3A3B3D"),
+                ("grey", "#8B8C8E"),
+                ("beige", "#C9B99A"),
+                ("navy", "#2A3550"),
+                ("denim", "#3D5A80"),
+                ("burgundy", "#6E1F2A"),
+                ("olive", "#6B6B3A"),
+                ("mustard", "#C9A13B"),
+                ("teal", "#2D6E6E"),
+                ("cream", "#E8DFCC"),
+                ("rust", "#A4502B"),
+            ),
+            hsv_jitter=(0.01, 0.08, 0.08),
+            roughness=(0.8, 1.0),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.05, 0.1),
+            roughness_variation=(0.03, 0.06),
+            bump=(0.25, 0.4),
+            scale=(36.0, 64.0),
+            anisotropy=(4.0, 8.0),
+        ),
+    )
+}
+
+
+def srgb_to_linear(c: np.ndarray | float) -> np.ndarray:
+    """Apply the inverse sRGB transfer function (values in [0, 1], any shape)."""
+    c = np.asarray(c, dtype=np.float64)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def _hex_to_srgb(hex_colour: str) -> tuple[float, float, float]:
+    h = hex_colour.lstrip("#")
+    return (int(h[0:2], 16) / 255.0, int(h[2:4], 16) / 255.0, int(h[4:6], 16) / 255.0)
+
+
+def _uniform(rng: np.random.Generator, bounds: Range) -> float:
+    return float(rng.uniform(bounds[0], bounds[1]))
+
+
+def sample_look(family: str, rng: np.random.Generator) -> Look:
+    """Draw one appearance of ``family``.
+
+    Parameters
+    ----------
+    family : str
+        A key of :data:`FAMILIES`.
+    rng : numpy.random.Generator
+        Source of every random draw.
+
+    Returns
+    -------
+    Look
+        The sampled look; its ``noise_seed`` drives texture synthesis.
+
+    Raises
+    ------
+    ValueError
+        If ``family`` is not a known family.
+    TypeError
+        If ``rng`` is not a :class:`numpy.random.Generator`.
+    """
+    fam = FAMILIES.get(family)
+    if fam is None:
+        raise ValueError(
+            f"unknown material family {family!r}; valid families: {', '.join(sorted(FAMILIES))}"
+        )
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+
+    variant, hex_colour = fam.palette[int(rng.integers(len(fam.palette)))]
+    hue, sat, val = colorsys.rgb_to_hsv(*_hex_to_srgb(hex_colour))
+    dh, ds, dv = fam.hsv_jitter
+    hue = (hue + _uniform(rng, (-dh, dh))) % 1.0
+    sat = min(1.0, sat * (1.0 + _uniform(rng, (-ds, ds))))
+    val = min(1.0, val * (1.0 + _uniform(rng, (-dv, dv))))
+    linear = srgb_to_linear(np.array(colorsys.hsv_to_rgb(hue, sat, val)))
+    return Look(
+        family=fam.name,
+        variant=variant,
+        base_color=(float(linear[0]), float(linear[1]), float(linear[2])),
+        roughness=_uniform(rng, fam.roughness),
+        metallic=float(fam.metallic),
+        opacity=_uniform(rng, fam.opacity),
+        noise_seed=int(rng.integers(0, 2**53)),
+        color_variation=_uniform(rng, fam.color_variation),
+        roughness_variation=_uniform(rng, fam.roughness_variation),
+        bump=_uniform(rng, fam.bump),
+        scale=_uniform(rng, fam.scale),
+        anisotropy=_uniform(rng, fam.anisotropy),
+    )
