@@ -77,7 +77,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     ``materials_rng`` draws one look per declared material slot (in declaration
     order, used or not, so optional parts never reshuffle the others).
     """
-    from .materials import FAMILIES, sample_look, synthesize
+    from .materials import FAMILIES, sample_look, split_spec, synthesize
 
     check_texture_size(texture_size)
     t0 = time.perf_counter()
@@ -87,7 +87,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     missing = [slot for slot in used if slot not in bp.materials]
     if missing:
         raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
-    densities = {slot: FAMILIES[bp.materials[slot]].density for slot in used}
+    densities = {slot: FAMILIES[split_spec(bp.materials[slot])[0]].density for slot in used}
     links, joints = build(bp, densities)
     physical.ensure_gaps(links, joints)
     looks = {slot: looks[slot] for slot in used}

@@ -47,6 +47,10 @@ class Piece:
         Empty means the piece does not collide (decoration).
     name : str
         Optional role, e.g. ``"handle"``; writers keep it in visual names.
+    sheet : float
+        Wall thickness in metres of a part made of sheet (a steel casing, a
+        thin tube) that is modelled solid: mass then counts area x sheet, not
+        the solid volume. 0 (default) means solid.
     """
 
     vertices: np.ndarray
@@ -54,6 +58,7 @@ class Piece:
     material: str
     convex: list[np.ndarray] = field(default_factory=list)
     name: str = ""
+    sheet: float = 0.0
 
     def __post_init__(self) -> None:
         self.vertices = np.ascontiguousarray(self.vertices, dtype=np.float64)
@@ -87,6 +92,7 @@ class Piece:
             self.material,
             [c @ r.T + t for c in self.convex],
             self.name,
+            self.sheet,
         )
 
     def translated(self, offset: Sequence[float]) -> Piece:
@@ -349,13 +355,14 @@ def revolve(profile: Sequence[tuple[float, float]], material: str, center: Seque
 
 
 def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
-          center: Sequence[float] = (0, 0, 0), sections: int = 32, convex_sectors: int = 16,
+          center: Sequence[float] = (0, 0, 0), sections: int = 32, convex_sectors: int | None = None,
           name: str = "") -> Piece:
     """A thin wall of revolution (lamp shade, bowl, pot wall), open at both ends.
 
     ``outer`` is ``(p, 2)`` of ``(radius, z)`` points of the outside surface,
     bottom to top; the inside is the same profile moved ``thickness`` inward.
-    Collisions are ``convex_sectors`` wedges per band, so the inside stays hollow.
+    Collisions are ``convex_sectors`` wedges per band, so the inside stays hollow; by
+    default one wedge per ~3 cm of circumference (8 to 32), so small rings get no slivers.
     """
     outer = np.asarray(outer, float)
     if outer.ndim != 2 or len(outer) < 2 or (outer[:, 0] - thickness <= 0).any():
@@ -368,6 +375,8 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
         mesh.invert()
     c = np.asarray(center, float)
     mesh.apply_translation(c)
+    if convex_sectors is None:
+        convex_sectors = int(np.clip(np.ceil(2 * np.pi * outer[:, 0].max() / 0.03), 8, 32))
     angles = np.linspace(0, 2 * np.pi, convex_sectors + 1)
     convex = []
     for i in range(len(outer) - 1):

@@ -35,7 +35,14 @@ def inertial(pieces: Iterable[tuple[Piece, float]]) -> tuple[float, np.ndarray, 
     """
     masses, coms, tensors = [], [], []
     for piece, density in pieces:
-        for solid in _solids(piece):
+        solids = _solids(piece)
+        if piece.sheet > 0:
+            # a part made of sheet (a casing panel, a tube) modelled solid: its wall is about half
+            # the solid's surface (one face of a panel, the outside of a tube) times the sheet
+            area = 0.5 * float(sum(s.area for s in solids))
+            solid_vol = float(sum(abs(s.volume) for s in solids))
+            density = density * min(1.0, area * piece.sheet / max(solid_vol, 1e-12))
+        for solid in solids:
             vol = abs(float(solid.volume))
             if vol <= 1e-12:
                 continue

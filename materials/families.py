@@ -377,13 +377,20 @@ def _uniform(rng: np.random.Generator, bounds: Range) -> float:
     return float(rng.uniform(bounds[0], bounds[1]))
 
 
+def split_spec(spec: str) -> tuple[str, tuple[str, ...]]:
+    """``"plastic:black|dark_grey"`` -> ``("plastic", ("black", "dark_grey"))``; no colon: all variants."""
+    family, _, variants = spec.partition(":")
+    return family, tuple(v for v in variants.split("|") if v)
+
+
 def sample_look(family: str, rng: np.random.Generator) -> Look:
     """Draw one appearance of ``family``.
 
     Parameters
     ----------
     family : str
-        A key of :data:`FAMILIES`.
+        A key of :data:`FAMILIES`, optionally restricted to some palette variants:
+        ``"plastic:black|dark_grey"`` draws only those colours.
     rng : numpy.random.Generator
         Source of every random draw.
 
@@ -399,6 +406,7 @@ def sample_look(family: str, rng: np.random.Generator) -> Look:
     TypeError
         If ``rng`` is not a :class:`numpy.random.Generator`.
     """
+    family, only = split_spec(family)
     fam = FAMILIES.get(family)
     if fam is None:
         raise ValueError(
@@ -406,8 +414,12 @@ def sample_look(family: str, rng: np.random.Generator) -> Look:
         )
     if not isinstance(rng, np.random.Generator):
         raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    palette = [entry for entry in fam.palette if not only or entry[0] in only]
+    if not palette:
+        names = ", ".join(name for name, _ in fam.palette)
+        raise ValueError(f"family {family!r} has no variant among {only}; its variants: {names}")
 
-    variant, hex_colour = fam.palette[int(rng.integers(len(fam.palette)))]
+    variant, hex_colour = palette[int(rng.integers(len(palette)))]
     hue, sat, val = colorsys.rgb_to_hsv(*_hex_to_srgb(hex_colour))
     dh, ds, dv = fam.hsv_jitter
     hue = (hue + _uniform(rng, (-dh, dh))) % 1.0

@@ -62,3 +62,26 @@ def test_dynamics_have_a_role_for_every_joint_family():
     for role in ("hinge", "slide", "knob", "button", "wheel", "lid", "swivel", "telescope"):
         d = DYNAMICS[role]
         assert d.damping > 0 and d.friction >= 0 and d.effort > 0 and d.velocity > 0
+
+
+def test_sheet_parts_weigh_their_wall_not_their_volume():
+    from infmob_usd.mass import inertial
+
+    solid = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m")
+    sheet = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m")
+    sheet.sheet = 0.001
+    m_solid = inertial([(solid, 7850.0)])[0]
+    m_sheet = inertial([(sheet, 7850.0)])[0]
+    assert m_solid == pytest.approx(0.25 * 0.01 * 7850)
+    # half the surface (0.25 m^2 + thin edges) x 1 mm of steel
+    assert m_sheet == pytest.approx((0.25 + 0.01) * 0.001 * 7850, rel=1e-6)
+
+
+def test_material_variants_restrict_the_palette():
+    from infmob_usd.materials import sample_look
+
+    rng = np.random.default_rng(0)
+    assert {sample_look("plastic:black", rng).variant for _ in range(20)} == {"black"}
+    assert {sample_look("plastic:black|white", rng).variant for _ in range(40)} == {"black", "white"}
+    with pytest.raises(ValueError, match="its variants"):
+        sample_look("plastic:mauve", rng)
