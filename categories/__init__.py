@@ -11,9 +11,10 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from . import kitchen_cabinet, microwave
+from . import kitchen_cabinet, lamp, microwave
 
 CATEGORIES: dict[str, ModuleType] = {
     "kitchen_cabinet": kitchen_cabinet,
     "microwave": microwave,
+    "lamp": lamp,
 }

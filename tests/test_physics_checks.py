@@ -30,25 +30,6 @@ ALL_CHECKS = GEOMETRIC + SAPIEN + ["maniskill_load"]
 # Known failures of generated objects: (category, seed, check) -> (pattern in the detail, reason).
 # Strict xfails: when the generator is fixed the test XPASSes and fails; then delete the entry.
 KNOWN_FAILURES = {
-    ("lamp", 0, "rest"): (
-        r"joint_upper_pole_0 moved [\d.]+ mm",
-        "lamp seed 0: telescoping pole joint_upper_pole_0 (prismatic, axis 0 0 -1, rest at its lower "
-        "limit 0, gravity pushes it into its range with 0.81 N) slides its whole 41.6 mm in 2 s: "
-        "URDF friction 5 N would hold it, but PhysX friction cannot act on a vertical slide",
-    ),
-    ("lamp", 1, "rest"): (
-        r"joint_arm_0 moved [\d.]+ deg",
-        "lamp seed 1: the arm collapses under its weight: gravity torque 1.13 / 0.85 / 0.61 N m on "
-        "joint_arm_0 / _1 / _2 > URDF friction 0.5 N m (arm_0 and arm_1 fall 30 deg to their "
-        "limits); joint_upper_pole_0 carries 7.04 N > friction 5 N (slides 14.8 mm); the hanging "
-        "bulb joint_bulb_0 (axis 0 0 -1) 0.32 N > 0.2 N (falls out 12 mm); joint_switch 4 mm",
-    ),
-    ("lamp", 2, "rest"): (
-        r"joint_upper_pole_0 moved [\d.]+ mm",
-        "lamp seed 2: joint_upper_pole_0 slides 42.5 mm (4.65 N load, friction 5 N: PhysX "
-        "cannot hold a vertical slide); the hanging bulb joint_bulb_0 falls out 12 mm (0.26 N > "
-        "0.2 N friction); the switch joint_switch sinks 4 mm (vertical slide)",
-    ),
     ("zoo", 0, "rest"): (
         r"joint_fr_part_1 moved [\d.]+ deg",
         "zoo: flip_revolute second hinge joint_fr_part_1 (pivot 3 cm from the part's centre of "

@@ -1,0 +1,416 @@
+"""Behaviour of the lamp category, checked on its blueprint (world space, grounded)."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import manifold3d
+import numpy as np
+import pytest
+from scipy.spatial import ConvexHull
+
+from infmob_usd import physical
+from infmob_usd.categories import lamp
+from infmob_usd.errors import ParameterError
+from infmob_usd.mass import inertial
+from infmob_usd.materials import FAMILIES
+from infmob_usd.seeding import streams
+
+SEEDS = range(10)
+LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch"}
+
+
+def make(seed: int, **overrides):
+    rng = streams("lamp", seed)
+    p = lamp.SCHEMA.sample(rng["params"], overrides)
+    bp = lamp.build(p, rng["structure"], rng["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+@pytest.fixture(scope="module", params=SEEDS)
+def lamp_bp(request):
+    return make(request.param)
+
+
+# -- kinematics and collision helpers (independent of the core's model) -------
+
+
+def dof_motion(dof, value: float) -> np.ndarray:
+    m = np.eye(4)
+    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
+    if dof.type == "prismatic":
+        m[:3, 3] = a * value
+    else:
+        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        r = np.eye(3) + math.sin(value) * k + (1 - math.cos(value)) * k @ k
+        m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def poses(bp, q: dict | None = None) -> dict[str, np.ndarray]:
+    """World transform of every part from rest; ``q`` maps (child part, dof index) -> value."""
+    q = q or {}
+    out = {bp.root: np.eye(4)}
+    pending = list(bp.joints)
+    while pending:
+        for j in list(pending):
+            if j.parent in out:
+                m = out[j.parent]
+                for i, d in enumerate(j.dofs):
+                    m = m @ dof_motion(d, q.get((j.child, i), 0.0))
+                out[j.child] = m
+                pending.remove(j)
+    return out
+
+
+def subtree(bp, name: str) -> set[str]:
+    names, grew = {name}, True
+    while grew:
+        grew = False
+        for j in bp.joints:
+            if j.parent in names and j.child not in names:
+                names.add(j.child)
+                grew = True
+    return names
+
+
+def hulls(bp, names, pose):
+    out = []
+    for n in names:
+        for piece in bp.parts[n].pieces:
+            for c in piece.convex:
+                w = c @ pose[n][:3, :3].T + pose[n][:3, 3]
+                out.append((n, w, w.min(0), w.max(0)))
+    return out
+
+
+def overlaps(a, b) -> dict[tuple[str, str], float]:
+    """Shared volume (m^3) of two sets of convex pieces, per pair of parts."""
+    total: dict[tuple[str, str], float] = {}
+    for na, wa, lo_a, hi_a in a:
+        ma = None
+        for nb, wb, lo_b, hi_b in b:
+            if np.any(hi_a < lo_b) or np.any(hi_b < lo_a):
+                continue
+            ma = ma or manifold3d.Manifold.hull_points(wa)
+            v = (ma ^ manifold3d.Manifold.hull_points(wb)).volume()
+            if v > 0:
+                total[(na, nb)] = total.get((na, nb), 0.0) + v
+    return total
+
+
+def limit_states(joint):
+    """Every corner of a joint's DoF box except rest: each DoF at lower, 0 or upper."""
+    values = [(d.lower, 0.0, d.upper) for d in joint.dofs]
+    for combo in itertools.product(*values):
+        if any(v != 0.0 for v in combo):
+            yield {(joint.child, i): v for i, v in enumerate(combo)}
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.kind != "fixed"]
+
+
+def joint_of(bp, child: str):
+    return next(j for j in bp.joints if j.child == child)
+
+
+# -- structure -----------------------------------------------------------------
+
+
+def test_required_parts_and_labels(lamp_bp):
+    p, bp = lamp_bp
+    want = {"base": "base", "lower_pole": "pole", "upper_pole": "pole", "head": "head", "shade": "shade"}
+    for name, label in want.items():
+        assert bp.parts[name].label == label
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    assert bp.root == "base"
+    assert ("bulb" in bp.parts) == p["has_bulb"]
+    assert ("switch" in bp.parts) == p["has_switch"]
+    arms = sorted(n for n, part in bp.parts.items() if part.label == "arm")
+    if p["arm_style"] == "straight":
+        assert arms == []
+    elif p["arm_style"] == "curved":
+        assert arms == ["arm"] and joint_of(bp, "arm").kind == "fixed"
+    else:
+        assert arms == [f"arm_{k}" for k in range(p["arm_segments"])]
+    assert joint_of(bp, "lower_pole").kind == "fixed" and joint_of(bp, "lower_pole").parent == "base"
+    assert joint_of(bp, "shade").kind == "fixed" and joint_of(bp, "shade").parent == "head"
+
+
+def test_height_is_the_sampled_height(lamp_bp):
+    p, bp = lamp_bp
+    H = p["floor_height"] if p["lamp_type"] == "floor" else p["desk_height"]
+    lo, hi = bp.bounds()
+    assert abs(lo[2]) < 1e-9
+    assert hi[2] == pytest.approx(H, abs=1e-6)
+
+
+def test_materials_are_declared_and_fit_their_parts(lamp_bp):
+    p, bp = lamp_bp
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    assert all(family in FAMILIES for family in bp.materials.values())
+    assert bp.materials["base"] in {"brushed_metal", "chrome", "enamel", "wood", "ceramic"}
+    assert bp.materials["pole"] in {"chrome", "brushed_metal", "painted"}
+    assert bp.materials["shade"] in {"fabric", "painted"}
+    assert bp.materials["bulb"] == "glass"
+    assert all(pc.material == "shade" for pc in bp.parts["shade"].pieces[:1])
+
+
+def test_every_piece_collides_except_the_hidden_base_weight(lamp_bp):
+    _, bp = lamp_bp
+    for name, part in bp.parts.items():
+        for pc in part.pieces:
+            assert pc.convex or (name == "base" and pc.material == "weight")
+
+
+# -- joints --------------------------------------------------------------------
+
+
+def test_upper_pole_rests_collapsed_pulls_up_and_turns(lamp_bp):
+    _, bp = lamp_bp
+    j = joint_of(bp, "upper_pole")
+    assert j.kind == "revolute_prismatic" and j.parent == "lower_pole"
+    slide, turn = j.dofs
+    # at rest it sits on its stop (slide 0) and extends upward: gravity holds it collapsed
+    assert slide.type == "prismatic" and np.allclose(slide.axis, (0, 0, 1))
+    assert turn.type == "revolute" and np.allclose(turn.axis, (0, 0, 1))
+    assert (turn.lower, turn.upper) == pytest.approx((-math.pi, math.pi))
+    assert np.allclose(turn.origin[:2], 0) and np.allclose(slide.origin, turn.origin)
+    # L = the pole's length above the tube top (the joint origin)
+    L = bp.parts["upper_pole"].pieces[0].bounds[1, 2] - slide.origin[2]
+    assert slide.lower == 0 and slide.upper == pytest.approx(0.25 * L, rel=1e-6)
+    # the upper pole sits inside the tube: its radius is below the tube's inner radius
+    tube = bp.parts["lower_pole"].pieces[0].vertices
+    pole = bp.parts["upper_pole"].pieces[0].vertices
+    r_in = np.hypot(tube[:, 0], tube[:, 1]).min()
+    assert np.hypot(pole[:, 0], pole[:, 1]).max() + 0.002 <= r_in
+    # collapsed, its end stays above the base; fully extended, it is still well inside the tube
+    z_end = pole[:, 2].min()
+    assert z_end > tube[:, 2].min() + 0.002
+    assert z_end + slide.upper < slide.origin[2] - 0.005
+
+
+def test_pole_extended_makes_the_lamp_taller(lamp_bp):
+    p, bp = lamp_bp
+    H = p["floor_height"] if p["lamp_type"] == "floor" else p["desk_height"]
+    slide = joint_of(bp, "upper_pole").dofs[0]
+    up = poses(bp, {("upper_pole", 0): slide.upper})
+    top = max((pc.vertices @ up[n][:3, :3].T + up[n][:3, 3])[:, 2].max()
+              for n, part in bp.parts.items() for pc in part.pieces)
+    assert top == pytest.approx(H + slide.upper, abs=1e-6)
+
+
+def test_head_turns_or_tilts(lamp_bp):
+    p, bp = lamp_bp
+    j = joint_of(bp, "head")
+    (d,) = j.dofs
+    if p["arm_style"] == "straight" or (p["arm_style"] == "curved" and p["lamp_type"] == "floor"):
+        assert j.kind == "continuous" and np.allclose(np.abs(d.axis), (0, 0, 1))
+    else:
+        assert j.kind == "revolute" and np.allclose(np.abs(d.axis), (0, 1, 0))
+        assert (d.lower, d.upper) == pytest.approx((-p["head_tilt"], p["head_tilt"]))
+
+
+def test_chain_segments_pitch_or_swing(lamp_bp):
+    p, bp = lamp_bp
+    if p["arm_style"] != "chain":
+        return
+    for k in range(p["arm_segments"]):
+        j = joint_of(bp, f"arm_{k}")
+        (d,) = j.dofs
+        assert j.kind == "revolute"
+        if np.allclose(np.abs(d.axis), (0, 1, 0)):  # pitch: rests on its stop, lifts its load
+            assert d.lower == 0
+            if np.allclose(d.axis, (0, -1, 0)):  # +q turns the arm up and back, by pi/6
+                assert d.upper == pytest.approx(math.pi / 6)
+            else:  # +q turns it forward: pi/6, less if the head would reach the ground
+                assert math.pi / 12 - 1e-9 <= d.upper <= math.pi / 6 + 1e-9
+        else:  # swing arm on a vertical pin
+            assert k > 0 and np.allclose(np.abs(d.axis), (0, 0, 1))
+            assert (d.lower, d.upper) == pytest.approx((-math.pi / 2, math.pi / 2))
+    assert np.allclose(np.abs(joint_of(bp, "arm_0").dofs[0].axis), (0, 1, 0))
+
+
+def test_bulb_screws_out_of_its_socket(lamp_bp):
+    """A standing bulb turns and slides up out of its socket; a hanging one only turns."""
+    p, bp = lamp_bp
+    if not p["has_bulb"]:
+        return
+    j = joint_of(bp, "bulb")
+    assert j.parent == "head"
+    if p["arm_style"] != "straight":
+        (turn,) = j.dofs
+        assert j.kind == "continuous" and np.allclose(np.abs(turn.axis), (0, 0, 1))
+        return
+    assert j.kind == "continuous_prismatic"
+    slide, turn = j.dofs
+    assert np.allclose(slide.axis, (0, 0, 1))
+    assert np.allclose(slide.axis, turn.axis) and np.allclose(np.abs(slide.axis), (0, 0, 1))
+    assert slide.lower == 0 and 0 < slide.upper <= 0.02
+    # unscrewing moves the bulb away from the socket's closed end (toward the glass tip)
+    glass = np.vstack([pc.vertices for pc in bp.parts["bulb"].pieces if pc.material == "bulb"])
+    tip_dir = (glass.mean(0) - np.asarray(slide.origin)) @ np.asarray(slide.axis)
+    assert tip_dir > 0
+
+
+def test_switch_is_pressed_horizontally_toward_the_pole(lamp_bp):
+    p, bp = lamp_bp
+    if not p["has_switch"]:
+        return
+    j = joint_of(bp, "switch")
+    (d,) = j.dofs
+    assert j.kind == "prismatic" and j.parent == "base"
+    assert abs(d.axis[2]) < 1e-9 and d.lower == 0 and 0 < d.upper <= 0.01
+    assert np.dot(d.axis[:2], d.origin[:2]) < 0  # pressing moves it toward the pole
+    # it stands on the base, inside its outline
+    button = bp.parts["switch"].pieces[0].vertices
+    base = bp.parts["base"].pieces[0].vertices
+    assert np.all(np.abs(button[:, :2]).max(0) <= np.abs(base[:, :2]).max(0))
+
+
+def test_limits_contain_rest_and_pivots_sit_in_the_hinge(lamp_bp):
+    _, bp = lamp_bp
+    for j in movable(bp):
+        planes = [ConvexHull(c).equations for n in (j.child, j.parent)
+                  for pc in bp.parts[n].pieces for c in pc.convex]
+        for d in j.dofs:
+            assert d.lower <= 0 <= d.upper and d.lower < d.upper
+            if d.type != "prismatic":
+                # the pivot is inside (within 5 mm of) a collision piece of the turning part or its
+                # parent: the axis runs through the hinge, not through empty space
+                x = np.asarray(d.origin)
+                depth = min(float((eq[:, :3] @ x + eq[:, 3]).max()) for eq in planes)
+                assert depth < 0.005, f"{j.child}: pivot {x} is {depth * 1000:.1f} mm off its hinge"
+
+
+# -- physical plausibility ------------------------------------------------------
+
+
+def test_moving_parts_clear_their_parents_at_rest(lamp_bp):
+    _, bp = lamp_bp
+    rest = poses(bp)
+    for j in movable(bp):
+        v = overlaps(hulls(bp, [j.child], rest), hulls(bp, [j.parent], rest))
+        assert sum(v.values()) < 1e-9, f"{j.child} is embedded in {j.parent} at rest"
+
+
+def test_every_joint_limit_stays_above_ground_and_enters_nothing(lamp_bp):
+    """Each joint alone at every corner of its range, moving its whole subtree."""
+    _, bp = lamp_bp
+    rest = poses(bp)
+    for j in movable(bp):
+        moved = subtree(bp, j.child)
+        still = hulls(bp, [n for n in bp.parts if n not in moved], rest)
+        before = overlaps(hulls(bp, moved, rest), still)
+        for q in limit_states(j):
+            now = hulls(bp, moved, poses(bp, q))
+            z = min(w[:, 2].min() for _, w, _, _ in now)
+            assert z > -1e-3, f"{j.child} at {q} goes {-z * 1000:.1f} mm below the ground"
+            for pair, v in overlaps(now, still).items():
+                assert v <= before.get(pair, 0.0) + 1e-8, f"{pair} overlap {v * 1e6:.2f} cm^3 at {q}"
+
+
+def carried_mass(bp, name: str) -> tuple[float, np.ndarray]:
+    """Mass and centre of mass at rest of a part and everything it carries."""
+    mass, moment = 0.0, np.zeros(3)
+    for n in subtree(bp, name):
+        part = bp.parts[n]
+        m, com, _ = inertial((pc, FAMILIES[bp.materials[pc.material]].density) for pc in part.pieces)
+        mass, moment = mass + m, moment + m * com
+    return mass, moment / mass
+
+
+def test_gravity_holds_every_joint_at_rest(lamp_bp):
+    """Each DoF is neutral under gravity, balanced, or pressed into the lower limit it rests on.
+
+    Neutral: a rotation about a vertical axis, or a horizontal slide. A slide along
+    gravity rests at lower = 0 with gravity pushing toward negative q. A hinge about a
+    horizontal axis either carries its centre of mass straight below the axis
+    (balanced, stable) or rests at lower = 0 with the gravity torque of everything
+    it carries pushing toward negative q.
+    """
+    _, bp = lamp_bp
+    g = np.array([0.0, 0.0, -9.81])
+    for j in movable(bp):
+        m, com = carried_mass(bp, j.child)
+        for d in j.dofs:
+            a, o = np.asarray(d.axis), np.asarray(d.origin)
+            if d.type == "prismatic":
+                if abs(a[2]) < 1e-9:
+                    continue
+                assert d.lower == 0 and m * g @ a < 0, f"{j.child}: gravity pulls the slide into its range"
+                continue
+            if abs(a[2]) > 1 - 1e-9:
+                continue
+            assert abs(a[2]) < 1e-9, f"{j.child}: tilted hinge axis {a}"
+            torque = float(np.cross(com - o, m * g) @ a)
+            arm = abs(torque) / (9.81 * m)  # horizontal offset of the load from the axis
+            if arm < 2e-4:
+                assert com[2] < o[2], f"{j.child}: balanced upside down"
+                continue
+            assert d.lower == 0 and torque < 0, (
+                f"{j.child}: gravity torque {torque:.3f} N m does not press it onto its lower stop"
+                f" [{d.lower:.3f}, {d.upper:.3f}]")
+
+
+def test_stands_on_its_base(lamp_bp):
+    """Only the base touches the ground, and the centre of mass lies over it."""
+    _, bp = lamp_bp
+    for name, part in bp.parts.items():
+        if name != "base":
+            assert min(pc.bounds[0, 2] for pc in part.pieces) > 1e-3, name
+    mass, moment = 0.0, np.zeros(3)
+    for part in bp.parts.values():
+        m, com, _ = inertial((pc, FAMILIES[bp.materials[pc.material]].density) for pc in part.pieces)
+        mass, moment = mass + m, moment + m * com
+    base = np.vstack([pc.vertices for pc in bp.parts["base"].pieces])
+    half = np.abs(base[:, :2]).max(0)
+    assert np.all(np.abs(moment[:2] / mass) < 0.8 * half)
+
+
+# -- parameters -------------------------------------------------------------------
+
+
+def test_schema_has_the_growth_flags_and_arm_choice():
+    names = lamp.SCHEMA.names
+    assert {"has_bulb", "has_switch", "lamp_type", "arm_style", "arm_segments"} <= set(names)
+    assert lamp.SCHEMA["arm_style"].choices == tuple(lamp.GROWTH.rules["arm"].one_of)
+    assert lamp.SCHEMA["lamp_type"].weights == (0.7, 0.3)
+    assert "lamp: requires base, lower_pole, upper_pole, head" in lamp.GROWTH.table()
+
+
+@pytest.mark.parametrize("seed", [0, 3])
+def test_lamp_type_override_sets_the_height_range(seed):
+    p, bp = make(seed, lamp_type="floor")
+    assert 1.0 <= bp.bounds()[1, 2] <= 1.5
+    p, bp = make(seed, lamp_type="desk", desk_height=0.42)
+    assert bp.bounds()[1, 2] == pytest.approx(0.42)
+
+
+def test_style_overrides_shape_the_arm():
+    _, bp = make(5, arm_style="chain", arm_segments=3)
+    assert {f"arm_{k}" for k in range(3)} <= set(bp.parts)
+    _, bp = make(5, arm_style="curved", lamp_type="floor")
+    assert joint_of(bp, "head").kind == "continuous"
+    _, bp = make(5, arm_style="straight", has_bulb=False, has_switch=False)
+    assert not {"bulb", "switch", "arm"} & set(bp.parts)
+
+
+@pytest.mark.parametrize("bad", [{"desk_height": 0.9}, {"floor_height": 0.5}, {"lamp_type": "ceiling"},
+                                 {"arm_segments": 4}, {"shade_shape": "square"}, {"bulb_power": 60}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_deterministic():
+    for seed in (1, 2):
+        (p1, a), (p2, b) = make(seed), make(seed)
+        assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+        for name in a.parts:
+            for x, y in zip(a.parts[name].pieces, b.parts[name].pieces):
+                assert np.array_equal(x.vertices, y.vertices)
