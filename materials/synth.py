@@ -40,7 +40,9 @@ Component = tuple[float, float, float]
 """``(weight, sigma_u, sigma_v)``: one anisotropic Gaussian of a noise amplitude
 spectrum, with standard deviations in cycles per UV unit along U and V."""
 
-_PNG_COMPRESSION = 3
+# zlib level 1 with run-length matching: half the time of level 3 and, on these noise
+# textures, smaller files (measured on 15 maps of 5 families at 512 px: 222 vs 454 ms, 2.37 vs 2.52 MB)
+_PNG_PARAMS = [cv2.IMWRITE_PNG_COMPRESSION, 1, cv2.IMWRITE_PNG_STRATEGY, cv2.IMWRITE_PNG_STRATEGY_RLE]
 
 
 def _srgb_encode_lut(n: int) -> np.ndarray:
@@ -70,8 +72,8 @@ def periodic_noise(
     The amplitude at integer frequency ``(ku, kv)`` (cycles per UV unit) is
     ``sum(w * exp(-ku**2 / (2 su**2) - kv**2 / (2 sv**2)) for w, su, sv in components)``;
     negative weights give band-pass (difference of Gaussians) spectra.
-    Frequencies above ``4 * max(sigma)`` are dropped, as is everything at or
-    above the Nyquist frequency of ``size``.
+    Frequencies beyond four times the largest sigma of their axis are dropped,
+    as is everything at or above the Nyquist frequency of ``size``.
 
     Parameters
     ----------
@@ -90,38 +92,45 @@ def periodic_noise(
         float32, shape (size, size), zero mean; its expected standard deviation
         is 1 when ``size`` resolves the whole spectrum and smaller otherwise.
     """
-    k_ref = math.ceil(4.0 * max(max(su, sv) for _, su, sv in components))
-    k_cap = min(k_ref, size // 2 - 1)
-    cols = k_cap + 1
+    # The spectrum is kept on the rectangle |ku| <= ku_ref, |kv| <= kv_ref (4 sigma).
+    ku_ref = math.ceil(4.0 * max(su for _, su, _ in components))
+    kv_ref = math.ceil(4.0 * max(sv for _, _, sv in components))
+    half = size // 2
+    ku_cap, kv_cap = min(ku_ref, half - 1), min(kv_ref, half - 1)
+    cols = ku_cap + 1
     tag = zlib.crc32(name.encode("utf-8"))
-    spec = np.zeros((size, cols), dtype=np.complex64)
     # Octave o holds the frequencies with 2**o <= max(|ku|, |kv|) < 2**(o + 1) (octave 0
-    # also holds DC), drawn from its own generator as one full block (|kv|, ku < 2**(o + 1))
-    # so that coefficients do not depend on size.  Writing high octaves first lets the
-    # lower ones overwrite the inner part of each block.
-    for octave in reversed(range(k_cap.bit_length())):
+    # also holds DC), drawn from its own generator as one block whose shape depends on
+    # the octave and the spectrum only, so coefficients do not depend on size.  Writing
+    # high octaves first lets the lower ones overwrite the inner part of each block.
+    # The row length half + 1 (not a power of two) keeps the column FFTs cache-friendly.
+    spec = np.zeros((size, half + 1), dtype=np.complex64)
+    for octave in reversed(range(max(ku_cap, kv_cap).bit_length())):
         hi = 2 << octave
+        hu, hv = min(hi, ku_ref + 1), min(hi, kv_ref + 1)
         rng = np.random.default_rng(np.random.SeedSequence((seed, tag, octave)))
-        draw = rng.standard_normal((2 * hi, hi, 2), dtype=np.float32).view(np.complex64)
-        spec[np.arange(-hi, hi) % size, : min(hi, cols)] = draw[:, :cols, 0]
-    spec[k_cap + 1 : size - k_cap] = 0.0
+        draw = rng.standard_normal((2 * hv, hu, 2), dtype=np.float32).view(np.complex64)
+        spec[np.arange(-hv, hv) % size, : min(hu, cols)] = draw[:, :cols, 0]
+    spec[kv_cap + 1 : size - kv_cap] = 0.0
     spec[0, 0] = 0.0
     # irfft keeps only the real part of the ku = 0 column: restore its variance.
     spec[:, 0] *= np.float32(math.sqrt(2.0))
 
     ku = np.arange(cols, dtype=np.float32)
     kv = (np.fft.fftfreq(size) * size).astype(np.float32)
-    amp = np.zeros(spec.shape, dtype=np.float32)
+    amp = np.zeros((size, cols), dtype=np.float32)
     variance = 0.0
     for w, su, sv in components:
         amp += np.float32(w) * np.outer(np.exp(-0.5 * (kv / sv) ** 2), np.exp(-0.5 * (ku / su) ** 2))
         for w2, su2, sv2 in components:
-            variance += w * w2 * _gauss_sum(su, su2, k_ref) * _gauss_sum(sv, sv2, k_ref)
+            variance += w * w2 * _gauss_sum(su, su2, ku_ref) * _gauss_sum(sv, sv2, kv_ref)
     variance -= sum(w for w, _, _ in components) ** 2  # the excluded DC term
-    # Inverse transform over V, then a real inverse transform over U (zero-padding ku).
-    rows = np.fft.ifft(spec * amp, axis=0, norm="forward")
-    field = np.fft.irfft(rows, n=size, axis=1, norm="forward")
-    return (field / np.float32(math.sqrt(2.0 * max(variance, 1e-12)))).astype(np.float32)
+    # Inverse transform over V (non-zero columns only), then a real one over U.  Both
+    # divide by size (numpy's default norm, much faster here than norm="forward").
+    spec[:, :cols] = np.fft.ifft(spec[:, :cols] * amp, axis=0)
+    field = np.fft.irfft(spec, n=size, axis=1)
+    field *= np.float32(size * size / math.sqrt(2.0 * max(variance, 1e-12)))
+    return field
 
 
 # --------------------------------------------------------------------------- normals
@@ -151,9 +160,13 @@ def height_to_normal(height: np.ndarray, bump: float) -> np.ndarray:
     gain = np.float32(bump / rms if rms > 1e-12 else 0.0)
     du *= gain
     dv *= gain
-    inv_len = 1.0 / np.sqrt(du * du + dv * dv + 1.0)
-    n = np.stack((-du * inv_len, -dv * inv_len, inv_len), axis=-1)
-    return np.rint(n * 127.5 + 127.5).astype(np.uint8)
+    half_inv_len = np.float32(127.5) / np.sqrt(du * du + dv * dv + np.float32(1.0))
+    # 127.5 * n + 127.5, rounded half up by adding 0.5 and truncating.
+    normal = np.empty(height.shape + (3,), dtype=np.uint8)
+    normal[..., 0] = 128.0 - du * half_inv_len
+    normal[..., 1] = 128.0 - dv * half_inv_len
+    normal[..., 2] = 128.0 + half_inv_len
+    return normal
 
 
 # --------------------------------------------------------------------------- styles
@@ -167,21 +180,36 @@ def height_to_normal(height: np.ndarray, bump: float) -> np.ndarray:
 Fields = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
+def _smoothstep(lo: float, hi: float, x: np.ndarray) -> np.ndarray:
+    x = np.clip((x - lo) / (hi - lo), 0.0, 1.0)
+    return x * x * (3.0 - 2.0 * x)
+
+
+def _ring_profile(t: np.ndarray) -> np.ndarray:
+    """Latewood density over one growth ring, ``t`` in [0, 1): light earlywood darkening
+    into a narrow latewood band that falls off quickly into the next ring."""
+    return _smoothstep(0.45, 0.9, t) - _smoothstep(0.92, 1.0, t)
+
+
+_RING_GRID = _ring_profile(np.linspace(0.0, 1.0, 4096, endpoint=False))
+_RING_MEAN, _RING_STD = float(_RING_GRID.mean()), float(_RING_GRID.std())
+
+
 def _wood(look: Look, size: int) -> Fields:
     """Growth rings across V, wiggled by low-frequency warp, plus grain and pores along U."""
     seed, aniso = look.noise_seed, look.anisotropy
     rings = max(1, round(look.scale))
-    warp = periodic_noise(seed, "wood.warp", size, [(1.0, 1.0, 1.2)])
+    warp = periodic_noise(seed, "wood.warp", size, [(1.0, 0.8, 0.6)])
+    wobble = periodic_noise(seed, "wood.wobble", size, [(1.0, 2.0, 4.0)])
     figure = periodic_noise(seed, "wood.figure", size, [(1.0, 2.0, 3.0)])
     grain = periodic_noise(seed, "wood.grain", size, [(1.0, 70.0 / aniso, 70.0)])
     pores = periodic_noise(seed, "wood.pores", size, [(1.0, 200.0 / aniso, 200.0)])
 
     v = (np.arange(size, dtype=np.float32) + 0.5) / size
-    phase = rings * v[:, None] + 0.5 * warp + 0.02 * grain
-    t = phase - np.floor(phase)
-    # Earlywood lightens gradually into dark latewood, then the next ring starts sharply.
-    latewood = (t * t * t - 0.25) / 0.284 * (1.0 + 0.3 * figure)
-    dark = 0.8 * latewood + 0.45 * grain + 0.25 * pores
+    phase = rings * v[:, None] + 0.15 * warp + 0.03 * wobble + 0.02 * grain
+    latewood = (_ring_profile(phase - np.floor(phase)) - _RING_MEAN) / _RING_STD
+    latewood *= 1.0 + 0.3 * figure
+    dark = 0.85 * latewood + 0.3 * grain + 0.35 * pores
 
     ln_base = np.log(np.maximum(np.asarray(look.base_color, dtype=np.float32), 1e-3))
     # Darker wood is also more saturated: channels darken in proportion to -ln(base).
@@ -218,7 +246,7 @@ def _speckle(look: Look, size: int) -> Fields:
     seed, s = look.noise_seed, look.scale
     speck = periodic_noise(seed, "speckle.fine", size, [(1.0, s / look.anisotropy, s)])
     low = periodic_noise(seed, "speckle.low", size, [(1.0, 3.0, 3.0)])
-    detail = 0.8 * speck + 0.6 * low
+    detail = 0.9 * speck + 0.3 * low
     return 1.0 + look.color_variation * detail, detail, speck
 
 
@@ -283,9 +311,12 @@ def _basecolor(tint: np.ndarray, base_color: tuple[float, float, float]) -> np.n
     if tint.ndim == 2:
         tint = tint[..., None]
     base = np.asarray(base_color, dtype=np.float32)
-    linear = tint * (base / tint.mean(axis=(0, 1)))
-    index = np.rint(np.clip(linear, 0.0, 1.0) * 65535.0).astype(np.uint16)
-    return _SRGB_LUT[index]
+    mean = np.asarray(cv2.mean(tint)[: tint.shape[2]], dtype=np.float32)  # fast per-channel mean
+    scale = base / mean * np.float32(len(_SRGB_LUT) - 1)
+    index = tint * scale
+    np.clip(index, 0.0, len(_SRGB_LUT) - 1, out=index)
+    index += 0.5  # round half up when truncating to integers
+    return _SRGB_LUT[index.astype(np.uint16)]
 
 
 def synthesize(look: Look, size: int = 512) -> dict[str, np.ndarray]:
@@ -346,7 +377,7 @@ def encode_png(img: np.ndarray) -> bytes:
             f"expected a uint8 (h, w) or (h, w, 3) image, got {img.dtype} {img.shape}"
         )
     bgr = np.ascontiguousarray(img[..., ::-1]) if img.ndim == 3 else img
-    ok, buf = cv2.imencode(".png", bgr, [cv2.IMWRITE_PNG_COMPRESSION, _PNG_COMPRESSION])
+    ok, buf = cv2.imencode(".png", bgr, _PNG_PARAMS)
     if not ok:
         raise RuntimeError("cv2.imencode failed to encode a PNG")
     return buf.tobytes()

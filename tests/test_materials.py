@@ -1,0 +1,264 @@
+"""Tests of material families, look sampling and tileable PBR texture synthesis."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+
+import cv2
+import numpy as np
+import pytest
+
+from infmob_usd.materials import (
+    FAMILIES,
+    TEXTURE_MAPS,
+    Family,
+    Look,
+    encode_png,
+    sample_look,
+    synthesize,
+)
+from infmob_usd.materials.families import srgb_to_linear
+from infmob_usd.materials.synth import height_to_normal, periodic_noise
+
+REQUIRED_FAMILIES = (
+    "wood",
+    "painted",
+    "brushed_metal",
+    "plastic",
+    "glass",
+    "ceramic",
+    "rubber",
+    "chrome",
+    "enamel",
+    "fabric",
+)
+SIZE = 128
+
+
+def _look(family: str, seed: int = 0) -> Look:
+    return sample_look(family, np.random.default_rng(seed))
+
+
+def _edge_vs_interior(img: np.ndarray, axis: int) -> tuple[float, float]:
+    """Mean abs difference across the wrap-around edge, and the largest one between
+    neighbouring interior columns (axis=1) or rows (axis=0)."""
+    a = np.moveaxis(img.astype(np.float64), axis, 0)
+    wrap = float(np.abs(a[0] - a[-1]).mean())
+    interior = np.abs(np.diff(a, axis=0)).reshape(a.shape[0] - 1, -1).mean(axis=1)
+    return wrap, float(interior.max())
+
+
+def _assert_seamless(img: np.ndarray, what: str) -> None:
+    for axis in (0, 1):
+        wrap, interior = _edge_vs_interior(img, axis)
+        assert wrap <= 1.25 * interior + 0.5, f"{what}: seam along axis {axis}: {wrap} vs {interior}"
+
+
+def test_required_families_exist_with_plausible_data():
+    assert set(REQUIRED_FAMILIES) <= set(FAMILIES)
+    for name, fam in FAMILIES.items():
+        assert isinstance(fam, Family) and fam.name == name
+        assert 100.0 <= fam.density <= 10000.0
+        assert fam.palette and 0.0 <= fam.roughness[0] <= fam.roughness[1] <= 1.0
+    assert FAMILIES["brushed_metal"].density == FAMILIES["enamel"].density == 7850.0
+    assert FAMILIES["glass"].density == 2500.0
+    assert 600.0 <= FAMILIES["wood"].density <= 700.0
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_sample_look_within_family_ranges(family):
+    fam = FAMILIES[family]
+    rng = np.random.default_rng(1)
+    for _ in range(20):
+        look = sample_look(family, rng)
+        assert look.family == family
+        assert look.variant in {v for v, _ in fam.palette}
+        assert len(look.base_color) == 3 and all(0.0 <= c <= 1.0 for c in look.base_color)
+        assert fam.roughness[0] <= look.roughness <= fam.roughness[1]
+        assert fam.opacity[0] <= look.opacity <= fam.opacity[1]
+        assert look.metallic == fam.metallic
+        assert isinstance(look.noise_seed, int) and 0 <= look.noise_seed < 2**53
+
+
+def test_glass_is_translucent_and_others_opaque():
+    for family in REQUIRED_FAMILIES:
+        opacity = _look(family, 3).opacity
+        if family == "glass":
+            assert 0.15 <= opacity <= 0.35
+        else:
+            assert opacity == 1.0
+
+
+def test_look_is_hashable_and_json_roundtrips():
+    look = _look("wood", 5)
+    assert hash(look) == hash(_look("wood", 5))
+    d = json.loads(json.dumps(look.to_dict()))
+    assert Look.from_dict(d) == look
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_synthesize_shapes_and_dtypes(family):
+    maps = synthesize(_look(family), SIZE)
+    assert tuple(maps) == TEXTURE_MAPS
+    assert maps["basecolor"].shape == (SIZE, SIZE, 3)
+    assert maps["roughness"].shape == (SIZE, SIZE)
+    assert maps["metallic"].shape == (SIZE, SIZE)
+    assert maps["normal"].shape == (SIZE, SIZE, 3)
+    assert all(m.dtype == np.uint8 for m in maps.values())
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_smallest_size_works(family):
+    maps = synthesize(_look(family), 16)
+    assert maps["normal"].shape == (16, 16, 3)
+    assert (maps["normal"][..., 2] > 128).all()
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_maps_tile_seamlessly(family):
+    for seed in range(2):
+        maps = synthesize(_look(family, seed), 256)
+        for key, img in maps.items():
+            _assert_seamless(img, f"{family}/{key}")
+
+
+def test_seam_check_detects_a_seam():
+    ramp = np.tile(np.linspace(0, 255, 64), (64, 1))
+    noise = cv2.GaussianBlur(np.random.default_rng(0).random((64, 64)) * 255, (0, 0), 3)
+    for img in (ramp, noise):
+        wrap, interior = _edge_vs_interior(img, 1)
+        assert wrap > 1.25 * interior + 0.5
+
+
+def test_periodic_noise_is_periodic_unit_std_and_size_consistent():
+    comps = [(1.0, 8.0, 8.0)]
+    big = periodic_noise(42, "test", 512, comps)
+    small = periodic_noise(42, "test", 128, comps)
+    # The pattern does not depend on the resolution it is sampled at.
+    np.testing.assert_allclose(big[::4, ::4], small, atol=1e-5)
+    assert big.dtype == np.float32 and big.shape == (512, 512)
+    assert abs(float(big.mean())) < 1e-4
+    assert 0.8 < float(big.std()) < 1.2
+    _assert_seamless(big, "noise")
+    assert not np.allclose(big, periodic_noise(42, "other", 512, comps))
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_deterministic_png_bytes(family):
+    a = synthesize(sample_look(family, np.random.default_rng(123)), SIZE)
+    b = synthesize(sample_look(family, np.random.default_rng(123)), SIZE)
+    c = synthesize(sample_look(family, np.random.default_rng(124)), SIZE)
+    for key in TEXTURE_MAPS:
+        assert encode_png(a[key]) == encode_png(b[key])
+    assert encode_png(a["basecolor"]) != encode_png(c["basecolor"])
+    assert encode_png(a["normal"]) != encode_png(c["normal"])
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_basecolor_and_roughness_means_match_look(family):
+    for seed in range(3):
+        look = _look(family, seed)
+        maps = synthesize(look, 256)
+        linear = srgb_to_linear(maps["basecolor"] / 255.0)
+        mean = linear.reshape(-1, 3).mean(axis=0)
+        np.testing.assert_allclose(mean, look.base_color, atol=0.01, rtol=0.03)
+        assert abs(maps["roughness"].mean() / 255.0 - look.roughness) < 0.02
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_maps_vary_around_the_mean(family):
+    maps = synthesize(_look(family, 9), 256)
+    assert maps["basecolor"].astype(float).std(axis=(0, 1)).max() > 0.0
+    assert maps["normal"].std() > 0.0
+
+
+def test_wood_varies_more_than_paint():
+    wood = synthesize(_look("wood", 2), 256)["basecolor"].astype(float)
+    paint = synthesize(_look("painted", 2), 256)["basecolor"].astype(float)
+    assert wood.std(axis=(0, 1)).mean() > 4.0 * paint.std(axis=(0, 1)).mean()
+
+
+@pytest.mark.parametrize("family", REQUIRED_FAMILIES)
+def test_normal_map_is_mostly_flat_and_upward(family):
+    normal = synthesize(_look(family, 4), 256)["normal"]
+    mean = normal.reshape(-1, 3).mean(axis=0)
+    assert abs(mean[0] - 127.5) < 3.0 and abs(mean[1] - 127.5) < 3.0
+    assert mean[2] > 235.0
+    assert (normal[..., 2] > 128).all()
+    # Decoded normals are unit length up to 8-bit quantisation.
+    n = normal.astype(np.float64) / 127.5 - 1.0
+    np.testing.assert_allclose(np.linalg.norm(n, axis=-1), 1.0, atol=0.02)
+
+
+def test_normal_map_follows_opengl_convention():
+    size = 64
+    x = np.arange(size) / size
+    flat = height_to_normal(np.zeros((size, size)), 0.1)
+    assert (flat == (128, 128, 255)).all()
+    # Height rising towards +U (to the right) tilts the normal towards -U: red < 128.
+    ramp_u = np.tile(np.sin(2 * np.pi * x), (size, 1))
+    n = height_to_normal(ramp_u, 0.3)
+    assert n[:, 0, 0].max() < 128 and n[:, size // 2, 0].min() > 128
+    # Height rising towards +V (up the image, decreasing row) tilts it towards -V: green < 128.
+    ramp_v = np.tile(np.sin(2 * np.pi * x)[::-1, None], (1, size))
+    n = height_to_normal(ramp_v, 0.3)
+    assert n[size - 1, :, 1].max() < 128 and n[size // 2, :, 1].min() > 128
+
+
+def test_metallic_by_family():
+    for family in ("brushed_metal", "chrome"):
+        assert synthesize(_look(family), SIZE)["metallic"].mean() > 250
+    for family in ("wood", "plastic", "painted", "enamel", "fabric"):
+        assert synthesize(_look(family), SIZE)["metallic"].max() == 0
+
+
+def test_roughness_ordering_between_families():
+    chrome = synthesize(_look("chrome"), SIZE)["roughness"].mean()
+    rubber = synthesize(_look("rubber"), SIZE)["roughness"].mean()
+    assert chrome < 0.2 * 255 < 0.75 * 255 < rubber
+
+
+def test_unknown_family_raises_with_valid_names():
+    with pytest.raises(ValueError, match="unknown material family 'marble'.*wood"):
+        sample_look("marble", np.random.default_rng(0))
+    look = dataclasses.replace(_look("wood"), family="marble")
+    with pytest.raises(ValueError, match="valid families"):
+        synthesize(look, SIZE)
+
+
+def test_sample_look_requires_a_generator():
+    with pytest.raises(TypeError, match="Generator"):
+        sample_look("wood", 0)
+
+
+@pytest.mark.parametrize("size", [0, 8, 15, 100, 8192, 512.0, True, "512"])
+def test_bad_size_raises(size):
+    with pytest.raises(ValueError, match=r"power of two in \[16, 4096\]"):
+        synthesize(_look("plastic"), size)
+
+
+def test_encode_png_roundtrip_rgb_and_grey():
+    rng = np.random.default_rng(0)
+    rgb = rng.integers(0, 256, (20, 30, 3), dtype=np.uint8)
+    grey = rng.integers(0, 256, (20, 30), dtype=np.uint8)
+    decoded = cv2.imdecode(np.frombuffer(encode_png(rgb), np.uint8), cv2.IMREAD_UNCHANGED)
+    np.testing.assert_array_equal(decoded[..., ::-1], rgb)  # stored as RGB, not BGR
+    decoded = cv2.imdecode(np.frombuffer(encode_png(grey), np.uint8), cv2.IMREAD_UNCHANGED)
+    np.testing.assert_array_equal(decoded, grey)
+    assert encode_png(rgb).startswith(b"\x89PNG")
+
+
+def test_encode_png_rejects_bad_images():
+    with pytest.raises(ValueError, match="uint8"):
+        encode_png(np.zeros((4, 4, 3), dtype=np.float32))
+    with pytest.raises(ValueError, match="uint8"):
+        encode_png(np.zeros((4, 4, 4), dtype=np.uint8))
+
+
+def test_variant_restricted_family_spec():
+    rng = np.random.default_rng(0)
+    variants = {sample_look("plastic:black|dark_grey", rng).variant for _ in range(20)}
+    assert variants == {"black", "dark_grey"}
+    with pytest.raises(ValueError, match="no variant"):
+        sample_look("plastic:mauve", rng)
