@@ -88,3 +88,38 @@ def test_doors_beside_another_column_stay_within_their_column_when_open(cabinet)
         y = pts @ pose[:3, :3].T + pose[:3, 3]
         rest = np.vstack([v for p in cabinet.link(j.child).pieces for v, _ in p.hulls()]) + cabinet.link(j.child).origin
         assert y[:, 1].min() >= rest[:, 1].min() - 1e-6 and y[:, 1].max() <= rest[:, 1].max() + 1e-6
+
+
+@pytest.mark.sim
+@pytest.mark.parametrize("seed", [1, 3])
+def test_in_sapien_drawers_slide_out_and_doors_swing_outward(seed, tmp_path):
+    """Drive each joint in SAPIEN (CPU physics) and look at where the simulated link ends up."""
+    pytest.importorskip("sapien")
+    from infmob_usd.validate.sim import load_sapien
+
+    obj = infmob_usd.generate("kitchen_cabinet", seed=seed, texture_size=16)
+    folder = obj.save(tmp_path)
+    scene, art = load_sapien(folder / f"{folder.name}.urdf")
+    joints = {j.name: j for j in art.get_active_joints()}
+    links = {link.name: link for link in art.get_links()}
+    front = obj.params["depth"] / 2
+    for j in obj.movable_joints:
+        for other in joints.values():
+            other.set_drive_property(stiffness=2e4, damping=2e3)
+            other.set_drive_target(0.0)
+        art.set_qpos(np.zeros(art.dof))
+        joints[j.name].set_drive_target(j.upper)
+        index = list(joints).index(j.name)
+        for _ in range(600):
+            scene.step()
+            if abs(art.get_qpos()[index] - j.upper) < 0.01 * j.upper:
+                break
+        q = art.get_qpos()[index]
+        assert q == pytest.approx(j.upper, abs=0.05 * j.upper)
+        link = links[j.child]
+        centre = link.entity_pose.p + link.entity_pose.to_transformation_matrix()[:3, :3] @ link.cmass_local_pose.p
+        rest = obj.link(j.child).origin + obj.link(j.child).com
+        if j.type == "prismatic":  # the drawer came out of the carcass along +X
+            assert centre[0] - rest[0] == pytest.approx(j.upper, abs=0.01)
+        else:  # the door's centre of mass swung out in front of the carcass
+            assert centre[0] > front + 0.1 and centre[0] > rest[0] + 0.1
