@@ -11,10 +11,12 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from . import kitchen_cabinet, lamp, microwave
+from . import kitchen_cabinet, lamp, microwave, tap, tv
 
 CATEGORIES: dict[str, ModuleType] = {
     "kitchen_cabinet": kitchen_cabinet,
     "microwave": microwave,
     "lamp": lamp,
+    "tv": tv,
+    "tap": tap,
 }

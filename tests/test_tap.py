@@ -1,0 +1,260 @@
+"""The tap category, checked on its blueprint (world space, grounded): parts, joints, clearances."""
+
+from __future__ import annotations
+
+import math
+
+import manifold3d
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import tap
+from infmob_usd.errors import ParameterError
+from infmob_usd.mass import inertial
+from infmob_usd.materials import FAMILIES
+from infmob_usd.materials.families import split_spec
+from infmob_usd.seeding import streams
+
+SEEDS = range(8)
+LABELS = {"base", "spout", "lever", "handle"}
+TOL = 1e-7  # m^3, as the validator's contact volume
+
+
+def make(seed: int, **overrides):
+    rng = streams("tap", seed)
+    p = tap.SCHEMA.sample(rng["params"], overrides)
+    bp = tap.build(p, rng["structure"], rng["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+@pytest.fixture(scope="module", params=SEEDS)
+def tap_bp(request):
+    return make(request.param)
+
+
+# -- kinematics and collision helpers ----------------------------------------------------
+
+
+def dof_motion(dof, value: float) -> np.ndarray:
+    m = np.eye(4)
+    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
+    if dof.type == "prismatic":
+        m[:3, 3] = a * value
+    else:
+        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        r = np.eye(3) + math.sin(value) * k + (1 - math.cos(value)) * k @ k
+        m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def poses(bp, q=None):
+    """World transform of each part; ``q`` maps (child, dof index) -> value."""
+    q = q or {}
+    out = {bp.root: np.eye(4)}
+    pending = list(bp.joints)
+    while pending:
+        for j in list(pending):
+            if j.parent in out:
+                m = out[j.parent]
+                for i, d in enumerate(j.dofs):
+                    m = m @ dof_motion(d, q.get((j.child, i), 0.0))
+                out[j.child] = m
+                pending.remove(j)
+    return out
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def joint_of(bp, child):
+    return next(j for j in bp.joints if j.child == child)
+
+
+def at(d, f):
+    return f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)
+
+
+def states(bp):
+    """rest, all joints at 50 % and 100 % (continuous: f pi), each DoF alone at its limits
+    (continuous: +-90 and 180 degrees), and the spout at eight angles with the rest at upper."""
+    js = movable(bp)
+    out = [{}]
+    for f in (0.5, 1.0):
+        out.append({(j.child, i): at(d, f) for j in js for i, d in enumerate(j.dofs)})
+    for j in js:
+        for i, d in enumerate(j.dofs):
+            qs = (math.pi / 2, -math.pi / 2, math.pi) if d.type == "continuous" else (d.lower, d.upper)
+            out += [{(j.child, i): q} for q in qs]
+    spout = joint_of(bp, "spout").dofs[0]
+    lo, hi = (-math.pi, math.pi) if spout.type == "continuous" else (spout.lower, spout.upper)
+    for a in np.linspace(lo, hi, 8):
+        q = {(j.child, i): at(d, 1.0) for j in js for i, d in enumerate(j.dofs)}
+        q[("spout", 0)] = a
+        out.append(q)
+    return out
+
+
+def posed_hulls(bp, pose):
+    out = {}
+    for name, part in bp.parts.items():
+        hs = []
+        for pc in part.pieces:
+            for c in pc.convex:
+                w = c @ pose[name][:3, :3].T + pose[name][:3, 3]
+                hs.append((w, w.min(0), w.max(0)))
+        out[name] = hs
+    return out
+
+
+def volume(ha, hb):
+    total = 0.0
+    for wa, lo_a, hi_a in ha:
+        for wb, lo_b, hi_b in hb:
+            if np.any(hi_a <= lo_b) or np.any(hi_b <= lo_a):
+                continue
+            total += (manifold3d.Manifold.hull_points(wa) ^ manifold3d.Manifold.hull_points(wb)).volume()
+    return total
+
+
+def carried_mass(bp, name):
+    names, grew = {name}, True
+    while grew:
+        grew = False
+        for j in bp.joints:
+            if j.parent in names and j.child not in names:
+                names.add(j.child)
+                grew = True
+    mass, moment = 0.0, np.zeros(3)
+    for n in names:
+        dens = ((pc, FAMILIES[split_spec(bp.materials[pc.material])[0]].density) for pc in bp.parts[n].pieces)
+        m, com, _ = inertial(dens)
+        mass, moment = mass + m, moment + m * com
+    return mass, moment / mass
+
+
+# -- structure -----------------------------------------------------------------------------
+
+
+def test_parts_labels_and_materials(tap_bp):
+    p, bp = tap_bp
+    assert bp.root == "base" and bp.parts["base"].label == "base"
+    assert bp.parts["spout"].label == "spout"
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    if p["handles"] == "single_lever":
+        assert bp.parts["lever"].label == "lever" and "handle_0" not in bp.parts
+        assert any(pc.name == "handle" for pc in bp.parts["lever"].pieces)
+    else:
+        assert bp.parts["handle_0"].label == bp.parts["handle_1"].label == "handle" and "lever" not in bp.parts
+        assert any(pc.material == "hot" for pc in bp.parts["handle_0"].pieces)
+        assert any(pc.material == "cold" for pc in bp.parts["handle_1"].pieces)
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    assert bp.materials["metal"] in ("chrome", "brushed_metal", "enamel:black")
+    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
+
+
+def test_size(tap_bp):
+    p, bp = tap_bp
+    lo, hi = bp.bounds()
+    assert lo[2] == pytest.approx(0.0, abs=1e-9)
+    assert p["height"] - 1e-6 <= hi[2] <= 0.45
+    deck = bp.parts["base"].pieces[0].bounds
+    assert deck[1, 1] - deck[0, 1] >= min(p["base_width"], 0.12) - 1e-9
+
+
+def test_spout_swivels_about_its_vertical_axis(tap_bp):
+    p, bp = tap_bp
+    j = joint_of(bp, "spout")
+    d = j.dofs[0]
+    assert j.parent == "base" and d.axis == pytest.approx((0, 0, 1))
+    assert d.origin[:2] == pytest.approx((0.0, 0.0))
+    if p["spout_joint"] == "continuous":
+        assert j.kind == "continuous"
+    else:
+        assert j.kind == "revolute" and (d.lower, d.upper) == (-p["spout_swivel"], p["spout_swivel"])
+    spout = np.array([pc.bounds for pc in bp.parts["spout"].pieces])
+    lo, hi = spout[:, 0].min(0), spout[:, 1].max(0)
+    assert hi[0] > 0.05  # it reaches forward
+    if p["has_separate_pipe"]:  # on top of its own pipe: nothing of it behind the axis
+        assert lo[0] > -0.0125 and lo[2] > 0.02
+    else:  # a collar around the column
+        assert lo[0] < -p["body_radius"]
+
+
+def test_controls(tap_bp):
+    p, bp = tap_bp
+    if p["handles"] == "single_lever":
+        j = joint_of(bp, "lever")
+        assert j.kind == "flip_revolute" and j.parent == "base"
+        swivel, lift = j.dofs
+        assert swivel.axis == pytest.approx((0, 0, 1))
+        assert (swivel.lower, swivel.upper) == pytest.approx((-math.pi / 2, math.pi / 2))
+        assert lift.axis == pytest.approx((0, -1, 0)) and (lift.lower, lift.upper) == (0.0, p["lever_tilt"])
+        # the load is in front of the lift axis: gravity presses the lever onto its lower stop
+        m, com = carried_mass(bp, "lever")
+        torque = float(np.cross(com - np.asarray(lift.origin), m * np.array([0, 0, -9.81])) @ np.asarray(lift.axis))
+        assert torque < 0
+    else:
+        for name in ("handle_0", "handle_1"):
+            j = joint_of(bp, name)
+            d = j.dofs[0]
+            assert j.kind == "revolute" and d.axis == pytest.approx((0, 0, 1))
+            assert (d.lower, d.upper) == pytest.approx((-math.pi / 4, math.pi / 4))
+        y0, y1 = (joint_of(bp, n).dofs[0].origin[1] for n in ("handle_0", "handle_1"))
+        assert y0 == pytest.approx(-y1) and y0 > 0
+
+
+def test_no_contact_and_nothing_below_ground_in_any_state(tap_bp):
+    """Like the validator: non-jointed parts never touch; a child never sinks further into its parent."""
+    _, bp = tap_bp
+    jointed = {frozenset((j.parent, j.child)) for j in movable(bp)}
+    names = list(bp.parts)
+    pairs = [(a, b) for i, a in enumerate(names) for b in names[i + 1:] if frozenset((a, b)) not in jointed]
+    rest = posed_hulls(bp, poses(bp))
+    base_pc = {j.child: volume(rest[j.parent], rest[j.child]) for j in movable(bp)}
+    for q in states(bp):
+        hulls = posed_hulls(bp, poses(bp, q))
+        low = min(w[:, 2].min() for hs in hulls.values() for w, _, _ in hs)
+        assert low > -1e-6, f"below the ground at {q}"
+        for a, b in pairs:
+            assert volume(hulls[a], hulls[b]) < TOL, f"{a} touches {b} at {q}"
+        for j in movable(bp):
+            assert volume(hulls[j.parent], hulls[j.child]) <= base_pc[j.child] + TOL, f"{j.child} at {q}"
+
+
+# -- overrides, growth, determinism ----------------------------------------------------------
+
+
+@pytest.mark.parametrize("handles", ["single_lever", "two_handles"])
+@pytest.mark.parametrize("pipe", [True, False])
+def test_overrides_drive_the_growth(handles, pipe):
+    p, bp = make(2, handles=handles, has_separate_pipe=pipe, spout_shape="gooseneck", height=0.15)
+    assert ("lever" in bp.parts) == (handles == "single_lever")
+    assert ("handle_1" in bp.parts) == (handles == "two_handles")
+    assert p["has_separate_pipe"] == pipe
+    test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
+
+
+@pytest.mark.parametrize("bad", [{"height": 0.5}, {"base_width": 0.01}, {"handles": "three"},
+                                 {"spout_shape": "waterfall"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("handles", "has_separate_pipe", "spout_shape", "finish", "spout_joint"):
+        assert len({p[name] for p in params}) > 1, name

@@ -1,0 +1,272 @@
+"""The tv category, checked on its blueprint (world space, grounded): parts, joints, clearances."""
+
+from __future__ import annotations
+
+import math
+
+import manifold3d
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import tv
+from infmob_usd.errors import ParameterError
+from infmob_usd.mass import inertial
+from infmob_usd.materials import FAMILIES
+from infmob_usd.materials.families import split_spec
+from infmob_usd.seeding import streams
+
+SEEDS = range(8)
+LABELS = {"screen", "stand", "connector", "button", "frame", "arm"}
+TOL = 1e-7  # m^3, as the validator's contact volume
+
+
+def make(seed: int, **overrides):
+    rng = streams("tv", seed)
+    p = tv.SCHEMA.sample(rng["params"], overrides)
+    bp = tv.build(p, rng["structure"], rng["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+@pytest.fixture(scope="module", params=SEEDS)
+def tv_bp(request):
+    return make(request.param)
+
+
+# -- kinematics and collision helpers ----------------------------------------------------
+
+
+def dof_motion(dof, value: float) -> np.ndarray:
+    m = np.eye(4)
+    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
+    if dof.type == "prismatic":
+        m[:3, 3] = a * value
+    else:
+        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        r = np.eye(3) + math.sin(value) * k + (1 - math.cos(value)) * k @ k
+        m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def poses(bp, q=None):
+    """World transform of each part; ``q`` maps (child, dof index) -> value."""
+    q = q or {}
+    out = {bp.root: np.eye(4)}
+    pending = list(bp.joints)
+    while pending:
+        for j in list(pending):
+            if j.parent in out:
+                m = out[j.parent]
+                for i, d in enumerate(j.dofs):
+                    m = m @ dof_motion(d, q.get((j.child, i), 0.0))
+                out[j.child] = m
+                pending.remove(j)
+    return out
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def joint_of(bp, child):
+    return next(j for j in bp.joints if j.child == child)
+
+
+def states(bp):
+    """rest, all joints at 50 % and 100 %, and each joint alone at its limits (per DoF)."""
+    js = movable(bp)
+    out = [{}]
+    for f in (0.5, 1.0):
+        out.append({(j.child, i): d.lower + f * (d.upper - d.lower) for j in js for i, d in enumerate(j.dofs)})
+    for j in js:
+        for i, d in enumerate(j.dofs):
+            out += [{(j.child, i): d.lower}, {(j.child, i): d.upper}]
+    return out
+
+
+def posed_hulls(bp, pose):
+    out = {}
+    for name, part in bp.parts.items():
+        hs = []
+        for pc in part.pieces:
+            for c in pc.convex:
+                w = c @ pose[name][:3, :3].T + pose[name][:3, 3]
+                hs.append((w, w.min(0), w.max(0)))
+        out[name] = hs
+    return out
+
+
+def volume(ha, hb):
+    total = 0.0
+    for wa, lo_a, hi_a in ha:
+        for wb, lo_b, hi_b in hb:
+            if np.any(hi_a <= lo_b) or np.any(hi_b <= lo_a):
+                continue
+            total += (manifold3d.Manifold.hull_points(wa) ^ manifold3d.Manifold.hull_points(wb)).volume()
+    return total
+
+
+def welded_groups(bp):
+    group = {n: n for n in bp.parts}
+
+    def find(n):
+        while group[n] != n:
+            n = group[n]
+        return n
+
+    for j in bp.joints:
+        if not j.movable:
+            group[find(j.child)] = find(j.parent)
+    return find
+
+
+def carried_mass(bp, name):
+    names, grew = {name}, True
+    while grew:
+        grew = False
+        for j in bp.joints:
+            if j.parent in names and j.child not in names:
+                names.add(j.child)
+                grew = True
+    mass, moment = 0.0, np.zeros(3)
+    for n in names:
+        dens = ((pc, FAMILIES[split_spec(bp.materials[pc.material])[0]].density) for pc in bp.parts[n].pieces)
+        m, com, _ = inertial(dens)
+        mass, moment = mass + m, moment + m * com
+    return mass, moment / mass
+
+
+# -- structure -----------------------------------------------------------------------------
+
+
+def test_parts_labels_and_materials(tv_bp):
+    p, bp = tv_bp
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    assert bp.parts["screen"].label == "screen" and bp.parts["connector"].label == "connector"
+    assert joint_of(bp, "screen").kind == "fixed" and joint_of(bp, "screen").parent == "connector"
+    if p["has_wall_mount"]:
+        assert bp.root == "wall_plate"
+        assert sorted(n for n in bp.parts if n.startswith("arm_")) == [f"arm_{k}" for k in range(p["arm_links"])]
+    else:
+        assert bp.root == "stand" and bp.parts["stand"].label == "stand"
+    buttons = [n for n, part in bp.parts.items() if part.label == "button"]
+    assert len(buttons) == (p["button_count"] if p["has_buttons"] else 0)
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    assert bp.materials["display"] == "plastic:black"
+    assert any(pc.material == "display" for pc in bp.parts["screen"].pieces)
+    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
+
+
+def test_screen_size_follows_width_and_aspect(tv_bp):
+    p, bp = tv_bp
+    bezel = bp.parts["screen"].pieces[0].bounds
+    w, h = bezel[1, 1] - bezel[0, 1], bezel[1, 2] - bezel[0, 2]
+    assert w == pytest.approx(p["width"])
+    assert h / w == pytest.approx(9 / 16 if p["aspect"] == "16:9" else 3 / 4)
+    assert bezel[1, 0] - bezel[0, 0] <= p["depth"]
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+
+
+# -- joints --------------------------------------------------------------------------------
+
+
+def test_tilt_connector_rests_on_its_lower_stop(tv_bp):
+    p, bp = tv_bp
+    j = joint_of(bp, "connector")
+    assert j.kind == "revolute"
+    d = j.dofs[0]
+    assert d.axis == pytest.approx((0, -1, 0))
+    assert d.lower == 0.0 and 0.019 < d.upper <= p["tilt"] + 1e-12 <= math.pi / 8 + 1e-12
+    screen_back = min(pc.bounds[0, 0] for pc in bp.parts["screen"].pieces)
+    assert d.origin[0] < screen_back  # pivot behind the screen
+    # gravity torque of everything the connector carries pushes toward negative q
+    m, com = carried_mass(bp, "connector")
+    torque = float(np.cross(com - np.asarray(d.origin), m * np.array([0, 0, -9.81])) @ np.asarray(d.axis))
+    assert torque < -0.01 * m
+
+
+def test_stand_joints(tv_bp):
+    p, bp = tv_bp
+    parent = joint_of(bp, "connector").parent
+    if p["has_wall_mount"]:
+        for k in range(p["arm_links"]):
+            j = joint_of(bp, f"arm_{k}")
+            assert j.kind == "revolute" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+            assert j.dofs[0].lower == -j.dofs[0].upper < 0
+        assert parent == f"arm_{p['arm_links'] - 1}"
+    elif p["stand_style"] == "single_post" and p["has_height_adjust"]:
+        j = joint_of(bp, "post")
+        assert parent == "post" and j.kind == "revolute_prismatic" and j.parent == "stand"
+        slide, turn = j.dofs
+        assert slide.axis == pytest.approx((0, 0, 1)) and (slide.lower, slide.upper) == (0.0, p["slide"])
+        assert turn.axis == pytest.approx((0, 0, 1)) and (turn.lower, turn.upper) == (-p["swivel"], p["swivel"])
+    else:
+        assert parent == "stand" and "post" not in bp.parts
+    for n, part in bp.parts.items():
+        if part.label == "button":
+            j = joint_of(bp, n)
+            d = j.dofs[0]
+            assert j.kind == "prismatic" and j.parent == "screen" and d.lower == 0.0 and d.upper > 0
+            assert abs(d.axis[2]) < 1e-12  # pressed horizontally
+            want = (0, -1, 0) if p["button_place"] == "side" else (-1, 0, 0)
+            assert d.axis == pytest.approx(want)
+
+
+def test_no_contact_and_nothing_below_ground_in_any_state(tv_bp):
+    """Like the validator: non-jointed parts never touch; a child never sinks further into its parent."""
+    _, bp = tv_bp
+    find = welded_groups(bp)
+    jointed = {frozenset((j.parent, j.child)) for j in movable(bp)}
+    names = list(bp.parts)
+    pairs = [(a, b) for i, a in enumerate(names) for b in names[i + 1:]
+             if frozenset((a, b)) not in jointed and find(a) != find(b)]
+    rest = posed_hulls(bp, poses(bp))
+    base_pc = {j.child: volume(rest[j.parent], rest[j.child]) for j in movable(bp)}
+    for q in states(bp):
+        hulls = posed_hulls(bp, poses(bp, q))
+        low = min(w[:, 2].min() for hs in hulls.values() for w, _, _ in hs)
+        assert low > -1e-6, f"below the ground at {q}"
+        for a, b in pairs:
+            assert volume(hulls[a], hulls[b]) < TOL, f"{a} touches {b} at {q}"
+        for j in movable(bp):
+            assert volume(hulls[j.parent], hulls[j.child]) <= base_pc[j.child] + TOL, f"{j.child} at {q}"
+
+
+# -- overrides, growth, determinism ----------------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    p, bp = make(1, has_wall_mount=True, arm_links=2, has_buttons=True, button_count=3, button_place="side")
+    assert bp.root == "wall_plate" and {"arm_0", "arm_1"} <= set(bp.parts)
+    assert sum(part.label == "button" for part in bp.parts.values()) == 3
+    _, bp = make(1, has_wall_mount=False, stand_style="single_post", has_height_adjust=True)
+    assert joint_of(bp, "post").kind == "revolute_prismatic"
+    _, bp = make(1, has_wall_mount=False, stand_style="two_legs", has_buttons=False)
+    assert bp.root == "stand" and "post" not in bp.parts
+    assert not any(part.label == "button" for part in bp.parts.values())
+    p, _ = make(1, width=2.0, aspect="4:3")
+    assert p["width"] == 2.0 and p["aspect"] == "4:3"
+
+
+@pytest.mark.parametrize("bad", [{"width": 2.5}, {"depth": 0.01}, {"button_count": 5}, {"aspect": "21:9"},
+                                 {"tilt": 1.0}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("stand_style", "has_buttons", "aspect", "bezel_finish"):
+        assert len({p[name] for p in params}) > 1, name
