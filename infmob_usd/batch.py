@@ -17,6 +17,7 @@ import time
 import traceback
 from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from contextlib import nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -133,10 +134,13 @@ class Progress:
 
 def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite: bool = False,
               backend: str = "process", address: str | None = None,
-              on_row: Callable[[dict], None] | None = None) -> list[dict]:
+              on_row: Callable[[dict], None] | None = None,
+              pool: ProcessPoolExecutor | None = None) -> list[dict]:
     """Generate every job into ``out``; return the rows of this run (errors included).
 
     Complete objects are skipped (their manifest row kept) unless ``overwrite``.
+    ``pool``: an already running executor to use (with ``workers`` its size), e.g.
+    one warmed up by a benchmark; by default a pool is started and shut down here.
     """
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -165,7 +169,7 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
             for job in todo:
                 record(make_one(job, str(out)))
         else:
-            with ProcessPoolExecutor(max_workers=workers) as pool:
+            with (nullcontext(pool) if pool else ProcessPoolExecutor(max_workers=workers)) as pool:
                 pending = set()
                 it = iter(todo)
                 for job in it:  # keep at most 2 jobs per worker in flight: memory stays flat
