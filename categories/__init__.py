@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from . import kitchen_cabinet, lamp, microwave, tap, tv
+from . import kitchen_cabinet, lamp, microwave, tap, tv, window
 
 CATEGORIES: dict[str, ModuleType] = {
     "kitchen_cabinet": kitchen_cabinet,
@@ -19,4 +19,5 @@ CATEGORIES: dict[str, ModuleType] = {
     "lamp": lamp,
     "tv": tv,
     "tap": tap,
+    "window": window,
 }

@@ -1,0 +1,272 @@
+"""The window category: parts, joints, clearances at every joint state, overrides, seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import window as win
+from infmob_usd.errors import ParameterError
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(8)
+LABELS = {"frame", "sash", "shutter", "curtain"}
+VOLUME_TOL = 1e-7  # m^3, as the validator
+EYE = np.eye(4)
+
+
+def make(seed, **overrides):
+    r = streams("window", seed)
+    p = win.SCHEMA.sample(r["params"], overrides)
+    bp = win.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def pose(dof, q):
+    """World transform of a child whose one DoF moved by ``q`` from rest."""
+    m = np.eye(4)
+    a = np.asarray(dof.axis)
+    if dof.type == "prismatic":
+        m[:3, 3] = a * q
+        return m
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    r = np.eye(3) + math.sin(q) * k + (1 - math.cos(q)) * k @ k
+    o = np.asarray(dof.origin)
+    m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def states(bp):
+    """The validator's sampled states: rest, all at 50 % and 100 %, each joint alone at its upper limit."""
+    js = movable(bp)
+    out = [{j.child: f * j.dofs[0].upper for j in js} for f in (0.5, 1.0)]
+    out += [{j.child: j.dofs[0].upper} for j in js]
+    return out
+
+
+def poses(bp, q):
+    """World transforms of every moving part (joints not in ``q`` at rest); chains compose."""
+    out = {}
+    for j in movable(bp):  # parents are declared before their children
+        own = pose(j.dofs[0], q.get(j.child, 0.0))
+        out[j.child] = out[j.parent] @ own if j.parent in out else own
+    return out
+
+
+def bounds(part, skip_handle=False):
+    b = np.array([pc.bounds for pc in part.pieces if not (skip_handle and pc.name in ("handle", "hinge"))])
+    return b[:, 0].min(0), b[:, 1].max(0)
+
+
+# -- parts, labels, materials --------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "frame" and bp.parts["frame"].label == "frame"
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    sashes = [part for part in bp.parts.values() if part.label == "sash"]
+    assert 1 <= len(sashes) <= 4
+    for sash in sashes:
+        assert any(pc.material == "glass" for pc in sash.pieces)
+        assert any(pc.name == "handle" for pc in sash.pieces)
+    assert bp.materials["glass"].startswith("glass")
+    assert bp.materials["curtain"] == "fabric"
+    assert bp.materials["frame"].split(":")[0] == p["frame_finish"]
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    shutters = sum(part.label == "shutter" for part in bp.parts.values())
+    assert shutters == ((4 if p["width"] / 2 > p["shutter_leaf_width"] else 2) if p["has_shutters"] else 0)
+    assert (sum(part.label == "curtain" for part in bp.parts.values()) == 2) == p["has_curtains"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_size_and_ground(seed):
+    p, bp = make(seed)
+    lo, hi = bounds(bp.parts["frame"])
+    frame = [pc for pc in bp.parts["frame"].pieces if pc.material == "frame"]
+    flo = np.array([pc.bounds[0] for pc in frame]).min(0)
+    fhi = np.array([pc.bounds[1] for pc in frame]).max(0)
+    if not p["has_sill"]:
+        assert fhi[1] - flo[1] == pytest.approx(p["width"])
+        assert fhi[2] - flo[2] == pytest.approx(p["height"])
+    assert 0.6 <= p["width"] <= 2.5 and 0.6 <= p["height"] <= 2.5
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    # nothing goes below the ground at any sampled state
+    for q in states(bp):
+        for name, m in poses(bp, q).items():
+            pts = np.vstack([pc.vertices for pc in bp.parts[name].pieces])
+            assert (pts @ m[:3, :3].T + m[:3, 3])[:, 2].min() >= -1e-9
+
+
+# -- joints -------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_casement_hinges(seed):
+    _, bp = make(seed, style="casement", has_curtains=False)
+    for j in movable(bp):
+        if bp.parts[j.child].label != "sash":
+            continue
+        d = j.dofs[0]
+        assert j.kind == "revolute" and j.parent == "frame" and j.role == "hinge"
+        assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
+        lo, hi = bounds(bp.parts[j.child], skip_handle=True)
+        assert d.origin[0] == pytest.approx(hi[0])  # on the room-side face
+        if d.axis == pytest.approx((0, 0, -1)):  # hinged on its left edge, opens toward +X
+            assert d.origin[1] == pytest.approx(lo[1])
+        else:
+            assert d.axis == pytest.approx((0, 0, 1))
+            assert d.origin[1] == pytest.approx(hi[1])
+        # opening moves the free edge into the room
+        m = pose(d, 0.5)
+        centre = (lo + hi) / 2
+        assert (m[:3, :3] @ centre + m[:3, 3])[0] > centre[0] + 0.05
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_sliding_sashes_stay_in_the_frame(seed):
+    p, bp = make(seed, style="sliding")
+    hole_lo = -p["width"] / 2
+    for j in movable(bp):
+        if bp.parts[j.child].label != "sash":
+            continue
+        d = j.dofs[0]
+        assert j.kind == "prismatic" and abs(d.axis[1]) == pytest.approx(1.0) and d.lower == 0.0
+        lo, hi = bounds(bp.parts[j.child])
+        shift = d.axis[1] * d.upper
+        assert lo[1] + shift > hole_lo and hi[1] + shift < -hole_lo
+    tracks = {round(bounds(bp.parts[j.child])[0][0], 4) for j in movable(bp) if j.child.startswith("sash")}
+    assert len(tracks) == (1 if len([j for j in movable(bp) if j.child.startswith("sash")]) == 1 else 2)
+
+
+def test_shutters_and_curtains():
+    _, bp = make(4, has_shutters=True, has_curtains=True, width=2.0, shutter_leaf_width=0.6)
+    for k in (0, 1):
+        d = by_child(bp, f"shutter_{k}").dofs[0]
+        assert abs(d.axis[2]) == pytest.approx(1.0) and 0 < d.upper < math.pi / 2
+        lo, hi = bounds(bp.parts[f"shutter_{k}"])
+        frame_lo = min(pc.bounds[0, 0] for pc in bp.parts["frame"].pieces if pc.material == "frame"
+                       and pc.bounds[1, 2] > 0.2)
+        assert hi[0] < frame_lo  # outside the frame
+        # the free edge swings away from the window (toward -X)
+        m = pose(d, d.upper)
+        free = np.array([lo[0], 0.0, (lo[2] + hi[2]) / 2])
+        assert (m[:3, :3] @ free + m[:3, 3])[0] < lo[0] - 0.1
+        # a wide window's shutters are bifolds: the inner leaf hangs on the outer one
+        inner = by_child(bp, f"shutter_{k + 2}")
+        assert inner.parent == f"shutter_{k}" and inner.dofs[0].axis == d.axis
+        assert inner.dofs[0].upper == pytest.approx(0.8 * math.pi)
+        c = by_child(bp, f"curtain_{k}")
+        dc = c.dofs[0]
+        assert c.kind == "prismatic" and dc.axis[2] == 0.0 and abs(dc.axis[1]) == pytest.approx(1.0)
+        clo, chi = bounds(bp.parts[f"curtain_{k}"])
+        assert np.sign(dc.axis[1]) == np.sign(clo[1] + chi[1])  # slides outward from the centre
+
+
+# -- clearances ------------------------------------------------------------------------------------
+
+
+def _pairs_clear(bp, q):
+    ps = poses(bp, q)
+    parents = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if a not in ps and b not in ps:
+                continue
+            v = overlap(bp.parts[a], ps.get(a, EYE), bp.parts[b], ps.get(b, EYE))
+            if parents.get(a) == b or parents.get(b) == a:
+                rest = overlap(bp.parts[a], EYE, bp.parts[b], EYE)
+                assert v <= rest + VOLUME_TOL, f"{a} enters its parent {b} at {q}"
+            else:
+                assert v < VOLUME_TOL, f"{a} and {b} collide at {q}"
+
+
+@pytest.mark.parametrize("over", [
+    dict(style="casement", sash_count=4, meeting="french", has_shutters=True, has_curtains=True, width=2.0,
+         shutter_leaf_width=0.8),
+    dict(style="casement", sash_count=3, width=1.2, meeting="mullion", has_transom=True, height=2.0),
+    dict(style="sliding", sash_count=4, has_shutters=True, has_curtains=True, glazing="bars", width=2.4,
+         shutter_leaf_width=0.6, shutter_style="boarded"),
+    dict(style="sliding", sash_count=3, width=2.0, shutter_style="louvred", has_shutters=True),
+    dict(style="sliding", sash_count=1, width=0.7, has_curtains=True),
+])
+def test_no_collision_at_any_sampled_state(over):
+    _, bp = make(11, **over)
+    for q in states(bp):
+        _pairs_clear(bp, q)
+
+
+@pytest.mark.parametrize("seed", (1, 4))
+def test_moving_parts_keep_a_gap_at_rest(seed):
+    """Shifted 1 mm in any axis direction, no moving part touches anything."""
+    _, bp = make(seed, has_shutters=True, has_curtains=True)
+    for j in movable(bp):
+        for axis in range(3):
+            for s in (-1, 1):
+                m = np.eye(4)
+                m[axis, 3] = s * 0.001
+                for other in bp.parts:
+                    if other != j.child:
+                        assert overlap(bp.parts[j.child], m, bp.parts[other], EYE) < 1e-9, (j.child, other)
+
+
+# -- overrides, growth, determinism ------------------------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(3, sash_count=3, style="casement", has_shutters=False, has_curtains=False)
+    assert sorted(n for n, part in bp.parts.items() if part.label == "sash") == ["sash_0", "sash_1", "sash_2"]
+    assert {j.kind for j in movable(bp)} == {"revolute"}
+    _, bp = make(3, sash_count=2, style="sliding", has_shutters=True, width=1.0)
+    assert {j.kind for j in movable(bp) if j.child.startswith("sash")} == {"prismatic"}
+    assert {n for n, part in bp.parts.items() if part.label == "shutter"} == {"shutter_0", "shutter_1"}
+    _, bp = make(3, width=2.4, has_shutters=True, shutter_leaf_width=0.7)
+    assert sum(part.label == "shutter" for part in bp.parts.values()) == 4
+    p, _ = make(3, width=1.5, frame_finish="wood")
+    assert p["width"] == 1.5 and p["frame_finish"] == "wood"
+    # the casement angle is limited only by curtains
+    _, bp = make(3, style="casement", has_curtains=True)
+    assert all(0.3 < by_child(bp, n).dofs[0].upper <= math.pi / 2 for n in bp.parts if n.startswith("sash"))
+
+
+@pytest.mark.parametrize("bad", [{"width": 3.0}, {"height": 0.5}, {"sash_count": 5}, {"style": "sash"},
+                                 {"has_shutters": "maybe"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2
+    assert list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ_in_ways_a_person_sees():
+    made = [make(s) for s in range(16)]
+    for name in ("style", "frame_finish", "glazing", "has_curtains", "has_sill"):
+        assert len({p[name] for p, _ in made}) > 1, name
+    assert len({sum(part.label == "sash" for part in bp.parts.values()) for _, bp in made}) >= 3
+    counts = [len(movable(bp)) for _, bp in made]
+    assert min(counts) < max(counts)
