@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from . import kitchen_cabinet, lamp, microwave, tap, tv, window
+from . import door, kitchen_cabinet, lamp, microwave, tap, toilet, tv, window
 
 CATEGORIES: dict[str, ModuleType] = {
     "kitchen_cabinet": kitchen_cabinet,
@@ -19,5 +19,7 @@ CATEGORIES: dict[str, ModuleType] = {
     "lamp": lamp,
     "tv": tv,
     "tap": tap,
+    "toilet": toilet,
+    "door": door,
     "window": window,
 }

@@ -1,0 +1,246 @@
+"""The door category: frame on the floor, leaf hinge side and swing, handles on both faces, clearances."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import door as mod
+from infmob_usd.errors import ParameterError
+from infmob_usd.mass import inertial
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(8)
+VOLUME_TOL = 1e-7  # m^3, as the physics checks
+
+
+def make(seed, **overrides):
+    r = streams("door", seed)
+    p = mod.SCHEMA.sample(r["params"], overrides)
+    bp = mod.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def dof_matrix(dof, q):
+    m = np.eye(4)
+    if dof.type == "prismatic":
+        m[:3, 3] = np.asarray(dof.axis) * q
+        return m
+    a = np.asarray(dof.axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    r = np.eye(3) + math.sin(q) * k + (1 - math.cos(q)) * k @ k
+    o = np.asarray(dof.origin)
+    m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def poses(bp, q):
+    out = {bp.root: np.eye(4)}
+    todo = list(bp.joints)
+    while todo:
+        for j in list(todo):
+            if j.parent in out:
+                out[j.child] = out[j.parent] @ dof_matrix(j.dofs[0], q.get(j.child, 0.0)) if j.dofs \
+                    else out[j.parent]
+                todo.remove(j)
+    return out
+
+
+def leaf_body(bp):
+    """Bounds of the leaf without handles and hinge knuckles."""
+    pcs = [pc for pc in bp.parts["leaf"].pieces if pc.name != "handle" and pc.material not in ("handle", "hinge")]
+    b = np.array([pc.bounds for pc in pcs])
+    return b[:, 0].min(0), b[:, 1].max(0)
+
+
+# -- parts, sizes ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_size(seed):
+    p, bp = make(seed)
+    assert bp.root == "frame" and bp.parts["frame"].label == "frame"
+    assert bp.parts["leaf"].label == "leaf"
+    lo, hi = leaf_body(bp)
+    size = hi - lo
+    assert size[0] == pytest.approx(p["leaf_thickness"]) and 0.04 <= size[0] <= 0.06
+    assert size[1] == pytest.approx(p["leaf_width"]) and 0.8 <= size[1] <= 1.0
+    assert size[2] == pytest.approx(p["leaf_height"]) and 2.0 <= size[2] <= 2.1
+    frame = np.array([pc.bounds for pc in bp.parts["frame"].pieces])
+    assert frame[:, 0, 2].min() == pytest.approx(0.0, abs=1e-9)  # on the floor
+    assert lo[2] > 0.005  # the leaf clears the floor / threshold
+    f_lo, f_hi = frame[:, 0].min(0), frame[:, 1].max(0)
+    assert abs(f_lo[0] + f_hi[0]) < 0.01 and abs(f_lo[1] + f_hi[1]) < 0.01  # at x = 0, centred
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    links, _ = build_model(bp, {k: 700.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_leaf_hinge(seed):
+    p, bp = make(seed)
+    j = by_child(bp, "leaf")
+    d = j.dofs[0]
+    assert j.kind == "revolute" and j.parent == "frame"
+    assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
+    lo, hi = leaf_body(bp)
+    left = p["hinge_side"] == "left"
+    assert d.axis == pytest.approx((0, 0, -1) if left else (0, 0, 1))
+    assert d.origin[0] == pytest.approx(hi[0])  # front face
+    assert d.origin[1] == pytest.approx(lo[1] if left else hi[1])  # hinge edge
+    # opening moves the free edge toward +X
+    free = np.array([hi[0], hi[1] if left else lo[1], 1.0, 1.0])
+    assert (dof_matrix(d, 0.5) @ free)[0] > free[0] + 0.3
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_handles_on_both_faces(seed):
+    p, bp = make(seed)
+    lo, hi = leaf_body(bp)
+    kind = p["handle"]
+    if kind == "pull":
+        xs = [pc.bounds[:, 0].mean() for pc in bp.parts["leaf"].pieces if pc.name == "handle"]
+        assert max(xs) > hi[0] and min(xs) < lo[0]
+        assert len(movable(bp)) == 1
+        return
+    names = [f"{kind}_front", f"{kind}_back"]
+    for name in names:
+        j = by_child(bp, name)
+        d = j.dofs[0]
+        assert j.parent == "leaf" and bp.parts[name].label == kind
+        assert abs(d.axis[0]) == pytest.approx(1.0)
+        if kind == "knob":
+            assert j.kind == "continuous"
+        else:
+            assert j.kind == "revolute" and (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 4))
+        # centre of mass on the axis: gravity does not turn it
+        m, com, _ = inertial([(pc, 7850.0) for pc in bp.parts[name].pieces])
+        off = com - np.asarray(d.origin)
+        off -= np.dot(off, d.axis) * np.asarray(d.axis)
+        assert np.linalg.norm(off) < 1e-5
+    front, back = (by_child(bp, n).dofs[0].origin for n in names)
+    assert front[0] > hi[0] and back[0] < lo[0]
+    assert len(movable(bp)) == 3
+
+
+def test_lever_grip_turns_down():
+    for side in ("left", "right"):
+        _, bp = make(1, handle="lever", hinge_side=side)
+        for name in ("lever_front", "lever_back"):
+            d = by_child(bp, name).dofs[0]
+            part = bp.parts[name]
+            grip = max((pc for pc in part.pieces), key=lambda pc: np.ptp(pc.bounds[:, 1]))
+            tip_y = grip.bounds[1, 1] if abs(grip.bounds[1, 1] - d.origin[1]) > abs(grip.bounds[0, 1] - d.origin[1]) \
+                else grip.bounds[0, 1]
+            tip = np.array([d.origin[0], tip_y, d.origin[2], 1.0])
+            assert (dof_matrix(d, 0.4) @ tip)[2] < d.origin[2] - 0.02
+            # the grip points toward the hinge side
+            hinge_y = by_child(bp, "leaf").dofs[0].origin[1]
+            assert abs(tip_y - hinge_y) < abs(d.origin[1] - hinge_y)
+
+
+# -- clearances ----------------------------------------------------------------------
+
+
+def states(bp):
+    mov = movable(bp)
+    yield "rest", {}
+    for f in (0.5, 1.0):
+        yield f"all@{f:.0%}", {j.child: (j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower))
+                               if j.kind != "continuous" else f * math.pi for j in mov}
+    for j in mov:
+        qs = (-math.pi / 2, math.pi / 2, math.pi) if j.kind == "continuous" else (j.dofs[0].lower, j.dofs[0].upper)
+        for q in qs:
+            yield f"{j.child}@{q:.2f}", {j.child: q}
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3, 4, 5])
+def test_no_overlap_at_sampled_states(seed):
+    _, bp = make(seed)
+    parent = {j.child: j.parent for j in bp.joints}
+    for label, q in states(bp):
+        pose = poses(bp, q)
+        for a, b in itertools.combinations(bp.parts, 2):
+            if parent.get(a) == b or parent.get(b) == a:
+                continue
+            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
+            assert v < VOLUME_TOL, f"{a} and {b} overlap by {v:.2e} m^3 at {label}"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_leaf_swing_never_enters_the_frame(seed):
+    _, bp = make(seed)
+    d = by_child(bp, "leaf").dofs[0]
+    for f in np.linspace(0, 1, 9):
+        m = dof_matrix(d, f * d.upper)
+        assert overlap(bp.parts["leaf"], m, bp.parts["frame"], np.eye(4)) < VOLUME_TOL, f"at {f:.0%}"
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_handles_clear_the_leaf(seed):
+    _, bp = make(seed, handle=["knob", "lever", "knob"][seed])
+    for j in movable(bp):
+        if j.parent != "leaf":
+            continue
+        d = j.dofs[0]
+        for q in (0.0, d.upper, -1.0 if j.kind == "continuous" else d.upper / 2):
+            v = overlap(bp.parts[j.child], dof_matrix(d, q), bp.parts["leaf"], np.eye(4))
+            assert v < VOLUME_TOL
+
+
+# -- growth, overrides, determinism ------------------------------------------------------
+
+
+def test_overrides_drive_the_styles():
+    _, bp = make(2, leaf_style="raised", panel_count=6, glazing="none", handle="knob")
+    leaf = bp.parts["leaf"].pieces
+    assert sum(1 for pc in leaf if pc.material == "leaf") == 1 + 2 * 6  # frame + board & field
+    assert not any(pc.material == "glass" for pc in leaf)
+    assert {"knob_front", "knob_back"} <= set(bp.parts)
+    _, bp = make(2, leaf_style="recessed", panel_count=4, glazing="full")
+    assert sum(1 for pc in bp.parts["leaf"].pieces if pc.material == "glass") == 4
+    _, bp = make(2, leaf_style="flat", glazing="none", handle="pull")
+    assert len(bp.parts) == 1 + 1 and not movable(bp)[1:]
+    _, bp = make(2, has_threshold=True)
+    assert min(pc.bounds[0, 2] for pc in bp.parts["leaf"].pieces) > 0.02
+    p, _ = make(2, leaf_width=0.9, hinge_side="right")
+    assert p["leaf_width"] == 0.9 and p["hinge_side"] == "right"
+
+
+@pytest.mark.parametrize("bad", [{"leaf_width": 1.2}, {"leaf_thickness": 0.03}, {"handle": "bar"},
+                                 {"panel_count": 7}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(4)
+    p2, b = make(4)
+    assert p1 == p2 and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [make(s)[0] for s in range(12)]
+    for name in ("handle", "leaf_style", "hinge_side", "glazing"):
+        assert len({p[name] for p in params}) > 1, name

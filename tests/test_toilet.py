@@ -1,0 +1,300 @@
+"""The toilet category: parts, one shared hinge line, clearances at every sampled joint state, overrides."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import toilet as mod
+from infmob_usd.errors import ParameterError
+from infmob_usd.mass import inertial
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(8)
+VOLUME_TOL = 1e-7  # m^3, as the physics checks
+
+
+def make(seed, **overrides):
+    r = streams("toilet", seed)
+    p = mod.SCHEMA.sample(r["params"], overrides)
+    bp = mod.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def dof_matrix(dof, q):
+    m = np.eye(4)
+    if dof.type == "prismatic":
+        m[:3, 3] = np.asarray(dof.axis) * q
+        return m
+    a = np.asarray(dof.axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    r = np.eye(3) + math.sin(q) * k + (1 - math.cos(q)) * k @ k
+    o = np.asarray(dof.origin)
+    m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def poses(bp, q):
+    """World pose of every part for joint values ``q`` (child name -> value; missing = 0)."""
+    out = {bp.root: np.eye(4)}
+    todo = list(bp.joints)
+    while todo:
+        for j in list(todo):
+            if j.parent in out:
+                m = np.eye(4)
+                for d in j.dofs:
+                    m = m @ dof_matrix(d, q.get(j.child, 0.0))
+                out[j.child] = out[j.parent] @ m
+                todo.remove(j)
+    return out
+
+
+def states(bp):
+    """The joint states the physics checks sample."""
+    mov = movable(bp)
+    yield "rest", {}
+    for f in (0.5, 1.0):
+        yield f"all@{f:.0%}", {j.child: j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower) for j in mov}
+    for j in mov:
+        for end in ("lower", "upper"):
+            yield f"{j.child}@{end}", {j.child: getattr(j.dofs[0], end)}
+
+
+def parent_of(bp, name):
+    return next((j.parent for j in bp.joints if j.child == name), None)
+
+
+def welded(bp, a, b):
+    """Parts joined only through fixed joints never move relative to each other."""
+    def top(n):
+        while True:
+            j = next((j for j in bp.joints if j.child == n), None)
+            if j is None or j.movable:
+                return n
+            n = j.parent
+    return top(a) == top(b)
+
+
+# -- parts and labels ----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "base"
+    want = {"base": "body", "seat": "seat", "cover": "lid", "tank": "tank", "tank_lid": "lid"}
+    for name, label in want.items():
+        assert bp.parts[name].label == label
+    flush = {"button": ("flush_button", "button"), "lever": ("flush_lever", "lever")}[p["flush"]]
+    assert bp.parts[flush[0]].label == flush[1]
+    assert by_child(bp, "tank").kind == "fixed"
+    assert bp.materials["ceramic"].startswith("ceramic")
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        for pc in part.pieces:
+            assert pc.convex, f"{part.name}: a piece without collision"
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_front_faces_plus_x_and_size(seed):
+    p, bp = make(seed)
+    bowl_x = np.mean([pc.bounds[:, 0].mean() for pc in bp.parts["seat"].pieces])
+    tank_x = np.mean([pc.bounds[:, 0].mean() for pc in bp.parts["tank"].pieces])
+    assert bowl_x > tank_x
+    lo, hi = bp.bounds()
+    assert abs(lo[0] + hi[0]) < 0.02 and abs(lo[1] + hi[1]) < 0.02  # centred
+    seat_top = max(pc.bounds[1, 2] for pc in bp.parts["seat"].pieces)
+    assert seat_top == pytest.approx(p["seat_height"], abs=1e-6)
+    assert 0.4 <= seat_top <= 0.5
+
+
+def test_the_bowl_is_hollow():
+    _, bp = make(0)
+    seat = np.array([pc.bounds for pc in bp.parts["seat"].pieces])
+    cx = (seat[:, 0, 0].min() + seat[:, 1, 0].max()) / 2 + 0.02
+    rim = seat[:, 0, 2].min() - 0.05
+    probe = np.array([cx, 0.0, rim])  # a point inside the bowl, below the rim
+    from scipy.spatial import Delaunay
+    for pc in bp.parts["base"].pieces:
+        for c in pc.convex:
+            assert Delaunay(c).find_simplex(probe) < 0, "the bowl cavity is filled by a collision hull"
+
+
+# -- joints ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_seat_and_cover_share_one_hinge(seed):
+    _, bp = make(seed)
+    s, c = by_child(bp, "seat"), by_child(bp, "cover")
+    assert s.kind == c.kind == "revolute"
+    assert s.parent == "base" and c.parent == "seat"
+    sd, cd = s.dofs[0], c.dofs[0]
+    assert sd.axis == pytest.approx((0, -1, 0)) and cd.axis == pytest.approx((0, -1, 0))
+    assert sd.origin == pytest.approx(cd.origin)
+    lo, hi = np.array([pc.bounds for pc in bp.parts["seat"].pieces]).transpose(1, 0, 2)
+    assert sd.origin[0] == pytest.approx(lo[:, 0].min()) and sd.origin[2] == pytest.approx(hi[:, 2].max())
+    assert sd.lower == cd.lower == 0.0
+    total = sd.upper + cd.upper
+    assert math.pi / 2 < total < 2.0  # leaning back on the cistern
+    assert sd.upper > 0.5 and cd.upper > 0.75
+    # a positive angle lifts the front of the seat
+    front = np.array([lo[:, 0].max() + 0.3, 0.0, sd.origin[2], 1.0])
+    front[0] = hi[:, 0].max()
+    assert (dof_matrix(sd, 0.3) @ front)[2] > front[2] + 0.05
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_lid_and_flush_joints(seed):
+    p, bp = make(seed)
+    lid = by_child(bp, "tank_lid")
+    assert lid.kind == "prismatic" and lid.parent == "tank"
+    assert lid.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert (lid.dofs[0].lower, lid.dofs[0].upper) == (0.0, pytest.approx(0.2))
+    if p["flush"] == "button":
+        j = by_child(bp, "flush_button")
+        assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((-1, 0, 0))
+        assert 0 < j.dofs[0].upper <= 0.01
+    else:
+        j = by_child(bp, "flush_lever")
+        d = j.dofs[0]
+        assert j.kind == "revolute" and d.axis == pytest.approx((0, 1, 0))  # a side lever
+        assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 4))
+    assert len(movable(bp)) == 4
+
+
+def test_lever_centre_of_mass_is_on_its_axis():
+    _, bp = make(0, flush="lever")
+    d = by_child(bp, "flush_lever").dofs[0]
+    m, com, _ = inertial([(pc, 7850.0) for pc in bp.parts["flush_lever"].pieces])
+    off = com - np.asarray(d.origin)
+    off -= np.dot(off, d.axis) * np.asarray(d.axis)
+    assert np.linalg.norm(off) < 1e-5
+    # its grip is at +X of the axis, behind the cistern front, and turns down for a positive angle
+    tip = np.array([*d.origin, 1.0]) + [0.05, 0, 0, 0]
+    grip = max(pc.bounds[1, 0] for pc in bp.parts["flush_lever"].pieces)
+    assert grip > d.origin[0] + 0.05 and grip < min(pc.bounds[1, 0] for pc in bp.parts["tank"].pieces[:2])
+    assert (dof_matrix(d, 0.3) @ tip)[2] < d.origin[2]
+
+
+# -- clearances ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_no_overlap_at_sampled_states(seed):
+    _, bp = make(seed)
+    names = list(bp.parts)
+    for label, q in states(bp):
+        pose = poses(bp, q)
+        for a, b in itertools.combinations(names, 2):
+            if welded(bp, a, b) or parent_of(bp, a) == b or parent_of(bp, b) == a:
+                continue
+            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
+            assert v < VOLUME_TOL, f"{a} and {b} overlap by {v:.2e} m^3 at {label}"
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_children_never_enter_their_parents(seed):
+    _, bp = make(seed)
+    for j in movable(bp):
+        d = j.dofs[0]
+        for f in (0.0, 0.25, 0.5, 0.75, 1.0):
+            q = {j.child: d.lower + f * (d.upper - d.lower)}
+            pose = poses(bp, q)
+            v = overlap(bp.parts[j.child], pose[j.child], bp.parts[j.parent], pose[j.parent])
+            assert v < VOLUME_TOL, f"{j.child} enters {j.parent} at {f:.0%}"
+
+
+class _Inflated:
+    """A part whose collision hulls are grown by ``d`` on every axis (a cube Minkowski sum)."""
+
+    def __init__(self, part, d):
+        offs = np.array([[x, y, z] for x in (-d, d) for y in (-d, d) for z in (-d, d)])
+        self.pieces = [_Hulls([(c[:, None, :] + offs[None]).reshape(-1, 3) for c in pc.convex])
+                       for pc in part.pieces]
+
+
+class _Hulls:
+    def __init__(self, pts):
+        self.pts = pts
+
+    def hulls(self):
+        return [(p, None) for p in self.pts]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_moving_parts_keep_a_gap_at_rest(seed):
+    """Every moving part stays >= 1 mm (per axis) from every other part at rest."""
+    _, bp = make(seed)
+    eye = np.eye(4)
+    for j in movable(bp):
+        grown = _Inflated(bp.parts[j.child], 0.001)
+        for other in bp.parts:
+            if other != j.child:
+                v = overlap(grown, eye, bp.parts[other], eye)
+                assert v < 1e-9, f"{j.child} is within 1 mm of {other}"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground(seed):
+    _, bp = make(seed)
+    for label, q in states(bp):
+        pose = poses(bp, q)
+        for name, part in bp.parts.items():
+            pts = np.vstack([pc.vertices for pc in part.pieces])
+            z = (pts @ pose[name][:3, :3].T + pose[name][:3, 3])[:, 2]
+            assert z.min() >= -1e-6, f"{name} below ground at {label}"
+
+
+# -- overrides, determinism -----------------------------------------------------------------
+
+
+def test_overrides():
+    _, bp = make(3, flush="button")
+    assert "flush_button" in bp.parts and "flush_lever" not in bp.parts
+    _, bp = make(3, flush="lever")
+    assert "flush_lever" in bp.parts and "flush_button" not in bp.parts
+    p, bp = make(3, seat_height=0.45, seat_finish="wood")
+    assert p["seat_height"] == 0.45 and bp.materials["seat"] == "wood"
+
+
+@pytest.mark.parametrize("bad", [{"seat_height": 0.6}, {"flush": "chain"}, {"bowl_width": 0.1},
+                                 {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [make(s)[0] for s in range(12)]
+    for name in ("flush", "seat_finish", "ceramic_colour"):
+        assert len({p[name] for p in params}) > 1, name
