@@ -71,10 +71,46 @@ class Blueprint:
             raise ModelError(f"a blueprint needs exactly one root part, found {roots}")
         return roots[0]
 
+    def poses(self, q: dict[tuple[str, int], float] | None = None) -> dict[str, np.ndarray]:
+        """World ``(4, 4)`` motion of every part from rest, DoFs at ``q``.
+
+        ``q`` maps ``(child part, DoF index)`` to a value (radians or metres); missing
+        DoFs stay at rest. A part's world pieces at that state are its rest pieces
+        transformed by its matrix.
+        """
+        q = q or {}
+        out = {self.root: np.eye(4)}
+        by_parent: dict[str, list[JointSpec]] = {}
+        for j in self.joints:
+            by_parent.setdefault(j.parent, []).append(j)
+        stack = [self.root]
+        while stack:
+            parent = stack.pop()
+            for j in by_parent.get(parent, []):
+                m = out[parent]
+                for i, d in enumerate(j.dofs):
+                    m = m @ dof_motion(d, q.get((j.child, i), 0.0))
+                out[j.child] = m
+                stack.append(j.child)
+        return out
+
     def bounds(self) -> np.ndarray:
         """``(2, 3)`` bounds of every piece at rest."""
         b = np.array([p.bounds for part in self.parts.values() for p in part.pieces])
         return np.array([b[:, 0].min(0), b[:, 1].max(0)])
+
+
+def dof_motion(dof, value: float) -> np.ndarray:
+    """``(4, 4)`` world-space motion of one :class:`~infmob_usd.joints.Dof` moved to ``value``."""
+    m = np.eye(4)
+    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
+    if dof.type == "prismatic":
+        m[:3, 3] = a * value
+    else:  # Rodrigues, about the axis through the pivot
+        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        r = np.eye(3) + np.sin(value) * k + (1 - np.cos(value)) * k @ k
+        m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
 
 
 @dataclass(frozen=True)

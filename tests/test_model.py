@@ -80,3 +80,19 @@ def test_bad_joint_specs_are_rejected():
         bp.join(J.fixed("base", "rev_part"))
     with pytest.raises(ModelError, match="no part named"):
         bp.join(J.fixed("base", "ghost"))
+
+
+def test_blueprint_poses_agree_with_the_built_model():
+    bp = zoo_blueprint()
+    obj = zoo()  # the same blueprint, grounded and framed (grounding only lifts z)
+    q_bp = {("rev_part", 0): 0.7, ("rp_part", 0): 0.05, ("rp_part", 1): -0.4, ("fr_part", 1): 0.3}
+    q_obj = {"joint_rev_part": 0.7, "joint_rp_part_0": 0.05, "joint_rp_part_1": -0.4, "joint_fr_part_1": 0.3}
+    motion = bp.poses(q_bp)
+    frames = obj.poses(q_obj)
+    lift = obj.bounds()[0, 2] - bp.bounds()[0, 2]
+    for name in ("rev_part", "rp_part", "fr_part"):
+        world_rest = bp.parts[name].pieces[0].vertices[:4]
+        via_bp = world_rest @ motion[name][:3, :3].T + motion[name][:3, 3] + [0, 0, lift]
+        link = obj.link(name)
+        via_obj = link.pieces[0].vertices[:4] @ frames[name][:3, :3].T + frames[name][:3, 3]
+        assert np.allclose(via_bp, via_obj, atol=1e-9)
