@@ -60,6 +60,11 @@ class Blueprint:
                 raise ModelError(f"joint {spec.parent}->{spec.child}: no part named {end!r}")
         if any(j.child == spec.child for j in self.joints):
             raise ModelError(f"part {spec.child!r} already has a parent joint")
+        if spec.requires_open is not None:
+            gate = next((j for j in self.joints if j.child == spec.requires_open), None)
+            if gate is None or not gate.movable:
+                raise ModelError(f"joint of {spec.child!r} requires {spec.requires_open!r} open, but that"
+                                 " part has no movable joint declared before it")
         self.joints.append(spec)
 
     @property

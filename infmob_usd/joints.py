@@ -75,6 +75,9 @@ class JointSpec:
     child: str
     dofs: tuple[Dof, ...] = ()
     role: str = "default"
+    requires_open: str | None = None
+    """Name of a part whose joint must be fully open before this one can move (a rack
+    behind a door): checks and users open that part first. ``None``: moves freely."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -97,52 +100,60 @@ def fixed(parent: str, child: str) -> JointSpec:
 
 
 def revolute(parent: str, child: str, pivot: V3, axis: V3, lower: float, upper: float,
-             role: str = "hinge") -> JointSpec:
-    return JointSpec("revolute", parent, child, (Dof("revolute", pivot, axis, lower, upper),), role)
+             role: str = "hinge",
+        requires_open: str | None = None) -> JointSpec:
+    return JointSpec("revolute", parent, child, (Dof("revolute", pivot, axis, lower, upper),), role, requires_open)
 
 
-def continuous(parent: str, child: str, pivot: V3, axis: V3, role: str = "knob") -> JointSpec:
-    return JointSpec("continuous", parent, child, (Dof("continuous", pivot, axis),), role)
+def continuous(parent: str, child: str, pivot: V3, axis: V3, role: str = "knob",
+        requires_open: str | None = None) -> JointSpec:
+    return JointSpec("continuous", parent, child, (Dof("continuous", pivot, axis),), role, requires_open)
 
 
 def prismatic(parent: str, child: str, origin: V3, axis: V3, lower: float, upper: float,
-              role: str = "slide") -> JointSpec:
-    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role)
+              role: str = "slide",
+        requires_open: str | None = None) -> JointSpec:
+    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role, requires_open)
 
 
 def revolute_prismatic(parent: str, child: str, pivot: V3, axis: V3, turn: tuple[float, float],
-                       slide_axis: V3, slide: tuple[float, float], role: str = "telescope") -> JointSpec:
+                       slide_axis: V3, slide: tuple[float, float], role: str = "telescope",
+        requires_open: str | None = None) -> JointSpec:
     """Slide along ``slide_axis`` then turn about ``axis`` through ``pivot`` (a lamp pole)."""
     return JointSpec("revolute_prismatic", parent, child, (
-        Dof("prismatic", pivot, slide_axis, *slide), Dof("revolute", pivot, axis, *turn)), role)
+        Dof("prismatic", pivot, slide_axis, *slide), Dof("revolute", pivot, axis, *turn)), role, requires_open)
 
 
 def continuous_prismatic(parent: str, child: str, pivot: V3, axis: V3, slide: tuple[float, float],
-                         role: str = "lid") -> JointSpec:
+                         role: str = "lid",
+        requires_open: str | None = None) -> JointSpec:
     """Turn freely about ``axis`` and slide along it (a screw cap, a lid)."""
     return JointSpec("continuous_prismatic", parent, child, (
-        Dof("prismatic", pivot, axis, *slide), Dof("continuous", pivot, axis)), role)
+        Dof("prismatic", pivot, axis, *slide), Dof("continuous", pivot, axis)), role, requires_open)
 
 
 def limited_planar(parent: str, child: str, pivot: V3, slide_axes: tuple[V3, V3],
                    slides: tuple[tuple[float, float], tuple[float, float]], axis: V3,
-                   turn: tuple[float, float], role: str = "plate") -> JointSpec:
+                   turn: tuple[float, float], role: str = "plate",
+        requires_open: str | None = None) -> JointSpec:
     """Two bounded slides and a bounded turn (a plate in a rack)."""
     return JointSpec("limited_planar", parent, child, (
         Dof("prismatic", pivot, slide_axes[0], *slides[0]),
         Dof("prismatic", pivot, slide_axes[1], *slides[1]),
-        Dof("revolute", pivot, axis, *turn)), role)
+        Dof("revolute", pivot, axis, *turn)), role, requires_open)
 
 
 def limited_floating(parent: str, child: str, origin: V3, axes: tuple[V3, V3, V3],
-                     slides: tuple[tuple[float, float], ...], role: str = "grate") -> JointSpec:
+                     slides: tuple[tuple[float, float], ...], role: str = "grate",
+        requires_open: str | None = None) -> JointSpec:
     """Three bounded slides (an oven grate lifted out of its rack)."""
     return JointSpec("limited_floating", parent, child, tuple(
-        Dof("prismatic", origin, a, *s) for a, s in zip(axes, slides)), role)
+        Dof("prismatic", origin, a, *s) for a, s in zip(axes, slides)), role, requires_open)
 
 
 def flip_revolute(parent: str, child: str, pivot0: V3, axis0: V3, turn0: tuple[float, float],
-                  pivot1: V3, axis1: V3, turn1: tuple[float, float], role: str = "hinge") -> JointSpec:
+                  pivot1: V3, axis1: V3, turn1: tuple[float, float], role: str = "hinge",
+        requires_open: str | None = None) -> JointSpec:
     """Two hinge lines in series (a towel ring, a folding lid)."""
     return JointSpec("flip_revolute", parent, child, (
-        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role)
+        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role, requires_open)

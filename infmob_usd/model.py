@@ -57,6 +57,7 @@ class Joint:
     kind: str  # the declared kind this joint belongs to (may be compound)
     role: str
     group: str  # the child part of the declared joint; a compound chain shares it
+    requires_open: str | None = None  # group that must be fully open before this joint moves
 
     @property
     def movable(self) -> bool:
@@ -194,7 +195,7 @@ def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[
                     joints.append(Joint(jname, dof.type, chain_parent, child, origin,
                                         np.asarray(dof.axis, float), float(dof.lower), float(dof.upper),
                                         dyn.damping, dyn.friction, dyn.effort, dyn.velocity,
-                                        spec.kind, spec.role, part.name))
+                                        spec.kind, spec.role, part.name, spec.requires_open))
                     chain_parent = child
             queue.append(part.name)
     reached = {link.name for link in links if not link.dummy}

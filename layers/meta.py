@@ -62,7 +62,8 @@ def metadata(obj) -> dict:
         "joints": [
             {"name": j.name, "type": j.type, "kind": j.kind, "group": j.group, "role": j.role,
              "parent": j.parent, "child": j.child, "origin": j.origin, "axis": j.axis,
-             "lower": j.lower, "upper": j.upper, "damping": j.damping, "friction": j.friction}
+             "lower": j.lower, "upper": j.upper, "damping": j.damping, "friction": j.friction,
+             "requires_open": j.requires_open}
             for j in obj.joints
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},

@@ -247,8 +247,11 @@ class State:
 class Model:
     """Links (with collision hulls) and joints of one URDF, with forward kinematics."""
 
-    def __init__(self, name: str, links: dict[str, LinkGeometry], joints: list[KJoint]):
+    def __init__(self, name: str, links: dict[str, LinkGeometry], joints: list[KJoint],
+                 requires: dict[str, list[str]] | None = None):
         self.name = name
+        # joint -> joints that must be at their upper limit before it moves (metadata requires_open)
+        self.requires = requires or {}
         self.links = links
         self.joints = {j.name: j for j in joints}
         self.parent_joint = {j.child: j for j in joints}
@@ -291,6 +294,15 @@ class Model:
 
     def rest(self) -> dict[str, float]:
         return {j.name: j.rest for j in self.movable}
+
+    def opened(self, q: Mapping[str, float]) -> dict[str, float]:
+        """``q`` with every prerequisite of a moved joint fully open (a door before its rack)."""
+        out = dict(q)
+        for name, value in q.items():
+            if value != self.joints[name].rest:
+                for req in self.requires.get(name, []):
+                    out[req] = self.joints[req].upper
+        return out
 
     def poses(self, q: Mapping[str, float] | None = None) -> dict[str, np.ndarray]:
         """World pose (4x4) of every link; joints not in ``q`` at rest. The root is at identity."""
@@ -400,23 +412,33 @@ def load_model(folder_or_urdf: str | Path) -> Model:
             float(dyn.get("damping", 0.0)) if dyn is not None else 0.0,
             float(dyn.get("friction", 0.0)) if dyn is not None else 0.0,
         ))
-    return Model(root.get("name", path.stem), links, joints)
+    groups: dict[str, list[str]] = {}
+    for j in meta.get("joints", []):
+        if j["type"] != "fixed":
+            groups.setdefault(j["group"], []).append(j["name"])
+    requires = {j["name"]: groups.get(j["requires_open"], []) for j in meta.get("joints", [])
+                if j.get("requires_open")}
+    return Model(root.get("name", path.stem), links, joints, requires)
 
 
 # --------------------------------------------------------------------------- sampled states
 
 
 def sampled_states(model: Model) -> list[State]:
-    """rest, all@50 %, all@100 %, then each movable joint alone at its extremes."""
+    """rest, all@50 %, all@100 %, then each movable joint alone at its extremes.
+
+    A joint that ``requires_open`` another part (metadata) moves only with that part's
+    joints fully open, in every state, as a user must open a door before pulling its rack.
+    """
     movable = model.movable
     states = [State("rest", {})]
     if not movable:
         return states
     for f in ALL_FRACTIONS:
-        states.append(State(f"all@{f:.0%}", {j.name: j.at(f) for j in movable}))
+        states.append(State(f"all@{f:.0%}", model.opened({j.name: j.at(f) for j in movable})))
     for j in movable:
         for label, q in j.extremes():
-            states.append(State(f"{j.name}@{label}", {j.name: q}))
+            states.append(State(f"{j.name}@{label}", model.opened({j.name: q})))
     return states
 
 

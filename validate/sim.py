@@ -637,16 +637,29 @@ def reach_check(ctx: SimContext) -> CheckResult:
     contacts stop a joint. A target counts as reached when the joint is within ``DRIVE_TOL``
     (5 %) of its range from it, i.e. has covered >= 95 % of its range; each target gets
     ``DRIVE_MAX_TIME`` s of simulation. Upper first (from rest), then the whole traverse to
-    lower.
+    lower. A joint that ``requires_open`` another part (metadata) is driven with that part's
+    joints held fully open.
     """
     failures: list[str] = []
     max_steps = int(round(DRIVE_MAX_TIME / ctx.timestep))
     disturbed = (0.0, "")  # largest displacement of a held joint (a hint of self-collision)
+    names = [j.name for j in ctx.joints]
+    groups: dict[str, list[str]] = {}
+    for j in _movable(ctx.meta):
+        groups.setdefault(j["group"], []).append(j["name"])
+    requires = {j["name"]: groups.get(j.get("requires_open"), []) for j in _movable(ctx.meta)}
     for i, joint in enumerate(ctx.joints):
         ctx.reset()
         for j in ctx.joints:
             j.set_drive_property(DRIVE_STIFFNESS, DRIVE_DAMPING, mode="acceleration")
             j.set_friction(0.0)
+        start_q = np.array(ctx.rest_qpos, dtype=np.float32)
+        for req in requires.get(joint.name, []):  # open the door before pulling its rack
+            k = names.index(req)
+            start_q[k] = float(ctx.joints[k].get_limit()[0][1])
+            ctx.joints[k].set_drive_target(float(start_q[k]))
+        if requires.get(joint.name):
+            ctx.articulation.set_qpos(start_q)
         lo, hi = (float(x) for x in joint.get_limit()[0])
         targets, tol = _drive_targets(lo, hi)
         if not tol > 0:
@@ -666,7 +679,7 @@ def reach_check(ctx: SimContext) -> CheckResult:
             if not np.isfinite(q):
                 failures.append(f"{joint.name} -> {label}: qpos became {q}")
                 break
-            held = np.abs(np.asarray(ctx.articulation.qpos, float) - ctx.rest_qpos)
+            held = np.abs(np.asarray(ctx.articulation.qpos, float) - start_q)
             held[i] = 0.0
             if held.size and held.max() > disturbed[0]:
                 k = int(np.argmax(held))

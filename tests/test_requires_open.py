@@ -1,0 +1,70 @@
+"""A part behind a door moves only once the door is open: declared, written, and honoured by checks."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import geometry as g
+from infmob_usd import joints as J
+from infmob_usd.api import assemble
+from infmob_usd.blueprint import Blueprint
+from infmob_usd.errors import ModelError
+from infmob_usd.validate.physics import check_physics
+
+
+def cupboard(gated: bool) -> Blueprint:
+    """A hollow box with a door on its front (+X) and a tray inside that slides out through it."""
+    bp = Blueprint("cupboard", materials={"m": "painted", "t": "plastic"})
+    t = 0.02
+    bp.add("body", "body", [
+        g.box_between([-0.3, -0.3, 0.0], [0.3, 0.3, t], "m"),
+        g.box_between([-0.3, -0.3, 0.5 - t], [0.3, 0.3, 0.5], "m"),
+        g.box_between([-0.3, -0.3, t], [0.3, -0.3 + t, 0.5 - t], "m"),
+        g.box_between([-0.3, 0.3 - t, t], [0.3, 0.3, 0.5 - t], "m"),
+        g.box_between([-0.3, -0.3 + t, t], [-0.3 + t, 0.3 - t, 0.5 - t], "m"),
+    ])
+    bp.add("door", "door", [g.box_between([0.303, -0.3, 0.003], [0.323, 0.3, 0.497], "m")])
+    bp.join(J.revolute("body", "door", (0.323, -0.3, 0.0), (0, 0, -1), 0.0, math.pi / 2))
+    bp.add("tray", "drawer", [g.box_between([-0.25, -0.2, 0.03], [0.25, 0.2, 0.08], "t")])
+    bp.join(J.prismatic("body", "tray", (0.25, 0, 0.03), (1, 0, 0), 0.0, 0.35,
+                        requires_open="door" if gated else None))
+    return bp
+
+
+def _checks(folder):
+    return {c.name: c for c in check_physics(folder)}
+
+
+def test_requires_open_is_written_and_honoured(tmp_path):
+    folder = assemble(cupboard(True), 0, np.random.default_rng(0), 16).save(tmp_path / "gated")
+    meta = json.loads((folder / "metadata.json").read_text())
+    tray = next(j for j in meta["joints"] if j["child"] == "tray")
+    assert tray["requires_open"] == "door"
+    res = _checks(folder)
+    assert res["self_collision"].ok, res["self_collision"].detail
+
+    ungated = assemble(cupboard(False), 0, np.random.default_rng(0), 16).save(tmp_path / "free")
+    res = _checks(ungated)
+    assert not res["self_collision"].ok and "door" in res["self_collision"].detail
+
+
+@pytest.mark.sim
+def test_reach_opens_the_door_first(tmp_path):
+    pytest.importorskip("sapien")
+    from infmob_usd.validate.sim import check_sapien
+
+    folder = assemble(cupboard(True), 0, np.random.default_rng(0), 16).save(tmp_path / "gated")
+    res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
+    assert res["reach"].ok, res["reach"].detail
+    ungated = assemble(cupboard(False), 0, np.random.default_rng(0), 16).save(tmp_path / "free")
+    res = {c.name: c for c in check_sapien(ungated, checks=["reach"])}
+    assert not res["reach"].ok and "joint_tray" in res["reach"].detail
+
+
+def test_the_gate_must_be_a_movable_part_declared_first():
+    bp = cupboard(False)
+    bp.add("late", "drawer", [g.box_between([-0.1, -0.1, 0.2], [0.1, 0.1, 0.25], "t")])
+    with pytest.raises(ModelError, match="requires 'ghost' open"):
+        bp.join(J.prismatic("body", "late", (0.1, 0, 0.2), (1, 0, 0), 0.0, 0.1, requires_open="ghost"))
