@@ -11,15 +11,32 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from . import door, kitchen_cabinet, lamp, microwave, tap, toilet, tv, window
+from . import (
+    beverage_fridge,
+    dishwasher,
+    door,
+    kitchen_cabinet,
+    lamp,
+    microwave,
+    oven,
+    storage_rack,
+    tap,
+    toilet,
+    tv,
+    window,
+)
 
 CATEGORIES: dict[str, ModuleType] = {
     "kitchen_cabinet": kitchen_cabinet,
     "microwave": microwave,
     "lamp": lamp,
+    "beverage_fridge": beverage_fridge,
+    "dishwasher": dishwasher,
+    "oven": oven,
     "tv": tv,
     "tap": tap,
     "toilet": toilet,
     "door": door,
     "window": window,
+    "storage_rack": storage_rack,
 }

@@ -1,0 +1,241 @@
+"""The beverage_fridge category: parts, joints, clearances at joint states, overrides, seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import beverage_fridge as bf
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(6)
+VOL = 1e-7  # m^3: the validators' contact volume
+
+
+def make(seed, **overrides):
+    r = streams("beverage_fridge", seed)
+    p = bf.SCHEMA.sample(r["params"], overrides)
+    bp = bf.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def local(joint, q):
+    """World transform of a child relative to its parent's pose, for joint value ``q``."""
+    t = np.eye(4)
+    if not joint.movable:
+        return t
+    d = joint.dofs[0]
+    if d.type == "prismatic":
+        t[:3, 3] = np.asarray(d.axis) * q
+    else:
+        o = np.asarray(d.origin)
+        t[:3, :3] = rotation(d.axis, q)
+        t[:3, 3] = o - t[:3, :3] @ o
+    return t
+
+
+def poses(bp, q):
+    """Pose of every part with joint values ``q`` ({child name: value}, default 0)."""
+    out = {bp.root: np.eye(4)}
+    pending = list(bp.joints)
+    while pending:
+        for j in list(pending):
+            if j.parent in out:
+                out[j.child] = out[j.parent] @ local(j, q.get(j.child, 0.0))
+                pending.remove(j)
+    return out
+
+
+def at(j, f):
+    return j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower)
+
+
+def contacts(bp, q):
+    """(a, b, volume) of non-parent part pairs that overlap with joints at ``q``."""
+    pose = poses(bp, q)
+    parent = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    bad = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if parent.get(a) == b or parent.get(b) == a:
+                continue
+            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
+            if v >= VOL:
+                bad.append((a, b, v))
+    return bad
+
+
+# -- parts, labels, materials -------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    assert bp.parts["body"].label == "body" and bp.parts["door"].label == "door"
+    assert {part.label for part in bp.parts.values()} <= {"body", "door", "rack", "shelf"}
+    door = bp.parts["door"].pieces
+    assert any(pc.material == "glass" for pc in door) and bp.materials["glass"].startswith("glass")
+    assert sum(pc.name == "handle" for pc in door) >= 1
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    racks = [n for n, part in bp.parts.items() if part.label in ("rack", "shelf") and n.startswith("rack_")]
+    if p["interior"] == "racks":
+        assert len(racks) == p["rack_count"] and 3 <= len(racks) <= 5
+    else:
+        assert not racks and bp.parts["divider"].label == "shelf"
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_size_and_hollow_cavity(seed):
+    p, bp = make(seed)
+    lo, hi = bp.bounds()
+    assert lo[2] == pytest.approx(0.0, abs=1e-9)
+    assert hi[2] == pytest.approx(p["height"], abs=1e-6)
+    assert hi[1] - lo[1] == pytest.approx(p["width"], abs=1e-6)
+    # the cavity is hollow: its centre is inside no collision hull of the body
+    liner = np.array([pc.bounds for pc in bp.parts["body"].pieces if pc.material == "liner"])
+    centre = (liner[:, 0].min(0) + liner[:, 1].max(0)) / 2
+    for pc in bp.parts["body"].pieces:
+        for c in pc.convex:
+            assert not ((c.min(0) < centre) & (centre < c.max(0))).all()
+
+
+# -- joints ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_kinds_axes_limits(seed):
+    p, bp = make(seed)
+    door = by_child(bp, "door")
+    d = door.dofs[0]
+    assert door.kind == "revolute" and door.parent == "body"
+    assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
+    frame = np.array([pc.bounds for pc in bp.parts["door"].pieces if pc.name != "handle"])
+    assert d.origin[0] == pytest.approx(frame[:, 1, 0].max())
+    if p["hinge_side"] == "left":
+        assert d.axis == pytest.approx((0, 0, -1)) and d.origin[1] == pytest.approx(frame[:, 0, 1].min())
+    else:
+        assert d.axis == pytest.approx((0, 0, 1)) and d.origin[1] == pytest.approx(frame[:, 1, 1].max())
+    for j in movable(bp):
+        if j.child.startswith("rack_"):
+            r = j.dofs[0]
+            assert j.kind == "prismatic" and j.parent == "body"
+            assert r.axis == pytest.approx((1, 0, 0)) and r.lower == 0.0
+            b = np.array([pc.bounds for pc in bp.parts[j.child].pieces])
+            assert r.upper == pytest.approx(p["rack_travel"] * (b[:, 1, 0].max() - b[:, 0, 0].min()), rel=1e-6)
+    assert 1 <= len(movable(bp)) <= 6
+
+
+def test_door_opens_outward():
+    for side in ("left", "right"):
+        _, bp = make(0, hinge_side=side)
+        j = by_child(bp, "door")
+        pose = poses(bp, {"door": math.pi / 2})["door"]
+        pts = np.vstack([pc.vertices for pc in bp.parts["door"].pieces])
+        moved = pts @ pose[:3, :3].T + pose[:3, 3]
+        assert moved[:, 0].max() > pts[:, 0].max() + 0.3  # swung out to the front
+        assert j.dofs[0].origin[1] * (1 if side == "right" else -1) > 0
+
+
+# -- clearances ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_no_contacts_at_rest_and_sampled_states(seed):
+    _, bp = make(seed, interior="racks")
+    js = movable(bp)
+    states = [{}]
+    states += [{j.child: at(j, f) for j in js} for f in (0.5, 1.0)]
+    states += [{j.child: at(j, f)} for j in js for f in (0.25, 0.5, 1.0)]
+    for q in states:
+        assert not contacts(bp, q), q
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_moving_parts_do_not_enter_their_parent(seed):
+    _, bp = make(seed)
+    body = bp.parts["body"]
+    for j in movable(bp):
+        for f in (0.0, 0.5, 1.0):
+            pose = poses(bp, {j.child: at(j, f)})[j.child]
+            assert overlap(bp.parts[j.child], pose, body, np.eye(4)) < VOL, (j.child, f)
+        # and keep a gap at rest
+        assert overlap(bp.parts[j.child], np.eye(4), body, np.eye(4), pad=0.001) < VOL
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground(seed):
+    _, bp = make(seed)
+    js = movable(bp)
+    for q in [{j.child: at(j, 1.0) for j in js}, *({j.child: at(j, 1.0)} for j in js)]:
+        pose = poses(bp, q)
+        for name, part in bp.parts.items():
+            pts = np.vstack([pc.vertices for pc in part.pieces])
+            assert (pts @ pose[name][:3, :3].T + pose[name][:3, 3])[:, 2].min() >= -1e-6
+
+
+# -- overrides, growth, determinism ------------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(1, interior="racks", rack_count=5, rack_style="glass")
+    assert sorted(n for n in bp.parts if n.startswith("rack_")) == [f"rack_{k}" for k in range(5)]
+    assert all(bp.parts[f"rack_{k}"].label == "shelf" for k in range(5))
+    _, bp = make(1, interior="racks", rack_count=3, rack_style="wire")
+    assert all(bp.parts[f"rack_{k}"].label == "rack" for k in range(3))
+    _, bp = make(1, interior="divider")
+    assert len(movable(bp)) == 1 and "divider" in bp.parts
+    _, a = make(2, has_control_panel=False)
+    _, b = make(2, has_control_panel=True)
+    assert a.bounds()[1, 2] == pytest.approx(b.bounds()[1, 2])
+    assert len(b.parts["body"].pieces) > len(a.parts["body"].pieces)
+    p, _ = make(2, width=0.6, handle_style="recessed")
+    assert p["width"] == 0.6 and p["handle_style"] == "recessed"
+
+
+@pytest.mark.parametrize("bad", [{"width": 1.2}, {"rack_count": 6}, {"hinge_side": "top"},
+                                 {"interior": "drawers"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("hinge_side", "handle_style", "interior", "rack_style", "has_control_panel", "body_finish"):
+        assert len({p[name] for p in params}) > 1, name

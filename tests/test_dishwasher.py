@@ -1,0 +1,257 @@
+"""The dishwasher category: parts, joints, clearances at joint states, door at rest, overrides, seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import dishwasher as dw
+from infmob_usd.errors import ParameterError
+from infmob_usd.materials.families import FAMILIES, split_spec
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(5)
+VOL = 1e-7  # m^3: the validators' contact volume
+
+
+def make(seed, **overrides):
+    r = streams("dishwasher", seed)
+    p = dw.SCHEMA.sample(r["params"], overrides)
+    bp = dw.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def local(joint, q):
+    """World transform of a child relative to its parent's pose, for joint value ``q``."""
+    t = np.eye(4)
+    if not joint.movable:
+        return t
+    d = joint.dofs[0]
+    if d.type == "prismatic":
+        t[:3, 3] = np.asarray(d.axis) * q
+    else:
+        o = np.asarray(d.origin)
+        t[:3, :3] = rotation(d.axis, q)
+        t[:3, 3] = o - t[:3, :3] @ o
+    return t
+
+
+def poses(bp, q):
+    """Pose of every part with joint values ``q`` ({child name: value}, default 0)."""
+    out = {bp.root: np.eye(4)}
+    pending = list(bp.joints)
+    while pending:
+        for j in list(pending):
+            if j.parent in out:
+                out[j.child] = out[j.parent] @ local(j, q.get(j.child, 0.0))
+                pending.remove(j)
+    return out
+
+
+def at(j, f):
+    return j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower)
+
+
+def contacts(bp, q):
+    """(a, b, volume) of non-parent part pairs that overlap with joints at ``q``."""
+    pose = poses(bp, q)
+    parent = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    bad = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if parent.get(a) == b or parent.get(b) == a:
+                continue
+            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
+            if v >= VOL:
+                bad.append((a, b, v))
+    return bad
+
+
+# -- parts, labels, materials -------------------------------------------------------
+
+LABELS = {"body", "door", "rack", "basket", "control_panel", "button"}
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    assert bp.parts["body"].label == "body" and bp.parts["door"].label == "door"
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    racks = [n for n, part in bp.parts.items() if part.label == "rack"]
+    assert len(racks) == p["rack_count"]
+    assert ("control_panel" in bp.parts) == p["has_control_panel"]
+    assert any(pc.name == "handle" for pc in bp.parts["door"].pieces) == p["has_handle"]
+    baskets = [n for n, part in bp.parts.items() if part.label == "basket"]
+    for n in baskets:
+        assert by_child(bp, n).kind == "fixed" and by_child(bp, n).parent == "rack_0"
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_size_and_hollow_tub(seed):
+    p, bp = make(seed)
+    lo, hi = bp.bounds()
+    assert lo[2] == pytest.approx(0.0, abs=1e-9)
+    assert hi[2] == pytest.approx(p["height"], abs=1e-6)
+    assert hi[1] - lo[1] == pytest.approx(p["width"], abs=1e-6)
+    liner = np.array([pc.bounds for pc in bp.parts["body"].pieces if pc.material == "tub"])
+    centre = (liner[:, 0].min(0) + liner[:, 1].max(0)) / 2
+    for pc in bp.parts["body"].pieces:
+        for c in pc.convex:
+            assert not ((c.min(0) < centre) & (centre < c.max(0))).all()
+
+
+# -- joints ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_kinds_axes_limits(seed):
+    p, bp = make(seed)
+    door = by_child(bp, "door")
+    d = door.dofs[0]
+    assert door.kind == "revolute" and door.parent == "body"
+    assert d.axis == pytest.approx((0, 1, 0))
+    assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
+    leaf = np.array([pc.bounds for pc in bp.parts["door"].pieces if pc.name != "handle"])
+    assert d.origin[0] == pytest.approx(leaf[:, 1, 0].max())  # front face ...
+    assert d.origin[2] == pytest.approx(leaf[:, 0, 2].min())  # ... bottom edge
+    assert d.origin[2] >= p["kick_height"]  # above the plinth
+    for j in movable(bp):
+        r = j.dofs[0]
+        if j.child.startswith("rack_"):
+            assert j.kind == "prismatic" and j.parent == "body"
+            assert r.axis == pytest.approx((1, 0, 0)) and r.lower == 0.0 and r.upper > 0.2
+        elif j.child.startswith("button_"):
+            assert j.kind == "prismatic" and j.parent == "control_panel"
+            assert r.axis == pytest.approx((-1, 0, 0)) and 0 < r.upper < 0.004
+    assert by_child(bp, "control_panel").kind == "fixed" if "control_panel" in bp.parts else True
+
+
+def test_door_falls_forward_and_rests_shut():
+    _, bp = make(0)
+    pose = poses(bp, {"door": math.pi / 2})["door"]
+    pts = np.vstack([pc.vertices for pc in bp.parts["door"].pieces if pc.name != "handle"])
+    moved = pts @ pose[:3, :3].T + pose[:3, 3]
+    assert np.ptp(moved[:, 2]) < 0.1 and moved[:, 0].max() > pts[:, 0].max() + 0.5  # flat, in front
+    # centre of mass of the door subtree behind the hinge line: gravity presses it shut
+    densities = {k: FAMILIES[split_spec(v)[0]].density for k, v in bp.materials.items()}
+    links, _ = build_model(bp, densities)
+    hinge_x = by_child(bp, "door").dofs[0].origin[0]
+    sub = {"door", "control_panel", *(n for n in bp.parts if n.startswith("button_"))}
+    masses = [(lk.mass, lk.origin + lk.com) for lk in links if lk.name in sub]
+    com = sum(m * c for m, c in masses) / sum(m for m, _ in masses)
+    assert com[0] < hinge_x - 0.005
+
+
+# -- clearances ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_no_contacts_at_sampled_states(seed):
+    _, bp = make(seed)
+    js = movable(bp)
+    states = [{}]
+    states += [{j.child: at(j, f) for j in js} for f in (0.5, 1.0)]
+    states += [{j.child: at(j, f)} for j in js if not j.child.startswith("button") for f in (0.5, 1.0)]
+    for q in states:
+        assert not contacts(bp, q), q
+
+
+def test_racks_clear_the_open_door_everywhere():
+    """Four racks at full travel over the flat door, with a bar handle and a control panel."""
+    _, bp = make(1, rack_count=4, has_handle=True, handle_style="bar", has_control_panel=True,
+                 has_buttons=True, has_baskets=True, rack_travel=0.8)
+    js = movable(bp)
+    assert not contacts(bp, {j.child: at(j, 1.0) for j in js})
+    door = poses(bp, {"door": math.pi / 2})["door"]
+    top = max((np.vstack([pc.vertices for pc in bp.parts["door"].pieces]) @ door[:3, :3].T
+               + door[:3, 3])[:, 2])
+    low = min(pc.bounds[0, 2] for n, part in bp.parts.items() if part.label in ("rack", "basket")
+              for pc in part.pieces)
+    assert low > top
+
+
+@pytest.mark.parametrize("seed", [*SEEDS, 19])  # 19: a cutlery tray under the ceiling nozzle
+def test_moving_parts_do_not_enter_their_parent(seed):
+    _, bp = make(seed)
+    for j in movable(bp):
+        parent = bp.parts[j.parent]
+        for f in (0.0, 0.25, 0.5, 0.75, 1.0):
+            pose = poses(bp, {j.child: at(j, f)})
+            assert overlap(bp.parts[j.child], pose[j.child], parent, pose[j.parent]) < VOL, (j.child, f)
+        assert overlap(bp.parts[j.child], np.eye(4), parent, np.eye(4), pad=0.001) < VOL
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground(seed):
+    _, bp = make(seed)
+    js = movable(bp)
+    for q in [{j.child: at(j, 1.0) for j in js}, *({j.child: at(j, 1.0)} for j in js)]:
+        pose = poses(bp, q)
+        for name, part in bp.parts.items():
+            pts = np.vstack([pc.vertices for pc in part.pieces])
+            assert (pts @ pose[name][:3, :3].T + pose[name][:3, 3])[:, 2].min() >= -1e-6
+
+
+# -- overrides, growth, determinism ------------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(2, rack_count=1, has_baskets=True, basket_count=3)
+    assert [n for n in bp.parts if n.startswith("rack_")] == ["rack_0"]
+    assert sorted(n for n in bp.parts if n.startswith("basket_")) == ["basket_0", "basket_1", "basket_2"]
+    _, bp = make(2, rack_count=4, has_baskets=False)
+    assert sum(n.startswith("rack_") for n in bp.parts) == 4 and not any(n.startswith("basket") for n in bp.parts)
+    _, bp = make(2, has_control_panel=True, has_buttons=True, button_count=5)
+    assert sum(n.startswith("button_") for n in bp.parts) == 5
+    _, bp = make(2, has_control_panel=False, has_handle=False)
+    assert len(movable(bp)) == 1 + sum(n.startswith("rack_") for n in bp.parts)
+    assert not any(pc.name == "handle" for pc in bp.parts["door"].pieces)
+
+
+@pytest.mark.parametrize("bad", [{"width": 1.0}, {"rack_count": 5}, {"basket_count": 0},
+                                 {"handle_style": "knob"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("rack_count", "has_handle", "has_control_panel", "has_baskets", "body_finish"):
+        assert len({p[name] for p in params}) > 1, name

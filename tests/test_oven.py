@@ -1,0 +1,266 @@
+"""The oven category: parts, joints, balance of the door and knobs, clearances at joint states."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import oven
+from infmob_usd.errors import ParameterError
+from infmob_usd.mass import inertial
+from infmob_usd.materials import FAMILIES, split_spec
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(4)
+LABELS = {"body", "door", "drawer", "rack", "knob", "button", "grate", "control_panel"}
+VOL = 1e-7  # m^3, the validator's contact volume
+
+
+def make(seed, **overrides):
+    r = streams("oven", seed)
+    p = oven.SCHEMA.sample(r["params"], overrides)
+    bp = oven.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def pose(spec, f):
+    """World pose (4x4) of a joint's child with every DoF at fraction ``f`` of its range."""
+    m = np.eye(4)
+    for d in spec.dofs:
+        q = f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)
+        step = np.eye(4)
+        if d.type == "prismatic":
+            step[:3, 3] = np.asarray(d.axis) * q
+        else:
+            r = rotation(d.axis, q)
+            o = np.asarray(d.origin)
+            step[:3, :3], step[:3, 3] = r, o - r @ o
+        m = m @ step
+    return m
+
+
+def poses(bp, fractions):
+    """Pose of every part; ``fractions`` maps a child name to its joint's fraction (else rest)."""
+    out = {}
+
+    def get(name):
+        if name not in out:
+            spec = next((j for j in bp.joints if j.child == name), None)
+            if spec is None:
+                out[name] = np.eye(4)
+            else:
+                f = fractions.get(name, 0.0 if spec.dofs and spec.dofs[0].lower >= 0 else None)
+                own = pose(spec, f) if f is not None else np.eye(4)
+                out[name] = get(spec.parent) @ own
+        return out[name]
+
+    for name in bp.parts:
+        get(name)
+    return out
+
+
+def jointed(bp, a, b):
+    """Parent and child, or welded (only fixed joints between): pairs the validator skips."""
+    if any({j.parent, j.child} == {a, b} for j in bp.joints):
+        return True
+    parent = {j.child: j for j in bp.joints}
+
+    def up(n):
+        seq = [n]
+        while seq[-1] in parent:
+            seq.append(parent[seq[-1]].parent)
+        return seq
+
+    ua, ub = up(a), up(b)
+    common = next(x for x in ua if x in ub)
+    path = [parent[x] for x in ua[:ua.index(common)]] + [parent[x] for x in ub[:ub.index(common)]]
+    return not any(j.movable for j in path)
+
+
+def contacts(bp, state):
+    ps = poses(bp, state)
+    names = list(bp.parts)
+    hits = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if jointed(bp, a, b):
+                continue
+            v = overlap(bp.parts[a], ps[a], bp.parts[b], ps[b])
+            if v >= VOL:
+                hits.append((a, b, v))
+    return hits
+
+
+def com(part, bp):
+    dens = {slot: FAMILIES[split_spec(fam)[0]].density for slot, fam in bp.materials.items()}
+    return inertial((pc, dens[pc.material]) for pc in part.pieces)[1]
+
+
+# -- parts and joints ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    for name in ("door", "control_panel"):
+        assert bp.parts[name].label == name
+    racks = [n for n, part in bp.parts.items() if part.label == "rack"]
+    knobs = [n for n, part in bp.parts.items() if part.label == "knob"]
+    assert len(racks) == p["rack_count"] and 2 <= len(racks) <= 4
+    assert 2 <= len(knobs) <= 8
+    assert any(pc.material == "glass" for pc in bp.parts["door"].pieces)
+    assert any(pc.name == "handle" for pc in bp.parts["door"].pieces)
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_kinds_axes_and_limits(seed):
+    p, bp = make(seed)
+    door = by_child(bp, "door")
+    d = door.dofs[0]
+    assert door.kind == "revolute" and door.parent == "body"
+    assert d.axis == pytest.approx((0, 1, 0)) and (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
+    slab = np.array([pc.bounds for pc in bp.parts["door"].pieces if pc.name != "handle"])
+    assert d.origin[0] == pytest.approx(slab[:, 1, 0].max())  # front face
+    assert d.origin[2] == pytest.approx(slab[:, 0, 2].min())  # bottom edge
+    for name, part in bp.parts.items():
+        if name == "body":
+            continue
+        j = by_child(bp, name)
+        if part.label == "rack":
+            assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0))
+            assert j.dofs[0].lower == 0.0 and j.dofs[0].upper > (0.03 if p["rack_stop"] == "door" else 0.15)
+        elif part.label == "knob":
+            assert j.parent == "control_panel" and j.dofs[0].axis == pytest.approx((1, 0, 0))
+            if p["knob_motion"] == "revolute":
+                assert (j.dofs[0].lower, j.dofs[0].upper) == (pytest.approx(-math.pi / 4), pytest.approx(math.pi / 4))
+            else:
+                assert j.kind == "continuous"
+        elif part.label == "button":
+            assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((-1, 0, 0))
+            assert 0.0 == j.dofs[0].lower < j.dofs[0].upper <= 0.006
+        elif part.label == "grate":
+            assert j.kind == "limited_floating"
+            assert [dd.axis for dd in j.dofs] == [(1, 0, 0), (0, 1, 0), (0, 0, 1)]
+            assert j.dofs[0].upper == pytest.approx(p["grate_slide"] * p["depth"])
+            assert (j.dofs[2].lower, j.dofs[2].upper) == (0.0, pytest.approx(p["grate_lift"]))
+        elif part.label == "drawer":
+            assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0))
+        elif name == "control_panel":
+            assert j.kind == "fixed"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_gravity_keeps_the_door_shut_and_knobs_balanced(seed):
+    _, bp = make(seed)
+    hinge = by_child(bp, "door").dofs[0].origin
+    c = com(bp.parts["door"], bp)
+    assert c[0] < hinge[0] - 0.005  # behind the hinge line: gravity presses it closed (q -> 0)
+    for name, part in bp.parts.items():
+        if part.label == "knob":
+            o = by_child(bp, name).dofs[0].origin
+            assert com(part, bp)[1:] == pytest.approx(o[1:], abs=2e-4)
+
+
+# -- clearances --------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_rest_and_combined_states_are_free(seed):
+    _, bp = make(seed, has_drawer=True)
+    for f in (0.0, 0.5, 1.0):
+        state = {j.child: f for j in movable(bp)}
+        assert contacts(bp, state) == [], f"contact with every joint at {f:.0%}"
+
+
+@pytest.mark.parametrize("seed", [2, 3])
+def test_each_joint_alone_at_its_limits_with_door_stops(seed):
+    """With ``rack_stop=door`` every single-joint state is free (racks stop at the closed door)."""
+    _, bp = make(seed, rack_stop="door", has_drawer=True, has_grates=True, style="range")
+    for j in movable(bp):
+        for f in (1.0,) if j.dofs[0].lower == 0 else (0.0, 1.0):
+            assert contacts(bp, {j.child: f}) == [], f"{j.child} at {f:.0%}"
+
+
+def test_rails_racks_only_meet_the_closed_door():
+    """Full pull-out racks hit nothing but the shut door (open it first); with it open they are free."""
+    _, bp = make(1, rack_stop="rails")
+    assert all(j.dofs[0].upper > 0.15 for j in movable(bp) if bp.parts[j.child].label == "rack")
+    for j in movable(bp):
+        if bp.parts[j.child].label == "rack":
+            assert {(a, b) for a, b, _ in contacts(bp, {j.child: 1.0})} <= {("door", j.child)}
+            assert contacts(bp, {j.child: 1.0, "door": 1.0}) == []
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground(seed):
+    _, bp = make(seed, has_drawer=True)
+    for f in (0.0, 0.5, 1.0):
+        ps = poses(bp, {j.child: f for j in movable(bp)})
+        for name, part in bp.parts.items():
+            pts = np.vstack([pc.vertices for pc in part.pieces])
+            assert (pts @ ps[name][:3, :3].T + ps[name][:3, 3])[:, 2].min() >= -1e-6, (name, f)
+
+
+# -- overrides, growth, determinism ------------------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(0, style="wall")
+    assert not any(part.label == "grate" for part in bp.parts.values())
+    _, bp = make(0, style="range", has_grates=True, grate_count=3)
+    assert sorted(n for n, part in bp.parts.items() if part.label == "grate") == ["grate_0", "grate_1", "grate_2"]
+    _, bp = make(0, knob_count=8, has_buttons=True, button_count=6, width=0.5)
+    assert sum(part.label == "knob" for part in bp.parts.values()) == 8
+    assert sum(part.label == "button" for part in bp.parts.values()) == 6
+    _, bp = make(0, has_drawer=False)
+    assert "drawer" not in bp.parts
+    _, bp = make(0, has_drawer=True, rack_count=4)
+    assert bp.parts["drawer"].label == "drawer"
+    assert sum(part.label == "rack" for part in bp.parts.values()) == 4
+
+
+@pytest.mark.parametrize("bad", [{"width": 1.5}, {"rack_count": 5}, {"knob_count": 9}, {"style": "toaster"},
+                                 {"rack_stop": "nowhere"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [oven.SCHEMA.sample(streams("oven", s)["params"]) for s in range(12)]
+    for name in ("style", "knob_motion", "has_drawer", "has_buttons", "rack_count"):
+        assert len({p[name] for p in params}) > 1, name

@@ -1,0 +1,177 @@
+"""The storage_rack category: frames, levels that slide up, goods fixed to levels, clearances."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import storage_rack as sr
+from infmob_usd.errors import ParameterError
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(4)
+VOL = 1e-7  # m^3, the validator's contact volume
+
+
+def make(seed, **overrides):
+    r = streams("storage_rack", seed)
+    p = sr.SCHEMA.sample(r["params"], overrides)
+    bp = sr.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def levels(bp):
+    return sorted(n for n, part in bp.parts.items() if part.label == "shelf")
+
+
+def lift(bp, fractions):
+    """World pose of every part: a level (and its goods) raised by its fraction of its travel."""
+    out = {}
+    for name in bp.parts:
+        m = np.eye(4)
+        n = name
+        while True:
+            j = next((j for j in bp.joints if j.child == n), None)
+            if j is None:
+                break
+            if j.kind == "prismatic":
+                d = j.dofs[0]
+                m[:3, 3] += np.asarray(d.axis) * fractions.get(n, 0.0) * d.upper
+            n = j.parent
+        out[name] = m
+    return out
+
+
+def moving_with(bp, name):
+    """The level a part rides on (itself for a level), or None for the frame."""
+    while name != "frame":
+        j = by_child(bp, name)
+        if j.kind == "prismatic":
+            return name
+        name = j.parent
+    return None
+
+
+def contacts(bp, fractions):
+    ps = lift(bp, fractions)
+    names = list(bp.parts)
+    hits = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            ma, mb = moving_with(bp, a), moving_with(bp, b)
+            if ma == mb:
+                continue  # welded
+            if any({j.parent, j.child} == {a, b} for j in bp.joints):
+                continue  # parent and child
+            v = overlap(bp.parts[a], ps[a], bp.parts[b], ps[b])
+            if v >= VOL:
+                hits.append((a, b, v))
+    return hits
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_levels_and_uprights(seed):
+    p, bp = make(seed)
+    assert bp.root == "frame" and bp.parts["frame"].label == "frame"
+    bays = p["bay_count"] or (1 if p["width"] <= 2.2 else 2)
+    assert len(levels(bp)) == bays * p["level_count"]
+    assert 3 <= p["level_count"] <= 5
+    posts = [pc for pc in bp.parts["frame"].pieces if pc.sheet == 0.002]
+    assert len(posts) == 2 * (bays + 1) >= 4
+    assert any(pc.name == "perforation" and not pc.convex for pc in bp.parts["frame"].pieces)
+    size = bp.bounds()[1] - bp.bounds()[0]
+    assert size[1] == pytest.approx(p["width"], abs=0.03) and size[0] == pytest.approx(p["depth"], abs=0.03)
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        assert {pc.material for pc in part.pieces}
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_levels_slide_up_from_their_stops(seed):
+    p, bp = make(seed)
+    for name in levels(bp):
+        j = by_child(bp, name)
+        if name.endswith("_0"):
+            assert j.kind == "fixed"
+            continue
+        d = j.dofs[0]
+        assert j.kind == "prismatic" and j.parent == "frame"
+        assert d.axis == pytest.approx((0, 0, 1))  # gravity presses it into its lower limit
+        assert d.lower == 0.0 and 0.02 < d.upper <= p["level_height"] / 3 + 1e-9
+    # one common travel for every adjustable level
+    assert len({round(j.dofs[0].upper, 9) for j in bp.joints if j.kind == "prismatic"}) == 1
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_goods_are_fixed_to_their_level(seed):
+    _, bp = make(seed, has_goods=True, goods_chance=1.0)
+    goods = [n for n, part in bp.parts.items() if part.label in ("box", "pallet")]
+    assert goods
+    for n in goods:
+        j = by_child(bp, n)
+        assert j.kind == "fixed" and bp.parts[j.parent].label == "shelf"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_every_state_is_free(seed):
+    """Rest, all levels raised at 50 % and 100 %, and each level raised alone."""
+    _, bp = make(seed, has_goods=True, goods_chance=1.0)
+    movers = [j.child for j in bp.joints if j.kind == "prismatic"]
+    states = [{}, {m: 0.5 for m in movers}, {m: 1.0 for m in movers}] + [{m: 1.0} for m in movers]
+    for s in states:
+        assert contacts(bp, s) == [], s
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_levels_keep_a_gap_at_rest(seed):
+    _, bp = make(seed)
+    frame = bp.parts["frame"]
+    for name in levels(bp):
+        if by_child(bp, name).kind != "prismatic":
+            continue
+        # raised by 3 mm it still touches nothing: the level rests above its stops, not on them
+        m = np.eye(4)
+        m[2, 3] = -0.003
+        assert overlap(bp.parts[name], m, frame, np.eye(4)) < VOL
+
+
+def test_overrides():
+    p, bp = make(0, bay_count=2, level_count=5, width=2.8)
+    assert len(levels(bp)) == 10
+    _, bp = make(0, has_goods=False)
+    assert not any(part.label in ("box", "pallet") for part in bp.parts.values())
+    _, bp = make(1, deck="wood", level_count=3, bay_count=1)
+    assert len(levels(bp)) == 3
+    assert any(pc.material == "deck_wood" for pc in bp.parts["level_0_0"].pieces)
+
+
+@pytest.mark.parametrize("bad", [{"width": 3.5}, {"level_count": 6}, {"level_height": 0.2}, {"deck": "glass"},
+                                 {"shelves": 3}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ():
+    params = [sr.SCHEMA.sample(streams("storage_rack", s)["params"]) for s in range(12)]
+    for name in ("deck", "level_count", "has_goods", "frame_finish"):
+        assert len({p[name] for p in params}) > 1, name
