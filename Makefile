@@ -9,12 +9,9 @@ COUNT  ?= 3
 
 .PHONY: demo test sysdeps clean
 
-# System libraries: opencv-python (pulled by sapien) needs libGL.so.1.
+# System libraries: libGL (sapien's opencv) and Mesa >= 25 lavapipe (Vulkan on the CPU, for previews).
 sysdeps:
-	@if ! ldconfig -p | grep -q 'libGL.so.1 '; then \
-	  echo "installing libgl1 (needed by sapien's opencv)"; \
-	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libgl1 libegl1 >/dev/null; \
-	fi
+	@bash .ci/sysdeps.sh
 
 $(STAMP): pyproject.toml | sysdeps
 	$(PYTHON) -m venv $(VENV)
@@ -25,10 +22,9 @@ $(STAMP): pyproject.toml | sysdeps
 	touch $(STAMP)
 
 demo: $(STAMP)
-	@for c in $$($(BIN)/infmob list); do \
-	  $(BIN)/infmob generate $$c --count $(COUNT) --out $(OUT) || exit 1; \
-	done
-	$(BIN)/infmob validate $(OUT)
+	$(BIN)/infmob generate all --count $(COUNT) --out $(OUT)
+	$(BIN)/infmob validate --sim $(OUT)
+	$(BIN)/infmob preview --sheet $(OUT) --out $(OUT)/contact_sheet.png
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

@@ -50,7 +50,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     W, H, D, t = p["width"], p["height"], p["depth"], p["board"]
     bp = Blueprint("kitchen_cabinet", materials={
         "body": p["body_finish"], "front": p["body_finish"], "handle": p["handle_finish"],
-        "plinth": "plastic", "top": "wood",
+        "plinth": "plastic:black|dark_grey", "top": "wood",
     })
     z0 = p["plinth_height"] if p["has_plinth"] else 0.0
     top_t = 0.03 if p["has_countertop"] else 0.0

@@ -1,4 +1,4 @@
-"""The ``infmob`` command line: list, params, generate, validate."""
+"""The ``infmob`` command line: list, params, generate, validate, preview, stats, bench."""
 
 from __future__ import annotations
 
@@ -37,6 +37,8 @@ def _parser() -> argparse.ArgumentParser:
     g.add_argument("--address", default=None, help="Ray cluster address (with --backend ray)")
     g.add_argument("--overwrite", action="store_true",
                    help="regenerate objects that already exist (default: skip them, resuming a run)")
+    g.add_argument("--preview", action="store_true",
+                   help="also render each object's thumbnail (preview.png + sweep.gif in its folder)")
 
     v = sub.add_parser("validate", help="check object folders: USD, URDF agreement, SAPIEN (and --sim physics)",
                        description="Validate object folders. Default: USD checks + SAPIEN (the URDF loads, every "
@@ -55,6 +57,15 @@ def _parser() -> argparse.ArgumentParser:
                    help="with --sweep: texture size of the generated objects; default 64")
     v.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="with --sweep: generation workers")
     v.add_argument("--verbose", "-v", action="store_true", help="print every check, not only failures")
+
+    pv = sub.add_parser("preview", help="render thumbnails, joint-sweep GIFs or a contact sheet (CPU, no display)",
+                        description="Render each object folder at rest beside itself with its joints ~70% open"
+                        " (preview.png) and a GIF sweeping each movable joint (sweep.gif); or with --sheet DIR one"
+                        " contact sheet of every object under DIR. Needs a Vulkan device: on a CPU machine Mesa >= 25"
+                        " lavapipe (see README).")
+    from .validate.preview import add_arguments as _preview_arguments
+
+    _preview_arguments(pv)
 
     st = sub.add_parser("stats", help="dataset statistics: joint counts, kinds, tree depth, tree edit distance")
     st.add_argument("folder", metavar="DIR")
@@ -131,6 +142,10 @@ def cmd_generate(args) -> int:
                   f" (traceback: {out / row['traceback']})", file=sys.stderr, flush=True)
         else:
             print(out / row["folder"], flush=True)
+            if args.preview:
+                from .validate.preview import preview
+
+                preview(out / row["folder"])
 
     rows = run_batch(jobs, out, workers=args.workers, overwrite=args.overwrite, backend=args.backend,
                      address=args.address, on_row=show)
@@ -226,8 +241,14 @@ def cmd_bench(args) -> int:
     return 0
 
 
+def cmd_preview(args) -> int:
+    from .validate.preview import main as preview_main
+
+    return preview_main(args)
+
+
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
-            "stats": cmd_stats, "bench": cmd_bench}
+            "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench}
 
 
 def main(argv: list[str] | None = None) -> int:

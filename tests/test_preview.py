@@ -1,0 +1,192 @@
+"""Pictures of generated objects (validate/preview.py): real renders, rest vs opened, sheets, files.
+
+The rendering tests need SAPIEN's renderer on a Vulkan device (headless CPU: Mesa lavapipe >= 25,
+see ``preview.INSTALL_HINT``); without one they are skipped with the reason. The joint-pose
+tests run everywhere.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+import pytest
+
+import infmob_usd
+from infmob_usd.validate import preview
+
+cv2 = pytest.importorskip("cv2")
+
+SIZE = 256
+
+
+@pytest.fixture(scope="module")
+def cabinets(tmp_path_factory):
+    """Three kitchen cabinets (seeds 0..2), small textures to keep the test quick."""
+    out = tmp_path_factory.mktemp("preview_objects")
+    return [infmob_usd.generate("kitchen_cabinet", seed=s, texture_size=128).save(out) for s in range(3)]
+
+
+@pytest.fixture(scope="module")
+def cabinet(cabinets):
+    return cabinets[0]
+
+
+@pytest.fixture(scope="module")
+def renderer():
+    """Skip (with what to install) where SAPIEN cannot render here."""
+    pytest.importorskip("sapien", reason="the preview renderer needs sapien (pip install sapien==3.0.3)")
+    try:
+        preview._stage()
+    except preview.PreviewUnavailable as exc:
+        pytest.skip(f"no renderer for previews: {exc}")
+    return preview
+
+
+# --- joint poses: no renderer needed -----------------------------------------------------------
+
+
+def test_rest_pose_puts_links_where_metadata_says(cabinet):
+    files = preview._read_object(cabinet)
+    meta = json.loads((cabinet / "metadata.json").read_text())
+    poses = preview._forward_kinematics(files, preview._qpos_for(files, 0.0))
+    for link in meta["links"]:
+        pose = poses[link["name"]]
+        np.testing.assert_allclose(pose[:3, 3], link["origin"], atol=1e-5, err_msg=link["name"])
+        np.testing.assert_allclose(pose[:3, :3], np.eye(3), atol=1e-6, err_msg=link["name"])  # world-aligned
+
+
+def test_joint_fraction_moves_each_joint_along_its_axis(cabinet):
+    files = preview._read_object(cabinet)
+    meta = {j["name"]: j for j in json.loads((cabinet / "metadata.json").read_text())["joints"]}
+    assert files.movable, "a kitchen cabinet has doors or drawers"
+    rest = preview._forward_kinematics(files, preview._qpos_for(files, 0.0))
+    q = preview._qpos_for(files, preview.OPEN_FRACTION)
+    opened = preview._forward_kinematics(files, q)
+    for j in files.movable:
+        m = meta[j.name]
+        if j.type == "continuous":
+            assert q[j.name] == pytest.approx(math.pi / 2)
+            continue
+        if m["lower"] == 0:
+            assert q[j.name] == pytest.approx(0.7 * m["upper"])
+        assert m["lower"] - 1e-9 <= q[j.name] <= m["upper"] + 1e-9
+        if j.type == "prismatic":
+            shift = opened[j.child][:3, 3] - rest[j.child][:3, 3]
+            np.testing.assert_allclose(shift, np.asarray(m["axis"]) * q[j.name], atol=1e-6)
+        else:  # revolute: the pivot stays put, the link turns about the world axis by q
+            rot = opened[j.child][:3, :3] @ rest[j.child][:3, :3].T
+            axis = np.asarray(m["axis"], float)
+            angle = math.acos(np.clip((np.trace(rot) - 1) / 2, -1, 1))
+            assert angle == pytest.approx(abs(q[j.name]), abs=1e-6)
+            np.testing.assert_allclose(rot @ axis, axis, atol=1e-6)
+
+
+def test_missing_renderer_names_what_to_install(monkeypatch, cabinet):
+    monkeypatch.setattr(preview, "_STATE", {})
+    monkeypatch.setitem(sys.modules, "sapien", None)  # import sapien -> ImportError
+    with pytest.raises(preview.PreviewUnavailable) as err:
+        preview.render_object(cabinet, size=64)
+    assert "mesa-vulkan-drivers" in str(err.value) and "sapien" in str(err.value)
+
+
+# --- real pictures -------------------------------------------------------------------------------
+
+
+def _non_background(img: np.ndarray, tol: int = 10) -> np.ndarray:
+    return (np.abs(img.astype(int) - preview.BACKGROUND) > tol).any(-1)
+
+
+def test_render_object_is_a_real_picture(renderer, cabinet):
+    img = renderer.render_object(cabinet, size=SIZE)
+    assert img.shape == (SIZE, SIZE, 3) and img.dtype == np.uint8
+    share = _non_background(img).mean()  # object plus its shadow
+    assert 0.10 <= share <= 0.85, share
+    with renderer.ObjectRenderer(cabinet) as r:
+        frame = r.render(SIZE, supersample=1)
+    obj = frame.object_mask
+    assert 0.10 <= obj.mean() <= 0.80, obj.mean()
+    pixels = frame.rgb[obj].astype(float)
+    assert pixels.std(axis=0).mean() > 12, "object pixels are flat: no shading or textures"
+    # textures: fine detail inside the object, not just a few flat shaded faces
+    gray = cv2.cvtColor(frame.rgb, cv2.COLOR_RGB2GRAY).astype(np.float32)
+    lap = np.abs(cv2.Laplacian(gray, cv2.CV_32F))
+    inner = cv2.erode(obj.astype(np.uint8), np.ones((5, 5), np.uint8)).astype(bool)
+    assert float(np.mean(lap[inner] > 4)) > 0.05, "no texture detail on the object"
+    # a shadow or contact darkening on the ground
+    assert (frame.shadow[~obj] < 0.8).mean() > 0.01
+
+
+def test_opened_picture_differs_where_the_doors_and_drawers_are(renderer, cabinet):
+    with renderer.ObjectRenderer(cabinet) as r:
+        rest_q = preview._qpos_for(r.files, 0.0)
+        open_q = preview._qpos_for(r.files, preview.OPEN_FRACTION)
+        cam = r.camera_for(rest_q, open_q)
+        r.set_qpos(rest_q)
+        a = r.render(SIZE, cam)
+        r.set_qpos(open_q)
+        b = r.render(SIZE, cam)
+        moving = {j.child for j in r.files.movable}
+    region = np.zeros(a.labels.shape, bool)
+    for name in moving:
+        region |= a.link_mask(name) | b.link_mask(name)
+    assert region.mean() > 0.02, "doors and drawers cover almost nothing"
+    diff = np.abs(a.rgb.astype(int) - b.rgb.astype(int)).sum(-1)
+    inside, outside = diff[region], diff[~region]
+    assert (inside > 30).mean() > 0.3, (inside > 30).mean()
+    assert inside.mean() > 3 * max(outside.mean(), 1.0), (inside.mean(), outside.mean())
+    # the rest of the cabinet stays where it was
+    still = a.object_mask & b.object_mask & ~region
+    assert np.array_equal(a.labels[still], b.labels[still])
+
+
+def test_render_object_joint_fraction_changes_the_picture(renderer, cabinet):
+    a = renderer.render_object(cabinet, size=128, joint_fraction=0.0)
+    b = renderer.render_object(cabinet, size=128, joint_fraction=1.0)
+    assert np.abs(a.astype(int) - b.astype(int)).mean() > 5
+
+
+def test_contact_sheet_grid(renderer, cabinets, tmp_path):
+    out = renderer.contact_sheet(cabinets, tmp_path / "sheet.png", cell=128)
+    sheet = cv2.imread(str(out))
+    assert sheet.shape == (2 * 128, 2 * 128, 3)  # 3 objects -> 2 columns x 2 rows
+    band = preview._caption_height(128)
+    for i in range(3):
+        y, x = divmod(i, 2)
+        cell = sheet[y * 128:(y + 1) * 128, x * 128:(x + 1) * 128]
+        caption = cell[-band:]
+        assert (caption < 120).any(), f"cell {i} has no caption text"
+        assert _non_background(cell[:-band, :, ::-1]).mean() > 0.05, f"cell {i} is empty"
+    assert (sheet[128:, 128:] == 255).all(), "the unused cell stays blank"
+
+
+def test_preview_writes_png_and_sweep(renderer, cabinet, tmp_path):
+    from PIL import Image
+
+    written = renderer.preview(cabinet, tmp_path / "pv", size=128)
+    assert set(written) == {"preview", "sweep"}
+    png = cv2.imread(str(written["preview"]))
+    band = preview._caption_height(128)
+    assert png.shape[0] == 128 + band and png.shape[1] >= 2 * 128
+    left, right = png[:128, :128], png[:128, -128:]
+    assert np.abs(left.astype(int) - right.astype(int)).mean() > 3, "opened panel looks like the rest panel"
+    gif = Image.open(written["sweep"])
+    plan = preview._sweep_plan(preview._read_object(cabinet))
+    assert gif.n_frames == len(plan) <= preview.SWEEP_MAX_FRAMES
+    assert [q for _, q in plan][0] != [q for _, q in plan][-1]
+    assert gif.size == (preview.SWEEP_SIZE, preview.SWEEP_SIZE + preview._caption_height(preview.SWEEP_SIZE))
+
+
+def test_command_line(renderer, cabinets, tmp_path):
+    ap = argparse.ArgumentParser()
+    preview.add_arguments(ap)
+    root = cabinets[0].parent
+    assert preview.main(ap.parse_args(["--sheet", str(root), "--out", str(tmp_path / "s.png"), "--size", "96"])) == 0
+    assert cv2.imread(str(tmp_path / "s.png")).shape == (2 * 96, 2 * 96, 3)
+    assert preview.main(ap.parse_args([str(cabinets[1]), "--out", str(tmp_path / "p"), "--size", "96"])) == 0
+    assert (tmp_path / "p" / cabinets[1].name / "preview.png").is_file()
+    assert (tmp_path / "p" / cabinets[1].name / "sweep.gif").is_file()
+    assert preview.main(ap.parse_args([])) == 2
