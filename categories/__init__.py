@@ -13,6 +13,8 @@ from types import ModuleType
 
 from . import (
     beverage_fridge,
+    cocktail_table,
+    dining_table,
     dishwasher,
     door,
     kitchen_cabinet,
@@ -39,4 +41,6 @@ CATEGORIES: dict[str, ModuleType] = {
     "door": door,
     "window": window,
     "storage_rack": storage_rack,
+    "cocktail_table": cocktail_table,
+    "dining_table": dining_table,
 }

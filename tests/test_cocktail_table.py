@@ -1,0 +1,157 @@
+"""The cocktail_table category: parts, joints, clearances at every joint state, overrides, seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import cocktail_table as ct
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(8)
+TOL = 1e-7  # m^3 of overlap tolerated between two parts
+
+
+def make(seed, **overrides):
+    r = streams("cocktail_table", seed)
+    p = ct.SCHEMA.sample(r["params"], overrides)
+    bp = ct.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def pose(joint, qs):
+    """4x4 world pose of the child after each DoF of ``joint`` moved by ``qs`` (parent side first)."""
+    m = np.eye(4)
+    for dof, q in zip(joint.dofs, qs):
+        step = np.eye(4)
+        if dof.type == "prismatic":
+            step[:3, 3] = np.asarray(dof.axis) * q
+        else:
+            o = np.asarray(dof.origin)
+            r = rotation(dof.axis, q)
+            step[:3, :3], step[:3, 3] = r, o - r @ o
+        m = m @ step
+    return m
+
+
+def states(joint):
+    ends = [(d.lower, d.upper) for d in joint.dofs]
+    out = []
+    for f in (0.0, 0.5, 1.0):
+        out.append([lo + f * (hi - lo) for lo, hi in ends])
+    if len(ends) == 2:
+        out += [[ends[0][1], ends[1][0]], [ends[0][0], ends[1][1]]]
+    return out
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_model(seed):
+    p, bp = make(seed)
+    assert bp.root == "body" and set(bp.parts) == {"body", "top"}
+    assert bp.parts["top"].label in ("top", "lid")
+    assert bp.parts["body"].label in ("body", "stand")
+    for part in bp.parts.values():
+        assert all(pc.convex for pc in part.pieces)
+    assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
+    links, _ = build_model(bp, {k: 800.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+    lo, hi = bp.bounds()
+    assert lo[2] == pytest.approx(0.0, abs=1e-9)
+    assert hi[2] == pytest.approx(p["height"], abs=1e-6)
+    assert hi[0] - lo[0] == pytest.approx(p["width"], rel=1e-3)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_matches_the_support(seed):
+    p, bp = make(seed)
+    (j,) = bp.joints
+    assert j.parent == "body" and j.child == "top"
+    if p["support"] == "pedestal":
+        assert j.kind == "revolute_prismatic"
+        lift, turn = j.dofs
+        assert turn.axis == pytest.approx((0, 0, 1))
+        assert (turn.lower, turn.upper) == (pytest.approx(-p["stand_turn"]), pytest.approx(p["stand_turn"]))
+    else:
+        assert j.kind == "prismatic"
+        lift = j.dofs[0]
+    # every lift rests at its bottom and moves up (gravity holds it at rest)
+    assert lift.lower == 0.0 and 0.03 < lift.upper <= 0.25
+    assert lift.axis[2] > 0.7
+    forward = p["support"] == "legs" and p["has_lift_top"] and p["has_lift_forward"]
+    assert (lift.axis[0] > 0.25) == forward and lift.axis[1] == 0.0
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_top_never_enters_the_body_nor_the_ground(seed):
+    _, bp = make(seed)
+    (j,) = bp.joints
+    body, top = bp.parts["body"], bp.parts["top"]
+    for qs in states(j):
+        m = pose(j, qs)
+        assert overlap(top, m, body, np.eye(4)) < TOL, qs
+        pts = np.vstack([pc.vertices for pc in top.pieces]) @ m[:3, :3].T + m[:3, 3]
+        assert pts[:, 2].min() >= -1e-9
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_clear_at_rest(seed):
+    """The moving top keeps a clearance from its stand at rest (1 mm in every direction)."""
+    _, bp = make(seed)
+    body, top = bp.parts["body"], bp.parts["top"]
+    for d in np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) * 0.001:
+        m = np.eye(4)
+        m[:3, 3] = d
+        assert overlap(top, m, body, np.eye(4)) < TOL
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(1, support="legs", has_lift_top=True, has_lift_forward=False, top_shape="square")
+    j = bp.joints[0]
+    assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert bp.parts["top"].label == "lid"
+    _, bp = make(1, support="legs", has_lift_top=True, has_lift_forward=True, lift_forward_ratio=0.5)
+    assert bp.joints[0].dofs[0].axis == pytest.approx(np.array([0.5, 0, 1]) / math.hypot(0.5, 1))
+    _, bp = make(1, support="legs", has_lift_top=False, top_shape="round", leg_count=3, has_shelf=True)
+    assert bp.joints[0].kind == "prismatic" and bp.parts["top"].label == "top"
+    posts = [pc for pc in bp.parts["top"].pieces if pc.material == "metal"]
+    assert len(posts) == 3
+    _, bp = make(1, support="pedestal")
+    assert bp.joints[0].kind == "revolute_prismatic" and bp.parts["body"].label == "stand"
+    p, _ = make(1, width=0.8, height=0.5)
+    assert (p["width"], p["height"]) == (0.8, 0.5)
+
+
+@pytest.mark.parametrize("bad", [{"width": 1.2}, {"height": 0.3}, {"leg_count": 5}, {"support": "wall"},
+                                 {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_vary():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("support", "top_shape", "has_lift_top", "top_finish"):
+        assert len({p[name] for p in params}) > 1, name

@@ -1,0 +1,174 @@
+"""The dining_table category: parts, joints, clearances at every joint state, overrides, seeds."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import dining_table as dt
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(6)
+TOL = 1e-7  # m^3 of overlap tolerated between two parts
+EYE = np.eye(4)
+
+
+def make(seed, **overrides):
+    r = streams("dining_table", seed)
+    p = dt.SCHEMA.sample(r["params"], overrides)
+    bp = dt.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def shifted(j, f):
+    d = j.dofs[0]
+    m = np.eye(4)
+    m[:3, 3] = np.asarray(d.axis) * (d.lower + f * (d.upper - d.lower))
+    return m
+
+
+def poses(bp, moving, f):
+    """Pose of every part with the joints in ``moving`` at fraction ``f`` (all simple prismatic)."""
+    out = {n: EYE for n in bp.parts}
+    for j in moving:
+        out[j.child] = shifted(j, f)
+    return out
+
+
+def clash(bp, pose):
+    names = list(bp.parts)
+    fixed = {j.child for j in bp.joints if not j.movable}
+    bad = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if {a, b} <= {"body"} | fixed:
+                continue  # welded
+            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
+            if v >= TOL:
+                bad.append((a, b, v))
+    return bad
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_model(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    labels = {part.label for part in bp.parts.values()}
+    assert labels <= {"body", "top", "leaf", "drawer", "leg"}
+    assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
+    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
+    links, _ = build_model(bp, {k: 700.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+    lo, hi = bp.bounds()
+    assert lo[2] == pytest.approx(0.0, abs=1e-9) and hi[2] == pytest.approx(p["height"], abs=1e-6)
+    assert hi[0] - lo[0] == pytest.approx(p["length"], rel=1e-3)
+    assert movable(bp), "every table has a moving part"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_kinds_axes_and_limits(seed):
+    p, bp = make(seed)
+    for j in bp.joints:
+        part = bp.parts[j.child]
+        assert j.parent == "body"
+        if part.label == "leaf":
+            assert j.kind == "fixed"
+            continue
+        assert j.kind == "prismatic"
+        d = j.dofs[0]
+        assert d.lower == 0.0 and d.upper > 0.0
+        if part.label == "top":  # halves slide apart along the long axis
+            assert abs(d.axis[0]) == pytest.approx(1.0)
+            assert d.axis[0] * np.mean([pc.bounds[:, 0].mean() for pc in part.pieces]) > 0
+        elif part.label == "drawer":  # out along the short axis
+            assert abs(d.axis[1]) == pytest.approx(1.0)
+            assert d.axis[1] * d.origin[1] > 0
+            assert any(pc.name == "handle" for pc in part.pieces)
+        else:  # an adjustable leg slides up from its resting bottom
+            assert part.label == "leg" and d.axis == pytest.approx((0, 0, 1))
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_no_overlap_at_rest_and_with_joints_moved(seed):
+    _, bp = make(seed)
+    js = movable(bp)
+    assert clash(bp, poses(bp, [], 0.0)) == []
+    assert clash(bp, poses(bp, js, 1.0)) == []
+    assert clash(bp, poses(bp, js, 0.5)) == []
+    for j in js:
+        assert clash(bp, poses(bp, [j], 1.0)) == [], j.child
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_moving_parts_clear_at_rest(seed):
+    """Each moving part, nudged 1 mm in any direction, still touches nothing."""
+    _, bp = make(seed)
+    for j in movable(bp):
+        for d in np.vstack([np.eye(3), -np.eye(3)]) * 0.001:
+            m = np.eye(4)
+            m[:3, 3] = d
+            for other, part in bp.parts.items():
+                if other != j.child:
+                    assert overlap(bp.parts[j.child], m, part, EYE) < TOL, (j.child, other, d)
+
+
+def test_busy_table_all_mechanisms():
+    over = dict(support="legs", has_extension=True, has_drawers=True, drawer_count=2, drawer_sides="both",
+                has_adjustable_legs=True, length=1.6, width=0.9, apron_height=0.08)
+    _, bp = make(2, **over)
+    labels = [part.label for part in bp.parts.values()]
+    assert labels.count("drawer") == 4 and labels.count("leg") == 4 and labels.count("top") == 2
+    assert labels.count("leaf") == 1
+    js = movable(bp)
+    assert len(js) == 10
+    assert clash(bp, poses(bp, js, 1.0)) == []
+    for j in js:
+        assert clash(bp, poses(bp, [j], 1.0)) == [], j.child
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(3, has_extension=False, has_drawers=True, drawer_count=1, drawer_sides="one",
+                 has_adjustable_legs=False)
+    assert [j.child for j in movable(bp)] == ["drawer_0"]
+    assert "leaf" not in bp.parts
+    # nothing movable asked for: the table still gets its extension
+    _, bp = make(3, has_extension=False, has_drawers=False, has_adjustable_legs=False)
+    assert sorted(j.child for j in movable(bp)) == ["top_back", "top_front"]
+    _, bp = make(3, support="pedestal", has_adjustable_legs=True)
+    assert not any(part.label == "leg" for part in bp.parts.values())
+    p, _ = make(3, length=2.5, top_shape="oval")
+    assert p["length"] == 2.5 and p["top_shape"] == "oval"
+
+
+@pytest.mark.parametrize("bad", [{"length": 3.0}, {"width": 0.5}, {"height": 0.9}, {"drawer_count": 3},
+                                 {"support": "trestle"}, {"chairs": 4}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(4)
+    p2, b = make(4)
+    assert p1 == p2 and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_vary():
+    params = [make(s)[0] for s in range(20)]
+    for name in ("support", "top_shape", "has_extension", "has_drawers", "leg_style"):
+        assert len({p[name] for p in params}) > 1, name
+    counts = [len(movable(make(s)[1])) for s in range(12)]
+    assert min(counts) < max(counts)
