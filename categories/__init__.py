@@ -21,6 +21,7 @@ from . import (
     lamp,
     microwave,
     oven,
+    plate_rack,
     storage_rack,
     tap,
     toilet,
@@ -43,4 +44,5 @@ CATEGORIES: dict[str, ModuleType] = {
     "storage_rack": storage_rack,
     "cocktail_table": cocktail_table,
     "dining_table": dining_table,
+    "plate_rack": plate_rack,
 }

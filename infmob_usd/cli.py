@@ -55,7 +55,8 @@ def _parser() -> argparse.ArgumentParser:
     v.add_argument("--out", help="with --sweep: keep the generated objects in this folder")
     v.add_argument("--texture-size", type=int, default=64, metavar="PX",
                    help="with --sweep: texture size of the generated objects; default 64")
-    v.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="with --sweep: generation workers")
+    v.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+                   help="parallel worker processes (generation with --sweep, and validation); default: all cores")
     v.add_argument("--verbose", "-v", action="store_true", help="print every check, not only failures")
 
     pv = sub.add_parser("preview", help="render thumbnails, joint-sweep GIFs or a contact sheet (CPU, no display)",
@@ -162,7 +163,7 @@ def cmd_validate(args) -> int:
     import shutil
     import tempfile
 
-    from .validate import find_objects, validate_object
+    from .validate import find_objects
     from .validate.files import load_metadata
     from .validate.report import report_json, summary_table
 
@@ -190,8 +191,7 @@ def cmd_validate(args) -> int:
             return _fail(f"no object folders (with metadata.json) under {' '.join(paths)}")
         rows = []
         n_ok = 0
-        for folder in folders:
-            report = validate_object(folder, sim=not args.usd_only, physics=args.sim)
+        for folder, report in _validate_all(folders, not args.usd_only, args.sim, args.workers):
             n_ok += report.ok
             status = "ok  " if report.ok else "FAIL"
             fails = "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
@@ -212,6 +212,23 @@ def cmd_validate(args) -> int:
     finally:
         if tmp:
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _validate_all(folders, sim: bool, physics: bool, workers: int):
+    """``(folder, report)`` in folder order; a process pool when ``workers > 1``."""
+    from functools import partial
+
+    from .validate import validate_object
+
+    check = partial(validate_object, sim=sim, physics=physics)
+    if workers <= 1 or len(folders) <= 1:
+        for folder in folders:
+            yield folder, check(folder)
+        return
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=min(workers, len(folders))) as pool:
+        yield from zip(folders, pool.map(check, folders, chunksize=4))
 
 
 def cmd_stats(args) -> int:

@@ -1,0 +1,288 @@
+"""The plate_rack category: parts, limited_planar plate joints, clearances over the plate's motion, overrides."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import linprog
+from scipy.spatial import ConvexHull
+
+from infmob_usd import physical
+from infmob_usd.categories import plate_rack as pr
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+SEEDS = range(8)
+
+
+def make(seed, **overrides):
+    r = streams("plate_rack", seed)
+    p = pr.SCHEMA.sample(r["params"], overrides)
+    bp = pr.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def plates(bp):
+    return [n for n, part in bp.parts.items() if part.label == "plate"]
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+# -- convex helpers -----------------------------------------------------------------------
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def moved(points, joint, q):
+    """Points of a plate with its limited_planar DoFs at ``q`` (lift, slide, turn), chain order."""
+    lift, slide, turn = joint.dofs
+    o = np.asarray(turn.origin)
+    pts = (points - o) @ rotation(turn.axis, q[2]).T + o
+    return pts + np.asarray(lift.axis) * q[0] + np.asarray(slide.axis) * q[1]
+
+
+def hulls(part, joint=None, q=None):
+    out = [c for piece in part.pieces for c in piece.convex]
+    return [moved(c, joint, q) for c in out] if joint is not None else out
+
+
+def _eq(points):
+    return ConvexHull(points).equations  # n.x + d <= 0 inside, |n| = 1
+
+
+def depth(a, b, eq_a=None, eq_b=None):
+    """Radius of the largest ball inside both hulls (<= 0: disjoint; then minus ~half their distance)."""
+    lo, hi = np.maximum(a.min(0), b.min(0)), np.minimum(a.max(0), b.max(0))
+    if (lo - hi > 0.01).any():
+        return -0.005
+    eq = np.vstack([_eq(a) if eq_a is None else eq_a, _eq(b) if eq_b is None else eq_b])
+    res = linprog([0, 0, 0, -1], A_ub=np.c_[eq[:, :3], np.ones(len(eq))], b_ub=-eq[:, 3],
+                  bounds=[(None, None)] * 3 + [(None, 1.0)], method="highs")
+    assert res.status == 0
+    return -res.fun
+
+
+def max_depth(hs_a, hs_b):
+    """Deepest overlap between two lists of hulls (-1 if no boxes meet); ``hs_b`` may be a :class:`Hulls`."""
+    hs_b = hs_b if isinstance(hs_b, Hulls) else Hulls(hs_b)
+    out = -1.0
+    for a in hs_a:
+        lo, hi = a.min(0), a.max(0)  # only overlaps matter: disjoint boxes cannot overlap
+        near = np.flatnonzero((hi > hs_b.lo).all(1) & (hs_b.hi > lo).all(1))
+        if len(near):
+            eq_a = _eq(a)
+            for k in near:
+                out = max(out, depth(a, hs_b.pts[k], eq_a, hs_b.eq(k)))
+    return out
+
+
+class Hulls:
+    """A fixed list of hulls with their boxes and (lazily) their face equations."""
+
+    def __init__(self, pts):
+        self.pts = list(pts)
+        self.lo = np.array([h.min(0) for h in self.pts]).reshape(-1, 3)
+        self.hi = np.array([h.max(0) for h in self.pts]).reshape(-1, 3)
+        self._eq = {}
+
+    def eq(self, k):
+        if k not in self._eq:
+            self._eq[k] = _eq(self.pts[k])
+        return self._eq[k]
+
+
+def inflate(points, d):
+    """The Minkowski sum with a cube of half-size ``d``: an L-inf offset of a hull."""
+    offs = np.array(list(itertools.product((-d, d), repeat=3)))
+    return (points[:, None, :] + offs[None]).reshape(-1, 3)
+
+
+def states(joint):
+    """Rest, each DoF alone at each limit, all at 50 % and all at 100 % (and at the lower limits)."""
+    lims = [(d.lower, d.upper) for d in joint.dofs]
+    out = [(0.0, 0.0, 0.0)]
+    for k, (lo, hi) in enumerate(lims):
+        for v in (lo, hi):
+            q = [0.0, 0.0, 0.0]
+            q[k] = v
+            out.append(tuple(q))
+    out.append(tuple(0.5 * hi for _, hi in lims))
+    out.append(tuple(hi for _, hi in lims))
+    out.append(tuple(lo for lo, _ in lims))
+    return out
+
+
+# -- parts, labels, materials ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "rack" and bp.parts["rack"].label == "rack"
+    names = plates(bp)
+    assert 1 <= len(names) <= p["slot_count"]
+    assert {part.label for part in bp.parts.values()} == {"rack", "plate"}
+    assert bp.materials["plate"] == bp.materials["plate_alt"] == "ceramic"
+    assert bp.materials["frame"] == {"wood": "wood", "plastic": "plastic", "wire": "chrome"}[p["style"]]
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        for pc in part.pieces:
+            assert pc.convex, f"{part.name}: a piece without collision"
+    # prongs: a pair at each of slot_count + 1 fences, at least prong_height tall
+    prongs = [pc for pc in bp.parts["rack"].pieces if pc.material == "prong"]
+    xs = {round(float(pc.bounds.mean(0)[0]), 4) for pc in prongs}
+    assert len(xs) == p["slot_count"] + 1
+    top = max(pc.bounds[1, 2] for pc in prongs)
+    base = min(pc.bounds[0, 2] for pc in prongs)
+    assert top - base >= p["prong_height"] - 1e-9
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_plates_are_upright_dishes_of_the_given_radius(seed):
+    p, bp = make(seed)
+    R = p["plate_radius"]
+    for name in plates(bp):
+        (piece,) = bp.parts[name].pieces
+        size = piece.bounds[1] - piece.bounds[0]
+        assert size[1] == pytest.approx(2 * R, rel=0.01) and size[2] == pytest.approx(2 * R, rel=0.01)
+        assert size[0] < 0.25 * R  # on edge: thin along X
+        assert len(piece.vertices) > 1000  # a smooth profile of revolution
+        # a real dish: thinner than its height (hollow on top), ceramic mass of a plate
+        vol = piece.volume()
+        assert vol < 0.5 * math.pi * R * R * size[0]
+        assert 0.1 < 2400 * vol < 1.5
+
+
+# -- joints ------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_plate_joints(seed):
+    p, bp = make(seed)
+    for name in plates(bp):
+        j = by_child(bp, name)
+        assert j.kind == "limited_planar" and j.parent == "rack"
+        lift, slide, turn = j.dofs
+        assert lift.axis == pytest.approx((0, 0, 1)) and (lift.lower, lift.upper) == (0.0, pytest.approx(0.1))
+        assert slide.axis == pytest.approx((0, 1, 0))
+        assert slide.lower == pytest.approx(-slide.upper) and slide.upper == pytest.approx(0.1)
+        assert abs(turn.axis[0]) == pytest.approx(1.0) and turn.lower < 0 < turn.upper
+        # the turn is about the plate's own axis through its centre: the COM stays on it
+        piece = bp.parts[name].pieces[0]
+        centre = piece.bounds.mean(0)
+        assert turn.origin[1:] == pytest.approx(tuple(centre[1:]), abs=1e-6)
+        assert lift.origin == slide.origin == turn.origin
+
+
+# -- clearances ---------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_plates_clear_at_rest(seed):
+    _, bp = make(seed)
+    for name in plates(bp):
+        rest = [h for n, part in bp.parts.items() if n != name for h in hulls(part)]
+        grown = [inflate(h, 0.0015) for h in hulls(bp.parts[name])]
+        assert max_depth(grown, rest) < 1e-7, f"{name} is within 1.5 mm of another part"
+
+
+@pytest.mark.parametrize("seed", [0, 1, 3])
+def test_plates_never_enter_prongs_base_or_each_other(seed):
+    _, bp = make(seed)
+    rack = Hulls(hulls(bp.parts["rack"]))
+    names = plates(bp)
+    joints = {n: by_child(bp, n) for n in names}
+    for name in names:
+        for q in states(joints[name]):
+            assert max_depth(hulls(bp.parts[name], joints[name], q), rack) < 5e-4, f"{name} at {q}"
+    for a, b in zip(names, names[1:]):  # neighbouring plates, both moved together
+        for qa, qb in itertools.product(states(joints[a])[-3:], repeat=2):
+            ha = hulls(bp.parts[a], joints[a], qa)
+            hb = hulls(bp.parts[b], joints[b], qb)
+            assert max_depth(ha, hb) < 5e-4
+
+
+@pytest.mark.parametrize("style", ["wood", "plastic", "wire"])
+def test_each_style_sweeps_clear(style):
+    _, bp = make(5, style=style, slot_count=3, plate_count=3, plate_radius=0.15, prong_height=0.08)
+    rack = Hulls(hulls(bp.parts["rack"]))
+    for name in plates(bp):
+        j = by_child(bp, name)
+        for q in states(j):
+            assert max_depth(hulls(bp.parts[name], j, q), rack) < 5e-4, f"{style} {name} at {q}"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground_and_plates_above_the_support(seed):
+    _, bp = make(seed)
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    for name in plates(bp):
+        j = by_child(bp, name)
+        for q in states(j):
+            pts = np.vstack([moved(pc.vertices, j, q) for pc in bp.parts[name].pieces])
+            assert pts[:, 2].min() > 0.005
+
+
+# -- overrides, growth, determinism ---------------------------------------------------------
+
+
+def test_overrides():
+    p, bp = make(2, slot_count=7, plate_count=7)
+    assert len(plates(bp)) == 7
+    p, bp = make(2, slot_count=3, plate_count=7)  # capped at the slot count
+    assert len(plates(bp)) == 3
+    p, bp = make(2, slot_count=5, plate_count=1, style="wire", plate_set="mixed")
+    assert len(plates(bp)) == 1 and bp.materials["frame"] == "chrome"
+    _, bp = make(4, slot_count=4, plate_count=4, plate_set="mixed")
+    mats = [bp.parts[n].pieces[0].material for n in plates(bp)]
+    assert set(mats) == {"plate", "plate_alt"}
+    _, bp = make(4, style="wood", has_feet=True)
+    assert any(pc.material == "feet" for pc in bp.parts["rack"].pieces)
+    _, bp = make(4, style="wood", has_feet=False)
+    assert not any(pc.material == "feet" for pc in bp.parts["rack"].pieces)
+
+
+def test_at_least_one_plate_every_seed():
+    for seed in range(12):
+        p, bp = make(seed)
+        assert 1 <= len(plates(bp)) <= p["slot_count"]
+
+
+@pytest.mark.parametrize("bad", [{"slot_count": 8}, {"slot_count": 2}, {"plate_radius": 0.2},
+                                 {"prong_height": 0.05}, {"style": "steel"}, {"plate_count": 0},
+                                 {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2
+    assert list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_vary():
+    made = [make(s) for s in range(12)]
+    for key in ("style", "slot_count", "plate_set", "has_feet"):
+        assert len({p[key] for p, _ in made}) > 1, key
+    counts = {len(plates(bp)) for _, bp in made}
+    assert len(counts) > 1
