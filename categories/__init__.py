@@ -21,7 +21,9 @@ from . import (
     lamp,
     microwave,
     oven,
+    pan,
     plate_rack,
+    pot,
     storage_rack,
     tap,
     toilet,
@@ -45,4 +47,6 @@ CATEGORIES: dict[str, ModuleType] = {
     "cocktail_table": cocktail_table,
     "dining_table": dining_table,
     "plate_rack": plate_rack,
+    "pot": pot,
+    "pan": pan,
 }

@@ -151,11 +151,17 @@ class Piece:
         return np.take_along_axis(tri, idx, axis=2) / UV_TILE
 
     def hulls(self) -> list[tuple[np.ndarray, np.ndarray]]:
-        """Collision meshes: ``(vertices (k, 3), faces (f, 3))`` per convex piece, outward."""
+        """Collision meshes: ``(vertices (k, 3), faces (f, 3))`` per convex piece, outward.
+
+        A hull is kept under :data:`MAX_HULL_VERTICES` (PhysX keeps at most 255) by
+        farthest-point sampling of its vertices, which keeps its extremes.
+        """
         if getattr(self, "_hulls", None) is None:
             out = []
             for c in self.convex:
                 h = convex_hull(c)
+                if len(h.vertices) > MAX_HULL_VERTICES:
+                    h = convex_hull(_farthest_points(np.asarray(h.vertices), MAX_HULL_VERTICES - 55))
                 out.append((np.asarray(h.vertices, float), np.asarray(h.faces, np.int64)))
             self._hulls = out
         return self._hulls
@@ -193,6 +199,21 @@ def convex_hull(points: np.ndarray) -> trimesh.Trimesh:
     inward = np.einsum("ij,ij->i", normal, tri[:, 0] - verts.mean(0)) < 0
     faces[inward] = faces[inward][:, ::-1]
     return trimesh.Trimesh(verts, faces, process=False)
+
+
+MAX_HULL_VERTICES = 255
+"""PhysX builds convex meshes of at most 255 vertices."""
+
+
+def _farthest_points(points: np.ndarray, n: int) -> np.ndarray:
+    """``n`` of ``points`` spread out by farthest-point sampling (deterministic: starts at index 0)."""
+    chosen = [0]
+    d = np.linalg.norm(points - points[0], axis=1)
+    for _ in range(n - 1):
+        k = int(np.argmax(d))
+        chosen.append(k)
+        d = np.minimum(d, np.linalg.norm(points - points[k], axis=1))
+    return points[chosen]
 
 
 def from_trimesh(mesh: trimesh.Trimesh, material: str, convex=None, name: str = "") -> Piece:

@@ -25,7 +25,6 @@ def _digest(folder):
 def test_generate_save_validate(category, seed, tmp_path):
     pytest.importorskip("sapien")
     obj = infmob_usd.generate(category, seed=seed, texture_size=64)
-    assert obj.movable_joints, "every category has something that moves"
     assert all(link.label for link in obj.links)
     folder = obj.save(tmp_path)
     report = validate_object(folder, sim=True, physics=True)
@@ -46,3 +45,10 @@ def test_seeds_give_visibly_different_objects():
         sizes = {tuple(infmob_usd.generate(category, seed=s, texture_size=16).bounds().round(3).ravel())
                  for s in range(6)}
         assert len(sizes) == 6, category
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_every_category_moves(category):
+    """Some objects may lack every optional moving part (a pan without its lid), not most."""
+    counts = [len(infmob_usd.generate(category, seed=s, texture_size=16).movable_joints) for s in range(6)]
+    assert sum(c > 0 for c in counts) >= 4, counts

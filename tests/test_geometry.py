@@ -79,3 +79,14 @@ def test_handles_are_named_handle():
                    g.pull_handle([0, 0, 0], [1, 0, 0], [0, 1, 0], 0.2, "h")):
         assert all(p.name == "handle" for p in pieces)
         assert min(p.bounds[0, 0] for p in pieces) >= -1e-9  # stands off the face, never inside it
+
+
+def test_collision_hulls_stay_within_physx_vertex_limit():
+    ball = g.sphere([0, 0, 0], 0.1, "m")
+    rng = np.random.default_rng(0)
+    pts = rng.normal(size=(3000, 3))
+    ball.convex = [pts / np.linalg.norm(pts, axis=1, keepdims=True) * 0.1]  # ~3000 hull vertices
+    (v, f), = ball.hulls()
+    assert len(v) <= g.MAX_HULL_VERTICES
+    assert trimesh.Trimesh(v, f).is_watertight
+    assert np.ptp(v, axis=0).min() > 0.19  # still spans the sphere

@@ -1,0 +1,125 @@
+"""The pan category, checked on its blueprint (world space, grounded): parts, joints, clearances."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import pan
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(8)
+
+
+def make(seed, **overrides):
+    r = streams("pan", seed)
+    p = pan.SCHEMA.sample(r["params"], overrides)
+    bp = pan.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def up(dz):
+    m = np.eye(4)
+    m[2, 3] = dz
+    return m
+
+
+def lowest(part, pose=None):
+    pose = np.eye(4) if pose is None else pose
+    pts = np.vstack([pc.vertices for pc in part.pieces])
+    return float((pts @ pose[:3, :3].T + pose[:3, 3])[:, 2].min())
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    want = {"body": "body", "handle": "handle"} | ({"lid": "lid"} if p["has_lid"] else {})
+    assert {n: part.label for n, part in bp.parts.items()} == want
+    assert all(pc.name == "handle" for pc in bp.parts["handle"].pieces)
+    j = next(j for j in bp.joints if j.child == "handle")
+    assert j.kind == "fixed" and j.parent == "body"
+    coating = [pc for pc in bp.parts["body"].pieces if pc.material == "coating"]
+    assert bool(coating) == (p["finish"] == "nonstick")
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        for pc in part.pieces:
+            assert pc.convex and all(len(c) <= 255 for c in pc.convex)
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_shallow_wide_body(seed):
+    p, bp = make(seed)
+    lo, hi = np.array([pc.bounds for pc in bp.parts["body"].pieces]).transpose(1, 0, 2)
+    R = p["radius"]
+    assert (hi.max(0) - lo.min(0))[2] == pytest.approx(p["depth_ratio"] * R, abs=1e-6)
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    floor = bp.parts["body"].pieces[0].bounds  # the bottom
+    assert floor[1, 0] >= 0.58 * R  # a wide flat floor, not a wok
+    hs = np.vstack([pc.vertices for pc in bp.parts["handle"].pieces])
+    assert hs[:, 0].max() - R > 0.14 and hs[:, 2].min() > 0
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_lid_joint_and_clearance(seed):
+    _, bp = make(seed, has_lid=True)
+    j = next(j for j in bp.joints if j.child == "lid")
+    assert j.kind == "prismatic" and j.parent == "body" and j.role == "lid"
+    (d,) = j.dofs
+    assert d.axis == pytest.approx((0, 0, 1)) and (d.lower, d.upper) == (0.0, pytest.approx(0.02))
+    rim = max(pc.bounds[1, 2] for pc in bp.parts["body"].pieces)
+    assert 0.001 <= lowest(bp.parts["lid"]) - rim <= 0.004
+    lid = bp.parts["lid"]
+    assert overlap(lid, np.eye(4), bp.parts["body"], np.eye(4), pad=0.0015) == 0.0
+    for dz in (0.0, 0.01, 0.02):
+        for other in ("body", "handle"):
+            assert overlap(lid, up(dz), bp.parts[other], np.eye(4)) < 1e-9
+    assert overlap(lid, np.eye(4), bp.parts["handle"], np.eye(4), pad=0.0015) == 0.0
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(1, has_lid=False)
+    assert set(bp.parts) == {"body", "handle"} and not any(j.movable for j in bp.joints)
+    _, a = make(1, has_hole=True)
+    _, b = make(1, has_hole=False)
+    assert len(a.parts["handle"].pieces) > 10 > len(b.parts["handle"].pieces)
+    p, bp = make(1, finish="cast_iron", handle_finish="wood")
+    assert all(pc.material == "body" for pc in bp.parts["handle"].pieces)
+    _, bp = make(1, finish="steel", handle_finish="wood")
+    assert bp.materials["handle"] == "wood"
+    assert all(pc.material == "handle" for pc in bp.parts["handle"].pieces)
+
+
+@pytest.mark.parametrize("bad", [{"radius": 0.2}, {"depth_ratio": 1.0}, {"finish": "gold"},
+                                 {"has_lid": "maybe"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_shallowest_pan_with_thick_handle():
+    _, bp = make(0, radius=0.1, depth_ratio=0.3, handle_thickness=0.017, bead=0.0028, has_lid=True)
+    hs = np.vstack([pc.vertices for pc in bp.parts["handle"].pieces])
+    assert hs[:, 2].min() > 0
+    assert overlap(bp.parts["lid"], np.eye(4), bp.parts["handle"], np.eye(4), pad=0.0015) == 0.0
+
+
+def test_same_seed_same_object_and_variety():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+    params = [make(s)[0] for s in range(20)]
+    for name in ("finish", "has_lid", "has_hole", "lid_finish"):
+        assert len({q[name] for q in params}) > 1, name

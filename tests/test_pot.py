@@ -1,0 +1,149 @@
+"""The pot category, checked on its blueprint (world space, grounded): parts, joints, clearances."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import pot
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(8)
+
+
+def make(seed, **overrides):
+    r = streams("pot", seed)
+    p = pot.SCHEMA.sample(r["params"], overrides)
+    bp = pot.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def lift(dz, turn=0.0):
+    c, s = math.cos(turn), math.sin(turn)
+    m = np.eye(4)
+    m[:2, :2] = [[c, -s], [s, c]]
+    m[2, 3] = dz
+    return m
+
+
+def lowest(part, pose=None):
+    pose = np.eye(4) if pose is None else pose
+    pts = np.vstack([pc.vertices for pc in part.pieces])
+    return float((pts @ pose[:3, :3].T + pose[:3, 3])[:, 2].min())
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "body"
+    assert {n: part.label for n, part in bp.parts.items()} == {"body": "body", "lid": "lid"}
+    handles = [pc for pc in bp.parts["body"].pieces if pc.name == "handle"]
+    assert handles, "the body carries its handles"
+    assert any(pc.name == "handle" for pc in bp.parts["lid"].pieces), "lid knob or loop"
+    assert bp.materials["body"] == p["body_finish"]
+    if p["lid_finish"] == "glass":
+        assert any(pc.material == "glass" for pc in bp.parts["lid"].pieces)
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        for pc in part.pieces:
+            assert pc.convex and all(len(c) <= 255 for c in pc.convex)
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_size_and_hollow(seed):
+    p, bp = make(seed)
+    lo, hi = np.array([pc.bounds for pc in bp.parts["body"].pieces if pc.name != "handle"]).transpose(1, 0, 2)
+    size = hi.max(0) - lo.min(0)
+    R = p["radius"]
+    assert size[2] == pytest.approx(p["depth_ratio"] * R, abs=1e-6)
+    assert R < size[0] / 2 < R + 0.01
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    # hollow: no collision hull of the body reaches the axis above the bottom
+    for pc in bp.parts["body"].pieces:
+        for c in pc.convex:
+            if c[:, 2].min() > 0.02:
+                assert np.linalg.norm(c[:, :2], axis=1).max() > 0.5 * R
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_lid_joint(seed):
+    _, bp = make(seed)
+    (j,) = [j for j in bp.joints if j.movable]
+    assert j.kind == "continuous_prismatic" and (j.parent, j.child) == ("body", "lid") and j.role == "lid"
+    slide, turn = j.dofs
+    assert slide.axis == pytest.approx((0, 0, 1)) and turn.axis == pytest.approx((0, 0, 1))
+    assert (slide.lower, slide.upper) == (0.0, pytest.approx(0.03))
+    assert turn.origin[:2] == pytest.approx((0, 0)) and turn.type == "continuous"
+    # the lid rests just above the rim (gravity holds it on its lower stop)
+    rim = max(pc.bounds[1, 2] for pc in bp.parts["body"].pieces if pc.name != "handle")
+    assert 0.001 <= lowest(bp.parts["lid"]) - rim <= 0.004
+    assert slide.origin[2] == pytest.approx(lowest(bp.parts["lid"]), abs=1e-6)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_lid_is_clear_along_its_motion(seed):
+    _, bp = make(seed)
+    body, lid = bp.parts["body"], bp.parts["lid"]
+    # clear at rest with the 2 mm gap, and at every lift and turn
+    assert overlap(lid, np.eye(4), body, np.eye(4), pad=0.0015) == 0.0
+    for dz in (0.0, 0.01, 0.02, 0.03):
+        for turn in (0.0, 1.3, -2.6):
+            assert overlap(lid, lift(dz, turn), body, np.eye(4)) < 1e-9
+            assert lowest(lid, lift(dz, turn)) > 0
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(2, handle_layout="long_handle")
+    xs = np.vstack([pc.vertices for pc in bp.parts["body"].pieces if pc.name == "handle"])
+    assert xs[:, 0].min() > 0 and xs[:, 0].max() > 0.2  # one long handle toward +X
+    _, bp = make(2, handle_layout="side_handles")
+    ys = np.vstack([pc.vertices for pc in bp.parts["body"].pieces if pc.name == "handle"])
+    assert ys[:, 1].min() < 0 < ys[:, 1].max()
+    _, bp = make(2, lid_handle="loop", lid_finish="glass")
+    assert sum(pc.name == "handle" for pc in bp.parts["lid"].pieces) == 3
+    assert bp.materials["glass"].startswith("glass")
+    p, bp = make(2, radius=0.1, depth_ratio=2.0)
+    assert bp.bounds()[1, 2] > 0.2
+
+
+@pytest.mark.parametrize("bad", [{"radius": 0.3}, {"depth_ratio": 0.2}, {"handle_layout": "none"},
+                                 {"body_finish": "wood"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_handles_stay_below_the_rim_and_above_the_ground():
+    for layout in ("side_handles", "long_handle"):
+        for seed in range(6):
+            _, bp = make(seed, handle_layout=layout, radius=0.08, depth_ratio=0.6)
+            rim_bottom = max(pc.bounds[1, 2] for pc in bp.parts["body"].pieces if pc.name != "handle") - 0.006
+            hs = [pc for pc in bp.parts["body"].pieces if pc.name == "handle"]
+            lid_r = max(np.linalg.norm(np.vstack([pc.vertices for pc in bp.parts["lid"].pieces])[:, :2], axis=1))
+            for pc in hs:
+                near = np.linalg.norm(pc.vertices[:, :2], axis=1) <= lid_r + 0.005
+                assert (pc.vertices[near, 2] < rim_bottom + 0.0001).all()
+                assert pc.vertices[:, 2].min() > 0
+
+
+def test_same_seed_same_object_and_variety():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+    params = [make(s)[0] for s in range(20)]
+    for name in ("handle_layout", "lid_handle", "body_finish", "lid_finish"):
+        assert len({q[name] for q in params}) > 1, name
