@@ -17,13 +17,13 @@ Inside there are either 3-5 racks (wire racks with a wooden or metal front trim,
 glass shelves in a trim) that slide out along +X on ledge rails moulded into the
 liner, or a fixed divider plate that splits the cavity into two zones.
 
-Collision note: every rack can slide out on its own while the door stays shut
-(the validators test each joint alone at its limits, and a rack reaches through
-the door's closed position). The glass pane therefore carries no collision shape
-(it is decoration); the door frame, which lies outside the cavity opening, does.
-The racks are kept far enough from the hinge-side wall that the hinge-side frame
-stile, which swings through ``hypot(frame, door_thickness)`` of the front, never
-touches a rack that is pulled out while the door is half open.
+The door is solid to a robot: the frame, both glass panes and the gasket all collide.
+A rack therefore declares ``requires_open="door"``: it slides out only with the door fully
+open (pi/2), as a user opens the door before pulling a rack; the checks open it first too.
+The open door stands at the hinge side, its inner face ``door_thickness`` (+ the gasket)
+inside the cabinet's side; the racks are kept far enough from the hinge-side wall
+(``hypot(frame, door_thickness)`` + 6 mm of the outer side) that a pulled-out rack never
+meets the open door.
 """
 
 from __future__ import annotations
@@ -127,7 +127,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
 
     # --- interior ----------------------------------------------------------------
     if p["interior"] == "racks":
-        # the racks keep clear of the hinge-side stile's swing (see the module docstring)
+        # the racks keep clear of the open door's hinge-side edge (see the module docstring)
         reach = math.hypot(m_side, ft) + 0.006
         ry = min(-(y0 + reach), cy1 - 0.018)  # rack half width
         n = p["rack_count"]
@@ -146,7 +146,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
                 bp.extend(body, [g.box_between([cx0, ya, z_rail - 0.008], [cx1 - 0.004, yb, z_rail], "liner")])
             travel = p["rack_travel"] * (rx1 - rx0)
             bp.join(J.prismatic(body, name, (rx1, 0.0, z_rail + RACK_GAP), (1, 0, 0), 0.0, travel,
-                                role="slide"))
+                                role="slide", requires_open="door"))
     else:
         zp = cz0 + p["divider_height"] * (cz1 - cz0)
         plate = [
@@ -216,7 +216,7 @@ def _cabinet(p, outer, cavity, zk, zc):
 
 
 def _door(p, box, hole, hinge_left):
-    """Frame (four members, colliding) around a double glass pane (decoration, no collision)."""
+    """Frame (four members) around a double glass pane, and a gasket; all collide."""
     x0, x1, y0, y1, z0, z1 = box
     h0, v0, h1, v1 = hole
     ft = x1 - x0
@@ -225,11 +225,9 @@ def _door(p, box, hole, hinge_left):
     glass = []
     for xg in (x1 - 0.3 * ft, x0 + 0.2 * ft):  # two panes: the insulated glazing
         pane = g.box_between([xg - 0.002, h0 - 0.004, v0 - 0.004], [xg + 0.002, h1 + 0.004, v1 + 0.004], "glass")
-        pane.convex = []  # see the module docstring: racks pass the closed door's glass
         glass.append(pane)
     gasket = g.panel([x0 - 0.0015, y0 + 0.006, z0 + 0.006], [x0, y1 - 0.006, z1 - 0.006], "gasket", "x",
                      holes=[(h0 + 0.004, v0 + 0.004, h1 - 0.004, v1 - 0.004)])
-    gasket.convex = []  # a soft seal, drawn only
     pieces = [frame, *glass, gasket]
     zm = (z0 + z1) / 2
     length = p["handle_length"] * (z1 - z0)

@@ -20,11 +20,10 @@ upper rack, a shallow cutlery tray on top when there are three or more. The lowe
 rack may carry 1-4 cutlery baskets (fixed to it). Every rack runs above the open
 door: its lowest point is higher than the door's inner face when the door lies flat.
 
-Collision note: the validators test each joint alone at its limits, i.e. a rack
-pulled out to full travel while the door stays shut. So the door's collision shape
-is a frame around the racks' cross-section (stiles, a 12 mm bottom strip, the top
-band with the control panel and handle), not its whole leaf; the visual door is
-complete. A simulator therefore lets the racks pass the closed door.
+The door is solid to a robot: its front skin, core and stainless inner skin (and the
+dispenser moulded into it) all collide, over the whole leaf. A rack therefore declares
+``requires_open="door"``: it slides out only with the door fully open (horizontal), as a
+user opens the door before pulling a rack; the checks open it first too.
 """
 
 from __future__ import annotations
@@ -81,7 +80,7 @@ LINER = 0.0015
 SHEET = 0.0008
 CLEAR = 0.0025  # buttons in their fascia holes
 FASCIA = 0.012  # control panel thickness (in front of the door)
-BOTTOM_STRIP = 0.012  # colliding strip of the door below the racks' cross-section
+DISPENSER = 0.003  # detergent dispenser standing proud of the door's inner skin
 DOOR_ANGLE = math.pi / 2
 
 
@@ -126,15 +125,14 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     if handle and not ctrl:
         band = 0.07
     z_use1 = min(cz1 - 0.032, zt - band - 0.01)  # racks' highest point: under the ceiling nozzle
-    # lowest point of every rack: above the open door's inner face and its bottom strip's swing,
+    # lowest point of every rack: above the open (flat) door's inner face and its dispenser,
     # and above the spray arm
-    z_use0 = max(zh + math.hypot(BOTTOM_STRIP, ft) + 0.012, cz0 + 0.05)
+    z_use0 = max(zh + ft + DISPENSER + 0.012, cz0 + 0.05)
 
     body = bp.add("body", "body", _cabinet(p, (xb0, xb1, y0, y1, zf, H), (cx0, cx1, cy0, cy1, cz0, cz1), zh))
 
     # --- door ---------------------------------------------------------------------
-    hole = (cy0, zh + BOTTOM_STRIP, cy1, z_use1 + 0.006)
-    door = _door(p, (xf - ft, xf, y0, y1, zh, zt), hole)
+    door = _door((xf - ft, xf, y0, y1, zh, zt))
     if handle:
         zh_handle = zt - band + 0.035 if ctrl else zt - 0.035
         door += _handle(p, xf + (FASCIA if ctrl else 0.0), W, zh_handle)
@@ -164,7 +162,8 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
             ya, yb = sorted((s * (cy1 - 0.013), s * (cy1 + LINER)))
             bp.extend(body, [g.box_between([cx0 + 0.03, ya, zr - 0.01], [cx1 - 0.004, yb, zr], "tub")])
         travel = p["rack_travel"] * (rx1 - rx0)
-        bp.join(J.prismatic(body, name, (rx1, 0.0, za), (1, 0, 0), 0.0, travel, role="slide"))
+        bp.join(J.prismatic(body, name, (rx1, 0.0, za), (1, 0, 0), 0.0, travel, role="slide",
+                            requires_open="door"))
         if k == 0 and p["has_baskets"] and not tray:
             _baskets(bp, name, p, (rx0, rx1), cy1 - 0.02, za, top)
     return bp
@@ -210,20 +209,16 @@ def _cabinet(p, outer, cavity, zh):
     return pieces
 
 
-def _door(p, box, hole):
-    """Front skin, inner core and stainless inner skin; collision is a frame around ``hole``."""
+def _door(box):
+    """Front skin, inner core and stainless inner skin, each colliding over the whole leaf."""
     x0, x1, y0, y1, z0, z1 = box
     s = 0.0015
-    frame = g.panel([x0, y0, z0], [x1, y1, z1], "door_inner", "x", holes=[hole])
     front = _sheet(g.box_between([x1 - s, y0, z0], [x1, y1, z1], "body"))
     core = _sheet(g.box_between([x0 + s, y0, z0], [x1 - s, y1, z1], "door_inner"), 0.002)
     inner = _sheet(g.box_between([x0, y0 + 0.01, z0 + 0.01], [x0 + s, y1 - 0.01, z1 - 0.01], "tub"))
-    front.convex, inner.convex = [], []
-    core.convex = frame.convex  # see the module docstring
-    # a detergent dispenser moulded into the inner skin (drawn only)
+    # a detergent dispenser moulded into the inner skin
     yc, zc = 0.15 * (y1 - y0), z0 + 0.62 * (z1 - z0)
-    dispenser = g.box_between([x0 - 0.003, yc - 0.06, zc - 0.04], [x0, yc + 0.06, zc + 0.04], "door_inner")
-    dispenser.convex = []
+    dispenser = g.box_between([x0 - DISPENSER, yc - 0.06, zc - 0.04], [x0, yc + 0.06, zc + 0.04], "door_inner")
     return [front, core, inner, dispenser]
 
 

@@ -15,17 +15,19 @@ tube), so gravity presses it shut against its closed limit.
 
 The body is a sheet casing (sides, back, bottom, top or cooktop), a front frame that is a panel
 with the cavity opening cut through it, and a cavity liner of five enamel walls, so the cavity
-stays hollow. Wire racks rest on side rails (2 mm above them) and slide out along +X; their
-travel is capped so that with every joint at 50 % (door at 45 degrees) a rack still passes over
-the door's inner face. With the default ``rack_stop=door`` a rack moves only until it would
-touch the closed door (~5 cm: a single joint moved alone, the door shut, must stay free);
-``rack_stop=rails`` gives the full pull-out, which only an open door allows. The control panel
-carries knobs (continuous, or revolute +-pi/4, about the panel normal +X, symmetric about their
-axis so their centre of mass is on it) and optional push buttons (pressed along -X). A range's
-cooktop has burners and optional cast grates side by side, each on a ``limited_floating``
-joint: x 0..``grate_slide`` D forward, y +-6 mm, z 0..lift up (gravity holds them on the
-cooktop, their lower z limit). Grates start in front of the knobs and
-their feet run along their side edges, clear of the burners, so they slide off freely.
+stays hollow. Wire racks rest on side rails (2 mm above them) and slide out along +X by
+``rack_travel`` of their depth: their real pull-out, through the door's opening. The door is
+solid (glass, skins and frame all collide), so a rack's joint declares
+``requires_open="door"``: it moves only with the door fully open (lying flat, its inner face
+well below the lowest rack), which the checks and a user honour by opening the door first.
+The drawer under the door and the cooktop grates are not behind the door and move freely.
+
+The control panel carries knobs (continuous, or revolute +-pi/4, about the panel normal +X,
+symmetric about their axis so their centre of mass is on it) and optional push buttons
+(pressed along -X). A range's cooktop has burners and optional cast grates side by side, each
+on a ``limited_floating`` joint: x 0..``grate_slide`` D forward, y +-6 mm, z 0..lift up
+(gravity holds them on the cooktop, their lower z limit). Grates start in front of the knobs
+and their feet run along their side edges, clear of the burners, so they slide off freely.
 """
 
 from __future__ import annotations
@@ -69,11 +71,8 @@ SCHEMA = Schema((
     Float("drawer_height", "storage drawer front height", "m", 0.1, 0.16),
     Float("drawer_travel", "drawer opening as a fraction of its depth", "", 0.55, 0.75),
     Int("rack_count", "wire racks", "", 2, 4),
-    Float("rack_travel", "rack pull-out as a fraction of its depth (lower racks may stop earlier)",
+    Float("rack_travel", "rack pull-out as a fraction of its depth (the door must be open)",
           "", 0.5, 0.75),
-    Choice("rack_stop", "door: racks stop 2 mm short of the closed door (every joint can move alone); "
-           "rails: they pull out along their rails, which needs the door open first",
-           choices=("door", "rails"), weights=(1.0, 0.0)),
     Int("knob_count", "knobs; auto = burners + 1 (range) or 2-3 (built-in)", "", 2, 8, auto=True),
     Float("knob_radius", "knob radius (shrunk to fit the panel)", "m", 0.016, 0.026),
     Choice("knob_motion", "knobs turn freely or +-pi/4", choices=("continuous", "revolute")),
@@ -194,14 +193,10 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
         name = f"rack_{k}"
         zc = z_r + 0.002 + RACK_R  # wires 2 mm above the rails
         bp.add(name, "rack", _rack((rx0, rx1), (cy0 + 0.004, cy1 - 0.004), zc))
-        # all joints at 50 %: the door at 45 deg; the rack's front bottom edge must pass over
-        # its inner face: (z - z_h) - (x - xd1) > sqrt(2) ft (+ clearance)
-        h = zc - RACK_R - z_h
-        cap = 2 * (h - math.sqrt(2) * ft - 0.012 - (rx1 + RACK_R - xd1))
-        travel = min(p["rack_travel"] * (rx1 - rx0), cap)
-        if p["rack_stop"] == "door":  # up to 2 mm short of the closed door's inner face
-            travel = min(travel, xd0 - 0.002 - (rx1 + RACK_R))
-        bp.join(J.prismatic(body, name, (rx1, 0.0, zc), (1, 0, 0), 0.0, travel, role="slide"))
+        # behind the door: the rack slides out only once the door lies open
+        travel = p["rack_travel"] * (rx1 - rx0)
+        bp.join(J.prismatic(body, name, (rx1, 0.0, zc), (1, 0, 0), 0.0, travel, role="slide",
+                            requires_open="door"))
         k += 1
 
     # --- control panel -------------------------------------------------------------------------------

@@ -72,6 +72,15 @@ def at(j, f):
     return j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower)
 
 
+def opened(bp, q):
+    """``q`` with the door fully open when a rack behind it moves (as the validator does)."""
+    out = dict(q)
+    for j in bp.joints:
+        if j.requires_open and q.get(j.child, 0.0) != 0.0:
+            out[j.requires_open] = by_child(bp, j.requires_open).dofs[0].upper
+    return out
+
+
 def contacts(bp, q):
     """(a, b, volume) of non-parent part pairs that overlap with joints at ``q``."""
     pose = poses(bp, q)
@@ -143,6 +152,8 @@ def test_joint_kinds_axes_limits(seed):
     else:
         assert d.axis == pytest.approx((0, 0, 1)) and d.origin[1] == pytest.approx(frame[:, 1, 1].max())
     for j in movable(bp):
+        # racks are behind the door: they slide once it is open
+        assert j.requires_open == ("door" if j.child.startswith("rack_") else None), j.child
         if j.child.startswith("rack_"):
             r = j.dofs[0]
             assert j.kind == "prismatic" and j.parent == "body"
@@ -174,7 +185,32 @@ def test_no_contacts_at_rest_and_sampled_states(seed):
     states += [{j.child: at(j, f) for j in js} for f in (0.5, 1.0)]
     states += [{j.child: at(j, f)} for j in js for f in (0.25, 0.5, 1.0)]
     for q in states:
-        assert not contacts(bp, q), q
+        assert not contacts(bp, opened(bp, q)), q
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+@pytest.mark.parametrize("seed", [0, 3])
+def test_the_door_is_solid(seed, side):
+    """Frame, both glass panes and the gasket collide, covering the whole door face: a rack pulled
+    out through the shut door meets it (open it first); with the door open it is free."""
+    _, bp = make(seed, interior="racks", hinge_side=side)
+    door = [pc for pc in bp.parts["door"].pieces if pc.name != "handle"]
+    assert all(pc.convex for pc in door)
+    assert sum(pc.material == "glass" for pc in door) == 2 and any(pc.material == "gasket" for pc in door)
+    lo = np.min([pc.bounds[0] for pc in door], axis=0)
+    hi = np.max([pc.bounds[1] for pc in door], axis=0)
+    hulls = np.array([[c.min(0), c.max(0)] for pc in door for c in pc.convex])
+    for y in np.linspace(lo[1] + 0.002, hi[1] - 0.002, 13):
+        for z in np.linspace(lo[2] + 0.002, hi[2] - 0.002, 13):
+            inside = (hulls[:, 0, 1] <= y) & (y <= hulls[:, 1, 1]) & (hulls[:, 0, 2] <= z) & (z <= hulls[:, 1, 2])
+            assert inside.any(), (y, z)
+    for j in movable(bp):
+        if j.child.startswith("rack_"):
+            hit = {frozenset((a, b)) for a, b, _ in contacts(bp, {j.child: at(j, 1.0)})}
+            assert hit and all("door" in pair for pair in hit), hit
+            # the open door stands at the hinge side, clear of the pulled-out rack
+            assert not contacts(bp, opened(bp, {j.child: at(j, 1.0)}))
+            assert not contacts(bp, {j.child: at(j, 1.0), "door": math.pi / 2})
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -194,7 +230,7 @@ def test_nothing_below_ground(seed):
     _, bp = make(seed)
     js = movable(bp)
     for q in [{j.child: at(j, 1.0) for j in js}, *({j.child: at(j, 1.0)} for j in js)]:
-        pose = poses(bp, q)
+        pose = poses(bp, opened(bp, q))
         for name, part in bp.parts.items():
             pts = np.vstack([pc.vertices for pc in part.pieces])
             assert (pts @ pose[name][:3, :3].T + pose[name][:3, 3])[:, 2].min() >= -1e-6

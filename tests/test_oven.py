@@ -111,6 +111,15 @@ def contacts(bp, state):
     return hits
 
 
+def opened(bp, state):
+    """``state`` with the door fully open when a rack behind it moves (as the validator does)."""
+    out = dict(state)
+    for j in bp.joints:
+        if j.requires_open and state.get(j.child, 0.0) != 0.0:
+            out[j.requires_open] = 1.0
+    return out
+
+
 def com(part, bp):
     dens = {slot: FAMILIES[split_spec(fam)[0]].density for slot, fam in bp.materials.items()}
     return inertial((pc, dens[pc.material]) for pc in part.pieces)[1]
@@ -151,9 +160,15 @@ def test_joint_kinds_axes_and_limits(seed):
         if name == "body":
             continue
         j = by_child(bp, name)
+        # only the racks are behind the door; the drawer, grates, knobs and buttons move freely
+        assert j.requires_open == ("door" if part.label == "rack" else None), name
         if part.label == "rack":
             assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0))
-            assert j.dofs[0].lower == 0.0 and j.dofs[0].upper > (0.03 if p["rack_stop"] == "door" else 0.15)
+            b = np.array([pc.bounds for pc in part.pieces])
+            depth = b[:, 1, 0].max() - b[:, 0, 0].min()  # the wire frame's depth (+ its wire)
+            assert j.dofs[0].lower == 0.0
+            assert j.dofs[0].upper == pytest.approx(p["rack_travel"] * depth, abs=2 * oven.RACK_R)
+            assert j.dofs[0].upper > 0.15  # the real pull-out, not a stop at the closed door
         elif part.label == "knob":
             assert j.parent == "control_panel" and j.dofs[0].axis == pytest.approx((1, 0, 0))
             if p["knob_motion"] == "revolute":
@@ -193,34 +208,49 @@ def test_gravity_keeps_the_door_shut_and_knobs_balanced(seed):
 def test_rest_and_combined_states_are_free(seed):
     _, bp = make(seed, has_drawer=True)
     for f in (0.0, 0.5, 1.0):
-        state = {j.child: f for j in movable(bp)}
+        state = opened(bp, {j.child: f for j in movable(bp)})
         assert contacts(bp, state) == [], f"contact with every joint at {f:.0%}"
 
 
 @pytest.mark.parametrize("seed", [2, 3])
-def test_each_joint_alone_at_its_limits_with_door_stops(seed):
-    """With ``rack_stop=door`` every single-joint state is free (racks stop at the closed door)."""
-    _, bp = make(seed, rack_stop="door", has_drawer=True, has_grates=True, style="range")
+def test_each_joint_alone_at_its_limits(seed):
+    """Every single-joint state is free; a rack is pulled out with the door open first."""
+    _, bp = make(seed, has_drawer=True, has_grates=True, style="range")
     for j in movable(bp):
         for f in (1.0,) if j.dofs[0].lower == 0 else (0.0, 1.0):
-            assert contacts(bp, {j.child: f}) == [], f"{j.child} at {f:.0%}"
+            assert contacts(bp, opened(bp, {j.child: f})) == [], f"{j.child} at {f:.0%}"
 
 
-def test_rails_racks_only_meet_the_closed_door():
-    """Full pull-out racks hit nothing but the shut door (open it first); with it open they are free."""
-    _, bp = make(1, rack_stop="rails")
-    assert all(j.dofs[0].upper > 0.15 for j in movable(bp) if bp.parts[j.child].label == "rack")
-    for j in movable(bp):
-        if bp.parts[j.child].label == "rack":
-            assert {(a, b) for a, b, _ in contacts(bp, {j.child: 1.0})} <= {("door", j.child)}
-            assert contacts(bp, {j.child: 1.0, "door": 1.0}) == []
+def test_the_door_is_solid():
+    """The whole door collides (skins, frame, both glass panes): a rack pulled out through the
+    shut door meets it and nothing else; with the door open it is free."""
+    _, bp = make(1)
+    door = bp.parts["door"]
+    assert all(pc.convex for pc in door.pieces)
+    glass = [pc for pc in door.pieces if pc.material == "glass"]
+    assert len(glass) == 2
+    slab = np.array([pc.bounds for pc in door.pieces if pc.name != "handle"])
+    lo, hi = slab[:, 0].min(0), slab[:, 1].max(0)
+    # the door's collision covers its whole face: sample points across it, through its depth
+    hulls = np.array([[c.min(0), c.max(0)] for pc in door.pieces if pc.name != "handle" for c in pc.convex])
+    ys = np.linspace(lo[1] + 0.03, hi[1] - 0.03, 9)
+    zs = np.linspace(lo[2] + 0.03, hi[2] - 0.03, 9)
+    for y in ys:
+        for z in zs:
+            inside = (hulls[:, 0, 1] <= y) & (y <= hulls[:, 1, 1]) & (hulls[:, 0, 2] <= z) & (z <= hulls[:, 1, 2])
+            assert inside.any(), (y, z)
+    racks = [j for j in movable(bp) if bp.parts[j.child].label == "rack"]
+    assert racks
+    for j in racks:
+        assert {(a, b) for a, b, _ in contacts(bp, {j.child: 1.0})} == {("door", j.child)}
+        assert contacts(bp, {j.child: 1.0, "door": 1.0}) == []
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_nothing_below_ground(seed):
     _, bp = make(seed, has_drawer=True)
     for f in (0.0, 0.5, 1.0):
-        ps = poses(bp, {j.child: f for j in movable(bp)})
+        ps = poses(bp, opened(bp, {j.child: f for j in movable(bp)}))
         for name, part in bp.parts.items():
             pts = np.vstack([pc.vertices for pc in part.pieces])
             assert (pts @ ps[name][:3, :3].T + ps[name][:3, 3])[:, 2].min() >= -1e-6, (name, f)
@@ -245,7 +275,7 @@ def test_overrides_drive_the_growth():
 
 
 @pytest.mark.parametrize("bad", [{"width": 1.5}, {"rack_count": 5}, {"knob_count": 9}, {"style": "toaster"},
-                                 {"rack_stop": "nowhere"}, {"colour": "red"}])
+                                 {"rack_stop": "door"}, {"colour": "red"}])
 def test_bad_overrides_raise(bad):
     with pytest.raises(ParameterError):
         make(0, **bad)
