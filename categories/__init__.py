@@ -12,6 +12,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from . import (
+    bar_chair,
     beverage_fridge,
     cocktail_table,
     dining_table,
@@ -20,6 +21,7 @@ from . import (
     kitchen_cabinet,
     lamp,
     microwave,
+    office_chair,
     oven,
     pan,
     plate_rack,
@@ -49,4 +51,6 @@ CATEGORIES: dict[str, ModuleType] = {
     "plate_rack": plate_rack,
     "pot": pot,
     "pan": pan,
+    "office_chair": office_chair,
+    "bar_chair": bar_chair,
 }

@@ -1,0 +1,117 @@
+"""The bar chair category: bases, joints, clearances at every joint state, overrides, seeds."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_office_chair import TOL, _box, _Link, by_child, movable, poses, states
+
+from infmob_usd import physical
+from infmob_usd.categories import bar_chair as bc
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(4)
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back"}
+
+
+def make(seed, **overrides):
+    r = streams("bar_chair", seed)
+    p = bc.SCHEMA.sample(r["params"], overrides)
+    bp = bc.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_sizes(seed):
+    p, bp = make(seed)
+    assert bp.root == "base"
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
+    seat = np.array([pc.bounds for pc in bp.parts["seat"].pieces if pc.material == "seat"])
+    assert seat[:, 1, 2].max() == pytest.approx(p["seat_height"], abs=1e-6)
+    assert 0.6 <= p["seat_height"] <= 0.85
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+
+
+@pytest.mark.parametrize("base_type", ["wheeled", "disc"])
+def test_joints(base_type):
+    p, bp = make(1, base_type=base_type, has_back=True, back_mount="hinged")
+    lift = by_child(bp, "lift")
+    assert lift.kind == "prismatic" and lift.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert lift.dofs[0].lower == 0.0 and 0.05 < lift.dofs[0].upper <= 0.12
+    seat = by_child(bp, "seat")
+    assert seat.kind == "continuous" and seat.dofs[0].axis == pytest.approx((0, 0, 1))
+    back = by_child(bp, "back")
+    assert back.kind == "revolute" and back.dofs[0].axis == pytest.approx((0, -1, 0)) and back.dofs[0].lower == 0
+    casters = [n for n, part in bp.parts.items() if part.label == "caster"]
+    wheels = [n for n, part in bp.parts.items() if part.label == "wheel"]
+    if base_type == "disc":
+        assert not casters and not wheels and len(movable(bp)) == 3
+    else:
+        assert 3 <= len(casters) <= 10 and len(wheels) >= len(casters)
+        for n in wheels:
+            assert min(pc.bounds[0, 2] for pc in bp.parts[n].pieces) == pytest.approx(0.0, abs=1e-9)
+            assert by_child(bp, n).kind == "continuous"
+        for n in casters:
+            assert by_child(bp, n).dofs[0].axis == pytest.approx((0, 0, 1))
+    _, bp = make(1, has_back=True, back_mount="fixed")
+    assert by_child(bp, "back").kind == "fixed"
+
+
+def test_foot_ring_on_the_disc_base():
+    _, bp = make(2, base_type="disc")
+    ring = [pc for pc in bp.parts["base"].pieces if pc.material == "ring"]
+    assert ring
+    z = max(pc.bounds[1, 2] for pc in ring)
+    assert 0.15 < z < bp.parts["seat"].pieces[0].bounds[0, 2]
+    _, bp = make(2, base_type="wheeled", has_foot_ring=False)
+    assert not any(pc.material == "ring" for pc in bp.parts["base"].pieces)
+
+
+@pytest.mark.parametrize("over", [dict(base_type="wheeled", leg_count=5, has_back=True, back_mount="hinged",
+                                       seat_shape="square"),
+                                  dict(base_type="disc", has_back=True, back_mount="hinged", seat_shape="round")])
+def test_no_collisions_or_ground_at_any_sampled_state(over):
+    _, bp = make(3, **over)
+    links = {n: _Link(part) for n, part in bp.parts.items()}
+    into = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    rest = poses(bp, {})
+    rest_pc = {c: overlap(links[c], rest[c], links[pa], rest[pa]) for c, pa in into.items()}
+    for q in states(bp):
+        ps = poses(bp, q)
+        boxes = {n: _box(bp.parts[n], ps[n]) for n in names}
+        assert min(b[0][2] for b in boxes.values()) >= -5e-4
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                (la, ha), (lb, hb) = boxes[a], boxes[b]
+                if np.any(ha < lb) or np.any(hb < la):
+                    continue
+                if into.get(a) == b or into.get(b) == a:
+                    c = a if into.get(a) == b else b
+                    assert overlap(links[c], ps[c], links[into[c]], ps[into[c]]) - rest_pc[c] < TOL, (c, q)
+                else:
+                    assert overlap(links[a], ps[a], links[b], ps[b]) < TOL, (a, b, q)
+
+
+@pytest.mark.parametrize("bad", [{"seat_height": 0.5}, {"seat_height": 0.9}, {"base_type": "tripod"},
+                                 {"leg_count": 12}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object_and_variety():
+    p1, a = make(5)
+    p2, b = make(5)
+    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+    made = [make(s)[0] for s in range(12)]
+    for name in ("base_type", "seat_shape", "has_back", "base_finish"):
+        assert len({p[name] for p in made}) > 1, name

@@ -1,0 +1,283 @@
+"""The office chair category: parts, joints, clearances at every joint state, overrides, seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import office_chair as oc
+from infmob_usd.errors import ParameterError
+from infmob_usd.model import build as build_model
+from infmob_usd.seeding import streams
+
+from collide import overlap
+
+SEEDS = range(4)
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest"}
+TOL = 1e-7  # m^3, as the validator
+
+
+def make(seed, **overrides):
+    r = streams("office_chair", seed)
+    p = oc.SCHEMA.sample(r["params"], overrides)
+    bp = oc.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def movable(bp):
+    return [j for j in bp.joints if j.movable]
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def rotation(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def dof_pose(dof, q):
+    m = np.eye(4)
+    if dof.type == "prismatic":
+        m[:3, 3] = np.asarray(dof.axis) * q
+    else:
+        o = np.asarray(dof.origin)
+        r = rotation(dof.axis, q)
+        m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def poses(bp, q):
+    """World pose of every part for joint values ``q`` (child name -> tuple of DoF values)."""
+    into = {j.child: j for j in bp.joints}
+    out = {}
+
+    def pose(name):
+        if name not in out:
+            j = into.get(name)
+            if j is None:
+                out[name] = np.eye(4)
+            else:
+                m = pose(j.parent)
+                local = np.eye(4)
+                for dof, v in zip(j.dofs, q.get(name, (0.0,) * len(j.dofs))):
+                    local = local @ dof_pose(dof, v)
+                out[name] = m @ local
+        return out[name]
+
+    for n in bp.parts:
+        pose(n)
+    return out
+
+
+def states(bp):
+    """rest, all at 50 % and 100 % (continuous: pi/2, pi), each joint alone at its limits."""
+    def at(j, f):
+        return tuple(d.lower + f * (d.upper - d.lower) if d.type != "continuous" else f * math.pi
+                     for d in j.dofs)
+    out = [{}]
+    out += [{j.child: at(j, f) for j in movable(bp)} for f in (0.5, 1.0)]
+    for j in movable(bp):
+        if j.kind in ("continuous",):
+            out += [{j.child: (a,)} for a in (math.pi / 2, -math.pi / 2, math.pi)]
+        else:
+            out += [{j.child: at(j, 0.0)}, {j.child: at(j, 1.0)}]
+    return out
+
+
+class _Link:
+    def __init__(self, part):
+        self.pieces = part.pieces
+
+
+# -- parts, labels, materials --------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_required_parts_labels_and_materials(seed):
+    p, bp = make(seed)
+    assert bp.root == "base"
+    for name, label in {"base": "base", "lift": "lift", "seat": "seat"}.items():
+        assert bp.parts[name].label == label
+    assert {part.label for part in bp.parts.values()} <= LABELS
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    assert any(pc.name == "handle" for pc in bp.parts["seat"].pieces)
+    links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
+    assert all(link.mass > 0 for link in links)
+    assert ("back" in bp.parts) == p["has_back"]
+    assert ("arm_pad_left" in bp.parts) == p["has_arms"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_sizes_and_wheels_on_the_floor(seed):
+    p, bp = make(seed)
+    seat = np.array([pc.bounds for pc in bp.parts["seat"].pieces if pc.material == "seat"])
+    assert seat[:, 1, 2].max() == pytest.approx(p["seat_height"], abs=1e-6)
+    assert seat[:, 1, 1].max() - seat[:, 0, 1].min() == pytest.approx(p["seat_width"], abs=1e-6)
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    wheels = [n for n, part in bp.parts.items() if part.label == "wheel"]
+    for n in wheels:
+        assert min(pc.bounds[0, 2] for pc in bp.parts[n].pieces) == pytest.approx(0.0, abs=1e-9)
+    for n, part in bp.parts.items():
+        if part.label != "wheel":
+            assert min(pc.bounds[0, 2] for pc in part.pieces) > 0.01, n
+
+
+# -- joints ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_joint_kinds_axes_and_limits(seed):
+    p, bp = make(seed)
+    n = sum(part.label == "caster" for part in bp.parts.values())
+    assert 3 <= n <= 10
+    per = 2 if p["caster_style"] == "twin" else 1
+    assert sum(part.label == "wheel" for part in bp.parts.values()) == n * per
+    for name, part in bp.parts.items():
+        if part.label == "caster":
+            j = by_child(bp, name)
+            assert j.kind == "continuous" and j.parent == "base"
+            assert j.dofs[0].axis == pytest.approx((0, 0, 1))
+        if part.label == "wheel":
+            j = by_child(bp, name)
+            assert j.kind == "continuous" and bp.parts[j.parent].label == "caster"
+            a, o = np.array(j.dofs[0].axis), np.array(j.dofs[0].origin)
+            assert a[2] == pytest.approx(0.0)
+            radial = o[:2] / np.linalg.norm(o[:2])
+            assert abs(a[:2] @ radial) > 0.9  # axle along the leg
+            # centre of mass on the axle: the tyre is a cylinder about it
+            tyre = bp.parts[name].pieces[0]
+            c = (tyre.bounds[0] + tyre.bounds[1]) / 2
+            assert np.linalg.norm(np.cross(c - o, a)) < 1e-6
+    lift = by_child(bp, "lift").dofs[0]
+    assert by_child(bp, "lift").kind == "prismatic" and lift.axis == pytest.approx((0, 0, 1))
+    assert lift.lower == 0.0 and 0.04 < lift.upper <= 0.1
+    seat = by_child(bp, "seat")
+    assert seat.kind == "continuous" and seat.parent == "lift"
+    assert seat.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert 13 <= len(movable(bp)) <= 44
+
+
+def test_back_reclines_and_gravity_holds_it_upright():
+    _, bp = make(0, has_back=True, has_headrest=True)
+    j = by_child(bp, "back")
+    d = j.dofs[0]
+    assert j.kind == "revolute" and d.axis == pytest.approx((0, -1, 0)) and d.lower == 0.0 and d.upper > 0.2
+    # reclining moves the top backwards
+    top = np.array([0, 0, bp.parts["back"].pieces[1].bounds[1, 2], 1.0])
+    top[:2] = d.origin[:2]
+    assert (dof_pose(d, d.upper) @ top)[0] < d.origin[0] - 0.05
+    # centre of mass ahead of the hinge: gravity tips it forward, onto its q = 0 stop
+    dens = {k: 300.0 for k in bp.materials} | {"frame": 1100.0}
+    links, _ = build_model(bp, dens)
+    back = next(link for link in links if link.name == "back")
+    assert (back.origin + back.com)[0] > d.origin[0] + 0.01
+
+
+def test_arms_joints():
+    p, bp = make(1, has_arms=True)
+    for side in ("left", "right"):
+        post = by_child(bp, f"arm_{side}")
+        assert post.kind == "prismatic" and post.parent == "seat"
+        assert post.dofs[0].axis == pytest.approx((0, 0, 1)) and post.dofs[0].lower == 0.0
+        slide = by_child(bp, f"arm_slider_{side}")
+        assert slide.kind == "revolute_prismatic" and slide.parent == f"arm_{side}"
+        assert slide.dofs[0].axis == pytest.approx((1, 0, 0))
+        assert slide.dofs[1].axis == pytest.approx((0, 0, 1))
+        pad = by_child(bp, f"arm_pad_{side}")
+        assert pad.kind == "revolute" and pad.dofs[0].axis == pytest.approx((0, 0, 1))
+        assert bp.parts[f"arm_pad_{side}"].label == "armrest"
+
+
+# -- clearances ------------------------------------------------------------------------------
+
+
+def _box(part, pose):
+    pts = np.vstack([c for pc in part.pieces for c in pc.convex])
+    w = pts @ pose[:3, :3].T + pose[:3, 3]
+    return w.min(0), w.max(0)
+
+
+@pytest.mark.parametrize("seed", [0, 5])
+def test_no_collisions_at_any_sampled_state(seed):
+    """Non-jointed parts never touch; a child never sinks deeper into its parent than at rest."""
+    _, bp = make(seed, has_arms=True, has_back=True)
+    links = {n: _Link(part) for n, part in bp.parts.items()}
+    into = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    rest = poses(bp, {})
+    rest_pc = {c: overlap(links[c], rest[c], links[pa], rest[pa]) for c, pa in into.items()}
+    for q in states(bp):
+        ps = poses(bp, q)
+        boxes = {n: _box(bp.parts[n], ps[n]) for n in names}
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                (la, ha), (lb, hb) = boxes[a], boxes[b]
+                if np.any(ha < lb) or np.any(hb < la):
+                    continue
+                if into.get(a) == b or into.get(b) == a:
+                    c = a if into.get(a) == b else b
+                    vol = overlap(links[c], ps[c], links[into[c]], ps[into[c]])
+                    assert vol - rest_pc[c] < TOL, (c, q)
+                else:
+                    assert overlap(links[a], ps[a], links[b], ps[b]) < TOL, (a, b, q)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_nothing_below_ground(seed):
+    _, bp = make(seed)
+    for q in states(bp):
+        ps = poses(bp, q)
+        for n, part in bp.parts.items():
+            pts = np.vstack([c for pc in part.pieces for c in pc.convex])
+            z = pts @ ps[n][2, :3] + ps[n][2, 3]
+            assert z.min() >= -5e-4, (n, q)
+
+
+# -- overrides, growth, determinism ----------------------------------------------------
+
+
+def test_overrides_drive_the_growth():
+    _, bp = make(3, leg_count=5, caster_style="twin", has_arms=True, has_back=True)
+    assert sum(part.label == "caster" for part in bp.parts.values()) == 5
+    assert len(movable(bp)) == 5 * 3 + 3 + 6  # the reference method's biggest chairs
+    _, bp = make(3, leg_count=10, caster_style="single", has_arms=False, has_back=False)
+    assert sum(part.label == "wheel" for part in bp.parts.values()) == 10
+    assert "back" not in bp.parts and not any(n.startswith("arm") for n in bp.parts)
+    assert len(movable(bp)) == 20 + 2
+    _, bp = make(3, has_back=True, back_style="mesh")
+    assert any(pc.material == "mesh" for pc in bp.parts["back"].pieces)
+    p, _ = make(3, seat_height=0.45, base_finish="chrome")
+    assert p["seat_height"] == 0.45 and p["base_finish"] == "chrome"
+
+
+@pytest.mark.parametrize("bad", [{"seat_height": 0.7}, {"seat_width": 0.2}, {"leg_count": 2},
+                                 {"leg_count": 11}, {"caster_style": "triple"}, {"colour": "red"}])
+def test_bad_overrides_raise(bad):
+    with pytest.raises(ParameterError):
+        make(0, **bad)
+
+
+def test_same_seed_same_object():
+    p1, a = make(7)
+    p2, b = make(7)
+    assert p1 == p2
+    assert list(a.parts) == list(b.parts) and a.joints == b.joints
+    for name in a.parts:
+        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+
+
+def test_seeds_differ_in_ways_a_person_sees():
+    made = [make(s) for s in range(12)]
+    for name in ("caster_style", "base_finish", "has_arms", "leg_style"):
+        assert len({p[name] for p, _ in made}) > 1, name
+    legs = {sum(part.label == "caster" for part in bp.parts.values()) for _, bp in made}
+    assert 5 in legs and len(legs) > 1
