@@ -64,7 +64,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
-from infmob_usd.blueprint import Blueprint, Growth, Rule
+from infmob_usd.blueprint import Blueprint, Growth, Rule, descendants
 from infmob_usd.joints import Dof
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
@@ -451,7 +451,7 @@ def _rest_on_stops(bp: Blueprint) -> None:
         if abs(axis[2]) > 1e-6:  # swivels about a vertical axis are neutral
             continue
         m, moment = 0.0, np.zeros(3)
-        for n in _carried(bp, j.child):
+        for n in descendants(bp.joints, j.child):
             mn, cn = masses[n]
             m, moment = m + mn, moment + mn * cn
         torque = float(np.cross(moment / m - pivot, (0.0, 0.0, -9.81 * m)) @ axis)
@@ -461,18 +461,6 @@ def _rest_on_stops(bp: Blueprint) -> None:
         if torque > 0:  # flip the axis: gravity then pushes toward negative q
             axis, upper = -axis, -d.lower
         bp.joints[i] = replace(j, dofs=(Dof("revolute", d.origin, tuple(axis), 0.0, upper),))
-
-
-def _carried(bp: Blueprint, name: str) -> set[str]:
-    """``name`` and every part that hangs from it."""
-    names, stack = {name}, [name]
-    while stack:
-        n = stack.pop()
-        for j in bp.joints:
-            if j.parent == n and j.child not in names:
-                names.add(j.child)
-                stack.append(j.child)
-    return names
 
 
 # ---------------------------------------------------------------------------

@@ -105,6 +105,18 @@ class Blueprint:
         return np.array([b[:, 0].min(0), b[:, 1].max(0)])
 
 
+def descendants(joints, name: str) -> set[str]:
+    """``name`` and every part (or link) hanging from it through ``joints`` (``.parent``/``.child``)."""
+    names, stack = {name}, [name]
+    while stack:
+        n = stack.pop()
+        for j in joints:
+            if j.parent == n and j.child not in names:
+                names.add(j.child)
+                stack.append(j.child)
+    return names
+
+
 def dof_motion(dof, value: float) -> np.ndarray:
     """``(4, 4)`` world-space motion of one :class:`~infmob_usd.joints.Dof` moved to ``value``."""
     m = np.eye(4)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .blueprint import Blueprint
+from .blueprint import Blueprint, descendants
 from .joints import Dof
 
 
@@ -153,17 +153,6 @@ def _lowest(obj, q: dict[str, float], names=None) -> float:
     return z
 
 
-def _subtree(obj, root: str) -> set[str]:
-    names, stack = {root}, [root]
-    while stack:
-        n = stack.pop()
-        for j in obj.joints:
-            if j.parent == n and j.child not in names:
-                names.add(j.child)
-                stack.append(j.child)
-    return names
-
-
 def limit_to_ground(obj) -> list[str]:
     """Reduce joint limits so that no part goes below the ground at any single joint's limit.
 
@@ -179,7 +168,7 @@ def limit_to_ground(obj) -> list[str]:
     for j in obj.joints:
         if not j.movable:
             continue
-        moved = _subtree(obj, j.child)
+        moved = descendants(obj.joints, j.child)
         if j.type == "continuous":
             for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
                 if _lowest(obj, {j.name: a}, moved) < -GROUND_TOL:
