@@ -14,10 +14,12 @@ from types import ModuleType
 from . import (
     bar_chair,
     beverage_fridge,
+    bottle,
     cocktail_table,
     dining_table,
     dishwasher,
     door,
+    jar,
     kitchen_cabinet,
     lamp,
     microwave,
@@ -30,6 +32,7 @@ from . import (
     tap,
     toilet,
     tv,
+    vase,
     window,
 )
 
@@ -53,4 +56,7 @@ CATEGORIES: dict[str, ModuleType] = {
     "pan": pan,
     "office_chair": office_chair,
     "bar_chair": bar_chair,
+    "vase": vase,
+    "bottle": bottle,
+    "jar": jar,
 }

@@ -43,3 +43,18 @@ def merge_pieces(pieces):
         uvs.append(p.corner_uvs())
         off += len(p.vertices)
     return np.vstack(verts), np.vstack(faces), np.concatenate(normals), np.concatenate(uvs)
+
+
+def centred_hulls(link):
+    """Every collision hull of a link as ``(centre (3,), vertices - centre, faces)``.
+
+    Writers place each hull at its centre (URDF ``<collision><origin>``, a translate op in
+    USD) with vertices around it: PhysX's default contact generation (PCM) reports false deep
+    contacts between convex meshes whose vertices lie far from their shape origin.
+    """
+    out = []
+    for piece in link.pieces:
+        for v, f in piece.hulls():
+            c = (v.min(0) + v.max(0)) / 2
+            out.append((c, v - c, f))
+    return out

@@ -4,7 +4,8 @@
   named ``handle_*`` where the pieces are handles (ManiSkill looks for that);
   no ``<material>`` elements: colours live in the MTL, and SAPIEN's loader would
   need a render device to build URDF materials;
-* one collision OBJ per convex piece (SAPIEN hulls each collision file);
+* one collision OBJ per convex piece (SAPIEN hulls each collision file), centred on its
+  own origin and placed by ``<collision><origin>`` (PhysX's contacts misbehave otherwise);
 * ``<inertial>`` with the full tensor about the centre of mass;
 * ``<limit>`` with effort and velocity, ``<dynamics damping friction>``.
 
@@ -18,7 +19,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .common import merge_pieces, visual_groups
+from .common import centred_hulls, merge_pieces, visual_groups
 
 MESHES = "meshes"
 
@@ -88,10 +89,10 @@ def write_urdf(obj, folder: Path) -> Path:
             write_obj(meshes / fname, v, f, n, uv, mtl=f"{slot}.mtl", material=slot)
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
-        for i, (hv, hf) in enumerate(h for p in link.pieces for h in p.hulls()):
+        for i, (centre, hv, hf) in enumerate(centred_hulls(link)):
             fname = f"{link.name}__collision_{i:03d}.obj"
             write_obj(meshes / fname, hv, hf)
-            out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="0 0 0" rpy="0 0 0"/>'
+            out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="{_v(centre)}" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></collision>')
         I = link.inertia
         out.append(f'    <inertial><origin xyz="{_v(link.com)}" rpy="0 0 0"/><mass value="{_f(link.mass)}"/>'

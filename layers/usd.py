@@ -23,7 +23,7 @@ from pxr import Gf, Kind, Sdf, Usd, UsdGeom, UsdPhysics, UsdSemantics, UsdShade,
 
 from infmob_usd.mass import principal
 
-from .common import merge_pieces, visual_groups
+from .common import centred_hulls, merge_pieces, visual_groups
 
 PAYLOAD = "payload"
 SUBLAYERS = ("physics.usda", "materials.usda", "geometry.usdc")
@@ -94,8 +94,9 @@ def write_usd(obj, folder: Path) -> Path:
             st.Set(Vt.Vec2fArray.FromNumpy(uvs.reshape(-1, 2).astype(np.float32)))
             if role:
                 _label(mesh.GetPrim(), role)
-        for i, (hv, hf) in enumerate(h for p in link.pieces for h in p.hulls()):
+        for i, (centre, hv, hf) in enumerate(centred_hulls(link)):
             col = _mesh(stage, f"{lp}/collisions/hull_{i:03d}", hv, hf)
+            col.AddTranslateOp().Set(Gf.Vec3d(*map(float, centre)))
             col.CreatePurposeAttr(UsdGeom.Tokens.guide)
 
     # -- materials ------------------------------------------------------------

@@ -1,0 +1,89 @@
+"""The bottle category: profiles, cap (unscrew: turn + lift), label band, clearances."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from test_vase import by_child, check_cap_joint, check_common, check_hollow, check_sweep, gap, hulls, make_bp, motion
+
+from infmob_usd.categories import bottle
+from infmob_usd.errors import ParameterError
+
+SEEDS = range(6)
+
+
+def make(seed, **overrides):
+    return make_bp(bottle, "bottle", seed, **overrides)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_size(seed):
+    p, bp = make(seed)
+    check_common(bp)
+    assert bp.parts["body"].label == "body" and bp.parts["cap"].label == "cap"
+    assert ("label" in bp.parts) == p["has_label"]
+    body = np.array([pc.bounds for pc in bp.parts["body"].pieces])
+    assert body[:, 1, 2].max() - body[:, 0, 2].min() == pytest.approx(p["height"], abs=1e-6)
+    assert bp.materials["glass"].startswith("glass")
+    check_hollow(bp, 0.5 * p["height"])
+
+
+@pytest.mark.parametrize("profile", list(bottle.KINDS))
+def test_each_profile_cap_turns_lifts_and_clears(profile):
+    p, bp = make(2, profile=profile, has_label=True)
+    check_cap_joint(bp, "cap", bottle.CAP_TRAVEL)
+    check_sweep(bp, "cap")
+    # the neck is much narrower than the body (a recognisable bottle)
+    wall = bp.parts["body"].pieces[0].vertices
+    r = np.hypot(wall[:, 0], wall[:, 1])
+    top = wall[:, 2] > 0.9 * p["height"]
+    assert r[top].max() < 0.7 * r.max()
+
+
+@pytest.mark.parametrize("profile", list(bottle.KINDS))
+def test_label_turns_about_z_clear_of_the_glass(profile):
+    _, bp = make(4, profile=profile, has_label=True)
+    j = by_child(bp, "label")
+    assert j.kind == "continuous" and j.parent == "body"
+    d = j.dofs[0]
+    assert d.axis == pytest.approx((0, 0, 1)) and d.origin[:2] == pytest.approx((0, 0))
+    pts = np.vstack([pc.vertices for pc in bp.parts["label"].pieces])
+    assert np.abs(pts[:, :2].mean(0)).max() < 1e-3  # centre of mass on the axis: neutral
+    body = hulls(bp.parts["body"])
+    assert gap(hulls(bp.parts["label"]), body) >= 0.0015 - 1e-6
+    for q in (0.3, 1.7, -2.2):
+        assert gap(hulls(bp.parts["label"], motion(d, q)), body) >= 0.0015 - 1e-6
+    # label and cap never meet
+    assert gap(hulls(bp.parts["label"]), hulls(bp.parts["cap"])) > 0.005
+
+
+@pytest.mark.parametrize("cap", ["crown", "screw", "capsule", "stopper"])
+def test_cap_override(cap):
+    _, bp = make(1, cap=cap, profile="bordeaux")
+    check_sweep(bp, "cap")
+    if cap == "stopper":  # reaches into the neck
+        rim = max(c[:, 2].max() for c in hulls(bp.parts["body"]))
+        assert min(c[:, 2].min() for c in hulls(bp.parts["cap"])) < rim - 0.005
+
+
+def test_overrides_and_bad_values():
+    p, bp = make(3, has_label=False, profile="champagne", height=0.3)
+    assert "label" not in bp.parts and p["height"] == 0.3
+    assert len([j for j in bp.joints if j.movable]) == 1
+    for bad in ({"height": 0.4}, {"profile": "magnum"}, {"cap": "cork"}, {"label_fill": 2.0}, {"x": 1}):
+        with pytest.raises(ParameterError):
+            make(0, **bad)
+
+
+def test_deterministic_and_varied():
+    a, b = make(9)[1], make(9)[1]
+    assert a.joints == b.joints
+    for n in a.parts:
+        for x, y in zip(a.parts[n].pieces, b.parts[n].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+    params = [make(s)[0] for s in range(20)]
+    for name in ("profile", "has_label"):
+        assert len({p[name] for p in params}) > 1
+    assert math.isclose(min(p["height"] for p in params), 0.15, abs_tol=0.08)

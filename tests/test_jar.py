@@ -1,0 +1,80 @@
+"""The jar category: round / square / hexagonal hollow bodies, threaded neck, screw lid."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, hulls, make_bp
+
+from infmob_usd.categories import jar
+from infmob_usd.errors import ParameterError
+
+SEEDS = range(6)
+
+
+def make(seed, **overrides):
+    return make_bp(jar, "jar", seed, **overrides)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_size_and_lid(seed):
+    p, bp = make(seed)
+    check_common(bp)
+    assert set(bp.parts) == {"body", "lid"}
+    assert bp.parts["body"].label == "body" and bp.parts["lid"].label == "lid"
+    body = np.array([pc.bounds for pc in bp.parts["body"].pieces])
+    lo, hi = body[:, 0].min(0), body[:, 1].max(0)
+    assert hi[2] - lo[2] == pytest.approx(p["height"], abs=1e-6)
+    assert hi[0] == pytest.approx(p["radius"], rel=0.05)  # round radius or half width across flats
+    check_cap_joint(bp, "lid", jar.LID_LIFT)
+    check_hollow(bp, 0.5 * p["height"])
+
+
+@pytest.mark.parametrize("sides", list(jar.SIDE_COUNT))
+def test_each_cross_section_lid_turns_lifts_and_clears(sides):
+    _, bp = make(2, sides=sides)
+    check_sweep(bp, "lid")
+
+
+@pytest.mark.parametrize("sides,n", [("square", 4), ("hexagonal", 6)])
+def test_polygonal_wall_is_flat_panels(sides, n):
+    p, bp = make(1, sides=sides)
+    wall = bp.parts["body"].pieces[0]
+    # one convex piece per face and band; their outer faces are flat (all corners at the apothem)
+    assert len(wall.convex) % n == 0
+    for c in wall.convex:
+        assert len(c) == 8
+    # the side faces: a face normal at angle 0 (+X) sits at x = radius
+    assert wall.vertices[:, 0].max() == pytest.approx(p["radius"], rel=1e-6)
+    check_hollow(bp, 0.5 * p["height"])
+
+
+def test_threaded_neck_and_lid_over_it():
+    _, bp = make(3, sides="round")
+    z_lo = min(pc.vertices[:, 2].min() for pc in bp.parts["lid"].pieces)
+    rim = max(c[:, 2].max() for c in hulls(bp.parts["body"]))
+    assert rim - z_lo > 0.004  # the skirt reaches down around the threads
+    wall = bp.parts["body"].pieces[0].vertices
+    neck = wall[wall[:, 2] > z_lo]
+    r = np.hypot(neck[:, 0], neck[:, 1])
+    assert r.max() - np.percentile(r, 50) > 0.0008  # thread rings stand proud of the neck
+
+
+def test_overrides_and_bad_values():
+    p, bp = make(4, sides="hexagonal", body_finish="ceramic", lid_finish="plastic", radius=0.05)
+    assert p["sides"] == "hexagonal" and bp.materials["body"] == "ceramic"
+    assert bp.materials["lid"].startswith("plastic")
+    for bad in ({"height": 0.3}, {"radius": 0.01}, {"sides": "octagonal"}, {"lid_finish": "wood"}, {"x": 1}):
+        with pytest.raises(ParameterError):
+            make(0, **bad)
+
+
+def test_deterministic_and_varied():
+    a, b = make(7)[1], make(7)[1]
+    assert a.joints == b.joints
+    for n in a.parts:
+        for x, y in zip(a.parts[n].pieces, b.parts[n].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+    params = [make(s)[0] for s in range(20)]
+    for name in ("sides", "body_finish", "lid_finish"):
+        assert len({p[name] for p in params}) > 1

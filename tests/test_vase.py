@@ -1,0 +1,181 @@
+"""The vase category (and the vessel helpers shared with bottle and jar): parts, joints, clearances."""
+
+from __future__ import annotations
+
+import math
+
+import manifold3d
+import numpy as np
+import pytest
+
+from infmob_usd import physical
+from infmob_usd.categories import vase
+from infmob_usd.errors import ParameterError
+from infmob_usd.seeding import streams
+
+SEEDS = range(8)
+
+
+# -- helpers (bottle and jar tests import these) -------------------------------------
+
+
+def make_bp(module, name, seed, **overrides):
+    r = streams(name, seed)
+    p = module.SCHEMA.sample(r["params"], overrides)
+    bp = module.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
+
+
+def by_child(bp, name):
+    return next(j for j in bp.joints if j.child == name)
+
+
+def hulls(part, matrix=None):
+    out = [c for pc in part.pieces for c in pc.convex]
+    if matrix is not None:
+        out = [c @ matrix[:3, :3].T + matrix[:3, 3] for c in out]
+    return out
+
+
+def motion(dof, q):
+    m = np.eye(4)
+    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
+    if dof.type == "prismatic":
+        m[:3, 3] = a * q
+    else:
+        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        r = np.eye(3) + math.sin(q) * k + (1 - math.cos(q)) * k @ k
+        m[:3, :3], m[:3, 3] = r, o - r @ o
+    return m
+
+
+def gap(hs_a, hs_b, search=0.02):
+    """Smallest distance between two sets of convex hulls (0 when they touch or overlap)."""
+    best = search
+    mb = [(b, b.min(0), b.max(0)) for b in hs_b]
+    for a in hs_a:
+        lo, hi = a.min(0) - best, a.max(0) + best
+        ma = None
+        for b, blo, bhi in mb:
+            if np.any(hi < blo) or np.any(bhi < lo):
+                continue
+            ma = ma or manifold3d.Manifold.hull_points(a)
+            best = min(best, ma.min_gap(manifold3d.Manifold.hull_points(b), best))
+    return best
+
+
+def check_cap_joint(bp, child, lift):
+    """A continuous_prismatic lid/cap on the body: lift along +Z 0..lift, turn about Z, on the axis."""
+    j = by_child(bp, child)
+    assert j.kind == "continuous_prismatic" and j.parent == "body"
+    slide, turn = j.dofs
+    assert slide.axis == pytest.approx((0, 0, 1)) and turn.axis == pytest.approx((0, 0, 1))
+    assert (slide.lower, slide.upper) == (0.0, pytest.approx(lift))
+    assert slide.origin[:2] == pytest.approx((0, 0)) and turn.origin[:2] == pytest.approx((0, 0))
+    # the turn is neutral: the carried centre of mass (a solid of revolution) is on the axis
+    pts = np.vstack([pc.vertices for pc in bp.parts[child].pieces])
+    assert np.abs(pts[:, :2].mean(0)).max() < 2e-3
+    # the pivot is on the axis at or just above the rim, inside the lid/cap
+    top = max(c[:, 2].max() for c in hulls(bp.parts["body"]))
+    assert top - 1e-6 <= slide.origin[2] <= top + 0.01
+
+
+def check_sweep(bp, child, min_gap=0.001):
+    """Clear of the body at rest, and at every sampled lift and turn never closer than that."""
+    j = by_child(bp, child)
+    slide, turn = j.dofs
+    body = hulls(bp.parts["body"])
+    assert gap(hulls(bp.parts[child]), body) >= min_gap - 1e-6
+    for f in (0.0, 0.3, 1.0):
+        for q in (0.4, math.pi / 2, 2.7, -1.9):
+            m = motion(slide, f * slide.upper) @ motion(turn, q)
+            assert gap(hulls(bp.parts[child], m), body) >= min_gap - 1e-6, (f, q)
+
+
+def check_hollow(bp, z):
+    """The point on the axis at height z is inside no collision hull of the body."""
+    from scipy.spatial import Delaunay
+
+    p = np.array([[0.0, 0.0, z]])
+    for h in hulls(bp.parts["body"]):
+        assert Delaunay(h).find_simplex(p)[0] < 0
+
+
+def check_common(bp):
+    assert bp.root == "body"
+    used = {pc.material for part in bp.parts.values() for pc in part.pieces}
+    assert used <= set(bp.materials)
+    for part in bp.parts.values():
+        for pc in part.pieces:
+            assert pc.convex or part.label in ("cap", "lid"), f"{part.name}: a piece without collision"
+            assert np.isfinite(pc.vertices).all()
+    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+
+
+# -- vase --------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_parts_labels_and_size(seed):
+    p, bp = make_bp(vase, "vase", seed)
+    check_common(bp)
+    assert bp.parts["body"].label == "body"
+    assert ("lid" in bp.parts) == p["has_lid"]
+    body = np.array([pc.bounds for pc in bp.parts["body"].pieces])
+    lo, hi = body[:, 0].min(0), body[:, 1].max(0)
+    assert hi[2] - lo[2] == pytest.approx(p["height"], abs=0.004)
+    d = hi[0] - lo[0]
+    assert 0.15 * p["height"] <= d <= 0.41 * p["height"]
+    assert bp.materials["body"] == p["finish"] in ("ceramic", "glass", "enamel")
+    check_hollow(bp, 0.5 * hi[2])
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_lid_turns_lifts_and_clears_the_body(seed):
+    _, bp = make_bp(vase, "vase", seed, has_lid=True)
+    assert bp.parts["lid"].label == "lid"
+    check_cap_joint(bp, "lid", vase.LID_LIFT)
+    check_sweep(bp, "lid")
+    # the plug reaches into the mouth, below the rim
+    rim = max(c[:, 2].max() for c in hulls(bp.parts["body"]))
+    assert min(c[:, 2].min() for c in hulls(bp.parts["lid"])) < rim - 0.01
+
+
+@pytest.mark.parametrize("profile", list(vase.SHAPES))
+def test_every_profile_builds_smooth_and_hollow(profile):
+    p, bp = make_bp(vase, "vase", 3, profile=profile, has_lid=True)
+    wall = bp.parts["body"].pieces[0]
+    assert len(wall.vertices) >= 64 * 60  # many profile points x 64 sections
+    check_hollow(bp, 0.3 * p["height"])
+    check_sweep(bp, "lid")
+
+
+def test_spline_profile_is_smooth_and_the_coarse_one_envelopes_it():
+    ctrl = [(0.05, 0.0), (0.08, 0.1), (0.03, 0.2), (0.035, 0.25)]
+    fine, coarse = vase.spline_profile(ctrl, n=80, coarse=8)
+    assert len(fine) >= 80 and np.all(np.diff(fine[:, 1]) > 0)
+    assert fine[:, 0].max() <= 0.08 + 1e-9  # no overshoot
+    zs = np.linspace(0, 0.25, 500)
+    assert np.all(np.interp(zs, coarse[:, 1], coarse[:, 0]) >= np.interp(zs, fine[:, 1], fine[:, 0]) - 1e-9)
+    assert np.diff(coarse[:, 1]).min() > 0.005
+
+
+def test_overrides_and_bad_values():
+    p, bp = make_bp(vase, "vase", 1, has_lid=False, profile="bowl", finish="enamel")
+    assert "lid" not in bp.parts and not [j for j in bp.joints if j.movable]
+    assert p["profile"] == "bowl" and bp.materials["body"] == "enamel"
+    for bad in ({"height": 0.5}, {"diameter_ratio": 0.1}, {"profile": "urn"}, {"colour": "red"}):
+        with pytest.raises(ParameterError):
+            make_bp(vase, "vase", 0, **bad)
+
+
+def test_deterministic_and_varied():
+    a, b = make_bp(vase, "vase", 5)[1], make_bp(vase, "vase", 5)[1]
+    assert a.joints == b.joints
+    for n in a.parts:
+        for x, y in zip(a.parts[n].pieces, b.parts[n].pieces, strict=True):
+            assert np.array_equal(x.vertices, y.vertices)
+    params = [make_bp(vase, "vase", s)[0] for s in range(20)]
+    for name in ("profile", "finish", "has_lid"):
+        assert len({p[name] for p in params}) > 1
