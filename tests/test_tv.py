@@ -37,34 +37,6 @@ def tv_bp(request):
 # -- kinematics and collision helpers ----------------------------------------------------
 
 
-def dof_motion(dof, value: float) -> np.ndarray:
-    m = np.eye(4)
-    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
-    if dof.type == "prismatic":
-        m[:3, 3] = a * value
-    else:
-        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-        r = np.eye(3) + math.sin(value) * k + (1 - math.cos(value)) * k @ k
-        m[:3, :3], m[:3, 3] = r, o - r @ o
-    return m
-
-
-def poses(bp, q=None):
-    """World transform of each part; ``q`` maps (child, dof index) -> value."""
-    q = q or {}
-    out = {bp.root: np.eye(4)}
-    pending = list(bp.joints)
-    while pending:
-        for j in list(pending):
-            if j.parent in out:
-                m = out[j.parent]
-                for i, d in enumerate(j.dofs):
-                    m = m @ dof_motion(d, q.get((j.child, i), 0.0))
-                out[j.child] = m
-                pending.remove(j)
-    return out
-
-
 def movable(bp):
     return [j for j in bp.joints if j.movable]
 
@@ -222,10 +194,10 @@ def test_no_contact_and_nothing_below_ground_in_any_state(tv_bp):
     names = list(bp.parts)
     pairs = [(a, b) for i, a in enumerate(names) for b in names[i + 1:]
              if frozenset((a, b)) not in jointed and find(a) != find(b)]
-    rest = posed_hulls(bp, poses(bp))
+    rest = posed_hulls(bp, bp.poses())
     base_pc = {j.child: volume(rest[j.parent], rest[j.child]) for j in movable(bp)}
     for q in states(bp):
-        hulls = posed_hulls(bp, poses(bp, q))
+        hulls = posed_hulls(bp, bp.poses(q))
         low = min(w[:, 2].min() for hs in hulls.values() for w, _, _ in hs)
         assert low > -1e-6, f"below the ground at {q}"
         for a, b in pairs:
