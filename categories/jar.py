@@ -8,8 +8,9 @@ around the hole) and a round threaded neck on top. Glass or glazed ceramic.
 
 The lid (metal or plastic) is a skirt around the threads with clearance all round (drawn,
 without collision: see :func:`.vase.sleeve` for the PhysX reason) and a top disc a small
-gap above the lip; it turns freely about Z and lifts 0..5 cm along +Z,
-resting on its seat at 0 (gravity holds it down).
+gap above the lip, with a raised centre button; plate and button collide as one hull (see
+:func:`_top_hull`). It turns freely about Z and lifts 0..5 cm along +Z, resting on its seat
+at 0 (gravity holds it down).
 
 Profile helpers are shared with ``vase`` and ``bottle`` (they live in :mod:`.vase`).
 """
@@ -110,16 +111,33 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     z_top = H + gap
     top_t = 0.003
     skirt = sleeve([(r_out, z_lo), (r_out, z_top + 0.5 * top_t)], th, "lid", r_in, sectors=32, collide=False)
-    top = g.disc((0, 0, z_top + top_t / 2), r_out + 0.003, top_t, "lid", SECTIONS)
-    pieces = [skirt, top]
-    # a raised centre panel (the button of a mason lid) or a grip ring on a plastic lid
-    pieces.append(g.disc((0, 0, z_top + top_t + 0.0007), 0.7 * r_in, 0.0015, "lid", SECTIONS))
+    r_top = r_out + 0.003
+    top = g.disc((0, 0, z_top + top_t / 2), r_top, top_t, "lid", SECTIONS)
+    # a raised centre panel (the button of a mason lid), glued on the top plate
+    button = g.disc((0, 0, z_top + top_t + 0.0007), 0.7 * r_in, 0.0015, "lid", SECTIONS)
+    # One collision hull for plate and button, with few, exactly planar faces. A separate
+    # button hull hovers ~4.5 mm over the neck's rim wedges with its edge right above their
+    # inner edge (its radius falls between the wedges' inner chord and corner radius); there
+    # PhysX PCM builds the manifold on the button's top face and reports a deep false contact
+    # (-(gap + button height), ~-6 mm) that jams the turn (jar seed 61). The plate's flat
+    # bottom covers the whole rim, a robust face contact.
+    top.convex = [_top_hull(r_top, z_top, z_top + top_t, 0.7 * r_in, z_top + top_t + 0.00145)]
+    button.convex = []
+    pieces = [skirt, top, button]
     if lid_fin != "plastic":
         for pc in pieces:
             pc.sheet = 0.0005
     bp.add("lid", "lid", pieces)
     bp.join(J.continuous_prismatic("body", "lid", (0.0, 0.0, H), (0, 0, 1), (0.0, LID_LIFT), role="lid"))
     return bp
+
+
+def _top_hull(r_plate: float, z0: float, z1: float, r_button: float, z2: float, sides: int = 16) -> np.ndarray:
+    """Points of the lid's collision hull: a ``sides``-gon plate (z0..z1) under a button top at z2."""
+    a = 2 * np.pi * np.arange(sides) / sides
+    cs, sn = np.cos(a), np.sin(a)
+    return np.vstack([np.c_[r * cs, r * sn, np.full(sides, z)]
+                      for r, z in ((r_plate, z0), (r_plate, z1), (r_button, z2))])
 
 
 def _plate(R: float, sides: int, r_hole: float, z0: float, z1: float) -> g.Piece:
