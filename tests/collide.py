@@ -28,3 +28,21 @@ def overlap(link_a, pose_a, link_b, pose_b, pad: float = 0.0) -> float:
             ma = ma or manifold3d.Manifold.hull_points(wa)
             total += (ma ^ manifold3d.Manifold.hull_points(wb)).volume()
     return total
+
+
+def contacts(bp, q=None, tol: float = 1e-7, skip=None) -> list[tuple[str, str, float]]:
+    """``(a, b, volume)`` of the blueprint's part pairs sharing ``tol`` m^3 or more with its joints at
+    ``q`` (:meth:`~infmob_usd.blueprint.Blueprint.poses` keys). Parent and child are skipped, and any
+    pair for which ``skip(a, b)`` is true."""
+    pose = bp.poses(q)
+    parent = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    bad = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if parent.get(a) == b or parent.get(b) == a or (skip is not None and skip(a, b)):
+                continue
+            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
+            if v >= tol:
+                bad.append((a, b, v))
+    return bad

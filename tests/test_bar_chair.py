@@ -4,15 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_office_chair import TOL, _box, _Link, by_child, movable, poses, states
+from test_office_chair import _box, assert_clear, by_child, movable, rest_overlaps, states
 
 from infmob_usd import physical
 from infmob_usd.categories import bar_chair as bc
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 from infmob_usd.seeding import streams
-
-from collide import overlap
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back"}
@@ -80,25 +78,11 @@ def test_foot_ring_on_the_disc_base():
                                   dict(base_type="disc", has_back=True, back_mount="hinged", seat_shape="round")])
 def test_no_collisions_or_ground_at_any_sampled_state(over):
     _, bp = make(3, **over)
-    links = {n: _Link(part) for n, part in bp.parts.items()}
-    into = {j.child: j.parent for j in bp.joints}
-    names = list(bp.parts)
-    rest = poses(bp, {})
-    rest_pc = {c: overlap(links[c], rest[c], links[pa], rest[pa]) for c, pa in into.items()}
+    rest_pc = rest_overlaps(bp)
     for q in states(bp):
-        ps = poses(bp, q)
-        boxes = {n: _box(bp.parts[n], ps[n]) for n in names}
-        assert min(b[0][2] for b in boxes.values()) >= -5e-4
-        for i, a in enumerate(names):
-            for b in names[i + 1:]:
-                (la, ha), (lb, hb) = boxes[a], boxes[b]
-                if np.any(ha < lb) or np.any(hb < la):
-                    continue
-                if into.get(a) == b or into.get(b) == a:
-                    c = a if into.get(a) == b else b
-                    assert overlap(links[c], ps[c], links[into[c]], ps[into[c]]) - rest_pc[c] < TOL, (c, q)
-                else:
-                    assert overlap(links[a], ps[a], links[b], ps[b]) < TOL, (a, b, q)
+        ps = bp.poses(q)
+        assert min(_box(bp.parts[n], ps[n])[0][2] for n in bp.parts) >= -5e-4
+        assert_clear(bp, ps, rest_pc, q)
 
 
 @pytest.mark.parametrize("bad", [{"seat_height": 0.5}, {"seat_height": 0.9}, {"base_type": "tripod"},

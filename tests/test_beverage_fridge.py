@@ -13,7 +13,7 @@ from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 from infmob_usd.seeding import streams
 
-from collide import overlap
+from collide import contacts, overlap
 
 SEEDS = range(6)
 VOL = 1e-7  # m^3: the validators' contact volume
@@ -35,40 +35,8 @@ def by_child(bp, name):
     return next(j for j in bp.joints if j.child == name)
 
 
-def rotation(axis, angle):
-    a = np.asarray(axis, float) / np.linalg.norm(axis)
-    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
-
-
-def local(joint, q):
-    """World transform of a child relative to its parent's pose, for joint value ``q``."""
-    t = np.eye(4)
-    if not joint.movable:
-        return t
-    d = joint.dofs[0]
-    if d.type == "prismatic":
-        t[:3, 3] = np.asarray(d.axis) * q
-    else:
-        o = np.asarray(d.origin)
-        t[:3, :3] = rotation(d.axis, q)
-        t[:3, 3] = o - t[:3, :3] @ o
-    return t
-
-
-def poses(bp, q):
-    """Pose of every part with joint values ``q`` ({child name: value}, default 0)."""
-    out = {bp.root: np.eye(4)}
-    pending = list(bp.joints)
-    while pending:
-        for j in list(pending):
-            if j.parent in out:
-                out[j.child] = out[j.parent] @ local(j, q.get(j.child, 0.0))
-                pending.remove(j)
-    return out
-
-
 def at(j, f):
+    """Value of a (one-DoF) joint at fraction ``f``; states are ``Blueprint.poses`` keys ``(child, 0)``."""
     return j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower)
 
 
@@ -76,25 +44,9 @@ def opened(bp, q):
     """``q`` with the door fully open when a rack behind it moves (as the validator does)."""
     out = dict(q)
     for j in bp.joints:
-        if j.requires_open and q.get(j.child, 0.0) != 0.0:
-            out[j.requires_open] = by_child(bp, j.requires_open).dofs[0].upper
+        if j.requires_open and q.get((j.child, 0), 0.0) != 0.0:
+            out[(j.requires_open, 0)] = by_child(bp, j.requires_open).dofs[0].upper
     return out
-
-
-def contacts(bp, q):
-    """(a, b, volume) of non-parent part pairs that overlap with joints at ``q``."""
-    pose = poses(bp, q)
-    parent = {j.child: j.parent for j in bp.joints}
-    names = list(bp.parts)
-    bad = []
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            if parent.get(a) == b or parent.get(b) == a:
-                continue
-            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
-            if v >= VOL:
-                bad.append((a, b, v))
-    return bad
 
 
 # -- parts, labels, materials -------------------------------------------------------
@@ -167,7 +119,7 @@ def test_door_opens_outward():
     for side in ("left", "right"):
         _, bp = make(0, hinge_side=side)
         j = by_child(bp, "door")
-        pose = poses(bp, {"door": math.pi / 2})["door"]
+        pose = bp.poses({("door", 0): math.pi / 2})["door"]
         pts = np.vstack([pc.vertices for pc in bp.parts["door"].pieces])
         moved = pts @ pose[:3, :3].T + pose[:3, 3]
         assert moved[:, 0].max() > pts[:, 0].max() + 0.3  # swung out to the front
@@ -182,8 +134,8 @@ def test_no_contacts_at_rest_and_sampled_states(seed):
     _, bp = make(seed, interior="racks")
     js = movable(bp)
     states = [{}]
-    states += [{j.child: at(j, f) for j in js} for f in (0.5, 1.0)]
-    states += [{j.child: at(j, f)} for j in js for f in (0.25, 0.5, 1.0)]
+    states += [{(j.child, 0): at(j, f) for j in js} for f in (0.5, 1.0)]
+    states += [{(j.child, 0): at(j, f)} for j in js for f in (0.25, 0.5, 1.0)]
     for q in states:
         assert not contacts(bp, opened(bp, q)), q
 
@@ -206,11 +158,11 @@ def test_the_door_is_solid(seed, side):
             assert inside.any(), (y, z)
     for j in movable(bp):
         if j.child.startswith("rack_"):
-            hit = {frozenset((a, b)) for a, b, _ in contacts(bp, {j.child: at(j, 1.0)})}
+            hit = {frozenset((a, b)) for a, b, _ in contacts(bp, {(j.child, 0): at(j, 1.0)})}
             assert hit and all("door" in pair for pair in hit), hit
             # the open door stands at the hinge side, clear of the pulled-out rack
-            assert not contacts(bp, opened(bp, {j.child: at(j, 1.0)}))
-            assert not contacts(bp, {j.child: at(j, 1.0), "door": math.pi / 2})
+            assert not contacts(bp, opened(bp, {(j.child, 0): at(j, 1.0)}))
+            assert not contacts(bp, {(j.child, 0): at(j, 1.0), ("door", 0): math.pi / 2})
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -219,7 +171,7 @@ def test_moving_parts_do_not_enter_their_parent(seed):
     body = bp.parts["body"]
     for j in movable(bp):
         for f in (0.0, 0.5, 1.0):
-            pose = poses(bp, {j.child: at(j, f)})[j.child]
+            pose = bp.poses({(j.child, 0): at(j, f)})[j.child]
             assert overlap(bp.parts[j.child], pose, body, np.eye(4)) < VOL, (j.child, f)
         # and keep a gap at rest
         assert overlap(bp.parts[j.child], np.eye(4), body, np.eye(4), pad=0.001) < VOL
@@ -229,8 +181,8 @@ def test_moving_parts_do_not_enter_their_parent(seed):
 def test_nothing_below_ground(seed):
     _, bp = make(seed)
     js = movable(bp)
-    for q in [{j.child: at(j, 1.0) for j in js}, *({j.child: at(j, 1.0)} for j in js)]:
-        pose = poses(bp, opened(bp, q))
+    for q in [{(j.child, 0): at(j, 1.0) for j in js}, *({(j.child, 0): at(j, 1.0)} for j in js)]:
+        pose = bp.poses(opened(bp, q))
         for name, part in bp.parts.items():
             pts = np.vstack([pc.vertices for pc in part.pieces])
             assert (pts @ pose[name][:3, :3].T + pose[name][:3, 3])[:, 2].min() >= -1e-6

@@ -14,7 +14,7 @@ from infmob_usd.materials.families import FAMILIES, split_spec
 from infmob_usd.model import build as build_model
 from infmob_usd.seeding import streams
 
-from collide import overlap
+from collide import contacts, overlap
 
 SEEDS = range(5)
 VOL = 1e-7  # m^3: the validators' contact volume
@@ -36,40 +36,8 @@ def by_child(bp, name):
     return next(j for j in bp.joints if j.child == name)
 
 
-def rotation(axis, angle):
-    a = np.asarray(axis, float) / np.linalg.norm(axis)
-    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
-
-
-def local(joint, q):
-    """World transform of a child relative to its parent's pose, for joint value ``q``."""
-    t = np.eye(4)
-    if not joint.movable:
-        return t
-    d = joint.dofs[0]
-    if d.type == "prismatic":
-        t[:3, 3] = np.asarray(d.axis) * q
-    else:
-        o = np.asarray(d.origin)
-        t[:3, :3] = rotation(d.axis, q)
-        t[:3, 3] = o - t[:3, :3] @ o
-    return t
-
-
-def poses(bp, q):
-    """Pose of every part with joint values ``q`` ({child name: value}, default 0)."""
-    out = {bp.root: np.eye(4)}
-    pending = list(bp.joints)
-    while pending:
-        for j in list(pending):
-            if j.parent in out:
-                out[j.child] = out[j.parent] @ local(j, q.get(j.child, 0.0))
-                pending.remove(j)
-    return out
-
-
 def at(j, f):
+    """Value of a (one-DoF) joint at fraction ``f``; states are ``Blueprint.poses`` keys ``(child, 0)``."""
     return j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower)
 
 
@@ -77,25 +45,9 @@ def opened(bp, q):
     """``q`` with the door fully open when a rack behind it moves (as the validator does)."""
     out = dict(q)
     for j in bp.joints:
-        if j.requires_open and q.get(j.child, 0.0) != 0.0:
-            out[j.requires_open] = by_child(bp, j.requires_open).dofs[0].upper
+        if j.requires_open and q.get((j.child, 0), 0.0) != 0.0:
+            out[(j.requires_open, 0)] = by_child(bp, j.requires_open).dofs[0].upper
     return out
-
-
-def contacts(bp, q):
-    """(a, b, volume) of non-parent part pairs that overlap with joints at ``q``."""
-    pose = poses(bp, q)
-    parent = {j.child: j.parent for j in bp.joints}
-    names = list(bp.parts)
-    bad = []
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            if parent.get(a) == b or parent.get(b) == a:
-                continue
-            v = overlap(bp.parts[a], pose[a], bp.parts[b], pose[b])
-            if v >= VOL:
-                bad.append((a, b, v))
-    return bad
 
 
 # -- parts, labels, materials -------------------------------------------------------
@@ -166,7 +118,7 @@ def test_joint_kinds_axes_limits(seed):
 
 def test_door_falls_forward_and_rests_shut():
     _, bp = make(0)
-    pose = poses(bp, {"door": math.pi / 2})["door"]
+    pose = bp.poses({("door", 0): math.pi / 2})["door"]
     pts = np.vstack([pc.vertices for pc in bp.parts["door"].pieces if pc.name != "handle"])
     moved = pts @ pose[:3, :3].T + pose[:3, 3]
     assert np.ptp(moved[:, 2]) < 0.1 and moved[:, 0].max() > pts[:, 0].max() + 0.5  # flat, in front
@@ -188,8 +140,8 @@ def test_no_contacts_at_sampled_states(seed):
     _, bp = make(seed)
     js = movable(bp)
     states = [{}]
-    states += [{j.child: at(j, f) for j in js} for f in (0.5, 1.0)]
-    states += [{j.child: at(j, f)} for j in js if not j.child.startswith("button") for f in (0.5, 1.0)]
+    states += [{(j.child, 0): at(j, f) for j in js} for f in (0.5, 1.0)]
+    states += [{(j.child, 0): at(j, f)} for j in js if not j.child.startswith("button") for f in (0.5, 1.0)]
     for q in states:
         assert not contacts(bp, opened(bp, q)), q
 
@@ -212,9 +164,9 @@ def test_the_door_is_solid(seed):
                    and b[2] >= hi[2] - 0.011 for a, b in spans), x
     for j in movable(bp):
         if j.child.startswith("rack_"):
-            hit = {frozenset((a, b)) for a, b, _ in contacts(bp, {j.child: at(j, 1.0)})}
+            hit = {frozenset((a, b)) for a, b, _ in contacts(bp, {(j.child, 0): at(j, 1.0)})}
             assert hit and all("door" in pair for pair in hit), hit
-            assert not contacts(bp, opened(bp, {j.child: at(j, 1.0)}))
+            assert not contacts(bp, opened(bp, {(j.child, 0): at(j, 1.0)}))
 
 
 def test_racks_clear_the_open_door_everywhere():
@@ -222,8 +174,8 @@ def test_racks_clear_the_open_door_everywhere():
     _, bp = make(1, rack_count=4, has_handle=True, handle_style="bar", has_control_panel=True,
                  has_buttons=True, has_baskets=True, rack_travel=0.8)
     js = movable(bp)
-    assert not contacts(bp, {j.child: at(j, 1.0) for j in js})
-    door = poses(bp, {"door": math.pi / 2})["door"]
+    assert not contacts(bp, {(j.child, 0): at(j, 1.0) for j in js})
+    door = bp.poses({("door", 0): math.pi / 2})["door"]
     top = max((np.vstack([pc.vertices for pc in bp.parts["door"].pieces]) @ door[:3, :3].T
                + door[:3, 3])[:, 2])
     low = min(pc.bounds[0, 2] for n, part in bp.parts.items() if part.label in ("rack", "basket")
@@ -237,7 +189,7 @@ def test_moving_parts_do_not_enter_their_parent(seed):
     for j in movable(bp):
         parent = bp.parts[j.parent]
         for f in (0.0, 0.25, 0.5, 0.75, 1.0):
-            pose = poses(bp, {j.child: at(j, f)})
+            pose = bp.poses({(j.child, 0): at(j, f)})
             assert overlap(bp.parts[j.child], pose[j.child], parent, pose[j.parent]) < VOL, (j.child, f)
         assert overlap(bp.parts[j.child], np.eye(4), parent, np.eye(4), pad=0.001) < VOL
 
@@ -246,8 +198,8 @@ def test_moving_parts_do_not_enter_their_parent(seed):
 def test_nothing_below_ground(seed):
     _, bp = make(seed)
     js = movable(bp)
-    for q in [{j.child: at(j, 1.0) for j in js}, *({j.child: at(j, 1.0)} for j in js)]:
-        pose = poses(bp, opened(bp, q))
+    for q in [{(j.child, 0): at(j, 1.0) for j in js}, *({(j.child, 0): at(j, 1.0)} for j in js)]:
+        pose = bp.poses(opened(bp, q))
         for name, part in bp.parts.items():
             pts = np.vstack([pc.vertices for pc in part.pieces])
             assert (pts @ pose[name][:3, :3].T + pose[name][:3, 3])[:, 2].min() >= -1e-6

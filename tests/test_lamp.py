@@ -5,17 +5,19 @@ from __future__ import annotations
 import itertools
 import math
 
-import manifold3d
 import numpy as np
 import pytest
 from scipy.spatial import ConvexHull
 
 from infmob_usd import physical
+from infmob_usd.blueprint import descendants
 from infmob_usd.categories import lamp
 from infmob_usd.errors import ParameterError
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.seeding import streams
+
+from collide import overlap
 
 SEEDS = range(10)
 LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch"}
@@ -34,71 +36,13 @@ def lamp_bp(request):
     return make(request.param)
 
 
-# -- kinematics and collision helpers (independent of the core's model) -------
+# -- kinematics and collision helpers ------------------------------------------
 
 
-def dof_motion(dof, value: float) -> np.ndarray:
-    m = np.eye(4)
-    a, o = np.asarray(dof.axis), np.asarray(dof.origin)
-    if dof.type == "prismatic":
-        m[:3, 3] = a * value
-    else:
-        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-        r = np.eye(3) + math.sin(value) * k + (1 - math.cos(value)) * k @ k
-        m[:3, :3], m[:3, 3] = r, o - r @ o
-    return m
-
-
-def poses(bp, q: dict | None = None) -> dict[str, np.ndarray]:
-    """World transform of every part from rest; ``q`` maps (child part, dof index) -> value."""
-    q = q or {}
-    out = {bp.root: np.eye(4)}
-    pending = list(bp.joints)
-    while pending:
-        for j in list(pending):
-            if j.parent in out:
-                m = out[j.parent]
-                for i, d in enumerate(j.dofs):
-                    m = m @ dof_motion(d, q.get((j.child, i), 0.0))
-                out[j.child] = m
-                pending.remove(j)
-    return out
-
-
-def subtree(bp, name: str) -> set[str]:
-    names, grew = {name}, True
-    while grew:
-        grew = False
-        for j in bp.joints:
-            if j.parent in names and j.child not in names:
-                names.add(j.child)
-                grew = True
-    return names
-
-
-def hulls(bp, names, pose):
-    out = []
-    for n in names:
-        for piece in bp.parts[n].pieces:
-            for c in piece.convex:
-                w = c @ pose[n][:3, :3].T + pose[n][:3, 3]
-                out.append((n, w, w.min(0), w.max(0)))
-    return out
-
-
-def overlaps(a, b) -> dict[tuple[str, str], float]:
-    """Shared volume (m^3) of two sets of convex pieces, per pair of parts."""
-    total: dict[tuple[str, str], float] = {}
-    for na, wa, lo_a, hi_a in a:
-        ma = None
-        for nb, wb, lo_b, hi_b in b:
-            if np.any(hi_a < lo_b) or np.any(hi_b < lo_a):
-                continue
-            ma = ma or manifold3d.Manifold.hull_points(wa)
-            v = (ma ^ manifold3d.Manifold.hull_points(wb)).volume()
-            if v > 0:
-                total[(na, nb)] = total.get((na, nb), 0.0) + v
-    return total
+def overlaps(bp, names_a, pose_a, names_b, pose_b) -> dict[tuple[str, str], float]:
+    """Shared volume (m^3) of the collision hulls of two sets of parts, per pair of parts that touch."""
+    out = {(a, b): overlap(bp.parts[a], pose_a[a], bp.parts[b], pose_b[b]) for a in names_a for b in names_b}
+    return {pair: v for pair, v in out.items() if v > 0}
 
 
 def limit_states(joint):
@@ -198,7 +142,7 @@ def test_pole_extended_makes_the_lamp_taller(lamp_bp):
     p, bp = lamp_bp
     H = p["floor_height"] if p["lamp_type"] == "floor" else p["desk_height"]
     slide = joint_of(bp, "upper_pole").dofs[0]
-    up = poses(bp, {("upper_pole", 0): slide.upper})
+    up = bp.poses({("upper_pole", 0): slide.upper})
     top = max((pc.vertices @ up[n][:3, :3].T + up[n][:3, 3])[:, 2].max()
               for n, part in bp.parts.items() for pc in part.pieces)
     assert top == pytest.approx(H + slide.upper, abs=1e-6)
@@ -292,32 +236,33 @@ def test_limits_contain_rest_and_pivots_sit_in_the_hinge(lamp_bp):
 
 def test_moving_parts_clear_their_parents_at_rest(lamp_bp):
     _, bp = lamp_bp
-    rest = poses(bp)
+    rest = bp.poses()
     for j in movable(bp):
-        v = overlaps(hulls(bp, [j.child], rest), hulls(bp, [j.parent], rest))
+        v = overlaps(bp, [j.child], rest, [j.parent], rest)
         assert sum(v.values()) < 1e-9, f"{j.child} is embedded in {j.parent} at rest"
 
 
 def test_every_joint_limit_stays_above_ground_and_enters_nothing(lamp_bp):
     """Each joint alone at every corner of its range, moving its whole subtree."""
     _, bp = lamp_bp
-    rest = poses(bp)
+    rest = bp.poses()
     for j in movable(bp):
-        moved = subtree(bp, j.child)
-        still = hulls(bp, [n for n in bp.parts if n not in moved], rest)
-        before = overlaps(hulls(bp, moved, rest), still)
+        moved = descendants(bp.joints, j.child)
+        still = [n for n in bp.parts if n not in moved]
+        before = overlaps(bp, moved, rest, still, rest)
         for q in limit_states(j):
-            now = hulls(bp, moved, poses(bp, q))
-            z = min(w[:, 2].min() for _, w, _, _ in now)
+            now = bp.poses(q)
+            z = min((c @ now[n][2, :3] + now[n][2, 3]).min() for n in moved for pc in bp.parts[n].pieces
+                    for c in pc.convex)
             assert z > -1e-3, f"{j.child} at {q} goes {-z * 1000:.1f} mm below the ground"
-            for pair, v in overlaps(now, still).items():
+            for pair, v in overlaps(bp, moved, now, still, rest).items():
                 assert v <= before.get(pair, 0.0) + 1e-8, f"{pair} overlap {v * 1e6:.2f} cm^3 at {q}"
 
 
 def carried_mass(bp, name: str) -> tuple[float, np.ndarray]:
     """Mass and centre of mass at rest of a part and everything it carries."""
     mass, moment = 0.0, np.zeros(3)
-    for n in subtree(bp, name):
+    for n in descendants(bp.joints, name):
         part = bp.parts[n]
         m, com, _ = inertial((pc, FAMILIES[bp.materials[pc.material]].density) for pc in part.pieces)
         mass, moment = mass + m, moment + m * com

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from infmob_usd import physical
+from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import office_chair as oc
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
@@ -36,64 +37,20 @@ def by_child(bp, name):
     return next(j for j in bp.joints if j.child == name)
 
 
-def rotation(axis, angle):
-    a = np.asarray(axis, float) / np.linalg.norm(axis)
-    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
-
-
-def dof_pose(dof, q):
-    m = np.eye(4)
-    if dof.type == "prismatic":
-        m[:3, 3] = np.asarray(dof.axis) * q
-    else:
-        o = np.asarray(dof.origin)
-        r = rotation(dof.axis, q)
-        m[:3, :3], m[:3, 3] = r, o - r @ o
-    return m
-
-
-def poses(bp, q):
-    """World pose of every part for joint values ``q`` (child name -> tuple of DoF values)."""
-    into = {j.child: j for j in bp.joints}
-    out = {}
-
-    def pose(name):
-        if name not in out:
-            j = into.get(name)
-            if j is None:
-                out[name] = np.eye(4)
-            else:
-                m = pose(j.parent)
-                local = np.eye(4)
-                for dof, v in zip(j.dofs, q.get(name, (0.0,) * len(j.dofs))):
-                    local = local @ dof_pose(dof, v)
-                out[name] = m @ local
-        return out[name]
-
-    for n in bp.parts:
-        pose(n)
-    return out
-
-
 def states(bp):
-    """rest, all at 50 % and 100 % (continuous: pi/2, pi), each joint alone at its limits."""
+    """rest, all at 50 % and 100 % (continuous: pi/2, pi), each joint alone at its limits, as
+    ``Blueprint.poses`` values (every DoF of a joint at the same fraction)."""
     def at(j, f):
-        return tuple(d.lower + f * (d.upper - d.lower) if d.type != "continuous" else f * math.pi
-                     for d in j.dofs)
+        return {(j.child, i): d.lower + f * (d.upper - d.lower) if d.type != "continuous" else f * math.pi
+                for i, d in enumerate(j.dofs)}
     out = [{}]
-    out += [{j.child: at(j, f) for j in movable(bp)} for f in (0.5, 1.0)]
+    out += [{k: v for j in movable(bp) for k, v in at(j, f).items()} for f in (0.5, 1.0)]
     for j in movable(bp):
         if j.kind in ("continuous",):
-            out += [{j.child: (a,)} for a in (math.pi / 2, -math.pi / 2, math.pi)]
+            out += [{(j.child, 0): a} for a in (math.pi / 2, -math.pi / 2, math.pi)]
         else:
-            out += [{j.child: at(j, 0.0)}, {j.child: at(j, 1.0)}]
+            out += [at(j, 0.0), at(j, 1.0)]
     return out
-
-
-class _Link:
-    def __init__(self, part):
-        self.pieces = part.pieces
 
 
 # -- parts, labels, materials --------------------------------------------------------------
@@ -173,7 +130,7 @@ def test_back_reclines_and_gravity_holds_it_upright():
     # reclining moves the top backwards
     top = np.array([0, 0, bp.parts["back"].pieces[1].bounds[1, 2], 1.0])
     top[:2] = d.origin[:2]
-    assert (dof_pose(d, d.upper) @ top)[0] < d.origin[0] - 0.05
+    assert (dof_motion(d, d.upper) @ top)[0] < d.origin[0] - 0.05
     # centre of mass ahead of the hinge: gravity tips it forward, onto its q = 0 stop
     dens = {k: 300.0 for k in bp.materials} | {"frame": 1100.0}
     links, _ = build_model(bp, dens)
@@ -205,36 +162,47 @@ def _box(part, pose):
     return w.min(0), w.max(0)
 
 
+def rest_overlaps(bp):
+    """Each child's overlap with its parent at rest: the most it may keep in any state."""
+    rest = bp.poses()
+    return {j.child: overlap(bp.parts[j.child], rest[j.child], bp.parts[j.parent], rest[j.parent])
+            for j in bp.joints}
+
+
+def assert_clear(bp, ps, rest_pc, q):
+    """At poses ``ps`` (state ``q``): non-jointed parts never touch; a child never sinks deeper into its
+    parent than at rest (``rest_pc``, from :func:`rest_overlaps`)."""
+    into = {j.child: j.parent for j in bp.joints}
+    names = list(bp.parts)
+    parts = bp.parts
+    boxes = {n: _box(parts[n], ps[n]) for n in names}
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            (la, ha), (lb, hb) = boxes[a], boxes[b]
+            if np.any(ha < lb) or np.any(hb < la):
+                continue
+            if into.get(a) == b or into.get(b) == a:
+                c = a if into.get(a) == b else b
+                vol = overlap(parts[c], ps[c], parts[into[c]], ps[into[c]])
+                assert vol - rest_pc[c] < TOL, (c, q)
+            else:
+                assert overlap(parts[a], ps[a], parts[b], ps[b]) < TOL, (a, b, q)
+
+
 @pytest.mark.parametrize("seed", [0, 5])
 def test_no_collisions_at_any_sampled_state(seed):
     """Non-jointed parts never touch; a child never sinks deeper into its parent than at rest."""
     _, bp = make(seed, has_arms=True, has_back=True)
-    links = {n: _Link(part) for n, part in bp.parts.items()}
-    into = {j.child: j.parent for j in bp.joints}
-    names = list(bp.parts)
-    rest = poses(bp, {})
-    rest_pc = {c: overlap(links[c], rest[c], links[pa], rest[pa]) for c, pa in into.items()}
+    rest_pc = rest_overlaps(bp)
     for q in states(bp):
-        ps = poses(bp, q)
-        boxes = {n: _box(bp.parts[n], ps[n]) for n in names}
-        for i, a in enumerate(names):
-            for b in names[i + 1:]:
-                (la, ha), (lb, hb) = boxes[a], boxes[b]
-                if np.any(ha < lb) or np.any(hb < la):
-                    continue
-                if into.get(a) == b or into.get(b) == a:
-                    c = a if into.get(a) == b else b
-                    vol = overlap(links[c], ps[c], links[into[c]], ps[into[c]])
-                    assert vol - rest_pc[c] < TOL, (c, q)
-                else:
-                    assert overlap(links[a], ps[a], links[b], ps[b]) < TOL, (a, b, q)
+        assert_clear(bp, bp.poses(q), rest_pc, q)
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_nothing_below_ground(seed):
     _, bp = make(seed)
     for q in states(bp):
-        ps = poses(bp, q)
+        ps = bp.poses(q)
         for n, part in bp.parts.items():
             pts = np.vstack([c for pc in part.pieces for c in pc.convex])
             z = pts @ ps[n][2, :3] + ps[n][2, 3]

@@ -14,7 +14,7 @@ from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES, split_spec
 from infmob_usd.seeding import streams
 
-from collide import overlap
+import collide
 
 SEEDS = range(4)
 LABELS = {"body", "door", "drawer", "rack", "knob", "button", "grate", "control_panel"}
@@ -37,46 +37,16 @@ def movable(bp):
     return [j for j in bp.joints if j.movable]
 
 
-def rotation(axis, angle):
-    a = np.asarray(axis, float) / np.linalg.norm(axis)
-    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
-
-
-def pose(spec, f):
-    """World pose (4x4) of a joint's child with every DoF at fraction ``f`` of its range."""
-    m = np.eye(4)
-    for d in spec.dofs:
-        q = f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)
-        step = np.eye(4)
-        if d.type == "prismatic":
-            step[:3, 3] = np.asarray(d.axis) * q
-        else:
-            r = rotation(d.axis, q)
-            o = np.asarray(d.origin)
-            step[:3, :3], step[:3, 3] = r, o - r @ o
-        m = m @ step
-    return m
-
-
-def poses(bp, fractions):
-    """Pose of every part; ``fractions`` maps a child name to its joint's fraction (else rest)."""
-    out = {}
-
-    def get(name):
-        if name not in out:
-            spec = next((j for j in bp.joints if j.child == name), None)
-            if spec is None:
-                out[name] = np.eye(4)
-            else:
-                f = fractions.get(name, 0.0 if spec.dofs and spec.dofs[0].lower >= 0 else None)
-                own = pose(spec, f) if f is not None else np.eye(4)
-                out[name] = get(spec.parent) @ own
-        return out[name]
-
-    for name in bp.parts:
-        get(name)
-    return out
+def q_at(bp, fractions):
+    """``Blueprint.poses`` values for ``fractions`` ({child: f}): every DoF of that child's joint
+    at fraction ``f`` of its range (continuous: ``f`` pi); joints not named stay at rest."""
+    q = {}
+    for j in bp.joints:
+        if j.child in fractions:
+            f = fractions[j.child]
+            for i, d in enumerate(j.dofs):
+                q[(j.child, i)] = f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)
+    return q
 
 
 def jointed(bp, a, b):
@@ -98,17 +68,7 @@ def jointed(bp, a, b):
 
 
 def contacts(bp, state):
-    ps = poses(bp, state)
-    names = list(bp.parts)
-    hits = []
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            if jointed(bp, a, b):
-                continue
-            v = overlap(bp.parts[a], ps[a], bp.parts[b], ps[b])
-            if v >= VOL:
-                hits.append((a, b, v))
-    return hits
+    return collide.contacts(bp, q_at(bp, state), VOL, skip=lambda a, b: jointed(bp, a, b))
 
 
 def opened(bp, state):
@@ -250,7 +210,7 @@ def test_the_door_is_solid():
 def test_nothing_below_ground(seed):
     _, bp = make(seed, has_drawer=True)
     for f in (0.0, 0.5, 1.0):
-        ps = poses(bp, opened(bp, {j.child: f for j in movable(bp)}))
+        ps = bp.poses(q_at(bp, opened(bp, {j.child: f for j in movable(bp)})))
         for name, part in bp.parts.items():
             pts = np.vstack([pc.vertices for pc in part.pieces])
             assert (pts @ ps[name][:3, :3].T + ps[name][:3, 3])[:, 2].min() >= -1e-6, (name, f)

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from infmob_usd import physical
+from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import window as win
 from infmob_usd.errors import ParameterError
 from infmob_usd.seeding import streams
@@ -36,34 +37,12 @@ def by_child(bp, name):
     return next(j for j in bp.joints if j.child == name)
 
 
-def pose(dof, q):
-    """World transform of a child whose one DoF moved by ``q`` from rest."""
-    m = np.eye(4)
-    a = np.asarray(dof.axis)
-    if dof.type == "prismatic":
-        m[:3, 3] = a * q
-        return m
-    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    r = np.eye(3) + math.sin(q) * k + (1 - math.cos(q)) * k @ k
-    o = np.asarray(dof.origin)
-    m[:3, :3], m[:3, 3] = r, o - r @ o
-    return m
-
-
 def states(bp):
-    """The validator's sampled states: rest, all at 50 % and 100 %, each joint alone at its upper limit."""
+    """The validator's sampled states: rest, all at 50 % and 100 %, each joint alone at its upper limit
+    (``Blueprint.poses`` keys; every joint here has one DoF)."""
     js = movable(bp)
-    out = [{j.child: f * j.dofs[0].upper for j in js} for f in (0.5, 1.0)]
-    out += [{j.child: j.dofs[0].upper} for j in js]
-    return out
-
-
-def poses(bp, q):
-    """World transforms of every moving part (joints not in ``q`` at rest); chains compose."""
-    out = {}
-    for j in movable(bp):  # parents are declared before their children
-        own = pose(j.dofs[0], q.get(j.child, 0.0))
-        out[j.child] = out[j.parent] @ own if j.parent in out else own
+    out = [{(j.child, 0): f * j.dofs[0].upper for j in js} for f in (0.5, 1.0)]
+    out += [{(j.child, 0): j.dofs[0].upper} for j in js]
     return out
 
 
@@ -109,7 +88,7 @@ def test_size_and_ground(seed):
     assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
     # nothing goes below the ground at any sampled state
     for q in states(bp):
-        for name, m in poses(bp, q).items():
+        for name, m in bp.poses(q).items():
             pts = np.vstack([pc.vertices for pc in bp.parts[name].pieces])
             assert (pts @ m[:3, :3].T + m[:3, 3])[:, 2].min() >= -1e-9
 
@@ -134,7 +113,7 @@ def test_casement_hinges(seed):
             assert d.axis == pytest.approx((0, 0, 1))
             assert d.origin[1] == pytest.approx(hi[1])
         # opening moves the free edge into the room
-        m = pose(d, 0.5)
+        m = dof_motion(d, 0.5)
         centre = (lo + hi) / 2
         assert (m[:3, :3] @ centre + m[:3, 3])[0] > centre[0] + 0.05
 
@@ -165,7 +144,7 @@ def test_shutters_and_curtains():
                        and pc.bounds[1, 2] > 0.2)
         assert hi[0] < frame_lo  # outside the frame
         # the free edge swings away from the window (toward -X)
-        m = pose(d, d.upper)
+        m = dof_motion(d, d.upper)
         free = np.array([lo[0], 0.0, (lo[2] + hi[2]) / 2])
         assert (m[:3, :3] @ free + m[:3, 3])[0] < lo[0] - 0.1
         # a wide window's shutters are bifolds: the inner leaf hangs on the outer one
@@ -183,14 +162,12 @@ def test_shutters_and_curtains():
 
 
 def _pairs_clear(bp, q):
-    ps = poses(bp, q)
+    ps = bp.poses(q)
     parents = {j.child: j.parent for j in bp.joints}
     names = list(bp.parts)
     for i, a in enumerate(names):
         for b in names[i + 1:]:
-            if a not in ps and b not in ps:
-                continue
-            v = overlap(bp.parts[a], ps.get(a, EYE), bp.parts[b], ps.get(b, EYE))
+            v = overlap(bp.parts[a], ps[a], bp.parts[b], ps[b])
             if parents.get(a) == b or parents.get(b) == a:
                 rest = overlap(bp.parts[a], EYE, bp.parts[b], EYE)
                 assert v <= rest + VOLUME_TOL, f"{a} enters its parent {b} at {q}"
