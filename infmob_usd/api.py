@@ -77,7 +77,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     ``materials_rng`` draws one look per declared material slot (in declaration
     order, used or not, so optional parts never reshuffle the others).
     """
-    from .materials import FAMILIES, sample_look, split_spec, synthesize
+    from .materials import FAMILIES, sample_look, split_spec, texture_maps
 
     check_texture_size(texture_size)
     t0 = time.perf_counter()
@@ -92,7 +92,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     physical.ensure_gaps(links, joints)
     looks = {slot: looks[slot] for slot in used}
     t1 = time.perf_counter()
-    textures = {slot: synthesize(look, texture_size) for slot, look in looks.items()}
+    textures = {slot: texture_maps(look, texture_size) for slot, look in looks.items()}
     t2 = time.perf_counter()
     obj = ArticulatedObject(
         category=bp.category,

@@ -1,4 +1,4 @@
-"""The ``infmob`` command line: list, params, generate, validate, preview, stats, bench."""
+"""The ``infmob`` command line: list, params, generate, validate, preview, stats, bench, textures."""
 
 from __future__ import annotations
 
@@ -73,6 +73,17 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--json", action="store_true", help="print JSON instead of a table")
     st.add_argument("--max-pairs", type=int, default=2000,
                     help="at most this many (seeded, sampled) object pairs per group for mean TED; default 2000")
+    tx = sub.add_parser("textures", help="build the texture library cache ahead of a large run",
+                        description="Every look an object can wear is one of a finite library (16 per palette"
+                        " variant, 1072 in all); its PNG maps are made once and cached on disk in"
+                        " $INFMOB_USD_CACHE (default ~/.cache/infmob-usd; `off` disables it). Generation fills the"
+                        " cache as it goes; this command fills it up front, in parallel, e.g. on a shared folder"
+                        " before a cluster run.")
+    tx.add_argument("--texture-size", type=int, default=512, metavar="PX",
+                    help="texture edge in pixels, a power of two 16..4096; default 512")
+    tx.add_argument("--family", default=None, metavar="SPEC",
+                    help="only this family (e.g. wood or plastic:black|white); default: all")
+    tx.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="worker processes; default: all cores")
     b = sub.add_parser("bench", help="benchmark: seconds per object by stage, memory, parallel efficiency")
     b.add_argument("--categories", default="all", help="comma list or `all` (default)")
     b.add_argument("--count", type=int, default=10, help="objects per category; default 10")
@@ -258,6 +269,41 @@ def cmd_bench(args) -> int:
     return 0
 
 
+def cmd_textures(args) -> int:
+    import time
+
+    from .api import check_texture_size
+    from .materials import FAMILIES, split_spec
+    from .materials.cache import build, cache_dir
+
+    check_texture_size(args.texture_size)
+    if args.workers < 1:
+        return _fail("--workers must be at least 1")
+    if args.family and split_spec(args.family)[0] not in FAMILIES:
+        return _fail(f"unknown material family {args.family!r}; valid families: {', '.join(FAMILIES)}")
+    if cache_dir() is None:
+        return _fail("the texture cache is disabled or not writable; set INFMOB_USD_CACHE to a writable folder")
+    t0 = time.perf_counter()
+    tty = sys.stderr.isatty()
+
+    def progress(done, total):
+        if tty:
+            print(f"\r{done}/{total} looks", end="", file=sys.stderr, flush=True)
+
+    try:
+        res = build(args.texture_size, args.family, args.workers, progress)
+    except ValueError as e:
+        return _fail(str(e))
+    if tty:
+        print(file=sys.stderr)
+    dt = time.perf_counter() - t0
+    size = sum(f.stat().st_size for f in Path(res["cache"]).rglob("*.png"))
+    print(f"{res['looks']} looks at {args.texture_size} px: {res['made']} made, {res['looks'] - res['made']}"
+          f" already cached, in {dt:.1f} s with {args.workers} workers")
+    print(f"cache {res['cache']} ({size / 2**20:.0f} MB, every size)")
+    return 0
+
+
 def cmd_preview(args) -> int:
     from .validate.preview import main as preview_main
 
@@ -265,7 +311,7 @@ def cmd_preview(args) -> int:
 
 
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
-            "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench}
+            "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -75,7 +75,7 @@ class ArticulatedObject:
     links: list[Link]
     joints: list[Joint]
     materials: dict[str, Any]  # slot -> materials.Look
-    textures: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # slot -> map -> image
+    textures: dict[str, dict[str, bytes]] = field(default_factory=dict)  # slot -> map -> PNG bytes
     texture_size: int = 512
     timings: dict[str, float] = field(default_factory=dict)  # seconds per stage; never written to files
 

@@ -3,9 +3,16 @@
 A :class:`Family` describes a kind of material: its physical density, the
 palette it is painted from, the ranges of its PBR parameters and the ranges of
 the knobs that drive texture synthesis (see :mod:`infmob_usd.materials.synth`).
-:func:`sample_look` draws one concrete :class:`Look` from a family with an
-explicitly passed :class:`numpy.random.Generator`; a look is plain, hashable,
-JSON-able data that fully determines its synthesized texture maps.
+
+Looks come from a finite library: each palette variant of a family has
+:data:`LOOKS_PER_VARIANT` looks, :func:`library_look` ``(family, variant, index)``,
+each a pure function of those three (colour jitter, roughness, synthesis knobs and
+noise seed drawn from a generator seeded by them).  :func:`sample_look` draws a
+variant and an index with an explicitly passed :class:`numpy.random.Generator`.
+Because the set of looks is finite, their encoded texture maps are made once and
+reused by every object that wears them (:mod:`infmob_usd.materials.cache`);
+making the maps is most of the cost of an object otherwise.  A look is plain,
+hashable, JSON-able data that fully determines its synthesized texture maps.
 
 Colour conventions: palettes are written as sRGB hex strings (as one would pick
 them in an image editor); :attr:`Look.base_color` is *linear* RGB.
@@ -14,12 +21,18 @@ them in an image editor); :attr:`Look.base_color` is *linear* RGB.
 from __future__ import annotations
 
 import colorsys
+import zlib
 from dataclasses import asdict, dataclass
 from typing import Any
 
 import numpy as np
 
-__all__ = ["FAMILIES", "Family", "Look", "sample_look", "srgb_to_linear"]
+__all__ = [
+    "FAMILIES", "LOOKS_PER_VARIANT", "Family", "Look", "library", "library_look", "sample_look", "srgb_to_linear",
+]
+
+LOOKS_PER_VARIANT = 16
+"""Looks per palette variant of a family in the look library (1072 looks over all families)."""
 
 Range = tuple[float, float]
 
@@ -99,6 +112,9 @@ class Look:
         Seed of every random draw made by texture synthesis (0 <= seed < 2**53).
     color_variation, roughness_variation, bump, scale, anisotropy : float
         Synthesis knobs, see :class:`Family`.
+    index : int
+        Position of the look among the :data:`LOOKS_PER_VARIANT` looks of its variant
+        (-1 for a look made by hand rather than by :func:`library_look`).
     """
 
     family: str
@@ -113,6 +129,7 @@ class Look:
     bump: float
     scale: float
     anisotropy: float
+    index: int = -1
 
     def to_dict(self) -> dict[str, Any]:
         """Return the look as a JSON-serialisable dict (``base_color`` as a list)."""
@@ -383,44 +400,33 @@ def split_spec(spec: str) -> tuple[str, tuple[str, ...]]:
     return family, tuple(v for v in variants.split("|") if v)
 
 
-def sample_look(family: str, rng: np.random.Generator) -> Look:
-    """Draw one appearance of ``family``.
-
-    Parameters
-    ----------
-    family : str
-        A key of :data:`FAMILIES`, optionally restricted to some palette variants:
-        ``"plastic:black|dark_grey"`` draws only those colours.
-    rng : numpy.random.Generator
-        Source of every random draw.
-
-    Returns
-    -------
-    Look
-        The sampled look; its ``noise_seed`` drives texture synthesis.
-
-    Raises
-    ------
-    ValueError
-        If ``family`` is not a known family.
-    TypeError
-        If ``rng`` is not a :class:`numpy.random.Generator`.
-    """
-    family, only = split_spec(family)
+def _family(family: str) -> Family:
     fam = FAMILIES.get(family)
     if fam is None:
         raise ValueError(
             f"unknown material family {family!r}; valid families: {', '.join(sorted(FAMILIES))}"
         )
-    if not isinstance(rng, np.random.Generator):
-        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
-    palette = [entry for entry in fam.palette if not only or entry[0] in only]
-    if not palette:
-        names = ", ".join(name for name, _ in fam.palette)
-        raise ValueError(f"family {family!r} has no variant among {only}; its variants: {names}")
+    return fam
 
-    variant, hex_colour = palette[int(rng.integers(len(palette)))]
-    hue, sat, val = colorsys.rgb_to_hsv(*_hex_to_srgb(hex_colour))
+
+def library_look(family: str, variant: str, index: int) -> Look:
+    """Look number ``index`` of palette ``variant`` of ``family``: a pure function of the three.
+
+    Raises
+    ------
+    ValueError
+        If the family or variant is unknown or ``index`` is not in
+        ``range(LOOKS_PER_VARIANT)``.
+    """
+    fam = _family(family)
+    colours = dict(fam.palette)
+    if variant not in colours:
+        raise ValueError(f"family {family!r} has no variant {variant!r}; its variants: {', '.join(colours)}")
+    if isinstance(index, bool) or not isinstance(index, int | np.integer) or not 0 <= index < LOOKS_PER_VARIANT:
+        raise ValueError(f"look index must be an integer in [0, {LOOKS_PER_VARIANT}), got {index!r}")
+    key = zlib.crc32(f"{fam.name}/{variant}".encode())
+    rng = np.random.default_rng(np.random.SeedSequence((key, int(index))))
+    hue, sat, val = colorsys.rgb_to_hsv(*_hex_to_srgb(colours[variant]))
     dh, ds, dv = fam.hsv_jitter
     hue = (hue + _uniform(rng, (-dh, dh))) % 1.0
     sat = min(1.0, sat * (1.0 + _uniform(rng, (-ds, ds))))
@@ -439,4 +445,53 @@ def sample_look(family: str, rng: np.random.Generator) -> Look:
         bump=_uniform(rng, fam.bump),
         scale=_uniform(rng, fam.scale),
         anisotropy=_uniform(rng, fam.anisotropy),
+        index=int(index),
     )
+
+
+def library(family: str | None = None) -> list[Look]:
+    """Every look of the library (of one family spec such as ``"plastic:black|white"``, or all)."""
+    specs = [family] if family else list(FAMILIES)
+    out = []
+    for spec in specs:
+        name, only = split_spec(spec)
+        fam = _family(name)
+        for variant, _ in fam.palette:
+            if not only or variant in only:
+                out += [library_look(name, variant, k) for k in range(LOOKS_PER_VARIANT)]
+    return out
+
+
+def sample_look(family: str, rng: np.random.Generator) -> Look:
+    """Draw one appearance of ``family``: a palette variant, then one of its library looks.
+
+    Parameters
+    ----------
+    family : str
+        A key of :data:`FAMILIES`, optionally restricted to some palette variants:
+        ``"plastic:black|dark_grey"`` draws only those colours.
+    rng : numpy.random.Generator
+        Source of the two draws (variant, look index).
+
+    Returns
+    -------
+    Look
+        The look, :func:`library_look` of the drawn variant and index.
+
+    Raises
+    ------
+    ValueError
+        If ``family`` is not a known family or none of its variants is allowed.
+    TypeError
+        If ``rng`` is not a :class:`numpy.random.Generator`.
+    """
+    family, only = split_spec(family)
+    fam = _family(family)
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    palette = [entry for entry in fam.palette if not only or entry[0] in only]
+    if not palette:
+        names = ", ".join(name for name, _ in fam.palette)
+        raise ValueError(f"family {family!r} has no variant among {only}; its variants: {names}")
+    variant = palette[int(rng.integers(len(palette)))][0]
+    return library_look(family, variant, int(rng.integers(LOOKS_PER_VARIANT)))

@@ -14,7 +14,7 @@ look at 256 and at 1024 px show the same pattern (the smaller one simply lacks
 the finest detail).
 
 Output conventions (see :func:`synthesize`): basecolor is sRGB-encoded RGB,
-roughness and metallic are linear greys, normal is an OpenGL (+Y up)
+roughness is a linear grey, normal is an OpenGL (+Y up)
 tangent-space normal map.
 """
 
@@ -31,7 +31,9 @@ from .families import FAMILIES, Look
 
 __all__ = ["TEXTURE_MAPS", "encode_png", "height_to_normal", "periodic_noise", "synthesize"]
 
-TEXTURE_MAPS = ("basecolor", "roughness", "metallic", "normal")
+TEXTURE_MAPS = ("basecolor", "roughness", "normal")
+"""The maps of a look.  Metallic is constant per family, so it is a material constant
+(``Pm`` in the MTL, the ``metallic`` input in USD) rather than a texture."""
 
 MIN_SIZE = 16
 MAX_SIZE = 4096
@@ -336,7 +338,6 @@ def synthesize(look: Look, size: int = 512) -> dict[str, np.ndarray]:
 
         - ``"basecolor"``: (size, size, 3) sRGB, RGB order, mean ``look.base_color``;
         - ``"roughness"``: (size, size) linear, around ``look.roughness``;
-        - ``"metallic"``: (size, size) linear, constant ``look.metallic``;
         - ``"normal"``: (size, size, 3) OpenGL tangent-space normal, flat = (128, 128, 255).
 
         Deterministic given ``(look, size)``.
@@ -358,7 +359,6 @@ def synthesize(look: Look, size: int = 512) -> dict[str, np.ndarray]:
     return {
         "basecolor": _basecolor(tint, look.base_color),
         "roughness": np.rint(rough * 255.0).astype(np.uint8),
-        "metallic": np.full((size, size), round(look.metallic * 255.0), dtype=np.uint8),
         "normal": height_to_normal(height, look.bump),
     }
 

@@ -11,12 +11,16 @@ import pytest
 
 from infmob_usd.materials import (
     FAMILIES,
+    LOOKS_PER_VARIANT,
     TEXTURE_MAPS,
     Family,
     Look,
     encode_png,
+    library,
+    library_look,
     sample_look,
     synthesize,
+    texture_maps,
 )
 from infmob_usd.materials.families import srgb_to_linear
 from infmob_usd.materials.synth import height_to_normal, periodic_noise
@@ -103,7 +107,6 @@ def test_synthesize_shapes_and_dtypes(family):
     assert tuple(maps) == TEXTURE_MAPS
     assert maps["basecolor"].shape == (SIZE, SIZE, 3)
     assert maps["roughness"].shape == (SIZE, SIZE)
-    assert maps["metallic"].shape == (SIZE, SIZE)
     assert maps["normal"].shape == (SIZE, SIZE, 3)
     assert all(m.dtype == np.uint8 for m in maps.values())
 
@@ -206,11 +209,12 @@ def test_normal_map_follows_opengl_convention():
     assert n[size - 1, :, 1].max() < 128 and n[size // 2, :, 1].min() > 128
 
 
-def test_metallic_by_family():
+def test_metallic_by_family_is_a_constant_not_a_map():
+    assert "metallic" not in TEXTURE_MAPS
     for family in ("brushed_metal", "chrome"):
-        assert synthesize(_look(family), SIZE)["metallic"].mean() > 250
+        assert _look(family).metallic == 1.0
     for family in ("wood", "plastic", "painted", "enamel", "fabric"):
-        assert synthesize(_look(family), SIZE)["metallic"].max() == 0
+        assert _look(family).metallic == 0.0
 
 
 def test_roughness_ordering_between_families():
@@ -262,3 +266,74 @@ def test_variant_restricted_family_spec():
     assert variants == {"black", "dark_grey"}
     with pytest.raises(ValueError, match="no variant"):
         sample_look("plastic:mauve", rng)
+
+
+# --------------------------------------------------------------------------- look library and cache
+
+
+def test_looks_come_from_a_finite_library():
+    assert len(library()) == LOOKS_PER_VARIANT * sum(len(f.palette) for f in FAMILIES.values())
+    assert len(set(library())) == len(library())  # every look distinct
+    rng = np.random.default_rng(7)
+    drawn = {sample_look("plastic:black|white", rng) for _ in range(400)}
+    assert drawn <= set(library("plastic:black|white"))
+    assert len(drawn) > LOOKS_PER_VARIANT  # both variants, many indices
+    look = library_look("wood", "oak", 3)
+    assert look == library_look("wood", "oak", 3) and look.index == 3 and look.variant == "oak"
+    assert look != library_look("wood", "oak", 4)
+
+
+@pytest.mark.parametrize("args, match", [
+    (("wood", "pine", 0), "no variant 'pine'.*oak"),
+    (("wood", "oak", LOOKS_PER_VARIANT), "look index"),
+    (("wood", "oak", -1), "look index"),
+    (("marble", "oak", 0), "unknown material family"),
+])
+def test_library_look_rejects_bad_keys(args, match):
+    with pytest.raises(ValueError, match=match):
+        library_look(*args)
+
+
+def test_texture_cache_serves_the_same_bytes_and_survives_corruption(tmp_path, monkeypatch):
+    from infmob_usd.materials import cache as lib
+
+    monkeypatch.setenv("INFMOB_USD_CACHE", str(tmp_path))
+    monkeypatch.setattr(lib, "_memory", type(lib._memory)())
+    look = library_look("fabric", "teal", 5)
+    fresh = lib.make_maps(look, 32)
+    first = texture_maps(look, 32)
+    assert first == fresh and tuple(first) == TEXTURE_MAPS
+    files = sorted((tmp_path / "textures").rglob("*.png"))
+    assert len(files) == len(TEXTURE_MAPS) and all(f.read_bytes() in fresh.values() for f in files)
+    lib._memory.clear()
+    files[0].write_bytes(files[0].read_bytes()[:100])  # a torn file: regenerated, not served
+    assert texture_maps(look, 32) == fresh
+    assert all(lib._whole_png(f.read_bytes()) for f in files)
+    lib._memory.clear()
+    monkeypatch.setenv("INFMOB_USD_CACHE", "off")
+    assert lib.cache_dir() is None and texture_maps(look, 32) == fresh
+
+
+def test_texture_memory_cache_is_bounded(tmp_path, monkeypatch):
+    from infmob_usd.materials import cache as lib
+
+    monkeypatch.setenv("INFMOB_USD_CACHE", "off")
+    monkeypatch.setattr(lib, "_memory", type(lib._memory)())
+    monkeypatch.setattr(lib, "_memory_bytes", 0)
+    monkeypatch.setattr(lib, "MEMORY_BUDGET", 40_000)
+    for k in range(8):
+        texture_maps(library_look("wood", "oak", k), 64)
+    assert lib._memory_bytes <= 40_000 or len(lib._memory) == 1
+    assert 0 < len(lib._memory) < 8
+
+
+def test_editing_an_objects_maps_never_edits_the_cache(monkeypatch):
+    from infmob_usd.materials import cache as lib
+
+    monkeypatch.setenv("INFMOB_USD_CACHE", "off")
+    look = library_look("ceramic", "white", 1)
+    first = texture_maps(look, 16)
+    first["basecolor"] = b"edited"
+    del first["normal"]
+    again = texture_maps(look, 16)
+    assert again == lib.make_maps(look, 16)
