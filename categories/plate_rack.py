@@ -172,7 +172,7 @@ def _plate(R, H, t, rf):
     coarse = g.revolve(foot + [(rw, hf), (rh, float(mid(rh)) - t / 2), (Rc, H - t), (R, c1), (Rc, H),
                                (0.0, H)], "plate")
     fine.convex = coarse.convex
-    fine._hulls = None
+    fine._hull_cache = coarse._hull_cache  # their hulls, known from construction
     m = np.eye(4)
     m[:3, :3] = g.rotation_between((0, 0, 1), (1, 0, 0))
     return fine.transformed(m)

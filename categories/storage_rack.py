@@ -19,7 +19,6 @@ fixed to it (a ``fixed`` joint), inside the bay and clear of the uprights.
 from __future__ import annotations
 
 import numpy as np
-import trimesh
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
@@ -149,15 +148,10 @@ def _frame(yk, D, u, top, slot):
 
 def _perforations(face, out, yk, u, z0, z1):
     """Two columns of small slots on an upright's front or back face (decoration, no collision)."""
-    boxes = []
-    pitch = 0.05
-    for z in np.arange(z0, z1, pitch):
-        for dy in (-0.25 * u, 0.25 * u):
-            m = trimesh.creation.box([0.0015, 0.008, 0.022])
-            m.apply_translation([face + out * 0.0005, yk + dy, z])
-            boxes.append(m)
-    mesh = trimesh.util.concatenate(boxes)
-    return g.Piece(mesh.vertices, mesh.faces, "holes", [], "perforation")
+    zs = np.arange(z0, z1, 0.05)
+    offsets = np.array([[face + out * 0.0005, yk + dy, z] for z in zs for dy in (-0.25 * u, 0.25 * u)])
+    verts, faces = g.instances(*g.box_arrays([0.0015, 0.008, 0.022]), offsets)
+    return g.Piece(verts, faces, "holes", [], "perforation")
 
 
 def _level(ys, D, z, bh, dt, deck, beam_slot):
@@ -179,34 +173,23 @@ def _level(ys, D, z, bh, dt, deck, beam_slot):
         plate.sheet = 0.001
         pieces.append(plate)
     else:  # wire mesh on channels: the mesh is visual, its collision one flat plate
-        bars = []
-        for yv in np.arange(ya + 0.02, yb - 0.015, 0.05):
-            bars.append(trimesh.creation.cylinder(0.0025, x1 - x0, sections=6,
-                                                  transform=_along([0, yv, z + dt - 0.0025], 0)))
-        for xv in np.arange(x0 + 0.02, x1 - 0.015, 0.1):
-            bars.append(trimesh.creation.cylinder(0.0025, yb - ya - 0.01, sections=6,
-                                                  transform=_along([xv, (ya + yb) / 2, z + dt - 0.0075], 1)))
-        mesh = trimesh.util.concatenate(bars)
-        plate = trimesh.creation.box([x1 - x0, yb - ya - 0.01, 0.01])
-        plate.apply_translation([0.0, (ya + yb) / 2, z + dt - 0.005])
-        pieces.append(g.Piece(mesh.vertices, mesh.faces, "deck_wire", [np.asarray(plate.vertices)], "deck"))
+        ys_bar = np.arange(ya + 0.02, yb - 0.015, 0.05)
+        xs_bar = np.arange(x0 + 0.02, x1 - 0.015, 0.1)
+        along_x = g.instances(*g.cylinder_arrays([x0, 0, 0], [x1, 0, 0], 0.0025, 6),
+                              np.c_[np.zeros(len(ys_bar)), ys_bar, np.full(len(ys_bar), z + dt - 0.0025)])
+        ym = yb - ya - 0.01
+        along_y = g.instances(*g.cylinder_arrays([0, -ym / 2, 0], [0, ym / 2, 0], 0.0025, 6),
+                              np.c_[xs_bar, np.full(len(xs_bar), (ya + yb) / 2), np.full(len(xs_bar), z + dt - 0.0075)])
+        verts = np.vstack([along_x[0], along_y[0]])
+        faces = np.vstack([along_x[1], along_y[1] + len(along_x[0])])
+        plate = g.box_arrays([x1 - x0, yb - ya - 0.01, 0.01], [0.0, (ya + yb) / 2, z + dt - 0.005])[0]
+        pieces.append(g.Piece(verts, faces, "deck_wire", [plate], "deck"))
         nch = max(2, int((yb - ya) / 0.45) + 1)
         for yv in np.linspace(ya + 0.04, yb - 0.04, nch):  # channels under the mesh, beam to beam
             ch = g.box_between([x0, yv - 0.015, z], [x1, yv + 0.015, z + dt - 0.01], "galvanised")
             ch.sheet = 0.0012
             pieces.append(ch)
     return pieces
-
-
-def _along(centre, axis):
-    """Transform that lays trimesh's Z-axis cylinder along X (axis 0) or Y (axis 1) at ``centre``."""
-    m = np.eye(4)
-    if axis == 0:
-        m[:3, :3] = g.rotation_between([0, 0, 1], [1, 0, 0])
-    else:
-        m[:3, :3] = g.rotation_between([0, 0, 1], [0, 1, 0])
-    m[:3, 3] = centre
-    return m
 
 
 def _goods(bp, level, kind, ys, D, z, h, rng):

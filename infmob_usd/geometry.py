@@ -13,6 +13,7 @@ Every builder takes plain numbers or ``(3,)`` arrays and returns a ``Piece``.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -29,6 +30,21 @@ UV_TILE = 0.5
 
 CREASE_DEG = 35.0
 """Edges sharper than this get split normals."""
+
+
+def cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of ``(n, 3)`` arrays: ``np.cross`` without its per-call overhead
+    (which dominates for the small arrays of hulls)."""
+    out = np.empty(np.broadcast_shapes(a.shape, b.shape))
+    out[..., 0] = a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]
+    out[..., 1] = a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]
+    out[..., 2] = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+    return out
+
+
+def triangle_cross(tri: np.ndarray) -> np.ndarray:
+    """``(m, 3)`` cross products of the edges of ``(m, 3, 3)`` triangles (twice their area vectors)."""
+    return cross_rows(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
 
 
 @dataclass
@@ -87,7 +103,7 @@ class Piece:
     def transformed(self, matrix: np.ndarray) -> Piece:
         """A copy moved by a rigid ``(4, 4)`` transform."""
         r, t = matrix[:3, :3], matrix[:3, 3]
-        return Piece(
+        moved = Piece(
             self.vertices @ r.T + t,
             self.faces.copy(),
             self.material,
@@ -95,6 +111,22 @@ class Piece:
             self.name,
             self.sheet,
         )
+        known = getattr(self, "_hull_cache", None)
+        hints = getattr(self, "_hull_hints", None)
+        if hints and np.linalg.det(r) > 0:  # hull topologies survive a proper rotation
+            bands: dict[int, dict] = {}
+            moved._hull_hints = {}
+            for k, (src, band) in hints.items():
+                if k < len(self.convex) and self.convex[k] is src:
+                    new_band = bands.setdefault(id(band), {"src": band["src"] @ r.T + t,
+                                                           "topology": band["topology"]})
+                    moved._hull_hints[k] = (moved.convex[k], new_band)
+        if known and np.linalg.det(r) > 0:  # a proper rotation keeps every hull's faces outward
+            moved._hull_cache = [
+                None if e is None or not np.array_equal(e[0], c) else (mc, (e[1][0] @ r.T + t, e[1][1]))
+                for e, c, mc in zip(known, self.convex, moved.convex)
+            ]
+        return moved
 
     def translated(self, offset: Sequence[float]) -> Piece:
         m = np.eye(4)
@@ -110,61 +142,70 @@ class Piece:
     def face_normals(self) -> np.ndarray:
         """``(m, 3)`` unit face normals."""
         tri = self.vertices[self.faces]
-        n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+        n = triangle_cross(tri)
         length = np.linalg.norm(n, axis=1, keepdims=True)
         return n / np.where(length > 0, length, 1.0)
 
     def corner_normals(self) -> np.ndarray:
-        """``(m, 3, 3)`` per face-corner normals.
+        """``(m, 3, 3)`` per face-corner normals (computed once per piece).
 
         Each corner averages (area-weighted) the normals of the faces around its
         vertex that lie within :data:`CREASE_DEG` of its own face, so a cylinder's
-        side is smooth and its caps stay flat.
+        side is smooth and its caps stay flat (:func:`corner_attributes`).
         """
-        fn = self.face_normals()
-        tri = self.vertices[self.faces]
-        area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
-        vert = self.faces.ravel()  # vertex of each corner; corner c belongs to face c // 3
-        order = np.argsort(vert, kind="stable")
-        counts = np.bincount(vert, minlength=len(self.vertices))
-        start = np.concatenate([[0], np.cumsum(counts)[:-1]])
-        k = counts[vert[order]]  # group size of each sorted corner
-        a = np.repeat(order, k)  # each corner paired with every corner of its vertex
-        first = np.repeat(start[vert[order]], k)
-        b = order[first + np.arange(len(a)) - np.repeat(np.cumsum(k) - k, k)]
-        fa, fb = a // 3, b // 3
-        keep = np.einsum("ij,ij->i", fn[fa], fn[fb]) >= math.cos(math.radians(CREASE_DEG))
-        acc = np.zeros((len(vert), 3))
-        np.add.at(acc, a[keep], fn[fb[keep]] * area[fb[keep], None])
-        length = np.linalg.norm(acc, axis=1, keepdims=True)
-        acc = np.where(length > 1e-15, acc / np.maximum(length, 1e-15), fn[np.arange(len(vert)) // 3])
-        return acc.reshape(-1, 3, 3)
+        self._corner_attributes()
+        return self._corner_normals
 
     def corner_uvs(self) -> np.ndarray:
-        """``(m, 3, 2)`` box-projected UVs, :data:`UV_TILE` metres per repeat."""
-        fn = self.face_normals()
-        axis = np.abs(fn).argmax(1)
-        # (u, v) axes per dominant axis, chosen so texture "up" follows Z on walls
-        uv_axes = np.array([[1, 2], [0, 2], [0, 1]])[axis]  # (m, 2)
-        tri = self.vertices[self.faces]  # (m, 3, 3)
-        idx = np.broadcast_to(uv_axes[:, None, :], (len(tri), 3, 2))
-        return np.take_along_axis(tri, idx, axis=2) / UV_TILE
+        """``(m, 3, 2)`` box-projected UVs, :data:`UV_TILE` metres per repeat (computed once)."""
+        self._corner_attributes()
+        return self._corner_uvs
+
+    def _corner_attributes(self) -> None:
+        if getattr(self, "_corner_normals", None) is None:
+            n, uv = corner_attributes(self.vertices, self.faces)
+            self._corner_normals, self._corner_uvs = n.reshape(-1, 3, 3), uv.reshape(-1, 3, 2)
 
     def hulls(self) -> list[tuple[np.ndarray, np.ndarray]]:
         """Collision meshes: ``(vertices (k, 3), faces (f, 3))`` per convex piece, outward.
 
-        A hull is kept under :data:`MAX_HULL_VERTICES` (PhysX keeps at most 255) by
-        farthest-point sampling of its vertices, which keeps its extremes.
+        Computed once per point set (Qhull, or known from construction: :meth:`set_hull`) and
+        recomputed if the point set changes.  A hull is kept under :data:`MAX_HULL_VERTICES`
+        (PhysX keeps at most 255) by farthest-point sampling of its vertices, which keeps its
+        extremes.
         """
-        if getattr(self, "_hulls", None) is None:
-            out = []
-            for c in self.convex:
-                h = convex_hull(c)
-                if len(h.vertices) > MAX_HULL_VERTICES:
-                    h = convex_hull(_farthest_points(np.asarray(h.vertices), MAX_HULL_VERTICES - 55))
-                out.append((np.asarray(h.vertices, float), np.asarray(h.faces, np.int64)))
-            self._hulls = out
-        return self._hulls
+        cache = getattr(self, "_hull_cache", None) or []
+        cache = cache + [None] * (len(self.convex) - len(cache))
+        hints = getattr(self, "_hull_hints", None) or {}
+        out = []
+        for k, c in enumerate(self.convex):
+            entry = cache[k]
+            # a hull is reused only while its point set is unchanged (pieces are edited in place)
+            if entry is None or entry[0].shape != c.shape or not np.array_equal(entry[0], c):
+                hint = hints.get(k)
+                if hint is not None and hint[0] is c:  # still the constructed point set
+                    band = hint[1]
+                    if band["topology"] is None:
+                        band["topology"] = hull_indices(band["src"])
+                    used, f = band["topology"]
+                    entry = cache[k] = (c.copy(), (c[used], f))
+                    out.append(entry[1])
+                    continue
+                v, f = hull_arrays(c)
+                if len(v) > MAX_HULL_VERTICES:
+                    v, f = hull_arrays(_farthest_points(v, MAX_HULL_VERTICES - 55))
+                entry = cache[k] = (c.copy(), (v, np.asarray(f, np.int64)))
+            out.append(entry[1])
+        self._hull_cache = cache[:len(self.convex)]
+        return out
+
+    def set_hull(self, k: int, vertices: np.ndarray, faces: np.ndarray) -> None:
+        """Declare the hull of ``convex[k]`` known from construction (outward ``faces`` over
+        ``vertices``, a subset of the points): :meth:`hulls` then skips Qhull for it."""
+        cache = getattr(self, "_hull_cache", None) or []
+        cache = cache + [None] * (len(self.convex) - len(cache))
+        cache[k] = (self.convex[k].copy(), (np.asarray(vertices, float), np.asarray(faces, np.int64)))
+        self._hull_cache = cache
 
     def volume(self) -> float:
         """Solid volume in m^3: the mesh's if it is closed, else its convex pieces'."""
@@ -175,30 +216,162 @@ class Piece:
 
 
 # ---------------------------------------------------------------------------
+# vectorised surface attributes
+
+_COS_CREASE = math.cos(math.radians(CREASE_DEG))
+# faces all within half the crease angle of one direction are pairwise within it (a hair
+# tighter, so rounding never lets a creased vertex through)
+_COS_HALF = math.cos(math.radians(CREASE_DEG / 2 - 0.01))
+
+
+def _norm(x: np.ndarray) -> np.ndarray:
+    """Row lengths of ``(n, 3)`` ``x``, bit for bit ``np.linalg.norm(x, axis=1)``, faster."""
+    return np.sqrt(x[:, 0] * x[:, 0] + x[:, 1] * x[:, 1] + x[:, 2] * x[:, 2])
+
+
+def corner_attributes(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per face-corner normals ``(3m, 3)`` and UVs ``(3m, 2)`` of a mesh.
+
+    Each corner averages (area-weighted) the normals of the faces around its vertex that
+    lie within :data:`CREASE_DEG` of its own face; UVs are box-projected, :data:`UV_TILE`
+    metres per repeat.  A mesh made of several pieces (which share no vertices) gives each
+    piece's own values, so the writers call it once per object.  Fast on large meshes: a
+    vertex whose faces all lie within ``CREASE_DEG / 2`` of their area-weighted mean keeps
+    every neighbour, so its corners take that plain area-weighted sum
+    (``np.bincount`` adds in corner order, as the pairwise ``np.add.at`` does), normalised
+    once per vertex; only the corners of crease vertices are compared pairwise, batched
+    by valence.
+    """
+    tri = vertices[faces]
+    cross = triangle_cross(tri)
+    length = _norm(cross)[:, None]
+    fn = cross / np.where(length > 0, length, 1.0)  # unit face normals
+    weighted = fn * (0.5 * length)  # area-weighted
+    vert = faces.ravel()  # vertex of each corner; corner c belongs to face c // 3
+    nv = len(vertices)
+    total = np.stack([np.bincount(vert, np.repeat(weighted[:, d], 3), nv) for d in range(3)], 1)
+    tlen = _norm(total)[:, None]
+    vn = total / np.maximum(tlen, 1e-15)  # the normal of a corner keeping every face of its vertex
+    # a vertex is a crease unless all its faces are within CREASE_DEG / 2 of vn (then they
+    # are pairwise within CREASE_DEG); a vertex without area (vn ~ 0) is a crease too
+    around = vn[faces]  # (m, 3, 3): per corner, the normal of its vertex
+    dots = (fn[:, None, 0] * around[..., 0] + fn[:, None, 1] * around[..., 1]
+            + fn[:, None, 2] * around[..., 2]).ravel()
+    crease = np.zeros(nv, bool)
+    crease[vert[dots < _COS_HALF]] = True
+    crease[tlen[:, 0] <= 1e-15] = True  # no area around the vertex: face normals, pairwise
+    normals = around.reshape(-1, 3)
+    creased = np.flatnonzero(crease[vert])
+    if len(creased):
+        cv = vert[creased]
+        order = creased[np.argsort(cv, kind="stable")]
+        counts = np.bincount(cv, minlength=nv)
+        start = np.cumsum(counts) - counts
+        for k in np.unique(counts[counts > 0]):
+            vs = np.flatnonzero(counts == k)
+            c = order[start[vs][:, None] + np.arange(k)].ravel()  # corners of each vertex, ascending
+            n = fn[c // 3].reshape(len(vs), k, 3)
+            x, y, z = n[..., 0], n[..., 1], n[..., 2]
+            keep = (x[:, :, None] * x[:, None] + y[:, :, None] * y[:, None] + z[:, :, None] * z[:, None]
+                    >= _COS_CREASE)
+            acc = (keep.astype(float) @ weighted[c // 3].reshape(len(vs), k, 3)).reshape(-1, 3)
+            alen = _norm(acc)[:, None]
+            normals[c] = np.where(alen > 1e-15, acc / np.maximum(alen, 1e-15), fn[c // 3])
+    # box-projected UVs: (y, z) on X-facing faces, (x, z) on Y-facing, (x, y) on Z-facing
+    axis = np.abs(fn).argmax(1)[:, None]
+    uvs = np.stack([np.where(axis == 0, tri[..., 1], tri[..., 0]),
+                    np.where(axis == 2, tri[..., 1], tri[..., 2])], -1) / UV_TILE
+    return normals, uvs.reshape(-1, 2)
+
+
+# ---------------------------------------------------------------------------
 # helpers
 
 
-def convex_hull(points: np.ndarray) -> trimesh.Trimesh:
-    """The convex hull of a point set as a watertight trimesh with outward faces.
+def _quads(*quads) -> list[tuple[int, int, int]]:
+    return [t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))]
 
-    Qhull (scipy) directly, oriented against the centroid: ~20x faster than the
-    general path through ``trimesh.convex``, which matters for hundreds of pieces.
+
+def _fan(*ring) -> list[tuple[int, int, int]]:
+    return [(ring[0], ring[i], ring[i + 1]) for i in range(1, len(ring) - 1)]
+
+
+# Hull faces of the point layouts the primitives produce, tried before Qhull and kept only
+# when every point lies inside every face plane (so a wrong guess costs a check, never a
+# wrong hull).  8: the corners of a box in _box_arrays order (index bits x, y, z).
+# 16: a wedge of a shell band, 4 angles x (outer bottom, outer top, inner bottom, inner top):
+# the inner points between the two end angles lie inside the hull.
+_HULL_TEMPLATES = {
+    8: np.array(_quads((0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3))),
+    16: np.array(_quads((0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (8, 12, 15, 11), (0, 4, 12, 8), (3, 11, 15, 7))
+                 + _fan(0, 1, 2, 3, 11, 8) + _fan(4, 5, 6, 7, 15, 12)),
+}
+
+
+def _template_hull(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """``(used point indices, faces over them)`` from a known layout, or None."""
+    faces = _HULL_TEMPLATES.get(len(pts))
+    if faces is None:
+        return None
+    tri = pts[faces]
+    normal = triangle_cross(tri)
+    length = np.linalg.norm(normal, axis=1)
+    scale = float(np.ptp(pts, axis=0).max())
+    if scale <= 0 or length.min() <= 1e-12 * scale * scale:
+        return None
+    normal /= length[:, None]
+    centre = pts.mean(0)
+    flip = np.einsum("ij,ij->i", normal, tri[:, 0] - centre) < 0
+    normal[flip] *= -1
+    height = (pts @ normal.T) - np.einsum("ij,ij->i", normal, tri[:, 0])  # (points, faces)
+    if height.max() > 1e-9 * scale:
+        return None
+    faces = faces.copy()
+    faces[flip] = faces[flip][:, ::-1]
+    return _compact(len(pts), faces)
+
+
+def _compact(n: int, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    used = np.unique(faces)
+    remap = np.full(n, -1)
+    remap[used] = np.arange(len(used))
+    return used, remap[faces]
+
+
+def hull_indices(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(indices of the points on the hull, outward faces indexing that subset)``.
+
+    The layouts of boxes and shell wedges are checked against their known hull first;
+    anything else goes to Qhull (scipy) directly, oriented against the centroid: ~20x
+    faster than the general path through ``trimesh.convex``.
     """
     pts = np.asarray(points, float)
+    known = _template_hull(pts)
+    if known is not None:
+        return known
     try:
         hull = ConvexHull(pts)
     except QhullError:
         hull = ConvexHull(pts, qhull_options="QJ")  # degenerate (flat) input: joggle
-    used = np.unique(hull.simplices)
-    remap = np.full(len(pts), -1)
-    remap[used] = np.arange(len(used))
+    used, faces = _compact(len(pts), hull.simplices)
     verts = pts[used]
-    faces = remap[hull.simplices]
     tri = verts[faces]
-    normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    normal = triangle_cross(tri)
     inward = np.einsum("ij,ij->i", normal, tri[:, 0] - verts.mean(0)) < 0
     faces[inward] = faces[inward][:, ::-1]
-    return trimesh.Trimesh(verts, faces, process=False)
+    return used, faces
+
+
+def hull_arrays(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(vertices, faces)`` of the convex hull of a point set, faces outward (:func:`hull_indices`)."""
+    pts = np.asarray(points, float)
+    used, faces = hull_indices(pts)
+    return pts[used], faces
+
+
+def convex_hull(points: np.ndarray) -> trimesh.Trimesh:
+    """The convex hull of a point set as a watertight trimesh with outward faces."""
+    return trimesh.Trimesh(*hull_arrays(points), process=False)
 
 
 MAX_HULL_VERTICES = 255
@@ -267,6 +440,56 @@ def rotation_between(a: Sequence[float], b: Sequence[float]) -> np.ndarray:
     return np.eye(3) + k + k @ k / (1 + c)
 
 
+
+def _box_arrays(size: np.ndarray, center: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """An axis-aligned box: 8 corners (in trimesh.creation.box order) and 12 outward triangles."""
+    corners = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
+    faces = np.array([[1, 3, 0], [4, 1, 0], [0, 3, 2], [2, 4, 0], [1, 7, 3], [5, 1, 4],
+                      [5, 7, 1], [3, 7, 2], [6, 4, 2], [2, 7, 6], [6, 5, 4], [7, 5, 6]])
+    return corners * size + center, faces
+
+
+def revolve_arrays(profile: np.ndarray, sections: int) -> tuple[np.ndarray, np.ndarray]:
+    """A closed, outward-oriented triangle mesh revolving ``(p, 2)`` ``(radius, z)`` points about +Z.
+
+    Ring ``k`` lies at angle ``2 pi k / sections`` (vertex ``(r cos, r sin, z)``); points on
+    the axis (radius 0) become one pole vertex.  A profile whose last point repeats its
+    first is a closed outline (a wall) and wraps around.  Consecutive repeated points are
+    dropped.  Built with NumPy alone: trimesh's revolve spends most of its time merging.
+    """
+    prof = np.asarray(profile, float)
+    keep = np.r_[True, np.any(np.abs(np.diff(prof, axis=0)) > 1e-12, axis=1)]
+    prof = prof[keep]
+    cyclic = len(prof) > 2 and np.allclose(prof[0], prof[-1], atol=1e-12)
+    if cyclic:
+        prof = prof[:-1]
+    p, n = len(prof), int(sections)
+    pole = prof[:, 0] <= 1e-12
+    theta = 2 * np.pi * np.arange(n) / n
+    ring_pts = prof[~pole]
+    rings = np.stack([np.outer(np.cos(theta), ring_pts[:, 0]), np.outer(np.sin(theta), ring_pts[:, 0]),
+                      np.broadcast_to(ring_pts[:, 1], (n, len(ring_pts)))], -1).reshape(-1, 3)
+    poles = np.c_[np.zeros((pole.sum(), 2)), prof[pole, 1]]
+    verts = np.vstack([rings, poles])
+    idx = np.empty((n, p), np.int64)
+    ring_col = np.cumsum(~pole) - 1
+    idx[:, ~pole] = np.arange(n)[:, None] * len(ring_pts) + ring_col[~pole][None, :]
+    idx[:, pole] = len(rings) + np.arange(pole.sum())[None, :]
+    segs = [(i, (i + 1) % p) for i in range(p if cyclic else p - 1)]
+    k0, k1 = np.arange(n), (np.arange(n) + 1) % n
+    tris = []
+    for i, j in segs:
+        a, b, c, d = idx[k0, i], idx[k0, j], idx[k1, i], idx[k1, j]
+        tris += [np.stack([a, c, d], 1), np.stack([a, d, b], 1)]
+    faces = np.vstack(tris)
+    faces = faces[(faces[:, 0] != faces[:, 1]) & (faces[:, 1] != faces[:, 2]) & (faces[:, 0] != faces[:, 2])]
+    tri = verts[faces]
+    signed = np.einsum("ij,ij->i", tri[:, 0], cross_rows(tri[:, 1], tri[:, 2])).sum()
+    if signed < 0:
+        faces = faces[:, ::-1]
+    return verts, np.ascontiguousarray(faces)
+
+
 # ---------------------------------------------------------------------------
 # primitives
 
@@ -284,12 +507,62 @@ def box(size: Sequence[float], center: Sequence[float], material: str, bevel: fl
         for k in range(3):
             s = size.copy()
             s[k] -= 2 * b
-            pts.append(trimesh.creation.box(s).vertices)
-        mesh = convex_hull(np.vstack(pts))
+            pts.append(_box_arrays(s, center)[0])
+        v, f = hull_arrays(np.vstack(pts))
     else:
-        mesh = trimesh.creation.box(size)
-    mesh.apply_translation(center)
-    return from_trimesh(mesh, material, name=name)
+        v, f = _box_arrays(size, center)
+    piece = Piece(v, f, material, [v.copy()], name)
+    piece.set_hull(0, v, f)
+    return piece
+
+
+def instances(vertices: np.ndarray, faces: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """One mesh made of copies of ``(vertices, faces)`` translated by each row of ``offsets``.
+
+    For repeated decoration (perforations, wire mesh): one array operation instead of a mesh
+    per copy.
+    """
+    v, f, off = np.asarray(vertices, float), np.asarray(faces, np.int64), np.asarray(offsets, float)
+    verts = (v[None] + off[:, None]).reshape(-1, 3)
+    tris = (f[None] + (np.arange(len(off)) * len(v))[:, None, None]).reshape(-1, 3)
+    return verts, tris
+
+
+def box_arrays(size: Sequence[float], center: Sequence[float] = (0, 0, 0)) -> tuple[np.ndarray, np.ndarray]:
+    """``(vertices, faces)`` of an axis-aligned box: 8 corners, 12 outward triangles."""
+    return _box_arrays(np.asarray(size, float), np.asarray(center, float))
+
+
+def cylinder_arrays(p0: Sequence[float], p1: Sequence[float], radius: float,
+                    sections: int = 24) -> tuple[np.ndarray, np.ndarray]:
+    """``(vertices, faces)`` of the closed cylinder of :func:`cylinder`."""
+    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+    h = float(np.linalg.norm(p1 - p0))
+    v, f = _unit_cylinder(int(sections))
+    rot = _align_z((p1 - p0) / h)  # as trimesh.creation.cylinder
+    return (v * (radius, radius, h)) @ rot.T + (p0 + p1) / 2, f.copy()
+
+
+@functools.lru_cache(maxsize=64)
+def _unit_cylinder(sections: int) -> tuple[np.ndarray, np.ndarray]:
+    """Radius 1, height 1, centred on the origin along Z (read-only arrays)."""
+    v, f = revolve_arrays(np.array([[0, -0.5], [1.0, -0.5], [1.0, 0.5], [0, 0.5]]), sections)
+    v.flags.writeable = False
+    f.flags.writeable = False
+    return v, f
+
+
+def _align_z(direction: np.ndarray) -> np.ndarray:
+    """``trimesh.geometry.align_vectors(+Z, direction)`` rotation, cached per direction
+    (most cylinders run along a few directions)."""
+    return _align_z_cached(tuple(float(x) for x in direction))
+
+
+@functools.lru_cache(maxsize=1024)
+def _align_z_cached(direction: tuple[float, float, float]) -> np.ndarray:
+    rot = np.array(trimesh.geometry.align_vectors([0, 0, 1], direction)[:3, :3])
+    rot.flags.writeable = False
+    return rot
 
 
 def box_between(lo: Sequence[float], hi: Sequence[float], material: str, bevel: float = 0.0,
@@ -345,7 +618,7 @@ def panel(lo: Sequence[float], hi: Sequence[float], material: str, normal_axis: 
             if not filled and row_start is not None:
                 clo, chi = lo.copy(), hi.copy()
                 clo[a], chi[a], clo[b], chi[b] = ea[row_start], ea[i], eb[j], eb[j + 1]
-                convex.append(trimesh.creation.box(chi - clo).vertices + (clo + chi) / 2)
+                convex.append(_box_arrays(chi - clo, (clo + chi) / 2)[0])
                 row_start = None
     return Piece(mesh.vertices, mesh.faces, material, convex, name)
 
@@ -356,15 +629,28 @@ def cylinder(p0: Sequence[float], p1: Sequence[float], radius: float, material: 
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
     if radius <= 0 or np.linalg.norm(p1 - p0) <= 0:
         raise GeometryError(f"cylinder needs radius > 0 and distinct ends, got r={radius}")
-    mesh = trimesh.creation.cylinder(radius=radius, segment=np.array([p0, p1]), sections=sections)
-    return from_trimesh(mesh, material, name=name)
+    v, f = cylinder_arrays(p0, p1, radius, sections)
+    piece = Piece(v, f, material, [v.copy()], name)
+    piece.set_hull(0, v, f)  # a closed convex mesh is its own hull
+    return piece
 
 
 def sphere(center: Sequence[float], radius: float, material: str, name: str = "") -> Piece:
     """A solid sphere (icosphere, subdivided twice)."""
-    mesh = trimesh.creation.icosphere(subdivisions=2, radius=radius)
-    mesh.apply_translation(center)
-    return from_trimesh(mesh, material, name=name)
+    v, f = _unit_icosphere()
+    v = v * float(radius) + np.asarray(center, float)
+    piece = Piece(v, f.copy(), material, [v.copy()], name)
+    piece.set_hull(0, v, f)
+    return piece
+
+
+@functools.cache
+def _unit_icosphere() -> tuple[np.ndarray, np.ndarray]:
+    mesh = trimesh.creation.icosphere(subdivisions=2, radius=1.0)
+    v, f = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
+    v.flags.writeable = False
+    f.flags.writeable = False
+    return v, f
 
 
 def revolve(profile: Sequence[tuple[float, float]], material: str, center: Sequence[float] = (0, 0, 0),
@@ -378,10 +664,8 @@ def revolve(profile: Sequence[tuple[float, float]], material: str, center: Seque
     prof = np.asarray(profile, float)
     if prof.ndim != 2 or prof.shape[1] != 2 or len(prof) < 3 or (prof[:, 0] < 0).any():
         raise GeometryError("revolve profile must be (p>=3, 2) of (radius >= 0, z)")
-    mesh = trimesh.creation.revolve(prof, sections=sections)
-    if mesh.volume < 0:
-        mesh.invert()
-    mesh.apply_translation(center)
+    verts, faces = revolve_arrays(prof, sections)
+    verts = verts + np.asarray(center, float)
     th = np.linspace(0, 2 * np.pi, 16, endpoint=False)
     ring = np.c_[np.cos(th), np.sin(th)]
     convex = []
@@ -391,7 +675,25 @@ def revolve(profile: Sequence[tuple[float, float]], material: str, center: Seque
         pts = np.vstack([np.c_[max(r0, 1e-4) * ring, np.full(16, z0)],
                          np.c_[max(r1, 1e-4) * ring, np.full(16, z1)]])
         convex.append(pts + np.asarray(center, float))
-    return Piece(mesh.vertices, mesh.faces, material, convex, name)
+    piece = Piece(verts, faces, material, convex, name)
+    for k, pts in enumerate(piece.convex):  # each band is a frustum: its hull is known
+        piece.set_hull(k, pts, _outward(pts, _FRUSTUM_16))
+    return piece
+
+
+# the hull of two coaxial 16-gons (0..15 below, 16..31 above): side quads and two caps
+_FRUSTUM_16 = np.array(_quads(*[(i, (i + 1) % 16, 16 + (i + 1) % 16, 16 + i) for i in range(16)])
+                       + _fan(*range(16)) + _fan(*range(16, 32)))
+
+
+def _outward(pts: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """``faces`` of a convex solid over ``pts``, each flipped to face away from the centroid."""
+    tri = pts[faces]
+    normal = triangle_cross(tri)
+    inward = np.einsum("ij,ij->i", normal, tri[:, 0] - pts.mean(0)) < 0
+    out = faces.copy()
+    out[inward] = out[inward][:, ::-1]
+    return out
 
 
 def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
@@ -409,23 +711,32 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
         raise GeometryError("shell profile must be (p>=2, 2) with every radius > thickness")
     inner = outer - [thickness, 0]
     closed = np.vstack([outer, inner[::-1], outer[:1]])
-    # trimesh revolves a polyline; a closed outline gives a closed (watertight) wall
-    mesh = trimesh.creation.revolve(closed, sections=sections)
-    if mesh.volume < 0:
-        mesh.invert()
+    # a closed outline gives a closed (watertight) wall
     c = np.asarray(center, float)
-    mesh.apply_translation(c)
+    verts, faces = revolve_arrays(closed, sections)
+    verts = verts + c
     if convex_sectors is None:
         convex_sectors = int(np.clip(np.ceil(2 * np.pi * outer[:, 0].max() / 0.03), 8, 32))
     angles = np.linspace(0, 2 * np.pi, convex_sectors + 1)
-    convex = []
+    th = np.linspace(angles[:-1], angles[1:], 4, axis=1)  # (sectors, 4)
+    cos, sin = np.cos(th)[:, None, :], np.sin(th)[:, None, :]
+    convex, bands = [], []
     for i in range(len(outer) - 1):
-        band = np.array([outer[i], outer[i + 1], inner[i], inner[i + 1]])
-        for s in range(convex_sectors):
-            th = np.linspace(angles[s], angles[s + 1], 4)
-            pts = [(r * np.cos(t), r * np.sin(t), z) for r, z in band for t in th]
-            convex.append(np.array(pts) + c)
-    return Piece(mesh.vertices, mesh.faces, material, convex, name)
+        band = np.array([outer[i], outer[i + 1], inner[i], inner[i + 1]])  # (4, 2): (r, z)
+        r, z = band[None, :, 0, None], band[None, :, 1, None]
+        # point b * 4 + t of a wedge: band corner b at its angle t
+        pts = np.stack([r * cos, r * sin, np.broadcast_to(z, cos.shape[:1] + (4, 4))], -1).reshape(-1, 16, 3) + c
+        bands.append((len(convex), len(pts)))
+        convex += list(pts)
+    piece = Piece(verts, faces, material, convex, name)
+    # the wedges of a band are turned copies: one hull topology serves all, found when first needed
+    # (categories often replace a shell's collision pieces by coarser ones)
+    piece._hull_hints = {}
+    for first, count in bands:
+        band = {"src": piece.convex[first], "topology": None}
+        for k in range(first, first + count):
+            piece._hull_hints[k] = (piece.convex[k], band)
+    return piece
 
 
 def disc(center: Sequence[float], radius: float, thickness: float, material: str, sections: int = 32,

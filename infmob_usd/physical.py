@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .blueprint import Blueprint, descendants
+from .geometry import hull_arrays, triangle_cross
 from .joints import Dof
 
 
@@ -79,6 +80,23 @@ def _inflate(points: np.ndarray, d: float) -> np.ndarray:
     return (points[:, None, :] + offs[None]).reshape(-1, 3)
 
 
+def _face_normals(v: np.ndarray, f: np.ndarray) -> np.ndarray:
+    tri = v[f]
+    n = triangle_cross(tri)
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    return n[length[:, 0] > 1e-15] / length[length[:, 0] > 1e-15]
+
+
+def _separated(a: np.ndarray, a_normals: np.ndarray, d: float, b: np.ndarray, b_normals: np.ndarray) -> bool:
+    """Whether a face plane of either hull separates the hull of points ``a`` grown by a cube of
+    half-size ``d`` (:func:`_inflate`) from the hull of points ``b``: a sufficient test for
+    "no overlap" (edge-edge separations are left to the exact test)."""
+    n = np.vstack([a_normals, b_normals])
+    pa, pb = a @ n.T, b @ n.T
+    grow = d * np.abs(n).sum(1)
+    return bool(np.any((pa.max(0) + grow < pb.min(0)) | (pa.min(0) - grow > pb.max(0))))
+
+
 def ensure_gaps(links, joints) -> int:
     """Erode collision pieces of moving parts that come closer than :func:`gap_size` to their parent.
 
@@ -110,19 +128,29 @@ def ensure_gaps(links, joints) -> int:
         parent_hulls = [c + offset for p in parent.pieces for c in p.convex]
         if not parent_hulls:
             continue
-        boxes = [(h.min(0), h.max(0)) for h in parent_hulls]
+        # (all points, face normals of the hull) of each parent piece: the points decide, the normals are directions
+        parent_shapes = [(c + offset, _face_normals(v, f)) for p in parent.pieces
+                         for c, (v, f) in zip(p.convex, p.hulls())]
+        box_lo = np.array([h.min(0) for h in parent_hulls])
+        box_hi = np.array([h.max(0) for h in parent_hulls])
         pts = np.vstack([c for p in child.pieces for c in p.convex] or [np.zeros((1, 3))])
         gap = gap_size(np.ptp(pts, axis=0))
         cache: dict[int, manifold3d.Manifold] = {}
         for piece in child.pieces:
+            hulls = piece.hulls()
             for k, c in enumerate(piece.convex):
                 lo, hi = c.min(0) - gap, c.max(0) + gap
-                near = [i for i, (blo, bhi) in enumerate(boxes) if np.all(hi > blo) and np.all(bhi > lo)]
-                if not near:
+                near = np.flatnonzero(np.all(hi > box_lo, axis=1) & np.all(box_hi > lo, axis=1))
+                if not len(near):
                     continue
-                grown = manifold3d.Manifold.hull_points(_inflate(c, gap - 1e-6))
+                child_n = _face_normals(*hulls[k])
+                grown = None
                 hit = False
                 for i in near:
+                    if _separated(c, child_n, gap - 1e-6, *parent_shapes[i]):
+                        continue  # a face plane separates them: no overlap, no exact test needed
+                    if grown is None:
+                        grown = manifold3d.Manifold.hull_points(_inflate(c, gap - 1e-6))
                     if i not in cache:
                         cache[i] = manifold3d.Manifold.hull_points(parent_hulls[i])
                     if (grown ^ cache[i]).volume() > 1e-12:
@@ -133,23 +161,42 @@ def ensure_gaps(links, joints) -> int:
                     half = (c.max(0) - c.min(0)) / 2
                     shrink = np.minimum(gap, 0.25 * 2 * half)
                     scale = np.where(half > 0, (half - shrink) / np.where(half > 0, half, 1), 1.0)
+                    hull_v, hull_f = piece.hulls()[k]
                     piece.convex[k] = centre + (c - centre) * scale
-                    piece._hulls = None
+                    # the same axis scaling of the hull is the hull of the scaled points
+                    piece.set_hull(k, centre + (hull_v - centre) * scale, hull_f)
                     eroded += 1
     return eroded
+
+
+def _extreme_points(obj) -> dict[str, np.ndarray]:
+    """Per link, the vertices of the convex hull of all its collision hulls (in the link frame).
+
+    The lowest point of a rigidly moved link is one of them, and there are far fewer of them
+    than hull vertices. Cached on the object; :func:`ensure_gaps` runs before, so the hulls
+    are final.
+    """
+    cache = getattr(obj, "_extreme_points", None)
+    if cache is None:
+        cache = {}
+        for link in obj.links:
+            pts = [v for p in link.pieces for v, _ in p.hulls()]
+            if pts:
+                pts = np.vstack(pts)
+                cache[link.name] = hull_arrays(pts)[0] if len(pts) > 64 else pts
+        obj._extreme_points = cache
+    return cache
 
 
 def _lowest(obj, q: dict[str, float], names=None) -> float:
     """Lowest z of the collision pieces of ``names`` (default: every link) with joints at ``q``."""
     poses = obj.poses(q)
     z = np.inf
-    for link in obj.links:
-        if names is not None and link.name not in names:
+    for name, pts in _extreme_points(obj).items():
+        if names is not None and name not in names:
             continue
-        pts = [v for p in link.pieces for v, _ in p.hulls()]
-        if pts:
-            pose = poses[link.name]
-            z = min(z, float((np.vstack(pts) @ pose[2, :3] + pose[2, 3]).min()))
+        pose = poses[name]
+        z = min(z, float((pts @ pose[2, :3] + pose[2, 3]).min()))
     return z
 
 
@@ -163,26 +210,41 @@ def limit_to_ground(obj) -> list[str]:
     category must raise its base). Returns the names of the joints changed.
     """
     from .errors import ModelError
+    from .model import _axis_angle
 
+    extreme = _extreme_points(obj)
+    origin = {link.name: np.asarray(link.origin, float) for link in obj.links}
     changed = []
     for j in obj.joints:
         if not j.movable:
             continue
         moved = descendants(obj.joints, j.child)
+        # one joint moves from rest, so its subtree moves rigidly: world points at rest, about the pivot
+        pts = [extreme[n] + origin[n] for n in moved if n in extreme]
+        if not pts:
+            continue
+        rel = np.vstack(pts) - origin[j.child]
+        pivot_z, axis = float(origin[j.child][2]), np.asarray(j.axis, float)
+
+        def lowest(value: float, j=j, rel=rel, pivot_z=pivot_z, axis=axis) -> float:
+            if j.type == "prismatic":
+                return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
+            return pivot_z + float((rel @ _axis_angle(axis, value)[2]).min())
+
         if j.type == "continuous":
             for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
-                if _lowest(obj, {j.name: a}, moved) < -GROUND_TOL:
+                if lowest(a) < -GROUND_TOL:
                     raise ModelError(f"continuous joint {j.name} turns {j.child!r} through the ground;"
                                      " raise it or make it a limited revolute joint")
             continue
         for end in ("upper", "lower"):
             limit = getattr(j, end)
-            if limit == 0 or _lowest(obj, {j.name: limit}, moved) >= -GROUND_TOL:
+            if limit == 0 or lowest(limit) >= -GROUND_TOL:
                 continue
             good, bad = 0.0, limit
             for _ in range(30):
                 mid = 0.5 * (good + bad)
-                if _lowest(obj, {j.name: mid}, moved) >= -GROUND_TOL:
+                if lowest(mid) >= -GROUND_TOL:
                     good = mid
                 else:
                     bad = mid
