@@ -15,6 +15,7 @@ from pathlib import Path
 
 from infmob_usd.errors import OutputError
 
+from .common import visual_meshes
 from .meta import write_metadata, write_semantics
 from .urdf import write_urdf
 from .usd import write_usd
@@ -37,13 +38,14 @@ def check_output_dir(out: Path) -> Path:
 
 
 def write_textures(obj, folder: Path) -> None:
-    from infmob_usd.materials import encode_png
-
+    """``textures/<slot>_<map>.png`` from the PNG bytes in ``obj.textures``."""
     tex = folder / TEXTURES
     tex.mkdir()
     for slot, maps in obj.textures.items():
-        for name, img in maps.items():
-            (tex / f"{slot}_{name}.png").write_bytes(encode_png(img))
+        for name, data in maps.items():
+            if not isinstance(data, bytes) or data[:8] != b"\x89PNG\r\n\x1a\n":
+                raise ValueError(f"texture {slot}_{name} is not PNG bytes ({type(data).__name__})")
+            (tex / f"{slot}_{name}.png").write_bytes(data)
 
 
 def write_object(obj, out: Path) -> Path:
@@ -51,7 +53,11 @@ def write_object(obj, out: Path) -> Path:
     out = check_output_dir(out)
     final = out / obj.name
     tmp = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".tmp", dir=out))
+    obj._visual_meshes = None
     try:
+        t0 = time.perf_counter()
+        obj._visual_meshes = visual_meshes(obj)  # normals and UVs once, for both writers
+        obj.timings["geometry"] = obj.timings.get("geometry", 0.0) + time.perf_counter() - t0
         for stage, writer in (("textures_io", write_textures), ("usd", write_usd), ("urdf", write_urdf),
                               ("metadata", write_semantics), ("metadata", write_metadata)):
             t0 = time.perf_counter()
@@ -68,4 +74,6 @@ def write_object(obj, out: Path) -> Path:
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
+    finally:
+        obj._visual_meshes = None
     return final

@@ -19,7 +19,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .common import centred_hulls, merge_pieces, visual_groups
+from .common import centred_hulls, visual_meshes
 
 MESHES = "meshes"
 
@@ -33,32 +33,64 @@ def _v(a) -> str:
     return " ".join(_f(x) for x in a)
 
 
+def _rows(prefix: str, fmt: str, a: np.ndarray) -> str:
+    """One line ``prefix fmt...`` per row of ``a`` (one %-format over the whole array: ~3x an f-string loop)."""
+    if not len(a):
+        return ""
+    return (f"{prefix} {fmt}\n" * len(a)) % tuple(a.ravel().tolist())
+
+
+def _unique_rows(a: np.ndarray, decimals: int) -> tuple[np.ndarray, np.ndarray]:
+    """Rows of ``a`` rounded to ``decimals`` and deduplicated, and each row's index among them."""
+    q = np.rint(a * 10.0**decimals).astype(np.int64)
+    lo, span = q.min(0), q.max(0) - q.min(0) + 1
+    bits = [int(s).bit_length() for s in span]
+    if sum(bits) <= 62:  # pack each row into one integer: a 1-D sort instead of a row sort
+        key = np.zeros(len(q), np.int64)
+        for col, b in zip((q - lo).T, bits):
+            key = (key << b) | col
+        _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+        uniq = q[first]
+    else:
+        uniq, inverse = np.unique(q, axis=0, return_inverse=True)
+    return uniq / 10.0**decimals, inverse.reshape(-1)
+
+
 def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None, uvs=None,
               mtl: str | None = None, material: str | None = None) -> None:
-    """Write an OBJ; ``normals``/``uvs`` are per face corner ``(m, 3, 3)`` / ``(m, 3, 2)``."""
-    lines = ["# infmob-usd"]
+    """Write an OBJ; ``normals``/``uvs`` are per face corner ``(m, 3, 3)`` / ``(m, 3, 2)``.
+
+    Corner normals and UVs are rounded to the precision written and shared between
+    corners that agree, so a smooth surface lists each normal once.
+    """
+    parts = ["# infmob-usd\n"]
     if mtl:
-        lines += [f"mtllib {mtl}"]
-    lines += [f"v {x:.6f} {y:.6f} {z:.6f}" for x, y, z in vertices]
-    if uvs is not None:
-        lines += [f"vt {u:.6f} {v:.6f}" for u, v in uvs.reshape(-1, 2)]
-    if normals is not None:
-        lines += [f"vn {x:.5f} {y:.5f} {z:.5f}" for x, y, z in normals.reshape(-1, 3)]
-    if material:
-        lines.append(f"usemtl {material}")
-    f1 = faces + 1
+        parts.append(f"mtllib {mtl}\n")
+    parts.append(_rows("v", "%.6f %.6f %.6f", np.asarray(vertices, float)))
+    f1 = np.asarray(faces, np.int64) + 1
     if uvs is not None and normals is not None:
-        c = np.arange(1, 3 * len(faces) + 1).reshape(-1, 3)
-        lines += [f"f {a}/{ca}/{ca} {b}/{cb}/{cb} {d}/{cd}/{cd}" for (a, b, d), (ca, cb, cd) in zip(f1, c)]
+        vt, ti = _unique_rows(np.asarray(uvs, float).reshape(-1, 2), 6)
+        vn, ni = _unique_rows(np.asarray(normals, float).reshape(-1, 3), 5)
+        parts.append(_rows("vt", "%.6f %.6f", vt))
+        parts.append(_rows("vn", "%.5f %.5f %.5f", vn))
+        if material:
+            parts.append(f"usemtl {material}\n")
+        corners = np.stack([f1.reshape(-1), ti + 1, ni + 1], 1).reshape(-1, 9)
+        parts.append(_rows("f", "%d/%d/%d %d/%d/%d %d/%d/%d", corners))
     else:
-        lines += [f"f {a} {b} {d}" for a, b, d in f1]
-    path.write_text("\n".join(lines) + "\n")
+        if material:
+            parts.append(f"usemtl {material}\n")
+        parts.append(_rows("f", "%d %d %d", f1))
+    path.write_text("".join(parts))
 
 
-def _mtl(slot: str, look) -> str:
+_MTL_MAPS = {"basecolor": "map_Kd", "roughness": "map_Pr", "metallic": "map_Pm", "normal": "norm"}
+
+
+def _mtl(slot: str, look, maps) -> str:
+    """MTL of one slot: constants from the look, a map line for each texture written."""
     r, g, b = look.base_color
-    tex = f"../textures/{slot}"
-    return "\n".join([
+    lines = [
         f"newmtl {slot}",
         f"Kd {r:.4f} {g:.4f} {b:.4f}",
         "Ka 0 0 0",
@@ -66,12 +98,9 @@ def _mtl(slot: str, look) -> str:
         f"d {look.opacity:.3f}",
         f"Pr {look.roughness:.3f}",
         f"Pm {look.metallic:.3f}",
-        f"map_Kd {tex}_basecolor.png",
-        f"map_Pr {tex}_roughness.png",
-        f"map_Pm {tex}_metallic.png",
-        f"norm {tex}_normal.png",
-        "",
-    ])
+    ]
+    lines += [f"{key} ../textures/{slot}_{name}.png" for name, key in _MTL_MAPS.items() if name in maps]
+    return "\n".join(lines + [""])
 
 
 def write_urdf(obj, folder: Path) -> Path:
@@ -79,13 +108,13 @@ def write_urdf(obj, folder: Path) -> Path:
     meshes = folder / MESHES
     meshes.mkdir()
     for slot, look in obj.materials.items():
-        (meshes / f"{slot}.mtl").write_text(_mtl(slot, look))
+        (meshes / f"{slot}.mtl").write_text(_mtl(slot, look, obj.textures.get(slot, {})))
+    visuals = visual_meshes(obj)
     out = [f'<?xml version="1.0"?>\n<robot name={quoteattr(obj.name)}>']
     for link in obj.links:
         out.append(f'  <link name="{link.name}">')
-        for vname, slot, pieces, _role in visual_groups(link):
+        for vname, slot, _role, v, f, n, uv in visuals[link.name]:
             fname = f"{link.name}__{vname}.obj"
-            v, f, n, uv = merge_pieces(pieces)
             write_obj(meshes / fname, v, f, n, uv, mtl=f"{slot}.mtl", material=slot)
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')

@@ -93,7 +93,8 @@ def test_principal_axes_reproduce_the_inertia_tensor(written):
     from pxr import Gf
 
     r = np.array(Gf.Matrix3d(Gf.Rotation(Gf.Quatd(q))).GetTranspose())  # column-vector convention
-    assert np.allclose(r @ np.diag(d) @ r.T, link.inertia, rtol=1e-4, atol=1e-7)
+    # float32 moments and quaternion: ~1e-7 relative, so compare against the tensor's own scale
+    assert np.allclose(r @ np.diag(d) @ r.T, link.inertia, rtol=1e-4, atol=1e-6 * np.abs(link.inertia).max())
 
 
 def test_joints_in_usd(written):
