@@ -80,10 +80,22 @@ class Blueprint:
         """World ``(4, 4)`` motion of every part from rest, DoFs at ``q``.
 
         ``q`` maps ``(child part, DoF index)`` to a value (radians or metres); missing
-        DoFs stay at rest. A part's world pieces at that state are its rest pieces
-        transformed by its matrix.
+        DoFs stay at rest. A joint's DoFs apply in order, the parent side first (as its
+        chain of dummy links does). A part's world pieces at that state are its rest
+        pieces transformed by its matrix.
+
+        Raises
+        ------
+        KeyError
+            If a key of ``q`` names no DoF (a typo would otherwise silently leave
+            everything at rest).
         """
         q = q or {}
+        known = {(j.child, i) for j in self.joints for i in range(len(j.dofs))}
+        unknown = [k for k in q if k not in known]
+        if unknown:
+            raise KeyError(f"q keys {unknown[:3]} name no DoF; keys are (child part, DoF index),"
+                           f" e.g. {sorted(known)[:2]}")
         out = {self.root: np.eye(4)}
         by_parent: dict[str, list[JointSpec]] = {}
         for j in self.joints:

@@ -96,3 +96,17 @@ def test_blueprint_poses_agree_with_the_built_model():
         link = obj.link(name)
         via_obj = link.pieces[0].vertices[:4] @ frames[name][:3, :3].T + frames[name][:3, 3]
         assert np.allclose(via_bp, via_obj, atol=1e-9)
+
+
+def test_blueprint_poses_rejects_keys_that_name_no_dof():
+    import pytest
+
+    from zoo import zoo_blueprint
+
+    bp = zoo_blueprint()
+    child = next(j.child for j in bp.joints if j.dofs)
+    assert set(bp.poses({(child, 0): 0.1})) == set(bp.parts)
+    with pytest.raises(KeyError, match="name no DoF"):
+        bp.poses({child: 0.1})
+    with pytest.raises(KeyError, match="name no DoF"):
+        bp.poses({(child, 7): 0.1})
