@@ -163,7 +163,7 @@ def _bottom(fine, t: float, punt: float) -> g.Piece:
             (rb, 0.0), (rb, tb), (0.8 * rb, tb + 0.12 * hp), (0.62 * rb, tb + 0.45 * hp),
             (0.36 * rb, tb + 0.8 * hp), (0.0, hp + tb)]
     vis = g.revolve(prof, "glass", sections=SECTIONS)
-    return g.Piece(vis.vertices, vis.faces, "glass", flat.convex)
+    return vis.with_collision_of(flat)
 
 
 def _cap(cap, kind, fine, coarse, t, H, z_n, sectors) -> list[g.Piece]:

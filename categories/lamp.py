@@ -530,7 +530,7 @@ def _cap(r_cap: float, h_cap: float, slot: str, center: tuple[float, float, floa
     solid = g.revolve([(0, 0), *prof, (0, h_cap)], slot, center=center, sections=40)
     wall = g.shell(prof, 0.0015, slot, center=center, sections=40)
     top = g.disc((center[0], center[1], center[2] + h_cap - 0.001), r_top, 0.002, slot, 40)
-    return [g.Piece(wall.vertices, wall.faces, slot, solid.convex), top]
+    return [wall.with_collision_of(solid), top]
 
 
 def _shade_thickness(p: dict) -> float:
@@ -806,7 +806,7 @@ def _tube(p0, p1, r: float, sections: int = 16, slot: str = "pole", wall: float 
     m = np.eye(4)
     m[:3, :3], m[:3, 3] = g.rotation_between((0, 0, 1), p1 - p0), p0
     tube = tube.transformed(m)
-    return g.Piece(tube.vertices, tube.faces, slot, solid.convex)
+    return tube.with_collision_of(solid)
 
 
 def _ycyl(c: np.ndarray, y0: float, y1: float, r: float) -> g.Piece:

@@ -137,14 +137,14 @@ def vessel(r_top: float, depth: float, corner: float, flare: float, wall: float,
     base = g.Piece(base.vertices, base.faces, slot, [puck])  # one convex puck
     shell = g.shell(fine, wall, slot, sections=sections)
     coll = g.shell(coarse, wall, slot, sections=8)
-    body_wall = g.Piece(shell.vertices, shell.faces, slot, coll.convex)
+    body_wall = shell.with_collision_of(coll)
     # rolled rim: a round bead (outer half circle, revolved with thickness = its radius)
     cx, cz = r_top - wall + bead, z_wall_top
     th = np.linspace(0.0, math.pi, 13)
     outer = np.c_[cx + bead * np.sin(th), cz - bead * np.cos(th)]
     vis = g.shell(outer, bead, rim_slot, sections=sections)
     box = g.shell([(cx + bead, cz - bead), (cx + bead, cz + bead)], 2 * bead, rim_slot, sections=8)
-    rim = g.Piece(vis.vertices, vis.faces, rim_slot, box.convex)
+    rim = vis.with_collision_of(box)
     info = {
         "profile": fine, "coarse": coarse, "rim_top": depth, "rim_outer": cx + bead,
         "rim_inner": r_top - wall, "rim_bottom": cz - bead, "floor": bottom, "floor_radius": r0 - wall,

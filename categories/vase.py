@@ -141,7 +141,7 @@ def vessel_wall(fine, coarse, thickness: float, material: str, sectors: int | No
     fine, coarse = np.asarray(fine, float), np.asarray(coarse, float)
     sectors = sectors or _sectors(float(fine[:, 0].max()))
     vis = g.shell(fine, thickness, material, sections=SECTIONS, convex_sectors=1, name=name)
-    return g.Piece(vis.vertices, vis.faces, material, wedges(coarse, coarse - [thickness, 0], sectors), name)
+    return vis.with_wedges(coarse, coarse - [thickness, 0], sectors)
 
 
 def free_radius(fine, coarse, thickness: float, z0: float, z1: float, sectors: int | None = None) -> float:
@@ -244,7 +244,7 @@ def plug_lid(z_seat: float, r_flange: float, t_flange: float, r_plug: float, plu
     prof = np.vstack([plug, cap, [0.0, top]])
     col = np.vstack([plug, cap_col, [0.0, top]])
     vis = g.revolve(prof, material, sections=SECTIONS)
-    return [g.Piece(vis.vertices, vis.faces, material, g.revolve(col, material, sections=8).convex)]
+    return [vis.with_collision_of(g.revolve(col, material, sections=8))]
 
 
 def lid_gap(height: float) -> float:

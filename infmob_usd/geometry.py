@@ -101,7 +101,7 @@ class Piece:
 
     # -- transforms ---------------------------------------------------------
     def transformed(self, matrix: np.ndarray) -> Piece:
-        """A copy moved by a rigid ``(4, 4)`` transform."""
+        """A copy moved by a ``(4, 4)`` transform (rigid, or a stretch that keeps orientation)."""
         r, t = matrix[:3, :3], matrix[:3, 3]
         moved = Piece(
             self.vertices @ r.T + t,
@@ -113,15 +113,22 @@ class Piece:
         )
         known = getattr(self, "_hull_cache", None)
         hints = getattr(self, "_hull_hints", None)
-        if hints and np.linalg.det(r) > 0:  # hull topologies survive a proper rotation
+        rigid = np.allclose(r @ r.T, np.eye(3), atol=1e-9)
+        if hints and np.linalg.det(r) > 0:  # hull topologies survive any orientation-keeping map
             bands: dict[int, dict] = {}
             moved._hull_hints = {}
-            for k, (src, band) in hints.items():
+            for k, (src, band, angle) in hints.items():
                 if k < len(self.convex) and self.convex[k] is src:
-                    new_band = bands.setdefault(id(band), {"src": band["src"] @ r.T + t,
-                                                           "topology": band["topology"]})
-                    moved._hull_hints[k] = (moved.convex[k], new_band)
-        if known and np.linalg.det(r) > 0:  # a proper rotation keeps every hull's faces outward
+                    first = band["first"]
+                    same = first < len(self.convex) and self.convex[first] is band["src"]
+                    new_band = bands.setdefault(id(band), {
+                        "src": moved.convex[first] if same else band["src"] @ r.T + t,
+                        "topology": band["topology"], "first": first,
+                        # a stretch keeps the hull topology but the wedges stop being turned copies
+                        "point": r @ band["point"] + t,
+                        "axis": r @ band["axis"] if rigid and band["axis"] is not None else None})
+                    moved._hull_hints[k] = (moved.convex[k], new_band, angle)
+        if known and np.linalg.det(r) > 0:  # so does an orientation-keeping map: faces stay outward
             moved._hull_cache = [
                 None if e is None or not np.array_equal(e[0], c) else (mc, (e[1][0] @ r.T + t, e[1][1]))
                 for e, c, mc in zip(known, self.convex, moved.convex)
@@ -197,6 +204,71 @@ class Piece:
                 entry = cache[k] = (c.copy(), (v, np.asarray(f, np.int64)))
             out.append(entry[1])
         self._hull_cache = cache[:len(self.convex)]
+        return out
+
+    def with_collision_of(self, other: Piece) -> Piece:
+        """This piece's mesh with ``other``'s collision pieces (and their known hulls): a fine
+        visual surface over a coarse collision one."""
+        out = Piece(self.vertices, self.faces, self.material, other.convex, self.name, self.sheet)
+        out._hull_cache = getattr(other, "_hull_cache", None)
+        out._hull_hints = getattr(other, "_hull_hints", None)
+        return out
+
+    def with_wedges(self, outer, inner, sectors: int, phase: float = 0.0) -> Piece:
+        """This piece's mesh with flat-faced wedge collisions of a wall of revolution about +Z.
+
+        ``outer`` and ``inner`` are matching ``(p, 2)`` ``(radius, z)`` profiles; each band and
+        sector gives one convex piece of its 8 corners (corner ``b * 2 + a``: band corner ``b``
+        of outer low, outer high, inner low, inner high, at sector edge ``a``), so every face is
+        exactly planar.  The wedges of a band are turned copies of its first (writers share
+        their mesh, :meth:`hull_instances`).
+        """
+        outer, inner = np.asarray(outer, float), np.asarray(inner, float)
+        ang = phase + 2 * np.pi * np.arange(sectors + 1) / sectors
+        cs, sn = np.cos(ang), np.sin(ang)
+        convex, bands = [], []
+        for i in range(len(outer) - 1):
+            ring = np.array([outer[i], outer[i + 1], inner[i], inner[i + 1]])  # (4, 2)
+            r, z = ring[:, 0], ring[:, 1]
+            # (sectors, 4 corners, 2 edges, 3)
+            pts = np.stack([r[None, :, None] * np.stack([cs[:-1], cs[1:]], 1)[:, None, :],
+                            r[None, :, None] * np.stack([sn[:-1], sn[1:]], 1)[:, None, :],
+                            np.broadcast_to(z[None, :, None], (sectors, 4, 2))], -1)
+            bands.append((len(convex), sectors))
+            convex += list(pts.reshape(sectors, 8, 3))
+        out = Piece(self.vertices, self.faces, self.material, convex, self.name, self.sheet)
+        out._hull_hints = {}
+        for first, count in bands:
+            band = {"src": out.convex[first], "topology": None, "first": first, "point": np.zeros(3),
+                    "axis": np.array([0.0, 0.0, 1.0])}
+            for k in range(first, first + count):
+                out._hull_hints[k] = (out.convex[k], band, float(ang[k - first] - ang[0]))
+        return out
+
+    def hull_instances(self) -> list[tuple[int, np.ndarray, np.ndarray] | None]:
+        """Per hull of :meth:`hulls`: ``(j, R, t)`` when hull ``k`` is hull ``j`` of this piece moved
+        rigidly (vertices ``v_j @ R.T + t``, same faces), else ``None``.
+
+        Shell wedges of one band are turned copies of the band's first wedge; writers can
+        then store one mesh and place the copies (a URDF ``<collision><origin rpy>``).
+        """
+        hulls = self.hulls()
+        hints = getattr(self, "_hull_hints", None) or {}
+        out: list = [None] * len(hulls)
+        for k, c in enumerate(self.convex):
+            hint = hints.get(k)
+            if hint is None or hint[0] is not c:
+                continue
+            band, angle = hint[1], hint[2]
+            j = band["first"]
+            if j == k or band["axis"] is None or self.convex[j] is not band["src"]:
+                continue  # the prototype itself, a stretched band, or a replaced (eroded) prototype
+            rot = _axis_angle_matrix(band["axis"], angle)
+            t = band["point"] - rot @ band["point"]
+            scale = float(np.ptp(hulls[k][0], axis=0).max())
+            if np.abs(hulls[j][0] @ rot.T + t - hulls[k][0]).max() > 1e-9 * max(scale, 1e-3):
+                continue  # edited in place since construction: not a copy any more
+            out[k] = (j, rot, t)
         return out
 
     def set_hull(self, k: int, vertices: np.ndarray, faces: np.ndarray) -> None:
@@ -425,6 +497,13 @@ def _axis_index(axis: str | int) -> int:
     if isinstance(axis, str):
         return "xyz".index(axis.lower())
     return int(axis)
+
+
+def _axis_angle_matrix(axis: np.ndarray, angle: float) -> np.ndarray:
+    """Rodrigues: the rotation by ``angle`` radians about unit ``axis``."""
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
 
 
 def rotation_between(a: Sequence[float], b: Sequence[float]) -> np.ndarray:
@@ -733,9 +812,11 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
     # (categories often replace a shell's collision pieces by coarser ones)
     piece._hull_hints = {}
     for first, count in bands:
-        band = {"src": piece.convex[first], "topology": None}
+        band = {"src": piece.convex[first], "topology": None, "first": first, "point": c.copy(),
+                "axis": np.array([0.0, 0.0, 1.0])}
         for k in range(first, first + count):
-            piece._hull_hints[k] = (piece.convex[k], band)
+            # wedge k is wedge `first` turned by angles[k - first] about the axis through `point`
+            piece._hull_hints[k] = (piece.convex[k], band, float(angles[k - first]))
     return piece
 
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from infmob_usd.geometry import corner_attributes
@@ -80,3 +82,38 @@ def centred_hulls(link):
             c = (v.min(0) + v.max(0)) / 2
             out.append((c, v - c, f))
     return out
+
+
+def collision_placements(link) -> list[tuple]:
+    """Every collision hull of a link as ``(mesh index, position (3,), rotation (3, 3) or None,
+    centred vertices or None, faces or None)``.
+
+    A hull with its own mesh (rotation ``None``) is written centred, placed at its centre (see
+    :func:`centred_hulls`). A hull that is a rigidly moved copy of another hull of its piece
+    (the wedges of a shell band, :meth:`~infmob_usd.geometry.Piece.hull_instances`) reuses that
+    hull's mesh (``mesh index``) placed by ``position`` and ``rotation``: one file per band
+    instead of one per wedge.
+    """
+    out = []
+    base = 0
+    for piece in link.pieces:
+        hulls, instances = piece.hulls(), piece.hull_instances()
+        for k, ((v, f), inst) in enumerate(zip(hulls, instances)):
+            if inst is None or instances[inst[0]] is not None:
+                c = (v.min(0) + v.max(0)) / 2
+                out.append((base + k, c, None, v - c, f))
+            else:
+                j, rot, t = inst
+                pv = hulls[j][0]
+                out.append((base + j, rot @ ((pv.min(0) + pv.max(0)) / 2) + t, rot, None, None))
+        base += len(hulls)
+    return out
+
+
+def rotation_rpy(rot: np.ndarray) -> tuple[float, float, float]:
+    """URDF roll, pitch, yaw of a rotation (``R = Rz(yaw) Ry(pitch) Rx(roll)``)."""
+    sp = -float(rot[2, 0])
+    if abs(sp) > 1 - 1e-12:  # gimbal lock: roll folded into yaw
+        return 0.0, math.copysign(math.pi / 2, sp), math.atan2(-float(rot[0, 1]), float(rot[1, 1]))
+    return (math.atan2(float(rot[2, 1]), float(rot[2, 2])), math.asin(sp),
+            math.atan2(float(rot[1, 0]), float(rot[0, 0])))

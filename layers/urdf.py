@@ -4,8 +4,10 @@
   named ``handle_*`` where the pieces are handles (ManiSkill looks for that);
   no ``<material>`` elements: colours live in the MTL, and SAPIEN's loader would
   need a render device to build URDF materials;
-* one collision OBJ per convex piece (SAPIEN hulls each collision file), centred on its
-  own origin and placed by ``<collision><origin>`` (PhysX's contacts misbehave otherwise);
+* one ``<collision>`` per convex piece (SAPIEN and MuJoCo hull each collision file), its OBJ
+  centred on its own origin and placed by ``<collision><origin>`` (PhysX's contacts misbehave
+  otherwise); the wedges of a shell band are turned copies of one wedge, so they share its
+  OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~40 collision files, not ~150);
 * ``<inertial>`` with the full tensor about the centre of mass;
 * ``<limit>`` with effort and velocity, ``<dynamics damping friction>``.
 
@@ -19,7 +21,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .common import centred_hulls, visual_meshes
+from .common import collision_placements, rotation_rpy, visual_meshes
 
 MESHES = "meshes"
 
@@ -118,10 +120,12 @@ def write_urdf(obj, folder: Path) -> Path:
             write_obj(meshes / fname, v, f, n, uv, mtl=f"{slot}.mtl", material=slot)
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
-        for i, (centre, hv, hf) in enumerate(centred_hulls(link)):
-            fname = f"{link.name}__collision_{i:03d}.obj"
-            write_obj(meshes / fname, hv, hf)
-            out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="{_v(centre)}" rpy="0 0 0"/>'
+        for i, (mesh, pos, rot, hv, hf) in enumerate(collision_placements(link)):
+            fname = f"{link.name}__collision_{mesh:03d}.obj"
+            if rot is None:
+                write_obj(meshes / fname, hv, hf)
+            rpy = "0 0 0" if rot is None else _v(rotation_rpy(rot))
+            out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="{_v(pos)}" rpy="{rpy}"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></collision>')
         I = link.inertia
         out.append(f'    <inertial><origin xyz="{_v(link.com)}" rpy="0 0 0"/><mass value="{_f(link.mass)}"/>'

@@ -67,3 +67,30 @@ def test_a_broken_mass_fails_the_validators(good, tmp_path):
     phys.write_text(text)
     res = _results(bad)
     assert not res["usd_validators"].ok
+
+
+def test_a_misplaced_urdf_collision_hull_is_caught(good, tmp_path):
+    folder = _copy(good, tmp_path)
+    urdf = folder / f"{folder.name}.urdf"
+    text = urdf.read_text()
+    # move the first collision hull 5 mm along x
+    text = re.sub(r'(<collision name="[^"]+"><origin xyz=")([-0-9.e]+)',
+                  lambda m: m.group(1) + str(float(m.group(2)) + 0.005), text, count=1)
+    urdf.write_text(text)
+    res = _results(folder)
+    assert not res["usd_urdf_agree"].ok and "collision hull" in res["usd_urdf_agree"].detail
+
+
+def test_shell_wedges_share_one_collision_file_per_band(tmp_path):
+    import xml.etree.ElementTree as ET
+
+    import infmob_usd
+
+    folder = infmob_usd.generate("pot", seed=1, texture_size=16).save(tmp_path)
+    links = ET.parse(folder / f"{folder.name}.urdf").getroot().findall("link")
+    cols = [c for link in links for c in link.findall("collision")]
+    files = {c.find("geometry/mesh").get("filename") for c in cols}
+    assert len(files) < len(cols) / 3  # the wedges of each band reuse its first wedge's mesh
+    assert any(c.find("origin").get("rpy") != "0 0 0" for c in cols)
+    assert all((folder / f).is_file() for f in files)
+    assert _results(folder)["usd_urdf_agree"].ok  # and they land where the USD hulls are

@@ -130,8 +130,41 @@ def files_exist(folder: Path, usd_path: Path) -> CheckResult:
                        f"{len(layers)} layers, {len(assets)} USD assets, {len(refs)} URDF meshes present")
 
 
+def _collisions_agree(root: Usd.Prim, folder: Path) -> list[str]:
+    """Per link, the centroids of the URDF's collision hulls (origin xyz/rpy applied) match
+    those of the USD's collision meshes (translate op applied) to 1e-5 m."""
+    from .physics import load_model
+
+    try:
+        model = load_model(folder)
+    except (OSError, ValueError) as e:
+        return [f"URDF collisions unreadable: {e}"]
+    problems = []
+    for link in root.GetChildren():
+        if not link.HasAPI(UsdPhysics.RigidBodyAPI):
+            continue
+        usd = []
+        for prim in Usd.PrimRange(link):
+            if prim.HasAPI(UsdPhysics.CollisionAPI) and prim.IsA(UsdGeom.Mesh):
+                pts = np.array(UsdGeom.Mesh(prim).GetPointsAttr().Get(), float)
+                m = UsdGeom.Xformable(prim).GetLocalTransformation()
+                usd.append(pts.mean(0) + np.array(m.ExtractTranslation()))
+        geo = model.links.get(link.GetName())
+        urdf = [h.mean(0) for h in geo.hulls] if geo else []
+        if len(usd) != len(urdf):
+            problems.append(f"link {link.GetName()}: {len(usd)} USD collision hulls, {len(urdf)} in the URDF")
+            continue
+        if usd:
+            d = np.linalg.norm(np.array(usd)[:, None] - np.array(urdf)[None], axis=2)
+            worst = float(max(d.min(0).max(), d.min(1).max()))  # every hull has a twin, both ways
+            if worst > 1e-5:
+                problems.append(f"link {link.GetName()}: a collision hull is {worst * 1000:.3f} mm from its twin")
+    return problems
+
+
 def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict) -> CheckResult:
-    """The URDF has the same links and joints (type, parent, child, axis, limits) as the USD."""
+    """The URDF has the same links and joints (type, parent, child, axis, limits) as the USD, and
+    the same collision hulls in the same places (per link, the centroid of every hull)."""
     urdf = parse_urdf(folder / f"{folder.name}.urdf")
     root = stage.GetDefaultPrim()
     bodies = {p.GetName() for p in Usd.PrimRange(root) if p.HasAPI(UsdPhysics.RigidBodyAPI)}
@@ -176,6 +209,7 @@ def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict) -> CheckResult:
         if lo is None or hi is None or uj.lower is None or abs(lo * scale - uj.lower) > 1e-5 or \
                 abs(hi * scale - uj.upper) > 1e-5:
             problems.append(f"{name}: limits USD {lo},{hi} vs URDF {uj.lower},{uj.upper}")
+    problems += _collisions_agree(root, folder)
     n_meta = len(meta["joints"])
     if len(urdf.joints) != n_meta:
         problems.append(f"URDF has {len(urdf.joints)} joints, metadata {n_meta}")
