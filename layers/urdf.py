@@ -63,16 +63,36 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None,
     """Write an OBJ; ``normals``/``uvs`` are per face corner ``(m, 3, 3)`` / ``(m, 3, 2)``.
 
     Corner normals and UVs are rounded to the precision written and shared between
-    corners that agree, so a smooth surface lists each normal once.
+    corners that agree, so a smooth surface lists each normal once.  Where nearly every
+    vertex has one UV and one normal (smooth surfaces), the lists run in step and faces
+    read ``f i/i/i ...``.
     """
     parts = ["# infmob-usd\n"]
     if mtl:
         parts.append(f"mtllib {mtl}\n")
-    parts.append(_rows("v", "%.6f %.6f %.6f", np.asarray(vertices, float)))
+    vertices = np.asarray(vertices, float)
     f1 = np.asarray(faces, np.int64) + 1
     if uvs is not None and normals is not None:
         vt, ti = _unique_rows(np.asarray(uvs, float).reshape(-1, 2), 6)
         vn, ni = _unique_rows(np.asarray(normals, float).reshape(-1, 3), 5)
+        vi = f1.reshape(-1) - 1
+        if max(len(vertices), len(vt), len(vn)) < 1 << 21:
+            # a smooth surface: one (position, uv, normal) triple per vertex, almost; then list the
+            # triples in step so a face reads "f i/i/i j/j/j k/k/k", one number per corner to format
+            key = (vi << 42) | (ti << 21) | ni
+            triples, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+            if len(triples) <= 1.25 * len(vertices):
+                corner = np.arange(len(key))[first]
+                parts.append(_rows("v", "%.6f %.6f %.6f", vertices[vi[corner]]))
+                parts.append(_rows("vt", "%.6f %.6f", vt[ti[corner]]))
+                parts.append(_rows("vn", "%.5f %.5f %.5f", vn[ni[corner]]))
+                if material:
+                    parts.append(f"usemtl {material}\n")
+                token = [f"{i}/{i}/{i}" for i in range(1, len(triples) + 1)]
+                parts.append(("f %s %s %s\n" * len(f1)) % tuple([token[i] for i in inverse.reshape(-1).tolist()]))
+                path.write_text("".join(parts))
+                return
+        parts.append(_rows("v", "%.6f %.6f %.6f", vertices))
         parts.append(_rows("vt", "%.6f %.6f", vt))
         parts.append(_rows("vn", "%.5f %.5f %.5f", vn))
         if material:
@@ -80,6 +100,7 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None,
         corners = np.stack([f1.reshape(-1), ti + 1, ni + 1], 1).reshape(-1, 9)
         parts.append(_rows("f", "%d/%d/%d %d/%d/%d %d/%d/%d", corners))
     else:
+        parts.append(_rows("v", "%.6f %.6f %.6f", vertices))
         if material:
             parts.append(f"usemtl {material}\n")
         parts.append(_rows("f", "%d %d %d", f1))
