@@ -177,10 +177,15 @@ class Piece:
         """Collision meshes: ``(vertices (k, 3), faces (f, 3))`` per convex piece, outward.
 
         Computed once per point set (Qhull, or known from construction: :meth:`set_hull`) and
-        recomputed if the point set changes.  A hull is kept under :data:`MAX_HULL_VERTICES`
-        (PhysX keeps at most 255) by farthest-point sampling of its vertices, which keeps its
-        extremes.
+        recomputed if a point set is replaced; point sets are made read-only once their hull
+        exists, so an edit in place fails loudly instead of leaving a stale hull.  A hull is
+        kept under :data:`MAX_HULL_VERTICES` (PhysX keeps at most 255) by farthest-point
+        sampling of its vertices, which keeps its extremes.
         """
+        memo = getattr(self, "_hulls_memo", None)
+        if memo is not None and len(memo[0]) == len(self.convex) and all(
+                a is b for a, b in zip(memo[0], self.convex)):
+            return memo[1]  # the same point sets (frozen below, so not edited in place)
         cache = getattr(self, "_hull_cache", None) or []
         cache = cache + [None] * (len(self.convex) - len(cache))
         hints = getattr(self, "_hull_hints", None) or {}
@@ -204,6 +209,9 @@ class Piece:
                 entry = cache[k] = (c.copy(), (v, np.asarray(f, np.int64)))
             out.append(entry[1])
         self._hull_cache = cache[:len(self.convex)]
+        for c in self.convex:  # a point set with a hull is frozen: replace it, never edit it in place
+            c.flags.writeable = False
+        self._hulls_memo = (list(self.convex), out)
         return out
 
     def with_collision_of(self, other: Piece) -> Piece:
