@@ -7,7 +7,8 @@
 * one ``<collision>`` per convex piece (SAPIEN and MuJoCo hull each collision file), its OBJ
   centred on its own origin and placed by ``<collision><origin>`` (PhysX's contacts misbehave
   otherwise); the wedges of a shell band are turned copies of one wedge, so they share its
-  OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~40 collision files, not ~150);
+  OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~30 collision files, not ~180),
+  and identical hulls of a link (a keypad's buttons) share one file;
 * ``<inertial>`` with the full tensor about the centre of mass;
 * ``<limit>`` with effort and velocity, ``<dynamics damping friction>``.
 
@@ -141,10 +142,16 @@ def write_urdf(obj, folder: Path) -> Path:
             write_obj(meshes / fname, v, f, n, uv, mtl=f"{slot}.mtl", material=slot)
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
+        same_shape: dict[bytes, str] = {}  # identical centred hulls (a keypad's buttons) share a file
         for i, (mesh, pos, rot, hv, hf) in enumerate(collision_placements(link)):
             fname = f"{link.name}__collision_{mesh:03d}.obj"
             if rot is None:
-                write_obj(meshes / fname, hv, hf)
+                key = np.round(hv, 9).tobytes() + np.asarray(hf, np.int64).tobytes()
+                if key in same_shape:
+                    fname = same_shape[key]
+                else:
+                    same_shape[key] = fname
+                    write_obj(meshes / fname, hv, hf)
             rpy = "0 0 0" if rot is None else _v(rotation_rpy(rot))
             out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="{_v(pos)}" rpy="{rpy}"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></collision>')
