@@ -143,15 +143,15 @@ def write_urdf(obj, folder: Path) -> Path:
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
         same_shape: dict[bytes, str] = {}  # identical centred hulls (a keypad's buttons) share a file
+        file_of: dict[int, str] = {}  # hull index -> the file holding its mesh
         for i, (mesh, pos, rot, hv, hf) in enumerate(collision_placements(link)):
-            fname = f"{link.name}__collision_{mesh:03d}.obj"
             if rot is None:
                 key = np.round(hv, 9).tobytes() + np.asarray(hf, np.int64).tobytes()
-                if key in same_shape:
-                    fname = same_shape[key]
-                else:
-                    same_shape[key] = fname
-                    write_obj(meshes / fname, hv, hf)
+                if key not in same_shape:
+                    same_shape[key] = f"{link.name}__collision_{mesh:03d}.obj"
+                    write_obj(meshes / same_shape[key], hv, hf)
+                file_of[mesh] = same_shape[key]
+            fname = file_of[mesh]  # an instance's prototype comes before it
             rpy = "0 0 0" if rot is None else _v(rotation_rpy(rot))
             out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="{_v(pos)}" rpy="{rpy}"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></collision>')
