@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import ModelError
-from .geometry import Piece
+from .geometry import Piece, axis_angle
 from .joints import JointSpec
 from .params import Flag
 
@@ -135,9 +135,8 @@ def dof_motion(dof, value: float) -> np.ndarray:
     a, o = np.asarray(dof.axis), np.asarray(dof.origin)
     if dof.type == "prismatic":
         m[:3, 3] = a * value
-    else:  # Rodrigues, about the axis through the pivot
-        k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-        r = np.eye(3) + np.sin(value) * k + (1 - np.cos(value)) * k @ k
+    else:  # about the axis through the pivot
+        r = axis_angle(a, value)
         m[:3, :3], m[:3, 3] = r, o - r @ o
     return m
 

@@ -271,7 +271,7 @@ class Piece:
             j = band["first"]
             if j == k or band["axis"] is None or self.convex[j] is not band["src"]:
                 continue  # the prototype itself, a stretched band, or a replaced (eroded) prototype
-            rot = _axis_angle_matrix(band["axis"], angle)
+            rot = axis_angle(band["axis"], angle)
             t = band["point"] - rot @ band["point"]
             scale = float(np.ptp(hulls[k][0], axis=0).max())
             if np.abs(hulls[j][0] @ rot.T + t - hulls[k][0]).max() > 1e-9 * max(scale, 1e-3):
@@ -507,9 +507,9 @@ def _axis_index(axis: str | int) -> int:
     return int(axis)
 
 
-def _axis_angle_matrix(axis: np.ndarray, angle: float) -> np.ndarray:
-    """Rodrigues: the rotation by ``angle`` radians about unit ``axis``."""
-    a = np.asarray(axis, float) / np.linalg.norm(axis)
+def axis_angle(axis: Sequence[float], angle: float) -> np.ndarray:
+    """Rodrigues: the ``(3, 3)`` rotation by ``angle`` radians about the unit ``axis``."""
+    a = np.asarray(axis, float)
     k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
     return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
 

@@ -19,7 +19,7 @@ import numpy as np
 from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
-from .geometry import Piece
+from .geometry import Piece, axis_angle
 from .mass import DUMMY_INERTIA, DUMMY_MASS, inertial
 from .physical import dynamics
 
@@ -118,7 +118,7 @@ class ArticulatedObject:
             if j.type == "prismatic":
                 motion[:3, 3] = j.axis * value
             elif j.type in ("revolute", "continuous"):
-                motion[:3, :3] = _axis_angle(j.axis, value)
+                motion[:3, :3] = axis_angle(j.axis, value)
             pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ motion
         return pose
 
@@ -133,12 +133,6 @@ def _translation(t) -> np.ndarray:
     m = np.eye(4)
     m[:3, 3] = t
     return m
-
-
-def _axis_angle(axis: np.ndarray, angle: float) -> np.ndarray:
-    """Rodrigues: ``(3, 3)`` rotation by ``angle`` radians about the unit ``axis``."""
-    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
-    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
 
 
 def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[Joint]]:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .blueprint import Blueprint, descendants
-from .geometry import hull_arrays, triangle_cross
+from .geometry import axis_angle, hull_arrays, triangle_cross
 from .joints import Dof
 
 
@@ -210,7 +210,6 @@ def limit_to_ground(obj) -> list[str]:
     category must raise its base). Returns the names of the joints changed.
     """
     from .errors import ModelError
-    from .model import _axis_angle
 
     extreme = _extreme_points(obj)
     origin = {link.name: np.asarray(link.origin, float) for link in obj.links}
@@ -229,7 +228,7 @@ def limit_to_ground(obj) -> list[str]:
         def lowest(value: float, j=j, rel=rel, pivot_z=pivot_z, axis=axis) -> float:
             if j.type == "prismatic":
                 return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
-            return pivot_z + float((rel @ _axis_angle(axis, value)[2]).min())
+            return pivot_z + float((rel @ axis_angle(axis, value)[2]).min())
 
         if j.type == "continuous":
             for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
