@@ -69,30 +69,16 @@ def visual_meshes(obj) -> dict[str, list]:
     return out
 
 
-def centred_hulls(link):
-    """Every collision hull of a link as ``(centre (3,), vertices - centre, faces)``.
-
-    Writers place each hull at its centre (URDF ``<collision><origin>``, a translate op in
-    USD) with vertices around it: PhysX's default contact generation (PCM) reports false deep
-    contacts between convex meshes whose vertices lie far from their shape origin.
-    """
-    out = []
-    for piece in link.pieces:
-        for v, f in piece.hulls():
-            c = (v.min(0) + v.max(0)) / 2
-            out.append((c, v - c, f))
-    return out
-
-
 def collision_placements(link) -> list[tuple]:
     """Every collision hull of a link as ``(mesh index, position (3,), rotation (3, 3) or None,
     centred vertices or None, faces or None)``.
 
-    A hull with its own mesh (rotation ``None``) is written centred, placed at its centre (see
-    :func:`centred_hulls`). A hull that is a rigidly moved copy of another hull of its piece
-    (the wedges of a shell band, :meth:`~infmob_usd.geometry.Piece.hull_instances`) reuses that
-    hull's mesh (``mesh index``) placed by ``position`` and ``rotation``: one file per band
-    instead of one per wedge.
+    A hull with its own mesh (rotation ``None``) is written centred on the middle of its bounds
+    and placed there: PhysX's default contact generation (PCM) reports false deep contacts
+    between convex meshes whose vertices lie far from their shape origin. A hull that is a
+    rigidly moved copy of another hull of its piece (the wedges of a shell band,
+    :meth:`~infmob_usd.geometry.Piece.hull_instances`) reuses that hull's mesh (``mesh index``)
+    placed by ``position`` and ``rotation``: one file per band instead of one per wedge.
     """
     out = []
     base = 0

@@ -173,7 +173,7 @@ def _bounds(obj, visuals) -> tuple[np.ndarray, np.ndarray]:
 def _hulls(obj) -> dict[str, list]:
     """Collision hulls per link: ``[(centre (3,), float32 vertices - centre, float32 extent, int32 faces)]``.
 
-    Like :func:`layers.common.centred_hulls`: each hull sits at the centre of its bounds
+    As in the URDF (:func:`layers.common.collision_placements`): each hull sits at the centre of its bounds
     (a translate op) with its vertices around it. Vectorised over every hull of the object;
     the extent is the float32 vertices' bounds (the float64 bounds rounded: rounding is
     monotonic).
