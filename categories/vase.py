@@ -124,15 +124,7 @@ def wedges(outer, inner, sectors: int, phase: float = 0.0) -> list[np.ndarray]:
     nearly coplanar arc points get their planes snapped by PhysX cooking, and its PCM
     contact generation then reports deep false contacts with hulls a few mm away.
     """
-    outer, inner = np.asarray(outer, float), np.asarray(inner, float)
-    ang = phase + 2 * np.pi * np.arange(sectors + 1) / sectors
-    cs, sn = np.cos(ang), np.sin(ang)
-    out = []
-    for i in range(len(outer) - 1):
-        ring = [outer[i], outer[i + 1], inner[i], inner[i + 1]]
-        for s in range(sectors):
-            out.append(np.array([(r * cs[k], r * sn[k], z) for r, z in ring for k in (s, s + 1)]))
-    return out
+    return list(g.wedge_points(outer, inner, sectors, phase).reshape(-1, 8, 3))
 
 
 def vessel_wall(fine, coarse, thickness: float, material: str, sectors: int | None = None,

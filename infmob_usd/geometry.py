@@ -225,32 +225,14 @@ class Piece:
     def with_wedges(self, outer, inner, sectors: int, phase: float = 0.0) -> Piece:
         """This piece's mesh with flat-faced wedge collisions of a wall of revolution about +Z.
 
-        ``outer`` and ``inner`` are matching ``(p, 2)`` ``(radius, z)`` profiles; each band and
-        sector gives one convex piece of its 8 corners (corner ``b * 2 + a``: band corner ``b``
-        of outer low, outer high, inner low, inner high, at sector edge ``a``), so every face is
-        exactly planar.  The wedges of a band are turned copies of its first (writers share
+        One convex piece of 8 corners per band and sector (:func:`wedge_points`), so every face
+        is exactly planar.  The wedges of a band are turned copies of its first (writers share
         their mesh, :meth:`hull_instances`).
         """
-        outer, inner = np.asarray(outer, float), np.asarray(inner, float)
-        ang = phase + 2 * np.pi * np.arange(sectors + 1) / sectors
-        cs, sn = np.cos(ang), np.sin(ang)
-        convex, bands = [], []
-        for i in range(len(outer) - 1):
-            ring = np.array([outer[i], outer[i + 1], inner[i], inner[i + 1]])  # (4, 2)
-            r, z = ring[:, 0], ring[:, 1]
-            # (sectors, 4 corners, 2 edges, 3)
-            pts = np.stack([r[None, :, None] * np.stack([cs[:-1], cs[1:]], 1)[:, None, :],
-                            r[None, :, None] * np.stack([sn[:-1], sn[1:]], 1)[:, None, :],
-                            np.broadcast_to(z[None, :, None], (sectors, 4, 2))], -1)
-            bands.append((len(convex), sectors))
-            convex += list(pts.reshape(sectors, 8, 3))
-        out = Piece(self.vertices, self.faces, self.material, convex, self.name, self.sheet)
-        out._hull_hints = {}
-        for first, count in bands:
-            band = {"src": out.convex[first], "topology": None, "first": first, "point": np.zeros(3),
-                    "axis": np.array([0.0, 0.0, 1.0])}
-            for k in range(first, first + count):
-                out._hull_hints[k] = (out.convex[k], band, float(ang[k - first] - ang[0]))
+        pts = wedge_points(outer, inner, sectors, phase)
+        out = Piece(self.vertices, self.faces, self.material, list(pts.reshape(-1, 8, 3)), self.name, self.sheet)
+        turns = 2 * np.pi * np.arange(sectors) / sectors
+        _mark_turned_copies(out, sectors, turns, np.zeros(3))
         return out
 
     def hull_instances(self) -> list[tuple[int, np.ndarray, np.ndarray] | None]:
@@ -807,25 +789,49 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
     angles = np.linspace(0, 2 * np.pi, convex_sectors + 1)
     th = np.linspace(angles[:-1], angles[1:], 4, axis=1)  # (sectors, 4)
     cos, sin = np.cos(th)[:, None, :], np.sin(th)[:, None, :]
-    convex, bands = [], []
+    convex = []
     for i in range(len(outer) - 1):
         band = np.array([outer[i], outer[i + 1], inner[i], inner[i + 1]])  # (4, 2): (r, z)
         r, z = band[None, :, 0, None], band[None, :, 1, None]
         # point b * 4 + t of a wedge: band corner b at its angle t
         pts = np.stack([r * cos, r * sin, np.broadcast_to(z, cos.shape[:1] + (4, 4))], -1).reshape(-1, 16, 3) + c
-        bands.append((len(convex), len(pts)))
         convex += list(pts)
     piece = Piece(verts, faces, material, convex, name)
-    # the wedges of a band are turned copies: one hull topology serves all, found when first needed
-    # (categories often replace a shell's collision pieces by coarser ones)
-    piece._hull_hints = {}
-    for first, count in bands:
-        band = {"src": piece.convex[first], "topology": None, "first": first, "point": c.copy(),
-                "axis": np.array([0.0, 0.0, 1.0])}
-        for k in range(first, first + count):
-            # wedge k is wedge `first` turned by angles[k - first] about the axis through `point`
-            piece._hull_hints[k] = (piece.convex[k], band, float(angles[k - first]))
+    _mark_turned_copies(piece, convex_sectors, angles[:-1], c)
     return piece
+
+
+def wedge_points(outer, inner, sectors: int, phase: float = 0.0) -> np.ndarray:
+    """``(bands, sectors, 8, 3)`` corners of flat-faced wedges of a wall of revolution about +Z.
+
+    ``outer`` and ``inner`` are matching ``(p, 2)`` ``(radius, z)`` profiles; corner ``b * 2 + a``
+    of a wedge is band corner ``b`` (outer low, outer high, inner low, inner high) at sector
+    edge ``a``, the edges at ``phase + 2 pi s / sectors``.
+    """
+    outer, inner = np.asarray(outer, float), np.asarray(inner, float)
+    ang = phase + 2 * np.pi * np.arange(sectors + 1) / sectors
+    cs, sn = np.cos(ang), np.sin(ang)
+    edges_c, edges_s = np.stack([cs[:-1], cs[1:]], 1)[:, None, :], np.stack([sn[:-1], sn[1:]], 1)[:, None, :]
+    bands = []
+    for i in range(len(outer) - 1):
+        ring = np.array([outer[i], outer[i + 1], inner[i], inner[i + 1]])  # (4, 2)
+        r, z = ring[None, :, 0, None], ring[None, :, 1, None]
+        pts = np.stack([r * edges_c, r * edges_s, np.broadcast_to(z, (sectors, 4, 2))], -1)  # (sectors, 4, 2, 3)
+        bands.append(pts.reshape(sectors, 8, 3))
+    return np.array(bands).reshape(len(bands), sectors, 8, 3)
+
+
+def _mark_turned_copies(piece: Piece, count: int, turns: np.ndarray, point: np.ndarray) -> None:
+    """Declare ``piece.convex`` to be bands of ``count`` wedges, wedge ``s`` of a band being its
+    first turned by ``turns[s]`` about +Z through ``point``: one hull topology then serves the
+    whole band (found when first needed: categories often replace a shell's collision pieces),
+    and writers share the band's mesh (:meth:`Piece.hull_instances`)."""
+    piece._hull_hints = {}
+    for first in range(0, len(piece.convex), count):
+        band = {"src": piece.convex[first], "topology": None, "first": first, "point": np.array(point, float),
+                "axis": np.array([0.0, 0.0, 1.0])}
+        for s in range(count):
+            piece._hull_hints[first + s] = (piece.convex[first + s], band, float(turns[s]))
 
 
 def disc(center: Sequence[float], radius: float, thickness: float, material: str, sections: int = 32,
