@@ -128,9 +128,8 @@ def ensure_gaps(links, joints) -> int:
         parent_hulls = [c + offset for p in parent.pieces for c in p.convex]
         if not parent_hulls:
             continue
-        # (all points, face normals of the hull) of each parent piece: the points decide, the normals are directions
-        parent_shapes = [(c + offset, _face_normals(v, f)) for p in parent.pieces
-                         for c, (v, f) in zip(p.convex, p.hulls())]
+        parent_meshes = [vf for p in parent.pieces for vf in p.hulls()]
+        normals: dict[int, np.ndarray] = {}  # face normals of the parent hulls met, as test directions
         box_lo = np.array([h.min(0) for h in parent_hulls])
         box_hi = np.array([h.max(0) for h in parent_hulls])
         pts = np.vstack([c for p in child.pieces for c in p.convex] or [np.zeros((1, 3))])
@@ -147,7 +146,9 @@ def ensure_gaps(links, joints) -> int:
                 grown = None
                 hit = False
                 for i in near:
-                    if _separated(c, child_n, gap - 1e-6, *parent_shapes[i]):
+                    if i not in normals:
+                        normals[i] = _face_normals(*parent_meshes[i])
+                    if _separated(c, child_n, gap - 1e-6, parent_hulls[i], normals[i]):
                         continue  # a face plane separates them: no overlap, no exact test needed
                     if grown is None:
                         grown = manifold3d.Manifold.hull_points(_inflate(c, gap - 1e-6))
