@@ -297,10 +297,9 @@ def cmd_textures(args) -> int:
     if tty:
         print(file=sys.stderr)
     dt = time.perf_counter() - t0
-    size = sum(f.stat().st_size for f in Path(res["cache"]).rglob("*.png"))
     print(f"{res['looks']} looks at {args.texture_size} px: {res['made']} made, {res['looks'] - res['made']}"
           f" already cached, in {dt:.1f} s with {args.workers} workers")
-    print(f"cache {res['cache']} ({size / 2**20:.0f} MB, every size)")
+    print(f"cache {res['cache']} ({res['megabytes']:.0f} MB, every size)")
     return 0
 
 

@@ -31,6 +31,8 @@ import os
 import tempfile
 import threading
 from collections import OrderedDict
+from concurrent.futures import ProcessPoolExecutor
+from contextlib import nullcontext
 from pathlib import Path
 
 import cv2
@@ -157,34 +159,34 @@ def texture_maps(look: Look, size: int, use_cache: bool = True) -> dict[str, byt
         if hit is not None:
             _memory.move_to_end(key)
             return dict(hit)  # a new dict: a caller editing its object's maps never edits the cache
-    folder = cache_dir()
-    disk_key = _look_key(look, size)
-    maps = _read(folder, disk_key) if folder else None
-    if maps is None:
-        maps = make_maps(look, size)
-        if folder:
-            _write(folder, disk_key, maps)
+    maps, _ = _disk_maps(look, size)
     _remember(key, maps)
     return dict(maps)
 
 
-def _build_one(args: tuple[Look, int]) -> bool:
-    look, size = args
+def _disk_maps(look: Look, size: int) -> tuple[dict[str, bytes], bool]:
+    """The maps of ``look`` from the disk cache, or made now and stored there; and whether made."""
     folder = cache_dir()
     key = _look_key(look, size)
-    if folder and _read(folder, key) is not None:
-        return False
+    maps = _read(folder, key) if folder else None
+    if maps is not None:
+        return maps, False
     maps = make_maps(look, size)
     if folder:
         _write(folder, key, maps)
-    return True
+    return maps, True
+
+
+def _build_one(args: tuple[Look, int]) -> bool:
+    return _disk_maps(*args)[1]
 
 
 def build(size: int = 512, family: str | None = None, workers: int = 1, progress=None) -> dict:
     """Fill the disk cache with every library look (of one family spec, or all) at ``size``.
 
-    Returns ``{"looks", "made", "cache"}``: looks in the library, looks synthesized now
-    (the others were cached already), and the cache folder.  Raises ``RuntimeError``
+    Returns ``{"looks", "made", "cache", "megabytes"}``: looks in the library, looks
+    synthesized now (the others were cached already), the cache folder and its size (every
+    texture size).  Raises ``RuntimeError``
     when the disk cache is disabled or unusable.
     """
     folder = cache_dir()
@@ -195,17 +197,11 @@ def build(size: int = 512, family: str | None = None, workers: int = 1, progress
     looks = library(family)
     jobs = [(look, size) for look in looks]
     made = 0
-    if workers <= 1:
-        for i, job in enumerate(jobs):
-            made += _build_one(job)
+    with ProcessPoolExecutor(workers) if workers > 1 else nullcontext() as pool:
+        results = pool.map(_build_one, jobs, chunksize=8) if pool else map(_build_one, jobs)
+        for i, fresh in enumerate(results):
+            made += fresh
             if progress:
                 progress(i + 1, len(jobs))
-    else:
-        from concurrent.futures import ProcessPoolExecutor
-
-        with ProcessPoolExecutor(workers) as pool:
-            for i, fresh in enumerate(pool.map(_build_one, jobs, chunksize=8)):
-                made += fresh
-                if progress:
-                    progress(i + 1, len(jobs))
-    return {"looks": len(looks), "made": made, "cache": str(folder)}
+    size = sum(f.stat().st_size for f in folder.rglob("*.png"))
+    return {"looks": len(looks), "made": made, "cache": str(folder), "megabytes": size / 2**20}

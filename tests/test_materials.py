@@ -337,3 +337,15 @@ def test_editing_an_objects_maps_never_edits_the_cache(monkeypatch):
     del first["normal"]
     again = texture_maps(look, 16)
     assert again == lib.make_maps(look, 16)
+
+
+def test_build_fills_the_cache_once(tmp_path, monkeypatch):
+    from infmob_usd.materials import cache as lib
+
+    monkeypatch.setenv("INFMOB_USD_CACHE", str(tmp_path))
+    first = lib.build(16, "rubber:black", workers=1)
+    assert first["looks"] == first["made"] == LOOKS_PER_VARIANT and first["megabytes"] > 0
+    again = lib.build(16, "rubber:black", workers=2)
+    assert again["made"] == 0 and again["cache"] == first["cache"]
+    look = library_look("rubber", "black", 3)
+    assert lib._disk_maps(look, 16) == (lib.make_maps(look, 16), False)
