@@ -270,11 +270,11 @@ class Piece:
         self._hull_cache = cache
 
     def volume(self) -> float:
-        """Solid volume in m^3: the mesh's if it is closed, else its convex pieces'."""
-        mesh = trimesh.Trimesh(self.vertices, self.faces, process=False)
-        if mesh.is_watertight:
-            return abs(float(mesh.volume))
-        return float(sum(convex_hull(c).volume for c in self.convex))
+        """Solid volume in m^3: the mesh's if it is closed, else its convex pieces' (the solids
+        its mass comes from, :func:`infmob_usd.mass.solids`)."""
+        from .mass import solids
+
+        return float(sum(abs(s[0]) for s in solids(self)))
 
 
 # ---------------------------------------------------------------------------
@@ -416,12 +416,7 @@ def hull_indices(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     except QhullError:
         hull = ConvexHull(pts, qhull_options="QJ")  # degenerate (flat) input: joggle
     used, faces = _compact(len(pts), hull.simplices)
-    verts = pts[used]
-    tri = verts[faces]
-    normal = triangle_cross(tri)
-    inward = np.einsum("ij,ij->i", normal, tri[:, 0] - verts.mean(0)) < 0
-    faces[inward] = faces[inward][:, ::-1]
-    return used, faces
+    return used, _outward(pts[used], faces)
 
 
 def hull_arrays(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -59,7 +59,7 @@ def mass_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.
     return volume, centroid + ref, inertia, area
 
 
-def _solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
+def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
     """Mass properties of the solids of a piece: its mesh if closed, else its convex hulls."""
     if is_closed(piece.faces):
         props = mass_properties(piece.vertices, piece.faces)
@@ -77,14 +77,14 @@ def inertial(pieces: Iterable[tuple[Piece, float]]) -> tuple[float, np.ndarray, 
     """
     masses, coms, tensors = [], [], []
     for piece, density in pieces:
-        solids = _solids(piece)
+        parts = solids(piece)
         if piece.sheet > 0:
             # a part made of sheet (a casing panel, a tube) modelled solid: its wall is about half
             # the solid's surface (one face of a panel, the outside of a tube) times the sheet
-            area = 0.5 * float(sum(s[3] for s in solids))
-            solid_vol = float(sum(abs(s[0]) for s in solids))
+            area = 0.5 * float(sum(s[3] for s in parts))
+            solid_vol = float(sum(abs(s[0]) for s in parts))
             density = density * min(1.0, area * piece.sheet / max(solid_vol, 1e-12))
-        for vol, centroid, unit_inertia, _area in solids:
+        for vol, centroid, unit_inertia, _area in parts:
             if abs(vol) <= 1e-12:
                 continue
             m = density * abs(vol)
