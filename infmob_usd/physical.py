@@ -189,18 +189,6 @@ def _extreme_points(obj) -> dict[str, np.ndarray]:
     return cache
 
 
-def _lowest(obj, q: dict[str, float], names=None) -> float:
-    """Lowest z of the collision pieces of ``names`` (default: every link) with joints at ``q``."""
-    poses = obj.poses(q)
-    z = np.inf
-    for name, pts in _extreme_points(obj).items():
-        if names is not None and name not in names:
-            continue
-        pose = poses[name]
-        z = min(z, float((pts @ pose[2, :3] + pose[2, 3]).min()))
-    return z
-
-
 def limit_to_ground(obj) -> list[str]:
     """Reduce joint limits so that no part goes below the ground at any single joint's limit.
 

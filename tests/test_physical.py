@@ -8,9 +8,17 @@ from infmob_usd import joints as J
 from infmob_usd.api import assemble
 from infmob_usd.blueprint import Blueprint
 from infmob_usd.errors import ModelError
-from infmob_usd.physical import DYNAMICS, GROUND_TOL, _lowest, gap_size
+from infmob_usd.physical import DYNAMICS, GROUND_TOL, gap_size
 
 from collide import overlap
+
+
+def _lowest(obj, q):
+    """Lowest z of every collision hull with joints at ``q``, by the object's own forward kinematics
+    (independent of how limit_to_ground moves a subtree)."""
+    poses = obj.poses(q)
+    return min(float((v @ poses[link.name][2, :3] + poses[link.name][2, 3]).min())
+               for link in obj.links for p in link.pieces for v, _ in p.hulls())
 
 
 def _make(bp):
