@@ -6,22 +6,18 @@ import numpy as np
 import pytest
 from test_office_chair import _box, assert_clear, by_child, movable, rest_overlaps, states
 
-from infmob_usd import physical
 from infmob_usd.categories import bar_chair as bc
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
+
+from zoo import make_bp
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back"}
 
 
 def make(seed, **overrides):
-    r = streams("bar_chair", seed)
-    p = bc.SCHEMA.sample(r["params"], overrides)
-    bp = bc.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(bc, "bar_chair", seed, **overrides)
 
 
 @pytest.mark.parametrize("seed", SEEDS)

@@ -7,24 +7,19 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import beverage_fridge as bf
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import contacts, overlap
+from zoo import make_bp
 
 SEEDS = range(6)
 VOL = 1e-7  # m^3: the validators' contact volume
 
 
 def make(seed, **overrides):
-    r = streams("beverage_fridge", seed)
-    p = bf.SCHEMA.sample(r["params"], overrides)
-    bp = bf.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(bf, "beverage_fridge", seed, **overrides)
 
 
 def movable(bp):

@@ -7,24 +7,19 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import cocktail_table as ct
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(8)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
 
 
 def make(seed, **overrides):
-    r = streams("cocktail_table", seed)
-    p = ct.SCHEMA.sample(r["params"], overrides)
-    bp = ct.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(ct, "cocktail_table", seed, **overrides)
 
 
 def rotation(axis, angle):

@@ -5,13 +5,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import dining_table as dt
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(6)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
@@ -19,11 +18,7 @@ EYE = np.eye(4)
 
 
 def make(seed, **overrides):
-    r = streams("dining_table", seed)
-    p = dt.SCHEMA.sample(r["params"], overrides)
-    bp = dt.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(dt, "dining_table", seed, **overrides)
 
 
 def movable(bp):

@@ -7,25 +7,20 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import dishwasher as dw
 from infmob_usd.errors import ParameterError
 from infmob_usd.materials.families import FAMILIES, split_spec
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import contacts, overlap
+from zoo import make_bp
 
 SEEDS = range(5)
 VOL = 1e-7  # m^3: the validators' contact volume
 
 
 def make(seed, **overrides):
-    r = streams("dishwasher", seed)
-    p = dw.SCHEMA.sample(r["params"], overrides)
-    bp = dw.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(dw, "dishwasher", seed, **overrides)
 
 
 def movable(bp):

@@ -7,26 +7,21 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import door as mod
 from infmob_usd.errors import ParameterError
 from infmob_usd.mass import inertial
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import contacts, overlap
+from zoo import make_bp
 
 SEEDS = range(8)
 VOLUME_TOL = 1e-7  # m^3, as the physics checks
 
 
 def make(seed, **overrides):
-    r = streams("door", seed)
-    p = mod.SCHEMA.sample(r["params"], overrides)
-    bp = mod.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(mod, "door", seed, **overrides)
 
 
 def by_child(bp, name):

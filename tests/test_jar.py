@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, hulls, make_bp
+from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, hulls
 
 from infmob_usd.categories import jar
 from infmob_usd.errors import ParameterError
+
+from zoo import make_bp
 
 SEEDS = range(6)
 

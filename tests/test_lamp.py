@@ -9,26 +9,21 @@ import numpy as np
 import pytest
 from scipy.spatial import ConvexHull
 
-from infmob_usd import physical
 from infmob_usd.blueprint import descendants
 from infmob_usd.categories import lamp
 from infmob_usd.errors import ParameterError
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(10)
 LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch"}
 
 
 def make(seed: int, **overrides):
-    rng = streams("lamp", seed)
-    p = lamp.SCHEMA.sample(rng["params"], overrides)
-    bp = lamp.build(p, rng["structure"], rng["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(lamp, "lamp", seed, **overrides)
 
 
 @pytest.fixture(scope="module", params=SEEDS)

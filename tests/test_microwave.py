@@ -9,22 +9,18 @@ import pytest
 from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 
-from infmob_usd import physical
 from infmob_usd.categories import microwave as mw
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
+
+from zoo import make_bp
 
 SEEDS = range(10)
 LABELS = {"body", "door", "plate", "button", "knob", "control_panel"}
 
 
 def make(seed, **overrides):
-    r = streams("microwave", seed)
-    p = mw.SCHEMA.sample(r["params"], overrides)
-    bp = mw.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(mw, "microwave", seed, **overrides)
 
 
 def movable(bp):

@@ -7,14 +7,13 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import office_chair as oc
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest"}
@@ -22,11 +21,7 @@ TOL = 1e-7  # m^3, as the validator
 
 
 def make(seed, **overrides):
-    r = streams("office_chair", seed)
-    p = oc.SCHEMA.sample(r["params"], overrides)
-    bp = oc.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(oc, "office_chair", seed, **overrides)
 
 
 def movable(bp):

@@ -7,7 +7,6 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import oven
 from infmob_usd.errors import ParameterError
 from infmob_usd.mass import inertial
@@ -15,6 +14,7 @@ from infmob_usd.materials import FAMILIES, split_spec
 from infmob_usd.seeding import streams
 
 import collide
+from zoo import make_bp
 
 SEEDS = range(4)
 LABELS = {"body", "door", "drawer", "rack", "knob", "button", "grate", "control_panel"}
@@ -22,11 +22,7 @@ VOL = 1e-7  # m^3, the validator's contact volume
 
 
 def make(seed, **overrides):
-    r = streams("oven", seed)
-    p = oven.SCHEMA.sample(r["params"], overrides)
-    bp = oven.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(oven, "oven", seed, **overrides)
 
 
 def by_child(bp, name):

@@ -5,23 +5,18 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import pan
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(8)
 
 
 def make(seed, **overrides):
-    r = streams("pan", seed)
-    p = pan.SCHEMA.sample(r["params"], overrides)
-    bp = pan.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(pan, "pan", seed, **overrides)
 
 
 def up(dz):

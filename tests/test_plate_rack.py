@@ -10,21 +10,17 @@ import pytest
 from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 
-from infmob_usd import physical
 from infmob_usd.categories import plate_rack as pr
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
+
+from zoo import make_bp
 
 SEEDS = range(8)
 
 
 def make(seed, **overrides):
-    r = streams("plate_rack", seed)
-    p = pr.SCHEMA.sample(r["params"], overrides)
-    bp = pr.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(pr, "plate_rack", seed, **overrides)
 
 
 def plates(bp):

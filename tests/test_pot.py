@@ -7,23 +7,18 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import pot
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(8)
 
 
 def make(seed, **overrides):
-    r = streams("pot", seed)
-    p = pot.SCHEMA.sample(r["params"], overrides)
-    bp = pot.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(pot, "pot", seed, **overrides)
 
 
 def lift(dz, turn=0.0):

@@ -5,23 +5,19 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import storage_rack as sr
 from infmob_usd.errors import ParameterError
 from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(4)
 VOL = 1e-7  # m^3, the validator's contact volume
 
 
 def make(seed, **overrides):
-    r = streams("storage_rack", seed)
-    p = sr.SCHEMA.sample(r["params"], overrides)
-    bp = sr.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(sr, "storage_rack", seed, **overrides)
 
 
 def by_child(bp, name):

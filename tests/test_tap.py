@@ -8,13 +8,13 @@ import manifold3d
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import tap
 from infmob_usd.errors import ParameterError
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
-from infmob_usd.seeding import streams
+
+from zoo import make_bp
 
 SEEDS = range(8)
 LABELS = {"base", "spout", "lever", "handle"}
@@ -22,11 +22,7 @@ TOL = 1e-7  # m^3, as the validator's contact volume
 
 
 def make(seed: int, **overrides):
-    rng = streams("tap", seed)
-    p = tap.SCHEMA.sample(rng["params"], overrides)
-    bp = tap.build(p, rng["structure"], rng["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(tap, "tap", seed, **overrides)
 
 
 @pytest.fixture(scope="module", params=SEEDS)

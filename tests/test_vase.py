@@ -8,23 +8,15 @@ import manifold3d
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.categories import vase
 from infmob_usd.errors import ParameterError
-from infmob_usd.seeding import streams
+
+from zoo import make_bp
 
 SEEDS = range(8)
 
 
 # -- helpers (bottle and jar tests import these) -------------------------------------
-
-
-def make_bp(module, name, seed, **overrides):
-    r = streams(name, seed)
-    p = module.SCHEMA.sample(r["params"], overrides)
-    bp = module.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
 
 
 def by_child(bp, name):

@@ -7,13 +7,12 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd import physical
 from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import window as win
 from infmob_usd.errors import ParameterError
-from infmob_usd.seeding import streams
 
 from collide import overlap
+from zoo import make_bp
 
 SEEDS = range(8)
 LABELS = {"frame", "sash", "shutter", "curtain"}
@@ -22,11 +21,7 @@ EYE = np.eye(4)
 
 
 def make(seed, **overrides):
-    r = streams("window", seed)
-    p = win.SCHEMA.sample(r["params"], overrides)
-    bp = win.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
-    return p, bp
+    return make_bp(win, "window", seed, **overrides)
 
 
 def movable(bp):

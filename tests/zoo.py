@@ -39,3 +39,16 @@ def zoo_blueprint() -> Blueprint:
 
 def zoo(seed: int = 0, texture_size: int = 32):
     return assemble(zoo_blueprint(), seed, np.random.default_rng(seed), texture_size)
+
+
+def make_bp(module, name, seed, **overrides):
+    """``(params, blueprint)`` of category module ``module`` (id ``name``) for ``seed``, grounded:
+    the blueprint path of :func:`infmob_usd.generate`, for tests of one category."""
+    from infmob_usd import physical
+    from infmob_usd.seeding import streams
+
+    r = streams(name, seed)
+    p = module.SCHEMA.sample(r["params"], overrides)
+    bp = module.build(p, r["structure"], r["geometry"])
+    physical.rest_on_ground(bp)
+    return p, bp
