@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_office_chair import _box, assert_clear, by_child, movable, rest_overlaps, states
+from test_office_chair import _box, assert_clear, rest_overlaps, states
 
 from infmob_usd.categories import bar_chair as bc
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back"}

@@ -12,7 +12,7 @@ from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from collide import contacts, overlap
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(6)
 VOL = 1e-7  # m^3: the validators' contact volume
@@ -20,14 +20,6 @@ VOL = 1e-7  # m^3: the validators' contact volume
 
 def make(seed, **overrides):
     return make_bp(bf, "beverage_fridge", seed, **overrides)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 def at(j, f):

@@ -6,12 +6,12 @@ import math
 
 import numpy as np
 import pytest
-from test_vase import by_child, check_cap_joint, check_common, check_hollow, check_sweep, gap, hulls, motion
+from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, gap, hulls, motion
 
 from infmob_usd.categories import bottle
 from infmob_usd.errors import ParameterError
 
-from zoo import make_bp
+from zoo import by_child, make_bp
 
 SEEDS = range(6)
 

@@ -10,7 +10,7 @@ from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import make_bp
+from zoo import make_bp, movable
 
 SEEDS = range(6)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
@@ -19,10 +19,6 @@ EYE = np.eye(4)
 
 def make(seed, **overrides):
     return make_bp(dt, "dining_table", seed, **overrides)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
 
 
 def at(moving, f):

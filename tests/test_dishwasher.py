@@ -13,7 +13,7 @@ from infmob_usd.materials.families import FAMILIES, split_spec
 from infmob_usd.model import build as build_model
 
 from collide import contacts, overlap
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(5)
 VOL = 1e-7  # m^3: the validators' contact volume
@@ -21,14 +21,6 @@ VOL = 1e-7  # m^3: the validators' contact volume
 
 def make(seed, **overrides):
     return make_bp(dw, "dishwasher", seed, **overrides)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 def at(j, f):

@@ -13,7 +13,7 @@ from infmob_usd.categories import microwave as mw
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(10)
 LABELS = {"body", "door", "plate", "button", "knob", "control_panel"}
@@ -21,14 +21,6 @@ LABELS = {"body", "door", "plate", "button", "knob", "control_panel"}
 
 def make(seed, **overrides):
     return make_bp(mw, "microwave", seed, **overrides)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 # -- convex geometry helpers ---------------------------------------------------------

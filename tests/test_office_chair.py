@@ -13,7 +13,7 @@ from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest"}
@@ -22,14 +22,6 @@ TOL = 1e-7  # m^3, as the validator
 
 def make(seed, **overrides):
     return make_bp(oc, "office_chair", seed, **overrides)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 def states(bp):

@@ -14,7 +14,7 @@ from infmob_usd.materials import FAMILIES, split_spec
 from infmob_usd.seeding import streams
 
 import collide
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
 LABELS = {"body", "door", "drawer", "rack", "knob", "button", "grate", "control_panel"}
@@ -23,14 +23,6 @@ VOL = 1e-7  # m^3, the validator's contact volume
 
 def make(seed, **overrides):
     return make_bp(oven, "oven", seed, **overrides)
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
 
 
 def q_at(bp, fractions):

@@ -14,7 +14,7 @@ from infmob_usd.categories import plate_rack as pr
 from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
-from zoo import make_bp
+from zoo import by_child, make_bp
 
 SEEDS = range(8)
 
@@ -25,10 +25,6 @@ def make(seed, **overrides):
 
 def plates(bp):
     return [n for n, part in bp.parts.items() if part.label == "plate"]
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 # -- convex helpers -----------------------------------------------------------------------

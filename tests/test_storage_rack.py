@@ -10,7 +10,7 @@ from infmob_usd.errors import ParameterError
 from infmob_usd.seeding import streams
 
 from collide import overlap
-from zoo import make_bp
+from zoo import by_child, make_bp
 
 SEEDS = range(4)
 VOL = 1e-7  # m^3, the validator's contact volume
@@ -18,10 +18,6 @@ VOL = 1e-7  # m^3, the validator's contact volume
 
 def make(seed, **overrides):
     return make_bp(sr, "storage_rack", seed, **overrides)
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 def levels(bp):

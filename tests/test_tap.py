@@ -14,7 +14,7 @@ from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
 
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
 LABELS = {"base", "spout", "lever", "handle"}
@@ -33,14 +33,6 @@ def tap_bp(request):
 # -- kinematics and collision helpers ----------------------------------------------------
 
 
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def joint_of(bp, child):
-    return next(j for j in bp.joints if j.child == child)
-
-
 def at(d, f):
     return f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)
 
@@ -56,7 +48,7 @@ def states(bp):
         for i, d in enumerate(j.dofs):
             qs = (math.pi / 2, -math.pi / 2, math.pi) if d.type == "continuous" else (d.lower, d.upper)
             out += [{(j.child, i): q} for q in qs]
-    spout = joint_of(bp, "spout").dofs[0]
+    spout = by_child(bp, "spout").dofs[0]
     lo, hi = (-math.pi, math.pi) if spout.type == "continuous" else (spout.lower, spout.upper)
     for a in np.linspace(lo, hi, 8):
         q = {(j.child, i): at(d, 1.0) for j in js for i, d in enumerate(j.dofs)}
@@ -135,7 +127,7 @@ def test_size(tap_bp):
 
 def test_spout_swivels_about_its_vertical_axis(tap_bp):
     p, bp = tap_bp
-    j = joint_of(bp, "spout")
+    j = by_child(bp, "spout")
     d = j.dofs[0]
     assert j.parent == "base" and d.axis == pytest.approx((0, 0, 1))
     assert d.origin[:2] == pytest.approx((0.0, 0.0))
@@ -155,7 +147,7 @@ def test_spout_swivels_about_its_vertical_axis(tap_bp):
 def test_controls(tap_bp):
     p, bp = tap_bp
     if p["handles"] == "single_lever":
-        j = joint_of(bp, "lever")
+        j = by_child(bp, "lever")
         assert j.kind == "flip_revolute" and j.parent == "base"
         swivel, lift = j.dofs
         assert swivel.axis == pytest.approx((0, 0, 1))
@@ -167,11 +159,11 @@ def test_controls(tap_bp):
         assert torque < 0
     else:
         for name in ("handle_0", "handle_1"):
-            j = joint_of(bp, name)
+            j = by_child(bp, name)
             d = j.dofs[0]
             assert j.kind == "revolute" and d.axis == pytest.approx((0, 0, 1))
             assert (d.lower, d.upper) == pytest.approx((-math.pi / 4, math.pi / 4))
-        y0, y1 = (joint_of(bp, n).dofs[0].origin[1] for n in ("handle_0", "handle_1"))
+        y0, y1 = (by_child(bp, n).dofs[0].origin[1] for n in ("handle_0", "handle_1"))
         assert y0 == pytest.approx(-y1) and y0 > 0
 
 

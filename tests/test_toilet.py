@@ -14,7 +14,7 @@ from infmob_usd.mass import inertial
 from infmob_usd.model import build as build_model
 
 from collide import contacts, overlap
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
 VOLUME_TOL = 1e-7  # m^3, as the physics checks
@@ -22,14 +22,6 @@ VOLUME_TOL = 1e-7  # m^3, as the physics checks
 
 def make(seed, **overrides):
     return make_bp(mod, "toilet", seed, **overrides)
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
 
 
 def states(bp):

@@ -14,7 +14,7 @@ from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
 
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
 LABELS = {"screen", "stand", "connector", "button", "frame", "arm"}
@@ -31,14 +31,6 @@ def tv_bp(request):
 
 
 # -- kinematics and collision helpers ----------------------------------------------------
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def joint_of(bp, child):
-    return next(j for j in bp.joints if j.child == child)
 
 
 def states(bp):
@@ -112,7 +104,7 @@ def test_parts_labels_and_materials(tv_bp):
     p, bp = tv_bp
     assert {part.label for part in bp.parts.values()} <= LABELS
     assert bp.parts["screen"].label == "screen" and bp.parts["connector"].label == "connector"
-    assert joint_of(bp, "screen").kind == "fixed" and joint_of(bp, "screen").parent == "connector"
+    assert by_child(bp, "screen").kind == "fixed" and by_child(bp, "screen").parent == "connector"
     if p["has_wall_mount"]:
         assert bp.root == "wall_plate"
         assert sorted(n for n in bp.parts if n.startswith("arm_")) == [f"arm_{k}" for k in range(p["arm_links"])]
@@ -142,7 +134,7 @@ def test_screen_size_follows_width_and_aspect(tv_bp):
 
 def test_tilt_connector_rests_on_its_lower_stop(tv_bp):
     p, bp = tv_bp
-    j = joint_of(bp, "connector")
+    j = by_child(bp, "connector")
     assert j.kind == "revolute"
     d = j.dofs[0]
     assert d.axis == pytest.approx((0, -1, 0))
@@ -157,15 +149,15 @@ def test_tilt_connector_rests_on_its_lower_stop(tv_bp):
 
 def test_stand_joints(tv_bp):
     p, bp = tv_bp
-    parent = joint_of(bp, "connector").parent
+    parent = by_child(bp, "connector").parent
     if p["has_wall_mount"]:
         for k in range(p["arm_links"]):
-            j = joint_of(bp, f"arm_{k}")
+            j = by_child(bp, f"arm_{k}")
             assert j.kind == "revolute" and j.dofs[0].axis == pytest.approx((0, 0, 1))
             assert j.dofs[0].lower == -j.dofs[0].upper < 0
         assert parent == f"arm_{p['arm_links'] - 1}"
     elif p["stand_style"] == "single_post" and p["has_height_adjust"]:
-        j = joint_of(bp, "post")
+        j = by_child(bp, "post")
         assert parent == "post" and j.kind == "revolute_prismatic" and j.parent == "stand"
         slide, turn = j.dofs
         assert slide.axis == pytest.approx((0, 0, 1)) and (slide.lower, slide.upper) == (0.0, p["slide"])
@@ -174,7 +166,7 @@ def test_stand_joints(tv_bp):
         assert parent == "stand" and "post" not in bp.parts
     for n, part in bp.parts.items():
         if part.label == "button":
-            j = joint_of(bp, n)
+            j = by_child(bp, n)
             d = j.dofs[0]
             assert j.kind == "prismatic" and j.parent == "screen" and d.lower == 0.0 and d.upper > 0
             assert abs(d.axis[2]) < 1e-12  # pressed horizontally
@@ -210,7 +202,7 @@ def test_overrides_drive_the_growth():
     assert bp.root == "wall_plate" and {"arm_0", "arm_1"} <= set(bp.parts)
     assert sum(part.label == "button" for part in bp.parts.values()) == 3
     _, bp = make(1, has_wall_mount=False, stand_style="single_post", has_height_adjust=True)
-    assert joint_of(bp, "post").kind == "revolute_prismatic"
+    assert by_child(bp, "post").kind == "revolute_prismatic"
     _, bp = make(1, has_wall_mount=False, stand_style="two_legs", has_buttons=False)
     assert bp.root == "stand" and "post" not in bp.parts
     assert not any(part.label == "button" for part in bp.parts.values())

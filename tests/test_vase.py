@@ -11,16 +11,12 @@ import pytest
 from infmob_usd.categories import vase
 from infmob_usd.errors import ParameterError
 
-from zoo import make_bp
+from zoo import by_child, make_bp
 
 SEEDS = range(8)
 
 
 # -- helpers (bottle and jar tests import these) -------------------------------------
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 def hulls(part, matrix=None):

@@ -12,7 +12,7 @@ from infmob_usd.categories import window as win
 from infmob_usd.errors import ParameterError
 
 from collide import overlap
-from zoo import make_bp
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
 LABELS = {"frame", "sash", "shutter", "curtain"}
@@ -22,14 +22,6 @@ EYE = np.eye(4)
 
 def make(seed, **overrides):
     return make_bp(win, "window", seed, **overrides)
-
-
-def movable(bp):
-    return [j for j in bp.joints if j.movable]
-
-
-def by_child(bp, name):
-    return next(j for j in bp.joints if j.child == name)
 
 
 def states(bp):

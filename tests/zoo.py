@@ -52,3 +52,13 @@ def make_bp(module, name, seed, **overrides):
     bp = module.build(p, r["structure"], r["geometry"])
     physical.rest_on_ground(bp)
     return p, bp
+
+
+def movable(bp):
+    """The movable joints of a blueprint (or object), in order."""
+    return [j for j in bp.joints if j.movable]
+
+
+def by_child(bp, name):
+    """The joint whose child is part ``name``."""
+    return next(j for j in bp.joints if j.child == name)
