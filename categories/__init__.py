@@ -1,62 +1,32 @@
 """The categories: one module per category, each describing what that object is.
 
-Every module defines ``SCHEMA`` (its parameters, including the ``has_<branch>``
-flags of its growth rules), ``GROWTH`` (its growth rules as data) and
-``build(p, structure, geometry) -> Blueprint`` which places parts, names their
-material slots (slot -> family in ``Blueprint.materials``) and declares joints in
-world coordinates at rest.
+Every module in this package (``parts`` aside) is a category named after the
+module. A module expressed through parts and the growth grammar declares
+``CATEGORY = Category(...)`` (see ``infmob_usd.category`` and
+``docs/ADDING_A_CATEGORY.md``); a module not yet converted still defines
+``SCHEMA``, ``GROWTH`` and ``build(p, structure, geometry) -> Blueprint`` and is
+wrapped. Registration is discovery: adding a module adds a category.
 """
 
 from __future__ import annotations
 
-from types import ModuleType
+import importlib
+import pkgutil
 
-from . import (
-    bar_chair,
-    beverage_fridge,
-    bottle,
-    cocktail_table,
-    dining_table,
-    dishwasher,
-    door,
-    jar,
-    kitchen_cabinet,
-    lamp,
-    microwave,
-    office_chair,
-    oven,
-    pan,
-    plate_rack,
-    pot,
-    storage_rack,
-    tap,
-    toilet,
-    tv,
-    vase,
-    window,
-)
+from infmob_usd.category import of_module
 
-CATEGORIES: dict[str, ModuleType] = {
-    "kitchen_cabinet": kitchen_cabinet,
-    "microwave": microwave,
-    "lamp": lamp,
-    "beverage_fridge": beverage_fridge,
-    "dishwasher": dishwasher,
-    "oven": oven,
-    "tv": tv,
-    "tap": tap,
-    "toilet": toilet,
-    "door": door,
-    "window": window,
-    "storage_rack": storage_rack,
-    "cocktail_table": cocktail_table,
-    "dining_table": dining_table,
-    "plate_rack": plate_rack,
-    "pot": pot,
-    "pan": pan,
-    "office_chair": office_chair,
-    "bar_chair": bar_chair,
-    "vase": vase,
-    "bottle": bottle,
-    "jar": jar,
-}
+NOT_CATEGORIES = frozenset({"parts"})
+
+
+def _discover() -> dict:
+    found = {}
+    for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name):
+        if info.name.startswith("_") or info.name in NOT_CATEGORIES:
+            continue
+        module = importlib.import_module(f"{__name__}.{info.name}")
+        found[info.name] = of_module(info.name, module)
+    return found
+
+
+CATEGORIES = _discover()
+"""Category id -> its :class:`~infmob_usd.category.Category` (or legacy wrapper), sorted by id."""

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import time
-from types import ModuleType
 from typing import Any
 
 from . import physical
@@ -15,14 +14,14 @@ TEXTURE_SIZES = tuple(2**k for k in range(4, 13))
 
 
 def list_categories() -> list[str]:
-    """Every category id, in the order they are documented."""
+    """Every category id, sorted."""
     from .categories import CATEGORIES
 
     return list(CATEGORIES)
 
 
-def get_category(category: str) -> ModuleType:
-    """The module of a category; unknown ids raise a message listing the valid ones."""
+def get_category(category: str):
+    """The :class:`~infmob_usd.category.Category` of an id; unknown ids raise a message listing the valid ones."""
     from .categories import CATEGORIES
 
     if not isinstance(category, str) or category not in CATEGORIES:
@@ -56,15 +55,15 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
         Parameter values (see ``infmob params CATEGORY``); validated against the
         category schema.
     """
-    module = get_category(category)
+    cat = get_category(category)
     check_texture_size(texture_size)
     t0 = time.perf_counter()
     rng = streams(category, seed)
-    params = module.SCHEMA.sample(rng["params"], overrides)
+    params = cat.schema.sample(rng["params"], overrides)
     t1 = time.perf_counter()
-    bp = module.build(params, rng["structure"], rng["geometry"])
+    bp = cat.build(params, rng["structure"], rng["geometry"])
     t2 = time.perf_counter()
-    obj = assemble(bp, seed, rng["materials"], texture_size, params, module.SCHEMA.validate(overrides))
+    obj = assemble(bp, seed, rng["materials"], texture_size, params, cat.schema.validate(overrides))
     obj.timings = {"sampling": t1 - t0, "geometry": t2 - t1 + obj.timings["geometry"],
                    "textures": obj.timings["textures"]}
     return obj

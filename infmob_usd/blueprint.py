@@ -11,10 +11,11 @@ which alternatives it picks between.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from .assembly import Placed
 from .errors import ModelError
 from .geometry import Piece, axis_angle
 from .joints import JointSpec
@@ -52,6 +53,20 @@ class Blueprint:
     def extend(self, name: str, pieces: Iterable[Piece]) -> None:
         """Add more pieces to an existing part."""
         self.parts[name].pieces.extend(pieces)
+
+    def place(self, assembly, name: str):
+        """Add an :class:`~infmob_usd.assembly.Assembly` (already placed in world space) and its joints.
+
+        Its root part is called ``name``, the others ``name_<local name>``.
+        Returns a :class:`~infmob_usd.assembly.Placed` (global names, world anchors).
+        """
+        names = {local: name if local == assembly.root else f"{name}_{local}" for local in assembly.parts}
+        for local, part in assembly.parts.items():
+            self.add(names[local], part.label, part.pieces)
+        for j in assembly.joints:
+            self.join(replace(j, parent=names[j.parent], child=names[j.child],
+                              requires_open=names.get(j.requires_open, j.requires_open)))
+        return Placed(names, assembly)
 
     def join(self, spec: JointSpec) -> None:
         """Declare a joint; the child must not have a parent yet."""

@@ -108,11 +108,11 @@ def cmd_list(args) -> int:
 def cmd_params(args) -> int:
     from .api import get_category
 
-    module = get_category(args.category)
-    print(f"{args.category}: {module.__doc__.strip().splitlines()[0]}\n")
-    print(module.SCHEMA.table())
+    cat = get_category(args.category)
+    print(f"{args.category}: {cat.doc}\n")
+    print(cat.schema.table())
     print("\ngrowth rules:")
-    print(module.GROWTH.table())
+    print(cat.rules())
     return 0
 
 
@@ -136,7 +136,7 @@ def cmd_generate(args) -> int:
     categories = _categories(args.category)
     overrides = dict(parse_assignment(s) for s in args.set)
     for category in categories:  # fail before anything is written
-        get_category(category).SCHEMA.validate(overrides)
+        get_category(category).schema.validate(overrides)
     check_texture_size(args.texture_size)
     if args.count < 1:
         return _fail(f"--count must be at least 1, got {args.count}")

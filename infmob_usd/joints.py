@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -33,6 +33,10 @@ KINDS: dict[str, tuple[str, ...]] = {
     "flip_revolute": ("revolute", "revolute"),
 }
 """Each kind and the simple DoF chain it expands to, parent side first."""
+
+ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "telescope", "wheel", "lid",
+         "plate", "grate", "default")
+"""Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``)."""
 
 
 @dataclass(frozen=True)
@@ -86,6 +90,9 @@ class JointSpec:
         got = tuple(d.type for d in self.dofs)
         if got != want:
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} needs DoFs {want}, got {got}")
+        if self.role not in ROLES:
+            raise ModelError(f"joint {self.parent}->{self.child}: unknown role {self.role!r};"
+                             f" valid roles: {', '.join(ROLES)}")
 
     @property
     def movable(self) -> bool:
@@ -93,6 +100,12 @@ class JointSpec:
 
 
 V3 = Sequence[float]
+
+
+def moved_joint(spec: JointSpec, point, vector) -> JointSpec:
+    """``spec`` with every DoF's origin mapped by ``point`` and axis by ``vector`` (a rigid move)."""
+    return replace(spec, dofs=tuple(
+        Dof(d.type, tuple(point(d.origin)), tuple(vector(d.axis)), d.lower, d.upper) for d in spec.dofs))
 
 
 def fixed(parent: str, child: str) -> JointSpec:

@@ -36,7 +36,7 @@ def test_generate_writes_seeded_folders(capsys, tmp_path):
 
 
 @pytest.mark.parametrize("argv,needle", [
-    (["generate", "fridge"], "unknown category 'fridge'; valid categories: kitchen_cabinet"),
+    (["generate", "fridge"], "unknown category 'fridge'; valid categories: bar_chair, beverage_fridge"),
     (["generate", "kitchen_cabinet", "--set", "colour=red"], "unknown parameter 'colour'; valid parameters: width"),
     (["generate", "kitchen_cabinet", "--set", "width=7"], "expected a number in [1.0, 4.0] m"),
     (["generate", "kitchen_cabinet", "--set", "column_count=two"], "expected an integer in [1, 8]"),

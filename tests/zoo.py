@@ -44,12 +44,13 @@ def zoo(seed: int = 0, texture_size: int = 32):
 def make_bp(module, name, seed, **overrides):
     """``(params, blueprint)`` of category module ``module`` (id ``name``) for ``seed``, grounded:
     the blueprint path of :func:`infmob_usd.generate`, for tests of one category."""
-    from infmob_usd import physical
+    from infmob_usd import get_category, physical
     from infmob_usd.seeding import streams
 
+    cat = get_category(name)
     r = streams(name, seed)
-    p = module.SCHEMA.sample(r["params"], overrides)
-    bp = module.build(p, r["structure"], r["geometry"])
+    p = cat.schema.sample(r["params"], overrides)
+    bp = cat.build(p, r["structure"], r["geometry"])
     physical.rest_on_ground(bp)
     return p, bp
 

@@ -1,0 +1,94 @@
+"""The category contract: what one module in ``categories/`` hands the core.
+
+A category is a :class:`Category`: its id, a one-line description, its own
+parameter schema, its growth :class:`~infmob_usd.grammar.Grammar`, its material
+slots as data (slot -> material family, or the name of a parameter whose value
+is the family: the core resolves it), and its :class:`~infmob_usd.grammar.Layout`
+(one method per node kind). The module exposes it as ``CATEGORY``; the registry
+in ``infmob_usd.categories`` finds every module that does (no list to edit).
+
+The schema a user sees is the category's own parameters followed by those the
+grammar owns (object-wide choices and ``has_<branch>`` flags).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType, ModuleType
+
+import numpy as np
+
+from .blueprint import Blueprint
+from .errors import ModelError
+from .grammar import Grammar, Layout
+from .params import Schema
+
+
+@dataclass(frozen=True, eq=False)
+class Category:
+    """One category: id, schema, grammar, materials and layout."""
+
+    id: str
+    doc: str
+    params: tuple
+    grammar: Grammar
+    layout: type[Layout]
+    materials: Mapping[str, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if not self.id.isidentifier() or self.id != self.id.lower():
+            raise ModelError(f"category id {self.id!r} must be a lower-case identifier")
+        object.__setattr__(self, "materials", MappingProxyType(dict(self.materials)))
+        object.__setattr__(self, "schema", Schema((*self.params, *self.grammar.params())))
+        for kind in self.grammar.nodes:
+            if not callable(getattr(self.layout, kind, None)):
+                raise ModelError(f"category {self.id}: layout {self.layout.__name__} has no method for"
+                                 f" grammar node {kind!r}")
+
+    schema: Schema = field(init=False)
+
+    def rules(self) -> str:
+        """The growth rules as text (what ``infmob params`` prints)."""
+        return self.grammar.table()
+
+    def resolve_materials(self, params: dict) -> dict[str, str]:
+        """Slot -> family spec, with parameter names replaced by their values."""
+        return {slot: params[v] if v in self.schema.names else v for slot, v in self.materials.items()}
+
+    def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
+        """Grow the tree from the structure stream and build it into a blueprint at rest."""
+        tree = self.grammar.grow(params, structure)
+        bp = Blueprint(self.id, materials=self.resolve_materials(params))
+        layout = self.layout(bp, params, geometry, self.grammar)
+        layout.run(tree)
+        return bp
+
+
+@dataclass(frozen=True, eq=False)
+class LegacyCategory:
+    """A module not yet expressed through parts and the grammar: ``SCHEMA``, ``GROWTH``, ``build``."""
+
+    id: str
+    doc: str
+    schema: Schema
+    growth: object
+    build: Callable[[dict, np.random.Generator, np.random.Generator], Blueprint]
+
+    def rules(self) -> str:
+        return self.growth.table()
+
+    @classmethod
+    def from_module(cls, category_id: str, module: ModuleType) -> LegacyCategory:
+        doc = (module.__doc__ or "").strip().splitlines()[0] if module.__doc__ else category_id
+        return cls(category_id, doc, module.SCHEMA, module.GROWTH, module.build)
+
+
+def of_module(category_id: str, module: ModuleType) -> Category | LegacyCategory:
+    """The category a module declares (``CATEGORY``), or its legacy wrapper."""
+    found = getattr(module, "CATEGORY", None)
+    if found is None:
+        return LegacyCategory.from_module(category_id, module)
+    if not isinstance(found, Category) or found.id != category_id:
+        raise ModelError(f"module {module.__name__}: CATEGORY must be a Category with id {category_id!r}")
+    return found
