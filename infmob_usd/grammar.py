@@ -7,8 +7,10 @@ alternatives it picks between (``one_of``, with weights: per instance, or
 object-wide through a named choice parameter), and counted repeats
 (``repeat``: a fixed count, a parameter, a ``(lo, hi)`` range drawn per
 instance, or a function of the parameters). A kind may appear among its own
-descendants (a bay that splits into bays); :attr:`Grammar.max_depth` bounds the
-recursion: at the bound, recursive alternatives are dropped.
+descendants (a bay that splits into bays); :attr:`Grammar.max_nesting` bounds the
+recursion: a kind nests in itself at most that many times, and at the bound its
+recursive alternatives are dropped (optional ones not grown, repeats zero, one_of
+weights renormalised over the rest).
 
 :meth:`Grammar.grow` draws a tree of :class:`Grown` nodes from the structure
 stream. A :class:`Layout` (one method per node kind) then builds it: the root's
@@ -23,14 +25,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Union
+from typing import Any
 
 import numpy as np
 
+from . import joints as J
 from .errors import ModelError
 from .params import Choice, Flag
 
-Count = Union[int, str, tuple[int, int], Callable[[dict], int]]
+Count = int | str | tuple[int, int] | Callable[[dict], int]
 
 
 @dataclass(frozen=True)
@@ -88,8 +91,8 @@ class Grown:
 class Grammar:
     """A category's growth rules: node kinds and their :class:`Node` rules, grown from ``root``."""
 
-    def __init__(self, root: str, nodes: Mapping[str, Node], max_depth: int = 6) -> None:
-        self.root, self.nodes, self.max_depth = root, dict(nodes), int(max_depth)
+    def __init__(self, root: str, nodes: Mapping[str, Node], max_nesting: int = 3) -> None:
+        self.root, self.nodes, self.max_nesting = root, dict(nodes), int(max_nesting)
         known = set(self.nodes)
         if root not in known:
             raise ModelError(f"grammar root {root!r} has no rule")
@@ -149,17 +152,16 @@ class Grammar:
         n = self.nodes[kind]
         node = Grown(kind, path, depth)
         line = (*ancestors, kind)
-        deep = depth + 1 >= self.max_depth
 
-        def recursive(child: str) -> bool:
-            return child in line
+        def blocked(child: str) -> bool:  # growing it would nest it in itself more than allowed
+            return line.count(child) >= self.max_nesting
 
         order: list[str] = list(n.required)
-        order += [b for b in n.optional if params.get(f"has_{b}", False) and not (deep and recursive(b))]
+        order += [b for b in n.optional if params.get(f"has_{b}", False) and not blocked(b)]
         if n.one_of:
-            alts = {k: w for k, w in n.one_of.items() if not (deep and recursive(k))}
+            alts = {k: w for k, w in n.one_of.items() if not blocked(k)}
             if not alts:
-                raise ModelError(f"{path}: every alternative of {kind!r} recurses at the depth bound")
+                raise ModelError(f"{path}: every alternative of {kind!r} nests past the bound")
             if n.choice:
                 pick = params[n.choice]
                 if pick not in alts:  # the forced choice recurses past the bound: take the first that does not
@@ -172,10 +174,10 @@ class Grammar:
             order.append(pick)
         counts = {}
         for child, c in n.repeat.items():
-            counts[child] = 0 if deep and recursive(child) else self._count(kind, child, c, params, rng)
+            counts[child] = 0 if blocked(child) else self._count(kind, child, c, params, rng)
         for child in order:
-            if deep and recursive(child):
-                raise ModelError(f"{path}: required child {child!r} recurses past the depth bound")
+            if blocked(child):
+                raise ModelError(f"{path}: required child {child!r} nests past the bound")
             node.children.append(self._grow(child, f"{path}/{child}", depth + 1, line, params, rng))
         for child, k in counts.items():
             for i in range(k):
@@ -183,6 +185,25 @@ class Grammar:
         return node
 
     # -- reading ------------------------------------------------------------------------------------------
+    def children(self, kind: str) -> tuple[str, ...]:
+        n = self.nodes[kind]
+        return (*n.required, *n.optional, *n.one_of, *n.repeat)
+
+    def recursive(self) -> list[str]:
+        """Node kinds that can appear below themselves."""
+        out = []
+        for kind in self.nodes:
+            seen, stack = set(), list(self.children(kind))
+            while stack:
+                k = stack.pop()
+                if k == kind:
+                    out.append(kind)
+                    break
+                if k not in seen:
+                    seen.add(k)
+                    stack.extend(self.children(k))
+        return out
+
     def table(self) -> str:
         """The rules as text, one node per line (``infmob params`` prints it)."""
         lines = []
@@ -201,9 +222,8 @@ class Grammar:
             if r.repeat:
                 parts.append("repeats " + ", ".join(f"{c} x {_describe(n)}" for c, n in r.repeat.items()))
             lines.append(f"{kind}: " + ("; ".join(parts) or "leaf"))
-        if any(k in (*n.required, *n.optional, *n.one_of, *n.repeat) for n in self.nodes.values()
-               for k in (self.root,)):
-            lines.append(f"(recursion bounded at depth {self.max_depth})")
+        if self.recursive():
+            lines.append(f"(recursive: {', '.join(self.recursive())}; each nests at most {self.max_nesting} times)")
         return "\n".join(lines)
 
 
@@ -281,7 +301,27 @@ class Layout:
         return placed
 
     def join(self, spec) -> None:
+        """Declare a joint spec as it is (see :mod:`infmob_usd.joints` for the compound kinds)."""
         self.bp.join(spec)
+
+    # -- joints declared on frames: the axis is the frame's z, rest is 0 ---------------------------------
+    def hinge(self, parent: str, child: str, at, upper: float, lower: float = 0.0, role: str = "hinge",
+              requires_open: str | None = None) -> None:
+        """A revolute joint about ``at.z`` through ``at.origin``; ``upper`` is the mechanical maximum
+        (the core shortens it to clearance and ground)."""
+        self.bp.join(J.revolute(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+
+    def slide(self, parent: str, child: str, at, upper: float, lower: float = 0.0, role: str = "slide",
+              requires_open: str | None = None) -> None:
+        """A prismatic joint along ``at.z``."""
+        self.bp.join(J.prismatic(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+
+    def spin(self, parent: str, child: str, at, role: str = "knob", requires_open: str | None = None) -> None:
+        """A continuous joint about ``at.z``."""
+        self.bp.join(J.continuous(parent, child, at.origin, at.z, role, requires_open))
+
+    def fix(self, parent: str, child: str) -> None:
+        self.bp.join(J.fixed(parent, child))
 
     # -- the run ---------------------------------------------------------------------------------------
     def run(self, tree: Grown) -> None:

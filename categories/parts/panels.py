@@ -1,0 +1,60 @@
+"""Panel work: open boxes (carcasses, chests) and flat leaves (doors, lids, flaps).
+
+A box is built on the ground plane, centred on the z axis, its front facing
++x. A leaf lies in its local xy plane, thickness along +z, its hinge edge on
+local x = 0 and its free edge at x = ``depth``.
+"""
+
+from __future__ import annotations
+
+from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import Frame
+
+
+def open_box(width: float, depth: float, height: float, wall: float, material: str,
+             label: str = "body") -> Assembly:
+    """A box of panels open at the top: bottom, four walls.
+
+    Anchors: ``rim_back`` (on the back wall's top edge, x pointing to the
+    front, z along -y: a lid hinged there opens upward by a positive turn
+    about it), ``rim_front``
+    (centre of the front wall's top, z up), ``front`` (centre of the front face,
+    z out of it, x up), ``floor`` (top of the bottom panel, z up). Supports:
+    the four bottom corners.
+    """
+    x0, x1, y0, y1 = -depth / 2, depth / 2, -width / 2, width / 2
+    pieces = [
+        g.box_between((x0, y0, 0), (x1, y1, wall), material),
+        g.box_between((x0, y0, wall), (x0 + wall, y1, height), material),
+        g.box_between((x1 - wall, y0, wall), (x1, y1, height), material),
+        g.box_between((x0 + wall, y0, wall), (x1 - wall, y0 + wall, height), material),
+        g.box_between((x0 + wall, y1 - wall, wall), (x1 - wall, y1, height), material),
+    ]
+    anchors = {
+        "rim_back": Frame.at((x0, 0, height), x=(1, 0, 0), z=(0, -1, 0)),
+        "rim_front": Frame.at((x1 - wall / 2, 0, height)),
+        "front": Frame.at((x1, 0, height / 2), z=(1, 0, 0), x=(0, 0, 1)),
+        "floor": Frame.at((0, 0, wall)),
+    }
+    supports = {f"foot_{i}": (x, y, 0) for i, (x, y) in enumerate(((x0, y0), (x0, y1), (x1, y0), (x1, y1)))}
+    return Assembly.single(label, pieces, anchors, supports)
+
+
+def leaf(width: float, depth: float, thickness: float, material: str, label: str = "lid") -> Assembly:
+    """A flat leaf: ``depth`` from the hinge edge (x = 0) to the free edge, ``width`` along y.
+
+    Anchors: ``hinge`` (middle of the hinge edge on the inner face, x towards
+    the free edge, z along -y: a positive turn about it swings the free edge
+    out of the outer face, so attached to a ``rim_back`` the leaf opens by a
+    positive angle), ``free_edge`` (centre of the free edge's face, z out of
+    it, x along the leaf's outer normal), ``top`` (centre of the outer face, z
+    out of it).
+    """
+    piece = g.box_between((0, -width / 2, 0), (depth, width / 2, thickness), material)
+    anchors = {
+        "hinge": Frame.at((0, 0, 0), x=(1, 0, 0), z=(0, -1, 0)),
+        "free_edge": Frame.at((depth, 0, thickness / 2), z=(1, 0, 0), x=(0, 0, 1)),
+        "top": Frame.at((depth / 2, 0, thickness)),
+    }
+    return Assembly.single(label, [piece], anchors)
