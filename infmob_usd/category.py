@@ -41,6 +41,10 @@ class Category:
             raise ModelError(f"category id {self.id!r} must be a lower-case identifier")
         object.__setattr__(self, "materials", MappingProxyType(dict(self.materials)))
         object.__setattr__(self, "schema", Schema((*self.params, *self.grammar.params())))
+        for slot, v in self.materials.items():
+            if isinstance(v, tuple) and (len(v) != 2 or v[0] not in self.schema.names):
+                raise ModelError(f"category {self.id}: material slot {slot!r} must name a parameter and a"
+                                 f" value -> family table, got {v!r}")
         for kind in self.grammar.nodes:
             if not callable(getattr(self.layout, kind, None)):
                 raise ModelError(f"category {self.id}: layout {self.layout.__name__} has no method for"
@@ -53,8 +57,21 @@ class Category:
         return self.grammar.table()
 
     def resolve_materials(self, params: dict) -> dict[str, str]:
-        """Slot -> family spec, with parameter names replaced by their values."""
-        return {slot: params[v] if v in self.schema.names else v for slot, v in self.materials.items()}
+        """Slot -> family spec.
+
+        A slot's value is a family spec (``"wood"``, ``"plastic:black|dark_grey"``), the name of a
+        parameter whose value is the family, or ``(parameter, {value: family})`` where some values
+        of the parameter name a family spec other than themselves (a ``"plastic"`` finish that
+        means black plastic).
+        """
+        out = {}
+        for slot, v in self.materials.items():
+            if isinstance(v, tuple):
+                name, table = v
+                out[slot] = table.get(params[name], params[name])
+            else:
+                out[slot] = params[v] if v in self.schema.names else v
+        return out
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
         """Grow the tree from the structure stream and build it into a blueprint at rest."""

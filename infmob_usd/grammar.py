@@ -6,7 +6,7 @@ object-wide, each also a ``has_<branch>`` parameter the user can force),
 alternatives it picks between (``one_of``, with weights: per instance, or
 object-wide through a named choice parameter), and counted repeats
 (``repeat``: a fixed count, a parameter, a ``(lo, hi)`` range drawn per
-instance, or a function of the parameters). A kind may appear among its own
+instance, or a function of the parameters and the structure stream). A kind may appear among its own
 descendants (a bay that splits into bays); :attr:`Grammar.max_nesting` bounds the
 recursion: a kind nests in itself at most that many times, and at the bound its
 recursive alternatives are dropped (optional ones not grown, repeats zero, one_of
@@ -33,7 +33,7 @@ from . import joints as J
 from .errors import ModelError
 from .params import Choice, Flag
 
-Count = int | str | tuple[int, int] | Callable[[dict], int]
+Count = int | str | tuple[int, int] | Callable[[dict, np.random.Generator], int]
 
 
 @dataclass(frozen=True)
@@ -142,7 +142,7 @@ class Grammar:
         elif isinstance(c, tuple):
             n = int(rng.integers(c[0], c[1] + 1))
         else:
-            n = c(params)
+            n = c(params, rng)
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0:
             raise ModelError(f"repeat count of {kind}.{child} must be a non-negative int, got {n!r}")
         return int(n)
