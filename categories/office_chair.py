@@ -21,7 +21,6 @@ from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
 
-
 GRAMMAR = Grammar("office_chair", {
     "office_chair": Node(required=("base", "lift", "seat"), optional={"back": 0.92, "arms": 0.8}),
     "base": Node(label="base", repeat={"caster": S.legs}),
