@@ -35,6 +35,9 @@ class Category:
     grammar: Grammar
     layout: type[Layout]
     materials: Mapping[str, str] = field(default_factory=dict)
+    derive: Callable[[dict], dict] | None = None
+    """Parameters that follow from others, applied after sampling and overrides, before growing
+    (e.g. a table that would grow no moving part gets its extension)."""
 
     def __post_init__(self) -> None:
         if not self.id.isidentifier() or self.id != self.id.lower():
@@ -75,6 +78,8 @@ class Category:
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
         """Grow the tree from the structure stream and build it into a blueprint at rest."""
+        if self.derive is not None:
+            params.update(self.derive(dict(params)))
         tree = self.grammar.grow(params, structure)
         bp = Blueprint(self.id, materials=self.resolve_materials(params))
         layout = self.layout(bp, params, geometry, self.grammar)

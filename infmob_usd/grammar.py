@@ -40,14 +40,16 @@ Count = int | str | tuple[int, int] | Callable[[dict, np.random.Generator], int]
 class Node:
     """The growth rule of one node kind.
 
-    ``label``: the semantic label of the part this node builds (``None`` for a
-    node that only groups its children or adds pieces to its parent's part).
+    ``label``: the semantic label of the part this node builds, or a tuple of the
+    labels it may build one of (a table top that is a ``lid`` when it lifts off a
+    storage box); ``None`` for a node that only groups its children or adds pieces
+    to its parent's part.
     ``choice``: the name of an object-wide choice parameter for ``one_of``
     (drawn by the schema with the same weights; the user can force it); empty:
     drawn per instance from the structure stream.
     """
 
-    label: str | None = None
+    label: str | tuple[str, ...] | None = None
     required: tuple[str, ...] = ()
     optional: Mapping[str, float] = field(default_factory=dict)
     one_of: Mapping[str, float] = field(default_factory=dict)
@@ -210,7 +212,7 @@ class Grammar:
         for kind, r in self.nodes.items():
             parts = []
             if r.label:
-                parts.append(f"builds {r.label}")
+                parts.append("builds " + (r.label if isinstance(r.label, str) else " or ".join(r.label)))
             if r.required:
                 parts.append("requires " + ", ".join(r.required))
             if r.optional:
@@ -338,7 +340,8 @@ class Layout:
             raise ModelError(f"parts the grammar did not grow: {stray[:5]}")
         for n in tree.walk():
             label = self.grammar.nodes[n.kind].label
-            if label and label not in self.contributed.get(n.path, set()):
-                raise ModelError(f"grown node {n.path} made no {label!r} part")
+            wanted = (label,) if isinstance(label, str) else label
+            if wanted and not set(wanted) & self.contributed.get(n.path, set()):
+                raise ModelError(f"grown node {n.path} made no {' or '.join(map(repr, wanted))} part")
             if label is None and not any(m.path in self.contributed for m in n.walk()):
                 raise ModelError(f"grown node {n.path} and its subtree made no part")

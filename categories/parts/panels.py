@@ -58,3 +58,26 @@ def leaf(width: float, depth: float, thickness: float, material: str, label: str
         "top": Frame.at((depth / 2, 0, thickness)),
     }
     return Assembly.single(label, [piece], anchors)
+
+
+def drawer_box(width: float, height: float, depth: float, front: float, wall: float, material: str,
+               label: str = "drawer") -> Assembly:
+    """A drawer: a front board and a box of ``wall`` boards behind it.
+
+    Local frame: the front's outer face is the plane x = 0 (facing +x), centred on
+    the origin, the box runs back to x = -depth; width along y, height along z.
+    Anchors: ``slide`` (the origin, z out of the front: the pull direction) and
+    ``handle`` (the front's centre, z out of it, x along the width).
+    """
+    w, h, t = width / 2, height / 2, wall
+    top = h - 0.01  # the box walls stop below the front's top edge
+    pieces = [
+        g.box_between((-front, -w, -h), (0, w, h), material),
+        g.box_between((-depth, -w, -h), (-front, -w + t, top), material),
+        g.box_between((-depth, w - t, -h), (-front, w, top), material),
+        g.box_between((-depth, -w + t, -h), (-depth + t, w - t, top), material),
+        g.box_between((-depth + t, -w + t, -h), (-front, w - t, -h + 0.008), material),
+    ]
+    anchors = {"slide": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 0, 1)),
+               "handle": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 1, 0))}
+    return Assembly.single(label, pieces, anchors)
