@@ -136,6 +136,12 @@ class Piece:
             ]
         return moved
 
+    def with_material(self, material: str) -> Piece:
+        """The same piece (hulls kept) in another material slot."""
+        out = copy.copy(self)
+        out.material = material
+        return out
+
     def with_sheet(self, sheet: float) -> Piece:
         """The same piece, its mass counted as sheet of thickness ``sheet`` (0: solid)."""
         out = copy.copy(self)
