@@ -63,7 +63,7 @@ class Category:
         """Slot -> family spec.
 
         A slot's value is a family spec (``"wood"``, ``"plastic:black|dark_grey"``), the name of a
-        parameter whose value is the family, or ``(parameter, {value: family})`` where some values
+        parameter (or of a value ``derive`` adds) whose value is the family, or ``(parameter, {value: family})`` where some values
         of the parameter name a family spec other than themselves (a ``"plastic"`` finish that
         means black plastic).
         """
@@ -73,7 +73,7 @@ class Category:
                 name, table = v
                 out[slot] = table.get(params[name], params[name])
             else:
-                out[slot] = params[v] if v in self.schema.names else v
+                out[slot] = params[v] if v in params else v
         return out
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:

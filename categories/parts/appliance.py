@@ -137,3 +137,106 @@ class Panel:
 
 def hole_around(y: float, z: float, half) -> tuple[float, float, float, float]:
     return (y - half[0] - CLEAR, z - half[1] - CLEAR, y + half[0] + CLEAR, z + half[1] + CLEAR)
+
+
+# -- insulated cabinets (fridges) ------------------------------------------------------------------
+FRIDGE_SHEET = 0.0008  # steel sheet of an insulated wall (its mass; the foam weighs little)
+RACK_WIRE = 0.0025  # wire radius of a fridge rack
+RACK_TRIM = 0.018  # depth of a rack's front trim
+
+
+def insulated_cabinet(outer, cavity, kick_top: float) -> list[g.Piece]:
+    """Insulated walls around a liner, a machine compartment with a kick grille, four levelling feet.
+
+    ``outer``: (x back, x front, y left, y right, z feet top, z top); ``cavity``: the liner's inner faces.
+    """
+    xb0, xb1, y0, y1, zf, H = outer
+    cx0, cx1, cy0, cy1, cz0, cz1 = cavity
+    L = LINER
+    wy0, wy1, wz0, wz1, wx0 = cy0 - L, cy1 + L, cz0 - L, cz1 + L, cx0 - L  # wall inner faces
+
+    def wall(lo, hi):
+        return g.box_between(lo, hi, "body").with_sheet(FRIDGE_SHEET)
+
+    pieces = [
+        wall([xb0, y0, zf], [xb1, wy0, H]), wall([xb0, wy1, zf], [xb1, y1, H]), wall([xb0, wy0, wz1], [xb1, wy1, H]),
+        wall([xb0, wy0, kick_top], [xb1, wy1, wz0]), wall([xb0, wy0, wz0], [wx0, wy1, wz1]),
+        wall([xb0, wy0, zf], [xb1 - 0.02, wy1, zf + 0.003]),  # base plate of the machine compartment
+        wall([xb0, wy0, zf + 0.003], [xb0 + 0.004, wy1, kick_top]),  # rear cover of the compressor
+        g.box_between([wx0, wy0, wz0], [cx1, wy1, cz0], "liner"),
+        g.box_between([wx0, wy0, cz1], [cx1, wy1, wz1], "liner"),
+        g.box_between([wx0, wy0, cz0], [cx1, cy0, cz1], "liner"),
+        g.box_between([wx0, cy1, cz0], [cx1, wy1, cz1], "liner"),
+        g.box_between([wx0, cy0, cz0], [cx0, cy1, cz1], "liner"),
+        # gasket seat around the opening (a thin dark band on the front face)
+        g.box_between([xb1 - 0.001, wy0 - 0.01, wz0 - 0.01], [xb1 + 0.001, wy0, wz1 + 0.01], "gasket"),
+        g.box_between([xb1 - 0.001, wy1, wz0 - 0.01], [xb1 + 0.001, wy1 + 0.01, wz1 + 0.01], "gasket"),
+    ]
+    gx = xb1 - 0.012  # kick grille: a recessed slotted panel across the machine compartment
+    pieces.append(g.box_between([gx - 0.004, wy0, zf + 0.003], [gx, wy1, kick_top], "grille"))
+    n_slots = max(3, int((wy1 - wy0) / 0.02))
+    for k in range(n_slots):
+        ya = wy0 + 0.012 + k * (wy1 - wy0 - 0.024) / n_slots
+        pieces.append(g.box_between([gx, ya, zf + 0.012], [gx + 0.002, ya + 0.006, kick_top - 0.01], "grille"))
+    for x in (xb0 + 0.035, xb1 - 0.045):
+        for y in (y0 + 0.035, y1 - 0.035):
+            pieces.append(g.cylinder([x, y, 0.0], [x, y, zf], 0.014, "feet", 16))
+    return pieces
+
+
+def control_strip(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> list[g.Piece]:
+    """A strip above a door, flush with its front, with a display and three touch keys printed on it."""
+    W, h = y1 - y0, z1 - z0
+    pieces = [g.box_between([x0, y0, z0], [x1, y1, z1], "frame"),
+              g.box_between([x1, -0.12 * W, z0 + 0.25 * h], [x1 + 0.001, 0.12 * W, z1 - 0.25 * h], "display")]
+    for k in range(3):
+        yk = 0.17 * W + k * 0.045 * W
+        pieces.append(g.box_between([x1, yk, z0 + 0.35 * h], [x1 + 0.0008, yk + 0.03 * W, z1 - 0.35 * h], "display"))
+    return pieces
+
+
+def glass_door(box, hole) -> list[g.Piece]:
+    """A frame around a double glass pane and a gasket behind it (all collide)."""
+    x0, x1, y0, y1, z0, z1 = box
+    h0, v0, h1, v1 = hole
+    ft = x1 - x0
+    pieces = [g.panel([x0, y0, z0], [x1, y1, z1], "frame", "x", holes=[hole]).with_sheet(FRIDGE_SHEET)]
+    for xg in (x1 - 0.3 * ft, x0 + 0.2 * ft):  # two panes: the insulated glazing
+        pieces.append(g.box_between([xg - 0.002, h0 - 0.004, v0 - 0.004], [xg + 0.002, h1 + 0.004, v1 + 0.004],
+                                    "glass"))
+    pieces.append(g.panel([x0 - 0.0015, y0 + 0.006, z0 + 0.006], [x0, y1 - 0.006, z1 - 0.006], "gasket", "x",
+                          holes=[(h0 + 0.004, v0 + 0.004, h1 - 0.004, v1 - 0.004)]))
+    return pieces
+
+
+def glass_shelf(xs, ry: float, zb: float, hr: float) -> list[g.Piece]:
+    """A glass shelf in a trim between ``xs`` in x and ``-ry..ry`` in y, from ``zb`` up."""
+    rx0, rx1 = xs
+    t = RACK_TRIM
+    return [g.box_between([rx0, -ry, zb], [rx1 - t, ry, zb + 0.006], "glass"),
+            g.box_between([rx0, -ry, zb], [rx1 - t, -ry + 0.01, zb + 0.012], "trim"),
+            g.box_between([rx0, ry - 0.01, zb], [rx1 - t, ry, zb + 0.012], "trim"),
+            g.box_between([rx1 - t, -ry, zb], [rx1, ry, zb + min(0.022, hr)], "trim", bevel=0.002)]
+
+
+def wire_rack(xs, ry: float, zb: float, hr: float, pitch: float) -> list[g.Piece]:
+    """A wire rack with side runners, a back stop and a front trim; its wires wave into a shallow
+    cradle for bottles, ``pitch`` apart."""
+    rx0, rx1 = xs
+    r, t = RACK_WIRE, RACK_TRIM
+    zc = zb + r
+    pieces = [
+        g.box_between([rx0, -ry, zb], [rx1 - t, -ry + 0.008, zb + 0.01], "wire"),
+        g.box_between([rx0, ry - 0.008, zb], [rx1 - t, ry, zb + 0.01], "wire"),
+        g.cylinder([rx0 + r, -ry + 0.008, zc], [rx0 + r, ry - 0.008, zc], r, "wire", 8),
+        g.cylinder([rx0 + r, -ry + 0.008, zb + hr], [rx0 + r, ry - 0.008, zb + hr], r, "wire", 8),
+        g.box_between([rx1 - t, -ry, zb], [rx1, ry, zb + hr - 0.002], "trim", bevel=0.002),
+    ]
+    for y in (-ry + 0.004, ry - 0.004):  # back stop posts
+        pieces.append(g.cylinder([rx0 + r, y, zb + 0.01], [rx0 + r, y, zb + hr], r, "wire", 8))
+    n = max(3, int((2 * ry - 0.02) / pitch))
+    for k in range(n):
+        y = -ry + 0.01 + (k + 0.5) * (2 * ry - 0.02) / n
+        lift = 0.006 * (1 - math.cos(2 * math.pi * (k + 0.5) / n * 2)) / 2  # waves across the rack
+        pieces.append(g.cylinder([rx0 + 2 * r, y, zc + lift], [rx1 - t, y, zc + lift], r * 0.8, "wire", 8))
+    return pieces
