@@ -63,8 +63,9 @@ class Category:
         """Slot -> family spec.
 
         A slot's value is a family spec (``"wood"``, ``"plastic:black|dark_grey"``), the name of a
-        parameter (or of a value ``derive`` adds) whose value is the family, or ``(parameter, {value: family})`` where some values
-        of the parameter name a family spec other than themselves (a ``"plastic"`` finish that
+        parameter (or of a value ``derive`` adds) whose value is the family, or
+        ``(parameter, {value: family})`` where some values of the parameter name a family spec other
+        than themselves (a ``"plastic"`` finish that
         means black plastic).
         """
         out = {}
