@@ -240,3 +240,110 @@ def wire_rack(xs, ry: float, zb: float, hr: float, pitch: float) -> list[g.Piece
         lift = 0.006 * (1 - math.cos(2 * math.pi * (k + 0.5) / n * 2)) / 2  # waves across the rack
         pieces.append(g.cylinder([rx0 + 2 * r, y, zc + lift], [rx1 - t, y, zc + lift], r * 0.8, "wire", 8))
     return pieces
+
+
+# -- dishwashers -----------------------------------------------------------------------------------------
+DISHWASHER_SHEET = 0.0008
+TUB_LINER = 0.0015
+DISPENSER = 0.003  # a detergent dispenser stands this far proud of a door's inner skin
+RACK_WHEEL = 0.011  # dish rack wheel radius
+
+
+def tub_cabinet(outer, cavity, hinge_z: float, door_front: float) -> list[g.Piece]:
+    """Insulated walls around a stainless liner (a real hollow), base, kick plinth under the door,
+    levelling feet, filter, lower spray arm and a ceiling nozzle."""
+    xb0, xb1, y0, y1, zf, H = outer
+    cx0, cx1, cy0, cy1, cz0, cz1 = cavity
+    L = TUB_LINER
+    wy0, wy1, wz0, wz1, wx0 = cy0 - L, cy1 + L, cz0 - L, cz1 + L, cx0 - L
+
+    def sheet(lo, hi, slot):
+        return g.box_between(lo, hi, slot).with_sheet(DISHWASHER_SHEET)
+
+    pieces = [
+        sheet([xb0, y0, zf], [xb1, wy0, H], "body"), sheet([xb0, wy1, zf], [xb1, y1, H], "body"),
+        sheet([xb0, wy0, wz1], [xb1, wy1, H], "body"), sheet([xb0, wy0, hinge_z], [xb1, wy1, wz0], "body"),
+        sheet([xb0, wy0, wz0], [wx0, wy1, wz1], "body"), sheet([xb0, wy0, zf], [xb1, wy1, zf + 0.004], "body"),
+        sheet([xb0, wy0, zf + 0.004], [xb0 + 0.004, wy1, hinge_z], "body"),
+        sheet([xb1 - 0.004, y0, zf + 0.004], [door_front - 0.012, y1, hinge_z - 0.004], "plinth"),
+        sheet([wx0, wy0, wz0], [cx1, wy1, cz0], "tub"), sheet([wx0, wy0, cz1], [cx1, wy1, wz1], "tub"),
+        sheet([wx0, wy0, cz0], [cx1, cy0, cz1], "tub"), sheet([wx0, cy1, cz0], [cx1, wy1, cz1], "tub"),
+        sheet([wx0, cy0, cz0], [cx0, cy1, cz1], "tub"),
+    ]
+    xm = (cx0 + cx1) / 2
+    arm = min(cx1 - cx0, cy1 - cy0) / 2 - 0.03
+    pieces += [g.cylinder([cx0 + 0.08, 0.0, cz0], [cx0 + 0.08, 0.0, cz0 + 0.03], 0.035, "arm", 24),
+               g.cylinder([xm, 0.0, cz0], [xm, 0.0, cz0 + 0.02], 0.022, "arm", 24),
+               g.box_between([xm - 0.018, -arm, cz0 + 0.02], [xm + 0.018, arm, cz0 + 0.032], "arm", bevel=0.004),
+               g.cylinder([xm, 0.0, cz1 - 0.025], [xm, 0.0, cz1], 0.016, "arm", 16)]
+    for x in (xb0 + 0.04, xb1 - 0.05):
+        for y in (y0 + 0.04, y1 - 0.04):
+            pieces.append(g.cylinder([x, y, 0.0], [x, y, zf], 0.015, "feet", 16))
+    return pieces
+
+
+def layered_door(box) -> list[g.Piece]:
+    """A front skin, an inner core and a stainless inner skin, each colliding over the whole leaf,
+    and a detergent dispenser moulded into the inner skin."""
+    x0, x1, y0, y1, z0, z1 = box
+    s = 0.0015
+    yc, zc = 0.15 * (y1 - y0), z0 + 0.62 * (z1 - z0)
+    return [g.box_between([x1 - s, y0, z0], [x1, y1, z1], "body").with_sheet(DISHWASHER_SHEET),
+            g.box_between([x0 + s, y0, z0], [x1 - s, y1, z1], "door_inner").with_sheet(0.002),
+            g.box_between([x0, y0 + 0.01, z0 + 0.01], [x0 + s, y1 - 0.01, z1 - 0.01], "tub")
+            .with_sheet(DISHWASHER_SHEET),
+            g.box_between([x0 - DISPENSER, yc - 0.06, zc - 0.04], [x0, yc + 0.06, zc + 0.04], "door_inner")]
+
+
+def _wire(a, b, r):
+    return g.cylinder(a, b, r, "wire", 8)
+
+
+def dish_rack(xs, cy1: float, za: float, top: float, pitch: float, kind: str) -> list[g.Piece]:
+    """A wire basket on four wheels from ``za`` (the wheels' bottom) up to ``top``: a tall ``lower``
+    rack with plate tines, an ``upper`` rack, or a shallow cutlery ``tray``. Every wire is its own
+    convex piece; the wheels ride over rails beside the side liners (out to ``cy1 - 6 mm``)."""
+    rx0, rx1 = xs
+    ry = cy1 - 0.02  # basket half width
+    r = 0.0025
+    zc = za + RACK_WHEEL  # wheel axles; the bottom frame runs here
+    pieces = [g.cylinder([x, s * ry, zc], [x, s * (cy1 - 0.006), zc], RACK_WHEEL, "wheel", 16)
+              for x in (rx0 + 0.04, rx1 - 0.04) for s in (-1, 1)]
+    height = max(top - zc, 0.02)
+    wall_h = min(height, {"tray": 0.05, "lower": 0.55 * height}.get(kind, 0.7 * height))
+    zt = zc + wall_h - r
+    for z in (zc, zt):  # bottom frame and top rim
+        pieces += [_wire([rx0, -ry, z], [rx1, -ry, z], r), _wire([rx0, ry, z], [rx1, ry, z], r),
+                   _wire([rx0, -ry, z], [rx0, ry, z], r), _wire([rx1, -ry, z], [rx1, ry, z], r)]
+    nx = max(3, int(2 * ry / pitch))  # bottom grid: wires along x, a cross wire in the middle
+    for k in range(1, nx):
+        y = -ry + k * 2 * ry / nx
+        pieces.append(_wire([rx0, y, zc + 1.6 * r], [rx1, y, zc + 1.6 * r], 0.8 * r))
+    pieces.append(_wire([(rx0 + rx1) / 2, -ry, zc], [(rx0 + rx1) / 2, ry, zc], r))
+    ny = max(2, int(2 * ry / pitch))  # side walls: vertical wires
+    for k in range(1, ny):
+        y = -ry + k * 2 * ry / ny
+        pieces += [_wire([x, y, zc], [x, y, zt], 0.8 * r) for x in (rx0, rx1)]
+    nxs = max(2, int((rx1 - rx0) / pitch))
+    for k in range(1, nxs):
+        x = rx0 + k * (rx1 - rx0) / nxs
+        pieces += [_wire([x, y, zc], [x, y, zt], 0.8 * r) for y in (-ry, ry)]
+    if kind == "lower":  # plate tines: two rows across the rack
+        t_h = min(0.85 * height, 0.16)
+        for xr in (rx0 + 0.3 * (rx1 - rx0), rx0 + 0.5 * (rx1 - rx0)):
+            pieces.append(_wire([xr, -ry, zc + 1.6 * r], [xr, ry, zc + 1.6 * r], r))
+            nt = max(3, int(2 * ry / 0.04))
+            pieces += [_wire([xr, -ry + k * 2 * ry / nt, zc + 2 * r], [xr, -ry + k * 2 * ry / nt, zc + t_h], 0.7 * r)
+                       for k in range(1, nt)]
+    pieces.append(g.box_between([rx1 - 0.006, -0.06, zt - 0.012], [rx1 + 0.004, 0.06, zt + r], "wheel", bevel=0.002))
+    return pieces
+
+
+def open_bin(xs, ys, z0: float, h: float, material: str, t: float = 0.003) -> list[g.Piece]:
+    """An open box (a cutlery basket): a bottom and four walls, hollow for the simulator."""
+    (xa, xb), (ya, yb) = xs, ys
+    return [g.box_between([xa, ya, z0], [xb, yb, z0 + t], material),
+            g.box_between([xa, ya, z0 + t], [xa + t, yb, z0 + h], material),
+            g.box_between([xb - t, ya, z0 + t], [xb, yb, z0 + h], material),
+            g.box_between([xa + t, ya, z0 + t], [xb - t, ya + t, z0 + h], material),
+            g.box_between([xa + t, yb - t, z0 + t], [xb - t, yb, z0 + h], material)]
