@@ -347,3 +347,148 @@ def open_bin(xs, ys, z0: float, h: float, material: str, t: float = 0.003) -> li
             g.box_between([xb - t, ya, z0 + t], [xb, yb, z0 + h], material),
             g.box_between([xa + t, ya, z0 + t], [xb - t, ya + t, z0 + h], material),
             g.box_between([xa + t, yb - t, z0 + t], [xb - t, yb, z0 + h], material)]
+
+
+# -- ovens ---------------------------------------------------------------------------------------------------
+OVEN_SHEET = 0.0008  # steel sheet of the casing, door and liner
+OVEN_PANEL = 0.01  # casing panels (modelled solid, massed as sheet)
+OVEN_LINER = 0.003
+OVEN_RACK_R = 0.0028  # rack wire radius
+RAIL = (0.012, 0.006)  # side rail width, height
+FACE = 0.004  # control panel face plate
+
+
+def oven_casing(outer, zs, cavity, door_gap: float, frame_top: float) -> list[g.Piece]:
+    """Sides, back, bottom, a divider over the drawer bay, a front frame with the cavity opening, a
+    trim strip under the door, a five-wall enamel liner, a recessed kick plinth and four feet.
+
+    ``outer``: (x back, x body front, x door front, y left, y right, z top of the casing);
+    ``zs``: (plinth top, drawer top, divider, hinge); the front frame reaches up to ``frame_top``.
+    """
+    xb, xf, xd1, y0, y1, ztop = outer
+    z_pl, z_dt, z_div, z_h = zs
+    cx0, cx1, cy0, cy1, cz0, cz1 = cavity
+    L, T = OVEN_LINER, OVEN_PANEL
+
+    def sheet(piece):
+        return piece.with_sheet(OVEN_SHEET)
+
+    pieces = [
+        sheet(g.box_between([xb, y0, z_pl], [xf - T, y0 + T, ztop], "body")),
+        sheet(g.box_between([xb, y1 - T, z_pl], [xf - T, y1, ztop], "body")),
+        sheet(g.box_between([xb, y0 + T, z_pl], [xb + T, y1 - T, ztop], "body")),
+        sheet(g.box_between([xb + T, y0 + T, z_pl], [xf - T, y1 - T, z_pl + T], "body")),
+        sheet(g.box_between([xb + T, y0 + T, z_div], [xf - T, y1 - T, z_div + T], "body")),
+        sheet(g.panel([xf - T, y0, z_div], [xf, y1, frame_top], "body", "x", holes=[(cy0, cz0, cy1, cz1)])),
+        g.box_between([xf, y0, z_div], [xd1, y1, z_h - door_gap], "body"),  # trim strip under the door
+        sheet(g.box_between([cx0 - L, cy0 - L, cz0 - L], [cx1, cy1 + L, cz0], "interior")),
+        sheet(g.box_between([cx0 - L, cy0 - L, cz1], [cx1, cy1 + L, cz1 + L], "interior")),
+        sheet(g.box_between([cx0 - L, cy0 - L, cz0], [cx1, cy0, cz1], "interior")),
+        sheet(g.box_between([cx0 - L, cy1, cz0], [cx1, cy1 + L, cz1], "interior")),
+        sheet(g.box_between([cx0 - L, cy0, cz0], [cx0, cy1, cz1], "interior")),
+        g.box_between([xb + 0.03, y0 + 0.01, 0.0], [xf - 0.04, y1 - 0.01, z_pl], "plinth"),
+    ]
+    for x in (xb + 0.05, xf - 0.06):
+        for y in (y0 + 0.05, y1 - 0.05):
+            pieces.append(g.cylinder([x, y, 0.0], [x, y, z_pl], 0.015, "feet", 16))
+    return pieces
+
+
+def oven_door(box, hole) -> list[g.Piece]:
+    """An outer skin, an inner frame and an enamel inner skin around a window, and two glass panes."""
+    x0, x1, y0, y1, z0, z1 = box
+    return [g.panel([x1 - 0.003, y0, z0], [x1, y1, z1], "door", "x", holes=[hole]).with_sheet(OVEN_SHEET),
+            g.panel([x0 + 0.003, y0, z0], [x1 - 0.003, y1, z1], "door_inner", "x", holes=[hole]).with_sheet(OVEN_SHEET),
+            g.panel([x0, y0 + 0.02, z0 + 0.02], [x0 + 0.003, y1 - 0.02, z1 - 0.02], "interior", "x", holes=[hole])
+            .with_sheet(OVEN_SHEET),
+            g.box_between([x1 - 0.008, hole[0], hole[1]], [x1 - 0.003, hole[2], hole[3]], "glass"),
+            g.box_between([x0 + 0.003, hole[0], hole[1]], [x0 + 0.007, hole[2], hole[3]], "glass")]
+
+
+def oven_rack(xs, ys, zc: float) -> list[g.Piece]:
+    """A chrome wire rack: a rectangular frame, wires along x, two cross wires."""
+    (x0, x1), r = xs, OVEN_RACK_R
+    ya, yb = ys[0] + r, ys[1] - r
+    pieces = [g.cylinder(a, b, r, "rack", 8) for a, b in (([x0, ya, zc], [x1, ya, zc]), ([x0, yb, zc], [x1, yb, zc]),
+                                                          ([x0, ya, zc], [x0, yb, zc]), ([x1, ya, zc], [x1, yb, zc]))]
+    n = max(3, int((yb - ya) / 0.045))
+    ys_w = [ya + (yb - ya) * k / n for k in range(1, n)]
+    pieces += [g.cylinder([x0 + r, y, zc], [x1 - r, y, zc], 0.7 * r, "rack", 6) for y in ys_w]
+    pieces += [g.cylinder([x0 + (x1 - x0) * f, ya, zc], [x0 + (x1 - x0) * f, yb, zc], 0.8 * r, "rack", 6)
+               for f in (1 / 3, 2 / 3)]
+    return pieces
+
+
+def storage_drawer(front_box, tray_box, wall: float = 0.008) -> list[g.Piece]:
+    """A drawer front and an open tray behind it (bottom, two sides, back), massed as sheet."""
+    fx0, x1, y0, y1, z0, z1 = front_box
+    tx0, ty0, ty1, tz0, tz1 = tray_box
+    wt = wall
+    return [p.with_sheet(OVEN_SHEET) for p in (
+        g.box_between([fx0, y0, z0], [x1, y1, z1], "body", bevel=0.002),
+        g.box_between([tx0, ty0, tz0], [fx0, ty1, tz0 + wt], "body"),
+        g.box_between([tx0, ty0, tz0 + wt], [fx0, ty0 + wt, tz1], "body"),
+        g.box_between([tx0, ty1 - wt, tz0 + wt], [fx0, ty1, tz1], "body"),
+        g.box_between([tx0, ty0 + wt, tz0 + wt], [tx0 + wt, ty1 - wt, tz1], "body"))]
+
+
+def burner(x: float, y: float, z: float, r: float) -> list[g.Piece]:
+    """A gas burner (a crown) and its enamel cap on the cooktop at height ``z``."""
+    return [g.cylinder([x, y, z], [x, y, z + 0.012], r, "burner", 32),
+            g.cylinder([x, y, z + 0.012], [x, y, z + 0.02], 0.65 * r, "cap", 32)]
+
+
+def grate(xs, ys, z0: float, burners_x, foot: float = 0.014, feet_h: float = 0.03, bar: float = 0.01
+          ) -> list[g.Piece]:
+    """A cast grate over a column of burners: feet at its corners (clear of the burners), a frame,
+    dividers between the burners and a cross of fingers over each."""
+    (gx0, gx1), (ga, gb) = xs, ys
+    depth, yc, n = gx1 - gx0, (ga + gb) / 2, len(burners_x)
+    zb0, zb1 = z0 + feet_h, z0 + feet_h + bar
+    pieces = [g.box_between([x, y, z0], [x + foot, y + foot, zb0], "grate") for x in (gx0, gx1 - foot)
+              for y in (ga, gb - foot)]
+    pieces += [g.box_between([gx0, ga, zb0], [gx1, ga + bar, zb1], "grate"),
+               g.box_between([gx0, gb - bar, zb0], [gx1, gb, zb1], "grate"),
+               g.box_between([gx0, ga + bar, zb0], [gx0 + bar, gb - bar, zb1], "grate"),
+               g.box_between([gx1 - bar, ga + bar, zb0], [gx1, gb - bar, zb1], "grate")]
+    for j in range(1, n):
+        x = gx0 + depth * j / n
+        pieces.append(g.box_between([x - bar / 2, ga + bar, zb0], [x + bar / 2, gb - bar, zb1], "grate"))
+    span = depth / n / 2 - bar / 2
+    for xc in burners_x:
+        pieces += [g.box_between([xc - 0.005, ga + bar, zb1 - 0.008], [xc + 0.005, gb - bar, zb1], "grate"),
+                   g.box_between([xc - span, yc - 0.005, zb1 - 0.008], [xc + span, yc + 0.005, zb1], "grate")]
+    return pieces
+
+
+def cooker_knob(x_face: float, y: float, z: float, r: float, stem: float, style: str) -> tuple[list[g.Piece], float]:
+    """A cooker knob 3 mm in front of the panel face on a stem through a hole, symmetric about its axis
+    (the pointer line runs across the whole face); returns the pieces and its reach in front of the face."""
+    x0 = x_face + 0.003
+    pieces = [g.cylinder([x_face - BEHIND, y, z], [x0 + 0.001, y, z], stem, "knob", 16)]
+    if style == "ridge":
+        depth = max(0.016, 0.8 * r)
+        pieces += [g.cylinder([x0, y, z], [x0 + 0.006, y, z], r, "knob", 32),
+                   g.box_between([x0 + 0.0055, y - 0.2 * r, z - 0.9 * r], [x0 + depth, y + 0.2 * r, z + 0.9 * r],
+                                 "knob", bevel=0.002),
+                   g.box_between([x0 + depth - 0.0005, y - 0.0012, z - 0.8 * r], [x0 + depth + 0.0008, y + 0.0012,
+                                                                                  z + 0.8 * r], "trim")]
+    else:
+        depth = max(0.018, 0.9 * r)
+        pieces += [g.cylinder([x0, y, z], [x0 + 0.005, y, z], r, "knob", 32),
+                   g.cylinder([x0 + 0.0045, y, z], [x0 + depth, y, z], 0.82 * r, "knob", 32),
+                   g.box_between([x0 + depth - 0.0005, y - 0.0012, z - 0.7 * r], [x0 + depth + 0.0008, y + 0.0012,
+                                                                                  z + 0.7 * r], "trim")]
+    return pieces, depth + 0.0008 + 0.003
+
+
+def panel_housing(xs, ys, zs, holes, wall: float = 0.004) -> list[g.Piece]:
+    """A hollow control panel box: a face plate with ``holes``, back, top, bottom and sides."""
+    (xa, xp), (ya, yb), (za, zb), w = xs, ys, zs, wall
+    return [p.with_sheet(OVEN_SHEET) for p in (
+        g.panel([xp - FACE, ya, za], [xp, yb, zb], "body", "x", holes=holes),
+        g.box_between([xa, ya, za], [xa + w, yb, zb], "body"),
+        g.box_between([xa + w, ya, zb - w], [xp - FACE, yb, zb], "body"),
+        g.box_between([xa + w, ya, za], [xp - FACE, yb, za + w], "body"),
+        g.box_between([xa + w, ya, za + w], [xp - FACE, ya + w, zb - w], "body"),
+        g.box_between([xa + w, yb - w, za + w], [xp - FACE, yb, zb - w], "body"))]
