@@ -77,3 +77,34 @@ def test_rules_are_printable_and_name_the_flags(name):
     for prm in cat.schema.params:
         if prm.name.startswith("has_"):
             assert prm.name[4:] in rules, prm.name
+
+
+NOT_YET_CONVERTED = {"door", "kitchen_cabinet", "lamp", "toilet", "window", "bottle", "jar", "pan", "pot", "vase"}
+"""Categories still written as SCHEMA/GROWTH/build modules: this set may only shrink."""
+
+
+def test_categories_are_expressed_through_parts_and_the_grammar():
+    from infmob_usd.category import Category
+
+    legacy = {n for n in CATEGORIES if not isinstance(infmob_usd.get_category(n), Category)}
+    assert legacy <= NOT_YET_CONVERTED, f"new legacy modules: {legacy - NOT_YET_CONVERTED}"
+    assert not NOT_YET_CONVERTED - legacy, f"converted, drop from the list: {NOT_YET_CONVERTED - legacy}"
+
+
+@pytest.mark.parametrize("name", sorted(set(CATEGORIES) - NOT_YET_CONVERTED))
+def test_grown_tree_and_parts_agree(name):
+    """Every grown node made its labelled part and every part was grown (Layout.check), and the parts
+    of a node kind carry the labels its rule names."""
+    cat = infmob_usd.get_category(name)
+    for seed in range(3):
+        r = streams(name, seed)
+        p = cat.schema.sample(r["params"])
+        tree = cat.grammar.grow(dict(p), np.random.default_rng(0))
+        assert tree.kind == cat.grammar.root
+        bp = cat.build(p, r["structure"], r["geometry"])
+        labels = {part.label for part in bp.parts.values()}
+        wanted = set()
+        for node in cat.grammar.nodes.values():
+            if node.label:
+                wanted |= {node.label} if isinstance(node.label, str) else set(node.label)
+        assert labels <= wanted, f"{name} seed {seed}: labels {labels - wanted} no rule builds"
