@@ -23,7 +23,8 @@ geometry, about 92-102 degrees): ``seat upper + cover upper = that angle``, spli
 The flush is a push button on the cistern front (pressed along -X, horizontal, so gravity
 has no say) or a side trip lever on the left wall near the front that turns about Y (pressing
 its grip down is positive; it stays behind the cistern front, out of the cover's way); the
-lever carries a counterweighted heel so its centre of mass lies on its axis (neutral at rest).
+lever gets a counterweight heel from the core's ``rest_on_stops``, so its centre of mass lies
+on its axis (neutral at rest).
 """
 
 from __future__ import annotations
@@ -36,7 +37,6 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
-from infmob_usd.mass import inertial
 from infmob_usd.params import Choice, Float, Schema
 
 GROWTH = Growth(
@@ -270,16 +270,10 @@ def _lean_limit(cover, obstacles, hinge) -> float:
 
 def _trip_lever(xa: float, ys: float, z: float, length: float) -> list[g.Piece]:
     """A flush lever turning about Y through ``(xa, ys, z)`` on a left side wall (it stands off to -Y):
-    hub, grip to +X, counterweight heel to -X.
-
-    The heel's length is solved so that the centre of mass lies on the axis (neutral at rest).
+    hub and grip to +X. The core adds the counterweight heel to -X that puts the centre of mass
+    on the axis (neutral at rest; :func:`infmob_usd.physical.rest_on_stops`).
     """
     hub = g.cylinder([xa, ys, z], [xa, ys - 0.016, z], 0.011, "chrome", 24)
     grip = g.box_between([xa, ys - 0.015, z - 0.006], [xa + length, ys - 0.008, z + 0.006], "chrome",
                          bevel=0.002)
-    m, com, _ = inertial([(grip, 1.0e6)])  # any density above the mass floor
-    moment = m * (com[0] - xa)
-    hz, hy = 0.02, 0.014  # heel section; its moment is density * hz * hy * L^2 / 2
-    heel_len = math.sqrt(2 * moment / (1.0e6 * hz * hy))
-    heel = g.box_between([xa - heel_len, ys - 0.015, z - hz / 2], [xa, ys - 0.015 + hy, z + hz / 2], "chrome")
-    return [hub, grip, heel]
+    return [hub, grip]

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -328,7 +329,7 @@ def rest_on_stops(links, joints, densities: dict[str, float]):
         r = float(np.linalg.norm(arm))
         u = arm / r
         w = np.cross(axis, u)
-        heaviest = max(child.pieces, key=lambda p: densities[p.material] * abs(p.volume))
+        heaviest = max(child.pieces, key=lambda p: densities[p.material] * p.volume())
         rho = densities[heaviest.material]
         local = [v for p in child.pieces for v, _ in p.hulls()] or [p.vertices for p in child.pieces]
         along = np.vstack(local) @ axis
@@ -360,6 +361,9 @@ SWEEP_SAGITTA = 2.5e-4
 """m; a turn is sampled finely enough that its arcs bulge at most this far past the chords
 between samples (the swept volume between two samples is the hull of the two poses)."""
 
+PARENT_GROWTH = 5e-8
+"""m^3; how much more a moving subtree may overlap its parent than at rest (validators: 1e-7)."""
+
 ALL_FRACTIONS = (0.5, 1.0)
 """The combined states the validators sample: every joint at once at 50 % and 100 % of its
 range (continuous joints at f pi), prerequisites fully open."""
@@ -369,7 +373,12 @@ range (continuous joints at f pi), prerequisites fully open."""
 class _Hull:
     link: str
     points: np.ndarray  # (k, 3) hull vertices, link frame
-    normals: np.ndarray  # (m, 3) face normals, link frame
+    faces: np.ndarray  # (m, 3)
+
+    @cached_property
+    def normals(self) -> np.ndarray:
+        """``(m, 3)`` face normals, link frame."""
+        return _face_normals(self.points, self.faces)
 
 
 def _solid_hulls(obj) -> dict[str, list[_Hull]]:
@@ -377,7 +386,7 @@ def _solid_hulls(obj) -> dict[str, list[_Hull]]:
     for link in obj.links:
         if link.dummy or not link.pieces:
             continue
-        hulls = [_Hull(link.name, v, _face_normals(v, f)) for p in link.pieces for v, f in p.hulls()]
+        hulls = [_Hull(link.name, v, f) for p in link.pieces for v, f in p.hulls()]
         if hulls:
             out[link.name] = hulls
     return out
@@ -459,9 +468,11 @@ def _hits(points: np.ndarray, normals: np.ndarray, margin: float, obstacles: _Ob
     return (manifold3d.Manifold.hull_points(grown) ^ obstacles.solid(i)).volume() > CONTACT_VOLUME
 
 
-def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Obstacles) -> tuple[float, str]:
+def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Obstacles,
+                 allowed: np.ndarray) -> tuple[float, str]:
     """The largest value in ``[0, limit]`` (or ``[limit, 0]``) to which ``joint`` turns or slides the
-    ``moving`` hulls (posed at ``poses`` with the joint at 0) without a contact: ``(value, link hit)``."""
+    ``moving`` hulls (posed at ``poses`` with the joint at 0) without a contact with the obstacle
+    hulls where ``allowed`` (bool per obstacle hull) is true: ``(value, link hit)``."""
     pivot = poses[joint.child][:3, 3]
     axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
     world = [h.points @ poses[h.link][:3, :3].T + poses[h.link][:3, 3] for h in moving]
@@ -486,7 +497,7 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
     ilo = np.minimum(lo[:-1], lo[1:]) - CLEARANCE
     ihi = np.maximum(hi[:-1], hi[1:]) + CLEARANCE
     near = np.all((ilo[:, :, None, :] < obstacles.hi[None, None]) & (obstacles.lo[None, None] < ihi[:, :, None, :]),
-                  axis=3)  # (n, hulls, obstacles)
+                  axis=3) & allowed  # (n, hulls, obstacles)
     if not near.any():
         return float(limit), ""
     # each pair that may meet keeps CLEARANCE if it starts that far apart, else 0 if it starts
@@ -525,6 +536,60 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
     return float(limit), ""
 
 
+def _overlap(moving: tuple[np.ndarray, np.ndarray, list[np.ndarray]], obstacles: _Obstacles,
+             motion: np.ndarray) -> float:
+    """Summed exact intersection volume of the ``moving`` hulls (stacked world points, start of
+    each hull's rows, world normals per hull) moved by ``motion`` with the obstacle hulls (box
+    and face-plane prefilters; no margin)."""
+    import manifold3d
+
+    if not len(obstacles.hulls):
+        return 0.0
+    stacked, starts, normals = moving
+    r, t = motion[:3, :3], motion[:3, 3]
+    p = stacked @ r.T + t
+    lo, hi = np.minimum.reduceat(p, starts[:-1], axis=0), np.maximum.reduceat(p, starts[:-1], axis=0)
+    near = np.all((lo[:, None] < obstacles.hi[None]) & (obstacles.lo[None] < hi[:, None]), axis=2)
+    total = 0.0
+    solids: dict[int, object] = {}
+    for h, i in zip(*np.nonzero(near)):
+        w = p[starts[h]:starts[h + 1]]
+        if _separated(w, normals[h] @ r.T, 0.0, obstacles.world[i], obstacles.normals(i)):
+            continue
+        if h not in solids:
+            solids[h] = manifold3d.Manifold.hull_points(w)
+        total += (solids[h] ^ obstacles.solid(i)).volume()
+    return total
+
+
+def _parent_limit(joint, limit: float, moving: list[_Hull], poses, parent: _Obstacles) -> tuple[float, str]:
+    """The largest value in ``[0, limit]`` at which the moving hulls overlap the parent's by at most
+    :data:`PARENT_GROWTH` more than at rest, checked at quarters of the range (the validators'
+    parent_child states) and bisected below the first quarter that fails."""
+    if not len(parent.hulls) or limit == 0:
+        return float(limit), ""
+    pivot = poses[joint.child][:3, 3]
+    axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
+    world = [h.points @ poses[h.link][:3, :3].T + poses[h.link][:3, 3] for h in moving]
+    world = (np.vstack(world), np.cumsum([0] + [len(w) for w in world]),
+             [h.normals @ poses[h.link][:3, :3].T for h in moving])
+    rest = _overlap(world, parent, np.eye(4))
+
+    def grows(v):
+        return _overlap(world, parent, _motion(joint.type, pivot, axis, v)) - rest > PARENT_GROWTH
+
+    previous = 0.0
+    for f in (0.25, 0.5, 0.75, 1.0):
+        if grows(f * limit):
+            good, bad = previous, f * limit
+            for _ in range(14):
+                mid = 0.5 * (good + bad)
+                good, bad = (good, mid) if grows(mid) else (mid, bad)
+            return good, parent.hulls[0].link
+        previous = f * limit
+    return float(limit), ""
+
+
 def clearance_limits(obj) -> dict[str, tuple[float, float]]:
     """Joint limits shortened so no moving part meets a link it may not touch.
 
@@ -532,8 +597,10 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        revolute and prismatic joint (compound chains DoF by DoF) is swept from rest with the
        other joints at rest. The collision hulls of the subtree it moves, swept (hull of two
        consecutive poses; turns sampled so arcs bulge at most :data:`SWEEP_SAGITTA` past the
-       chords), keep :data:`CLEARANCE` from every hull of every other link, its parent included
-       (a door may not swing into its own carcass). A hull pair that already overlaps, or is
+       chords), keep :data:`CLEARANCE` from every hull of every link but its parent, and its
+       overlap with the parent grows by at most :data:`PARENT_GROWTH` over rest at quarters of
+       the range (a door may not swing into its own carcass; a polygonal pin may turn in its
+       polygonal bore). A hull pair that already overlaps, or is
        closer than the clearance, at rest keeps only what it has (it is not this joint's
        doing). A joint that ``requires_open`` a part sweeps with that part fully open. The limit
        becomes the last contact-free value, bisected (14 steps) within the first sample
@@ -541,7 +608,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
     2. *Joints together*: in the states :data:`ALL_FRACTIONS` (every joint at 50 % and 100 % of
        its range, as the validators sample them), two links that may touch neither by design
        (welded, or parent and child) nor at rest must not overlap; where they do, the limits of
-       the movable joints between them (not those others require open) are scaled by the same
+       the movable joints between them (not those others require open; only the revolute ones
+       if there are any: a door stops before a drawer gives up travel) are scaled by the same
        factor, the largest that separates them (bisection), until no state changes.
 
     Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep
@@ -560,7 +628,9 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
     by_name = {link.name: link for link in obj.links}
     into = {j.child: j for j in obj.joints}
     subtree = {j.name: descendants(obj.joints, j.child) for j in movable}
+    by_joint = {j.name: j for j in movable}
     cache: dict = {}
+    scenes: dict = {}
 
     def real_parent(j):
         p = j.parent
@@ -581,15 +651,21 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         moving = [h for n in sorted(subtree[j.name]) for h in hulls.get(n, [])]
         if not moving:
             continue
-        others = [n for n in hulls if n not in subtree[j.name]]
+        parent = real_parent(j)
         q = {g: limits[g][1] for g in gates.get(j.name, [])}
-        poses = obj.poses(q)
-        obstacles = _Obstacles(others, hulls, poses, cache)
+        key = tuple(sorted(q.items()))
+        if key not in scenes:  # every link posed, shared by the joints that sweep in this state
+            poses = obj.poses(q)
+            scenes[key] = (poses, _Obstacles(list(hulls), hulls, poses, cache))
+        poses, obstacles = scenes[key]
+        allowed = np.array([h.link not in subtree[j.name] and h.link != parent for h in obstacles.hulls])
+        below = _Obstacles([parent] if parent in hulls else [], hulls, poses, cache)
         for side in (1, 0):
             limit = limits[j.name][side]
             if limit == 0:
                 continue
-            value, hit = _sweep_limit(j, limit, moving, poses, obstacles)
+            value, hit = _sweep_limit(j, limit, moving, poses, obstacles, allowed)
+            value, hit = min((value, hit), _parent_limit(j, value, moving, poses, below), key=lambda t: abs(t[0]))
             if value != limit:
                 if abs(value) < 1e-6:
                     raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without meeting"
@@ -608,11 +684,12 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
                 path[(a, b)] = between
     if not path:
         return limits
-    flat = [(n, h) for n in solid for h in range(len(hulls[n]))]
 
     def contacts(poses, pairs) -> set:
         """Link pairs among ``pairs`` whose hulls overlap at ``poses``."""
-        obstacles = _Obstacles(solid, hulls, poses, cache)
+        names = sorted({n for pair in pairs for n in pair})
+        obstacles = _Obstacles(names, hulls, poses, cache)
+        flat = [(n, h) for n in names for h in range(len(hulls[n]))]
         lo, hi = obstacles.lo, obstacles.hi
         near = np.all((lo[:, None] < hi[None]) & (lo[None] < hi[:, None]), axis=2)
         out = set()
@@ -644,6 +721,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         for f in ALL_FRACTIONS:
             for a, b in sorted(contacts(state(f), checked)):
                 names = {j.name for j in path[(a, b)] if j.type != "continuous" and j.name not in gate_of_someone}
+                turns = {n for n in names if by_joint[n].type == "revolute"}
+                names = turns or names  # a hinge stops before a slide gives up travel
                 if not names:
                     continue
                 good, bad = 0.0, 1.0
