@@ -607,7 +607,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        interval that meets something.
     2. *Joints together*: in the states :data:`ALL_FRACTIONS` (every joint at 50 % and 100 % of
        its range, as the validators sample them), two links that may touch neither by design
-       (welded, or parent and child) nor at rest must not overlap; where they do, the limits of
+       (welded, or parent and child) nor at rest must keep the clearance (or, if closer at rest,
+       must not overlap); where they do not, the limits of
        the movable joints between them (not those others require open; only the revolute ones
        if there are any: a door stops before a drawer gives up travel) are scaled by the same
        factor, the largest that separates them (bisection), until no state changes.
@@ -681,24 +682,25 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         for b in solid[i + 1:]:
             between = [j for j in movable if (a in subtree[j.name]) != (b in subtree[j.name])]
             if between and frozenset((a, b)) not in chain:
-                path[(a, b)] = between
+                path[tuple(sorted((a, b)))] = between
     if not path:
         return limits
 
-    def contacts(poses, pairs) -> set:
-        """Link pairs among ``pairs`` whose hulls overlap at ``poses``."""
+    def contacts(poses, pairs, margin=0.0) -> set:
+        """Link pairs among ``pairs`` whose hulls, one grown by ``margin`` (a number, or a dict
+        pair -> margin), overlap at ``poses``."""
         names = sorted({n for pair in pairs for n in pair})
         obstacles = _Obstacles(names, hulls, poses, cache)
         flat = [(n, h) for n in names for h in range(len(hulls[n]))]
         lo, hi = obstacles.lo, obstacles.hi
-        near = np.all((lo[:, None] < hi[None]) & (lo[None] < hi[:, None]), axis=2)
+        near = np.all((lo[:, None] < hi[None] + CLEARANCE) & (lo[None] < hi[:, None] + CLEARANCE), axis=2)
         out = set()
         for u, v in zip(*np.nonzero(np.triu(near, 1))):
-            pair = (flat[u][0], flat[v][0])
+            pair = tuple(sorted((flat[u][0], flat[v][0])))
             if pair not in pairs or pair in out:
                 continue
-            w = obstacles.world[u]
-            if _hits(w, obstacles.normals(u), 0.0, obstacles, v):
+            d = margin if not isinstance(margin, dict) else margin[pair]
+            if _hits(obstacles.world[u], obstacles.normals(u), d, obstacles, v):
                 out.add(pair)
         return out
 
@@ -714,12 +716,17 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
                 q[g] = lim[g][1]
         return obj.poses(q)
 
-    at_rest = contacts(obj.poses({}), set(path))
-    checked = set(path) - at_rest
+    # pairs apart by the clearance at rest keep it; closer ones keep apart; overlapping ones are
+    # left out (not a joint's doing)
+    rest = obj.poses({})
+    touching = contacts(rest, set(path))
+    near_rest = contacts(rest, set(path), CLEARANCE)
+    checked = set(path) - touching
+    margins = {pair: 0.0 if pair in near_rest else CLEARANCE for pair in checked}
     for _ in range(8):
         changed = False
         for f in ALL_FRACTIONS:
-            for a, b in sorted(contacts(state(f), checked)):
+            for a, b in sorted(contacts(state(f), checked, margins)):
                 names = {j.name for j in path[(a, b)] if j.type != "continuous" and j.name not in gate_of_someone}
                 turns = {n for n in names if by_joint[n].type == "revolute"}
                 names = turns or names  # a hinge stops before a slide gives up travel
@@ -728,7 +735,7 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
                 good, bad = 0.0, 1.0
                 for _ in range(14):
                     mid = 0.5 * (good + bad)
-                    if (a, b) in contacts(state(f, (names, mid)), {(a, b)}):
+                    if (a, b) in contacts(state(f, (names, mid)), {(a, b)}, margins[(a, b)]):
                         bad = mid
                     else:
                         good = mid
