@@ -15,10 +15,10 @@ turn away from the seat, so the two never interpenetrate.
 
 Product of joint ranges: simulators and the physics checks sample every combination of joint
 states (all joints at their upper limits at once), while a real cover stops when it leans on
-the cistern whatever the seat does. The seat's and the cover's ranges therefore share the
-largest angle the cover may reach before it would touch the cistern (computed from the built
-geometry, about 92-102 degrees): ``seat upper + cover upper = that angle``, split by
-``cover_share``.
+the cistern whatever the seat does. The seat and the cover declare a common mechanical
+maximum of half a turn, split by ``cover_share``; the core's ``limit_to_clearance`` stops the
+cover where it would lean on the cistern, alone and with everything open (both limits scaled
+together: ``seat upper + cover upper`` is the leaning angle, about 92-102 degrees).
 
 The flush is a push button on the cistern front (pressed along -X, horizontal, so gravity
 has no say) or a side trip lever on the left wall near the front that turns about Y (pressing
@@ -31,7 +31,6 @@ from __future__ import annotations
 
 import math
 
-import manifold3d
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -73,7 +72,6 @@ SCHEMA = Schema((
 
 LID_LIFT = 0.2  # m, the cistern lid lifts 0..0.2
 GAP = 0.003  # clearance of moving parts at rest
-MARGIN = 0.005  # the opened cover keeps this far from the cistern
 PRESS = 0.006  # button travel
 LEVER_TURN = math.pi / 4
 
@@ -228,44 +226,13 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     ]
     bp.add("cover", "lid", cover)
 
-    # the largest angle the cover may reach before it comes within MARGIN of the cistern
-    # (the cistern lid anywhere along its lift counts: every combination of states is sampled)
-    fixed = [pc for n in ("tank", "flush_button", "flush_lever") if n in bp.parts for pc in bp.parts[n].pieces]
-    lifted = [pc.translated((0, 0, dz)) for dz in np.linspace(0, LID_LIFT, 9) for pc in lid[:1]]
-    theta = _lean_limit(cover, fixed + lifted, (x_h, z_h))
-    cover_up = p["cover_share"] * theta
-    seat_up = theta - cover_up
+    # mechanical maxima: the two leaves turn at most half a turn together, split by cover_share;
+    # the core stops them where the cover leans on the cistern (its lid lifted or not)
+    cover_up = p["cover_share"] * math.pi
+    seat_up = math.pi - cover_up
     bp.join(J.revolute(base, "seat", (x_h, 0.0, z_h), (0, -1, 0), 0.0, seat_up, role="hinge"))
     bp.join(J.revolute("seat", "cover", (x_h, 0.0, z_h), (0, -1, 0), 0.0, cover_up, role="hinge"))
     return bp
-
-
-def _lean_limit(cover, obstacles, hinge) -> float:
-    """The largest angle about the hinge line (about -Y) at which the cover, grown by
-    :data:`MARGIN`, still clears every obstacle; at least pi/2."""
-    offs = np.array([[x, y, z] for x in (-MARGIN, MARGIN) for y in (-MARGIN, MARGIN) for z in (-MARGIN, MARGIN)])
-    grown = [(c[:, None, :] + offs[None]).reshape(-1, 3) for pc in cover for c in pc.convex]
-    boxes = [c for pc in obstacles for c in pc.convex]
-    solids = [manifold3d.Manifold.hull_points(c) for c in boxes]
-    o = np.array([hinge[0], 0.0, hinge[1]])
-
-    def clear(t):
-        c, s = math.cos(t), math.sin(t)
-        r = np.array([[c, 0, -s], [0, 1, 0], [s, 0, c]])  # about -Y: +X turns to +Z
-        for h in grown:
-            w = (h - o) @ r.T + o
-            lo, hi = w.min(0), w.max(0)
-            for b, m in zip(boxes, solids):
-                if np.any(hi < b.min(0)) or np.any(b.max(0) < lo):
-                    continue
-                if (manifold3d.Manifold.hull_points(w) ^ m).volume() > 0.0:
-                    return False
-        return True
-
-    theta = math.pi / 2
-    while theta < math.pi and clear(theta + 0.01):
-        theta += 0.01
-    return theta
 
 
 def _trip_lever(xa: float, ys: float, z: float, length: float) -> list[g.Piece]:

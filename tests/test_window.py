@@ -12,7 +12,7 @@ from infmob_usd.categories import window as win
 from infmob_usd.errors import ParameterError
 
 from collide import overlap
-from zoo import by_child, make_bp, movable
+from zoo import by_child, make_bp, movable, object_limits
 
 SEEDS = range(8)
 LABELS = {"frame", "sash", "shutter", "curtain"}
@@ -173,15 +173,8 @@ def _pairs_clear(bp, q):
 ])
 def test_no_collision_at_any_sampled_state(over):
     """With the limits of the generated object (the core stops casements before the curtains)."""
-    from dataclasses import replace
-
-    from infmob_usd.api import generate
-
     _, bp = make(11, **over)
-    obj = generate("window", 11, 16, **over)
-    upper = {j.child: j.upper for j in obj.movable_joints}
-    bp.joints = [replace(j, dofs=(replace(j.dofs[0], upper=upper[j.child]),)) if j.movable else j
-                 for j in bp.joints]
+    bp = object_limits("window", 11, bp, **over)
     for q in states(bp):
         _pairs_clear(bp, q)
 
