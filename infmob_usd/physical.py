@@ -468,6 +468,18 @@ def _hits(points: np.ndarray, normals: np.ndarray, margin: float, obstacles: _Ob
     return (manifold3d.Manifold.hull_points(grown) ^ obstacles.solid(i)).volume() > CONTACT_VOLUME
 
 
+def _posed(moving: list[_Hull], poses) -> tuple[np.ndarray, np.ndarray]:
+    """World points of the ``moving`` hulls stacked ``(n, 3)``, and the row where each starts
+    (one more entry: the end)."""
+    sizes = [len(h.points) for h in moving]
+    starts = np.cumsum([0] + sizes)
+    out = np.empty((starts[-1], 3))
+    for h, a, b in zip(moving, starts[:-1], starts[1:]):
+        pose = poses[h.link]
+        out[a:b] = h.points @ pose[:3, :3].T + pose[:3, 3]
+    return out, starts
+
+
 def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Obstacles,
                  allowed: np.ndarray) -> tuple[float, str]:
     """The largest value in ``[0, limit]`` (or ``[limit, 0]``) to which ``joint`` turns or slides the
@@ -475,53 +487,58 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
     hulls where ``allowed`` (bool per obstacle hull) is true: ``(value, link hit)``."""
     pivot = poses[joint.child][:3, 3]
     axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
-    world = [h.points @ poses[h.link][:3, :3].T + poses[h.link][:3, 3] for h in moving]
-    normals = [h.normals @ poses[h.link][:3, :3].T for h in moving]
+    stacked, starts = _posed(moving, poses)
     if joint.type == "prismatic":
         n = 1
     else:
-        rel = np.vstack(world) - pivot
+        rel = stacked - pivot
         radius = float(np.sqrt(np.max(np.einsum("ij,ij->i", rel, rel) - (rel @ axis) ** 2).clip(0))) + 1e-9
         step = min(0.2, math.sqrt(8.0 * SWEEP_SAGITTA / radius))
         n = max(1, math.ceil(abs(limit) / step))
     values = np.linspace(0.0, limit, n + 1)
     mats = [_motion(joint.type, pivot, axis, v) for v in values]
-    # per-hull boxes at every sample (the posed corners of each hull's box bound the hull),
-    # then per interval: which obstacle hulls a hull may meet
+    # per-hull boxes at every sample (the posed corners of each hull's box bound the hull)
     corners = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], float)
-    box = np.vstack([w.min(0) + corners * np.ptp(w, axis=0) for w in world])  # (8 hulls, 3)
+    lo0 = np.minimum.reduceat(stacked, starts[:-1], axis=0)
+    hi0 = np.maximum.reduceat(stacked, starts[:-1], axis=0)
+    box = (lo0[:, None, :] + corners[None] * (hi0 - lo0)[:, None, :]).reshape(-1, 3)  # (8 hulls, 3)
     posed = np.einsum("kij,nj->kni", np.array([m[:3, :3] for m in mats]), box) + np.array(
         [m[:3, 3] for m in mats])[:, None, :]
-    posed = posed.reshape(len(mats), len(world), 8, 3)
+    posed = posed.reshape(len(mats), len(moving), 8, 3)
     lo, hi = posed.min(2), posed.max(2)
-    ilo = np.minimum(lo[:-1], lo[1:]) - CLEARANCE
-    ihi = np.maximum(hi[:-1], hi[1:]) + CLEARANCE
-    near = np.all((ilo[:, :, None, :] < obstacles.hi[None, None]) & (obstacles.lo[None, None] < ihi[:, :, None, :]),
-                  axis=3) & allowed  # (n, hulls, obstacles)
-    if not near.any():
+    # hull pairs that may meet somewhere in the range, then in which sample intervals
+    lo_all, hi_all = lo.min(0) - CLEARANCE, hi.max(0) + CLEARANCE
+    hs, os = np.nonzero(np.all((lo_all[:, None] < obstacles.hi[None]) & (obstacles.lo[None] < hi_all[:, None]),
+                               axis=2) & allowed)
+    if not len(hs):
         return float(limit), ""
+    ilo = np.minimum(lo[:-1], lo[1:])[:, hs] - CLEARANCE
+    ihi = np.maximum(hi[:-1], hi[1:])[:, hs] + CLEARANCE
+    near = np.all((ilo < obstacles.hi[os]) & (obstacles.lo[os] < ihi), axis=2)  # (intervals, pairs)
+    world = [stacked[a:b] for a, b in zip(starts[:-1], starts[1:])]
+    normals = [h.normals @ poses[h.link][:3, :3].T for h in moving]
     # each pair that may meet keeps CLEARANCE if it starts that far apart, else 0 if it starts
     # apart, else (it overlaps at rest: not this joint's doing) it is left out
-    margin: dict[tuple[int, int], float] = {}
-    for h, o in zip(*np.nonzero(near.any(axis=0))):
+    margin = np.full(len(hs), np.nan)
+    for p, (h, o) in enumerate(zip(hs, os)):
         if not _hits(world[h], normals[h], CLEARANCE, obstacles, o):
-            margin[(h, o)] = CLEARANCE
+            margin[p] = CLEARANCE
         elif not _hits(world[h], normals[h], 0.0, obstacles, o):
-            margin[(h, o)] = 0.0
+            margin[p] = 0.0
+    near &= ~np.isnan(margin)
 
     def swept_hit(k: int, m1: np.ndarray) -> str:
         m0 = mats[k]
-        for h, o in zip(*np.nonzero(near[k])):
-            if (h, o) not in margin:
-                continue
+        for p in np.flatnonzero(near[k]):
+            h, o = hs[p], os[p]
             w = world[h]
             pts = np.vstack([w @ m0[:3, :3].T + m0[:3, 3], w @ m1[:3, :3].T + m1[:3, 3]])
             nrm = np.vstack([normals[h] @ m0[:3, :3].T, normals[h] @ m1[:3, :3].T])
-            if _hits(pts, nrm, margin[(h, o)], obstacles, o):
+            if _hits(pts, nrm, margin[p], obstacles, o):
                 return obstacles.hulls[o].link
         return ""
 
-    for k in range(n):
+    for k in np.flatnonzero(near.any(axis=1)):
         hit = swept_hit(k, mats[k + 1])
         if not hit:
             continue
@@ -537,10 +554,11 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
 
 
 def _overlap(moving: tuple[np.ndarray, np.ndarray, list[np.ndarray]], obstacles: _Obstacles,
-             motion: np.ndarray) -> float:
+             motion: np.ndarray, skip: frozenset = frozenset()) -> float:
     """Summed exact intersection volume of the ``moving`` hulls (stacked world points, start of
     each hull's rows, world normals per hull) moved by ``motion`` with the obstacle hulls (box
-    and face-plane prefilters; no margin)."""
+    and face-plane prefilters; no margin), leaving out the hull pairs ``(moving, obstacle)`` in
+    ``skip``."""
     import manifold3d
 
     if not len(obstacles.hulls):
@@ -553,6 +571,8 @@ def _overlap(moving: tuple[np.ndarray, np.ndarray, list[np.ndarray]], obstacles:
     total = 0.0
     solids: dict[int, object] = {}
     for h, i in zip(*np.nonzero(near)):
+        if (h, i) in skip:
+            continue
         w = p[starts[h]:starts[h + 1]]
         if _separated(w, normals[h] @ r.T, 0.0, obstacles.world[i], obstacles.normals(i)):
             continue
@@ -563,20 +583,27 @@ def _overlap(moving: tuple[np.ndarray, np.ndarray, list[np.ndarray]], obstacles:
 
 
 def _parent_limit(joint, limit: float, moving: list[_Hull], poses, parent: _Obstacles) -> tuple[float, str]:
-    """The largest value in ``[0, limit]`` at which the moving hulls overlap the parent's by at most
-    :data:`PARENT_GROWTH` more than at rest, checked at quarters of the range (the validators'
-    parent_child states) and bisected below the first quarter that fails."""
+    """The largest value in ``[0, limit]`` at which the moving hulls apart from the parent's at rest
+    overlap them by at most :data:`PARENT_GROWTH` in all, checked at quarters of the range (the
+    validators' parent_child states) and bisected below the first quarter that fails. Hull pairs
+    that overlap at rest (more than :data:`CONTACT_VOLUME`) are part of the design and left out."""
     if not len(parent.hulls) or limit == 0:
         return float(limit), ""
     pivot = poses[joint.child][:3, 3]
     axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
-    world = [h.points @ poses[h.link][:3, :3].T + poses[h.link][:3, 3] for h in moving]
-    world = (np.vstack(world), np.cumsum([0] + [len(w) for w in world]),
-             [h.normals @ poses[h.link][:3, :3].T for h in moving])
-    rest = _overlap(world, parent, np.eye(4))
+    world = _posed(moving, poses) + ([h.normals @ poses[h.link][:3, :3].T for h in moving],)
+    # hull pairs that overlap at rest are part of the design (a pin in its bore, a pole in its
+    # tube): what counts is pairs apart at rest coming together
+    stacked, starts, normals = world
+    lo = np.minimum.reduceat(stacked, starts[:-1], axis=0)
+    hi = np.maximum.reduceat(stacked, starts[:-1], axis=0)
+    touching = frozenset(
+        (h, i) for h, i in zip(*np.nonzero(np.all((lo[:, None] < parent.hi[None]) & (parent.lo[None] < hi[:, None]),
+                                                  axis=2)))
+        if _hits(stacked[starts[h]:starts[h + 1]], normals[h], 0.0, parent, i))
 
     def grows(v):
-        return _overlap(world, parent, _motion(joint.type, pivot, axis, v)) - rest > PARENT_GROWTH
+        return _overlap(world, parent, _motion(joint.type, pivot, axis, v), touching) > PARENT_GROWTH
 
     previous = 0.0
     for f in (0.25, 0.5, 0.75, 1.0):
