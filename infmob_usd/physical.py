@@ -1,6 +1,11 @@
 """Physical plausibility passes applied once, for every category.
 
 * :func:`rest_on_ground` moves the object so its lowest point at rest is z = 0.
+* :func:`rest_on_stops` makes every passive hinge neutral under gravity or pressed onto its
+  rest stop (picking the side of a two-sided range, or adding a counterweight heel).
+* :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent.
+* :func:`limit_to_ground` shortens limits so nothing goes below the ground.
+* :func:`limit_to_clearance` shortens limits so moving parts never meet what they may not touch.
 * :data:`DYNAMICS` gives passive joint dynamics per joint role, so doors stay
   where they are left and knobs do not spin freely.
 
