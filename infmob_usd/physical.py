@@ -453,12 +453,14 @@ class _Obstacles:
             self._cache[key] = self.hulls[i].normals @ self.poses[self.hulls[i].link][:3, :3].T
         return self._cache[key]
 
-    def solid(self, i: int):
+    def solid(self, i: int, grown: float = 0.0):
+        """The exact solid of hull ``i``, grown by a cube of half-size ``grown`` (:func:`_inflate`)."""
         import manifold3d
 
-        key = ("solid",) + self.keys[i]
+        key = ("solid", grown) + self.keys[i]
         if key not in self._cache:
-            self._cache[key] = manifold3d.Manifold.hull_points(self.world[i])
+            pts = _inflate(self.world[i], grown) if grown > 0 else self.world[i]
+            self._cache[key] = manifold3d.Manifold.hull_points(pts)
         return self._cache[key]
 
 
@@ -469,8 +471,8 @@ def _hits(points: np.ndarray, normals: np.ndarray, margin: float, obstacles: _Ob
         return False
     import manifold3d
 
-    grown = _inflate(points, margin) if margin > 0 else points
-    return (manifold3d.Manifold.hull_points(grown) ^ obstacles.solid(i)).volume() > CONTACT_VOLUME
+    # the obstacle grown by the margin (built once per obstacle) rather than every moving hull
+    return (manifold3d.Manifold.hull_points(points) ^ obstacles.solid(i, margin)).volume() > CONTACT_VOLUME
 
 
 def _posed(moving: list[_Hull], poses) -> tuple[np.ndarray, np.ndarray]:
@@ -532,29 +534,35 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
             margin[p] = 0.0
     near &= ~np.isnan(margin)
 
-    def swept_hit(k: int, m1: np.ndarray) -> str:
-        m0 = mats[k]
-        for p in np.flatnonzero(near[k]):
+    def swept_hits(k: int, m1: np.ndarray, pairs, first: bool) -> list[int]:
+        """The pairs among ``pairs`` that meet while the joint moves from sample ``k`` to ``m1``."""
+        m0, out = mats[k], []
+        for p in pairs:
             h, o = hs[p], os[p]
             w = world[h]
             pts = np.vstack([w @ m0[:3, :3].T + m0[:3, 3], w @ m1[:3, :3].T + m1[:3, 3]])
             nrm = np.vstack([normals[h] @ m0[:3, :3].T, normals[h] @ m1[:3, :3].T])
             if _hits(pts, nrm, margin[p], obstacles, o):
-                return obstacles.hulls[o].link
-        return ""
+                out.append(p)
+                if first:
+                    break
+        return out
 
     for k in np.flatnonzero(near.any(axis=1)):
-        hit = swept_hit(k, mats[k + 1])
-        if not hit:
+        pairs = swept_hits(k, mats[k + 1], np.flatnonzero(near[k]), False)
+        if not pairs:
             continue
+        # within the interval only the pairs that meet over all of it can meet over part of it
+        # (up to the sagitta)
         good, bad = float(values[k]), float(values[k + 1])
         for _ in range(14):
             mid = 0.5 * (good + bad)
-            if swept_hit(k, _motion(joint.type, pivot, axis, mid)):
+            hit = swept_hits(k, _motion(joint.type, pivot, axis, mid), pairs, True)
+            if hit:
                 bad = mid
             else:
                 good = mid
-        return good, hit
+        return good, obstacles.hulls[os[pairs[0]]].link
     return float(limit), ""
 
 
@@ -643,7 +651,7 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        must not overlap); where they do not, the limits of
        the movable joints between them (not those others require open; only the revolute ones
        if there are any: a door stops before a drawer gives up travel) are scaled by the same
-       factor, the largest that separates them (bisection), until no state changes.
+       factor, the largest that separates them (bisection to 0.1 %), until no state changes.
 
     Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep
     theirs: see :func:`limit_to_ground`).
@@ -765,7 +773,7 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
                 if not names:
                     continue
                 good, bad = 0.0, 1.0
-                for _ in range(14):
+                for _ in range(10):
                     mid = 0.5 * (good + bad)
                     if (a, b) in contacts(state(f, (names, mid)), {(a, b)}, margins[(a, b)]):
                         bad = mid
