@@ -382,8 +382,10 @@ class _Hull:
 
     @cached_property
     def normals(self) -> np.ndarray:
-        """``(m, 3)`` face normals, link frame."""
-        return _face_normals(self.points, self.faces)
+        """``(m, 3)`` distinct face normals, link frame (the triangles of one flat face share one)."""
+        n = _face_normals(self.points, self.faces)
+        keys = np.ascontiguousarray(np.round(n, 9)).view(np.dtype((np.void, 24))).ravel()
+        return n[np.sort(np.unique(keys, return_index=True)[1])]
 
 
 def _solid_hulls(obj) -> dict[str, list[_Hull]]:
@@ -475,6 +477,19 @@ def _hits(points: np.ndarray, normals: np.ndarray, margin: float, obstacles: _Ob
     return (manifold3d.Manifold.hull_points(points) ^ obstacles.solid(i, margin)).volume() > CONTACT_VOLUME
 
 
+class _Normals:
+    """World face normals of posed hulls, computed when first asked for."""
+
+    def __init__(self, hulls: list[_Hull], poses):
+        self.hulls, self.poses, self.done = hulls, poses, {}
+
+    def __getitem__(self, h: int) -> np.ndarray:
+        if h not in self.done:
+            hull = self.hulls[h]
+            self.done[h] = hull.normals @ self.poses[hull.link][:3, :3].T
+        return self.done[h]
+
+
 def _posed(moving: list[_Hull], poses) -> tuple[np.ndarray, np.ndarray]:
     """World points of the ``moving`` hulls stacked ``(n, 3)``, and the row where each starts
     (one more entry: the end)."""
@@ -523,7 +538,7 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
     ihi = np.maximum(hi[:-1], hi[1:])[:, hs] + CLEARANCE
     near = np.all((ilo < obstacles.hi[os]) & (obstacles.lo[os] < ihi), axis=2)  # (intervals, pairs)
     world = [stacked[a:b] for a, b in zip(starts[:-1], starts[1:])]
-    normals = [h.normals @ poses[h.link][:3, :3].T for h in moving]
+    normals = _Normals(moving, poses)
     # each pair that may meet keeps CLEARANCE if it starts that far apart, else 0 if it starts
     # apart, else (it overlaps at rest: not this joint's doing) it is left out
     margin = np.full(len(hs), np.nan)
@@ -604,7 +619,7 @@ def _parent_limit(joint, limit: float, moving: list[_Hull], poses, parent: _Obst
         return float(limit), ""
     pivot = poses[joint.child][:3, 3]
     axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
-    world = _posed(moving, poses) + ([h.normals @ poses[h.link][:3, :3].T for h in moving],)
+    world = _posed(moving, poses) + (_Normals(moving, poses),)
     # hull pairs that overlap at rest are part of the design (a pin in its bore, a pole in its
     # tube): what counts is pairs apart at rest coming together
     stacked, starts, normals = world
@@ -651,7 +666,7 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        must not overlap); where they do not, the limits of
        the movable joints between them (not those others require open; only the revolute ones
        if there are any: a door stops before a drawer gives up travel) are scaled by the same
-       factor, the largest that separates them (bisection to 0.1 %), until no state changes.
+       factor, the largest that separates them (bisection to 0.4 %), until no state changes.
 
     Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep
     theirs: see :func:`limit_to_ground`).
@@ -731,13 +746,18 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         pair -> margin), overlap at ``poses``."""
         names = sorted({n for pair in pairs for n in pair})
         obstacles = _Obstacles(names, hulls, poses, cache)
-        flat = [(n, h) for n in names for h in range(len(hulls[n]))]
+        index = {n: k for k, n in enumerate(names)}
+        link = np.repeat(np.arange(len(names)), [len(hulls[n]) for n in names])
+        wanted = np.zeros((len(names), len(names)), bool)
+        for a, b in pairs:
+            wanted[index[a], index[b]] = wanted[index[b], index[a]] = True
         lo, hi = obstacles.lo, obstacles.hi
         near = np.all((lo[:, None] < hi[None] + CLEARANCE) & (lo[None] < hi[:, None] + CLEARANCE), axis=2)
+        near &= wanted[link[:, None], link[None, :]]
         out = set()
         for u, v in zip(*np.nonzero(np.triu(near, 1))):
-            pair = tuple(sorted((flat[u][0], flat[v][0])))
-            if pair not in pairs or pair in out:
+            pair = tuple(sorted((names[link[u]], names[link[v]])))
+            if pair in out:
                 continue
             d = margin if not isinstance(margin, dict) else margin[pair]
             if _hits(obstacles.world[u], obstacles.normals(u), d, obstacles, v):
@@ -773,7 +793,7 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
                 if not names:
                     continue
                 good, bad = 0.0, 1.0
-                for _ in range(10):
+                for _ in range(8):
                     mid = 0.5 * (good + bad)
                     if (a, b) in contacts(state(f, (names, mid)), {(a, b)}, margins[(a, b)]):
                         bad = mid
