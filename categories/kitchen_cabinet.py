@@ -2,9 +2,9 @@
 
 X is depth (fronts face +X), Y is width, Z is up. Drawers slide out along +X;
 doors hinge about a vertical axis on the front face at the column edge and swing
-outward; double doors when a column is wider than 0.6 m. A door hinged on the
-cabinet's outer side may open up to ``door_angle``; one hinged beside another
-column stops where the leaf and its handle would leave its own column.
+outward; double doors when a column is wider than 0.6 m. Every hinge opens up to
+``door_angle``; the core (``limit_to_clearance``) stops a leaf hinged beside another
+column before it or its handle meets the neighbour's door or open drawers.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ SCHEMA = Schema((
     Choice("body_finish", "carcass and front material", choices=("painted", "wood")),
     Choice("handle_finish", "handle material", choices=("brushed_metal", "chrome", "plastic")),
     Float("drawer_travel", "drawer opening as a fraction of depth", "", 0.5, 0.75),
-    Float("door_angle", "opening angle of a door hinged on the cabinet's outer side", "rad", math.pi / 2,
+    Float("door_angle", "hinge opening angle (a door beside another column may stop earlier)", "rad", math.pi / 2,
           0.65 * math.pi),
     *GROWTH.flags(),
 ))
