@@ -2,9 +2,9 @@
 
 X is depth (fronts face +X), Y is width, Z is up. Drawers slide out along +X;
 doors hinge about a vertical axis on the front face at the column edge and swing
-outward; double doors when a column is wider than 0.6 m. A door hinged on the
-cabinet's outer side may open up to ``door_angle``; one hinged beside another
-column stops where the leaf and its handle would leave its own column.
+outward; double doors when a column is wider than 0.6 m. Every hinge opens up to
+``door_angle``; the core (``limit_to_clearance``) stops a leaf hinged beside another
+column before it or its handle meets the neighbour's door or open drawers.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ SCHEMA = Schema((
     Choice("body_finish", "carcass and front material", choices=("painted", "wood")),
     Choice("handle_finish", "handle material", choices=("brushed_metal", "chrome", "plastic")),
     Float("drawer_travel", "drawer opening as a fraction of depth", "", 0.5, 0.75),
-    Float("door_angle", "opening angle of a door hinged on the cabinet's outer side", "rad", math.pi / 2,
+    Float("door_angle", "hinge opening angle (a door beside another column may stop earlier)", "rad", math.pi / 2,
           0.65 * math.pi),
     *GROWTH.flags(),
 ))
@@ -158,19 +158,14 @@ def _doors(bp, carcass, p, c, n_cols, fys, fzs, handles):
     for k, (ya, yb, hinge) in enumerate(leaves):
         name = f"door_{c}_{k}"
         pieces = [g.box_between([xf, ya, fzs[0]], [xf + ft, yb, fzs[1]], "front", bevel=0.002)]
-        reach, standoff = yb - ya, ft  # how far the leaf reaches from its hinge, and stands proud
         if handles:
             hy = yb - 0.05 if hinge == "left" else ya + 0.05
             hz = fzs[0] + 0.8 * (fzs[1] - fzs[0]) if fzs[1] - fzs[0] < 0.9 else fzs[0] + 0.6 * (fzs[1] - fzs[0])
             handle = _handle(p, (xf + ft, hy, hz), (0.0, 0.0, 1.0), min(0.3 * (fzs[1] - fzs[0]), 0.3))
             pieces += handle
-            proud = max(piece.bounds[1, 0] for piece in handle) - xf
-            reach, standoff = (abs(hy - (ya if hinge == "left" else yb)), proud)
         bp.add(name, "door", pieces)
         # hinge on the front face at the outer edge; the axis sign makes it swing out (+X)
         hy, axis = (ya, (0, 0, -1)) if hinge == "left" else (yb, (0, 0, 1))
-        outer = (hinge == "left" and c == 0 and k == 0) or (hinge == "right" and c == n_cols - 1)
-        # beside another column the open leaf and its handle must stay within this column's
-        # width (else they sweep into the neighbour's open drawers or door): tan(angle) <= reach / proud
-        limit = p["door_angle"] if outer else min(p["door_angle"], math.atan2(reach, standoff) - 0.01)
-        bp.join(J.revolute(carcass, name, (xf + ft, hy, fzs[0]), axis, 0.0, limit, role="hinge"))
+        # door_angle is the hinge's mechanical maximum; the core stops a leaf beside another
+        # column before it (or its handle) meets the neighbour's open drawers or door
+        bp.join(J.revolute(carcass, name, (xf + ft, hy, fzs[0]), axis, 0.0, p["door_angle"], role="hinge"))
