@@ -93,8 +93,12 @@ class Grown:
 class Grammar:
     """A category's growth rules: node kinds and their :class:`Node` rules, grown from ``root``."""
 
-    def __init__(self, root: str, nodes: Mapping[str, Node], max_nesting: int = 3) -> None:
+    def __init__(self, root: str, nodes: Mapping[str, Node], max_nesting: int = 3,
+                 accept: Callable[[Grown], bool] | None = None, tries: int = 50) -> None:
+        """``accept``: a rule every grown tree must satisfy (an all-shelf cabinet would not move); a tree
+        that fails it is drawn again from the same stream, at most ``tries`` times."""
         self.root, self.nodes, self.max_nesting = root, dict(nodes), int(max_nesting)
+        self.accept, self.tries = accept, int(tries)
         known = set(self.nodes)
         if root not in known:
             raise ModelError(f"grammar root {root!r} has no rule")
@@ -131,8 +135,14 @@ class Grammar:
 
     # -- growing ------------------------------------------------------------------------------------------
     def grow(self, params: dict, rng: np.random.Generator) -> Grown:
-        """Draw the tree: required children, flagged branches, choices and repeats, depth-bounded."""
-        return self._grow(self.root, self.root, 0, (), params, rng)
+        """Draw the tree: required children, flagged branches, choices and repeats, depth-bounded;
+        again while ``accept`` rejects it."""
+        for _ in range(self.tries):
+            tree = self._grow(self.root, self.root, 0, (), params, rng)
+            if self.accept is None or self.accept(tree):
+                return tree
+        raise ModelError(f"{self.root}: no tree the rules accept in {self.tries} draws with these parameters;"
+                         " force a branch that moves (see `infmob params`)")
 
     def _count(self, kind: str, child: str, c: Count, params: dict, rng: np.random.Generator) -> int:
         if isinstance(c, bool):

@@ -81,3 +81,31 @@ def drawer_box(width: float, height: float, depth: float, front: float, wall: fl
     anchors = {"slide": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 0, 1)),
                "handle": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 1, 0))}
     return Assembly.single(label, pieces, anchors)
+
+
+def carcass(width: float, depth: float, z0: float, z1: float, board: float, material: str) -> list:
+    """A cabinet carcass from ``z0`` to ``z1``: two sides, bottom, top and a thin back (half a board)."""
+    xb, xf, y0, y1, t = -depth / 2, depth / 2, -width / 2, width / 2, board
+    return [g.box_between([xb, y0, z0], [xf, y0 + t, z1], material),
+            g.box_between([xb, y1 - t, z0], [xf, y1, z1], material),
+            g.box_between([xb, y0 + t, z0], [xf, y1 - t, z0 + t], material),
+            g.box_between([xb, y0 + t, z1 - t], [xf, y1 - t, z1], material),
+            g.box_between([xb, y0 + t, z0 + t], [xb + t * 0.5, y1 - t, z1 - t], material)]
+
+
+def shelf(xs, ys, z: float, board: float, material: str):
+    """A shelf board between the carcass sides, set back 1 cm from the front."""
+    return g.box_between([xs[0] + board, ys[0], z - board / 2], [xs[1] - 0.01, ys[1], z + board / 2], material)
+
+
+def box_drawer(front_box, box, wall: float, front: str, body: str) -> list:
+    """A drawer front (``front_box``: x0, x1, y0, y1, z0, z1) and an open box behind it (``box``)."""
+    fx0, fx1, fy0, fy1, fz0, fz1 = front_box
+    bx0, bx1, by0, by1, bz0, bz1 = box
+    wt = wall
+    return [g.box_between([fx0, fy0, fz0], [fx1, fy1, fz1], front, bevel=0.002),
+            g.box_between([bx0, by0, bz0], [bx1, by1, bz0 + wt], body),
+            g.box_between([bx0, by0, bz0 + wt], [bx1, by0 + wt, bz1], body),
+            g.box_between([bx0, by1 - wt, bz0 + wt], [bx1, by1, bz1], body),
+            g.box_between([bx0, by0 + wt, bz0 + wt], [bx0 + wt, by1 - wt, bz1], body),
+            g.box_between([bx1 - wt, by0 + wt, bz0 + wt], [bx1, by1 - wt, bz1], body)]
