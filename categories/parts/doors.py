@@ -1,0 +1,140 @@
+"""Door parts: frames (jambs, head, stops, architraves), leaves (slab, stile-and-rail with panels or
+glass lites), glazing beads, hinge knuckles, knobs, levers and roses.
+
+World-aligned frames: a door frame stands in the yz plane around x = 0, its front face toward +x.
+Sizes of real interior doors: leaves 0.8-1.0 x 2.0-2.1 m, 35-60 mm thick; jambs as deep as the
+wall; architraves 50-90 mm; handles at 0.95-1.05 m with a 60 mm backset (BS EN 1906, DIN 18101).
+"""
+
+from __future__ import annotations
+
+from infmob_usd import geometry as g
+
+CASING_T = 0.016  # architrave thickness
+STOP = (0.012, 0.014)  # door stop: protrusion into the opening, depth
+REVEAL = 0.005  # architraves set back from the jamb's inner face
+ROSE = (0.028, 0.008)  # handle rose radius, thickness
+
+
+def frame(x_front: float, depth: float, opening, head: float, jamb: float, casing: float, threshold: float,
+          stop_x: float) -> list[g.Piece]:
+    """Two jambs and a head around the ``opening`` (y0, y1) up to ``head``, stops behind the leaf at
+    ``stop_x``, architraves on both faces, and a threshold when ``threshold`` > 0."""
+    oy0, oy1 = opening
+    xb, x1 = x_front - depth, x_front
+    zh = head
+    pieces = [g.box_between([xb, oy0 - jamb, 0.0], [x1, oy0, zh + jamb], "frame"),
+              g.box_between([xb, oy1, 0.0], [x1, oy1 + jamb, zh + jamb], "frame"),
+              g.box_between([xb, oy0, zh], [x1, oy1, zh + jamb], "frame")]
+    if threshold:
+        pieces.append(g.box_between([xb, oy0, 0.0], [x1, oy1, threshold], "frame", bevel=0.004))
+    sp, sd = STOP
+    pieces += [g.box_between([stop_x - sd, oy0, threshold], [stop_x, oy0 + sp, zh], "frame"),
+               g.box_between([stop_x - sd, oy1 - sp, threshold], [stop_x, oy1, zh], "frame"),
+               g.box_between([stop_x - sd, oy0 + sp, zh - sp], [stop_x, oy1 - sp, zh], "frame")]
+    rv, cw = REVEAL, casing
+    for xa0, xa1 in ((x1, x1 + CASING_T), (xb - CASING_T, xb)):
+        pieces += [g.box_between([xa0, oy0 - rv - cw, 0.0], [xa1, oy0 - rv, zh + rv + cw], "frame", bevel=0.003),
+                   g.box_between([xa0, oy1 + rv, 0.0], [xa1, oy1 + rv + cw, zh + rv + cw], "frame", bevel=0.003),
+                   g.box_between([xa0, oy0 - rv, zh + rv], [xa1, oy1 + rv, zh + rv + cw], "frame", bevel=0.003)]
+    return pieces
+
+
+def glass(holes, x0: float, x1: float, bead: str = "leaf") -> list[g.Piece]:
+    """A glass pane in the middle of each hole (a0, b0, a1, b1 in y, z), with beads on both faces."""
+    xm = (x0 + x1) / 2
+    out = []
+    for a0, b0, a1, b1 in holes:
+        out.append(g.box_between([xm - 0.003, a0, b0], [xm + 0.003, a1, b1], "glass"))
+        for xa, xb in ((xm + 0.003, xm + 0.013), (xm - 0.013, xm - 0.003)):
+            e = 0.012
+            out += [g.box_between([xa, a0, b0], [xb, a0 + e, b1], bead),
+                    g.box_between([xa, a1 - e, b0], [xb, a1, b1], bead),
+                    g.box_between([xa, a0 + e, b0], [xb, a1 - e, b0 + e], bead),
+                    g.box_between([xa, a0 + e, b1 - e], [xb, a1 - e, b1], bead)]
+    return out
+
+
+LEAF = dict(bottom_rail=0.22, rail=0.12, lite_width=0.32, lite_top=0.25, lite_bottom=0.15)
+"""Stile-and-rail proportions: bottom rail, rails between rows (and the lock rail at the handle);
+a flat leaf's lites: width as a fraction of the leaf, their top below the leaf top, bottom above the handle."""
+
+
+def leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int) -> list[g.Piece]:
+    """A plain slab, or a stile-and-rail frame with ``count`` recessed or raised panels or glass lites
+    in its holes (glazing: ``none``, the ``top`` row, or ``full``)."""
+    (x0, x1), (y0, y1), (z0, z1) = xs, ys, zs
+    T = x1 - x0
+    if style == "flat":
+        if glazing == "none":
+            return [g.box_between([x0, y0, z0], [x1, y1, z1], "leaf", bevel=0.002)]
+        yc, lw = (y0 + y1) / 2, LEAF["lite_width"] * (y1 - y0)  # one lite, or a column of four
+        top, bottom = z1 - LEAF["lite_top"], handle_z + LEAF["lite_bottom"]
+        n = 1 if glazing == "top" else 4
+        step = (top - bottom) / n
+        holes = [(yc - lw / 2, bottom + k * step + (0.04 if n > 1 else 0.0), yc + lw / 2, bottom + (k + 1) * step)
+                 for k in range(n)]
+        return [g.panel([x0, y0, z0], [x1, y1, z1], "leaf", "x", holes=holes)] + glass(holes, x0, x1)
+    cols = 2 if count in (4, 6) else 1
+    rows = count // cols
+    bottom, mid = LEAF["bottom_rail"], LEAF["rail"]
+    iy0, iy1 = y0 + stile, y1 - stile
+    lock0, lock1 = handle_z - mid / 2, handle_z + mid / 2  # rows split above and below the lock rail
+    below = rows // 3 if rows > 2 else (1 if rows == 2 else 0)
+    above = rows - below
+    bands = []
+    if below:
+        h = (lock0 - (z0 + bottom) - (below - 1) * mid) / below
+        bands += [(z0 + bottom + k * (h + mid), z0 + bottom + k * (h + mid) + h) for k in range(below)]
+    top0 = lock1 if below else z0 + bottom
+    h = (z1 - stile - top0 - (above - 1) * mid) / above
+    bands += [(top0 + k * (h + mid), top0 + k * (h + mid) + h) for k in range(above)]
+    cw = (iy1 - iy0 - (cols - 1) * mid) / cols
+    holes, glazed = [], []
+    for r, (b0, b1) in enumerate(bands):
+        for c in range(cols):
+            holes.append((iy0 + c * (cw + mid), b0, iy0 + c * (cw + mid) + cw, b1))
+            glazed.append(glazing == "full" or (glazing == "top" and r == len(bands) - 1))
+    pieces = [g.panel([x0, y0, z0], [x1, y1, z1], "leaf", "x", holes=holes)]
+    xm = (x0 + x1) / 2
+    for (ha0, hb0, ha1, hb1), is_glass in zip(holes, glazed):
+        if is_glass:
+            pieces += glass([(ha0, hb0, ha1, hb1)], x0, x1)
+            continue
+        pt = 0.45 * T  # panel board, centred in the leaf
+        pieces.append(g.box_between([xm - pt / 2, ha0, hb0], [xm + pt / 2, ha1, hb1], "leaf"))
+        if style == "raised":  # a raised field on both faces
+            m = min(0.045, 0.2 * (ha1 - ha0), 0.2 * (hb1 - hb0))
+            ft = 0.78 * T
+            pieces.append(g.box_between([xm - ft / 2, ha0 + m, hb0 + m], [xm + ft / 2, ha1 - m, hb1 - m], "leaf",
+                                        bevel=0.1 * T))
+    return pieces
+
+
+def knuckles(x: float, y: float, z0: float, z1: float) -> list[g.Piece]:
+    """Three hinge knuckles on the pivot line (decoration: they turn in place, no collision)."""
+    out = []
+    for zc in (z0 + 0.2, z1 - 0.2, (z0 + z1) / 2 + 0.1):
+        kn = g.cylinder([x, y, zc - 0.05], [x, y, zc + 0.05], 0.007, "hinge", 16)
+        out.append(g.Piece(kn.vertices, kn.faces, "hinge", []))
+    return out
+
+
+def rose(face: float, n: float, y: float, z: float) -> g.Piece:
+    """The round plate a knob or lever turns in, on the face at ``face`` (outward ``n`` = +-1)."""
+    return g.cylinder([face, y, z], [face + n * ROSE[1], y, z], ROSE[0], "handle", 32)
+
+
+def knob(x0: float, n: float, y: float, z: float, r: float) -> list[g.Piece]:
+    """A round door knob out of the face along ``n`` from ``x0``: a neck, a ball and a cap (symmetric)."""
+    return [g.cylinder([x0, y, z], [x0 + n * 0.03, y, z], 0.011, "handle", 24),
+            g.cylinder([x0 + n * 0.028, y, z], [x0 + n * 0.05, y, z], r, "handle", 32),
+            g.cylinder([x0 + n * 0.05, y, z], [x0 + n * 0.056, y, z], 0.75 * r, "handle", 32)]
+
+
+def lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> list[g.Piece]:
+    """A lever turning about x through ``(x0, y, z)``: a neck along ``n`` and a hollow grip along ``u``
+    (+-1 in y) parallel to the face; the core adds the counterweight heel that balances it."""
+    xg = x0 + n * 0.042  # grip axis
+    return [g.cylinder([x0, y, z], [x0 + n * 0.05, y, z], 0.011, "handle", 24),
+            g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20).with_sheet(0.0012)]
