@@ -1,0 +1,117 @@
+"""Sanitary ware: a close-coupled toilet's ceramic base, cistern and lid, seat and cover, flush
+button and trip lever.
+
+World-aligned frames: the bowl faces +x, the cistern is at -x. Sizes of real close-coupled WCs:
+seat height 0.40-0.50 m, rims 0.34-0.40 x 0.40-0.48 m, cisterns 0.38-0.50 m wide, 0.15-0.21 m deep,
+vitreous china walls 10-16 mm (EN 997; manufacturers' dimension sheets: Ideal Standard, Roca).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.frames import Frame
+
+CLEAR = 0.0025  # a button in its hole
+GAP = 0.003
+CISTERN_WALL = 0.012
+LID = dict(overhang=0.008, lip=0.015, lip_t=0.008)  # cistern lid overhang, locating lip depth, thickness
+
+
+def oval(piece: g.Piece, cx: float, sx: float) -> g.Piece:
+    """A piece built about the z axis, stretched by ``sx`` along x and its axis moved to x = ``cx``."""
+    m = np.diag([sx, 1.0, 1.0, 1.0])
+    m[0, 3] = cx
+    return piece.transformed(m)
+
+
+def ceramic_base(a: float, b: float, wall: float, z_r: float, x_c: float, deck, tab_w: float, hinge) -> list:
+    """An oval bowl (a thin wall of revolution stretched along x: hollow for the simulator) with a flat
+    rim and a trap, on a pedestal, a rear deck and column under the cistern, and hinge posts.
+
+    ``deck``: (x0, x1, width); ``hinge``: (x, z) of the seat's hinge line.
+    """
+    sx = a / b
+    z_bot = 0.42 * z_r  # bowl bottom (the trap)
+    hb = z_r - z_bot
+    outer = [(0.32 * b, z_bot), (0.55 * b, z_bot + 0.22 * hb), (0.82 * b, z_bot + 0.55 * hb),
+             (0.96 * b, z_bot + 0.85 * hb), (b - 0.004, z_r - 0.03)]
+    pieces = [oval(g.shell(outer, wall, "ceramic", sections=48), x_c, sx),
+              oval(g.shell([(b, z_r - 0.035), (b, z_r)], 0.032, "ceramic", sections=48), x_c, sx),
+              oval(g.disc((0, 0, z_bot - 0.005), 0.34 * b, 0.03, "ceramic", 32), x_c, sx)]
+    ped = [(0.0, 0.0), (0.62 * b, 0.0), (0.62 * b, 0.012), (0.5 * b, 0.05), (0.4 * b, 0.5 * z_bot),
+           (0.36 * b, z_bot + 0.01), (0.0, z_bot + 0.01)]
+    x_p = x_c - 0.25 * a
+    pieces.append(oval(g.revolve(ped, "ceramic", sections=40), x_p, 1.35 * sx))
+    deck_x0, deck_x1, deck_w = deck
+    z_deck0 = 0.55 * z_r
+    pieces.append(g.box_between([deck_x0, -deck_w / 2, z_deck0], [deck_x1, deck_w / 2, z_r], "ceramic", bevel=0.01))
+    col_x0 = max(deck_x0, x_p - 1.35 * a * 0.62 + 0.02)
+    pieces.append(g.box_between([col_x0, -0.34 * b, 0.01], [deck_x1, 0.34 * b, z_deck0 + 0.01], "ceramic", bevel=0.01))
+    x_h, z_h = hinge
+    for s in (-1, 1):  # hinge posts beside the seat and cover tabs
+        y0, y1 = sorted((s * (tab_w / 2 + 0.006), s * (tab_w / 2 + 0.026)))
+        pieces.append(g.box_between([x_h - 0.018, y0, z_r], [x_h + 0.008, y1, z_h - 0.004], "chrome", bevel=0.003))
+    return pieces
+
+
+def cistern(xs, ys, z0: float, z1: float, holes) -> list[g.Piece]:
+    """A hollow cistern of five walls (its front with ``holes`` in y, z)."""
+    (x_tb, x_tf), (y0, y1), wt = xs, ys, CISTERN_WALL
+    return [g.box_between([x_tb, y0, z0], [x_tf, y1, z0 + wt], "ceramic", bevel=0.004),
+            g.panel([x_tf - wt, y0, z0 + wt], [x_tf, y1, z1], "ceramic", "x", holes=holes),
+            g.box_between([x_tb, y0, z0 + wt], [x_tb + wt, y1, z1], "ceramic"),
+            g.box_between([x_tb + wt, y0, z0 + wt], [x_tf - wt, y0 + wt, z1], "ceramic"),
+            g.box_between([x_tb + wt, y1 - wt, z0 + wt], [x_tf - wt, y1, z1], "ceramic")]
+
+
+def cistern_lid(xs, ys, z: float, thickness: float) -> list[g.Piece]:
+    """An overhanging slab resting at ``z`` with a locating lip inside the cistern walls."""
+    (x_tb, x_tf), (y0, y1) = xs, ys
+    ov, lip, t = LID["overhang"], LID["lip"], LID["lip_t"]
+    gi = CISTERN_WALL + 0.004  # lip inset from the outer faces
+    return [g.box_between([x_tb - ov, y0 - ov, z], [x_tf + ov, y1 + ov, z + thickness], "ceramic", bevel=0.006),
+            g.box_between([x_tb + gi, y0 + gi, z - lip], [x_tb + gi + t, y1 - gi, z], "ceramic"),
+            g.box_between([x_tf - gi - t, y0 + gi, z - lip], [x_tf - gi, y1 - gi, z], "ceramic"),
+            g.box_between([x_tb + gi + t, y0 + gi, z - lip], [x_tf - gi - t, y0 + gi + t, z], "ceramic"),
+            g.box_between([x_tb + gi + t, y1 - gi - t, z - lip], [x_tf - gi - t, y1 - gi, z], "ceramic")]
+
+
+def seat(a: float, b: float, x_c: float, z0: float, thick: float, ring: float, tab) -> list[g.Piece]:
+    """An oval seat ring resting at ``z0`` and its rear tab (x0, x1, width) up to the hinge."""
+    x0, x1, w = tab
+    return [oval(g.shell([(b, z0), (b, z0 + thick)], ring, "seat", sections=48), x_c, a / b),
+            g.box_between([x0, -w / 2, z0], [x1, w / 2, z0 + thick], "seat", bevel=0.004)]
+
+
+def cover(a: float, b: float, x_c: float, z0: float, thick: float, tab) -> list[g.Piece]:
+    """An oval cover lying at ``z0`` and its rear tab."""
+    x0, x1, w = tab
+    return [oval(g.disc((0, 0, z0 + thick / 2), b, thick, "seat", 48), x_c, a / b),
+            g.box_between([x0, -w / 2, z0], [x1, w / 2, z0 + thick], "seat", bevel=0.003)]
+
+
+def flush_ring(at, r: float) -> g.Piece:
+    """A chrome ring around a flush button hole, on a face whose outward normal is ``at.z``."""
+    ring = g.shell([(r + CLEAR + 0.008, 0.0), (r + CLEAR + 0.008, 0.004)], 0.008, "chrome", sections=32,
+                   convex_sectors=12)
+    return ring.transformed(at.matrix)
+
+
+def flush_button(x_face: float, behind: float, z: float, r: float) -> list[g.Piece]:
+    """A round flush button from ``behind`` the face to 12.5 mm proud of it, with a smaller cap."""
+    return [g.cylinder([x_face - behind, 0.0, z], [x_face + 0.011, 0.0, z], r, "chrome", 32),
+            g.cylinder([x_face + 0.011, 0.0, z], [x_face + 0.0125, 0.0, z], r * 0.8, "chrome", 32)]
+
+
+def trip_lever(xa: float, ys: float, z: float, length: float) -> list[g.Piece]:
+    """A flush lever turning about y through ``(xa, ys, z)`` on a left side wall (it stands off to -y):
+    a hub and a grip to +x; the core adds the counterweight heel that balances it."""
+    return [g.cylinder([xa, ys, z], [xa, ys - 0.016, z], 0.011, "chrome", 24),
+            g.box_between([xa, ys - 0.015, z - 0.006], [xa + length, ys - 0.008, z + 0.006], "chrome", bevel=0.002)]
+
+
+def on_face(x: float, z: float) -> Frame:
+    """A frame on a +x-facing face at height ``z`` (its z along +x)."""
+    return Frame.at((x, 0.0, z), z=(1, 0, 0), x=(0, 0, -1))
