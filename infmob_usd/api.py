@@ -1,13 +1,15 @@
-"""The public API: ``generate``, ``list_categories``, ``get_category``."""
+"""The public API: ``generate``, ``save``, ``list_categories``, ``get_category``."""
 
 from __future__ import annotations
 
 import time
+from pathlib import Path
 from types import ModuleType
 from typing import Any
 
 from . import physical
 from .errors import ModelError, ParameterError, UnknownCategoryError
+from .layers import write_object
 from .model import ArticulatedObject, build
 from .seeding import streams
 
@@ -68,6 +70,12 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
     obj.timings = {"sampling": t1 - t0, "geometry": t2 - t1 + obj.timings["geometry"],
                    "textures": obj.timings["textures"]}
     return obj
+
+
+def save(obj: ArticulatedObject, folder: str | Path) -> Path:
+    """Write ``obj`` into ``folder/<name>/`` (atomically: written under a temporary name, then
+    renamed) and return that path."""
+    return write_object(obj, Path(folder))
 
 
 def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict | None = None,

@@ -61,12 +61,12 @@ def clean_partial(out: Path) -> list[Path]:
 
 def make_one(job: Job, out: str) -> dict:
     """Generate and save one object; return its manifest row (or an error row)."""
-    from .api import generate
+    from .api import generate, save
 
     t0 = time.perf_counter()
     try:
         obj = generate(job.category, seed=job.seed, texture_size=job.texture_size, **dict(job.overrides))
-        folder = obj.save(Path(out) / job.category)
+        folder = save(obj, Path(out) / job.category)
     except Exception as exc:  # one bad object must not stop the batch
         err_dir = Path(out) / ERRORS
         err_dir.mkdir(parents=True, exist_ok=True)

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -121,12 +120,6 @@ class ArticulatedObject:
                 motion[:3, :3] = axis_angle(j.axis, value)
             pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ motion
         return pose
-
-    def save(self, folder: str | Path) -> Path:
-        """Write the object into ``folder/<name>/`` (atomically) and return that path."""
-        from .layers import write_object
-
-        return write_object(self, Path(folder))
 
 
 def _translation(t) -> np.ndarray:
