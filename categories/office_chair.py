@@ -29,6 +29,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
+from infmob_usd.errors import ParameterError
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -124,7 +125,9 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     seat = swivel_seat(bp, "lift", H, W, D, tc, "square", xc, r_lift, hm)
     travel = gas_lift(bp, base["name"], base["floor"], seat["lift_top"], r_lift, p["lift_travel"])
     bp.join(J.continuous("lift", "seat", (0.0, 0.0, seat["lift_top"]), (0, 0, 1), role="swivel"))
-    assert travel > 0.04
+    if travel <= 0.04:
+        raise ParameterError(f"the gas lift has only {travel * 100:.1f} cm of travel under a seat at"
+                             f" {H:g} m; raise seat_height or lower wheel_radius")
 
     back_front = None
     if p["has_back"]:
