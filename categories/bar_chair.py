@@ -129,10 +129,9 @@ def _disc_base(bp: Blueprint, radius: float, bore: float, metal: bool) -> dict:
     prof.append((0.0, top))
     disc = g.revolve(prof, "base", sections=64)
     boss = g.shell([(bore + 0.02, top - 0.004), (bore + 0.014, top + 0.03)], 0.014, "base", sections=48)
-    felt = g.disc([0, 0, 0.0015], radius - 0.03, 0.003, "pad", 48)
-    felt.convex = []
+    felt = g.disc([0, 0, 0.0015], radius - 0.03, 0.003, "pad", 48).replace(convex=[])
     if metal:
-        disc.sheet = 0.0  # a cast disc: solid on purpose (a heavy, stable foot)
+        disc = disc.replace(sheet=0.0)  # a cast disc: solid on purpose (a heavy, stable foot)
     bp.add("base", "base", [disc, boss, felt])
     return {"name": "base", "floor": top, "top": top + 0.03}
 
@@ -145,8 +144,7 @@ def _foot_ring(z: float, radius: float, col_r: float) -> list[g.Piece]:
            for k in range(n + 1)]
     pieces = [g.cylinder(a, b, rr, "ring", 16) for a, b in zip(pts[:-1], pts[1:])]
     for k in range(n):
-        pieces.append(g.sphere(pts[k], rr, "ring"))
-        pieces[-1].convex = []
+        pieces.append(g.sphere(pts[k], rr, "ring").replace(convex=[]))
     for k in range(4):
         a = 2 * math.pi * k / 4 + math.pi / 4
         d = np.array([math.cos(a), math.sin(a), 0.0])

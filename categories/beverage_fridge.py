@@ -166,9 +166,7 @@ def _cabinet(p, outer, cavity, zk, zc):
     wy0, wy1, wz0, wz1, wx0 = cy0 - L, cy1 + L, cz0 - L, cz1 + L, cx0 - L  # wall inner faces
 
     def wall(lo, hi):
-        piece = g.box_between(lo, hi, "body")
-        piece.sheet = SHEET
-        return piece
+        return g.box_between(lo, hi, "body").replace(sheet=SHEET)
 
     pieces = [
         wall([xb0, y0, zf], [xb1, wy0, H]),  # left
@@ -221,7 +219,7 @@ def _door(p, box, hole, hinge_left):
     h0, v0, h1, v1 = hole
     ft = x1 - x0
     frame = g.panel([x0, y0, z0], [x1, y1, z1], "frame", "x", holes=[hole])
-    frame.sheet = SHEET
+    frame = frame.replace(sheet=SHEET)
     glass = []
     for xg in (x1 - 0.3 * ft, x0 + 0.2 * ft):  # two panes: the insulated glazing
         pane = g.box_between([xg - 0.002, h0 - 0.004, v0 - 0.004], [xg + 0.002, h1 + 0.004, v1 + 0.004], "glass")

@@ -90,8 +90,7 @@ def _finish(name: str) -> str:
 
 
 def _sheet(piece: Piece, t: float = SHEET) -> Piece:
-    piece.sheet = t
-    return piece
+    return piece.replace(sheet=t)
 
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:

@@ -135,8 +135,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     leaf = _leaf(p, (x0, x1), (ly0, ly1), (z0, z1), zk)
     # hinge knuckles on the pivot line: decoration (no collision), they turn in place
     for zc in (z0 + 0.2, z1 - 0.2, (z0 + z1) / 2 + 0.1):
-        kn = g.cylinder([x1, y_hinge, zc - 0.05], [x1, y_hinge, zc + 0.05], 0.007, "hinge", 16)
-        kn.convex = []
+        kn = g.cylinder([x1, y_hinge, zc - 0.05], [x1, y_hinge, zc + 0.05], 0.007, "hinge", 16).replace(convex=[])
         leaf.append(kn)
     handle = p["handle"]
     if handle == "pull":
@@ -261,7 +260,7 @@ def _lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> 
     neck = g.cylinder([x0, y, z], [x0 + n * 0.05, y, z], 0.011, "handle", 24)
     xg = x0 + n * 0.042  # grip axis
     grip = g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20)
-    grip.sheet = 0.0012  # a tube
+    grip = grip.replace(sheet=0.0012)  # a tube
     m, com, _ = inertial([(grip, 1.0e6)])  # any density above the mass floor
     moment = m * abs(com[1] - y)
     hz, hx = 0.026, 0.022

@@ -196,9 +196,9 @@ def caster_pieces(style: str, rw: float, trail: float) -> tuple[list, list, floa
         tyre = g.cylinder([x0, yw, rw], [x1, yw, rw], rw, "wheel", 32)
         # the collider is 0.6 mm inside the tyre: the fixed-root simulators must not drag the
         # wheels over the floor when they turn them (the mesh still touches z = 0)
-        tyre.convex = [g.cylinder([x0, yw, rw], [x1, yw, rw], rw - WHEEL_INSET, "wheel", 32).vertices]
+        tyre = tyre.replace(convex=[g.cylinder([x0, yw, rw], [x1, yw, rw], rw - WHEEL_INSET, "wheel", 32).vertices])
         hub = g.cylinder([x0 + 0.001, yw, rw], [x1 - 0.001, yw, rw], 0.55 * rw, "caster", 24)
-        hub.convex = []  # inside the tyre: decoration only
+        hub = hub.replace(convex=[])  # inside the tyre: decoration only
         wheels.append(([tyre, hub], (x0, x1)))
     # swivel stem and bearing
     stem_top = z_top + 0.012
@@ -245,13 +245,11 @@ def star_base(bp: Blueprint, n_legs: int, radius: float, rw: float, r_lift: floa
                 pts += [(x, y, z0), (x, 0.8 * y, z0 + h), (x, y, z0 + 0.75 * h)]
         pts += [(x_out + 0.012, y, z_lb + 0.2 * ht) for y in (-0.3 * wt, 0.3 * wt)]
         pts += [(x_out + 0.012, y, z_lb + 0.7 * ht) for y in (-0.25 * wt, 0.25 * wt)]
-        leg = _hull(pts, "base").transformed(m)
-        leg.sheet = sheet
+        leg = _hull(pts, "base").transformed(m).replace(sheet=sheet)
         pieces.append(leg)
         tip = _frame(a, radius)
         pieces.append(g.cylinder([0, 0, z_s + 0.003], [0, 0, z_lb + 0.004], 0.012, "base", 20).transformed(tip))
-    for pc in pieces[:2]:
-        pc.sheet = sheet
+    pieces[:2] = [pc.replace(sheet=sheet) for pc in pieces[:2]]
     bp.add(name, "base", pieces)
 
     for i in range(n_legs):
@@ -329,8 +327,7 @@ def swivel_seat(bp: Blueprint, parent: str, top: float, width: float, depth: flo
     # height lever under the right side
     zl = z_mech0 + 0.3 * hm
     reach = (width / 2 - 0.03) if shape != "round" else 0.7 * width / 2
-    pieces.append(g.cylinder([xc + 0.03, 0.04, zl], [xc + 0.03, reach, zl], 0.0045, "handle", 12))
-    pieces[-1].name = "handle"
+    pieces.append(g.cylinder([xc + 0.03, 0.04, zl], [xc + 0.03, reach, zl], 0.0045, "handle", 12, name="handle"))
     pieces.append(g.box([0.04, 0.02, 0.012], [xc + 0.04, reach, zl], "handle", bevel=0.003, name="handle"))
     bp.add(name, "seat", pieces)
     return {"name": name, "lift_top": lift_top, "z_pan0": z_pan0, "z_mech0": z_mech0, "x0": x0, "x1": x1,

@@ -166,12 +166,10 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
         g.box_between([xd1 - 0.008, hole[0], hole[1]], [xd1 - 0.003, hole[2], hole[3]], "glass"),
         g.box_between([xd0 + 0.003, hole[0], hole[1]], [xd0 + 0.007, hole[2], hole[3]], "glass"),
     ]
-    for pc in door[:3]:
-        pc.sheet = SHEET
+    door[:3] = [pc.replace(sheet=SHEET) for pc in door[:3]]
     handle = g.bar_handle((xd1, 0.0, z_dtop - 0.045), (1, 0, 0), (0, 1, 0),
                           p["handle_length"] * (dy1 - dy0), "handle", standoff=HANDLE_STANDOFF, radius=HANDLE_R)
-    for pc in handle:
-        pc.sheet = 0.0012  # a tube
+    handle = [pc.replace(sheet=0.0012) for pc in handle]  # a tube
     bp.add("door", "door", door + handle)
     # hinge on the front face at the bottom edge; about +Y the top falls forward (+X)
     bp.join(J.revolute(body, "door", (xd1, 0.0, z_h), (0, 1, 0), 0.0, DOOR_ANGLE, role="hinge"))
@@ -252,10 +250,8 @@ def _casing(p, outer, zs, cavity, is_range):
         pieces.append(g.box_between([xb, y0, ztop], [xd1, y1, H], "cooktop"))
     else:
         pieces.append(g.box_between([xb, y0, ztop], [xf - T, y1, H], "body"))
-    for pc in pieces[:6]:
-        pc.sheet = SHEET
-    for pc in pieces[7:12]:
-        pc.sheet = SHEET
+    pieces[:6] = [pc.replace(sheet=SHEET) for pc in pieces[:6]]
+    pieces[7:12] = [pc.replace(sheet=SHEET) for pc in pieces[7:12]]
     for x in (xb + 0.05, xf - 0.06):
         for y in (y0 + 0.05, y1 - 0.05):
             pieces.append(g.cylinder([x, y, 0.0], [x, y, z_pl], 0.015, "feet", 16))
@@ -279,8 +275,7 @@ def _drawer(bp, body, p, xs, ys, zs):
         g.box_between([tx0, ty1 - wt, tz0 + wt], [fx0, ty1, tz1], "body"),
         g.box_between([tx0, ty0 + wt, tz0 + wt], [tx0 + wt, ty1 - wt, tz1], "body"),
     ]
-    for pc in [front, *tray]:
-        pc.sheet = SHEET
+    front, *tray = [pc.replace(sheet=SHEET) for pc in [front, *tray]]
     pull = g.pull_handle((xd1, 0.0, z_dt - 0.022), (1, 0, 0), (0, 1, 0), 0.5 * (y1 - y0), "handle",
                          depth=0.016, lip=0.014)
     bp.add("drawer", "drawer", [front, *tray, *pull])
@@ -431,8 +426,7 @@ def _control_panel(bp, body, p, xs, ys, zs, n_knobs):
         g.box_between([xa + w, ya, za + w], [xp - FACE, ya + w, zb - w], "body"),  # sides
         g.box_between([xa + w, yb - w, za + w], [xp - FACE, yb, zb - w], "body"),
     ]
-    for pc in housing:
-        pc.sheet = SHEET
+    housing = [pc.replace(sheet=SHEET) for pc in housing]
     panel = bp.add("control_panel", "control_panel", housing + decor)
     bp.join(J.fixed(body, panel))
     for name, label, pieces, origin, press in movers:

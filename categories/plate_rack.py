@@ -130,8 +130,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
             continue
         x_foot = fences[i] + rp + c - x_lo
         slot = "plate_alt" if p["plate_set"] == "mixed" and i % 2 else "plate"
-        piece = plate0.translated((x_foot, 0.0, zc))
-        piece.material = slot
+        piece = plate0.translated((x_foot, 0.0, zc)).replace(material=slot)
         name = bp.add(f"plate_{i}", "plate", [piece])
         pivot = (fences[i] + pitch / 2, 0.0, zc)  # plate centre: its centre of mass is on the X axis
         bp.join(J.limited_planar(
@@ -171,8 +170,7 @@ def _plate(R, H, t, rf):
     rh = rw + 0.5 * (Rc - rw)
     coarse = g.revolve(foot + [(rw, hf), (rh, float(mid(rh)) - t / 2), (Rc, H - t), (R, c1), (Rc, H),
                                (0.0, H)], "plate")
-    fine.convex = coarse.convex
-    fine._hull_cache = coarse._hull_cache  # their hulls, known from construction
+    fine = fine.with_collision_of(coarse)  # their hulls, known from construction
     m = np.eye(4)
     m[:3, :3] = g.rotation_between((0, 0, 1), (1, 0, 0))
     return fine.transformed(m)

@@ -123,8 +123,7 @@ def _frame(yk, D, u, top, slot):
     pieces = []
     for x0, x1 in ((D / 2 - u, D / 2), (-D / 2, -D / 2 + u)):
         post = g.box_between([x0, yk - u / 2, 0.008], [x1, yk + u / 2, top], slot)
-        post.sheet = 0.002
-        pieces.append(post)
+        pieces.append(post.replace(sheet=0.002))
         pieces.append(g.box_between([x0 - 0.01, yk - u / 2 - 0.01, 0.0], [x1 + 0.01, yk + u / 2 + 0.01, 0.008],
                                     "feet"))
         face = x1 if x1 > 0 else x0
@@ -141,8 +140,7 @@ def _frame(yk, D, u, top, slot):
             a, b = ([xa, yk, z + 0.02], [xb, yk, z1 - 0.02]) if k % 2 == 0 else \
                 ([xb, yk, z + 0.02], [xa, yk, z1 - 0.02])
             pieces.append(g.cylinder(a, b, 0.8 * r, slot, 10))
-    for pc in pieces[-2 * len(levels) + 1:]:
-        pc.sheet = 0.0015
+    pieces[-2 * len(levels) + 1:] = [pc.replace(sheet=0.0015) for pc in pieces[-2 * len(levels) + 1:]]
     return pieces
 
 
@@ -160,8 +158,7 @@ def _level(ys, D, z, bh, dt, deck, beam_slot):
     pieces = []
     for x0, x1 in ((D / 2 - BEAM_D, D / 2), (-D / 2, -D / 2 + BEAM_D)):
         beam = g.box_between([x0, ya, z - bh], [x1, yb, z], beam_slot, bevel=0.003)
-        beam.sheet = 0.0015
-        pieces.append(beam)
+        pieces.append(beam.replace(sheet=0.0015))
         for ye, sgn in ((ya, 1), (yb, -1)):  # connector plates at the beam ends
             lo, hi = sorted((ye, ye + sgn * 0.006))
             pieces.append(g.box_between([x0 + 0.005, lo, z - bh], [x1 - 0.005, hi, z], "galvanised"))
@@ -170,8 +167,7 @@ def _level(ys, D, z, bh, dt, deck, beam_slot):
         pieces.append(g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_wood", bevel=0.002))
     elif deck == "steel":
         plate = g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_steel")
-        plate.sheet = 0.001
-        pieces.append(plate)
+        pieces.append(plate.replace(sheet=0.001))
     else:  # wire mesh on channels: the mesh is visual, its collision one flat plate
         ys_bar = np.arange(ya + 0.02, yb - 0.015, 0.05)
         xs_bar = np.arange(x0 + 0.02, x1 - 0.015, 0.1)
@@ -187,8 +183,7 @@ def _level(ys, D, z, bh, dt, deck, beam_slot):
         nch = max(2, int((yb - ya) / 0.45) + 1)
         for yv in np.linspace(ya + 0.04, yb - 0.04, nch):  # channels under the mesh, beam to beam
             ch = g.box_between([x0, yv - 0.015, z], [x1, yv + 0.015, z + dt - 0.01], "galvanised")
-            ch.sheet = 0.0012
-            pieces.append(ch)
+            pieces.append(ch.replace(sheet=0.0012))
     return pieces
 
 
@@ -225,8 +220,7 @@ def _goods(bp, level, kind, ys, D, z, h, rng):
 
 
 def _box(x0, x1, y0, y1, z, h):
-    box = g.box_between([x0, y0, z], [x1, y1, z + h], "box", bevel=0.004)
-    box.sheet = 0.004
+    box = g.box_between([x0, y0, z], [x1, y1, z + h], "box", bevel=0.004).replace(sheet=0.004)
     tape = g.box_between([x0 + 0.02, (y0 + y1) / 2 - 0.025, z + h - 0.001], [x1 - 0.02, (y0 + y1) / 2 + 0.025,
                                                                                z + h + 0.0005], "tape")
     return [box, tape]
@@ -266,6 +260,5 @@ def _pallet(x0, x1, y0, y1, z, h):
         for (a, b) in ((x0 + 0.01, 0.0 - 0.002), (0.002, x1 - 0.01)):
             for (c, d) in ((y0 + 0.01, (y0 + y1) / 2 - 0.002), ((y0 + y1) / 2 + 0.002, y1 - 0.01)):
                 box = g.box_between([a, c, zs + r * bh], [b, d, zs + (r + 1) * bh - 0.002], "box", bevel=0.004)
-                box.sheet = 0.004
-                pieces.append(box)
+                pieces.append(box.replace(sheet=0.004))
     return pieces

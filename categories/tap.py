@@ -285,9 +285,7 @@ def _tube(points, r):
     out = []
     for i in range(len(pts) - 1):
         hull = g.convex_hull(np.vstack([_ring(pts[i], tan[i], r), _ring(pts[i + 1], tan[i + 1], r)]))
-        pc = g.from_trimesh(hull, "metal")
-        pc.sheet = TUBE
-        out.append(pc)
+        out.append(g.from_trimesh(hull, "metal").replace(sheet=TUBE))
     return out
 
 

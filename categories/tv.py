@@ -198,9 +198,9 @@ def _screen(bp, p, size, xs3, zs, hump):
                   for c, h in layout]
     xb = xf - BEZEL_T
     bezel = g.panel([xb, -W / 2, zs0], [xf, W / 2, zs1], "bezel", "x", holes=holes)
-    bezel.sheet = 0.0015
+    bezel = bezel.replace(sheet=0.0015)
     display = g.box_between([xb, -W / 2 + bz, zs0 + bb], [xf - 0.0015, W / 2 - bz, zs1 - bz], "display")
-    display.sheet = 0.003
+    display = display.replace(sheet=0.003)
     y_right = W / 2 - RIM if side else W / 2
     pieces = [bezel, display, g.box_between([xs, -W / 2, zs0], [xb, y_right, zs1], "housing")]
     if side:
@@ -209,8 +209,7 @@ def _screen(bp, p, size, xs3, zs, hump):
         pieces.append(g.panel([xs, W / 2 - RIM, zs0], [xb, W / 2, zs1], "housing", "y", holes=rim_holes))
     bevel = min(0.01, 0.3 * (xs - xhb))
     pieces.append(g.box_between([xhb, -hw / 2, zh0], [xs + 0.001, hw / 2, zh1], "housing", bevel=bevel))
-    for pc in pieces[2:]:
-        pc.sheet = 0.002
+    pieces[2:] = [pc.replace(sheet=0.002) for pc in pieces[2:]]
     bp.add("screen", "screen", pieces)
 
 
@@ -247,8 +246,7 @@ def _connector(bp, pivot, r_k, xs2, L_k, vesa_w, hump):
     for y in (-ny, ny):
         pieces.append(g.box_between([x_p, y - 0.01, z_p - 0.7 * r_k], [x_bk + 0.001, y + 0.01, z_p + 0.7 * r_k],
                                     "connector"))
-    for pc in pieces:
-        pc.sheet = 0.003
+    pieces = [pc.replace(sheet=0.003) for pc in pieces]
     return bp.add("connector", "connector", pieces)
 
 

@@ -89,7 +89,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
 
     check_texture_size(texture_size)
     t0 = time.perf_counter()
-    physical.rest_on_ground(bp)
+    bp = physical.rest_on_ground(bp)
     looks = {slot: sample_look(family, materials_rng) for slot, family in bp.materials.items()}
     used = sorted({p.material for part in bp.parts.values() for p in part.pieces})
     missing = [slot for slot in used if slot not in bp.materials]
@@ -97,7 +97,8 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
     densities = {slot: FAMILIES[split_spec(bp.materials[slot])[0]].density for slot in used}
     links, joints = build(bp, densities)
-    physical.ensure_gaps(links, joints)
+    links = physical.ensure_gaps(links, joints)
+    joints = physical.limit_to_ground(links, joints)
     looks = {slot: looks[slot] for slot in used}
     t1 = time.perf_counter()
     textures = {slot: texture_maps(look, texture_size) for slot, look in looks.items()}
@@ -114,6 +115,4 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         texture_size=texture_size,
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
-    physical.limit_to_ground(obj)
-    obj.timings["geometry"] += time.perf_counter() - t2
     return obj

@@ -16,9 +16,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import ModelError
-from .geometry import Piece, axis_angle
+from .geometry import Piece
 from .joints import JointSpec
 from .params import Flag
+from .rotation import axis_angle
 
 
 @dataclass

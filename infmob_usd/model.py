@@ -18,9 +18,10 @@ import numpy as np
 from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
-from .geometry import Piece, axis_angle
+from .geometry import Piece
 from .mass import DUMMY_INERTIA, DUMMY_MASS, inertial
 from .physical import dynamics
+from .rotation import axis_angle
 
 
 @dataclass

@@ -85,7 +85,7 @@ def test_collision_hulls_stay_within_physx_vertex_limit():
     ball = g.sphere([0, 0, 0], 0.1, "m")
     rng = np.random.default_rng(0)
     pts = rng.normal(size=(3000, 3))
-    ball.convex = [pts / np.linalg.norm(pts, axis=1, keepdims=True) * 0.1]  # ~3000 hull vertices
+    ball = ball.replace(convex=[pts / np.linalg.norm(pts, axis=1, keepdims=True) * 0.1])  # ~3000 hull vertices
     (v, f), = ball.hulls()
     assert len(v) <= g.MAX_HULL_VERTICES
     assert trimesh.Trimesh(v, f).is_watertight

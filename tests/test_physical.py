@@ -76,8 +76,7 @@ def test_sheet_parts_weigh_their_wall_not_their_volume():
     from infmob_usd.mass import inertial
 
     solid = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m")
-    sheet = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m")
-    sheet.sheet = 0.001
+    sheet = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m").replace(sheet=0.001)
     m_solid = inertial([(solid, 7850.0)])[0]
     m_sheet = inertial([(sheet, 7850.0)])[0]
     assert m_solid == pytest.approx(0.25 * 0.01 * 7850)

@@ -50,7 +50,7 @@ def make_bp(module, name, seed, **overrides):
     r = streams(name, seed)
     p = module.SCHEMA.sample(r["params"], overrides)
     bp = module.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
+    bp = physical.rest_on_ground(bp)
     return p, bp
 
 
