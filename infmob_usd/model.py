@@ -21,7 +21,7 @@ from .errors import ModelError
 from .geometry import Piece
 from .mass import DUMMY_INERTIA, DUMMY_MASS, inertial
 from .physical import dynamics
-from .rotation import axis_angle
+from .rotation import motion
 
 
 @dataclass
@@ -113,13 +113,8 @@ class ArticulatedObject:
         origin = {link.name: link.origin for link in self.links}
         pose = {self.links[0].name: _translation(origin[self.links[0].name])}
         for j in self.joints:  # parents always come before their children
-            value = float(q.get(j.name, 0.0))
-            motion = np.eye(4)
-            if j.type == "prismatic":
-                motion[:3, 3] = j.axis * value
-            elif j.type in ("revolute", "continuous"):
-                motion[:3, :3] = axis_angle(j.axis, value)
-            pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ motion
+            moved = motion(j.type, j.axis, float(q.get(j.name, 0.0)))
+            pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ moved
         return pose
 
 

@@ -80,3 +80,15 @@ def transform(xyz: Iterable[float] = (0, 0, 0), rpy: Iterable[float] = (0, 0, 0)
     m[:3, :3] = rpy_matrix(rpy)
     m[:3, 3] = [float(x) for x in xyz]
     return m
+
+
+def motion(kind: str, axis: Sequence[float], value: float) -> np.ndarray:
+    """The ``(4, 4)`` motion of a simple joint of type ``kind`` moved to ``value`` about (or along)
+    the unit ``axis`` through the frame origin: a rotation (revolute, continuous), a translation
+    (prismatic), or the identity (fixed). Every forward kinematics is a product of these."""
+    m = np.eye(4)
+    if kind == "prismatic":
+        m[:3, 3] = np.asarray(axis, float) * value
+    elif kind in ("revolute", "continuous"):
+        m[:3, :3] = axis_angle(axis, value)
+    return m
