@@ -107,8 +107,9 @@ class Piece:
     convex: tuple[np.ndarray, ...] = ()
     name: str = ""
     sheet: float = 0.0
-    hulls_known: tuple = field(default=(), repr=False)
-    bands: tuple = field(default=(), repr=False)  # per convex piece: (_Band, turn angle) or None
+    # not init fields: dataclasses.replace(piece, convex=...) then drops hulls it would make stale
+    hulls_known: tuple = field(default=(), init=False, repr=False)
+    bands: tuple = field(default=(), init=False, repr=False)  # per convex piece: (_Band, turn angle) or None
 
     def __init__(self, vertices, faces, material: str, convex=(), name: str = "", sheet: float = 0.0,
                  hulls=None, bands=None) -> None:
