@@ -139,7 +139,8 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
             rows[(row["category"], row["seed"])] = row
         progress.update()
         if on_row:
-            on_row(row)
+            with tqdm.external_write_mode(file=sys.stdout):  # lines print above the bar, not through it
+                on_row(row)
 
     try:
         if backend == "ray":
