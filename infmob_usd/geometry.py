@@ -60,10 +60,15 @@ class _Band:
         self.src, self.topology, self.first, self.point, self.axis = src, topology, first, point, axis
 
 
-def _frozen(a, dtype) -> np.ndarray:
-    """A read-only C-contiguous copy of ``a`` (or ``a`` itself if it already is one)."""
-    if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous and not a.flags.writeable:
-        return a
+def _frozen(a, dtype, owned: bool = False) -> np.ndarray:
+    """A read-only C-contiguous copy of ``a`` (or ``a`` itself if it already is one, or if the
+    caller ``owned`` it: an array made for this piece alone, frozen in place)."""
+    if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous:
+        if not a.flags.writeable:
+            return a
+        if owned:
+            a.flags.writeable = False
+            return a
     out = np.array(a, dtype=dtype, order="C")
     out.flags.writeable = False
     return out
@@ -112,12 +117,13 @@ class Piece:
     bands: tuple = field(default=(), init=False, repr=False)  # per convex piece: (_Band, turn angle) or None
 
     def __init__(self, vertices, faces, material: str, convex=(), name: str = "", sheet: float = 0.0,
-                 hulls=None, bands=None) -> None:
+                 hulls=None, bands=None, _owned: bool = False) -> None:
+        # _owned (internal): every array given was made for this piece alone, freeze it in place
         put = object.__setattr__
-        put(self, "vertices", _frozen(vertices, np.float64))
-        put(self, "faces", _frozen(faces, np.int64))
+        put(self, "vertices", _frozen(vertices, np.float64, _owned))
+        put(self, "faces", _frozen(faces, np.int64, _owned))
         put(self, "material", material)
-        put(self, "convex", tuple(_frozen(c, np.float64) for c in convex))
+        put(self, "convex", tuple(_frozen(c, np.float64, _owned) for c in convex))
         put(self, "name", name)
         put(self, "sheet", float(sheet))
         n = len(self.convex)
@@ -128,7 +134,7 @@ class Piece:
             items = enumerate(hulls or ())
         for k, h in items:
             if h is not None and k < n:
-                known[k] = (_frozen(h[0], np.float64), _frozen(h[1], np.int64))
+                known[k] = (_frozen(h[0], np.float64, _owned), _frozen(h[1], np.int64, _owned))
         put(self, "hulls_known", tuple(known))
         b = tuple(bands or ())
         put(self, "bands", b[:n] + (None,) * (n - len(b[:n])))
@@ -200,7 +206,7 @@ class Piece:
                         r @ band.axis if rigid and band.axis is not None else None)
                 bands.append((moved[id(band)], angle))
         return Piece(self.vertices @ r.T + t, self.faces, self.material, convex, self.name, self.sheet,
-                     hulls, bands)
+                     hulls, bands, _owned=True)
 
     def translated(self, offset: Sequence[float]) -> Piece:
         m = np.eye(4)
@@ -663,7 +669,7 @@ def box(size: Sequence[float], center: Sequence[float], material: str, bevel: fl
         v, f = hull_arrays(np.vstack(pts))
     else:
         v, f = _box_arrays(size, center)
-    return Piece(v, f, material, [v], name, hulls=[(v, f)])
+    return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)
 
 
 def instances(vertices: np.ndarray, faces: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -767,14 +773,14 @@ def cylinder(p0: Sequence[float], p1: Sequence[float], radius: float, material: 
     if radius <= 0 or np.linalg.norm(p1 - p0) <= 0:
         raise GeometryError(f"cylinder needs radius > 0 and distinct ends, got r={radius}")
     v, f = cylinder_arrays(p0, p1, radius, sections)
-    return Piece(v, f, material, [v], name, hulls=[(v, f)])  # a closed convex mesh is its own hull
+    return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)  # a closed convex mesh is its own hull
 
 
 def sphere(center: Sequence[float], radius: float, material: str, name: str = "") -> Piece:
     """A solid sphere (icosphere, subdivided twice)."""
     v, f = _unit_icosphere()
     v = v * float(radius) + np.asarray(center, float)
-    return Piece(v, f, material, [v], name, hulls=[(v, f)])
+    return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)
 
 
 @functools.cache
@@ -809,7 +815,8 @@ def revolve(profile: Sequence[tuple[float, float]], material: str, center: Seque
                          np.c_[max(r1, 1e-4) * ring, np.full(16, z1)]])
         convex.append(pts + np.asarray(center, float))
     # each band is a frustum: its hull is known
-    return Piece(verts, faces, material, convex, name, hulls=[(pts, _outward(pts, _FRUSTUM_16)) for pts in convex])
+    return Piece(verts, faces, material, convex, name, hulls=[(pts, _outward(pts, _FRUSTUM_16)) for pts in convex],
+                 _owned=True)
 
 
 # the hull of two coaxial 16-gons (0..15 below, 16..31 above): side quads and two caps
@@ -858,7 +865,8 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
         # point b * 4 + t of a wedge: band corner b at its angle t
         pts = np.stack([r * cos, r * sin, np.broadcast_to(z, cos.shape[:1] + (4, 4))], -1).reshape(-1, 16, 3) + c
         convex += list(pts)
-    return Piece(verts, faces, material, convex, name, bands=_turned_copies(convex, convex_sectors, angles[:-1], c))
+    return Piece(verts, faces, material, convex, name, bands=_turned_copies(convex, convex_sectors, angles[:-1], c),
+                 _owned=True)
 
 
 def wedge_points(outer, inner, sectors: int, phase: float = 0.0) -> np.ndarray:
