@@ -145,7 +145,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
         r_in = outer_radius(fine, coarse, zl - 0.001, zl + h + 0.001) + gap
         band = sleeve([(r_in + 0.0008, zl), (r_in + 0.0008, zl + h)], 0.0008, "label", r_in,
                       sectors=32, collision_thickness=0.002)
-        band.sheet = 0.0002  # paper
+        band = band.replace(sheet=0.0002)  # paper
         bp.add("label", "label", [band])
         bp.join(J.continuous("body", "label", (0.0, 0.0, zl + h / 2), (0, 0, 1), role="knob"))
     return bp
@@ -174,9 +174,7 @@ def _cap(cap, kind, fine, coarse, t, H, z_n, sectors) -> list[g.Piece]:
         gap = lid_gap(depth + 0.006 + 0.3 * r_flange + 1.9 * r_knob)
         r_plug = _free_radius(fine, coarse, t, H - depth - 0.002, H, sectors) - gap
         pieces = plug_lid(H, r_flange, 0.005, r_plug, depth, 0.35, r_knob, "cork", gap)
-        for pc in pieces:
-            pc.sheet = 0.0
-        return pieces
+        return [pc.replace(sheet=0.0) for pc in pieces]
     if cap == "capsule":
         length = (0.09 if kind == "champagne" else 0.045) * H / 0.3
         z_lo = max(H - length, z_n - 0.02)
@@ -194,19 +192,19 @@ def _cap(cap, kind, fine, coarse, t, H, z_n, sectors) -> list[g.Piece]:
         prof = [(r_out + 0.0012, z_lo), (r_out + 0.0004, z_lo + 0.002), (r_out, z_lo + 0.0035),
                 (r_out, z_top + 0.5 * top_t)]
         skirt = sleeve(prof, th, "cap", r_in, sections=21, collide=False)
-        skirt.sheet = 0.0003
+        skirt = skirt.replace(sheet=0.0003)
     else:
         skirt = sleeve([(r_out, z_lo), (r_out, z_top + 0.5 * top_t)], th, "cap", r_in, collide=False)
     top = g.disc((0, 0, z_top + top_t / 2), r_out + 0.003, top_t, "cap", SECTIONS)
-    pieces = [skirt, top]
     if cap == "crown":
-        top.sheet = 0.0003
+        top = top.replace(sheet=0.0003)
+    pieces = [skirt, top]
     if kind == "champagne" and cap == "capsule":  # the mushroom cork head under the foil
         rc = r_out + 0.002
         zc = z_top + top_t
         prof = [(0.0, zc - 0.0015), (0.8 * rc, zc - 0.0015), (rc, zc + 0.004), (0.95 * rc, zc + 0.011),
                 (0.6 * rc, zc + 0.015), (0.0, zc + 0.016)]
         head = g.revolve(prof, "cork", sections=SECTIONS)
-        head.convex = [np.vstack([c for c in head.convex])]  # one hull: the whole mushroom head
+        head = head.replace(convex=[np.vstack(head.convex)])  # one hull: the whole mushroom head
         pieces.append(head)
     return pieces

@@ -95,9 +95,8 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
                                                 coarse=10)
         a_in = (R - t) / math.cos(math.pi / sides)
         floor = g.cylinder((0, 0, 0), (0, 0, tb), 0.999 * a_in, "body", sides)
-        floor.vertices[:] = floor.vertices @ trimesh.transformations.rotation_matrix(
-            math.pi / sides, (0, 0, 1))[:3, :3].T
-        floor.convex = [floor.vertices.copy()]
+        turned = floor.vertices @ trimesh.transformations.rotation_matrix(math.pi / sides, (0, 0, 1))[:3, :3].T
+        floor = g.Piece(turned, floor.faces, floor.material, [turned])
         body = [wall, plate, floor, vessel_wall(neck_fine, neck_coarse, t, "body", 24)]
     bp.add("body", "body", body)
 
@@ -121,12 +120,11 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     # PhysX PCM builds the manifold on the button's top face and reports a deep false contact
     # (-(gap + button height), ~-6 mm) that jams the turn (jar seed 61). The plate's flat
     # bottom covers the whole rim, a robust face contact.
-    top.convex = [_top_hull(r_top, z_top, z_top + top_t, 0.7 * r_in, z_top + top_t + 0.00145)]
-    button.convex = []
+    top = top.replace(convex=[_top_hull(r_top, z_top, z_top + top_t, 0.7 * r_in, z_top + top_t + 0.00145)])
+    button = button.replace(convex=[])
     pieces = [skirt, top, button]
     if lid_fin != "plastic":
-        for pc in pieces:
-            pc.sheet = 0.0005
+        pieces = [pc.replace(sheet=0.0005) for pc in pieces]
     bp.add("lid", "lid", pieces)
     bp.join(J.continuous_prismatic("body", "lid", (0.0, 0.0, H), (0, 0, 1), (0.0, LID_LIFT), role="lid"))
     return bp

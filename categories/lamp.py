@@ -372,8 +372,7 @@ def _weight(shape: str, R: float, t: float, prof: list | None = None) -> g.Piece
         z0 = 0.06 * t
         inner = [(0.95 * r, z0 + 0.9 * (z - z0)) for r, z in prof[3:-1]]
         w = g.revolve([(0, z0), (0.95 * prof[2][0], z0), *inner, (0, inner[-1][1])], "weight", sections=48)
-    w.convex = []
-    return w
+    return w.replace(convex=[])
 
 
 def _switch(bp: Blueprint, p: dict, q: dict) -> None:

@@ -208,7 +208,7 @@ class OvenLayout(Layout):
         hole = (y0 + m, z0 + 1.2 * m, y1 - m, z1 - 1.6 * m)
         bar = hardware.bar_handle(p["handle_length"] * (y1 - y0), "handle", HANDLE).attached(
             "mount", to=Frame.at((x1, 0.0, z1 - 0.045), z=(1, 0, 0), x=(0, 1, 0)))
-        self.add("door", "door", A.oven_door(box, hole) + [pc.with_sheet(HANDLE_TUBE)
+        self.add("door", "door", A.oven_door(box, hole) + [pc.replace(sheet=HANDLE_TUBE)
                                                            for pc in bar.parts[bar.root].pieces])
         # hinged on the front face at the bottom edge: about +Y the top falls forward (+X)
         self.hinge("body", "door", Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)

@@ -105,7 +105,7 @@ class RackLayout(Layout):
 
     def plate(self, node, i, piece, pivot):
         slot = "plate_alt" if self.p["plate_set"] == "mixed" and i % 2 else "plate"
-        name = self.add(f"plate_{i}", "plate", [piece.with_material(slot)])
+        name = self.add(f"plate_{i}", "plate", [piece.replace(material=slot)])
         # in its own plane: lift along +Z, slide along Y, turn about its axis (X) through its centre
         self.join(J.limited_planar("rack", name, pivot, slide_axes=((0, 0, 1), (0, 1, 0)),
                                    slides=((0.0, LIFT), (-R.PLATE_SLIDE, R.PLATE_SLIDE)), axis=(1, 0, 0),

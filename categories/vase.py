@@ -264,11 +264,11 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     sectors = _sectors(float(fine[:, 0].max()))
     wall = vessel_wall(fine, coarse, t, "body", sectors)
     if finish == "enamel":  # enamelled sheet steel: mass of a 1 mm sheet, not of the thick wall
-        wall.sheet = 0.001
+        wall = wall.replace(sheet=0.001)
     tb = 1.6 * t
     bottom = g.disc((0, 0, tb / 2), float(fine[0, 0]) - 0.3 * t, tb, "body", SECTIONS)
     if finish == "enamel":
-        bottom.sheet = 0.001
+        bottom = bottom.replace(sheet=0.001)
     bp.add("body", "body", [wall, bottom])
     # a foot ring under the bottom, glued on (so a lidless vase is still an articulation)
     r_foot = float(fine[0, 0]) - 0.4 * t
@@ -290,8 +290,8 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     r_plug = r_free - gap
     pieces = plug_lid(H, r_flange, t_flange, r_plug, plug_depth, p["lid_dome"],
                       r_knob, "body", gap)
-    for pc in pieces:  # a thin-walled lid modelled solid: mass of its wall, not of the solid
-        pc.sheet = 0.001 if finish == "enamel" else t
+    # a thin-walled lid modelled solid: mass of its wall, not of the solid
+    pieces = [pc.replace(sheet=0.001 if finish == "enamel" else t) for pc in pieces]
     bp.add("lid", "lid", pieces)
     bp.join(J.continuous_prismatic("body", "lid", (0.0, 0.0, H), (0, 0, 1), (0.0, LID_LIFT), role="lid"))
     return bp

@@ -260,8 +260,7 @@ def _casement(frame, p, dims, transom, structure):
         y_hinge = a if side == "left" else b
         for zk in (zb + 0.12 * (zt - zb), zt - 0.12 * (zt - zb)):  # hinge knuckles (no collision)
             knuckle = g.cylinder([xs1 + 0.0045, y_hinge, zk - 0.03], [xs1 + 0.0045, y_hinge, zk + 0.03], 0.0045,
-                                 "handle", 12, name="hinge")
-            knuckle.convex = []
+                                 "handle", 12, name="hinge").replace(convex=[])
             pieces.append(knuckle)
         axis = (0, 0, -1) if side == "left" else (0, 0, 1)
         spec = J.revolute("frame", f"sash_{i}", (xs1, y_hinge, zb), axis, 0.0, math.pi / 2, role="hinge")
@@ -491,8 +490,7 @@ def _curtains(bp, p, W, H, fd, z0, fw, x_room):
             ring.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0]))
             ring.apply_translation([xc, y, zr])
             pieces.append(g.Piece(ring.vertices, ring.faces, "rod", []))
-            hook = g.cylinder([xc, y, zt - 0.005], [xc, y, zr - rr - 0.008], 0.0015, "rod", 8)
-            hook.convex = []
+            hook = g.cylinder([xc, y, zt - 0.005], [xc, y, zr - rr - 0.008], 0.0015, "rod", 8).replace(convex=[])
             pieces.append(hook)
         name = f"curtain_{k}"
         bp.add(name, "curtain", pieces)

@@ -2,11 +2,11 @@
 
 >>> import infmob_usd
 >>> obj = infmob_usd.generate("kitchen_cabinet", seed=3)
->>> folder = obj.save("out")        # out/kitchen_cabinet_000003/
+>>> folder = infmob_usd.save(obj, "out")        # out/kitchen_cabinet_000003/
 """
 
 from ._version import __version__
-from .api import generate, get_category, list_categories
+from .api import generate, get_category, list_categories, save
 from .errors import (
     GeometryError,
     InfmobError,
@@ -29,4 +29,5 @@ __all__ = [
     "generate",
     "get_category",
     "list_categories",
+    "save",
 ]

@@ -1,12 +1,14 @@
-"""The public API: ``generate``, ``list_categories``, ``get_category``."""
+"""The public API: ``generate``, ``save``, ``list_categories``, ``get_category``."""
 
 from __future__ import annotations
 
 import time
+from pathlib import Path
 from typing import Any
 
 from . import physical
 from .errors import ModelError, ParameterError, UnknownCategoryError
+from .layers import write_object
 from .model import ArticulatedObject, build
 from .seeding import streams
 
@@ -69,6 +71,12 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
     return obj
 
 
+def save(obj: ArticulatedObject, folder: str | Path) -> Path:
+    """Write ``obj`` into ``folder/<name>/`` (atomically: written under a temporary name, then
+    renamed) and return that path."""
+    return write_object(obj, Path(folder))
+
+
 def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict | None = None,
              overrides: dict | None = None) -> ArticulatedObject:
     """Turn a world-space blueprint into an object: ground it, frame it, dress it.
@@ -80,7 +88,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
 
     check_texture_size(texture_size)
     t0 = time.perf_counter()
-    physical.rest_on_ground(bp)
+    bp = physical.rest_on_ground(bp)
     looks = {slot: sample_look(family, materials_rng) for slot, family in bp.materials.items()}
     used = sorted({p.material for part in bp.parts.values() for p in part.pieces})
     missing = [slot for slot in used if slot not in bp.materials]
@@ -89,7 +97,8 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     densities = {slot: FAMILIES[split_spec(bp.materials[slot])[0]].density for slot in used}
     links, joints = build(bp, densities)
     links, joints = physical.rest_on_stops(links, joints, densities)
-    physical.ensure_gaps(links, joints)
+    links = physical.ensure_gaps(links, joints)
+    joints = physical.limit_to_ground(links, joints)
     looks = {slot: looks[slot] for slot in used}
     t1 = time.perf_counter()
     textures = {slot: texture_maps(look, texture_size) for slot, look in looks.items()}
@@ -106,7 +115,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         texture_size=texture_size,
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
-    physical.limit_to_ground(obj)
     obj = physical.limit_to_clearance(obj)
     obj.timings["geometry"] += time.perf_counter() - t2
     return obj

@@ -22,6 +22,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from tqdm import tqdm
+
 from ._version import __version__
 
 MANIFEST = "manifest.jsonl"
@@ -61,12 +63,12 @@ def clean_partial(out: Path) -> list[Path]:
 
 def make_one(job: Job, out: str) -> dict:
     """Generate and save one object; return its manifest row (or an error row)."""
-    from .api import generate
+    from .api import generate, save
 
     t0 = time.perf_counter()
     try:
         obj = generate(job.category, seed=job.seed, texture_size=job.texture_size, **dict(job.overrides))
-        folder = obj.save(Path(out) / job.category)
+        folder = save(obj, Path(out) / job.category)
     except Exception as exc:  # one bad object must not stop the batch
         err_dir = Path(out) / ERRORS
         err_dir.mkdir(parents=True, exist_ok=True)
@@ -108,30 +110,6 @@ def _write_manifest(out: Path, rows: dict[tuple[str, int], dict]) -> None:
     os.replace(tmp, path)
 
 
-class Progress:
-    """A progress line with objects/s and ETA on a terminal; silent otherwise."""
-
-    def __init__(self, total: int, stream=None) -> None:
-        stream = stream or sys.stderr
-        self.total, self.done, self.t0, self.stream = total, 0, time.perf_counter(), stream
-        self.tty = hasattr(stream, "isatty") and stream.isatty()
-
-    def step(self, n: int = 1) -> None:
-        self.done += n
-        if not self.tty:
-            return
-        dt = max(time.perf_counter() - self.t0, 1e-9)
-        rate = self.done / dt
-        eta = (self.total - self.done) / rate if rate > 0 else 0.0
-        width = 30
-        fill = int(width * self.done / max(self.total, 1))
-        self.stream.write(f"\r[{'#' * fill}{'.' * (width - fill)}] {self.done}/{self.total}"
-                          f"  {rate:.2f} obj/s  ETA {eta:5.0f} s ")
-        self.stream.flush()
-        if self.done >= self.total:
-            self.stream.write("\n")
-
-
 def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite: bool = False,
               backend: str = "process", address: str | None = None,
               on_row: Callable[[dict], None] | None = None,
@@ -151,16 +129,18 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
         if not overwrite and is_complete(job.folder(out)) and (job.category, job.seed) in rows:
             continue
         todo.append(job)
-    progress = Progress(len(todo))
+    # a bar with objects/s and ETA on a terminal; silent when stderr is a file or a pipe
+    progress = tqdm(total=len(todo), unit="obj", file=sys.stderr, disable=None, leave=True)
     results: list[dict] = []
 
     def record(row: dict) -> None:
         results.append(row)
         if "error" not in row:
             rows[(row["category"], row["seed"])] = row
-        progress.step()
+        progress.update()
         if on_row:
-            on_row(row)
+            with tqdm.external_write_mode(file=sys.stdout):  # lines print above the bar, not through it
+                on_row(row)
 
     try:
         if backend == "ray":
@@ -184,6 +164,7 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
                         if nxt is not None:
                             pending.add(pool.submit(make_one, nxt, str(out)))
     finally:
+        progress.close()
         _write_manifest(out, rows)
     return results
 

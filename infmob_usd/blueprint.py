@@ -17,9 +17,10 @@ import numpy as np
 
 from .assembly import Placed
 from .errors import ModelError
-from .geometry import Piece, axis_angle
+from .geometry import Piece
 from .joints import JointSpec
 from .params import Flag
+from .rotation import motion
 
 
 @dataclass
@@ -146,13 +147,10 @@ def descendants(joints, name: str) -> set[str]:
 
 def dof_motion(dof, value: float) -> np.ndarray:
     """``(4, 4)`` world-space motion of one :class:`~infmob_usd.joints.Dof` moved to ``value``."""
-    m = np.eye(4)
     a, o = np.asarray(dof.axis), np.asarray(dof.origin)
-    if dof.type == "prismatic":
-        m[:3, 3] = a * value
-    else:  # about the axis through the pivot
-        r = axis_angle(a, value)
-        m[:3, :3], m[:3, 3] = r, o - r @ o
+    m = motion(dof.type, a, value)
+    if dof.type != "prismatic":  # about the axis through the pivot
+        m[:3, 3] = o - m[:3, :3] @ o
     return m
 
 

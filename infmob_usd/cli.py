@@ -272,6 +272,8 @@ def cmd_bench(args) -> int:
 def cmd_textures(args) -> int:
     import time
 
+    from tqdm import tqdm
+
     from .api import check_texture_size
     from .materials import FAMILIES, split_spec
     from .materials.cache import build, cache_dir
@@ -284,18 +286,18 @@ def cmd_textures(args) -> int:
     if cache_dir() is None:
         return _fail("the texture cache is disabled or not writable; set INFMOB_USD_CACHE to a writable folder")
     t0 = time.perf_counter()
-    tty = sys.stderr.isatty()
+    bar = tqdm(unit="look", file=sys.stderr, disable=None)  # silent unless stderr is a terminal
 
     def progress(done, total):
-        if tty:
-            print(f"\r{done}/{total} looks", end="", file=sys.stderr, flush=True)
+        bar.total = total
+        bar.update(done - bar.n)
 
     try:
         res = build(args.texture_size, args.family, args.workers, progress)
     except ValueError as e:
         return _fail(str(e))
-    if tty:
-        print(file=sys.stderr)
+    finally:
+        bar.close()
     dt = time.perf_counter() - t0
     print(f"{res['looks']} looks at {args.texture_size} px: {res['made']} made, {res['looks'] - res['made']}"
           f" already cached, in {dt:.1f} s with {args.workers} workers")

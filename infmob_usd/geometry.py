@@ -13,7 +13,6 @@ Every builder takes plain numbers or ``(3,)`` arrays and returns a ``Piece``.
 
 from __future__ import annotations
 
-import copy
 import functools
 import math
 from collections.abc import Sequence
@@ -25,6 +24,8 @@ import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
 from .errors import GeometryError
+from .rotation import align_z, axis_angle
+from .rotation import rotation_between as rotation_between  # categories place pieces with it
 
 UV_TILE = 0.5
 """Metres of surface covered by one repeat of a texture."""
@@ -48,9 +49,39 @@ def triangle_cross(tri: np.ndarray) -> np.ndarray:
     return cross_rows(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
 
 
-@dataclass
+class _Band:
+    """Shell wedges that are turned copies of one prototype point set ``src`` (its hull topology,
+    found once when first needed, serves them all); ``axis`` None: a stretched band, whose
+    wedges are not turned copies any more."""
+
+    __slots__ = ("src", "topology", "first", "point", "axis")
+
+    def __init__(self, src, topology, first, point, axis):
+        self.src, self.topology, self.first, self.point, self.axis = src, topology, first, point, axis
+
+
+def _frozen(a, dtype, owned: bool = False) -> np.ndarray:
+    """A read-only C-contiguous copy of ``a`` (or ``a`` itself if it already is one, or if the
+    caller ``owned`` it: an array made for this piece alone, frozen in place)."""
+    if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous:
+        if not a.flags.writeable:
+            return a
+        if owned:
+            a.flags.writeable = False
+            return a
+    out = np.array(a, dtype=dtype, order="C")
+    out.flags.writeable = False
+    return out
+
+
+@dataclass(frozen=True, eq=False)
 class Piece:
-    """One mesh of a part.
+    """One mesh of a part: an immutable value (its arrays are read-only).
+
+    Change a piece by making a new one (:meth:`replace`, :meth:`transformed`,
+    :meth:`with_collision_of`, :meth:`with_convex`); the hull of each convex collision piece
+    is declared at construction where it is known (``hulls``), else computed once (Qhull)
+    when first asked for, and travels with every transformed copy.
 
     Attributes
     ----------
@@ -60,7 +91,7 @@ class Piece:
         Counter-clockwise triangles (outward normals).
     material : str
         Material slot name, resolved per object by the materials room.
-    convex : list of (k, 3) float
+    convex : tuple of (k, 3) float
         Point sets whose convex hulls are the collision shapes of this piece.
         Empty means the piece does not collide (decoration).
     name : str
@@ -69,19 +100,44 @@ class Piece:
         Wall thickness in metres of a part made of sheet (a steel casing, a
         thin tube) that is modelled solid: mass then counts area x sheet, not
         the solid volume. 0 (default) means solid.
+    hulls_known : tuple of ((v, 3) float, (f, 3) int) or None
+        Per convex piece, its hull where construction knows it (outward faces over a subset
+        of the points); ``None`` entries are computed by :meth:`hulls`. Given as the
+        ``hulls`` argument: a sequence, or a dict ``{index: (vertices, faces)}``.
     """
 
     vertices: np.ndarray
     faces: np.ndarray
     material: str
-    convex: list[np.ndarray] = field(default_factory=list)
+    convex: tuple[np.ndarray, ...] = ()
     name: str = ""
     sheet: float = 0.0
+    # not init fields: dataclasses.replace(piece, convex=...) then drops hulls it would make stale
+    hulls_known: tuple = field(default=(), init=False, repr=False)
+    bands: tuple = field(default=(), init=False, repr=False)  # per convex piece: (_Band, turn angle) or None
 
-    def __post_init__(self) -> None:
-        self.vertices = np.ascontiguousarray(self.vertices, dtype=np.float64)
-        self.faces = np.ascontiguousarray(self.faces, dtype=np.int64)
-        self.convex = [np.ascontiguousarray(c, dtype=np.float64) for c in self.convex]
+    def __init__(self, vertices, faces, material: str, convex=(), name: str = "", sheet: float = 0.0,
+                 hulls=None, bands=None, _owned: bool = False) -> None:
+        # _owned (internal): every array given was made for this piece alone, freeze it in place
+        put = object.__setattr__
+        put(self, "vertices", _frozen(vertices, np.float64, _owned))
+        put(self, "faces", _frozen(faces, np.int64, _owned))
+        put(self, "material", material)
+        put(self, "convex", tuple(_frozen(c, np.float64, _owned) for c in convex))
+        put(self, "name", name)
+        put(self, "sheet", float(sheet))
+        n = len(self.convex)
+        known = [None] * n
+        if isinstance(hulls, dict):
+            items = hulls.items()
+        else:
+            items = enumerate(hulls or ())
+        for k, h in items:
+            if h is not None and k < n:
+                known[k] = (_frozen(h[0], np.float64, _owned), _frozen(h[1], np.int64, _owned))
+        put(self, "hulls_known", tuple(known))
+        b = tuple(bands or ())
+        put(self, "bands", b[:n] + (None,) * (n - len(b[:n])))
         self.check()
 
     def check(self) -> None:
@@ -100,53 +156,57 @@ class Piece:
             if c.ndim != 2 or c.shape[1] != 3 or len(c) < 4 or not np.isfinite(c).all():
                 raise GeometryError(f"{what}: a convex collision piece needs >= 4 finite points")
 
+    def replace(self, **changes) -> Piece:
+        """A copy with some fields changed (``vertices``, ``faces``, ``material``, ``convex``,
+        ``name``, ``sheet``, ``hulls``). New ``convex`` point sets drop the known hulls unless
+        ``hulls`` is given with them."""
+        if "convex" in changes:
+            hulls, bands = changes.pop("hulls", None), None
+        else:
+            hulls, bands = changes.pop("hulls", self._hulls_so_far()), self.bands
+        args = {"vertices": self.vertices, "faces": self.faces, "material": self.material,
+                "convex": self.convex, "name": self.name, "sheet": self.sheet}
+        unknown = set(changes) - set(args)
+        if unknown:
+            raise TypeError(f"Piece.replace: no field {sorted(unknown)}")
+        args.update(changes)
+        return Piece(**args, hulls=hulls, bands=bands)
+
+    def _hulls_so_far(self) -> list:
+        """Known and already computed hulls (``None`` where not computed yet)."""
+        memo = self.__dict__.get("_hulls")
+        return list(memo) if memo is not None else list(self.hulls_known)
+
     # -- transforms ---------------------------------------------------------
     def transformed(self, matrix: np.ndarray) -> Piece:
         """A copy moved by a ``(4, 4)`` transform (rigid, or a stretch that keeps orientation)."""
         r, t = matrix[:3, :3], matrix[:3, 3]
-        moved = Piece(
-            self.vertices @ r.T + t,
-            self.faces.copy(),
-            self.material,
-            [c @ r.T + t for c in self.convex],
-            self.name,
-            self.sheet,
-        )
-        known = getattr(self, "_hull_cache", None)
-        hints = getattr(self, "_hull_hints", None)
-        rigid = np.allclose(r @ r.T, np.eye(3), atol=1e-9)
-        if hints and np.linalg.det(r) > 0:  # hull topologies survive any orientation-keeping map
-            bands: dict[int, dict] = {}
-            moved._hull_hints = {}
-            for k, (src, band, angle) in hints.items():
-                if k < len(self.convex) and self.convex[k] is src:
-                    first = band["first"]
-                    same = first < len(self.convex) and self.convex[first] is band["src"]
-                    new_band = bands.setdefault(id(band), {
-                        "src": moved.convex[first] if same else band["src"] @ r.T + t,
-                        "topology": band["topology"], "first": first,
+        convex = [c @ r.T + t for c in self.convex]
+        keeps = np.linalg.det(r) > 0  # an orientation-keeping map keeps hull topologies, faces outward
+        hulls, bands = None, None
+        if keeps:
+            hulls = [None if e is None else (e[0] @ r.T + t, e[1]) for e in self._hulls_so_far()]
+        if keeps and any(b is not None for b in self.bands):
+            rigid = np.allclose(r @ r.T, np.eye(3), atol=1e-9)
+            moved: dict[int, _Band] = {}
+            bands = []
+            for hint in self.bands:
+                if hint is None:
+                    bands.append(None)
+                    continue
+                band, angle = hint
+                if id(band) not in moved:
+                    first = band.first
+                    intact = first < len(self.bands) and self.bands[first] is not None and \
+                        self.bands[first][0] is band
+                    moved[id(band)] = _Band(
+                        convex[first] if intact else band.src @ r.T + t, band.topology, first,
+                        r @ band.point + t,
                         # a stretch keeps the hull topology but the wedges stop being turned copies
-                        "point": r @ band["point"] + t,
-                        "axis": r @ band["axis"] if rigid and band["axis"] is not None else None})
-                    moved._hull_hints[k] = (moved.convex[k], new_band, angle)
-        if known and np.linalg.det(r) > 0:  # so does an orientation-keeping map: faces stay outward
-            moved._hull_cache = [
-                None if e is None or not np.array_equal(e[0], c) else (mc, (e[1][0] @ r.T + t, e[1][1]))
-                for e, c, mc in zip(known, self.convex, moved.convex)
-            ]
-        return moved
-
-    def with_material(self, material: str) -> Piece:
-        """The same piece (hulls kept) in another material slot."""
-        out = copy.copy(self)
-        out.material = material
-        return out
-
-    def with_sheet(self, sheet: float) -> Piece:
-        """The same piece, its mass counted as sheet of thickness ``sheet`` (0: solid)."""
-        out = copy.copy(self)
-        out.sheet = float(sheet)
-        return out
+                        r @ band.axis if rigid and band.axis is not None else None)
+                bands.append((moved[id(band)], angle))
+        return Piece(self.vertices @ r.T + t, self.faces, self.material, convex, self.name, self.sheet,
+                     hulls, bands, _owned=True)
 
     def translated(self, offset: Sequence[float]) -> Piece:
         m = np.eye(4)
@@ -169,71 +229,71 @@ class Piece:
     def corner_normals(self) -> np.ndarray:
         """``(m, 3, 3)`` per face-corner normals (computed once per piece).
 
-        Each corner averages (area-weighted) the normals of the faces around its
-        vertex that lie within :data:`CREASE_DEG` of its own face, so a cylinder's
-        side is smooth and its caps stay flat (:func:`corner_attributes`).
+        Each corner averages (area-weighted) the normals of the faces around its vertex that
+        lie within :data:`CREASE_DEG` of its own face, so a cylinder's side is smooth and its
+        caps stay flat (:func:`corner_attributes`).
         """
-        self._corner_attributes()
-        return self._corner_normals
+        return self._corner_attributes()[0]
 
     def corner_uvs(self) -> np.ndarray:
         """``(m, 3, 2)`` box-projected UVs, :data:`UV_TILE` metres per repeat (computed once)."""
-        self._corner_attributes()
-        return self._corner_uvs
+        return self._corner_attributes()[1]
 
-    def _corner_attributes(self) -> None:
-        if getattr(self, "_corner_normals", None) is None:
+    def _corner_attributes(self) -> tuple[np.ndarray, np.ndarray]:
+        memo = self.__dict__.get("_corners")
+        if memo is None:
             n, uv = corner_attributes(self.vertices, self.faces)
-            self._corner_normals, self._corner_uvs = n.reshape(-1, 3, 3), uv.reshape(-1, 3, 2)
+            memo = (n.reshape(-1, 3, 3), uv.reshape(-1, 3, 2))
+            object.__setattr__(self, "_corners", memo)  # a cache of a pure function of the value
+        return memo
 
     def hulls(self) -> list[tuple[np.ndarray, np.ndarray]]:
         """Collision meshes: ``(vertices (k, 3), faces (f, 3))`` per convex piece, outward.
 
-        Computed once per point set (Qhull, or known from construction: :meth:`set_hull`) and
-        recomputed if a point set is replaced; point sets are made read-only once their hull
-        exists, so an edit in place fails loudly instead of leaving a stale hull.  A hull is
-        kept under :data:`MAX_HULL_VERTICES` (PhysX keeps at most 255) by farthest-point
-        sampling of its vertices, which keeps its extremes.
+        Declared at construction where known (``hulls``), shared by the turned copies of a
+        shell band, else computed once with Qhull (the piece is immutable, so it never goes
+        stale). A hull is kept under :data:`MAX_HULL_VERTICES` (PhysX keeps at most 255) by
+        farthest-point sampling of its vertices, which keeps its extremes.
         """
-        memo = getattr(self, "_hulls_memo", None)
-        if memo is not None and len(memo[0]) == len(self.convex) and all(
-                a is b for a, b in zip(memo[0], self.convex)):
-            return memo[1]  # the same point sets (frozen below, so not edited in place)
-        cache = getattr(self, "_hull_cache", None) or []
-        cache = cache + [None] * (len(self.convex) - len(cache))
-        hints = getattr(self, "_hull_hints", None) or {}
+        memo = self.__dict__.get("_hulls")
+        if memo is not None:
+            return list(memo)
         out = []
         for k, c in enumerate(self.convex):
-            entry = cache[k]
-            # a hull is reused only while its point set is unchanged (pieces are edited in place)
-            if entry is None or entry[0].shape != c.shape or not np.array_equal(entry[0], c):
-                hint = hints.get(k)
-                if hint is not None and hint[0] is c:  # still the constructed point set
-                    band = hint[1]
-                    if band["topology"] is None:
-                        band["topology"] = hull_indices(band["src"])
-                    used, f = band["topology"]
-                    entry = cache[k] = (c.copy(), (c[used], f))
-                    out.append(entry[1])
-                    continue
-                v, f = hull_arrays(c)
-                if len(v) > MAX_HULL_VERTICES:
-                    v, f = hull_arrays(_farthest_points(v, MAX_HULL_VERTICES - 55))
-                entry = cache[k] = (c.copy(), (v, np.asarray(f, np.int64)))
-            out.append(entry[1])
-        self._hull_cache = cache[:len(self.convex)]
-        for c in self.convex:  # a point set with a hull is frozen: replace it, never edit it in place
-            c.flags.writeable = False
-        self._hulls_memo = (list(self.convex), out)
+            entry = self.hulls_known[k]
+            if entry is None:
+                hint = self.bands[k]
+                if hint is not None:  # a turned copy of its band's prototype
+                    band = hint[0]
+                    if band.topology is None:
+                        band.topology = hull_indices(band.src)
+                    used, f = band.topology
+                    entry = (c[used], f)
+                else:
+                    v, f = hull_arrays(c)
+                    if len(v) > MAX_HULL_VERTICES:
+                        v, f = hull_arrays(_farthest_points(v, MAX_HULL_VERTICES - 55))
+                    entry = (v, np.asarray(f, np.int64))
+            out.append(entry)
+        object.__setattr__(self, "_hulls", tuple(out))  # a cache of a pure function of the value
         return out
 
     def with_collision_of(self, other: Piece) -> Piece:
         """This piece's mesh with ``other``'s collision pieces (and their known hulls): a fine
         visual surface over a coarse collision one."""
-        out = Piece(self.vertices, self.faces, self.material, other.convex, self.name, self.sheet)
-        out._hull_cache = getattr(other, "_hull_cache", None)
-        out._hull_hints = getattr(other, "_hull_hints", None)
-        return out
+        return Piece(self.vertices, self.faces, self.material, other.convex, self.name, self.sheet,
+                     other._hulls_so_far(), other.bands)
+
+    def with_convex(self, replaced: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]]) -> Piece:
+        """A copy with convex pieces replaced: ``{k: (points, hull vertices, hull faces)}``.
+
+        The others keep their hulls; a replaced piece is no turned copy any more."""
+        convex = list(self.convex)
+        hulls = self._hulls_so_far()
+        bands = list(self.bands)
+        for k, (pts, hv, hf) in replaced.items():
+            convex[k], hulls[k], bands[k] = pts, (hv, hf), None
+        return Piece(self.vertices, self.faces, self.material, convex, self.name, self.sheet, hulls, bands)
 
     def with_wedges(self, outer, inner, sectors: int, phase: float = 0.0) -> Piece:
         """This piece's mesh with flat-faced wedge collisions of a wall of revolution about +Z.
@@ -242,11 +302,10 @@ class Piece:
         is exactly planar.  The wedges of a band are turned copies of its first (writers share
         their mesh, :meth:`hull_instances`).
         """
-        pts = wedge_points(outer, inner, sectors, phase)
-        out = Piece(self.vertices, self.faces, self.material, list(pts.reshape(-1, 8, 3)), self.name, self.sheet)
+        pts = list(wedge_points(outer, inner, sectors, phase).reshape(-1, 8, 3))
         turns = 2 * np.pi * np.arange(sectors) / sectors
-        _mark_turned_copies(out, sectors, turns, np.zeros(3))
-        return out
+        return Piece(self.vertices, self.faces, self.material, pts, self.name, self.sheet,
+                     bands=_turned_copies(pts, sectors, turns, np.zeros(3)))
 
     def hull_instances(self) -> list[tuple[int, np.ndarray, np.ndarray] | None]:
         """Per hull of :meth:`hulls`: ``(j, R, t)`` when hull ``k`` is hull ``j`` of this piece moved
@@ -256,38 +315,81 @@ class Piece:
         then store one mesh and place the copies (a URDF ``<collision><origin rpy>``).
         """
         hulls = self.hulls()
-        hints = getattr(self, "_hull_hints", None) or {}
         out: list = [None] * len(hulls)
-        for k, c in enumerate(self.convex):
-            hint = hints.get(k)
-            if hint is None or hint[0] is not c:
+        for k, hint in enumerate(self.bands):
+            if hint is None:
                 continue
-            band, angle = hint[1], hint[2]
-            j = band["first"]
-            if j == k or band["axis"] is None or self.convex[j] is not band["src"]:
+            band, angle = hint
+            j = band.first
+            first = self.bands[j] if j < len(self.bands) else None
+            if j == k or band.axis is None or first is None or first[0] is not band:
                 continue  # the prototype itself, a stretched band, or a replaced (eroded) prototype
-            rot = axis_angle(band["axis"], angle)
-            t = band["point"] - rot @ band["point"]
+            rot = axis_angle(band.axis, angle)
+            t = band.point - rot @ band.point
             scale = float(np.ptp(hulls[k][0], axis=0).max())
             if np.abs(hulls[j][0] @ rot.T + t - hulls[k][0]).max() > 1e-9 * max(scale, 1e-3):
-                continue  # edited in place since construction: not a copy any more
+                continue  # not a copy after all
             out[k] = (j, rot, t)
         return out
 
-    def set_hull(self, k: int, vertices: np.ndarray, faces: np.ndarray) -> None:
-        """Declare the hull of ``convex[k]`` known from construction (outward ``faces`` over
-        ``vertices``, a subset of the points): :meth:`hulls` then skips Qhull for it."""
-        cache = getattr(self, "_hull_cache", None) or []
-        cache = cache + [None] * (len(self.convex) - len(cache))
-        cache[k] = (self.convex[k].copy(), (np.asarray(vertices, float), np.asarray(faces, np.int64)))
-        self._hull_cache = cache
-
     def volume(self) -> float:
         """Solid volume in m^3: the mesh's if it is closed, else its convex pieces' (the solids
-        its mass comes from, :func:`infmob_usd.mass.solids`)."""
-        from .mass import solids
-
+        its mass comes from, :func:`solids`)."""
         return float(sum(abs(s[0]) for s in solids(self)))
+
+
+# ---------------------------------------------------------------------------
+# measures of closed meshes (the solids that masses come from: mass.py)
+
+
+def is_closed(faces: np.ndarray) -> bool:
+    """Whether a triangle mesh is closed and consistently oriented: every directed edge
+    appears exactly once and so does its reverse (what ``trimesh.is_watertight`` and
+    ``is_winding_consistent`` check, without building a Trimesh)."""
+    f = np.asarray(faces, np.int64)
+    if not len(f):
+        return False
+    n = int(f.max()) + 1
+    a, b = f.ravel(), f[:, [1, 2, 0]].ravel()
+    fwd = np.sort(a * n + b)
+    if (fwd[1:] == fwd[:-1]).any():
+        return False
+    return bool(np.array_equal(fwd, np.sort(b * n + a)))
+
+
+def mass_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
+    """Volume, centroid ``(3,)``, inertia tensor about the centroid at unit density ``(3, 3)``
+    and surface area of a closed, outward-oriented triangle mesh.
+
+    Sum over the tetrahedra (reference point, triangle): the second moment of a tetrahedron
+    with one vertex at the reference point and edge vectors a, b, c is
+    ``det[a b c] / 120 * (a a^T + b b^T + c c^T + s s^T)`` with ``s = a + b + c``.
+    """
+    v = np.asarray(vertices, float)
+    ref = v.mean(0)  # close to the solid: no cancellation for parts far from the origin
+    tri = v[np.asarray(faces, np.int64)] - ref  # (m, 3, 3)
+    cross = cross_rows(tri[:, 1], tri[:, 2])
+    det = np.einsum("ij,ij->i", tri[:, 0], cross)  # 6 x signed tetra volume
+    area = 0.5 * float(np.linalg.norm(triangle_cross(tri), axis=1).sum())
+    volume = float(det.sum()) / 6.0
+    if abs(volume) <= 1e-15:
+        return 0.0, ref, np.zeros((3, 3)), area
+    s = tri.sum(1)  # (m, 3)
+    centroid = (det @ s) / (24.0 * volume)
+    corners = tri.reshape(-1, 3)
+    second = ((corners * np.repeat(det, 3)[:, None]).T @ corners + (s * det[:, None]).T @ s) / 120.0
+    second -= volume * np.outer(centroid, centroid)  # about the centroid
+    inertia = np.trace(second) * np.eye(3) - second
+    return volume, centroid + ref, inertia, area
+
+
+def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
+    """Mass properties of the solids of a piece: its mesh if closed, else its convex hulls."""
+    if is_closed(piece.faces):
+        props = mass_properties(piece.vertices, piece.faces)
+        if props[0] > 1e-12:
+            return [props]
+    return [mass_properties(v, f) for v, f in piece.hulls()]
 
 
 # ---------------------------------------------------------------------------
@@ -497,27 +599,6 @@ def _axis_index(axis: str | int) -> int:
     return int(axis)
 
 
-def axis_angle(axis: Sequence[float], angle: float) -> np.ndarray:
-    """Rodrigues: the ``(3, 3)`` rotation by ``angle`` radians about the unit ``axis``."""
-    a = np.asarray(axis, float)
-    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
-
-
-def rotation_between(a: Sequence[float], b: Sequence[float]) -> np.ndarray:
-    """``(3, 3)`` rotation taking unit direction ``a`` onto ``b``."""
-    a = np.asarray(a, float) / np.linalg.norm(a)
-    b = np.asarray(b, float) / np.linalg.norm(b)
-    v, c = np.cross(a, b), float(np.dot(a, b))
-    if c < -1 + 1e-9:  # opposite: rotate pi about any perpendicular axis
-        p = np.cross(a, [1.0, 0, 0]) if abs(a[0]) < 0.9 else np.cross(a, [0, 1.0, 0])
-        p /= np.linalg.norm(p)
-        return 2 * np.outer(p, p) - np.eye(3)
-    k = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
-    return np.eye(3) + k + k @ k / (1 + c)
-
-
-
 def _box_arrays(size: np.ndarray, center: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """An axis-aligned box: 8 corners (in trimesh.creation.box order) and 12 outward triangles."""
     corners = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
@@ -588,9 +669,7 @@ def box(size: Sequence[float], center: Sequence[float], material: str, bevel: fl
         v, f = hull_arrays(np.vstack(pts))
     else:
         v, f = _box_arrays(size, center)
-    piece = Piece(v, f, material, [v.copy()], name)
-    piece.set_hull(0, v, f)
-    return piece
+    return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)
 
 
 def instances(vertices: np.ndarray, faces: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -616,7 +695,7 @@ def cylinder_arrays(p0: Sequence[float], p1: Sequence[float], radius: float,
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
     h = float(np.linalg.norm(p1 - p0))
     v, f = _unit_cylinder(int(sections))
-    rot = _align_z((p1 - p0) / h)  # as trimesh.creation.cylinder
+    rot = align_z((p1 - p0) / h)  # as trimesh.creation.cylinder
     return (v * (radius, radius, h)) @ rot.T + (p0 + p1) / 2, f.copy()
 
 
@@ -627,19 +706,6 @@ def _unit_cylinder(sections: int) -> tuple[np.ndarray, np.ndarray]:
     v.flags.writeable = False
     f.flags.writeable = False
     return v, f
-
-
-def _align_z(direction: np.ndarray) -> np.ndarray:
-    """``trimesh.geometry.align_vectors(+Z, direction)`` rotation, cached per direction
-    (most cylinders run along a few directions)."""
-    return _align_z_cached(tuple(float(x) for x in direction))
-
-
-@functools.lru_cache(maxsize=1024)
-def _align_z_cached(direction: tuple[float, float, float]) -> np.ndarray:
-    rot = np.array(trimesh.geometry.align_vectors([0, 0, 1], direction)[:3, :3])
-    rot.flags.writeable = False
-    return rot
 
 
 def box_between(lo: Sequence[float], hi: Sequence[float], material: str, bevel: float = 0.0,
@@ -707,18 +773,14 @@ def cylinder(p0: Sequence[float], p1: Sequence[float], radius: float, material: 
     if radius <= 0 or np.linalg.norm(p1 - p0) <= 0:
         raise GeometryError(f"cylinder needs radius > 0 and distinct ends, got r={radius}")
     v, f = cylinder_arrays(p0, p1, radius, sections)
-    piece = Piece(v, f, material, [v.copy()], name)
-    piece.set_hull(0, v, f)  # a closed convex mesh is its own hull
-    return piece
+    return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)  # a closed convex mesh is its own hull
 
 
 def sphere(center: Sequence[float], radius: float, material: str, name: str = "") -> Piece:
     """A solid sphere (icosphere, subdivided twice)."""
     v, f = _unit_icosphere()
     v = v * float(radius) + np.asarray(center, float)
-    piece = Piece(v, f.copy(), material, [v.copy()], name)
-    piece.set_hull(0, v, f)
-    return piece
+    return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)
 
 
 @functools.cache
@@ -752,10 +814,9 @@ def revolve(profile: Sequence[tuple[float, float]], material: str, center: Seque
         pts = np.vstack([np.c_[max(r0, 1e-4) * ring, np.full(16, z0)],
                          np.c_[max(r1, 1e-4) * ring, np.full(16, z1)]])
         convex.append(pts + np.asarray(center, float))
-    piece = Piece(verts, faces, material, convex, name)
-    for k, pts in enumerate(piece.convex):  # each band is a frustum: its hull is known
-        piece.set_hull(k, pts, _outward(pts, _FRUSTUM_16))
-    return piece
+    # each band is a frustum: its hull is known
+    return Piece(verts, faces, material, convex, name, hulls=[(pts, _outward(pts, _FRUSTUM_16)) for pts in convex],
+                 _owned=True)
 
 
 # the hull of two coaxial 16-gons (0..15 below, 16..31 above): side quads and two caps
@@ -804,9 +865,8 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
         # point b * 4 + t of a wedge: band corner b at its angle t
         pts = np.stack([r * cos, r * sin, np.broadcast_to(z, cos.shape[:1] + (4, 4))], -1).reshape(-1, 16, 3) + c
         convex += list(pts)
-    piece = Piece(verts, faces, material, convex, name)
-    _mark_turned_copies(piece, convex_sectors, angles[:-1], c)
-    return piece
+    return Piece(verts, faces, material, convex, name, bands=_turned_copies(convex, convex_sectors, angles[:-1], c),
+                 _owned=True)
 
 
 def wedge_points(outer, inner, sectors: int, phase: float = 0.0) -> np.ndarray:
@@ -829,17 +889,17 @@ def wedge_points(outer, inner, sectors: int, phase: float = 0.0) -> np.ndarray:
     return np.array(bands).reshape(len(bands), sectors, 8, 3)
 
 
-def _mark_turned_copies(piece: Piece, count: int, turns: np.ndarray, point: np.ndarray) -> None:
-    """Declare ``piece.convex`` to be bands of ``count`` wedges, wedge ``s`` of a band being its
-    first turned by ``turns[s]`` about +Z through ``point``: one hull topology then serves the
-    whole band (found when first needed: categories often replace a shell's collision pieces),
-    and writers share the band's mesh (:meth:`Piece.hull_instances`)."""
-    piece._hull_hints = {}
-    for first in range(0, len(piece.convex), count):
-        band = {"src": piece.convex[first], "topology": None, "first": first, "point": np.array(point, float),
-                "axis": np.array([0.0, 0.0, 1.0])}
-        for s in range(count):
-            piece._hull_hints[first + s] = (piece.convex[first + s], band, float(turns[s]))
+def _turned_copies(convex: list, count: int, turns: np.ndarray, point: np.ndarray) -> list:
+    """The ``bands`` of a :class:`Piece` whose ``convex`` are bands of ``count`` wedges, wedge ``s``
+    of a band being its first turned by ``turns[s]`` about +Z through ``point``: one hull topology
+    then serves the whole band (found when first needed: categories often replace a shell's
+    collision pieces), and writers share the band's mesh (:meth:`Piece.hull_instances`)."""
+    out = []
+    for first in range(0, len(convex), count):
+        band = _Band(_frozen(convex[first], np.float64), None, first, np.array(point, float),
+                     np.array([0.0, 0.0, 1.0]))
+        out += [(band, float(turns[s])) for s in range(count)]
+    return out
 
 
 def disc(center: Sequence[float], radius: float, thickness: float, material: str, sections: int = 32,

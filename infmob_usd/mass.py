@@ -6,7 +6,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from .geometry import Piece, cross_rows, triangle_cross
+from .geometry import Piece, solids
 
 DUMMY_MASS = 0.01
 """kg of a dummy link of a compound joint: light, never zero (zero means "compute it")."""
@@ -16,56 +16,6 @@ DUMMY_INERTIA = 1e-6
 
 MIN_MASS = 0.005
 """kg; no link is lighter (a thin decoration would otherwise make solvers stiff)."""
-
-
-def is_closed(faces: np.ndarray) -> bool:
-    """Whether a triangle mesh is closed and consistently oriented: every directed edge
-    appears exactly once and so does its reverse (what ``trimesh.is_watertight`` and
-    ``is_winding_consistent`` check, without building a Trimesh)."""
-    f = np.asarray(faces, np.int64)
-    if not len(f):
-        return False
-    n = int(f.max()) + 1
-    a, b = f.ravel(), f[:, [1, 2, 0]].ravel()
-    fwd = np.sort(a * n + b)
-    if (fwd[1:] == fwd[:-1]).any():
-        return False
-    return bool(np.array_equal(fwd, np.sort(b * n + a)))
-
-
-def mass_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
-    """Volume, centroid ``(3,)``, inertia tensor about the centroid at unit density ``(3, 3)``
-    and surface area of a closed, outward-oriented triangle mesh.
-
-    Sum over the tetrahedra (reference point, triangle): the second moment of a tetrahedron
-    with one vertex at the reference point and edge vectors a, b, c is
-    ``det[a b c] / 120 * (a a^T + b b^T + c c^T + s s^T)`` with ``s = a + b + c``.
-    """
-    v = np.asarray(vertices, float)
-    ref = v.mean(0)  # close to the solid: no cancellation for parts far from the origin
-    tri = v[np.asarray(faces, np.int64)] - ref  # (m, 3, 3)
-    cross = cross_rows(tri[:, 1], tri[:, 2])
-    det = np.einsum("ij,ij->i", tri[:, 0], cross)  # 6 x signed tetra volume
-    area = 0.5 * float(np.linalg.norm(triangle_cross(tri), axis=1).sum())
-    volume = float(det.sum()) / 6.0
-    if abs(volume) <= 1e-15:
-        return 0.0, ref, np.zeros((3, 3)), area
-    s = tri.sum(1)  # (m, 3)
-    centroid = (det @ s) / (24.0 * volume)
-    corners = tri.reshape(-1, 3)
-    second = ((corners * np.repeat(det, 3)[:, None]).T @ corners + (s * det[:, None]).T @ s) / 120.0
-    second -= volume * np.outer(centroid, centroid)  # about the centroid
-    inertia = np.trace(second) * np.eye(3) - second
-    return volume, centroid + ref, inertia, area
-
-
-def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
-    """Mass properties of the solids of a piece: its mesh if closed, else its convex hulls."""
-    if is_closed(piece.faces):
-        props = mass_properties(piece.vertices, piece.faces)
-        if props[0] > 1e-12:
-            return [props]
-    return [mass_properties(v, f) for v, f in piece.hulls()]
 
 
 def inertial(pieces: Iterable[tuple[Piece, float]]) -> tuple[float, np.ndarray, np.ndarray]:

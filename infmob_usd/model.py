@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -19,9 +18,10 @@ import numpy as np
 from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
-from .geometry import Piece, axis_angle
+from .geometry import Piece
 from .mass import DUMMY_INERTIA, DUMMY_MASS, inertial
 from .physical import dynamics
+from .rotation import motion
 
 
 @dataclass
@@ -113,20 +113,9 @@ class ArticulatedObject:
         origin = {link.name: link.origin for link in self.links}
         pose = {self.links[0].name: _translation(origin[self.links[0].name])}
         for j in self.joints:  # parents always come before their children
-            value = float(q.get(j.name, 0.0))
-            motion = np.eye(4)
-            if j.type == "prismatic":
-                motion[:3, 3] = j.axis * value
-            elif j.type in ("revolute", "continuous"):
-                motion[:3, :3] = axis_angle(j.axis, value)
-            pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ motion
+            moved = motion(j.type, j.axis, float(q.get(j.name, 0.0)))
+            pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ moved
         return pose
-
-    def save(self, folder: str | Path) -> Path:
-        """Write the object into ``folder/<name>/`` (atomically) and return that path."""
-        from .layers import write_object
-
-        return write_object(self, Path(folder))
 
 
 def _translation(t) -> np.ndarray:

@@ -22,8 +22,10 @@ from functools import cached_property
 import numpy as np
 
 from .blueprint import Blueprint, descendants
-from .geometry import axis_angle, hull_arrays, triangle_cross
+from .errors import ModelError
+from .geometry import hull_arrays, triangle_cross
 from .joints import Dof
+from .rotation import axis_angle
 
 
 @dataclass(frozen=True)
@@ -55,20 +57,20 @@ def dynamics(role: str) -> Dynamics:
 
 
 def rest_on_ground(bp: Blueprint) -> Blueprint:
-    """Translate every part and joint so the lowest point at rest sits at z = 0."""
+    """A copy of ``bp`` translated (parts and joints) so its lowest point at rest sits at z = 0."""
     dz = -float(bp.bounds()[0, 2])
     if abs(dz) < 1e-12:
         return bp
     offset = np.array([0.0, 0.0, dz])
-    for part in bp.parts.values():
-        part.pieces = [p.translated(offset) for p in part.pieces]
-    bp.joints = [
+    parts = {name: replace(part, pieces=[p.translated(offset) for p in part.pieces])
+             for name, part in bp.parts.items()}
+    joints = [
         replace(j, dofs=tuple(
             Dof(d.type, tuple(np.asarray(d.origin) + offset), d.axis, d.lower, d.upper) for d in j.dofs
         ))
         for j in bp.joints
     ]
-    return bp
+    return replace(bp, parts=parts, joints=joints)
 
 
 # ---------------------------------------------------------------------------
@@ -106,13 +108,14 @@ def _separated(a: np.ndarray, a_normals: np.ndarray, d: float, b: np.ndarray, b_
     return bool(np.any((pa.max(0) + grow < pb.min(0)) | (pa.min(0) - grow > pb.max(0))))
 
 
-def ensure_gaps(links, joints) -> int:
-    """Erode collision pieces of moving parts that come closer than :func:`gap_size` to their parent.
+def ensure_gaps(links, joints) -> list:
+    """New links whose moving parts' collision pieces keep :func:`gap_size` from their parent.
 
     Only collision shapes change (visual meshes stay as designed). Each offending
     convex piece of the child shrinks towards its centre by the gap on each axis
     (never by more than a quarter of its own extent there). Compound chains are
-    checked child against the chain's real parent. Returns the number of pieces eroded.
+    checked child against the chain's real parent. The links given are not changed;
+    links with nothing eroded are returned as they are.
     """
     import manifold3d
 
@@ -125,7 +128,7 @@ def ensure_gaps(links, joints) -> int:
             p = into[p].parent
         return p
 
-    eroded = 0
+    new_pieces: dict[str, list] = {}
     for j in joints:
         child = by_name[j.child]
         if not j.movable or child.dummy or not child.pieces:
@@ -144,8 +147,10 @@ def ensure_gaps(links, joints) -> int:
         pts = np.vstack([c for p in child.pieces for c in p.convex] or [np.zeros((1, 3))])
         gap = gap_size(np.ptp(pts, axis=0))
         cache: dict[int, manifold3d.Manifold] = {}
-        for piece in child.pieces:
+        pieces = list(child.pieces)
+        for n, piece in enumerate(child.pieces):
             hulls = piece.hulls()
+            eroded: dict[int, tuple] = {}
             for k, c in enumerate(piece.convex):
                 lo, hi = c.min(0) - gap, c.max(0) + gap
                 near = np.flatnonzero(np.all(hi > box_lo, axis=1) & np.all(box_hi > lo, axis=1))
@@ -171,51 +176,48 @@ def ensure_gaps(links, joints) -> int:
                     half = (c.max(0) - c.min(0)) / 2
                     shrink = np.minimum(gap, 0.25 * 2 * half)
                     scale = np.where(half > 0, (half - shrink) / np.where(half > 0, half, 1), 1.0)
-                    hull_v, hull_f = piece.hulls()[k]
-                    piece.convex[k] = centre + (c - centre) * scale
+                    hull_v, hull_f = hulls[k]
                     # the same axis scaling of the hull is the hull of the scaled points
-                    piece.set_hull(k, centre + (hull_v - centre) * scale, hull_f)
-                    eroded += 1
-    return eroded
+                    eroded[k] = (centre + (c - centre) * scale, centre + (hull_v - centre) * scale, hull_f)
+            if eroded:
+                pieces[n] = piece.with_convex(eroded)
+                new_pieces[child.name] = pieces
+    return [replace(link, pieces=new_pieces[link.name]) if link.name in new_pieces else link for link in links]
 
 
-def _extreme_points(obj) -> dict[str, np.ndarray]:
+def _extreme_points(links) -> dict[str, np.ndarray]:
     """Per link, the vertices of the convex hull of all its collision hulls (in the link frame).
 
     The lowest point of a rigidly moved link is one of them, and there are far fewer of them
-    than hull vertices. Cached on the object; :func:`ensure_gaps` runs before, so the hulls
-    are final.
+    than hull vertices.
     """
-    cache = getattr(obj, "_extreme_points", None)
-    if cache is None:
-        cache = {}
-        for link in obj.links:
-            pts = [v for p in link.pieces for v, _ in p.hulls()]
-            if pts:
-                pts = np.vstack(pts)
-                cache[link.name] = hull_arrays(pts)[0] if len(pts) > 64 else pts
-        obj._extreme_points = cache
-    return cache
+    out = {}
+    for link in links:
+        pts = [v for p in link.pieces for v, _ in p.hulls()]
+        if pts:
+            pts = np.vstack(pts)
+            out[link.name] = hull_arrays(pts)[0] if len(pts) > 64 else pts
+    return out
 
 
-def limit_to_ground(obj) -> list[str]:
-    """Reduce joint limits so that no part goes below the ground at any single joint's limit.
+def limit_to_ground(links, joints) -> list:
+    """New joints whose limits keep every part above the ground at any single joint's limit.
 
     For each limited joint alone, the state at each limit is checked; if the moved
     subtree dips below ``-GROUND_TOL``, that limit is moved towards rest by
     bisection until it clears. A continuous joint that goes below the ground
     cannot be limited: that raises :class:`~infmob_usd.errors.ModelError` (the
-    category must raise its base). Returns the names of the joints changed.
+    category must raise its base). The joints given are not changed; joints whose
+    limits stand are returned as they are.
     """
-    from .errors import ModelError
-
-    extreme = _extreme_points(obj)
-    origin = {link.name: np.asarray(link.origin, float) for link in obj.links}
-    changed = []
-    for j in obj.joints:
+    extreme = _extreme_points(links)
+    origin = {link.name: np.asarray(link.origin, float) for link in links}
+    out = []
+    for j in joints:
+        out.append(j)
         if not j.movable:
             continue
-        moved = descendants(obj.joints, j.child)
+        moved = descendants(joints, j.child)
         # one joint moves from rest, so its subtree moves rigidly: world points at rest, about the pivot
         pts = [extreme[n] + origin[n] for n in moved if n in extreme]
         if not pts:
@@ -247,9 +249,8 @@ def limit_to_ground(obj) -> list[str]:
                     bad = mid
             if abs(good) < 1e-6:
                 raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without hitting the ground")
-            setattr(j, end, good)
-            changed.append(j.name)
-    return changed
+            out[-1] = replace(out[-1], **{end: good})
+    return out
 
 
 # ---------------------------------------------------------------------------

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from infmob_usd.geometry import corner_attributes
@@ -94,12 +92,3 @@ def collision_placements(link) -> list[tuple]:
                 out.append((base + j, rot @ ((pv.min(0) + pv.max(0)) / 2) + t, rot, None, None))
         base += len(hulls)
     return out
-
-
-def rotation_rpy(rot: np.ndarray) -> tuple[float, float, float]:
-    """URDF roll, pitch, yaw of a rotation (``R = Rz(yaw) Ry(pitch) Rx(roll)``)."""
-    sp = -float(rot[2, 0])
-    if abs(sp) > 1 - 1e-12:  # gimbal lock: roll folded into yaw
-        return 0.0, math.copysign(math.pi / 2, sp), math.atan2(-float(rot[0, 1]), float(rot[1, 1]))
-    return (math.atan2(float(rot[2, 1]), float(rot[2, 2])), math.asin(sp),
-            math.atan2(float(rot[1, 0]), float(rot[0, 0])))

@@ -22,7 +22,9 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .common import collision_placements, rotation_rpy, visual_meshes
+from infmob_usd.rotation import matrix_rpy as rotation_rpy
+
+from .common import collision_placements, visual_meshes
 
 MESHES = "meshes"
 

@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import infmob_usd
 from infmob_usd.assembly import Assembly
 from infmob_usd.blueprint import Blueprint
 from infmob_usd.categories.parts import hardware, panels
@@ -240,5 +241,5 @@ def test_worked_example_passes_validate_sim(tmp_path):
     r = streams("latch_box", 3)
     p = cat.schema.sample(r["params"], {"has_latch": True, "has_handle": True})
     obj = assemble(cat.build(p, r["structure"], r["geometry"]), 3, r["materials"], 16, p, {})
-    result = validate_object(obj.save(tmp_path), sim=True, physics=True)
+    result = validate_object(infmob_usd.save(obj, tmp_path), sim=True, physics=True)
     assert result.ok, result

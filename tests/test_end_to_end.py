@@ -26,17 +26,17 @@ def test_generate_save_validate(category, seed, tmp_path):
     pytest.importorskip("sapien")
     obj = infmob_usd.generate(category, seed=seed, texture_size=64)
     assert all(link.label for link in obj.links)
-    folder = obj.save(tmp_path)
+    folder = infmob_usd.save(obj, tmp_path)
     report = validate_object(folder, sim=True, physics=True)
     assert report.ok, "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
 
 
 @pytest.mark.parametrize("category", CATEGORIES)
 def test_same_call_gives_identical_bytes(category, tmp_path):
-    a = infmob_usd.generate(category, seed=11, texture_size=64).save(tmp_path / "a")
-    b = infmob_usd.generate(category, seed=11, texture_size=64).save(tmp_path / "b")
+    a = infmob_usd.save(infmob_usd.generate(category, seed=11, texture_size=64), tmp_path / "a")
+    b = infmob_usd.save(infmob_usd.generate(category, seed=11, texture_size=64), tmp_path / "b")
     assert _digest(a) == _digest(b)
-    c = infmob_usd.generate(category, seed=12, texture_size=64).save(tmp_path / "c")
+    c = infmob_usd.save(infmob_usd.generate(category, seed=12, texture_size=64), tmp_path / "c")
     assert _digest(a) != _digest(c)
 
 

@@ -85,8 +85,41 @@ def test_collision_hulls_stay_within_physx_vertex_limit():
     ball = g.sphere([0, 0, 0], 0.1, "m")
     rng = np.random.default_rng(0)
     pts = rng.normal(size=(3000, 3))
-    ball.convex = [pts / np.linalg.norm(pts, axis=1, keepdims=True) * 0.1]  # ~3000 hull vertices
+    ball = ball.replace(convex=[pts / np.linalg.norm(pts, axis=1, keepdims=True) * 0.1])  # ~3000 hull vertices
     (v, f), = ball.hulls()
     assert len(v) <= g.MAX_HULL_VERTICES
     assert trimesh.Trimesh(v, f).is_watertight
     assert np.ptp(v, axis=0).min() > 0.19  # still spans the sphere
+
+
+def test_a_piece_is_an_immutable_value():
+    import dataclasses
+
+    b = g.box([0.1, 0.2, 0.3], [0, 0, 0], "m")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        b.sheet = 0.001
+    for a in (b.vertices, b.faces, *b.convex):
+        with pytest.raises(ValueError):
+            a[0] = 0  # read-only arrays: an edit in place fails loudly
+    src = np.r_[np.eye(3), [[0, 0, 0]]]
+    p = g.Piece(src, [[0, 1, 2]], "m", [src])
+    src[:] = 7  # the caller's arrays are copied, not frozen under them
+    assert src.flags.writeable and p.vertices.sum() == 3 and p.convex[0].sum() == 3
+    thin = b.replace(sheet=0.001)
+    assert thin is not b and b.sheet == 0.0 and thin.sheet == 0.001
+    assert thin.hulls_known[0] is not None  # the declared hull travels with an unchanged collision
+    bare = b.replace(convex=[])
+    assert bare.convex == () and bare.hulls() == [] and len(b.hulls()) == 1
+
+
+def test_declared_hulls_skip_qhull_and_travel_with_transforms():
+    c = g.cylinder([0, 0, 0], [0, 0, 0.2], 0.05, "m", 24)
+    (v, f), = c.hulls()
+    assert np.array_equal(f, c.hulls_known[0][1])  # the declared hull, not a Qhull one
+    m = np.eye(4)
+    m[:3, :3] = g.axis_angle([1, 0, 0], 0.3)
+    m[:3, 3] = [1, 2, 3]
+    moved = c.transformed(m)
+    (mv, mf), = moved.hulls()
+    assert np.array_equal(mf, f) and np.allclose(mv, v @ m[:3, :3].T + m[:3, 3])
+    assert trimesh.Trimesh(mv, mf).is_watertight and trimesh.Trimesh(mv, mf).volume > 0

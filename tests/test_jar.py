@@ -103,7 +103,7 @@ def test_seed_61_lid_turns_both_ways_in_sapien(tmp_path):
     import infmob_usd
     from infmob_usd.validate.sim import check_sapien
 
-    folder = infmob_usd.generate("jar", seed=61, texture_size=16).save(tmp_path)
+    folder = infmob_usd.save(infmob_usd.generate("jar", seed=61, texture_size=16), tmp_path)
     res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
     assert res["sapien_load"].ok, res["sapien_load"].detail
     assert res["reach"].ok, res["reach"].detail

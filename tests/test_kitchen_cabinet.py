@@ -101,7 +101,7 @@ def test_in_sapien_drawers_slide_out_and_doors_swing_outward(seed, tmp_path):
     from infmob_usd.validate.sim import load_sapien
 
     obj = infmob_usd.generate("kitchen_cabinet", seed=seed, texture_size=16)
-    folder = obj.save(tmp_path)
+    folder = infmob_usd.save(obj, tmp_path)
     scene, art = load_sapien(folder / f"{folder.name}.urdf")
     joints = {j.name: j for j in art.get_active_joints()}
     links = {link.name: link for link in art.get_links()}

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from pxr import Sdf, Usd, UsdGeom, UsdPhysics, UsdShade
 
+import infmob_usd
 from infmob_usd.errors import OutputError
 
 from zoo import zoo
@@ -14,7 +15,7 @@ from zoo import zoo
 @pytest.fixture(scope="module")
 def written(tmp_path_factory):
     obj = zoo()
-    return obj, obj.save(tmp_path_factory.mktemp("zoo"))
+    return obj, infmob_usd.save(obj, tmp_path_factory.mktemp("zoo"))
 
 
 def test_folder_layout(written):
@@ -150,9 +151,9 @@ def test_semantics_and_metadata(written):
 
 def test_save_replaces_an_existing_object_atomically(tmp_path):
     obj = zoo()
-    first = obj.save(tmp_path)
+    first = infmob_usd.save(obj, tmp_path)
     (first / "stale.txt").write_text("old")
-    second = obj.save(tmp_path)
+    second = infmob_usd.save(obj, tmp_path)
     assert first == second and not (second / "stale.txt").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["zoo_000000"]
 
@@ -161,7 +162,7 @@ def test_a_failed_write_leaves_nothing(tmp_path):
     obj = zoo()
     obj.textures["body"]["basecolor"] = "not an image"
     with pytest.raises((TypeError, ValueError, AttributeError)):
-        obj.save(tmp_path)
+        infmob_usd.save(obj, tmp_path)
     assert list(tmp_path.iterdir()) == []
 
 
@@ -169,4 +170,4 @@ def test_unwritable_or_file_output_is_a_clear_error(tmp_path):
     f = tmp_path / "file"
     f.write_text("x")
     with pytest.raises(OutputError, match="is a file"):
-        zoo().save(f)
+        infmob_usd.save(zoo(), f)

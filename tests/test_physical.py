@@ -76,8 +76,7 @@ def test_sheet_parts_weigh_their_wall_not_their_volume():
     from infmob_usd.mass import inertial
 
     solid = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m")
-    sheet = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m")
-    sheet.sheet = 0.001
+    sheet = g.box([0.5, 0.5, 0.01], [0, 0, 0], "m").replace(sheet=0.001)
     m_solid = inertial([(solid, 7850.0)])[0]
     m_sheet = inertial([(sheet, 7850.0)])[0]
     assert m_solid == pytest.approx(0.25 * 0.01 * 7850)
@@ -93,3 +92,31 @@ def test_material_variants_restrict_the_palette():
     assert {sample_look("plastic:black|white", rng).variant for _ in range(40)} == {"black", "white"}
     with pytest.raises(ValueError, match="its variants"):
         sample_look("plastic:mauve", rng)
+
+
+def test_passes_return_new_objects_and_leave_their_inputs_alone():
+    from infmob_usd import physical
+    from infmob_usd.model import build
+
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("carcass", "body", [g.box_between([-0.3, -0.3, 0.1], [0.3, 0.3, 0.12], "m")])
+    bp.add("drawer", "drawer", [g.box_between([-0.25, -0.2, 0.12], [0.3, 0.2, 0.3], "m")])
+    bp.add("door", "door", [g.box_between([0.302, -0.25, 0.12], [0.322, 0.25, 0.8], "m")])
+    bp.join(J.prismatic("carcass", "drawer", (0.3, 0, 0.12), (1, 0, 0), 0.0, 0.3))
+    bp.join(J.revolute("carcass", "door", (0.322, 0, 0.12), (0, 1, 0), 0.0, 0.75 * math.pi))
+    before = bp.bounds().copy()
+    grounded = physical.rest_on_ground(bp)
+    assert grounded is not bp and np.allclose(bp.bounds(), before)  # the input stays where it was
+    assert grounded.bounds()[0, 2] == pytest.approx(0.0)
+    links, joints = build(grounded, {"m": 700.0})
+    hulls = [c.copy() for link in links for p in link.pieces for c in p.convex]
+    limits = [(j.lower, j.upper) for j in joints]
+    gapped = physical.ensure_gaps(links, joints)
+    after = [c for link in links for p in link.pieces for c in p.convex]
+    assert all(np.array_equal(a, b) for a, b in zip(after, hulls, strict=True))  # untouched
+    assert gapped[1] is not links[1] and gapped[0] is links[0]  # the drawer eroded, the carcass kept
+    assert gapped[1].pieces[0].convex[0][:, 2].min() > links[1].pieces[0].convex[0][:, 2].min()
+    limited = physical.limit_to_ground(gapped, joints)
+    assert [(j.lower, j.upper) for j in joints] == limits  # untouched
+    door = next(j for j in limited if j.child == "door")
+    assert door.upper < 0.75 * math.pi and next(j for j in limited if j.child == "drawer").upper == 0.3

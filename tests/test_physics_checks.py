@@ -46,9 +46,9 @@ def _case_id(case):
 @pytest.fixture(scope="module")
 def folders(tmp_path_factory) -> dict[tuple[str, int], Path]:
     out = tmp_path_factory.mktemp("physics_objects")
-    found = {(c, s): Path(infmob_usd.generate(c, s, texture_size=16).save(out))
+    found = {(c, s): Path(infmob_usd.save(infmob_usd.generate(c, s, texture_size=16), out))
              for c, s in CASES if c != "zoo"}
-    found["zoo", 0] = Path(zoo(texture_size=16).save(out))
+    found["zoo", 0] = Path(infmob_usd.save(zoo(texture_size=16), out))
     return found
 
 
@@ -139,7 +139,7 @@ def test_geometric_checks_are_fast(tmp_path):
     """A 15-joint cabinet (~100 hulls): all three geometric checks well under 2 s."""
     if "kitchen_cabinet" not in infmob_usd.list_categories():
         pytest.skip("no kitchen_cabinet")
-    folder = Path(infmob_usd.generate("kitchen_cabinet", 3, texture_size=16).save(tmp_path))
+    folder = Path(infmob_usd.save(infmob_usd.generate("kitchen_cabinet", 3, texture_size=16), tmp_path))
     t0 = time.perf_counter()
     res = physics.check_physics(folder)
     assert time.perf_counter() - t0 < 2.0
@@ -193,7 +193,7 @@ def cabinet(tmp_path_factory):
         pytest.skip("no kitchen_cabinet")
     out = tmp_path_factory.mktemp("physics_cabinet")
     for seed in range(20):
-        folder = Path(infmob_usd.generate("kitchen_cabinet", seed, texture_size=16).save(out))
+        folder = Path(infmob_usd.save(infmob_usd.generate("kitchen_cabinet", seed, texture_size=16), out))
         meta = json.loads((folder / "metadata.json").read_text())
         drawers = [j for j in meta["joints"] if j["type"] == "prismatic"]
         doors = [j for j in meta["joints"] if j["type"] == "revolute"]

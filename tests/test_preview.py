@@ -27,7 +27,7 @@ SIZE = 256
 def cabinets(tmp_path_factory):
     """Three kitchen cabinets (seeds 0..2), small textures to keep the test quick."""
     out = tmp_path_factory.mktemp("preview_objects")
-    return [infmob_usd.generate("kitchen_cabinet", seed=s, texture_size=128).save(out) for s in range(3)]
+    return [infmob_usd.save(infmob_usd.generate("kitchen_cabinet", seed=s, texture_size=128), out) for s in range(3)]
 
 
 @pytest.fixture(scope="module")

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+import infmob_usd
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.api import assemble
@@ -52,20 +53,20 @@ def _unlimited(bp):
 def test_requires_open_is_written_and_honoured(tmp_path):
     obj = assemble(cupboard(True), 0, np.random.default_rng(0), 16)
     assert next(j for j in obj.joints if j.child == "tray").upper == pytest.approx(0.35)
-    folder = obj.save(tmp_path / "gated")
+    folder = infmob_usd.save(obj, tmp_path / "gated")
     meta = json.loads((folder / "metadata.json").read_text())
     tray = next(j for j in meta["joints"] if j["child"] == "tray")
     assert tray["requires_open"] == "door"
     res = _checks(folder)
     assert res["self_collision"].ok, res["self_collision"].detail
 
-    ungated = _unlimited(cupboard(False)).save(tmp_path / "free")
+    ungated = infmob_usd.save(_unlimited(cupboard(False)), tmp_path / "free")
     res = _checks(ungated)
     assert not res["self_collision"].ok and "door" in res["self_collision"].detail
     # the core's clearance pass stops an ungated tray before the closed door instead
     limited = assemble(cupboard(False), 0, np.random.default_rng(0), 16)
     assert next(j for j in limited.joints if j.child == "tray").upper < 0.303 - 0.25
-    assert _checks(limited.save(tmp_path / "limited"))["self_collision"].ok
+    assert _checks(infmob_usd.save(limited, tmp_path / "limited"))["self_collision"].ok
 
 
 @pytest.mark.sim
@@ -73,10 +74,10 @@ def test_reach_opens_the_door_first(tmp_path):
     pytest.importorskip("sapien")
     from infmob_usd.validate.sim import check_sapien
 
-    folder = assemble(cupboard(True), 0, np.random.default_rng(0), 16).save(tmp_path / "gated")
+    folder = infmob_usd.save(assemble(cupboard(True), 0, np.random.default_rng(0), 16), tmp_path / "gated")
     res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
     assert res["reach"].ok, res["reach"].detail
-    ungated = _unlimited(cupboard(False)).save(tmp_path / "free")
+    ungated = infmob_usd.save(_unlimited(cupboard(False)), tmp_path / "free")
     res = {c.name: c for c in check_sapien(ungated, checks=["reach"])}
     assert not res["reach"].ok and "joint_tray" in res["reach"].detail
 

@@ -30,14 +30,14 @@ SAPIEN_NAMES = ["sapien_load", *(n for n in sim.SAPIEN_CHECKS if n != "rest")]
 @pytest.fixture(scope="module")
 def objects(tmp_path_factory) -> dict[tuple[str, int], Path]:
     out = tmp_path_factory.mktemp("sim_objects")
-    return {(c, s): Path(infmob_usd.generate(c, s, texture_size=16).save(out))
+    return {(c, s): Path(infmob_usd.save(infmob_usd.generate(c, s, texture_size=16), out))
             for c, s in CASES}
 
 
 @pytest.fixture(scope="module")
 def good(tmp_path_factory) -> Path:
     """The zoo: one joint of every kind (compound ones through dummy links)."""
-    return Path(zoo(texture_size=16).save(tmp_path_factory.mktemp("sim_zoo")))
+    return Path(infmob_usd.save(zoo(texture_size=16), tmp_path_factory.mktemp("sim_zoo")))
 
 
 def _by_name(results):

@@ -3,6 +3,7 @@ import shutil
 
 import pytest
 
+import infmob_usd
 from infmob_usd.validate.usd_check import check_usd
 
 from zoo import zoo
@@ -10,7 +11,7 @@ from zoo import zoo
 
 @pytest.fixture(scope="module")
 def good(tmp_path_factory):
-    return zoo().save(tmp_path_factory.mktemp("good"))
+    return infmob_usd.save(zoo(), tmp_path_factory.mktemp("good"))
 
 
 def _copy(good, tmp_path):
@@ -86,7 +87,7 @@ def test_shell_wedges_share_one_collision_file_per_band(tmp_path):
 
     import infmob_usd
 
-    folder = infmob_usd.generate("pot", seed=1, texture_size=16).save(tmp_path)
+    folder = infmob_usd.save(infmob_usd.generate("pot", seed=1, texture_size=16), tmp_path)
     links = ET.parse(folder / f"{folder.name}.urdf").getroot().findall("link")
     cols = [c for link in links for c in link.findall("collision")]
     files = {c.find("geometry/mesh").get("filename") for c in cols}

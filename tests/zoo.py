@@ -51,7 +51,7 @@ def make_bp(module, name, seed, **overrides):
     r = streams(name, seed)
     p = cat.schema.sample(r["params"], overrides)
     bp = cat.build(p, r["structure"], r["geometry"])
-    physical.rest_on_ground(bp)
+    bp = physical.rest_on_ground(bp)
     return p, bp
 
 

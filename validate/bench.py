@@ -29,18 +29,18 @@ STAGES = ("sampling", "geometry", "textures", "textures_io", "usd", "urdf", "met
 
 
 def _stage_times(categories, count, texture_size, tmp: Path) -> dict[str, dict[str, float]]:
-    from infmob_usd.api import generate
+    from infmob_usd.api import generate, save
 
     per: dict[str, dict[str, list[float]]] = {}
     for c in categories:  # warm-up: imports, caches
-        generate(c, seed=10_000, texture_size=texture_size).save(tmp / "warm")
+        save(generate(c, seed=10_000, texture_size=texture_size), tmp / "warm")
     per["_rss_mb"] = {"after_warmup": [resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024]}
     for c in categories:
         rows = per.setdefault(c, {s: [] for s in STAGES})
         for seed in range(count):
             t0 = time.perf_counter()
             obj = generate(c, seed=seed, texture_size=texture_size)
-            obj.save(tmp / "serial")
+            save(obj, tmp / "serial")
             total = time.perf_counter() - t0
             for s in STAGES[:-1]:
                 rows[s].append(obj.timings.get(s, 0.0))

@@ -52,13 +52,13 @@ from __future__ import annotations
 import json
 import math
 import time
-import xml.etree.ElementTree as ET
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
 
+from .files import UrdfJoint, forward_kinematics, parse_urdf
 from .result import CheckResult
 
 __all__ = [
@@ -91,53 +91,15 @@ _MOVABLE = ("revolute", "continuous", "prismatic")
 # --------------------------------------------------------------------------- URDF model
 
 
-def rpy_matrix(rpy: Iterable[float]) -> np.ndarray:
-    """URDF roll-pitch-yaw (fixed axes X, Y, Z): ``Rz(yaw) Ry(pitch) Rx(roll)``."""
-    r, p, y = (float(x) for x in rpy)
-    cr, sr, cp, sp, cy, sy = math.cos(r), math.sin(r), math.cos(p), math.sin(p), math.cos(y), math.sin(y)
-    return np.array([
-        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-        [-sp, cp * sr, cp * cr],
-    ])
+@dataclass(frozen=True)
+class KJoint(UrdfJoint):
+    """One URDF joint (:class:`~infmob_usd.validate.files.UrdfJoint`, limits 0 where absent) with
+    the joint states the checks sample; ``local(q)`` is the shared forward-kinematics step."""
 
-
-def _frame(xyz: Iterable[float], rpy: Iterable[float]) -> np.ndarray:
-    t = np.eye(4)
-    t[:3, :3] = rpy_matrix(rpy)
-    t[:3, 3] = np.asarray(list(xyz), float)
-    return t
-
-
-def _axis_angle(axis: np.ndarray, angle: float) -> np.ndarray:
-    x, y, z = axis
-    c, s = math.cos(angle), math.sin(angle)
-    C = 1.0 - c
-    return np.array([
-        [c + x * x * C, x * y * C - z * s, x * z * C + y * s],
-        [y * x * C + z * s, c + y * y * C, y * z * C - x * s],
-        [z * x * C - y * s, z * y * C + x * s, c + z * z * C],
-    ])
-
-
-@dataclass
-class KJoint:
-    """One URDF joint, for forward kinematics: ``T_parent_child(q) = origin @ motion(q)``."""
-
-    name: str
-    type: str
-    parent: str
-    child: str
-    origin: np.ndarray  # 4x4, child joint frame in the parent link frame
-    axis: np.ndarray  # unit, in the joint frame
-    lower: float = 0.0
-    upper: float = 0.0
-    damping: float = 0.0
-    friction: float = 0.0
-
-    @property
-    def movable(self) -> bool:
-        return self.type in _MOVABLE
+    @classmethod
+    def of(cls, j: UrdfJoint) -> KJoint:
+        values = {f.name: getattr(j, f.name) for f in fields(UrdfJoint)}
+        return cls(**values | {k: values[k] or 0.0 for k in ("lower", "upper", "damping", "friction")})
 
     @property
     def rest(self) -> float:
@@ -157,17 +119,6 @@ class KJoint:
         if self.type == "continuous":
             return [(f"{math.degrees(a):+.0f}deg", a) for a in CONTINUOUS_ANGLES]
         return [("lower", self.lower), ("upper", self.upper)]
-
-    def local(self, q: float) -> np.ndarray:
-        if self.type in ("revolute", "continuous") and q:
-            m = np.eye(4)
-            m[:3, :3] = _axis_angle(self.axis, q)
-            return self.origin @ m
-        if self.type == "prismatic" and q:
-            m = np.eye(4)
-            m[:3, 3] = self.axis * q
-            return self.origin @ m
-        return self.origin
 
 
 @dataclass
@@ -306,11 +257,7 @@ class Model:
 
     def poses(self, q: Mapping[str, float] | None = None) -> dict[str, np.ndarray]:
         """World pose (4x4) of every link; joints not in ``q`` at rest. The root is at identity."""
-        q = q or {}
-        out = {self.root: np.eye(4)}
-        for j in self.order:
-            out[j.child] = out[j.parent] @ j.local(q.get(j.name, j.rest))
-        return out
+        return forward_kinematics(self.root, self.order, dict(q or {}), lambda j: j.rest)
 
     def path_joints(self, a: str, b: str) -> list[KJoint]:
         """The joints on the tree path between two links."""
@@ -333,10 +280,6 @@ class Model:
 def _read_obj_vertices(path: Path) -> np.ndarray:
     rows = [line.split()[1:4] for line in path.read_text().splitlines() if line.startswith("v ")]
     return np.asarray(rows, dtype=np.float64).reshape(-1, 3)
-
-
-def _floats(text: str | None, default: str) -> list[float]:
-    return [float(x) for x in (text or default).split()]
 
 
 def load_model(folder_or_urdf: str | Path) -> Model:
@@ -363,62 +306,32 @@ def load_model(folder_or_urdf: str | Path) -> Model:
         if not found or not found[0].is_file():
             raise FileNotFoundError(f"no URDF in {folder}")
         path = found[0]
-    root = ET.parse(path).getroot()
+    urdf = parse_urdf(path)
     dummy_flags = {link["name"]: bool(link.get("dummy")) for link in meta.get("links", [])}
 
     links: dict[str, LinkGeometry] = {}
-    for el in root.findall("link"):
-        name = el.get("name")
+    for name, link in urdf.links.items():
         geo = LinkGeometry(name)
-        for col in el.findall("collision"):
-            mesh = col.find("geometry/mesh")
-            if mesh is None:
-                raise ValueError(f"link {name}: a <collision> without a mesh (only meshes supported)")
-            mesh_path = path.parent / mesh.get("filename")
+        for col in link.collisions:
+            mesh_path = path.parent / col.filename
             if not mesh_path.is_file():
-                raise FileNotFoundError(f"link {name}: collision mesh {mesh.get('filename')} missing")
+                raise FileNotFoundError(f"link {name}: collision mesh {col.filename} missing")
             verts = _read_obj_vertices(mesh_path)
             if len(verts) < 4:
-                raise ValueError(f"link {name}: collision mesh {mesh.get('filename')} has "
-                                 f"{len(verts)} vertices")
-            verts = verts * np.asarray(_floats(mesh.get("scale"), "1 1 1"))
-            o = col.find("origin")
-            if o is not None:
-                t = _frame(_floats(o.get("xyz"), "0 0 0"), _floats(o.get("rpy"), "0 0 0"))
-                verts = verts @ t[:3, :3].T + t[:3, 3]
-            geo.hulls.append(verts)
-            geo.files.append(mesh.get("filename"))
-        geo.dummy = dummy_flags.get(name, not el.findall("collision") and not el.findall("visual"))
+                raise ValueError(f"link {name}: collision mesh {col.filename} has {len(verts)} vertices")
+            t = col.origin
+            geo.hulls.append((verts * np.asarray(col.scale)) @ t[:3, :3].T + t[:3, 3])
+            geo.files.append(col.filename)
+        geo.dummy = dummy_flags.get(name, not link.collisions and not link.visuals)
         links[name] = geo
-
-    joints = []
-    for el in root.findall("joint"):
-        kind = el.get("type")
-        if kind not in (*_MOVABLE, "fixed"):
-            raise ValueError(f"joint {el.get('name')}: type {kind!r} not supported")
-        o = el.find("origin")
-        a = el.find("axis")
-        lim = el.find("limit")
-        dyn = el.find("dynamics")
-        axis = np.asarray(_floats(a.get("xyz") if a is not None else None, "1 0 0"))
-        norm = float(np.linalg.norm(axis))
-        joints.append(KJoint(
-            el.get("name"), kind, el.find("parent").get("link"), el.find("child").get("link"),
-            _frame(_floats(o.get("xyz") if o is not None else None, "0 0 0"),
-                   _floats(o.get("rpy") if o is not None else None, "0 0 0")),
-            axis / norm if norm > 1e-12 else axis,
-            float(lim.get("lower", 0.0)) if lim is not None else 0.0,
-            float(lim.get("upper", 0.0)) if lim is not None else 0.0,
-            float(dyn.get("damping", 0.0)) if dyn is not None else 0.0,
-            float(dyn.get("friction", 0.0)) if dyn is not None else 0.0,
-        ))
+    joints = [KJoint.of(j) for j in urdf.joints.values()]
     groups: dict[str, list[str]] = {}
     for j in meta.get("joints", []):
         if j["type"] != "fixed":
             groups.setdefault(j["group"], []).append(j["name"])
     requires = {j["name"]: groups.get(j["requires_open"], []) for j in meta.get("joints", [])
                 if j.get("requires_open")}
-    return Model(root.get("name", path.stem), links, joints, requires)
+    return Model(urdf.name or path.stem, links, joints, requires)
 
 
 # --------------------------------------------------------------------------- sampled states

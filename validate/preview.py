@@ -28,11 +28,12 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import xml.etree.ElementTree as ET
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
+
+from .files import UrdfJoint, forward_kinematics, parse_urdf
 
 try:  # the package error type, so the CLI prints the message without a traceback
     from infmob_usd.errors import InfmobError as _BaseError
@@ -82,41 +83,6 @@ class PreviewUnavailable(_BaseError, RuntimeError):
 # small geometry helpers
 
 
-def _rpy_matrix(rpy) -> np.ndarray:
-    r, p, y = rpy
-    cr, sr, cp, sp, cy, sy = math.cos(r), math.sin(r), math.cos(p), math.sin(p), math.cos(y), math.sin(y)
-    return np.array([
-        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-        [-sp, cp * sr, cp * cr],
-    ])
-
-
-def _transform(xyz=(0, 0, 0), rpy=(0, 0, 0)) -> np.ndarray:
-    m = np.eye(4)
-    m[:3, :3] = _rpy_matrix(rpy)
-    m[:3, 3] = xyz
-    return m
-
-
-def _axis_angle(axis, angle) -> np.ndarray:
-    a = np.asarray(axis, float)
-    a = a / (np.linalg.norm(a) or 1.0)
-    x, y, z = a
-    c, s, t = math.cos(angle), math.sin(angle), 1 - math.cos(angle)
-    m = np.eye(4)
-    m[:3, :3] = [
-        [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
-        [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
-        [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
-    ]
-    return m
-
-
-def _floats(text, default):
-    return [float(v) for v in text.split()] if text else list(default)
-
-
 # ---------------------------------------------------------------------------------------------
 # reading an object folder
 
@@ -128,20 +94,13 @@ class _Visual:
     scale: tuple
 
 
-@dataclass
-class _Joint:
-    name: str
-    type: str
-    parent: str
-    child: str
-    origin: np.ndarray  # 4x4, child frame at q = 0 in the parent frame
-    axis: np.ndarray
-    lower: float
-    upper: float
+@dataclass(frozen=True)
+class _Joint(UrdfJoint):
+    """A URDF joint with the states the pictures show (limits always set: a revolute joint
+    without any is +-pi)."""
 
-    @property
-    def movable(self) -> bool:
-        return self.type in ("revolute", "continuous", "prismatic")
+    lower: float = 0.0
+    upper: float = 0.0
 
     def rest(self) -> float:
         return float(np.clip(0.0, self.lower, self.upper)) if self.type != "continuous" else 0.0
@@ -163,14 +122,6 @@ class _Joint:
         if self.type == "continuous":
             return np.linspace(0.0, 2 * math.pi, n)
         return np.linspace(self.lower, self.upper, n)
-
-    def motion(self, q: float) -> np.ndarray:
-        if self.type in ("revolute", "continuous"):
-            return _axis_angle(self.axis, q)
-        m = np.eye(4)
-        if self.type == "prismatic":
-            m[:3, 3] = np.asarray(self.axis, float) / (np.linalg.norm(self.axis) or 1.0) * q
-        return m
 
 
 @dataclass
@@ -196,40 +147,27 @@ def _read_object(folder: Path) -> _ObjectFiles:
         raise FileNotFoundError(f"no .urdf file in {folder} (is it an object folder written by infmob?)")
     urdf = folder / f"{metadata.get('name', folder.name)}.urdf"
     urdf = urdf if urdf.is_file() else urdfs[0]
-    root_el = ET.parse(urdf).getroot()
+    model = parse_urdf(urdf)
     links: dict[str, list[_Visual]] = {}
-    for link in root_el.findall("link"):
+    for name, link in model.links.items():
         visuals = []
-        for vis in link.findall("visual"):
-            mesh = vis.find("geometry/mesh")
-            if mesh is None or not mesh.get("filename"):
-                continue  # primitives: our writers only emit meshes
-            o = vis.find("origin")
-            origin = _transform(_floats(o.get("xyz") if o is not None else None, (0, 0, 0)),
-                                _floats(o.get("rpy") if o is not None else None, (0, 0, 0)))
-            fname = mesh.get("filename")
+        for vis in link.visuals:
+            fname = vis.filename
             if fname.startswith("package://"):
                 fname = fname[len("package://"):]
             path = (urdf.parent / fname).resolve()
             if not path.is_file():
-                raise FileNotFoundError(f"visual mesh {fname!r} of link {link.get('name')!r} is missing ({path})")
-            visuals.append(_Visual(path, origin, tuple(_floats(mesh.get("scale"), (1, 1, 1)))))
-        links[link.get("name")] = visuals
+                raise FileNotFoundError(f"visual mesh {fname!r} of link {name!r} is missing ({path})")
+            visuals.append(_Visual(path, vis.origin, tuple(vis.scale)))
+        links[name] = visuals
     joints = []
-    for j in root_el.findall("joint"):
-        o, a, lim = j.find("origin"), j.find("axis"), j.find("limit")
-        jtype = j.get("type")
-        lower = float(lim.get("lower", 0)) if lim is not None else 0.0
-        upper = float(lim.get("upper", 0)) if lim is not None else 0.0
-        if jtype == "revolute" and lower == upper == 0.0:
+    for j in model.joints.values():
+        lower = 0.0 if j.lower is None else j.lower
+        upper = 0.0 if j.upper is None else j.upper
+        if j.type == "revolute" and lower == upper == 0.0:
             lower, upper = -math.pi, math.pi
-        joints.append(_Joint(
-            j.get("name"), jtype, j.find("parent").get("link"), j.find("child").get("link"),
-            _transform(_floats(o.get("xyz") if o is not None else None, (0, 0, 0)),
-                       _floats(o.get("rpy") if o is not None else None, (0, 0, 0))),
-            np.array(_floats(a.get("xyz") if a is not None else None, (1, 0, 0))),
-            min(lower, upper), max(lower, upper),
-        ))
+        values = {f.name: getattr(j, f.name) for f in fields(UrdfJoint)}
+        joints.append(_Joint(**values | {"lower": min(lower, upper), "upper": max(lower, upper)}))
     children = {j.child for j in joints}
     roots = [n for n in links if n not in children]
     if not roots:
@@ -249,10 +187,7 @@ def _read_object(folder: Path) -> _ObjectFiles:
 
 
 def _forward_kinematics(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, np.ndarray]:
-    poses = {obj.root: np.eye(4)}
-    for j in obj.joints:
-        q = qpos.get(j.name, j.rest() if j.movable else 0.0)
-        poses[j.child] = poses[j.parent] @ j.origin @ j.motion(q)
+    poses = forward_kinematics(obj.root, obj.joints, qpos, lambda j: j.rest() if j.movable else 0.0)
     for name in obj.links:
         poses.setdefault(name, np.eye(4))  # a link no joint reaches stays at the origin
     return poses

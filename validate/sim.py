@@ -565,7 +565,7 @@ def _load_problems(ctx: SimContext) -> list[str]:
     try:
         urdf_model = parse_urdf(ctx.urdf)
         for link in art.links:
-            want = len(urdf_model.links.get(link.name, {}).get("collision", []))
+            want = len(urdf_model.links[link.name].collisions) if link.name in urdf_model.links else 0
             got = len(link.collision_shapes)
             if got != want:
                 problems.append(f"link {link.name}: {got} collision shapes, URDF has {want}")
@@ -805,14 +805,10 @@ def _context(folder: Path, meta: dict, urdf: Path, scene, articulation) -> SimCo
 
 def _urdf_dynamics(urdf: Path) -> dict[str, tuple[float, float]]:
     """``joint name -> (damping, friction)`` from the URDF's ``<dynamics>`` elements."""
-    import xml.etree.ElementTree as ET
+    from .files import parse_urdf
 
-    out = {}
-    for joint in ET.parse(urdf).getroot().iter("joint"):
-        dyn = joint.find("dynamics")
-        if dyn is not None:
-            out[joint.get("name")] = (float(dyn.get("damping", 0.0)), float(dyn.get("friction", 0.0)))
-    return out
+    return {j.name: (j.damping or 0.0, j.friction or 0.0) for j in parse_urdf(urdf).joints.values()
+            if j.damping is not None or j.friction is not None}
 
 
 def check_sapien(folder: str | Path, checks: Sequence[str] | None = None,

@@ -156,7 +156,7 @@ def insulated_cabinet(outer, cavity, kick_top: float) -> list[g.Piece]:
     wy0, wy1, wz0, wz1, wx0 = cy0 - L, cy1 + L, cz0 - L, cz1 + L, cx0 - L  # wall inner faces
 
     def wall(lo, hi):
-        return g.box_between(lo, hi, "body").with_sheet(FRIDGE_SHEET)
+        return g.box_between(lo, hi, "body").replace(sheet=FRIDGE_SHEET)
 
     pieces = [
         wall([xb0, y0, zf], [xb1, wy0, H]), wall([xb0, wy1, zf], [xb1, y1, H]), wall([xb0, wy0, wz1], [xb1, wy1, H]),
@@ -200,7 +200,7 @@ def glass_door(box, hole) -> list[g.Piece]:
     x0, x1, y0, y1, z0, z1 = box
     h0, v0, h1, v1 = hole
     ft = x1 - x0
-    pieces = [g.panel([x0, y0, z0], [x1, y1, z1], "frame", "x", holes=[hole]).with_sheet(FRIDGE_SHEET)]
+    pieces = [g.panel([x0, y0, z0], [x1, y1, z1], "frame", "x", holes=[hole]).replace(sheet=FRIDGE_SHEET)]
     for xg in (x1 - 0.3 * ft, x0 + 0.2 * ft):  # two panes: the insulated glazing
         pieces.append(g.box_between([xg - 0.002, h0 - 0.004, v0 - 0.004], [xg + 0.002, h1 + 0.004, v1 + 0.004],
                                     "glass"))
@@ -258,7 +258,7 @@ def tub_cabinet(outer, cavity, hinge_z: float, door_front: float) -> list[g.Piec
     wy0, wy1, wz0, wz1, wx0 = cy0 - L, cy1 + L, cz0 - L, cz1 + L, cx0 - L
 
     def sheet(lo, hi, slot):
-        return g.box_between(lo, hi, slot).with_sheet(DISHWASHER_SHEET)
+        return g.box_between(lo, hi, slot).replace(sheet=DISHWASHER_SHEET)
 
     pieces = [
         sheet([xb0, y0, zf], [xb1, wy0, H], "body"), sheet([xb0, wy1, zf], [xb1, y1, H], "body"),
@@ -288,10 +288,10 @@ def layered_door(box) -> list[g.Piece]:
     x0, x1, y0, y1, z0, z1 = box
     s = 0.0015
     yc, zc = 0.15 * (y1 - y0), z0 + 0.62 * (z1 - z0)
-    return [g.box_between([x1 - s, y0, z0], [x1, y1, z1], "body").with_sheet(DISHWASHER_SHEET),
-            g.box_between([x0 + s, y0, z0], [x1 - s, y1, z1], "door_inner").with_sheet(0.002),
+    return [g.box_between([x1 - s, y0, z0], [x1, y1, z1], "body").replace(sheet=DISHWASHER_SHEET),
+            g.box_between([x0 + s, y0, z0], [x1 - s, y1, z1], "door_inner").replace(sheet=0.002),
             g.box_between([x0, y0 + 0.01, z0 + 0.01], [x0 + s, y1 - 0.01, z1 - 0.01], "tub")
-            .with_sheet(DISHWASHER_SHEET),
+            .replace(sheet=DISHWASHER_SHEET),
             g.box_between([x0 - DISPENSER, yc - 0.06, zc - 0.04], [x0, yc + 0.06, zc + 0.04], "door_inner")]
 
 
@@ -371,7 +371,7 @@ def oven_casing(outer, zs, cavity, door_gap: float, frame_top: float) -> list[g.
     L, T = OVEN_LINER, OVEN_PANEL
 
     def sheet(piece):
-        return piece.with_sheet(OVEN_SHEET)
+        return piece.replace(sheet=OVEN_SHEET)
 
     pieces = [
         sheet(g.box_between([xb, y0, z_pl], [xf - T, y0 + T, ztop], "body")),
@@ -397,10 +397,11 @@ def oven_casing(outer, zs, cavity, door_gap: float, frame_top: float) -> list[g.
 def oven_door(box, hole) -> list[g.Piece]:
     """An outer skin, an inner frame and an enamel inner skin around a window, and two glass panes."""
     x0, x1, y0, y1, z0, z1 = box
-    return [g.panel([x1 - 0.003, y0, z0], [x1, y1, z1], "door", "x", holes=[hole]).with_sheet(OVEN_SHEET),
-            g.panel([x0 + 0.003, y0, z0], [x1 - 0.003, y1, z1], "door_inner", "x", holes=[hole]).with_sheet(OVEN_SHEET),
+    return [g.panel([x1 - 0.003, y0, z0], [x1, y1, z1], "door", "x", holes=[hole]).replace(sheet=OVEN_SHEET),
+            g.panel([x0 + 0.003, y0, z0], [x1 - 0.003, y1, z1], "door_inner", "x", holes=[hole])
+            .replace(sheet=OVEN_SHEET),
             g.panel([x0, y0 + 0.02, z0 + 0.02], [x0 + 0.003, y1 - 0.02, z1 - 0.02], "interior", "x", holes=[hole])
-            .with_sheet(OVEN_SHEET),
+            .replace(sheet=OVEN_SHEET),
             g.box_between([x1 - 0.008, hole[0], hole[1]], [x1 - 0.003, hole[2], hole[3]], "glass"),
             g.box_between([x0 + 0.003, hole[0], hole[1]], [x0 + 0.007, hole[2], hole[3]], "glass")]
 
@@ -424,7 +425,7 @@ def storage_drawer(front_box, tray_box, wall: float = 0.008) -> list[g.Piece]:
     fx0, x1, y0, y1, z0, z1 = front_box
     tx0, ty0, ty1, tz0, tz1 = tray_box
     wt = wall
-    return [p.with_sheet(OVEN_SHEET) for p in (
+    return [p.replace(sheet=OVEN_SHEET) for p in (
         g.box_between([fx0, y0, z0], [x1, y1, z1], "body", bevel=0.002),
         g.box_between([tx0, ty0, tz0], [fx0, ty1, tz0 + wt], "body"),
         g.box_between([tx0, ty0, tz0 + wt], [fx0, ty0 + wt, tz1], "body"),
@@ -485,7 +486,7 @@ def cooker_knob(x_face: float, y: float, z: float, r: float, stem: float, style:
 def panel_housing(xs, ys, zs, holes, wall: float = 0.004) -> list[g.Piece]:
     """A hollow control panel box: a face plate with ``holes``, back, top, bottom and sides."""
     (xa, xp), (ya, yb), (za, zb), w = xs, ys, zs, wall
-    return [p.with_sheet(OVEN_SHEET) for p in (
+    return [p.replace(sheet=OVEN_SHEET) for p in (
         g.panel([xp - FACE, ya, za], [xp, yb, zb], "body", "x", holes=holes),
         g.box_between([xa, ya, za], [xa + w, yb, zb], "body"),
         g.box_between([xa + w, ya, zb - w], [xp - FACE, yb, zb], "body"),

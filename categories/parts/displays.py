@@ -56,15 +56,16 @@ def screen(W: float, xs3, zs, hump, bezel: float, band: float, buttons: list, pl
     if buttons and place == "bottom":
         holes += [_hole(c, h) for c, h in buttons]
     xb = xf - BEZEL_T
-    pieces = [g.panel([xb, -W / 2, zs0], [xf, W / 2, zs1], "bezel", "x", holes=holes).with_sheet(0.0015),
-              g.box_between([xb, -W / 2 + bezel, zs0 + band], [xf - 0.0015, W / 2 - bezel, zs1 - bezel], "display")
-              .with_sheet(0.003),
-              g.box_between([xs, -W / 2, zs0], [xb, W / 2 - RIM if side else W / 2, zs1], "housing").with_sheet(0.002)]
+    pieces = [g.panel([xb, -W / 2, zs0], [xf, W / 2, zs1], "bezel", "x", holes=holes).replace(sheet=0.0015),
+              g.box_between([xb, -W / 2 + bezel, zs0 + band], [xf - 0.0015, W / 2 - bezel, zs1 - bezel],
+                            "display").replace(sheet=0.003),
+              g.box_between([xs, -W / 2, zs0], [xb, W / 2 - RIM if side else W / 2, zs1], "housing")
+              .replace(sheet=0.002)]
     if side:
         pieces.append(g.panel([xs, W / 2 - RIM, zs0], [xb, W / 2, zs1], "housing", "y",
-                              holes=[_hole(c, h) for c, h in buttons]).with_sheet(0.002))
+                              holes=[_hole(c, h) for c, h in buttons]).replace(sheet=0.002))
     pieces.append(g.box_between([xhb, -hw / 2, zh0], [xs + 0.001, hw / 2, zh1], "housing",
-                                bevel=min(0.01, 0.3 * (xs - xhb))).with_sheet(0.002))
+                                bevel=min(0.01, 0.3 * (xs - xhb))).replace(sheet=0.002))
     return pieces
 
 
@@ -93,7 +94,7 @@ def connector(pivot, r_k: float, xs2, L_k: float, vesa_w: float, hump) -> list[g
               g.box_between([x_bk, -vw / 2, z_p - vh / 2], [xhb, vw / 2, z_p + vh / 2], "connector")]
     pieces += [g.box_between([x_p, y - 0.01, z_p - 0.7 * r_k], [x_bk + 0.001, y + 0.01, z_p + 0.7 * r_k], "connector")
                for y in (-ny, ny)]
-    return [pc.with_sheet(0.003) for pc in pieces]
+    return [pc.replace(sheet=0.003) for pc in pieces]
 
 
 def fork(x_p: float, z_p: float, r_k: float, L_k: float, material: str, back: bool = True) -> list[g.Piece]:

@@ -137,4 +137,4 @@ def lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> l
     (+-1 in y) parallel to the face; the core adds the counterweight heel that balances it."""
     xg = x0 + n * 0.042  # grip axis
     return [g.cylinder([x0, y, z], [x0 + n * 0.05, y, z], 0.011, "handle", 24),
-            g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20).with_sheet(0.0012)]
+            g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20).replace(sheet=0.0012)]

@@ -25,7 +25,7 @@ def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece
     """Two uprights (front, back) in the plane y = 0 with foot plates, perforations and bracing."""
     pieces = []
     for x0, x1 in ((depth / 2 - u, depth / 2), (-depth / 2, -depth / 2 + u)):
-        pieces.append(g.box_between([x0, -u / 2, 0.008], [x1, u / 2, top], slot).with_sheet(UPRIGHT_SHEET))
+        pieces.append(g.box_between([x0, -u / 2, 0.008], [x1, u / 2, top], slot).replace(sheet=UPRIGHT_SHEET))
         pieces.append(g.box_between([x0 - 0.01, -u / 2 - 0.01, 0.0], [x1 + 0.01, u / 2 + 0.01, 0.008], "feet"))
         face, out = (x1, 1.0) if x1 > 0 else (x0, -1.0)
         pieces.append(perforations(face, out, u, 0.1, top - 0.05))
@@ -34,11 +34,11 @@ def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece
     r = min(0.012, 0.3 * u)
     levels = np.linspace(0.15, top - 0.1, max(2, int((top - 0.25) / 0.9) + 2))
     for k, z in enumerate(levels):
-        pieces.append(g.cylinder([xa, 0, z], [xb, 0, z], r, slot, 10).with_sheet(BRACE_SHEET))
+        pieces.append(g.cylinder([xa, 0, z], [xb, 0, z], r, slot, 10).replace(sheet=BRACE_SHEET))
         if k + 1 < len(levels):
             z1 = levels[k + 1]
             a, b = ([xa, 0, z + 0.02], [xb, 0, z1 - 0.02]) if k % 2 == 0 else ([xb, 0, z + 0.02], [xa, 0, z1 - 0.02])
-            pieces.append(g.cylinder(a, b, 0.8 * r, slot, 10).with_sheet(BRACE_SHEET))
+            pieces.append(g.cylinder(a, b, 0.8 * r, slot, 10).replace(sheet=BRACE_SHEET))
     return pieces
 
 
@@ -66,7 +66,7 @@ def level(ys: tuple[float, float], depth: float, z: float, bh: float, deck: str,
     dt = DECK_T[deck]
     pieces = []
     for x0, x1 in ((depth / 2 - BEAM_D, depth / 2), (-depth / 2, -depth / 2 + BEAM_D)):
-        pieces.append(g.box_between([x0, ya, z - bh], [x1, yb, z], beam_slot, bevel=0.003).with_sheet(BEAM_SHEET))
+        pieces.append(g.box_between([x0, ya, z - bh], [x1, yb, z], beam_slot, bevel=0.003).replace(sheet=BEAM_SHEET))
         for ye, sgn in ((ya, 1), (yb, -1)):  # connector plates at the beam ends
             lo, hi = sorted((ye, ye + sgn * 0.006))
             pieces.append(g.box_between([x0 + 0.005, lo, z - bh], [x1 - 0.005, hi, z], "galvanised"))
@@ -74,7 +74,7 @@ def level(ys: tuple[float, float], depth: float, z: float, bh: float, deck: str,
     if deck == "wood":
         pieces.append(g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_wood", bevel=0.002))
     elif deck == "steel":
-        pieces.append(g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_steel").with_sheet(0.001))
+        pieces.append(g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_steel").replace(sheet=0.001))
     else:
         pieces += wire_deck(x0, x1, ya, yb, z, dt)
     return pieces
@@ -96,7 +96,7 @@ def wire_deck(x0: float, x1: float, ya: float, yb: float, z: float, dt: float) -
     nch = max(2, int((yb - ya) / 0.45) + 1)
     for yv in np.linspace(ya + 0.04, yb - 0.04, nch):  # channels under the mesh, beam to beam
         pieces.append(g.box_between([x0, yv - 0.015, z], [x1, yv + 0.015, z + dt - 0.01], "galvanised")
-                      .with_sheet(0.0012))
+                      .replace(sheet=0.0012))
     return pieces
 
 
@@ -107,7 +107,7 @@ PALLET = dict(width=1.2, height=0.144, board=0.022, slot=0.85)  # EUR pallet: 1.
 def carton(x0: float, x1: float, y0: float, y1: float, z: float, h: float) -> list[g.Piece]:
     """A taped cardboard box."""
     yc = (y0 + y1) / 2
-    return [g.box_between([x0, y0, z], [x1, y1, z + h], "box", bevel=0.004).with_sheet(CARTON),
+    return [g.box_between([x0, y0, z], [x1, y1, z + h], "box", bevel=0.004).replace(sheet=CARTON),
             g.box_between([x0 + 0.02, yc - 0.025, z + h - 0.001], [x1 - 0.02, yc + 0.025, z + h + 0.0005], "tape")]
 
 
@@ -143,7 +143,7 @@ def pallet(x0: float, x1: float, y0: float, y1: float, z: float, h: float) -> li
         for a, b in ((x0 + 0.01, -0.002), (0.002, x1 - 0.01)):
             for c, d in ((y0 + 0.01, (y0 + y1) / 2 - 0.002), ((y0 + y1) / 2 + 0.002, y1 - 0.01)):
                 pieces.append(g.box_between([a, c, zs + r * bh], [b, d, zs + (r + 1) * bh - 0.002], "box",
-                                            bevel=0.004).with_sheet(CARTON))
+                                            bevel=0.004).replace(sheet=CARTON))
     return pieces
 
 

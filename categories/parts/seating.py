@@ -155,8 +155,8 @@ def star_base(n_legs: int, radius: float, c: Caster, r_lift: float, leg_style: s
     floor = z_h0 + 0.01
     sheet = 0.003 if metal else 0.0
     pieces = [
-        g.shell([(hub_r, z_h0), (hub_r, z_h1)], hub_r - bore, "base", sections=48).with_sheet(sheet),
-        g.disc([0, 0, (z_h0 + floor) / 2], bore + 0.002, floor - z_h0, "base", 32).with_sheet(sheet),
+        g.shell([(hub_r, z_h0), (hub_r, z_h1)], hub_r - bore, "base", sections=48).replace(sheet=sheet),
+        g.disc([0, 0, (z_h0 + floor) / 2], bore + 0.002, floor - z_h0, "base", 32).replace(sheet=sheet),
     ]
     x_in, x_out = hub_r - 0.006, radius + 0.022
     pts = []
@@ -165,7 +165,7 @@ def star_base(n_legs: int, radius: float, c: Caster, r_lift: float, leg_style: s
             pts += [(x, y, z0), (x, 0.8 * y, z0 + h), (x, y, z0 + 0.75 * h)]
     pts += [(x_out + 0.012, y, z_lb + 0.2 * ht) for y in (-0.3 * wt, 0.3 * wt)]
     pts += [(x_out + 0.012, y, z_lb + 0.7 * ht) for y in (-0.25 * wt, 0.25 * wt)]
-    leg = _hull(pts, "base").with_sheet(sheet)
+    leg = _hull(pts, "base").replace(sheet=sheet)
     socket = g.cylinder([radius, 0, c.stem_top + 0.003], [radius, 0, z_lb + 0.004], 0.012, "base", 20)
     tips = polar(Frame.at(), n_legs, radius)
     for spoke in polar(Frame.at(), n_legs, 0.0):

@@ -91,7 +91,7 @@ def tube(points, r: float) -> list[g.Piece]:
     keep = [0] + [i for i in range(1, len(pts)) if np.linalg.norm(pts[i] - pts[i - 1]) > 1e-6]
     pts = pts[keep]
     tan = np.gradient(pts, axis=0)
-    return [_hull(np.vstack([_ring(pts[i], tan[i], r), _ring(pts[i + 1], tan[i + 1], r)]), "metal").with_sheet(TUBE)
+    return [_hull(np.vstack([_ring(pts[i], tan[i], r), _ring(pts[i + 1], tan[i + 1], r)]), "metal").replace(sheet=TUBE)
             for i in range(len(pts) - 1)]
 
 
