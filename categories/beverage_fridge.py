@@ -35,6 +35,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -89,7 +90,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     frame_slot = p["body_finish"] if p["door_finish"] == "match" else "plastic:black"
     handle_slot = "plastic:black|dark_grey" if p["handle_finish"] == "plastic" else p["handle_finish"]
     bp = Blueprint("beverage_fridge", materials={
-        "body": p["body_finish"], "liner": "plastic:black|dark_grey|white", "frame": frame_slot,
+        "body": appliance(p["body_finish"]), "liner": "plastic:black|dark_grey|white", "frame": frame_slot,
         "glass": "glass:clear|clear_blue", "handle": handle_slot, "trim": p["trim_finish"],
         "wire": "chrome", "grille": "plastic:black|dark_grey", "feet": "rubber", "display": "rubber",
         "gasket": "rubber",

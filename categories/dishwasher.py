@@ -36,6 +36,7 @@ from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
 from infmob_usd.geometry import Piece
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -96,7 +97,7 @@ def _sheet(piece: Piece, t: float = SHEET) -> Piece:
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
     bp = Blueprint("dishwasher", materials={
-        "body": p["body_finish"], "tub": "brushed_metal:stainless", "door_inner": "plastic:dark_grey|black",
+        "body": appliance(p["body_finish"]), "tub": "brushed_metal:stainless", "door_inner": "plastic:dark_grey|black",
         "wire": "plastic:light_grey|white|dark_grey" if p["rack_finish"] == "coated" else "chrome",
         "wheel": "plastic:dark_grey|black", "basket": "plastic:light_grey|white",
         "arm": "plastic:light_grey|dark_grey", "handle": _finish(p["handle_finish"]),

@@ -67,7 +67,8 @@ from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule, descendants
 from infmob_usd.joints import Dof
 from infmob_usd.mass import inertial
-from infmob_usd.materials import FAMILIES
+from infmob_usd.materials import FAMILIES, split_spec
+from infmob_usd.materials.palettes import BULB_GLASS
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -118,7 +119,7 @@ SCHEMA = Schema((
 
 MATERIALS = {
     "base": "base_finish", "pole": "pole_finish", "shade": "shade_finish", "fitting": "plastic",
-    "bulb": "glass", "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
+    "bulb": BULB_GLASS, "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
 }
 """Material slot -> family, or the name of the parameter that picks the family."""
 
@@ -441,7 +442,7 @@ def _rest_on_stops(bp: Blueprint) -> None:
     """
     masses: dict[str, tuple[float, np.ndarray]] = {}
     for name, part in bp.parts.items():
-        m, com, _ = inertial((pc, FAMILIES[bp.materials[pc.material]].density) for pc in part.pieces)
+        m, com, _ = inertial((pc, FAMILIES[split_spec(bp.materials[pc.material])[0]].density) for pc in part.pieces)
         masses[name] = (m, com)
     for i, j in enumerate(bp.joints):
         if j.kind != "revolute":

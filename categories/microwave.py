@@ -29,6 +29,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -89,8 +90,8 @@ SKIN = 0.003  # outer skin of the door and the panel fascia; behind it is the da
 
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
-    bp = Blueprint("microwave", materials={
-        slot: p[v] if v in SCHEMA.names else v for slot, v in MATERIALS.items()})
+    bp = Blueprint("microwave", materials={  # finishes real microwaves are sold in
+        slot: appliance(p[v] if v in SCHEMA.names else v) for slot, v in MATERIALS.items()})
     W, D, H, t, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
     # door and fascia: a thin outer skin (casing or contrast finish) on a dark inner frame
     skin, inner = ("body", "door_inner") if p["door_finish"] == "match" else ("door", "door")

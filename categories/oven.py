@@ -39,6 +39,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -112,8 +113,8 @@ GRATE_SIDE = 0.006  # grate sideways play (+-)
 
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
-    bp = Blueprint("oven", materials={
-        slot: p[v] if v in SCHEMA.names else v for slot, v in MATERIALS.items()})
+    bp = Blueprint("oven", materials={  # finishes real ovens are sold in
+        slot: appliance(p[v] if v in SCHEMA.names else v) for slot, v in MATERIALS.items()})
     W, D, H, ft = p["width"], p["depth"], p["height"], p["door_thickness"]
     is_range = p["style"] == "range"
 

@@ -95,7 +95,7 @@ PRESS = 0.002  # button travel
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
     stand_finish = "plastic:black|dark_grey" if p["stand_finish"] == "black" else _FINISH[p["stand_finish"]]
     bp = Blueprint("tv", materials={
-        "bezel": _FINISH[p["bezel_finish"]], "display": "plastic:black", "housing": "plastic:black|dark_grey",
+        "bezel": _FINISH[p["bezel_finish"]], "display": "screen", "housing": "plastic:black|dark_grey",
         "stand": stand_finish, "connector": "brushed_metal", "button": "plastic:black|dark_grey",
         "arm": "painted:black|charcoal",
     })
