@@ -87,11 +87,11 @@ DOOR_ANGLE = math.pi / 2
 
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
-    frame_slot = p["body_finish"] if p["door_finish"] == "match" else "plastic:black"
+    frame_slot = appliance(p["body_finish"]) if p["door_finish"] == "match" else "plastic:black"
     handle_slot = "plastic:black|dark_grey" if p["handle_finish"] == "plastic" else p["handle_finish"]
     bp = Blueprint("beverage_fridge", materials={
         "body": appliance(p["body_finish"]), "liner": "plastic:black|dark_grey|white", "frame": frame_slot,
-        "glass": "glass:clear|clear_blue", "handle": handle_slot, "trim": p["trim_finish"],
+        "glass": "glass:clear|clear_blue", "handle": handle_slot, "trim": appliance(p["trim_finish"]),
         "wire": "chrome", "grille": "plastic:black|dark_grey", "feet": "rubber", "display": "rubber",
         "gasket": "rubber",
     })

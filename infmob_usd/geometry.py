@@ -320,9 +320,16 @@ def grain_frame(vertices: np.ndarray) -> np.ndarray:
     longest side is along X gets the identity (the plain world box projection).
     """
     v = np.asarray(vertices, float)
+    if len(v) > 4096:  # the principal axes of a large mesh are those of a spread-out sample
+        v = v[:: len(v) // 2048]
     ext = v.max(0) - v.min(0)
     c = v - v.mean(0)
-    w, vec = np.linalg.eigh(c.T @ c / max(len(v), 1))  # ascending
+    cov = c.T @ c / max(len(v), 1)
+    if abs(cov[0, 1]) + abs(cov[0, 2]) + abs(cov[1, 2]) <= 1e-9 * (cov[0, 0] + cov[1, 1] + cov[2, 2]):
+        order = np.argsort(np.diag(cov), kind="stable")  # already axis-aligned: no eigensolver
+        w, vec = np.diag(cov)[order], np.eye(3)[:, order]
+    else:
+        w, vec = np.linalg.eigh(cov)  # ascending
     if w[2] <= 1.15 * w[1]:  # no single long direction: the widest world axis (ties: X, then Y)
         long = np.zeros(3)
         long[int(np.argmax(ext >= ext.max() * (1 - 1e-6)))] = 1.0
@@ -335,16 +342,19 @@ def grain_frame(vertices: np.ndarray) -> np.ndarray:
     else:
         thin = vec[:, 0] * math.copysign(1.0, vec[np.abs(vec[:, 0]).argmax(), 0])
     thin = thin - long * float(thin @ long)
-    norm = float(np.linalg.norm(thin))
+    norm = math.sqrt(float(thin @ thin))
     if norm < 1e-6:  # degenerate: any axis across
         thin = np.zeros(3)
         thin[int(np.argmin(np.abs(long)))] = 1.0
         thin = thin - long * float(thin @ long)
-        norm = float(np.linalg.norm(thin))
+        norm = math.sqrt(float(thin @ thin))
     thin = _snap(thin / norm)
     thin = thin - long * float(thin @ long)
-    thin /= np.linalg.norm(thin)
-    return np.stack([long, np.cross(thin, long), thin], 1)
+    thin /= math.sqrt(float(thin @ thin))
+    frame = np.empty((3, 3))
+    frame[:, 0], frame[:, 2] = long, thin
+    frame[:, 1] = cross_rows(thin, long)
+    return frame
 
 
 def corner_attributes(vertices: np.ndarray, faces: np.ndarray,
