@@ -77,7 +77,7 @@ SCHEMA = Schema((
 
 MATERIALS = {
     "body": "body_finish", "door": "plastic", "interior": "interior_finish", "glass": "glass",
-    "plate": "glass", "roller": "plastic", "button": "plastic", "knob": "plastic",
+    "plate": "glass:clear", "roller": "plastic", "button": "plastic", "knob": "plastic",
     "handle": "handle_finish", "door_inner": "rubber", "display": "rubber", "feet": "rubber", "trim": "chrome",
 }
 """Material slot -> family, or the name of the parameter that picks the family."""
