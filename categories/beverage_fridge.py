@@ -19,6 +19,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
@@ -154,4 +155,4 @@ class FridgeLayout(Layout):
 
 
 CATEGORY = Category("beverage_fridge", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, FridgeLayout,
-                    {**MATERIALS, "frame": "frame_family"}, derive=frame_finish)
+                    {**MATERIALS, "frame": "frame_family"}, derive=frame_finish, palette=appliance)

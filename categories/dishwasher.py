@@ -20,6 +20,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
@@ -210,4 +211,5 @@ class DishwasherLayout(Layout):
         self.fix(rack, self.add(f"basket_{k}", "basket", pieces))
 
 
-CATEGORY = Category("dishwasher", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DishwasherLayout, MATERIALS)
+CATEGORY = Category("dishwasher", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DishwasherLayout, MATERIALS,
+                    palette=appliance)  # finishes real dishwashers are sold in

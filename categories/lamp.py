@@ -62,6 +62,7 @@ import math
 
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import BULB_GLASS
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import lamps as L
@@ -113,7 +114,7 @@ PARAMS = (
 
 MATERIALS = {
     "base": "base_finish", "pole": "pole_finish", "shade": "shade_finish", "fitting": "plastic",
-    "bulb": "glass", "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
+    "bulb": BULB_GLASS, "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
 }
 
 OWNERS = {"base": "lamp", "lower_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch"}

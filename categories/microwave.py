@@ -18,6 +18,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
@@ -68,7 +69,7 @@ PARAMS = (
 )
 
 MATERIALS = {
-    "body": "body_finish", "door": "plastic", "interior": "interior_finish", "glass": "glass", "plate": "glass",
+    "body": "body_finish", "door": "plastic", "interior": "interior_finish", "glass": "glass", "plate": "glass:clear",
     "roller": "plastic", "button": "plastic", "knob": "plastic", "handle": "handle_finish", "door_inner": "rubber",
     "display": "rubber", "feet": "rubber", "trim": "chrome",
 }
@@ -248,4 +249,5 @@ class MicrowaveLayout(Layout):
         self.spin("control_panel", name, at, role="knob")
 
 
-CATEGORY = Category("microwave", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, MicrowaveLayout, MATERIALS)
+CATEGORY = Category("microwave", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, MicrowaveLayout, MATERIALS,
+                    palette=appliance)  # finishes real microwaves are sold in

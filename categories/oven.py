@@ -22,6 +22,7 @@ from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
@@ -305,4 +306,5 @@ class OvenLayout(Layout):
         self.slide("control_panel", name, at, upper=travel, role="button")
 
 
-CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS)
+CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS,
+                    palette=appliance)  # finishes real ovens are sold in

@@ -66,7 +66,7 @@ PARAMS = (
 
 _FINISH = {"black": "plastic:black", "grey": "plastic:dark_grey", "silver": "brushed_metal", "metal": "brushed_metal"}
 MATERIALS = {
-    "bezel": ("bezel_finish", _FINISH), "display": "plastic:black", "housing": "plastic:black|dark_grey",
+    "bezel": ("bezel_finish", _FINISH), "display": "screen", "housing": "plastic:black|dark_grey",
     "stand": ("stand_finish", {**_FINISH, "black": "plastic:black|dark_grey"}), "connector": "brushed_metal",
     "button": "plastic:black|dark_grey", "arm": "painted:black|charcoal",
 }

@@ -38,6 +38,9 @@ class Category:
     derive: Callable[[dict], dict] | None = None
     """Parameters that follow from others, applied after sampling and overrides, before growing
     (e.g. a table that would grow no moving part gets its extension)."""
+    palette: Callable[[str], str] | None = None
+    """Restricts every resolved family spec to the finishes such products are sold in
+    (``materials.palettes.appliance``); ``None``: families as they are."""
 
     def __post_init__(self) -> None:
         if not self.id.isidentifier() or self.id != self.id.lower():
@@ -75,7 +78,7 @@ class Category:
                 out[slot] = table.get(params[name], params[name])
             else:
                 out[slot] = params[v] if v in params else v
-        return out
+        return {k: self.palette(v) for k, v in out.items()} if self.palette else out
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
         """Grow the tree from the structure stream and build it into a blueprint at rest."""

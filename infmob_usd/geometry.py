@@ -3,10 +3,11 @@
 A :class:`Piece` is one triangle mesh in world coordinates (metres, Z up) with the
 name of the material slot it is painted with and, where construction tells them,
 its exact convex collision pieces (a panel is a box, a knob a cylinder). UVs are
-derived by box projection at one texel density for every piece
-(:data:`UV_TILE` metres per texture repeat), so textures have the same scale on
-every part of an object; normals are smooth below :data:`CREASE_DEG` and split
-above, per face corner.
+derived by box projection in each piece's own grain frame (:func:`grain_frame`: U
+along the piece's long axis, so wood grain and brushing run along a leg, a rail or a
+door leaf) at one texel density for every piece (:data:`UV_TILE` metres per texture
+repeat), so textures have the same scale on every part of an object; normals are
+smooth below :data:`CREASE_DEG` and split above, per face corner.
 
 Every builder takes plain numbers or ``(3,)`` arrays and returns a ``Piece``.
 """
@@ -28,7 +29,8 @@ from .rotation import align_z, axis_angle
 from .rotation import rotation_between as rotation_between  # categories place pieces with it
 
 UV_TILE = 0.5
-"""Metres of surface covered by one repeat of a texture."""
+"""Metres of surface covered by one repeat of a texture (the materials room synthesises
+its maps at this scale: ``infmob_usd.materials.synth.TILE_METRES``)."""
 
 CREASE_DEG = 35.0
 """Edges sharper than this get split normals."""
@@ -236,13 +238,15 @@ class Piece:
         return self._corner_attributes()[0]
 
     def corner_uvs(self) -> np.ndarray:
-        """``(m, 3, 2)`` box-projected UVs, :data:`UV_TILE` metres per repeat (computed once)."""
+        """``(m, 3, 2)`` UVs box-projected in the piece's :func:`grain_frame`, :data:`UV_TILE`
+        metres per repeat (computed once)."""
         return self._corner_attributes()[1]
 
     def _corner_attributes(self) -> tuple[np.ndarray, np.ndarray]:
         memo = self.__dict__.get("_corners")
         if memo is None:
-            n, uv = corner_attributes(self.vertices, self.faces)
+            frames = np.broadcast_to(grain_frame(self.vertices), (len(self.faces), 3, 3))
+            n, uv = corner_attributes(self.vertices, self.faces, frames)
             memo = (n.reshape(-1, 3, 3), uv.reshape(-1, 3, 2))
             object.__setattr__(self, "_corners", memo)  # a cache of a pure function of the value
         return memo
@@ -406,12 +410,78 @@ def _norm(x: np.ndarray) -> np.ndarray:
     return np.sqrt(x[:, 0] * x[:, 0] + x[:, 1] * x[:, 1] + x[:, 2] * x[:, 2])
 
 
-def corner_attributes(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+_SNAP = math.cos(math.radians(10.0))
+
+
+def _snap(axis: np.ndarray) -> np.ndarray:
+    """A unit direction, replaced by the nearest world axis (same sense) within 10 degrees."""
+    k = int(np.abs(axis).argmax())
+    if abs(axis[k]) >= _SNAP:
+        out = np.zeros(3)
+        out[k] = math.copysign(1.0, axis[k])
+        return out
+    return axis
+
+
+def grain_frame(vertices: np.ndarray) -> np.ndarray:
+    """``(3, 3)`` orthonormal frame of a piece, columns ``(long, across, thin)``.
+
+    ``long`` is the piece's longest direction (the first principal axis of its vertices,
+    or, where two are about as long, the world axis of its largest extent), ``thin`` its
+    thinnest (for a round section, the world axis most across ``long``); axes within 10
+    degrees of a world axis are snapped to it.  UVs are box-projected in this frame with U
+    along ``long`` wherever a face allows it, so grain and brushing follow legs, rails,
+    door leaves and handles instead of the world's X axis.  An axis-aligned box whose
+    longest side is along X gets the identity (the plain world box projection).
+    """
+    v = np.asarray(vertices, float)
+    if len(v) > 4096:  # the principal axes of a large mesh are those of a spread-out sample
+        v = v[:: len(v) // 2048]
+    ext = v.max(0) - v.min(0)
+    c = v - v.mean(0)
+    cov = c.T @ c / max(len(v), 1)
+    if abs(cov[0, 1]) + abs(cov[0, 2]) + abs(cov[1, 2]) <= 1e-9 * (cov[0, 0] + cov[1, 1] + cov[2, 2]):
+        order = np.argsort(np.diag(cov), kind="stable")  # already axis-aligned: no eigensolver
+        w, vec = np.diag(cov)[order], np.eye(3)[:, order]
+    else:
+        w, vec = np.linalg.eigh(cov)  # ascending
+    if w[2] <= 1.15 * w[1]:  # no single long direction: the widest world axis (ties: X, then Y)
+        long = np.zeros(3)
+        long[int(np.argmax(ext >= ext.max() * (1 - 1e-6)))] = 1.0
+    else:
+        long = vec[:, 2] * math.copysign(1.0, vec[np.abs(vec[:, 2]).argmax(), 2])
+        long = _snap(long)
+    if w[1] <= 1.15 * w[0]:  # a round section: the world axis most across the long one
+        thin = np.zeros(3)
+        thin[int(np.argmin(np.abs(long)))] = 1.0
+    else:
+        thin = vec[:, 0] * math.copysign(1.0, vec[np.abs(vec[:, 0]).argmax(), 0])
+    thin = thin - long * float(thin @ long)
+    norm = math.sqrt(float(thin @ thin))
+    if norm < 1e-6:  # degenerate: any axis across
+        thin = np.zeros(3)
+        thin[int(np.argmin(np.abs(long)))] = 1.0
+        thin = thin - long * float(thin @ long)
+        norm = math.sqrt(float(thin @ thin))
+    thin = _snap(thin / norm)
+    thin = thin - long * float(thin @ long)
+    thin /= math.sqrt(float(thin @ thin))
+    frame = np.empty((3, 3))
+    frame[:, 0], frame[:, 2] = long, thin
+    frame[:, 1] = cross_rows(thin, long)
+    return frame
+
+
+def corner_attributes(vertices: np.ndarray, faces: np.ndarray,
+                      frames: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Per face-corner normals ``(3m, 3)`` and UVs ``(3m, 2)`` of a mesh.
 
     Each corner averages (area-weighted) the normals of the faces around its vertex that
     lie within :data:`CREASE_DEG` of its own face; UVs are box-projected, :data:`UV_TILE`
-    metres per repeat.  A mesh made of several pieces (which share no vertices) gives each
+    metres per repeat, in each face's frame (``frames``, ``(m, 3, 3)`` with columns
+    ``(long, across, thin)`` from :func:`grain_frame` of the face's piece; default the world
+    axes): U runs along ``long`` on every face but the end faces across it.  A mesh made of
+    several pieces (which share no vertices) gives each
     piece's own values, so the writers call it once per object.  Fast on large meshes: a
     vertex whose faces all lie within ``CREASE_DEG / 2`` of their area-weighted mean keeps
     every neighbour, so its corners take that plain area-weighted sum
@@ -454,7 +524,12 @@ def corner_attributes(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarr
             acc = (keep.astype(float) @ weighted[c // 3].reshape(len(vs), k, 3)).reshape(-1, 3)
             alen = _norm(acc)[:, None]
             normals[c] = np.where(alen > 1e-15, acc / np.maximum(alen, 1e-15), fn[c // 3])
-    # box-projected UVs: (y, z) on X-facing faces, (x, z) on Y-facing, (x, y) on Z-facing
+    # box-projected UVs in the frame (long, across, thin): (across, thin) on faces facing
+    # along the long axis, (long, thin) on faces facing across, (long, across) on the broad
+    # faces; with the world axes, (y, z) on X-facing faces, (x, z) on Y-facing, (x, y) on Z-facing
+    if frames is not None:
+        fn = np.einsum("mi,mij->mj", fn, frames)
+        tri = np.einsum("mki,mij->mkj", tri, frames)
     axis = np.abs(fn).argmax(1)[:, None]
     uvs = np.stack([np.where(axis == 0, tri[..., 1], tri[..., 0]),
                     np.where(axis == 2, tri[..., 1], tri[..., 2])], -1) / UV_TILE

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from infmob_usd.geometry import corner_attributes
+from infmob_usd.geometry import corner_attributes, grain_frame
 
 # PartNet-Mobility joint type of each declared joint kind (semantics.txt)
 PM_JOINT_TYPE = {
@@ -39,20 +39,22 @@ def visual_meshes(obj) -> dict[str, list]:
     """Every visual mesh of ``obj`` per link: ``[(vname, slot, role, verts, faces, normals, uvs)]``.
 
     ``normals`` ``(3m, 3)`` and ``uvs`` ``(3m, 2)`` are per face corner, computed in one pass
-    over the whole object (:func:`~infmob_usd.geometry.corner_attributes`).  While
+    over the whole object (:func:`~infmob_usd.geometry.corner_attributes`), UVs in each
+    piece's grain frame (:func:`~infmob_usd.geometry.grain_frame`).  While
     :func:`~infmob_usd.layers.write_object` runs, the result is kept on the object
     (``obj._visual_meshes``) so the USD and URDF writers share it.
     """
     cached = getattr(obj, "_visual_meshes", None)
     if cached is not None:
         return cached
-    groups, verts, faces, off, nf = [], [], [], 0, 0
+    groups, verts, faces, frames, off, nf = [], [], [], [], 0, 0
     for link in obj.links:
         for vname, slot, pieces, role in visual_groups(link):
             v0, f0 = off, nf
             for p in pieces:
                 verts.append(p.vertices)
                 faces.append(p.faces + off)
+                frames.append(np.broadcast_to(grain_frame(p.vertices), (len(p.faces), 3, 3)))
                 off += len(p.vertices)
                 nf += len(p.faces)
             groups.append((link.name, vname, slot, role, v0, off, f0, nf))
@@ -60,7 +62,7 @@ def visual_meshes(obj) -> dict[str, list]:
     if not groups:
         return out
     v_all, f_all = np.vstack(verts), np.vstack(faces)
-    normals, uvs = corner_attributes(v_all, f_all)
+    normals, uvs = corner_attributes(v_all, f_all, np.concatenate(frames))
     for lname, vname, slot, role, v0, v1, f0, f1 in groups:
         out[lname].append((vname, slot, role, v_all[v0:v1], f_all[f0:f1] - v0,
                            normals[3 * f0:3 * f1], uvs[3 * f0:3 * f1]))

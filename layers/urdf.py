@@ -114,18 +114,34 @@ _MTL_MAPS = {"basecolor": "map_Kd", "roughness": "map_Pr", "metallic": "map_Pm",
 
 
 def _mtl(slot: str, look, maps) -> str:
-    """MTL of one slot: constants from the look, a map line for each texture written."""
-    r, g, b = look.base_color
+    """MTL of one slot: constants from the look, a map line for each texture written.
+
+    The object's wear of the look (:class:`~infmob_usd.materials.Wear`): ``Kd`` is the tint,
+    which multiplies ``map_Kd`` (as the MTL format defines it; without a map it is the tinted
+    colour), the roughness scale is ``map_Pr -mm 0 <scale>`` (base, gain), and the UV rotation
+    and offset are baked into the OBJ ``vt`` (:func:`write_urdf`), which every reader honours.
+    ``d`` and ``Tr`` (= 1 - d) give the opacity, ``Ni`` the index of refraction.
+    """
+    tint = np.asarray(look.wear.tint, float)
+    r, g, b = tint if "basecolor" in maps else tint * np.asarray(look.base_color, float)
+    rough = look.wear.roughness_scale
     lines = [
         f"newmtl {slot}",
         f"Kd {r:.4f} {g:.4f} {b:.4f}",
         "Ka 0 0 0",
         "Ks 0.04 0.04 0.04",
         f"d {look.opacity:.3f}",
-        f"Pr {look.roughness:.3f}",
+        f"Pr {min(1.0, look.roughness * rough):.3f}",
         f"Pm {look.metallic:.3f}",
     ]
-    lines += [f"{key} ../textures/{slot}_{name}.png" for name, key in _MTL_MAPS.items() if name in maps]
+    if look.opacity < 1.0:
+        from infmob_usd.materials import FAMILIES
+
+        lines += [f"Tr {1.0 - look.opacity:.3f}", f"Ni {FAMILIES[look.family].ior:.3f}"]
+    for name, key in _MTL_MAPS.items():
+        if name in maps:
+            option = f"-mm 0 {rough:.4f} " if name == "roughness" else ""
+            lines.append(f"{key} {option}../textures/{slot}_{name}.png")
     return "\n".join(lines + [""])
 
 
@@ -141,7 +157,8 @@ def write_urdf(obj, folder: Path) -> Path:
         out.append(f'  <link name="{link.name}">')
         for vname, slot, _role, v, f, n, uv in visuals[link.name]:
             fname = f"{link.name}__{vname}.obj"
-            write_obj(meshes / fname, v, f, n, uv, mtl=f"{slot}.mtl", material=slot)
+            m = obj.materials[slot].wear.uv_matrix()  # this object's placement of the maps, baked in
+            write_obj(meshes / fname, v, f, n, uv @ m[:, :2].T + m[:, 2], mtl=f"{slot}.mtl", material=slot)
             out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
         same_shape: dict[bytes, str] = {}  # identical centred hulls (a keypad's buttons) share a file

@@ -259,7 +259,14 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
 
 
 def _materials(layer: Sdf.Layer, obj, visuals) -> None:
-    """One UsdPreviewSurface per slot, a UsdUVTexture per map written, and the bindings."""
+    """One UsdPreviewSurface per slot, a UsdUVTexture per map written, and the bindings.
+
+    The object's :class:`~infmob_usd.materials.Wear` of each look is written as shader inputs:
+    a ``UsdTransform2d`` (rotation, translation) between the UV reader and the textures, the
+    tint as the base colour texture's ``inputs:scale`` and the roughness scale as the
+    roughness texture's; see-through looks get ``inputs:opacity`` and ``inputs:ior``.
+    """
+    from infmob_usd.materials import FAMILIES
     root = _prim(layer.pseudoRoot, obj.name, _OVER)
     looks = _prim(root, "Looks", _DEF, "Scope")
     lpath = f"/{obj.name}/Looks"
@@ -271,13 +278,16 @@ def _materials(layer: Sdf.Layer, obj, visuals) -> None:
         surf = _prim(mat, "PreviewSurface", _DEF, "Shader")
         _attr(surf, "info:id", "token", "UsdPreviewSurface", uniform=True)
         _attr(surf, "inputs:opacity", "float", float(look.opacity))
+        if look.opacity < 1.0:
+            _attr(surf, "inputs:ior", "float", float(FAMILIES[look.family].ior))
         _attr(surf, "inputs:useSpecularWorkflow", "int", 0)
         _attr(surf, "outputs:surface", "token")
         # constants for the maps not written (the textures room leaves out constant maps)
         if "basecolor" not in maps:
-            _attr(surf, "inputs:diffuseColor", "color3f", Gf.Vec3f(*map(float, look.base_color)))
+            tinted = [float(c) * float(t) for c, t in zip(look.base_color, look.wear.tint)]
+            _attr(surf, "inputs:diffuseColor", "color3f", Gf.Vec3f(*tinted))
         if "roughness" not in maps:
-            _attr(surf, "inputs:roughness", "float", float(look.roughness))
+            _attr(surf, "inputs:roughness", "float", min(1.0, float(look.roughness * look.wear.roughness_scale)))
         if "metallic" not in maps:
             _attr(surf, "inputs:metallic", "float", float(look.metallic))
         if not maps:
@@ -286,6 +296,13 @@ def _materials(layer: Sdf.Layer, obj, visuals) -> None:
         _attr(reader, "info:id", "token", "UsdPrimvarReader_float2", uniform=True)
         _attr(reader, "inputs:varname", "string", "st")
         _attr(reader, "outputs:result", "float2")
+        wear = look.wear
+        xf = _prim(mat, "UVTransform", _DEF, "Shader")  # this object's placement of the maps
+        _attr(xf, "info:id", "token", "UsdTransform2d", uniform=True)
+        _connect(xf, "inputs:in", "float2", f"{mpath}/TexCoordReader.outputs:result")
+        _attr(xf, "inputs:rotation", "float", float(wear.uv_rotation))
+        _attr(xf, "inputs:translation", "float2", Gf.Vec2f(*map(float, wear.uv_offset)))
+        _attr(xf, "outputs:result", "float2")
         for tex in maps:
             inp, itype, out, otype, space = _MAPS[tex]
             t = _prim(mat, f"{tex}Texture", _DEF, "Shader")
@@ -294,10 +311,15 @@ def _materials(layer: Sdf.Layer, obj, visuals) -> None:
             _attr(t, "inputs:sourceColorSpace", "token", space)
             _attr(t, "inputs:wrapS", "token", "repeat")
             _attr(t, "inputs:wrapT", "token", "repeat")
-            _connect(t, "inputs:st", "float2", f"{mpath}/TexCoordReader.outputs:result")
+            _connect(t, "inputs:st", "float2", f"{mpath}/UVTransform.outputs:result")
             if tex == "normal":
                 _attr(t, "inputs:scale", "float4", Gf.Vec4f(2, 2, 2, 1))
                 _attr(t, "inputs:bias", "float4", Gf.Vec4f(-1, -1, -1, 0))
+            elif tex == "basecolor":
+                _attr(t, "inputs:scale", "float4", Gf.Vec4f(*map(float, wear.tint), 1.0))
+            elif tex == "roughness":
+                r = float(wear.roughness_scale)
+                _attr(t, "inputs:scale", "float4", Gf.Vec4f(r, r, r, 1.0))
             _attr(t, f"outputs:{out}", otype)
             _connect(surf, f"inputs:{inp}", itype, f"{mpath}/{tex}Texture.outputs:{out}")
     for link in obj.links:

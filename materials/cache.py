@@ -1,7 +1,7 @@
 """Encoded texture maps of library looks, made once and reused.
 
 Every look an object can wear is one of the finite library of
-:func:`~infmob_usd.materials.families.library_look` (16 per palette variant, 1072 in
+:func:`~infmob_usd.materials.families.library_look` (16 per palette variant, 1168 in
 all), so the PNG maps of a look, which cost 30-45 ms to synthesize and encode at
 512 px, are made once and then reused by every object that wears the look.
 
@@ -87,7 +87,7 @@ def cache_dir() -> Path | None:
 
 
 def _look_key(look: Look, size: int) -> str:
-    blob = json.dumps(look.to_dict(), sort_keys=True) + f"|{size}"
+    blob = json.dumps(look.to_dict(wear=False), sort_keys=True) + f"|{size}"  # the wear is no part of the maps
     digest = hashlib.sha256(blob.encode()).hexdigest()[:16]
     tag = f"{look.family}_{look.variant}_{look.index:02d}" if look.index >= 0 else look.family
     return f"{size}/{tag}_{digest}"

@@ -21,14 +21,16 @@ them in an image editor); :attr:`Look.base_color` is *linear* RGB.
 from __future__ import annotations
 
 import colorsys
+import math
 import zlib
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 __all__ = [
-    "FAMILIES", "LOOKS_PER_VARIANT", "Family", "Look", "library", "library_look", "sample_look", "srgb_to_linear",
+    "FAMILIES", "LOOKS_PER_VARIANT", "WOOD_SPECIES", "Family", "Look", "Wear", "library", "library_look",
+    "sample_look", "sample_wear", "srgb_to_linear",
 ]
 
 LOOKS_PER_VARIANT = 16
@@ -49,7 +51,8 @@ class Family:
         Density of the solid material in kg/m^3.
     style : str
         Texture synthesis style used by :func:`~infmob_usd.materials.synth.synthesize`:
-        one of ``"wood"``, ``"brushed"``, ``"coating"``, ``"speckle"``, ``"woven"``.
+        one of ``"wood"``, ``"brushed"``, ``"coating"``, ``"speckle"``, ``"woven"``,
+        ``"polished"``.
     palette : tuple of (str, str)
         ``(variant name, sRGB hex colour)`` pairs; one is drawn uniformly.
     hsv_jitter : tuple of float
@@ -68,11 +71,19 @@ class Family:
     bump : tuple of float
         Range of the RMS slope of the normal map (tangent of the typical tilt).
     scale : tuple of float
-        Range of the main feature frequency in cycles per UV unit across V
-        (growth rings for wood, streaks for brushed metal, orange peel for
-        coatings, speckle for plastics, threads for fabric).
+        Range of the main feature frequency in cycles per **metre** of surface
+        (growth rings crossed per metre of radius for wood, streaks for brushed
+        metal, orange peel for coatings, speckle for plastics, threads for
+        fabric): real sizes, laid at the one texel density of every family
+        (:data:`~infmob_usd.materials.synth.TILE_METRES` per texture repeat).
     anisotropy : tuple of float
         Range of the elongation of the main features along U (1 = isotropic).
+        U runs along each part's long axis, so grain and brushing follow the part.
+    variant_opacity : tuple of (str, (float, float))
+        Per-variant opacity ranges that replace ``opacity`` (tinted bottle glass is
+        denser than window glass, a frosted bulb nearly opaque).
+    ior : float
+        Index of refraction (written for see-through materials).
     """
 
     name: str
@@ -88,6 +99,43 @@ class Family:
     bump: Range
     scale: Range
     anisotropy: Range
+    variant_opacity: tuple[tuple[str, Range], ...] = ()
+    ior: float = 1.5
+
+
+@dataclass(frozen=True)
+class Wear:
+    """How one object wears a library look: shader inputs, no new texture maps.
+
+    Drawn per material slot from the object's materials stream (:func:`sample_look`), so
+    two objects wearing the same library look still differ.  Writers apply it as shader
+    inputs (USD ``UsdUVTexture`` ``inputs:scale`` and a ``UsdTransform2d``; MTL ``Kd``,
+    ``map_Pr -mm`` and the UV transform baked into the OBJ ``vt``).
+
+    Attributes
+    ----------
+    tint : tuple of float
+        Linear RGB multiplier of the base colour map (near 1).
+    roughness_scale : float
+        Multiplier of the roughness map.
+    uv_offset : tuple of float
+        Translation of the UVs, in texture repeats, each in [0, 1).
+    uv_rotation : float
+        Rotation of the UVs about the origin, degrees counter-clockwise: 0 or 180 for
+        grained families (wood, brushed metal: the grain stays along the part), a
+        quarter turn for weaves, any angle for isotropic finishes.
+    """
+
+    tint: tuple[float, float, float] = (1.0, 1.0, 1.0)
+    roughness_scale: float = 1.0
+    uv_offset: tuple[float, float] = (0.0, 0.0)
+    uv_rotation: float = 0.0
+
+    def uv_matrix(self) -> np.ndarray:
+        """``(2, 3)`` affine map of UVs: ``uv' = M[:, :2] @ uv + M[:, 2]`` (rotate, then offset)."""
+        a = math.radians(self.uv_rotation)
+        c, s = math.cos(a), math.sin(a)
+        return np.array([[c, -s, self.uv_offset[0]], [s, c, self.uv_offset[1]]])
 
 
 @dataclass(frozen=True)
@@ -115,6 +163,9 @@ class Look:
     index : int
         Position of the look among the :data:`LOOKS_PER_VARIANT` looks of its variant
         (-1 for a look made by hand rather than by :func:`library_look`).
+    wear : Wear
+        How this object wears the look (:class:`Wear`).  Not part of the look's
+        identity: equality, hashing and the texture cache ignore it.
     """
 
     family: str
@@ -130,20 +181,44 @@ class Look:
     scale: float
     anisotropy: float
     index: int = -1
+    wear: Wear = field(default=Wear(), compare=False)
 
-    def to_dict(self) -> dict[str, Any]:
-        """Return the look as a JSON-serialisable dict (``base_color`` as a list)."""
+    def to_dict(self, wear: bool = True) -> dict[str, Any]:
+        """Return the look as a JSON-serialisable dict (``base_color`` as a list; ``wear``
+        as a dict of lists, left out when ``wear`` is false)."""
         d = asdict(self)
         d["base_color"] = list(self.base_color)
+        if wear:
+            d["wear"] = {k: list(v) if isinstance(v, tuple) else v for k, v in d["wear"].items()}
+        else:
+            del d["wear"]
         return d
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> Look:
         """Rebuild a look from :meth:`to_dict` output."""
-        return cls(**{**d, "base_color": tuple(float(c) for c in d["base_color"])})
+        w = d.get("wear") or {}
+        wear = Wear(**{k: tuple(float(x) for x in v) if isinstance(v, list) else float(v) for k, v in w.items()})
+        return cls(**{**d, "base_color": tuple(float(c) for c in d["base_color"]), "wear": wear})
 
 
 _OPAQUE = (1.0, 1.0)
+
+WOOD_SPECIES: dict[str, dict[str, float]] = {
+    # How each wood variant shows its anatomy (weights of the features drawn by the wood
+    # synthesis; 0 = absent).  ring_porous: large earlywood pores in a band at the start of
+    # every ring (oak, ash; walnut and teak are semi-ring-porous); pores: how visible the
+    # pores are at all; rays: the flecks of broad medullary rays (oak only); rings: contrast
+    # of latewood against earlywood.  After the USDA Forest Products Laboratory's
+    # "Wood Handbook" (FPL-GTR-282, 2021), ch. 2 (structure) and ch. 3 (species descriptions).
+    "oak": {"ring_porous": 1.0, "pores": 1.0, "rays": 1.0, "rings": 1.0},
+    "walnut": {"ring_porous": 0.5, "pores": 0.7, "rays": 0.0, "rings": 0.7},
+    "birch": {"ring_porous": 0.0, "pores": 0.25, "rays": 0.0, "rings": 0.45},
+    "cherry": {"ring_porous": 0.0, "pores": 0.3, "rays": 0.0, "rings": 0.6},
+    "maple": {"ring_porous": 0.0, "pores": 0.2, "rays": 0.0, "rings": 0.45},
+    "teak": {"ring_porous": 0.4, "pores": 0.6, "rays": 0.0, "rings": 0.8},
+}
+"""Anatomy of each wood variant, read by the wood texture synthesis."""
 
 FAMILIES: dict[str, Family] = {
     f.name: f
@@ -161,13 +236,15 @@ FAMILIES: dict[str, Family] = {
                 ("teak", "#A8763E"),
             ),
             hsv_jitter=(0.015, 0.10, 0.10),
-            roughness=(0.45, 0.7),
+            roughness=(0.4, 0.65),
             metallic=0.0,
             opacity=_OPAQUE,
-            color_variation=(0.15, 0.28),
+            color_variation=(0.2, 0.32),
             roughness_variation=(0.04, 0.08),
-            bump=(0.02, 0.05),
-            scale=(4.0, 11.0),
+            bump=(0.02, 0.04),
+            # growth rings 2.5-5.5 mm wide (Wood Handbook ch. 2: 4-14 rings per inch in
+            # furniture hardwoods)
+            scale=(180.0, 400.0),
             anisotropy=(14.0, 30.0),
         ),
         Family(
@@ -187,6 +264,9 @@ FAMILIES: dict[str, Family] = {
                 ("pastel_pink", "#E6C3C3"),
                 ("pastel_yellow", "#EFE0A6"),
                 ("pastel_green", "#BFDCC4"),
+                # appliance finishes (palettes.APPLIANCE_BODY names the sources)
+                ("graphite", "#4A4D51"),
+                ("retro_cream", "#EDE1C3"),
             ),
             hsv_jitter=(0.01, 0.06, 0.05),
             roughness=(0.3, 0.55),
@@ -195,7 +275,7 @@ FAMILIES: dict[str, Family] = {
             color_variation=(0.008, 0.02),
             roughness_variation=(0.02, 0.04),
             bump=(0.01, 0.025),
-            scale=(70.0, 110.0),
+            scale=(200.0, 360.0),  # orange peel of a sprayed coat: 3-5 mm
             anisotropy=(1.0, 1.3),
         ),
         Family(
@@ -208,14 +288,14 @@ FAMILIES: dict[str, Family] = {
                 ("stainless_warm", "#C8C6C1"),
             ),
             hsv_jitter=(0.01, 0.05, 0.04),
-            roughness=(0.25, 0.45),
+            roughness=(0.25, 0.4),
             metallic=1.0,
             opacity=_OPAQUE,
             color_variation=(0.03, 0.06),
             roughness_variation=(0.05, 0.09),
             bump=(0.03, 0.06),
-            scale=(140.0, 200.0),
-            anisotropy=(60.0, 120.0),
+            scale=(500.0, 800.0),  # brushing streaks ~1-2 mm apart (the finest lines are sub-texel)
+            anisotropy=(80.0, 160.0),
         ),
         Family(
             name="plastic",
@@ -240,29 +320,44 @@ FAMILIES: dict[str, Family] = {
             color_variation=(0.015, 0.035),
             roughness_variation=(0.03, 0.06),
             bump=(0.015, 0.04),
-            scale=(110.0, 170.0),
+            scale=(220.0, 340.0),  # moulded texture ~3-4 mm
             anisotropy=(1.0, 1.0),
         ),
         Family(
             name="glass",
             density=2500.0,
-            style="coating",
+            style="polished",
             palette=(
-                ("clear", "#F2F6F4"),
-                ("clear_blue", "#E4EEF2"),
-                ("bottle_green", "#5E9C6A"),
-                ("bottle_blue", "#5A86B5"),
-                ("amber", "#8C5A2B"),
+                # clear glass reflects, it does not scatter: a mid-light albedo keeps a few
+                # stacked see-through surfaces (two walls of a bottle) from turning milky
+                ("clear", "#C4D0CB"),
+                ("clear_blue", "#B9CBD3"),
+                ("smoked", "#2B2E33"),  # the tinted window of an oven or microwave door
+                # container glass colours: "emerald"/"Georgia green", "amber", "cobalt" of
+                # the Glass Packaging Institute's colour names, sRGB as seen in transmission
+                ("bottle_green", "#2F5E37"),
+                ("bottle_blue", "#2F5A8A"),
+                ("amber", "#6E3F16"),
+                ("frosted", "#F4EEE0"),  # opal (frosted) warm-white bulb glass
             ),
             hsv_jitter=(0.01, 0.05, 0.04),
-            roughness=(0.02, 0.08),
+            roughness=(0.02, 0.05),
             metallic=0.0,
-            opacity=(0.15, 0.35),
-            color_variation=(0.003, 0.008),
-            roughness_variation=(0.003, 0.008),
-            bump=(0.003, 0.008),
-            scale=(6.0, 16.0),
+            opacity=(0.08, 0.14),
+            color_variation=(0.002, 0.005),
+            roughness_variation=(0.003, 0.006),
+            bump=(0.001, 0.003),
+            scale=(12.0, 32.0),
             anisotropy=(1.0, 2.0),
+            variant_opacity=(
+                ("clear_blue", (0.1, 0.16)),
+                ("smoked", (0.55, 0.7)),
+                ("bottle_green", (0.62, 0.78)),
+                ("bottle_blue", (0.58, 0.72)),
+                ("amber", (0.62, 0.78)),
+                ("frosted", (0.88, 0.94)),
+            ),
+            ior=1.52,  # soda-lime glass
         ),
         Family(
             name="ceramic",
@@ -284,7 +379,7 @@ FAMILIES: dict[str, Family] = {
             color_variation=(0.005, 0.012),
             roughness_variation=(0.01, 0.02),
             bump=(0.004, 0.012),
-            scale=(20.0, 45.0),
+            scale=(40.0, 90.0),  # glaze ripple 1-2.5 cm
             anisotropy=(1.0, 1.2),
         ),
         Family(
@@ -304,26 +399,26 @@ FAMILIES: dict[str, Family] = {
             color_variation=(0.04, 0.07),
             roughness_variation=(0.02, 0.04),
             bump=(0.05, 0.1),
-            scale=(150.0, 220.0),
+            scale=(300.0, 440.0),
             anisotropy=(1.0, 1.0),
         ),
         Family(
             name="chrome",
             density=7850.0,
-            style="coating",
+            style="polished",
             palette=(
                 ("chrome", "#DADCDE"),
                 ("chrome_cool", "#CFD3D7"),
                 ("chrome_bright", "#E6E7E8"),
             ),
             hsv_jitter=(0.005, 0.05, 0.02),
-            roughness=(0.05, 0.15),
+            roughness=(0.02, 0.06),  # electroplated chrome: a mirror
             metallic=1.0,
             opacity=_OPAQUE,
-            color_variation=(0.002, 0.006),
-            roughness_variation=(0.005, 0.01),
-            bump=(0.002, 0.005),
-            scale=(50.0, 90.0),
+            color_variation=(0.001, 0.003),
+            roughness_variation=(0.003, 0.006),
+            bump=(0.0005, 0.0015),
+            scale=(100.0, 180.0),
             anisotropy=(1.0, 1.0),
         ),
         Family(
@@ -337,6 +432,7 @@ FAMILIES: dict[str, Family] = {
                 ("cream", "#EDE1C0"),
                 ("cobalt", "#22458C"),
                 ("green", "#2F6B4F"),
+                ("graphite", "#404347"),
             ),
             hsv_jitter=(0.01, 0.05, 0.05),
             roughness=(0.15, 0.3),
@@ -345,7 +441,7 @@ FAMILIES: dict[str, Family] = {
             color_variation=(0.006, 0.015),
             roughness_variation=(0.01, 0.025),
             bump=(0.006, 0.015),
-            scale=(40.0, 80.0),
+            scale=(80.0, 160.0),
             anisotropy=(1.0, 1.3),
         ),
         Family(
@@ -372,8 +468,26 @@ FAMILIES: dict[str, Family] = {
             color_variation=(0.05, 0.1),
             roughness_variation=(0.03, 0.06),
             bump=(0.25, 0.4),
-            scale=(36.0, 64.0),
+            scale=(500.0, 900.0),  # threads 1.1-2 mm: a coarse linen or upholstery weave
             anisotropy=(4.0, 8.0),
+        ),
+        Family(
+            name="screen",
+            density=2500.0,  # the cover glass of a display panel
+            style="polished",
+            palette=(
+                ("black", "#0C0E11"),
+                ("blue_black", "#0A0E15"),
+            ),
+            hsv_jitter=(0.005, 0.05, 0.05),
+            roughness=(0.03, 0.07),  # glossy cover glass
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.002, 0.004),
+            roughness_variation=(0.003, 0.006),
+            bump=(0.0005, 0.001),
+            scale=(100.0, 200.0),
+            anisotropy=(1.0, 1.0),
         ),
     )
 }
@@ -438,7 +552,7 @@ def library_look(family: str, variant: str, index: int) -> Look:
         base_color=(float(linear[0]), float(linear[1]), float(linear[2])),
         roughness=_uniform(rng, fam.roughness),
         metallic=float(fam.metallic),
-        opacity=_uniform(rng, fam.opacity),
+        opacity=_uniform(rng, dict(fam.variant_opacity).get(variant, fam.opacity)),
         noise_seed=int(rng.integers(0, 2**53)),
         color_variation=_uniform(rng, fam.color_variation),
         roughness_variation=_uniform(rng, fam.roughness_variation),
@@ -471,12 +585,13 @@ def sample_look(family: str, rng: np.random.Generator) -> Look:
         A key of :data:`FAMILIES`, optionally restricted to some palette variants:
         ``"plastic:black|dark_grey"`` draws only those colours.
     rng : numpy.random.Generator
-        Source of the two draws (variant, look index).
+        Source of the draws (variant, look index, then the wear).
 
     Returns
     -------
     Look
-        The look, :func:`library_look` of the drawn variant and index.
+        The look, :func:`library_look` of the drawn variant and index, with the
+        :class:`Wear` of this object (:func:`sample_wear`, drawn next from ``rng``).
 
     Raises
     ------
@@ -494,4 +609,38 @@ def sample_look(family: str, rng: np.random.Generator) -> Look:
         names = ", ".join(name for name, _ in fam.palette)
         raise ValueError(f"family {family!r} has no variant among {only}; its variants: {names}")
     variant = palette[int(rng.integers(len(palette)))][0]
-    return library_look(family, variant, int(rng.integers(LOOKS_PER_VARIANT)))
+    look = library_look(family, variant, int(rng.integers(LOOKS_PER_VARIANT)))
+    return replace(look, wear=sample_wear(look, rng))
+
+
+def sample_wear(look: Look, rng: np.random.Generator) -> Wear:
+    """Draw how one object wears ``look`` (:class:`Wear`): 5 draws from ``rng``.
+
+    The tint is half the family's palette jitter (so a worn look stays within its
+    family's colours), the roughness scale 0.85-1.15 (kept so the roughest texel stays
+    below 1), the UV offset anywhere in the repeat, and the rotation follows the grain:
+    half turns for wood and brushed metal, quarter turns for weaves, any angle otherwise.
+    """
+    fam = _family(look.family)
+    dh, ds, dv = (0.5 * x for x in fam.hsv_jitter)
+    base = np.asarray(look.base_color, dtype=np.float64)
+    srgb = np.where(base <= 0.0031308, 12.92 * base, 1.055 * np.maximum(base, 0.0) ** (1 / 2.4) - 0.055)
+    hue, sat, val = colorsys.rgb_to_hsv(*np.clip(srgb, 0.0, 1.0))
+    hue = (hue + _uniform(rng, (-dh, dh))) % 1.0
+    sat = min(1.0, sat * (1.0 + _uniform(rng, (-ds, ds))))
+    val = min(1.0, val * (1.0 + _uniform(rng, (-dv, dv))))
+    tinted = srgb_to_linear(np.array(colorsys.hsv_to_rgb(hue, sat, val)))
+    tint = np.clip(tinted / np.maximum(base, 1e-4), 0.5, 2.0)
+    tint = np.where(base > 1e-4, tint, 1.0)
+    top = min(1.15, 0.98 / max(look.roughness + 2.5 * look.roughness_variation, 1e-3))
+    rough = _uniform(rng, (min(0.85, top), top))
+    offset = (float(rng.random()), float(rng.random()))
+    turn = float(rng.random())
+    if fam.style in ("wood", "brushed"):
+        rotation = 180.0 * math.floor(2 * turn)
+    elif fam.style == "woven":
+        rotation = 90.0 * math.floor(4 * turn)
+    else:
+        rotation = 360.0 * turn
+    return Wear(tint=tuple(round(float(t), 6) for t in tint), roughness_scale=round(rough, 6),
+                uv_offset=tuple(round(o, 6) for o in offset), uv_rotation=round(rotation, 4))

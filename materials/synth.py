@@ -27,9 +27,9 @@ from collections.abc import Callable, Sequence
 import cv2
 import numpy as np
 
-from .families import FAMILIES, Look
+from .families import FAMILIES, WOOD_SPECIES, Look
 
-__all__ = ["TEXTURE_MAPS", "encode_png", "height_to_normal", "periodic_noise", "synthesize"]
+__all__ = ["TEXTURE_MAPS", "TILE_METRES", "encode_png", "height_to_normal", "periodic_noise", "synthesize"]
 
 TEXTURE_MAPS = ("basecolor", "roughness", "normal")
 """The maps of a look.  Metallic is constant per family, so it is a material constant
@@ -37,6 +37,11 @@ TEXTURE_MAPS = ("basecolor", "roughness", "normal")
 
 MIN_SIZE = 16
 MAX_SIZE = 4096
+
+TILE_METRES = 0.5
+"""Metres of surface one texture repeat covers, for every family (one texel density:
+512 px maps give ~1 mm texels).  Family scales are per metre and are converted with it;
+the geometry kernel lays UVs at the same density (``infmob_usd.geometry.UV_TILE``)."""
 
 Component = tuple[float, float, float]
 """``(weight, sigma_u, sigma_v)``: one anisotropic Gaussian of a noise amplitude
@@ -198,32 +203,73 @@ _RING_MEAN, _RING_STD = float(_RING_GRID.mean()), float(_RING_GRID.std())
 
 
 def _wood(look: Look, size: int) -> Fields:
-    """Growth rings across V, wiggled by low-frequency warp, plus grain and pores along U."""
-    seed, aniso = look.noise_seed, look.anisotropy
-    rings = max(1, round(look.scale))
-    warp = periodic_noise(seed, "wood.warp", size, [(1.0, 0.8, 0.6)])
-    wobble = periodic_noise(seed, "wood.wobble", size, [(1.0, 2.0, 4.0)])
-    figure = periodic_noise(seed, "wood.figure", size, [(1.0, 2.0, 3.0)])
-    grain = periodic_noise(seed, "wood.grain", size, [(1.0, 70.0 / aniso, 70.0)])
-    pores = periodic_noise(seed, "wood.pores", size, [(1.0, 200.0 / aniso, 200.0)])
+    """Flat-sawn boards glued edge to edge, grain along U, at real scale.
 
+    The tile is cut into 3-5 boards across V (seams between them).  Each board is a flat
+    slice through a log: at a point ``x`` along the board and ``y`` across it, the growth
+    ring crossed is ``sqrt((y - pith)**2 + depth(x)**2) / ring width``, where the slice's
+    depth below the pith wanders slowly along the board, which draws the cathedral arches
+    of flat-sawn figure and straight lines near the edges.  Pores are short dark streaks
+    along the grain, gathered in the earlywood band of ring-porous species; oak adds ray
+    flecks (:data:`~infmob_usd.materials.families.WOOD_SPECIES`).  Colour carries only
+    albedo (ring, pore, board and fibre differences), never shading.
+    """
+    seed = look.noise_seed
+    species = WOOD_SPECIES.get(look.variant, WOOD_SPECIES["maple"])
+    rng = np.random.default_rng(np.random.SeedSequence((seed, zlib.crc32(b"wood.boards"))))
+    boards = max(1, round(TILE_METRES / rng.uniform(0.1, 0.17)))
+    width = TILE_METRES / boards
+    # pith offset across each board, m: mostly towards an edge, so the rings draw open arches
+    pith = rng.choice([-1.0, 1.0], boards) * rng.uniform(0.2, 0.75, boards) * width
+    depth0 = rng.uniform(0.05, 0.14, boards)  # slice depth below the pith, m
+    amp = rng.uniform(0.3, 1.0, (boards, 2)) * np.array([0.012, 0.004])  # its wander along the board
+    turn = rng.uniform(0.0, 1.0, (boards, 2))
+    spacing = 1.0 / (look.scale * rng.uniform(0.85, 1.2, boards))  # ring width, m
+    shift = rng.normal(0.0, 0.45, boards)  # board-to-board colour difference
+    ring0 = rng.uniform(0.0, 1.0, boards)
+
+    u = (np.arange(size, dtype=np.float32) + 0.5) / size
     v = (np.arange(size, dtype=np.float32) + 0.5) / size
-    phase = rings * v[:, None] + 0.15 * warp + 0.03 * wobble + 0.02 * grain
-    latewood = (_ring_profile(phase - np.floor(phase)) - _RING_MEAN) / _RING_STD
-    latewood *= 1.0 + 0.3 * figure
-    dark = 0.85 * latewood + 0.3 * grain + 0.35 * pores
+    b = np.minimum((v * boards).astype(np.int64), boards - 1)  # board of each row
+    y = ((v * boards - b - 0.5) * width - pith[b]).astype(np.float32)  # m from the pith line, per row
+    wander = (amp[b, 0:1] * np.sin(2 * np.pi * (u[None, :] + turn[b, 0:1]))
+              + amp[b, 1:2] * np.sin(2 * np.pi * (2 * u[None, :] + turn[b, 1:2])))
+    depth = (depth0[b, None] + wander).astype(np.float32)
+    warp = periodic_noise(seed, "wood.warp", size, [(1.0, 3.0, 10.0)])
+    radius = np.sqrt(y[:, None] ** 2 + depth * depth) + np.float32(0.001) * warp
+    phase = radius / spacing[b, None].astype(np.float32) + ring0[b, None].astype(np.float32)
+    t = phase - np.floor(phase)
+    latewood = (_ring_profile(t) - _RING_MEAN) / _RING_STD
+    earlywood = 1.0 - _smoothstep(0.05, 0.3, t)  # the band where ring-porous woods carry big pores
 
+    k = TILE_METRES  # cycles per metre -> per tile
+    fibre = periodic_noise(seed, "wood.fibre", size, [(1.0, 10.0 * k, 180.0 * k)])
+    pore_noise = periodic_noise(seed, "wood.pores", size, [(1.0, 60.0 * k, 600.0 * k)])
+    pores = np.maximum(pore_noise - 1.0, 0.0) * (
+        1.0 - species["ring_porous"] + 3.0 * species["ring_porous"] * earlywood)
+    pores *= species["pores"]
+    rays = 0.0
+    if species["rays"] > 0:
+        ray_noise = periodic_noise(seed, "wood.rays", size, [(1.0, 25.0 * k, 500.0 * k)])
+        rays = species["rays"] * np.maximum(ray_noise - 2.0, 0.0)
+    # seams: a thin line where two boards meet (about 0.6 mm, at least a texel)
+    edge = np.abs(v * boards - np.rint(v * boards)) * width  # m to the nearest board edge, per row
+    seam = np.exp(-((edge / max(0.0006, 0.6 * TILE_METRES / size)) ** 2)).astype(np.float32)[:, None]
+
+    figure = periodic_noise(seed, "wood.figure", size, [(1.0, 2.0, 12.0)])  # mineral streaks, colour runs
+    dark = (species["rings"] * 0.6 * latewood + shift[b, None].astype(np.float32) + 0.45 * fibre
+            + 0.3 * figure + 1.2 * pores + 1.0 * rays + 3.0 * seam)
     ln_base = np.log(np.maximum(np.asarray(look.base_color, dtype=np.float32), 1e-3))
     # Darker wood is also more saturated: channels darken in proportion to -ln(base).
     tint = np.exp(-look.color_variation * dark[..., None] * (0.5 - ln_base))
-    roughness = 0.8 * pores + 0.5 * latewood
-    height = 0.6 * grain + 0.5 * pores - 0.3 * latewood
+    roughness = 0.9 * pores + 1.5 * seam - 0.3 * latewood + 0.3 * fibre
+    height = 0.35 * fibre - 0.9 * pores - 2.5 * seam + 0.15 * latewood
     return tint, roughness, height
 
 
 def _brushed(look: Look, size: int) -> Fields:
     """Fine and coarse streaks along U, shared by colour, roughness and normal."""
-    seed, s = look.noise_seed, look.scale
+    seed, s = look.noise_seed, look.scale * TILE_METRES
     su = s / look.anisotropy
     streaks = periodic_noise(
         seed, "brushed.streaks", size, [(1.0, su, s), (0.8, 0.5 * su, 0.15 * s)]
@@ -235,7 +281,7 @@ def _brushed(look: Look, size: int) -> Fields:
 
 def _coating(look: Look, size: int) -> Fields:
     """Smooth coating: faint low-frequency mottling plus band-pass orange peel."""
-    seed, s = look.noise_seed, look.scale
+    seed, s = look.noise_seed, look.scale * TILE_METRES
     su = s / look.anisotropy
     low = periodic_noise(seed, "coating.low", size, [(1.0, 2.5, 2.5)])
     peel = periodic_noise(seed, "coating.peel", size, [(1.0, su, s), (-1.0, 0.5 * su, 0.5 * s)])
@@ -245,7 +291,7 @@ def _coating(look: Look, size: int) -> Fields:
 
 def _speckle(look: Look, size: int) -> Fields:
     """Fine isotropic speckle over a faint low-frequency variation."""
-    seed, s = look.noise_seed, look.scale
+    seed, s = look.noise_seed, look.scale * TILE_METRES
     speck = periodic_noise(seed, "speckle.fine", size, [(1.0, s / look.anisotropy, s)])
     low = periodic_noise(seed, "speckle.low", size, [(1.0, 3.0, 3.0)])
     detail = 0.9 * speck + 0.3 * low
@@ -255,7 +301,7 @@ def _speckle(look: Look, size: int) -> Fields:
 def _woven(look: Look, size: int) -> Fields:
     """Plain weave: warp threads along V, weft threads along U, with fibre noise."""
     seed = look.noise_seed
-    n = 2 * max(2, round(look.scale / 2.0))  # threads per UV unit; even, so it tiles
+    n = 2 * max(2, round(look.scale * TILE_METRES / 2.0))  # threads per UV unit; even, so it tiles
     across, along = 2.0 * n, 2.0 * n / look.anisotropy
     fib_warp = periodic_noise(seed, "woven.warp", size, [(1.0, across, along)])
     fib_weft = periodic_noise(seed, "woven.weft", size, [(1.0, along, across)])
@@ -283,12 +329,21 @@ def _woven(look: Look, size: int) -> Fields:
     return tint, roughness, height
 
 
+def _polished(look: Look, size: int) -> Fields:
+    """A mirror-like finish (chrome plating, glass, a screen's cover glass): no bands or
+    rings, only a faint fine haze in colour and roughness and an almost flat normal."""
+    seed, s = look.noise_seed, look.scale * TILE_METRES
+    haze = periodic_noise(seed, "polished.haze", size, [(1.0, s, s)])
+    return 1.0 + look.color_variation * haze, haze, haze
+
+
 _STYLES: dict[str, Callable[[Look, int], Fields]] = {
     "wood": _wood,
     "brushed": _brushed,
     "coating": _coating,
     "speckle": _speckle,
     "woven": _woven,
+    "polished": _polished,
 }
 
 

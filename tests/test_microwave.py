@@ -10,6 +10,7 @@ from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 
 from infmob_usd.categories import microwave as mw
+from infmob_usd.materials import appliance
 from infmob_usd.model import build as build_model
 
 from zoo import by_child, make_bp, movable
@@ -86,10 +87,12 @@ def test_required_parts_labels_and_materials(seed):
     assert {part.label for part in bp.parts.values()} <= LABELS
     door = bp.parts["door"]
     assert any(pc.material == "glass" for pc in door.pieces)
-    assert bp.materials["glass"] == "glass" and bp.materials["plate"] == "glass"
-    assert bp.materials["body"] == p["body_finish"] in ("painted", "brushed_metal", "plastic")
-    assert bp.materials["interior"] in ("enamel", "painted")
-    assert bp.materials["button"] == bp.materials["knob"] == "plastic"
+    # appliance finishes (materials/palettes.py): smoked or clear door glass, a clear turntable
+    assert bp.materials["glass"] == appliance("glass") and bp.materials["plate"] == "glass:clear"
+    assert bp.materials["body"] == appliance(p["body_finish"])
+    assert p["body_finish"] in ("painted", "brushed_metal", "plastic")
+    assert bp.materials["interior"] in (appliance("enamel"), appliance("painted"))
+    assert bp.materials["button"] == bp.materials["knob"] == appliance("plastic")
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
     assert used <= set(bp.materials)
     for part in bp.parts.values():

@@ -190,3 +190,30 @@ def test_command_line(renderer, cabinets, tmp_path):
     assert (tmp_path / "p" / cabinets[1].name / "preview.png").is_file()
     assert (tmp_path / "p" / cabinets[1].name / "sweep.gif").is_file()
     assert preview.main(ap.parse_args([])) == 2
+
+
+def test_glass_is_drawn_see_through_and_the_tint_applied(renderer, tmp_path):
+    """The preview shows what the MTL asks: ``d`` < 1 is see-through (blended in the transparency
+    pass), ``Kd`` multiplies ``map_Kd`` (the object's tint of its look)."""
+    import sapien
+
+    obj = infmob_usd.generate("window", seed=1, texture_size=16)
+    folder = infmob_usd.save(obj, tmp_path)
+    seen = {}
+    with renderer.ObjectRenderer(folder) as r:
+        for ent in r._entities.values():
+            for shape in ent.find_component_by_type(sapien.render.RenderBodyComponent).render_shapes:
+                slot = shape.filename.rsplit("__", 1)[1][: -len(".obj")]
+                seen[slot] = shape.parts[0].material
+        picture = r.render(SIZE, supersample=1)
+    assert picture.object_mask.any()
+    glass = seen["glass"]
+    d = obj.materials["glass"].opacity
+    assert glass.base_color[3] == pytest.approx(d, abs=1e-3)
+    texels = glass.base_color_texture.download()
+    assert texels.shape[-1] == 4 and np.allclose(texels[..., 3], round(d * 255), atol=1)
+    frame = seen["frame"]  # opaque, its map tinted by the wear: a new texture, alpha 1
+    assert frame.base_color[3] == 1.0
+    tint = np.asarray(obj.materials["frame"].wear.tint)
+    if np.abs(tint - 1).max() > 1e-3:
+        assert frame.base_color_texture.filename == ""  # made from the tinted map, not the file

@@ -113,7 +113,7 @@ def test_parts_labels_and_materials(tv_bp):
     assert len(buttons) == (p["button_count"] if p["has_buttons"] else 0)
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
     assert used <= set(bp.materials)
-    assert bp.materials["display"] == "plastic:black"
+    assert bp.materials["display"] == "screen"  # glossy cover glass
     assert any(pc.material == "display" for pc in bp.parts["screen"].pieces)
     assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
 

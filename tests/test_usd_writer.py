@@ -7,7 +7,7 @@ import pytest
 from pxr import Sdf, Usd, UsdShade
 
 import infmob_usd
-from infmob_usd.geometry import corner_attributes
+from infmob_usd.geometry import corner_attributes, grain_frame
 from infmob_usd.layers.usd import _bounds, _visual_meshes, write_usd
 
 
@@ -20,12 +20,13 @@ def objects():
 def test_corner_attributes_match_the_pieces_bit_for_bit(objects):
     for obj in objects:
         pieces = [p for link in obj.links for p in link.pieces]
-        verts, faces, off = [], [], 0
+        verts, faces, frames, off = [], [], [], 0
         for p in pieces:
             verts.append(p.vertices)
             faces.append(p.faces + off)
+            frames.append(np.broadcast_to(grain_frame(p.vertices), (len(p.faces), 3, 3)))
             off += len(p.vertices)
-        normals, uvs = corner_attributes(np.vstack(verts), np.vstack(faces))
+        normals, uvs = corner_attributes(np.vstack(verts), np.vstack(faces), np.concatenate(frames))
         want_n = np.concatenate([p.corner_normals().reshape(-1, 3) for p in pieces])
         want_uv = np.concatenate([p.corner_uvs().reshape(-1, 2) for p in pieces])
         assert np.array_equal(normals, want_n), obj.name
@@ -71,7 +72,8 @@ def test_texture_readers_only_for_maps_written(objects, tmp_path):
         surf = UsdShade.Shader.Get(stage, root.AppendPath(f"Looks/{slot}/PreviewSurface"))
         assert surf.GetInput("diffuseColor").HasConnectedSource()
         assert surf.GetInput("normal").HasConnectedSource()
-        for inp, value in (("roughness", look.roughness), ("metallic", look.metallic)):
+        rough = min(1.0, look.roughness * look.wear.roughness_scale)  # this object's wear of the look
+        for inp, value in (("roughness", rough), ("metallic", look.metallic)):
             i = surf.GetInput(inp)
             assert not i.HasConnectedSource()
             assert i.GetTypeName() == Sdf.ValueTypeNames.Float

@@ -514,6 +514,79 @@ class _ContactShade:
         return (1.0 - self.STRENGTH * np.exp(-d / self.radius)).astype(np.float32)
 
 
+def _mtl_entry(obj_path: Path) -> dict | None:
+    """The MTL material an OBJ of ours uses: ``Kd``, ``d`` and the map lines with their options."""
+    text = obj_path.read_text(errors="replace")
+    lib = next((ln.split(None, 1)[1].strip() for ln in text.splitlines()[:8] if ln.startswith("mtllib ")), None)
+    at = text.find("\nusemtl ")
+    if lib is None or at < 0:
+        return None
+    name = text[at + 8:text.find("\n", at + 8)].strip()
+    mtl = obj_path.parent / lib
+    if not mtl.is_file():
+        return None
+    entry, current = {}, None
+    for line in mtl.read_text(errors="replace").splitlines():
+        key, _, rest = line.strip().partition(" ")
+        if key == "newmtl":
+            current = rest.strip()
+        elif current == name and key:
+            entry[key] = rest.strip()
+    entry["_dir"] = mtl.parent
+    return entry
+
+
+def _map_file(entry: dict, key: str) -> tuple[Path | None, float]:
+    """The file of map line ``key`` and its ``-mm`` gain (1 when absent)."""
+    words = entry.get(key, "").split()
+    if not words:
+        return None, 1.0
+    gain = float(words[words.index("-mm") + 2]) if "-mm" in words else 1.0
+    return entry["_dir"] / words[-1], gain
+
+
+def _wear_material(sapien, shape, obj_path: Path, made: dict) -> None:
+    """Show a mesh's material as the MTL asks where SAPIEN's loader does not: ``Kd`` multiplies
+    ``map_Kd`` (the object's tint of its look), ``map_Pr -mm 0 gain`` scales the roughness map,
+    and ``d < 1`` makes the surface see-through (the map's alpha; SAPIEN's rasteriser blends it
+    in its transparency pass, its ray tracer would use ``transmission``)."""
+    import cv2
+
+    entry = _mtl_entry(Path(obj_path))
+    if entry is None:
+        return
+    kd = np.array([float(x) for x in entry.get("Kd", "1 1 1").split()[:3]], np.float32)
+    d = float(entry.get("d", "1"))
+    colour, _ = _map_file(entry, "map_Kd")
+    rough, gain = _map_file(entry, "map_Pr")
+    for part in shape.parts:
+        mat = part.material
+        if colour is not None and colour.is_file() and (d < 1.0 or np.abs(kd - 1.0).max() > 1e-3):
+            key = ("colour", str(colour), tuple(kd.round(4)), round(d, 3))
+            if key not in made:
+                img = cv2.imread(str(colour), cv2.IMREAD_COLOR)[..., ::-1].astype(np.float32) / 255.0
+                lin = np.where(img <= 0.04045, img / 12.92, ((img + 0.055) / 1.055) ** 2.4) * kd
+                lin = np.clip(lin, 0.0, 1.0)
+                srgb = np.where(lin <= 0.0031308, 12.92 * lin, 1.055 * lin ** (1 / 2.4) - 0.055)
+                rgba = np.concatenate([srgb, np.full(srgb.shape[:2] + (1,), d, np.float32)], -1)
+                made[key] = sapien.render.RenderTexture2D(
+                    np.ascontiguousarray(np.rint(rgba * 255).astype(np.uint8)), "R8G8B8A8Unorm",
+                    mipmap_levels=8, srgb=True)
+            mat.base_color_texture = made[key]
+        if d < 1.0:
+            mat.base_color = [*mat.base_color[:3], d]
+            mat.transmission = 1.0 - d
+            mat.ior = float(entry.get("Ni", "1.5"))
+        if rough is not None and rough.is_file() and abs(gain - 1.0) > 1e-3:
+            key = ("rough", str(rough), round(gain, 4))
+            if key not in made:
+                img = cv2.imread(str(rough), cv2.IMREAD_GRAYSCALE).astype(np.float32) * gain
+                grey = np.clip(np.rint(img), 0, 255).astype(np.uint8)
+                made[key] = sapien.render.RenderTexture2D(
+                    np.ascontiguousarray(np.repeat(grey[..., None], 4, -1)), "R8G8B8A8Unorm", mipmap_levels=8)
+            mat.roughness_texture = made[key]
+
+
 class ObjectRenderer:
     """One object folder placed on the (shared) stage; pictures at any joint configuration.
 
@@ -532,6 +605,7 @@ class ObjectRenderer:
         self._entities: dict[str, object] = {}
         self._corners: dict[str, np.ndarray] = {}  # per link: AABB corners of its visuals, link frame
         self._vertices: dict[str, np.ndarray] = {}  # per link: every visual vertex, link frame
+        self._textures: dict[tuple, object] = {}  # worn textures made for this object (tint, alpha, gain)
         for name, visuals in self.files.links.items():
             if not visuals:
                 continue
@@ -539,6 +613,7 @@ class ObjectRenderer:
             corners, verts_link = [], []
             for vis in visuals:
                 shape = sapien.render.RenderShapeTriangleMesh(str(vis.mesh), list(vis.scale), None)
+                _wear_material(sapien, shape, vis.mesh, self._textures)
                 shape.local_pose = sapien.Pose(vis.origin)
                 body.attach(shape)
                 verts = np.concatenate([p.get_vertices() for p in shape.parts]) * np.asarray(vis.scale)
@@ -655,6 +730,7 @@ class ObjectRenderer:
             self.stage.owner = None
             _release()
         self._entities.clear()
+        self._textures.clear()
 
 
 def _release():
