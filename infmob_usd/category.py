@@ -2,8 +2,8 @@
 
 A category is a :class:`Category`: its id, a one-line description, its own
 parameter schema, its growth :class:`~infmob_usd.grammar.Grammar`, its material
-slots as data (slot -> material family, or the name of a parameter whose value
-is the family: the core resolves it), and its :class:`~infmob_usd.grammar.Layout`
+slots as data (slot -> material family, the name of a parameter whose value
+is the family, or a ``(parameter, {value: family})`` pair: the core resolves it), and its :class:`~infmob_usd.grammar.Layout`
 (one method per node kind). The module exposes it as ``CATEGORY``; the registry
 in ``infmob_usd.categories`` finds every module that does (no list to edit).
 
@@ -34,13 +34,23 @@ class Category:
     params: tuple
     grammar: Grammar
     layout: type[Layout]
-    materials: Mapping[str, str] = field(default_factory=dict)
+    materials: Mapping[str, str | tuple[str, Mapping[str, str]]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if not self.id.isidentifier() or self.id != self.id.lower():
             raise ModelError(f"category id {self.id!r} must be a lower-case identifier")
         object.__setattr__(self, "materials", MappingProxyType(dict(self.materials)))
         object.__setattr__(self, "schema", Schema((*self.params, *self.grammar.params())))
+        for slot, v in self.materials.items():
+            if isinstance(v, tuple):
+                name, table = v
+                if name not in self.schema.names:
+                    raise ModelError(f"category {self.id}: material slot {slot!r} follows unknown parameter {name!r}")
+                choices = getattr(self.schema[name], "choices", ())
+                missing = [c for c in choices if c not in table and c != "auto"]
+                if missing:
+                    raise ModelError(f"category {self.id}: material slot {slot!r} has no family for"
+                                     f" {name}={missing[0]!r}")
         for kind in self.grammar.nodes:
             if not callable(getattr(self.layout, kind, None)):
                 raise ModelError(f"category {self.id}: layout {self.layout.__name__} has no method for"
@@ -53,11 +63,23 @@ class Category:
         return self.grammar.table()
 
     def resolve_materials(self, params: dict) -> dict[str, str]:
-        """Slot -> family spec, with parameter names replaced by their values."""
-        return {slot: params[v] if v in self.schema.names else v for slot, v in self.materials.items()}
+        """Slot -> family spec, with parameter names (and ``(parameter, table)`` pairs) replaced by families."""
+        params = self.grammar.resolve(params)
+
+        def family(v):
+            if isinstance(v, tuple):
+                return v[1][params[v[0]]]
+            return params[v] if v in self.schema.names else v
+
+        return {slot: family(v) for slot, v in self.materials.items()}
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
-        """Grow the tree from the structure stream and build it into a blueprint at rest."""
+        """Grow the tree from the structure stream and build it into a blueprint at rest.
+
+        Object-wide ``"auto"`` choices are resolved first (:meth:`Grammar.resolve`): the layout and
+        the materials see the alternative that was built.
+        """
+        params = self.grammar.resolve(params)
         tree = self.grammar.grow(params, structure)
         bp = Blueprint(self.id, materials=self.resolve_materials(params))
         layout = self.layout(bp, params, geometry, self.grammar)

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import vase
+from infmob_usd.categories.parts import vessel as V
 from infmob_usd.errors import ParameterError
 
 from zoo import by_child, make_bp
@@ -141,7 +142,7 @@ def test_every_profile_builds_smooth_and_hollow(profile):
 
 def test_spline_profile_is_smooth_and_the_coarse_one_envelopes_it():
     ctrl = [(0.05, 0.0), (0.08, 0.1), (0.03, 0.2), (0.035, 0.25)]
-    fine, coarse = vase.spline_profile(ctrl, n=80, coarse=8)
+    fine, coarse = V.spline_profile(ctrl, n=80, coarse=8)
     assert len(fine) >= 80 and np.all(np.diff(fine[:, 1]) > 0)
     assert fine[:, 0].max() <= 0.08 + 1e-9  # no overshoot
     zs = np.linspace(0, 0.25, 500)
