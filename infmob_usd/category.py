@@ -3,7 +3,8 @@
 A category is a :class:`Category`: its id, a one-line description, its own
 parameter schema, its growth :class:`~infmob_usd.grammar.Grammar`, its material
 slots as data (slot -> material family, the name of a parameter whose value
-is the family, or a ``(parameter, {value: family})`` pair: the core resolves it), and its :class:`~infmob_usd.grammar.Layout`
+is the family, or a ``(parameter, {value: family})`` pair: the core resolves
+it), and its :class:`~infmob_usd.grammar.Layout`
 (one method per node kind). The module exposes it as ``CATEGORY``; the registry
 in ``infmob_usd.categories`` finds every module that does (no list to edit).
 

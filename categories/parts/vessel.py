@@ -486,16 +486,16 @@ def _sleeve_cap(neck: Profile, z_lo: float, skirt: float, top_t: float, overhang
 def screw_cap(neck: Profile, slot: str) -> Assembly:
     """A PCO screw cap on a bottle's screw finish: a plastic skirt over the threads under a flat top."""
     c = S.SLEEVE_CAPS["screw"]
-    pieces, _, top = _sleeve_cap(neck, _finish_bottom(neck, "screw") + c["skirt_from"], c["skirt"], c["top"], c["overhang"], slot,
-                                 c["sheet"])
+    pieces, _, top = _sleeve_cap(neck, _finish_bottom(neck, "screw") + c["skirt_from"], c["skirt"], c["top"],
+                                 c["overhang"], slot, c["sheet"])
     return _closure("cap", pieces, neck.height, top)
 
 
 def crown_cap(neck: Profile, slot: str) -> Assembly:
     """A crown cap on a crown finish: a tinplate top with a skirt of 21 crimped flutes flaring at its edge."""
     c = S.SLEEVE_CAPS["crown"]
-    pieces, _, top = _sleeve_cap(neck, _finish_bottom(neck, "crown") + c["skirt_from"], c["skirt"], c["top"], c["overhang"], slot,
-                                 c["sheet"], flare=S.CROWN_FLARE, flutes=S.CROWN_FLUTES)
+    pieces, _, top = _sleeve_cap(neck, _finish_bottom(neck, "crown") + c["skirt_from"], c["skirt"], c["top"],
+                                 c["overhang"], slot, c["sheet"], flare=S.CROWN_FLARE, flutes=S.CROWN_FLUTES)
     return _closure("cap", pieces, neck.height, top)
 
 
