@@ -17,8 +17,9 @@ or a column of small lites).
 
 Handles, the same on both faces: a knob (continuous about X, symmetric: centre of mass on the
 axis), a lever (revolute about X, 0..pi/4, pressing the grip down is positive; the lever has a
-counterweighted heel opposite its grip and a hollow grip, so its centre of mass lies on the axis
-and gravity does not turn it), or a fixed bar pull (pieces of the leaf, named ``handle``).
+hollow grip; the core's ``rest_on_stops`` adds the counterweight heel opposite the grip that
+puts its centre of mass on the axis, so gravity does not turn it), or a fixed bar pull (pieces
+of the leaf, named ``handle``).
 """
 
 from __future__ import annotations
@@ -30,7 +31,6 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
-from infmob_usd.mass import inertial
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -255,17 +255,12 @@ def _glass(holes, x0, x1):
 def _lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> list[g.Piece]:
     """A lever turning about X through ``(x0, y, z)``, out of the face along ``n`` (+-1).
 
-    A neck along X, a hollow round grip running along ``u`` (+-1 in Y) parallel to the face, and a
-    solid heel opposite the grip, sized so the centre of mass lies on the axis.
+    A neck along X and a hollow round grip running along ``u`` (+-1 in Y) parallel to the face;
+    the core adds the counterweight heel opposite the grip that puts the centre of mass on the
+    axis (:func:`infmob_usd.physical.rest_on_stops`).
     """
     neck = g.cylinder([x0, y, z], [x0 + n * 0.05, y, z], 0.011, "handle", 24)
     xg = x0 + n * 0.042  # grip axis
     grip = g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20)
     grip.sheet = 0.0012  # a tube
-    m, com, _ = inertial([(grip, 1.0e6)])  # any density above the mass floor
-    moment = m * abs(com[1] - y)
-    hz, hx = 0.026, 0.022
-    heel_len = math.sqrt(2 * moment / (1.0e6 * hz * hx))
-    ya, yb = sorted((y, y - u * heel_len))
-    heel = g.box_between([xg - hx / 2, ya, z - hz / 2], [xg + hx / 2, yb, z + hz / 2], "handle")
-    return [neck, grip, heel]
+    return [neck, grip]

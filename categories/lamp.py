@@ -35,7 +35,8 @@ into it; the switch slides horizontally; a hanging head's tilt hinge carries its
 centre of mass straight below the pivot (balanced, so it keeps +-``head_tilt``);
 and every other hinge about a horizontal axis gets the axis sign that makes the
 gravity torque of what it carries push toward negative q, with limits
-``(0, a)``: it rests on its lower stop and can be lifted (:func:`_rest_on_stops`).
+``(0, a)``: it rests on its lower stop and can be lifted (the core's
+:func:`infmob_usd.physical.rest_on_stops` picks that side from the real link masses).
 
 Shade shapes are shells of revolution (cone, drum, dome, bell); their collision
 pieces are wedges, so a shade stays hollow around its bulb. The height of the
@@ -45,7 +46,7 @@ Limits are chosen so nothing enters anything or goes below the floor at any
 joint limit: an arm is long enough that its head, tilted or swung down, stays
 clear of the bars behind it, and a head too big for a short lamp is shrunk.
 The arm is designed for a pitch range of -pi/6 (forward; less only if the head
-would still reach the ground) to +pi/6 (lifted back); :func:`_rest_on_stops` then
+would still reach the ground) to +pi/6 (lifted back); the core's ``rest_on_stops`` then
 keeps the side that lifts the load (in practice the lift: every arm carries its
 head in front of its hinges), so the final range lies in a range known to be
 clear; a desk arc's tilted head keeps a pole slide of room above the base. So that the lamp
@@ -58,16 +59,12 @@ the reach of its head.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
-from infmob_usd.blueprint import Blueprint, Growth, Rule, descendants
-from infmob_usd.joints import Dof
-from infmob_usd.mass import inertial
-from infmob_usd.materials import FAMILIES
+from infmob_usd.blueprint import Blueprint, Growth, Rule
 from infmob_usd.params import Choice, Float, Int, Schema
 
 GROWTH = Growth(
@@ -132,8 +129,6 @@ SOCKET_LEN = 0.03  # socket shell length
 TWIN_R = 0.0035  # radius of the twin side bars of a chain segment
 COLLAR_LEN = 0.022  # collar ring around a swivel pin
 BASE_PER_REACH = 0.33  # an arm lamp's base radius is at least this times its head's reach
-BALANCED = 2e-4  # m; a hinge whose carried centre of mass is this close to the vertical plane
-# through its axis is balanced (no gravity torque at rest) and keeps its two-sided limits
 
 
 def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
@@ -142,9 +137,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     # top so the lamp is exactly H tall (the base bottom is at z = 0)
     first = _assemble(p, q, q["top0"])
     rise = float(first.bounds()[1, 2]) - q["top0"]
-    bp = _assemble(p, q, q["H"] - rise)
-    _rest_on_stops(bp)
-    return bp
+    return _assemble(p, q, q["H"] - rise)
 
 
 # ---------------------------------------------------------------------------
@@ -424,43 +417,6 @@ def _switch(bp: Blueprint, p: dict, q: dict) -> None:
     u = (math.cos(a), math.sin(a), 0.0)
     face = np.array(u) * (x0 + length) + (0, 0, (zc0 + zc1) / 2)
     bp.join(J.prismatic("base", "switch", face, (-u[0], -u[1], 0.0), 0.0, travel, role="button"))
-
-
-def _rest_on_stops(bp: Blueprint) -> None:
-    """Make every loaded hinge about a horizontal axis rest on its lower stop under gravity.
-
-    For each revolute joint whose axis is horizontal, the gravity torque at rest of
-    everything it carries (its whole subtree, masses from piece volumes and material
-    densities, as the core computes them) is projected on the axis. A balanced hinge
-    (carried centre of mass within :data:`BALANCED` of the vertical plane through
-    the axis: a head hanging straight below its pivot) keeps its limits. Otherwise
-    the joint keeps only the side of its range that lifts the load: with the axis
-    sign chosen so that gravity pushes toward negative q, the limits become
-    ``(0, a)``, ``a`` the declared limit on that side. Either side was designed to
-    clear everything, so the new range is a part of a range known to be free.
-    """
-    masses: dict[str, tuple[float, np.ndarray]] = {}
-    for name, part in bp.parts.items():
-        m, com, _ = inertial((pc, FAMILIES[bp.materials[pc.material]].density) for pc in part.pieces)
-        masses[name] = (m, com)
-    for i, j in enumerate(bp.joints):
-        if j.kind != "revolute":
-            continue
-        (d,) = j.dofs
-        axis, pivot = np.asarray(d.axis), np.asarray(d.origin)
-        if abs(axis[2]) > 1e-6:  # swivels about a vertical axis are neutral
-            continue
-        m, moment = 0.0, np.zeros(3)
-        for n in descendants(bp.joints, j.child):
-            mn, cn = masses[n]
-            m, moment = m + mn, moment + mn * cn
-        torque = float(np.cross(moment / m - pivot, (0.0, 0.0, -9.81 * m)) @ axis)
-        if abs(torque) <= BALANCED * 9.81 * m:
-            continue
-        upper = d.upper
-        if torque > 0:  # flip the axis: gravity then pushes toward negative q
-            axis, upper = -axis, -d.lower
-        bp.joints[i] = replace(j, dofs=(Dof("revolute", d.origin, tuple(axis), 0.0, upper),))
 
 
 # ---------------------------------------------------------------------------
@@ -758,7 +714,7 @@ def _chain_arm(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
             d = np.array([math.cos(angles[k]), 0.0, math.sin(angles[k])])
             E = P + lengths[k] * d
             pieces = _segment_body(q, kind, P, E)
-            # +q lifts the arm, -q turns it forward and down; _rest_on_stops keeps the side
+            # +q lifts the arm, -q turns it forward and down; the core's rest_on_stops keeps the side
             # that lifts what it carries against gravity
             lower = -q["forward"][k]
             joint = J.revolute(parent, name, P, (0, -1, 0), lower, PITCH, role="swivel")

@@ -15,28 +15,27 @@ turn away from the seat, so the two never interpenetrate.
 
 Product of joint ranges: simulators and the physics checks sample every combination of joint
 states (all joints at their upper limits at once), while a real cover stops when it leans on
-the cistern whatever the seat does. The seat's and the cover's ranges therefore share the
-largest angle the cover may reach before it would touch the cistern (computed from the built
-geometry, about 92-102 degrees): ``seat upper + cover upper = that angle``, split by
-``cover_share``.
+the cistern whatever the seat does. The seat and the cover declare a common mechanical
+maximum of half a turn, split by ``cover_share``; the core's ``limit_to_clearance`` stops the
+cover where it would lean on the cistern, alone and with everything open (both limits scaled
+together: ``seat upper + cover upper`` is the leaning angle, about 92-102 degrees).
 
 The flush is a push button on the cistern front (pressed along -X, horizontal, so gravity
 has no say) or a side trip lever on the left wall near the front that turns about Y (pressing
 its grip down is positive; it stays behind the cistern front, out of the cover's way); the
-lever carries a counterweighted heel so its centre of mass lies on its axis (neutral at rest).
+lever gets a counterweight heel from the core's ``rest_on_stops``, so its centre of mass lies
+on its axis (neutral at rest).
 """
 
 from __future__ import annotations
 
 import math
 
-import manifold3d
 import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint, Growth, Rule
-from infmob_usd.mass import inertial
 from infmob_usd.params import Choice, Float, Schema
 
 GROWTH = Growth(
@@ -73,7 +72,6 @@ SCHEMA = Schema((
 
 LID_LIFT = 0.2  # m, the cistern lid lifts 0..0.2
 GAP = 0.003  # clearance of moving parts at rest
-MARGIN = 0.005  # the opened cover keeps this far from the cistern
 PRESS = 0.006  # button travel
 LEVER_TURN = math.pi / 4
 
@@ -228,58 +226,21 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     ]
     bp.add("cover", "lid", cover)
 
-    # the largest angle the cover may reach before it comes within MARGIN of the cistern
-    # (the cistern lid anywhere along its lift counts: every combination of states is sampled)
-    fixed = [pc for n in ("tank", "flush_button", "flush_lever") if n in bp.parts for pc in bp.parts[n].pieces]
-    lifted = [pc.translated((0, 0, dz)) for dz in np.linspace(0, LID_LIFT, 9) for pc in lid[:1]]
-    theta = _lean_limit(cover, fixed + lifted, (x_h, z_h))
-    cover_up = p["cover_share"] * theta
-    seat_up = theta - cover_up
+    # mechanical maxima: the two leaves turn at most half a turn together, split by cover_share;
+    # the core stops them where the cover leans on the cistern (its lid lifted or not)
+    cover_up = p["cover_share"] * math.pi
+    seat_up = math.pi - cover_up
     bp.join(J.revolute(base, "seat", (x_h, 0.0, z_h), (0, -1, 0), 0.0, seat_up, role="hinge"))
     bp.join(J.revolute("seat", "cover", (x_h, 0.0, z_h), (0, -1, 0), 0.0, cover_up, role="hinge"))
     return bp
 
 
-def _lean_limit(cover, obstacles, hinge) -> float:
-    """The largest angle about the hinge line (about -Y) at which the cover, grown by
-    :data:`MARGIN`, still clears every obstacle; at least pi/2."""
-    offs = np.array([[x, y, z] for x in (-MARGIN, MARGIN) for y in (-MARGIN, MARGIN) for z in (-MARGIN, MARGIN)])
-    grown = [(c[:, None, :] + offs[None]).reshape(-1, 3) for pc in cover for c in pc.convex]
-    boxes = [c for pc in obstacles for c in pc.convex]
-    solids = [manifold3d.Manifold.hull_points(c) for c in boxes]
-    o = np.array([hinge[0], 0.0, hinge[1]])
-
-    def clear(t):
-        c, s = math.cos(t), math.sin(t)
-        r = np.array([[c, 0, -s], [0, 1, 0], [s, 0, c]])  # about -Y: +X turns to +Z
-        for h in grown:
-            w = (h - o) @ r.T + o
-            lo, hi = w.min(0), w.max(0)
-            for b, m in zip(boxes, solids):
-                if np.any(hi < b.min(0)) or np.any(b.max(0) < lo):
-                    continue
-                if (manifold3d.Manifold.hull_points(w) ^ m).volume() > 0.0:
-                    return False
-        return True
-
-    theta = math.pi / 2
-    while theta < math.pi and clear(theta + 0.01):
-        theta += 0.01
-    return theta
-
-
 def _trip_lever(xa: float, ys: float, z: float, length: float) -> list[g.Piece]:
     """A flush lever turning about Y through ``(xa, ys, z)`` on a left side wall (it stands off to -Y):
-    hub, grip to +X, counterweight heel to -X.
-
-    The heel's length is solved so that the centre of mass lies on the axis (neutral at rest).
+    hub and grip to +X. The core adds the counterweight heel to -X that puts the centre of mass
+    on the axis (neutral at rest; :func:`infmob_usd.physical.rest_on_stops`).
     """
     hub = g.cylinder([xa, ys, z], [xa, ys - 0.016, z], 0.011, "chrome", 24)
     grip = g.box_between([xa, ys - 0.015, z - 0.006], [xa + length, ys - 0.008, z + 0.006], "chrome",
                          bevel=0.002)
-    m, com, _ = inertial([(grip, 1.0e6)])  # any density above the mass floor
-    moment = m * (com[0] - xa)
-    hz, hy = 0.02, 0.014  # heel section; its moment is density * hz * hy * L^2 / 2
-    heel_len = math.sqrt(2 * moment / (1.0e6 * hz * hy))
-    heel = g.box_between([xa - heel_len, ys - 0.015, z - hz / 2], [xa, ys - 0.015 + hy, z + hz / 2], "chrome")
-    return [hub, grip, heel]
+    return [hub, grip]

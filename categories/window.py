@@ -26,8 +26,8 @@ they turn about Z away from the window up to ``shutter_angle`` (< pi/2); on a wi
 window each side is a bifold whose inner leaf folds back over the outer one. Optional
 curtain halves hang from a rod on the room side and slide outward along Y from
 the centre (horizontal slides: neutral under gravity). In front of casements the
-rod stands off by half a sash width more, and the casements stop (at about 30 degrees)
-before they reach the closed curtains. A transom light (fixed glass above a bar)
+rod stands off by half a sash width more; the core stops the casements
+before they reach the curtains (``limit_to_clearance``). A transom light (fixed glass above a bar)
 grows only on frames taller than 1.1 m. Every hinge axis is vertical and every
 slide horizontal, so nothing moves under gravity.
 """
@@ -266,7 +266,7 @@ def _casement(frame, p, dims, transom, structure):
         axis = (0, 0, -1) if side == "left" else (0, 0, 1)
         spec = J.revolute("frame", f"sash_{i}", (xs1, y_hinge, zb), axis, 0.0, math.pi / 2, role="hinge")
         sashes.append((f"sash_{i}", pieces, spec))
-    # curtains hang far enough in front for the sashes to open about 30 degrees before they stop
+    # curtains hang far enough in front for the sashes to open some way before the core stops them
     x_room = xs1 + (0.04 if p["handle_style"] == "lever" else 0.036) + 0.5 * s
     return sashes, x_room
 
@@ -498,26 +498,3 @@ def _curtains(bp, p, W, H, fd, z0, fw, x_room):
         bp.add(name, "curtain", pieces)
         bp.join(J.prismatic("frame", name, (xc, sign * span / 2, (zb + zt) / 2), (0, sign, 0), 0.0, travel,
                             role="slide"))
-    _limit_casements(bp, xc - amp - tc)
-
-
-def _limit_casements(bp, x_limit):
-    """Inward casements stop before they reach the closed curtains (plane x = x_limit)."""
-    for j in list(bp.joints):
-        if not j.child.startswith("sash_") or j.kind != "revolute":
-            continue
-        d = j.dofs[0]
-        pts = np.vstack([c for pc in bp.parts[j.child].pieces for c in pc.convex])
-        o = np.asarray(d.origin)
-        rel = pts - o
-        sgn = d.axis[2]
-        best = 0.0
-        for q in np.linspace(0.0, d.upper, 181)[1:]:
-            a = sgn * q
-            x = rel[:, 0] * math.cos(a) - rel[:, 1] * math.sin(a)
-            if o[0] + x.max() > x_limit - CLR - 0.002:
-                break
-            best = q
-        best = float(max(best, 0.05))
-        k = bp.joints.index(j)
-        bp.joints[k] = J.revolute(j.parent, j.child, d.origin, d.axis, 0.0, best, role=j.role)

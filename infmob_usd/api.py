@@ -88,6 +88,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
     densities = {slot: FAMILIES[split_spec(bp.materials[slot])[0]].density for slot in used}
     links, joints = build(bp, densities)
+    links, joints = physical.rest_on_stops(links, joints, densities)
     physical.ensure_gaps(links, joints)
     looks = {slot: looks[slot] for slot in used}
     t1 = time.perf_counter()
@@ -106,5 +107,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
     physical.limit_to_ground(obj)
+    obj = physical.limit_to_clearance(obj)
     obj.timings["geometry"] += time.perf_counter() - t2
     return obj

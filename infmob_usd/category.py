@@ -36,6 +36,9 @@ class Category:
     grammar: Grammar
     layout: type[Layout]
     materials: Mapping[str, str | tuple[str, Mapping[str, str]]] = field(default_factory=dict)
+    derive: Callable[[dict], dict] | None = None
+    """Parameters that follow from others, applied after sampling and overrides, before growing
+    (e.g. a table that would grow no moving part gets its extension)."""
 
     def __post_init__(self) -> None:
         if not self.id.isidentifier() or self.id != self.id.lower():
@@ -43,15 +46,9 @@ class Category:
         object.__setattr__(self, "materials", MappingProxyType(dict(self.materials)))
         object.__setattr__(self, "schema", Schema((*self.params, *self.grammar.params())))
         for slot, v in self.materials.items():
-            if isinstance(v, tuple):
-                name, table = v
-                if name not in self.schema.names:
-                    raise ModelError(f"category {self.id}: material slot {slot!r} follows unknown parameter {name!r}")
-                choices = getattr(self.schema[name], "choices", ())
-                missing = [c for c in choices if c not in table and c != "auto"]
-                if missing:
-                    raise ModelError(f"category {self.id}: material slot {slot!r} has no family for"
-                                     f" {name}={missing[0]!r}")
+            if isinstance(v, tuple) and (len(v) != 2 or v[0] not in self.schema.names):
+                raise ModelError(f"category {self.id}: material slot {slot!r} must name a parameter and a"
+                                 f" value -> family table, got {v!r}")
         for kind in self.grammar.nodes:
             if not callable(getattr(self.layout, kind, None)):
                 raise ModelError(f"category {self.id}: layout {self.layout.__name__} has no method for"
@@ -64,23 +61,33 @@ class Category:
         return self.grammar.table()
 
     def resolve_materials(self, params: dict) -> dict[str, str]:
-        """Slot -> family spec, with parameter names (and ``(parameter, table)`` pairs) replaced by families."""
+        """Slot -> family spec.
+
+        A slot's value is a family spec (``"wood"``, ``"plastic:black|dark_grey"``), the name of a
+        parameter (or of a value ``derive`` adds) whose value is the family, or
+        ``(parameter, {value: family})`` where some values of the parameter name a family spec other
+        than themselves (a ``"plastic"`` finish that
+        means black plastic). An ``"auto"`` choice counts as the alternative it resolves to.
+        """
         params = self.grammar.resolve(params)
-
-        def family(v):
+        out = {}
+        for slot, v in self.materials.items():
             if isinstance(v, tuple):
-                return v[1][params[v[0]]]
-            return params[v] if v in self.schema.names else v
-
-        return {slot: family(v) for slot, v in self.materials.items()}
+                name, table = v
+                out[slot] = table.get(params[name], params[name])
+            else:
+                out[slot] = params[v] if v in params else v
+        return out
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
         """Grow the tree from the structure stream and build it into a blueprint at rest.
 
-        Object-wide ``"auto"`` choices are resolved first (:meth:`Grammar.resolve`): the layout and
-        the materials see the alternative that was built.
+        ``derive`` and then the grammar's ``"auto"`` choices (:meth:`Grammar.resolve`) update ``params``
+        first: the layout, the materials and the recorded parameters see what was built.
         """
-        params = self.grammar.resolve(params)
+        if self.derive is not None:
+            params.update(self.derive(dict(params)))
+        params.update(self.grammar.resolve(params))
         tree = self.grammar.grow(params, structure)
         bp = Blueprint(self.id, materials=self.resolve_materials(params))
         layout = self.layout(bp, params, geometry, self.grammar)

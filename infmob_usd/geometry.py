@@ -13,6 +13,7 @@ Every builder takes plain numbers or ``(3,)`` arrays and returns a ``Piece``.
 
 from __future__ import annotations
 
+import copy
 import functools
 import math
 from collections.abc import Sequence
@@ -134,6 +135,18 @@ class Piece:
                 for e, c, mc in zip(known, self.convex, moved.convex)
             ]
         return moved
+
+    def with_material(self, material: str) -> Piece:
+        """The same piece (hulls kept) in another material slot."""
+        out = copy.copy(self)
+        out.material = material
+        return out
+
+    def with_sheet(self, sheet: float) -> Piece:
+        """The same piece, its mass counted as sheet of thickness ``sheet`` (0: solid)."""
+        out = copy.copy(self)
+        out.sheet = float(sheet)
+        return out
 
     def translated(self, offset: Sequence[float]) -> Piece:
         m = np.eye(4)

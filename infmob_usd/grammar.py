@@ -6,9 +6,11 @@ object-wide, each also a ``has_<branch>`` parameter the user can force),
 alternatives it picks between (``one_of``, with weights: per instance, or
 object-wide through a named choice parameter), and counted repeats
 (``repeat``: a fixed count, a parameter, a ``(lo, hi)`` range drawn per
-instance, or a function of the parameters). A kind may appear among its own
-descendants (a bay that splits into bays); :attr:`Grammar.max_depth` bounds the
-recursion: at the bound, recursive alternatives are dropped.
+instance, or a function of the parameters and the structure stream). A kind may appear among its own
+descendants (a bay that splits into bays); :attr:`Grammar.max_nesting` bounds the
+recursion: a kind nests in itself at most that many times, and at the bound its
+recursive alternatives are dropped (optional ones not grown, repeats zero, one_of
+weights renormalised over the rest).
 
 :meth:`Grammar.grow` draws a tree of :class:`Grown` nodes from the structure
 stream. A :class:`Layout` (one method per node kind) then builds it: the root's
@@ -23,22 +25,25 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Union
+from typing import Any
 
 import numpy as np
 
+from . import joints as J
 from .errors import ModelError
 from .params import Choice, Flag
 
-Count = Union[int, str, tuple[int, int], Callable[[dict], int]]
+Count = int | str | tuple[int, int] | Callable[[dict, np.random.Generator], int]
 
 
 @dataclass(frozen=True)
 class Node:
     """The growth rule of one node kind.
 
-    ``label``: the semantic label of the part this node builds (``None`` for a
-    node that only groups its children or adds pieces to its parent's part).
+    ``label``: the semantic label of the part this node builds, or a tuple of the
+    labels it may build one of (a table top that is a ``lid`` when it lifts off a
+    storage box); ``None`` for a node that only groups its children or adds pieces
+    to its parent's part.
     ``choice``: the name of an object-wide choice parameter for ``one_of``
     (drawn by the schema with the same weights; the user can force it); empty:
     drawn per instance from the structure stream.
@@ -48,7 +53,7 @@ class Node:
     alternative.
     """
 
-    label: str | None = None
+    label: str | tuple[str, ...] | None = None
     required: tuple[str, ...] = ()
     optional: Mapping[str, float] = field(default_factory=dict)
     one_of: Mapping[str, float] = field(default_factory=dict)
@@ -93,8 +98,12 @@ class Grown:
 class Grammar:
     """A category's growth rules: node kinds and their :class:`Node` rules, grown from ``root``."""
 
-    def __init__(self, root: str, nodes: Mapping[str, Node], max_depth: int = 6) -> None:
-        self.root, self.nodes, self.max_depth = root, dict(nodes), int(max_depth)
+    def __init__(self, root: str, nodes: Mapping[str, Node], max_nesting: int = 3,
+                 accept: Callable[[Grown], bool] | None = None, tries: int = 50) -> None:
+        """``accept``: a rule every grown tree must satisfy (an all-shelf cabinet would not move); a tree
+        that fails it is drawn again from the same stream, at most ``tries`` times."""
+        self.root, self.nodes, self.max_nesting = root, dict(nodes), int(max_nesting)
+        self.accept, self.tries = accept, int(tries)
         known = set(self.nodes)
         if root not in known:
             raise ModelError(f"grammar root {root!r} has no rule")
@@ -150,8 +159,15 @@ class Grammar:
 
     # -- growing ------------------------------------------------------------------------------------------
     def grow(self, params: dict, rng: np.random.Generator) -> Grown:
-        """Draw the tree: required children, flagged branches, choices and repeats, depth-bounded."""
-        return self._grow(self.root, self.root, 0, (), self.resolve(params), rng)
+        """Draw the tree: required children, flagged branches, choices and repeats, depth-bounded;
+        again while ``accept`` rejects it. ``"auto"`` choices are resolved first (:meth:`resolve`)."""
+        params = self.resolve(params)
+        for _ in range(self.tries):
+            tree = self._grow(self.root, self.root, 0, (), params, rng)
+            if self.accept is None or self.accept(tree):
+                return tree
+        raise ModelError(f"{self.root}: no tree the rules accept in {self.tries} draws with these parameters;"
+                         " force a branch that moves (see `infmob params`)")
 
     def _count(self, kind: str, child: str, c: Count, params: dict, rng: np.random.Generator) -> int:
         if isinstance(c, bool):
@@ -163,7 +179,7 @@ class Grammar:
         elif isinstance(c, tuple):
             n = int(rng.integers(c[0], c[1] + 1))
         else:
-            n = c(params)
+            n = c(params, rng)
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0:
             raise ModelError(f"repeat count of {kind}.{child} must be a non-negative int, got {n!r}")
         return int(n)
@@ -173,17 +189,16 @@ class Grammar:
         n = self.nodes[kind]
         node = Grown(kind, path, depth)
         line = (*ancestors, kind)
-        deep = depth + 1 >= self.max_depth
 
-        def recursive(child: str) -> bool:
-            return child in line
+        def blocked(child: str) -> bool:  # growing it would nest it in itself more than allowed
+            return line.count(child) >= self.max_nesting
 
         order: list[str] = list(n.required)
-        order += [b for b in n.optional if params.get(f"has_{b}", False) and not (deep and recursive(b))]
+        order += [b for b in n.optional if params.get(f"has_{b}", False) and not blocked(b)]
         if n.one_of:
-            alts = {k: w for k, w in n.one_of.items() if not (deep and recursive(k))}
+            alts = {k: w for k, w in n.one_of.items() if not blocked(k)}
             if not alts:
-                raise ModelError(f"{path}: every alternative of {kind!r} recurses at the depth bound")
+                raise ModelError(f"{path}: every alternative of {kind!r} nests past the bound")
             if n.choice:
                 pick = params[n.choice]
                 if pick not in alts:  # the forced choice recurses past the bound: take the first that does not
@@ -196,10 +211,10 @@ class Grammar:
             order.append(pick)
         counts = {}
         for child, c in n.repeat.items():
-            counts[child] = 0 if deep and recursive(child) else self._count(kind, child, c, params, rng)
+            counts[child] = 0 if blocked(child) else self._count(kind, child, c, params, rng)
         for child in order:
-            if deep and recursive(child):
-                raise ModelError(f"{path}: required child {child!r} recurses past the depth bound")
+            if blocked(child):
+                raise ModelError(f"{path}: required child {child!r} nests past the bound")
             node.children.append(self._grow(child, f"{path}/{child}", depth + 1, line, params, rng))
         for child, k in counts.items():
             for i in range(k):
@@ -207,13 +222,32 @@ class Grammar:
         return node
 
     # -- reading ------------------------------------------------------------------------------------------
+    def children(self, kind: str) -> tuple[str, ...]:
+        n = self.nodes[kind]
+        return (*n.required, *n.optional, *n.one_of, *n.repeat)
+
+    def recursive(self) -> list[str]:
+        """Node kinds that can appear below themselves."""
+        out = []
+        for kind in self.nodes:
+            seen, stack = set(), list(self.children(kind))
+            while stack:
+                k = stack.pop()
+                if k == kind:
+                    out.append(kind)
+                    break
+                if k not in seen:
+                    seen.add(k)
+                    stack.extend(self.children(k))
+        return out
+
     def table(self) -> str:
         """The rules as text, one node per line (``infmob params`` prints it)."""
         lines = []
         for kind, r in self.nodes.items():
             parts = []
             if r.label:
-                parts.append(f"builds {r.label}")
+                parts.append("builds " + (r.label if isinstance(r.label, str) else " or ".join(r.label)))
             if r.required:
                 parts.append("requires " + ", ".join(r.required))
             if r.optional:
@@ -226,9 +260,8 @@ class Grammar:
             if r.repeat:
                 parts.append("repeats " + ", ".join(f"{c} x {_describe(n)}" for c, n in r.repeat.items()))
             lines.append(f"{kind}: " + ("; ".join(parts) or "leaf"))
-        if any(k in (*n.required, *n.optional, *n.one_of, *n.repeat) for n in self.nodes.values()
-               for k in (self.root,)):
-            lines.append(f"(recursion bounded at depth {self.max_depth})")
+        if self.recursive():
+            lines.append(f"(recursive: {', '.join(self.recursive())}; each nests at most {self.max_nesting} times)")
         return "\n".join(lines)
 
 
@@ -306,7 +339,27 @@ class Layout:
         return placed
 
     def join(self, spec) -> None:
+        """Declare a joint spec as it is (see :mod:`infmob_usd.joints` for the compound kinds)."""
         self.bp.join(spec)
+
+    # -- joints declared on frames: the axis is the frame's z, rest is 0 ---------------------------------
+    def hinge(self, parent: str, child: str, at, upper: float, lower: float = 0.0, role: str = "hinge",
+              requires_open: str | None = None) -> None:
+        """A revolute joint about ``at.z`` through ``at.origin``; ``upper`` is the mechanical maximum
+        (the core shortens it to clearance and ground)."""
+        self.bp.join(J.revolute(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+
+    def slide(self, parent: str, child: str, at, upper: float, lower: float = 0.0, role: str = "slide",
+              requires_open: str | None = None) -> None:
+        """A prismatic joint along ``at.z``."""
+        self.bp.join(J.prismatic(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+
+    def spin(self, parent: str, child: str, at, role: str = "knob", requires_open: str | None = None) -> None:
+        """A continuous joint about ``at.z``."""
+        self.bp.join(J.continuous(parent, child, at.origin, at.z, role, requires_open))
+
+    def fix(self, parent: str, child: str) -> None:
+        self.bp.join(J.fixed(parent, child))
 
     # -- the run ---------------------------------------------------------------------------------------
     def run(self, tree: Grown) -> None:
@@ -323,7 +376,8 @@ class Layout:
             raise ModelError(f"parts the grammar did not grow: {stray[:5]}")
         for n in tree.walk():
             label = self.grammar.nodes[n.kind].label
-            if label and label not in self.contributed.get(n.path, set()):
-                raise ModelError(f"grown node {n.path} made no {label!r} part")
+            wanted = (label,) if isinstance(label, str) else label
+            if wanted and not set(wanted) & self.contributed.get(n.path, set()):
+                raise ModelError(f"grown node {n.path} made no {' or '.join(map(repr, wanted))} part")
             if label is None and not any(m.path in self.contributed for m in n.walk()):
                 raise ModelError(f"grown node {n.path} and its subtree made no part")

@@ -1,6 +1,11 @@
 """Physical plausibility passes applied once, for every category.
 
 * :func:`rest_on_ground` moves the object so its lowest point at rest is z = 0.
+* :func:`rest_on_stops` makes every passive hinge neutral under gravity or pressed onto its
+  rest stop (picking the side of a two-sided range, or adding a counterweight heel).
+* :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent.
+* :func:`limit_to_ground` shortens limits so nothing goes below the ground.
+* :func:`limit_to_clearance` shortens limits so moving parts never meet what they may not touch.
 * :data:`DYNAMICS` gives passive joint dynamics per joint role, so doors stay
   where they are left and knobs do not spin freely.
 
@@ -10,7 +15,9 @@ Units: damping is N*m*s/rad (rotations) or N*s/m (slides); friction is N*m
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -243,3 +250,573 @@ def limit_to_ground(obj) -> list[str]:
             setattr(j, end, good)
             changed.append(j.name)
     return changed
+
+
+# ---------------------------------------------------------------------------
+# passive joints at rest: neutral under gravity or pressed onto the rest stop
+
+GRAVITY = np.array([0.0, 0.0, -9.81])
+"""m/s^2, world."""
+
+BALANCED = 2e-4
+"""m; a revolute joint whose carried centre of mass lies this close to the vertical plane
+through its axis (torque below ``BALANCED * g * mass``) is *neutral* under gravity."""
+
+HEEL_SECTION = (0.008, 0.03)
+"""m; the side of a counterweight heel's square section is 60 % of the carried link's extent
+along the joint axis, within these bounds."""
+
+
+def gravity_torque(links, joints, joint) -> tuple[float, float, np.ndarray]:
+    """Gravity torque about ``joint``'s axis at rest (N m, positive = toward +q), the mass it
+    carries (kg) and the carried centre of mass ``(3,)`` in world coordinates.
+
+    The carried mass is every link of the joint's subtree with its real mass and centre of mass
+    (:func:`~infmob_usd.mass.inertial`, as written to the files).
+    """
+    by_name = {link.name: link for link in links}
+    mass, moment = 0.0, np.zeros(3)
+    for name in descendants(joints, joint.child):
+        link = by_name[name]
+        mass += link.mass
+        moment += link.mass * (np.asarray(link.origin, float) + link.com)
+    com = moment / mass
+    torque = float(np.cross(com - np.asarray(joint.origin, float), mass * GRAVITY) @ np.asarray(joint.axis, float))
+    return torque, mass, com
+
+
+def rest_on_stops(links, joints, densities: dict[str, float]):
+    """Make every passive revolute joint neutral under gravity or pressed onto its rest stop.
+
+    A *passive* joint is one with no drive: every joint of a generated object is (they only
+    have damping and friction). This pass treats the joints declared ``revolute`` (single
+    DoF; compound chains keep their declared limits). With ``tau`` the gravity torque at rest
+    about the axis of everything the joint carries (:func:`gravity_torque`):
+
+    * ``|tau| <= BALANCED * g * mass``: *neutral* (a swivel about Z, a head hanging under its
+      pivot); unchanged.
+    * gravity pushes toward negative q: if ``lower == 0`` the joint is *pressed onto its rest
+      stop*; unchanged. If the range is two-sided (``lower < 0 < upper``) the core keeps the
+      side that lifts the load: limits ``(0, upper)``.
+    * gravity pushes toward positive q with a two-sided range: the axis is flipped and the
+      limits become ``(0, -lower)`` (pressed onto the stop that was the lower side).
+    * otherwise (rest is a stop and gravity pulls away from it: a lever's grip hanging off
+      its axis) a *counterweight heel* is added to the child link: a bar of the child's
+      heaviest material from the axis along the side opposite the carried centre of mass,
+      as long as it must be to bring that centre onto the axis (moment ``rho A L^2 / 2``).
+
+    Returns new ``(links, joints)`` lists; links and joints not changed are the same objects.
+    """
+    from .geometry import box_between
+    from .mass import inertial
+
+    links, joints = list(links), list(joints)
+    index = {link.name: i for i, link in enumerate(links)}
+    for k, j in enumerate(joints):
+        if j.kind != "revolute" or j.type != "revolute":
+            continue
+        torque, mass, com = gravity_torque(links, joints, j)
+        if abs(torque) <= BALANCED * abs(GRAVITY[2]) * mass:
+            continue
+        if torque < 0 and j.lower == 0:
+            continue
+        if torque < 0 and j.upper > 0:
+            joints[k] = replace(j, lower=0.0)
+            continue
+        if torque > 0 and j.lower < 0:
+            joints[k] = replace(j, axis=-np.asarray(j.axis, float), lower=0.0, upper=-j.lower)
+            continue
+        # a counterweight heel on the child: its moment about the axis cancels the carried one
+        child = links[index[j.child]]
+        if not child.pieces:
+            continue
+        axis, pivot = np.asarray(j.axis, float), np.asarray(j.origin, float)
+        arm = com - pivot
+        arm = arm - (arm @ axis) * axis  # the carried centre off the axis, perpendicular to it
+        r = float(np.linalg.norm(arm))
+        u = arm / r
+        w = np.cross(axis, u)
+        heaviest = max(child.pieces, key=lambda p: densities[p.material] * p.volume())
+        rho = densities[heaviest.material]
+        local = [v for p in child.pieces for v, _ in p.hulls()] or [p.vertices for p in child.pieces]
+        along = np.vstack(local) @ axis
+        side = float(np.clip(0.6 * np.ptp(along), *HEEL_SECTION))
+        length = math.sqrt(2.0 * mass * r / (rho * side * side))
+        # the bar in a frame (u, w, axis) at the pivot, at the carried centre's axial position
+        centre = pivot + (float((com - pivot) @ axis)) * axis - 0.5 * length * u
+        frame = np.eye(4)
+        frame[:3, :3] = np.column_stack([u, w, axis])
+        frame[:3, 3] = centre - np.asarray(child.origin, float)  # link-local
+        heel = box_between([-length / 2, -side / 2, -side / 2], [length / 2, side / 2, side / 2],
+                           heaviest.material, name="counterweight").transformed(frame)
+        pieces = child.pieces + [heel]
+        m, c, inertia = inertial((p, densities[p.material]) for p in pieces)
+        links[index[j.child]] = replace(child, pieces=pieces, mass=m, com=c, inertia=inertia)
+    return links, joints
+
+
+# ---------------------------------------------------------------------------
+# joint limits from clearance: swept collision hulls against everything else
+
+CLEARANCE = 1e-3
+"""m; a moving subtree stops this far from what it may not touch (where it starts farther)."""
+
+CONTACT_VOLUME = 1e-8
+"""m^3; an exact hull intersection above this is a contact (validators fail at 1e-7 per pair)."""
+
+SWEEP_SAGITTA = 2.5e-4
+"""m; a turn is sampled finely enough that its arcs bulge at most this far past the chords
+between samples (the swept volume between two samples is the hull of the two poses)."""
+
+PARENT_GROWTH = 5e-8
+"""m^3; how much more a moving subtree may overlap its parent than at rest (validators: 1e-7)."""
+
+ALL_FRACTIONS = (0.5, 1.0)
+"""The combined states the validators sample: every joint at once at 50 % and 100 % of its
+range (continuous joints at f pi), prerequisites fully open."""
+
+
+@dataclass(frozen=True)
+class _Hull:
+    link: str
+    points: np.ndarray  # (k, 3) hull vertices, link frame
+    faces: np.ndarray  # (m, 3)
+
+    @cached_property
+    def normals(self) -> np.ndarray:
+        """``(m, 3)`` distinct face normals, link frame (the triangles of one flat face share one)."""
+        n = _face_normals(self.points, self.faces)
+        keys = np.ascontiguousarray(np.round(n, 9)).view(np.dtype((np.void, 24))).ravel()
+        return n[np.sort(np.unique(keys, return_index=True)[1])]
+
+
+def _solid_hulls(obj) -> dict[str, list[_Hull]]:
+    out = {}
+    for link in obj.links:
+        if link.dummy or not link.pieces:
+            continue
+        hulls = [_Hull(link.name, v, f) for p in link.pieces for v, f in p.hulls()]
+        if hulls:
+            out[link.name] = hulls
+    return out
+
+
+def _value_at(joint, limits, fraction: float) -> float:
+    if joint.type == "continuous":
+        return fraction * math.pi
+    lo, hi = limits[joint.name]
+    return lo + fraction * (hi - lo)
+
+
+def _motion(joint_type: str, pivot: np.ndarray, axis: np.ndarray, value: float) -> np.ndarray:
+    m = np.eye(4)
+    if joint_type == "prismatic":
+        m[:3, 3] = axis * value
+    else:
+        r = axis_angle(axis, value)
+        m[:3, :3], m[:3, 3] = r, pivot - r @ pivot
+    return m
+
+
+class _Obstacles:
+    """Posed hulls of the links a sweep may not enter, with lazily built exact solids.
+
+    ``cache`` is shared between sweeps: per link and pose, the posed points and hull boxes;
+    per hull and pose, the posed normals and the exact solid."""
+
+    def __init__(self, links: list[str], hulls: dict[str, list[_Hull]], poses: dict[str, np.ndarray],
+                 cache: dict):
+        self.hulls: list[_Hull] = []
+        self.world: list[np.ndarray] = []
+        self.keys: list[tuple] = []
+        self.poses = poses
+        lo, hi = [], []
+        for name in links:
+            pose = poses[name]
+            key = (name, pose.round(9).tobytes())
+            if key not in cache:
+                hs = hulls[name]
+                stacked = np.vstack([h.points for h in hs]) @ pose[:3, :3].T + pose[:3, 3]
+                starts = np.cumsum([0] + [len(h.points) for h in hs])
+                cache[key] = ([stacked[a:b] for a, b in zip(starts[:-1], starts[1:])],
+                              np.minimum.reduceat(stacked, starts[:-1], axis=0),
+                              np.maximum.reduceat(stacked, starts[:-1], axis=0))
+            world, l, h = cache[key]
+            self.hulls += hulls[name]
+            self.world += world
+            self.keys += [key + (k,) for k in range(len(world))]
+            lo.append(l)
+            hi.append(h)
+        self.lo = np.vstack(lo) if lo else np.zeros((0, 3))
+        self.hi = np.vstack(hi) if hi else np.zeros((0, 3))
+        self._cache = cache
+
+    def normals(self, i: int) -> np.ndarray:
+        key = ("normals",) + self.keys[i]
+        if key not in self._cache:
+            self._cache[key] = self.hulls[i].normals @ self.poses[self.hulls[i].link][:3, :3].T
+        return self._cache[key]
+
+    def solid(self, i: int, grown: float = 0.0):
+        """The exact solid of hull ``i``, grown by a cube of half-size ``grown`` (:func:`_inflate`)."""
+        import manifold3d
+
+        key = ("solid", grown) + self.keys[i]
+        if key not in self._cache:
+            pts = _inflate(self.world[i], grown) if grown > 0 else self.world[i]
+            self._cache[key] = manifold3d.Manifold.hull_points(pts)
+        return self._cache[key]
+
+
+def _hits(points: np.ndarray, normals: np.ndarray, margin: float, obstacles: _Obstacles, i: int) -> bool:
+    """Whether the hull of ``points`` grown by ``margin`` overlaps obstacle hull ``i`` by more than
+    :data:`CONTACT_VOLUME`: a face-plane separation test first, the exact intersection if it fails."""
+    if _separated(points, normals, margin, obstacles.world[i], obstacles.normals(i)):
+        return False
+    import manifold3d
+
+    # the obstacle grown by the margin (built once per obstacle) rather than every moving hull
+    return (manifold3d.Manifold.hull_points(points) ^ obstacles.solid(i, margin)).volume() > CONTACT_VOLUME
+
+
+class _Normals:
+    """World face normals of posed hulls, computed when first asked for."""
+
+    def __init__(self, hulls: list[_Hull], poses):
+        self.hulls, self.poses, self.done = hulls, poses, {}
+
+    def __getitem__(self, h: int) -> np.ndarray:
+        if h not in self.done:
+            hull = self.hulls[h]
+            self.done[h] = hull.normals @ self.poses[hull.link][:3, :3].T
+        return self.done[h]
+
+
+def _posed(moving: list[_Hull], poses) -> tuple[np.ndarray, np.ndarray]:
+    """World points of the ``moving`` hulls stacked ``(n, 3)``, and the row where each starts
+    (one more entry: the end)."""
+    sizes = [len(h.points) for h in moving]
+    starts = np.cumsum([0] + sizes)
+    out = np.empty((starts[-1], 3))
+    for h, a, b in zip(moving, starts[:-1], starts[1:]):
+        pose = poses[h.link]
+        out[a:b] = h.points @ pose[:3, :3].T + pose[:3, 3]
+    return out, starts
+
+
+def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Obstacles,
+                 allowed: np.ndarray) -> tuple[float, str]:
+    """The largest value in ``[0, limit]`` (or ``[limit, 0]``) to which ``joint`` turns or slides the
+    ``moving`` hulls (posed at ``poses`` with the joint at 0) without a contact with the obstacle
+    hulls where ``allowed`` (bool per obstacle hull) is true: ``(value, link hit)``."""
+    pivot = poses[joint.child][:3, 3]
+    axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
+    stacked, starts = _posed(moving, poses)
+    if joint.type == "prismatic":
+        n = 1
+    else:
+        rel = stacked - pivot
+        radius = float(np.sqrt(np.max(np.einsum("ij,ij->i", rel, rel) - (rel @ axis) ** 2).clip(0))) + 1e-9
+        step = min(0.2, math.sqrt(8.0 * SWEEP_SAGITTA / radius))
+        n = max(1, math.ceil(abs(limit) / step))
+    values = np.linspace(0.0, limit, n + 1)
+    mats = [_motion(joint.type, pivot, axis, v) for v in values]
+    # per-hull boxes at every sample (the posed corners of each hull's box bound the hull)
+    corners = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], float)
+    lo0 = np.minimum.reduceat(stacked, starts[:-1], axis=0)
+    hi0 = np.maximum.reduceat(stacked, starts[:-1], axis=0)
+    box = (lo0[:, None, :] + corners[None] * (hi0 - lo0)[:, None, :]).reshape(-1, 3)  # (8 hulls, 3)
+    posed = np.einsum("kij,nj->kni", np.array([m[:3, :3] for m in mats]), box) + np.array(
+        [m[:3, 3] for m in mats])[:, None, :]
+    posed = posed.reshape(len(mats), len(moving), 8, 3)
+    lo, hi = posed.min(2), posed.max(2)
+    # hull pairs that may meet somewhere in the range, then in which sample intervals
+    lo_all, hi_all = lo.min(0) - CLEARANCE, hi.max(0) + CLEARANCE
+    hs, os = np.nonzero(np.all((lo_all[:, None] < obstacles.hi[None]) & (obstacles.lo[None] < hi_all[:, None]),
+                               axis=2) & allowed)
+    if not len(hs):
+        return float(limit), ""
+    ilo = np.minimum(lo[:-1], lo[1:])[:, hs] - CLEARANCE
+    ihi = np.maximum(hi[:-1], hi[1:])[:, hs] + CLEARANCE
+    near = np.all((ilo < obstacles.hi[os]) & (obstacles.lo[os] < ihi), axis=2)  # (intervals, pairs)
+    world = [stacked[a:b] for a, b in zip(starts[:-1], starts[1:])]
+    normals = _Normals(moving, poses)
+    # each pair that may meet keeps CLEARANCE if it starts that far apart, else 0 if it starts
+    # apart, else (it overlaps at rest: not this joint's doing) it is left out
+    margin = np.full(len(hs), np.nan)
+    for p, (h, o) in enumerate(zip(hs, os)):
+        if not _hits(world[h], normals[h], CLEARANCE, obstacles, o):
+            margin[p] = CLEARANCE
+        elif not _hits(world[h], normals[h], 0.0, obstacles, o):
+            margin[p] = 0.0
+    near &= ~np.isnan(margin)
+
+    def swept_hits(k: int, m1: np.ndarray, pairs, first: bool) -> list[int]:
+        """The pairs among ``pairs`` that meet while the joint moves from sample ``k`` to ``m1``."""
+        m0, out = mats[k], []
+        for p in pairs:
+            h, o = hs[p], os[p]
+            w = world[h]
+            pts = np.vstack([w @ m0[:3, :3].T + m0[:3, 3], w @ m1[:3, :3].T + m1[:3, 3]])
+            nrm = np.vstack([normals[h] @ m0[:3, :3].T, normals[h] @ m1[:3, :3].T])
+            if _hits(pts, nrm, margin[p], obstacles, o):
+                out.append(p)
+                if first:
+                    break
+        return out
+
+    for k in np.flatnonzero(near.any(axis=1)):
+        pairs = swept_hits(k, mats[k + 1], np.flatnonzero(near[k]), False)
+        if not pairs:
+            continue
+        # within the interval only the pairs that meet over all of it can meet over part of it
+        # (up to the sagitta)
+        good, bad = float(values[k]), float(values[k + 1])
+        for _ in range(14):
+            mid = 0.5 * (good + bad)
+            hit = swept_hits(k, _motion(joint.type, pivot, axis, mid), pairs, True)
+            if hit:
+                bad = mid
+            else:
+                good = mid
+        return good, obstacles.hulls[os[pairs[0]]].link
+    return float(limit), ""
+
+
+def _overlap(moving: tuple[np.ndarray, np.ndarray, list[np.ndarray]], obstacles: _Obstacles,
+             motion: np.ndarray, skip: frozenset = frozenset()) -> float:
+    """Summed exact intersection volume of the ``moving`` hulls (stacked world points, start of
+    each hull's rows, world normals per hull) moved by ``motion`` with the obstacle hulls (box
+    and face-plane prefilters; no margin), leaving out the hull pairs ``(moving, obstacle)`` in
+    ``skip``."""
+    import manifold3d
+
+    if not len(obstacles.hulls):
+        return 0.0
+    stacked, starts, normals = moving
+    r, t = motion[:3, :3], motion[:3, 3]
+    p = stacked @ r.T + t
+    lo, hi = np.minimum.reduceat(p, starts[:-1], axis=0), np.maximum.reduceat(p, starts[:-1], axis=0)
+    near = np.all((lo[:, None] < obstacles.hi[None]) & (obstacles.lo[None] < hi[:, None]), axis=2)
+    total = 0.0
+    solids: dict[int, object] = {}
+    for h, i in zip(*np.nonzero(near)):
+        if (h, i) in skip:
+            continue
+        w = p[starts[h]:starts[h + 1]]
+        if _separated(w, normals[h] @ r.T, 0.0, obstacles.world[i], obstacles.normals(i)):
+            continue
+        if h not in solids:
+            solids[h] = manifold3d.Manifold.hull_points(w)
+        total += (solids[h] ^ obstacles.solid(i)).volume()
+    return total
+
+
+def _parent_limit(joint, limit: float, moving: list[_Hull], poses, parent: _Obstacles) -> tuple[float, str]:
+    """The largest value in ``[0, limit]`` at which the moving hulls apart from the parent's at rest
+    overlap them by at most :data:`PARENT_GROWTH` in all, checked at quarters of the range (the
+    validators' parent_child states) and bisected below the first quarter that fails. Hull pairs
+    that overlap at rest (more than :data:`CONTACT_VOLUME`) are part of the design and left out."""
+    if not len(parent.hulls) or limit == 0:
+        return float(limit), ""
+    pivot = poses[joint.child][:3, 3]
+    axis = poses[joint.parent][:3, :3] @ np.asarray(joint.axis, float)
+    world = _posed(moving, poses) + (_Normals(moving, poses),)
+    # hull pairs that overlap at rest are part of the design (a pin in its bore, a pole in its
+    # tube): what counts is pairs apart at rest coming together
+    stacked, starts, normals = world
+    lo = np.minimum.reduceat(stacked, starts[:-1], axis=0)
+    hi = np.maximum.reduceat(stacked, starts[:-1], axis=0)
+    touching = frozenset(
+        (h, i) for h, i in zip(*np.nonzero(np.all((lo[:, None] < parent.hi[None]) & (parent.lo[None] < hi[:, None]),
+                                                  axis=2)))
+        if _hits(stacked[starts[h]:starts[h + 1]], normals[h], 0.0, parent, i))
+
+    def grows(v):
+        return _overlap(world, parent, _motion(joint.type, pivot, axis, v), touching) > PARENT_GROWTH
+
+    previous = 0.0
+    for f in (0.25, 0.5, 0.75, 1.0):
+        if grows(f * limit):
+            good, bad = previous, f * limit
+            for _ in range(14):
+                mid = 0.5 * (good + bad)
+                good, bad = (good, mid) if grows(mid) else (mid, bad)
+            return good, parent.hulls[0].link
+        previous = f * limit
+    return float(limit), ""
+
+
+def clearance_limits(obj) -> dict[str, tuple[float, float]]:
+    """Joint limits shortened so no moving part meets a link it may not touch.
+
+    1. *Each joint alone* (in tree order, parents first): each side of the range of every
+       revolute and prismatic joint (compound chains DoF by DoF) is swept from rest with the
+       other joints at rest. The collision hulls of the subtree it moves, swept (hull of two
+       consecutive poses; turns sampled so arcs bulge at most :data:`SWEEP_SAGITTA` past the
+       chords), keep :data:`CLEARANCE` from every hull of every link but its parent, and its
+       overlap with the parent grows by at most :data:`PARENT_GROWTH` over rest at quarters of
+       the range (a door may not swing into its own carcass; a polygonal pin may turn in its
+       polygonal bore). A hull pair that already overlaps, or is
+       closer than the clearance, at rest keeps only what it has (it is not this joint's
+       doing). A joint that ``requires_open`` a part sweeps with that part fully open. The limit
+       becomes the last contact-free value, bisected (14 steps) within the first sample
+       interval that meets something.
+    2. *Joints together*: in the states :data:`ALL_FRACTIONS` (every joint at 50 % and 100 % of
+       its range, as the validators sample them), two links that may touch neither by design
+       (welded, or parent and child) nor at rest must keep the clearance (or, if closer at rest,
+       must not overlap); where they do not, the limits of
+       the movable joints between them (not those others require open; only the revolute ones
+       if there are any: a door stops before a drawer gives up travel) are scaled by the same
+       factor, the largest that separates them (bisection to 0.4 %), until no state changes.
+
+    Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep
+    theirs: see :func:`limit_to_ground`).
+    """
+    from .errors import ModelError
+
+    hulls = _solid_hulls(obj)
+    movable = [j for j in obj.joints if j.movable]
+    limits = {j.name: (float(j.lower), float(j.upper)) for j in movable}
+    groups: dict[str, list] = {}
+    for j in movable:
+        groups.setdefault(j.group, []).append(j)
+    gates = {j.name: [g.name for g in groups.get(j.requires_open, [])] for j in movable if j.requires_open}
+    gate_of_someone = {name for names in gates.values() for name in names}
+    by_name = {link.name: link for link in obj.links}
+    into = {j.child: j for j in obj.joints}
+    subtree = {j.name: descendants(obj.joints, j.child) for j in movable}
+    by_joint = {j.name: j for j in movable}
+    cache: dict = {}
+    scenes: dict = {}
+
+    def real_parent(j):
+        p = j.parent
+        while by_name[p].dummy:
+            p = into[p].parent
+        return p
+
+    def opened(q):
+        for name in [n for n, v in q.items() if v != 0.0]:
+            for g in gates.get(name, []):
+                q[g] = limits[g][1]
+        return q
+
+    # 1. each joint alone, swept from rest
+    for j in movable:
+        if j.type not in ("revolute", "prismatic"):
+            continue
+        moving = [h for n in sorted(subtree[j.name]) for h in hulls.get(n, [])]
+        if not moving:
+            continue
+        parent = real_parent(j)
+        q = {g: limits[g][1] for g in gates.get(j.name, [])}
+        key = tuple(sorted(q.items()))
+        if key not in scenes:  # every link posed, shared by the joints that sweep in this state
+            poses = obj.poses(q)
+            scenes[key] = (poses, _Obstacles(list(hulls), hulls, poses, cache))
+        poses, obstacles = scenes[key]
+        allowed = np.array([h.link not in subtree[j.name] and h.link != parent for h in obstacles.hulls])
+        below = _Obstacles([parent] if parent in hulls else [], hulls, poses, cache)
+        for side in (1, 0):
+            limit = limits[j.name][side]
+            if limit == 0:
+                continue
+            value, hit = _sweep_limit(j, limit, moving, poses, obstacles, allowed)
+            value, hit = min((value, hit), _parent_limit(j, value, moving, poses, below), key=lambda t: abs(t[0]))
+            if value != limit:
+                if abs(value) < 1e-6:
+                    raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without meeting"
+                                     f" {hit!r} (parent {real_parent(j)!r}); leave a gap between them")
+                lo, hi = limits[j.name]
+                limits[j.name] = (lo, value) if side == 1 else (value, hi)
+
+    # 2. every joint at once
+    solid = list(hulls)
+    chain = {frozenset((real_parent(j), j.child)) for j in movable if not by_name[j.child].dummy}
+    path = {}
+    for i, a in enumerate(solid):
+        for b in solid[i + 1:]:
+            between = [j for j in movable if (a in subtree[j.name]) != (b in subtree[j.name])]
+            if between and frozenset((a, b)) not in chain:
+                path[tuple(sorted((a, b)))] = between
+    if not path:
+        return limits
+
+    def contacts(poses, pairs, margin=0.0) -> set:
+        """Link pairs among ``pairs`` whose hulls, one grown by ``margin`` (a number, or a dict
+        pair -> margin), overlap at ``poses``."""
+        names = sorted({n for pair in pairs for n in pair})
+        obstacles = _Obstacles(names, hulls, poses, cache)
+        index = {n: k for k, n in enumerate(names)}
+        link = np.repeat(np.arange(len(names)), [len(hulls[n]) for n in names])
+        wanted = np.zeros((len(names), len(names)), bool)
+        for a, b in pairs:
+            wanted[index[a], index[b]] = wanted[index[b], index[a]] = True
+        lo, hi = obstacles.lo, obstacles.hi
+        near = np.all((lo[:, None] < hi[None] + CLEARANCE) & (lo[None] < hi[:, None] + CLEARANCE), axis=2)
+        near &= wanted[link[:, None], link[None, :]]
+        out = set()
+        for u, v in zip(*np.nonzero(np.triu(near, 1))):
+            pair = tuple(sorted((names[link[u]], names[link[v]])))
+            if pair in out:
+                continue
+            d = margin if not isinstance(margin, dict) else margin[pair]
+            if _hits(obstacles.world[u], obstacles.normals(u), d, obstacles, v):
+                out.add(pair)
+        return out
+
+    def state(f, scale=None):
+        lim = dict(limits)
+        if scale is not None:
+            lim.update({name: (lo * scale[1], hi * scale[1]) for name, (lo, hi) in limits.items()
+                        if name in scale[0]})
+        q = {j.name: (f * math.pi if j.type == "continuous" else lim[j.name][0] + f * (lim[j.name][1]
+             - lim[j.name][0])) for j in movable}
+        for name in [n for n in q if q[n] != 0.0]:
+            for g in gates.get(name, []):
+                q[g] = lim[g][1]
+        return obj.poses(q)
+
+    # pairs apart by the clearance at rest keep it; closer ones keep apart; overlapping ones are
+    # left out (not a joint's doing)
+    rest = obj.poses({})
+    touching = contacts(rest, set(path))
+    near_rest = contacts(rest, set(path), CLEARANCE)
+    checked = set(path) - touching
+    margins = {pair: 0.0 if pair in near_rest else CLEARANCE for pair in checked}
+    for _ in range(8):
+        changed = False
+        for f in ALL_FRACTIONS:
+            for a, b in sorted(contacts(state(f), checked, margins)):
+                names = {j.name for j in path[(a, b)] if j.type != "continuous" and j.name not in gate_of_someone}
+                turns = {n for n in names if by_joint[n].type == "revolute"}
+                names = turns or names  # a hinge stops before a slide gives up travel
+                if not names:
+                    continue
+                good, bad = 0.0, 1.0
+                for _ in range(8):
+                    mid = 0.5 * (good + bad)
+                    if (a, b) in contacts(state(f, (names, mid)), {(a, b)}, margins[(a, b)]):
+                        bad = mid
+                    else:
+                        good = mid
+                if good < 1e-6:
+                    raise ModelError(f"links {a!r} and {b!r} meet whenever their joints move together")
+                for name in sorted(names):
+                    lo, hi = limits[name]
+                    limits[name] = (lo * good, hi * good)
+                changed = True
+                break  # the state changed: look again
+        if not changed:
+            break
+    return limits
+
+
+def limit_to_clearance(obj):
+    """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` (the object and
+    its joints are not modified; unchanged joints are shared)."""
+    limits = clearance_limits(obj)
+    joints = [replace(j, lower=limits[j.name][0], upper=limits[j.name][1])
+              if j.name in limits and limits[j.name] != (j.lower, j.upper) else j for j in obj.joints]
+    return replace(obj, joints=joints)

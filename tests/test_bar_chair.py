@@ -7,7 +7,6 @@ import pytest
 from test_office_chair import _box, assert_clear, rest_overlaps, states
 
 from infmob_usd.categories import bar_chair as bc
-from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from zoo import by_child, make_bp, movable
@@ -81,17 +80,7 @@ def test_no_collisions_or_ground_at_any_sampled_state(over):
         assert_clear(bp, ps, rest_pc, q)
 
 
-@pytest.mark.parametrize("bad", [{"seat_height": 0.5}, {"seat_height": 0.9}, {"base_type": "tripod"},
-                                 {"leg_count": 12}, {"colour": "red"}])
-def test_bad_overrides_raise(bad):
-    with pytest.raises(ParameterError):
-        make(0, **bad)
-
-
-def test_same_seed_same_object_and_variety():
-    p1, a = make(5)
-    p2, b = make(5)
-    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
+def test_variety():
     made = [make(s)[0] for s in range(12)]
     for name in ("base_type", "seat_shape", "has_back", "base_finish"):
         assert len({p[name] for p in made}) > 1, name

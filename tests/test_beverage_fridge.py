@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import beverage_fridge as bf
-from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from collide import contacts, overlap
@@ -192,22 +191,6 @@ def test_overrides_drive_the_growth():
     assert len(b.parts["body"].pieces) > len(a.parts["body"].pieces)
     p, _ = make(2, width=0.6, handle_style="recessed")
     assert p["width"] == 0.6 and p["handle_style"] == "recessed"
-
-
-@pytest.mark.parametrize("bad", [{"width": 1.2}, {"rack_count": 6}, {"hinge_side": "top"},
-                                 {"interior": "drawers"}, {"colour": "red"}])
-def test_bad_overrides_raise(bad):
-    with pytest.raises(ParameterError):
-        make(0, **bad)
-
-
-def test_same_seed_same_object():
-    p1, a = make(7)
-    p2, b = make(7)
-    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
-    for name in a.parts:
-        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
-            assert np.array_equal(x.vertices, y.vertices)
 
 
 def test_seeds_differ():

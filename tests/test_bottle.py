@@ -84,7 +84,7 @@ def test_overrides_and_bad_values():
 def test_auto_cap_is_the_profiles_usual_closure(profile):
     p, bp = make(0, profile=profile)
     usual = bottle.KINDS[profile][2]
-    assert p["cap"] == "auto"
+    assert p["cap"] == usual  # "auto" drawn, recorded as the closure that was built
     assert bp.materials["cap"] == CAP_MATERIALS[usual]  # the materials follow the resolved closure
     assert bp.materials["glass"] == bottle.KINDS[profile][3]
     if usual == "stopper":  # a wooden stopper: the cork slot, reaching into the neck

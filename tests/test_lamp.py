@@ -162,16 +162,24 @@ def test_chain_segments_pitch_or_swing(lamp_bp):
         j = joint_of(bp, f"arm_{k}")
         (d,) = j.dofs
         assert j.kind == "revolute"
-        if np.allclose(np.abs(d.axis), (0, 1, 0)):  # pitch: rests on its stop, lifts its load
-            assert d.lower == 0
-            if np.allclose(d.axis, (0, -1, 0)):  # +q turns the arm up and back, by pi/6
-                assert d.upper == pytest.approx(math.pi / 6)
-            else:  # +q turns it forward: pi/6, less if the head would reach the ground
-                assert math.pi / 12 - 1e-9 <= d.upper <= math.pi / 6 + 1e-9
+        if np.allclose(np.abs(d.axis), (0, 1, 0)):  # pitch, declared both ways (the core picks a side)
+            assert d.upper == pytest.approx(math.pi / 6)  # +q turns the arm up and back, by pi/6
+            assert -math.pi / 6 - 1e-9 <= d.lower <= -math.pi / 12 + 1e-9  # forward, less near the ground
         else:  # swing arm on a vertical pin
             assert k > 0 and np.allclose(np.abs(d.axis), (0, 0, 1))
             assert (d.lower, d.upper) == pytest.approx((-math.pi / 2, math.pi / 2))
     assert np.allclose(np.abs(joint_of(bp, "arm_0").dofs[0].axis), (0, 1, 0))
+
+
+@pytest.mark.parametrize("seed", [1, 4, 6])
+def test_chain_pitch_joints_rest_on_their_stop_in_the_object(seed):
+    """The core keeps the side of a pitch hinge that lifts its load: it rests on lower = 0."""
+    from infmob_usd.api import generate
+
+    obj = generate("lamp", seed, 16)
+    pitch = [j for j in obj.movable_joints if j.child.startswith("arm_") and np.allclose(np.abs(j.axis), (0, 1, 0))]
+    for j in pitch:
+        assert j.lower == 0 and 0 < j.upper <= math.pi / 6 + 1e-9
 
 
 def test_bulb_screws_out_of_its_socket(lamp_bp):
@@ -264,8 +272,10 @@ def carried_mass(bp, name: str) -> tuple[float, np.ndarray]:
     return mass, moment / mass
 
 
-def test_gravity_holds_every_joint_at_rest(lamp_bp):
-    """Each DoF is neutral under gravity, balanced, or pressed into the lower limit it rests on.
+@pytest.mark.parametrize("seed", range(6))
+def test_gravity_holds_every_joint_at_rest(seed):
+    """Each DoF of the generated lamp is neutral under gravity, balanced, or pressed into the
+    lower limit it rests on (the core's ``rest_on_stops`` picks the side of two-sided hinges).
 
     Neutral: a rotation about a vertical axis, or a horizontal slide. A slide along
     gravity rests at lower = 0 with gravity pushing toward negative q. A hinge about a
@@ -273,28 +283,28 @@ def test_gravity_holds_every_joint_at_rest(lamp_bp):
     (balanced, stable) or rests at lower = 0 with the gravity torque of everything
     it carries pushing toward negative q.
     """
-    _, bp = lamp_bp
-    g = np.array([0.0, 0.0, -9.81])
-    for j in movable(bp):
-        m, com = carried_mass(bp, j.child)
-        for d in j.dofs:
-            a, o = np.asarray(d.axis), np.asarray(d.origin)
-            if d.type == "prismatic":
-                if abs(a[2]) < 1e-9:
-                    continue
-                assert d.lower == 0 and m * g @ a < 0, f"{j.child}: gravity pulls the slide into its range"
+    from infmob_usd.api import generate
+    from infmob_usd.physical import gravity_torque
+
+    obj = generate("lamp", seed, 16)
+    for j in obj.movable_joints:
+        torque, m, com = gravity_torque(obj.links, obj.joints, j)
+        a, o = np.asarray(j.axis), np.asarray(j.origin)
+        if j.type == "prismatic":
+            if abs(a[2]) < 1e-9:
                 continue
-            if abs(a[2]) > 1 - 1e-9:
-                continue
-            assert abs(a[2]) < 1e-9, f"{j.child}: tilted hinge axis {a}"
-            torque = float(np.cross(com - o, m * g) @ a)
-            arm = abs(torque) / (9.81 * m)  # horizontal offset of the load from the axis
-            if arm < 2e-4:
-                assert com[2] < o[2], f"{j.child}: balanced upside down"
-                continue
-            assert d.lower == 0 and torque < 0, (
-                f"{j.child}: gravity torque {torque:.3f} N m does not press it onto its lower stop"
-                f" [{d.lower:.3f}, {d.upper:.3f}]")
+            assert j.lower == 0 and -9.81 * m * a[2] < 0, f"{j.child}: gravity pulls the slide into its range"
+            continue
+        if abs(a[2]) > 1 - 1e-9 or j.type == "continuous":
+            continue
+        assert abs(a[2]) < 1e-9, f"{j.child}: tilted hinge axis {a}"
+        arm = abs(torque) / (9.81 * m)  # horizontal offset of the load from the axis
+        if arm < 2e-4:
+            assert com[2] < o[2], f"{j.child}: balanced upside down"
+            continue
+        assert j.lower == 0 and torque < 0, (
+            f"{j.child}: gravity torque {torque:.3f} N m does not press it onto its lower stop"
+            f" [{j.lower:.3f}, {j.upper:.3f}]")
 
 
 def test_stands_on_its_base(lamp_bp):

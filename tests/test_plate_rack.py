@@ -11,7 +11,6 @@ from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 
 from infmob_usd.categories import plate_rack as pr
-from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from zoo import by_child, make_bp
@@ -252,24 +251,6 @@ def test_at_least_one_plate_every_seed():
     for seed in range(12):
         p, bp = make(seed)
         assert 1 <= len(plates(bp)) <= p["slot_count"]
-
-
-@pytest.mark.parametrize("bad", [{"slot_count": 8}, {"slot_count": 2}, {"plate_radius": 0.2},
-                                 {"prong_height": 0.05}, {"style": "steel"}, {"plate_count": 0},
-                                 {"colour": "red"}])
-def test_bad_overrides_raise(bad):
-    with pytest.raises(ParameterError):
-        make(0, **bad)
-
-
-def test_same_seed_same_object():
-    p1, a = make(7)
-    p2, b = make(7)
-    assert p1 == p2
-    assert list(a.parts) == list(b.parts) and a.joints == b.joints
-    for name in a.parts:
-        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
-            assert np.array_equal(x.vertices, y.vertices)
 
 
 def test_seeds_vary():

@@ -37,17 +37,35 @@ def _checks(folder):
     return {c.name: c for c in check_physics(folder)}
 
 
+def _unlimited(bp):
+    """The object without the core's clearance limits (what the checks must catch by themselves)."""
+    from infmob_usd import physical
+
+    original = physical.limit_to_clearance
+    physical.limit_to_clearance = lambda obj: obj
+    try:
+        return assemble(bp, 0, np.random.default_rng(0), 16)
+    finally:
+        physical.limit_to_clearance = original
+
+
 def test_requires_open_is_written_and_honoured(tmp_path):
-    folder = assemble(cupboard(True), 0, np.random.default_rng(0), 16).save(tmp_path / "gated")
+    obj = assemble(cupboard(True), 0, np.random.default_rng(0), 16)
+    assert next(j for j in obj.joints if j.child == "tray").upper == pytest.approx(0.35)
+    folder = obj.save(tmp_path / "gated")
     meta = json.loads((folder / "metadata.json").read_text())
     tray = next(j for j in meta["joints"] if j["child"] == "tray")
     assert tray["requires_open"] == "door"
     res = _checks(folder)
     assert res["self_collision"].ok, res["self_collision"].detail
 
-    ungated = assemble(cupboard(False), 0, np.random.default_rng(0), 16).save(tmp_path / "free")
+    ungated = _unlimited(cupboard(False)).save(tmp_path / "free")
     res = _checks(ungated)
     assert not res["self_collision"].ok and "door" in res["self_collision"].detail
+    # the core's clearance pass stops an ungated tray before the closed door instead
+    limited = assemble(cupboard(False), 0, np.random.default_rng(0), 16)
+    assert next(j for j in limited.joints if j.child == "tray").upper < 0.303 - 0.25
+    assert _checks(limited.save(tmp_path / "limited"))["self_collision"].ok
 
 
 @pytest.mark.sim
@@ -58,7 +76,7 @@ def test_reach_opens_the_door_first(tmp_path):
     folder = assemble(cupboard(True), 0, np.random.default_rng(0), 16).save(tmp_path / "gated")
     res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
     assert res["reach"].ok, res["reach"].detail
-    ungated = assemble(cupboard(False), 0, np.random.default_rng(0), 16).save(tmp_path / "free")
+    ungated = _unlimited(cupboard(False)).save(tmp_path / "free")
     res = {c.name: c for c in check_sapien(ungated, checks=["reach"])}
     assert not res["reach"].ok and "joint_tray" in res["reach"].detail
 

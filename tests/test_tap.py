@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import tap
-from infmob_usd.errors import ParameterError
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
@@ -196,22 +195,6 @@ def test_overrides_drive_the_growth(handles, pipe):
     assert ("handle_1" in bp.parts) == (handles == "two_handles")
     assert p["has_separate_pipe"] == pipe
     test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
-
-
-@pytest.mark.parametrize("bad", [{"height": 0.5}, {"base_width": 0.01}, {"handles": "three"},
-                                 {"spout_shape": "waterfall"}, {"colour": "red"}])
-def test_bad_overrides_raise(bad):
-    with pytest.raises(ParameterError):
-        make(0, **bad)
-
-
-def test_same_seed_same_object():
-    p1, a = make(5)
-    p2, b = make(5)
-    assert p1 == p2 and list(a.parts) == list(b.parts) and a.joints == b.joints
-    for name in a.parts:
-        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
-            assert np.array_equal(x.vertices, y.vertices)
 
 
 def test_seeds_differ():

@@ -63,3 +63,18 @@ def movable(bp):
 def by_child(bp, name):
     """The joint whose child is part ``name``."""
     return next(j for j in bp.joints if j.child == name)
+
+
+def object_limits(name, seed, bp, **overrides):
+    """``bp`` with the joint limits and axes of the generated object (after the core's
+    ``rest_on_stops`` and ``limit_to_clearance``); joints with one DoF only."""
+    from dataclasses import replace
+
+    from infmob_usd.api import generate
+
+    obj = generate(name, seed, 16, **overrides)
+    final = {j.child: j for j in obj.movable_joints}
+    bp.joints = [replace(j, dofs=(replace(j.dofs[0], lower=final[j.child].lower, upper=final[j.child].upper,
+                                          axis=tuple(final[j.child].axis)),))
+                 if j.movable and len(j.dofs) == 1 and j.child in final else j for j in bp.joints]
+    return bp

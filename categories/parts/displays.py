@@ -1,0 +1,208 @@
+"""Display parts: flat screens with bezels and buttons, tilt connectors, forks, pedestal and two-leg
+stands, wall plates and articulating arms.
+
+World-aligned local frames: the screen faces +x, z is up. Sizes of real flat-panel TVs: 24-85 inch
+(0.55-1.9 m wide), 20-40 mm panels, VESA 100-600 mm mounting plates, 10-20 mm tilt barrels; wall
+arms reach 0.15-0.45 m (manufacturers' spec sheets: Samsung, LG, Sony; VESA MIS-D/E/F).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from infmob_usd import geometry as g
+
+GAP = 0.004  # clearance between moving parts and their neighbours
+CLEAR = 0.0015  # clearance of a button in its hole
+BEZEL_T = 0.008  # bezel thickness (x)
+RIM = 0.010  # side rim thickness (y) when side buttons go through it
+PRESS = 0.002  # button travel
+FORK_T = 0.008  # fork cheek and bridge thickness
+LEG_W = 0.025  # two-leg stand upright width (y)
+ARM = dict(radius=0.014, barrel=0.05, lug=0.008)  # wall-arm barrel radius, barrel height, lug thickness
+
+
+def bottom_band(bezel: float, bottom_buttons: bool) -> float:
+    """Height of the bottom bezel band: wider when buttons sit in it."""
+    return max(bezel * 1.3, 0.008 + 2 * CLEAR + 0.008) if bottom_buttons else bezel * 1.3
+
+
+def button_layout(place: str, n: int, W: float, xf: float, xs: float, zs0: float, band: float) -> list:
+    """(centre, half sizes) of each button; side: (x, z) on the rim, bottom: (y, z) on the bezel."""
+    if place == "side":
+        bx = min(0.008, (xf - BEZEL_T - xs) - 2 * CLEAR - 0.004)
+        bz = 0.012
+        xc = (xf - BEZEL_T + xs) / 2
+        return [((xc, zs0 + 0.08 + k * (2 * bz + 0.006)), (bx / 2, bz / 2)) for k in range(n)]
+    bz, by = 0.008, 0.014
+    y0 = W / 2 - 0.06 - 0.2 * W / 2
+    return [((y0 - k * (by + 0.008), zs0 + band / 2), (by / 2, bz / 2)) for k in range(n)]
+
+
+def _hole(c, h):
+    return (c[0] - h[0] - CLEAR, c[1] - h[1] - CLEAR, c[0] + h[0] + CLEAR, c[1] + h[1] + CLEAR)
+
+
+def screen(W: float, xs3, zs, hump, bezel: float, band: float, buttons: list, place: str) -> list[g.Piece]:
+    """A bezel around a glossy display, a back housing and an electronics box with holes for ``buttons``
+    in the bezel's bottom band or the right side rim."""
+    xf, xs, xhb = xs3
+    zs0, zs1 = zs
+    hw, zh0, zh1 = hump
+    side = bool(buttons) and place == "side"
+    holes = [(-W / 2 + bezel, zs0 + band, W / 2 - bezel, zs1 - bezel)]
+    if buttons and place == "bottom":
+        holes += [_hole(c, h) for c, h in buttons]
+    xb = xf - BEZEL_T
+    pieces = [g.panel([xb, -W / 2, zs0], [xf, W / 2, zs1], "bezel", "x", holes=holes).with_sheet(0.0015),
+              g.box_between([xb, -W / 2 + bezel, zs0 + band], [xf - 0.0015, W / 2 - bezel, zs1 - bezel], "display")
+              .with_sheet(0.003),
+              g.box_between([xs, -W / 2, zs0], [xb, W / 2 - RIM if side else W / 2, zs1], "housing").with_sheet(0.002)]
+    if side:
+        pieces.append(g.panel([xs, W / 2 - RIM, zs0], [xb, W / 2, zs1], "housing", "y",
+                              holes=[_hole(c, h) for c, h in buttons]).with_sheet(0.002))
+    pieces.append(g.box_between([xhb, -hw / 2, zh0], [xs + 0.001, hw / 2, zh1], "housing",
+                                bevel=min(0.01, 0.3 * (xs - xhb))).with_sheet(0.002))
+    return pieces
+
+
+def button(place: str, c, h, W: float, xf: float) -> tuple[g.Piece, tuple, tuple]:
+    """A push button through the rim (pressed along -y) or the bezel (along -x): piece, origin, axis."""
+    if place == "side":
+        y_in, y_out = W / 2 - RIM + PRESS + 0.002, W / 2 + 0.0025
+        piece = g.box_between([c[0] - h[0], y_in, c[1] - h[1]], [c[0] + h[0], y_out, c[1] + h[1]], "button",
+                              bevel=0.001)
+        return piece, (c[0], y_out, c[1]), (0, -1, 0)
+    x_in, x_out = xf - BEZEL_T + PRESS + 0.002, xf + 0.002
+    piece = g.box_between([x_in, c[0] - h[0], c[1] - h[1]], [x_out, c[0] + h[0], c[1] + h[1]], "button",
+                          bevel=0.001)
+    return piece, (x_out, c[0], c[1]), (-1, 0, 0)
+
+
+def connector(pivot, r_k: float, xs2, L_k: float, vesa_w: float, hump) -> list[g.Piece]:
+    """A barrel along y on the tilt axis, neck plates forward to a VESA plate on the back."""
+    x_p, z_p = pivot
+    x_bk, xhb = xs2
+    hh, zh0, zh1 = hump
+    vw = min(vesa_w, 0.6)
+    vh = min(0.7 * hh, 0.5, 2 * min(z_p - zh0, zh1 - z_p) - 0.02)
+    ny = min(0.35 * L_k, vw / 2 - 0.02)
+    pieces = [g.cylinder([x_p, -L_k / 2, z_p], [x_p, L_k / 2, z_p], r_k, "connector", 24),
+              g.box_between([x_bk, -vw / 2, z_p - vh / 2], [xhb, vw / 2, z_p + vh / 2], "connector")]
+    pieces += [g.box_between([x_p, y - 0.01, z_p - 0.7 * r_k], [x_bk + 0.001, y + 0.01, z_p + 0.7 * r_k], "connector")
+               for y in (-ny, ny)]
+    return [pc.with_sheet(0.003) for pc in pieces]
+
+
+def fork(x_p: float, z_p: float, r_k: float, L_k: float, material: str, back: bool = True) -> list[g.Piece]:
+    """Two cheeks beside the barrel's ends and a bridge under (and a plate behind) it."""
+    t = FORK_T
+    yc = L_k / 2 + GAP + t / 2
+    x0, x1 = x_p - 1.3 * r_k, x_p + 1.3 * r_k
+    pieces = [g.box_between([x0, s * yc - t / 2, z_p - r_k - GAP - t], [x1, s * yc + t / 2, z_p + 1.2 * r_k], material)
+              for s in (-1, 1)]
+    if back:
+        pieces.append(g.box_between([x0 - t, -yc - t / 2, z_p - 1.2 * r_k],
+                                    [x_p - r_k - GAP, yc + t / 2, z_p + 1.2 * r_k], material))
+    pieces.append(g.box_between([x0, -yc - t / 2, z_p - r_k - GAP - t], [x1, yc + t / 2, z_p - r_k - GAP], material))
+    return pieces
+
+
+def base_plate(shape: str, bw: float, bd: float, base_t: float, x_p: float, xc: float) -> g.Piece:
+    """A pedestal base plate: round (centred a little in front of the post) or a bevelled rectangle."""
+    if shape == "round":
+        r = max(bw, bd) / 2
+        return g.revolve([(0, 0), (r, 0), (r, 0.6 * base_t), (r - base_t, base_t), (0, base_t)], "stand",
+                         center=(x_p + 0.3 * r, 0, 0), sections=48)
+    return g.box_between([xc - bd / 2, -bw / 2, 0], [xc + bd / 2, bw / 2, base_t], "stand", bevel=0.4 * base_t)
+
+
+def sleeve(x_p: float, r_in: float, base_t: float, height: float, wall: float = 0.004) -> list[g.Piece]:
+    """A round sleeve on the base for a height-adjustable post, and its floor."""
+    return [g.shell([(r_in + wall, base_t - 0.001), (r_in + wall, base_t + height)], wall, "stand", center=(x_p, 0, 0),
+                    sections=32),
+            g.disc([x_p, 0, base_t + 0.002], r_in + wall, 0.004, "stand")]
+
+
+def two_legs(x_p: float, z_p: float, r_k: float, L_k: float, xf: float, x_bk: float, base_t: float, depth: float
+             ) -> list[g.Piece]:
+    """Two feet under the screen with uprights behind it, a low crossbar, rests under the barrel."""
+    y_leg = L_k / 2 + GAP + LEG_W / 2
+    ux = min(1.3 * r_k, x_bk - GAP - x_p - 0.002)
+    x0, x1 = min(x_p - 0.04, xf - depth), xf + 0.03
+    pieces = []
+    for s in (-1, 1):
+        y = s * y_leg
+        pieces.append(g.box_between([x0, y - 0.02, 0], [x1, y + 0.02, base_t], "stand", bevel=0.4 * base_t))
+        pieces.append(g.box_between([x_p - ux, y - LEG_W / 2, base_t - 0.001],
+                                    [x_p + ux, y + LEG_W / 2, z_p + 1.2 * r_k], "stand", bevel=0.002))
+    zc = base_t + 0.3 * (z_p - base_t)
+    pieces.append(g.box_between([x_p - ux, -y_leg, zc - 0.012], [x_p + ux, y_leg, zc + 0.012], "stand"))
+    for s in (-1, 1):
+        y = s * (y_leg - LEG_W / 2 - 0.004)
+        pieces.append(g.box_between([x_p - ux, y - 0.004, z_p - r_k - GAP - 0.006],
+                                    [x_p + ux, y + 0.004, z_p - r_k - GAP], "stand"))
+    return pieces
+
+
+def lugs(x_back: float, x_pin: float, z: float, material: str) -> list[g.Piece]:
+    """A block at ``x_back`` with two lugs above and below a vertical barrel at ``x_pin``."""
+    r_a, h_b, t_l = ARM["radius"], ARM["barrel"], ARM["lug"]
+    half = h_b / 2 + GAP
+    pieces = []
+    for s in (-1, 1):
+        z0, z1 = (z + half, z + half + t_l) if s > 0 else (z - half - t_l, z - half)
+        pieces.append(g.box_between([x_back, -1.3 * r_a, z0], [x_pin + 1.3 * r_a, 1.3 * r_a, z1], material))
+    pieces.append(g.box_between([x_back - 0.001, -1.3 * r_a, z - half - t_l], [x_pin - r_a - GAP, 1.3 * r_a,
+                                                                               z + half + t_l], material))
+    return pieces
+
+
+def wall_plate(x_w: float, x_pin: float, z_p: float) -> list[g.Piece]:
+    """A wall plate with its face at ``x_w`` and the lugs of the first arm joint."""
+    pw, ph = 0.2, max(0.2, ARM["barrel"] + 2 * (GAP + ARM["lug"]) + 0.08)
+    return [g.box_between([x_w - 0.006, -pw / 2, z_p - ph / 2], [x_w, pw / 2, z_p + ph / 2], "arm", bevel=0.002),
+            *lugs(x_w, x_pin, z_p, "arm")]
+
+
+def arm_link(x0: float, x1: float, z_p: float, end: float, last_fork: list | None) -> list[g.Piece]:
+    """One arm link: a barrel at ``x0``, a beam to ``end``, then the next joint's lugs (or the tilt fork)."""
+    r_a, h_b = ARM["radius"], ARM["barrel"]
+    pieces = [g.cylinder([x0, 0, z_p - h_b / 2], [x0, 0, z_p + h_b / 2], r_a, "arm", 24),
+              g.box_between([x0, -0.8 * r_a, z_p - 0.4 * h_b], [end + 0.001, 0.8 * r_a, z_p + 0.4 * h_b], "arm")]
+    return pieces + (last_fork if last_fork is not None else lugs(x1 - r_a - GAP - 0.012, x1, z_p, "arm"))
+
+
+def wall_mount_ranges(corners: np.ndarray, pivot, pivots: list[float], x_wall: float, tilt: float, n: int
+                      ) -> tuple[float, float]:
+    """The largest tilt (<= ``tilt``) and arm swing per joint that keep the screen ``corners`` 1 cm off
+    the wall plane in every combination of the arm joints (bisection over sampled combinations)."""
+    x_p, z_p = pivot
+
+    def clear(theta, phi):
+        rel = corners - [x_p, 0, z_p]  # tilt about -y through the pivot: the top goes back
+        c, s = math.cos(theta), math.sin(theta)
+        tilted = np.c_[rel[:, 0] * c - rel[:, 2] * s, rel[:, 1]] + [x_p, 0]
+        for signs in ([1] * n, [-1] * n, [1, -1][:n], [-1, 1][:n]):
+            for frac in (0.5, 1.0):
+                pts = tilted.copy()
+                for i in reversed(range(n)):  # turn the outermost joint first
+                    a = signs[i] * frac * phi / n
+                    c, s = math.cos(a), math.sin(a)
+                    r = pts - [pivots[i], 0]
+                    pts = np.c_[r[:, 0] * c - r[:, 1] * s, r[:, 0] * s + r[:, 1] * c] + [pivots[i], 0]
+                if pts[:, 0].min() < x_wall + 0.01:
+                    return False
+        return True
+
+    def largest(ok, hi):
+        lo = 0.0
+        for _ in range(30):
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+        return lo
+
+    tilt = max(largest(lambda t: clear(t, 0.0), tilt), 0.02)
+    return tilt, max(largest(lambda f: clear(tilt, f), math.pi / 3) / n, 0.02)

@@ -1,0 +1,280 @@
+"""Rack parts: steel pallet-rack frames, beam levels with decks, and the goods that stand on them.
+
+Local frames: a frame of two uprights stands in the plane y = 0 (front upright at +x); a level's
+beams run along y between its two ends; goods stand on the plane z = 0. Sizes of real selective
+pallet racking and boltless shelving: 60-100 mm uprights, 60-140 mm beams, 0.6-1.2 m deep frames,
+1.2 x 0.8-1.0 m pallets 144 mm high (EN 15635, EUR-pallet EN 13698-1; manufacturers' catalogues).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from infmob_usd import geometry as g
+
+BEAM_D = 0.05  # beam depth (x)
+BRACKET_H = 0.03  # stop bracket height
+DECK_T = {"wire": 0.03, "steel": 0.03, "wood": 0.018}  # deck thickness on the beams
+UPRIGHT_SHEET = 0.002  # upright steel
+BRACE_SHEET = 0.0015
+BEAM_SHEET = 0.0015
+CARTON = 0.004  # corrugated board
+
+
+def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece]:
+    """Two uprights (front, back) in the plane y = 0 with foot plates, perforations and bracing."""
+    pieces = []
+    for x0, x1 in ((depth / 2 - u, depth / 2), (-depth / 2, -depth / 2 + u)):
+        pieces.append(g.box_between([x0, -u / 2, 0.008], [x1, u / 2, top], slot).with_sheet(UPRIGHT_SHEET))
+        pieces.append(g.box_between([x0 - 0.01, -u / 2 - 0.01, 0.0], [x1 + 0.01, u / 2 + 0.01, 0.008], "feet"))
+        face, out = (x1, 1.0) if x1 > 0 else (x0, -1.0)
+        pieces.append(perforations(face, out, u, 0.1, top - 0.05))
+    # bracing in the plane of the frame: horizontals and a zigzag of diagonals
+    xa, xb = -depth / 2 + u, depth / 2 - u
+    r = min(0.012, 0.3 * u)
+    levels = np.linspace(0.15, top - 0.1, max(2, int((top - 0.25) / 0.9) + 2))
+    for k, z in enumerate(levels):
+        pieces.append(g.cylinder([xa, 0, z], [xb, 0, z], r, slot, 10).with_sheet(BRACE_SHEET))
+        if k + 1 < len(levels):
+            z1 = levels[k + 1]
+            a, b = ([xa, 0, z + 0.02], [xb, 0, z1 - 0.02]) if k % 2 == 0 else ([xb, 0, z + 0.02], [xa, 0, z1 - 0.02])
+            pieces.append(g.cylinder(a, b, 0.8 * r, slot, 10).with_sheet(BRACE_SHEET))
+    return pieces
+
+
+def perforations(face: float, out: float, u: float, z0: float, z1: float) -> g.Piece:
+    """Two columns of small slots on an upright's front or back face (decoration, no collision)."""
+    zs = np.arange(z0, z1, 0.05)
+    offsets = np.array([[face + out * 0.0005, dy, z] for z in zs for dy in (-0.25 * u, 0.25 * u)])
+    verts, faces = g.instances(*g.box_arrays([0.0015, 0.008, 0.022]), offsets)
+    return g.Piece(verts, faces, "holes", [], "perforation")
+
+
+def stop_brackets(depth: float, u: float, z: float, sides: tuple[int, ...]) -> list[g.Piece]:
+    """Brackets on the sides ``sides`` (+1: +y, -1: -y) of an upright pair at y = 0, their tops at ``z``."""
+    out = []
+    for x0, x1 in ((depth / 2 - BEAM_D, depth / 2), (-depth / 2, -depth / 2 + BEAM_D)):
+        for s in sides:
+            ya, yb = sorted((s * u / 2, s * (u / 2 + 0.012)))
+            out.append(g.box_between([x0 + 0.01, ya, z - BRACKET_H], [x1 - 0.01, yb, z], "galvanised"))
+    return out
+
+
+def level(ys: tuple[float, float], depth: float, z: float, bh: float, deck: str, beam_slot: str) -> list[g.Piece]:
+    """Front and back beams (tops at ``z``) from ``ys[0]`` to ``ys[1]`` with connector plates, and a deck."""
+    ya, yb = ys
+    dt = DECK_T[deck]
+    pieces = []
+    for x0, x1 in ((depth / 2 - BEAM_D, depth / 2), (-depth / 2, -depth / 2 + BEAM_D)):
+        pieces.append(g.box_between([x0, ya, z - bh], [x1, yb, z], beam_slot, bevel=0.003).with_sheet(BEAM_SHEET))
+        for ye, sgn in ((ya, 1), (yb, -1)):  # connector plates at the beam ends
+            lo, hi = sorted((ye, ye + sgn * 0.006))
+            pieces.append(g.box_between([x0 + 0.005, lo, z - bh], [x1 - 0.005, hi, z], "galvanised"))
+    x0, x1 = -depth / 2 + 0.01, depth / 2 - 0.01
+    if deck == "wood":
+        pieces.append(g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_wood", bevel=0.002))
+    elif deck == "steel":
+        pieces.append(g.box_between([x0, ya + 0.004, z], [x1, yb - 0.004, z + dt], "deck_steel").with_sheet(0.001))
+    else:
+        pieces += wire_deck(x0, x1, ya, yb, z, dt)
+    return pieces
+
+
+def wire_deck(x0: float, x1: float, ya: float, yb: float, z: float, dt: float) -> list[g.Piece]:
+    """Wire mesh on channels: the mesh is visual, its collision one flat plate."""
+    ys_bar = np.arange(ya + 0.02, yb - 0.015, 0.05)
+    xs_bar = np.arange(x0 + 0.02, x1 - 0.015, 0.1)
+    along_x = g.instances(*g.cylinder_arrays([x0, 0, 0], [x1, 0, 0], 0.0025, 6),
+                          np.c_[np.zeros(len(ys_bar)), ys_bar, np.full(len(ys_bar), z + dt - 0.0025)])
+    ym = yb - ya - 0.01
+    along_y = g.instances(*g.cylinder_arrays([0, -ym / 2, 0], [0, ym / 2, 0], 0.0025, 6),
+                          np.c_[xs_bar, np.full(len(xs_bar), (ya + yb) / 2), np.full(len(xs_bar), z + dt - 0.0075)])
+    verts = np.vstack([along_x[0], along_y[0]])
+    faces = np.vstack([along_x[1], along_y[1] + len(along_x[0])])
+    plate = g.box_arrays([x1 - x0, yb - ya - 0.01, 0.01], [0.0, (ya + yb) / 2, z + dt - 0.005])[0]
+    pieces = [g.Piece(verts, faces, "deck_wire", [plate], "deck")]
+    nch = max(2, int((yb - ya) / 0.45) + 1)
+    for yv in np.linspace(ya + 0.04, yb - 0.04, nch):  # channels under the mesh, beam to beam
+        pieces.append(g.box_between([x0, yv - 0.015, z], [x1, yv + 0.015, z + dt - 0.01], "galvanised")
+                      .with_sheet(0.0012))
+    return pieces
+
+
+# -- goods ------------------------------------------------------------------------------------------------
+PALLET = dict(width=1.2, height=0.144, board=0.022, slot=0.85)  # EUR pallet: 1.2 m long, 144 mm high
+
+
+def carton(x0: float, x1: float, y0: float, y1: float, z: float, h: float) -> list[g.Piece]:
+    """A taped cardboard box."""
+    yc = (y0 + y1) / 2
+    return [g.box_between([x0, y0, z], [x1, y1, z + h], "box", bevel=0.004).with_sheet(CARTON),
+            g.box_between([x0 + 0.02, yc - 0.025, z + h - 0.001], [x1 - 0.02, yc + 0.025, z + h + 0.0005], "tape")]
+
+
+def crate(x0: float, x1: float, y0: float, y1: float, z: float, h: float) -> list[g.Piece]:
+    """An open plastic bin: a bottom and four walls (so it stays hollow)."""
+    w = 0.006
+    return [g.box_between([x0, y0, z], [x1, y1, z + w], "crate"),
+            g.box_between([x0, y0, z + w], [x0 + w, y1, z + h], "crate"),
+            g.box_between([x1 - w, y0, z + w], [x1, y1, z + h], "crate"),
+            g.box_between([x0 + w, y0, z + w], [x1 - w, y0 + w, z + h], "crate"),
+            g.box_between([x0 + w, y1 - w, z + w], [x1 - w, y1, z + h], "crate")]
+
+
+def pallet(x0: float, x1: float, y0: float, y1: float, z: float, h: float) -> list[g.Piece]:
+    """A wooden pallet (bottom boards, blocks, top boards) carrying a stack of boxes, ``h`` tall in all."""
+    ph = min(PALLET["height"], 0.35 * h)
+    t = PALLET["board"] * ph / PALLET["height"]
+    pieces = []
+    thirds = (y0, (y0 + y1) / 2 - 0.05, y1 - 0.1)
+    for yb in thirds:  # bottom boards along X
+        pieces.append(g.box_between([x0, yb, z], [x1, yb + 0.1, z + t], "pallet"))
+    for xb in (x0, (x0 + x1) / 2 - 0.05, x1 - 0.1):  # blocks
+        for yb in thirds:
+            pieces.append(g.box_between([xb, yb, z + t], [xb + 0.1, yb + 0.1, z + ph - t], "pallet"))
+    n = max(3, int((y1 - y0) / 0.14))
+    for k in range(n):  # top boards along X
+        ya = y0 + k * (y1 - y0 - 0.1) / (n - 1)
+        pieces.append(g.box_between([x0, ya, z + ph - t], [x1, ya + 0.1, z + ph], "pallet"))
+    zs = z + ph + 0.001
+    rows = 2 if h - ph > 0.5 else 1
+    bh = (h - ph - 0.001) / rows
+    for r in range(rows):
+        for a, b in ((x0 + 0.01, -0.002), (0.002, x1 - 0.01)):
+            for c, d in ((y0 + 0.01, (y0 + y1) / 2 - 0.002), ((y0 + y1) / 2 + 0.002, y1 - 0.01)):
+                pieces.append(g.box_between([a, c, zs + r * bh], [b, d, zs + (r + 1) * bh - 0.002], "box",
+                                            bevel=0.004).with_sheet(CARTON))
+    return pieces
+
+
+GOODS = {"boxes": carton, "crates": crate, "pallet": pallet}
+
+
+def goods_row(kind: str, span: tuple[float, float], depth: float, rng: np.random.Generator
+              ) -> tuple[float, list[tuple[float, float]]]:
+    """How goods of one kind fill a level: their depth and the y extent of each."""
+    ya, yb = span
+    width = yb - ya
+    if kind == "pallet":
+        d = depth - 0.06
+        count = max(1, int(width // PALLET["slot"]))
+        w = min(PALLET["width"], width / count - 0.05)
+    else:
+        d = min(depth - 0.1, float(rng.uniform(0.45, 0.7)) * depth + 0.1)
+        count = max(1, min(4, int(width // float(rng.uniform(0.35, 0.6)))))
+        w = width / count - 0.04
+    pitch = width / count
+    return d, [(ya + (k + 0.5) * pitch - w / 2, ya + (k + 0.5) * pitch + w / 2) for k in range(count)]
+
+
+# -- dish racks and plates -----------------------------------------------------------------------------
+SEAT_GAP = 0.004  # a plate's lowest point above the support surface at rest
+PLATE_SECTIONS = 64
+PLATE_SLIDE = 0.1  # how far a plate may slide along its slot, either way (the plastic tray's walls clear it)
+
+
+def _smooth(u):
+    u = np.clip(u, 0.0, 1.0)
+    return u * u * u * (u * (6 * u - 15) + 10)
+
+
+def plate(radius: float, height: float, wall: float, foot_r: float, material: str) -> g.Piece:
+    """A dinner plate stood on edge: axis along +x, foot at x = 0, centre on the x axis.
+
+    A solid of revolution with a foot ring, a flat well, a smooth cavetto and a rolled rim;
+    its collision is a handful of frustums of a coarser profile.
+    """
+    from infmob_usd.frames import Frame
+
+    R, H, t, rf = radius, height, wall, foot_r
+    wf = max(0.006, 0.08 * rf)  # foot ring width
+    hf = max(0.003, 0.18 * H)  # foot ring height
+    Rc = R - t / 2  # centre of the rolled rim
+    rw = rf + 0.3 * wf + 0.004  # the well is flat out to here, then the cavetto rises
+    c0, c1 = hf + t / 2, H - t / 2  # mid-surface height in the well and at the rim
+
+    def mid(r):
+        return c0 + (c1 - c0) * _smooth((np.asarray(r) - rw) / (Rc - rw))
+
+    foot = [(0.0, hf), (rf - wf, hf), (rf - 0.75 * wf, 0.0), (rf - 0.1 * wf, 0.0)]
+    under = [(r, mid(r) - t / 2) for r in np.linspace(rf + 0.3 * wf, Rc, 24)]
+    rim = [(Rc + t / 2 * np.cos(x), c1 + t / 2 * np.sin(x)) for x in np.linspace(-np.pi / 2, np.pi / 2, 9)[1:-1]]
+    top = [(r, mid(r) + t / 2) for r in np.linspace(Rc, 0.0, 28)]
+    fine = g.revolve(foot + under + rim + top, material, sections=PLATE_SECTIONS)
+    rh = rw + 0.5 * (Rc - rw)
+    coarse = g.revolve(foot + [(rw, hf), (rh, float(mid(rh)) - t / 2), (Rc, H - t), (R, c1), (Rc, H), (0.0, H)],
+                       material)
+    on_edge = Frame.at(z=(1, 0, 0), x=(0, 0, -1))
+    return fine.with_collision_of(coarse).transformed(on_edge.matrix)
+
+
+def dowel(x: float, y: float, z_lo: float, z_hi: float, r: float, material: str) -> list[g.Piece]:
+    """A prong: a cylinder with a domed top."""
+    return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, 16), g.sphere([x, y, z_hi - r], r, material)]
+
+
+def wood_rack(fences, xs, b, rp, z0, hp, base_h) -> tuple[list[g.Piece], float]:
+    """Two rails on two cross battens, dowels in the rails. Returns pieces and the support height."""
+    xa, xb = xs
+    hb = 0.4 * base_h + 0.006  # battens
+    wr = max(0.018, 3.2 * rp)
+    bw = 0.024
+    pieces = [g.box_between([x, -b - wr, z0], [x + bw, b + wr, z0 + hb], "frame", bevel=0.002) for x in (xa, xb - bw)]
+    zr = z0 + hb
+    zs = zr + base_h
+    for y in (-b, b):
+        pieces.append(g.box_between([xa, y - wr / 2, zr], [xb, y + wr / 2, zs], "frame", bevel=0.002))
+        for x in fences:
+            pieces += dowel(x, y, zs - 0.004, zs + hp, rp, "prong")
+    return pieces, zs
+
+
+def plastic_tray(fences, xs, b, rp, z0, hp, base_h, plate_r) -> tuple[list[g.Piece], float]:
+    """A moulded tray with round pegs; its side walls stand where a plate slid PLATE_SLIDE still clears them."""
+    xa, xb = xs
+    tf, wt = 0.004, 0.004  # floor and wall thickness
+    need = 0.002  # clearance kept from the wall's top edge
+    yw = PLATE_SLIDE + np.sqrt(max(0.0, (plate_r + need) ** 2 - (plate_r + SEAT_GAP - base_h) ** 2))
+    yw = max(yw, b + rp + 0.015)
+    zs = z0 + tf
+    pieces = [
+        g.box_between([xa - wt, -yw - wt, z0], [xb + wt, yw + wt, zs], "frame"),  # floor
+        g.box_between([xa - wt, -yw - wt, zs], [xb + wt, -yw, zs + base_h], "frame"),  # side walls
+        g.box_between([xa - wt, yw, zs], [xb + wt, yw + wt, zs + base_h], "frame"),
+        g.box_between([xa - wt, -yw, zs], [xa, yw, zs + base_h], "frame"),  # end walls
+        g.box_between([xb, -yw, zs], [xb + wt, yw, zs + base_h], "frame"),
+    ]
+    for y in (-b, b):
+        for x in fences:
+            pieces.append(g.cylinder([x, y, zs - 0.001], [x, y, zs + 0.006], rp * 1.6, "prong", 16))  # boss
+            pieces += dowel(x, y, zs, zs + hp, rp, "prong")
+    return pieces, zs
+
+
+def wire_rack(fences, xs, b, rw, hp, base_h) -> tuple[list[g.Piece], float]:
+    """Chrome wire: rails on rubber-capped legs, a cross wire and an arch at every fence."""
+    xa, xb = xs
+    cap = 0.007  # rubber cap height
+    zr = cap + base_h  # rail axis height
+    zs = zr + rw  # support: the rail tops
+    top = zs + hp - rw  # axis of the arch's top bar
+    pieces = []
+    for y in (-b, b):
+        pieces.append(g.cylinder([xa, y, zr], [xb, y, zr], rw, "frame", 12))
+        for x in (xa + 0.012, xb - 0.012):
+            pieces.append(g.cylinder([x, y, cap - 0.001], [x, y, zr], rw, "frame", 12))
+            pieces.append(g.cylinder([x, y, 0.0], [x, y, cap], 0.0055, "feet", 16))
+    for x in fences:
+        pieces.append(g.cylinder([x, -b - 0.01, zr - rw], [x, b + 0.01, zr - rw], rw, "frame", 12))
+        for y in (-b, b):
+            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", 12), g.sphere([x, y, top], rw, "prong")]
+        pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", 12))
+    return pieces, zs
+
+
+def pads(pieces, xs) -> list[g.Piece]:
+    """Four rubber pads under the corners of a rack body (it stands on them)."""
+    lo = np.array([pc.bounds[0] for pc in pieces]).min(0)
+    hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
+    return [g.cylinder([x, y, lo[2] - 0.006], [x, y, lo[2] + 0.001], 0.007, "feet", 16)
+            for x in (xs[0] + 0.012, xs[1] - 0.012) for y in (lo[1] + 0.012, hi[1] - 0.012)]

@@ -1,0 +1,239 @@
+"""Table parts: tops (square, round, oval, split halves), aprons, legs, shelves, sleeves, pedestals.
+
+Local frames: a table stands on z = 0 centred on the z axis; a leg stands on the
+origin and rises along +z. Sizes of real tables: coffee tables 0.40-0.75 m high,
+0.5-1.0 m across; dining tables 0.70-0.80 m high, 0.9-1.2 m wide, 1.4-2.8 m long,
+18-25 mm apron boards, 25-45 mm tops (furniture retailers' catalogues, BS EN 12521).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.frames import Frame, polar
+
+BOARD = 0.018  # apron and shelf board
+WALL = 0.003  # metal tube wall
+CLEAR = 0.004  # radial clearance of posts and columns in their tubes
+FOOT = 0.012  # rubber foot cap height
+
+
+def _hull(points, material: str) -> g.Piece:
+    v, f = g.hull_arrays(np.asarray(points, float))
+    return g.Piece(v, f, material, [v])
+
+
+# -- tops ---------------------------------------------------------------------------------------------
+def outline(length: float, width: float, shape: str, n: int = 96) -> np.ndarray:
+    """``(k, 2)`` outline of a top, counter-clockwise: rectangular/square, or round/oval (an ellipse)."""
+    if shape in ("round", "oval"):
+        th = np.linspace(0, 2 * math.pi, n, endpoint=False)
+        return np.c_[length / 2 * np.cos(th), width / 2 * np.sin(th)]
+    return np.array([[length / 2, width / 2], [-length / 2, width / 2], [-length / 2, -width / 2],
+                     [length / 2, -width / 2]])
+
+
+def slab(xy: np.ndarray, z0: float, z1: float, bevel: float, material: str) -> g.Piece:
+    """A convex slab over a convex outline, its top and bottom edges bevelled toward the centre."""
+    bevel = min(bevel, 0.45 * (z1 - z0))
+    c = xy.mean(0)
+    pts = []
+    for z, shrink in ((z0, bevel), (z0 + bevel, 0.0), (z1 - bevel, 0.0), (z1, bevel)):
+        d = xy - c
+        scale = 1.0 - shrink / np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-9)
+        pts.append(np.c_[c + d * scale, np.full(len(xy), z)])
+    return _hull(np.vstack(pts), material)
+
+
+def top(length: float, width: float, shape: str, z0: float, z1: float, bevel: float, material: str) -> g.Piece:
+    """A whole top from ``z0`` to ``z1``."""
+    return slab(outline(length, width, shape, 72 if shape == "round" else 96), z0, z1, bevel, material)
+
+
+def half_top(length: float, width: float, shape: str, z0: float, z1: float, split: float, side: int,
+             material: str) -> g.Piece:
+    """One half of a top split across x at ``+-split / 2``, on the ``side`` (+1 or -1) of x = 0."""
+    xy = outline(length, width, shape, 192)
+    xs = split / 2
+    keep = xy[side * xy[:, 0] > xs + 1e-4]
+    yc = width / 2 * math.sqrt(max(0.0, 1 - (2 * xs / length) ** 2)) if shape == "oval" else width / 2
+    return slab(np.vstack([keep, [[side * xs, yc], [side * xs, -yc]]]), z0, z1, 0.15 * (z1 - z0), material)
+
+
+# -- legs ------------------------------------------------------------------------------------------------
+LEG_STYLES = {
+    # coffee table: a turned leg with a narrow foot swelling to a square block; a slim taper
+    "coffee": dict(base=0.55, rise=0.25, swell=0.22, a=1.4, b=0.0, cap=1.0, block=0.12, max_block=0.08,
+                   shoulder=0.7, n=14, taper=0.6, bevel=0.002),
+    # dining table: a fuller swelling under a longer block that meets the apron
+    "dining": dict(base=0.5, rise=0.2, swell=0.28, a=1.6, b=-0.2, cap=0.95, block=0.2, max_block=1.0,
+                   shoulder=0.0, n=20, taper=0.55, bevel=0.003),
+}
+"""Leg proportions per kind of table. A turned profile's radius is
+``r * (base + rise t + swell sin^2(pi clip(a t + b, 0, 1)))``, capped at ``cap * r``, ``t`` from
+foot (0) to the block (1); ``taper``: the foot of a tapered leg as a fraction of its top."""
+
+
+def leg(style: str, radius: float, height: float, material: str, kind: str = "coffee") -> list[g.Piece]:
+    """A leg standing on the origin, ``radius`` (half its side) at the top: square, tapered or turned."""
+    r, k = radius, LEG_STYLES[kind]
+    if style == "square":
+        return [g.box_between([-r, -r, 0], [r, r, height], material, bevel=k["bevel"])]
+    if style == "tapered":
+        rb = k["taper"] * r
+        return [_hull([[sx * rr, sy * rr, z] for rr, z in ((rb, 0.0), (r, height)) for sx in (-1, 1)
+                       for sy in (-1, 1)], material)]
+    block = min(k["block"] * height, k["max_block"])
+    zz = np.linspace(0.0, height - block, k["n"])
+    t = zz / (height - block)
+    rad = r * (k["base"] + k["rise"] * t + k["swell"] * np.sin(math.pi * np.clip(k["a"] * t + k["b"], 0, 1)) ** 2)
+    prof = [(0.0, 0.0), *zip(np.minimum(rad, k["cap"] * r), zz)]
+    if k["shoulder"]:
+        prof.append((k["shoulder"] * r, height - block))
+    prof.append((0.0, height - block))
+    return [g.revolve(prof, material, sections=48),
+            g.box_between([-r, -r, height - block - 0.001], [r, r, height], material)]
+
+
+def leg_frames(width: float, shape: str, inset: float, count: int) -> list[Frame]:
+    """Where legs stand under a top ``width`` across: 4 at the corners of a square, or ``count``
+    evenly around a round top (a 4-legged round table has them at 45 degrees)."""
+    if shape == "round":
+        return polar(Frame.at(), count, width / 2 - inset, math.pi / 4 if count == 4 else 0.0)
+    a = width / 2 - inset
+    return [Frame.at((sx * a, sy * a, 0)) for sx in (-1, 1) for sy in (-1, 1)]
+
+
+def corner_frames(length: float, width: float, inset: float) -> list[Frame]:
+    """Four corners of a ``length`` x ``width`` rectangle, ``inset`` in from each side."""
+    return [Frame.at((sx * (length / 2 - inset), sy * (width / 2 - inset), 0)) for sx in (1, -1) for sy in (1, -1)]
+
+
+# -- aprons, shelves, bottoms --------------------------------------------------------------------------------
+def apron(width: float, shape: str, inset: float, leg_r: float, z0: float, z1: float, material: str
+          ) -> list[g.Piece]:
+    """A frame of boards (square) or a ring (round) running through the leg tops."""
+    if shape == "round":
+        r = width / 2 - inset
+        return [g.shell([(r + BOARD / 2, z0), (r + BOARD / 2, z1)], BOARD, material, sections=64)]
+    a = width / 2 - inset + leg_r  # flush with the legs' outside
+    return [g.box_between([-a, -a, z0], [a, -a + BOARD, z1], material),
+            g.box_between([-a, a - BOARD, z0], [a, a, z1], material),
+            g.box_between([-a, -a + BOARD, z0], [-a + BOARD, a - BOARD, z1], material),
+            g.box_between([a - BOARD, -a + BOARD, z0], [a, a - BOARD, z1], material)]
+
+
+def apron_rails(length: float, width: float, leg_w: float, z0: float, z1: float, board: float, material: str,
+                holes: dict[int, list] | None = None) -> list[g.Piece]:
+    """A rectangular apron of four boards between corner legs ``leg_w`` wide: long sides (y = +-width/2,
+    each with the drawer openings ``holes[+1 | -1]``, rectangles (x0, z0, x1, z1)) and short ends."""
+    holes = holes or {}
+    xb = length / 2 - leg_w  # the long boards run between the legs
+    ye = width / 2 - max(leg_w, board)  # the end boards run between the long ones
+    out = []
+    for s in (1, -1):
+        y0, y1 = sorted((s * width / 2, s * (width / 2 - board)))
+        out.append(g.panel([-xb, y0, z0], [xb, y1, z1], material, "y", holes=holes.get(s, [])))
+        x0, x1 = sorted((s * length / 2, s * (length / 2 - board)))
+        out.append(g.box_between([x0, -ye, z0], [x1, ye, z1], material))
+    return out
+
+
+def apron_bottom(width: float, shape: str, inset: float, leg_r: float, z0: float, material: str) -> g.Piece:
+    """The floor of a lift-top's storage box, at the bottom of the apron."""
+    t = 0.012
+    if shape == "round":
+        return g.disc([0, 0, z0 + t / 2], width / 2 - inset, t, material, 64)
+    a = width / 2 - inset + leg_r - BOARD
+    return g.box_between([-a, -a, z0], [a, a, z0 + t], material)
+
+
+def shelf(width: float, shape: str, inset: float, leg_r: float, z: float, material: str) -> g.Piece:
+    """A lower shelf between the legs, touching them from inside."""
+    if shape == "round":
+        return g.disc([0, 0, z], width / 2 - inset - leg_r, BOARD, material, 64)
+    a = width / 2 - inset - leg_r
+    return g.box_between([-a, -a, z - BOARD / 2], [a, a, z + BOARD / 2], material)
+
+
+def stretchers(frames: list[Frame], z: float, end_r: float, material: str, square: bool) -> list[g.Piece]:
+    """Low round rods between neighbouring legs (``square``: around the four corners), ending in them."""
+    c = [f.origin[:2] for f in frames]
+    pairs = list(zip(c, c[1:] + c[:1])) if not square else [(c[0], c[1]), (c[2], c[3]), (c[0], c[2]), (c[1], c[3])]
+    out = []
+    for c0, c1 in pairs:
+        a0, a1 = np.array([*c0, z]), np.array([*c1, z])
+        d = (a1 - a0) / np.linalg.norm(a1 - a0)
+        out.append(g.cylinder(a0 + d * (end_r - 0.0015), a1 - d * (end_r - 0.0015), 0.008, material, 16))
+    return out
+
+
+# -- telescopic supports -----------------------------------------------------------------------------------
+def round_sleeve(outer_r: float, top: float, material: str, foot: str) -> list[g.Piece]:
+    """A round metal sleeve standing on a rubber foot cap (hollow: a post slides in it)."""
+    return [g.shell([(outer_r, FOOT), (outer_r, top)], WALL, material, sections=48, convex_sectors=24),
+            g.cylinder([0, 0, 0.0], [0, 0, FOOT], outer_r + 0.003, foot, 32)]
+
+
+def square_sleeve(width: float, z0: float, z1: float, wall: float, material: str) -> list[g.Piece]:
+    """A square tube of four walls (hollow for an inner leg) with a cap at the top."""
+    r, t = width / 2, wall
+    return [g.box_between([-r, -r, z0], [r, -r + t, z1], material),
+            g.box_between([-r, r - t, z0], [r, r, z1], material),
+            g.box_between([-r, -r + t, z0], [-r + t, r - t, z1], material),
+            g.box_between([r - t, -r + t, z0], [r, r - t, z1], material),
+            g.box_between([-r, -r, z1 - 0.01], [r, r, z1], material)]
+
+
+def inner_leg(width: float, top: float, material: str, foot: str) -> list[g.Piece]:
+    """A square inner leg on a rubber foot, standing on the origin."""
+    w = width / 2
+    return [g.box_between([-w, -w, FOOT], [w, w, top], material, bevel=0.002),
+            g.box_between([-w - 0.002, -w - 0.002, 0.0], [w + 0.002, w + 0.002, FOOT], foot)]
+
+
+def pedestal_base(radius: float, tube_r: float, material: str) -> tuple[list[g.Piece], float]:
+    """A low domed base disc under a column tube; returns pieces and the base top."""
+    zb = 0.03
+    prof = [(0.0, 0.0), (radius, 0.0), (radius, 0.008), (0.85 * radius, 0.016), (0.45 * radius, zb - 0.004),
+            (tube_r + 0.01, zb), (0.0, zb)]
+    return [g.revolve(prof, material, sections=64)], zb
+
+
+def column_tube(outer_r: float, z0: float, z1: float, material: str) -> list[g.Piece]:
+    """A hollow column tube with a collar at its top."""
+    return [g.shell([(outer_r, z0), (outer_r, z1)], WALL, material, sections=64, convex_sectors=24),
+            g.shell([(outer_r + 0.006, z1 - 0.015), (outer_r + 0.006, z1)], 0.006, material, sections=64,
+                    convex_sectors=24)]
+
+
+# -- dining-table pedestals --------------------------------------------------------------------------------
+TRESTLE_LENGTH = 1.9  # tables longer than this stand on two columns (trestle style)
+
+
+def pedestals(table_length: float, apron_length: float, apron_width: float, table_width: float, column_r: float,
+              z_top: float, material: str) -> list[g.Piece]:
+    """One turned column (two on a long table) on a foot, under cross beams ending at ``z_top``."""
+    La, Wa = apron_length, apron_width
+    zb0 = z_top - 0.04
+    xs = [0.0] if table_length <= TRESTLE_LENGTH else [-0.27 * La, 0.27 * La]
+    pieces = [g.box_between([-La / 2, -0.035, zb0], [La / 2, 0.035, z_top], material)]
+    for x in xs:
+        pieces.append(g.box_between([x - 0.035, -Wa / 2, zb0], [x + 0.035, Wa / 2, z_top], material))
+        zz = np.linspace(0.06, zb0, 16)
+        t = (zz - zz[0]) / (zz[-1] - zz[0])
+        rad = column_r * (1.0 - 0.25 * np.sin(math.pi * t) + 0.35 * (1 - t) ** 4)
+        pieces.append(g.revolve([(0.0, 0.06), *zip(rad, zz), (0.0, zb0)], material, center=(x, 0, 0), sections=48))
+        if len(xs) == 1:  # a round domed foot
+            rf = 0.32 * table_width
+            pieces.append(g.revolve([(0.0, 0.0), (rf, 0.0), (rf, 0.02), (0.7 * rf, 0.045), (1.3 * column_r, 0.065),
+                                     (0.0, 0.065)], material, center=(x, 0, 0), sections=64))
+        else:  # a trestle foot across
+            pieces.append(g.box_between([x - 0.05, -0.36 * table_width, 0.0], [x + 0.05, 0.36 * table_width, 0.065],
+                                        material, bevel=0.01))
+    if len(xs) == 2:  # a low stretcher between the two columns
+        pieces.append(g.box_between([xs[0], -0.025, 0.18], [xs[1], 0.025, 0.23], material))
+    return pieces

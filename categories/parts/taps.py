@@ -1,0 +1,176 @@
+"""Tap parts: columns, lever cartridges, valve handles, swept spouts with aerators, deck plates.
+
+Local frames: everything stands on the deck plane z = 0 (the deck plate's underside) with the
+main column on the z axis and the spout reaching toward +x. Sizes of real kitchen and basin
+mixers: 15-40 cm tall, 35-60 mm deck plates (up to 25 cm for a bridge or widespread set), spout
+tubes 14-24 mm across, lever arms 4-12 cm (manufacturers' dimension sheets: Grohe, Hansgrohe).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.frames import Frame, polar
+
+GAP = 0.003  # clearance around every moving part
+DECK_T = 0.01  # deck plate thickness
+TUBE = 0.0015  # wall of a spout tube (it is a hollow pipe)
+CAP_H = 0.03  # lever cartridge cap height
+HUB_R = 0.013  # valve handle hub radius
+HUB_H = 0.024
+RISER_R = 0.016  # valve riser radius
+RISER_H = 0.018
+
+
+def _hull(points, material: str, name: str = "") -> g.Piece:
+    v, f = g.hull_arrays(np.asarray(points, float))
+    return g.Piece(v, f, material, [v], name)
+
+
+def column(xy, z0: float, z1: float, r: float, flare: float = 1.25, dome: bool = False) -> g.Piece:
+    """A column of revolution from the deck (flared foot) to ``z1`` (flat or domed top)."""
+    h = z1 - z0
+    prof = [(0, 0), (flare * r, 0), (flare * r, min(0.004, 0.1 * h)), (r, min(0.012, 0.3 * h))]
+    prof += [(r, h - 0.5 * r), (0.7 * r, h - 0.1 * r), (0, h)] if dome else [(r, h - 0.002), (r - 0.002, h), (0, h)]
+    return g.revolve(prof, "metal", center=(xy[0], xy[1], z0), sections=40)
+
+
+def lever(xy, z0: float, r_cap: float, arm: float) -> tuple[list[g.Piece], Frame]:
+    """A cartridge cap on a column and an arm forward. Returns the pieces and the tilt hinge: on the
+    cap's back bottom edge, z along -y (a positive turn lifts the arm)."""
+    x, y = xy
+    cap = g.revolve([(0, 0), (r_cap, 0), (r_cap, 0.7 * CAP_H), (0.8 * r_cap, CAP_H), (0, CAP_H)], "metal",
+                    center=(x, y, z0), sections=40)
+    w, t = min(0.016, 1.2 * r_cap), 0.008
+    rise, zt = 0.25 * arm, z0 + 0.6 * CAP_H
+    pts = [[x + 0.3 * r_cap, y + s * w / 2, zt + dz] for s in (-1, 1) for dz in (0, t)]
+    pts += [[x + r_cap + arm, y + s * 0.35 * w, zt + rise + dz] for s in (-1, 1) for dz in (0.001, 0.7 * t)]
+    return [cap, _hull(pts, "metal", "handle")], Frame.at((x - r_cap, y, z0), x=(1, 0, 0), z=(0, -1, 0))
+
+
+def highest_when_tilted(pieces, hinge: Frame, tilt: float) -> float:
+    """Highest point of ``pieces`` turned about ``hinge.z`` by any angle in [0, tilt]."""
+    v = np.vstack([pc.vertices for pc in pieces])
+    return max(float(hinge.point(Frame.at().turned("z", th).point(hinge.local(v)))[:, 2].max())
+               for th in np.linspace(0, tilt, 9))
+
+
+def valve_handle(xy, z0: float, reach: float, kind: str, slot: str) -> list[g.Piece]:
+    """A hub with four spokes (cross) or one arm forward (lever), and a hot/cold button."""
+    x, y = xy
+    pieces = [g.revolve([(0, 0), (HUB_R, 0), (HUB_R, 0.018), (0.8 * HUB_R, HUB_H), (0, HUB_H)], "metal",
+                        center=(x, y, z0), sections=32)]
+    zs = z0 + 0.014
+    if kind == "cross":
+        for spoke in polar(Frame.at((x, y, zs)).turned("z", math.pi / 4), 4, 0.0):
+            d = spoke.x
+            pieces.append(g.cylinder(spoke.origin + 0.5 * HUB_R * d, spoke.origin + reach * d, 0.0045, "metal", 12,
+                                     name="handle"))
+            pieces.append(g.sphere(spoke.origin + reach * d, 0.0065, "metal", name="handle"))
+    else:
+        pts = [[x + 0.5 * HUB_R, y + s * 0.006, zs + dz] for s in (-1, 1) for dz in (-0.004, 0.004)]
+        pts += [[x + reach, y + s * 0.004, zs + 0.006 + dz] for s in (-1, 1) for dz in (-0.003, 0.003)]
+        pieces.append(_hull(pts, "metal", "handle"))
+    pieces.append(g.disc([x, y, z0 + HUB_H + 0.0005], 0.6 * HUB_R, 0.002, slot))
+    return pieces
+
+
+# -- spouts: swept tubes ----------------------------------------------------------------------------------
+def _ring(c, t, r, n=16):
+    f = Frame.at(c, z=t)
+    th = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    return f.point(np.c_[r * np.cos(th), r * np.sin(th), np.zeros(n)])
+
+
+def tube(points, r: float) -> list[g.Piece]:
+    """A hollow pipe along a centre line: convex hulls between consecutive rings."""
+    pts = np.asarray(points, float)
+    keep = [0] + [i for i in range(1, len(pts)) if np.linalg.norm(pts[i] - pts[i - 1]) > 1e-6]
+    pts = pts[keep]
+    tan = np.gradient(pts, axis=0)
+    return [_hull(np.vstack([_ring(pts[i], tan[i], r), _ring(pts[i + 1], tan[i + 1], r)]), "metal").with_sheet(TUBE)
+            for i in range(len(pts) - 1)]
+
+
+def _line(p0, p1, n):
+    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+    return [p0 + (p1 - p0) * k / n for k in range(n + 1)]
+
+
+def _arc(centre, radius, a0, a1, n):
+    """Points in the xz plane: centre + radius (cos a, 0, sin a)."""
+    c = np.asarray(centre, float)
+    return [c + radius * np.array([math.cos(a), 0.0, math.sin(a)]) for a in np.linspace(a0, a1, n + 1)]
+
+
+def outlet(tip, r: float) -> list[g.Piece]:
+    """An aerator hanging from the tube end at ``tip`` (the outlet's top centre)."""
+    x, _, z = tip
+    return [g.cylinder([x, 0, z - 0.02], [x, 0, z + 0.002], 1.12 * r, "metal", 24),
+            g.cylinder([x, 0, z - 0.0205], [x, 0, z - 0.019], 0.8 * r, "aerator", 16)]
+
+
+def top_spout(shape: str, reach: float, r: float, z0: float, height: float, z_low: float) -> list[g.Piece]:
+    """A spout continuing a riser upward from ``z0``: a gooseneck (inverted U), ``curved`` (up, over
+    and down) or ``straight`` (up, then forward); the outlet's bottom stays at or above ``z_low``."""
+    top = height - r  # centre line of the highest point
+    if shape == "gooseneck":
+        R = max(min(reach / 2, 0.45 * (top - z0), top - z_low - r - 0.005), 0.02)
+        z_end = max(z_low + 0.02, top - R - 0.5 * (top - R - z0))
+        pts = _line([0, 0, z0], [0, 0, top - R], 6) + _arc([R, 0, top - R], R, math.pi, 0, 16)[1:]
+        pts += _line([2 * R, 0, top - R], [2 * R, 0, z_end], 4)[1:]
+        tip = (2 * R, 0, z_end)
+    else:
+        R = max(min(0.04, 0.4 * (top - z0), top - z_low - r - 0.005), 0.015)
+        pts = _line([0, 0, z0], [0, 0, top - R], 6) + _arc([R, 0, top - R], R, math.pi, math.pi / 2, 8)[1:]
+        if shape == "curved":
+            R2 = min(0.035, 0.4 * (top - z_low - 0.02), 0.3 * reach)
+            x2 = max(reach - R2, R + 0.01)
+            pts += _line([R, 0, top], [x2, 0, top], 6)[1:] + _arc([x2, 0, top - R2], R2, math.pi / 2, 0, 8)[1:]
+            tip = (x2 + R2, 0, top - R2)
+        else:
+            x2 = max(reach, R + 0.03)
+            pts += _line([R, 0, top], [x2, 0, top], 8)[1:]
+            tip = (x2 - r, 0, top - 0.6 * r)
+    return tube(pts, r) + outlet(tip, r)
+
+
+def collar_spout(shape: str, reach: float, r: float, rb: float, z_cm: float, hc: float, deck: float
+                 ) -> list[g.Piece]:
+    """A ring around a column of radius ``rb`` (radial gap ``GAP``) and a tube leaving it forward."""
+    wall = 0.004
+    r_in = rb + GAP
+    collar = g.shell([(r_in + wall, z_cm - hc / 2), (r_in + wall, z_cm + hc / 2)], wall, "metal", sections=40)
+    x0 = r_in + 0.5 * wall
+    room = z_cm - deck - 0.05  # the outlet stays 5 cm above the deck
+    if shape == "curved":
+        R2 = float(np.clip(0.35 * reach, 0.015, max(0.015, room - r)))
+        x2 = max(reach - R2, x0 + 0.02)
+        pts = _line([x0, 0, z_cm], [x2, 0, z_cm], 8) + _arc([x2, 0, z_cm - R2], R2, math.pi / 2, 0, 8)[1:]
+        tip = (x2 + R2, 0, z_cm - R2)
+    else:
+        drop = min(math.tan(math.radians(8)) * reach, max(room - 0.02, 0.0))
+        pts = _line([x0, 0, z_cm], [reach, 0, z_cm - drop], 10)
+        tip = (reach - r, 0, z_cm - drop - 0.6 * r)
+    return [collar] + tube(pts, r) + outlet(tip, r)
+
+
+# -- deck plates --------------------------------------------------------------------------------------------
+def deck(width: float, depth: float, shape: str, bridge: bool) -> list[g.Piece]:
+    """The deck plate (round, an obround bridge, or a bevelled rectangle) and its rubber gasket."""
+    if shape == "round" and not bridge:
+        r = width / 2
+        return [g.revolve([(0, 0), (r, 0), (r, 0.6 * DECK_T), (r - 0.004, DECK_T), (0, DECK_T)], "metal", sections=48),
+                g.disc([0, 0, -0.001], width / 2 - 0.004, 0.002, "seal")]
+    if shape == "round":
+        th = np.linspace(0, 2 * np.pi, 32, endpoint=False)
+        pts = [np.c_[r * np.cos(th), y + r * np.sin(th), np.full(32, z)]
+               for y in (-(width - depth) / 2, (width - depth) / 2)
+               for z, r in ((0, depth / 2), (0.6 * DECK_T, depth / 2), (DECK_T, depth / 2 - 0.004))]
+        return [_hull(np.vstack(pts), "metal")]
+    return [g.box_between([-depth / 2, -width / 2, 0], [depth / 2, width / 2, DECK_T], "metal", bevel=0.003),
+            g.box_between([-depth / 2 + 0.004, -width / 2 + 0.004, -0.002], [depth / 2 - 0.004, width / 2 - 0.004, 0.0],
+                          "seal")]
