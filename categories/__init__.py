@@ -1,11 +1,9 @@
 """The categories: one module per category, each describing what that object is.
 
 Every module in this package (``parts`` aside) is a category named after the
-module. A module expressed through parts and the growth grammar declares
-``CATEGORY = Category(...)`` (see ``infmob_usd.category`` and
-``docs/ADDING_A_CATEGORY.md``); a module not yet converted still defines
-``SCHEMA``, ``GROWTH`` and ``build(p, structure, geometry) -> Blueprint`` and is
-wrapped. Registration is discovery: adding a module adds a category.
+module: it declares ``CATEGORY = Category(...)`` (see ``infmob_usd.category`` and
+``docs/ADDING_A_CATEGORY.md``). Registration is discovery: adding a module adds a
+category.
 """
 
 from __future__ import annotations
@@ -29,4 +27,4 @@ def _discover() -> dict:
 
 
 CATEGORIES = _discover()
-"""Category id -> its :class:`~infmob_usd.category.Category` (or legacy wrapper), sorted by id."""
+"""Category id -> its :class:`~infmob_usd.category.Category`, sorted by id."""

@@ -71,14 +71,17 @@ GRAMMAR = Grammar("lamp", {
     "lamp": Node(label="base", required=("pole", "arm"), optional={"bulb": 0.85, "switch": 0.5}),
     "pole": Node(label="pole"),
     "arm": Node(one_of={"straight": 0.45, "curved": 0.2, "chain": 0.35}, choice="arm_style"),
-    "straight": Node(label="head"),
-    "curved": Node(label="arm"),
-    "chain": Node(label="arm"),
+    "straight": Node(required=("head",)),
+    "curved": Node(label="arm", required=("head",)),
+    "chain": Node(label="arm", required=("head",)),
+    "head": Node(label="head", required=("shade",)),
+    "shade": Node(label="shade"),
     "bulb": Node(label="bulb"),
     "switch": Node(label="switch"),
 })
 """A ``straight`` arm is a head on the pole top; ``curved`` an arc the head hangs from; ``chain`` 2-3
-segments like an architect lamp (the segments after the first pitch or swing, drawn per segment)."""
+segments like an architect lamp (the segments after the first pitch or swing, drawn per segment).
+Every head carries its shade."""
 
 PARAMS = (
     Choice("lamp_type", "desk lamp or floor lamp", choices=("desk", "floor"), weights=(0.7, 0.3)),
@@ -117,8 +120,9 @@ MATERIALS = {
     "bulb": BULB_GLASS, "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
 }
 
-OWNERS = {"base": "lamp", "lower_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch"}
-"""Which grown node makes each part of the lamp; the others (head, shade, arm segments) are the arm's."""
+OWNERS = {"base": "lamp", "lower_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch",
+          "head": "head", "shade": "shade"}
+"""Which grown node makes each part of the lamp; the others (the arm's bars and segments) are the arm's."""
 
 
 class LampLayout(Layout):
@@ -144,7 +148,17 @@ class LampLayout(Layout):
     def arm(self, node, made, names):
         self.grow(node.one(node.choice), made=made, names=names)
 
-    straight = curved = chain = _parts
+    def _style(self, node, made, names):
+        self._parts(node, made, names)
+        self.grow(node.one("head"), made=made, names=["head"])
+
+    straight = curved = chain = _style
+
+    def head(self, node, made, names):
+        self._parts(node, made, names)
+        self.grow(node.one("shade"), made=made, names=["shade"])
+
+    shade = _parts
 
 
 CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS)

@@ -139,6 +139,11 @@ class Assembly:
     def with_anchors(self, **anchors: Frame) -> Assembly:
         return Assembly(self.parts, self.joints, {**self.anchors, **anchors}, self.supports)
 
+    @property
+    def pieces(self) -> tuple[Piece, ...]:
+        """Every piece of every part, in order (to fuse the assembly into another part)."""
+        return tuple(pc for p in self.parts.values() for pc in p.pieces)
+
     def bounds(self) -> np.ndarray:
         """``(2, 3)`` bounds of every piece."""
         b = np.array([pc.bounds for p in self.parts.values() for pc in p.pieces])

@@ -1,11 +1,10 @@
-"""What a category hands the core: parts in world coordinates, joints, growth rules.
+"""What a category hands the core: parts in world coordinates and the joints between them.
 
 A :class:`Blueprint` is a tree of :class:`Part` s joined by
 :class:`~infmob_usd.joints.JointSpec` s, all at rest in world coordinates
 (metres, Z up, front faces +X), plus the material family of every material
-slot its pieces name. :class:`Growth` holds a category's growth rules as data:
-which children a node requires, which it may grow and with what chance, and
-which alternatives it picks between.
+slot its pieces name. A category's growth rules live in
+:mod:`infmob_usd.grammar`, which grows the tree a blueprint is built from.
 """
 
 from __future__ import annotations
@@ -19,7 +18,6 @@ from .assembly import Placed
 from .errors import ModelError
 from .geometry import Piece
 from .joints import JointSpec
-from .params import Flag
 from .rotation import motion
 
 
@@ -152,54 +150,3 @@ def dof_motion(dof, value: float) -> np.ndarray:
     if dof.type != "prismatic":  # about the axis through the pivot
         m[:3, 3] = o - m[:3, :3] @ o
     return m
-
-
-@dataclass(frozen=True)
-class Rule:
-    """The growth rule of one node of a category's articulation tree.
-
-    ``required``: children it always has. ``optional``: branches it may grow,
-    with their chance (object-wide decisions, each also a ``has_<branch>``
-    parameter the user can force). ``one_of``: alternatives with weights,
-    drawn per instance from the structure stream.
-    """
-
-    required: tuple[str, ...] = ()
-    optional: dict[str, float] = field(default_factory=dict)
-    one_of: dict[str, float] = field(default_factory=dict)
-
-
-class Growth:
-    """A category's growth rules as a table, readable and printable."""
-
-    def __init__(self, **rules: Rule) -> None:
-        self.rules = rules
-
-    def flags(self) -> tuple[Flag, ...]:
-        """One ``has_<branch>`` parameter per optional branch."""
-        return tuple(
-            Flag(f"has_{branch}", doc=f"optional branch of {node}", p=p)
-            for node, rule in self.rules.items()
-            for branch, p in rule.optional.items()
-        )
-
-    def choose(self, node: str, rng: np.random.Generator) -> str:
-        """Draw one of the node's alternatives by weight."""
-        alts = self.rules[node].one_of
-        names = list(alts)
-        w = np.array([alts[n] for n in names], float)
-        return names[int(rng.choice(len(names), p=w / w.sum()))]
-
-    def table(self) -> str:
-        lines = []
-        for node, r in self.rules.items():
-            parts = []
-            if r.required:
-                parts.append("requires " + ", ".join(r.required))
-            if r.optional:
-                parts.append("may grow " + ", ".join(f"{b} ({p:g})" for b, p in r.optional.items()))
-            if r.one_of:
-                total = sum(r.one_of.values())
-                parts.append("one of " + " / ".join(f"{b} ({w / total:.2f})" for b, w in r.one_of.items()))
-            lines.append(f"{node}: " + "; ".join(parts))
-        return "\n".join(lines)

@@ -2,8 +2,9 @@
 
 A category is a :class:`Category`: its id, a one-line description, its own
 parameter schema, its growth :class:`~infmob_usd.grammar.Grammar`, its material
-slots as data (slot -> material family, or the name of a parameter whose value
-is the family: the core resolves it), and its :class:`~infmob_usd.grammar.Layout`
+slots as data (slot -> material family, the name of a parameter whose value
+is the family, or a ``(parameter, {value: family})`` pair: the core resolves
+it), and its :class:`~infmob_usd.grammar.Layout`
 (one method per node kind). The module exposes it as ``CATEGORY``; the registry
 in ``infmob_usd.categories`` finds every module that does (no list to edit).
 
@@ -34,7 +35,7 @@ class Category:
     params: tuple
     grammar: Grammar
     layout: type[Layout]
-    materials: Mapping[str, str] = field(default_factory=dict)
+    materials: Mapping[str, str | tuple[str, Mapping[str, str]]] = field(default_factory=dict)
     derive: Callable[[dict], dict] | None = None
     """Parameters that follow from others, applied after sampling and overrides, before growing
     (e.g. a table that would grow no moving part gets its extension)."""
@@ -69,8 +70,9 @@ class Category:
         parameter (or of a value ``derive`` adds) whose value is the family, or
         ``(parameter, {value: family})`` where some values of the parameter name a family spec other
         than themselves (a ``"plastic"`` finish that
-        means black plastic).
+        means black plastic). An ``"auto"`` choice counts as the alternative it resolves to.
         """
+        params = self.grammar.resolve(params)
         out = {}
         for slot, v in self.materials.items():
             if isinstance(v, tuple):
@@ -81,9 +83,14 @@ class Category:
         return {k: self.palette(v) for k, v in out.items()} if self.palette else out
 
     def build(self, params: dict, structure: np.random.Generator, geometry: np.random.Generator) -> Blueprint:
-        """Grow the tree from the structure stream and build it into a blueprint at rest."""
+        """Grow the tree from the structure stream and build it into a blueprint at rest.
+
+        ``derive`` and then the grammar's ``"auto"`` choices (:meth:`Grammar.resolve`) update ``params``
+        first: the layout, the materials and the recorded parameters see what was built.
+        """
         if self.derive is not None:
             params.update(self.derive(dict(params)))
+        params.update(self.grammar.resolve(params))
         tree = self.grammar.grow(params, structure)
         bp = Blueprint(self.id, materials=self.resolve_materials(params))
         layout = self.layout(bp, params, geometry, self.grammar)
@@ -91,30 +98,9 @@ class Category:
         return bp
 
 
-@dataclass(frozen=True, eq=False)
-class LegacyCategory:
-    """A module not yet expressed through parts and the grammar: ``SCHEMA``, ``GROWTH``, ``build``."""
-
-    id: str
-    doc: str
-    schema: Schema
-    growth: object
-    build: Callable[[dict, np.random.Generator, np.random.Generator], Blueprint]
-
-    def rules(self) -> str:
-        return self.growth.table()
-
-    @classmethod
-    def from_module(cls, category_id: str, module: ModuleType) -> LegacyCategory:
-        doc = (module.__doc__ or "").strip().splitlines()[0] if module.__doc__ else category_id
-        return cls(category_id, doc, module.SCHEMA, module.GROWTH, module.build)
-
-
-def of_module(category_id: str, module: ModuleType) -> Category | LegacyCategory:
-    """The category a module declares (``CATEGORY``), or its legacy wrapper."""
+def of_module(category_id: str, module: ModuleType) -> Category:
+    """The category a module declares as ``CATEGORY``."""
     found = getattr(module, "CATEGORY", None)
-    if found is None:
-        return LegacyCategory.from_module(category_id, module)
     if not isinstance(found, Category) or found.id != category_id:
         raise ModelError(f"module {module.__name__}: CATEGORY must be a Category with id {category_id!r}")
     return found

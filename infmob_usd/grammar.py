@@ -47,6 +47,10 @@ class Node:
     ``choice``: the name of an object-wide choice parameter for ``one_of``
     (drawn by the schema with the same weights; the user can force it); empty:
     drawn per instance from the structure stream.
+    ``auto``: for an object-wide choice, how its default value ``"auto"`` is
+    resolved from the other parameters (a bottle's usual closure follows its
+    profile); the parameter then draws ``"auto"`` and the user may force any
+    alternative.
     """
 
     label: str | tuple[str, ...] | None = None
@@ -55,6 +59,7 @@ class Node:
     one_of: Mapping[str, float] = field(default_factory=dict)
     repeat: Mapping[str, Count] = field(default_factory=dict)
     choice: str = ""
+    auto: Callable[[dict], str] | None = None
     doc: str = ""
 
 
@@ -111,6 +116,8 @@ class Grammar:
                     raise ModelError(f"grammar node {kind!r}: one_of weight of {k!r} must be positive")
             if n.choice and not n.one_of:
                 raise ModelError(f"grammar node {kind!r} names a choice parameter but has no one_of")
+            if n.auto is not None and not n.choice:
+                raise ModelError(f"grammar node {kind!r}: auto needs an object-wide choice parameter")
 
     # -- parameters the grammar owns -------------------------------------------------------------------
     def flags(self) -> tuple[Flag, ...]:
@@ -122,12 +129,29 @@ class Grammar:
         return tuple(seen.values())
 
     def choices(self) -> tuple[Choice, ...]:
-        """One choice parameter per node whose ``one_of`` is object-wide."""
-        return tuple(
-            Choice(n.choice, f"one of the alternatives of {kind}", choices=tuple(n.one_of),
-                   weights=tuple(n.one_of.values()))
-            for kind, n in self.nodes.items() if n.choice
-        )
+        """One choice parameter per node whose ``one_of`` is object-wide (``auto`` first where it has one)."""
+        out = []
+        for kind, n in self.nodes.items():
+            if not n.choice:
+                continue
+            if n.auto is not None:
+                out.append(Choice(n.choice, f"one of the alternatives of {kind}; auto follows the other parameters",
+                                  choices=("auto", *n.one_of), weights=(1.0,) + (0.0,) * len(n.one_of)))
+            else:
+                out.append(Choice(n.choice, f"one of the alternatives of {kind}", choices=tuple(n.one_of),
+                                  weights=tuple(n.one_of.values())))
+        return tuple(out)
+
+    def resolve(self, params: dict) -> dict:
+        """The parameters with every ``"auto"`` choice replaced by what its node's ``auto`` picks."""
+        out = dict(params)
+        for kind, n in self.nodes.items():
+            if n.auto is not None and out.get(n.choice) == "auto":
+                pick = n.auto(out)
+                if pick not in n.one_of:
+                    raise ModelError(f"grammar node {kind!r}: auto picked {pick!r}, not one of {list(n.one_of)}")
+                out[n.choice] = pick
+        return out
 
     def params(self) -> tuple:
         """Every parameter the grammar owns: choice parameters and ``has_<branch>`` flags."""
@@ -136,7 +160,8 @@ class Grammar:
     # -- growing ------------------------------------------------------------------------------------------
     def grow(self, params: dict, rng: np.random.Generator) -> Grown:
         """Draw the tree: required children, flagged branches, choices and repeats, depth-bounded;
-        again while ``accept`` rejects it."""
+        again while ``accept`` rejects it. ``"auto"`` choices are resolved first (:meth:`resolve`)."""
+        params = self.resolve(params)
         for _ in range(self.tries):
             tree = self._grow(self.root, self.root, 0, (), params, rng)
             if self.accept is None or self.accept(tree):
@@ -229,7 +254,8 @@ class Grammar:
                 parts.append("may grow " + ", ".join(f"{b} ({p:g})" for b, p in r.optional.items()))
             if r.one_of:
                 total = sum(r.one_of.values())
-                how = f" [{r.choice}]" if r.choice else " (each)"
+                how = (f" [{r.choice}, auto: {_describe(r.auto)}]" if r.auto else f" [{r.choice}]") \
+                    if r.choice else " (each)"
                 parts.append("one of " + " / ".join(f"{b} ({w / total:.2f})" for b, w in r.one_of.items()) + how)
             if r.repeat:
                 parts.append("repeats " + ", ".join(f"{c} x {_describe(n)}" for c, n in r.repeat.items()))

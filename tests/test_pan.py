@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import pan
-from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from collide import overlap
@@ -94,13 +93,6 @@ def test_overrides_drive_the_growth():
     assert all(pc.material == "handle" for pc in bp.parts["handle"].pieces)
 
 
-@pytest.mark.parametrize("bad", [{"radius": 0.2}, {"depth_ratio": 1.0}, {"finish": "gold"},
-                                 {"has_lid": "maybe"}, {"colour": "red"}])
-def test_bad_overrides_raise(bad):
-    with pytest.raises(ParameterError):
-        make(0, **bad)
-
-
 def test_shallowest_pan_with_thick_handle():
     _, bp = make(0, radius=0.1, depth_ratio=0.3, handle_thickness=0.017, bead=0.0028, has_lid=True)
     hs = np.vstack([pc.vertices for pc in bp.parts["handle"].pieces])
@@ -108,13 +100,7 @@ def test_shallowest_pan_with_thick_handle():
     assert overlap(bp.parts["lid"], np.eye(4), bp.parts["handle"], np.eye(4), pad=0.0015) == 0.0
 
 
-def test_same_seed_same_object_and_variety():
-    p1, a = make(5)
-    p2, b = make(5)
-    assert p1 == p2 and a.joints == b.joints
-    for name in a.parts:
-        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
-            assert np.array_equal(x.vertices, y.vertices)
+def test_variety():
     params = [make(s)[0] for s in range(20)]
     for name in ("finish", "has_lid", "has_hole", "lid_finish"):
         assert len({q[name] for q in params}) > 1, name

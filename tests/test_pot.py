@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import pot
-from infmob_usd.errors import ParameterError
 from infmob_usd.model import build as build_model
 
 from collide import overlap
@@ -112,13 +111,6 @@ def test_overrides_drive_the_growth():
     assert bp.bounds()[1, 2] > 0.2
 
 
-@pytest.mark.parametrize("bad", [{"radius": 0.3}, {"depth_ratio": 0.2}, {"handle_layout": "none"},
-                                 {"body_finish": "wood"}, {"colour": "red"}])
-def test_bad_overrides_raise(bad):
-    with pytest.raises(ParameterError):
-        make(0, **bad)
-
-
 def test_handles_stay_below_the_rim_and_above_the_ground():
     for layout in ("side_handles", "long_handle"):
         for seed in range(6):
@@ -132,13 +124,7 @@ def test_handles_stay_below_the_rim_and_above_the_ground():
                 assert pc.vertices[:, 2].min() > 0
 
 
-def test_same_seed_same_object_and_variety():
-    p1, a = make(5)
-    p2, b = make(5)
-    assert p1 == p2 and a.joints == b.joints
-    for name in a.parts:
-        for x, y in zip(a.parts[name].pieces, b.parts[name].pieces, strict=True):
-            assert np.array_equal(x.vertices, y.vertices)
+def test_variety():
     params = [make(s)[0] for s in range(20)]
     for name in ("handle_layout", "lid_handle", "body_finish", "lid_finish"):
         assert len({q[name] for q in params}) > 1, name

@@ -12,6 +12,6 @@ Sizes are in metres and come from real products; where a default is a
 product dimension its source is named beside it.
 """
 
-from . import hardware, panels
+from . import hardware, panels, vessel
 
-__all__ = ["hardware", "panels"]
+__all__ = ["hardware", "panels", "vessel"]
