@@ -54,25 +54,29 @@ class GalleryError(ValueError):
 def find_object_folders(root: str | Path) -> list[Path]:
     """Every object folder (one with ``metadata.json``) under ``root``, following symlinks, sorted.
 
-    Hidden folders are skipped and an object folder is not searched further; a symlink loop is
-    entered once.
+    Hidden folders are skipped and an object folder is not searched further. A symlinked copy of
+    an object folder is an object of its own; a symlink back to a folder above it is not entered.
     """
     root = Path(root)
     if (root / "metadata.json").is_file():
         return [root]
     found: list[Path] = []
-    seen: set[str] = set()
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=True):
-        real = os.path.realpath(dirpath)
-        if real in seen:
-            dirnames[:] = []
+    stack = [(str(root), frozenset([os.path.realpath(root)]))]
+    while stack:
+        path, above = stack.pop()
+        try:
+            entries = list(os.scandir(path))
+        except OSError:
             continue
-        seen.add(real)
-        if "metadata.json" in filenames and dirpath != str(root):
-            found.append(Path(dirpath))
-            dirnames[:] = []
+        if any(e.name == "metadata.json" and e.is_file() for e in entries) and path != str(root):
+            found.append(Path(path))
             continue
-        dirnames[:] = sorted(d for d in dirnames if not d.startswith("."))
+        for e in entries:
+            if e.name.startswith(".") or not e.is_dir():
+                continue
+            real = os.path.realpath(e.path)
+            if real not in above:
+                stack.append((e.path, above | {real}))
     return sorted(found)
 
 

@@ -289,6 +289,18 @@
 
   // ------------------------------------------------------------------------------------ the viewer
 
+  const bitmaps = {};  // texture hash -> Promise<ImageBitmap>, decoded once per page
+  function bitmap(hash) {
+    if (!bitmaps[hash]) {
+      const uri = G.textures[hash], bin = atob(uri.slice(uri.indexOf(',') + 1));
+      const bytes = new Uint8Array(bin.length);
+      for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+      bitmaps[hash] = createImageBitmap(new Blob([bytes], { type: 'image/png' }),
+        { imageOrientation: 'flipY', premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+    }
+    return bitmaps[hash];
+  }
+
   function restOf(j) { return Math.min(Math.max(0, j.lower), j.upper); }
   function fullTurn(j) { return j.type === 'continuous' || j.upper - j.lower >= 2 * Math.PI - 1e-3; }
   function openOf(j) {
@@ -350,32 +362,34 @@
       this.scene.remove(this.root);
       this.root.traverse((o) => {
         if (o.geometry) o.geometry.dispose();
-        for (const m of [].concat(o.material || [])) {
-          for (const t of [m.map, m.roughnessMap, m.normalMap]) if (t) t.dispose();
-          m.dispose();
-        }
       });
+      for (const m of Object.values(this.matCache || {})) m.dispose();
+      for (const t of Object.values(this.texCache || {})) t.dispose();
       this.root = null;
     }
 
     material(data, libs, name, loads) {
-      let spec = null;
-      for (const lib of libs) if (data.materials[lib] && data.materials[lib][name]) spec = data.materials[lib][name];
+      let spec = null, lib0 = '';
+      for (const lib of libs) if (data.materials[lib] && data.materials[lib][name]) { spec = data.materials[lib][name]; lib0 = lib; }
+      const mkey = lib0 + '|' + name;
+      if (this.matCache[mkey]) return this.matCache[mkey];
+      const m = this.matCache[mkey] = this.makeMaterial(spec, loads);
+      return m;
+    }
+
+    makeMaterial(spec, loads) {
       const m = new THREE.MeshStandardMaterial({ color: 0xb0b0b0, roughness: 0.6, metalness: 0 });
       if (!spec) return m;
       const tex = (hash, srgb) => {
-        const uri = hash && G.textures[hash];
-        if (!uri) return null;
-        const t = new THREE.Texture();
+        if (!hash || !G.textures[hash]) return null;
+        const key = hash + (srgb ? ':srgb' : '');
+        if (this.texCache[key]) return this.texCache[key];
+        const t = this.texCache[key] = new THREE.Texture();
         t.wrapS = t.wrapT = THREE.RepeatWrapping;
         t.colorSpace = srgb ? THREE.SRGBColorSpace : THREE.NoColorSpace;
+        t.flipY = false;  // the bitmap is decoded flipped (OBJ v runs up)
         t.anisotropy = 4;
-        loads.push(new Promise((resolve) => {
-          const img = new Image();
-          img.onload = () => { t.image = img; t.needsUpdate = true; resolve(); };
-          img.onerror = () => resolve();
-          img.src = uri;
-        }));
+        loads.push(bitmap(hash).then((b) => { t.image = b; t.needsUpdate = true; }, () => {}));
         return t;
       };
       if (spec.Kd) m.color.setRGB(spec.Kd[0], spec.Kd[1], spec.Kd[2], THREE.SRGBColorSpace);
@@ -395,6 +409,8 @@
 
     async show(data) {
       this.clear();
+      this.texCache = {};
+      this.matCache = {};
       const loads = [];
       const geos = data.meshes.map((m) => {
         const p = parseOBJ(m.obj);
@@ -470,7 +486,7 @@
       const box = new THREE.Box3().setFromObject(this.root);
       const c = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3());
       const r = Math.max(size.length() / 2, 0.05);
-      const d = r / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2)) * 1.05;
+      const d = r / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2)) * 1.15;
       const dir = new THREE.Vector3(1.0, 0.75, 0.55).normalize();
       this.camera.position.copy(c).addScaledVector(dir, d);
       this.camera.near = d / 100; this.camera.far = d * 10;
@@ -488,6 +504,13 @@
 
     animateTo(phases, ms) {
       // phases: [{name: q}, ...] run one after another, each over `ms`
+      if (!(ms > 0)) {  // at once
+        for (const ph of phases) for (const [n, q] of Object.entries(ph)) { const j = this.byName[n]; j.q = q; this.apply(j); }
+        this.anim = null;
+        this.request();
+        if (this.onchange) this.onchange();
+        return Promise.resolve();
+      }
       return new Promise((resolve) => {
         this.anim = { phases: phases.filter((p) => Object.keys(p).length), i: 0, t0: null, from: null, ms, resolve };
         if (!this.anim.phases.length) { this.anim = null; resolve(); return; }
@@ -586,15 +609,25 @@
     $('viewer-info').textContent = `${r.category} · seed ${r.seed} · ${r.joints} movable joints · ${r.links} links · ${r.mass.toFixed(2)} kg · ${r.path}`;
     $('sliders').replaceChildren();
     $('viewer-status').textContent = 'loading…';
+    const t = [performance.now()];
     try {
       if (!window.THREE) await loadScript(PREFIX + 'assets/three.gallery.min.js');
+      t.push(performance.now());
       if (!G.objects[r.key]) await loadScript(`${G.data.data}/obj/${r.key}.js`);
       const data = G.objects[r.key];
       await Promise.all(data.textures.filter((h) => !G.textures[h]).map((h) => loadScript(`${G.data.data}/tex/${h}.js`)));
+      t.push(performance.now());
+      await Promise.all(data.textures.map((h) => bitmap(h).catch(() => null)));  // decode before WebGL work
+      t.push(performance.now());
       if (!G.viewer) G.viewer = new Viewer($('viewer-canvas'));
       G.viewer.resize();
+      t.push(performance.now());
       await G.viewer.show(data);
+      t.push(performance.now());
       buildSliders(G.viewer);
+      G.viewer.renderer.render(G.viewer.scene, G.viewer.camera);  // compile and draw before 'ready'
+      t.push(performance.now());
+      G.timing = { three: t[1] - t[0], data: t[2] - t[1], decode: t[3] - t[2], viewer: t[4] - t[3], build: t[5] - t[4], draw: t[6] - t[5] };
       $('viewer-status').textContent = '';
       box.dataset.state = 'ready';
       box.dataset.key = r.key;
