@@ -73,7 +73,7 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--json", action="store_true", help="print JSON instead of a table")
     st.add_argument("--max-pairs", type=int, default=2000,
                     help="at most this many (seeded, sampled) object pairs per group for mean TED; default 2000")
-    ga = sub.add_parser("gallery", help="a static HTML gallery of DIR: cards, filters, 3D viewer with joint sliders, stats",
+    ga = sub.add_parser("gallery", help="a static HTML gallery of DIR: cards, filters, 3D viewer, joint sliders, stats",
                         description="Write a self-contained site (no internet, opens from file://) showing every"
                         " object under DIR as a card, a three.js viewer with one slider per movable joint, and"
                         " the statistics of `infmob stats` as charts. Missing thumbnails are rendered (Vulkan) or"

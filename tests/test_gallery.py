@@ -13,7 +13,6 @@ import re
 import shutil
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -144,7 +143,8 @@ GRAB = """() => {
 DIFF = """([a, b, box]) => {
   const c = INFMOB_GALLERY.viewer.renderer.domElement, A = window.__grabs[a], B = window.__grabs[b];
   let n = 0, changed = 0;
-  for (let y = Math.floor(box[1]); y < Math.ceil(box[3]); y++) for (let x = Math.floor(box[0]); x < Math.ceil(box[2]); x++) {
+  const [x0, y0, x1, y1] = box.map(Math.round);
+  for (let y = y0; y < y1; y++) for (let x = x0; x < x1; x++) {
     const i = ((c.height - 1 - y) * c.width + x) * 4;
     n++;
     if (Math.abs(A[i] - B[i]) + Math.abs(A[i + 1] - B[i + 1]) + Math.abs(A[i + 2] - B[i + 2]) > 30) changed++;
@@ -194,7 +194,7 @@ def test_browser_cards_door_slider_open_all(browser, site):
     assert all(v[0] == pytest.approx(v[1]) for v in q.values()), q  # door first, then the racks
     assert rack.is_enabled()
     opened = page.evaluate(GRAB)
-    whole = [0, 0, *page.evaluate("[INFMOB_GALLERY.viewer.renderer.domElement.width, INFMOB_GALLERY.viewer.renderer.domElement.height]")]
+    whole = [0, 0, *page.evaluate("((c) => [c.width, c.height])(INFMOB_GALLERY.viewer.renderer.domElement)")]
     assert page.evaluate(DIFF, [rest, opened, whole]) > 0.05, "'open all' looks like the rest state"
 
     page.click("#btn-reset")

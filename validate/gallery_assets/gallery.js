@@ -177,7 +177,8 @@
 
   function kindsChart(cats, kindNames) {
     // one stacked bar per category: share of each joint kind
-    const W = 720, row = 18, L = 150, H = cats.length * row + 40;
+    const W = 720, row = 18, L = 150, legendRows = Math.ceil(kindNames.join('____').length * 6 / (W - L)) + 1;
+    const H = cats.length * row + 14 + legendRows * 16;
     const s = svg('svg', { width: W, height: H, viewBox: `0 0 ${W} ${H}`, role: 'img' });
     const colour = (k) => PALETTE[kindNames.indexOf(k) % PALETTE.length];
     const st = G.statsData.categories;
@@ -195,11 +196,13 @@
         x += w;
       }
     });
-    let lx = L;
+    let lx = L, ly = cats.length * row + 10;
     for (const k of kindNames) {
-      s.append(svg('rect', { x: lx, y: H - 16, width: 10, height: 10, fill: colour(k) }));
-      s.append(svg('text', { x: lx + 13, y: H - 7, 'font-size': 10 }, k));
-      lx += 20 + k.length * 6;
+      const w = 24 + k.length * 6;
+      if (lx + w > W) { lx = L; ly += 16; }
+      s.append(svg('rect', { x: lx, y: ly, width: 10, height: 10, fill: colour(k) }));
+      s.append(svg('text', { x: lx + 13, y: ly + 9, 'font-size': 10 }, k));
+      lx += w;
     }
     return s;
   }
