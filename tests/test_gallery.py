@@ -121,7 +121,7 @@ def browser():
 
 
 def _page(browser, url):
-    page = browser.new_page(viewport={"width": 1100, "height": 700})
+    page = browser.new_page(viewport={"width": 800, "height": 500})
     page.set_default_timeout(120_000)
     problems = []
     page.on("console", lambda m: problems.append(m.text) if m.type == "error" else None)

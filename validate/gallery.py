@@ -33,6 +33,7 @@ import re
 import shutil
 import sys
 import time
+import urllib.parse
 import xml.etree.ElementTree as ET
 from collections import Counter
 from functools import partial
@@ -310,6 +311,11 @@ def _write_js(path: Path, call: str, *args) -> None:
     path.write_text(f"{call}({body});\n")
 
 
+def _url(relpath: str) -> str:
+    """A relative file path as a relative URL (``#``, ``?``, spaces ... escaped)."""
+    return urllib.parse.quote(relpath.replace(os.sep, "/"))
+
+
 def site_paths(out: str | Path | None, root: Path) -> tuple[Path, Path]:
     """(index.html, folder of assets and data) for ``--out``: a folder, or an ``.html`` file."""
     if out is None:
@@ -381,12 +387,12 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
             own = _thumbnail_in(folder)
             thumb, half = None, False
             if own is not None:
-                thumb, half = rel(own), own.name == "preview.png"
+                thumb, half = _url(rel(own)), own.name == "preview.png"
             else:
                 png = thumbdir / f"{key}.png"
                 fresh = png.is_file() and png.stat().st_mtime >= (folder / "metadata.json").stat().st_mtime
                 if fresh or thumbnailer(folder, png):
-                    thumb = rel(png)
+                    thumb = _url(rel(png))
             t_thumb += time.perf_counter() - t2
             done[key] = (thumb, half)
         thumb, half = done[key]
@@ -406,7 +412,7 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
     t4 = time.perf_counter()
     stats = gallery_stats(metas, max_pairs=max_pairs)
     t_stats = time.perf_counter() - t4
-    prefix = os.path.relpath(site, base).replace(os.sep, "/")
+    prefix = _url(os.path.relpath(site, base))
     prefix = "" if prefix == "." else prefix + "/"
     index = {"root": str(root), "objects": rows, "generated": time.strftime("%Y-%m-%d %H:%M:%S"),
              "data": prefix + "data"}
