@@ -127,7 +127,7 @@ def _page(browser, url):
     page.on("console", lambda m: problems.append(m.text) if m.type == "error" else None)
     page.on("pageerror", lambda e: problems.append(str(e)))
     page.goto(url)
-    page.wait_for_selector("body[data-cards=ready]")
+    page.wait_for_function("document.body.dataset.cards === 'ready'", polling=250)
     return page, problems
 
 
@@ -157,7 +157,9 @@ def _open(page, name):
     i = page.evaluate(f"INFMOB_GALLERY.data.objects.findIndex(o => o.name === {name!r})")
     assert i >= 0
     page.evaluate(f"location.hash = 'object={i}'")
-    page.wait_for_selector("#viewer[data-state=ready]")
+    # interval polling: Playwright's default polls once per animation frame, and a frame of a WebGL
+    # page composited on the CPU is slow
+    page.wait_for_function("document.getElementById('viewer').dataset.state === 'ready'", polling=250)
 
 
 def _union(a, b):
@@ -189,7 +191,7 @@ def test_browser_cards_door_slider_open_all(browser, site):
     assert rack.is_disabled()  # door not fully open yet
 
     page.click("#btn-open")
-    page.wait_for_function("!INFMOB_GALLERY.viewer.anim")
+    page.wait_for_function("!INFMOB_GALLERY.viewer.anim", polling=250)
     q = page.evaluate("Object.fromEntries(INFMOB_GALLERY.viewer.joints.map(j => [j.name, [j.q, j.upper]]))")
     assert all(v[0] == pytest.approx(v[1]) for v in q.values()), q  # door first, then the racks
     assert rack.is_enabled()
@@ -198,7 +200,7 @@ def test_browser_cards_door_slider_open_all(browser, site):
     assert page.evaluate(DIFF, [rest, opened, whole]) > 0.05, "'open all' looks like the rest state"
 
     page.click("#btn-reset")
-    page.wait_for_function("!INFMOB_GALLERY.viewer.anim")
+    page.wait_for_function("!INFMOB_GALLERY.viewer.anim", polling=250)
     back = page.evaluate(GRAB)
     assert page.evaluate(DIFF, [rest, back, whole]) < 0.002
 
@@ -207,7 +209,7 @@ def test_browser_cards_door_slider_open_all(browser, site):
     assert page.locator("#sliders input[type=range]").count() == n >= 2
 
     page.evaluate("location.hash = 'stats'")
-    page.wait_for_selector("#chart-histograms svg")
+    page.wait_for_function("!!document.querySelector('#chart-histograms svg')", polling=250)
     assert page.locator("#chart-histograms figure").count() == 3  # one histogram per category
     assert not problems, problems
 
