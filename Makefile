@@ -9,7 +9,7 @@ COUNT  ?= 3
 
 .PHONY: demo test sysdeps clean
 
-# System libraries: libGL (sapien's opencv) and Mesa >= 25 lavapipe (Vulkan on the CPU, for previews).
+# System libraries: libGL (sapien's opencv), Mesa >= 25 lavapipe (Vulkan on the CPU, for previews), chromium (gallery test).
 sysdeps:
 	@bash .ci/sysdeps.sh
 

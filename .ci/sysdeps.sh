@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # System libraries infmob-usd needs on Debian: libGL (sapien pulls opencv-python, which loads it)
 # and a Vulkan device for the preview renderer: Mesa >= 25 lavapipe, from <codename>-backports on
-# Debian 12 (its stock Mesa 22 lavapipe cannot run SAPIEN's renderer). Idempotent; quiet when done.
+# Debian 12 (its stock Mesa 22 lavapipe cannot run SAPIEN's renderer); and Chromium, which the gallery's
+# browser test drives through Playwright (never `playwright install`: the system browser is used).
+# Idempotent; quiet when done.
 set -euo pipefail
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
@@ -12,9 +14,10 @@ have_mesa() {
 }
 need=()
 ldconfig -p | grep -q 'libGL.so.1 ' || need+=(libgl1 libegl1)
+command -v chromium >/dev/null || need+=(chromium)
 if [ ${#need[@]} -eq 0 ] && have_mesa; then exit 0; fi
 if ! command -v apt-get >/dev/null; then
-  echo "sysdeps: not a Debian system; install libGL and a Mesa >= 25 Vulkan driver yourself" >&2
+  echo "sysdeps: not a Debian system; install libGL, a Mesa >= 25 Vulkan driver and chromium yourself" >&2
   exit 0
 fi
 . /etc/os-release

@@ -1,4 +1,4 @@
-"""The ``infmob`` command line: list, params, generate, validate, preview, stats, bench, textures."""
+"""The ``infmob`` command line: list, params, generate, validate, preview, stats, gallery, bench, textures."""
 
 from __future__ import annotations
 
@@ -73,6 +73,14 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--json", action="store_true", help="print JSON instead of a table")
     st.add_argument("--max-pairs", type=int, default=2000,
                     help="at most this many (seeded, sampled) object pairs per group for mean TED; default 2000")
+    ga = sub.add_parser("gallery", help="a static HTML gallery of DIR: cards, filters, 3D viewer, joint sliders, stats",
+                        description="Write a self-contained site (no internet, opens from file://) showing every"
+                        " object under DIR as a card, a three.js viewer with one slider per movable joint, and"
+                        " the statistics of `infmob stats` as charts. Missing thumbnails are rendered (Vulkan) or"
+                        " shown as placeholders.")
+    from .validate.gallery import add_arguments as _gallery_arguments
+
+    _gallery_arguments(ga)
     tx = sub.add_parser("textures", help="build the texture library cache ahead of a large run",
                         description="Every look an object can wear is one of a finite library (16 per palette"
                         " variant, 1072 in all); its PNG maps are made once and cached on disk in"
@@ -311,8 +319,15 @@ def cmd_preview(args) -> int:
     return preview_main(args)
 
 
+def cmd_gallery(args) -> int:
+    from .validate.gallery import main as gallery_main
+
+    return gallery_main(args)
+
+
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
-            "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures}
+            "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures,
+            "gallery": cmd_gallery}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -58,3 +58,15 @@ def test_dataset_stats_on_generated_objects(tmp_path, capsys):
     assert "kitchen_cabinet" in out and "Infinite Mobility" in out and "78.62" in out
     assert main(["stats", "--json", str(tmp_path)]) == 0
     assert json.loads(capsys.readouterr().out)["overall"]["objects"] == 3
+
+
+def test_pair_sampling_scales_to_10000_objects():
+    # 10,000 objects have 50 M pairs: they are sampled by index, never listed (that took GBs)
+    from infmob_usd.validate.stats import Group
+
+    g = Group("big", joints=[1] * 10_000, trees=[T("a", T("b")) if i % 2 else T("a") for i in range(10_000)])
+    s = g.summary(max_pairs=400)
+    assert s["ted_pairs"] == 400
+    assert 0.3 < s["mean_ted"] < 0.7  # about half the sampled pairs differ by one node
+    small = Group("small", joints=[1] * 4, trees=[T("a"), T("a", T("b")), T("a"), T("a", T("b"))])
+    assert small.summary(max_pairs=3)["ted_pairs"] == 3 and small.summary(max_pairs=10)["ted_pairs"] == 6

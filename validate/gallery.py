@@ -1,0 +1,508 @@
+"""A static HTML gallery of a folder of objects: cards, filters, a 3D viewer with joint sliders, statistics.
+
+``infmob gallery DIR`` reads every finished object folder under ``DIR`` back (``metadata.json``, the
+URDF, its visual OBJ/MTL meshes and textures) and writes a site that opens from ``file://`` with no
+server and no internet::
+
+    gallery/index.html                 the page (cards | statistics | viewer)
+    gallery/assets/                    three.js (vendored, MIT), gallery.js, gallery.css
+    gallery/data/index.js              one row per object (the cards), loaded by a <script> tag
+    gallery/data/stats.js              ``infmob stats`` figures + joint-count histograms
+    gallery/data/obj/<key>.js          one object: links, joints (URDF + metadata), OBJ text, MTL materials
+    gallery/data/tex/<sha>.js          one texture PNG as a data: URI, shared by every object wearing it
+    gallery/thumbs/<key>.png           thumbnails rendered for objects that have none
+
+Everything is a ``.js`` file loaded by ``<script>`` tags because Chromium refuses ``fetch()`` and
+ES-module imports of local files under ``file://``, and taints WebGL textures read from ``file://``
+images (data: URIs are not tainted). Objects' data files load only when a card is opened, so the page
+itself reads one row per object. Symlinked copies of one object folder share its data file.
+
+Thumbnails: an object's ``preview.png`` (its rest half) or ``.thumbs/256x256/*.png`` when present;
+otherwise one is rendered with :mod:`preview`'s renderer where a Vulkan device works, else the card
+shows a placeholder.
+"""
+
+from __future__ import annotations
+
+import base64
+import hashlib
+import http.server
+import json
+import os
+import re
+import shutil
+import sys
+import time
+import urllib.parse
+import xml.etree.ElementTree as ET
+from collections import Counter
+from functools import partial
+from pathlib import Path
+
+ASSETS = Path(__file__).with_name("gallery_assets")
+ASSET_FILES = ("three.gallery.min.js", "three.LICENSE", "gallery.js", "gallery.css")
+THUMB_SIZE = 256
+MOVABLE = ("revolute", "continuous", "prismatic")
+
+
+class GalleryError(ValueError):
+    """Bad input for the gallery: the message names the problem and the fix."""
+
+
+# --------------------------------------------------------------------------------------------- finding
+
+
+def find_object_folders(root: str | Path) -> list[Path]:
+    """Every object folder (one with ``metadata.json``) under ``root``, following symlinks, sorted.
+
+    Hidden folders are skipped and an object folder is not searched further. A symlinked copy of
+    an object folder is an object of its own; a symlink back to a folder above it is not entered.
+    """
+    root = Path(root)
+    if (root / "metadata.json").is_file():
+        return [root]
+    found: list[Path] = []
+    stack = [(str(root), frozenset([os.path.realpath(root)]))]
+    while stack:
+        path, above = stack.pop()
+        try:
+            entries = list(os.scandir(path))
+        except OSError:
+            continue
+        if any(e.name == "metadata.json" and e.is_file() for e in entries) and path != str(root):
+            found.append(Path(path))
+            continue
+        for e in entries:
+            if e.name.startswith(".") or not e.is_dir():
+                continue
+            real = os.path.realpath(e.path)
+            if real not in above:
+                stack.append((e.path, above | {real}))
+    return sorted(found)
+
+
+def _thumbnail_in(folder: Path) -> Path | None:
+    """The object's own picture: ``.thumbs/256x256/*.png`` or ``preview.png`` (rest | open)."""
+    thumbs = sorted((folder / ".thumbs" / "256x256").glob("*.png"))
+    if thumbs:
+        return thumbs[0]
+    p = folder / "preview.png"
+    return p if p.is_file() else None
+
+
+def _key(folder: Path) -> str:
+    return hashlib.sha1(os.path.realpath(folder).encode()).hexdigest()[:16]
+
+
+# --------------------------------------------------------------------------------------------- one object
+
+
+def _floats(text, default):
+    return [float(x) for x in text.split()] if text else list(default)
+
+
+def _parse_mtl(text: str) -> dict[str, dict]:
+    """``newmtl`` blocks of an MTL file: {name: {key: value}} (numbers as lists, maps as file names)."""
+    out: dict[str, dict] = {}
+    cur: dict | None = None
+    for line in text.splitlines():
+        parts = line.split()
+        if not parts or parts[0].startswith("#"):
+            continue
+        if parts[0] == "newmtl":
+            cur = out.setdefault(" ".join(parts[1:]), {})
+        elif cur is not None and len(parts) > 1:
+            if parts[0] in ("map_Kd", "map_Pr", "norm", "map_Bump", "bump", "map_Pm"):
+                cur[parts[0]] = parts[-1]
+            else:
+                try:
+                    cur[parts[0]] = [float(x) for x in parts[1:]]
+                except ValueError:
+                    pass
+    return out
+
+
+_MTLLIB = re.compile(r"^mtllib\s+(.+?)\s*$", re.M)
+
+
+def object_data(folder: Path, textures: dict[str, Path]) -> dict:
+    """The viewer's data for one object folder: links with visuals, joints, OBJ text, materials.
+
+    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role
+    and ``requires_open`` from ``metadata.json``. Texture files are named by a hash of their bytes;
+    ``textures`` gains ``{hash: path}`` for each one.
+    """
+    meta = json.loads((folder / "metadata.json").read_text())
+    urdfs = sorted(folder.glob("*.urdf"))
+    urdf = folder / f"{meta.get('name', folder.name)}.urdf"
+    if not urdf.is_file():
+        if not urdfs:
+            raise FileNotFoundError(f"no .urdf file in {folder}")
+        urdf = urdfs[0]
+    root = ET.parse(urdf).getroot()
+    meshes: list[dict] = []
+    mesh_index: dict[str, int] = {}
+    mtl_files: dict[str, dict] = {}
+    tex_hash: dict[Path, str] = {}
+
+    def texture(mtl_dir: Path, name: str) -> str | None:
+        path = (mtl_dir / name).resolve()
+        if path not in tex_hash:
+            if not path.is_file():
+                return None
+            h = hashlib.sha256(path.read_bytes()).hexdigest()[:24]
+            tex_hash[path] = h
+            textures.setdefault(h, path)
+        return tex_hash[path]
+
+    def mesh(filename: str) -> int:
+        if filename.startswith("package://"):
+            filename = filename[len("package://"):]
+        if filename in mesh_index:
+            return mesh_index[filename]
+        path = urdf.parent / filename
+        text = path.read_text()
+        libs = []
+        for lib in _MTLLIB.findall(text):
+            key = os.path.normpath(os.path.join(os.path.dirname(filename), lib))
+            if key not in mtl_files:
+                mpath = urdf.parent / key
+                mats = _parse_mtl(mpath.read_text()) if mpath.is_file() else {}
+                for m in mats.values():
+                    for k in ("map_Kd", "map_Pr", "norm", "map_Bump", "bump", "map_Pm"):
+                        if k in m:
+                            m[k] = texture(mpath.parent, m[k])
+                mtl_files[key] = mats
+            libs.append(key)
+        mesh_index[filename] = len(meshes)
+        meshes.append({"obj": text, "mtl": libs})
+        return mesh_index[filename]
+
+    links = []
+    for link in root.findall("link"):
+        visuals = []
+        for vis in link.findall("visual"):
+            m = vis.find("geometry/mesh")
+            if m is None or not m.get("filename"):
+                continue
+            o = vis.find("origin")
+            visuals.append({"mesh": mesh(m.get("filename")),
+                            "xyz": _floats(o.get("xyz") if o is not None else None, (0, 0, 0)),
+                            "rpy": _floats(o.get("rpy") if o is not None else None, (0, 0, 0)),
+                            "scale": _floats(m.get("scale"), (1, 1, 1))})
+        links.append({"name": link.get("name"), "visuals": visuals})
+    by_name = {j["name"]: j for j in meta.get("joints", [])}
+    label = {lk["name"]: lk for lk in meta.get("links", [])}
+    for link in links:
+        info = label.get(link["name"], {})
+        link["label"] = info.get("label", "")
+        link["dummy"] = bool(info.get("dummy", False))
+    joints = []
+    for j in root.findall("joint"):
+        o, a, lim = j.find("origin"), j.find("axis"), j.find("limit")
+        name, jtype = j.get("name"), j.get("type")
+        lower = float(lim.get("lower", 0)) if lim is not None else 0.0
+        upper = float(lim.get("upper", 0)) if lim is not None else 0.0
+        if jtype == "continuous" or (jtype == "revolute" and lower == upper == 0.0):
+            lower, upper = -3.141592653589793, 3.141592653589793
+        m = by_name.get(name, {})
+        joints.append({
+            "name": name, "type": jtype, "parent": j.find("parent").get("link"), "child": j.find("child").get("link"),
+            "xyz": _floats(o.get("xyz") if o is not None else None, (0, 0, 0)),
+            "rpy": _floats(o.get("rpy") if o is not None else None, (0, 0, 0)),
+            "axis": _floats(a.get("xyz") if a is not None else None, (1, 0, 0)),
+            "lower": min(lower, upper), "upper": max(lower, upper),
+            "kind": m.get("kind", jtype), "group": m.get("group", name), "role": m.get("role", ""),
+            "requires_open": m.get("requires_open"),
+        })
+    return {"name": meta.get("name", folder.name), "category": meta.get("category", ""), "seed": meta.get("seed"),
+            "links": links, "joints": joints, "meshes": meshes, "materials": mtl_files,
+            "textures": sorted(set(tex_hash.values()))}
+
+
+def card(meta: dict) -> dict:
+    """The figures a card shows, from ``metadata.json``."""
+    kinds = {k: int(v) for k, v in sorted(meta.get("joint_kinds", {}).items())}
+    return {
+        "name": meta.get("name", ""),
+        "category": meta.get("category", "?"),
+        "seed": meta.get("seed"),
+        "joints": sum(kinds.values()),
+        "links": int(meta.get("counts", {}).get("links", 0)),
+        "kinds": kinds,
+        "mass": round(sum(float(lk.get("mass") or 0.0) for lk in meta.get("links", [])), 3),
+    }
+
+
+# --------------------------------------------------------------------------------------------- statistics
+
+
+def gallery_stats(metas: list[dict], max_pairs: int = 2000) -> dict:
+    """``infmob stats`` figures (validate/stats.py) plus a movable-joint-count histogram per category."""
+    from .stats import REFERENCE, Group, tree_from_metadata
+
+    groups: dict[str, Group] = {}
+    overall = Group("overall")
+    hist: dict[str, Counter] = {}
+    for meta in metas:
+        kinds = meta.get("joint_kinds", {})
+        n = sum(kinds.values())
+        tree = tree_from_metadata(meta)
+        cat = meta.get("category", "?")
+        for g in (groups.setdefault(cat, Group(cat)), overall):
+            g.joints.append(n)
+            g.kinds.update(kinds)
+            g.trees.append(tree)
+        hist.setdefault(cat, Counter())[n] += 1
+    return {
+        "categories": {name: g.summary(max_pairs) for name, g in sorted(groups.items())},
+        "overall": overall.summary(max_pairs),
+        "reference": REFERENCE,
+        "histogram": {cat: {str(k): v for k, v in sorted(c.items())} for cat, c in sorted(hist.items())},
+        "max_pairs": max_pairs,
+    }
+
+
+# --------------------------------------------------------------------------------------------- thumbnails
+
+
+class _Thumbnailer:
+    """Renders missing thumbnails with preview.py's renderer, or says once why it cannot."""
+
+    def __init__(self, enabled: bool, log):
+        self.enabled, self.log = enabled, log
+        self.ok: bool | None = None
+        self.seconds: list[float] = []
+        self.failed = 0
+
+    def __call__(self, folder: Path, out_png: Path) -> bool:
+        if not self.enabled:
+            return False
+        if self.ok is None:
+            from .preview import backend_status
+
+            self.ok, why = backend_status()
+            if not self.ok:
+                self.log(f"gallery: cannot render thumbnails ({why.splitlines()[0]}); cards show placeholders")
+        if not self.ok:
+            return False
+        import cv2
+
+        from .preview import render_object
+
+        t0 = time.perf_counter()
+        try:
+            rgb = render_object(folder, size=THUMB_SIZE)
+        except Exception as exc:  # one bad object must not stop the gallery
+            self.failed += 1
+            self.log(f"gallery: thumbnail of {folder} failed: {exc}")
+            return False
+        out_png.parent.mkdir(parents=True, exist_ok=True)
+        cv2.imwrite(str(out_png), rgb[..., ::-1])
+        self.seconds.append(time.perf_counter() - t0)
+        return True
+
+
+# --------------------------------------------------------------------------------------------- the site
+
+
+def _write_js(path: Path, call: str, *args) -> None:
+    body = ",".join(json.dumps(a, separators=(",", ":")).replace("</", "<\\/") for a in args)
+    path.write_text(f"{call}({body});\n")
+
+
+def _url(relpath: str) -> str:
+    """A relative file path as a relative URL (``#``, ``?``, spaces ... escaped)."""
+    return urllib.parse.quote(relpath.replace(os.sep, "/"))
+
+
+def site_paths(out: str | Path | None, root: Path) -> tuple[Path, Path]:
+    """(index.html, folder of assets and data) for ``--out``: a folder, or an ``.html`` file."""
+    if out is None:
+        site = root / "gallery"
+        return site / "index.html", site
+    out = Path(out)
+    if out.suffix.lower() in (".html", ".htm"):
+        return out, out.with_name(out.stem + "_files")
+    return out / "index.html", out
+
+
+def build_gallery(root: str | Path, out: str | Path | None = None, render: bool = True,
+                  max_pairs: int = 2000, log=print) -> dict:
+    """Write the gallery of every object under ``root``; returns timings and counts.
+
+    ``out``: the site folder (default ``root/gallery``), or an ``.html`` file whose assets and
+    data go to ``<stem>_files/`` beside it. ``render``: render missing thumbnails (else placeholders).
+    """
+    root = Path(root)
+    if not root.is_dir():
+        raise GalleryError(f"{root} is not a folder: give a folder of objects written by `infmob generate`")
+    index_html, site = site_paths(out, root)
+    if index_html.exists() and index_html.is_dir():
+        raise GalleryError(f"--out {index_html} is a folder: give a folder for the site or a new .html file")
+    if site.exists() and not site.is_dir():
+        raise GalleryError(f"--out {site} is a file: give a folder for the site or an .html file")
+    t0 = time.perf_counter()
+    folders = [f for f in find_object_folders(root) if os.path.realpath(f) != os.path.realpath(site)]
+    if not folders:
+        raise GalleryError(f"no object folders (with metadata.json) under {root}: run `infmob generate` first")
+    try:
+        site.mkdir(parents=True, exist_ok=True)
+        probe = site / ".write_probe"
+        probe.write_text("")
+        probe.unlink()
+    except OSError as exc:
+        raise GalleryError(f"cannot write the gallery to {site} ({exc.strerror}): give a writable --out") from None
+    t_find = time.perf_counter() - t0
+    data, objdir, texdir, thumbdir, assets = (site / "data", site / "data" / "obj", site / "data" / "tex",
+                                              site / "thumbs", site / "assets")
+    for d in (assets, objdir, texdir):
+        d.mkdir(parents=True, exist_ok=True)
+    for name in ASSET_FILES:
+        shutil.copyfile(ASSETS / name, assets / name)
+    base = index_html.parent
+    rel = partial(os.path.relpath, start=base)
+    thumbnailer = _Thumbnailer(render, log)
+    textures: dict[str, Path] = {}
+    rows, metas, done, errors = [], [], {}, []
+    t_read = t_thumb = 0.0
+    for folder in folders:
+        key = _key(folder)
+        try:
+            meta = json.loads((folder / "metadata.json").read_text())
+        except (OSError, ValueError) as exc:
+            errors.append(f"{folder}: unreadable metadata.json ({exc})")
+            continue
+        if key not in done:
+            t1 = time.perf_counter()
+            try:
+                payload = object_data(folder, textures)
+            except (OSError, ValueError, ET.ParseError) as exc:
+                errors.append(f"{folder}: {exc}")
+                continue
+            path = objdir / f"{key}.js"
+            _write_js(path, "INFMOB_GALLERY.object", key, payload)
+            t2 = time.perf_counter()
+            t_read += t2 - t1
+            own = _thumbnail_in(folder)
+            thumb, half = None, False
+            if own is not None:
+                thumb, half = _url(rel(own)), own.name == "preview.png"
+            else:
+                png = thumbdir / f"{key}.png"
+                fresh = png.is_file() and png.stat().st_mtime >= (folder / "metadata.json").stat().st_mtime
+                if fresh or thumbnailer(folder, png):
+                    thumb = _url(rel(png))
+            t_thumb += time.perf_counter() - t2
+            done[key] = (thumb, half)
+        thumb, half = done[key]
+        row = card(meta)
+        row.update(key=key, path=rel(folder), thumb=thumb, half=half)
+        rows.append(row)
+        metas.append(meta)
+    if not rows:
+        raise GalleryError(f"no readable object folders under {root}: " + "; ".join(errors[:3]))
+    t3 = time.perf_counter()
+    for h, path in textures.items():
+        dest = texdir / f"{h}.js"
+        if not dest.is_file():
+            uri = "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
+            _write_js(dest, "INFMOB_GALLERY.texture", h, uri)
+    t_tex = time.perf_counter() - t3
+    t4 = time.perf_counter()
+    stats = gallery_stats(metas, max_pairs=max_pairs)
+    t_stats = time.perf_counter() - t4
+    prefix = _url(os.path.relpath(site, base))
+    prefix = "" if prefix == "." else prefix + "/"
+    index = {"root": str(root), "objects": rows, "generated": time.strftime("%Y-%m-%d %H:%M:%S"),
+             "data": prefix + "data"}
+    _write_js(data / "index.js", "INFMOB_GALLERY.index", index)
+    _write_js(data / "stats.js", "INFMOB_GALLERY.stats", stats)
+    html = (ASSETS / "index.html").read_text().replace("{{PREFIX}}", prefix)
+    index_html.parent.mkdir(parents=True, exist_ok=True)
+    index_html.write_text(html)
+    total = time.perf_counter() - t0
+    return {"index": index_html, "site": site, "objects": len(rows), "distinct": len(done), "errors": errors,
+            "textures": len(textures), "rendered": len(thumbnailer.seconds), "render_seconds": thumbnailer.seconds,
+            "seconds": {"find": t_find, "read": t_read, "thumbnails": t_thumb, "textures": t_tex,
+                        "stats": t_stats, "total": total}}
+
+
+# --------------------------------------------------------------------------------------------- serving
+
+
+def serve(index_html: Path, roots: list[Path], port: int = 8000, log=print) -> None:
+    """Serve the site with Python's http.server on 127.0.0.1 only, until Ctrl-C.
+
+    The served folder is the common parent of the site and ``roots`` (thumbnails are linked from
+    the object folders).
+    """
+    top = Path(os.path.commonpath([os.path.abspath(index_html.parent)] + [os.path.abspath(r) for r in roots]))
+    handler = partial(_QuietHandler, directory=str(top))
+    try:
+        httpd = http.server.ThreadingHTTPServer(("127.0.0.1", port), handler)
+    except OSError as exc:
+        raise GalleryError(f"cannot listen on 127.0.0.1:{port} ({exc.strerror}): pick another --port") from None
+    url_path = os.path.relpath(os.path.abspath(index_html), top).replace(os.sep, "/")
+    log(f"serving http://127.0.0.1:{httpd.server_address[1]}/{url_path}  (Ctrl-C stops)", flush=True)
+    try:
+        httpd.serve_forever()
+    except KeyboardInterrupt:
+        pass
+    finally:
+        httpd.server_close()
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, fmt, *args):  # one line per request is noise for a gallery
+        pass
+
+
+# --------------------------------------------------------------------------------------------- command line
+
+
+def add_arguments(parser) -> None:
+    parser.add_argument("folder", metavar="DIR", help="a folder of objects (searched recursively, symlinks followed)")
+    parser.add_argument("--out", default=None, metavar="FILE|DIR",
+                        help="the site: a folder (index.html inside) or an .html file (its data in <stem>_files/"
+                             " beside it); default DIR/gallery")
+    parser.add_argument("--serve", action="store_true",
+                        help="then serve it with Python's http.server on 127.0.0.1 (Ctrl-C stops)")
+    parser.add_argument("--port", type=int, default=8000, help="with --serve: the port; default 8000 (0: any free)")
+    parser.add_argument("--no-render", action="store_true",
+                        help="do not render missing thumbnails (cards show a placeholder instead)")
+    parser.add_argument("--max-pairs", type=int, default=2000,
+                        help="statistics: at most this many sampled object pairs per group for mean TED; default 2000")
+
+
+def main(args) -> int:
+    """Run ``infmob gallery`` with the namespace of :func:`add_arguments`; returns the exit code."""
+    if not 0 <= args.port <= 65535:
+        print(f"infmob: error: --port must be 0..65535, got {args.port}", file=sys.stderr)
+        return 2
+    try:
+        res = build_gallery(args.folder, args.out, render=not args.no_render, max_pairs=args.max_pairs,
+                            log=partial(print, file=sys.stderr))
+    except GalleryError as exc:
+        print(f"infmob: error: {exc}", file=sys.stderr)
+        return 2
+    for e in res["errors"]:
+        print(f"gallery: skipped {e}", file=sys.stderr)
+    s = res["seconds"]
+    n, d = res["objects"], res["distinct"]
+    line = (f"{res['index']}  ({n} objects, {d} distinct folders, {res['textures']} textures; "
+            f"{s['total']:.1f} s: find {s['find']:.1f}, read+write {s['read']:.1f} ({s['read'] / max(d, 1) * 1000:.1f}"
+            f" ms per object), textures {s['textures']:.1f}, stats {s['stats']:.1f}")
+    if res["rendered"]:
+        import statistics
+
+        line += (f", {res['rendered']} thumbnails rendered in {s['thumbnails']:.1f} s"
+                 f" (median {statistics.median(res['render_seconds']):.2f} s each)")
+    print(line + ")")
+    if args.serve:
+        try:
+            serve(Path(res["index"]), [Path(args.folder)], args.port)
+        except GalleryError as exc:
+            print(f"infmob: error: {exc}", file=sys.stderr)
+            return 2
+    return 1 if res["errors"] else 0
