@@ -27,7 +27,7 @@ OBJECTS = [("beverage_fridge", 0), ("kitchen_cabinet", 1), ("lamp", 0)]  # a doo
 def dataset(tmp_path_factory):
     root = tmp_path_factory.mktemp("gallery_ds")
     for cat, seed in OBJECTS:
-        infmob_usd.generate(cat, seed=seed, texture_size=16).save(root / cat)
+        infmob_usd.save(infmob_usd.generate(cat, seed=seed, texture_size=16), root / cat)
     # a symlinked copy counts as an object of its own but shares the data file
     os.symlink(root / "lamp" / "lamp_000000", root / "lamp_copy")
     return root
