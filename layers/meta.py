@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import datetime
 import json
+import os
 from pathlib import Path
 
 import numpy as np
@@ -32,6 +34,51 @@ def _clean(x):
     if isinstance(x, np.integer):
         return int(x)
     return x
+
+
+# Wikidata item of each category, verified on a stored public copy of its Wikidata page (URL beside it).
+# A category missing here has no verified Q-code: its SimReady metadata leaves `qcode` out (SR.004 then fails).
+WIKIDATA: dict[str, tuple[str, str]] = {
+}
+
+LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released
+
+
+def date_generated() -> str:
+    """``usd_date_generated`` (ISO ``YYYY-MM-DD``), deterministic so the same seed gives the same bytes:
+    the UTC date of ``SOURCE_DATE_EPOCH`` when set (the reproducible-builds convention), else the release
+    date of this version of infmob-usd."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    if epoch:
+        try:
+            return datetime.datetime.fromtimestamp(int(epoch), datetime.timezone.utc).date().isoformat()
+        except (ValueError, OverflowError, OSError):
+            raise ValueError(f"SOURCE_DATE_EPOCH={epoch!r} is not a Unix time in seconds; fix or unset it") from None
+    from infmob_usd._version import __release_date__
+
+    return __release_date__
+
+
+def simready_metadata(obj, bounds) -> dict:
+    """SimReady provenance metadata (``SimReady_Metadata`` in the USD root layer, SR.004): author, asset name,
+    type, licence, category, source, date, Wikidata Q-code (when verified), rigid-body count, extents (m) and
+    mass (kg). ``bounds`` is the ``(2, 3)`` world bounds of the visual meshes."""
+    lo, hi = (np.asarray(b, float) for b in bounds)
+    meta = {
+        "author": "infmob-usd",
+        "asset_name": obj.name,
+        "asset_type": "prop",
+        "asset_license": LICENSE,
+        "category": obj.category,
+        "source_file": f"infmob_usd.categories.{obj.category} (infmob-usd {obj.version}, seed {obj.seed})",
+        "usd_date_generated": date_generated(),
+        "rigid_body_count": len(obj.links),
+        "asset_extents": [round(float(x), 6) for x in hi - lo],
+        "mass": round(float(sum(link.mass for link in obj.links)), 6),
+    }
+    if obj.category in WIKIDATA:
+        meta["qcode"] = WIKIDATA[obj.category][0]
+    return meta
 
 
 def metadata(obj) -> dict:
