@@ -36,9 +36,30 @@ def _clean(x):
     return x
 
 
-# Wikidata item of each category, verified on a stored public copy of its Wikidata page (URL beside it).
-# A category missing here has no verified Q-code: its SimReady metadata leaves `qcode` out (SR.004 then fails).
+# Wikidata item of each category and where it was verified: the item's Wikidata label (and description)
+# as exported into a public file. COCO = github.com/datable-be/AI4C_ContentAnalysis, COCO_2_WIKIDATA
+# (wikidata_concepturi, label, description per COCO class); VU = github.com/HeardLibrary/vandycite,
+# gallery_buchanan/classification/wikidata.gml (wikidata_label, wikidata_id). A category missing here has
+# no verified Q-code (tv, tap, dishwasher, storage_rack, plate_rack, pot, pan): its SimReady metadata
+# leaves `qcode` out, and SR.004 fails for it.
 WIKIDATA: dict[str, tuple[str, str]] = {
+    "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
+    "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
+    "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
+    "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
+    "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
+    "dining_table": ("Q115665141", "http://www.wikidata.org/entity/Q115665141 'dining table' (COCO)"),
+    "cocktail_table": ("Q14748", "http://www.wikidata.org/entity/Q14748 'table' (VU; no verified item"
+                                 " for coffee table)"),
+    "office_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO; no verified item for"
+                               " office chair)"),
+    "bar_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO)"),
+    "vase": ("Q191851", "http://www.wikidata.org/entity/Q191851 'vase' (COCO, VU)"),
+    "bottle": ("Q80228", "http://www.wikidata.org/entity/Q80228 'bottle', cylindrical container (COCO, VU)"),
+    "jar": ("Q1207302", "http://www.wikidata.org/entity/Q1207302 'jar' (VU)"),
+    "lamp": ("Q1138737", "http://www.wikidata.org/entity/Q1138737 'lamp' (VU)"),
+    "kitchen_cabinet": ("Q2741056", "http://www.wikidata.org/entity/Q2741056 'cabinet' (VU)"),
 }
 
 LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released
