@@ -205,9 +205,7 @@ def run_simready(usd_path: str | Path) -> dict:
 
     st = _setup()
     sv, engine_cls = st["sv"], st["engine"]
-    from omni.asset_validator import IssueSeverity
-
-    bad = (IssueSeverity.FAILURE, IssueSeverity.ERROR)
+    bad = ("FAILURE", "ERROR")  # by name: the two engines have their own IssueSeverity enums
     t0 = time.perf_counter()
     with _quiet():
         stage = Usd.Stage.Open(str(usd_path))
@@ -222,8 +220,8 @@ def run_simready(usd_path: str | Path) -> dict:
                      if sv.is_blocking_failure(e)]
         bad_prop += [m for f in PROP_OPTIONAL if (m := _failing(prop.features_summary, f))]
     bad_body = [f"{i.requirement.code.split('.', 3)[-1] if i.requirement else _rule_name(i)}: {i.message}"
-                for i in body.issues() if i.severity in bad]
-    bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity in bad]
+                for i in body.issues() if i.severity.name in bad]
+    bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity.name in bad]
     return {"prop": bad_prop, "body": bad_body, "omni": bad_omni, "seconds": time.perf_counter() - t0,
             "shim": st["shim"]}
 
