@@ -21,7 +21,6 @@ from __future__ import annotations
 import contextlib
 import io
 import logging
-import os
 import sys
 import time
 from pathlib import Path
@@ -134,7 +133,6 @@ def _setup() -> dict:
     if not physx_schemas_known():
         raise RuntimeError("USD's schema registry was built before physx-usd-schemas registered the PhysX"
                            " schemas; run the validators in a fresh process")
-    os.environ.setdefault("SIMREADY_LOG_DIR", os.path.join(os.path.expanduser("~"), ".cache", "infmob-usd"))
     with _quiet():
         import simready.validate as sv
         from omni.asset_validator import ValidationEngine
