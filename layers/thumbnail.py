@@ -36,6 +36,11 @@ def _srgb(linear: np.ndarray) -> np.ndarray:
 def rasterise(verts: np.ndarray, faces: np.ndarray, colours: np.ndarray, size: int = SIZE) -> np.ndarray:
     """Draw triangles, flat-shaded, into a ``(size, size, 3)`` uint8 sRGB image.
 
+    Painter's algorithm: back faces culled, front faces sorted far to near by their mean depth, each
+    filled by OpenCV at ``SUPERSAMPLE`` times the size with 1/16 px precision, then area-averaged down
+    (~10 ms per thousand triangles). A sketch: where a large face and a small one overlap in depth the
+    order can be wrong (a table's rails may show through its top); ``infmob preview`` renders properly.
+
     Parameters
     ----------
     verts : (n, 3) float
@@ -45,9 +50,12 @@ def rasterise(verts: np.ndarray, faces: np.ndarray, colours: np.ndarray, size: i
     colours : (m, 3) float
         Linear RGB base colour per triangle.
     """
+    import cv2
+
     px = size * SUPERSAMPLE
-    img = np.empty((px * px, 3))
-    img[:] = BACKGROUND
+    bg = tuple(int(round(c * 255)) for c in _srgb(BACKGROUND))
+    img = np.empty((px, px, 3), np.uint8)
+    img[:] = bg
     if len(faces):
         d = VIEW / np.linalg.norm(VIEW)
         right = np.cross([0.0, 0.0, 1.0], d)
@@ -58,41 +66,20 @@ def rasterise(verts: np.ndarray, faces: np.ndarray, colours: np.ndarray, size: i
         scale = FILL * px / max(float((hi - lo).max()), 1e-9)
         xy = (cam[:, :2] - (lo + hi) / 2) * scale + px / 2
         xy[:, 1] = px - xy[:, 1]  # image rows grow downwards
-        tri, z = xy[faces], cam[faces, 2]  # (m, 3, 2), (m, 3)
         n = np.cross(verts[faces[:, 1]] - verts[faces[:, 0]], verts[faces[:, 2]] - verts[faces[:, 0]])
         n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-30)
         shade = 0.3 + 0.7 * np.abs(n @ (LIGHT / np.linalg.norm(LIGHT)))
-        lit = colours * shade[:, None]
-        x0 = np.clip(np.floor(tri[..., 0].min(1) - 0.5), 0, px - 1).astype(np.int64)
-        x1 = np.clip(np.ceil(tri[..., 0].max(1) - 0.5), 0, px - 1).astype(np.int64)
-        y0 = np.clip(np.floor(tri[..., 1].min(1) - 0.5), 0, px - 1).astype(np.int64)
-        y1 = np.clip(np.ceil(tri[..., 1].max(1) - 0.5), 0, px - 1).astype(np.int64)
-        w = x1 - x0 + 1
-        counts = w * (y1 - y0 + 1)
-        t = np.repeat(np.arange(len(faces)), counts)  # one sample per pixel of each triangle's box
-        k = np.arange(len(t)) - np.repeat(np.cumsum(counts) - counts, counts)
-        sx = x0[t] + k % w[t]
-        sy = y0[t] + k // w[t]
-        a, b, c = tri[t, 0], tri[t, 1], tri[t, 2]
-        p = np.stack([sx + 0.5, sy + 0.5], 1)
-
-        def edge(u, v, q):
-            return (v[:, 0] - u[:, 0]) * (q[:, 1] - u[:, 1]) - (v[:, 1] - u[:, 1]) * (q[:, 0] - u[:, 0])
-
-        area = edge(a, b, c)
-        l0, l1, l2 = edge(b, c, p), edge(c, a, p), edge(a, b, p)
-        sgn = np.sign(area)
-        inside = (area != 0) & (l0 * sgn >= 0) & (l1 * sgn >= 0) & (l2 * sgn >= 0)
-        t, sx, sy = t[inside], sx[inside], sy[inside]
-        safe = area[inside]
-        depth = (l0[inside] * z[t, 0] + l1[inside] * z[t, 1] + l2[inside] * z[t, 2]) / safe
-        pix = sy * px + sx
-        order = np.lexsort((-depth, pix))  # per pixel, nearest first
-        first = np.unique(pix[order], return_index=True)[1]
-        win = order[first]
-        img[pix[win]] = lit[t[win]]
-    rgb = _srgb(img).reshape(size, SUPERSAMPLE, size, SUPERSAMPLE, 3).mean((1, 3))
-    return np.round(rgb * 255).astype(np.uint8)
+        rgb = np.round(_srgb(colours * shade[:, None]) * 255).astype(np.uint8)
+        t = xy[faces]
+        # back faces (clockwise on screen: rows grow downwards) are hidden by the closed meshes' front faces
+        front = ((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
+                 - (t[:, 1, 1] - t[:, 0, 1]) * (t[:, 2, 0] - t[:, 0, 0])) < 0
+        idx = np.flatnonzero(front)
+        order = idx[np.argsort(cam[faces[idx], 2].mean(1), kind="stable")]  # far first (by mean depth)
+        pts = np.round(xy[faces[order]] * 16).astype(np.int32)  # 4 fractional bits
+        for tri, c in zip(pts, rgb[order].tolist()):
+            cv2.fillConvexPoly(img, tri, c, cv2.LINE_8, 4)
+    return cv2.resize(img, (size, size), interpolation=cv2.INTER_AREA)
 
 
 def sketch(obj, size: int = SIZE) -> np.ndarray:
