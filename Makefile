@@ -18,12 +18,12 @@ $(STAMP): pyproject.toml | sysdeps
 	$(BIN)/pip install -q --upgrade pip
 	# torch first, pinned: mani-skill then finds it satisfied (another torch pulls gigabytes of CUDA)
 	$(BIN)/pip install -q torch==2.13.0
-	$(BIN)/pip install -q -e ".[sim,dev,ray]"
+	$(BIN)/pip install -q -e ".[sim,dev,ray,simready]"
 	touch $(STAMP)
 
 demo: $(STAMP)
 	$(BIN)/infmob generate all --count $(COUNT) --out $(OUT)
-	$(BIN)/infmob validate --sim $(OUT)
+	$(BIN)/infmob validate --sim --simready $(OUT)
 	$(BIN)/infmob preview --sheet $(OUT) --out $(OUT)/contact_sheet.png
 
 test: $(STAMP)

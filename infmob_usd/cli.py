@@ -48,6 +48,9 @@ def _parser() -> argparse.ArgumentParser:
                    help="an object folder or a folder of them (with --sweep: category ids, or `all`)")
     v.add_argument("--sim", action="store_true", help="add the physical-plausibility checks")
     v.add_argument("--usd-only", action="store_true", help="skip every simulator check")
+    v.add_argument("--simready", action="store_true",
+                   help="add NVIDIA's validators: SimReady Robotics-Prop 4.0.0, Robot-Body 3.0.0 FET_024/FET_022,"
+                   " omniverse-asset-validator defaults (pip install -e '.[simready]')")
     v.add_argument("--report", metavar="FILE", help="write a JSON report of every check to FILE")
     v.add_argument("--sweep", type=int, metavar="N",
                    help="generate seeds 0..N-1 of each category given as PATH into a temporary folder"
@@ -210,7 +213,7 @@ def cmd_validate(args) -> int:
             return _fail(f"no object folders (with metadata.json) under {' '.join(paths)}")
         rows = []
         n_ok = 0
-        for folder, report in _validate_all(folders, not args.usd_only, args.sim, args.workers):
+        for folder, report in _validate_all(folders, not args.usd_only, args.sim, args.workers, args.simready):
             n_ok += report.ok
             status = "ok  " if report.ok else "FAIL"
             fails = "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
@@ -233,13 +236,13 @@ def cmd_validate(args) -> int:
             shutil.rmtree(tmp, ignore_errors=True)
 
 
-def _validate_all(folders, sim: bool, physics: bool, workers: int):
+def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False):
     """``(folder, report)`` in folder order; a process pool when ``workers > 1``."""
     from functools import partial
 
     from .validate import validate_object
 
-    check = partial(validate_object, sim=sim, physics=physics)
+    check = partial(validate_object, sim=sim, physics=physics, simready=simready)
     if workers <= 1 or len(folders) <= 1:
         for folder in folders:
             yield folder, check(folder)

@@ -17,6 +17,7 @@ from infmob_usd.errors import OutputError
 
 from .common import visual_meshes
 from .meta import write_metadata, write_semantics
+from .thumbnail import write_thumbnail
 from .urdf import write_urdf
 from .usd import write_usd
 
@@ -59,7 +60,8 @@ def write_object(obj, out: Path) -> Path:
         obj._visual_meshes = visual_meshes(obj)  # normals and UVs once, for both writers
         obj.timings["geometry"] = obj.timings.get("geometry", 0.0) + time.perf_counter() - t0
         for stage, writer in (("textures_io", write_textures), ("usd", write_usd), ("urdf", write_urdf),
-                              ("metadata", write_semantics), ("metadata", write_metadata)):
+                              ("metadata", write_semantics), ("metadata", write_metadata),
+                              ("thumbnail", write_thumbnail)):
             t0 = time.perf_counter()
             writer(obj, tmp)
             obj.timings[stage] = obj.timings.get(stage, 0.0) + time.perf_counter() - t0

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import datetime
 import json
+import os
 from pathlib import Path
 
 import numpy as np
@@ -32,6 +34,72 @@ def _clean(x):
     if isinstance(x, np.integer):
         return int(x)
     return x
+
+
+# Wikidata item of each category and where it was verified: the item's Wikidata label (and description)
+# as exported into a public file. COCO = github.com/datable-be/AI4C_ContentAnalysis, COCO_2_WIKIDATA
+# (wikidata_concepturi, label, description per COCO class); VU = github.com/HeardLibrary/vandycite,
+# gallery_buchanan/classification/wikidata.gml (wikidata_label, wikidata_id). A category missing here has
+# no verified Q-code (tv, tap, dishwasher, storage_rack, plate_rack, pot, pan): its SimReady metadata
+# leaves `qcode` out, and SR.004 fails for it.
+WIKIDATA: dict[str, tuple[str, str]] = {
+    "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
+    "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
+    "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
+    "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
+    "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
+    "dining_table": ("Q115665141", "http://www.wikidata.org/entity/Q115665141 'dining table' (COCO)"),
+    "cocktail_table": ("Q14748", "http://www.wikidata.org/entity/Q14748 'table' (VU; no verified item"
+                                 " for coffee table)"),
+    "office_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO; no verified item for"
+                               " office chair)"),
+    "bar_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO)"),
+    "vase": ("Q191851", "http://www.wikidata.org/entity/Q191851 'vase' (COCO, VU)"),
+    "bottle": ("Q80228", "http://www.wikidata.org/entity/Q80228 'bottle', cylindrical container (COCO, VU)"),
+    "jar": ("Q1207302", "http://www.wikidata.org/entity/Q1207302 'jar' (VU)"),
+    "lamp": ("Q1138737", "http://www.wikidata.org/entity/Q1138737 'lamp' (VU)"),
+    "kitchen_cabinet": ("Q2741056", "http://www.wikidata.org/entity/Q2741056 'cabinet' (VU)"),
+}
+
+LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released
+
+
+def date_generated() -> str:
+    """``usd_date_generated`` (ISO ``YYYY-MM-DD``), deterministic so the same seed gives the same bytes:
+    the UTC date of ``SOURCE_DATE_EPOCH`` when set (the reproducible-builds convention), else the release
+    date of this version of infmob-usd."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    if epoch:
+        try:
+            return datetime.datetime.fromtimestamp(int(epoch), datetime.timezone.utc).date().isoformat()
+        except (ValueError, OverflowError, OSError):
+            raise ValueError(f"SOURCE_DATE_EPOCH={epoch!r} is not a Unix time in seconds; fix or unset it") from None
+    from infmob_usd._version import __release_date__
+
+    return __release_date__
+
+
+def simready_metadata(obj, bounds) -> dict:
+    """SimReady provenance metadata (``SimReady_Metadata`` in the USD root layer, SR.004): author, asset name,
+    type, licence, category, source, date, Wikidata Q-code (when verified), rigid-body count, extents (m) and
+    mass (kg). ``bounds`` is the ``(2, 3)`` world bounds of the visual meshes."""
+    lo, hi = (np.asarray(b, float) for b in bounds)
+    meta = {
+        "author": "infmob-usd",
+        "asset_name": obj.name,
+        "asset_type": "prop",
+        "asset_license": LICENSE,
+        "category": obj.category,
+        "source_file": f"infmob_usd.categories.{obj.category} (infmob-usd {obj.version}, seed {obj.seed})",
+        "usd_date_generated": date_generated(),
+        "rigid_body_count": len(obj.links),
+        "asset_extents": [round(float(x), 6) for x in hi - lo],
+        "mass": round(float(sum(link.mass for link in obj.links)), 6),
+    }
+    if obj.category in WIKIDATA:
+        meta["qcode"] = WIKIDATA[obj.category][0]
+    return meta
 
 
 def metadata(obj) -> dict:

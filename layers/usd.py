@@ -29,6 +29,7 @@ from pxr import Gf, Sdf, Vt
 from infmob_usd.mass import principal
 
 from .common import visual_meshes
+from .meta import simready_metadata
 
 PAYLOAD = "payload"
 SUBLAYERS = ("physics.usda", "materials.usda", "geometry.usdc")
@@ -119,8 +120,10 @@ def _templates() -> Sdf.Layer:
         hull = _prim(layer.pseudoRoot, "Hull", _DEF, "Mesh")
         _attr(hull, "subdivisionScheme", "token", "none", uniform=True)
         _attr(hull, "purpose", "token", "guide", uniform=True)
+        _attr(hull, "visibility", "token", "invisible")  # never drawn: no visible twin of a visual mesh (VG.008)
         _attr(hull, "xformOpOrder", "token[]", Vt.TokenArray(["xformOp:translate"]), uniform=True)
-        collider = _prim(layer.pseudoRoot, "Collider", _OVER, "", ("PhysicsCollisionAPI", "PhysicsMeshCollisionAPI"))
+        collider = _prim(layer.pseudoRoot, "Collider", _OVER, "", ("PhysicsCollisionAPI", "PhysicsMeshCollisionAPI",
+                                                                     "MaterialBindingAPI"))
         _attr(collider, "physics:approximation", "token", "convexHull", uniform=True)
         _TEMPLATES = layer
     return _TEMPLATES
@@ -171,7 +174,8 @@ def _bounds(obj, visuals) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _hulls(obj) -> dict[str, list]:
-    """Collision hulls per link: ``[(centre (3,), float32 vertices - centre, float32 extent, int32 faces)]``.
+    """Collision hulls per link: ``[(centre (3,), float32 vertices - centre, float32 extent, int32 faces,
+    float32 outward face normals (m, 3), material slot)]``.
 
     As in the URDF (:func:`layers.common.collision_placements`): each hull sits at the centre of its bounds
     (a translate op) with its vertices around it. Vectorised over every hull of the object;
@@ -179,13 +183,14 @@ def _hulls(obj) -> dict[str, list]:
     monotonic).
     """
     out: dict[str, list] = {link.name: [] for link in obj.links}
-    owners, verts, faces = [], [], []
+    owners, verts, faces, slots = [], [], [], []
     for link in obj.links:
         for piece in link.pieces:
             for v, f in piece.hulls():
                 owners.append(link.name)
                 verts.append(v)
                 faces.append(f)
+                slots.append(piece.material)
     if not owners:
         return out
     sizes = np.array([len(v) for v in verts])
@@ -198,9 +203,12 @@ def _hulls(obj) -> dict[str, list]:
     fsizes = np.array([len(f) for f in faces])
     fends = np.cumsum(fsizes)
     f32 = np.vstack(faces).astype(np.int32)
+    tri = v_all[f32 + np.repeat(starts, fsizes)[:, None]]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    n = (n / np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-30)).astype(np.float32)
     for i, name in enumerate(owners):
-        out[name].append((centre[i], v32[starts[i]:starts[i] + sizes[i]], extent[i],
-                          f32[fends[i] - fsizes[i]:fends[i]]))
+        fs = slice(fends[i] - fsizes[i], fends[i])
+        out[name].append((centre[i], v32[starts[i]:starts[i] + sizes[i]], extent[i], f32[fs], n[fs], slots[i]))
     return out
 
 
@@ -238,7 +246,7 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
         _link_xform(lp, link.origin)
         _label(lp, link.label)
         if visuals[link.name]:
-            vp = _prim(lp, "visuals")
+            vp = _prim(lp, "visuals", _DEF, "Scope")
             for vname, _slot, role, verts, lo, hi, faces, normals, uvs in visuals[link.name]:
                 mesh = _copy("/Visual", vp, vname)
                 _mesh(mesh, verts, np.array([lo, hi], np.float32), faces.astype(np.int32), counts)
@@ -250,10 +258,11 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
                     mesh.SetInfo("apiSchemas", Sdf.TokenListOp.Create(prependedItems=["SemanticsLabelsAPI:class"]))
                     _label(mesh, role)
         if hulls[link.name]:
-            cp = _prim(lp, "collisions")
-            for i, (centre, hv, extent, hf) in enumerate(hulls[link.name]):
-                col = _copy("/Hull", cp, f"hull_{i:03d}")  # subdivisionScheme, purpose, xformOpOrder
+            cp = _prim(lp, "collisions", _DEF, "Scope")
+            for i, (centre, hv, extent, hf, hn, _slot) in enumerate(hulls[link.name]):
+                col = _copy("/Hull", cp, f"hull_{i:03d}")  # subdivisionScheme, purpose, visibility, xformOpOrder
                 _mesh(col, hv, extent, hf, counts)
+                _attr(col, "normals", "normal3f[]", Vt.Vec3fArray.FromNumpy(hn)).SetInfo("interpolation", "uniform")
                 Sdf.AttributeSpec(col, "xformOp:translate", _T.Double3, _VARYING, False).default = Gf.Vec3d(
                     *centre.tolist())
 
@@ -273,7 +282,8 @@ def _materials(layer: Sdf.Layer, obj, visuals) -> None:
     for slot, look in obj.materials.items():
         mpath = f"{lpath}/{slot}"
         maps = [m for m in _MAPS if m in obj.textures.get(slot, {})]
-        mat = _prim(looks, slot, _DEF, "Material")
+        mat = _prim(looks, slot, _DEF, "Material", ("SemanticsLabelsAPI:material",))
+        _attr(mat, "semantics:labels:material", "token[]", Vt.TokenArray([look.family]))
         _connect(mat, "outputs:surface", "token", f"{mpath}/PreviewSurface.outputs:surface")
         surf = _prim(mat, "PreviewSurface", _DEF, "Shader")
         _attr(surf, "info:id", "token", "UsdPreviewSurface", uniform=True)
@@ -330,13 +340,50 @@ def _materials(layer: Sdf.Layer, obj, visuals) -> None:
             _rel(_prim(vp, vname, _OVER, "", ("MaterialBindingAPI",)), "material:binding", f"{lpath}/{slot}")
 
 
+def _compound_pairs(obj) -> list[tuple[str, str]]:
+    """``(child, parent)`` for every real link whose joint chain reaches its real parent through dummy
+    links (a compound joint): the pairs a simulator's parent-child contact filter misses."""
+    parent_of = {j.child: j.parent for j in obj.joints}
+    dummy = {link.name for link in obj.links if link.dummy}
+    pairs = []
+    for link in obj.links:
+        p = parent_of.get(link.name)
+        if link.dummy or p not in dummy:
+            continue
+        while p in dummy and p in parent_of:
+            p = parent_of[p]
+        pairs.append((link.name, p))
+    return pairs
+
+
+def _physics_materials(root: Sdf.PrimSpec, obj) -> dict[str, str]:
+    """One ``PhysicsMaterialAPI`` Material per material family worn: slot -> its path."""
+    from infmob_usd.materials.families import CONTACT
+
+    families = sorted({look.family for look in obj.materials.values()})
+    scope = _prim(root, "PhysicsMaterials", _DEF, "Scope")
+    for fam in families:
+        c = CONTACT[fam]
+        mat = _prim(scope, fam, _DEF, "Material", ("PhysicsMaterialAPI", "SemanticsLabelsAPI:material"))
+        _attr(mat, "physics:staticFriction", "float", float(c.static))
+        _attr(mat, "physics:dynamicFriction", "float", float(c.dynamic))
+        _attr(mat, "physics:restitution", "float", float(c.restitution))
+        _attr(mat, "semantics:labels:material", "token[]", Vt.TokenArray([fam]))
+    return {slot: f"/{obj.name}/PhysicsMaterials/{look.family}" for slot, look in obj.materials.items()}
+
+
 def _physics(layer: Sdf.Layer, obj, hulls) -> None:
-    """Articulation root, rigid bodies with mass, colliders, joints with drives."""
+    """Articulation root, rigid bodies with mass, colliders bound to physics materials, joints with drives,
+    joint state, PhysX joint-axis limits and friction, and contact filters across compound chains."""
     root = _prim(layer.pseudoRoot, obj.name, _OVER, "", ("PhysicsArticulationRootAPI",))
     rp = f"/{obj.name}"
     origins = {link.name: link.origin for link in obj.links}
+    contact = _physics_materials(root, obj)
+    filtered = dict(_compound_pairs(obj))
     for link in obj.links:
-        prim = _prim(root, link.name, _OVER, "", ("PhysicsRigidBodyAPI", "PhysicsMassAPI"))
+        apis = ("PhysicsRigidBodyAPI", "PhysicsMassAPI") + (("PhysicsFilteredPairsAPI",) if link.name in filtered
+                                                             else ())
+        prim = _prim(root, link.name, _OVER, "", apis)
         moments, axes = principal(link.inertia)
         # Gf matrices act on row vectors: the rotation whose columns are the axes is axes.T
         q = Gf.Matrix3d(*axes.T.ravel().tolist()).ExtractRotation().GetQuat()
@@ -344,10 +391,13 @@ def _physics(layer: Sdf.Layer, obj, hulls) -> None:
         _attr(prim, "physics:centerOfMass", "point3f", Gf.Vec3f(*map(float, link.com)))
         _attr(prim, "physics:diagonalInertia", "float3", Gf.Vec3f(*map(float, moments)))
         _attr(prim, "physics:principalAxes", "quatf", Gf.Quatf(q.GetReal(), Gf.Vec3f(q.GetImaginary())))
+        if link.name in filtered:
+            _rel(prim, "physics:filteredPairs", f"{rp}/{filtered[link.name]}")
         if hulls[link.name]:
             cp = _prim(prim, "collisions", _OVER)
-            for i in range(len(hulls[link.name])):
-                _copy("/Collider", cp, f"hull_{i:03d}")  # collision APIs, convexHull approximation
+            for i, hull in enumerate(hulls[link.name]):
+                col = _copy("/Collider", cp, f"hull_{i:03d}")  # collision APIs, convexHull, MaterialBindingAPI
+                _rel(col, "material:binding:physics", contact[hull[5]])
     joints = _prim(root, "Joints", _DEF, "Scope")
     base = _prim(joints, "root_joint", _DEF, "PhysicsFixedJoint")
     _rel(base, "physics:body1", f"{rp}/{obj.links[0].name}")
@@ -358,7 +408,10 @@ def _physics(layer: Sdf.Layer, obj, hulls) -> None:
         else:
             drive = "linear" if j.type == "prismatic" else "angular"
             kind = "PhysicsPrismaticJoint" if j.type == "prismatic" else "PhysicsRevoluteJoint"
-            uj = _prim(joints, j.name, _DEF, kind, (f"PhysicsDriveAPI:{drive}",))
+            uj = _prim(joints, j.name, _DEF, kind, (f"PhysicsDriveAPI:{drive}", f"PhysicsJointStateAPI:{drive}",
+                                                    f"PhysxJointAxisAPI:{drive}"))
+            # USD angles are degrees: limits, angular velocity and angular damping (per degree; URDF's per radian)
+            per_unit = 1.0 if j.type == "prismatic" else math.pi / 180
             if j.type == "prismatic":
                 _attr(uj, "physics:lowerLimit", "float", float(j.lower))
                 _attr(uj, "physics:upperLimit", "float", float(j.upper))
@@ -370,11 +423,19 @@ def _physics(layer: Sdf.Layer, obj, hulls) -> None:
             dp = f"drive:{drive}:physics:"
             _attr(uj, dp + "type", "token", "force", uniform=True)
             _attr(uj, dp + "stiffness", "float", 0.0)
-            # USD angular damping is per degree; URDF's is per radian
-            damping = j.damping if j.type == "prismatic" else j.damping * math.pi / 180
-            _attr(uj, dp + "damping", "float", float(damping))
-            _attr(uj, dp + "maxForce", "float", float(j.effort))
-            _attr(uj, "physxJoint:jointFriction", "float", float(j.friction), custom=True)
+            _attr(uj, dp + "damping", "float", float(j.damping * per_unit))
+            _attr(uj, dp + "maxForce", "float", float(j.effort))  # the effort limit (N or N*m)
+            # the written pose is joint coordinate 0, at rest
+            _attr(uj, f"state:{drive}:physics:position", "float", 0.0)
+            _attr(uj, f"state:{drive}:physics:velocity", "float", 0.0)
+            # PhysX joint axis (current physx-usd-schemas): velocity limit (deg/s or m/s), Coulomb friction
+            ax = f"physxJointAxis:{drive}:"
+            _attr(uj, ax + "maxJointVelocity", "float", float(j.velocity / per_unit))
+            _attr(uj, ax + "staticFrictionEffort", "float", float(j.friction))
+            _attr(uj, ax + "dynamicFrictionEffort", "float", float(j.friction))
+            armature = getattr(j, "armature", None)
+            if armature is not None:
+                _attr(uj, ax + "armature", "float", float(armature))
         _rel(uj, "physics:body0", f"{rp}/{j.parent}")
         _rel(uj, "physics:body1", f"{rp}/{j.child}")
         local0 = np.asarray(origins[j.child]) - np.asarray(origins[j.parent])
@@ -402,5 +463,9 @@ def _write_interface(obj, folder: Path, bounds) -> Path:
         _attr(prim, "extentsHint", "float3[]", Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]))
         _label(prim, obj.category)
         prim.payloadList.prependedItems = [Sdf.Payload(f"./{PAYLOAD}/contents.usda")]
+        meta = simready_metadata(obj, bounds)
+        meta["asset_extents"] = Gf.Vec3d(*meta["asset_extents"])
+        meta["validation"] = {"profile": "Robotics-Prop", "profile_version": "4.0.0"}  # simready-validate's default
+        layer.customLayerData = {"SimReady_Metadata": meta}
     layer.Save()
     return path

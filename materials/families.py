@@ -29,8 +29,8 @@ from typing import Any
 import numpy as np
 
 __all__ = [
-    "FAMILIES", "LOOKS_PER_VARIANT", "WOOD_SPECIES", "Family", "Look", "Wear", "library", "library_look",
-    "sample_look", "sample_wear", "srgb_to_linear",
+    "CONTACT", "FAMILIES", "LOOKS_PER_VARIANT", "WOOD_SPECIES", "Contact", "Family", "Look", "Wear", "library",
+    "library_look", "sample_look", "sample_wear", "srgb_to_linear",
 ]
 
 LOOKS_PER_VARIANT = 16
@@ -491,6 +491,54 @@ FAMILIES: dict[str, Family] = {
         ),
     )
 }
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Contact properties of a material family: what a physics material carries.
+
+    ``static`` and ``dynamic`` are the Coulomb friction coefficients of the family's
+    surface against itself (or the nearest pair a table lists), ``restitution`` the
+    coefficient of restitution of a small object of it dropped on a hard floor;
+    ``source`` names where each figure comes from.
+    """
+
+    static: float
+    dynamic: float
+    restitution: float
+    source: str
+
+
+_FRICTION_HOWWHY = "howwhy.nfshost.com/new/book1/motion/coefficients.html"
+_FRICTION_TABLE_A1 = "ecampusontario.pressbooks.pub/physicsfundamentals/back-matter/appendix (Table A.1)"
+_FRICTION_PLASTICS = "designengineers.blogspot.com/2008/03/coefficients-of-friction-static-ranges.html"
+_FRICTION_GLASS = "scribd.com/document/254031261 (Engineering ToolBox table: glass on metal)"
+_RESTITUTION = "phunland.com/wiki/Restitution (after The Physics Factbook)"
+_KINETIC_RATIO = "dynamic = 0.75 x static (no kinetic figure listed; the listed pairs span 0.5-0.85)"
+
+CONTACT: dict[str, Contact] = {
+    "wood": Contact(0.5, 0.3, 0.6, f"friction: wood on wood, {_FRICTION_HOWWHY}; restitution: wooden ball,"
+                    f" {_RESTITUTION}"),
+    "painted": Contact(0.5, 0.3, 0.6, f"painted wood/MDF panels taken as wood: wood on wood, {_FRICTION_HOWWHY};"
+                       f" restitution: wooden ball, {_RESTITUTION}"),
+    "brushed_metal": Contact(0.6, 0.3, 0.6, f"friction: steel on steel (dry), {_FRICTION_HOWWHY}; restitution:"
+                             f" steel ball bearing, {_RESTITUTION}"),
+    "chrome": Contact(0.6, 0.3, 0.6, f"chrome-plated steel taken as steel: steel on steel (dry), {_FRICTION_HOWWHY};"
+                      f" restitution: steel ball bearing, {_RESTITUTION}"),
+    "plastic": Contact(0.6, 0.45, 0.69, f"friction: ABS static 0.60-0.75 (lower bound), {_FRICTION_PLASTICS};"
+                       f" {_KINETIC_RATIO}; restitution: hollow hard plastic ball, {_RESTITUTION}"),
+    "glass": Contact(0.6, 0.25, 0.66, f"friction: glass on metal 0.5-0.7 / 0.2-0.3 (mid-range), {_FRICTION_GLASS};"
+                     f" restitution: glass marble, {_RESTITUTION}"),
+    "ceramic": Contact(0.6, 0.25, 0.66, f"glazed ceramic taken as glass: glass on metal, {_FRICTION_GLASS};"
+                       f" restitution: glass marble, {_RESTITUTION}"),
+    "enamel": Contact(0.6, 0.25, 0.66, f"vitreous enamel (glass fused on steel) taken as glass: glass on metal,"
+                      f" {_FRICTION_GLASS}; restitution: glass marble, {_RESTITUTION}"),
+    "rubber": Contact(1.0, 0.7, 0.83, f"friction: rubber on dry concrete, {_FRICTION_HOWWHY}; restitution: ball of"
+                      f" rubber bands, {_RESTITUTION}"),
+    "fabric": Contact(0.3, 0.225, 0.1, f"friction: cotton on cotton, {_FRICTION_TABLE_A1}; {_KINETIC_RATIO};"
+                      " restitution: no published figure found, 0.1 chosen (upholstery absorbs impacts)"),
+}
+"""Physics-material data per family (friction and restitution), with the source of each figure."""
 
 
 def srgb_to_linear(c: np.ndarray | float) -> np.ndarray:

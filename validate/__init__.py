@@ -6,6 +6,8 @@
   the UsdPhysics parse, joint-frame agreement, referenced files, USD/URDF agreement;
 * with ``sim`` (default): SAPIEN physics on CPU (:mod:`.sim`): the URDF loads
   (``sapien_load``) and every movable joint driven alone reaches both limits (``reach``);
+* with ``simready``: NVIDIA's validators (:mod:`.simready`): SimReady Robotics-Prop 4.0.0, the
+  articulation and driven-joint features of Robot-Body 3.0.0, omniverse-asset-validator's defaults;
 * with ``physics``: the plausibility checks of ``infmob validate --sim``: passive
   joints hold still under gravity (``rest``), the geometric ``ground``,
   ``self_collision`` and ``parent_child`` checks (:mod:`.physics`), and loading
@@ -35,12 +37,22 @@ class ObjectReport:
         return [c for c in self.checks if not c.ok]
 
 
-def validate_object(folder: str | Path, sim: bool = True, physics: bool = False) -> ObjectReport:
+def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
+                    simready: bool = False) -> ObjectReport:
     """Validate one object folder (see the module docstring for what each flag adds)."""
+    if simready:  # the PhysX schemas must be registered before USD's schema registry is first used
+        from .simready import available, install_physx_shim
+
+        if available():
+            install_physx_shim()
     from .usd_check import check_usd
 
     folder = Path(folder)
     report = ObjectReport(folder, check_usd(folder))
+    if simready:
+        from .simready import check_simready
+
+        report.checks += check_simready(folder)
     if sim or physics:
         from .sim import check_sapien
 

@@ -807,7 +807,9 @@ def preview(folder, out=None, size: int = 512) -> dict[str, Path]:
     movable joint at 70 % of its range (continuous joints a quarter turn), one camera for both, a
     caption under each. ``sweep.gif``: 256 px frames, each movable joint in turn from its lower to
     its upper limit (10 frames a joint, at most 120 frames). ``out`` is a folder (default: the object
-    folder itself). Returns ``{"preview": path, "sweep": path}`` (no sweep without movable joints).
+    folder itself). Returns ``{"preview": path, "sweep": path}`` (no sweep without movable joints); rendering
+    into the object folder itself also replaces its SimReady thumbnail (``.thumbs/256x256/<name>.usda.png``,
+    the writer's sketch) with a 256 px SAPIEN picture at rest (``"thumbnail"``).
     """
     import cv2
 
@@ -828,6 +830,14 @@ def preview(folder, out=None, size: int = 512) -> dict[str, Path]:
         a = _captioned(a, f"{files.name}  rest")
         b = _captioned(b, f"{n} movable joint{'s' * (n != 1)} at {int(OPEN_FRACTION * 100)}%" if n
                        else "no movable joints")
+        if out == folder:  # SAPIEN's picture replaces the writer's sketch as the SimReady thumbnail
+            from infmob_usd.layers.thumbnail import SIZE, thumbnail_path
+
+            r.set_qpos(rest_q)
+            thumb = thumbnail_path(folder, files.name)
+            thumb.parent.mkdir(parents=True, exist_ok=True)
+            cv2.imwrite(str(thumb), r.render(SIZE, r.camera_for(rest_q), _supersample(SIZE)).rgb[..., ::-1])
+            written["thumbnail"] = thumb
         gap = np.full((a.shape[0], max(2, size // 128), 3), 255, np.uint8)
         path = out / "preview.png"
         cv2.imwrite(str(path), np.concatenate([a, gap, b], axis=1)[..., ::-1])

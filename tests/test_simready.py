@@ -1,0 +1,175 @@
+"""SimReady conformance of the written USD, and the `simready` check with NVIDIA's validators.
+
+The first tests read the files with pxr alone; the validator tests need the `simready` extra and run
+NVIDIA's validators in fresh processes (the PhysX schemas must be registered before USD's schema
+registry is first used, which an earlier test in this process already did).
+"""
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+
+import cv2
+import numpy as np
+import pytest
+from pxr import Sdf, Usd, UsdGeom, UsdPhysics, UsdShade
+
+import infmob_usd
+from infmob_usd.layers.meta import WIKIDATA
+from infmob_usd.layers.thumbnail import thumbnail_path
+from infmob_usd.materials.families import CONTACT
+from infmob_usd.validate.simready import available
+
+from zoo import zoo
+
+
+@pytest.fixture(scope="module")
+def zoo_folder(tmp_path_factory):
+    return zoo(3, texture_size=16).save(tmp_path_factory.mktemp("zoo"))
+
+
+def _stage(folder):
+    return Usd.Stage.Open(str(folder / f"{folder.name}.usda"))
+
+
+def test_collision_hulls_have_outward_normals_and_are_invisible(zoo_folder):
+    stage = _stage(zoo_folder)
+    hulls = [p for p in stage.Traverse() if p.HasAPI(UsdPhysics.CollisionAPI)]
+    assert hulls
+    for prim in hulls:
+        mesh = UsdGeom.Mesh(prim)
+        pts = np.array(mesh.GetPointsAttr().Get())
+        faces = np.array(mesh.GetFaceVertexIndicesAttr().Get()).reshape(-1, 3)
+        normals = np.array(mesh.GetNormalsAttr().Get())
+        assert mesh.GetNormalsInterpolation() == "uniform" and len(normals) == len(faces)
+        np.testing.assert_allclose(np.linalg.norm(normals, axis=1), 1.0, atol=1e-5)
+        centroids = pts[faces].mean(1)
+        assert np.all(np.einsum("ij,ij->i", normals, centroids - pts.mean(0)) > -1e-6), prim.GetPath()
+        assert UsdGeom.Imageable(prim).ComputeVisibility() == UsdGeom.Tokens.invisible
+        assert prim.GetParent().GetTypeName() == "Scope"
+
+
+def test_materials_labelled_and_colliders_bound_to_physics_materials(zoo_folder):
+    stage = _stage(zoo_folder)
+    meta = json.loads((zoo_folder / "metadata.json").read_text())
+    for prim in stage.Traverse():
+        if prim.IsA(UsdShade.Material):
+            labels = prim.GetAttribute("semantics:labels:material").Get()
+            assert "SemanticsLabelsAPI:material" in prim.GetAppliedSchemas() and labels, prim.GetPath()
+        if prim.HasAPI(UsdPhysics.CollisionAPI):
+            target = prim.GetRelationship("material:binding:physics").GetTargets()
+            mat = stage.GetPrimAtPath(target[0])
+            fam = mat.GetName()
+            assert mat.HasAPI(UsdPhysics.MaterialAPI) and fam in {m["family"] for m in meta["materials"].values()}
+            api = UsdPhysics.MaterialAPI(mat)
+            assert math.isclose(api.GetStaticFrictionAttr().Get(), CONTACT[fam].static, rel_tol=1e-6)
+            assert math.isclose(api.GetDynamicFrictionAttr().Get(), CONTACT[fam].dynamic, rel_tol=1e-6)
+            assert math.isclose(api.GetRestitutionAttr().Get(), CONTACT[fam].restitution, rel_tol=1e-6)
+
+
+def test_movable_joints_carry_state_limits_and_physx_axis(zoo_folder):
+    stage = _stage(zoo_folder)
+    obj = zoo(3, texture_size=16)
+    by_name = {j.name: j for j in obj.joints}
+    n = 0
+    for prim in stage.Traverse():
+        if not (prim.IsA(UsdPhysics.RevoluteJoint) or prim.IsA(UsdPhysics.PrismaticJoint)):
+            continue
+        j = by_name[prim.GetName()]
+        axis = "linear" if prim.IsA(UsdPhysics.PrismaticJoint) else "angular"
+        per = 1.0 if axis == "linear" else math.pi / 180
+        # authored list (GetAppliedSchemas hides schemas unknown to a registry without the PhysX plugin)
+        applied = prim.GetMetadata("apiSchemas").ApplyOperations([])
+        assert {f"PhysicsJointStateAPI:{axis}", f"PhysxJointAxisAPI:{axis}", f"PhysicsDriveAPI:{axis}"} <= set(applied)
+        assert prim.GetAttribute(f"state:{axis}:physics:position").Get() == 0.0
+        assert prim.GetAttribute(f"drive:{axis}:physics:maxForce").Get() == pytest.approx(j.effort)
+        assert prim.GetAttribute(f"physxJointAxis:{axis}:maxJointVelocity").Get() == pytest.approx(j.velocity / per)
+        assert prim.GetAttribute(f"physxJointAxis:{axis}:staticFrictionEffort").Get() == pytest.approx(j.friction)
+        assert not prim.GetAttribute("physxJoint:jointFriction")  # the old bare custom attribute is gone
+        n += 1
+    assert n == sum(j.movable for j in obj.joints)
+
+
+def test_compound_chains_filter_their_real_parent_and_child(zoo_folder):
+    stage = _stage(zoo_folder)
+    root = stage.GetDefaultPrim()
+    pairs = {}
+    for prim in root.GetChildren():
+        if prim.HasAPI(UsdPhysics.FilteredPairsAPI):
+            rel = UsdPhysics.FilteredPairsAPI(prim).GetFilteredPairsRel()
+            pairs[prim.GetName()] = [t.name for t in rel.GetTargets()]
+    # every compound joint of the zoo ends in its part, two or more links below "base"
+    assert pairs == {p: ["base"] for p in ("rp_part", "cp_part", "lp_part", "lf_part", "fr_part")}
+
+
+def test_simready_metadata_and_thumbnail(zoo_folder, tmp_path, monkeypatch):
+    stage = _stage(zoo_folder)
+    data = stage.GetRootLayer().customLayerData["SimReady_Metadata"]
+    meta = json.loads((zoo_folder / "metadata.json").read_text())
+    assert data["asset_name"] == zoo_folder.name and data["rigid_body_count"] == len(meta["links"])
+    assert data["mass"] == pytest.approx(sum(link["mass"] for link in meta["links"]), rel=1e-5)
+    lo, hi = np.array(meta["bounds"])
+    assert np.allclose(list(data["asset_extents"]), hi - lo, atol=1e-5)
+    assert "qcode" not in data  # the zoo is no category with a verified Wikidata item
+    img = cv2.imread(str(thumbnail_path(zoo_folder, zoo_folder.name)))
+    assert img.shape == (256, 256, 3) and img.std() > 10  # a picture, not a blank
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    again = zoo(3, texture_size=16).save(tmp_path)
+    layer = Sdf.Layer.FindOrOpen(str(again / f"{again.name}.usda"))
+    assert layer.customLayerData["SimReady_Metadata"]["usd_date_generated"] == "2023-11-14"
+
+
+def test_wikidata_table_names_real_categories():
+    cats = set(infmob_usd.list_categories())
+    assert set(WIKIDATA) <= cats
+    for qcode, source in WIKIDATA.values():
+        assert qcode[0] == "Q" and qcode[1:].isdigit() and f"entity/{qcode} " in source
+
+
+needs_validators = pytest.mark.skipif(not available(), reason="needs the simready extra (NVIDIA validators)")
+
+
+@needs_validators
+def test_validators_really_run_the_physx_rules(zoo_folder, tmp_path):
+    """A joint without PhysicsJointStateAPI fails DJ.002 and a hull without normals VG.027: the shim makes
+    pxr.PhysxSchema importable, so the driven-joint rules do not silently pass."""
+    bad = tmp_path / zoo_folder.name
+    shutil.copytree(zoo_folder, bad)
+    physics = bad / "payload" / "physics.usda"
+    text = physics.read_text()
+    physics.write_text(text.replace(', "PhysicsJointStateAPI:angular"', "", 1))
+    crate = Sdf.Layer.FindOrOpen(str(bad / "payload" / "geometry.usdc"))
+    hull = next(p for p in crate.rootPrims[0].nameChildren[0].nameChildren["collisions"].nameChildren)
+    del hull.properties["normals"]
+    crate.Save()
+    out = subprocess.run([sys.executable, "-m", "infmob_usd.validate.simready",
+                          str(zoo_folder / f"{zoo_folder.name}.usda"), str(bad / f"{bad.name}.usda")],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    good, broken = (json.loads(line) for line in out if line.startswith("{"))
+    assert good["body"] == [] and good["omni"] == [] and good["shim"].startswith("physx-usd-schemas")
+    assert any("DJ.002" in m for m in broken["body"]), broken["body"]
+    assert any("VG.027" in m for m in broken["prop"]), broken["prop"]
+    assert not any("VG.027" in m or "DJ" in m for m in good["prop"])
+
+
+@needs_validators
+def test_simready_check_on_every_category(tmp_path):
+    """One seed of every category: the `simready` check passes, except SR.004 (no verified Q-code) for the
+    categories the Wikidata table leaves out."""
+    for category in infmob_usd.list_categories():
+        infmob_usd.generate(category, seed=0, texture_size=16).save(tmp_path / category)
+    report = tmp_path / "report.json"
+    subprocess.run([sys.executable, "-m", "infmob_usd", "validate", "--usd-only", "--simready", "--workers", "2",
+                    "--report", str(report), str(tmp_path)], capture_output=True, text=True, check=False)
+    results = json.loads(report.read_text())["results"]
+    assert len(results) == len(infmob_usd.list_categories())
+    for r in results:
+        checks = {c["name"]: c for c in r["checks"]}
+        assert all(c["ok"] for n, c in checks.items() if n != "simready"), r["object"]
+        sr = checks["simready"]
+        if r["category"] in WIKIDATA:
+            assert sr["ok"], f"{r['object']}: {sr['detail']}"
+        else:
+            assert not sr["ok"] and "SR.004" in sr["detail"] and sr["detail"].count("FET_") == 1, sr["detail"]
