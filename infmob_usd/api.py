@@ -7,6 +7,7 @@ from types import ModuleType
 from typing import Any
 
 from . import physical
+from .effort import assign_drives
 from .errors import ModelError, ParameterError, UnknownCategoryError
 from .model import ArticulatedObject, build
 from .seeding import streams
@@ -107,5 +108,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
     physical.limit_to_ground(obj)
+    assign_drives(obj)  # after every limit is final: the stop budget depends on the range
     obj.timings["geometry"] += time.perf_counter() - t2
     return obj

@@ -10,7 +10,9 @@
   OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~30 collision files, not ~180),
   and identical hulls of a link (a keypad's buttons) share one file;
 * ``<inertial>`` with the full tensor about the centre of mass;
-* ``<limit>`` with effort and velocity, ``<dynamics damping friction>``.
+* ``<limit>`` with effort and velocity, ``<dynamics damping friction>``;
+* a ``<mujoco><compiler strippath="false" discardvisual="false"/></mujoco>`` hint, so MuJoCo finds
+  the meshes (3.x strips folders from mesh paths by default) and keeps the visual meshes.
 
 All mesh and texture paths are relative to the URDF file.
 """
@@ -135,6 +137,8 @@ def write_urdf(obj, folder: Path) -> Path:
         (meshes / f"{slot}.mtl").write_text(_mtl(slot, look, obj.textures.get(slot, {})))
     visuals = visual_meshes(obj)
     out = [f'<?xml version="1.0"?>\n<robot name={quoteattr(obj.name)}>']
+    # MuJoCo reads this: keep the meshes/ folder in mesh paths (3.x strips it by default) and the visuals
+    out.append('  <mujoco><compiler strippath="false" discardvisual="false"/></mujoco>')
     for link in obj.links:
         out.append(f'  <link name="{link.name}">')
         for vname, slot, _role, v, f, n, uv in visuals[link.name]:
