@@ -7,7 +7,8 @@ drives it through its stops. Here it is derived from the **moving subtree** (eve
 carries, rigid at rest) and the joint's **role**:
 
 * ``m_eff``: the subtree's mass (slides) or its moment of inertia about the joint axis
-  (rotations), so that ``effort / m_eff`` is the acceleration the effort gives the part;
+  (rotations) with the joints below it free (:func:`free_inertia`), so that ``effort / m_eff`` is
+  the acceleration the effort gives the part;
 * ``arm``: for rotations, the subtree's radius of gyration about the axis, ``sqrt(I / m)``:
   where a hand's force acts, on average (for slides, 1 m);
 * the role's **weight multiple** ``k`` and **hand force** ``hand`` (:data:`ROLES`): a hand pushes a
@@ -26,9 +27,13 @@ carries, rigid at rest) and the joint's **role**:
 Velocity limits come from the role's **hand speed** (m/s) at the arm: ``speed`` for slides,
 ``speed / arm`` for rotations (a door's edge moves at about 1 m/s, a knob's rim at 0.2 m/s).
 
+Damping (from the role, :mod:`infmob_usd.physical`) is capped at :data:`DAMPING_RATE_MAX` times
+``m_eff``, so explicit integrators can step it.
+
 Armature (MJCF ``armature``, PhysX joint armature) is the hardware that moves with the joint and
 is not modelled as a link (hinge pins, runner carriages, bearings): :data:`ARMATURE_SHARE` of
-``m_eff``. It also steadies light dummy chains in simulators with explicit integration.
+``m_eff``, raised where a stop holds the subtree's weight until MuJoCo's soft stop sags less than
+:data:`SAG_SHARE` of the range (a light lamp arm carrying a head).
 """
 
 from __future__ import annotations
@@ -61,7 +66,20 @@ STOP_SHARE = 0.04
 0.05; the rest is a margin for the other joints and for contacts)."""
 
 ARMATURE_SHARE = 0.05
-"""Armature as a fraction of ``m_eff``."""
+"""Armature as a fraction of ``m_eff`` (at least)."""
+
+SAG_SHARE = 0.01
+"""Fraction of its range a joint may sag into the stop that holds its subtree's weight, in MuJoCo
+(whose soft stop is as stiff as the inertia the joint meets: a light link in a chain that carries a
+heavy head sags ~10 % of its range). Armature raises that inertia where needed; only the MJCF
+carries armature (URDF has no place for it)."""
+
+DAMPING_RATE_MAX = 60.0
+"""1/s: a joint's damping is at most this times ``m_eff``. Simulators that apply joint damping
+explicitly (Bullet, at its default 1/240 s step) are unstable once ``damping * dt / m_eff``
+exceeds 2, and the joints of a chain couple (measured: office chair arms, a slide, a light turn and a
+heavy pad in a chain, rang at 240 and were steady at 60); a role's damping (10 N m s for a slide)
+put on a light revolute joint of a compound chain (5e-5 kg m^2) throws the chain through its limits."""
 
 EFFORT_FLOOR = 0.01
 """The smallest effort, as a multiple of ``m_eff * G / arm``: where gravity alone uses the stop
@@ -105,6 +123,7 @@ class Drive:
     effort: float
     velocity: float
     armature: float
+    damping: float  # the role's damping, capped at DAMPING_RATE_MAX * m_eff
     m_eff: float  # kg or kg m^2
     arm: float  # m
     a_gravity: float  # m/s^2 or rad/s^2, the most gravity adds along the joint
@@ -120,6 +139,43 @@ def _subtree(obj, j):
     c = np.array([np.asarray(link.origin, float) + np.asarray(link.com, float) for link in links])
     inertia = np.array([np.asarray(link.inertia, float) for link in links])
     return m, c, inertia
+
+
+def _skew(v: np.ndarray) -> np.ndarray:
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+def free_inertia(obj, j) -> float:
+    """The inertia joint ``j`` meets when pushed with every joint below it free, at rest:
+    ``1 / (M^-1)[j, j]`` with ``M`` the joint-space inertia of ``j``'s subtree (composite rigid
+    bodies, spatial inertias about the world origin). Kg for slides, kg m^2 for rotations. A knob
+    on a door adds its mass to the door but not its spin; a lamp pole turning about its slide's
+    axis adds all its mass to the slide."""
+    moved = descendants(obj.joints, j.child)
+    links = {link.name: link for link in obj.links if link.name in moved}
+    chain = [k for k in obj.joints if k.movable and k.child in moved]  # j first: parents precede children
+    spatial = {}
+    for name, link in links.items():
+        c = np.asarray(link.origin, float) + np.asarray(link.com, float)
+        cx = _skew(c)
+        m = float(link.mass)
+        spatial[name] = np.block([[np.asarray(link.inertia, float) + m * cx @ cx.T, m * cx],
+                                  [m * cx.T, m * np.eye(3)]])
+    below = {k.name: descendants(obj.joints, k.child) for k in chain}
+    composite = {k.name: sum(spatial[n] for n in below[k.name]) for k in chain}
+    motion = []
+    for k in chain:
+        a = np.asarray(k.axis, float) / np.linalg.norm(k.axis)
+        motion.append(np.concatenate([np.zeros(3), a]) if k.type == "prismatic"
+                      else np.concatenate([a, np.cross(np.asarray(k.origin, float), a)]))
+    n = len(chain)
+    mass = np.zeros((n, n))
+    for x in range(n):
+        for y in range(x, n):
+            kx, ky = chain[x], chain[y]
+            if ky.child in below[kx.name]:  # kx is an ancestor of (or is) ky
+                mass[x, y] = mass[y, x] = motion[x] @ composite[ky.name] @ motion[y]
+    return float(1.0 / np.linalg.inv(mass)[0, 0])
 
 
 def overshoot(a: float, span: float, m_eff: float, a_gravity: float, damping: float) -> float:
@@ -157,6 +213,7 @@ def drive(obj, j) -> Drive:
     axis = np.asarray(j.axis, float)
     axis = axis / np.linalg.norm(axis)
     gravity = np.array([0.0, 0.0, -G])
+    free = free_inertia(obj, j)
     if j.type == "prismatic":
         m_eff, arm = mass, 1.0
         a_gravity = abs(float(gravity @ axis))
@@ -170,26 +227,37 @@ def drive(obj, j) -> Drive:
         com_perp = np.linalg.norm((m[:, None] * perp).sum(0) / mass)
         # gravity torque about the axis is largest when the centre of mass is level with the axis
         g_perp = float(np.linalg.norm(gravity - (gravity @ axis) * axis))
-        a_gravity = mass * g_perp * float(com_perp) / m_eff
+        tau_gravity = mass * g_perp * float(com_perp)
         a_role = min(r.k * G / arm, r.hand / (mass * arm))
         velocity = r.speed / max(arm, 0.005)
+    m_eff = min(m_eff, free)  # what the push accelerates: the rigid subtree, less what free joints let go
+    if j.type != "prismatic":
+        a_gravity = tau_gravity / m_eff
+    damping = min(j.damping, DAMPING_RATE_MAX * m_eff)
     a_stop = None
     a = a_role
     if j.type != "continuous":
-        a_stop = _stop_budget(j.upper - j.lower, m_eff, a_gravity, j.damping)
+        a_stop = _stop_budget(j.upper - j.lower, m_eff, a_gravity, damping)
         a = min(a, a_stop)
     floor = EFFORT_FLOOR * G / arm
     effort = m_eff * max(a, floor)
-    return Drive(float(effort), float(velocity), float(ARMATURE_SHARE * m_eff), m_eff, arm, a_gravity, a_stop)
+    armature = ARMATURE_SHARE * m_eff
+    if j.type != "continuous" and a_gravity > 0:
+        # the stop holding the subtree's weight sags by C_SOFT * load / (m_eff + armature)
+        armature = max(armature, C_SOFT * a_gravity * m_eff / (SAG_SHARE * (j.upper - j.lower)) - m_eff)
+    return Drive(float(effort), float(velocity), float(armature), float(damping), m_eff, arm,
+                 a_gravity, a_stop)
 
 
 def assign_drives(obj):
-    """Set ``effort``, ``velocity`` and ``armature`` of every movable joint of ``obj`` (limits final)."""
+    """Set ``effort``, ``velocity``, ``armature`` (and cap ``damping``) of every movable joint of ``obj``
+    (limits final)."""
     joints = []
     for j in obj.joints:
         if j.movable:
             d = drive(obj, j)
-            j = replace(j, effort=_round(d.effort), velocity=_round(d.velocity), armature=_round(d.armature))
+            j = replace(j, effort=_round(d.effort), velocity=_round(d.velocity), armature=_round(d.armature),
+                        damping=_round(d.damping))
         joints.append(j)
     obj.joints = joints
     return obj

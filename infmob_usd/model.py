@@ -123,11 +123,15 @@ class ArticulatedObject:
             pose[j.child] = pose[j.parent] @ _translation(origin[j.child] - origin[j.parent]) @ motion
         return pose
 
-    def save(self, folder: str | Path) -> Path:
-        """Write the object into ``folder/<name>/`` (atomically) and return that path."""
+    def save(self, folder: str | Path, formats: str | list[str] | tuple[str, ...] | None = None) -> Path:
+        """Write the object into ``folder/<name>/`` (atomically) and return that path.
+
+        ``formats``: names from :data:`infmob_usd.layers.FORMATS` (``usd``, ``urdf``, ``mjcf``,
+        ``glb``) as a list or a comma string; default ``usd,urdf,mjcf``.
+        """
         from .layers import write_object
 
-        return write_object(self, Path(folder))
+        return write_object(self, Path(folder), formats)
 
 
 def _translation(t) -> np.ndarray:
