@@ -23,6 +23,7 @@ from infmob_usd.validate.mujoco_sim import PUSH_TOL
 from zoo import zoo
 
 pytest.importorskip("mujoco")
+pytestmark = pytest.mark.sim
 
 from infmob_usd.validate.mujoco_sim import check_mujoco  # noqa: E402
 from infmob_usd.validate.push import push_bullet, push_mujoco  # noqa: E402
