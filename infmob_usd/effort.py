@@ -7,7 +7,7 @@ drives it through its stops. Here it is derived from the **moving subtree** (eve
 carries, rigid at rest) and the joint's **role**:
 
 * ``m_eff``: the subtree's mass (slides) or its moment of inertia about the joint axis
-  (rotations) with the joints below it free (:func:`free_inertia`), so that ``effort / m_eff`` is
+  (rotations) with every other joint free (:func:`free_inertias`), so that ``effort / m_eff`` is
   the acceleration the effort gives the part;
 * ``arm``: for rotations, the subtree's radius of gyration about the axis, ``sqrt(I / m)``:
   where a hand's force acts, on average (for slides, 1 m);
@@ -145,22 +145,23 @@ def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
 
-def free_inertia(obj, j) -> float:
-    """The inertia joint ``j`` meets when pushed with every joint below it free, at rest:
-    ``1 / (M^-1)[j, j]`` with ``M`` the joint-space inertia of ``j``'s subtree (composite rigid
-    bodies, spatial inertias about the world origin). Kg for slides, kg m^2 for rotations. A knob
-    on a door adds its mass to the door but not its spin; a lamp pole turning about its slide's
-    axis adds all its mass to the slide."""
-    moved = descendants(obj.joints, j.child)
-    links = {link.name: link for link in obj.links if link.name in moved}
-    chain = [k for k in obj.joints if k.movable and k.child in moved]  # j first: parents precede children
+def free_inertias(obj) -> dict[str, float]:
+    """The inertia each movable joint meets when pushed with every other joint free, at rest:
+    ``1 / (M^-1)[j, j]``, ``M`` the joint-space inertia of the whole object on its fixed base
+    (composite rigid bodies, spatial inertias about the world origin). Kg for slides, kg m^2 for
+    rotations. A knob on a door adds its mass to the door but not its spin; a lamp pole turning
+    about its slide's axis adds all its mass to the slide; a screen on a two-hinge wall arm, pushed
+    at its outer hinge, also swings the light inner arm back, so it meets less than its own inertia."""
+    chain = [k for k in obj.joints if k.movable]  # parents precede children
+    if not chain:
+        return {}
     spatial = {}
-    for name, link in links.items():
+    for link in obj.links:
         c = np.asarray(link.origin, float) + np.asarray(link.com, float)
         cx = _skew(c)
         m = float(link.mass)
-        spatial[name] = np.block([[np.asarray(link.inertia, float) + m * cx @ cx.T, m * cx],
-                                  [m * cx.T, m * np.eye(3)]])
+        spatial[link.name] = np.block([[np.asarray(link.inertia, float) + m * cx @ cx.T, m * cx],
+                                       [m * cx.T, m * np.eye(3)]])
     below = {k.name: descendants(obj.joints, k.child) for k in chain}
     composite = {k.name: sum(spatial[n] for n in below[k.name]) for k in chain}
     motion = []
@@ -175,7 +176,13 @@ def free_inertia(obj, j) -> float:
             kx, ky = chain[x], chain[y]
             if ky.child in below[kx.name]:  # kx is an ancestor of (or is) ky
                 mass[x, y] = mass[y, x] = motion[x] @ composite[ky.name] @ motion[y]
-    return float(1.0 / np.linalg.inv(mass)[0, 0])
+    diag = np.diag(np.linalg.inv(mass))
+    return {k.name: float(1.0 / d) for k, d in zip(chain, diag)}
+
+
+def free_inertia(obj, j) -> float:
+    """:func:`free_inertias` of one joint."""
+    return free_inertias(obj)[j.name]
 
 
 def overshoot(a: float, span: float, m_eff: float, a_gravity: float, damping: float) -> float:
@@ -205,15 +212,16 @@ def _stop_budget(span: float, m_eff: float, a_gravity: float, damping: float) ->
     return lo
 
 
-def drive(obj, j) -> Drive:
-    """The effort, velocity and armature of movable joint ``j`` of ``obj`` (module docstring)."""
+def drive(obj, j, free: float | None = None) -> Drive:
+    """The effort, velocity and armature of movable joint ``j`` of ``obj`` (module docstring);
+    ``free``: its :func:`free_inertia`, if known."""
     r = role(j.role)
     m, c, inertia = _subtree(obj, j)
     mass = float(m.sum())
     axis = np.asarray(j.axis, float)
     axis = axis / np.linalg.norm(axis)
     gravity = np.array([0.0, 0.0, -G])
-    free = free_inertia(obj, j)
+    free = free_inertia(obj, j) if free is None else free
     if j.type == "prismatic":
         m_eff, arm = mass, 1.0
         a_gravity = abs(float(gravity @ axis))
@@ -253,9 +261,10 @@ def assign_drives(obj):
     """Set ``effort``, ``velocity``, ``armature`` (and cap ``damping``) of every movable joint of ``obj``
     (limits final)."""
     joints = []
+    free = free_inertias(obj)
     for j in obj.joints:
         if j.movable:
-            d = drive(obj, j)
+            d = drive(obj, j, free[j.name])
             j = replace(j, effort=_round(d.effort), velocity=_round(d.velocity), armature=_round(d.armature),
                         damping=_round(d.damping))
         joints.append(j)

@@ -16,12 +16,11 @@ import os
 import shutil
 import tempfile
 import time
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
 from pathlib import Path
 
 from infmob_usd.errors import OutputError
-
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass
 
 from .common import visual_meshes
 from .glb import write_glb

@@ -58,7 +58,8 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
         pb.setTimeStep(timestep, physicsClientId=cid)
         body = pb.loadURDF(str(urdf), useFixedBase=True, flags=pb.URDF_USE_INERTIA_FROM_FILE,
                            physicsClientId=cid)
-        info = [pb.getJointInfo(body, i, physicsClientId=cid) for i in range(pb.getNumJoints(body, physicsClientId=cid))]
+        count = pb.getNumJoints(body, physicsClientId=cid)
+        info = [pb.getJointInfo(body, i, physicsClientId=cid) for i in range(count)]
         moving = [i for i, f in enumerate(info) if f[2] in (pb.JOINT_REVOLUTE, pb.JOINT_PRISMATIC)]
         name = {i: info[i][1].decode() for i in moving}
         limited = [i for i in moving if info[i][8] < info[i][9]]
@@ -139,7 +140,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("categories", nargs="*", default=["all"])
     ap.add_argument("--seeds", type=int, default=5, help="seeds 0..N-1 per category (default 5)")
     ap.add_argument("--engines", default="mujoco,pybullet", help="push in these (comma list; `none`: no push)")
-    ap.add_argument("--mujoco-check", action="store_true", help="also run the mujoco check of validate --sim on the MJCF")
+    ap.add_argument("--mujoco-check", action="store_true",
+                    help="also run the mujoco check of validate --sim on the MJCF")
     ap.add_argument("--workers", type=int, default=1)
     a = ap.parse_args(argv)
     cats = infmob_usd.list_categories() if a.categories in (["all"], []) else a.categories
