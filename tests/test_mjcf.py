@@ -233,3 +233,16 @@ def test_cli_formats(tmp_path):
     assert (folder / "tap_000000.xml").is_file() and not (folder / "tap_000000.usda").exists()
     row = json.loads((tmp_path / "y" / "manifest.jsonl").read_text().splitlines()[0])
     assert row["formats"] == ["urdf", "mjcf"]
+
+
+def test_quaternions_agree_with_scipy():
+    from scipy.spatial.transform import Rotation
+
+    from infmob_usd.layers.mjcf import _quat
+
+    flips = ([1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1])
+    mats = list(Rotation.random(500, random_state=3).as_matrix()) + [np.diag(d) for d in flips]
+    for m in mats:
+        x, y, z, w = Rotation.from_matrix(m).as_quat()
+        q = np.array([w, x, y, z])
+        assert np.allclose(_quat(m), q if q[0] >= 0 else -q, atol=1e-12) or abs(q[0]) < 1e-12
