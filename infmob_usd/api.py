@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from . import physical
+from .effort import assign_drives
 from .errors import ModelError, ParameterError, UnknownCategoryError
 from .layers import write_object
 from .model import ArticulatedObject, build
@@ -71,10 +72,15 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
     return obj
 
 
-def save(obj: ArticulatedObject, folder: str | Path) -> Path:
+def save(obj: ArticulatedObject, folder: str | Path, formats: str | list[str] | tuple[str, ...] | None = None
+         ) -> Path:
     """Write ``obj`` into ``folder/<name>/`` (atomically: written under a temporary name, then
-    renamed) and return that path."""
-    return write_object(obj, Path(folder))
+    renamed) and return that path.
+
+    ``formats``: names from :data:`infmob_usd.layers.FORMATS` (``usd``, ``urdf``, ``mjcf``, ``glb``)
+    as a list or a comma string; default ``usd,urdf,mjcf``.
+    """
+    return write_object(obj, Path(folder), formats)
 
 
 def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict | None = None,
@@ -116,5 +122,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
     obj = physical.limit_to_clearance(obj)
+    obj = assign_drives(obj)  # after every limit is final: the stop budget depends on the range
     obj.timings["geometry"] += time.perf_counter() - t2
     return obj

@@ -36,6 +36,7 @@ class Job:
     seed: int
     overrides: tuple[tuple[str, Any], ...] = ()
     texture_size: int = 512
+    formats: tuple[str, ...] = ("usd", "urdf", "mjcf")  # see infmob_usd.layers.FORMATS
 
     @property
     def name(self) -> str:
@@ -46,8 +47,9 @@ class Job:
 
 
 def is_complete(folder: Path) -> bool:
-    """An object folder is complete once renamed into place: it always has its metadata."""
-    return (folder / "metadata.json").is_file() and (folder / f"{folder.name}.usda").is_file()
+    """An object folder is complete once renamed into place: it always has its metadata (whatever
+    formats it holds)."""
+    return (folder / "metadata.json").is_file()
 
 
 def clean_partial(out: Path) -> list[Path]:
@@ -68,7 +70,7 @@ def make_one(job: Job, out: str) -> dict:
     t0 = time.perf_counter()
     try:
         obj = generate(job.category, seed=job.seed, texture_size=job.texture_size, **dict(job.overrides))
-        folder = save(obj, Path(out) / job.category)
+        folder = save(obj, Path(out) / job.category, formats=job.formats)
     except Exception as exc:  # one bad object must not stop the batch
         err_dir = Path(out) / ERRORS
         err_dir.mkdir(parents=True, exist_ok=True)
@@ -87,6 +89,7 @@ def make_one(job: Job, out: str) -> dict:
         "movable_joints": sum(kinds.values()),
         "simple_movable_joints": len(movable),
         "joint_kinds": kinds,
+        "formats": list(job.formats),
         "seconds": {k: round(v, 4) for k, v in obj.timings.items()} | {"total": round(time.perf_counter() - t0, 4)},
         "version": __version__,
     }

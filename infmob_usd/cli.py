@@ -37,13 +37,18 @@ def _parser() -> argparse.ArgumentParser:
     g.add_argument("--address", default=None, help="Ray cluster address (with --backend ray)")
     g.add_argument("--overwrite", action="store_true",
                    help="regenerate objects that already exist (default: skip them, resuming a run)")
+    g.add_argument("--formats", default="usd,urdf,mjcf", metavar="LIST",
+                   help="comma list of usd, urdf, mjcf, glb (binary glTF with PBR materials, for web viewers);"
+                   " default usd,urdf,mjcf")
     g.add_argument("--preview", action="store_true",
                    help="also render each object's thumbnail (preview.png + sweep.gif in its folder)")
 
     v = sub.add_parser("validate", help="check object folders: USD, URDF agreement, SAPIEN (and --sim physics)",
                        description="Validate object folders. Default: USD checks + SAPIEN (the URDF loads, every "
                        "movable joint reaches both limits). --sim adds rest under gravity, ground, "
-                       "self-collision, parent/child intersection and ManiSkill loading.")
+                       "self-collision, parent/child intersection, ManiSkill loading and the MJCF in MuJoCo "
+                       "(rest, each joint pushed with its effort, contacts at rest). Checks of a format the "
+                       "folder lacks are reported as skipped.")
     v.add_argument("paths", nargs="+", metavar="PATH",
                    help="an object folder or a folder of them (with --sweep: category ids, or `all`)")
     v.add_argument("--sim", action="store_true", help="add the physical-plausibility checks")
@@ -141,9 +146,12 @@ def _categories(spec: str) -> list[str]:
 def cmd_generate(args) -> int:
     from .api import check_texture_size, get_category
     from .batch import Job, run_batch
-    from .layers import check_output_dir
+    from .layers import check_output_dir, parse_formats
     from .params import parse_assignment
 
+    formats = parse_formats(args.formats)
+    if args.preview and "urdf" not in formats:
+        return _fail("--preview renders the URDF; add urdf to --formats")
     categories = _categories(args.category)
     overrides = dict(parse_assignment(s) for s in args.set)
     for category in categories:  # fail before anything is written
@@ -156,7 +164,7 @@ def cmd_generate(args) -> int:
     if args.workers < 1:
         return _fail(f"--workers must be at least 1, got {args.workers}")
     out = check_output_dir(Path(args.out))
-    jobs = [Job(c, seed, tuple(sorted(overrides.items())), args.texture_size)
+    jobs = [Job(c, seed, tuple(sorted(overrides.items())), args.texture_size, formats)
             for c in categories for seed in range(args.seed, args.seed + args.count)]
 
     def show(row: dict) -> None:

@@ -58,6 +58,7 @@ class Joint:
     role: str
     group: str  # the child part of the declared joint; a compound chain shares it
     requires_open: str | None = None  # group that must be fully open before this joint moves
+    armature: float = 0.0  # kg or kg m^2 added to the joint's inertia (set by effort.assign_drives)
 
     @property
     def movable(self) -> bool:

@@ -1,8 +1,13 @@
-"""Every writer: USD layers, URDF + meshes, textures, semantics and metadata.
+"""Every writer: USD layers, URDF + meshes, MJCF, GLB, textures, semantics and metadata.
 
 :func:`write_object` writes one object folder atomically: everything goes into a
 hidden temporary folder beside the target, which is renamed into place only
 when complete, so a crash never leaves a half-written asset under its real name.
+
+Which formats are written is a list of names from :data:`FORMATS` (default
+:data:`DEFAULT_FORMATS`); a new format is one entry there: its writer, the stage its
+seconds are counted under, and the file it writes (recorded in ``metadata.json``).
+Textures, ``semantics.txt`` and ``metadata.json`` are always written.
 """
 
 from __future__ import annotations
@@ -11,17 +16,54 @@ import os
 import shutil
 import tempfile
 import time
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
 from pathlib import Path
 
 from infmob_usd.errors import OutputError
 
 from .common import visual_meshes
+from .glb import write_glb
 from .meta import write_metadata, write_semantics
+from .mjcf import write_mjcf
 from .thumbnail import write_thumbnail
 from .urdf import write_urdf
 from .usd import write_usd
 
 TEXTURES = "textures"
+
+
+@dataclass(frozen=True)
+class Format:
+    """One output format: ``writer(obj, folder)``, its timing stage and its file (``{name}`` = object name)."""
+
+    writer: Callable
+    stage: str
+    file: str
+    about: str
+
+
+FORMATS: dict[str, Format] = {
+    "usd": Format(write_usd, "usd", "{name}.usda", "OpenUSD layers (payload/, Omniverse, Isaac)"),
+    "urdf": Format(write_urdf, "urdf", "{name}.urdf", "URDF + OBJ meshes (SAPIEN, ManiSkill, PyBullet, MuJoCo)"),
+    "mjcf": Format(write_mjcf, "mjcf", "{name}.xml", "MJCF for MuJoCo (materials, contact excludes)"),
+    "glb": Format(write_glb, "glb", "{name}.glb", "binary glTF 2.0 with PBR materials, for web viewers"),
+}
+DEFAULT_FORMATS = ("usd", "urdf", "mjcf")
+
+
+def parse_formats(formats: str | Iterable[str] | None) -> tuple[str, ...]:
+    """``"usd,urdf"`` or ``["usd", "urdf"]`` -> ``("usd", "urdf")`` in :data:`FORMATS` order;
+    ``None`` -> :data:`DEFAULT_FORMATS`. Unknown or no names raise :class:`OutputError`."""
+    if formats is None:
+        return DEFAULT_FORMATS
+    names = [f.strip().lower() for f in (formats.split(",") if isinstance(formats, str) else formats)]
+    names = [n for n in names if n]
+    unknown = [n for n in names if n not in FORMATS]
+    if unknown or not names:
+        what = f"unknown format(s) {', '.join(map(repr, unknown))}" if unknown else "no format given"
+        raise OutputError(f"{what}; choose from {','.join(FORMATS)} (e.g. --formats usd,urdf,mjcf,glb)")
+    return tuple(n for n in FORMATS if n in names)
 
 
 def check_output_dir(out: Path) -> Path:
@@ -49,19 +91,25 @@ def write_textures(obj, folder: Path) -> None:
             (tex / f"{slot}_{name}.png").write_bytes(data)
 
 
-def write_object(obj, out: Path) -> Path:
-    """Write ``obj`` to ``out/<name>/`` and return that folder (replaced if it exists)."""
+def write_object(obj, out: Path, formats: str | Iterable[str] | None = None) -> Path:
+    """Write ``obj`` to ``out/<name>/`` in ``formats`` (default :data:`DEFAULT_FORMATS`) and return
+    that folder (replaced if it exists)."""
+    formats = parse_formats(formats)
     out = check_output_dir(out)
     final = out / obj.name
     tmp = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".tmp", dir=out))
-    obj._visual_meshes = None
+    obj._visual_meshes = obj._mesh_files = None
+    files = {name: "./" + FORMATS[name].file.format(name=obj.name) for name in formats}
+    stages = [("textures_io", write_textures)]
+    stages += [(FORMATS[name].stage, FORMATS[name].writer) for name in formats]
+    stages += [("metadata", write_semantics), ("metadata", lambda o, f: write_metadata(o, f, files))]
+    if "usd" in formats:  # the SimReady thumbnail beside the USD root layer
+        stages.append(("thumbnail", write_thumbnail))
     try:
         t0 = time.perf_counter()
         obj._visual_meshes = visual_meshes(obj)  # normals and UVs once, for both writers
         obj.timings["geometry"] = obj.timings.get("geometry", 0.0) + time.perf_counter() - t0
-        for stage, writer in (("textures_io", write_textures), ("usd", write_usd), ("urdf", write_urdf),
-                              ("metadata", write_semantics), ("metadata", write_metadata),
-                              ("thumbnail", write_thumbnail)):
+        for stage, writer in stages:
             t0 = time.perf_counter()
             writer(obj, tmp)
             obj.timings[stage] = obj.timings.get(stage, 0.0) + time.perf_counter() - t0
@@ -77,5 +125,5 @@ def write_object(obj, out: Path) -> Path:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     finally:
-        obj._visual_meshes = None
+        obj._visual_meshes = obj._mesh_files = None
     return final

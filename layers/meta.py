@@ -102,8 +102,11 @@ def simready_metadata(obj, bounds) -> dict:
     return meta
 
 
-def metadata(obj) -> dict:
-    """Everything a dataset tool needs without parsing USD: a JSON-able dict."""
+def metadata(obj, files: dict[str, str] | None = None) -> dict:
+    """Everything a dataset tool needs without parsing USD: a JSON-able dict. ``files``: format ->
+    relative path of the files written (default: USD and URDF)."""
+    if files is None:
+        files = {"usd": f"./{obj.name}.usda", "urdf": f"./{obj.name}.urdf"}
     lo, hi = obj.bounds()
     return _clean({
         "name": obj.name,
@@ -131,19 +134,16 @@ def metadata(obj) -> dict:
             {"name": j.name, "type": j.type, "kind": j.kind, "group": j.group, "role": j.role,
              "parent": j.parent, "child": j.child, "origin": j.origin, "axis": j.axis,
              "lower": j.lower, "upper": j.upper, "damping": j.damping, "friction": j.friction,
+             "effort": j.effort, "velocity": j.velocity, "armature": j.armature,
              "requires_open": j.requires_open}
             for j in obj.joints
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
-        "files": {
-            "usd": f"./{obj.name}.usda",
-            "urdf": f"./{obj.name}.urdf",
-            "semantics": "./semantics.txt",
-        },
+        "files": {**files, "semantics": "./semantics.txt"},
     })
 
 
-def write_metadata(obj, folder: Path) -> Path:
+def write_metadata(obj, folder: Path, files: dict[str, str] | None = None) -> Path:
     path = folder / "metadata.json"
-    path.write_text(json.dumps(metadata(obj), indent=2, sort_keys=False) + "\n")
+    path.write_text(json.dumps(metadata(obj, files), indent=2, sort_keys=False) + "\n")
     return path

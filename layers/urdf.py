@@ -10,7 +10,9 @@
   OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~30 collision files, not ~180),
   and identical hulls of a link (a keypad's buttons) share one file;
 * ``<inertial>`` with the full tensor about the centre of mass;
-* ``<limit>`` with effort and velocity, ``<dynamics damping friction>``.
+* ``<limit>`` with effort and velocity, ``<dynamics damping friction>``;
+* a ``<mujoco><compiler strippath="false" discardvisual="false"/></mujoco>`` hint, so MuJoCo finds
+  the meshes (3.x strips folders from mesh paths by default) and keeps the visual meshes.
 
 All mesh and texture paths are relative to the URDF file.
 """
@@ -145,32 +147,57 @@ def _mtl(slot: str, look, maps) -> str:
     return "\n".join(lines + [""])
 
 
-def write_urdf(obj, folder: Path) -> Path:
-    """Write ``<name>.urdf`` and ``meshes/`` into ``folder``; return the URDF path."""
+def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
+    """Write ``meshes/`` (visual OBJ + MTL per link and slot, collision OBJ per distinct hull) once
+    per object folder, for the URDF and the MJCF; return, per link, ``(visuals, collisions)``:
+    ``visuals`` ``[(vname, slot, file)]``, ``collisions`` ``[(file, position (3,), rotation or None)]``
+    (files relative to ``meshes/``). Kept on the object while :func:`~infmob_usd.layers.write_object`
+    runs, so the second writer only reads it."""
+    cached = getattr(obj, "_mesh_files", None)
+    if cached is not None and cached[0] == folder:
+        return cached[1]
     meshes = folder / MESHES
     meshes.mkdir()
     for slot, look in obj.materials.items():
         (meshes / f"{slot}.mtl").write_text(_mtl(slot, look, obj.textures.get(slot, {})))
     visuals = visual_meshes(obj)
-    out = [f'<?xml version="1.0"?>\n<robot name={quoteattr(obj.name)}>']
+    table = {}
     for link in obj.links:
-        out.append(f'  <link name="{link.name}">')
+        vis = []
         for vname, slot, _role, v, f, n, uv in visuals[link.name]:
             fname = f"{link.name}__{vname}.obj"
             m = obj.materials[slot].wear.uv_matrix()  # this object's placement of the maps, baked in
             write_obj(meshes / fname, v, f, n, uv @ m[:, :2].T + m[:, 2], mtl=f"{slot}.mtl", material=slot)
-            out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
-                       f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
+            vis.append((vname, slot, fname))
+        col = []
         same_shape: dict[bytes, str] = {}  # identical centred hulls (a keypad's buttons) share a file
         file_of: dict[int, str] = {}  # hull index -> the file holding its mesh
-        for i, (mesh, pos, rot, hv, hf) in enumerate(collision_placements(link)):
+        for mesh, pos, rot, hv, hf in collision_placements(link):
             if rot is None:
                 key = np.round(hv, 9).tobytes() + np.asarray(hf, np.int64).tobytes()
                 if key not in same_shape:
                     same_shape[key] = f"{link.name}__collision_{mesh:03d}.obj"
                     write_obj(meshes / same_shape[key], hv, hf)
                 file_of[mesh] = same_shape[key]
-            fname = file_of[mesh]  # an instance's prototype comes before it
+            col.append((file_of[mesh], pos, rot))  # an instance's prototype comes before it
+        table[link.name] = (vis, col)
+    obj._mesh_files = (folder, table)
+    return table
+
+
+def write_urdf(obj, folder: Path) -> Path:
+    """Write ``<name>.urdf`` (and ``meshes/``, unless written already) into ``folder``; return the URDF path."""
+    files = write_meshes(obj, folder)
+    out = [f'<?xml version="1.0"?>\n<robot name={quoteattr(obj.name)}>']
+    # MuJoCo reads this: keep the meshes/ folder in mesh paths (3.x strips it by default) and the visuals
+    out.append('  <mujoco><compiler strippath="false" discardvisual="false"/></mujoco>')
+    for link in obj.links:
+        out.append(f'  <link name="{link.name}">')
+        visuals, collisions = files[link.name]
+        for vname, _slot, fname in visuals:
+            out.append(f'    <visual name="{link.name}_{vname}"><origin xyz="0 0 0" rpy="0 0 0"/>'
+                       f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></visual>')
+        for i, (fname, pos, rot) in enumerate(collisions):
             rpy = "0 0 0" if rot is None else _v(rotation_rpy(rot))
             out.append(f'    <collision name="{link.name}_collision_{i:03d}"><origin xyz="{_v(pos)}" rpy="{rpy}"/>'
                        f'<geometry><mesh filename="{MESHES}/{fname}"/></geometry></collision>')
@@ -197,4 +224,4 @@ def write_urdf(obj, folder: Path) -> Path:
     return path
 
 
-__all__ = ["write_obj", "write_urdf"]
+__all__ = ["write_meshes", "write_obj", "write_urdf"]

@@ -7,7 +7,8 @@ maps, made once per dataset and reused by every object; see
 Then, for each category, ``count`` objects (seeds 0..count-1) are generated and saved
 once in this process to warm up, then timed per stage (``sampling``,
 ``geometry``, ``textures`` (the maps of the object's looks, from the library),
-``textures_io`` (writing them), ``usd``, ``urdf``, ``metadata``, ``total``). Throughput is measured by
+``textures_io`` (writing them), ``usd``, ``urdf`` (with the OBJ meshes), ``mjcf`` (the XML; it shares the
+URDF's meshes), ``metadata``, ``total``). Throughput is measured by
 generating the whole set with 1 worker and with N workers (process pool), giving
 objects/s and parallel efficiency = rate(N) / (N * rate(1)); both pools are warmed up first
 (every worker has imported everything and made one object of each category), so the figures are
@@ -25,7 +26,7 @@ import tempfile
 import time
 from pathlib import Path
 
-STAGES = ("sampling", "geometry", "textures", "textures_io", "usd", "urdf", "metadata", "total")
+STAGES = ("sampling", "geometry", "textures", "textures_io", "usd", "urdf", "mjcf", "metadata", "total")
 
 
 def _stage_times(categories, count, texture_size, tmp: Path) -> dict[str, dict[str, float]]:

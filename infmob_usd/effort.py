@@ -1,0 +1,279 @@
+"""Effort, velocity and armature of every movable joint, from what the joint moves and its role.
+
+A joint's effort limit (URDF ``<limit effort>``, USD ``maxForce``, MJCF ``actuatorfrcrange``) is
+the largest force (N, slides) or torque (N m, rotations) that should drive it. It used to come
+from a role table (20 N on a 5 g button); a simulator that pushes a joint with its effort then
+drives it through its stops. Here it is derived from the **moving subtree** (every link the joint
+carries, rigid at rest) and the joint's **role**:
+
+* ``m_eff``: the subtree's mass (slides) or its moment of inertia about the joint axis
+  (rotations) with every other joint free (:func:`free_inertias`), so that ``effort / m_eff`` is
+  the acceleration the effort gives the part;
+* ``arm``: for rotations, the subtree's radius of gyration about the axis, ``sqrt(I / m)``:
+  where a hand's force acts, on average (for slides, 1 m);
+* the role's **weight multiple** ``k`` and **hand force** ``hand`` (:data:`ROLES`): a hand pushes a
+  part with about ``k`` times its weight, ``k m g arm``, and never with more than ``hand`` N at the
+  arm. A drawer is pushed with more than its weight, a button with a small multiple of its;
+* the **stop budget**: simulators keep limits with stiff springs, not walls. MuJoCo's default
+  (``solref 0.02 1``, ``solimp 0.9 0.95 0.001``) lets a joint pressed with acceleration ``a`` sit
+  ``a * C_SOFT`` past its stop (:data:`C_SOFT`, the worst case of its impedance curve), and a joint
+  arriving at speed ``v`` overshoot by ``v * C_IMPACT``; the speed is what the push (plus the
+  largest acceleration gravity adds along the joint) reaches over the range, or the terminal speed
+  the joint's damping allows. The effort is the largest whose :func:`overshoot` stays within
+  :data:`STOP_SHARE` of the range: pushed with its own effort, a joint stays within its limits
+  + 5 % (the ``mujoco`` check and the push test measure it). For parts with a short travel (a
+  1.6 mm button, a 0.3 rad tilt) this bound, not the hand, sets the effort.
+
+Velocity limits come from the role's **hand speed** (m/s) at the arm: ``speed`` for slides,
+``speed / arm`` for rotations (a door's edge moves at about 1 m/s, a knob's rim at 0.2 m/s).
+
+Damping (from the role, :mod:`infmob_usd.physical`) is capped at :data:`DAMPING_RATE_MAX` times
+``m_eff``, so explicit integrators can step it.
+
+Armature (MJCF ``armature``, PhysX joint armature) is the hardware that moves with the joint and
+is not modelled as a link (hinge pins, runner carriages, bearings): :data:`ARMATURE_SHARE` of
+``m_eff``, raised where a stop holds the subtree's weight until MuJoCo's soft stop sags less than
+:data:`SAG_SHARE` of the range (a light lamp arm carrying a head).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .blueprint import descendants
+
+G = 9.81
+"""m/s^2, standard gravity."""
+
+C_SOFT = 4.5e-5
+"""s^2: how far past its stop a joint pressed with acceleration ``a`` settles, per unit ``a``, with
+MuJoCo's default soft limits: ``(1 - d0) dmax^2 tc^2 / d0^2`` with ``d0 = 0.9``, ``dmax = 0.95``,
+``tc = 0.02`` s (the steady state of MuJoCo's constraint ``a1 + d (b v + k r) = (1 - d) a0``, at the
+start of its impedance curve where it is softest). Measured: a 5 g slide pressed at 10 m/s^2 sits
+0.37 mm past its stop, 3.7e-5 s^2."""
+
+C_IMPACT = 0.0075
+"""s: how far past its stop a joint arriving at speed ``v`` overshoots, per unit ``v``, in MuJoCo's
+default soft limit (a critically damped spring of time constant ``dmax tc`` = 19 ms: ``v dmax tc / e``
+= 0.0070 s, rounded up). Measured: a 3 kg slide pushed with 50 N over 0.4 m arrives at ~3.6 m/s
+and overshoots 17 mm, 4.8 ms per m/s."""
+
+STOP_SHARE = 0.04
+"""Fraction of a joint's range that effort plus gravity may take it past a stop (the checks allow
+0.05; the rest is a margin for the other joints and for contacts)."""
+
+ARMATURE_SHARE = 0.05
+"""Armature as a fraction of ``m_eff`` (at least)."""
+
+SAG_SHARE = 0.01
+"""Fraction of its range a joint may sag into the stop that holds its subtree's weight, in MuJoCo
+(whose soft stop is as stiff as the inertia the joint meets: a light link in a chain that carries a
+heavy head sags ~10 % of its range). Armature raises that inertia where needed; only the MJCF
+carries armature (URDF has no place for it)."""
+
+DAMPING_RATE_MAX = 60.0
+"""1/s: a joint's damping is at most this times ``m_eff``. Simulators that apply joint damping
+explicitly (Bullet, at its default 1/240 s step) are unstable once ``damping * dt / m_eff``
+exceeds 2, and the joints of a chain couple (measured: office chair arms, a slide, a light turn and a
+heavy pad in a chain, rang at 240 and were steady at 60); a role's damping (10 N m s for a slide)
+put on a light revolute joint of a compound chain (5e-5 kg m^2) throws the chain through its limits."""
+
+EFFORT_FLOOR = 0.01
+"""The smallest effort, as a multiple of ``m_eff * G / arm``: where gravity alone uses the stop
+budget the effort is not zero (simulators read zero as "no limit" or "cannot move")."""
+
+
+@dataclass(frozen=True)
+class Role:
+    """How a hand drives a joint of this role: ``k`` weights, at most ``hand`` N, at ``speed`` m/s."""
+
+    k: float
+    hand: float
+    speed: float
+    why: str
+
+
+ROLES: dict[str, Role] = {
+    "hinge": Role(1.0, 60.0, 1.0, "doors and lids: swung with about their own weight; a door edge ~1 m/s"),
+    "slide": Role(1.5, 80.0, 0.5, "drawers and racks: pulled a little harder than their weight, ~0.5 m/s"),
+    "knob": Role(20.0, 10.0, 0.2, "knobs: light parts turned by fingertips, rim ~0.2 m/s"),
+    "button": Role(20.0, 10.0, 0.05, "buttons: pressed with many times their weight, ~5 cm/s"),
+    "turntable": Role(0.5, 5.0, 0.3, "turntable plates: turned by a motor, gently"),
+    "swivel": Role(1.0, 30.0, 0.5, "lamp heads, arms, tilting screens: positioned by hand"),
+    "telescope": Role(1.0, 60.0, 0.3, "sliding poles and lifts: raised against their weight"),
+    "wheel": Role(0.5, 20.0, 2.0, "wheels and casters: rolled, not pushed"),
+    "lid": Role(1.0, 20.0, 0.5, "lift-off and screw lids, caps: lifted or turned by hand"),
+    "plate": Role(1.0, 20.0, 0.3, "plates in a rack: lifted out by hand"),
+    "grate": Role(1.0, 40.0, 0.3, "oven grates: slid by hand"),
+    "default": Role(1.0, 40.0, 0.5, "anything else moved by hand"),
+}
+
+
+def role(name: str) -> Role:
+    return ROLES.get(name, ROLES["default"])
+
+
+@dataclass(frozen=True)
+class Drive:
+    """The derived limits of one joint and the figures they came from."""
+
+    effort: float
+    velocity: float
+    armature: float
+    damping: float  # the role's damping, capped at DAMPING_RATE_MAX * m_eff
+    m_eff: float  # kg or kg m^2
+    arm: float  # m
+    a_gravity: float  # m/s^2 or rad/s^2, the most gravity adds along the joint
+    a_stop: float | None  # the acceleration the stop budget allows (None: no stop)
+
+
+def _subtree(obj, j):
+    """Masses ``(n,)``, world centres of mass ``(n, 3)`` and inertias ``(n, 3, 3)`` (world axes,
+    about each centre) of the links joint ``j`` moves, at rest."""
+    moved = descendants(obj.joints, j.child)
+    links = [link for link in obj.links if link.name in moved]
+    m = np.array([link.mass for link in links], float)
+    c = np.array([np.asarray(link.origin, float) + np.asarray(link.com, float) for link in links])
+    inertia = np.array([np.asarray(link.inertia, float) for link in links])
+    return m, c, inertia
+
+
+def _skew(v: np.ndarray) -> np.ndarray:
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+def free_inertias(obj) -> dict[str, float]:
+    """The inertia each movable joint meets when pushed with every other joint free, at rest:
+    ``1 / (M^-1)[j, j]``, ``M`` the joint-space inertia of the whole object on its fixed base
+    (composite rigid bodies, spatial inertias about the world origin). Kg for slides, kg m^2 for
+    rotations. A knob on a door adds its mass to the door but not its spin; a lamp pole turning
+    about its slide's axis adds all its mass to the slide; a screen on a two-hinge wall arm, pushed
+    at its outer hinge, also swings the light inner arm back, so it meets less than its own inertia."""
+    chain = [k for k in obj.joints if k.movable]  # parents precede children
+    if not chain:
+        return {}
+    spatial = {}
+    for link in obj.links:
+        c = np.asarray(link.origin, float) + np.asarray(link.com, float)
+        cx = _skew(c)
+        m = float(link.mass)
+        spatial[link.name] = np.block([[np.asarray(link.inertia, float) + m * cx @ cx.T, m * cx],
+                                       [m * cx.T, m * np.eye(3)]])
+    below = {k.name: descendants(obj.joints, k.child) for k in chain}
+    composite = {k.name: sum(spatial[n] for n in below[k.name]) for k in chain}
+    motion = []
+    for k in chain:
+        a = np.asarray(k.axis, float) / np.linalg.norm(k.axis)
+        motion.append(np.concatenate([np.zeros(3), a]) if k.type == "prismatic"
+                      else np.concatenate([a, np.cross(np.asarray(k.origin, float), a)]))
+    n = len(chain)
+    mass = np.zeros((n, n))
+    for x in range(n):
+        for y in range(x, n):
+            kx, ky = chain[x], chain[y]
+            if ky.child in below[kx.name]:  # kx is an ancestor of (or is) ky
+                mass[x, y] = mass[y, x] = motion[x] @ composite[ky.name] @ motion[y]
+    diag = np.diag(np.linalg.inv(mass))
+    return {k.name: float(1.0 / d) for k, d in zip(chain, diag)}
+
+
+def free_inertia(obj, j) -> float:
+    """:func:`free_inertias` of one joint."""
+    return free_inertias(obj)[j.name]
+
+
+def overshoot(a: float, span: float, m_eff: float, a_gravity: float, damping: float) -> float:
+    """How far past a stop a joint of range ``span`` goes when pushed with acceleration ``a``
+    (m/s^2 or rad/s^2) plus gravity's ``a_gravity`` from its other stop: the steady press
+    ``C_SOFT (a + a_g)`` plus the momentum it arrives with, ``C_IMPACT v``, with ``v`` the speed
+    reached over the range, or the damping's terminal speed if lower."""
+    acc = a + a_gravity
+    v = math.sqrt(2.0 * acc * span)
+    if damping > 0:
+        v = min(v, acc * m_eff / damping)
+    return C_SOFT * acc + C_IMPACT * v
+
+
+def _stop_budget(span: float, m_eff: float, a_gravity: float, damping: float) -> float:
+    """The largest push acceleration whose :func:`overshoot` is within ``STOP_SHARE * span``
+    (negative where gravity alone uses the budget)."""
+    limit = STOP_SHARE * span
+    if overshoot(0.0, span, m_eff, a_gravity, damping) >= limit:
+        return -1.0
+    lo, hi = 0.0, 1.0
+    while overshoot(hi, span, m_eff, a_gravity, damping) < limit and hi < 1e9:
+        lo, hi = hi, hi * 4
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if overshoot(mid, span, m_eff, a_gravity, damping) < limit else (lo, mid)
+    return lo
+
+
+def drive(obj, j, free: float | None = None) -> Drive:
+    """The effort, velocity and armature of movable joint ``j`` of ``obj`` (module docstring);
+    ``free``: its :func:`free_inertia`, if known."""
+    r = role(j.role)
+    m, c, inertia = _subtree(obj, j)
+    mass = float(m.sum())
+    axis = np.asarray(j.axis, float)
+    axis = axis / np.linalg.norm(axis)
+    gravity = np.array([0.0, 0.0, -G])
+    free = free_inertia(obj, j) if free is None else free
+    if j.type == "prismatic":
+        m_eff, arm = mass, 1.0
+        a_gravity = abs(float(gravity @ axis))
+        a_role = min(r.k * G, r.hand / mass)
+        velocity = r.speed
+    else:
+        d = c - np.asarray(j.origin, float)
+        perp = d - np.outer(d @ axis, axis)
+        m_eff = float(np.einsum("i,nij,j->", axis, inertia, axis) + (m * (perp**2).sum(1)).sum())
+        arm = max(math.sqrt(m_eff / mass), 1e-3)
+        com_perp = np.linalg.norm((m[:, None] * perp).sum(0) / mass)
+        # gravity torque about the axis is largest when the centre of mass is level with the axis
+        g_perp = float(np.linalg.norm(gravity - (gravity @ axis) * axis))
+        tau_gravity = mass * g_perp * float(com_perp)
+        a_role = min(r.k * G / arm, r.hand / (mass * arm))
+        velocity = r.speed / max(arm, 0.005)
+    m_eff = min(m_eff, free)  # what the push accelerates: the rigid subtree, less what free joints let go
+    if j.type != "prismatic":
+        a_gravity = tau_gravity / m_eff
+    damping = min(j.damping, DAMPING_RATE_MAX * m_eff)
+    a_stop = None
+    a = a_role
+    if j.type != "continuous":
+        a_stop = _stop_budget(j.upper - j.lower, m_eff, a_gravity, damping)
+        a = min(a, a_stop)
+    floor = EFFORT_FLOOR * G / arm
+    effort = m_eff * max(a, floor)
+    armature = ARMATURE_SHARE * m_eff
+    if j.type != "continuous" and a_gravity > 0:
+        # the stop holding the subtree's weight sags by C_SOFT * load / (m_eff + armature)
+        armature = max(armature, C_SOFT * a_gravity * m_eff / (SAG_SHARE * (j.upper - j.lower)) - m_eff)
+    return Drive(float(effort), float(velocity), float(armature), float(damping), m_eff, arm,
+                 a_gravity, a_stop)
+
+
+def assign_drives(obj):
+    """A copy of ``obj`` with ``effort``, ``velocity``, ``armature`` (and a capped ``damping``) on every
+    movable joint (limits final); ``obj`` is not modified."""
+    joints = []
+    free = free_inertias(obj)
+    for j in obj.joints:
+        if j.movable:
+            d = drive(obj, j, free[j.name])
+            j = replace(j, effort=_round(d.effort), velocity=_round(d.velocity), armature=_round(d.armature),
+                        damping=_round(d.damping))
+        joints.append(j)
+    return replace(obj, joints=joints)
+
+
+def _round(x: float) -> float:
+    """Six significant digits: what the writers print, so files and the model agree."""
+    return float(f"{x:.6g}")
+
+
+__all__ = ["ROLES", "Drive", "Role", "assign_drives", "drive", "role"]

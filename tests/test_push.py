@@ -1,0 +1,157 @@
+"""Efforts from the moving subtree (infmob_usd/effort.py), checked in two simulators.
+
+Every movable joint of every category, pushed alone with its own URDF effort towards each limit
+(gravity on, fixed base, URDF damping and friction), stays within its limits + 5 % of its range in
+MuJoCo (which reads the URDF; its limits are soft) and in PyBullet; and the ``mujoco`` check of
+``validate --sim`` passes on the MJCF. CI runs seeds 0-1 of every category; the sweep over more
+seeds: ``INFMOB_PUSH_SEEDS=5 pytest tests/test_push.py`` or
+``python -m infmob_usd.validate.push --seeds 5``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import infmob_usd
+from infmob_usd import effort
+from infmob_usd.validate.mujoco_sim import PUSH_TOL
+
+from zoo import zoo
+
+pytest.importorskip("mujoco")
+pytestmark = pytest.mark.sim
+
+from infmob_usd.validate.mujoco_sim import check_mujoco  # noqa: E402
+from infmob_usd.validate.push import push_bullet, push_mujoco  # noqa: E402
+
+SEEDS = range(int(os.environ.get("INFMOB_PUSH_SEEDS", "2")))
+CASES = [(c, s) for c in infmob_usd.list_categories() for s in SEEDS]
+
+# Known failures: (engine, category, seed) -> reason. Strict xfails: a fix makes them XPASS and fail.
+KNOWN_FAILURES = {
+    ("mujoco", "lamp", 1): "lamp seed 1's chain arm: the stops of arm_1 and arm_2 hold the head's weight behind "
+    "light links; MuJoCo's soft stop (as stiff as the tiny inertia the joint meets) lets them sag ~12 % of "
+    "their 0.52 rad range under gravity alone, whatever the effort. The MJCF passes (its armature stiffens "
+    "the stop); a URDF has no armature.",
+}
+
+
+def _cases(engine):
+    for c, s in CASES:
+        reason = KNOWN_FAILURES.get((engine, c, s))
+        marks = [pytest.mark.xfail(strict=True, raises=AssertionError, reason=reason)] if reason else []
+        yield pytest.param(c, s, id=f"{c}-{s}", marks=marks)
+
+
+@pytest.fixture(scope="module")
+def folders(tmp_path_factory):
+    out = tmp_path_factory.mktemp("push")
+    cache: dict[tuple[str, int], Path] = {}
+
+    def get(category: str, seed: int) -> Path:
+        if (category, seed) not in cache:
+            obj = infmob_usd.generate(category, seed=seed, texture_size=16)
+            cache[category, seed] = obj.save(out / category, formats="urdf,mjcf")
+        return cache[category, seed]
+
+    return get
+
+
+def _movable(folder: Path) -> int:
+    return json.loads((folder / "metadata.json").read_text())["counts"]["movable_joints"]
+
+
+def _fails(pushes):
+    return [f"{p.joint} -> {p.side} with {p.effort:.3g}: {p.excess * 100:.1f} % past" for p in pushes
+            if not p.excess <= PUSH_TOL]
+
+
+@pytest.mark.parametrize("category,seed", list(_cases("mujoco")))
+def test_push_in_mujoco(folders, category, seed):
+    folder = folders(category, seed)
+    pushes = push_mujoco(folder / f"{folder.name}.urdf")
+    assert len({p.joint for p in pushes}) == _movable(folder)  # (a vase without a lid has none)
+    assert not _fails(pushes), _fails(pushes)
+
+
+@pytest.mark.parametrize("category,seed", list(_cases("pybullet")))
+def test_push_in_pybullet(folders, category, seed):
+    pytest.importorskip("pybullet")
+    folder = folders(category, seed)
+    pushes = push_bullet(folder / f"{folder.name}.urdf")
+    assert len({p.joint for p in pushes}) == _movable(folder)
+    assert not _fails(pushes), _fails(pushes)
+
+
+@pytest.mark.parametrize("category", infmob_usd.list_categories())
+def test_mujoco_check_on_the_mjcf(folders, category):
+    (result,) = check_mujoco(folders(category, 0))
+    assert result.ok, result.detail
+
+
+# ----------------------------------------------------------------------------- the derivation
+
+
+def test_efforts_follow_the_mass_not_a_role_table():
+    """The microwave of issue 11: 20 N on a 5 g button drove it 8.6 cm past 1.6 mm of travel."""
+    obj = infmob_usd.generate("microwave", seed=7001, texture_size=16)
+    buttons = [j for j in obj.movable_joints if j.role == "button"]
+    door = next(j for j in obj.movable_joints if j.role == "hinge")
+    assert buttons
+    for j in buttons:
+        mass = obj.link(j.child).mass
+        assert j.effort < 0.5 * mass * effort.G  # a push below its weight: 1.6 mm of travel
+        d = effort.drive(obj, j)
+        assert effort.overshoot(j.effort / d.m_eff, j.upper - j.lower, d.m_eff, d.a_gravity, j.damping) \
+            <= effort.STOP_SHARE * (j.upper - j.lower) * 1.001
+    assert door.effort > 100 * max(j.effort for j in buttons)
+
+
+def test_effort_scales_with_the_moving_mass():
+    """Same object, every mass and inertia doubled: an effort set by the hand's weight multiple
+    doubles (one set by the stop budget may even shrink: with the same damping a heavier part
+    arrives at its stop faster)."""
+    a = zoo(texture_size=16)
+    b = zoo(texture_size=16)
+    for link in b.links:
+        link.mass *= 2
+        link.inertia = link.inertia * 2
+    effort.assign_drives(b)
+    doubled = 0
+    for ja, jb in zip(a.movable_joints, b.movable_joints):
+        da, db = effort.drive(a, ja), effort.drive(b, jb)
+        by_role = all(d.a_stop is None or j.effort / d.m_eff < 0.99 * d.a_stop for d, j in ((da, ja), (db, jb)))
+        if by_role and jb.effort < 0.99 * effort.role(ja.role).hand * da.arm:
+            assert jb.effort == pytest.approx(2 * ja.effort, rel=1e-3), ja.name
+            doubled += 1
+    assert doubled >= 2
+
+
+def test_free_inertia_of_a_chain():
+    """A part turning about its slide's axis adds all its mass to the slide but none of its spin;
+    a part hinged off-axis behind a revolute joint adds only what rides on that joint."""
+    obj = zoo(texture_size=16)
+    slide = next(j for j in obj.joints if j.name == "joint_rp_part_0")
+    turn = next(j for j in obj.joints if j.name == "joint_rp_part_1")
+    mass = obj.link("rp_part").mass + obj.link("rp_part_dummy0").mass
+    assert effort.free_inertia(obj, slide) == pytest.approx(mass, rel=1e-9)
+    # the turn alone: the part's inertia about the axis through the pivot (centre on the axis)
+    link = obj.link("rp_part")
+    a = np.asarray(turn.axis)
+    assert effort.free_inertia(obj, turn) == pytest.approx(a @ link.inertia @ a, rel=1e-6)
+
+
+def test_velocity_from_role_and_size():
+    obj = infmob_usd.generate("office_chair", seed=0, texture_size=16)
+    for j in obj.movable_joints:
+        d = effort.drive(obj, j)
+        want = effort.role(j.role).speed if j.type == "prismatic" else effort.role(j.role).speed / max(d.arm, 0.005)
+        assert j.velocity == pytest.approx(want, rel=1e-5)
+    wheels = [j for j in obj.movable_joints if j.role == "wheel"]
+    lift = next(j for j in obj.movable_joints if j.role == "telescope" and j.type == "prismatic")
+    assert wheels and min(w.velocity for w in wheels) > 10 * lift.velocity

@@ -1,0 +1,219 @@
+"""MuJoCo checks of a written object folder (MJCF, or the URDF as MuJoCo reads it).
+
+``mujoco`` (one check, on ``<name>.xml``)
+    * the MJCF loads in MuJoCo (no warning), with the movable joints of ``metadata.json``;
+    * **rest**: gravity on, no push, :data:`REST_TIME` (2 s): no slide moves more than 1 mm and no
+      hinge more than 1 degree;
+    * **push**: each movable joint, pushed alone with its own effort (the MJCF
+      ``actuatorfrcrange``, which MuJoCo also reads from a URDF's ``<limit effort>``) towards each
+      of its limits for :data:`PUSH_TIME`, stays within its limits + 5 % of its range (MuJoCo's
+      limits are soft: an effort far above what the part weighs drives it through its stop);
+    * **contacts**: at rest, no contact between bodies that are not parent and child (after
+      the MJCF's ``contact/exclude`` pairs, which name the real parent and child of compound chains).
+
+:func:`push_joints` and :func:`rest_motion` work on any ``MjModel`` (the push test also runs them
+on the URDF).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .result import CheckResult
+
+REST_TIME = 2.0  # s
+REST_MAX_PRISMATIC = 1e-3  # m
+REST_MAX_REVOLUTE = math.radians(1.0)  # rad
+PUSH_TIME = 1.0  # s per joint and direction
+PUSH_TOL = 0.05  # fraction of a joint's range a push may take it past a limit
+CONTACT_TOL = 1e-4  # m: contacts at rest deeper than this (MuJoCo reports touching hulls at 0 distance)
+INSTALL_HINT = "pip install -e .[sim]"
+
+
+class MujocoUnavailableError(RuntimeError):
+    """MuJoCo is not installed."""
+
+
+def import_mujoco():
+    try:
+        import mujoco
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise MujocoUnavailableError(f"the mujoco check needs MuJoCo: {INSTALL_HINT}") from None
+    return mujoco
+
+
+def load_model(path: str | Path):
+    """``MjModel`` of an MJCF or URDF file (MuJoCo's own parser, relative paths from the file)."""
+    mujoco = import_mujoco()
+    return mujoco.MjModel.from_xml_path(str(path))
+
+
+@dataclass
+class Push:
+    """One push: joint ``joint`` pushed with ``effort`` towards ``side``, and how far it went."""
+
+    joint: str
+    side: str  # "upper" | "lower"
+    effort: float
+    excess: float  # furthest past a limit, as a fraction of its range (<= 0: inside; -1: no limits)
+    travel: float  # fraction of the pushed joint's range covered towards ``side``
+    other: str  # the other limited joint that went furthest past a limit meanwhile ("" if none)
+    other_excess: float  # its excess (reported, not judged: a 5 g button on a slammed door is
+    #                      thrown past its soft stop whatever its own effort)
+
+
+def _push(name: str, side: str, effort: float, travel: float, limited: list[str], worst) -> Push:
+    own = {n: float(w) for n, w in zip(limited, worst)}
+    others = [(w, n) for n, w in own.items() if n != name]
+    w, other = max(others) if others else (-1.0, "")
+    return Push(name, side, effort, own.get(name, -1.0), float(travel), other, w)
+
+
+def _joint_info(model):
+    mujoco = import_mujoco()
+    names = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, i) for i in range(model.njnt)]
+    moving = [i for i in range(model.njnt)
+              if int(model.jnt_type[i]) in (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))]
+    return names, moving
+
+
+def effort_of(model, i: int) -> float:
+    """A joint's effort: its ``actuatorfrcrange`` (MuJoCo's reading of URDF ``<limit effort>``)."""
+    if not model.jnt_actfrclimited[i]:
+        raise ValueError(f"joint {i} has no effort limit (actuatorfrcrange)")
+    lo, hi = model.jnt_actfrcrange[i]
+    return float(min(-lo, hi))
+
+
+def push_joints(model, duration: float = PUSH_TIME) -> list[Push]:
+    """Push every hinge or slide joint alone with its effort towards each limit (module docstring).
+
+    A joint without limits (continuous) is pushed one way; only the other joints are judged then.
+    """
+    mujoco = import_mujoco()
+    data = mujoco.MjData(model)
+    names, moving = _joint_info(model)
+    limited = [i for i in moving if model.jnt_limited[i]]
+    lo = np.array([model.jnt_range[i][0] for i in limited])
+    hi = np.array([model.jnt_range[i][1] for i in limited])
+    span = np.maximum(hi - lo, 1e-12)
+    qadr = np.array([model.jnt_qposadr[i] for i in limited], int)
+    steps = int(round(duration / model.opt.timestep))
+    out = []
+    for i in moving:
+        effort = effort_of(model, i)
+        sides = ("upper", "lower") if model.jnt_limited[i] else ("upper",)
+        for side in sides:
+            mujoco.mj_resetData(model, data)
+            sign = 1.0 if side == "upper" else -1.0
+            data.qfrc_applied[model.jnt_dofadr[i]] = sign * effort
+            worst = np.full(len(limited), -np.inf)
+            for _ in range(steps):
+                mujoco.mj_step(model, data)
+                q = data.qpos[qadr]
+                worst = np.maximum(worst, np.maximum(lo - q, q - hi) / span)
+            q_end = float(data.qpos[model.jnt_qposadr[i]])
+            if model.jnt_limited[i]:
+                a, b = model.jnt_range[i]
+                travel = (q_end - a) / (b - a) if side == "upper" else (b - q_end) / (b - a)
+            else:
+                travel = q_end / math.pi
+            out.append(_push(names[i], side, effort, travel, [names[k] for k in limited], worst))
+    return out
+
+
+def rest_motion(model, duration: float = REST_TIME) -> tuple[dict[str, float], object]:
+    """Joints left alone under gravity for ``duration``: name -> largest |q - q0| (m or rad);
+    and the ``MjData`` at the start (after one forward pass), for the contact check."""
+    mujoco = import_mujoco()
+    data = mujoco.MjData(model)
+    names, moving = _joint_info(model)
+    mujoco.mj_forward(model, data)
+    start = mujoco.MjData(model)
+    mujoco.mj_forward(model, start)
+    adr = np.array([model.jnt_qposadr[i] for i in moving], int)
+    q0 = data.qpos[adr].copy()
+    worst = np.zeros(len(moving))
+    for _ in range(int(round(duration / model.opt.timestep))):
+        mujoco.mj_step(model, data)
+        worst = np.maximum(worst, np.abs(data.qpos[adr] - q0))
+    return {names[i]: float(w) for i, w in zip(moving, worst)}, start
+
+
+def rest_contacts(model, data) -> list[tuple[str, str, float]]:
+    """Contacts deeper than :data:`CONTACT_TOL` between bodies that are not parent and child."""
+    mujoco = import_mujoco()
+    out = []
+    for c in data.contact[: data.ncon]:
+        b1, b2 = int(model.geom_bodyid[c.geom1]), int(model.geom_bodyid[c.geom2])
+        if model.body_parentid[b1] == b2 or model.body_parentid[b2] == b1:
+            continue
+        if -c.dist > CONTACT_TOL:
+            out.append((mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, b1),
+                        mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, b2), float(-c.dist)))
+    return out
+
+
+def _short(items, n: int = 5) -> str:
+    items = list(items)
+    return "; ".join(items[:n]) + (f" (+{len(items) - n} more)" if len(items) > n else "")
+
+
+def check_mujoco(folder: str | Path) -> list[CheckResult]:
+    """The ``mujoco`` check of one object folder (module docstring); skipped (passed, with a note)
+    when the folder has no MJCF."""
+    import_mujoco()
+    folder = Path(folder)
+    t0 = time.perf_counter()
+    try:
+        meta = json.loads((folder / "metadata.json").read_text())
+        rel = meta.get("files", {}).get("mjcf")
+        path = folder / rel if rel else folder / f"{folder.name}.xml"
+        if not path.is_file():
+            return [CheckResult("mujoco", True, f"skipped: no MJCF ({path.name}) in this folder")]
+        result = _check(path, meta)
+    except MujocoUnavailableError:
+        raise
+    except Exception as exc:
+        result = CheckResult("mujoco", False, f"crashed: {type(exc).__name__}: {exc}")
+    result.detail += f" [{time.perf_counter() - t0:.2f} s]"
+    return [result]
+
+
+def _check(path: Path, meta: dict) -> CheckResult:
+    mujoco = import_mujoco()
+    try:
+        model = load_model(path)
+    except Exception as exc:
+        return CheckResult("mujoco", False, f"load failed: {exc}")
+    problems = []
+    names, moving = _joint_info(model)
+    want = sorted(j["name"] for j in meta["joints"] if j["type"] != "fixed")
+    got = sorted(names[i] for i in moving)
+    if got != want:
+        problems.append(f"{len(got)} movable joints, metadata has {len(want)}: missing "
+                        f"{sorted(set(want) - set(got))}, unexpected {sorted(set(got) - set(want))}")
+    motion, start = rest_motion(model)
+    for i in moving:
+        lim = REST_MAX_PRISMATIC if int(model.jnt_type[i]) == int(mujoco.mjtJoint.mjJNT_SLIDE) else REST_MAX_REVOLUTE
+        if motion[names[i]] > lim or not math.isfinite(motion[names[i]]):
+            unit = (f"{motion[names[i]] * 1000:.3g} mm" if lim == REST_MAX_PRISMATIC
+                    else f"{math.degrees(motion[names[i]]):.3g} deg")
+            problems.append(f"rest: {names[i]} moved {unit}")
+    contacts = rest_contacts(model, start)
+    problems += [f"contact at rest {a} / {b} {d * 1000:.2g} mm deep" for a, b, d in contacts]
+    pushes = push_joints(model)
+    bad = [p for p in pushes if not p.excess <= PUSH_TOL]
+    problems += [f"push {p.joint} -> {p.side} with {p.effort:.3g}: {p.excess * 100:.1f} % of its range"
+                 " past its limit" for p in bad]
+    worst = max((p.excess for p in pushes), default=-1.0)
+    if problems:
+        return CheckResult("mujoco", False, _short(problems))
+    return CheckResult("mujoco", True, f"{len(moving)} joints; rest, {len(pushes)} pushes "
+                                       f"(worst {max(worst, 0) * 100:.2f} % past a limit), no contacts")

@@ -1,0 +1,177 @@
+"""The push test: every movable joint pushed with its own URDF effort stays within its limits + 5 %.
+
+Each movable joint of an object's URDF, alone, is pushed with its ``<limit effort>`` towards each
+of its limits for one second (gravity on, fixed base, the URDF's damping and friction), in
+MuJoCo (:func:`~infmob_usd.validate.mujoco_sim.push_joints`, which reads the URDF itself) and in
+PyBullet (:func:`push_bullet`); every limited joint must stay within its limits + 5 % of its range.
+Efforts come from :mod:`infmob_usd.effort`.
+
+Command (the sweep behind the figures in the README)::
+
+    python -m infmob_usd.validate.push [--seeds N] [--engines mujoco,pybullet|none] [--mujoco-check]
+                                       [--workers N] [CATEGORY ...]
+
+prints per category how many objects passed in each engine (and the ``mujoco`` check of
+``validate --sim`` on the MJCF with ``--mujoco-check``), each failing push, and the median seconds
+the MJCF writer adds per object.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+
+from .mujoco_sim import PUSH_TIME, PUSH_TOL, Push, _push, load_model, push_joints
+
+
+def _urdf_efforts(urdf: Path) -> dict[str, float]:
+    out = {}
+    for j in ET.parse(urdf).getroot().iter("joint"):
+        lim = j.find("limit")
+        if lim is not None and j.get("type") != "fixed":
+            out[j.get("name")] = float(lim.get("effort"))
+    return out
+
+
+def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240) -> list[Push]:
+    """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode).
+
+    The base is fixed; PyBullet's default velocity motors are switched off so a joint is free
+    but for its URDF damping; the effort is applied as a joint torque / force every step.
+    """
+    try:
+        import pybullet as pb
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise RuntimeError("the PyBullet push needs pybullet: pip install -e .[sim]") from None
+    urdf = Path(urdf)
+    efforts = _urdf_efforts(urdf)
+    cid = pb.connect(pb.DIRECT)
+    try:
+        pb.setGravity(0, 0, -9.81, physicsClientId=cid)
+        pb.setTimeStep(timestep, physicsClientId=cid)
+        body = pb.loadURDF(str(urdf), useFixedBase=True, flags=pb.URDF_USE_INERTIA_FROM_FILE,
+                           physicsClientId=cid)
+        count = pb.getNumJoints(body, physicsClientId=cid)
+        info = [pb.getJointInfo(body, i, physicsClientId=cid) for i in range(count)]
+        moving = [i for i, f in enumerate(info) if f[2] in (pb.JOINT_REVOLUTE, pb.JOINT_PRISMATIC)]
+        name = {i: info[i][1].decode() for i in moving}
+        limited = [i for i in moving if info[i][8] < info[i][9]]
+        lo = np.array([info[i][8] for i in limited])
+        hi = np.array([info[i][9] for i in limited])
+        span = np.maximum(hi - lo, 1e-12)
+        state = pb.saveState(physicsClientId=cid)
+        steps = int(round(duration / timestep))
+        out = []
+        for i in moving:
+            effort = efforts[name[i]]
+            sides = ("upper", "lower") if i in limited else ("upper",)
+            for side in sides:
+                pb.restoreState(stateId=state, physicsClientId=cid)
+                for k in moving:
+                    pb.resetJointState(body, k, 0.0, 0.0, physicsClientId=cid)
+                pb.setJointMotorControlArray(body, moving, pb.VELOCITY_CONTROL, forces=[0.0] * len(moving),
+                                             physicsClientId=cid)
+                sign = 1.0 if side == "upper" else -1.0
+                worst = np.full(len(limited), -np.inf)
+                for _ in range(steps):
+                    pb.setJointMotorControl2(body, i, pb.TORQUE_CONTROL, force=sign * effort, physicsClientId=cid)
+                    pb.stepSimulation(physicsClientId=cid)
+                    q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid)])
+                    worst = np.maximum(worst, np.maximum(lo - q, q - hi) / span)
+                q_end = pb.getJointState(body, i, physicsClientId=cid)[0]
+                if i in limited:
+                    a, b = info[i][8], info[i][9]
+                    travel = (q_end - a) / (b - a) if side == "upper" else (b - q_end) / (b - a)
+                else:
+                    travel = q_end / math.pi
+                out.append(_push(name[i], side, effort, travel, [name[k] for k in limited], worst))
+        return out
+    finally:
+        pb.disconnect(physicsClientId=cid)
+
+
+def push_mujoco(urdf: str | Path, duration: float = PUSH_TIME) -> list[Push]:
+    """:func:`~infmob_usd.validate.mujoco_sim.push_joints` on the URDF as MuJoCo reads it."""
+    return push_joints(load_model(urdf), duration)
+
+
+ENGINES = {"mujoco": push_mujoco, "pybullet": push_bullet}
+
+
+def failures(pushes: list[Push]) -> list[Push]:
+    return [p for p in pushes if not p.excess <= PUSH_TOL]
+
+
+def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool, out: str) -> dict:
+    """Generate one object (URDF + MJCF, 16 px textures), push it in ``engines``, optionally run
+    the ``mujoco`` check on its MJCF; a row of results."""
+    import infmob_usd
+
+    from .mujoco_sim import check_mujoco
+
+    obj = infmob_usd.generate(category, seed=seed, texture_size=16)
+    folder = obj.save(Path(out) / category, formats="urdf,mjcf")
+    urdf = folder / f"{folder.name}.urdf"
+    row = {"category": category, "seed": seed, "name": folder.name, "mjcf_s": obj.timings["mjcf"], "fails": {}}
+    for e in engines:
+        pushes = ENGINES[e](urdf)
+        row["fails"][e] = [f"{p.joint} -> {p.side} ({p.effort:.3g}): {p.excess * 100:.1f} % past"
+                           for p in failures(pushes)]
+        row[e] = max([p.excess for p in pushes] + [0.0])
+    if mujoco_check:
+        (r,) = check_mujoco(folder)
+        row["check"] = (r.ok, r.detail)
+    return row
+
+
+def main(argv: list[str] | None = None) -> int:
+    from concurrent.futures import ProcessPoolExecutor
+
+    import infmob_usd
+
+    ap = argparse.ArgumentParser(prog="python -m infmob_usd.validate.push", description=__doc__.split("\n")[0])
+    ap.add_argument("categories", nargs="*", default=["all"])
+    ap.add_argument("--seeds", type=int, default=5, help="seeds 0..N-1 per category (default 5)")
+    ap.add_argument("--engines", default="mujoco,pybullet", help="push in these (comma list; `none`: no push)")
+    ap.add_argument("--mujoco-check", action="store_true",
+                    help="also run the mujoco check of validate --sim on the MJCF")
+    ap.add_argument("--workers", type=int, default=1)
+    a = ap.parse_args(argv)
+    cats = infmob_usd.list_categories() if a.categories in (["all"], []) else a.categories
+    engines = tuple(e for e in a.engines.split(",") if e and e != "none")
+    columns = [*engines] + (["mujoco_check"] if a.mujoco_check else [])
+    print(f"{'category':18s}" + "".join(f"{c:>14s}" for c in columns) + "   worst excess past a limit (push)")
+    bad = 0
+    mjcf_s = []
+    t0 = time.perf_counter()
+    with tempfile.TemporaryDirectory() as tmp, ProcessPoolExecutor(max_workers=a.workers) as pool:
+        for cat in cats:
+            futs = [pool.submit(_one, cat, seed, engines, a.mujoco_check, tmp) for seed in range(a.seeds)]
+            rows = [f.result() for f in futs]
+            passed = {e: sum(not r["fails"][e] for r in rows) for e in engines}
+            if a.mujoco_check:
+                passed["mujoco_check"] = sum(r["check"][0] for r in rows)
+            for r in rows:
+                mjcf_s.append(r["mjcf_s"])
+                for e in engines:
+                    for f in r["fails"][e]:
+                        print(f"  FAIL {e} push {r['name']} {f}")
+                if a.mujoco_check and not r["check"][0]:
+                    print(f"  FAIL mujoco check {r['name']}: {r['check'][1]}")
+            bad += sum(a.seeds - v for v in passed.values())
+            print(f"{cat:18s}" + "".join(f"{f'{passed[c]}/{a.seeds}':>14s}" for c in columns) + "   "
+                  + " ".join(f"{e} {max(r[e] for r in rows) * 100:.2f} %" for e in engines), flush=True)
+    print(f"\nMJCF writing (after the URDF wrote the meshes): median {np.median(mjcf_s) * 1000:.2f} ms per object"
+          f" over {len(mjcf_s)} objects; {time.perf_counter() - t0:.0f} s in all")
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
