@@ -531,6 +531,8 @@ CONTACT: dict[str, Contact] = {
                      f" restitution: glass marble, {_RESTITUTION}"),
     "ceramic": Contact(0.6, 0.25, 0.66, f"glazed ceramic taken as glass: glass on metal, {_FRICTION_GLASS};"
                        f" restitution: glass marble, {_RESTITUTION}"),
+    "screen": Contact(0.6, 0.25, 0.66, f"a display's cover glass taken as glass: glass on metal, {_FRICTION_GLASS};"
+                      f" restitution: glass marble, {_RESTITUTION}"),
     "enamel": Contact(0.6, 0.25, 0.66, f"vitreous enamel (glass fused on steel) taken as glass: glass on metal,"
                       f" {_FRICTION_GLASS}; restitution: glass marble, {_RESTITUTION}"),
     "rubber": Contact(1.0, 0.7, 0.83, f"friction: rubber on dry concrete, {_FRICTION_HOWWHY}; restitution: ball of"

@@ -355,3 +355,11 @@ def test_build_fills_the_cache_once(tmp_path, monkeypatch):
     assert again["made"] == 0 and again["cache"] == first["cache"]
     look = library_look("rubber", "black", 3)
     assert lib._disk_maps(look, 16) == (lib.make_maps(look, 16), False)
+
+
+def test_every_family_has_contact_properties():
+    """Every material family can be bound as a physics material (a new family without them broke the USD writer)."""
+    from infmob_usd.materials import FAMILIES
+    from infmob_usd.materials.families import CONTACT
+
+    assert set(FAMILIES) == set(CONTACT)
