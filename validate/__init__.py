@@ -10,6 +10,10 @@
   joints hold still under gravity (``rest``), the geometric ``ground``,
   ``self_collision`` and ``parent_child`` checks (:mod:`.physics`), and loading
   through ManiSkill (``maniskill_load``).
+
+Every check runs under :func:`~.result.guarded`: a check that raises (a truncated usdc, a
+garbage URDF, a deleted file ...) is reported as a failed check with the exception on one
+line, and the other checks and objects go on. New checks should be added the same way.
 """
 
 from __future__ import annotations
@@ -18,7 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .files import find_objects
-from .result import CheckResult
+from .result import CheckResult, guarded
 
 
 @dataclass
@@ -40,18 +44,19 @@ def validate_object(folder: str | Path, sim: bool = True, physics: bool = False)
     from .usd_check import check_usd
 
     folder = Path(folder)
-    report = ObjectReport(folder, check_usd(folder))
+    report = ObjectReport(folder, guarded("usd", check_usd, folder))
     if sim or physics:
         from .sim import check_sapien
 
-        report.checks += check_sapien(folder, checks=["reach", "rest"] if physics else ["reach"])
+        report.checks += guarded("sapien_load", check_sapien, folder,
+                                 checks=["reach", "rest"] if physics else ["reach"])
     if physics:
         from .physics import check_physics
         from .sim import check_maniskill
 
-        report.checks += check_physics(folder)
-        report.checks += check_maniskill(folder)
+        report.checks += guarded("physics", check_physics, folder)
+        report.checks += guarded("maniskill_load", check_maniskill, folder)
     return report
 
 
-__all__ = ["CheckResult", "ObjectReport", "find_objects", "validate_object"]
+__all__ = ["CheckResult", "ObjectReport", "find_objects", "guarded", "validate_object"]
