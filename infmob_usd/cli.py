@@ -391,7 +391,12 @@ def cmd_stats(args) -> int:
 
     from .validate.stats import dataset_stats, format_stats
 
-    stats = dataset_stats(args.folder, max_pairs=args.max_pairs)
+    if args.max_pairs < 1:
+        return _fail(f"--max-pairs must be at least 1, got {args.max_pairs}")
+    skipped: list = []
+    stats = dataset_stats(args.folder, max_pairs=args.max_pairs, skipped=skipped)
+    for folder, why in skipped:
+        print(f"infmob: skipped {folder}: metadata.json unreadable ({why})", file=sys.stderr)
     if not stats["overall"]["objects"]:
         return _fail(f"no object folders (with metadata.json) under {args.folder}")
     print(json.dumps(stats, indent=2) if args.json else format_stats(stats))
@@ -425,6 +430,13 @@ def cmd_textures(args) -> int:
         return _fail("--workers must be at least 1")
     if args.family and split_spec(args.family)[0] not in FAMILIES:
         return _fail(f"unknown material family {args.family!r}; valid families: {', '.join(FAMILIES)}")
+    if args.family:
+        name, only = split_spec(args.family)
+        variants = [v for v, _ in FAMILIES[name].palette]
+        unknown = [v for v in only if v not in variants]
+        if unknown:
+            return _fail(f"material family {name!r} has no variant {', '.join(map(repr, unknown))};"
+                         f" its variants: {', '.join(variants)}")
     if cache_dir() is None:
         return _fail("the texture cache is disabled or not writable; set INFMOB_USD_CACHE to a writable folder")
     t0 = time.perf_counter()

@@ -873,7 +873,8 @@ def contact_sheet(folders, out_png, cell: int = 256, joint_fraction=0.0, columns
         sheet[y * cell:(y + 1) * cell, x * cell:(x + 1) * cell] = img
     out_png = Path(out_png)
     out_png.parent.mkdir(parents=True, exist_ok=True)
-    cv2.imwrite(str(out_png), sheet[..., ::-1])
+    if not cv2.imwrite(str(out_png), sheet[..., ::-1]):
+        raise OSError(f"cannot write the contact sheet {str(out_png)!r}")
     return out_png
 
 
@@ -907,6 +908,18 @@ def main(args) -> int:
                 return 2
             cell = args.size or 256
             out = Path(args.out) if args.out else Path(args.sheet) / "contact_sheet.png"
+            if out.suffix.lower() != ".png" or out.is_dir():
+                print(f"infmob: error: with --sheet, --out is the PNG file to write (NAME.png), got {str(out)!r}",
+                      file=sys.stderr)
+                return 2
+            if not out.parent.is_dir() and out.parent.exists():
+                print(f"infmob: error: --out {str(out)!r}: {str(out.parent)!r} is not a folder", file=sys.stderr)
+                return 2
+            if out.parent.is_dir():  # fail before rendering, not after
+                import tempfile
+
+                with tempfile.NamedTemporaryFile(dir=out.parent, prefix=".infmob-probe-"):
+                    pass
             path = contact_sheet(found, out, cell=cell)
             print(f"{path}  ({len(found)} objects)")
             return 0
@@ -917,6 +930,9 @@ def main(args) -> int:
         if not found:
             print(f"infmob: error: no object folders (with metadata.json) in {' '.join(args.paths)}", file=sys.stderr)
             return 2
+        if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
+            print(f"infmob: error: --out {args.out!r} is a file; give a folder for the previews", file=sys.stderr)
+            return 2
         for folder in found:
             out = Path(args.out) / folder.name if args.out else None
             written = preview(folder, out, size=args.size or 512)
@@ -924,4 +940,7 @@ def main(args) -> int:
         return 0
     except PreviewUnavailable as exc:
         print(f"infmob: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:
+        print(f"infmob: error: {exc}; choose another --out", file=sys.stderr)
         return 2
