@@ -78,6 +78,7 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
     cz0, cz1 = z0 + t, z1 - t  # inner opening
     rows = p["drawer_rows"] or max(1, math.floor((H - 0.06) / 0.3))
     handles = p["has_handles"]
+    moving = False
 
     for c in range(n_cols):
         ya = y0 + t + c * (col_w + t)
@@ -85,6 +86,9 @@ def build(p: dict, structure: np.random.Generator, geometry: np.random.Generator
         if c < n_cols - 1:  # divider to the right of this column
             bp.extend(carcass, [g.box_between([xb + t * 0.5, yb, cz0], [xf, yb + t, cz1], "body")])
         kind = GROWTH.choose("column", structure)
+        if c == n_cols - 1 and kind == "shelf" and not moving:  # an all-shelf cabinet would not articulate
+            kind = "drawers" if structure.random() < 0.5 else "doors"
+        moving = moving or kind != "shelf"
         # the front of a column covers the opening plus half of each bordering board
         fy0 = ya - t / 2 + GAP / 2 if c > 0 else y0 + GAP
         fy1 = yb + t / 2 - GAP / 2 if c < n_cols - 1 else y1 - GAP

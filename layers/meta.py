@@ -37,7 +37,7 @@ def _clean(x):
 def metadata(obj) -> dict:
     """Everything a dataset tool needs without parsing USD: a JSON-able dict."""
     lo, hi = obj.bounds()
-    return _clean({
+    return _exact_overrides(obj, _clean({
         "name": obj.name,
         "category": obj.category,
         "seed": obj.seed,
@@ -72,7 +72,13 @@ def metadata(obj) -> dict:
             "urdf": f"./{obj.name}.urdf",
             "semantics": "./semantics.txt",
         },
-    })
+    }))
+
+
+def _exact_overrides(obj, meta: dict) -> dict:
+    """Overrides are stored unrounded, so replaying an object's own overrides gives the same object."""
+    meta["overrides"] = {str(k): v.item() if isinstance(v, np.generic) else v for k, v in obj.overrides.items()}
+    return meta
 
 
 def write_metadata(obj, folder: Path) -> Path:
