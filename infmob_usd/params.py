@@ -112,7 +112,9 @@ class Int(Param):
         return None if self.auto else v
 
     def coerce(self, value: Any) -> int:
-        expected = f"an integer in [{self.low}, {self.high}]"
+        expected = f"an integer in [{self.low}, {self.high}]" + (" or None (auto)" if self.auto else "")
+        if value is None and self.auto:  # as drawn and stored in metadata: derived by the category
+            return None
         if isinstance(value, (bool, np.bool_)):
             raise self._fail(value, expected)
         if isinstance(value, str):
