@@ -128,7 +128,8 @@ def _drawers(bp, carcass, p, c, rows, ys, fys, zs, fzs, handles):
         name = f"drawer_{c}_{r}"
         fz0 = fzs[0] + r * row_h + GAP / 2
         fz1 = fz0 + row_h - GAP
-        bz0 = zs[0] + r * inner_row + clear
+        # the box stays above the front of the drawer below (GAP clear), or it drags it along when pulled
+        bz0 = max(zs[0] + r * inner_row + clear, fz0)
         bz1 = zs[0] + (r + 1) * inner_row - clear - 0.01
         by0, by1 = ys[0] + clear, ys[1] - clear
         bx0, bx1 = -D / 2 + t + clear, xf - 0.002

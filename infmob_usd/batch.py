@@ -330,10 +330,12 @@ class OutputLock:
         os.ftruncate(fd, 0)
         os.pwrite(fd, (json.dumps(info) + "\n").encode(), 0)
         self.fd = fd
+        _PARENT_FDS.add(fd)
         return self
 
     def __exit__(self, *exc) -> None:
         if self.fd is not None:
+            _PARENT_FDS.discard(self.fd)
             os.ftruncate(self.fd, 0)
             fcntl.flock(self.fd, fcntl.LOCK_UN)
             os.close(self.fd)
@@ -368,8 +370,18 @@ class Progress:
             self.stream.write("\n")
 
 
+_PARENT_FDS: set[int] = set()  # the lock and manifest descriptors of a run: closed in its forked workers
+
+
 def _die_with_parent() -> None:
-    """Pool initializer: the worker gets SIGKILL when its parent dies (Linux ``PR_SET_PDEATHSIG``)."""
+    """Pool initializer: the worker gets SIGKILL when its parent dies (Linux ``PR_SET_PDEATHSIG``), and
+    drops its inherited copies of the run's lock and manifest descriptors (the lock lives with the run)."""
+    for fd in list(_PARENT_FDS):
+        try:
+            os.close(fd)
+        except OSError:
+            pass
+    _PARENT_FDS.clear()
     try:
         import ctypes
         import signal
@@ -421,10 +433,12 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
         clean_partial(out)
         rows = read_manifest(out)
         manifest_fd = _open_nofollow(out / MANIFEST, os.O_WRONLY | os.O_APPEND | os.O_CREAT, "the manifest")
+        _PARENT_FDS.add(manifest_fd)
         try:
             return _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, total, log,
                                rows, manifest_fd, run_id)
         finally:
+            _PARENT_FDS.discard(manifest_fd)
             os.close(manifest_fd)
             _rewrite_manifest(out, rows, run_id)
 

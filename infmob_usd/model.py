@@ -10,7 +10,6 @@ compound joint becomes a chain of simple joints through dummy links carrying
 from __future__ import annotations
 
 import math
-
 from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path

@@ -50,7 +50,7 @@ def _flip(path: Path, at: int = 60, n: int = 16) -> None:
 
 
 CORRUPTIONS = {
-    "truncated_usdc": lambda f: os.truncate(f / "payload/geometry.usdc", (f / "payload/geometry.usdc").stat().st_size // 2),
+    "truncated_usdc": lambda f: os.truncate(f / "payload/geometry.usdc", 25_000),
     "zero_usdc": lambda f: os.truncate(f / "payload/geometry.usdc", 0),
     "garbage_physics": lambda f: (f / "payload/physics.usda").write_text("garbage\n"),
     "garbage_usda": lambda f: (f / f"{NAME}.usda").write_text("garbage\n"),
@@ -103,8 +103,8 @@ def test_generate_removes_only_temp_names_of_dead_runs(made, tmp_path):
     outside = tmp_path / "elsewhere" / ".x.infmob-1-00000000-ab.tmp"
     outside.mkdir(parents=True)
     (out / "link").symlink_to(outside.parent)
-    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
-    ours = cat / f".kitchen_cabinet_000005.infmob-{dead.stdout.strip()}-0123abcd-x1y2.tmp"
+    dead = 2**22 + 1  # above any pid_max: a run that is surely not alive
+    ours = cat / f".kitchen_cabinet_000005.infmob-{dead}-0123abcd-x1y2.tmp"
     ours.mkdir()
     alive = cat / f".kitchen_cabinet_000006.infmob-{os.getpid()}-0123abcd-x1y2.tmp"  # an API save running now
     alive.mkdir()
@@ -216,7 +216,7 @@ def _state(pid: int) -> str:
 
 
 def _start(out: Path, count: int) -> subprocess.Popen:
-    return subprocess.Popen([sys.executable, "-m", "infmob_usd", "generate", "kitchen_cabinet", "--count", str(count),
+    return subprocess.Popen([sys.executable, "-m", "infmob_usd", "generate", "tv", "--count", str(count),
                              "--out", str(out), "--texture-size", "16", "--workers", "2"],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
@@ -236,7 +236,7 @@ def test_a_killed_run_resumes_without_redoing_finished_objects(tmp_path, sig):
     from infmob_usd.validate import validate_object
 
     out = tmp_path / "out"
-    proc = _start(out, 8)
+    proc = _start(out, 12)
     _wait_rows(out, 2, proc)
     workers = _children(proc.pid)
     proc.send_signal(sig)
@@ -244,15 +244,16 @@ def test_a_killed_run_resumes_without_redoing_finished_objects(tmp_path, sig):
     assert code == (-signal.SIGKILL if sig == signal.SIGKILL else 128 + signal.SIGTERM)
     assert workers and _gone(workers), "pool workers outlived their run"
     finished = read_manifest(out)
-    assert len(finished) >= 2
-    inodes = {s: (out / "kitchen_cabinet" / f"kitchen_cabinet_{s:06d}").stat().st_ino for _, s in finished}
-    rows = run_batch([Job("kitchen_cabinet", s, (), 16) for s in range(8)], out, workers=2)
+    assert 2 <= len(finished) < 12
+    folder = lambda s: out / "tv" / f"tv_{s:06d}"  # noqa: E731
+    inodes = {s: folder(s).stat().st_ino for _, s in finished}
+    rows = run_batch([Job("tv", s, (), 16) for s in range(12)], out, workers=2)  # the lock was released
     assert not {r["seed"] for r in rows} & set(inodes), "finished objects were generated again"
-    assert {s: (out / "kitchen_cabinet" / f"kitchen_cabinet_{s:06d}").stat().st_ino for s in inodes} == inodes
-    assert sorted(s for _, s in read_manifest(out)) == list(range(8))
-    assert not [p for p in (out / "kitchen_cabinet").iterdir() if p.name.startswith(".")]
-    for s in range(8):
-        assert validate_object(out / "kitchen_cabinet" / f"kitchen_cabinet_{s:06d}", sim=False).ok
+    assert {s: folder(s).stat().st_ino for s in inodes} == inodes
+    assert sorted(s for _, s in read_manifest(out)) == list(range(12))
+    assert not [p for p in (out / "tv").iterdir() if p.name.startswith(".")]
+    for s in range(12):
+        assert validate_object(folder(s), sim=False).ok
 
 
 # --- bad input: one line, exit status 2, nothing created (L1, L2, M3, L8) ---------------------
