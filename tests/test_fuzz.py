@@ -18,8 +18,8 @@ from infmob_usd.errors import ParameterError
 from infmob_usd.fuzz import check_case, draw_case, reproduce
 from infmob_usd.params import Choice, Flag, Float, Int
 
-GEN_EXAMPLES = int(os.environ.get("INFMOB_FUZZ_EXAMPLES", "120"))
-SIM_EXAMPLES = int(os.environ.get("INFMOB_FUZZ_SIM_EXAMPLES", "24"))
+GEN_EXAMPLES = int(os.environ.get("INFMOB_FUZZ_EXAMPLES", "100"))
+SIM_EXAMPLES = int(os.environ.get("INFMOB_FUZZ_SIM_EXAMPLES", "20"))
 
 
 def _value(p):
