@@ -356,6 +356,7 @@ def _validate_all(folders, sim: bool, physics: bool, workers: int):
 
     Checks never raise (:func:`~infmob_usd.validate.result.guarded`); a worker that dies (a
     native crash inside a reader) fails its object, and a fresh pool goes on with the rest.
+    Interrupted (Ctrl-C, SIGTERM), the workers are terminated.
     """
     from concurrent.futures import ProcessPoolExecutor
     from functools import partial
@@ -368,9 +369,12 @@ def _validate_all(folders, sim: bool, physics: bool, workers: int):
         for folder in folders:
             yield folder, check(folder)
         return
+    from .batch import _die_with_parent, _stop_pool
+
     todo = list(folders)
     while todo:
-        with ProcessPoolExecutor(max_workers=min(workers, len(todo))) as pool:
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(todo)), initializer=_die_with_parent)
+        try:
             futures = [pool.submit(check, f) for f in todo]
             for i, (folder, fut) in enumerate(zip(todo, futures)):
                 try:
@@ -384,6 +388,10 @@ def _validate_all(folders, sim: bool, physics: bool, workers: int):
                 yield folder, report
             else:
                 todo = []
+        except BaseException:  # Ctrl-C, SIGTERM, or the caller stopped early: no workers left behind
+            _stop_pool(pool)
+            raise
+        pool.shutdown(wait=True)
 
 
 def cmd_stats(args) -> int:
