@@ -1,4 +1,4 @@
-"""The ``infmob`` command line: list, params, generate, validate, preview, stats, gallery, bench, textures."""
+"""The ``infmob`` command line: list, params, generate, validate, preview, stats, gallery, bench, textures, fuzz."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import os
 import sys
 from pathlib import Path
 
-from .errors import InfmobError
+from .errors import InfmobError, OutputError
 
 DESCRIPTION = "Procedural, simulation-ready articulated objects as OpenUSD + URDF."
 
@@ -42,6 +42,21 @@ def _parser() -> argparse.ArgumentParser:
                    " default usd,urdf,mjcf")
     g.add_argument("--preview", action="store_true",
                    help="also render each object's thumbnail (preview.png + sweep.gif in its folder)")
+    g.add_argument("--wait", action="store_true",
+                   help="if another run is writing to DIR, wait for it to finish (default: fail at once)")
+
+    fz = sub.add_parser("fuzz", help="generate N random (category, seed, overrides) objects and validate each",
+                        description="Property test for long runs: N draws of a category, a seed and random valid"
+                        " overrides (schema extremes included). Each draw must either be rejected up front with a"
+                        " ParameterError or give an object that passes the USD checks and SAPIEN `reach`. Prints"
+                        " every crash and invalid object with the command that reproduces it; exit 1 if any.")
+    fz.add_argument("n", type=int, metavar="N", help="number of draws")
+    fz.add_argument("--seed", type=int, default=0, help="seed of the draws (same seed, same draws); default 0")
+    fz.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="worker processes; default: all cores")
+    fz.add_argument("--categories", default="all", help="comma list or `all` (default)")
+    fz.add_argument("--texture-size", type=int, default=16, metavar="PX", help="texture edge; default 16")
+    fz.add_argument("--usd-only", action="store_true", help="skip the SAPIEN checks (faster)")
+    fz.add_argument("--out", default=None, help="keep the objects that fail in this folder (default: keep none)")
 
     v = sub.add_parser("validate", help="check object folders: USD, URDF agreement, SAPIEN (and --sim physics)",
                        description="Validate object folders. Default: USD checks + SAPIEN (the URDF loads, every "
@@ -132,45 +147,90 @@ def cmd_params(args) -> int:
     return 0
 
 
+MAX_COUNT = 1_000_000
+"""Most objects per category in one command (one folder of a million objects is already ~10 TB)."""
+
+
 def _categories(spec: str) -> list[str]:
     from .api import get_category, list_categories
 
-    if spec == "all":
+    if spec.strip() == "all":
         return list_categories()
-    names = [c.strip() for c in spec.split(",") if c.strip()]
+    names = list(dict.fromkeys(c.strip() for c in spec.split(",") if c.strip()))
+    if not names:
+        raise InfmobError(f"no category in {spec!r}; give a category id, a comma list of them, or `all`"
+                          " (see `infmob list`)")
     for name in names:
         get_category(name)
     return names
 
 
-def cmd_generate(args) -> int:
-    from .api import check_texture_size, get_category
-    from .batch import Job, run_batch
-    from .layers import check_output_dir, parse_formats
+def _out_dir(path: str) -> Path:
+    """The ``--out`` folder, created (after every other argument was checked) and writable."""
+    from .layers import check_output_dir
+
+    if not path.strip() or any(ord(c) < 32 or ord(c) == 127 for c in path):
+        raise OutputError(f"--out {path!r} is empty or has control characters (a newline?); give a plain folder name")
+    return check_output_dir(Path(path))
+
+
+def _overrides(categories: list[str], assignments: list[str]) -> dict:
+    """Parsed ``--set`` values, checked against every category's schema (naming the one that rejects them)."""
+    from .api import get_category
+    from .errors import ParameterError
     from .params import parse_assignment
+
+    overrides = dict(parse_assignment(s) for s in assignments)
+    for category in categories:
+        try:
+            get_category(category).schema.validate(overrides)
+        except ParameterError as e:
+            lacking = [c for c in categories
+                       if any(name not in get_category(c).schema.names for name in overrides)]
+            if len(categories) > 1 and lacking:
+                names = ", ".join(sorted({n for c in lacking for n in overrides
+                                          if n not in get_category(c).schema.names}))
+                raise ParameterError(f"--set {names}: not a parameter of {', '.join(lacking)}; generate only"
+                                     f" categories that have it (see `infmob params CATEGORY`)") from None
+            raise ParameterError(f"{category}: {e}") from None
+    return overrides
+
+
+def _on_sigterm(signum, frame):
+    raise SystemExit(128 + signum)
+
+
+def cmd_generate(args) -> int:
+    from .api import check_texture_size
+    from .batch import Job, run_batch
+    from .layers import parse_formats
+    from .seeding import MAX_SEED
 
     formats = parse_formats(args.formats)
     if args.preview and "urdf" not in formats:
         return _fail("--preview renders the URDF; add urdf to --formats")
     categories = _categories(args.category)
-    overrides = dict(parse_assignment(s) for s in args.set)
-    for category in categories:  # fail before anything is written
-        get_category(category).schema.validate(overrides)
+    overrides = _overrides(categories, args.set)  # fail before anything is written
     check_texture_size(args.texture_size)
-    if args.count < 1:
-        return _fail(f"--count must be at least 1, got {args.count}")
-    if args.seed < 0:
-        return _fail(f"--seed must be non-negative, got {args.seed}")
+    if args.count < 1 or args.count > MAX_COUNT:
+        return _fail(f"--count must be 1..{MAX_COUNT} (objects per category in one run), got {args.count}")
+    if args.seed < 0 or args.seed + args.count - 1 > MAX_SEED:
+        got = str(args.seed) if len(str(args.seed)) <= 24 else f"a {len(str(args.seed))}-digit number"
+        return _fail(f"--seed must be 0..{MAX_SEED} (and --seed + --count - 1 too), got {got}")
     if args.workers < 1:
         return _fail(f"--workers must be at least 1, got {args.workers}")
-    out = check_output_dir(Path(args.out))
-    jobs = [Job(c, seed, tuple(sorted(overrides.items())), args.texture_size, formats)
-            for c in categories for seed in range(args.seed, args.seed + args.count)]
+    if args.address and args.backend != "ray":
+        return _fail("--address is only used with --backend ray; add --backend ray or drop --address")
+    out = _out_dir(args.out)
+    items = tuple(sorted(overrides.items()))
+    jobs = (Job(c, seed, items, args.texture_size, formats)
+            for c in categories for seed in range(args.seed, args.seed + args.count))
 
     def show(row: dict) -> None:
         if "error" in row:
-            print(f"infmob: {row['category']} seed {row['seed']} failed: {row['error']}"
-                  f" (traceback: {out / row['traceback']})", file=sys.stderr, flush=True)
+            tb = f" (traceback: {out / row['traceback']})" if row.get("traceback") else ""
+            print(f"infmob: {row['category']} seed {row['seed']} failed: {row['error']}{tb}",
+                  file=sys.stderr, flush=True)
         else:
             print(out / row["folder"], flush=True)
             if args.preview:
@@ -178,14 +238,67 @@ def cmd_generate(args) -> int:
 
                 preview(out / row["folder"])
 
+    def log(message: str) -> None:
+        print(f"infmob: {message}", file=sys.stderr, flush=True)
+
+    total = len(categories) * args.count
     rows = run_batch(jobs, out, workers=args.workers, overwrite=args.overwrite, backend=args.backend,
-                     address=args.address, on_row=show)
-    skipped = len(jobs) - len(rows)
+                     address=args.address, on_row=show, total=total, wait_lock=args.wait, log=log)
+    skipped = total - len(rows)
     if skipped:
         print(f"infmob: {skipped} object(s) already complete in {out}, skipped (--overwrite to redo)",
               file=sys.stderr)
     failed = sum(1 for r in rows if "error" in r)
     return 1 if failed else 0
+
+
+def cmd_fuzz(args) -> int:
+    from .fuzz import fuzz
+
+    if args.n < 1:
+        return _fail(f"N must be at least 1, got {args.n}")
+    if args.workers < 1:
+        return _fail(f"--workers must be at least 1, got {args.workers}")
+    if args.seed < 0:
+        return _fail(f"--seed must be non-negative, got {args.seed}")
+    categories = _categories(args.categories)
+    out = _out_dir(args.out) if args.out else None
+    res = fuzz(args.n, seed=args.seed, workers=args.workers, categories=categories, out=out,
+               sim=not args.usd_only, texture_size=args.texture_size, stream=sys.stdout)
+    return 0 if not res["crashes"] and not res["invalid"] else 1
+
+
+def _writable_file(path: str, option: str) -> Path:
+    """Fail now, not after a long run, when ``path`` cannot be written (probe: a temporary file beside it)."""
+    import tempfile
+
+    p = Path(path)
+    if p.is_dir():
+        raise OutputError(f"{option} {path!r} is a folder; give a file name")
+    parent = p.parent if str(p.parent) else Path(".")
+    if not parent.is_dir():
+        raise OutputError(f"{option} {path!r}: folder {str(parent)!r} does not exist; create it or choose another")
+    try:
+        with tempfile.NamedTemporaryFile(dir=parent, prefix=".infmob-probe-"):
+            pass
+    except OSError as e:
+        raise OutputError(f"{option} {path!r}: cannot write in {str(parent)!r} ({e.strerror});"
+                          f" choose another file") from None
+    return p
+
+
+def _write_file(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` through a temporary file in the same folder (never half-written)."""
+    import tempfile
+
+    fd, tmp = tempfile.mkstemp(dir=path.parent if str(path.parent) else ".", prefix=".infmob-", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
 
 
 def cmd_validate(args) -> int:
@@ -199,16 +312,30 @@ def cmd_validate(args) -> int:
 
     if args.usd_only and args.sim:
         return _fail("--usd-only and --sim contradict each other; choose one")
+    if args.workers < 1:
+        return _fail(f"--workers must be at least 1, got {args.workers}")
+    if args.out and args.sweep is None:
+        return _fail("--out is only used with --sweep; drop it or add --sweep N")
+    report_path = _writable_file(args.report, "--report") if args.report else None
     tmp = None
     if args.sweep is not None:
+        from .api import check_texture_size
         from .batch import Job, run_batch
 
         if args.sweep < 1:
             return _fail(f"--sweep must be at least 1, got {args.sweep}")
+        if args.sweep > MAX_COUNT:
+            return _fail(f"--sweep must be at most {MAX_COUNT} seeds per category, got {args.sweep}")
+        check_texture_size(args.texture_size)
         categories = [c for spec in args.paths for c in _categories(spec)]
-        out = Path(args.out) if args.out else Path(tmp := tempfile.mkdtemp(prefix="infmob-sweep-"))
-        jobs = [Job(c, s, (), args.texture_size) for c in categories for s in range(args.sweep)]
-        rows = run_batch(jobs, out, workers=args.workers)
+        if args.out:
+            from .layers import check_output_dir
+
+            out = check_output_dir(Path(args.out))
+        else:
+            out = Path(tmp := tempfile.mkdtemp(prefix="infmob-sweep-"))
+        jobs = (Job(c, s, (), args.texture_size) for c in categories for s in range(args.sweep))
+        rows = run_batch(jobs, out, workers=args.workers, total=len(categories) * args.sweep)
         for r in rows:
             if "error" in r:
                 print(f"FAIL {r['category']} seed {r['seed']}: generation failed: {r['error']}")
@@ -230,14 +357,14 @@ def cmd_validate(args) -> int:
                 for c in report.checks:
                     print(f"      {'ok  ' if c.ok else 'FAIL'} {c.name}: {c.detail}")
             try:
-                category = load_metadata(folder)["category"]
-            except (OSError, ValueError, KeyError):
+                category = str(load_metadata(folder)["category"])
+            except Exception:  # noqa: BLE001 - unreadable metadata is already a FAIL of that object
                 category = "?"
             rows.append((category, report.checks, folder.name))
         print(f"\n{n_ok}/{len(folders)} objects passed every check\n")
         print(summary_table(rows))
-        if args.report:
-            Path(args.report).write_text(json.dumps(report_json(rows), indent=2) + "\n")
+        if report_path:
+            _write_file(report_path, json.dumps(report_json(rows), indent=2) + "\n")
         return 0 if n_ok == len(folders) else 1
     finally:
         if tmp:
@@ -245,20 +372,46 @@ def cmd_validate(args) -> int:
 
 
 def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False):
-    """``(folder, report)`` in folder order; a process pool when ``workers > 1``."""
+    """``(folder, report)`` in folder order; a process pool when ``workers > 1``.
+
+    Checks never raise (:func:`~infmob_usd.validate.result.guarded`); a worker that dies (a
+    native crash inside a reader) fails its object, and a fresh pool goes on with the rest.
+    Interrupted (Ctrl-C, SIGTERM), the workers are terminated.
+    """
+    from concurrent.futures import ProcessPoolExecutor
     from functools import partial
 
-    from .validate import validate_object
+    from .validate import ObjectReport, validate_object
+    from .validate.result import CheckResult, one_line
 
     check = partial(validate_object, sim=sim, physics=physics, simready=simready)
     if workers <= 1 or len(folders) <= 1:
         for folder in folders:
             yield folder, check(folder)
         return
-    from concurrent.futures import ProcessPoolExecutor
+    from .batch import _die_with_parent, _stop_pool
 
-    with ProcessPoolExecutor(max_workers=min(workers, len(folders))) as pool:
-        yield from zip(folders, pool.map(check, folders, chunksize=4))
+    todo = list(folders)
+    while todo:
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(todo)), initializer=_die_with_parent)
+        try:
+            futures = [pool.submit(check, f) for f in todo]
+            for i, (folder, fut) in enumerate(zip(todo, futures)):
+                try:
+                    report = fut.result()
+                except Exception as e:  # noqa: BLE001 - BrokenProcessPool: the worker died
+                    report = ObjectReport(folder, [CheckResult("validator", False,
+                                                               f"the validating process died: {one_line(e)}")])
+                    yield folder, report
+                    todo = todo[i + 1:]
+                    break
+                yield folder, report
+            else:
+                todo = []
+        except BaseException:  # Ctrl-C, SIGTERM, or the caller stopped early: no workers left behind
+            _stop_pool(pool)
+            raise
+        pool.shutdown(wait=True)
 
 
 def cmd_stats(args) -> int:
@@ -266,7 +419,12 @@ def cmd_stats(args) -> int:
 
     from .validate.stats import dataset_stats, format_stats
 
-    stats = dataset_stats(args.folder, max_pairs=args.max_pairs)
+    if args.max_pairs < 1:
+        return _fail(f"--max-pairs must be at least 1, got {args.max_pairs}")
+    skipped: list = []
+    stats = dataset_stats(args.folder, max_pairs=args.max_pairs, skipped=skipped)
+    for folder, why in skipped:
+        print(f"infmob: skipped {folder}: metadata.json unreadable ({why})", file=sys.stderr)
     if not stats["overall"]["objects"]:
         return _fail(f"no object folders (with metadata.json) under {args.folder}")
     print(json.dumps(stats, indent=2) if args.json else format_stats(stats))
@@ -302,6 +460,13 @@ def cmd_textures(args) -> int:
         return _fail("--workers must be at least 1")
     if args.family and split_spec(args.family)[0] not in FAMILIES:
         return _fail(f"unknown material family {args.family!r}; valid families: {', '.join(FAMILIES)}")
+    if args.family:
+        name, only = split_spec(args.family)
+        variants = [v for v, _ in FAMILIES[name].palette]
+        unknown = [v for v in only if v not in variants]
+        if unknown:
+            return _fail(f"material family {name!r} has no variant {', '.join(map(repr, unknown))};"
+                         f" its variants: {', '.join(variants)}")
     if cache_dir() is None:
         return _fail("the texture cache is disabled or not writable; set INFMOB_USD_CACHE to a writable folder")
     t0 = time.perf_counter()
@@ -338,11 +503,15 @@ def cmd_gallery(args) -> int:
 
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
             "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures,
-            "gallery": cmd_gallery}
+            "gallery": cmd_gallery, "fuzz": cmd_fuzz}
 
 
 def main(argv: list[str] | None = None) -> int:
+    import signal
+
     args = _parser().parse_args(argv)
+    if argv is None:  # the command line, not a test calling main(): SIGTERM stops like Ctrl-C
+        signal.signal(signal.SIGTERM, _on_sigterm)
     try:
         return COMMANDS[args.command](args)
     except InfmobError as e:

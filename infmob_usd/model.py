@@ -9,6 +9,7 @@ compound joint becomes a chain of simple joints through dummy links carrying
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from dataclasses import dataclass, field
 from typing import Any
@@ -109,8 +110,23 @@ class ArticulatedObject:
         return dict(sorted(Counter(groups.values()).items()))
 
     def poses(self, q: dict[str, float] | None = None) -> dict[str, np.ndarray]:
-        """World ``(4, 4)`` pose of every link frame with joints at ``q`` (name -> value; default 0)."""
-        q = q or {}
+        """World ``(4, 4)`` pose of every link frame with joints at ``q`` (name -> value; default 0).
+
+        Raises :class:`~infmob_usd.errors.ParameterError` for a name that is not a movable joint
+        of this object or a value that is not a finite number.
+        """
+        from .errors import ParameterError
+
+        q = dict(q or {})
+        movable = {j.name for j in self.joints if j.movable}
+        unknown = sorted(str(k) for k in q if k not in movable)
+        if unknown:
+            raise ParameterError(f"poses: {', '.join(map(repr, unknown))} is not a movable joint of {self.name};"
+                                 f" movable joints: {', '.join(sorted(movable)) or 'none'}")
+        for k, v in q.items():
+            if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)) \
+                    or not math.isfinite(float(v)):
+                raise ParameterError(f"poses: joint {k!r} got {v!r}, expected a finite number (m or rad)")
         origin = {link.name: link.origin for link in self.links}
         pose = {self.links[0].name: _translation(origin[self.links[0].name])}
         for j in self.joints:  # parents always come before their children

@@ -6,6 +6,13 @@ parameter set from a generator, validates user overrides (unknown names, wrong
 types and out-of-range values raise :class:`~infmob_usd.errors.ParameterError`), and
 prints itself for ``infmob params``.
 
+Types are strict and the same from the API and the CLI (which passes strings): a
+:class:`Float` takes a real number or its text, an :class:`Int` an integer or its text
+(``2.0`` is refused, as ``"2.0"`` is), a :class:`Flag` ``True``/``False`` or the text
+``true``/``false``. Bounds print exactly (``repr``-round-trippable), and a value within
+``1e-9`` (relative) of a bound, e.g. one stored rounded in ``metadata.json``, is taken
+as that bound.
+
 Every parameter is always drawn, even when overridden, so that overriding one
 value never reshuffles the others.
 """
@@ -45,6 +52,12 @@ class Param:
         )
 
 
+def _num(x: float) -> str:
+    """Shortest text of ``x`` that reads back as exactly ``x``."""
+    short = f"{x:g}"
+    return short if float(short) == x else repr(float(x))
+
+
 @dataclass(frozen=True)
 class Float(Param):
     """A real value in ``[low, high]``, drawn uniform or log-uniform."""
@@ -60,19 +73,25 @@ class Float(Param):
         return float(self.low + u * (self.high - self.low))
 
     def coerce(self, value: Any) -> float:
-        if isinstance(value, bool):
-            raise self._fail(value, f"a number in [{self.low}, {self.high}] {self.unit}".rstrip())
+        expected = f"a number in [{_num(self.low)}, {_num(self.high)}] {self.unit}".rstrip()
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, str, np.integer, np.floating)):
+            raise self._fail(value, expected)
         try:
             v = float(value)
         except (TypeError, ValueError):
-            raise self._fail(value, f"a number in [{self.low}, {self.high}] {self.unit}".rstrip()) from None
-        if not math.isfinite(v) or not (self.low <= v <= self.high):
-            raise self._fail(value, f"a number in [{self.low}, {self.high}] {self.unit}".rstrip())
+            raise self._fail(value, expected) from None
+        if not math.isfinite(v):
+            raise self._fail(value, expected)
+        for bound in (self.low, self.high):  # a bound printed or stored with rounding is the bound
+            if abs(v - bound) <= 1e-9 * max(1.0, abs(bound)):
+                v = float(bound)
+        if not (self.low <= v <= self.high):
+            raise self._fail(value, expected)
         return v
 
     def describe(self) -> str:
         tag = "logU" if self.dist == "loguniform" else "U"
-        return f"{tag}({self.low:g}, {self.high:g})"
+        return f"{tag}({_num(self.low)}, {_num(self.high)})"
 
 
 @dataclass(frozen=True)
@@ -93,18 +112,16 @@ class Int(Param):
         return None if self.auto else v
 
     def coerce(self, value: Any) -> int:
-        expected = f"an integer in [{self.low}, {self.high}]"
-        if isinstance(value, bool):
+        expected = f"an integer in [{self.low}, {self.high}]" + (" or None (auto)" if self.auto else "")
+        if value is None and self.auto:  # as drawn and stored in metadata: derived by the category
+            return None
+        if isinstance(value, (bool, np.bool_)):
             raise self._fail(value, expected)
         if isinstance(value, str):
             try:
                 value = int(value.strip())
             except ValueError:
                 raise self._fail(value, expected) from None
-        if isinstance(value, float):
-            if not value.is_integer():
-                raise self._fail(value, expected)
-            value = int(value)
         if not isinstance(value, (int, np.integer)) or not (self.low <= value <= self.high):
             raise self._fail(value, expected)
         return int(value)
@@ -137,8 +154,8 @@ class Choice(Param):
         return " | ".join(self.choices)
 
 
-_TRUE = {"1", "true", "yes", "on"}
-_FALSE = {"0", "false", "no", "off"}
+_TRUE = {"true"}
+_FALSE = {"false"}
 
 
 @dataclass(frozen=True)
@@ -155,8 +172,6 @@ class Flag(Param):
             return bool(value)
         if isinstance(value, str) and value.strip().lower() in _TRUE | _FALSE:
             return value.strip().lower() in _TRUE
-        if isinstance(value, int) and value in (0, 1):
-            return bool(value)
         raise self._fail(value, "true or false")
 
     def describe(self) -> str:

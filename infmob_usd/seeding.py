@@ -12,6 +12,8 @@ import zlib
 import numpy as np
 
 STREAMS = ("params", "structure", "geometry", "materials")
+MAX_SEED = 2**63 - 1
+"""Largest seed (object names carry the seed: ``CATEGORY_SSSSSS``, at most 19 digits)."""
 
 
 def category_id(category: str) -> int:
@@ -21,9 +23,9 @@ def category_id(category: str) -> int:
 
 def streams(category: str, seed: int) -> dict[str, np.random.Generator]:
     """Independent generators for each of :data:`STREAMS`."""
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed <= MAX_SEED:
         from .errors import ParameterError
 
-        raise ParameterError(f"seed must be a non-negative integer, got {seed!r}")
+        raise ParameterError(f"seed must be an integer in 0..{MAX_SEED}, got {seed!r}")
     root = np.random.SeedSequence((int(seed), category_id(category)))
     return {name: np.random.default_rng(s) for name, s in zip(STREAMS, root.spawn(len(STREAMS)))}

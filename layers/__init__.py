@@ -91,13 +91,24 @@ def write_textures(obj, folder: Path) -> None:
             (tex / f"{slot}_{name}.png").write_bytes(data)
 
 
-def write_object(obj, out: Path, formats: str | Iterable[str] | None = None) -> Path:
+def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run_id: str | None = None) -> Path:
     """Write ``obj`` to ``out/<name>/`` in ``formats`` (default :data:`DEFAULT_FORMATS`) and return
-    that folder (replaced if it exists)."""
+    that folder (replaced if it exists).
+
+    The temporary folders are named ``.NAME.infmob-RUNID-XXXX.tmp`` / ``.old`` (``run_id``: the
+    batch run's, by default this process's), the only names :func:`infmob_usd.batch.clean_partial`
+    ever removes.
+    """
+    from infmob_usd.runs import new_run_id, temp_prefix
+
     formats = parse_formats(formats)
     out = check_output_dir(out)
     final = out / obj.name
-    tmp = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".tmp", dir=out))
+    prefix = temp_prefix(obj.name, run_id or new_run_id())
+    try:
+        tmp = Path(tempfile.mkdtemp(prefix=prefix, suffix=".tmp", dir=out))
+    except OSError as e:
+        raise OutputError(f"cannot write in output folder {str(out)!r}: {e.strerror}; choose another") from None
     obj._visual_meshes = obj._mesh_files = None
     files = {name: "./" + FORMATS[name].file.format(name=obj.name) for name in formats}
     stages = [("textures_io", write_textures)]
@@ -115,7 +126,7 @@ def write_object(obj, out: Path, formats: str | Iterable[str] | None = None) -> 
             obj.timings[stage] = obj.timings.get(stage, 0.0) + time.perf_counter() - t0
         os.chmod(tmp, 0o755)
         if final.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{obj.name}.", suffix=".old", dir=out))
+            old = Path(tempfile.mkdtemp(prefix=prefix, suffix=".old", dir=out))
             os.replace(final, old / "x")
             os.replace(tmp, final)
             shutil.rmtree(old, ignore_errors=True)

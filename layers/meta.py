@@ -108,7 +108,7 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
     if files is None:
         files = {"usd": f"./{obj.name}.usda", "urdf": f"./{obj.name}.urdf"}
     lo, hi = obj.bounds()
-    return _clean({
+    return _exact_overrides(obj, _clean({
         "name": obj.name,
         "category": obj.category,
         "seed": obj.seed,
@@ -140,7 +140,13 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
         "files": {**files, "semantics": "./semantics.txt"},
-    })
+    }))
+
+
+def _exact_overrides(obj, meta: dict) -> dict:
+    """Overrides are stored unrounded, so replaying an object's own overrides gives the same object."""
+    meta["overrides"] = {str(k): v.item() if isinstance(v, np.generic) else v for k, v in obj.overrides.items()}
+    return meta
 
 
 def write_metadata(obj, folder: Path, files: dict[str, str] | None = None) -> Path:

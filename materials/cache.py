@@ -13,7 +13,8 @@ all), so the PNG maps of a look, which cost 30-45 ms to synthesize and encode at
   ``$INFMOB_USD_CACHE`` if set (``off`` disables it), else
   ``$XDG_CACHE_HOME/infmob-usd`` or ``~/.cache/infmob-usd``.  Files are written to a
   temporary name and renamed, so concurrent workers and crashes never leave a torn
-  file under a real name, and every file read back is checked to be a whole PNG.
+  file under a real name, and every read checks each file's SHA-256 against the
+  ``KEY.sha256.json`` written with it (a damaged entry is made again and overwritten).
   Entries live under a key made of the source of the synthesis code and the
   OpenCV / NumPy versions, so changing either never serves stale maps.  A folder
   that cannot be created or written is skipped (memory cache only).
@@ -97,7 +98,20 @@ def _whole_png(data: bytes) -> bool:
     return data[:8] == _PNG_SIGNATURE and data[-8:] == _PNG_END
 
 
+def _digests(maps: dict[str, bytes]) -> dict[str, str]:
+    return {name: hashlib.sha256(data).hexdigest() for name, data in sorted(maps.items())}
+
+
 def _read(folder: Path, key: str) -> dict[str, bytes] | None:
+    """The maps of ``key`` if every file is there and matches the SHA-256 recorded beside them.
+
+    A missing, torn or altered file (a flipped byte keeps the PNG header and end intact) is a
+    miss: the caller makes the maps again and overwrites the entry.
+    """
+    try:
+        want = json.loads((folder / f"{key}.sha256.json").read_text())
+    except (OSError, ValueError):
+        return None
     maps = {}
     for name in TEXTURE_MAPS:
         try:
@@ -107,19 +121,23 @@ def _read(folder: Path, key: str) -> dict[str, bytes] | None:
         if not _whole_png(data):
             return None
         maps[name] = data
+    if not isinstance(want, dict) or want != _digests(maps):
+        return None
     return maps
 
 
 def _write(folder: Path, key: str, maps: dict[str, bytes]) -> None:
     target = folder / key
+    files = {f"{target.name}_{name}.png": data for name, data in maps.items()}
+    files[f"{target.name}.sha256.json"] = json.dumps(_digests(maps), sort_keys=True).encode()  # last: seals
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
-        for name, data in maps.items():
+        for fname, data in files.items():
             fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
             try:
                 with os.fdopen(fd, "wb") as f:
                     f.write(data)
-                os.replace(tmp, target.parent / f"{target.name}_{name}.png")
+                os.replace(tmp, target.parent / fname)
             except BaseException:
                 Path(tmp).unlink(missing_ok=True)
                 raise

@@ -41,7 +41,8 @@ def test_an_interrupted_run_resumes_to_a_complete_valid_set(tmp_path):
     run_batch(_jobs(3), tmp_path, workers=1)
     # simulate a crash: one object half-written under its temporary name, one never started
     victim = tmp_path / "kitchen_cabinet" / "kitchen_cabinet_000001"
-    shutil.move(victim, tmp_path / "kitchen_cabinet" / ".kitchen_cabinet_000001.abc.tmp")
+    dead = 2**22 + 12345  # above pid_max: a run that is surely not alive
+    shutil.move(victim, tmp_path / "kitchen_cabinet" / f".kitchen_cabinet_000001.infmob-{dead}-0123abcd-xyz.tmp")
     shutil.rmtree(tmp_path / "kitchen_cabinet" / "kitchen_cabinet_000002")
     rows = run_batch(_jobs(4), tmp_path, workers=2)
     assert sorted(r["seed"] for r in rows) == [1, 2, 3]  # seed 0 was complete and skipped

@@ -171,8 +171,9 @@ def test_no_import_cycle():
         " <-> ".join(c) for c in found)
 
 
-TOP = {"infmob_usd", "infmob_usd.__main__", "infmob_usd.api", "infmob_usd.cli", "infmob_usd.batch"}
-"""The entry points: they wire the rooms together (generate, save, the command line)."""
+TOP = {"infmob_usd", "infmob_usd.__main__", "infmob_usd.api", "infmob_usd.cli", "infmob_usd.batch",
+       "infmob_usd.fuzz"}
+"""The entry points: they wire the rooms together (generate, save, the command line, the fuzzer)."""
 
 
 def room(module: str) -> str:

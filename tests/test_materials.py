@@ -310,11 +310,19 @@ def test_texture_cache_serves_the_same_bytes_and_survives_corruption(tmp_path, m
     first = texture_maps(look, 32)
     assert first == fresh and tuple(first) == TEXTURE_MAPS
     files = sorted((tmp_path / "textures").rglob("*.png"))
+    assert len(list((tmp_path / "textures").rglob("*.sha256.json"))) == 1
     assert len(files) == len(TEXTURE_MAPS) and all(f.read_bytes() in fresh.values() for f in files)
     lib._memory.clear()
     files[0].write_bytes(files[0].read_bytes()[:100])  # a torn file: regenerated, not served
     assert texture_maps(look, 32) == fresh
     assert all(lib._whole_png(f.read_bytes()) for f in files)
+    lib._memory.clear()
+    data = bytearray(files[1].read_bytes())  # 16 flipped bytes inside: header and end intact
+    data[60:76] = bytes(b ^ 0xFF for b in data[60:76])
+    files[1].write_bytes(bytes(data))
+    assert lib._whole_png(files[1].read_bytes())
+    assert texture_maps(look, 32) == fresh  # the hash check refuses it: made again, and the entry rebuilt
+    assert files[1].read_bytes() in fresh.values()
     lib._memory.clear()
     monkeypatch.setenv("INFMOB_USD_CACHE", "off")
     assert lib.cache_dir() is None and texture_maps(look, 32) == fresh

@@ -36,7 +36,7 @@ def test_overrides_are_coerced_from_cli_strings():
 
 
 @pytest.mark.parametrize("name,value,needle", [
-    ("width", 5, "[1.0, 2.0]"), ("width", "abc", "a number"), ("width", True, "a number"),
+    ("width", 5, "[1, 2]"), ("width", "abc", "a number"), ("width", True, "a number"),
     ("width", float("nan"), "a number"), ("count", 2.5, "an integer in [1, 4]"), ("count", 9, "[1, 4]"),
     ("style", "c", "one of a, b"), ("has_lid", "maybe", "true or false"),
 ])
@@ -62,3 +62,30 @@ def test_parse_assignment():
     assert parse_assignment("a=b=c") == ("a", "b=c")
     with pytest.raises(ParameterError, match="NAME=VALUE"):
         parse_assignment("novalue")
+
+
+def test_types_are_strict_and_the_same_for_api_values_and_cli_text():
+    assert SCHEMA.validate({"count": 3}) == SCHEMA.validate({"count": "3"}) == {"count": 3}
+    assert SCHEMA.validate({"has_lid": True}) == SCHEMA.validate({"has_lid": "TRUE"}) == {"has_lid": True}
+    for name, value in [("count", 2.0), ("count", "2.0"), ("has_lid", "off"), ("has_lid", "yes"), ("has_lid", 1),
+                        ("width", None), ("width", [1.5])]:
+        with pytest.raises(ParameterError, match=name):
+            SCHEMA.validate({name: value})
+
+
+@pytest.mark.parametrize("category", ["kitchen_cabinet", "tv", "tap"])
+def test_printed_bounds_are_exact_and_accepted(category):
+    """Every bound `infmob params` prints reads back as a value the schema accepts (was rounded, then rejected)."""
+    import re
+
+    from infmob_usd.api import get_category
+    from infmob_usd.params import Float
+
+    schema = get_category(category).SCHEMA
+    for p in schema.params:
+        if isinstance(p, Float):
+            low, high = re.fullmatch(r"(?:log)?U\((.+), (.+)\)", p.describe()).groups()
+            assert float(low) == p.low and float(high) == p.high
+            assert schema.validate({p.name: low})[p.name] == p.low
+            assert schema.validate({p.name: high})[p.name] == p.high
+            assert schema.validate({p.name: round(p.high, 9)})[p.name] == p.high  # as metadata rounds

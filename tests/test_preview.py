@@ -217,3 +217,10 @@ def test_glass_is_drawn_see_through_and_the_tint_applied(renderer, tmp_path):
     tint = np.asarray(obj.materials["frame"].wear.tint)
     if np.abs(tint - 1).max() > 1e-3:
         assert frame.base_color_texture.filename == ""  # made from the tinted map, not the file
+
+
+def test_preview_and_writer_agree_on_the_simready_thumbnail(tmp_path):
+    from infmob_usd.layers.thumbnail import SIZE, thumbnail_path
+    from infmob_usd.validate.preview import THUMB_SIZE, simready_thumbnail
+
+    assert THUMB_SIZE == SIZE and simready_thumbnail(tmp_path, "x") == thumbnail_path(tmp_path, "x")

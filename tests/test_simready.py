@@ -27,7 +27,7 @@ from zoo import zoo
 
 @pytest.fixture(scope="module")
 def zoo_folder(tmp_path_factory):
-    return zoo(3, texture_size=16).save(tmp_path_factory.mktemp("zoo"))
+    return infmob_usd.save(zoo(3, texture_size=16), tmp_path_factory.mktemp("zoo"))
 
 
 def _stage(folder):
@@ -116,7 +116,7 @@ def test_simready_metadata_and_thumbnail(zoo_folder, tmp_path, monkeypatch):
     img = cv2.imread(str(thumbnail_path(zoo_folder, zoo_folder.name)))
     assert img.shape == (256, 256, 3) and img.std() > 10  # a picture, not a blank
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
-    again = zoo(3, texture_size=16).save(tmp_path)
+    again = infmob_usd.save(zoo(3, texture_size=16), tmp_path)
     layer = Sdf.Layer.FindOrOpen(str(again / f"{again.name}.usda"))
     assert layer.customLayerData["SimReady_Metadata"]["usd_date_generated"] == "2023-11-14"
 
@@ -159,7 +159,7 @@ def test_simready_check_on_every_category(tmp_path):
     """One seed of every category: the `simready` check passes, except SR.004 (no verified Q-code) for the
     categories the Wikidata table leaves out."""
     for category in infmob_usd.list_categories():
-        infmob_usd.generate(category, seed=0, texture_size=16).save(tmp_path / category)
+        infmob_usd.save(infmob_usd.generate(category, seed=0, texture_size=16), tmp_path / category)
     report = tmp_path / "report.json"
     subprocess.run([sys.executable, "-m", "infmob_usd", "validate", "--usd-only", "--simready", "--workers", "2",
                     "--report", str(report), str(tmp_path)], capture_output=True, text=True, check=False)

@@ -27,7 +27,7 @@ def _results(folder):
 def test_a_good_object_passes_every_usd_check(good):
     res = _results(good)
     assert all(c.ok for c in res.values()), res
-    assert set(res) == {"usd_validators", "usd_physics", "joint_frames", "files", "usd_urdf_agree"}
+    assert set(res) == {"usd_validators", "usd_physics", "joint_frames", "files", "textures", "usd_urdf_agree"}
 
 
 def test_a_joint_frame_mismatch_is_caught(good, tmp_path):

@@ -18,15 +18,20 @@
 A folder written without some format (``generate --formats``) is checked for what it
 has: the checks that need a missing file are reported as passed with a detail
 ``skipped: no URDF`` (and so on), so a report says what was not checked.
+
+Every check runs under :func:`~.result.guarded`: a check that raises (a truncated usdc, a
+garbage URDF, a deleted file ...) is reported as a failed check with the exception on one
+line, and the other checks and objects go on. New checks should be added the same way.
 """
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from .files import find_objects
-from .result import CheckResult
+from .result import CheckResult, guarded
 
 
 @dataclass
@@ -48,8 +53,19 @@ FORMAT_FILES = {"usd": "{name}.usda", "urdf": "{name}.urdf", "mjcf": "{name}.xml
 
 
 def formats_present(folder: Path) -> set[str]:
-    """The formats whose main file is in ``folder``."""
-    return {f for f, pattern in FORMAT_FILES.items() if (folder / pattern.format(name=folder.name)).is_file()}
+    """The formats whose main file is in ``folder``: the files ``metadata.json`` lists, else the files
+    named after the object (its metadata's name, else the folder's), so a renamed folder is found too."""
+    try:
+        meta = json.loads((folder / "metadata.json").read_text())
+    except (OSError, ValueError):
+        meta = {}
+    files = meta.get("files") if isinstance(meta, dict) else None
+    if isinstance(files, dict):
+        listed = {f for f in FORMAT_FILES if isinstance(files.get(f), str) and (folder / files[f]).is_file()}
+        if listed:
+            return listed
+    name = meta.get("name") if isinstance(meta, dict) and isinstance(meta.get("name"), str) else folder.name
+    return {f for f, pattern in FORMAT_FILES.items() if (folder / pattern.format(name=name)).is_file()}
 
 
 def _skipped(names, fmt: str) -> list[CheckResult]:
@@ -58,30 +74,33 @@ def _skipped(names, fmt: str) -> list[CheckResult]:
 
 def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
                     simready: bool = False) -> ObjectReport:
-    """Validate one object folder (see the module docstring for what each flag adds)."""
+    """Validate one object folder (see the module docstring for what each flag adds).
+
+    Every check runs under :func:`~.result.guarded`: one that raises is a failed check, never a crash.
+    """
     if simready:  # the PhysX schemas must be registered before USD's schema registry is first used
         from .simready import available, install_physx_shim
 
         if available():
             install_physx_shim()
+    from .usd_check import check_usd
+
     folder = Path(folder)
     present = formats_present(folder)
     report = ObjectReport(folder)
-    if "usd" in present:
-        from .usd_check import check_usd
-
-        report.checks += check_usd(folder)
+    if "usd" in present or "urdf" not in present:  # a folder with neither fails here, by name
+        report.checks += guarded("usd", check_usd, folder)
         if simready:
             from .simready import check_simready
 
-            report.checks += check_simready(folder)
+            report.checks += guarded("simready", check_simready, folder)
     else:
         report.checks += _skipped(["usd"] + (["simready"] if simready else []), "usd")
     sapien = ["reach", "rest"] if physics else ["reach"]
     if (sim or physics) and "urdf" in present:
         from .sim import check_sapien
 
-        report.checks += check_sapien(folder, checks=sapien)
+        report.checks += guarded("sapien_load", check_sapien, folder, checks=sapien)
     elif sim or physics:
         report.checks += _skipped(["sapien_load"] + sapien, "urdf")
     if physics:
@@ -89,17 +108,17 @@ def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
             from .physics import check_physics
             from .sim import check_maniskill
 
-            report.checks += check_physics(folder)
-            report.checks += check_maniskill(folder)
+            report.checks += guarded("physics", check_physics, folder)
+            report.checks += guarded("maniskill_load", check_maniskill, folder)
         else:
             report.checks += _skipped(["ground", "self_collision", "parent_child", "maniskill_load"], "urdf")
         if "mjcf" in present:
             from .mujoco_sim import check_mujoco
 
-            report.checks += check_mujoco(folder)
+            report.checks += guarded("mujoco", check_mujoco, folder)
         else:
             report.checks += _skipped(["mujoco"], "mjcf")
     return report
 
 
-__all__ = ["CheckResult", "ObjectReport", "find_objects", "formats_present", "validate_object"]
+__all__ = ["CheckResult", "ObjectReport", "find_objects", "formats_present", "guarded", "validate_object"]

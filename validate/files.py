@@ -157,6 +157,28 @@ def find_objects(paths) -> list[Path]:
     return found
 
 
+def object_files(folder: Path, meta: dict | None = None) -> tuple[Path, Path]:
+    """``(usd, urdf)`` of an object folder, found by its files, not by the folder's name.
+
+    The paths ``metadata.json`` names (``files.usd``, ``files.urdf``, relative to the folder)
+    when they exist, else the one top-level ``NAME.usda`` that has a ``NAME.urdf`` beside it;
+    a renamed or moved folder is found all the same.  When nothing matches, the paths named
+    after the folder are returned (the caller reports them missing).
+    """
+    folder = Path(folder)
+    files = (meta or {}).get("files") if isinstance(meta, dict) else None
+    if isinstance(files, dict) and isinstance(files.get("usd"), str) and isinstance(files.get("urdf"), str):
+        usd, urdf = folder / files["usd"], folder / files["urdf"]
+        if usd.is_file() and urdf.is_file():
+            return usd, urdf
+    pairs = [p for p in sorted(folder.glob("*.usda")) if p.with_suffix(".urdf").is_file()]
+    if len(pairs) == 1:
+        return pairs[0], pairs[0].with_suffix(".urdf")
+    name = (meta or {}).get("name") if isinstance(meta, dict) else None
+    stem = name if isinstance(name, str) and name else folder.name
+    return folder / f"{stem}.usda", folder / f"{stem}.urdf"
+
+
 def load_metadata(folder: Path) -> dict:
     return json.loads((folder / "metadata.json").read_text())
 

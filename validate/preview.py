@@ -138,6 +138,15 @@ class _ObjectFiles:
         return [j for j in self.joints if j.movable]
 
 
+
+THUMB_SIZE = 256
+
+
+def simready_thumbnail(folder: Path, name: str) -> Path:
+    """Where SimReady looks for the thumbnail of ``folder/<name>.usda`` (as ``infmob_usd.layers.thumbnail``
+    writes it; ``tests/test_preview.py`` checks the two agree)."""
+    return Path(folder) / ".thumbs" / f"{THUMB_SIZE}x{THUMB_SIZE}" / f"{name}.usda.png"
+
 def _read_object(folder: Path) -> _ObjectFiles:
     folder = Path(folder)
     meta_path = folder / "metadata.json"
@@ -831,12 +840,10 @@ def preview(folder, out=None, size: int = 512) -> dict[str, Path]:
         b = _captioned(b, f"{n} movable joint{'s' * (n != 1)} at {int(OPEN_FRACTION * 100)}%" if n
                        else "no movable joints")
         if out == folder:  # SAPIEN's picture replaces the writer's sketch as the SimReady thumbnail
-            from infmob_usd.layers.thumbnail import SIZE, thumbnail_path
-
             r.set_qpos(rest_q)
-            thumb = thumbnail_path(folder, files.name)
+            thumb = simready_thumbnail(folder, files.name)
             thumb.parent.mkdir(parents=True, exist_ok=True)
-            cv2.imwrite(str(thumb), r.render(SIZE, r.camera_for(rest_q), _supersample(SIZE)).rgb[..., ::-1])
+            cv2.imwrite(str(thumb), r.render(THUMB_SIZE, r.camera_for(rest_q), _supersample(THUMB_SIZE)).rgb[..., ::-1])
             written["thumbnail"] = thumb
         gap = np.full((a.shape[0], max(2, size // 128), 3), 255, np.uint8)
         path = out / "preview.png"
@@ -894,7 +901,8 @@ def contact_sheet(folders, out_png, cell: int = 256, joint_fraction=0.0, columns
         sheet[y * cell:(y + 1) * cell, x * cell:(x + 1) * cell] = img
     out_png = Path(out_png)
     out_png.parent.mkdir(parents=True, exist_ok=True)
-    cv2.imwrite(str(out_png), sheet[..., ::-1])
+    if not cv2.imwrite(str(out_png), sheet[..., ::-1]):
+        raise OSError(f"cannot write the contact sheet {str(out_png)!r}")
     return out_png
 
 
@@ -928,6 +936,18 @@ def main(args) -> int:
                 return 2
             cell = args.size or 256
             out = Path(args.out) if args.out else Path(args.sheet) / "contact_sheet.png"
+            if out.suffix.lower() != ".png" or out.is_dir():
+                print(f"infmob: error: with --sheet, --out is the PNG file to write (NAME.png), got {str(out)!r}",
+                      file=sys.stderr)
+                return 2
+            if not out.parent.is_dir() and out.parent.exists():
+                print(f"infmob: error: --out {str(out)!r}: {str(out.parent)!r} is not a folder", file=sys.stderr)
+                return 2
+            if out.parent.is_dir():  # fail before rendering, not after
+                import tempfile
+
+                with tempfile.NamedTemporaryFile(dir=out.parent, prefix=".infmob-probe-"):
+                    pass
             path = contact_sheet(found, out, cell=cell)
             print(f"{path}  ({len(found)} objects)")
             return 0
@@ -938,6 +958,9 @@ def main(args) -> int:
         if not found:
             print(f"infmob: error: no object folders (with metadata.json) in {' '.join(args.paths)}", file=sys.stderr)
             return 2
+        if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
+            print(f"infmob: error: --out {args.out!r} is a file; give a folder for the previews", file=sys.stderr)
+            return 2
         for folder in found:
             out = Path(args.out) / folder.name if args.out else None
             written = preview(folder, out, size=args.size or 512)
@@ -945,4 +968,7 @@ def main(args) -> int:
         return 0
     except PreviewUnavailable as exc:
         print(f"infmob: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:
+        print(f"infmob: error: {exc}; choose another --out", file=sys.stderr)
         return 2

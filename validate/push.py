@@ -117,7 +117,7 @@ def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool,
     from .mujoco_sim import check_mujoco
 
     obj = infmob_usd.generate(category, seed=seed, texture_size=16)
-    folder = obj.save(Path(out) / category, formats="urdf,mjcf")
+    folder = infmob_usd.save(obj, Path(out) / category, formats="urdf,mjcf")
     urdf = folder / f"{folder.name}.urdf"
     row = {"category": category, "seed": seed, "name": folder.name, "mjcf_s": obj.timings["mjcf"], "fails": {}}
     for e in engines:

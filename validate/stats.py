@@ -181,16 +181,29 @@ class Group:
         }
 
 
-def dataset_stats(folder: str | Path, max_pairs: int = 2000) -> dict:
-    """Statistics per category and overall of every object folder under ``folder``."""
+def dataset_stats(folder: str | Path, max_pairs: int = 2000, skipped: list | None = None) -> dict:
+    """Statistics per category and overall of every object folder under ``folder``.
+
+    A folder whose ``metadata.json`` cannot be read as an object's is left out and, when
+    ``skipped`` is a list, appended to it as ``(folder, reason)``.
+    """
     from .files import find_objects
 
+    if isinstance(max_pairs, bool) or not isinstance(max_pairs, int) or max_pairs < 1:
+        raise ValueError(f"max_pairs must be a positive integer, got {max_pairs!r}")
     groups: dict[str, Group] = {}
     overall = Group("overall")
     for obj in find_objects([folder]):
-        meta = json.loads((obj / "metadata.json").read_text())
-        tree = tree_from_metadata(meta)
-        kinds = meta["joint_kinds"]
+        try:
+            meta = json.loads((obj / "metadata.json").read_text())
+            tree = tree_from_metadata(meta)
+            kinds = meta["joint_kinds"]
+            sum(kinds.values())
+            str(meta["category"])
+        except Exception as e:  # noqa: BLE001 - a damaged metadata.json is one object left out
+            if skipped is not None:
+                skipped.append((obj, f"{type(e).__name__}: {' '.join(str(e).split())[:200]}"))
+            continue
         for g in (groups.setdefault(meta["category"], Group(meta["category"])), overall):
             g.joints.append(sum(kinds.values()))
             g.kinds.update(kinds)

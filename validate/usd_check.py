@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 from pxr import Gf, Usd, UsdGeom, UsdPhysics, UsdUtils, UsdValidation
 
-from .files import load_metadata, parse_urdf
-from .result import CheckResult
+from .files import load_metadata, object_files, parse_urdf
+from .result import CheckResult, guarded
 
 POS_TOL = 1e-4  # m
 ROT_TOL = 1e-3  # rad
@@ -107,14 +107,13 @@ def joint_frames(stage: Usd.Stage) -> CheckResult:
     return CheckResult("joint_frames", not bad, "; ".join(bad[:5]) or f"{n} joints agree (worst {worst:.1e} m)")
 
 
-def files_exist(folder: Path, usd_path: Path) -> CheckResult:
+def files_exist(folder: Path, usd_path: Path, urdf: Path | None = None) -> CheckResult:
     """Every layer, texture and mesh any file refers to exists, by a relative path."""
     layers, assets, unresolved = UsdUtils.ComputeAllDependencies(str(usd_path))
     missing = [str(p) for p in unresolved]
     absolute = [a for a in assets if not Path(a).resolve().is_relative_to(folder.resolve())]
-    urdf = folder / f"{folder.name}.urdf"
-    text = urdf.read_text()
-    refs = re.findall(r'filename="([^"]+)"', text)
+    urdf = urdf or object_files(folder)[1]
+    refs = re.findall(r'filename="([^"]+)"', urdf.read_text()) if urdf.is_file() else []  # --formats without urdf
     for ref in refs:
         if Path(ref).is_absolute():
             absolute.append(ref)
@@ -162,10 +161,25 @@ def _collisions_agree(root: Usd.Prim, folder: Path) -> list[str]:
     return problems
 
 
-def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict) -> CheckResult:
+def textures_decode(folder: Path) -> CheckResult:
+    """Every PNG under ``textures/`` decodes to a square image (a flipped byte passes ``files``)."""
+    import cv2
+
+    paths = sorted((folder / "textures").glob("*.png"))
+    bad = []
+    for path in paths:
+        img = cv2.imdecode(np.frombuffer(path.read_bytes(), np.uint8), cv2.IMREAD_UNCHANGED)
+        if img is None or img.ndim < 2 or img.shape[0] != img.shape[1] or img.shape[0] < 1:
+            bad.append(path.name)
+    return CheckResult("textures", bool(paths) and not bad,
+                       f"{len(bad)} of {len(paths)} texture PNGs do not decode: {', '.join(bad[:5])}" if bad else
+                       f"{len(paths)} texture PNGs decode" if paths else "no texture PNGs in textures/")
+
+
+def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict, urdf_path: Path | None = None) -> CheckResult:
     """The URDF has the same links and joints (type, parent, child, axis, limits) as the USD, and
     the same collision hulls in the same places (per link, the centroid of every hull)."""
-    urdf = parse_urdf(folder / f"{folder.name}.urdf")
+    urdf = parse_urdf(urdf_path or object_files(folder)[1])
     root = stage.GetDefaultPrim()
     bodies = {p.GetName() for p in Usd.PrimRange(root) if p.HasAPI(UsdPhysics.RigidBodyAPI)}
     problems = []
@@ -220,21 +234,30 @@ def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict) -> CheckResult:
 def check_usd(folder: Path) -> list[CheckResult]:
     """All USD-side checks of one object folder."""
     folder = Path(folder)
-    usd_path = folder / f"{folder.name}.usda"
     try:
         meta = load_metadata(folder)
+        if not isinstance(meta, dict) or not isinstance(meta.get("links"), list) \
+                or not isinstance(meta.get("joints"), list):
+            raise ValueError("not an object's metadata (no links and joints lists)")
     except (OSError, ValueError) as e:
         return [CheckResult("metadata", False, f"metadata.json unreadable: {e}")]
+    usd_path, urdf_path = object_files(folder, meta)
     if not usd_path.is_file():
         return [CheckResult("usd_open", False, f"{usd_path.name} is missing")]
-    stage = Usd.Stage.Open(str(usd_path))
+    try:
+        stage = Usd.Stage.Open(str(usd_path))
+    except Exception as e:  # noqa: BLE001 - pxr.Tf.ErrorException on a corrupt layer
+        from .result import one_line
+
+        return [CheckResult("usd_open", False, f"{usd_path.name} does not open: {one_line(e)}")]
     if stage is None:
         return [CheckResult("usd_open", False, f"{usd_path.name} does not open")]
     return [
-        usd_validators(stage),
-        physics_parse(stage, meta),
-        joint_frames(stage),
-        files_exist(folder, usd_path),
-        usd_urdf_agree(stage, folder, meta) if (folder / f"{folder.name}.urdf").is_file()
-        else CheckResult("usd_urdf_agree", True, "skipped: no URDF in this folder"),
+        *guarded("usd_validators", usd_validators, stage),
+        *guarded("usd_physics", physics_parse, stage, meta),
+        *guarded("joint_frames", joint_frames, stage),
+        *guarded("files", files_exist, folder, usd_path, urdf_path),
+        *guarded("textures", textures_decode, folder),
+        *(guarded("usd_urdf_agree", usd_urdf_agree, stage, folder, meta, urdf_path) if urdf_path.is_file()
+          else [CheckResult("usd_urdf_agree", True, "skipped: no URDF in this folder")]),
     ]
