@@ -37,7 +37,7 @@ def _value(p):
 @st.composite
 def cases(draw):
     category = draw(st.sampled_from(list_categories()))
-    schema = get_category(category).SCHEMA
+    schema = get_category(category).schema
     names = draw(st.lists(st.sampled_from(schema.names), unique=True, max_size=len(schema.names)))
     overrides = {n: draw(_value(schema[n])) for n in names}
     return category, draw(st.integers(0, 10**6)), overrides
@@ -53,7 +53,7 @@ def _common(n):
 def test_valid_overrides_generate_an_object_or_are_rejected_up_front(case):
     category, seed, overrides = case
     try:
-        get_category(category).SCHEMA.validate(overrides)
+        get_category(category).schema.validate(overrides)
     except ParameterError:
         return  # rejected up front: the property holds
     obj = generate(category, seed=seed, texture_size=16, **overrides)  # anything raised here is a bug
@@ -75,5 +75,5 @@ def test_fuzz_draws_are_valid_seeded_and_replayable():
     a = [draw_case(rng(), list_categories()) for _ in range(1)]
     assert a == [draw_case(rng(), list_categories())]
     category, seed, overrides = a[0]
-    assert get_category(category).SCHEMA.validate(overrides) == overrides
+    assert get_category(category).schema.validate(overrides) == overrides
     assert reproduce(a[0]).startswith(f"infmob generate {category} --seed {seed}")

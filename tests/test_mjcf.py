@@ -28,7 +28,7 @@ from infmob_usd.validate.mujoco_sim import check_mujoco, load_model, push_joints
 @pytest.fixture(scope="module")
 def written(tmp_path_factory):
     obj = zoo(texture_size=16)
-    return obj, obj.save(tmp_path_factory.mktemp("zoo"), formats="usd,urdf,mjcf,glb")
+    return obj, infmob_usd.save(obj, tmp_path_factory.mktemp("zoo"), formats="usd,urdf,mjcf,glb")
 
 
 def _xml(folder: Path) -> ET.Element:
@@ -107,8 +107,8 @@ def test_urdf_carries_the_mujoco_compiler_hint(written):
 
 
 def test_mjcf_and_glb_are_deterministic(tmp_path):
-    a = infmob_usd.generate("oven", seed=3, texture_size=16).save(tmp_path / "a", formats="mjcf,glb")
-    b = infmob_usd.generate("oven", seed=3, texture_size=16).save(tmp_path / "b", formats="mjcf,glb")
+    a = infmob_usd.save(infmob_usd.generate("oven", seed=3, texture_size=16), tmp_path / "a", formats="mjcf,glb")
+    b = infmob_usd.save(infmob_usd.generate("oven", seed=3, texture_size=16), tmp_path / "b", formats="mjcf,glb")
     for ext in ("xml", "glb"):
         assert (a / f"{a.name}.{ext}").read_bytes() == (b / f"{b.name}.{ext}").read_bytes()
 
@@ -155,7 +155,7 @@ def test_a_link_pushed_into_another_fails_contacts(written, tmp_path):
 
 
 def test_a_folder_without_mjcf_is_skipped_not_failed(tmp_path):
-    folder = zoo(texture_size=16).save(tmp_path, formats="urdf")
+    folder = infmob_usd.save(zoo(texture_size=16), tmp_path, formats="urdf")
     (result,) = check_mujoco(folder)
     assert result.ok and result.detail.startswith("skipped: no MJCF")
 
@@ -213,12 +213,12 @@ def test_formats_table_and_parsing():
 
 
 def test_save_writes_only_the_formats_asked_for(tmp_path):
-    folder = zoo(texture_size=16).save(tmp_path, formats=["glb"])
+    folder = infmob_usd.save(zoo(texture_size=16), tmp_path, formats=["glb"])
     names = sorted(p.name for p in folder.iterdir())
     assert names == ["metadata.json", "semantics.txt", "textures", "zoo_000000.glb"]
     meta = json.loads((folder / "metadata.json").read_text())
     assert meta["files"] == {"glb": "./zoo_000000.glb", "semantics": "./semantics.txt"}
-    default = zoo(texture_size=16).save(tmp_path / "d")
+    default = infmob_usd.save(zoo(texture_size=16), tmp_path / "d")
     assert {p.suffix for p in default.iterdir()} >= {".usda", ".urdf", ".xml"}
     assert not (default / "zoo_000000.glb").exists()
 

@@ -81,7 +81,7 @@ def test_printed_bounds_are_exact_and_accepted(category):
     from infmob_usd.api import get_category
     from infmob_usd.params import Float
 
-    schema = get_category(category).SCHEMA
+    schema = get_category(category).schema
     for p in schema.params:
         if isinstance(p, Float):
             low, high = re.fullmatch(r"(?:log)?U\((.+), (.+)\)", p.describe()).groups()

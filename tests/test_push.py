@@ -56,7 +56,7 @@ def folders(tmp_path_factory):
     def get(category: str, seed: int) -> Path:
         if (category, seed) not in cache:
             obj = infmob_usd.generate(category, seed=seed, texture_size=16)
-            cache[category, seed] = obj.save(out / category, formats="urdf,mjcf")
+            cache[category, seed] = infmob_usd.save(obj, out / category, formats="urdf,mjcf")
         return cache[category, seed]
 
     return get

@@ -53,15 +53,16 @@ FORMAT_FILES = {"usd": "{name}.usda", "urdf": "{name}.urdf", "mjcf": "{name}.xml
 
 
 def formats_present(folder: Path) -> set[str]:
-    """The formats whose main file is in ``folder``: the files ``metadata.json`` lists, else the files
-    named after the object (its metadata's name, else the folder's), so a renamed folder is found too."""
+    """The formats an object folder holds: those ``metadata.json`` lists (a listed file that is gone is a
+    damaged object, and its checks fail), else the files named after the object (its metadata's name,
+    else the folder's), so a renamed folder is found too."""
     try:
         meta = json.loads((folder / "metadata.json").read_text())
     except (OSError, ValueError):
         meta = {}
     files = meta.get("files") if isinstance(meta, dict) else None
     if isinstance(files, dict):
-        listed = {f for f in FORMAT_FILES if isinstance(files.get(f), str) and (folder / files[f]).is_file()}
+        listed = {f for f in FORMAT_FILES if isinstance(files.get(f), str)}
         if listed:
             return listed
     name = meta.get("name") if isinstance(meta, dict) and isinstance(meta.get("name"), str) else folder.name

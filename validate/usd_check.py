@@ -107,13 +107,15 @@ def joint_frames(stage: Usd.Stage) -> CheckResult:
     return CheckResult("joint_frames", not bad, "; ".join(bad[:5]) or f"{n} joints agree (worst {worst:.1e} m)")
 
 
-def files_exist(folder: Path, usd_path: Path, urdf: Path | None = None) -> CheckResult:
+def files_exist(folder: Path, usd_path: Path, urdf: Path | None = None, urdf_required: bool = True) -> CheckResult:
     """Every layer, texture and mesh any file refers to exists, by a relative path."""
     layers, assets, unresolved = UsdUtils.ComputeAllDependencies(str(usd_path))
     missing = [str(p) for p in unresolved]
     absolute = [a for a in assets if not Path(a).resolve().is_relative_to(folder.resolve())]
     urdf = urdf or object_files(folder)[1]
-    refs = re.findall(r'filename="([^"]+)"', urdf.read_text()) if urdf.is_file() else []  # --formats without urdf
+    refs = re.findall(r'filename="([^"]+)"', urdf.read_text()) if urdf.is_file() else []
+    if not urdf.is_file() and urdf_required:
+        missing.append(urdf.name)
     for ref in refs:
         if Path(ref).is_absolute():
             absolute.append(ref)
@@ -231,6 +233,12 @@ def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict, urdf_path: Path |
                        f"{len(bodies)} links, {len(urdf.joints)} joints agree")
 
 
+def _lists(meta: dict, fmt: str) -> bool:
+    """Whether the object's metadata names a file of this format (written without: ``--formats``)."""
+    files = meta.get("files")
+    return not isinstance(files, dict) or fmt in files
+
+
 def check_usd(folder: Path) -> list[CheckResult]:
     """All USD-side checks of one object folder."""
     folder = Path(folder)
@@ -256,8 +264,8 @@ def check_usd(folder: Path) -> list[CheckResult]:
         *guarded("usd_validators", usd_validators, stage),
         *guarded("usd_physics", physics_parse, stage, meta),
         *guarded("joint_frames", joint_frames, stage),
-        *guarded("files", files_exist, folder, usd_path, urdf_path),
+        *guarded("files", files_exist, folder, usd_path, urdf_path, urdf_required=_lists(meta, "urdf")),
         *guarded("textures", textures_decode, folder),
-        *(guarded("usd_urdf_agree", usd_urdf_agree, stage, folder, meta, urdf_path) if urdf_path.is_file()
+        *(guarded("usd_urdf_agree", usd_urdf_agree, stage, folder, meta, urdf_path) if _lists(meta, "urdf")
           else [CheckResult("usd_urdf_agree", True, "skipped: no URDF in this folder")]),
     ]
