@@ -34,10 +34,9 @@ CASES = [(c, s) for c in infmob_usd.list_categories() for s in SEEDS]
 
 # Known failures: (engine, category, seed) -> reason. Strict xfails: a fix makes them XPASS and fail.
 KNOWN_FAILURES = {
-    ("mujoco", "lamp", 1): "lamp seed 1's chain arm: the stops of arm_1 and arm_2 hold the head's weight behind "
-    "light links; MuJoCo's soft stop (as stiff as the tiny inertia the joint meets) lets them sag ~12 % of "
-    "their 0.52 rad range under gravity alone, whatever the effort. The MJCF passes (its armature stiffens "
-    "the stop); a URDF has no armature.",
+    ("mujoco", "lamp", 4): "lamp seed 4's telescoping upper pole (29 mm of travel, carrying the arm and the head): "
+    "pushed with its effort it goes 5.4 % past each stop in MuJoCo's soft limit (URDF: no armature to stiffen "
+    "it; the MJCF passes). Seen with the 5-seed sweep (INFMOB_PUSH_SEEDS=5) only.",
 }
 
 
