@@ -49,14 +49,15 @@ def test_site_files_and_cards(dataset, site):
     rows = {r["name"]: r for r in idx["objects"]}
     fridge = rows["beverage_fridge_000000"]
     meta = json.loads((dataset / "beverage_fridge" / "beverage_fridge_000000" / "metadata.json").read_text())
-    assert fridge["joints"] == sum(meta["joint_kinds"].values()) == 5
+    assert fridge["joints"] == sum(meta["joint_kinds"].values()) >= 3  # a door and racks
     assert fridge["kinds"] == meta["joint_kinds"]
     assert fridge["mass"] == pytest.approx(sum(lk["mass"] for lk in meta["links"]), abs=1e-3)
     lamps = [r for r in idx["objects"] if r["category"] == "lamp"]
     assert len(lamps) == 2 and lamps[0]["key"] == lamps[1]["key"]  # the symlinked copy shares the data
     for r in idx["objects"]:
         assert (site["site"] / "data" / "obj" / f"{r['key']}.js").is_file()
-        assert r["thumb"] is None  # render=False and no preview.png: a placeholder card
+        # render=False: the card shows the SimReady thumbnail the writer put beside the USD
+        assert "/.thumbs/256x256/" in r["thumb"] and r["thumb"].endswith(".usda.png"), r["thumb"]
     for name in ("three.gallery.min.js", "three.LICENSE", "gallery.js", "gallery.css"):
         assert (site["site"] / "assets" / name).is_file()
     assert "{{PREFIX}}" not in site["index"].read_text()
@@ -178,7 +179,9 @@ def test_browser_cards_door_slider_open_all(browser, site):
 
     _open(page, "beverage_fridge_000000")
     sliders = page.locator("#sliders input[type=range]")
-    assert sliders.count() == 5  # one per movable joint
+    meta = json.loads((site["index"].parents[1] / "beverage_fridge" / "beverage_fridge_000000" / "metadata.json")
+                      .read_text())
+    assert sliders.count() == meta["counts"]["movable_joints"] >= 3  # one per movable joint
     rack = page.locator("#sliders input[data-joint=joint_rack_0]")
     assert rack.is_disabled()  # requires_open: the rack moves only with the door open
     rest = page.evaluate(GRAB)

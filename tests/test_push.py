@@ -120,7 +120,7 @@ def test_effort_scales_with_the_moving_mass():
     for link in b.links:
         link.mass *= 2
         link.inertia = link.inertia * 2
-    effort.assign_drives(b)
+    b = effort.assign_drives(b)
     doubled = 0
     for ja, jb in zip(a.movable_joints, b.movable_joints):
         da, db = effort.drive(a, ja), effort.drive(b, jb)
