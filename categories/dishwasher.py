@@ -19,7 +19,7 @@ import math
 from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
-from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
@@ -82,7 +82,7 @@ BAR = hardware.HandleSize(standoff=0.028, bar_radius=0.007, post_radius=0.0056, 
 HANDLE_STRIP = 0.03  # the lowest strip of a control panel carries the handle
 
 
-class DishwasherLayout(Layout):
+class DishwasherLayout(A.PanelNodes):
     def dishwasher(self, node):
         p = self.p
         W, D, H, w, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
@@ -158,14 +158,6 @@ class DishwasherLayout(Layout):
         if buttons:
             self.grow(buttons, made=panel.buttons)
 
-    def buttons(self, node, made):
-        for kid, m in zip(node.of("button"), made, strict=True):
-            self.grow(kid, made=m)
-
-    def button(self, node, made):
-        name, piece, at, travel = made
-        self.add(name, "button", [piece])
-        self.slide("control_panel", name, at, upper=travel, role="button")
 
     def racks(self, node, cav, z):
         cx0, cx1, cy0, cy1 = cav[:4]

@@ -17,7 +17,7 @@ import math
 from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
-from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
@@ -85,7 +85,7 @@ RELEASE_H = 0.022  # door release button height
 PANEL_MARGIN = 0.02  # free fascia above the first item and below the last
 
 
-class MicrowaveLayout(Layout):
+class MicrowaveLayout(A.PanelNodes):
     def microwave(self, node):
         p = self.p
         W, D, H, t, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
@@ -228,16 +228,7 @@ class MicrowaveLayout(Layout):
             z -= 1.7 * bh + gap
         return z
 
-    def button(self, node, made):
-        name, piece, at, travel, _ = made
-        self.add(name, "button", [piece])
-        self.slide("control_panel", name, at, upper=travel, role="button")
-
-    release_button = button
-
-    def buttons(self, node, made):
-        for kid, b in zip(node.of("button"), made, strict=True):
-            self.grow(kid, made=b)
+    release_button = A.PanelNodes.button
 
     def knob(self, node, made):
         for kid, d in zip(node.of("dial"), made, strict=True):

@@ -21,7 +21,7 @@ from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
-from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
@@ -113,7 +113,7 @@ BACKGUARD = 0.06  # depth of a range's control panel (backguard)
 KNOB_MARGIN = 0.03  # control panel ends beside the outer knobs
 
 
-class OvenLayout(Layout):
+class OvenLayout(A.PanelNodes):
     def oven(self, node):
         p = self.p
         W, D, H, ft = p["width"], p["depth"], p["height"], p["door_thickness"]
@@ -296,14 +296,6 @@ class OvenLayout(Layout):
         else:
             self.hinge("control_panel", name, at, upper=math.pi / 4, lower=-math.pi / 4, role="knob")
 
-    def buttons(self, node, made):
-        for kid, m in zip(node.of("button"), made, strict=True):
-            self.grow(kid, made=m)
-
-    def button(self, node, made):
-        name, piece, at, travel = made
-        self.add(name, "button", [piece])
-        self.slide("control_panel", name, at, upper=travel, role="button")
 
 
 CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS,

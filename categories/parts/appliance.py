@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame, polar
+from infmob_usd.grammar import Layout
 
 LINER = 0.002  # cavity liner wall
 BEZEL = 0.006  # front bezel thickness
@@ -493,3 +494,18 @@ def panel_housing(xs, ys, zs, holes, wall: float = 0.004) -> list[g.Piece]:
         g.box_between([xa + w, ya, za], [xp - FACE, yb, za + w], "body"),
         g.box_between([xa + w, ya, za + w], [xp - FACE, ya + w, zb - w], "body"),
         g.box_between([xa + w, yb - w, za + w], [xp - FACE, yb, zb - w], "body"))]
+
+
+class PanelNodes(Layout):
+    """The push-button nodes of a control panel, shared by the appliances: a ``buttons`` node grows each
+    ``button`` child with one made ``(name, piece, press frame, travel, ...)``; the button slides into the
+    ``control_panel`` part along the frame's z."""
+
+    def buttons(self, node, made):
+        for kid, m in zip(node.of("button"), made, strict=True):
+            self.grow(kid, made=m)
+
+    def button(self, node, made):
+        name, piece, at, travel = made[:4]
+        self.add(name, "button", [piece])
+        self.slide("control_panel", name, at, upper=travel, role="button")
