@@ -156,7 +156,10 @@ def repair(vertices, faces, where: str) -> Repaired:
 
 def convex_pieces(vertices: np.ndarray, faces: np.ndarray, seed: int = 0) -> list[np.ndarray]:
     """CoACD's approximate convex decomposition (at import only), each piece cut to 255 vertices."""
-    import coacd
+    try:
+        import coacd
+    except ImportError:
+        raise PartLibraryError("importing parts needs CoACD; pip install 'infmob-usd[parts]' (or coacd)") from None
 
     coacd.set_log_level("error")
     parts = coacd.run_coacd(coacd.Mesh(np.asarray(vertices, float), np.asarray(faces, np.int32)), threshold=0.08,
