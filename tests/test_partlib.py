@@ -249,3 +249,29 @@ def test_bad_input(libs, tmp_path, capsys):
     (csvsrc / "labels.csv").write_text("file,label\na.obj,teapot\n")
     err = _one_line_exit_2(["parts", "import", str(csvsrc), "--out", str(target)], capsys, target)
     assert "labels.csv" in err and "unknown label 'teapot'" in err
+
+
+def test_import_mesh_folder_with_csv(tmp_path, capsys):
+    """GLB and PLY files with a labels CSV: millimetres, Z-up, axes given for one, by the rule for the other."""
+    src = tmp_path / "meshes"
+    src.mkdir()
+    bar = _mesh(hardware.bar_handle(0.128, "m"))
+    bar.apply_scale(1000.0)
+    bar.export(src / "pull.glb")
+    knob = _mesh(hardware.knob_handle(0.016, 0.026, "m"))
+    knob.apply_scale(1000.0)
+    knob.export(src / "knob.ply")
+    (src / "labels.csv").write_text("file,label,units,up,front,source,licence\n"
+                                    "pull.glb,handle,mm,+z,+x,shop A,CC-BY-4.0\nknob.ply,handle,mm,,,,\n")
+    lib = tmp_path / "lib"
+    assert main(["parts", "import", str(src), "--out", str(lib), "--up", "z"]) == 0
+    out = capsys.readouterr().out
+    assert "2 parts" in out and "100/100 within 0.5 mm" in out
+    parts = {p.id: p for p in load_library(lib).parts}
+    assert set(parts) == {"pull", "knob"}
+    assert parts["pull"].licence == "CC-BY-4.0" and parts["knob"].licence == "unknown"
+    assert abs(np.ptp(parts["pull"].vertices[:, 0]) - 0.128) < 1e-6
+    assert abs(np.ptp(parts["knob"].vertices[:, 2]) - 0.026) < 1e-6
+    assert set(parts["knob"].supports) == {"stem"}
+    assert main(["parts", "check", str(lib), "--placements", "20"]) == 0
+    assert "support placement over 20 placements" in capsys.readouterr().out
