@@ -70,6 +70,8 @@ def _parser() -> argparse.ArgumentParser:
     pc.add_argument("--placements", type=int, default=100, help="placements on drawn procedural parts; default 100")
     pc.add_argument("--seed", type=int, default=0)
     pc.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    pc.add_argument("--as-drawn", action="store_true",
+                    help="only pairs generation would draw (the procedural box within the part's scale policy)")
 
     fz = sub.add_parser("fuzz", help="generate N random (category, seed, overrides) objects and validate each",
                         description="Property test for long runs: N draws of a category, a seed and random valid"
@@ -305,7 +307,7 @@ def cmd_parts(args) -> int:
     if args.placements < 1:
         return _fail(f"--placements must be at least 1, got {args.placements}")
     lib = partlib.load_library(args.lib)
-    rows = retrieval.study(lib, args.placements, args.seed)
+    rows = retrieval.study(lib, args.placements, args.seed, box=args.as_drawn)
     if args.json:
         import json
 

@@ -59,7 +59,11 @@ MESH_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl")
 LABELS: dict[str, dict] = {
     "handle": {"supports": ({"mount_a", "mount_b"}, {"stem"}),
                "scale": {"x": (0.5, 2.0), "y": (0.67, 1.5), "z": (0.67, 1.5)}},
+    # door knobs: 50-65 mm across on a 50-60 mm projection (EN 1906 lever/knob furniture ranges)
+    "knob": {"supports": ({"stem"},), "scale": {"x": (0.67, 1.5), "y": (0.67, 1.5), "z": (0.67, 1.5)}},
 }
+SHARED = {frozenset({"stem"}): ("handle", "knob")}
+"""Support kinds whose parts serve several labels: a round knob is a cabinet handle or a door knob."""
 
 
 class PartLibraryError(InfmobError):
@@ -192,7 +196,7 @@ def canonical_frame(vertices: np.ndarray, faces: np.ndarray, label: str) -> tupl
     centroid = (tri.mean(1) * area[:, None]).sum(0) / max(area.sum(), 1e-30)
     mid = 0.5 * (vertices.min(0) + vertices.max(0))
     eye = np.eye(3)
-    if ext[order[0]] >= 2.0 * ext[order[1]]:
+    if label != "knob" and ext[order[0]] >= 2.0 * ext[order[1]]:
         kind = "bar"
         xi = int(order[0])
         zi = int(order[1])
@@ -265,7 +269,8 @@ class Library:
     parts: tuple[LibPart, ...]
 
     def candidates(self, label: str, kind: frozenset) -> list[LibPart]:
-        return [p for p in self.parts if p.label == label and p.kind == kind]
+        labels = SHARED.get(kind, (label,)) if label in SHARED.get(kind, ()) else (label,)
+        return [p for p in self.parts if p.label in labels and p.kind == kind]
 
     @property
     def labels(self) -> list[str]:
@@ -498,8 +503,8 @@ def _safe_id(text: str) -> str:
 
 
 # -- PartNet-Mobility ------------------------------------------------------------------------------------
-SEMANTIC_LABELS = {"handle": "handle", "knob": "handle"}
-"""PartNet-Mobility semantic labels imported, and the label they get (a furniture knob is a handle)."""
+SEMANTIC_LABELS = {"handle": "handle", "knob": "knob"}
+"""PartNet-Mobility semantic labels imported, and the label they get."""
 
 
 def _rpy(rpy) -> np.ndarray:
@@ -674,7 +679,7 @@ def builtin_entries() -> list[Entry]:
     """The procedural handles of ``categories/parts`` as library parts, with their exact convex pieces."""
     import trimesh
 
-    from .categories.parts import hardware
+    from .categories.parts import doors, hardware
     from .categories.parts import vessel as V
 
     made = {
@@ -683,6 +688,7 @@ def builtin_entries() -> list[Entry]:
         "builtin_edge_200": hardware.edge_pull(0.20, "main"),
         "builtin_knob_30": hardware.knob_handle(0.015, 0.025, "main"),
         "builtin_lid_knob_20": V.lid_knob(0.02, "main"),
+        "builtin_door_knob_28": doors.knob_part(0.028),
     }
     out = []
     for pid, asm in made.items():
@@ -693,7 +699,7 @@ def builtin_entries() -> list[Entry]:
             for hv, _hf in p.hulls():
                 convex.append(np.asarray(hv, float))
         sup = {k: np.asarray(v, float) for k, v in asm.supports.items()}
-        out.append(Entry("handle", pid, "builtin infmob_usd categories/parts", "Apache-2.0",
+        out.append(Entry(asm.parts[asm.root].label, pid, "builtin infmob_usd categories/parts", "Apache-2.0",
                          np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64), sup, convex,
                          bool(mesh.is_watertight), "exported from the procedural part"))
     return out

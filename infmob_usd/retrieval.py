@@ -107,14 +107,25 @@ procedural ones within this (metres) inside its scale policy: a 160 mm pull cann
 posts of a 400 mm one."""
 
 
-def candidates(library, asm) -> list[tuple]:
-    """``[(library part, support fit)]`` for a one-part assembly: same label, same support kind, and
-    feet that reach the procedural feet within :data:`LATERAL_TOL` inside the scale policy."""
+def fits_box(lib, bounds: np.ndarray) -> bool:
+    """Whether the part fits the bounding box without leaving its scale policy on any axis (a 30 mm
+    cabinet knob is no 60 mm door knob, and a round knob stretched on one axis only is no longer round)."""
+    ext_l = np.maximum(np.ptp(lib.vertices, axis=0), 1e-9)
+    s = np.ptp(bounds, axis=0) / ext_l
+    return all(lib.scale[ax][0] <= s[i] <= lib.scale[ax][1] for i, ax in enumerate("xyz"))
+
+
+def candidates(library, asm, box: bool = True) -> list[tuple]:
+    """``[(library part, support fit)]`` for a one-part assembly: same label, same support kind, the
+    procedural bounding box within the scale policy (``box``), and feet that reach the procedural feet
+    within :data:`LATERAL_TOL`."""
     part = asm.parts[asm.root]
     tg = dict(asm.supports)
     bounds = asm.bounds()
     out = []
     for lib in library.candidates(part.label, frozenset(tg)):
+        if box and not fits_box(lib, bounds):
+            continue
         fit = support_fit(lib, bounds, tg)
         if max(fit.lateral.values()) <= LATERAL_TOL and max(abs(g) for g in fit.gaps.values()) <= LATERAL_TOL:
             out.append((lib, fit))
@@ -138,8 +149,6 @@ class Retriever:
         if asm.retrieved or len(asm.parts) != 1 or not asm.supports:
             return asm
         part = asm.parts[asm.root]
-        if part.label not in self.library.labels:
-            return asm
         kind = frozenset(asm.supports)
         every = self.library.candidates(part.label, kind)
         if not every:
@@ -178,7 +187,12 @@ def targets_for(kind: frozenset, rng: np.random.Generator):
     from .categories.parts import vessel as V
 
     if kind == frozenset({"stem"}):
-        if rng.random() < 0.5:
+        u = rng.random()
+        if u < 0.3:
+            from .categories.parts import doors
+
+            return doors.knob_part(float(rng.uniform(0.025, 0.032)))
+        if u < 0.65:
             return hardware.knob_handle(float(rng.uniform(0.012, 0.02)), float(rng.uniform(0.02, 0.03)), "m")
         return V.lid_knob(float(rng.uniform(0.012, 0.03)), "m")
     if rng.random() < 0.6:
@@ -186,9 +200,13 @@ def targets_for(kind: frozenset, rng: np.random.Generator):
     return hardware.edge_pull(float(rng.uniform(0.10, 0.45)), "m", depth=float(rng.uniform(0.014, 0.02)))
 
 
-def study(library, n: int = 100, seed: int = 0) -> list[dict]:
+def study(library, n: int = 100, seed: int = 0, box: bool = False) -> list[dict]:
     """``n`` placements of drawn library parts on drawn procedural targets: bounding-box vs support
-    placement, the gap (+) or penetration (-) of each foot along the mount normal and its offset across."""
+    placement, the gap (+) or penetration (-) of each foot along the mount normal and its offset across.
+
+    ``box=False``: every part of the label and kind whose feet reach the target's (the bounding-box fit
+    clipped to the scale policy where the box asks for more); ``True``: only the parts generation
+    draws (:func:`candidates`: the box within the policy)."""
     rng = np.random.default_rng(seed)
     kinds = sorted({p.kind for p in library.parts}, key=sorted)
     rows = []
@@ -196,7 +214,7 @@ def study(library, n: int = 100, seed: int = 0) -> list[dict]:
     while len(rows) < 2 * n and tries < 50 * n:
         tries += 1
         asm = targets_for(kinds[int(rng.integers(len(kinds)))], rng)
-        found = candidates(library, asm)
+        found = candidates(library, asm, box)
         if not found:
             continue
         lib = found[int(rng.integers(len(found)))][0]

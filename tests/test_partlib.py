@@ -15,7 +15,7 @@ import pytest
 import trimesh
 
 from infmob_usd import generate, save
-from infmob_usd.categories.parts import hardware
+from infmob_usd.categories.parts import doors, hardware
 from infmob_usd.categories.parts import vessel as V
 from infmob_usd.cli import main
 from infmob_usd.partlib import import_parts, load_library
@@ -80,9 +80,9 @@ def _rot(axis: str, deg: float) -> np.ndarray:
 
 
 def build_messy(root: Path) -> Path:
-    """Two objects: a vertical bar pull on a door face (+X), a horizontal pull facing -Y, a knob and a
-    pull with a fin (non-manifold: one edge of three faces), all Y-up, centimetres, duplicate vertices,
-    flipped faces."""
+    """Two objects: a vertical bar pull on a door face (+X), a horizontal pull facing -Y, a lid knob, a
+    door knob facing down and a pull with a fin (non-manifold: one edge of three faces), all Y-up,
+    centimetres, duplicate vertices, flipped faces."""
     src = root / "pm"
     bar = _mesh(hardware.bar_handle(0.192, "m"))
     pull = _mesh(hardware.edge_pull(0.24, "m"))
@@ -96,8 +96,10 @@ def build_messy(root: Path) -> Path:
     fin_v = np.vstack([finned.vertices, [[0.0, 0.0, 0.2]]])
     fin_f = np.vstack([finned.faces, [[a, b, len(fin_v) - 1]]])  # a third face on edge (a, b)
     finned = trimesh.Trimesh(fin_v, fin_f, process=False)
+    door_knob = _mesh(doors.knob_part(0.029))
     _write_object(src, "7002", [("handle", _messy(pull, _rot("z", -90), (0.0, -0.3, 0.8), "all")),
-                                ("handle", _messy(finned, np.eye(3), (0.31, 0.0, 0.3), "none"))])
+                                ("handle", _messy(finned, np.eye(3), (0.31, 0.0, 0.3), "none")),
+                                ("knob", _messy(door_knob, _rot("x", 180), (-0.01, 0.2, 0.9), "some"))])
     return src
 
 
@@ -113,11 +115,15 @@ def libs(tmp_path_factory):
 
 def test_import_repairs_and_rejects(libs):
     lib = load_library(libs["messy"])
-    # the non-manifold pull is refused with one line naming it and why; the three others are in
+    # the non-manifold pull is refused with one line naming it and why; the four others are in
     assert len(libs["rejected"]) == 1
     assert "7002" in libs["rejected"][0] and "non-manifold" in libs["rejected"][0]
     assert "\n" not in libs["rejected"][0]
-    assert sorted(p.kind == frozenset({"stem"}) for p in lib.parts) == [False, False, True]
+    assert sorted((p.label, sorted(p.supports)) for p in lib.parts) == [
+        ("handle", ["mount_a", "mount_b"]), ("handle", ["mount_a", "mount_b"]), ("knob", ["stem"]), ("knob", ["stem"])]
+    door_knob = next(p for p in lib.parts if p.id == "7002_link_3")
+    assert abs(np.ptp(door_knob.vertices[:, 2]) - 0.056) < 1e-6  # stem foot to cap along z, the right way up
+    assert door_knob.vertices[:, 2].min() == 0.0 and np.ptp(door_knob.vertices[:, 0]) > 0.05
     for p in lib.parts:
         m = trimesh.Trimesh(p.vertices, p.faces, process=False)
         # centimetres -> metres: the largest is the 240 mm pull, every part under 0.3 m
