@@ -293,7 +293,7 @@ def cmd_generate(args) -> int:
 
 
 def cmd_parts(args) -> int:
-    from . import partlib, retrieval
+    from . import partlib, parts_tools
 
     if args.parts_command == "import":
         out, rejected = partlib.import_parts(args.src, args.out, units=args.units, up=args.up, licence=args.licence,
@@ -301,20 +301,20 @@ def cmd_parts(args) -> int:
                                              log=lambda m: print(m, file=sys.stderr, flush=True))
         lib = partlib.load_library(out)
         print(f"{out}: {len(lib.parts)} parts ({', '.join(lib.labels)}), {len(rejected)} rejected")
-        _print_check(retrieval.summary(retrieval.study(lib, 100, 0)), 100)
+        _print_check(parts_tools.summary(parts_tools.study(lib, 100, 0)), 100)
         return 0
     if args.parts_command == "export-builtin":
-        out = partlib.export_builtin(args.out)
+        out = parts_tools.export_builtin(args.out)
         print(f"{out}: {len(partlib.load_library(out).parts)} parts")
         return 0
     if args.placements < 1:
         return _fail(f"--placements must be at least 1, got {args.placements}")
     lib = partlib.load_library(args.lib)
-    rows = retrieval.study(lib, args.placements, args.seed, box=args.as_drawn)
+    rows = parts_tools.study(lib, args.placements, args.seed, box=args.as_drawn)
     if args.json:
         import json
 
-        print(json.dumps({"summary": retrieval.summary(rows), "placements": rows}, indent=1))
+        print(json.dumps({"summary": parts_tools.summary(rows), "placements": rows}, indent=1))
         return 0
     by_part: dict = {}
     for r in rows:
@@ -323,7 +323,7 @@ def cmd_parts(args) -> int:
     for (label, pid, how), rs in sorted(by_part.items()):
         print(f"{label + '/' + pid:34} {how:9} {len(rs):3d} {max(r['gap_mm'] for r in rs):10.3f}"
               f" {max(r['penetration_mm'] for r in rs):10.3f} {max(r['lateral_mm'] for r in rs):14.3f}")
-    _print_check(retrieval.summary(rows), args.placements)
+    _print_check(parts_tools.summary(rows), args.placements)
     return 0
 
 

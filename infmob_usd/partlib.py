@@ -672,38 +672,3 @@ def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", l
         raise _err(src, "no usable part (" + "; ".join(rejected)[:300] + ")", "fix the meshes (nothing was written)")
     write_library(entries, out)
     return out, rejected
-
-
-# -- the project's own parts ---------------------------------------------------------------------------
-def builtin_entries() -> list[Entry]:
-    """The procedural handles of ``categories/parts`` as library parts, with their exact convex pieces."""
-    import trimesh
-
-    from .categories.parts import doors, hardware
-    from .categories.parts import vessel as V
-
-    made = {
-        "builtin_bar_160": hardware.bar_handle(0.16, "main"),
-        "builtin_bar_320": hardware.bar_handle(0.32, "main"),
-        "builtin_edge_200": hardware.edge_pull(0.20, "main"),
-        "builtin_knob_30": hardware.knob_handle(0.015, 0.025, "main"),
-        "builtin_lid_knob_20": V.lid_knob(0.02, "main"),
-        "builtin_door_knob_28": doors.knob_part(0.028),
-    }
-    out = []
-    for pid, asm in made.items():
-        pieces = asm.pieces
-        mesh = trimesh.util.concatenate([trimesh.Trimesh(p.vertices, p.faces, process=False) for p in pieces])
-        convex = []
-        for p in pieces:
-            for hv, _hf in p.hulls():
-                convex.append(np.asarray(hv, float))
-        sup = {k: np.asarray(v, float) for k, v in asm.supports.items()}
-        out.append(Entry(asm.parts[asm.root].label, pid, "builtin infmob_usd categories/parts", "Apache-2.0",
-                         np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64), sup, convex,
-                         bool(mesh.is_watertight), "exported from the procedural part"))
-    return out
-
-
-def export_builtin(out) -> Path:
-    return write_library(builtin_entries(), Path(out))

@@ -19,7 +19,7 @@ from infmob_usd.categories.parts import doors, hardware
 from infmob_usd.categories.parts import vessel as V
 from infmob_usd.cli import main
 from infmob_usd.partlib import import_parts, load_library
-from infmob_usd.retrieval import study, summary
+from infmob_usd.parts_tools import study, summary
 
 # every category whose layouts attach a part retrieval can replace (a handle with support points)
 RETRIEVABLE = ("beverage_fridge", "dining_table", "dishwasher", "door", "kitchen_cabinet", "microwave", "oven",
