@@ -25,7 +25,7 @@ from .blueprint import Blueprint, descendants
 from .errors import ModelError
 from .geometry import hull_arrays, triangle_cross
 from .joints import Dof
-from .rotation import axis_angle
+from .rotation import axis_angle, axis_angles
 
 
 @dataclass(frozen=True)
@@ -419,6 +419,18 @@ def _motion(joint_type: str, pivot: np.ndarray, axis: np.ndarray, value: float) 
     return m
 
 
+def _motions(joint_type: str, pivot: np.ndarray, axis: np.ndarray, values: np.ndarray) -> list[np.ndarray]:
+    """:func:`_motion` at each of ``values`` (the same matrices, the turns made in one call)."""
+    if joint_type == "prismatic":
+        return [_motion(joint_type, pivot, axis, v) for v in values]
+    out = []
+    for r in axis_angles(axis, values):
+        m = np.eye(4)
+        m[:3, :3], m[:3, 3] = r, pivot - r @ pivot
+        out.append(m)
+    return out
+
+
 class _Obstacles:
     """Posed hulls of the links a sweep may not enter, with lazily built exact solids.
 
@@ -521,7 +533,7 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
         step = min(0.2, math.sqrt(8.0 * SWEEP_SAGITTA / radius))
         n = max(1, math.ceil(abs(limit) / step))
     values = np.linspace(0.0, limit, n + 1)
-    mats = [_motion(joint.type, pivot, axis, v) for v in values]
+    mats = _motions(joint.type, pivot, axis, values)
     # per-hull boxes at every sample (the posed corners of each hull's box bound the hull)
     corners = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], float)
     lo0 = np.minimum.reduceat(stacked, starts[:-1], axis=0)

@@ -19,7 +19,26 @@ from scipy.spatial.transform import Rotation
 def axis_angle(axis: Sequence[float], angle: float) -> np.ndarray:
     """The ``(3, 3)`` rotation by ``angle`` radians about the unit ``axis`` (right-hand rule)."""
     a = np.asarray(axis, float)
-    return Rotation.from_rotvec(a * float(angle)).as_matrix()
+    angle = float(angle)
+    if angle == 0.0 and a.shape == (3,) and np.isfinite(a).all():
+        # no turn (every joint at rest in forward kinematics): scipy's identity for this rotation
+        # vector, bit for bit (signed zeros included), without the ~30 us of a scipy call
+        rv = a * angle
+        key = tuple(np.signbit(rv).tolist())
+        if key not in _NO_TURN:
+            _NO_TURN[key] = Rotation.from_rotvec(rv).as_matrix()
+        return _NO_TURN[key].copy()
+    return Rotation.from_rotvec(a * angle).as_matrix()
+
+
+_NO_TURN: dict[tuple, np.ndarray] = {}
+
+
+def axis_angles(axis: Sequence[float], angles: Sequence[float]) -> np.ndarray:
+    """``(n, 3, 3)``: :func:`axis_angle` for each of ``angles`` (the same bits), in one scipy call."""
+    a = np.asarray(axis, float)
+    angles = np.asarray(angles, float).reshape(-1)
+    return Rotation.from_rotvec(a[None, :] * angles[:, None]).as_matrix().reshape(len(angles), 3, 3)
 
 
 def rotation_between(a: Sequence[float], b: Sequence[float]) -> np.ndarray:

@@ -22,7 +22,7 @@ from pathlib import Path
 
 from infmob_usd.errors import OutputError
 
-from .common import visual_meshes
+from .common import visual_meshes, write_file
 from .glb import write_glb
 from .meta import write_metadata, write_semantics
 from .mjcf import write_mjcf
@@ -88,7 +88,7 @@ def write_textures(obj, folder: Path) -> None:
         for name, data in maps.items():
             if not isinstance(data, bytes) or data[:8] != b"\x89PNG\r\n\x1a\n":
                 raise ValueError(f"texture {slot}_{name} is not PNG bytes ({type(data).__name__})")
-            (tex / f"{slot}_{name}.png").write_bytes(data)
+            write_file(tex / f"{slot}_{name}.png", data)
 
 
 def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run_id: str | None = None) -> Path:

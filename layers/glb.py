@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .common import visual_meshes
+from .common import visual_meshes, write_file
 
 FLOAT, UINT = 5126, 5125
 ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
@@ -168,7 +168,7 @@ def glb_bytes(obj) -> bytes:
 def write_glb(obj, folder: Path) -> Path:
     """Write ``<name>.glb`` into ``folder``; return its path."""
     path = folder / f"{obj.name}.glb"
-    path.write_bytes(glb_bytes(obj))
+    write_file(path, glb_bytes(obj))
     return path
 
 

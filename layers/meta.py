@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .common import PM_JOINT_TYPE
+from .common import PM_JOINT_TYPE, write_file
 
 
 def write_semantics(obj, folder: Path) -> Path:
@@ -18,7 +18,7 @@ def write_semantics(obj, folder: Path) -> Path:
     lines = [f"{link.name} {PM_JOINT_TYPE[into.get(link.name, 'fixed')]} {link.label}"
              for link in obj.links if not link.dummy]
     path = folder / "semantics.txt"
-    path.write_text("\n".join(lines) + "\n")
+    write_file(path, "\n".join(lines) + "\n")
     return path
 
 
@@ -152,5 +152,5 @@ def _exact_overrides(obj, meta: dict) -> dict:
 
 def write_metadata(obj, folder: Path, files: dict[str, str] | None = None) -> Path:
     path = folder / "metadata.json"
-    path.write_text(json.dumps(metadata(obj, files), indent=2, sort_keys=False) + "\n")
+    write_file(path, json.dumps(metadata(obj, files), indent=2, sort_keys=False) + "\n")
     return path

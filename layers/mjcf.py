@@ -26,6 +26,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from .common import write_file
 from .urdf import MESHES, write_meshes
 
 TEXTURE_ROLES = {"basecolor": "rgb", "normal": "normal", "roughness": "roughness", "metallic": "metallic"}
@@ -149,7 +150,7 @@ def write_mjcf(obj, folder: Path, free_base: bool = False) -> Path:
         out.append("  </contact>")
     out.append("</mujoco>\n")
     path = folder / f"{obj.name}.xml"
-    path.write_text("\n".join(out))
+    write_file(path, "\n".join(out))
     return path
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .common import visual_meshes
+from .common import visual_meshes, write_file
 
 SIZE = 256
 THUMBS = Path(".thumbs") / f"{SIZE}x{SIZE}"
@@ -105,5 +105,5 @@ def write_thumbnail(obj, folder: Path) -> Path:
 
     path = thumbnail_path(folder, obj.name)
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_bytes(encode_png(sketch(obj)))
+    write_file(path, encode_png(sketch(obj)))
     return path

@@ -26,7 +26,7 @@ import numpy as np
 
 from infmob_usd.rotation import matrix_rpy as rotation_rpy
 
-from .common import collision_placements, visual_meshes
+from .common import collision_placements, visual_meshes, write_file
 
 MESHES = "meshes"
 
@@ -95,7 +95,7 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None,
                     parts.append(f"usemtl {material}\n")
                 token = [f"{i}/{i}/{i}" for i in range(1, len(triples) + 1)]
                 parts.append(("f %s %s %s\n" * len(f1)) % tuple([token[i] for i in inverse.reshape(-1).tolist()]))
-                path.write_text("".join(parts))
+                write_file(path, "".join(parts))
                 return
         parts.append(_rows("v", "%.6f %.6f %.6f", vertices))
         parts.append(_rows("vt", "%.6f %.6f", vt))
@@ -109,7 +109,7 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None,
         if material:
             parts.append(f"usemtl {material}\n")
         parts.append(_rows("f", "%d %d %d", f1))
-    path.write_text("".join(parts))
+    write_file(path, "".join(parts))
 
 
 _MTL_MAPS = {"basecolor": "map_Kd", "roughness": "map_Pr", "metallic": "map_Pm", "normal": "norm"}
@@ -159,7 +159,7 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
     meshes = folder / MESHES
     meshes.mkdir()
     for slot, look in obj.materials.items():
-        (meshes / f"{slot}.mtl").write_text(_mtl(slot, look, obj.textures.get(slot, {})))
+        write_file(meshes / f"{slot}.mtl", _mtl(slot, look, obj.textures.get(slot, {})))
     visuals = visual_meshes(obj)
     table = {}
     for link in obj.links:
@@ -220,7 +220,7 @@ def write_urdf(obj, folder: Path) -> Path:
         out.append("  </joint>")
     out.append("</robot>\n")
     path = folder / f"{obj.name}.urdf"
-    path.write_text("\n".join(out))
+    write_file(path, "\n".join(out))
     return path
 
 
