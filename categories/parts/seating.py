@@ -415,6 +415,7 @@ ARM_OFFSET = 0.03  # pad centre ahead of the post
 ARM_POST = -0.06  # post axis behind the seat centre
 ARM_BAR = (0.022, 0.016)  # the fixed bar under the post (x, y)
 ARM_TUBE = 0.003  # hollow post wall
+ARM_POST_HALF = ARM_BAR[0] / 2 + 0.003 + ARM_TUBE  # half the post's depth (x)
 
 
 def pad_reach(a: ArmDims, xb: float | None) -> float:
@@ -576,3 +577,53 @@ class ChairNodes(Layout):
         pieces, front = made
         self.extend("back", pieces)
         return front
+
+
+# -- adjustable headrest, lumbar pad, seat slider, flip-up arms (issue 14) --------------------------------
+HEADREST_TRAVEL = 0.07  # headrest height adjustment (executive and mesh chairs: 50-80 mm, e.g. Herman Miller
+#                         Aeron / Steelcase Gesture headrest kits)
+HEADREST_TILT = 0.35  # headrest tilt forward (about 20 degrees on the same kits)
+LUMBAR_TRAVEL = 0.06  # lumbar pad height adjustment (Steelcase Leap, Herman Miller Aeron PostureFit: 50-75 mm)
+SEAT_SLIDE = 0.05  # seat depth adjustment (BIFMA task chairs: 50-60 mm forward)
+ARM_FLIP = 1.5  # a flip-up arm turns up about its rear pivot to stand beside the back (about 90 degrees)
+
+
+def adjustable_headrest(b: Back, dims: BackDims) -> tuple[list[g.Piece], Frame, Frame]:
+    """A headrest on a stalk that slides up in a sleeve behind the back and tilts at its top.
+
+    Returns the headrest's pieces, the slide frame (z up) and the tilt frame (z along +y: a positive
+    turn tips the pad forward, toward the head); the sleeve is part of the back (:func:`headrest_sleeve`).
+    """
+    xs, bw = b.x_spine, dims.width
+    zh0 = b.z1 + 0.035
+    stalk = g.box_between([xs - 0.014, -0.016, b.z1 - 0.09], [xs - 0.004, 0.016, zh0 + 0.04], "frame", bevel=0.002)
+    pad = g.box_between([xs + 0.004, -0.3 * bw, zh0], [xs + 0.06, 0.3 * bw, zh0 + 0.13], "seat", bevel=0.02)
+    yoke = g.box_between([xs - 0.014, -0.05, zh0 + 0.02], [xs + 0.006, 0.05, zh0 + 0.07], "frame", bevel=0.003)
+    return [stalk, yoke, pad], Frame.at((xs, 0, b.z1 - 0.09)), Frame.at((xs - 0.004, 0, zh0 + 0.045),
+                                                                         x=(1, 0, 0), z=(0, 1, 0))
+
+
+def headrest_sleeve(b: Back) -> list[g.Piece]:
+    """The open sleeve behind the back's top that holds a headrest stalk: two cheeks and a back plate."""
+    xs, z0, z1 = b.x_spine, b.z1 - 0.12, b.z1 + 0.008
+    return [g.box_between([xs - 0.022, -0.026, z0], [xs - 0.018, 0.026, z1], "frame"),
+            g.box_between([xs - 0.018, 0.02, z0], [xs, 0.026, z1], "frame"),
+            g.box_between([xs - 0.018, -0.026, z0], [xs, -0.02, z1], "frame")]
+
+
+def lumbar_pad(b: Back, dims: BackDims, front: float) -> tuple[list[g.Piece], Frame]:
+    """A lumbar pad in front of the back at its lower third, sliding up along z; returns pieces and the
+    slide frame."""
+    bw, bh = dims.width, dims.height
+    z0 = b.z0 + 0.15 * bh
+    pad = g.box_between([front + GAP, -0.38 * bw, z0], [front + GAP + 0.018, 0.38 * bw, z0 + 0.09], "pad",
+                        bevel=0.008)
+    return [pad], Frame.at((front, 0, z0))
+
+
+def split_seat(seat: Seat) -> tuple[list[g.Piece], list[g.Piece]]:
+    """The swivel seat's pieces split into what stays on the mechanism and what a seat slider moves
+    (the pan and the cushion)."""
+    pcs = seat.assembly.parts[seat.assembly.root].pieces
+    moving = [pc for pc in pcs if pc.material in ("seat", "pan")]
+    return [pc for pc in pcs if pc.material not in ("seat", "pan")], moving
