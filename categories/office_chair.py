@@ -16,7 +16,7 @@ Four designs (``design``), each with its own structure:
 - mesh: a framed mesh back with a sliding lumbar pad, optionally the adjustable headrest;
 - drafting: a tall chair (seat 0.62-0.78 m) with a foot ring that slides up and down the column,
   an optional low back.
-Any design may have a seat slider (pan and cushion slide forward on the mechanism) and arms of one
+Any design may have a tilt-tension knob (turning, under the seat's front), a seat slider (pan and cushion slide forward on the mechanism) and arms of one
 style: 4D (height, slide, turn, pad turn), height-only, fixed, or flip-up (turn up about a rear pivot).
 Parts: ``categories/parts/seating.py`` (shared with the bar chair).
 """
@@ -40,7 +40,8 @@ GRAMMAR = Grammar("office_chair", {
     "twin": Node(label="wheel"),
     "single": Node(label="wheel"),
     "lift": Node(label="lift"),
-    "seat": Node(label="seat", optional={"seat_slider": 0.5}),
+    "seat": Node(label="seat", optional={"seat_slider": 0.5, "tension_knob": 0.5}),
+    "tension_knob": Node(label="knob"),
     "seat_slider": Node(label="seat"),
     "task": Node(required=("back",)),
     "executive": Node(required=("high_back",)),
@@ -133,7 +134,14 @@ class ChairLayout(S.ChairNodes):
             self.grow(node.one("seat_slider"), seat=seat, pieces=moving)
         else:
             self.place(seat.assembly, "seat")
+        if node.one("tension_knob"):
+            self.grow(node.one("tension_knob"), seat=seat)
         return seat
+
+    def tension_knob(self, node, seat):
+        pieces, axis = S.tension_knob(seat, self.p["seat_depth"], MECHANISM)
+        self.add("tension_knob", "knob", pieces)
+        self.spin("seat", "tension_knob", axis, role="knob")
 
     def seat_slider(self, node, seat, pieces):
         """The pan and cushion slide forward on rails of the mechanism (seat depth adjustment)."""

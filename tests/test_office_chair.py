@@ -15,8 +15,8 @@ from collide import overlap
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
-LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest", "headrest", "lumbar", "foot_ring"}
-PLAIN = dict(has_seat_slider=False, has_lumbar=False, has_headrest=False, arm_style="arm_4d")
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest", "headrest", "lumbar", "foot_ring", "knob"}
+PLAIN = dict(has_seat_slider=False, has_tension_knob=False, has_lumbar=False, has_headrest=False, arm_style="arm_4d")
 TOL = 1e-7  # m^3, as the validator
 
 
@@ -279,7 +279,12 @@ def test_arm_styles(style):
 
 
 def test_seat_slider_moves_pan_and_cushion_forward():
-    _, bp = make(5, has_seat_slider=True)
+    _, bp = make(5, has_seat_slider=True, has_tension_knob=True)
+    knob = by_child(bp, "tension_knob")
+    assert knob.kind == "continuous" and knob.parent == "seat" and knob.dofs[0].axis == pytest.approx((1, 0, 0))
+    rest_pc = rest_overlaps(bp)
+    for q in states(bp):
+        assert_clear(bp, bp.poses(q), rest_pc, q)
     j = by_child(bp, "seat_pan")
     assert j.kind == "prismatic" and j.parent == "seat" and j.dofs[0].axis == pytest.approx((1, 0, 0))
     assert {pc.material for pc in bp.parts["seat_pan"].pieces} == {"seat", "pan"}

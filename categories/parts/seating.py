@@ -627,3 +627,15 @@ def split_seat(seat: Seat) -> tuple[list[g.Piece], list[g.Piece]]:
     pcs = seat.assembly.parts[seat.assembly.root].pieces
     moving = [pc for pc in pcs if pc.material in ("seat", "pan")]
     return [pc for pc in pcs if pc.material not in ("seat", "pan")], moving
+
+
+def tension_knob(seat: Seat, depth: float, hm: float) -> tuple[list[g.Piece], Frame]:
+    """The tilt-tension knob at the front of the mechanism under the seat (turned to stiffen the
+    recline); returns its pieces and its axis frame (z along +x)."""
+    md = min(0.24, 0.55 * depth)
+    x0 = seat.xc + md / 2
+    zc = seat.z_mech0 + hm / 2 - 0.003
+    r = min(0.015, hm / 2 - 0.008)
+    pieces = [g.cylinder([x0 + GAP, 0, zc], [x0 + 0.03, 0, zc], r, "handle", 20),
+              g.cylinder([x0 + 0.012, 0, zc], [x0 + 0.026, 0, zc], r + 0.002, "handle", 10)]
+    return pieces, Frame.at((x0, 0, zc), x=(0, 0, 1), z=(1, 0, 0))
