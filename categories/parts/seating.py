@@ -639,3 +639,64 @@ def tension_knob(seat: Seat, depth: float, hm: float) -> tuple[list[g.Piece], Fr
     pieces = [g.cylinder([x0 + GAP, 0, zc], [x0 + 0.03, 0, zc], r, "handle", 20),
               g.cylinder([x0 + 0.012, 0, zc], [x0 + 0.026, 0, zc], r + 0.002, "handle", 10)]
     return pieces, Frame.at((x0, 0, zc), x=(0, 0, 1), z=(1, 0, 0))
+
+
+# -- bar stools: four-leg swivel frame, height lever (issue 14) ---------------------------------------------
+FOUR_LEG_TUBE = 0.0125  # 25 mm steel tube legs (four-leg swivel bar stools, e.g. IKEA Franklin, Flash Furniture)
+BEARING_R = 0.1  # the swivel bearing plate under the seat (a 200 mm lazy-susan plate)
+
+
+def four_leg_frame(bearing_top: float, spread: float, z_ring: float) -> list[g.Piece]:
+    """Four splayed tube legs under a swivel bearing plate whose top is at ``bearing_top``, their feet
+    ``spread`` from the centre (on the diagonals), a square foot rail of four rungs at ``z_ring`` and
+    plastic glides. Material slots: ``base`` (legs, plate), ``ring`` (rungs), ``caster`` (glides)."""
+    r, t = FOUR_LEG_TUBE, 0.012
+    zt = bearing_top - t
+    top_a, foot_a = 0.07, spread / math.sqrt(2)  # leg tops under the plate, feet at the corners
+    glide = 0.01
+    corners = [(sx, sy) for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
+    pieces = [g.disc([0, 0, bearing_top - t / 2], BEARING_R, t, "base", 48)]
+    legs = []
+    for sx, sy in corners:
+        a = np.array([sx * foot_a, sy * foot_a, glide])
+        b = np.array([sx * top_a, sy * top_a, zt + 0.002])
+        legs.append((a, b))
+        pieces.append(g.cylinder(a, b, r, "base", 20))
+        pieces.append(g.cylinder(a - [0, 0, glide], a + [0, 0, 0.004], r + 0.002, "caster", 20))
+
+    def at(k, z):
+        a, b = legs[k]
+        return a + (b - a) * (z - a[2]) / (b[2] - a[2])
+
+    for k in range(4):
+        p0, p1 = at(k, z_ring), at((k + 1) % 4, z_ring)
+        d = (p1 - p0) / np.linalg.norm(p1 - p0)
+        pieces.append(g.cylinder(p0 + d * 0.004, p1 - d * 0.004, 0.009, "ring", 16))
+    zs = zt - 0.09  # a lower square of stretchers stiffening the leg tops
+    for k in range(4):
+        p0, p1 = at(k, zs), at((k + 1) % 4, zs)
+        pieces.append(g.cylinder(p0, p1, 0.007, "base", 12))
+    return pieces
+
+
+def height_lever(seat: Seat, hm: float, reach: float) -> tuple[list[g.Piece], list[g.Piece], Frame, float]:
+    """Split the seat's height lever (pieces named ``handle``) off the seat: returns what stays, the
+    lever's pieces, its pivot frame (z along +x at its inner end: a positive turn lifts the paddle) and
+    the most it turns before the paddle meets the seat pan."""
+    pcs = seat.assembly.parts[seat.assembly.root].pieces
+    lever = [pc for pc in pcs if pc.name == "handle"]
+    stay = [pc for pc in pcs if pc.name != "handle"]
+    zl = seat.z_mech0 + 0.3 * hm
+    room = seat.z_pan0 - GAP - (zl + 0.006)
+    upper = min(0.35, math.asin(max(0.0, min(1.0, room / reach))))
+    return stay, lever, Frame.at((seat.xc + 0.03, 0.04, zl), x=(0, 1, 0), z=(1, 0, 0)), upper
+
+
+SEAT_TILT = 0.2  # forward seat tilt of ergonomic / saddle stools (about 10-12 degrees: Salli, Varier, Bambach)
+
+
+def tilt_pivot(seat: Seat, shape: str, width: float, depth: float) -> Frame:
+    """The forward-tilt axis of a seat pan: along +y at the top front edge of its mechanism, so a
+    positive turn dips the front and lifts the back clear of the mechanism."""
+    reach = min(0.12, 0.6 * width / 2) if shape == "round" else min(0.24, 0.55 * depth) / 2
+    return Frame.at((seat.xc + reach, 0, seat.z_pan0), x=(1, 0, 0), z=(0, 1, 0))
