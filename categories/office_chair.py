@@ -12,7 +12,7 @@ carriage on top that slides along X and turns about Z, and a pad that turns abou
 
 Four designs (``design``), each with its own structure:
 - task: a cushion (or mesh) back, optionally a lumbar pad sliding up and down and an adjustable headrest;
-- executive: a tall, thick upholstered back with a headrest that slides up and tilts forward;
+- executive: a tall, thick upholstered back with a headrest that slides up on a stalk;
 - mesh: a framed mesh back with a sliding lumbar pad, optionally the adjustable headrest;
 - drafting: a tall chair (seat 0.62-0.78 m) with a foot ring that slides up and down the column,
   an optional low back.
@@ -204,8 +204,7 @@ class ChairLayout(S.ChairNodes):
         pieces, slide, tilt = S.adjustable_headrest(frame, dims)
         self.extend("back", S.headrest_sleeve(frame))
         self.add("headrest", "headrest", pieces)
-        self.join(J.revolute_prismatic("back", "headrest", tilt.origin, tilt.z, (0.0, S.HEADREST_TILT), slide.z,
-                                       (0.0, S.HEADREST_TRAVEL), role="slide"))
+        self.slide("back", "headrest", slide, upper=S.HEADREST_TRAVEL)  # gravity holds it at its lowest
         return frame.x_spine + 0.06
 
     def lumbar(self, node, frame, dims, front):

@@ -582,17 +582,16 @@ class ChairNodes(Layout):
 # -- adjustable headrest, lumbar pad, seat slider, flip-up arms (issue 14) --------------------------------
 HEADREST_TRAVEL = 0.07  # headrest height adjustment (executive and mesh chairs: 50-80 mm, e.g. Herman Miller
 #                         Aeron / Steelcase Gesture headrest kits)
-HEADREST_TILT = 0.35  # headrest tilt forward (about 20 degrees on the same kits)
 LUMBAR_TRAVEL = 0.06  # lumbar pad height adjustment (Steelcase Leap, Herman Miller Aeron PostureFit: 50-75 mm)
 SEAT_SLIDE = 0.05  # seat depth adjustment (BIFMA task chairs: 50-60 mm forward)
 ARM_FLIP = 1.5  # a flip-up arm turns up about its rear pivot to stand beside the back (about 90 degrees)
 
 
 def adjustable_headrest(b: Back, dims: BackDims) -> tuple[list[g.Piece], Frame, Frame]:
-    """A headrest on a stalk that slides up in a sleeve behind the back and tilts at its top.
+    """A headrest on a stalk that slides up in a sleeve behind the back.
 
-    Returns the headrest's pieces, the slide frame (z up) and the tilt frame (z along +y: a positive
-    turn tips the pad forward, toward the head); the sleeve is part of the back (:func:`headrest_sleeve`).
+    Returns the headrest's pieces, the slide frame (z up) and the frame of its yoke (z along +y); the
+    sleeve is part of the back (:func:`headrest_sleeve`).
     """
     xs, bw = b.x_spine, dims.width
     zh0 = b.z1 + 0.035
