@@ -1,15 +1,20 @@
-"""Dining table: a rectangular or oval top on an apron, on 4 legs or a pedestal.
+"""Dining table: a fixed, extending or drop-leaf top on an apron, on 4 legs or a pedestal.
 
 X is the long axis (``length``), Y the short axis (``width``), Z is up. The top overhangs an
 apron of four boards on 4 legs at its corners (tapered, turned or square) or on one pedestal
-(two, trestle style, on a table longer than 1.9 m). Optional mechanisms: an extension (the top
-is two halves split at x = 0 sliding apart along X over a leaf stored in the apron); drawers in
-the long apron boards, pulled out along Y; adjustable legs (inner legs sliding up in square
-sleeves under the apron corners, resting on the floor). A table that would grow no moving part
-gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
+(two, trestle style, on a table longer than 1.9 m). The top (``top_style``) is fixed, extends
+(two halves split at x = 0 sliding apart along X over a leaf stored in the apron) or has drop
+leaves (a narrow fixed centre and a leaf along each long side hanging from a rule-joint hinge,
+raised level on a swing-out bracket (loper) that turns out of the apron side under it: a
+Pembroke / drop-leaf table). Optional mechanisms: drawers in the long apron boards, pulled out
+along Y (not on a drop-leaf table, whose lopers are there); adjustable legs (inner legs sliding
+up in square sleeves under the apron corners, resting on the floor). A table that would grow no
+moving part gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
 """
 
 from __future__ import annotations
+
+import math
 
 from infmob_usd import geometry as g
 from infmob_usd.category import Category
@@ -18,6 +23,7 @@ from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import hardware, panels
+from .parts import table_mechanisms as M
 from .parts import tables as T
 
 
@@ -28,7 +34,12 @@ def drawer_count(p, rng) -> int:
 
 GRAMMAR = Grammar("dining_table", {
     "dining_table": Node(label="body", one_of={"legs": 0.7, "pedestal": 0.3}, choice="support",
-                         optional={"extension": 0.6, "drawers": 0.4}),
+                         optional={"drawers": 0.4}, required=("top_style",)),
+    "top_style": Node(one_of={"fixed": 0.3, "extension": 0.45, "drop_leaf": 0.25}, choice="top_style"),
+    "fixed": Node(),
+    "drop_leaf": Node(repeat={"leaf_side": 2}),
+    "leaf_side": Node(label="leaf", optional={"loper": 0.85}),
+    "loper": Node(label="bracket"),
     "legs": Node(optional={"adjustable_legs": 0.25}),
     "adjustable_legs": Node(label="leg"),
     "pedestal": Node(),
@@ -49,6 +60,8 @@ PARAMS = (
     Float("apron_height", "apron height (raised to fit a leaf and drawers)", "m", 0.08, 0.14),
     Choice("leg_style", "leg shape", choices=("tapered", "turned", "square"), weights=(0.4, 0.35, 0.25)),
     Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", 0.05, 0.09),
+    Float("leaf_fraction", "a drop leaf's width as a fraction of the table width (leaves of 22-36 cm)", "",
+          0.22, 0.32),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
           "", 0.25, 0.4),
     Int("drawer_count", "drawers per drawer side", "", 1, 2),
@@ -67,9 +80,12 @@ MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_fin
 
 
 def has_a_moving_part(p: dict) -> dict:
-    """A table whose draw grows no moving part (extension, drawers, adjustable legs) gets the extension."""
-    if not (p["has_drawers"] or (p["support"] == "legs" and p["has_adjustable_legs"])):
-        p = {**p, "has_extension": True}
+    """A table whose draw grows no moving part (extension, drop leaves, drawers, adjustable legs) gets the
+    extension; a drop-leaf table has no side drawers (its lopers turn out of the long apron boards)."""
+    if p["top_style"] == "drop_leaf":
+        p = {**p, "has_drawers": False}
+    if p["top_style"] == "fixed" and not (p["has_drawers"] or (p["support"] == "legs" and p["has_adjustable_legs"])):
+        p = {**p, "top_style": "extension"}
     return p
 
 
@@ -78,6 +94,8 @@ SPLIT = 0.004  # gap between the two halves at rest
 BOARD = 0.02  # apron board thickness
 CLEAR = 0.003  # drawer fronts in their openings, inner legs in their sleeves
 LEAF_T = 0.02  # stored leaf thickness
+LEAF_GAP_Y = 0.003  # a drop leaf's edge off the centre top at its rule joint
+LOPER = 0.25  # swing-out bracket length
 LEAF_GAP = 0.004  # between the leaf and the halves above it
 SLEEVE_WALL = 0.004
 DRAWER_WALL = 0.01
@@ -95,11 +113,17 @@ class TableLayout(Layout):
     def dining_table(self, node):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
-        support, ext, drawers = node.one(node.choice), node.one("extension"), node.one("drawers")
+        support, drawers = node.one(node.choice), node.one("drawers")
+        style = node.one("top_style")
+        ext = style.one("extension")
+        leaves = style.one("drop_leaf")
         if p["top_shape"] == "oval":
             La, Wa = OVAL_APRON * L, OVAL_APRON * W
         else:
             La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
+        wc = W * (1 - 2 * p["leaf_fraction"])  # a drop-leaf table's fixed centre
+        if leaves:
+            Wa = min(Wa, wc - 2 * (LEAF_GAP_Y + 0.03 + T.BOARD))
         lw = p["leg_width"] if p["support"] == "legs" else 0.0
         za1 = H - tt - (SEAT if ext else 0.0)
         leaf = (za1 - LEAF_GAP - LEAF_T, za1 - LEAF_GAP)
@@ -109,12 +133,14 @@ class TableLayout(Layout):
         holes = self._holes(x_in, za0, (leaf[0] - 0.006) if ext else za1 - MARGIN) if drawers else []
         sides = (1, -1) if p["drawer_sides"] == "both" else (1,)
         body = T.apron_rails(La, Wa, lw, za0, za1, BOARD, "frame", {s: holes for s in sides})
-        if not ext:
+        if leaves:
+            xy = T.outline(L, W, p["top_shape"], 192)
+            body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, 0.15 * tt, "top"))
+        elif not ext:
             body.append(T.top(L, W, p["top_shape"], H - tt, H, 0.2 * tt, "top"))
         self.add("body", "body", body)
         self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
-        if ext:
-            self.grow(ext, x_in=x_in, La=La, Wa=Wa, leaf=leaf)
+        self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
         if drawers:
             self.grow(drawers, slots=[(s, h) for s in sides for h in holes], Wa=Wa, sides=len(sides))
 
@@ -150,7 +176,34 @@ class TableLayout(Layout):
         p = self.p
         self.extend("body", T.pedestals(p["length"], La, Wa, p["width"], p["pedestal_radius"], za0 - 0.002, "frame"))
 
-    def extension(self, node, x_in, La, Wa, leaf):
+    def top_style(self, node, **slot):
+        self.grow(node.one(node.choice), **slot)
+
+    def fixed(self, node, **slot):
+        self.extend("body", [])  # the top is the body's (built with it)
+
+    def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
+        for side, n in zip((1, -1), node.of("leaf_side")):
+            self.grow(n, side=side, wc=wc, za0=za0, za1=za1, Wa=Wa, La=La)
+
+    def leaf_side(self, node, side, wc, za0, za1, Wa, La):
+        p = self.p
+        L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
+        name = "leaf_left" if side > 0 else "leaf_right"
+        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], 192), side, wc / 2 + LEAF_GAP_Y, H - tt, H, "top")
+        self.add(name, "leaf", [piece])
+        self.hinge("body", name, hinge, upper=math.pi / 2)
+        if node.one("loper"):
+            self.grow(node.one("loper"), side=side, leaf=name, Wa=Wa, La=La, za0=za0, za1=za1)
+
+    def loper(self, node, side, leaf, Wa, La, za0, za1):
+        length = min(LOPER, 0.4 * La)
+        pieces, hinge = M.loper(-length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
+        name = f"loper_{'left' if side > 0 else 'right'}"
+        self.add(name, "bracket", pieces)
+        self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
+
+    def extension(self, node, x_in, La, Wa, leaf, **slot):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         travel = p["extension_fraction"] * La / 2

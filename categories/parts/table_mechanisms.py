@@ -104,3 +104,47 @@ def nesting_table(width: float, depth: float, height: float, top_t: float, leg_r
         pieces.append(g.box_between([xc - ax + leg_r, sy * ay - 0.006, height - top_t - 0.04],
                                     [xc + ax - leg_r, sy * ay + 0.006, height - top_t], leg_mat))
     return pieces, 2 * (ay - leg_r)
+
+
+# -- drop leaves ------------------------------------------------------------------------------------------
+def clip_outline(xy: np.ndarray, y0: float, y1: float) -> np.ndarray:
+    """A convex outline (counter-clockwise ``(k, 2)``) cut to ``y0 <= y <= y1``."""
+    out = []
+    n = len(xy)
+    for i in range(n):
+        a, b = xy[i], xy[(i + 1) % n]
+        ina, inb = y0 <= a[1] <= y1, y0 <= b[1] <= y1
+        if ina:
+            out.append(a)
+        for yc in (y0, y1):
+            if (a[1] - yc) * (b[1] - yc) < 0:
+                t = (yc - a[1]) / (b[1] - a[1])
+                out.append(a + t * (b - a))
+    pts = np.array(out)
+    c = pts.mean(0)
+    order = np.argsort(np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0]))
+    return pts[order]
+
+
+def drop_leaf(xy: np.ndarray, side: int, y_hinge: float, z0: float, z1: float, material: str
+              ) -> tuple[g.Piece, Frame]:
+    """The leaf of a top outline ``xy`` beyond ``|y| = y_hinge`` on ``side``, hanging down at rest
+    from its hinge line (along x at the top's underside); returns the piece and the hinge frame (z along
+    ``side`` * x: a positive turn raises the leaf to level)."""
+    lo, hi = (y_hinge, 10.0) if side > 0 else (-10.0, -y_hinge)
+    leaf = T.slab(clip_outline(xy, lo, hi), z0, z1, 0.15 * (z1 - z0), material)
+    hinge = Frame.at((0, side * y_hinge, z0), z=(side, 0, 0), y=(0, 0, 1))
+    down = hinge.matrix @ Frame.at().turned("z", -math.pi / 2).matrix @ hinge.inverse().matrix
+    return leaf.transformed(down), hinge
+
+
+def loper(x0: float, y_face: float, side: int, z0: float, z1: float, length: float, material: str
+          ) -> tuple[list[g.Piece], Frame]:
+    """A swing-out bracket (loper) lying along the apron's outer face at ``y_face``, hinged about z at
+    ``x0``; a positive turn swings it out under the raised leaf. Returns its pieces (the board and its
+    knuckle) and the hinge frame."""
+    t = 0.02
+    ys = sorted((y_face + side * 0.003, y_face + side * (0.003 + t)))
+    piece = g.box_between([x0 + 0.004, ys[0], z0], [x0 + length, ys[1], z1], material, bevel=0.002)
+    knuckle = g.cylinder([x0, (ys[0] + ys[1]) / 2, z0], [x0, (ys[0] + ys[1]) / 2, z1], t / 2, material, 16)
+    return [piece, knuckle], Frame.at((x0, (ys[0] + ys[1]) / 2, z0), z=(0, 0, side))
