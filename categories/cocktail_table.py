@@ -31,6 +31,7 @@ from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import hardware, panels
+from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 
@@ -48,14 +49,18 @@ GRAMMAR = Grammar("cocktail_table", {
     "lift_top": Node(label="lift"),
     "shelf": Node(),
     "pedestal": Node(label="stand"),
-    "drawers": Node(label="body", repeat={"drawer": drawer_count}, optional={"shelf": 0.4}),
+    "drawers": Node(label="body", repeat={"drawer": drawer_count}, optional={"shelf": 0.4, "casters": 0.4}),
+    "casters": Node(repeat={"table_caster": 4}),
+    "table_caster": Node(label="caster", one_of={"twin": 0.4, "single": 0.6}, choice="caster_style"),
+    "twin": Node(label="wheel"),
+    "single": Node(label="wheel"),
     "drawer": Node(label="drawer"),
     "nesting": Node(label="body", repeat={"nested": (1, 2)}),
     "nested": Node(label="table", optional={"inner": 0.5}),
     "inner": Node(label="table"),
 })
 """``shelf`` and ``lift_top`` grow on a legged table; without a lift-top its legs are telescopic.
-A storage table has 1-4 drawers; a nest has one or two tables under the top (front, back), each
+A storage table has 1-4 drawers and maybe stands on four swivel casters (a cart-style coffee table); a nest has one or two tables under the top (front, back), each
 maybe with a smaller one inside it."""
 
 PARAMS = (
@@ -77,6 +82,8 @@ PARAMS = (
           0.13, 0.2),
     Int("drawer_count", "drawers per drawer side on a table 0.7 m or wider", "", 1, 2),
     Choice("drawer_sides", "drawers in the front only or front and back", choices=("front", "both")),
+    Float("caster_radius", "wheel radius of a storage table's casters (50-75 mm furniture casters)", "m",
+          0.025, 0.0375),
     Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", 0.06, 0.18),
     Float("stand_turn", "turn limit (+-) of a pedestal top", "rad", math.pi / 2, math.pi),
     Float("base_radius", "pedestal base radius as a fraction of the width", "", 0.3, 0.42),
@@ -88,7 +95,8 @@ PARAMS = (
 )
 
 MATERIALS = {"top": "top_finish", "frame": "frame_finish", "metal": "metal_finish", "foot": "rubber",
-             "handle": "metal_finish", "strut": "brushed_metal"}
+             "handle": "metal_finish", "strut": "brushed_metal", "caster": "plastic:black|dark_grey",
+             "wheel": "rubber"}
 
 SEAT = 0.003  # a lift-top rests this far above the apron rim
 INSET_MAX = 0.2  # leg inset as a fraction of the width at most
@@ -204,13 +212,22 @@ class TableLayout(Layout):
         holes = [(-span / 2 + k * dw + 0.012, za0 + DRAWER_MARGIN, -span / 2 + (k + 1) * dw - 0.012,
                   za1 - DRAWER_MARGIN) for k in range(per)]
         frames = T.corner_frames(2 * half, 2 * half, lw / 2)
-        legs = [pc.transformed(f.matrix) for f in frames for pc in T.leg("square" if p["leg_style"] == "turned"
-                                                                          else p["leg_style"], lw / 2, za1, "frame")]
+        casters = node.one("casters")
+        c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
+        z_leg = c.stem_top + 0.001 + 0.008 if c else 0.0  # legs on a caster's top plate
+        style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
+        legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames for pc in T.leg(style, lw / 2, za1 - z_leg,
+                                                                                          "frame")]
+        if c:
+            legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
+                                   f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]
         self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", {s: holes for s in sides})
                  + legs)
         if node.one("shelf"):
             self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
-                      z=min(p["shelf_height"] * H, za0 - 0.08), shape="square")
+                      z=max(min(p["shelf_height"] * H, za0 - 0.08), z_leg + 0.03), shape="square")
+        if casters:
+            self.grow(casters, frames=frames, caster=c)
         depth = (2 * half - 2 * T.BOARD) * (0.45 if len(sides) == 2 else 0.85)
         for k, d in enumerate(node.of("drawer")):
             self.grow(d, k=k, side=sides[k // per], hole=holes[k % per], x=sides[k // per] * half, depth=depth)
@@ -226,6 +243,24 @@ class TableLayout(Layout):
         handle = handle.attached("mount", to=box.anchor("handle"))
         drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=0.75 * depth)
+
+    def casters(self, node, frames, caster):
+        for i, (n, f) in enumerate(zip(node.of("table_caster"), frames)):
+            out = f.origin / max(float(np.linalg.norm(f.origin)), 1e-9)
+            self.grow(n, tip=Frame.at(f.origin, x=(out[0], out[1], 0.0)), caster=caster, i=i)
+
+    def table_caster(self, node, tip, caster, i):
+        """A swivel caster under a leg: the fork turns about z, its wheels about their axle."""
+        f = self.place(S.fork(caster).placed(tip), f"caster_{i}")
+        self.spin("body", f.root, f.anchor("swivel"), role="swivel")
+        self.grow(node.one(node.choice), fork=f, wheels=[w.placed(tip) for w in S.wheels(caster)], i=i)
+
+    def twin(self, node, fork, wheels, i):
+        for k, w in enumerate(wheels):
+            wheel = self.place(w, f"wheel_{i}" if len(wheels) == 1 else f"wheel_{i}_{k}")
+            self.spin(fork.root, wheel.root, wheel.anchor("axle"), role="wheel")
+
+    single = twin
 
     # -- a nest of tables ---------------------------------------------------------------------------
     def nesting(self, node):

@@ -62,8 +62,8 @@ def test_parts_labels_and_model(seed):
         assert set(bp.parts) == {"body", "top"}
     assert bp.parts["top"].label in ("top", "lid")
     assert bp.parts["body"].label in ("body", "stand")
-    for part in bp.parts.values():
-        assert all(pc.convex for pc in part.pieces)
+    for part in bp.parts.values():  # a caster wheel's hub is decoration inside its tyre
+        assert all(pc.convex for pc in part.pieces) or part.label == "wheel"
     assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
     links, _ = build_model(bp, {k: 800.0 for k in bp.materials})
     assert all(link.mass > 0 for link in links)
@@ -150,7 +150,9 @@ def test_seeds_vary():
 DESIGNS = [dict(support="legs", has_lift_top=True, has_lift_forward=True, has_shelf=True),
            dict(support="legs", has_lift_top=True, has_lift_forward=False, top_shape="round"),
            dict(support="drawers", drawer_sides="both", drawer_count=2, width=0.9, has_shelf=True),
-           dict(support="drawers", drawer_sides="front", width=0.6),
+           dict(support="drawers", drawer_sides="front", width=0.6, has_casters=False),
+           dict(support="drawers", drawer_sides="front", has_casters=True, caster_style="twin", has_shelf=True),
+           dict(support="drawers", drawer_sides="both", has_casters=True, caster_style="single"),
            dict(support="nesting", nested=None, has_inner=True),
            dict(support="nesting", has_inner=False)]
 
@@ -164,6 +166,14 @@ def test_designs_move_without_collisions(over):
         n = (1 if p["width"] < 0.7 else p["drawer_count"]) * (2 if p["drawer_sides"] == "both" else 1)
         drawers = [j for j in moving if bp.parts[j.child].label == "drawer"]
         assert len(drawers) == n and all(abs(j.dofs[0].axis[0]) == pytest.approx(1.0) for j in drawers)
+    if p["support"] == "drawers":
+        casters = [j for j in moving if bp.parts[j.child].label == "caster"]
+        wheels = [j for j in moving if bp.parts[j.child].label == "wheel"]
+        assert len(casters) == (4 if p["has_casters"] else 0)
+        assert len(wheels) == len(casters) * (2 if p["caster_style"] == "twin" else 1)
+        assert all(j.kind == "continuous" for j in casters + wheels)
+        if wheels:  # the wheels carry the table
+            assert min(pc.bounds[0, 2] for j in wheels for pc in bp.parts[j.child].pieces) == pytest.approx(0, abs=1e-9)
     if p["support"] == "nesting":
         tables = [j for j in moving if bp.parts[j.child].label == "table"]
         assert 1 <= len(tables) <= 4 and all(j.kind == "prismatic" for j in tables)
