@@ -78,9 +78,10 @@ def test_joint_kinds_axes_and_limits(seed):
         if part.label == "top":  # halves slide apart along the long axis
             assert abs(d.axis[0]) == pytest.approx(1.0)
             assert d.axis[0] * np.mean([pc.bounds[:, 0].mean() for pc in part.pieces]) > 0
-        elif part.label == "drawer":  # out along the short axis
-            assert abs(d.axis[1]) == pytest.approx(1.0)
-            assert d.axis[1] * d.origin[1] > 0
+        elif part.label == "drawer":  # out along the short axis, or the long one from the ends
+            k = 0 if p["drawer_sides"] == "ends" else 1
+            assert abs(d.axis[k]) == pytest.approx(1.0)
+            assert d.axis[k] * d.origin[k] > 0
             assert any(pc.name == "handle" for pc in part.pieces)
         else:  # an adjustable leg slides up from its resting bottom
             assert part.label == "leg" and d.axis == pytest.approx((0, 0, 1))
@@ -152,9 +153,11 @@ def test_seeds_vary():
                                   dict(support="legs", has_adjustable_legs=True, has_loper=False)])
 def test_drop_leaf_table(over):
     """Two leaves hang from the narrow centre at rest and rise level on their hinges; a loper swings out
-    under each raised leaf; nothing clashes with the leaves up or down; no side drawers."""
-    p, bp = make(4, top_style="drop_leaf", has_drawers=True, **over)
-    assert not p["has_drawers"] and not any(part.label == "drawer" for part in bp.parts.values())
+    under each raised leaf; nothing clashes with the leaves up or down; drawers in the ends."""
+    p, bp = make(4, top_style="drop_leaf", has_drawers=True, drawer_sides="one", **over)
+    assert p["drawer_sides"] == "ends"  # the lopers are in the long boards
+    drawers = [j for j in movable(bp) if bp.parts[j.child].label == "drawer"]
+    assert len(drawers) == 2 and all(abs(j.dofs[0].axis[0]) == 1.0 for j in drawers)  # one in each end
     js = {j.child: j for j in movable(bp)}
     for name in ("leaf_left", "leaf_right"):
         leaf = bp.parts[name]

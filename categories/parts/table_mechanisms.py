@@ -148,3 +148,19 @@ def loper(x0: float, y_face: float, side: int, z0: float, z1: float, length: flo
     piece = g.box_between([x0 + 0.004, ys[0], z0], [x0 + length, ys[1], z1], material, bevel=0.002)
     knuckle = g.cylinder([x0, (ys[0] + ys[1]) / 2, z0], [x0, (ys[0] + ys[1]) / 2, z1], t / 2, material, 16)
     return [piece, knuckle], Frame.at((x0, (ys[0] + ys[1]) / 2, z0), z=(0, 0, side))
+
+
+def apron_rails_ends(length: float, width: float, leg_w: float, z0: float, z1: float, board: float,
+                     material: str, holes: dict[int, list]) -> list[g.Piece]:
+    """A rectangular apron like :func:`tables.apron_rails` whose end boards (x = +-length/2) carry the
+    drawer openings ``holes[+1 | -1]`` ((y0, z0, y1, z1)): drawers in the ends of a table (a Pembroke
+    or farmhouse table's end drawer)."""
+    xb = length / 2 - leg_w
+    ye = width / 2 - max(leg_w, board)
+    out = []
+    for s in (1, -1):
+        y0, y1 = sorted((s * width / 2, s * (width / 2 - board)))
+        out.append(g.box_between([-xb, y0, z0], [xb, y1, z1], material))
+        x0, x1 = sorted((s * length / 2, s * (length / 2 - board)))
+        out.append(g.panel([x0, -ye, z0], [x1, ye, z1], material, "x", holes=holes.get(s, [])))
+    return out
