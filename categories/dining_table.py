@@ -8,7 +8,7 @@ leaves (a narrow fixed centre and a leaf along each long side hanging from a rul
 raised level on a swing-out bracket (loper) that turns out of the apron side under it: a
 Pembroke / drop-leaf table). Optional mechanisms: drawers in the long apron boards, pulled out
 along Y, or in the end boards, pulled out along X (always so on a drop-leaf table, whose lopers are
-in the long boards); adjustable legs (inner legs sliding
+in the long boards); levelling feet screwed into the legs (turning about z); adjustable legs (inner legs sliding
 up in square sleeves under the apron corners, resting on the floor). A table that would grow no
 moving part gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
 """
@@ -41,7 +41,9 @@ GRAMMAR = Grammar("dining_table", {
     "drop_leaf": Node(repeat={"leaf_side": 2}),
     "leaf_side": Node(label="leaf", optional={"loper": 0.85}),
     "loper": Node(label="bracket"),
-    "legs": Node(optional={"adjustable_legs": 0.25}),
+    "legs": Node(optional={"adjustable_legs": 0.25, "levellers": 0.45}),
+    "levellers": Node(repeat={"leveller": 4}),
+    "leveller": Node(label="foot"),
     "adjustable_legs": Node(label="leg"),
     "pedestal": Node(),
     "extension": Node(label="top", required=("leaf",)),
@@ -83,7 +85,9 @@ MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_fin
 
 def has_a_moving_part(p: dict) -> dict:
     """A table whose draw grows no moving part (extension, drop leaves, drawers, adjustable legs) gets the
-    extension; a drop-leaf table's drawers are in its ends (its lopers turn out of the long apron boards)."""
+    extension; adjustable legs have no levellers; a drop-leaf table's drawers are in its ends (its lopers turn out of the long apron boards)."""
+    if p["has_adjustable_legs"]:  # inner legs stand on their own rubber feet
+        p = {**p, "has_levellers": False}
     if p["top_style"] == "drop_leaf" and p["drawer_sides"] != "ends":
         p = {**p, "drawer_sides": "ends"}
     if p["top_style"] == "fixed" and not (p["has_drawers"] or (p["support"] == "legs" and p["has_adjustable_legs"])):
@@ -98,6 +102,7 @@ CLEAR = 0.003  # drawer fronts in their openings, inner legs in their sleeves
 LEAF_T = 0.02  # stored leaf thickness
 LEAF_GAP_Y = 0.003  # a drop leaf's edge off the centre top at its rule joint
 LOPER = 0.25  # swing-out bracket length
+LEVELLER = 0.015  # levelling foot height under a leg (M8 furniture levellers: 10-20 mm)
 LEAF_GAP = 0.004  # between the leaf and the halves above it
 SLEEVE_WALL = 0.004
 DRAWER_WALL = 0.01
@@ -163,13 +168,29 @@ class TableLayout(Layout):
         corners = T.corner_frames(La, Wa, lw / 2)
         adj = node.one("adjustable_legs")
         if adj is None:
-            self.extend("body", [pc.transformed(f.matrix) for f in corners
-                                 for pc in T.leg(p["leg_style"], lw / 2, za1, "frame", kind="dining")])
+            lev = node.one("levellers")
+            z0 = LEVELLER if lev else 0.0  # the legs stand on screw-in levelling feet
+            self.extend("body", [pc.transformed(f.moved(dz=z0).matrix) for f in corners
+                                 for pc in T.leg(p["leg_style"], lw / 2, za1 - z0, "frame", kind="dining")])
+            if lev:
+                self.grow(lev, corners=corners, lw=lw)
             return
         zs0 = SLEEVE_FROM * p["height"]
         self.extend("body", [pc.transformed(f.matrix) for f in corners
                              for pc in T.square_sleeve(lw, zs0, za1, SLEEVE_WALL, "frame")])
         self.grow(adj, corners=corners, lw=lw, zs0=zs0, za1=za1)
+
+    def levellers(self, node, corners, lw):
+        for k, (n, f) in enumerate(zip(node.of("leveller"), corners)):
+            self.grow(n, k=k, at=f, lw=lw)
+
+    def leveller(self, node, k, at, lw):
+        """A levelling foot: a glide disc on a threaded stem screwed into the leg; it turns to level."""
+        r = min(0.022, 0.42 * lw)
+        pieces = [g.cylinder(at.point((0, 0, 0)), at.point((0, 0, 0.009)), r, "foot", 24),
+                  g.cylinder(at.point((0, 0, 0.009)), at.point((0, 0, LEVELLER)), 0.005, "metal", 12)]
+        self.add(f"leveller_{k}", "foot", pieces)
+        self.spin("body", f"leveller_{k}", at, role="knob")
 
     def adjustable_legs(self, node, corners, lw, zs0, za1):
         zi1 = zs0 + INNER_AT_REST

@@ -46,7 +46,7 @@ def test_parts_labels_and_model(seed):
     p, bp = make(seed)
     assert bp.root == "body"
     labels = {part.label for part in bp.parts.values()}
-    assert labels <= {"body", "top", "leaf", "drawer", "leg", "bracket"}
+    assert labels <= {"body", "top", "leaf", "drawer", "leg", "bracket", "foot"}
     assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
     assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
     links, _ = build_model(bp, {k: 700.0 for k in bp.materials})
@@ -65,6 +65,10 @@ def test_joint_kinds_axes_and_limits(seed):
         assert j.parent == "body"
         if j.child == "leaf":  # the stored extension leaf
             assert j.kind == "fixed"
+            continue
+        if part.label == "foot":  # a levelling foot turns about z under its leg
+            assert j.kind == "continuous" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+            assert min(pc.bounds[0, 2] for pc in part.pieces) == pytest.approx(0.0, abs=1e-9)
             continue
         if part.label in ("leaf", "bracket"):  # drop leaves rise level, lopers swing out under them
             d = j.dofs[0]
@@ -171,3 +175,14 @@ def test_drop_leaf_table(over):
         assert js["loper_left"].requires_open == "leaf_left"
     assert clash(bp, at([], 0.0)) == [] and clash(bp, at(list(js.values()), 1.0)) == []
     assert clash(bp, at([js["leaf_left"]], 0.5)) == []
+
+
+def test_levelling_feet():
+    p, bp = make(1, support="legs", has_adjustable_legs=False, has_levellers=True)
+    feet = [j for j in movable(bp) if bp.parts[j.child].label == "foot"]
+    assert len(feet) == 4 and all(j.kind == "continuous" and j.parent == "body" for j in feet)
+    legs = [pc for pc in bp.parts["body"].pieces if pc.bounds[0, 2] < 0.05]
+    assert legs and min(pc.bounds[0, 2] for pc in legs) == pytest.approx(0.015, abs=1e-6)  # legs on the feet
+    assert clash(bp, at([], 0.0)) == []
+    _, bp = make(1, support="legs", has_adjustable_legs=True, has_levellers=True)
+    assert not any(part.label == "foot" for part in bp.parts.values())  # inner legs have their own feet
