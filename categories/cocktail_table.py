@@ -108,6 +108,17 @@ DRAWER_CLEAR = 0.003  # drawer fronts in their openings
 DRAWER_MARGIN = 0.015  # apron board above and below the openings
 NEST_GAP = 0.012  # a nested table's top under the one above it
 NEST_LEG = 0.011  # nesting tables' leg half side (22 mm legs)
+NEST_SIZE = (0.7, 0.6)  # a nest of tables is at most 0.7 m across and 0.6 m high (IKEA VITTSJÖ 0.46-0.6 m,
+#                         West Elm / Wayfair nests 0.45-0.65 m)
+NEST_TOP = {"glass": 0.008}  # nested tables' tops: 8 mm toughened glass, else 18 mm boards
+DRAWER_DEPTH = 0.45  # coffee-table drawers run 0.3-0.45 m deep
+
+
+def nest_size(p: dict) -> dict:
+    """A nest of tables is side-table sized (``NEST_SIZE``)."""
+    if p["support"] != "nesting":
+        return p
+    return {**p, "width": min(p["width"], NEST_SIZE[0]), "height": min(p["height"], NEST_SIZE[1])}
 
 
 class TableLayout(Layout):
@@ -228,7 +239,7 @@ class TableLayout(Layout):
                       z=max(min(p["shelf_height"] * H, za0 - 0.08), z_leg + 0.03), shape="square")
         if casters:
             self.grow(casters, frames=frames, caster=c)
-        depth = (2 * half - 2 * T.BOARD) * (0.45 if len(sides) == 2 else 0.85)
+        depth = min(DRAWER_DEPTH, (2 * half - 2 * T.BOARD) * (0.45 if len(sides) == 2 else 0.85))
         for k, d in enumerate(node.of("drawer")):
             self.grow(d, k=k, side=sides[k // per], hole=holes[k % per], x=sides[k // per] * half, depth=depth)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
@@ -280,7 +291,7 @@ class TableLayout(Layout):
             depth = (0.8 if len(kids) == 1 else 0.44) * W
             x0 = -depth / 2 if len(kids) == 1 else 0.02
             self.grow(n, name=f"nested_{k}", parent="body", side=side, width=span - 0.02, depth=depth, x0=x0,
-                      height=H - tt - NEST_GAP, top_t=min(tt, 0.022))
+                      height=H - tt - NEST_GAP, top_t=NEST_TOP.get(p["top_finish"], 0.018))
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
     def nested(self, node, name, parent, side, width, depth, x0, height, top_t):
@@ -299,4 +310,5 @@ class TableLayout(Layout):
     inner = nested
 
 
-CATEGORY = Category("cocktail_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS)
+CATEGORY = Category("cocktail_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS,
+                    derive=nest_size)

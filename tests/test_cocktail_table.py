@@ -137,8 +137,10 @@ def test_overrides_drive_the_growth():
     assert len(posts) == 3
     _, bp = make(1, support="pedestal")
     assert bp.joints[0].kind == "revolute_prismatic" and bp.parts["body"].label == "stand"
-    p, _ = make(1, width=0.8, height=0.5)
+    p, _ = make(1, width=0.8, height=0.5, support="legs")
     assert (p["width"], p["height"]) == (0.8, 0.5)
+    p, _ = make(1, width=0.9, height=0.7, support="nesting")  # a nest of tables is side-table sized
+    assert (p["width"], p["height"]) == (0.7, 0.6)
 
 
 def test_seeds_vary():
