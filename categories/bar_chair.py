@@ -77,7 +77,6 @@ RING_ABOVE_HUB = 0.07  # the lowest a foot ring sits above the hub
 
 
 RING_TRAVEL = 0.1  # a drafting stool's foot ring slides this far up its column at most (Boss, Lorell stools)
-LEVER_REACH = 0.16  # the height lever's paddle from its pivot
 
 
 class StoolLayout(S.ChairNodes):
@@ -98,11 +97,20 @@ class StoolLayout(S.ChairNodes):
                              p["lift_radius"], MECHANISM)
         pieces = seat.assembly.parts[seat.assembly.root].pieces
         if lever:  # the lever is its own part (grown under the lift)
-            pieces = S.height_lever(seat, MECHANISM, LEVER_REACH)[0]
+            pieces = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())[0]
         if tilt:  # the pan and cushion are their own part (grown under the lift)
             pieces = [pc for pc in pieces if pc.material not in ("seat", "pan")]
         self.add("seat", "seat", pieces)
         return seat
+
+    def _lever_reach(self):
+        """The paddle's y, under the seat's edge (as on the office chair's seat)."""
+        w = self.p["seat_width"]
+        return 0.7 * w / 2 if self.p["seat_shape"] == "round" else w / 2 - 0.03
+
+    def _mech_y(self):
+        p = self.p
+        return S.mech_half_y(p["seat_shape"], p["seat_width"], p["seat_depth"])
 
     def seat_tilt(self, node, seat):
         """The pan and cushion tilt forward about the mechanism's front edge (a saddle / sit-stand stool)."""
@@ -136,7 +144,7 @@ class StoolLayout(S.ChairNodes):
         self.grow(node.one("lift"), base=base, seat=seat)
 
     def lever(self, node, seat):
-        _, pieces, pivot, upper = S.height_lever(seat, MECHANISM, LEVER_REACH)
+        _, pieces, pivot, upper = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())
         self.add("lever", "lever", pieces)
         self.hinge("seat", "lever", pivot, upper=upper, role="button")
 

@@ -678,17 +678,30 @@ def four_leg_frame(bearing_top: float, spread: float, z_ring: float) -> list[g.P
     return pieces
 
 
-def height_lever(seat: Seat, hm: float, reach: float) -> tuple[list[g.Piece], list[g.Piece], Frame, float]:
+def height_lever(seat: Seat, hm: float, reach: float, mech_y: float) -> tuple[list[g.Piece], list[g.Piece], Frame,
+                                                                               float]:
     """Split the seat's height lever (pieces named ``handle``) off the seat: returns what stays, the
-    lever's pieces, its pivot frame (z along +x at its inner end: a positive turn lifts the paddle) and
-    the most it turns before the paddle meets the seat pan."""
+    lever (rebuilt to start just outside the mechanism, whose side is at ``mech_y``), its pivot frame
+    (z along +x at its inner end: a positive turn lifts the paddle) and the most it turns before the
+    paddle meets the seat pan."""
     pcs = seat.assembly.parts[seat.assembly.root].pieces
-    lever = [pc for pc in pcs if pc.name == "handle"]
     stay = [pc for pc in pcs if pc.name != "handle"]
     zl = seat.z_mech0 + 0.3 * hm
+    x, y0 = seat.xc + 0.03, mech_y + GAP
+    lever = [g.cylinder([x, y0, zl], [x, max(reach, y0 + 0.05), zl], 0.0045, "handle", 12, name="handle"),
+             g.box([0.04, 0.02, 0.012], [x + 0.01, max(reach, y0 + 0.05), zl], "handle", bevel=0.003, name="handle")]
+    arm = max(reach, y0 + 0.05) - y0 + 0.01
     room = seat.z_pan0 - GAP - (zl + 0.006)
-    upper = min(0.35, math.asin(max(0.0, min(1.0, room / reach))))
-    return stay, lever, Frame.at((seat.xc + 0.03, 0.04, zl), x=(0, 1, 0), z=(1, 0, 0)), upper
+    upper = min(0.35, math.asin(max(0.0, min(1.0, room / arm))))
+    return stay, lever, Frame.at((x, y0, zl), x=(0, 1, 0), z=(1, 0, 0)), upper
+
+
+def mech_half_y(shape: str, width: float, depth: float) -> float:
+    """How far the seat mechanism reaches sideways (y) where the height lever leaves it."""
+    if shape == "round":
+        r = min(0.12, 0.6 * width / 2)
+        return math.sqrt(max(r * r - 0.03 ** 2, 0.0))
+    return min(0.2, 0.5 * width) / 2
 
 
 SEAT_TILT = 0.2  # forward seat tilt of ergonomic / saddle stools (about 10-12 degrees: Salli, Varier, Bambach)
