@@ -182,7 +182,7 @@ class ChairLayout(S.ChairNodes):
         pieces, front = S.mesh_back(frame, dims) if style == "mesh" else S.cushion_back(frame, dims)
         if style == "cushion" and node.one("lumbar"):
             pieces = pieces[:-1]  # the fixed lumbar bulge gives way to the sliding pad
-            front -= 0.015
+            front = max(float(pc.bounds[1, 0]) for pc in pieces)
         if node.one(style):
             self.grow(node.one(style), pieces=pieces)
         else:
