@@ -1,4 +1,4 @@
-"""Bar chair: a tall swivel stool on a gas lift, on a wheeled star base or a disc base with a foot ring.
+"""Bar chair: a tall swivel stool: a drafting stool on casters, a disc-base gas-lift stool, or a four-leg swivel stool.
 
 X is depth (the sitter faces +X), Y is width, Z is up. Two bases: the office chair's star base
 (5 legs, rarely 4 or 6, with swivelling casters; the wheels touch the floor) with a tall column
@@ -6,27 +6,39 @@ and an optional foot ring, or a heavy domed disc with a tall column and a foot r
 is a hollow tube in the column around a fixed piston rod, sliding up along +Z from its lowest
 (rest) position; the seat (round or square) swivels on top of it. An optional low back stands on
 a spine behind the seat, fixed or reclining (hinge behind its centre of mass, so gravity holds it
-upright). Parts: ``categories/parts/seating.py`` (shared with the office chair).
+upright). Three designs (``base_type``): ``wheeled`` (a drafting stool: the foot ring, where it
+has one, slides up and down the column), ``disc`` (a pedestal bar stool with a fixed foot ring),
+``four_leg`` (four splayed steel legs with a foot rail and a swivel bearing plate; no lift, as on
+most four-leg swivel bar stools). A gas-lift stool may have its height lever as a moving part and a
+seat that tilts forward (sit-stand stools).
+Parts: ``categories/parts/seating.py`` (shared with the office chair).
 """
 
 from __future__ import annotations
 
+import math
+
 from infmob_usd.category import Category
+from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
 
 GRAMMAR = Grammar("bar_chair", {
-    "bar_chair": Node(required=("lift", "seat"), one_of={"wheeled": 0.45, "disc": 0.55}, choice="base_type",
-                      optional={"back": 0.4}),
-    "wheeled": Node(label="base", repeat={"caster": S.legs}, optional={"foot_ring": 0.6}),
-    "disc": Node(label="base", required=("foot_ring",)),
+    "bar_chair": Node(required=("seat",), one_of={"wheeled": 0.3, "disc": 0.45, "four_leg": 0.25},
+                      choice="base_type", optional={"back": 0.45}),
+    "wheeled": Node(label="base", required=("lift",), repeat={"caster": S.legs}, optional={"ring_slide": 0.7}),
+    "disc": Node(label="base", required=("lift", "foot_ring")),
+    "four_leg": Node(label="base"),
     "foot_ring": Node(),
+    "ring_slide": Node(label="foot_ring"),
     "caster": Node(label="caster", one_of={"twin": 0.6, "single": 0.4}, choice="caster_style"),
     "twin": Node(label="wheel"),
     "single": Node(label="wheel"),
-    "lift": Node(label="lift"),
+    "lift": Node(label="lift", optional={"lever": 0.5, "seat_tilt": 0.35}),
+    "lever": Node(label="lever"),
+    "seat_tilt": Node(label="seat"),
     "seat": Node(label="seat"),
     "back": Node(label="back"),
 })
@@ -38,7 +50,8 @@ PARAMS = (
     Float("seat_thickness", "seat cushion thickness", "m", 0.035, 0.08),
     Choice("seat_shape", "seat outline", choices=("round", "square"), weights=(0.55, 0.45)),
     Int("leg_count", "legs of a wheeled base; auto = drawn, 5 on nearly every base", "", 4, 6, auto=True),
-    Float("base_radius", "caster axes (wheeled) or disc radius from the centre", "m", 0.22, 0.3),
+    Float("base_radius", "caster axes (wheeled), disc radius or leg feet (four-leg) from the centre", "m",
+          0.22, 0.3),
     Choice("leg_style", "leg shape", choices=("tapered", "straight"), weights=(0.65, 0.35)),
     Float("wheel_radius", "wheel radius", "m", 0.022, 0.03),
     Float("lift_radius", "gas lift tube radius", "m", 0.022, 0.028),
@@ -63,43 +76,105 @@ MECHANISM = 0.035  # swivel plate height under the seat pan
 RING_ABOVE_HUB = 0.07  # the lowest a foot ring sits above the hub
 
 
+RING_TRAVEL = 0.1  # a drafting stool's foot ring slides this far up its column at most (Boss, Lorell stools)
+
+
 class StoolLayout(S.ChairNodes):
     def bar_chair(self, node):
         p = self.p
-        seat = self.grow(node.one("seat"))  # first: the base's column reaches up to it
-        base = self.grow(node.one(node.choice), seat=seat)
-        self.grow(node.one("lift"), base=base, seat=seat)
+        design = node.one(node.choice)
+        lift = design.one("lift")
+        seat = self.grow(node.one("seat"), lever=bool(lift and lift.one("lever")),
+                         tilt=bool(lift and lift.one("seat_tilt")))
+        self.grow(design, seat=seat)
         if node.one("back"):
             self.grow(node.one("back"), seat=seat, hinged=p["back_mount"] == "hinged")
 
-    def seat(self, node):
+    def seat(self, node, lever, tilt):
         p = self.p
         depth = p["seat_depth"] if p["seat_shape"] == "square" else p["seat_width"]
-        return self.swivel_seat(p["seat_shape"], depth, p["seat_thickness"], 0.0, MECHANISM)
+        seat = S.swivel_seat(p["seat_height"], p["seat_width"], depth, p["seat_thickness"], p["seat_shape"], 0.0,
+                             p["lift_radius"], MECHANISM)
+        pieces = seat.assembly.parts[seat.assembly.root].pieces
+        if lever:  # the lever is its own part (grown under the lift)
+            pieces = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())[0]
+        if tilt:  # the pan and cushion are their own part (grown under the lift)
+            pieces = [pc for pc in pieces if pc.material not in ("seat", "pan")]
+        self.add("seat", "seat", pieces)
+        return seat
+
+    def _lever_reach(self):
+        """The paddle's y, under the seat's edge (as on the office chair's seat)."""
+        w = self.p["seat_width"]
+        return 0.7 * w / 2 if self.p["seat_shape"] == "round" else w / 2 - 0.03
+
+    def _mech_y(self):
+        p = self.p
+        return S.mech_half_y(p["seat_shape"], p["seat_width"], p["seat_depth"])
+
+    def seat_tilt(self, node, seat):
+        """The pan and cushion tilt forward about the mechanism's front edge (a saddle / sit-stand stool)."""
+        p = self.p
+        self.add("seat_pan", "seat", S.split_seat(seat)[1])
+        depth = p["seat_depth"] if p["seat_shape"] == "square" else p["seat_width"]
+        self.hinge("seat", "seat_pan", S.tilt_pivot(seat, p["seat_shape"], p["seat_width"], depth),
+                   upper=S.SEAT_TILT)
 
     def wheeled(self, node, seat):
-        return self._column(node, self.star_base(node), seat)
+        base = self.star_base(node)
+        self._lift(node, base, seat)
+        return self._column(node, base, seat, node.one("ring_slide"))
 
     def disc(self, node, seat):
         base = S.disc_base(self.p["base_radius"], self.p["lift_radius"] + S.GAP,
                            metal=self.p["base_finish"] != "plastic")
         self.place(base.assembly, "base")
-        return self._column(node, base, seat)
+        self._lift(node, base, seat)
+        return self._column(node, base, seat, node.one("foot_ring"))
 
-    def _column(self, node, base, seat):
+    def four_leg(self, node, seat):
         p = self.p
-        ring = node.one("foot_ring")
+        bearing = seat.lift_top - 0.03 - S.GAP
+        z_ring = max(p["seat_height"] - p["ring_drop"], S.RING_MIN)
+        z_ring = min(z_ring, bearing - 0.14)
+        self.add("base", "base", S.four_leg_frame(bearing, 0.85 * p["base_radius"] * math.sqrt(2), z_ring))
+        self.spin("base", "seat", seat.assembly.anchor("swivel"), role="swivel")
+
+    def _lift(self, node, base, seat):
+        self.grow(node.one("lift"), base=base, seat=seat)
+
+    def lever(self, node, seat):
+        _, pieces, pivot, upper = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())
+        self.add("lever", "lever", pieces)
+        self.hinge("seat", "lever", pivot, upper=upper, role="button")
+
+    def lift(self, node, base, seat):
+        super().lift(node, base, seat)
+        if node.one("lever"):
+            self.grow(node.one("lever"), seat=seat)
+        if node.one("seat_tilt"):
+            self.grow(node.one("seat_tilt"), seat=seat)
+
+    def _column(self, node, base, seat, ring):
+        p = self.p
         z_ring = max(p["seat_height"] - p["ring_drop"], base.top + RING_ABOVE_HUB, S.RING_MIN)
         top = seat.lift_top - S.COLUMN_BELOW_LIFT - p["exposed_lift"]
         if ring:
             top, z_ring = S.ring_column(top, z_ring, seat.lift_top)
         self.extend("base", S.column(base.top, top, base.bore))
         if ring:
-            self.grow(ring, z=z_ring, bore=base.bore)
+            self.grow(ring, z=z_ring, bore=base.bore, top=top)
         return base
 
-    def foot_ring(self, node, z, bore):
+    def foot_ring(self, node, z, bore, top):
         self.extend("base", S.foot_ring(z, self.p["ring_radius"], bore))
+
+    def ring_slide(self, node, z, bore, top):
+        """A drafting stool's foot ring: clamped on the column, it slides up and down it."""
+        z = min(z, top - 0.05)
+        self.add("foot_ring", "foot_ring", S.foot_ring(z, self.p["ring_radius"], bore + 0.002))
+        self.slide("base", "foot_ring", Frame.at((0, 0, z)), upper=max(0.0, min(RING_TRAVEL, top - 0.03 - z)),
+                   role="slide")
 
 
 CATEGORY = Category("bar_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, StoolLayout,

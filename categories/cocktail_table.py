@@ -1,18 +1,27 @@
-"""Cocktail (coffee) table: a round or square top on legs or on a single pedestal stand.
+"""Cocktail (coffee) table: lift-top storage, telescopic legs, pedestal, drawer table or a nest of tables.
 
 X is depth (the front faces +X), Y is width, Z is up. The top is a bevelled slab, round or
-square, ``width`` across. On legs (3 or 4; a square top has 4) under an apron, with an optional
-lower shelf, the table either has a lift-top — the legs and apron form a storage box and the top
-rises off the apron rim along +Z, or tilted toward the front as a scissor lift-top does — or
-telescopic legs: metal sleeves on the floor with posts sliding up in them, carrying the top and
-the apron (height adjustment). On a pedestal, a column carrying the top slides up out of a tube
-on a base disc and turns in it (revolute_prismatic). Every slide rests at its bottom.
-Parts: ``categories/parts/tables.py``.
+square, ``width`` across. Designs (``support``):
+- ``legs``: on legs (3 or 4; a square top has 4) under an apron, with an optional lower shelf,
+  either a lift-top (the legs and a deep apron form a storage well; the top rises along +Z, or
+  tilted toward the front, on two visible two-stage lift struts joined by a cross bar: body ->
+  lift frame -> top), or telescopic legs (metal sleeves on the floor with posts sliding up in them,
+  carrying the top and the apron);
+- ``pedestal``: a column carrying the top slides up out of a tube on a base disc and turns in it
+  (revolute_prismatic);
+- ``drawers``: a square storage table, drawers in the front (and maybe the back) of a deep apron
+  between four legs, an optional lower shelf;
+- ``nesting``: a square table on slim legs with one or two smaller tables under it that slide out
+  to the front and back, each maybe with a third nested inside it (a nest of tables).
+Every slide rests at its bottom or closed. Parts: ``categories/parts/tables.py`` and
+``table_mechanisms.py``.
 """
 
 from __future__ import annotations
 
 import math
+
+import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
@@ -21,17 +30,38 @@ from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Flag, Float, Int
 
+from .parts import hardware, panels
+from .parts import seating as S
+from .parts import table_mechanisms as M
 from .parts import tables as T
 
+def drawer_count(p, rng) -> int:
+    """drawers per side x sides (a table under 0.7 m has one drawer per side)"""
+    per = 1 if p["width"] < 0.7 else p["drawer_count"]
+    return per * (2 if p["drawer_sides"] == "both" else 1)
+
+
 GRAMMAR = Grammar("cocktail_table", {
-    "cocktail_table": Node(required=("top",), one_of={"legs": 0.6, "pedestal": 0.4}, choice="support"),
+    "cocktail_table": Node(required=("top",), one_of={"legs": 0.35, "pedestal": 0.15, "drawers": 0.25,
+                                                      "nesting": 0.25}, choice="support"),
     "top": Node(label=("top", "lid")),  # a lift-top is the lid of a storage box
     "legs": Node(label="body", optional={"shelf": 0.4, "lift_top": 0.55}),
-    "lift_top": Node(),
+    "lift_top": Node(label="lift"),
     "shelf": Node(),
     "pedestal": Node(label="stand"),
+    "drawers": Node(label="body", repeat={"drawer": drawer_count}, optional={"shelf": 0.4, "casters": 0.4}),
+    "casters": Node(repeat={"table_caster": 4}),
+    "table_caster": Node(label="caster", one_of={"twin": 0.4, "single": 0.6}, choice="caster_style"),
+    "twin": Node(label="wheel"),
+    "single": Node(label="wheel"),
+    "drawer": Node(label="drawer"),
+    "nesting": Node(label="body", repeat={"nested": (1, 2)}),
+    "nested": Node(label="table", optional={"inner": 0.5}),
+    "inner": Node(label="table"),
 })
-"""``shelf`` and ``lift_top`` grow on a legged table; without a lift-top its legs are telescopic."""
+"""``shelf`` and ``lift_top`` grow on a legged table; without a lift-top its legs are telescopic.
+A storage table has 1-4 drawers and maybe stands on four swivel casters (a cart-style coffee table); a nest has one or two tables under the top (front, back), each
+maybe with a smaller one inside it."""
 
 PARAMS = (
     Float("width", "top diameter (round) or side (square)", "m", 0.5, 1.0),
@@ -48,6 +78,12 @@ PARAMS = (
     Float("lift_travel", "how far a lift-top rises", "m", 0.12, 0.25),
     Flag("has_lift_forward", "a lift-top rises toward the front (scissor mechanism)", p=0.5),
     Float("lift_forward_ratio", "forward (+X) over upward motion of a forward lift-top", "", 0.3, 0.8),
+    Float("box_depth", "storage well (lift-top) or drawer apron depth (13-20 cm on lift-top tables)", "m",
+          0.13, 0.2),
+    Int("drawer_count", "drawers per drawer side on a table 0.7 m or wider", "", 1, 2),
+    Choice("drawer_sides", "drawers in the front only or front and back", choices=("front", "both")),
+    Float("caster_radius", "wheel radius of a storage table's casters (50-75 mm furniture casters)", "m",
+          0.025, 0.0375),
     Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", 0.06, 0.18),
     Float("stand_turn", "turn limit (+-) of a pedestal top", "rad", math.pi / 2, math.pi),
     Float("base_radius", "pedestal base radius as a fraction of the width", "", 0.3, 0.42),
@@ -58,7 +94,9 @@ PARAMS = (
     Choice("metal_finish", "sleeves, column and pedestal base", choices=("brushed_metal", "chrome", "painted")),
 )
 
-MATERIALS = {"top": "top_finish", "frame": "frame_finish", "metal": "metal_finish", "foot": "rubber"}
+MATERIALS = {"top": "top_finish", "frame": "frame_finish", "metal": "metal_finish", "foot": "rubber",
+             "handle": "metal_finish", "strut": "brushed_metal", "caster": "plastic:black|dark_grey",
+             "wheel": "rubber"}
 
 SEAT = 0.003  # a lift-top rests this far above the apron rim
 INSET_MAX = 0.2  # leg inset as a fraction of the width at most
@@ -66,6 +104,21 @@ SLEEVE_TOP = 0.7  # telescopic sleeves end at this fraction of the apron's botto
 TUBE_TOP = 0.55  # a pedestal tube ends at this fraction of the top's underside height
 POST = 0.75  # telescopic post radius as a fraction of the leg radius
 STRETCHER_Z = 0.06
+DRAWER_CLEAR = 0.003  # drawer fronts in their openings
+DRAWER_MARGIN = 0.015  # apron board above and below the openings
+NEST_GAP = 0.012  # a nested table's top under the one above it
+NEST_LEG = 0.011  # nesting tables' leg half side (22 mm legs)
+NEST_SIZE = (0.7, 0.6)  # a nest of tables is at most 0.7 m across and 0.6 m high (IKEA VITTSJÖ 0.46-0.6 m,
+#                         West Elm / Wayfair nests 0.45-0.65 m)
+NEST_TOP = {"glass": 0.008}  # nested tables' tops: 8 mm toughened glass, else 18 mm boards
+DRAWER_DEPTH = 0.45  # coffee-table drawers run 0.3-0.45 m deep
+
+
+def nest_size(p: dict) -> dict:
+    """A nest of tables is side-table sized (``NEST_SIZE``)."""
+    if p["support"] != "nesting":
+        return p
+    return {**p, "width": min(p["width"], NEST_SIZE[0]), "height": min(p["height"], NEST_SIZE[1])}
 
 
 class TableLayout(Layout):
@@ -73,10 +126,10 @@ class TableLayout(Layout):
         carried = self.grow(node.one(node.choice))
         self.grow(node.one("top"), **carried)
 
-    def top(self, node, pieces, joint, label="top"):
+    def top(self, node, pieces, joint, label="top", shape=None):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
-        slab = T.top(W, W, p["top_shape"], H - tt, H, p["bevel"] * tt, "top")
+        slab = T.top(W, W, shape or p["top_shape"], H - tt, H, p["bevel"] * tt, "top")
         self.add("top", label, [slab, *pieces])
         self.join(joint)
 
@@ -89,18 +142,15 @@ class TableLayout(Layout):
         lift = node.one("lift_top")
         rl = p["leg_radius"]
         za1 = H - tt - (SEAT if lift else 0.0)
-        za0 = za1 - p["apron_height"]
+        za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
             body = apron + [pc.transformed(f.matrix) for f in frames for pc in T.leg(p["leg_style"], rl, za1, "frame")]
             self.add("body", "body", body)
-            self.grow(lift, inset=inset, z=za0)
             if node.one("shelf"):
-                self.grow(node.one("shelf"), inset=inset, r_leg=0.8 * rl, z=p["shelf_height"] * H)
+                self.grow(node.one("shelf"), inset=inset, r_leg=0.8 * rl, z=min(p["shelf_height"] * H, za0 - 0.06))
             fwd = p["lift_forward_ratio"] if p["has_lift_forward"] else 0.0
-            at = Frame.at((0, 0, H - tt), z=(fwd, 0, 1))
-            return {"pieces": [], "label": "lid",
-                    "joint": J.prismatic("body", "top", at.origin, at.z, 0.0, p["lift_travel"], role="slide")}
+            return self.grow(lift, inset=inset, z=za0, fwd=fwd)
         # telescopic: sleeves stay, the top lifts with its apron and posts
         rp = POST * rl
         ro = rp + T.CLEAR + T.WALL
@@ -118,12 +168,27 @@ class TableLayout(Layout):
         return {"pieces": apron + posts,
                 "joint": J.prismatic("body", "top", at.origin, at.z, 0.0, travel, role="telescope")}
 
-    def lift_top(self, node, inset, z):
+    def lift_top(self, node, inset, z, fwd):
+        """The storage well's floor and the lift: two two-stage struts on the floor, their middle
+        stages joined by a cross bar (the ``lift`` part), their rods under the top."""
         p = self.p
-        self.extend("body", [T.apron_bottom(p["width"], p["top_shape"], inset, p["leg_radius"], z, "frame")])
+        W, H, tt = p["width"], p["height"], p["top_thickness"]
+        self.extend("body", [T.apron_bottom(W, p["top_shape"], inset, p["leg_radius"], z, "frame")])
+        z_floor = z + 0.012
+        half = (W / 2 - inset) * (0.7 if p["top_shape"] == "round" else 1.0) - T.BOARD
+        u = np.array([fwd, 0.0, 1.0])
+        x = -0.2 * half - 0.5 * fwd * (H - tt - z_floor)  # tilted struts lean forward across the centre
+        ys = (0.5 * half, -0.5 * half)
+        sleeves, middle, rods, t1, t2 = M.lift_struts(ys, x, z_floor, H - tt, u, p["lift_travel"], "strut")
+        self.extend("body", sleeves)
+        self.add("lift_frame", "lift", middle)
+        at = Frame.at((0, 0, H - tt), z=u)
+        self.join(J.prismatic("body", "lift_frame", at.origin, at.z, 0.0, t1, role="slide"))
+        return {"pieces": rods, "label": "lid",
+                "joint": J.prismatic("lift_frame", "top", at.origin, at.z, 0.0, t2, role="slide")}
 
-    def shelf(self, node, inset, r_leg, z):
-        self.extend("body", [T.shelf(self.p["width"], self.p["top_shape"], inset, r_leg, z, "top")])
+    def shelf(self, node, inset, r_leg, z, shape=None):
+        self.extend("body", [T.shelf(self.p["width"], shape or self.p["top_shape"], inset, r_leg, z, "top")])
 
     def pedestal(self, node):
         p = self.p
@@ -142,5 +207,108 @@ class TableLayout(Layout):
             "body", "top", at.origin, at.z, (-p["stand_turn"], p["stand_turn"]), at.z, (0.0, travel),
             role="telescope")}
 
+    # -- storage table with drawers --------------------------------------------------------------
+    def drawers(self, node):
+        p = self.p
+        W, H, tt = p["width"], p["height"], p["top_thickness"]
+        inset = min(p["leg_inset"], INSET_MAX * W)
+        lw = 2 * p["leg_radius"] + 0.01  # square legs a little stouter than the rails
+        half = W / 2 - inset + lw / 2
+        za1 = H - tt
+        za0 = za1 - p["box_depth"]
+        sides = (1, -1) if p["drawer_sides"] == "both" else (1,)
+        per = len(node.of("drawer")) // len(sides)
+        span = 2 * (half - lw)
+        dw = span / per
+        holes = [(-span / 2 + k * dw + 0.012, za0 + DRAWER_MARGIN, -span / 2 + (k + 1) * dw - 0.012,
+                  za1 - DRAWER_MARGIN) for k in range(per)]
+        frames = T.corner_frames(2 * half, 2 * half, lw / 2)
+        casters = node.one("casters")
+        c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
+        z_leg = c.stem_top + 0.001 + 0.008 if c else 0.0  # legs on a caster's top plate
+        style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
+        legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames for pc in T.leg(style, lw / 2, za1 - z_leg,
+                                                                                          "frame")]
+        if c:
+            legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
+                                   f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]
+        self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", {s: holes for s in sides})
+                 + legs)
+        if node.one("shelf"):
+            self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
+                      z=max(min(p["shelf_height"] * H, za0 - 0.08), z_leg + 0.03), shape="square")
+        if casters:
+            self.grow(casters, frames=frames, caster=c)
+        depth = min(DRAWER_DEPTH, (2 * half - 2 * T.BOARD) * (0.45 if len(sides) == 2 else 0.85))
+        for k, d in enumerate(node.of("drawer")):
+            self.grow(d, k=k, side=sides[k // per], hole=holes[k % per], x=sides[k // per] * half, depth=depth)
+        return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
-CATEGORY = Category("cocktail_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS)
+    def drawer(self, node, k, side, hole, x, depth):
+        y0, z0, y1, z1 = hole
+        w, h = y1 - y0 - 2 * DRAWER_CLEAR, z1 - z0 - 2 * DRAWER_CLEAR
+        face = Frame.at((x, (y0 + y1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
+        box = panels.drawer_box(w, h, depth, T.BOARD, 0.01, "frame").attached("slide", to=face)
+        handle = hardware.knob_handle(min(0.015, 0.3 * h), 0.025, "handle") if w < 0.3 else \
+            hardware.bar_handle(min(0.14, 0.5 * w), "handle")
+        handle = handle.attached("mount", to=box.anchor("handle"))
+        drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
+        self.slide("body", drawer.root, drawer.anchor("slide"), upper=0.75 * depth)
+
+    def casters(self, node, frames, caster):
+        for i, (n, f) in enumerate(zip(node.of("table_caster"), frames)):
+            out = f.origin / max(float(np.linalg.norm(f.origin)), 1e-9)
+            self.grow(n, tip=Frame.at(f.origin, x=(out[0], out[1], 0.0)), caster=caster, i=i)
+
+    def table_caster(self, node, tip, caster, i):
+        """A swivel caster under a leg: the fork turns about z, its wheels about their axle."""
+        f = self.place(S.fork(caster).placed(tip), f"caster_{i}")
+        self.spin("body", f.root, f.anchor("swivel"), role="swivel")
+        self.grow(node.one(node.choice), fork=f, wheels=[w.placed(tip) for w in S.wheels(caster)], i=i)
+
+    def twin(self, node, fork, wheels, i):
+        for k, w in enumerate(wheels):
+            wheel = self.place(w, f"wheel_{i}" if len(wheels) == 1 else f"wheel_{i}_{k}")
+            self.spin(fork.root, wheel.root, wheel.anchor("axle"), role="wheel")
+
+    single = twin
+
+    # -- a nest of tables ---------------------------------------------------------------------------
+    def nesting(self, node):
+        p = self.p
+        W, H, tt = p["width"], p["height"], p["top_thickness"]
+        r = NEST_LEG + 0.003
+        a = W / 2 - r - 0.01
+        legs = [g.box_between([sx * a - r, sy * a - r, 0.0], [sx * a + r, sy * a + r, H - tt], "frame", bevel=0.002)
+                for sx in (-1, 1) for sy in (-1, 1)]
+        rails = [g.box_between([-a + r, sy * a - 0.008, H - tt - 0.05], [a - r, sy * a + 0.008, H - tt], "frame")
+                 for sy in (-1, 1)]
+        self.add("body", "body", legs + rails)
+        span = 2 * (a - r) - 0.016  # between the legs and rails, along y
+        kids = node.of("nested")
+        for k, n in enumerate(kids):
+            side = 1 if k == 0 else -1
+            depth = (0.8 if len(kids) == 1 else 0.44) * W
+            x0 = -depth / 2 if len(kids) == 1 else 0.02
+            self.grow(n, name=f"nested_{k}", parent="body", side=side, width=span - 0.02, depth=depth, x0=x0,
+                      height=H - tt - NEST_GAP, top_t=NEST_TOP.get(p["top_finish"], 0.018))
+        return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
+
+    def nested(self, node, name, parent, side, width, depth, x0, height, top_t):
+        """One table of the nest, sliding out along ``side`` * x; its own nested table inside it."""
+        pieces, span = M.nesting_table(width, depth, height, top_t, NEST_LEG, x0, "top", "frame")
+        if side < 0:
+            pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
+        self.add(name, "table", pieces)
+        self.slide(parent, name, Frame.at((side * (x0 + depth), 0, height / 2), z=(side, 0, 0)),
+                   upper=0.95 * depth, role="slide")
+        if node.one("inner"):
+            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, width=span - 0.02,
+                      depth=0.85 * depth, x0=x0 + 0.04 * depth, height=height - top_t - NEST_GAP,
+                      top_t=top_t)
+
+    inner = nested
+
+
+CATEGORY = Category("cocktail_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS,
+                    derive=nest_size)

@@ -1,15 +1,21 @@
-"""Dining table: a rectangular or oval top on an apron, on 4 legs or a pedestal.
+"""Dining table: a fixed, extending or drop-leaf top on an apron, on 4 legs or a pedestal.
 
 X is the long axis (``length``), Y the short axis (``width``), Z is up. The top overhangs an
 apron of four boards on 4 legs at its corners (tapered, turned or square) or on one pedestal
-(two, trestle style, on a table longer than 1.9 m). Optional mechanisms: an extension (the top
-is two halves split at x = 0 sliding apart along X over a leaf stored in the apron); drawers in
-the long apron boards, pulled out along Y; adjustable legs (inner legs sliding up in square
-sleeves under the apron corners, resting on the floor). A table that would grow no moving part
-gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
+(two, trestle style, on a table longer than 1.9 m). The top (``top_style``) is fixed, extends
+(two halves split at x = 0 sliding apart along X over a leaf stored in the apron) or has drop
+leaves (a narrow fixed centre and a leaf along each long side hanging from a rule-joint hinge,
+raised level on a swing-out bracket (loper) that turns out of the apron side under it: a
+Pembroke / drop-leaf table). Optional mechanisms: drawers in the long apron boards, pulled out
+along Y, or in the end boards, pulled out along X (always so on a drop-leaf table, whose lopers are
+in the long boards); levelling feet screwed into the legs (turning about z); adjustable legs (inner legs sliding
+up in square sleeves under the apron corners, resting on the floor). A table that would grow no
+moving part gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
 """
 
 from __future__ import annotations
+
+import math
 
 from infmob_usd import geometry as g
 from infmob_usd.category import Category
@@ -18,18 +24,26 @@ from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import hardware, panels
+from .parts import table_mechanisms as M
 from .parts import tables as T
 
 
 def drawer_count(p, rng) -> int:
-    """drawer_count per side x sides"""
-    return p["drawer_count"] * (2 if p["drawer_sides"] == "both" else 1)
+    """drawer_count per long side x sides, or one in each end"""
+    return (1 if p["drawer_sides"] == "ends" else p["drawer_count"]) * (1 if p["drawer_sides"] == "one" else 2)
 
 
 GRAMMAR = Grammar("dining_table", {
     "dining_table": Node(label="body", one_of={"legs": 0.7, "pedestal": 0.3}, choice="support",
-                         optional={"extension": 0.6, "drawers": 0.4}),
-    "legs": Node(optional={"adjustable_legs": 0.25}),
+                         optional={"drawers": 0.4}, required=("top_style",)),
+    "top_style": Node(one_of={"fixed": 0.3, "extension": 0.45, "drop_leaf": 0.25}, choice="top_style"),
+    "fixed": Node(),
+    "drop_leaf": Node(repeat={"leaf_side": 2}),
+    "leaf_side": Node(label="leaf", optional={"loper": 0.85}),
+    "loper": Node(label="bracket"),
+    "legs": Node(optional={"adjustable_legs": 0.25, "levellers": 0.45}),
+    "levellers": Node(repeat={"leveller": 4}),
+    "leveller": Node(label="foot"),
     "adjustable_legs": Node(label="leg"),
     "pedestal": Node(),
     "extension": Node(label="top", required=("leaf",)),
@@ -49,10 +63,13 @@ PARAMS = (
     Float("apron_height", "apron height (raised to fit a leaf and drawers)", "m", 0.08, 0.14),
     Choice("leg_style", "leg shape", choices=("tapered", "turned", "square"), weights=(0.4, 0.35, 0.25)),
     Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", 0.05, 0.09),
+    Float("leaf_fraction", "a drop leaf's width as a fraction of the table width (leaves of 20-34 cm)", "",
+          0.2, 0.28),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
           "", 0.25, 0.4),
     Int("drawer_count", "drawers per drawer side", "", 1, 2),
-    Choice("drawer_sides", "drawers in one long side (+Y) or both", choices=("one", "both")),
+    Choice("drawer_sides", "drawers in one long side (+Y), both long sides, or both ends (X)",
+           choices=("one", "both", "ends"), weights=(0.4, 0.35, 0.25)),
     Choice("handle_style", "drawer handle", choices=("knob", "bar"), weights=(0.55, 0.45)),
     Float("leg_travel", "how far an adjustable inner leg slides up", "m", 0.03, 0.1),
     Float("pedestal_radius", "pedestal column radius", "m", 0.05, 0.09),
@@ -67,9 +84,14 @@ MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_fin
 
 
 def has_a_moving_part(p: dict) -> dict:
-    """A table whose draw grows no moving part (extension, drawers, adjustable legs) gets the extension."""
-    if not (p["has_drawers"] or (p["support"] == "legs" and p["has_adjustable_legs"])):
-        p = {**p, "has_extension": True}
+    """A table whose draw grows no moving part (extension, drop leaves, drawers, adjustable legs) gets the
+    extension; adjustable legs have no levellers; a drop-leaf table's drawers are in its ends (its lopers turn out of the long apron boards)."""
+    if p["has_adjustable_legs"]:  # inner legs stand on their own rubber feet
+        p = {**p, "has_levellers": False}
+    if p["top_style"] == "drop_leaf" and p["drawer_sides"] != "ends":
+        p = {**p, "drawer_sides": "ends"}
+    if p["top_style"] == "fixed" and not (p["has_drawers"] or (p["support"] == "legs" and p["has_adjustable_legs"])):
+        p = {**p, "top_style": "extension"}
     return p
 
 
@@ -78,6 +100,9 @@ SPLIT = 0.004  # gap between the two halves at rest
 BOARD = 0.02  # apron board thickness
 CLEAR = 0.003  # drawer fronts in their openings, inner legs in their sleeves
 LEAF_T = 0.02  # stored leaf thickness
+LEAF_GAP_Y = 0.003  # a drop leaf's edge off the centre top at its rule joint
+LOPER = 0.25  # swing-out bracket length
+LEVELLER = 0.015  # levelling foot height under a leg (M8 furniture levellers: 10-20 mm)
 LEAF_GAP = 0.004  # between the leaf and the halves above it
 SLEEVE_WALL = 0.004
 DRAWER_WALL = 0.01
@@ -95,32 +120,46 @@ class TableLayout(Layout):
     def dining_table(self, node):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
-        support, ext, drawers = node.one(node.choice), node.one("extension"), node.one("drawers")
+        support, drawers = node.one(node.choice), node.one("drawers")
+        style = node.one("top_style")
+        ext = style.one("extension")
+        leaves = style.one("drop_leaf")
         if p["top_shape"] == "oval":
             La, Wa = OVAL_APRON * L, OVAL_APRON * W
         else:
             La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
+        wc = W * (1 - 2 * p["leaf_fraction"])  # a drop-leaf table's fixed centre
+        if leaves:  # the apron and the folded lopers stay inside the hanging leaves
+            Wa = min(Wa, wc - 2 * (LEAF_GAP_Y + 0.026))
         lw = p["leg_width"] if p["support"] == "legs" else 0.0
         za1 = H - tt - (SEAT if ext else 0.0)
         leaf = (za1 - LEAF_GAP - LEAF_T, za1 - LEAF_GAP)
         need = 2 * MARGIN + DRAWER_MIN + (LEAF_T + 0.01 if ext else 0.0) if drawers else DRAWER_MIN
         za0 = za1 - max(p["apron_height"], need)
         x_in = La / 2 - max(lw, BOARD)  # free length between the legs (half)
-        holes = self._holes(x_in, za0, (leaf[0] - 0.006) if ext else za1 - MARGIN) if drawers else []
-        sides = (1, -1) if p["drawer_sides"] == "both" else (1,)
-        body = T.apron_rails(La, Wa, lw, za0, za1, BOARD, "frame", {s: holes for s in sides})
-        if not ext:
+        ends = p["drawer_sides"] == "ends"
+        span = Wa / 2 - max(lw, BOARD) if ends else x_in
+        holes = self._holes(span, za0, (leaf[0] - 0.006) if ext else za1 - MARGIN) if drawers else []
+        sides = (1,) if p["drawer_sides"] == "one" else (1, -1)
+        if ends:
+            body = M.apron_rails_ends(La, Wa, lw, za0, za1, BOARD, "frame", {s: holes for s in sides})
+        else:
+            body = T.apron_rails(La, Wa, lw, za0, za1, BOARD, "frame", {s: holes for s in sides})
+        if leaves:
+            xy = T.outline(L, W, p["top_shape"], 192)
+            body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, 0.15 * tt, "top"))
+        elif not ext:
             body.append(T.top(L, W, p["top_shape"], H - tt, H, 0.2 * tt, "top"))
         self.add("body", "body", body)
         self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
-        if ext:
-            self.grow(ext, x_in=x_in, La=La, Wa=Wa, leaf=leaf)
+        self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
         if drawers:
-            self.grow(drawers, slots=[(s, h) for s in sides for h in holes], Wa=Wa, sides=len(sides))
+            self.grow(drawers, slots=[(s, h) for s in sides for h in holes], Wa=Wa, La=La, sides=len(sides))
 
     def _holes(self, x_in, z0, z1):
-        n = self.p["drawer_count"]
-        dw = min(DRAWER_WIDTH, 2 * x_in / n - 0.1)
+        ends = self.p["drawer_sides"] == "ends"
+        n = 1 if ends else self.p["drawer_count"]
+        dw = min(DRAWER_WIDTH, 2 * x_in / n - (0.05 if ends else 0.1))
         xs = [0.0] if n == 1 else [-x_in / 2, x_in / 2]
         return [(x - dw / 2, z0 + MARGIN, x + dw / 2, z1) for x in xs]
 
@@ -129,13 +168,29 @@ class TableLayout(Layout):
         corners = T.corner_frames(La, Wa, lw / 2)
         adj = node.one("adjustable_legs")
         if adj is None:
-            self.extend("body", [pc.transformed(f.matrix) for f in corners
-                                 for pc in T.leg(p["leg_style"], lw / 2, za1, "frame", kind="dining")])
+            lev = node.one("levellers")
+            z0 = LEVELLER if lev else 0.0  # the legs stand on screw-in levelling feet
+            self.extend("body", [pc.transformed(f.moved(dz=z0).matrix) for f in corners
+                                 for pc in T.leg(p["leg_style"], lw / 2, za1 - z0, "frame", kind="dining")])
+            if lev:
+                self.grow(lev, corners=corners, lw=lw)
             return
         zs0 = SLEEVE_FROM * p["height"]
         self.extend("body", [pc.transformed(f.matrix) for f in corners
                              for pc in T.square_sleeve(lw, zs0, za1, SLEEVE_WALL, "frame")])
         self.grow(adj, corners=corners, lw=lw, zs0=zs0, za1=za1)
+
+    def levellers(self, node, corners, lw):
+        for k, (n, f) in enumerate(zip(node.of("leveller"), corners)):
+            self.grow(n, k=k, at=f, lw=lw)
+
+    def leveller(self, node, k, at, lw):
+        """A levelling foot: a glide disc on a threaded stem screwed into the leg; it turns to level."""
+        r = min(0.022, 0.42 * lw)
+        pieces = [g.cylinder(at.point((0, 0, 0)), at.point((0, 0, 0.009)), r, "foot", 24),
+                  g.cylinder(at.point((0, 0, 0.009)), at.point((0, 0, LEVELLER)), 0.005, "metal", 12)]
+        self.add(f"leveller_{k}", "foot", pieces)
+        self.spin("body", f"leveller_{k}", at, role="knob")
 
     def adjustable_legs(self, node, corners, lw, zs0, za1):
         zi1 = zs0 + INNER_AT_REST
@@ -150,7 +205,35 @@ class TableLayout(Layout):
         p = self.p
         self.extend("body", T.pedestals(p["length"], La, Wa, p["width"], p["pedestal_radius"], za0 - 0.002, "frame"))
 
-    def extension(self, node, x_in, La, Wa, leaf):
+    def top_style(self, node, **slot):
+        self.grow(node.one(node.choice), **slot)
+
+    def fixed(self, node, **slot):
+        self.extend("body", [])  # the top is the body's (built with it)
+
+    def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
+        for side, n in zip((1, -1), node.of("leaf_side")):
+            self.grow(n, side=side, wc=wc, za0=za0, za1=za1, Wa=Wa, La=La)
+
+    def leaf_side(self, node, side, wc, za0, za1, Wa, La):
+        p = self.p
+        L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
+        name = "leaf_left" if side > 0 else "leaf_right"
+        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], 192), side, wc / 2 + LEAF_GAP_Y, H - tt, H, "top")
+        self.add(name, "leaf", [piece])
+        self.hinge("body", name, hinge, upper=math.pi / 2)
+        if node.one("loper"):
+            self.grow(node.one("loper"), side=side, leaf=name, Wa=Wa, La=La, za0=za0, za1=za1,
+                      reach=wc / 2 + 0.8 * (W - wc) / 2)
+
+    def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
+        length = min(LOPER, 0.4 * La, reach - Wa / 2)  # swung out, it ends under the leaf
+        pieces, hinge = M.loper(-length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
+        name = f"loper_{'left' if side > 0 else 'right'}"
+        self.add(name, "bracket", pieces)
+        self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
+
+    def extension(self, node, x_in, La, Wa, leaf, **slot):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         travel = p["extension_fraction"] * La / 2
@@ -164,15 +247,22 @@ class TableLayout(Layout):
         self.add("leaf", "leaf", [g.box_between(lo, hi, "top")])
         self.fix("body", "leaf")
 
-    def drawers(self, node, slots, Wa, sides):
-        depth = min(DRAWER_DEPTH, (Wa - 2 * BOARD) * (0.45 if sides == 2 else 0.8))
+    def drawers(self, node, slots, Wa, La, sides):
+        ends = self.p["drawer_sides"] == "ends"
+        if ends:
+            depth = min(DRAWER_DEPTH, (La - 2 * BOARD) * 0.45)
+        else:
+            depth = min(DRAWER_DEPTH, (Wa - 2 * BOARD) * (0.45 if sides == 2 else 0.8))
         for k, (d, (s, hole)) in enumerate(zip(node.of("drawer"), slots)):
-            self.grow(d, k=k, side=s, hole=hole, y=s * Wa / 2, depth=depth)
+            self.grow(d, k=k, side=s, hole=hole, at=s * (La if ends else Wa) / 2, depth=depth, ends=ends)
 
-    def drawer(self, node, k, side, hole, y, depth):
-        x0, z0, x1, z1 = hole
-        w, h = x1 - x0 - 2 * CLEAR, z1 - z0 - 2 * CLEAR
-        face = Frame.at(((x0 + x1) / 2, y, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
+    def drawer(self, node, k, side, hole, at, depth, ends):
+        a0, z0, a1, z1 = hole
+        w, h = a1 - a0 - 2 * CLEAR, z1 - z0 - 2 * CLEAR
+        if ends:
+            face = Frame.at((at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
+        else:
+            face = Frame.at(((a0 + a1) / 2, at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
         box = panels.drawer_box(w, h, depth, BOARD, DRAWER_WALL, "frame").attached("slide", to=face)
         if self.p["handle_style"] == "knob":
             handle = hardware.knob_handle(min(0.016, 0.3 * h), 0.025, "handle")

@@ -1,4 +1,4 @@
-"""Office chair: a wheeled star base, a gas lift, a swivelling seat, a reclining back and 4D arms.
+"""Office chair: task, executive, mesh or drafting chair on a wheeled star base with a gas lift and swivel.
 
 X is depth (the sitter faces +X), Y is width, Z is up. The base is a hub with 5 legs (rarely 4
 or 6); at the tip of every leg a caster swivels about a vertical axis, carrying one wheel or a
@@ -9,6 +9,15 @@ up along +Z from its lowest (rest) position. On top of it the seat swivels about
 hangs on a spine whose recline hinge is behind the backrest's centre of mass, so gravity holds
 it upright against its stop. Each arm is a hollow post sliding up over a bar under the seat, a
 carriage on top that slides along X and turns about Z, and a pad that turns about Z on it.
+
+Four designs (``design``), each with its own structure:
+- task: a cushion (or mesh) back, optionally a lumbar pad sliding up and down and an adjustable headrest;
+- executive: a tall, thick upholstered back with a headrest that slides up on a stalk;
+- mesh: a framed mesh back with a sliding lumbar pad, optionally the adjustable headrest;
+- drafting: a tall chair (seat 0.62-0.78 m) with a foot ring that slides up and down the column,
+  an optional low back.
+Any design may have a tilt-tension knob (turning, under the seat's front), a seat slider (pan and cushion slide forward on the mechanism) and arms of one
+style: 4D (height, slide, turn, pad turn), height-only, fixed, or flip-up (turn up about a rear pivot).
 Parts: ``categories/parts/seating.py`` (shared with the bar chair).
 """
 
@@ -16,27 +25,46 @@ from __future__ import annotations
 
 from infmob_usd import joints as J
 from infmob_usd.category import Category
+from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
 
 GRAMMAR = Grammar("office_chair", {
-    "office_chair": Node(required=("base", "lift", "seat"), optional={"back": 0.92, "arms": 0.8}),
+    "office_chair": Node(required=("base", "lift", "seat"), optional={"arms": 0.75},
+                         one_of={"task": 0.4, "executive": 0.2, "mesh_chair": 0.25, "drafting": 0.15},
+                         choice="design"),
     "base": Node(label="base", repeat={"caster": S.legs}),
     "caster": Node(label="caster", one_of={"twin": 0.6, "single": 0.4}, choice="caster_style"),
     "twin": Node(label="wheel"),
     "single": Node(label="wheel"),
     "lift": Node(label="lift"),
-    "seat": Node(label="seat"),
-    "back": Node(label="back", one_of={"cushion": 0.6, "mesh": 0.4}, choice="back_style",
-                 optional={"headrest": 0.25}),
-    "cushion": Node(), "mesh": Node(), "headrest": Node(),
+    "seat": Node(label="seat", optional={"seat_slider": 0.5, "tension_knob": 0.5}),
+    "tension_knob": Node(label="knob"),
+    "seat_slider": Node(label="seat"),
+    "task": Node(required=("back",)),
+    "executive": Node(required=("high_back",)),
+    "mesh_chair": Node(required=("mesh_back",)),
+    "drafting": Node(required=("foot_ring",), optional={"back": 0.6}),
+    "back": Node(label="back", one_of={"cushion": 0.7, "mesh": 0.3}, choice="back_style",
+                 optional={"headrest": 0.3, "lumbar": 0.45}),
+    "high_back": Node(label="back", required=("headrest",)),
+    "mesh_back": Node(label="back", required=("lumbar",), optional={"headrest": 0.3}),
+    "cushion": Node(), "mesh": Node(),
+    "headrest": Node(label="headrest"),
+    "lumbar": Node(label="lumbar"),
+    "foot_ring": Node(label="foot_ring"),
     "arms": Node(repeat={"arm": 2}),
-    "arm": Node(label="arm", required=("arm_slider",)),
+    "arm": Node(label="arm", one_of={"arm_4d": 0.45, "arm_height": 0.2, "arm_fixed": 0.15, "arm_flip": 0.2},
+                choice="arm_style"),
+    "arm_4d": Node(required=("arm_slider",)),
+    "arm_height": Node(), "arm_fixed": Node(), "arm_flip": Node(),
     "arm_slider": Node(label="arm", required=("arm_pad",)),
     "arm_pad": Node(label="armrest"),
 })
+"""Design shares: task chairs are most of the market, then mesh and executive chairs, drafting chairs
+a niche; arm styles: 4D arms on most mid-range task chairs, flip-up arms on desk-sharing chairs."""
 
 PARAMS = (
     Float("seat_height", "seat top above the floor at rest (lift down)", "m", 0.4, 0.55),
@@ -49,7 +77,10 @@ PARAMS = (
     Float("wheel_radius", "wheel radius", "m", 0.024, 0.034),
     Float("lift_radius", "gas lift tube radius", "m", 0.022, 0.028),
     Float("lift_travel", "gas lift stroke (capped where the column is short)", "m", 0.06, 0.1),
-    Float("back_height", "backrest height", "m", 0.3, 0.55),
+    Float("back_height", "backrest height (an executive back: 0.62-0.75 m)", "m", 0.3, 0.55),
+    Float("draft_seat_height", "seat top of a drafting chair at rest (BIFMA counter-height task chairs)", "m",
+          0.62, 0.78),
+    Float("ring_radius", "drafting chair foot ring radius (0.40-0.50 m rings)", "m", 0.2, 0.25),
     Float("back_width", "backrest width as a fraction of the seat width", "", 0.75, 0.95),
     Float("back_thickness", "backrest thickness", "m", 0.04, 0.075),
     Float("back_gap", "backrest bottom above the seat top", "m", 0.04, 0.1),
@@ -68,6 +99,14 @@ PARAMS = (
     Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=(0.6, 0.4)),
 )
 
+def drafting_height(p: dict) -> dict:
+    """A drafting chair's seat is ``draft_seat_height`` high."""
+    return {**p, "seat_height": p["draft_seat_height"]} if p["design"] == "drafting" else p
+
+
+EXEC_BACK = (0.62, 0.75)  # executive high backs: 0.62-0.75 m (Herman Miller Embody/Eames executive, Steelcase)
+EXEC_THICK = 0.09
+RING_TRAVEL = 0.12  # drafting chair foot ring height adjustment (Boss, Lorell drafting stools: about 0.1-0.15 m)
 MECHANISM = 0.04  # height of the tilt mechanism under the seat pan
 SEAT_AHEAD = 0.02  # the seat sits a little forward of the column
 
@@ -77,7 +116,7 @@ class ChairLayout(S.ChairNodes):
         base = self.grow(node.one("base"))
         seat = self.grow(node.one("seat"), base=base)
         self.grow(node.one("lift"), base=base, seat=seat)
-        front = self.grow(node.one("back"), seat=seat) if node.one("back") else None
+        front = self.grow(node.one(node.choice), seat=seat, base=base)
         if node.one("arms"):
             self.grow(node.one("arms"), seat=seat, back_front=front)
 
@@ -87,8 +126,104 @@ class ChairLayout(S.ChairNodes):
     def seat(self, node, base):
         p = self.p
         thick = S.seat_thickness(p["seat_height"], p["seat_thickness"], base.top, MECHANISM)
-        return self.swivel_seat("square", p["seat_depth"], thick, SEAT_AHEAD, MECHANISM)
+        seat = S.swivel_seat(p["seat_height"], p["seat_width"], p["seat_depth"], thick, "square", SEAT_AHEAD,
+                             p["lift_radius"], MECHANISM)
+        if node.one("seat_slider"):
+            stay, moving = S.split_seat(seat)
+            self.add("seat", "seat", stay)
+            self.grow(node.one("seat_slider"), seat=seat, pieces=moving)
+        else:
+            self.place(seat.assembly, "seat")
+        if node.one("tension_knob"):
+            self.grow(node.one("tension_knob"), seat=seat)
+        return seat
 
+    def tension_knob(self, node, seat):
+        pieces, axis = S.tension_knob(seat, self.p["seat_depth"], MECHANISM)
+        self.add("tension_knob", "knob", pieces)
+        self.spin("seat", "tension_knob", axis, role="knob")
+
+    def seat_slider(self, node, seat, pieces):
+        """The pan and cushion slide forward on rails of the mechanism (seat depth adjustment)."""
+        self.add("seat_pan", "seat", pieces)
+        self.slide("seat", "seat_pan", Frame.at((seat.xc, 0, seat.z_pan0), z=(1, 0, 0)), upper=S.SEAT_SLIDE)
+
+    # -- designs: each returns the back's front x (None: no back) -----------------------------------
+    def task(self, node, seat, base):
+        return self.grow(node.one("back"), seat=seat)
+
+    def drafting(self, node, seat, base):
+        self.grow(node.one("foot_ring"), seat=seat, base=base)
+        return self.grow(node.one("back"), seat=seat) if node.one("back") else None
+
+    def executive(self, node, seat, base):
+        return self.grow(node.one("high_back"), seat=seat)
+
+    def mesh_chair(self, node, seat, base):
+        return self.grow(node.one("mesh_back"), seat=seat)
+
+    def back(self, node, seat, hinged=True):
+        return self._styled_back(node, seat, self.back_dims(), node.choice)
+
+    def high_back(self, node, seat):
+        p = self.p
+        lo, hi = EXEC_BACK
+        dims = S.BackDims(lo + (hi - lo) * (p["back_height"] - 0.3) / 0.25, p["back_width"] * p["seat_width"],
+                          max(p["back_thickness"], EXEC_THICK), p["back_gap"])
+        return self._styled_back(node, seat, dims, "cushion")
+
+    def mesh_back(self, node, seat):
+        return self._styled_back(node, seat, self.back_dims(), "mesh")
+
+    def _styled_back(self, node, seat, dims, style):
+        frame = S.back_frame(seat, self.p["seat_height"], dims)
+        self.extend("seat", frame.bracket)
+        self.add("back", "back", frame.spine)
+        pieces, front = S.mesh_back(frame, dims) if style == "mesh" else S.cushion_back(frame, dims)
+        if style == "cushion" and node.one("lumbar"):
+            pieces = pieces[:-1]  # the fixed lumbar bulge gives way to the sliding pad
+            front = max(float(pc.bounds[1, 0]) for pc in pieces)
+        if node.one(style):
+            self.grow(node.one(style), pieces=pieces)
+        else:
+            self.extend("back", pieces)
+        self.hinge("seat", "back", frame.hinge, upper=self.p["recline"])
+        reach = front
+        if node.one("lumbar"):
+            reach = max(reach, self.grow(node.one("lumbar"), frame=frame, dims=dims, front=front))
+        if node.one("headrest"):
+            reach = max(reach, self.grow(node.one("headrest"), frame=frame, dims=dims))
+        return reach
+
+    def cushion(self, node, pieces):
+        self.extend("back", pieces)
+
+    mesh = cushion
+
+    def headrest(self, node, frame, dims):
+        pieces, slide, tilt = S.adjustable_headrest(frame, dims)
+        self.extend("back", S.headrest_sleeve(frame))
+        self.add("headrest", "headrest", pieces)
+        self.slide("back", "headrest", slide, upper=S.HEADREST_TRAVEL)  # gravity holds it at its lowest
+        return frame.x_spine + 0.06
+
+    def lumbar(self, node, frame, dims, front):
+        pieces, at = S.lumbar_pad(frame, dims, front)
+        self.add("lumbar", "lumbar", pieces)
+        self.slide("back", "lumbar", at, upper=min(S.LUMBAR_TRAVEL, 0.3 * dims.height))
+        return front + S.GAP + 0.018
+
+    def foot_ring(self, node, seat, base):
+        """A chrome foot ring clamped on a column sleeve; it slides up and down the sleeve."""
+        p = self.p
+        top = seat.lift_top - S.COLUMN_BELOW_LIFT - 0.04
+        self.extend("base", S.column(base.top, top, base.bore))
+        z = max(base.top + 0.08, S.RING_MIN)
+        travel = min(RING_TRAVEL, top - 0.03 - z)
+        self.add("foot_ring", "foot_ring", S.foot_ring(z, p["ring_radius"], base.bore + 0.002))
+        self.slide("base", "foot_ring", Frame.at((0, 0, z)), upper=travel, role="slide")
+
+    # -- arms ---------------------------------------------------------------------------------------
     def arms(self, node, seat, back_front):
         p = self.p
         dims = S.ArmDims(p["pad_length"], p["pad_width"], p["arm_height"], p["arm_slide"], p["arm_turn"],
@@ -99,10 +234,25 @@ class ChairLayout(S.ChairNodes):
 
     def arm(self, node, seat, y, side, dims):
         a = S.arm(seat, self.p["seat_height"], y, dims)
-        self.extend("seat", a.bracket)
+        style = node.choice
+        self.extend("seat", a.bracket if style != "arm_flip" else a.bracket[:2])
         post = self.add(f"arm_{side}", "arm", a.post)
-        self.slide("seat", post, a.post_slide, upper=self.p["arm_travel"], role="telescope")
-        self.grow(node.one("arm_slider"), arm=a, side=side, post=post, dims=dims)
+        if style in ("arm_4d", "arm_height"):
+            self.slide("seat", post, a.post_slide, upper=self.p["arm_travel"], role="telescope")
+        elif style == "arm_fixed":
+            self.fix("seat", post)
+        else:  # flip-up: a positive turn about -y tips the arm up and back
+            pivot = a.post_slide.moved(dx=-S.ARM_POST_HALF)  # its rear bottom edge: nothing dips below it
+            self.hinge("seat", post, Frame.at(pivot.origin, x=(1, 0, 0), z=(0, -1, 0)), upper=S.ARM_FLIP)
+        self.grow(node.one(style), arm=a, side=side, post=post, dims=dims)
+
+    def arm_height(self, node, arm, side, post, dims):
+        self.extend(post, [*arm.slider, *arm.pad])
+
+    arm_fixed = arm_flip = arm_height
+
+    def arm_4d(self, node, arm, side, post, dims):
+        self.grow(node.one("arm_slider"), arm=arm, side=side, post=post, dims=dims)
 
     def arm_slider(self, node, arm, side, post, dims):
         slider = self.add(f"arm_slider_{side}", "arm", arm.slider)
@@ -117,4 +267,4 @@ class ChairLayout(S.ChairNodes):
 
 
 CATEGORY = Category("office_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, ChairLayout,
-                    S.CHAIR_MATERIALS)
+                    S.CHAIR_MATERIALS, derive=drafting_height)

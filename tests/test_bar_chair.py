@@ -12,7 +12,7 @@ from infmob_usd.model import build as build_model
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
-LABELS = {"base", "caster", "wheel", "lift", "seat", "back"}
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring"}
 
 
 def make(seed, **overrides):
@@ -25,7 +25,8 @@ def test_parts_labels_sizes(seed):
     assert bp.root == "base"
     assert {part.label for part in bp.parts.values()} <= LABELS
     assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
-    seat = np.array([pc.bounds for pc in bp.parts["seat"].pieces if pc.material == "seat"])
+    seat = np.array([pc.bounds for n in ("seat", "seat_pan") if n in bp.parts for pc in bp.parts[n].pieces
+                     if pc.material == "seat"])
     assert seat[:, 1, 2].max() == pytest.approx(p["seat_height"], abs=1e-6)
     assert 0.6 <= p["seat_height"] <= 0.85
     assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
@@ -35,7 +36,7 @@ def test_parts_labels_sizes(seed):
 
 @pytest.mark.parametrize("base_type", ["wheeled", "disc"])
 def test_joints(base_type):
-    p, bp = make(1, base_type=base_type, has_back=True, back_mount="hinged")
+    p, bp = make(1, base_type=base_type, has_back=True, back_mount="hinged", has_lever=False, has_seat_tilt=False)
     lift = by_child(bp, "lift")
     assert lift.kind == "prismatic" and lift.dofs[0].axis == pytest.approx((0, 0, 1))
     assert lift.dofs[0].lower == 0.0 and 0.05 < lift.dofs[0].upper <= 0.12
@@ -64,13 +65,17 @@ def test_foot_ring_on_the_disc_base():
     assert ring
     z = max(pc.bounds[1, 2] for pc in ring)
     assert 0.15 < z < bp.parts["seat"].pieces[0].bounds[0, 2]
-    _, bp = make(2, base_type="wheeled", has_foot_ring=False)
-    assert not any(pc.material == "ring" for pc in bp.parts["base"].pieces)
+    _, bp = make(2, base_type="wheeled", has_ring_slide=False)
+    assert not any(pc.material == "ring" for pc in bp.parts["base"].pieces) and "foot_ring" not in bp.parts
 
 
 @pytest.mark.parametrize("over", [dict(base_type="wheeled", leg_count=5, has_back=True, back_mount="hinged",
                                        seat_shape="square"),
-                                  dict(base_type="disc", has_back=True, back_mount="hinged", seat_shape="round")])
+                                  dict(base_type="disc", has_back=True, back_mount="hinged", seat_shape="round"),
+                                  dict(base_type="wheeled", has_ring_slide=True, has_lever=True, seat_shape="round"),
+                                  dict(base_type="four_leg", has_back=True, back_mount="hinged", seat_shape="square"),
+                                  dict(base_type="disc", has_lever=True, has_seat_tilt=True, seat_shape="square"),
+                                  dict(base_type="wheeled", has_seat_tilt=True, has_back=True, seat_shape="round")])
 def test_no_collisions_or_ground_at_any_sampled_state(over):
     _, bp = make(3, **over)
     rest_pc = rest_overlaps(bp)
@@ -84,3 +89,26 @@ def test_variety():
     made = [make(s)[0] for s in range(12)]
     for name in ("base_type", "seat_shape", "has_back", "base_finish"):
         assert len({p[name] for p in made}) > 1, name
+
+
+def test_designs_grow_their_mechanisms():
+    """Drafting stool: the foot ring slides on the column; four-leg stool: the seat swivels on the frame
+    (no lift); a gas-lift stool's height lever lifts its paddle."""
+    _, bp = make(4, base_type="wheeled", has_ring_slide=True)
+    j = by_child(bp, "foot_ring")
+    assert j.kind == "prismatic" and j.parent == "base" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert j.dofs[0].upper > 0.03
+    _, bp = make(4, base_type="four_leg", has_back=False)
+    assert set(bp.parts) == {"base", "seat"} and by_child(bp, "seat").kind == "continuous"
+    assert by_child(bp, "seat").parent == "base"
+    feet = [pc for pc in bp.parts["base"].pieces if pc.material == "caster"]
+    assert len(feet) == 4 and all(pc.bounds[0, 2] == pytest.approx(0.0, abs=1e-9) for pc in feet)
+    _, bp = make(4, base_type="disc", has_lever=True)
+    j = by_child(bp, "lever")
+    assert j.kind == "revolute" and j.parent == "seat" and j.dofs[0].axis == pytest.approx((1, 0, 0))
+    assert 0.05 < j.dofs[0].upper <= 0.35
+    assert not any(pc.name == "handle" for pc in bp.parts["seat"].pieces)
+    _, bp = make(4, base_type="disc", has_seat_tilt=True)
+    j = by_child(bp, "seat_pan")
+    assert j.kind == "revolute" and j.parent == "seat" and j.dofs[0].axis == pytest.approx((0, 1, 0))
+    assert {pc.material for pc in bp.parts["seat_pan"].pieces} == {"seat", "pan"}

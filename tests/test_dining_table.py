@@ -46,7 +46,7 @@ def test_parts_labels_and_model(seed):
     p, bp = make(seed)
     assert bp.root == "body"
     labels = {part.label for part in bp.parts.values()}
-    assert labels <= {"body", "top", "leaf", "drawer", "leg"}
+    assert labels <= {"body", "top", "leaf", "drawer", "leg", "bracket", "foot"}
     assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
     assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
     links, _ = build_model(bp, {k: 700.0 for k in bp.materials})
@@ -63,8 +63,18 @@ def test_joint_kinds_axes_and_limits(seed):
     for j in bp.joints:
         part = bp.parts[j.child]
         assert j.parent == "body"
-        if part.label == "leaf":
+        if j.child == "leaf":  # the stored extension leaf
             assert j.kind == "fixed"
+            continue
+        if part.label == "foot":  # a levelling foot turns about z under its leg
+            assert j.kind == "continuous" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+            assert min(pc.bounds[0, 2] for pc in part.pieces) == pytest.approx(0.0, abs=1e-9)
+            continue
+        if part.label in ("leaf", "bracket"):  # drop leaves rise level, lopers swing out under them
+            d = j.dofs[0]
+            assert j.kind == "revolute" and d.lower == 0.0 and d.upper == pytest.approx(np.pi / 2)
+            assert abs(d.axis[0 if part.label == "leaf" else 2]) == pytest.approx(1.0)
+            assert (j.requires_open is not None) == (part.label == "bracket")
             continue
         assert j.kind == "prismatic"
         d = j.dofs[0]
@@ -72,9 +82,10 @@ def test_joint_kinds_axes_and_limits(seed):
         if part.label == "top":  # halves slide apart along the long axis
             assert abs(d.axis[0]) == pytest.approx(1.0)
             assert d.axis[0] * np.mean([pc.bounds[:, 0].mean() for pc in part.pieces]) > 0
-        elif part.label == "drawer":  # out along the short axis
-            assert abs(d.axis[1]) == pytest.approx(1.0)
-            assert d.axis[1] * d.origin[1] > 0
+        elif part.label == "drawer":  # out along the short axis, or the long one from the ends
+            k = 0 if p["drawer_sides"] == "ends" else 1
+            assert abs(d.axis[k]) == pytest.approx(1.0)
+            assert d.axis[k] * d.origin[k] > 0
             assert any(pc.name == "handle" for pc in part.pieces)
         else:  # an adjustable leg slides up from its resting bottom
             assert part.label == "leg" and d.axis == pytest.approx((0, 0, 1))
@@ -86,9 +97,10 @@ def test_no_overlap_at_rest_and_with_joints_moved(seed):
     js = movable(bp)
     assert clash(bp, at([], 0.0)) == []
     assert clash(bp, at(js, 1.0)) == []
-    assert clash(bp, at(js, 0.5)) == []
-    for j in js:
-        assert clash(bp, at([j], 1.0)) == [], j.child
+    assert clash(bp, at([j for j in js if not j.requires_open], 0.5)) == []  # a loper moves once its leaf is up
+    by = {j.child: j for j in js}
+    for j in js:  # each alone, with what it requires open
+        assert clash(bp, at([j] + ([by[j.requires_open]] if j.requires_open else []), 1.0)) == [], j.child
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -105,7 +117,7 @@ def test_moving_parts_clear_at_rest(seed):
 
 
 def test_busy_table_all_mechanisms():
-    over = dict(support="legs", has_extension=True, has_drawers=True, drawer_count=2, drawer_sides="both",
+    over = dict(support="legs", top_style="extension", has_drawers=True, drawer_count=2, drawer_sides="both",
                 has_adjustable_legs=True, length=1.6, width=0.9, apron_height=0.08)
     _, bp = make(2, **over)
     labels = [part.label for part in bp.parts.values()]
@@ -119,12 +131,12 @@ def test_busy_table_all_mechanisms():
 
 
 def test_overrides_drive_the_growth():
-    _, bp = make(3, has_extension=False, has_drawers=True, drawer_count=1, drawer_sides="one",
+    _, bp = make(3, top_style="fixed", has_drawers=True, drawer_count=1, drawer_sides="one",
                  has_adjustable_legs=False)
     assert [j.child for j in movable(bp)] == ["drawer_0"]
     assert "leaf" not in bp.parts
     # nothing movable asked for: the table still gets its extension
-    _, bp = make(3, has_extension=False, has_drawers=False, has_adjustable_legs=False)
+    _, bp = make(3, top_style="fixed", has_drawers=False, has_adjustable_legs=False)
     assert sorted(j.child for j in movable(bp)) == ["top_back", "top_front"]
     _, bp = make(3, support="pedestal", has_adjustable_legs=True)
     assert not any(part.label == "leg" for part in bp.parts.values())
@@ -134,7 +146,43 @@ def test_overrides_drive_the_growth():
 
 def test_seeds_vary():
     params = [make(s)[0] for s in range(20)]
-    for name in ("support", "top_shape", "has_extension", "has_drawers", "leg_style"):
+    for name in ("support", "top_shape", "top_style", "has_drawers", "leg_style"):
         assert len({p[name] for p in params}) > 1, name
     counts = [len(movable(make(s)[1])) for s in range(12)]
     assert min(counts) < max(counts)
+
+
+@pytest.mark.parametrize("over", [dict(support="legs", top_shape="rectangular", has_loper=True),
+                                  dict(support="pedestal", top_shape="oval", has_loper=True),
+                                  dict(support="legs", has_adjustable_legs=True, has_loper=False)])
+def test_drop_leaf_table(over):
+    """Two leaves hang from the narrow centre at rest and rise level on their hinges; a loper swings out
+    under each raised leaf; nothing clashes with the leaves up or down; drawers in the ends."""
+    p, bp = make(4, top_style="drop_leaf", has_drawers=True, drawer_sides="one", **over)
+    assert p["drawer_sides"] == "ends"  # the lopers are in the long boards
+    drawers = [j for j in movable(bp) if bp.parts[j.child].label == "drawer"]
+    assert len(drawers) == 2 and all(abs(j.dofs[0].axis[0]) == 1.0 for j in drawers)  # one in each end
+    js = {j.child: j for j in movable(bp)}
+    for name in ("leaf_left", "leaf_right"):
+        leaf = bp.parts[name]
+        lo = min(pc.bounds[0, 2] for pc in leaf.pieces)
+        assert lo < p["height"] - 0.2  # hanging down at rest
+        raised = bp.poses(at([js[name]], 1.0))[name]
+        top = max((pc.vertices @ raised[:3, :3].T + raised[:3, 3])[:, 2].max() for pc in leaf.pieces)
+        assert top == pytest.approx(p["height"], abs=1e-6)  # level with the centre when raised
+    assert ("loper_left" in bp.parts) == p["has_loper"]
+    if p["has_loper"]:
+        assert js["loper_left"].requires_open == "leaf_left"
+    assert clash(bp, at([], 0.0)) == [] and clash(bp, at(list(js.values()), 1.0)) == []
+    assert clash(bp, at([js["leaf_left"]], 0.5)) == []
+
+
+def test_levelling_feet():
+    p, bp = make(1, support="legs", has_adjustable_legs=False, has_levellers=True)
+    feet = [j for j in movable(bp) if bp.parts[j.child].label == "foot"]
+    assert len(feet) == 4 and all(j.kind == "continuous" and j.parent == "body" for j in feet)
+    legs = [pc for pc in bp.parts["body"].pieces if pc.bounds[0, 2] < 0.05]
+    assert legs and min(pc.bounds[0, 2] for pc in legs) == pytest.approx(0.015, abs=1e-6)  # legs on the feet
+    assert clash(bp, at([], 0.0)) == []
+    _, bp = make(1, support="legs", has_adjustable_legs=True, has_levellers=True)
+    assert not any(part.label == "foot" for part in bp.parts.values())  # inner legs have their own feet

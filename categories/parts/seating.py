@@ -415,6 +415,7 @@ ARM_OFFSET = 0.03  # pad centre ahead of the post
 ARM_POST = -0.06  # post axis behind the seat centre
 ARM_BAR = (0.022, 0.016)  # the fixed bar under the post (x, y)
 ARM_TUBE = 0.003  # hollow post wall
+ARM_POST_HALF = ARM_BAR[0] / 2 + 0.003 + ARM_TUBE  # half the post's depth (x)
 
 
 def pad_reach(a: ArmDims, xb: float | None) -> float:
@@ -576,3 +577,138 @@ class ChairNodes(Layout):
         pieces, front = made
         self.extend("back", pieces)
         return front
+
+
+# -- adjustable headrest, lumbar pad, seat slider, flip-up arms (issue 14) --------------------------------
+HEADREST_TRAVEL = 0.07  # headrest height adjustment (executive and mesh chairs: 50-80 mm, e.g. Herman Miller
+#                         Aeron / Steelcase Gesture headrest kits)
+LUMBAR_TRAVEL = 0.06  # lumbar pad height adjustment (Steelcase Leap, Herman Miller Aeron PostureFit: 50-75 mm)
+SEAT_SLIDE = 0.05  # seat depth adjustment (BIFMA task chairs: 50-60 mm forward)
+ARM_FLIP = 1.5  # a flip-up arm turns up about its rear pivot to stand beside the back (about 90 degrees)
+
+
+def adjustable_headrest(b: Back, dims: BackDims) -> tuple[list[g.Piece], Frame, Frame]:
+    """A headrest on a stalk that slides up in a sleeve behind the back.
+
+    Returns the headrest's pieces, the slide frame (z up) and the frame of its yoke (z along +y); the
+    sleeve is part of the back (:func:`headrest_sleeve`).
+    """
+    xs, bw = b.x_spine, dims.width
+    zh0 = b.z1 + 0.035
+    stalk = g.box_between([xs - 0.014, -0.016, b.z1 - 0.09], [xs - 0.004, 0.016, zh0 + 0.04], "frame", bevel=0.002)
+    pad = g.box_between([xs + 0.004, -0.3 * bw, zh0], [xs + 0.06, 0.3 * bw, zh0 + 0.13], "seat", bevel=0.02)
+    yoke = g.box_between([xs - 0.014, -0.05, zh0 + 0.02], [xs + 0.006, 0.05, zh0 + 0.07], "frame", bevel=0.003)
+    return [stalk, yoke, pad], Frame.at((xs, 0, b.z1 - 0.09)), Frame.at((xs - 0.004, 0, zh0 + 0.045),
+                                                                         x=(1, 0, 0), z=(0, 1, 0))
+
+
+def headrest_sleeve(b: Back) -> list[g.Piece]:
+    """The open sleeve behind the back's top that holds a headrest stalk: two cheeks and a back plate."""
+    xs, z0, z1 = b.x_spine, b.z1 - 0.12, b.z1 + 0.008
+    return [g.box_between([xs - 0.022, -0.026, z0], [xs - 0.018, 0.026, z1], "frame"),
+            g.box_between([xs - 0.018, 0.02, z0], [xs, 0.026, z1], "frame"),
+            g.box_between([xs - 0.018, -0.026, z0], [xs, -0.02, z1], "frame")]
+
+
+def lumbar_pad(b: Back, dims: BackDims, front: float) -> tuple[list[g.Piece], Frame]:
+    """A lumbar pad in front of the back at its lower third, sliding up along z; returns pieces and the
+    slide frame."""
+    bw, bh = dims.width, dims.height
+    z0 = b.z0 + 0.15 * bh
+    pad = g.box_between([front + GAP, -0.38 * bw, z0], [front + GAP + 0.018, 0.38 * bw, z0 + 0.09], "pad",
+                        bevel=0.008)
+    return [pad], Frame.at((front, 0, z0))
+
+
+def split_seat(seat: Seat) -> tuple[list[g.Piece], list[g.Piece]]:
+    """The swivel seat's pieces split into what stays on the mechanism and what a seat slider moves
+    (the pan and the cushion)."""
+    pcs = seat.assembly.parts[seat.assembly.root].pieces
+    moving = [pc for pc in pcs if pc.material in ("seat", "pan")]
+    return [pc for pc in pcs if pc.material not in ("seat", "pan")], moving
+
+
+def tension_knob(seat: Seat, depth: float, hm: float) -> tuple[list[g.Piece], Frame]:
+    """The tilt-tension knob at the front of the mechanism under the seat (turned to stiffen the
+    recline); returns its pieces and its axis frame (z along +x)."""
+    md = min(0.24, 0.55 * depth)
+    x0 = seat.xc + md / 2
+    zc = seat.z_mech0 + hm / 2 - 0.003
+    r = min(0.015, hm / 2 - 0.008)
+    pieces = [g.cylinder([x0 + GAP, 0, zc], [x0 + 0.03, 0, zc], r, "handle", 20),
+              g.cylinder([x0 + 0.012, 0, zc], [x0 + 0.026, 0, zc], r + 0.002, "handle", 10)]
+    return pieces, Frame.at((x0, 0, zc), x=(0, 0, 1), z=(1, 0, 0))
+
+
+# -- bar stools: four-leg swivel frame, height lever (issue 14) ---------------------------------------------
+FOUR_LEG_TUBE = 0.0125  # 25 mm steel tube legs (four-leg swivel bar stools, e.g. IKEA Franklin, Flash Furniture)
+BEARING_R = 0.1  # the swivel bearing plate under the seat (a 200 mm lazy-susan plate)
+
+
+def four_leg_frame(bearing_top: float, spread: float, z_ring: float) -> list[g.Piece]:
+    """Four splayed tube legs under a swivel bearing plate whose top is at ``bearing_top``, their feet
+    ``spread`` from the centre (on the diagonals), a square foot rail of four rungs at ``z_ring`` and
+    plastic glides. Material slots: ``base`` (legs, plate), ``ring`` (rungs), ``caster`` (glides)."""
+    r, t = FOUR_LEG_TUBE, 0.012
+    zt = bearing_top - t
+    top_a, foot_a = 0.07, spread / math.sqrt(2)  # leg tops under the plate, feet at the corners
+    glide = 0.01
+    corners = [(sx, sy) for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
+    pieces = [g.disc([0, 0, bearing_top - t / 2], BEARING_R, t, "base", 48)]
+    legs = []
+    for sx, sy in corners:
+        a = np.array([sx * foot_a, sy * foot_a, glide])
+        b = np.array([sx * top_a, sy * top_a, zt + 0.002])
+        legs.append((a, b))
+        pieces.append(g.cylinder(a, b, r, "base", 20))
+        pieces.append(g.cylinder(a - [0, 0, glide], a + [0, 0, 0.004], r + 0.002, "caster", 20))
+
+    def at(k, z):
+        a, b = legs[k]
+        return a + (b - a) * (z - a[2]) / (b[2] - a[2])
+
+    for k in range(4):
+        p0, p1 = at(k, z_ring), at((k + 1) % 4, z_ring)
+        d = (p1 - p0) / np.linalg.norm(p1 - p0)
+        pieces.append(g.cylinder(p0 + d * 0.004, p1 - d * 0.004, 0.009, "ring", 16))
+    zs = zt - 0.09  # a lower square of stretchers stiffening the leg tops
+    for k in range(4):
+        p0, p1 = at(k, zs), at((k + 1) % 4, zs)
+        pieces.append(g.cylinder(p0, p1, 0.007, "base", 12))
+    return pieces
+
+
+def height_lever(seat: Seat, hm: float, reach: float, mech_y: float) -> tuple[list[g.Piece], list[g.Piece], Frame,
+                                                                               float]:
+    """Split the seat's height lever (pieces named ``handle``) off the seat: returns what stays, the
+    lever (rebuilt to start just outside the mechanism, whose side is at ``mech_y``), its pivot frame
+    (z along +x at its inner end: a positive turn lifts the paddle) and the most it turns before the
+    paddle meets the seat pan."""
+    pcs = seat.assembly.parts[seat.assembly.root].pieces
+    stay = [pc for pc in pcs if pc.name != "handle"]
+    zl = seat.z_mech0 + 0.3 * hm
+    x, y0 = seat.xc + 0.03, mech_y + GAP
+    lever = [g.cylinder([x, y0, zl], [x, max(reach, y0 + 0.05), zl], 0.0045, "handle", 12, name="handle"),
+             g.box([0.04, 0.02, 0.012], [x + 0.01, max(reach, y0 + 0.05), zl], "handle", bevel=0.003, name="handle")]
+    arm = max(reach, y0 + 0.05) - y0 + 0.01
+    room = seat.z_pan0 - GAP - (zl + 0.006)
+    upper = min(0.35, math.asin(max(0.0, min(1.0, room / arm))))
+    return stay, lever, Frame.at((x, y0, zl), x=(0, 1, 0), z=(1, 0, 0)), upper
+
+
+def mech_half_y(shape: str, width: float, depth: float) -> float:
+    """How far the seat mechanism reaches sideways (y) where the height lever leaves it."""
+    if shape == "round":
+        r = min(0.12, 0.6 * width / 2)
+        return math.sqrt(max(r * r - 0.03 ** 2, 0.0))
+    return min(0.2, 0.5 * width) / 2
+
+
+SEAT_TILT = 0.2  # forward seat tilt of ergonomic / saddle stools (about 10-12 degrees: Salli, Varier, Bambach)
+
+
+def tilt_pivot(seat: Seat, shape: str, width: float, depth: float) -> Frame:
+    """The forward-tilt axis of a seat pan: along +y at the top front edge of its mechanism, so a
+    positive turn dips the front and lifts the back clear of the mechanism."""
+    reach = min(0.12, 0.6 * width / 2) if shape == "round" else min(0.24, 0.55 * depth) / 2
+    return Frame.at((seat.xc + reach, 0, seat.z_pan0), x=(1, 0, 0), z=(0, 1, 0))

@@ -1,0 +1,166 @@
+"""Table mechanisms: lift-top struts, drawer aprons, nesting tables, drop leaves and gate legs.
+
+Local frames as in :mod:`tables`: a table stands on z = 0 centred on the z axis. Sizes of real
+products: lift-top coffee tables have a 13-20 cm deep storage well and rise 15-25 cm on two
+spring-assisted lift mechanisms (IKEA Hemnes / Wayfair lift-top ranges); nests of tables have
+slim legs (18-30 mm) and each table sits 1-2 cm under the next (IKEA Vittsjö, West Elm
+nesting tables); drop-leaf tables have leaves of 20-30 cm on rule-joint hinges carried by gate
+legs or swing-out brackets (Gateleg and Pembroke tables, IKEA Norden / Gamlared).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.frames import Frame
+
+from . import tables as T
+
+SLEEVE_R, INNER_R, ROD_R = 0.016, 0.0125, 0.0075  # lift strut stages (outer radius of each)
+TUBE_WALL = 0.002
+STRUT_OVERLAP = 0.022  # each stage stays this far inside the one below it at full lift
+
+
+def _tube(frame: Frame, z0: float, z1: float, r: float, material: str, hollow: bool = True) -> g.Piece:
+    """A round tube (or rod) along ``frame.z`` from ``z0`` to ``z1`` (local)."""
+    if hollow:
+        pc = g.shell([(r, z0), (r, z1)], TUBE_WALL, material, sections=24)
+    else:
+        pc = g.cylinder([0, 0, z0], [0, 0, z1], r, material, 16)
+    return pc.transformed(frame.matrix)
+
+
+def lift_struts(ys: tuple[float, ...], x: float, z_floor: float, z_under: float, axis: np.ndarray,
+                travel: float, material: str) -> tuple[list, list, list, float, float]:
+    """Two-stage telescopic lift struts (one per ``y``) standing on the storage floor at ``z_floor``
+    and carrying a top whose underside is at ``z_under``, along ``axis`` (up, maybe tilted forward).
+
+    Returns the sleeves (fixed to the body), the middle stage (inner tubes and a cross bar: a link of
+    its own), the rods and mounting plates (fixed under the top), and the travel of each stage
+    (``travel`` split in two, capped so every stage keeps ``STRUT_OVERLAP`` in the one below).
+    """
+    u = np.asarray(axis, float) / np.linalg.norm(axis)
+    length = (z_under - z_floor) / u[2]  # along the axis
+    hs = 0.62 * length  # sleeve length
+    zi0, zi1 = 0.006, length - 0.016  # inner tube along the axis
+    zr0 = zi0 + 0.008  # rod bottom at rest
+    t1 = min(travel / 2, hs - zi0 - STRUT_OVERLAP)
+    t2 = min(travel / 2, zi1 - zr0 - STRUT_OVERLAP)
+    sleeves, middle, rods = [], [], []
+    frames = [Frame.at((x, y, z_floor), z=u, y=(0, 1, 0)) for y in ys]
+    for f in frames:
+        sleeves.append(_tube(f, -0.004, hs, SLEEVE_R, material))
+        sleeves.append(g.cylinder(f.point((0, 0, -0.004)), f.point((0, 0, 0.0)), SLEEVE_R + 0.012, material, 20))
+        middle.append(_tube(f, zi0, zi1, INNER_R, material))
+        rods.append(_tube(f, zr0, length + 0.004, ROD_R, material, hollow=False))
+        top = f.point((0, 0, length))
+        rods.append(g.box_between(top + [-0.04, -0.03, -0.006], top + [0.04, 0.03, 0.0], material))
+    # the cross bar joins the inner tubes above the sleeves (a lift frame, as in scissor lift-tops)
+    zc = hs + 0.006
+    if len(frames) == 2:
+        a, b = frames[0].point((0, 0, zc + 0.008)), frames[1].point((0, 0, zc + 0.008))
+        y0, y1 = sorted((a[1], b[1]))
+        middle.append(g.box_between([a[0] - 0.009, y0 + INNER_R + 0.001, a[2] - 0.008],
+                                    [a[0] + 0.009, y1 - INNER_R - 0.001, a[2] + 0.008], material))
+    return sleeves, middle, rods, t1, t2
+
+
+def drawer_apron(half: float, leg_w: float, z0: float, z1: float, board: float, material: str,
+                 holes: dict[int, list]) -> list[g.Piece]:
+    """A square apron of four boards between corner legs ``leg_w`` wide, ``half`` from the centre to
+    the outside; the faces at x = +-half carry drawer openings ``holes[+1 | -1]`` ((y0, z0, y1, z1))."""
+    yb = half - leg_w
+    out = []
+    for s in (1, -1):
+        x0, x1 = sorted((s * half, s * (half - board)))
+        out.append(g.panel([x0, -yb, z0], [x1, yb, z1], material, "x", holes=holes.get(s, [])))
+        y0, y1 = sorted((s * half, s * (half - board)))
+        out.append(g.box_between([-half + max(leg_w, board), y0, z0], [half - max(leg_w, board), y1, z1], material))
+    return out
+
+
+def nesting_table(width: float, depth: float, height: float, top_t: float, leg_r: float, x0: float,
+                  top_mat: str, leg_mat: str) -> tuple[list[g.Piece], float]:
+    """A small table of slim legs at its corners and a bevelled top, ``depth`` along x from ``x0``
+    (toward +x), ``width`` along y, standing 2 mm above the floor on glides (so it slides out).
+    Returns its pieces and the clear span between its legs along y (what a table nested in it may use)."""
+    xc = x0 + depth / 2
+    xy = np.array([[depth / 2, width / 2], [-depth / 2, width / 2], [-depth / 2, -width / 2],
+                   [depth / 2, -width / 2]]) + [xc, 0]
+    pieces = [T.slab(xy, height - top_t, height, 0.2 * top_t, top_mat)]
+    ax, ay = depth / 2 - leg_r - 0.008, width / 2 - leg_r - 0.008
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            c = (xc + sx * ax, sy * ay)
+            pieces.append(g.box_between([c[0] - leg_r, c[1] - leg_r, 0.004], [c[0] + leg_r, c[1] + leg_r,
+                                                                              height - top_t], leg_mat, bevel=0.002))
+            pieces.append(g.box_between([c[0] - leg_r, c[1] - leg_r, 0.002], [c[0] + leg_r, c[1] + leg_r, 0.004],
+                                        "foot"))
+    # a stretcher under the top along each side: a real nesting table's frame (and what keeps it square)
+    for sy in (-1, 1):
+        pieces.append(g.box_between([xc - ax + leg_r, sy * ay - 0.006, height - top_t - 0.04],
+                                    [xc + ax - leg_r, sy * ay + 0.006, height - top_t], leg_mat))
+    return pieces, 2 * (ay - leg_r)
+
+
+# -- drop leaves ------------------------------------------------------------------------------------------
+def clip_outline(xy: np.ndarray, y0: float, y1: float) -> np.ndarray:
+    """A convex outline (counter-clockwise ``(k, 2)``) cut to ``y0 <= y <= y1``."""
+    out = []
+    n = len(xy)
+    for i in range(n):
+        a, b = xy[i], xy[(i + 1) % n]
+        ina, inb = y0 <= a[1] <= y1, y0 <= b[1] <= y1
+        if ina:
+            out.append(a)
+        for yc in (y0, y1):
+            if (a[1] - yc) * (b[1] - yc) < 0:
+                t = (yc - a[1]) / (b[1] - a[1])
+                out.append(a + t * (b - a))
+    pts = np.array(out)
+    c = pts.mean(0)
+    order = np.argsort(np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0]))
+    return pts[order]
+
+
+def drop_leaf(xy: np.ndarray, side: int, y_hinge: float, z0: float, z1: float, material: str
+              ) -> tuple[g.Piece, Frame]:
+    """The leaf of a top outline ``xy`` beyond ``|y| = y_hinge`` on ``side``, hanging down at rest
+    from its hinge line (along x at the top's underside); returns the piece and the hinge frame (z along
+    ``side`` * x: a positive turn raises the leaf to level)."""
+    lo, hi = (y_hinge, 10.0) if side > 0 else (-10.0, -y_hinge)
+    leaf = T.slab(clip_outline(xy, lo, hi), z0, z1, 0.15 * (z1 - z0), material)
+    hinge = Frame.at((0, side * y_hinge, z0), z=(side, 0, 0), y=(0, 0, 1))
+    down = hinge.matrix @ Frame.at().turned("z", -math.pi / 2).matrix @ hinge.inverse().matrix
+    return leaf.transformed(down), hinge
+
+
+def loper(x0: float, y_face: float, side: int, z0: float, z1: float, length: float, material: str
+          ) -> tuple[list[g.Piece], Frame]:
+    """A swing-out bracket (loper) lying along the apron's outer face at ``y_face``, hinged about z at
+    ``x0``; a positive turn swings it out under the raised leaf. Returns its pieces (the board and its
+    knuckle) and the hinge frame."""
+    t = 0.02
+    ys = sorted((y_face + side * 0.003, y_face + side * (0.003 + t)))
+    piece = g.box_between([x0 + 0.004, ys[0], z0], [x0 + length, ys[1], z1], material, bevel=0.002)
+    knuckle = g.cylinder([x0, (ys[0] + ys[1]) / 2, z0], [x0, (ys[0] + ys[1]) / 2, z1], t / 2, material, 16)
+    return [piece, knuckle], Frame.at((x0, (ys[0] + ys[1]) / 2, z0), z=(0, 0, side))
+
+
+def apron_rails_ends(length: float, width: float, leg_w: float, z0: float, z1: float, board: float,
+                     material: str, holes: dict[int, list]) -> list[g.Piece]:
+    """A rectangular apron like :func:`tables.apron_rails` whose end boards (x = +-length/2) carry the
+    drawer openings ``holes[+1 | -1]`` ((y0, z0, y1, z1)): drawers in the ends of a table (a Pembroke
+    or farmhouse table's end drawer)."""
+    xb = length / 2 - leg_w
+    ye = width / 2 - max(leg_w, board)
+    out = []
+    for s in (1, -1):
+        y0, y1 = sorted((s * width / 2, s * (width / 2 - board)))
+        out.append(g.box_between([-xb, y0, z0], [xb, y1, z1], material))
+        x0, x1 = sorted((s * length / 2, s * (length / 2 - board)))
+        out.append(g.panel([x0, -ye, z0], [x1, ye, z1], material, "x", holes=holes.get(s, [])))
+    return out
