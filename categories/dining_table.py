@@ -12,6 +12,7 @@ gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``
 from __future__ import annotations
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -85,6 +86,7 @@ OVAL_APRON = 0.64  # an oval top's apron spans this fraction of its length and w
 MARGIN = 0.012  # apron board above and below a drawer opening
 DRAWER_MIN = 0.06  # the lowest drawer opening worth having
 DRAWER_WIDTH = 0.5  # the widest drawer
+METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (a 50 cm drawer ~2-3 kg)
 DRAWER_DEPTH = 0.45  # the deepest drawer
 SLEEVE_FROM = 0.45  # adjustable legs: sleeves start at this fraction of the height
 INNER_AT_REST = 0.12  # an inner leg reaches this far up its sleeve at rest
@@ -173,7 +175,12 @@ class TableLayout(Layout):
         x0, z0, x1, z1 = hole
         w, h = x1 - x0 - 2 * CLEAR, z1 - z0 - 2 * CLEAR
         face = Frame.at(((x0 + x1) / 2, y, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
-        box = panels.drawer_box(w, h, depth, BOARD, DRAWER_WALL, "frame").attached("slide", to=face)
+        box = panels.drawer_box(w, h, depth, BOARD, DRAWER_WALL, "frame")
+        if self.p["frame_finish"] == "brushed_metal":  # a steel drawer is folded sheet, not steel boards
+            part = box.parts[box.root]
+            box = Assembly.single(part.label, [pc.replace(sheet=METAL_DRAWER_SHEET) for pc in part.pieces],
+                                  box.anchors, box.supports, name=box.root)
+        box = box.attached("slide", to=face)
         if self.p["handle_style"] == "knob":
             handle = hardware.knob_handle(min(0.016, 0.3 * h), 0.025, "handle")
         else:
