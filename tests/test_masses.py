@@ -43,7 +43,7 @@ def sample(tmp_path_factory):
             for c in ("door", "microwave", "jar", "pan")}
 
 
-@pytest.mark.parametrize("category", ["jar", "pan"])
+@pytest.mark.parametrize("category", ["door", "microwave", "jar", "pan"])
 def test_real_objects_pass_the_mass_check(sample, category):
     res = check_mass(sample[category])
     assert res.ok, res.detail
@@ -53,7 +53,7 @@ def test_real_objects_pass_the_mass_check(sample, category):
 
 
 def test_validate_runs_the_mass_check(sample):
-    report = validate_object(sample["jar"], sim=False, mass=True)
+    report = validate_object(sample["jar"], sim=False)
     assert [c for c in report.checks if c.name == "mass"][0].ok
 
 
@@ -96,13 +96,15 @@ def test_an_unknown_moving_part_and_a_light_total_fail(sample, tmp_path):
 def test_the_cli_runs_the_check_with_mass(sample, tmp_path, capsys):
     from infmob_usd.cli import main
 
-    assert main(["validate", "--usd-only", "--mass", "--workers", "1", str(sample["jar"])]) == 0
+    assert main(["validate", "--usd-only", "--workers", "1", str(sample["jar"])]) == 0
     assert re.search(r"^mass\s+1/1", capsys.readouterr().out, re.M)
+    assert main(["validate", "--usd-only", "--no-mass", "--workers", "1", str(sample["jar"])]) == 0
+    assert not re.search(r"^mass\s", capsys.readouterr().out, re.M)
     bad = _copy(sample["jar"], tmp_path)
     urdf = next(bad.glob("*.urdf"))
     urdf.write_text(re.sub(r'<mass value="[^"]*"', '<mass value="50.0"', urdf.read_text()))
-    assert main(["validate", "--usd-only", "--mass", "--workers", "1", str(bad)]) == 1
-    assert "outside 0.08-1.6 kg" in capsys.readouterr().out
+    assert main(["validate", "--usd-only", "--workers", "1", str(bad)]) == 1
+    assert "outside 0.08-2.5 kg" in capsys.readouterr().out
 
 
 # -- the hollow model (infmob_usd.mass.inertial with Piece.wall / Family.wall) --------------------
