@@ -195,10 +195,11 @@ class OvenLayout(A.PanelNodes):
                                       (0.0, p["grate_lift"]))))
 
     def steel(self, pieces):
-        """Sheet pieces of a painted oven weigh as painted steel (:data:`PAINTED_STEEL`)."""
-        if self.p["body_finish"] != "painted":
-            return pieces
-        return [pc.replace(sheet=pc.sheet * PAINTED_STEEL) if pc.sheet > 0 else pc for pc in pieces]
+        """Painted sheet pieces weigh as painted steel (:data:`PAINTED_STEEL`): the door's inner frame
+        (``door_inner``, always painted) and, on a painted oven, its casing-finish pieces."""
+        painted = {"door_inner"} | ({"body", "door"} if self.p["body_finish"] == "painted" else set())
+        return [pc.replace(sheet=pc.sheet * PAINTED_STEEL) if pc.sheet > 0 and pc.material in painted else pc
+                for pc in pieces]
 
     def drawer(self, node, xs, ys, zs):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull."""
