@@ -128,8 +128,9 @@ class DoorLayout(Layout):
         self._faces(node, "lever_face", **where)
 
     def knob_face(self, node, side, n, start, y, z, inward):
-        name = self.add(f"knob_{side}", "knob", P.knob(start, n, y, z, self.p["knob_radius"]))
-        self.spin("leaf", name, Frame.at((start, y, z), z=(n, 0, 0)), role="knob")
+        at = Frame.at((start, y, z), z=(n, 0, 0))
+        knob = self.place(P.knob_part(self.p["knob_radius"]).attached("mount", to=at), f"knob_{side}")
+        self.spin("leaf", knob.root, at, role="knob")
 
     def lever_face(self, node, side, n, start, y, z, inward):
         grip = -inward  # the grip points back toward the hinge

@@ -43,7 +43,14 @@ def check_texture_size(size: Any) -> int:
     return size
 
 
-def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides: Any) -> ArticulatedObject:
+def check_share(share: Any) -> float:
+    if isinstance(share, bool) or not isinstance(share, (int, float)) or not 0.0 <= float(share) <= 1.0:
+        raise ParameterError(f"parts share must be a number in [0, 1], got {share!r}")
+    return float(share)
+
+
+def generate(category: str, seed: int = 0, texture_size: int = 512, parts=None, parts_share: float = 0.5,
+             **overrides: Any) -> ArticulatedObject:
     """Generate one object: a pure function of ``(category, seed, overrides)``.
 
     Parameters
@@ -54,19 +61,41 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, **overrides:
         Non-negative; the same seed gives the same object, byte for byte.
     texture_size : int
         Edge of every texture map in pixels (power of two, 16..4096).
+    parts : path or :class:`~infmob_usd.partlib.Library`, optional
+        A part library: where a part's label is in it, with probability ``parts_share`` the part is
+        a library mesh placed by its support points (:mod:`infmob_usd.retrieval`).
+    parts_share : float
+        Probability in [0, 1] that a retrievable part is retrieved (with ``parts``); default 0.5.
     **overrides
         Parameter values (see ``infmob params CATEGORY``); validated against the
         category schema.
     """
     cat = get_category(category)
     check_texture_size(texture_size)
+    retriever = None
+    if parts is not None:
+        from .partlib import load_library
+        from .retrieval import Retriever
+
+        retriever = Retriever(load_library(parts), check_share(parts_share), category, seed)
     t0 = time.perf_counter()
     rng = streams(category, seed)
     params = cat.schema.sample(rng["params"], overrides)
     t1 = time.perf_counter()
-    bp = cat.build(params, rng["structure"], rng["geometry"])
+    if retriever is None:
+        bp = cat.build(params, rng["structure"], rng["geometry"])
+    else:
+        from .retrieval import ACTIVE
+
+        token = ACTIVE.set(retriever)
+        try:
+            bp = cat.build(params, rng["structure"], rng["geometry"])
+        finally:
+            ACTIVE.reset(token)
     t2 = time.perf_counter()
     obj = assemble(bp, seed, rng["materials"], texture_size, params, cat.schema.validate(overrides))
+    if retriever is not None:
+        obj.retrieved = list(retriever.records)
     obj.timings = {"sampling": t1 - t0, "geometry": t2 - t1 + obj.timings["geometry"],
                    "textures": obj.timings["textures"]}
     return obj

@@ -61,6 +61,9 @@ class Assembly:
     joints: tuple[JointSpec, ...] = ()
     anchors: Mapping[str, Frame] = field(default_factory=dict)
     supports: Mapping[str, np.ndarray] = field(default_factory=dict)
+    retrieved: str = ""
+    """The library part id that replaced the procedural part (``infmob_usd.retrieval``); ``"-"``: drawn
+    and kept procedural; empty: not considered yet."""
 
     def __post_init__(self) -> None:
         if not self.parts:
@@ -110,11 +113,17 @@ class Assembly:
             tuple(moved_joint(j, frame.point, frame.vector) for j in self.joints),
             {k: frame @ a for k, a in self.anchors.items()},
             {k: frame.point(s) for k, s in self.supports.items()},
+            self.retrieved,
         )
 
     def attached(self, anchor: str, to: Frame) -> Assembly:
-        """Placed so that its anchor ``anchor`` coincides with ``to``."""
-        return self.placed(to @ self.anchor(anchor).inverse())
+        """Placed so that its anchor ``anchor`` coincides with ``to``.
+
+        While an object is generated with a part library, this is where a procedural part may be
+        swapped for a library mesh placed by its support points (:mod:`infmob_usd.retrieval`)."""
+        from .retrieval import swap
+
+        return swap(self).placed(to @ self.anchor(anchor).inverse())
 
     def merged(self, other: Assembly, prefix: str = "") -> Assembly:
         """This assembly with ``other``'s parts (renamed ``prefix + name``), joints, anchors and supports."""
@@ -134,10 +143,10 @@ class Assembly:
         p = self.parts[part]
         parts = dict(self.parts)
         parts[part] = SubPart(p.label, p.pieces + tuple(pieces))
-        return Assembly(parts, self.joints, self.anchors, self.supports)
+        return Assembly(parts, self.joints, self.anchors, self.supports, self.retrieved)
 
     def with_anchors(self, **anchors: Frame) -> Assembly:
-        return Assembly(self.parts, self.joints, {**self.anchors, **anchors}, self.supports)
+        return Assembly(self.parts, self.joints, {**self.anchors, **anchors}, self.supports, self.retrieved)
 
     @property
     def pieces(self) -> tuple[Piece, ...]:

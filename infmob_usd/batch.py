@@ -61,6 +61,8 @@ class Job:
     overrides: tuple[tuple[str, Any], ...] = ()
     texture_size: int = 512
     formats: tuple[str, ...] = ("usd", "urdf", "mjcf")  # see infmob_usd.layers.FORMATS
+    parts: str | None = None  # a part library folder (infmob_usd.partlib)
+    parts_share: float = 0.5
 
     @property
     def name(self) -> str:
@@ -212,7 +214,8 @@ def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
 
     t0 = time.perf_counter()
     try:
-        obj = generate(job.category, seed=job.seed, texture_size=job.texture_size, **dict(job.overrides))
+        extra = {"parts": job.parts, "parts_share": job.parts_share} if job.parts else {}
+        obj = generate(job.category, seed=job.seed, texture_size=job.texture_size, **extra, **dict(job.overrides))
         folder = write_object(obj, Path(out) / job.category, formats=job.formats, run_id=run_id)
         files = file_digests(folder)
     except Exception as exc:  # one bad object must not stop the batch
@@ -234,6 +237,7 @@ def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
         "simple_movable_joints": len(movable),
         "joint_kinds": kinds,
         "formats": list(job.formats),
+        **({"parts": job.parts, "parts_share": job.parts_share} if job.parts else {}),
         "seconds": {k: round(v, 4) for k, v in obj.timings.items()} | {"total": round(time.perf_counter() - t0, 4)},
         "version": __version__,
         "files": files,

@@ -45,6 +45,34 @@ def _parser() -> argparse.ArgumentParser:
     g.add_argument("--wait", action="store_true",
                    help="if another run is writing to DIR, wait for it to finish (default: fail at once)")
 
+    g.add_argument("--parts", default=None, metavar="LIB",
+                   help="a part library (infmob parts import / export-builtin): retrievable parts may be its meshes")
+    g.add_argument("--parts-share", type=float, default=None, metavar="P",
+                   help="with --parts: probability in [0, 1] that a retrievable part is retrieved; default 0.5")
+
+    pa = sub.add_parser("parts", help="part libraries: import meshes, export the built-in parts, check placement",
+                        description="A part library holds part meshes with support points, scale policy and"
+                        " convex pieces (format: README, 'Part libraries'). Generate with it:"
+                        " infmob generate CAT --parts LIB --parts-share P.")
+    psub = pa.add_subparsers(dest="parts_command", required=True)
+    pi = psub.add_parser("import", help="import PartNet-Mobility objects or a folder of meshes with labels.csv")
+    pi.add_argument("src", metavar="SRC", help="a PartNet-Mobility object folder, a folder of them, or a folder of"
+                    " OBJ/GLB/PLY files with labels.csv (columns file,label[,units,up,front,source,licence])")
+    pi.add_argument("--out", required=True, metavar="LIB", help="the new library folder (must not exist or be empty)")
+    pi.add_argument("--units", default="m", choices=("m", "cm", "mm"), help="unit of the meshes; default m")
+    pi.add_argument("--up", default="y", help="the meshes' up axis (PartNet-Mobility: y, the default)")
+    pi.add_argument("--licence", default="", help="licence to record (default: the source's terms)")
+    pi.add_argument("--labels", default=None, metavar="CSV", help="labels CSV (default SRC/labels.csv)")
+    pe = psub.add_parser("export-builtin", help="write the project's procedural parts as a library")
+    pe.add_argument("out", metavar="LIB")
+    pc = psub.add_parser("check", help="gap and penetration at the support points: bounding-box vs support placement")
+    pc.add_argument("lib", metavar="LIB")
+    pc.add_argument("--placements", type=int, default=100, help="placements on drawn procedural parts; default 100")
+    pc.add_argument("--seed", type=int, default=0)
+    pc.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    pc.add_argument("--as-drawn", action="store_true",
+                    help="only pairs generation would draw (the procedural box within the part's scale policy)")
+
     fz = sub.add_parser("fuzz", help="generate N random (category, seed, overrides) objects and validate each",
                         description="Property test for long runs: N draws of a category, a seed and random valid"
                         " overrides (schema extremes included). Each draw must either be rejected up front with a"
@@ -225,9 +253,18 @@ def cmd_generate(args) -> int:
         return _fail(f"--workers must be at least 1, got {args.workers}")
     if args.address and args.backend != "ray":
         return _fail("--address is only used with --backend ray; add --backend ray or drop --address")
+    parts, share = None, 0.5
+    if args.parts_share is not None and args.parts is None:
+        return _fail("--parts-share needs --parts LIB")
+    if args.parts is not None:
+        from .api import check_share
+        from .partlib import load_library
+
+        share = check_share(args.parts_share if args.parts_share is not None else 0.5)
+        parts = str(Path(load_library(args.parts).root).resolve())  # a bad library fails before anything is written
     out = _out_dir(args.out)
     items = tuple(sorted(overrides.items()))
-    jobs = (Job(c, seed, items, args.texture_size, formats)
+    jobs = (Job(c, seed, items, args.texture_size, formats, parts, share)
             for c in categories for seed in range(args.seed, args.seed + args.count))
 
     def show(row: dict) -> None:
@@ -254,6 +291,48 @@ def cmd_generate(args) -> int:
               file=sys.stderr)
     failed = sum(1 for r in rows if "error" in r)
     return 1 if failed else 0
+
+
+def cmd_parts(args) -> int:
+    from . import partlib, retrieval
+
+    if args.parts_command == "import":
+        out, rejected = partlib.import_parts(args.src, args.out, units=args.units, up=args.up, licence=args.licence,
+                                             labels_csv=args.labels,
+                                             log=lambda m: print(m, file=sys.stderr, flush=True))
+        lib = partlib.load_library(out)
+        print(f"{out}: {len(lib.parts)} parts ({', '.join(lib.labels)}), {len(rejected)} rejected")
+        _print_check(retrieval.summary(retrieval.study(lib, 100, 0)), 100)
+        return 0
+    if args.parts_command == "export-builtin":
+        out = partlib.export_builtin(args.out)
+        print(f"{out}: {len(partlib.load_library(out).parts)} parts")
+        return 0
+    if args.placements < 1:
+        return _fail(f"--placements must be at least 1, got {args.placements}")
+    lib = partlib.load_library(args.lib)
+    rows = retrieval.study(lib, args.placements, args.seed, box=args.as_drawn)
+    if args.json:
+        import json
+
+        print(json.dumps({"summary": retrieval.summary(rows), "placements": rows}, indent=1))
+        return 0
+    by_part: dict = {}
+    for r in rows:
+        by_part.setdefault((r["label"], r["part"], r["placement"]), []).append(r)
+    print(f"{'part':34} {'placement':9} {'n':>3} {'max gap mm':>10} {'max pen mm':>10} {'max lateral mm':>14}")
+    for (label, pid, how), rs in sorted(by_part.items()):
+        print(f"{label + '/' + pid:34} {how:9} {len(rs):3d} {max(r['gap_mm'] for r in rs):10.3f}"
+              f" {max(r['penetration_mm'] for r in rs):10.3f} {max(r['lateral_mm'] for r in rs):14.3f}")
+    _print_check(retrieval.summary(rows), args.placements)
+    return 0
+
+
+def _print_check(summary: dict, n: int) -> None:
+    for how, s in summary.items():
+        print(f"{how} placement over {n} placements: gap mean {s['mean_gap_mm']:.3f} max {s['max_gap_mm']:.3f} mm,"
+              f" penetration mean {s['mean_penetration_mm']:.3f} max {s['max_penetration_mm']:.3f} mm,"
+              f" feet off their mounts up to {s['max_lateral_mm']:.3f} mm; {s['within_0.5mm']}/{n} within 0.5 mm")
 
 
 def cmd_fuzz(args) -> int:
@@ -508,7 +587,7 @@ def cmd_gallery(args) -> int:
 
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
             "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures,
-            "gallery": cmd_gallery, "fuzz": cmd_fuzz}
+            "gallery": cmd_gallery, "fuzz": cmd_fuzz, "parts": cmd_parts}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -80,6 +80,7 @@ class ArticulatedObject:
     textures: dict[str, dict[str, bytes]] = field(default_factory=dict)  # slot -> map -> PNG bytes
     texture_size: int = 512
     timings: dict[str, float] = field(default_factory=dict)  # seconds per stage; never written to files
+    retrieved: list[dict] = field(default_factory=list)  # library parts placed (infmob_usd.retrieval)
 
     @property
     def name(self) -> str:

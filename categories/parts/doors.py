@@ -9,6 +9,8 @@ wall; architraves 50-90 mm; handles at 0.95-1.05 m with a 60 mm backset (BS EN 1
 from __future__ import annotations
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import IDENTITY
 
 CASING_T = 0.016  # architrave thickness
 STOP = (0.012, 0.014)  # door stop: protrusion into the opening, depth
@@ -142,6 +144,15 @@ def knob(x0: float, n: float, y: float, z: float, r: float) -> list[g.Piece]:
     return [g.cylinder([x0, y, z], [x0 + n * 0.03, y, z], 0.011, "handle", 24),
             g.cylinder([x0 + n * 0.028, y, z], [x0 + n * 0.05, y, z], r, "handle", 32),
             g.cylinder([x0 + n * 0.05, y, z], [x0 + n * 0.056, y, z], 0.75 * r, "handle", 32)]
+
+
+def knob_part(r: float) -> Assembly:
+    """The knob of :func:`knob` in its own frame: z out of the face, anchor ``mount`` and support point
+    ``stem`` at the neck's foot (a part library may replace it: ``infmob_usd.retrieval``)."""
+    return Assembly.single("knob", [g.cylinder([0, 0, 0], [0, 0, 0.03], 0.011, "handle", 24),
+                                    g.cylinder([0, 0, 0.028], [0, 0, 0.05], r, "handle", 32),
+                                    g.cylinder([0, 0, 0.05], [0, 0, 0.056], 0.75 * r, "handle", 32)],
+                           {"mount": IDENTITY}, {"stem": (0, 0, 0)})
 
 
 def lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> list[g.Piece]:

@@ -703,7 +703,7 @@ def dome_lid(pot: Cookware, rise: float, thickness: float, slot: str, band_slot:
 def lid_knob(radius: float, slot: str) -> Assembly:
     """A round knob (stem and cap) standing on ``base``, sunk 1 mm into what carries it."""
     pieces = g.knob_handle((0, 0, -0.001), UP, slot, radius=radius, depth=max(0.02, 1.2 * radius))
-    return Assembly.single("handle", pieces, {"base": IDENTITY})
+    return Assembly.single("handle", pieces, {"base": IDENTITY}, {"stem": (0, 0, -0.001)})
 
 
 def lid_loop(dome: Dome, knob_radius: float, slot: str) -> Assembly:

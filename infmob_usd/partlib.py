@@ -1,0 +1,709 @@
+"""A part library on disk: retrieved part meshes with support points, scale policy and convex pieces.
+
+Layout (``LIB/``)::
+
+    index.json                       {"format": "infmob-parts/1", "parts": [{"label", "id", "path"}]}
+    <label>/<part_id>/part.json      what the part is (fields below)
+    <label>/<part_id>/mesh.obj       the visual mesh (OBJ, GLB or PLY; ``part.json`` names it)
+    <label>/<part_id>/convex.json    {"pieces": [[[x, y, z], ...], ...]}: convex collision pieces
+
+``part.json`` fields (every one is checked when the library is loaded):
+
+``label``      a label retrieval knows (:data:`LABELS`)
+``id``         the part id (the folder name)
+``source``     where the mesh came from (a PartNet-Mobility object id, a file name, ``builtin``)
+``licence``    its licence (``CC-BY-NC-4.0``, ``Apache-2.0`` ...)
+``units``      ``m`` | ``cm`` | ``mm``: the mesh file's unit
+``up``         the mesh axis that points out of the surface the part is mounted on (``+z``, ``-y`` ...)
+``front``      the mesh axis along the part's long direction (a bar's length; any axis for a knob)
+``supports``   named support points in the mesh file's coordinates and units (a bar handle's
+               ``mount_a`` / ``mount_b``, a knob's ``stem``): where it touches what carries it
+``joint_hints`` e.g. ``{"axis": {"point": [...], "direction": [...]}}`` (a knob turns about its stem)
+``scale``      per-axis ranges of the scale factor the part may be fitted with:
+               ``{"x": [lo, hi], "y": [lo, hi], "z": [lo, hi]}`` (x along ``front``, z along ``up``)
+``materials``  material slots of the mesh: ``["main"]`` (painted with the slot of the procedural part)
+``mesh``       the mesh file name; ``convex``: the convex pieces file name
+``watertight`` whether the repaired mesh is closed (reported by ``parts import``)
+
+The importer (:func:`import_parts`) writes canonical files (metres, ``up`` = ``+z``, ``front`` =
+``+x``, support points on z = 0); a hand-made ``part.json`` may use any of the values above. Convex
+pieces are computed once at import by CoACD (at most 255 vertices each) and never at generation.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import os
+import shutil
+import tempfile
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InfmobError
+
+FORMAT = "infmob-parts/1"
+MAX_HULL = 255  # PhysX keeps at most 255 vertices per convex mesh
+UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001}
+AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
+MESH_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl")
+
+# label -> the support-point sets a part of that label may have (one per kind of part) and its default
+# scale policy (per-axis factor ranges about the part's own size). Bar pulls come 96-320 mm long at
+# 32 mm steps on one post design (Häfele "Furniture handles" catalogue), so x stretches further than
+# the cross-section, which stays within a third of the drawn size.
+LABELS: dict[str, dict] = {
+    "handle": {"supports": ({"mount_a", "mount_b"}, {"stem"}),
+               "scale": {"x": (0.5, 2.0), "y": (0.67, 1.5), "z": (0.67, 1.5)}},
+    # door knobs: 50-65 mm across on a 50-60 mm projection (EN 1906 lever/knob furniture ranges)
+    "knob": {"supports": ({"stem"},), "scale": {"x": (0.67, 1.5), "y": (0.67, 1.5), "z": (0.67, 1.5)}},
+}
+SHARED = {frozenset({"stem"}): ("handle", "knob")}
+"""Support kinds whose parts serve several labels: a round knob is a cabinet handle or a door knob."""
+
+
+class PartLibraryError(InfmobError):
+    """A part library (or a source to import) that cannot be used."""
+
+
+def _err(path, problem: str, fix: str) -> PartLibraryError:
+    return PartLibraryError(f"{path}: {problem}; {fix}")
+
+
+# -- meshes -------------------------------------------------------------------------------------------
+def read_mesh(path: Path):
+    """A trimesh of every triangle in ``path`` (OBJ, GLB, PLY, STL), unprocessed."""
+    import trimesh
+
+    try:
+        loaded = trimesh.load(str(path), force="mesh", process=False)
+    except Exception as e:  # noqa: BLE001 - every reader failure is the same bad input
+        raise _err(path, f"unreadable mesh ({type(e).__name__}: {' '.join(str(e).split())[:120]})",
+                   "re-export it as OBJ, GLB or PLY") from None
+    if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0 or len(loaded.vertices) < 3:
+        raise _err(path, "the file holds no triangles", "re-export it as a triangle mesh (OBJ, GLB or PLY)")
+    if not np.isfinite(np.asarray(loaded.vertices)).all():
+        raise _err(path, "vertices contain NaN or inf", "re-export the mesh")
+    return loaded
+
+
+def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
+    """A plain OBJ (``v`` and ``f`` lines, 9 significant digits): byte-identical for the same mesh."""
+    lines = [f"v {x:.9g} {y:.9g} {z:.9g}" for x, y, z in np.asarray(vertices, float)]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in np.asarray(faces, int)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def axis_matrix(up: str, front: str) -> np.ndarray:
+    """``(3, 3)`` rotation taking mesh coordinates to the part frame: ``front`` -> +x, ``up`` -> +z."""
+    def vec(a: str) -> np.ndarray:
+        v = np.zeros(3)
+        v["xyz".index(a[1])] = 1.0 if a[0] == "+" else -1.0
+        return v
+
+    z, x = vec(up), vec(front)
+    if abs(float(x @ z)) > 0.5:
+        raise ValueError(f"up {up} and front {front} are parallel")
+    return np.vstack([x, np.cross(z, x), z])
+
+
+@dataclass
+class Repaired:
+    vertices: np.ndarray
+    faces: np.ndarray
+    watertight: bool
+    report: str
+
+
+def repair(vertices, faces, where: str) -> Repaired:
+    """Merge duplicate vertices, drop degenerate and duplicate faces, orient normals consistently
+    outward. Raises :class:`PartLibraryError` for a mesh with non-manifold edges (an edge of more
+    than two faces) or nothing left."""
+    import trimesh
+
+    m = trimesh.Trimesh(np.asarray(vertices, float), np.asarray(faces, int), process=False)
+    n0v, n0f = len(m.vertices), len(m.faces)
+    m.merge_vertices(digits_vertex=7)
+    m.update_faces(m.nondegenerate_faces(height=1e-9))
+    m.update_faces(m.unique_faces())
+    m.remove_unreferenced_vertices()
+    if len(m.faces) < 4:
+        raise _err(where, "fewer than 4 faces left after dropping degenerate ones", "check the mesh export")
+    edges = np.sort(m.edges, axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    bad = int((counts > 2).sum())
+    if bad:
+        raise _err(where, f"non-manifold mesh ({bad} edges shared by more than two faces)",
+                   "split or remesh it in a modeller, or leave it out")
+    flipped = 0
+    pieces = []
+    for comp in m.split(only_watertight=False):  # each connected piece outward on its own
+        trimesh.repair.fix_winding(comp)
+        if comp.is_watertight:
+            out = comp.volume
+        else:  # an open patch: its faces should point away from the mesh centre
+            out = float(((comp.triangles_center - m.vertices.mean(0)) * comp.face_normals).sum())
+        if out < 0:
+            comp.invert()
+            flipped += 1
+        pieces.append(comp)
+    m = trimesh.util.concatenate(pieces) if len(pieces) > 1 else pieces[0]
+    report = (f"{n0v - len(m.vertices)} duplicate vertices merged, {n0f - len(m.faces)} degenerate or duplicate"
+              f" faces dropped, {'watertight' if m.is_watertight else 'NOT watertight'}"
+              + (f", {flipped} inside-out piece(s) turned outward" if flipped else ""))
+    return Repaired(np.asarray(m.vertices, float), np.asarray(m.faces, np.int64), bool(m.is_watertight), report)
+
+
+def convex_pieces(vertices: np.ndarray, faces: np.ndarray, seed: int = 0) -> list[np.ndarray]:
+    """CoACD's approximate convex decomposition (at import only), each piece cut to 255 vertices."""
+    try:
+        import coacd
+    except ImportError:
+        raise PartLibraryError("importing parts needs CoACD; pip install 'infmob-usd[parts]' (or coacd)") from None
+
+    coacd.set_log_level("error")
+    parts = coacd.run_coacd(coacd.Mesh(np.asarray(vertices, float), np.asarray(faces, np.int32)), threshold=0.08,
+                            max_convex_hull=8, preprocess_mode="off", resolution=600, mcts_iterations=40,
+                            mcts_max_depth=2, mcts_nodes=12, seed=seed, max_ch_vertex=MAX_HULL)
+    out = []
+    for v, _f in parts:
+        v = np.asarray(v, float)
+        if len(v) > MAX_HULL:
+            from .geometry import _farthest_points
+            v = _farthest_points(v, MAX_HULL)
+        if len(v) >= 4:
+            out.append(v)
+    return out
+
+
+# -- the rule per label: part frame and support points ---------------------------------------------
+def canonical_frame(vertices: np.ndarray, faces: np.ndarray, label: str) -> tuple[np.ndarray, str]:
+    """``(rotation (3, 3) mesh -> part frame, kind)`` by the rule of ``label``.
+
+    A handle is a *bar* when its longest extent is at least twice the next: x along it, z (out of
+    the mounted surface) along the larger of the two others, pointing from the feet to the grip
+    (the side holding more surface). Otherwise it is a *stem* part (a knob): z is the axis whose two
+    cross extents are the most alike, pointing from the stem to the cap.
+    """
+    ext = np.ptp(vertices, axis=0)
+    order = np.argsort(-ext)
+    tri = vertices[faces]
+    area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+    centroid = (tri.mean(1) * area[:, None]).sum(0) / max(area.sum(), 1e-30)
+    mid = 0.5 * (vertices.min(0) + vertices.max(0))
+    eye = np.eye(3)
+    if label != "knob" and ext[order[0]] >= 2.0 * ext[order[1]]:
+        kind = "bar"
+        xi = int(order[0])
+        zi = int(order[1])
+    else:
+        kind = "stem"
+        ratios = []
+        for a in range(3):
+            o = [b for b in range(3) if b != a]
+            ratios.append(min(ext[o]) / max(max(ext[o]), 1e-12))
+        zi = int(np.argmax(ratios))
+        xi = next(b for b in range(3) if b != zi)
+    sign = 1.0 if centroid[zi] >= mid[zi] else -1.0
+    z = eye[zi] * sign
+    x = eye[xi]
+    return np.vstack([x, np.cross(z, x), z]), kind
+
+
+def support_rule(vertices: np.ndarray, kind: str, where: str) -> dict[str, np.ndarray]:
+    """Support points of a part already in its frame: the contact patches on its lowest plane.
+
+    ``bar``: the centroids of the lowest vertices on each side of the middle (``mount_a`` at -x,
+    ``mount_b`` at +x); ``stem``: the centroid of the lowest vertices (``stem``). Points lie on
+    the lowest plane.
+    """
+    z0 = float(vertices[:, 2].min())
+    tol = max(0.0005, 0.03 * float(np.ptp(vertices[:, 2])))
+    low = vertices[vertices[:, 2] <= z0 + tol]
+    if kind == "stem":
+        c = low.mean(0)
+        return {"stem": np.array([c[0], c[1], z0])}
+    xm = 0.5 * (vertices[:, 0].min() + vertices[:, 0].max())
+    a, b = low[low[:, 0] < xm], low[low[:, 0] > xm]
+    if len(a) == 0 or len(b) == 0:
+        raise _err(where, "a bar handle needs a foot at each end on its mounting plane, found one",
+                   "give its supports in part.json or leave it out")
+    return {"mount_a": np.array([*a.mean(0)[:2], z0]), "mount_b": np.array([*b.mean(0)[:2], z0])}
+
+
+# -- the library in memory --------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class LibPart:
+    """One loaded part, in its part frame (metres, z out of the mount, x along it)."""
+
+    label: str
+    id: str
+    source: str
+    licence: str
+    vertices: np.ndarray
+    faces: np.ndarray
+    convex: tuple
+    hulls: tuple
+    supports: dict
+    scale: dict
+    joint_hints: dict = field(default_factory=dict)
+    folder: str = ""
+
+    @property
+    def kind(self) -> frozenset:
+        return frozenset(self.supports)
+
+    def piece(self, material: str, name: str = ""):
+        from .geometry import Piece
+
+        return Piece(self.vertices, self.faces, material, self.convex, name, hulls=self.hulls)
+
+
+@dataclass(frozen=True, eq=False)
+class Library:
+    root: str
+    parts: tuple[LibPart, ...]
+
+    def candidates(self, label: str, kind: frozenset) -> list[LibPart]:
+        labels = SHARED.get(kind, (label,)) if label in SHARED.get(kind, ()) else (label,)
+        return [p for p in self.parts if p.label in labels and p.kind == kind]
+
+    @property
+    def labels(self) -> list[str]:
+        return sorted({p.label for p in self.parts})
+
+
+_CACHE: dict[tuple, Library] = {}
+
+
+def _read_json(path: Path, fix: str):
+    if not path.is_file():
+        raise _err(path, "missing", fix)
+    try:
+        return json.loads(path.read_text())
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as e:
+        raise _err(path, f"not valid JSON ({' '.join(str(e).split())[:80]})", fix) from None
+
+
+def _vec3(value, path, name) -> np.ndarray:
+    try:
+        a = np.asarray(value, float)
+    except (TypeError, ValueError):
+        a = np.zeros(0)
+    if a.shape != (3,) or not np.isfinite(a).all():
+        raise _err(path, f"field {name!r} must be three finite numbers, got {value!r}", "fix that field")
+    return a
+
+
+def _load_part(folder: Path, label: str, pid: str) -> LibPart:
+    pj = folder / "part.json"
+    d = _read_json(pj, "re-import the part (infmob parts import) or write its part.json")
+    if not isinstance(d, dict):
+        raise _err(pj, "must be a JSON object", "see the part.json fields in the README")
+    for key in ("label", "id", "source", "licence", "units", "up", "front", "supports", "scale", "mesh", "convex"):
+        if key not in d:
+            raise _err(pj, f"missing field {key!r}", "add it (see the part.json fields in the README)")
+    if d["label"] not in LABELS:
+        raise _err(pj, f"unknown label {d['label']!r}", f"use one of {sorted(LABELS)}")
+    if d["label"] != label or d["id"] != pid:
+        raise _err(pj, f"label/id {d['label']}/{d['id']} disagree with its folder {label}/{pid}",
+                   "move the folder or fix the fields")
+    for key in ("source", "licence"):
+        if not isinstance(d[key], str) or not d[key]:
+            raise _err(pj, f"field {key!r} must be a non-empty string", "name it (e.g. \"unknown\")")
+    if d["units"] not in UNITS:
+        raise _err(pj, f"field 'units' must be one of {list(UNITS)}, got {d['units']!r}", "fix that field")
+    for key in ("up", "front"):
+        if d[key] not in AXES:
+            raise _err(pj, f"field {key!r} must be one of {list(AXES)}, got {d[key]!r}", "fix that field")
+    try:
+        rot = axis_matrix(d["up"], d["front"])
+    except ValueError as e:
+        raise _err(pj, str(e), "give two perpendicular axes") from None
+    k = UNITS[d["units"]]
+    sup = d["supports"]
+    if not isinstance(sup, dict) or not sup:
+        raise _err(pj, "field 'supports' must map names to points", "e.g. {\"stem\": [0, 0, 0]}")
+    kinds = LABELS[label]["supports"]
+    if set(sup) not in kinds:
+        raise _err(pj, f"supports {sorted(sup)} match no kind of {label!r}",
+                   f"name them as one of {[sorted(s) for s in kinds]}")
+    supports = {n: rot @ _vec3(v, pj, f"supports.{n}") * k for n, v in sorted(sup.items())}
+    scale = {}
+    if not isinstance(d["scale"], dict):
+        raise _err(pj, "field 'scale' must map x, y, z to [lo, hi]", "fix that field")
+    for ax in "xyz":
+        r = d["scale"].get(ax)
+        if not (isinstance(r, list) and len(r) == 2 and all(isinstance(v, (int, float)) for v in r)
+                and 0 < r[0] <= r[1] and math.isfinite(r[1])):
+            raise _err(pj, f"field 'scale.{ax}' must be [lo, hi] with 0 < lo <= hi, got {r!r}", "fix that field")
+        scale[ax] = (float(r[0]), float(r[1]))
+    hints = d.get("joint_hints", {})
+    if not isinstance(hints, dict):
+        raise _err(pj, "field 'joint_hints' must be an object", "fix that field")
+    for name in ("mesh", "convex"):
+        if not isinstance(d[name], str) or "/" in d[name] or d[name].startswith("."):
+            raise _err(pj, f"field {name!r} must be a file name in the part's folder", "fix that field")
+    mesh = read_mesh(folder / d["mesh"])
+    v = np.asarray(mesh.vertices, float) @ rot.T * k
+    f = np.asarray(mesh.faces, np.int64)
+    cj = _read_json(folder / d["convex"], "re-import the part to compute its convex pieces")
+    pieces = cj.get("pieces") if isinstance(cj, dict) else None
+    if not isinstance(pieces, list) or not pieces:
+        raise _err(folder / d["convex"], "needs a non-empty list 'pieces'", "re-import the part")
+    convex = []
+    for i, pc in enumerate(pieces):
+        try:
+            a = np.asarray(pc, float)
+        except (TypeError, ValueError):
+            a = np.zeros((0, 0))
+        if a.ndim != 2 or a.shape[1] != 3 or not 4 <= len(a) <= MAX_HULL or not np.isfinite(a).all():
+            raise _err(folder / d["convex"], f"piece {i} must be 4..{MAX_HULL} finite points",
+                       "re-import the part")
+        convex.append(a @ rot.T * k)
+    from .geometry import hull_arrays
+
+    hulls = tuple(hull_arrays(c) for c in convex)
+    return LibPart(label, pid, d["source"], d["licence"], v, f, tuple(convex), hulls, supports, scale, hints,
+                   str(folder))
+
+
+def load_library(root) -> Library:
+    """Load and check a library (cached per process while its ``index.json`` is unchanged)."""
+    if isinstance(root, Library):
+        return root
+    root = Path(root)
+    index = root / "index.json"
+    if not root.is_dir():
+        raise _err(root, "no such part library folder", "give a folder made by `infmob parts import` or"
+                   " `infmob parts export-builtin`")
+    try:
+        st = index.stat()
+        key = (str(root.resolve()), st.st_mtime_ns, st.st_size)
+    except OSError:
+        key = None
+    if key is not None and key in _CACHE:
+        return _CACHE[key]
+    d = _read_json(index, "make the library with `infmob parts import` or `infmob parts export-builtin`")
+    if not isinstance(d, dict) or d.get("format") != FORMAT or not isinstance(d.get("parts"), list):
+        raise _err(index, f"not a part library index (needs format {FORMAT!r} and a list 'parts')",
+                   "re-make it with `infmob parts import`")
+    parts = []
+    for i, e in enumerate(d["parts"]):
+        if not isinstance(e, dict) or not all(isinstance(e.get(k), str) for k in ("label", "id", "path")):
+            raise _err(index, f"entry {i} needs string fields label, id, path", "re-make the index")
+        if e["label"] not in LABELS:
+            raise _err(index, f"entry {i}: unknown label {e['label']!r}", f"use one of {sorted(LABELS)}")
+        folder = root / e["path"]
+        if ".." in Path(e["path"]).parts or not folder.is_dir():
+            raise _err(index, f"entry {i}: part folder {e['path']!r} missing", "re-make the index or restore it")
+        parts.append(_load_part(folder, e["label"], e["id"]))
+    if not parts:
+        raise _err(index, "the library holds no parts", "import some with `infmob parts import`")
+    lib = Library(str(root), tuple(sorted(parts, key=lambda p: (p.label, p.id))))
+    if key is not None:
+        _CACHE[key] = lib
+    return lib
+
+
+# -- writing a library -------------------------------------------------------------------------------
+@dataclass
+class Entry:
+    """One part to write: canonical mesh (metres, part frame), supports, convex pieces, provenance."""
+
+    label: str
+    id: str
+    source: str
+    licence: str
+    vertices: np.ndarray
+    faces: np.ndarray
+    supports: dict
+    convex: list
+    watertight: bool
+    report: str = ""
+    scale: dict | None = None
+    joint_hints: dict | None = None
+
+
+def _fresh_out(out: Path) -> None:
+    if out.exists() and (not out.is_dir() or any(out.iterdir())):
+        raise _err(out, "exists and is not empty", "give a new folder with --out (nothing was written)")
+    if not out.parent.is_dir():
+        raise _err(out.parent, "no such folder", "create it first (nothing was written)")
+
+
+def write_library(entries: list[Entry], out: Path) -> Path:
+    """Write ``entries`` as a library into the new folder ``out`` (atomically: a temporary folder renamed)."""
+    out = Path(out)
+    _fresh_out(out)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+    try:
+        index = []
+        for e in sorted(entries, key=lambda e: (e.label, e.id)):
+            folder = tmp / e.label / e.id
+            folder.mkdir(parents=True)
+            write_obj(folder / "mesh.obj", e.vertices, e.faces)
+            (folder / "convex.json").write_text(json.dumps(
+                {"pieces": [[[round(float(x), 9) for x in p] for p in c] for c in e.convex]}) + "\n")
+            hints = e.joint_hints
+            if hints is None and set(e.supports) == {"stem"}:
+                hints = {"axis": {"point": [round(float(x), 9) for x in e.supports["stem"]],
+                                  "direction": [0.0, 0.0, 1.0]}}
+            meta = {"label": e.label, "id": e.id, "source": e.source, "licence": e.licence, "units": "m",
+                    "up": "+z", "front": "+x",
+                    "supports": {k: [round(float(x), 9) for x in v] for k, v in sorted(e.supports.items())},
+                    "joint_hints": hints or {},
+                    "scale": {k: list(v) for k, v in (e.scale or LABELS[e.label]["scale"]).items()},
+                    "materials": ["main"], "mesh": "mesh.obj", "convex": "convex.json",
+                    "watertight": bool(e.watertight), "repair": e.report}
+            (folder / "part.json").write_text(json.dumps(meta, indent=2) + "\n")
+            index.append({"label": e.label, "id": e.id, "path": f"{e.label}/{e.id}"})
+        (tmp / "index.json").write_text(json.dumps({"format": FORMAT, "parts": index}, indent=2) + "\n")
+        if out.exists():
+            out.rmdir()
+        os.replace(tmp, out)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return out
+
+
+def _entry(label: str, pid: str, source: str, licence: str, v: np.ndarray, f: np.ndarray, where: str,
+           overrides: dict | None = None) -> Entry:
+    """Repair, orient by the rule of ``label`` (or the given axes), find supports, decompose."""
+    rep = repair(v, f, where)
+    v, f = rep.vertices, rep.faces
+    overrides = overrides or {}
+    if overrides.get("up") and overrides.get("front"):
+        rot, kind = axis_matrix(overrides["up"], overrides["front"]), None
+    else:
+        rot, kind = canonical_frame(v, f, label)
+    v = v @ rot.T
+    if kind is None:
+        ext = np.ptp(v, axis=0)
+        kind = "bar" if ext[0] >= 2 * max(ext[1], 1e-12) else "stem"
+    sup = support_rule(v, kind, where)
+    # the part frame: supports' centre on the origin, the mounting plane at z = 0
+    c = np.mean(list(sup.values()), axis=0)
+    v = v - c
+    sup = {k: p - c for k, p in sup.items()}
+    convex = convex_pieces(v, f)
+    if not convex:
+        raise _err(where, "CoACD found no convex piece", "check the mesh is a solid or leave it out")
+    return Entry(label, pid, source, licence, v, f, sup, convex, rep.watertight, rep.report)
+
+
+def _safe_id(text: str) -> str:
+    s = "".join(ch if ch.isalnum() or ch in "-_" else "_" for ch in text).strip("_")
+    return s or "part"
+
+
+# -- PartNet-Mobility ------------------------------------------------------------------------------------
+SEMANTIC_LABELS = {"handle": "handle", "knob": "knob"}
+"""PartNet-Mobility semantic labels imported, and the label they get."""
+
+
+def _rpy(rpy) -> np.ndarray:
+    r, p, y = rpy
+    cr, sr, cp, sp, cy, sy = math.cos(r), math.sin(r), math.cos(p), math.sin(p), math.cos(y), math.sin(y)
+    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+                     [-sp, cp * sr, cp * cr]])
+
+
+def _origin(el, path) -> np.ndarray:
+    m = np.eye(4)
+    o = el.find("origin") if el is not None else None
+    if o is not None:
+        try:
+            xyz = [float(x) for x in o.get("xyz", "0 0 0").split()]
+            rpy = [float(x) for x in o.get("rpy", "0 0 0").split()]
+        except ValueError:
+            raise _err(path, "an <origin> has non-numeric xyz/rpy", "fix the URDF") from None
+        if len(xyz) != 3 or len(rpy) != 3:
+            raise _err(path, "an <origin> needs three xyz and three rpy values", "fix the URDF")
+        m[:3, :3], m[:3, 3] = _rpy(rpy), xyz
+    return m
+
+
+def _mobility_parts(obj: Path, units: str, up: str) -> tuple[list, list[str]]:
+    """``([(label, id, source, vertices, faces, where)], rejected lines)`` of one PartNet-Mobility object."""
+    urdf, sem = obj / "mobility.urdf", obj / "semantics.txt"
+    for f in (urdf, sem, obj / "result.json"):
+        if not f.is_file():
+            raise _err(f, "missing from a PartNet-Mobility object folder", "copy the whole object folder")
+    _read_json(obj / "result.json", "copy the object's result.json again")
+    try:
+        root = ET.parse(urdf).getroot()
+    except (ET.ParseError, OSError) as e:
+        raise _err(urdf, f"unreadable URDF ({e})", "copy the object's mobility.urdf again") from None
+    labels = {}
+    for n, line in enumerate(sem.read_text(errors="replace").splitlines(), 1):
+        w = line.split()
+        if not w:
+            continue
+        if len(w) != 3:
+            raise _err(sem, f"line {n} must be `link joint_type label`", "fix or re-copy semantics.txt")
+        labels[w[0]] = w[2]
+    world = {}
+    joints = [(j.find("parent").get("link"), j.find("child").get("link"), _origin(j, urdf))
+              for j in root.findall("joint") if j.find("parent") is not None and j.find("child") is not None]
+    names = [lk.get("name") for lk in root.findall("link")]
+    children = {c for _, c, _ in joints}
+    for n in names:
+        if n not in children:
+            world[n] = np.eye(4)
+    for _ in range(len(joints) + 1):
+        for p, c, m in joints:
+            if p in world and c not in world:
+                world[c] = world[p] @ m
+    to_z = axis_matrix("+" + up if up[0] not in "+-" else up, "+x" if up.lstrip("+-") != "x" else "+y")
+    k = UNITS[units]
+    out, rejected = [], []
+    for link in root.findall("link"):
+        name = link.get("name")
+        label = SEMANTIC_LABELS.get(labels.get(name, ""))
+        if label is None:
+            continue
+        vs, fs, off = [], [], 0
+        for vis in link.findall("visual"):
+            mesh_el = vis.find("geometry/mesh")
+            if mesh_el is None or not mesh_el.get("filename"):
+                continue
+            path = obj / mesh_el.get("filename")
+            if not path.is_file():
+                raise _err(path, f"named by {urdf.name} link {name} but missing", "copy textured_objs/ again")
+            m = read_mesh(path)
+            T = world.get(name, np.eye(4)) @ _origin(vis, urdf)
+            v = np.asarray(m.vertices, float) @ T[:3, :3].T + T[:3, 3]
+            vs.append(v)
+            fs.append(np.asarray(m.faces) + off)
+            off += len(v)
+        if not vs:
+            rejected.append(f"{urdf}: link {name} ({labels[name]}) has no visual mesh; skipped")
+            continue
+        v = np.vstack(vs) @ to_z.T * k
+        out.append((label, f"{_safe_id(obj.name)}_{_safe_id(name)}", f"PartNet-Mobility {obj.name} {name}",
+                    v, np.vstack(fs), f"{urdf} link {name}"))
+    return out, rejected
+
+
+def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", labels_csv=None,
+                 log=print) -> tuple[Path, list[str]]:
+    """Import a source into a new library ``out``; returns ``(out, rejected lines)``.
+
+    ``src``: a PartNet-Mobility object folder (``mobility.urdf``, ``textured_objs/``, ``result.json``,
+    ``semantics.txt``), a folder of them, or a folder of OBJ/GLB/PLY files with ``labels.csv``
+    (columns ``file,label`` and optionally ``units,up,front,source,licence``). ``units``/``up``: of
+    PartNet-Mobility meshes (its objects are Y-up). A mesh that cannot be used is rejected with a
+    line saying why; a source that cannot be read stops the import with nothing written.
+    """
+    src, out = Path(src), Path(out)
+    if units not in UNITS:
+        raise PartLibraryError(f"--units must be one of {list(UNITS)}, got {units!r}")
+    if up.lstrip("+-") not in ("x", "y", "z"):
+        raise PartLibraryError(f"--up must be x, y or z (optionally signed), got {up!r}")
+    if not src.is_dir():
+        raise _err(src, "no such folder", "give a PartNet-Mobility object folder or a folder with labels.csv")
+    _fresh_out(out)
+    found = []  # (label, id, source, licence, v, f, where, overrides)
+    rejected: list[str] = []
+    csv_path = Path(labels_csv) if labels_csv else src / "labels.csv"
+    objects = [src] if (src / "mobility.urdf").exists() else \
+        sorted(d for d in src.iterdir() if d.is_dir() and (d / "mobility.urdf").exists())
+    if objects:
+        for obj in objects:
+            got, rej = _mobility_parts(obj, units, up)
+            rejected += rej
+            found += [(lb, pid, source, licence or "PartNet-Mobility terms of use", v, f, where, {})
+                      for lb, pid, source, v, f, where in got]
+    elif csv_path.is_file():
+        try:
+            rows = list(csv.DictReader(csv_path.read_text().splitlines()))
+        except (OSError, UnicodeDecodeError, csv.Error) as e:
+            raise _err(csv_path, f"unreadable CSV ({e})", "write it as UTF-8 with a header line") from None
+        if not rows or "file" not in rows[0] or "label" not in rows[0]:
+            raise _err(csv_path, "needs a header with columns file,label", "add them (units,up,front optional)")
+        for n, row in enumerate(rows, 2):
+            path = src / (row.get("file") or "")
+            if not row.get("file") or not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES:
+                raise _err(csv_path, f"line {n}: {row.get('file')!r} is not a mesh file in {src}",
+                           f"fix the line (meshes: {', '.join(MESH_SUFFIXES)})")
+            label = row["label"]
+            if label not in LABELS:
+                raise _err(csv_path, f"line {n}: unknown label {label!r}", f"use one of {sorted(LABELS)}")
+            u = row.get("units") or units
+            if u not in UNITS:
+                raise _err(csv_path, f"line {n}: units must be one of {list(UNITS)}, got {u!r}", "fix the line")
+            ov = {}
+            for key in ("up", "front"):
+                if row.get(key):
+                    if row[key] not in AXES:
+                        raise _err(csv_path, f"line {n}: {key} must be one of {list(AXES)}", "fix the line")
+                    ov[key] = row[key]
+            m = read_mesh(path)
+            v = np.asarray(m.vertices, float) * UNITS[u]
+            if not ov:
+                src_up = up if up[0] in "+-" else "+" + up
+                v = v @ axis_matrix(src_up, "+x" if src_up[1] != "x" else "+y").T
+            found.append((label, _safe_id(path.stem), row.get("source") or path.name,
+                          row.get("licence") or licence or "unknown", v, np.asarray(m.faces), str(path), ov))
+    else:
+        raise _err(src, "holds neither PartNet-Mobility objects (mobility.urdf) nor labels.csv",
+                   "give such a folder, or --labels CSV")
+    entries, seen = [], set()
+    for label, pid, source, lic, v, f, where, ov in found:
+        while (label, pid) in seen:
+            pid += "_b"
+        try:
+            e = _entry(label, pid, source, lic, v, f, where, ov)
+        except PartLibraryError as err:
+            rejected.append(f"rejected {err}")
+            log(f"infmob: rejected {err}")
+            continue
+        seen.add((label, pid))
+        entries.append(e)
+        log(f"infmob: {label}/{pid}: {e.report}; {len(e.convex)} convex pieces; supports {sorted(e.supports)}")
+    if not entries:
+        raise _err(src, "no usable part (" + "; ".join(rejected)[:300] + ")", "fix the meshes (nothing was written)")
+    write_library(entries, out)
+    return out, rejected
+
+
+# -- the project's own parts ---------------------------------------------------------------------------
+def builtin_entries() -> list[Entry]:
+    """The procedural handles of ``categories/parts`` as library parts, with their exact convex pieces."""
+    import trimesh
+
+    from .categories.parts import doors, hardware
+    from .categories.parts import vessel as V
+
+    made = {
+        "builtin_bar_160": hardware.bar_handle(0.16, "main"),
+        "builtin_bar_320": hardware.bar_handle(0.32, "main"),
+        "builtin_edge_200": hardware.edge_pull(0.20, "main"),
+        "builtin_knob_30": hardware.knob_handle(0.015, 0.025, "main"),
+        "builtin_lid_knob_20": V.lid_knob(0.02, "main"),
+        "builtin_door_knob_28": doors.knob_part(0.028),
+    }
+    out = []
+    for pid, asm in made.items():
+        pieces = asm.pieces
+        mesh = trimesh.util.concatenate([trimesh.Trimesh(p.vertices, p.faces, process=False) for p in pieces])
+        convex = []
+        for p in pieces:
+            for hv, _hf in p.hulls():
+                convex.append(np.asarray(hv, float))
+        sup = {k: np.asarray(v, float) for k, v in asm.supports.items()}
+        out.append(Entry(asm.parts[asm.root].label, pid, "builtin infmob_usd categories/parts", "Apache-2.0",
+                         np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64), sup, convex,
+                         bool(mesh.is_watertight), "exported from the procedural part"))
+    return out
+
+
+def export_builtin(out) -> Path:
+    return write_library(builtin_entries(), Path(out))
