@@ -71,6 +71,8 @@ def frame_finish(p: dict) -> dict:
 
 
 GAP = 0.004  # door to cabinet, control strip and kick grille
+COMPRESSOR_KG = 6.0  # hermetic reciprocating compressors of small coolers weigh 5-8 kg (Embraco EMT/EMX,
+# Secop TLS data sheets); the modelled machine compartment is only the kick grille's height
 RACK_GAP = 0.004  # rack to rails, liner, back wall and neighbours
 DOOR_OPENS = math.pi / 2
 GLASS_MARGIN = 0.02  # door frame at least this wide above and below the glass
@@ -78,6 +80,17 @@ BAR = hardware.HandleSize(standoff=0.03, bar_radius=0.007, post_radius=0.0056, i
 
 
 class FridgeLayout(Layout):
+    def compressor(self, xb0: float, zf: float, zk: float) -> list[g.Piece]:
+        """The hermetic compressor in the machine compartment behind the kick grille (hidden, no
+        collision): a steel can in the ``wire`` slot (chrome, 7850 kg/m^3) massed as a shell whose wall
+        makes it :data:`COMPRESSOR_KG` with the motor inside."""
+        h = zk - zf - 0.012
+        r = 0.07
+        x = xb0 + 0.004 + 0.01 + r
+        can = g.cylinder([x, 0.0, zf + 0.004], [x, 0.0, zf + 0.004 + h], r, "wire", 24)
+        area = 2 * math.pi * r * (r + h)
+        return [can.replace(convex=(), wall=COMPRESSOR_KG / (7850.0 * area), name="compressor")]
+
     def beverage_fridge(self, node):
         p = self.p
         W, D, H, w, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
@@ -92,7 +105,7 @@ class FridgeLayout(Layout):
         # the door's glass: the cavity opening grown by 3 mm, inside the door's frame
         hole = (cav[2] - 0.003, max(cav[4] - 0.003, zd[0] + GLASS_MARGIN), cav[3] + 0.003,
                 min(cav[5] + 0.003, zd[1] - GLASS_MARGIN))
-        self.add("body", "body", A.insulated_cabinet((xb0, xb1, y0, y1, zf, H), cav, zk))
+        self.add("body", "body", A.insulated_cabinet((xb0, xb1, y0, y1, zf, H), cav, zk) + self.compressor(xb0, zf, zk))
         if ctrl:
             self.grow(ctrl, xs=(xb1, xf), ys=(y0, y1), zs=(zd[1] + GAP, H))
         self.grow(node.one("door"), box=(xf - ft, xf, y0, y1, *zd), hole=hole)

@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -85,7 +86,8 @@ MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_fin
 
 def has_a_moving_part(p: dict) -> dict:
     """A table whose draw grows no moving part (extension, drop leaves, drawers, adjustable legs) gets the
-    extension; adjustable legs have no levellers; a drop-leaf table's drawers are in its ends (its lopers turn out of the long apron boards)."""
+    extension; adjustable legs have no levellers; a drop-leaf table's drawers are in its ends (its lopers
+    turn out of the long apron boards)."""
     if p["has_adjustable_legs"]:  # inner legs stand on their own rubber feet
         p = {**p, "has_levellers": False}
     if p["top_style"] == "drop_leaf" and p["drawer_sides"] != "ends":
@@ -110,6 +112,7 @@ OVAL_APRON = 0.64  # an oval top's apron spans this fraction of its length and w
 MARGIN = 0.012  # apron board above and below a drawer opening
 DRAWER_MIN = 0.06  # the lowest drawer opening worth having
 DRAWER_WIDTH = 0.5  # the widest drawer
+METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (a 50 cm drawer ~2-3 kg)
 DRAWER_DEPTH = 0.45  # the deepest drawer
 SLEEVE_FROM = 0.45  # adjustable legs: sleeves start at this fraction of the height
 INNER_AT_REST = 0.12  # an inner leg reaches this far up its sleeve at rest
@@ -263,7 +266,12 @@ class TableLayout(Layout):
             face = Frame.at((at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
         else:
             face = Frame.at(((a0 + a1) / 2, at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
-        box = panels.drawer_box(w, h, depth, BOARD, DRAWER_WALL, "frame").attached("slide", to=face)
+        box = panels.drawer_box(w, h, depth, BOARD, DRAWER_WALL, "frame")
+        if self.p["frame_finish"] == "brushed_metal":  # a steel drawer is folded sheet, not steel boards
+            part = box.parts[box.root]
+            box = Assembly.single(part.label, [pc.replace(sheet=METAL_DRAWER_SHEET) for pc in part.pieces],
+                                  box.anchors, box.supports, name=box.root)
+        box = box.attached("slide", to=face)
         if self.p["handle_style"] == "knob":
             handle = hardware.knob_handle(min(0.016, 0.3 * h), 0.025, "handle")
         else:

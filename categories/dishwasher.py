@@ -82,7 +82,19 @@ BAR = hardware.HandleSize(standoff=0.028, bar_radius=0.007, post_radius=0.0056, 
 HANDLE_STRIP = 0.03  # the lowest strip of a control panel carries the handle
 
 
+PUMP_KG = 5.0
+"""kg of the machinery in a dishwasher's base: circulation pump with motor 3-4 kg, drain pump ~0.5 kg,
+sump and heater (service-part listings, e.g. Bosch 00651956 circulation pump ~3.5 kg)."""
+
 class DishwasherLayout(A.PanelNodes):
+    def pump(self, xb0: float, xb1: float, zf: float, zh: float) -> list[g.Piece]:
+        """The wash pump with its motor and the sump in the base under the tub (hidden, no collision):
+        a steel can in the ``tub`` slot (stainless, 7850 kg/m^3) whose wall makes it :data:`PUMP_KG`."""
+        h, r = zh - zf - 0.012, 0.06
+        x = (xb0 + xb1) / 2 - 0.04
+        can = g.cylinder([x, 0.0, zf + 0.006], [x, 0.0, zf + 0.006 + h], r, "tub", 24)
+        return [can.replace(convex=(), wall=PUMP_KG / (7850.0 * 2 * math.pi * r * (r + h)), name="pump")]
+
     def dishwasher(self, node):
         p = self.p
         W, D, H, w, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
@@ -99,7 +111,7 @@ class DishwasherLayout(A.PanelNodes):
         band = 0.025 + (p["control_height"] if ctrl else 0.0) + (0.03 if ctrl and handle else 0.0)
         if handle and not ctrl:
             band = 0.07
-        self.add("body", "body", A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf))
+        self.add("body", "body", A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + self.pump(xb0, xb1, zf, zh))
         self.grow(door, box=(xf - ft, xf, y0, y1, zh, zt), band=band)
         # racks: below the band and the ceiling nozzle; above the flat door's inner face and the spray arm
         top = min(cav[5] - 0.032, zt - band - 0.01)

@@ -18,6 +18,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
+from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
@@ -75,6 +76,16 @@ MATERIALS = {
 }
 
 DOOR_OPENS = math.pi / 2
+STEEL_SHEET = 0.0006  # m: casing and cavity liner are 0.5-0.7 mm steel sheet under any finish
+
+
+def steel_sheet(family: str) -> float:
+    """The sheet (m) a casing piece of ``family`` is massed with so it weighs as :data:`STEEL_SHEET`
+    of steel: a painted or plastic-clad casing is still a steel box."""
+    return STEEL_SHEET * 7850.0 / FAMILIES[family].density
+
+TRANSFORMER = (0.09, 0.075)  # m, depth and height of the HV transformer's laminated core: 2.5-4 kg
+# with its windings (microwave HV transformers weigh 2.5-4 kg: service-part listings, e.g. Samsung DE26-00126A)
 EDGE = 0.002  # door and fascia stop this far inside the casing's top and bottom
 LINER_IN = 0.012  # the cavity liner sits this far inside the casing walls
 BACK_ROOM = 0.02  # behind the cavity
@@ -103,7 +114,19 @@ class MicrowaveLayout(A.PanelNodes):
         xb = -D / 2
         cav = (xb + t + BACK_ROOM, xf - A.BEZEL, y0 + t + LINER_IN, yd1 - BEZEL_SIDE, zc0 + t + LINER_IN,
                zc1 - t - LINER_IN)
-        self.add("body", "body", A.casing((xb, xf, y0, y1, zc0, zc1), cav, t, min(0.014, 0.6 * zc0 + 0.006)))
+        casing = A.casing((xb, xf, y0, y1, zc0, zc1), cav, t, min(0.014, 0.6 * zc0 + 0.006))
+        sheets = {"body": steel_sheet(p["body_finish"]), "interior": steel_sheet(p["interior_finish"])}
+        casing = [pc.replace(sheet=sheets[pc.material]) if pc.material in sheets else pc for pc in casing]
+        # the high-voltage transformer on the casing floor in the bay beside the cavity (hidden)
+        bay = (cav[3] + A.LINER + 0.004, y1 - t - 0.004)
+        if bay[1] - bay[0] > 0.03:
+            side = min(0.08, bay[1] - bay[0])
+            ym = (bay[0] + bay[1]) / 2
+            x0 = xb + t + 0.02
+            core = g.box_between([x0, ym - side / 2, zc0 + t], [x0 + TRANSFORMER[0], ym + side / 2, zc0 + t + TRANSFORMER[1]],
+                                 "trim", name="transformer").replace(wall=0.0)
+            casing.append(core)
+        self.add("body", "body", casing)
         self.grow(node.one("plate"), cavity=cav)
         door = node.one("door")
         self.grow(door, ys=(y0, yd1), zs=zd, x_front=xd1)

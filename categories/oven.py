@@ -113,6 +113,11 @@ BACKGUARD = 0.06  # depth of a range's control panel (backguard)
 KNOB_MARGIN = 0.03  # control panel ends beside the outer knobs
 
 
+PAINTED_STEEL = 7850.0 / 750.0
+"""Sheet of a painted door or drawer is painted steel (7850 kg/m^3) but the painted family is massed
+as board (750 kg/m^3): its sheet counts this many times thicker (a 0.8 mm steel drawer ~2-3 kg)."""
+
+
 class OvenLayout(A.PanelNodes):
     def oven(self, node):
         p = self.p
@@ -189,6 +194,13 @@ class OvenLayout(A.PanelNodes):
                                      ((0.0, p["grate_slide"] * p["depth"]), (-GRATE_SIDE, GRATE_SIDE),
                                       (0.0, p["grate_lift"]))))
 
+    def steel(self, pieces):
+        """Painted sheet pieces weigh as painted steel (:data:`PAINTED_STEEL`): the door's inner frame
+        (``door_inner``, always painted) and, on a painted oven, its casing-finish pieces."""
+        painted = {"door_inner"} | ({"body", "door"} if self.p["body_finish"] == "painted" else set())
+        return [pc.replace(sheet=pc.sheet * PAINTED_STEEL) if pc.sheet > 0 and pc.material in painted else pc
+                for pc in pieces]
+
     def drawer(self, node, xs, ys, zs):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull."""
         p = self.p
@@ -197,6 +209,7 @@ class OvenLayout(A.PanelNodes):
         fx0, tx0 = xf + 0.003, xb + T + 0.015
         pieces = A.storage_drawer((fx0, xd1, y0 + 0.003, y1 - 0.003, z_pl + 0.002, z_dt),
                                   (tx0, y0 + T + c, y1 - T - c, z_pl + T + c, z_dt - 0.012))
+        pieces = self.steel(pieces)
         pull = hardware.edge_pull(0.5 * (y1 - y0), "handle", depth=0.016, lip=0.014).attached(
             "mount", to=Frame.at((xd1, 0.0, z_dt - 0.022), z=(1, 0, 0), x=(0, 1, 0)))
         self.add("drawer", "drawer", pieces + list(pull.parts[pull.root].pieces))
@@ -209,7 +222,7 @@ class OvenLayout(A.PanelNodes):
         hole = (y0 + m, z0 + 1.2 * m, y1 - m, z1 - 1.6 * m)
         bar = hardware.bar_handle(p["handle_length"] * (y1 - y0), "handle", HANDLE).attached(
             "mount", to=Frame.at((x1, 0.0, z1 - 0.045), z=(1, 0, 0), x=(0, 1, 0)))
-        self.add("door", "door", A.oven_door(box, hole) + [pc.replace(sheet=HANDLE_TUBE)
+        self.add("door", "door", self.steel(A.oven_door(box, hole)) + [pc.replace(sheet=HANDLE_TUBE)
                                                            for pc in bar.parts[bar.root].pieces])
         # hinged on the front face at the bottom edge: about +Y the top falls forward (+X)
         self.hinge("body", "door", Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)

@@ -129,9 +129,11 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     missing = [slot for slot in used if slot not in bp.materials]
     if missing:
         raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
-    densities = {slot: FAMILIES[split_spec(bp.materials[slot])[0]].density for slot in used}
-    links, joints = build(bp, densities)
-    links, joints = physical.rest_on_stops(links, joints, densities)
+    families = {slot: FAMILIES[split_spec(bp.materials[slot])[0]] for slot in used}
+    densities = {slot: f.density for slot, f in families.items()}
+    walls = {slot: f.wall for slot, f in families.items()}
+    links, joints = build(bp, densities, walls)
+    links, joints = physical.rest_on_stops(links, joints, densities, walls)
     links = physical.ensure_gaps(links, joints)
     joints = physical.limit_to_ground(links, joints)
     looks = {slot: looks[slot] for slot in used}

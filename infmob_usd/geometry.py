@@ -102,6 +102,12 @@ class Piece:
         Wall thickness in metres of a part made of sheet (a steel casing, a
         thin tube) that is modelled solid: mass then counts area x sheet, not
         the solid volume. 0 (default) means solid.
+    wall : float or None
+        Wall thickness in metres of a hollow part whose closed mesh is its outer surface (a
+        ceramic bowl, a steel tube, a hollow-core door): mass is surface area x wall (a thin
+        shell, with the shell's centre of mass and inertia, :func:`shells`), at most the solid's.
+        ``None`` (default): the material family's wall (``Family.wall``, 0 for solid families);
+        0: solid. A ``sheet`` > 0 takes precedence.
     hulls_known : tuple of ((v, 3) float, (f, 3) int) or None
         Per convex piece, its hull where construction knows it (outward faces over a subset
         of the points); ``None`` entries are computed by :meth:`hulls`. Given as the
@@ -114,12 +120,13 @@ class Piece:
     convex: tuple[np.ndarray, ...] = ()
     name: str = ""
     sheet: float = 0.0
+    wall: float | None = None
     # not init fields: dataclasses.replace(piece, convex=...) then drops hulls it would make stale
     hulls_known: tuple = field(default=(), init=False, repr=False)
     bands: tuple = field(default=(), init=False, repr=False)  # per convex piece: (_Band, turn angle) or None
 
     def __init__(self, vertices, faces, material: str, convex=(), name: str = "", sheet: float = 0.0,
-                 hulls=None, bands=None, _owned: bool = False) -> None:
+                 hulls=None, bands=None, _owned: bool = False, wall: float | None = None) -> None:
         # _owned (internal): every array given was made for this piece alone, freeze it in place
         put = object.__setattr__
         put(self, "vertices", _frozen(vertices, np.float64, _owned))
@@ -128,6 +135,7 @@ class Piece:
         put(self, "convex", tuple(_frozen(c, np.float64, _owned) for c in convex))
         put(self, "name", name)
         put(self, "sheet", float(sheet))
+        put(self, "wall", None if wall is None else float(wall))
         n = len(self.convex)
         known = [None] * n
         if isinstance(hulls, dict):
@@ -160,14 +168,14 @@ class Piece:
 
     def replace(self, **changes) -> Piece:
         """A copy with some fields changed (``vertices``, ``faces``, ``material``, ``convex``,
-        ``name``, ``sheet``, ``hulls``). New ``convex`` point sets drop the known hulls unless
+        ``name``, ``sheet``, ``wall``, ``hulls``). New ``convex`` point sets drop the known hulls unless
         ``hulls`` is given with them."""
         if "convex" in changes:
             hulls, bands = changes.pop("hulls", None), None
         else:
             hulls, bands = changes.pop("hulls", self._hulls_so_far()), self.bands
         args = {"vertices": self.vertices, "faces": self.faces, "material": self.material,
-                "convex": self.convex, "name": self.name, "sheet": self.sheet}
+                "convex": self.convex, "name": self.name, "sheet": self.sheet, "wall": self.wall}
         unknown = set(changes) - set(args)
         if unknown:
             raise TypeError(f"Piece.replace: no field {sorted(unknown)}")
@@ -208,7 +216,7 @@ class Piece:
                         r @ band.axis if rigid and band.axis is not None else None)
                 bands.append((moved[id(band)], angle))
         return Piece(self.vertices @ r.T + t, self.faces, self.material, convex, self.name, self.sheet,
-                     hulls, bands, _owned=True)
+                     hulls, bands, _owned=True, wall=self.wall)
 
     def translated(self, offset: Sequence[float]) -> Piece:
         m = np.eye(4)
@@ -286,7 +294,7 @@ class Piece:
         """This piece's mesh with ``other``'s collision pieces (and their known hulls): a fine
         visual surface over a coarse collision one."""
         return Piece(self.vertices, self.faces, self.material, other.convex, self.name, self.sheet,
-                     other._hulls_so_far(), other.bands)
+                     other._hulls_so_far(), other.bands, wall=self.wall)
 
     def with_convex(self, replaced: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]]) -> Piece:
         """A copy with convex pieces replaced: ``{k: (points, hull vertices, hull faces)}``.
@@ -297,7 +305,8 @@ class Piece:
         bands = list(self.bands)
         for k, (pts, hv, hf) in replaced.items():
             convex[k], hulls[k], bands[k] = pts, (hv, hf), None
-        return Piece(self.vertices, self.faces, self.material, convex, self.name, self.sheet, hulls, bands)
+        return Piece(self.vertices, self.faces, self.material, convex, self.name, self.sheet, hulls, bands,
+                     wall=self.wall)
 
     def with_wedges(self, outer, inner, sectors: int, phase: float = 0.0) -> Piece:
         """This piece's mesh with flat-faced wedge collisions of a wall of revolution about +Z.
@@ -309,7 +318,7 @@ class Piece:
         pts = list(wedge_points(outer, inner, sectors, phase).reshape(-1, 8, 3))
         turns = 2 * np.pi * np.arange(sectors) / sectors
         return Piece(self.vertices, self.faces, self.material, pts, self.name, self.sheet,
-                     bands=_turned_copies(pts, sectors, turns, np.zeros(3)))
+                     bands=_turned_copies(pts, sectors, turns, np.zeros(3)), wall=self.wall)
 
     def hull_instances(self) -> list[tuple[int, np.ndarray, np.ndarray] | None]:
         """Per hull of :meth:`hulls`: ``(j, R, t)`` when hull ``k`` is hull ``j`` of this piece moved
@@ -387,6 +396,37 @@ def mass_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.
     return volume, centroid + ref, inertia, area
 
 
+def shell_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
+    """Area, area centroid ``(3,)`` and inertia tensor about it per unit of surface mass ``(3, 3)``
+    of a triangle mesh: the mass properties of a thin shell of uniform wall (mass = density x
+    wall x area).
+
+    Per triangle with corners ``p_i`` (from a reference point) and area ``a``, the second moment
+    is ``a / 12 * (sum p_i p_i^T + s s^T)`` with ``s = sum p_i``.
+    """
+    v = np.asarray(vertices, float)
+    ref = v.mean(0)
+    tri = v[np.asarray(faces, np.int64)] - ref  # (m, 3, 3)
+    a = 0.5 * np.linalg.norm(triangle_cross(tri), axis=1)  # (m,)
+    area = float(a.sum())
+    if area <= 1e-15:
+        return 0.0, ref, np.zeros((3, 3))
+    s = tri.sum(1)
+    centroid = (a @ s) / (3.0 * area)
+    corners = tri.reshape(-1, 3)
+    second = ((corners * np.repeat(a, 3)[:, None]).T @ corners + (s * a[:, None]).T @ s) / 12.0
+    second -= area * np.outer(centroid, centroid)
+    inertia = np.trace(second) * np.eye(3) - second
+    return area, centroid + ref, inertia
+
+
+def _solid_meshes(piece: Piece) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The closed meshes a piece's mass comes from: its mesh if closed (with volume), else its hulls."""
+    if is_closed(piece.faces) and mass_properties(piece.vertices, piece.faces)[0] > 1e-12:
+        return [(piece.vertices, piece.faces)]
+    return [(v, f) for v, f in piece.hulls()]
+
+
 def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
     """Mass properties of the solids of a piece: its mesh if closed, else its convex hulls."""
     if is_closed(piece.faces):
@@ -394,6 +434,11 @@ def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
         if props[0] > 1e-12:
             return [props]
     return [mass_properties(v, f) for v, f in piece.hulls()]
+
+
+def shells(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray]]:
+    """:func:`shell_properties` of the same closed meshes :func:`solids` measures."""
+    return [shell_properties(v, f) for v, f in _solid_meshes(piece)]
 
 
 # ---------------------------------------------------------------------------

@@ -1,4 +1,16 @@
-"""Mass and inertia of links from material density and solid volume."""
+"""Mass and inertia of links from material density and solid volume, or shell area x wall.
+
+A piece is massed one of three ways (:func:`inertial`):
+
+* **sheet** (``Piece.sheet`` > 0): a panel or tube of sheet modelled solid; its density is scaled
+  so the mass is half its surface x the sheet (one face of a panel), the solid's inertia shape;
+* **hollow** (``Piece.wall``, else its material family's ``wall``): the closed mesh is the outside
+  of a thin shell (a ceramic bowl, a steel tube or casing, a hollow-core door's skins): mass =
+  density x wall x area with the shell's own centre of mass and inertia
+  (:func:`~infmob_usd.geometry.shell_properties`), unless the shell would outweigh the solid (a
+  part thinner than two walls, a wire, a thin plate) which is then massed solid;
+* **solid**: density x volume.
+"""
 
 from __future__ import annotations
 
@@ -6,7 +18,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from .geometry import Piece, solids
+from .geometry import Piece, shells, solids
 
 DUMMY_MASS = 0.01
 """kg of a dummy link of a compound joint: light, never zero (zero means "compute it")."""
@@ -30,17 +42,39 @@ the pole's swivel stalled at 73 % of its range and the held head swung 1.5 rad. 
 mass are unchanged; the added moment acts like a drive's armature, far below what the joint moves."""
 
 
-def inertial(pieces: Iterable[tuple[Piece, float]]) -> tuple[float, np.ndarray, np.ndarray]:
+def wall_of(piece: Piece, family_wall: float = 0.0) -> float:
+    """The wall thickness (m) a piece is massed with as a hollow shell; 0 = not hollow."""
+    if piece.sheet > 0:
+        return 0.0
+    return max(0.0, family_wall if piece.wall is None else piece.wall)
+
+
+def inertial(pieces: Iterable[tuple]) -> tuple[float, np.ndarray, np.ndarray]:
     """Mass (kg), centre of mass ``(3,)`` and inertia tensor ``(3, 3)`` about it.
 
-    ``pieces`` yields ``(piece, density kg/m^3)`` in one common frame. Solids are
-    the closed piece meshes, or their convex collision hulls where a mesh is open.
+    ``pieces`` yields ``(piece, density kg/m^3)`` or ``(piece, density, family wall m)`` in one
+    common frame. Solids are the closed piece meshes, or their convex collision hulls where a
+    mesh is open; hollow pieces (module docstring) are their shells.
     The tensor is made positive definite with a floor relative to its size and never below
     ``MIN_INERTIA`` on a principal axis.
     """
     masses, coms, tensors = [], [], []
-    for piece, density in pieces:
+    for entry in pieces:
+        piece, density = entry[0], entry[1]
+        family_wall = entry[2] if len(entry) > 2 else 0.0
         parts = solids(piece)
+        wall = wall_of(piece, family_wall)
+        if wall > 0:
+            skins = shells(piece)
+            area = float(sum(s[0] for s in skins))
+            if wall * area < float(sum(abs(s[0]) for s in parts)):
+                for a, centroid, unit_inertia in skins:
+                    if a <= 1e-12:
+                        continue
+                    masses.append(density * wall * a)
+                    coms.append(centroid)
+                    tensors.append(unit_inertia * (density * wall))
+                continue
         if piece.sheet > 0:
             # a part made of sheet (a casing panel, a tube) modelled solid: its wall is about half
             # the solid's surface (one face of a panel, the outside of a tube) times the sheet

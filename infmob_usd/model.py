@@ -142,8 +142,11 @@ def _translation(t) -> np.ndarray:
     return m
 
 
-def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[Joint]]:
-    """Place frames and expand compound joints. ``densities``: slot -> kg/m^3."""
+def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | None = None
+          ) -> tuple[list[Link], list[Joint]]:
+    """Place frames and expand compound joints. ``densities``: slot -> kg/m^3; ``walls``: slot ->
+    the wall (m) of its family's hollow pieces (:func:`~infmob_usd.mass.inertial`), default solid."""
+    walls = walls or {}
     root = bp.root
     by_parent: dict[str, list] = {}
     for spec in bp.joints:
@@ -161,7 +164,7 @@ def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[
             for p in local:
                 if p.material not in densities:
                     raise ModelError(f"part {name!r} uses material slot {p.material!r} with no family")
-            mass, com, inertia = inertial((p, densities[p.material]) for p in local)
+            mass, com, inertia = inertial((p, densities[p.material], walls.get(p.material, 0.0)) for p in local)
         links.append(Link(name, label, origin, local, mass, com, inertia, dummy))
 
     root_part = bp.parts[root]

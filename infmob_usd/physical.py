@@ -286,7 +286,7 @@ def gravity_torque(links, joints, joint) -> tuple[float, float, np.ndarray]:
     return torque, mass, com
 
 
-def rest_on_stops(links, joints, densities: dict[str, float]):
+def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, float] | None = None):
     """Make every passive revolute joint neutral under gravity or pressed onto its rest stop.
 
     A *passive* joint is one with no drive: every joint of a generated object is (they only
@@ -305,6 +305,9 @@ def rest_on_stops(links, joints, densities: dict[str, float]):
       its axis) a *counterweight heel* is added to the child link: a bar of the child's
       heaviest material from the axis along the side opposite the carried centre of mass,
       as long as it must be to bring that centre onto the axis (moment ``rho A L^2 / 2``).
+
+    The heel is solid (``wall=0``) whatever its family's wall; ``walls`` (slot -> m) mass the
+    child's other pieces as :func:`~infmob_usd.model.build` did.
 
     Returns new ``(links, joints)`` lists; links and joints not changed are the same objects.
     """
@@ -349,9 +352,10 @@ def rest_on_stops(links, joints, densities: dict[str, float]):
         frame[:3, :3] = np.column_stack([u, w, axis])
         frame[:3, 3] = centre - np.asarray(child.origin, float)  # link-local
         heel = box_between([-length / 2, -side / 2, -side / 2], [length / 2, side / 2, side / 2],
-                           heaviest.material, name="counterweight").transformed(frame)
+                           heaviest.material, name="counterweight").transformed(frame).replace(wall=0.0)
         pieces = child.pieces + [heel]
-        m, c, inertia = inertial((p, densities[p.material]) for p in pieces)
+        walls = walls or {}
+        m, c, inertia = inertial((p, densities[p.material], walls.get(p.material, 0.0)) for p in pieces)
         links[index[j.child]] = replace(child, pieces=pieces, mass=m, com=c, inertia=inertia)
     return links, joints
 

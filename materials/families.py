@@ -84,6 +84,11 @@ class Family:
         denser than window glass, a frosted bulb nearly opaque).
     ior : float
         Index of refraction (written for see-through materials).
+    wall : float
+        Wall thickness in metres of this family's parts where they are hollow (a steel tube or
+        casing, a ceramic bowl, a glass bottle, a moulded plastic shell): a piece without its own
+        ``sheet`` or ``wall`` is massed as a shell of this wall over its closed mesh, or solid
+        where it is thinner than two walls (:func:`infmob_usd.mass.inertial`). 0: solid.
     """
 
     name: str
@@ -101,6 +106,7 @@ class Family:
     anisotropy: Range
     variant_opacity: tuple[tuple[str, Range], ...] = ()
     ior: float = 1.5
+    wall: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -281,6 +287,7 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="brushed_metal",
             density=7850.0,
+            wall=0.0012,  # steel tube and pressed sheet: furniture tube walls 1-1.5 mm (EN 10305-3), appliance panels 0.6-0.8 mm
             style="brushed",
             palette=(
                 ("stainless", "#C4C5C6"),
@@ -300,6 +307,7 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="plastic",
             density=1100.0,
+            wall=0.0025,  # injection-moulded shells (chair pans, appliance trims, caps) 2-3 mm nominal wall
             style="speckle",
             palette=(
                 ("black", "#1E1E1E"),
@@ -326,6 +334,7 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="glass",
             density=2500.0,
+            wall=0.0035,  # container glass walls 2.5-4 mm (750 ml wine bottles, jars); panes stay solid (thinner than two walls)
             style="polished",
             palette=(
                 # clear glass reflects, it does not scatter: a mid-light albedo keeps a few
@@ -362,6 +371,7 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="ceramic",
             density=2400.0,
+            wall=0.008,  # vitreous china walls of toilets and basins 6-10 mm (slip casting); vases and jars 4-8 mm
             style="coating",
             palette=(
                 ("white", "#F4F2EC"),
@@ -405,6 +415,7 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="chrome",
             density=7850.0,
+            wall=0.0012,  # chromed steel tube and hollow die-cast/stamped trim (lever handles, knob roses) ~1-1.5 mm
             style="polished",
             palette=(
                 ("chrome", "#DADCDE"),
@@ -424,6 +435,7 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="enamel",
             density=7850.0,
+            wall=0.0012,  # enamelled sheet steel (cooktops, oven cavities, rack uprights) 0.6-1.5 mm
             style="coating",
             palette=(
                 ("white", "#F1F1EE"),
@@ -446,7 +458,9 @@ FAMILIES: dict[str, Family] = {
         ),
         Family(
             name="fabric",
-            density=300.0,
+            # upholstery as modelled (a cushion is one solid): polyurethane foam 25-45 kg/m^3 under a
+            # 300-500 g/m^2 cover, ~100 kg/m^3 over a 5-8 cm cushion (EN 1726 foam grades; was 300)
+            density=100.0,
             style="woven",
             palette=(
                 ("charcoal", "#3A3B3D"),

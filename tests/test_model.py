@@ -39,10 +39,12 @@ def test_links_sit_at_their_pivots_and_masses_follow_density():
     obj = zoo()
     rev = obj.link("rev_part")
     assert np.allclose(rev.origin[:2], [0, np.linspace(-0.85, 0.85, 9)[1]])
-    # a 6 cm plastic cube (density from the plastic family)
+    # a 6 cm plastic cube: a moulded box, massed as a shell of the plastic family's wall and density
     from infmob_usd.materials import FAMILIES
 
-    assert rev.mass == pytest.approx(0.06**3 * FAMILIES["plastic"].density, rel=1e-6)
+    plastic = FAMILIES["plastic"]
+    assert 0 < plastic.wall < 0.01
+    assert rev.mass == pytest.approx(6 * 0.06**2 * plastic.wall * plastic.density, rel=1e-6)
     assert np.allclose(rev.com, 0, atol=1e-9)  # the cube's centre is the pivot
     for link in obj.links:
         assert np.all(np.linalg.eigvalsh(link.inertia) > 0)

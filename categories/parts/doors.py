@@ -62,9 +62,21 @@ LEAF = dict(bottom_rail=0.22, rail=0.12, lite_width=0.32, lite_top=0.25, lite_bo
 a flat leaf's lites: width as a fraction of the leaf, their top below the leaf top, bottom above the handle."""
 
 
+LEAF_WALL = 0.006
+"""m: the leaf is hollow-core (the common interior door, flush or moulded-panel: 3-4 mm HDF skins on a
+pine stile-and-rail frame over a honeycomb core), massed as a 6 mm shell: a 0.9 x 2.1 m leaf ~13 kg
+(hollow-core 30 x 80 in slabs weigh 10-13 kg: JELD-WEN, Masonite listings)."""
+
+
 def leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int) -> list[g.Piece]:
     """A plain slab, or a stile-and-rail frame with ``count`` recessed or raised panels or glass lites
-    in its holes (glazing: ``none``, the ``top`` row, or ``full``)."""
+    in its holes (glazing: ``none``, the ``top`` row, or ``full``); the wooden pieces are hollow-core
+    (:data:`LEAF_WALL`), the glass solid."""
+    return [p.replace(wall=LEAF_WALL) if p.material == "leaf" else p
+            for p in _leaf(xs, ys, zs, handle_z, style, glazing, stile, count)]
+
+
+def _leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int) -> list[g.Piece]:
     (x0, x1), (y0, y1), (z0, z1) = xs, ys, zs
     T = x1 - x0
     if style == "flat":

@@ -170,6 +170,8 @@ def star_base(n_legs: int, radius: float, c: Caster, r_lift: float, leg_style: s
     tips = polar(Frame.at(), n_legs, radius)
     for spoke in polar(Frame.at(), n_legs, 0.0):
         pieces += [leg.transformed(spoke.matrix), socket.transformed(spoke.matrix)]
+    # a plastic base is ribbed glass-filled nylon, massed solid (5-leg nylon bases weigh 2-3 kg)
+    pieces = [pc.replace(wall=0.0) for pc in pieces]
     return Base(Assembly.single("base", pieces, {"socket": Frame.at((0, 0, floor))}), floor, z_h1, bore,
                 tuple(tips))
 
