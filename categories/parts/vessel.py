@@ -286,11 +286,16 @@ def _body(pieces, profile_height: float, base_radius: float, seat: float | None 
 
 
 def vase_body(shape, height: float, radius: float, wall: float, jitter, slot: str,
-              sheet: float = 0.0) -> tuple[Assembly, Profile]:
+              sheet: float = 0.0, stand: float = 0.0) -> tuple[Assembly, Profile]:
     """A vase: a thin wall through ``shape`` (``(radius / radius, z / height)`` points, each radius
-    scaled by ``1 + jitter[i]``) on a bottom disc. Returns the body and its wall profile."""
+    scaled by ``1 + jitter[i]``) on a bottom disc. Returns the body and its wall profile. ``stand``:
+    the smallest base radius as a share of the widest control radius (the bottom two control points
+    are widened to it, so the vase stands on a foot at least that wide)."""
     r_min = wall + S.VASE_NECK_ROOM
     ctrl = [(max(r_min, min(radius, f * (1.0 + j) * radius)), u * height) for (f, u), j in zip(shape, jitter)]
+    if stand > 0:
+        widest = max(r for r, _ in ctrl)
+        ctrl[:2] = [(max(r, stand * widest * (1.0 + 0.03 * i)), z) for i, (r, z) in enumerate(ctrl[:2])]
     prof = Profile.through(ctrl, wall, S.VASE_SPLINE, r_min=r_min)
     tb = S.BOTTOM_RATIO * wall
     bottom = _piece(g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, SECTIONS), sheet=sheet)
