@@ -29,3 +29,30 @@ VASE_STOPPER = {"overhang": 0.003, "depth": (0.08, 0.015, 0.03), "flange": 0.006
 # 55..85 % of the vase's depth; lifts out (its depth below the rim, at most 25 cm)
 LINER = {"wall": 0.0025, "flange": 0.004, "flange_t": 0.003, "reach": (0.55, 0.85), "room": 0.003,
          "max_lift": 0.25, "floor_clear": 0.006}
+
+# -- pan --------------------------------------------------------------------------------------
+# Three handle designs: riveted (a fixed handle, always with a lid), folding (camping skillets:
+# MSR Ceramic Skillet, GSI Bugaboo; the handle pivots at its top edge and folds up over the pan,
+# 0..180 degrees mechanical), detachable (Tefal Ingenio: the handle slides off a lug on the
+# wall, 0..6 cm, and has a thumb release slider, 0..8 mm).
+PAN_HANDLES = {"riveted": 0.45, "folding": 0.25, "detachable": 0.3}
+SPLIT_HANDLE = {"lug": 0.014, "gap": 0.002, "knee_room": 0.004, "fold": 3.1416,
+                "pull": 0.06, "slider": (0.022, 0.5, 0.006), "slide": 0.008, "slider_gap": 0.0006,
+                "slider_at": 0.22}
+# a helper handle on big skillets (Lodge 12" cast iron): a short loop opposite the long handle
+HELPER = {"length": 0.05, "radius": 0.005, "standoff": 0.022, "under_rim": 0.006, "p": 0.35}
+
+# -- jar --------------------------------------------------------------------------------------
+# Four closures (issue 14): screw lid (mason jar), clip-top (Le Parfait / Bormioli Fido: a glass
+# lid on an orange rubber gasket, hinged at the back on a neck wire, clamped by a wire lever at the
+# front), hinged lid (a storage jar with a flat lid on a back hinge and a front knob), stopper (an
+# apothecary jar's glass or wooden stopper). Wire 2..3 mm (Fido: 2.5 mm zinc-plated steel).
+JAR_CLOSURES = {"screw": 0.35, "clip_top": 0.3, "hinged": 0.15, "stopper": 0.2}
+CLIP_TOP = {"wire": 0.0013, "overhang": 0.003, "glass": 0.006, "gasket": (0.004, 0.0022), "ring_below": 0.004,
+            "hinge_out": 0.0045, "knuckle": 0.008, "knuckle_gap": 0.0015, "lever_half": 0.7, "lever_out": 0.004,
+            "bar_in": 0.006, "bar_up": 0.0025, "lid_open": 1.92, "lever_open": 2.0, "dome": 0.25}
+# hinged storage lid: 8..12 mm flat lid (acrylic, bamboo), a front knob 8..10 mm
+HINGED_JAR = {"thickness": 0.01, "knob": 0.009}
+# apothecary stopper: flange 2.5 mm over the lip, plug 15..25 mm, tall dome with a ball finial
+JAR_STOPPER = {"overhang": 0.0025, "depth": (0.12, 0.015, 0.025), "flange": 0.006, "dome": 0.45,
+               "knob": (0.35, 0.008, 0.014)}

@@ -64,3 +64,183 @@ def liner(mouth: Profile, slot: str, reach: float) -> tuple[Assembly, float]:
                      sections=SECTIONS)
     a = _closure("liner", [tube.wall(slot), floor, flange], H, z_top + L["flange_t"])
     return a, min(H - z_bot, L["max_lift"])
+
+
+# ---------------------------------------------------------------------------
+# pan handles: a lug on the wall and a handle that folds or slides off it
+
+
+def split_handle(pot, length: float, angle: float, width: float, thickness: float, slot: str,
+                 end_room: float = 0.0) -> tuple[list[g.Piece], Assembly]:
+    """A long handle toward +X (as :func:`.vessel.long_handle`) cut into a short lug fixed to the wall
+    and the handle proper, a small gap outboard of the lug. Returns the lug's pieces (in the vessel's
+    frame, for the body) and the handle (anchors ``vessel``, ``end`` for a tip or ring, ``fold``: a
+    hinge along -Y at the top edge of the cut, so a positive turn lifts the handle up over the pan;
+    ``pull``: +X along the horizontal run; ``rise``: the rising part's frame, x along it)."""
+    from . import vessel_sizes as S
+    from .vessel import _hull, _section
+
+    L, H = S.LONG_HANDLE, C.SPLIT_HANDLE
+    thickness = min(thickness, L["depth_share"] * (pot.rim_bottom - S.HANDLE_RIM_CLEAR - pot.floor))
+    zc = pot.rim_bottom - S.HANDLE_RIM_CLEAR - thickness / 2
+    y = width / 2
+    root = []
+    for z in (zc - thickness / 2, zc + thickness / 2):
+        x = math.sqrt(max(float(pot.radius_at(z)) ** 2 - y * y, 1e-6)) - 0.5 * pot.wall
+        for s in (-1, 1):
+            root += [(x, s * y * 0.999, z), (x, s * y * L["root_in"], z)]
+    root = np.array(root)
+    x_knee = pot.lid_radius + L["clear"] + S.HANDLE_KNEE + H["lug"]
+    x_cut = min(root[:, 0].max() + H["lug"], x_knee - H["knee_room"] - H["gap"])
+    cut = Frame.at((x_cut, 0.0, zc))
+    start = Frame.at((x_cut + H["gap"], 0.0, zc))
+    knee = Frame.at((x_knee, 0.0, zc))
+    rise = knee.turned("-y", angle)
+    rest = max(L["min_rest"], length - (x_knee - root[:, 0].min())) - end_room
+    end = rise.moved(rest)
+    lug = [_hull(np.vstack([root, _section(cut, y, thickness / 2)]), slot)]
+    knee_pts = _section(knee, y, thickness / 2)
+    pieces = [_hull(np.vstack([_section(start, y, thickness / 2), knee_pts]), slot),
+              _hull(np.vstack([knee_pts, _section(end, L["widen"] * width, L["tip"] * thickness)]), slot)]
+    fold = Frame.at((x_cut + H["gap"] / 2, 0.0, zc + thickness / 2), z=(0, -1, 0), x=(1, 0, 0))
+    handle = Assembly.single("handle", pieces, {"vessel": IDENTITY, "end": end, "fold": fold,
+                                                "pull": Frame.at(start.origin, z=(1, 0, 0), x=(0, 0, 1)),
+                                                "rise": rise, "thickness": _at(thickness)},
+                             {"grip": end.origin})
+    return lug, handle
+
+
+def release_slider(rise: Frame, rest: float, width: float, thickness: float, slot: str) -> Assembly:
+    """The thumb release slider on a detachable handle's top (in the vessel's frame): a rounded block
+    ``slider_gap`` above the handle, ``slider_at`` of the way along its rising part; ``slide``: its
+    frame, z along the handle toward the tip."""
+    H = C.SPLIT_HANDLE
+    ln, w_share, h = H["slider"]
+    w = w_share * width
+    c = rise.moved(H["slider_at"] * rest + ln / 2, 0.0, thickness / 2 + H["slider_gap"] + h / 2)
+    pts = []
+    for dx in (-ln / 2, ln / 2):
+        for dy in (-w / 2, w / 2):
+            for dz, shrink in ((-h / 2, 1.0), (h / 2, 0.7)):
+                pts.append(c.point((dx * shrink, dy * shrink, dz)))
+    piece = g.from_trimesh(g.convex_hull(np.array(pts)), slot, name="button")
+    return Assembly.single("button", [piece], {"slide": Frame.at(c.origin, z=rise.x, x=rise.z)})
+
+
+def helper_handle(pot, slot: str) -> Assembly:
+    """A short loop handle at -X below the rim (a big skillet's helper handle), in the vessel's frame."""
+    h = C.HELPER
+    zh = pot.rim_bottom - h["under_rim"] - h["radius"]
+    r = float(pot.radius_at(zh)) - 0.6 * pot.wall
+    pieces = g.bar_handle((-r, 0.0, zh), (-1, 0, 0), (0, 1, 0), h["length"], slot, standoff=h["standoff"],
+                          radius=h["radius"])
+    return Assembly.single("handle", pieces, {"vessel": IDENTITY})
+
+
+# ---------------------------------------------------------------------------
+# jar: clip-top (hinged glass lid on a gasket, wire lever), hinged storage lid, stopper
+
+
+def _wire(a, b, slot: str, r: float | None = None) -> g.Piece:
+    return g.cylinder(a, b, C.CLIP_TOP["wire"] if r is None else r, slot, 10)
+
+
+def neck_ring_and_hinge(neck: Profile, slot: str, lever: bool) -> tuple[list[g.Piece], dict]:
+    """The body's fittings of a hinged jar lid (in the jar's frame): a wire ring round the neck under
+    the lip, two knuckles at the back on wires from the ring (the lid's knuckle sits between them).
+    Returns the pieces and the frames ``hinge`` (z along -Y: a positive turn lifts the lid's front)
+    and ``lever`` (z along +Y, at the front: a positive turn swings the lever forward and down)."""
+    k = C.CLIP_TOP
+    H, n, w = neck.height, neck.top_radius, k["wire"]
+    r_lid = n + k["overhang"]
+    z_ring = H - k["ring_below"]
+    r_ring = neck.outer_radius(z_ring - w, z_ring + w) + w + 0.0003
+    ring = g.shell([(r_ring + w, z_ring - w), (r_ring + w, z_ring + w)], 2 * w, slot, sections=SECTIONS,
+                   convex_sectors=16)
+    gap = lid_gap(k["glass"])
+    z_h = H + gap + k["glass"] / 2
+    x_h = -(r_lid + k["hinge_out"])
+    pieces = [ring]
+    kn, kg = k["knuckle"], k["knuckle_gap"]
+    for s in (-1, 1):
+        y0, y1 = s * (kn / 2 + kg), s * (kn / 2 + kg + kn)
+        pieces.append(g.cylinder((x_h, y0, z_h), (x_h, y1, z_h), 1.6 * w, slot, 12))
+        pieces.append(_wire((-r_ring, s * (kn / 2 + kg + kn / 2), z_ring), (x_h, s * (kn / 2 + kg + kn / 2), z_h),
+                            slot))
+    frames = {"hinge": Frame.at((x_h, 0.0, z_h), z=(0, -1, 0), x=(1, 0, 0)), "z_ring": z_ring, "r_ring": r_ring}
+    return pieces, frames
+
+
+def clip_lid(neck: Profile, slot: str, gasket_slot: str, wire_slot: str, hinge: Frame, knob: float = 0.0,
+             thickness: float | None = None) -> Assembly:
+    """A round lid hinged at the back (built in the jar's frame): a glass (or flat) disc a small gap
+    above the lip with a rubber gasket ring under its edge, a knuckle round the hinge line and (for a
+    clip-top) a wire yoke from the knuckle over the top; ``knob`` > 0: a knob at the front instead."""
+    k = C.CLIP_TOP
+    H, n = neck.height, neck.top_radius
+    t = k["glass"] if thickness is None else thickness
+    r_lid = n + k["overhang"]
+    gap = lid_gap(t)
+    zb, zt = H + gap, H + gap + t
+    dome = k["dome"] * t if knob <= 0 else 0.0
+    prof = [(0.0, zb), (r_lid, zb), (r_lid, zt - 0.3 * t), (0.92 * r_lid, zt), (0.5 * r_lid, zt + 0.8 * dome),
+            (0.0, zt + dome)]
+    plate = g.revolve(prof, slot, sections=SECTIONS)
+    a = np.linspace(0, 2 * np.pi, 20, endpoint=False)
+    hull = np.vstack([np.c_[r_lid * np.cos(a), r_lid * np.sin(a), np.full(20, z)] for z in (zb, zt - 0.3 * t)]
+                     + [np.c_[0.92 * r_lid * np.cos(a), 0.92 * r_lid * np.sin(a), np.full(20, zt)]])
+    pieces = [_piece(plate, convex=[hull])]
+    gw, gh = k["gasket"]
+    gasket = g.shell([(n + 0.6 * gw, zb - 0.0002), (n + 0.6 * gw, zb + 0.25 * gh)], gw, gasket_slot,
+                     sections=SECTIONS)
+    pieces.append(_piece(gasket, convex=[]))
+    # the lid's knuckle on the hinge line, and the tab joining it to the lid's back edge
+    o = hinge.origin
+    kn = k["knuckle"] / 2
+    w = k["wire"]
+    pieces.append(g.cylinder((o[0], -kn, o[2]), (o[0], kn, o[2]), 1.6 * w, wire_slot, 12))
+    pieces.append(g.box_between((o[0], -0.35 * kn, zb + 0.2 * t), (-(r_lid - 0.004), 0.35 * kn, zt - 0.2 * t),
+                                wire_slot))
+    if knob > 0:
+        pieces += g.knob_handle((0.75 * r_lid, 0, zt - 0.0005), UP, slot, radius=knob, depth=1.4 * knob)
+    else:  # the wire yoke over the top, from the knuckle to the front where the lever's bar presses
+        z_y = zt + dome + w + 0.0003
+        pieces.append(_piece(_wire((o[0], 0.0, o[2]), (-0.45 * r_lid, 0.0, z_y), wire_slot), convex=[]))
+        pieces.append(_piece(_wire((-0.45 * r_lid, 0.0, z_y), (0.55 * r_lid, 0.0, z_y), wire_slot), convex=[]))
+    top = zt + dome + 2 * w
+    return Assembly.single("lid", pieces, {"vessel": IDENTITY, "top": _at(top)})
+
+
+def clip_lever(neck: Profile, ring: dict, slot: str) -> Assembly:
+    """The wire lever of a clip-top at the front (in the jar's frame): a U of wire whose arms pivot
+    just off the neck ring at +X and whose bar lies over the lid's front edge; ``pivot``: z along +Y,
+    so a positive turn swings the bar forward and down, freeing the lid."""
+    k = C.CLIP_TOP
+    H, n, w = neck.height, neck.top_radius, k["wire"]
+    r_lid = n + k["overhang"]
+    half = k["lever_half"] * r_lid
+    x_p = ring["r_ring"] + 2 * w + k["lever_out"] * 0.5
+    x_p = max(x_p, math.sqrt(max(r_lid ** 2 - half ** 2, 0.0)) + 2 * w + 0.0015)
+    z_p = ring["z_ring"]
+    gap = lid_gap(k["glass"])
+    z_bar = H + gap + k["glass"] * (1 + k["dome"]) + k["bar_up"] + w
+    x_bar = r_lid - k["bar_in"]
+    pieces = []
+    for s in (-1, 1):
+        pieces.append(_wire((x_p, s * half, z_p), (x_p, s * half, z_bar), slot))
+        pieces.append(_wire((x_p, s * half, z_bar), (x_bar, s * 0.35 * half, z_bar), slot))
+    pieces.append(_wire((x_bar, -0.35 * half, z_bar), (x_bar, 0.35 * half, z_bar), slot))
+    # the finger tab at the front
+    pieces.append(g.box_between((x_p - w, -0.4 * half, z_p + 0.3 * (z_bar - z_p)),
+                                (x_p + 1.5 * w, 0.4 * half, z_p + 0.55 * (z_bar - z_p)), slot))
+    return Assembly.single("lever", pieces, {"pivot": Frame.at((x_p, 0.0, z_p), z=(0, 1, 0), x=(1, 0, 0)),
+                                             "vessel": IDENTITY})
+
+
+def jar_stopper(neck: Profile, slot: str) -> Assembly:
+    """An apothecary jar's stopper: flange over the lip, tall dome, ball finial, plug in the neck."""
+    s = C.JAR_STOPPER
+    r_flange = neck.top_radius + s["overhang"]
+    depth = float(np.clip(s["depth"][0] * neck.height, *s["depth"][1:]))
+    knob = float(np.clip(s["knob"][0] * r_flange, *s["knob"][1:]))
+    return _plug_lid(neck, r_flange, s["flange"], depth, s["dome"], knob, slot, 0.0, label="stopper")
