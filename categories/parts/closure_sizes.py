@@ -56,3 +56,43 @@ HINGED_JAR = {"thickness": 0.01, "knob": 0.009}
 # apothecary stopper: flange 2.5 mm over the lip, plug 15..25 mm, tall dome with a ball finial
 JAR_STOPPER = {"overhang": 0.0025, "depth": (0.12, 0.015, 0.025), "flange": 0.006, "dome": 0.45,
                "knob": (0.35, 0.008, 0.014)}
+
+# -- bottle -----------------------------------------------------------------------------------
+# Which closures a profile usually wears (drawn by `closure_draw` when cap=auto): beer crown or
+# Grolsch-style swing-top; wine capsule or Stelvin screw cap; PET soda screw cap or push-pull
+# sports cap (PCO 1881 sports closures); apothecary stopper or swing-top; a Boston-round
+# dispenser bottle with a 24/410 lotion pump.
+BOTTLE_CLOSURES = {
+    "beer": {"crown": 0.6, "swing_top": 0.4},
+    "bordeaux": {"capsule": 0.7, "screw": 0.3},
+    "burgundy": {"screw": 0.5, "capsule": 0.5},
+    "champagne": {"capsule": 1.0},
+    "soda": {"screw": 0.55, "sports": 0.45},
+    "vintage": {"stopper": 0.6, "swing_top": 0.4},
+    "dispenser": {"pump": 1.0},
+}
+# the glass finish each new closure sits on (a swing-top stopper seals on a flared lip; pumps and
+# sports caps screw onto a threaded finish)
+CLOSURE_FINISH = {"swing_top": "stopper", "pump": "screw", "sports": "screw"}
+# swing-top (Grolsch): a porcelain stopper 1 mm over the lip on a red rubber washer, a wire bail
+# from its sides to a neck ring 12 mm under the lip; it tips back about its back edge (0..100 deg)
+# and the bail swings back about the ring's clasp (0..110 deg)
+SWING_TOP = {"overhang": 0.001, "height": 0.012, "dome": 0.006, "washer": 0.0018, "wire": 0.0012,
+             "ring_below": 0.012, "tip": 1.75, "swing": 1.9}
+# lotion pump (24/410): collar 12 mm tall, stem 4 mm, actuator head 22 x 14 mm with a 20 mm nozzle;
+# the head rises 12 mm when turned to unlock (up-lock pumps); the collar unscrews 1 cm
+PUMP = {"collar": 0.012, "collar_t": 0.0016, "stem": 0.004, "head": (0.011, 0.014), "nozzle": (0.02, 0.0035),
+        "rise": 0.012, "lock_h": 0.006}
+# push-pull sports cap: spout 11 mm across rising 6 mm from a 30 mm cap
+SPORTS = {"spout": 0.0055, "spout_h": 0.012, "pull": 0.006, "ring": 0.0015}
+
+# -- pot --------------------------------------------------------------------------------------
+# Three designs: a plain pot with a dome lid; a steamer pot (1..2 stacking steamer tiers, each
+# 45..70 % of the radius tall with a nesting skirt 15 mm deep: WMF / Fissler steamer sets); a
+# pressure cooker (Fissler Vitavit, WMF Perfect: a bayonet lid that turns 0..35 degrees to unlock
+# and lifts, a pressure valve that turns (selector), a lock slider 5 mm).
+POT_DESIGNS = {"plain": 0.5, "steamer": 0.25, "pressure": 0.25}
+STEAMER = {"tiers": (1, 2), "height": (0.45, 0.7), "skirt": 0.015, "room": 0.004, "gap": 0.0025, "lift": 0.12,
+           "handle": (0.05, 0.004, 0.014)}
+PRESSURE = {"turn": 0.61, "valve": (0.012, 0.016), "valve_at": 0.42, "lock": (0.018, 0.01, 0.007), "lock_at": 0.6,
+            "lock_slide": 0.005, "gap": 0.0006}

@@ -244,3 +244,162 @@ def jar_stopper(neck: Profile, slot: str) -> Assembly:
     depth = float(np.clip(s["depth"][0] * neck.height, *s["depth"][1:]))
     knob = float(np.clip(s["knob"][0] * r_flange, *s["knob"][1:]))
     return _plug_lid(neck, r_flange, s["flange"], depth, s["dome"], knob, slot, 0.0, label="stopper")
+
+
+# ---------------------------------------------------------------------------
+# bottle: swing-top stopper on a wire bail, lotion pump, push-pull sports cap
+
+
+def _round_hull(prof, sides: int = 16) -> np.ndarray:
+    """Points of a convex hull of revolution through ``(radius, z)`` points (few, exactly placed)."""
+    a = 2 * np.pi * np.arange(sides) / sides
+    return np.vstack([np.c_[r * np.cos(a), r * np.sin(a), np.full(sides, z)] if r > 0 else [[0.0, 0.0, z]]
+                      for r, z in prof])
+
+
+def swing_top(neck: Profile, slot: str, washer_slot: str, wire_slot: str) -> tuple[list[g.Piece], Assembly, dict]:
+    """A swing-top (Grolsch) closure built in the bottle's frame: the body's fittings (a wire ring
+    round the neck under the lip with a clasp at the back), and the stopper (a porcelain cap a small
+    gap above the lip on a rubber washer, with the wire bail from its sides round to the clasp).
+    Returns the fittings, the stopper (anchor ``vessel``) and the two hinge lines: ``swing`` (the
+    bail about the clasp, -Y: the stopper swings back) and ``tip`` (the stopper about its back edge)."""
+    k = C.SWING_TOP
+    H, w = neck.height, k["wire"]
+    r_cap = neck.outer_radius(H - 0.006, H) + k["overhang"]
+    gap = lid_gap(k["height"])
+    zb, h, dome = H + gap, k["height"], k["dome"]
+    prof = [(0.0, zb), (r_cap, zb), (r_cap, zb + 0.55 * h), (0.85 * r_cap, zb + h), (0.45 * r_cap, zb + h + 0.8 * dome),
+            (0.0, zb + h + dome)]
+    cap = g.revolve(prof, slot, sections=SECTIONS)
+    pieces = [_piece(cap, convex=[_round_hull(prof[1:-1] + [(0.0, zb + h + dome)])])]
+    washer = g.shell([(r_cap - 0.0004, zb - 0.0004), (r_cap - 0.0004, zb + 0.001)], k["washer"], washer_slot,
+                     sections=SECTIONS)
+    pieces.append(_piece(washer, convex=[]))
+    z_r = H - k["ring_below"]
+    r_ring = neck.outer_radius(z_r - 2 * w, z_r + 2 * w) + w + 0.0003
+    x_c = -(r_ring + 2.5 * w)
+    z_p = zb + 0.4 * h
+    R = max(r_ring, r_cap) + 3 * w
+    for s in (-1, 1):  # the bail: down from the stopper's side, then round the neck to the clasp
+        pts = [(0.0, s * (r_cap + w), z_p), (0.0, s * R, z_r + 2 * w)]
+        for ang in (115, 140, 160):
+            t = math.radians(ang)
+            pts.append((R * math.cos(t), s * R * math.sin(t), z_r + 2 * w))
+        pts.append((x_c, s * 0.35 * r_ring, z_r))
+        for a, b in zip(pts[:-1], pts[1:]):
+            pieces.append(_piece(_wire(a, b, wire_slot, w), convex=[]))
+        pieces.append(_piece(g.cylinder((0.0, s * r_cap * 0.97, z_p), (0.0, s * (r_cap + 1.5 * w), z_p), 1.5 * w,
+                                        wire_slot, 10), convex=[]))
+    fittings = [g.shell([(r_ring + w, z_r - w), (r_ring + w, z_r + w)], 2 * w, wire_slot, sections=SECTIONS,
+                        convex_sectors=16),
+                g.cylinder((x_c, -0.3 * r_ring, z_r), (x_c, 0.3 * r_ring, z_r), 1.8 * w, wire_slot, 12)]
+    frames = {"swing": Frame.at((x_c, 0.0, z_r), z=(0, -1, 0), x=(1, 0, 0)),
+              "tip": Frame.at((-(r_cap + 0.0008), 0.0, zb), z=(0, -1, 0), x=(1, 0, 0))}
+    return fittings, Assembly.single("cap", pieces, {"vessel": IDENTITY}), frames
+
+
+def pump_collar(neck: Profile, finish_bottom: float, slot: str) -> Assembly:
+    """A lotion pump's collar screwed on the neck (seat at the origin): skirt, top plate and the
+    lock turret the head sits on (``stem``: the top of the turret)."""
+    from .vessel import _sleeve_cap
+
+    k = C.PUMP
+    pieces, r_out, top = _sleeve_cap(neck, max(finish_bottom + 0.0065, neck.height - k["collar"]), k["collar_t"],
+                                     0.003, 0.0004, slot, 0.0)
+    turret = g.cylinder((0, 0, top - 0.0003), (0, 0, top + k["lock_h"]), 0.55 * r_out, slot, 32)
+    return _closure("cap", pieces + [turret], neck.height, top + k["lock_h"])
+
+
+def pump_head(slot: str) -> Assembly:
+    """The actuator: a stem and a head with a nozzle toward +X (``stem`` at its bottom, the origin)."""
+    k = C.PUMP
+    gap = 0.0004
+    hr, hh = k["head"]
+    nl, nr = k["nozzle"]
+    stem = g.cylinder((0, 0, gap), (0, 0, gap + k["stem"] + 0.001), 0.0035, slot, 16)
+    z0 = gap + k["stem"]
+    head = g.revolve([(0.0, z0), (hr, z0), (hr, z0 + 0.7 * hh), (0.8 * hr, z0 + hh), (0.0, z0 + hh)], slot,
+                     sections=32)
+    head = _piece(head, convex=[_round_hull([(hr, z0), (hr, z0 + 0.7 * hh), (0.8 * hr, z0 + hh)])])
+    nozzle = g.cylinder((0.5 * hr, 0, z0 + 0.55 * hh), (hr + nl, 0, z0 + 0.55 * hh), nr, slot, 12)
+    return Assembly.single("head", [stem, head, nozzle], {"stem": IDENTITY})
+
+
+def sports_spout(cap_top: float, slot: str) -> Assembly:
+    """A push-pull spout standing on a cap's top (``base`` at its bottom, the origin): a tube with a
+    rounded tip and a grip ring, resting 0.3 mm above the cap."""
+    k = C.SPORTS
+    r, h = k["spout"], k["spout_h"]
+    z0 = 0.0003
+    prof = [(0.0, z0), (r, z0), (r, z0 + 0.75 * h), (0.8 * r, z0 + h), (0.35 * r, z0 + h)]
+    spout = g.revolve(prof + [(0.0, z0 + h)], slot, sections=32)
+    ring = g.shell([(r + k["ring"], z0 + 0.15 * h), (r + k["ring"], z0 + 0.35 * h)], k["ring"] + 0.0003, slot,
+                   sections=32)
+    return Assembly.single("spout", [_piece(spout, convex=[_round_hull(prof[1:] + [(0.0, z0 + h)])]),
+                                      ring], {"base": IDENTITY})
+
+
+# ---------------------------------------------------------------------------
+# pot: stacking steamer tiers, pressure-cooker lid fittings
+
+
+def steamer_tier(pot, height: float, slot: str, rim_slot: str, handle_slot: str):
+    """A steamer tier that nests into ``pot`` (a :class:`.vessel.Cookware`, or the tier below): a wall
+    as wide as the pot's, a rolled rim, a skirt that reaches into the vessel below with clearance, a
+    shoulder ring and a (perforated) floor at the skirt's bottom, two small loop handles at +-Y.
+    ``seat`` (origin) is the bottom of its wall, resting a gap above the rim below; returns the tier
+    and its own :class:`.vessel.Cookware` (for the next tier and the lid; ``lid_seat`` anchor)."""
+    from . import vessel_sizes as S
+    from .vessel import Cookware
+
+    k = C.STEAMER
+    r_top = pot.rim_inner + pot.wall
+    t = pot.wall
+    d = k["skirt"]
+    r_s = float(pot.radius_at(pot.rim_top - d - 0.002)) - pot.wall - k["room"]
+    bead = max(0.0015, 0.8 * (pot.rim_outer - pot.rim_inner - pot.wall) / 2)
+    wall = g.shell([(r_top, 0.0), (r_top, height - bead)], t, slot, sections=SECTIONS)
+    skirt = g.shell([(r_s, -d), (r_s, t)], t, slot, sections=SECTIONS)
+    shoulder = g.shell([(r_top, 0.0), (r_top, t)], r_top - r_s + t, slot, sections=SECTIONS)
+    floor = g.disc((0, 0, -d + t / 2), r_s - 0.5 * t, t, slot, SECTIONS)
+    cx, cz = r_top - t + bead, height - bead
+    th = np.linspace(0.0, math.pi, 13)
+    outer = np.c_[cx + bead * np.sin(th), cz - bead * np.cos(th)]
+    box = g.shell([(cx + bead, cz - bead), (cx + bead, cz + bead)], 2 * bead, rim_slot, sections=8)
+    rim = g.shell(outer, bead, rim_slot, sections=SECTIONS).with_collision_of(box)
+    hl, hr, hs = k["handle"]
+    pieces = [wall, skirt, shoulder, floor, rim]
+    for s in (1, -1):
+        pieces += g.bar_handle((0.0, s * (r_top - 0.5 * t), 0.55 * height), (0, s, 0), (1, 0, 0), hl, handle_slot,
+                               standoff=hs, radius=hr)
+    prof = np.array([(r_top, 0.0), (r_top, height)])
+    info = Cookware(prof, height, cx + bead, r_top - t, cz - bead, -d + t, r_s - t, t)
+    a = Assembly.single("insert", pieces, {"seat": IDENTITY, "lid_seat": _at(height + S.LID_GAP)})
+    return a, info
+
+
+def pressure_valve(slot: str) -> Assembly:
+    """A pressure cooker's valve / selector: a stem and a ribbed cap turning about its axis
+    (``base`` at its bottom, resting a small gap above the lid)."""
+    k = C.PRESSURE
+    r, h = k["valve"]
+    z0 = k["gap"]
+    stem = g.cylinder((0, 0, z0), (0, 0, z0 + 0.4 * h), 0.55 * r, slot, 24)
+    cap = g.revolve([(0.0, z0 + 0.35 * h), (r, z0 + 0.35 * h), (r, z0 + 0.8 * h), (0.7 * r, z0 + h), (0.0, z0 + h)],
+                    slot, sections=24)
+    cap = _piece(cap, convex=[_round_hull([(r, z0 + 0.35 * h), (r, z0 + 0.8 * h), (0.7 * r, z0 + h)])])
+    fin = g.box_between((-0.9 * r, -0.15 * r, z0 + h - 0.0005), (0.9 * r, 0.15 * r, z0 + h + 0.004), slot)
+    return Assembly.single("valve", [stem, cap, fin], {"base": IDENTITY})
+
+
+def lock_slider(slot: str) -> Assembly:
+    """A pressure cooker's lock slider: a rounded block on the lid (``base`` under it, a gap below),
+    sliding radially outward along its ``slide`` frame's z (+X of its own frame)."""
+    k = C.PRESSURE
+    ln, w, h = k["lock"]
+    z0 = k["gap"]
+    pts = [(x * s, y, z) for x in (ln / 2,) for s in (-1, 1) for y in (-w / 2, w / 2) for z in (z0,)]
+    pts += [(x * s * 0.8, y * 0.8, z0 + h) for x in (ln / 2,) for s in (-1, 1) for y in (-w / 2, w / 2)]
+    piece = g.from_trimesh(g.convex_hull(np.array(pts)), slot, name="button")
+    return Assembly.single("button", [piece], {"base": IDENTITY, "slide": Frame.at((0, 0, z0 + h / 2), z=(1, 0, 0),
+                                                                                 x=(0, 0, 1))})
