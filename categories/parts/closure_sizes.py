@@ -54,8 +54,9 @@ CLIP_TOP = {"wire": 0.0013, "overhang": 0.003, "glass": 0.006, "gasket": (0.004,
 # hinged storage lid: 8..12 mm flat lid (acrylic, bamboo), a front knob 8..10 mm
 HINGED_JAR = {"thickness": 0.01, "knob": 0.009}
 # apothecary stopper: flange 2.5 mm over the lip, plug 15..25 mm, tall dome with a ball finial
+# (blown hollow, 4 mm walls: a solid one on an 86 mm mouth weighed 0.49 kg, jar seed 6)
 JAR_STOPPER = {"overhang": 0.0025, "depth": (0.12, 0.015, 0.025), "flange": 0.006, "dome": 0.45,
-               "knob": (0.35, 0.008, 0.014)}
+               "knob": (0.35, 0.008, 0.014), "sheet": 0.004}
 
 # -- bottle -----------------------------------------------------------------------------------
 # Which closures a profile usually wears (drawn by `closure_draw` when cap=auto): beer crown or
@@ -75,10 +76,11 @@ BOTTLE_CLOSURES = {
 # sports caps screw onto a threaded finish)
 CLOSURE_FINISH = {"swing_top": "stopper", "pump": "screw", "sports": "screw"}
 # swing-top (Grolsch): a porcelain stopper 1 mm over the lip on a red rubber washer, a wire bail
-# from its sides to a neck ring 12 mm under the lip; it tips back about its back edge (0..100 deg)
-# and the bail swings back about the ring's clasp (0..110 deg)
+# from its sides to a neck ring 12 mm under the lip; it tips back about its back edge (0..69 deg)
+# and the bail swings back about the ring's clasp (0..80 deg); together (137 deg) the stopper hangs
+# clear of the shoulder (bottle seed 53, vintage: 1.9 + 1.75 rad drove it into the glass)
 SWING_TOP = {"overhang": 0.001, "height": 0.012, "dome": 0.006, "washer": 0.0018, "wire": 0.0012,
-             "ring_below": 0.012, "tip": 1.75, "swing": 1.9}
+             "ring_below": 0.012, "tip": 1.2, "swing": 1.4, "porcelain": 0.003}
 # lotion pump (24/410): collar 12 mm tall, stem 4 mm, actuator head 22 x 14 mm with a 20 mm nozzle;
 # the head rises 12 mm when turned to unlock (up-lock pumps); the collar unscrews 1 cm
 PUMP = {"collar": 0.012, "collar_t": 0.0016, "stem": 0.004, "head": (0.011, 0.014), "nozzle": (0.02, 0.0035),

@@ -243,7 +243,7 @@ def jar_stopper(neck: Profile, slot: str) -> Assembly:
     r_flange = neck.top_radius + s["overhang"]
     depth = float(np.clip(s["depth"][0] * neck.height, *s["depth"][1:]))
     knob = float(np.clip(s["knob"][0] * r_flange, *s["knob"][1:]))
-    return _plug_lid(neck, r_flange, s["flange"], depth, s["dome"], knob, slot, 0.0, label="stopper")
+    return _plug_lid(neck, r_flange, s["flange"], depth, s["dome"], knob, slot, s["sheet"], label="stopper")
 
 
 # ---------------------------------------------------------------------------
@@ -271,7 +271,8 @@ def swing_top(neck: Profile, slot: str, washer_slot: str, wire_slot: str) -> tup
     prof = [(0.0, zb), (r_cap, zb), (r_cap, zb + 0.55 * h), (0.85 * r_cap, zb + h), (0.45 * r_cap, zb + h + 0.8 * dome),
             (0.0, zb + h + dome)]
     cap = g.revolve(prof, slot, sections=SECTIONS)
-    pieces = [_piece(cap, convex=[_round_hull(prof[1:-1] + [(0.0, zb + h + dome)])])]
+    # hollow-cast porcelain (Grolsch stoppers weigh ~10-15 g with wire and washer): 3 mm walls
+    pieces = [_piece(cap, sheet=C.SWING_TOP["porcelain"], convex=[_round_hull(prof[1:-1] + [(0.0, zb + h + dome)])])]
     washer = g.shell([(r_cap - 0.0004, zb - 0.0004), (r_cap - 0.0004, zb + 0.001)], k["washer"], washer_slot,
                      sections=SECTIONS)
     pieces.append(_piece(washer, convex=[]))
