@@ -17,25 +17,51 @@ lid. It rests 2.5 mm above the rim on the lower stop of its lift, so gravity hol
 there; ``continuous_prismatic``: lift 0..3 cm along +Z, then turn freely about Z (the
 lid is symmetric about Z, so the turn is neutral).
 
+Three designs (``pot_design``, :data:`.parts.closure_sizes.POT_DESIGNS`):
+
+* ``plain``: the dome lid above;
+* ``steamer``: one or two stacking steamer tiers (:func:`~.parts.closures.steamer_tier`:
+  a wall as wide as the pot's, a nesting skirt with clearance, a floor, two small loop
+  handles), each lifting off the one below along +Z (prismatic, a chain: body -> tier ->
+  tier), the dome lid on the top tier;
+* ``pressure``: a pressure cooker's bayonet lid (``revolute_prismatic``: it turns
+  0..35 degrees about Z to unlock and lifts 0..3 cm) with a loop handle, a pressure valve
+  that turns (continuous, the selector) and a lock slider that slides outward (prismatic).
+
 Finishes: brushed steel, enamel (with a steel rim and lid band) or chrome; the lid is of
 the body's finish or glass; handles match the body or are black plastic or wood.
 """
 
 from __future__ import annotations
 
+import math
+
+from infmob_usd import joints as J
+
 from infmob_usd.category import Category
+from infmob_usd.frames import IDENTITY
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float
 
+from .parts import closures as CL
 from .parts import vessel as V
+from .parts.closure_sizes import POT_DESIGNS, PRESSURE, STEAMER
 from .parts.vessel_sizes import GLASS, GLASS_LID_THICKER, HANDLE_FAMILY, POT, POT_LIFT, POT_RIM
 
 LIFT = POT_LIFT
 
 GRAMMAR = Grammar("pot", {
-    "pot": Node(label="body", required=("lid",), choice="handle_layout",
+    "pot": Node(label="body", required=("design",), choice="handle_layout",
                 one_of=dict(zip(("side_handles", "long_handle"), POT["layout_weights"])),
-                doc="a rolled-rim vessel with its handles and a lid"),
+                doc="a rolled-rim vessel with its handles, and what sits on it"),
+    "design": Node(one_of=POT_DESIGNS, choice="pot_design", doc="plain, steamer or pressure cooker"),
+    "plain": Node(required=("lid",), doc="a dome lid on the rim"),
+    "steamer": Node(required=("lid",), repeat={"tier": STEAMER["tiers"]},
+                    doc="stacking steamer tiers, the lid on the top one"),
+    "tier": Node(label="insert", doc="a steamer tier nesting in the vessel below (lifts off)"),
+    "pressure": Node(label="lid", required=("valve", "lock"), doc="a bayonet pressure lid (turns, lifts)"),
+    "valve": Node(label="valve", doc="the pressure valve / selector (turns)"),
+    "lock": Node(label="button", doc="the lid's lock slider (slides outward)"),
     "side_handles": Node(doc="two loop handles on the sides (pieces of the body)"),
     "long_handle": Node(doc="one long handle toward +X with a rounded tip (pieces of the body)"),
     "lid": Node(label="lid", one_of=dict(zip(("knob", "loop"), POT["lid_handle_weights"])), choice="lid_handle",
@@ -62,6 +88,7 @@ PARAMS = (
     Float("side_handle_radius", "side loop bar radius", "m", *POT["side_handle_radius"]),
     Float("side_handle_reach", "finger room between the wall and a side loop", "m", *POT["side_handle_reach"]),
     Float("knob_radius", "lid knob radius", "m", *POT["knob_radius"]),
+    Float("tier_height", "steamer tier height / radius", "", *STEAMER["height"]),
     Choice("body_finish", "body material", choices=tuple(POT_RIM), weights=POT["body_weights"]),
     Choice("lid_finish", "lid: the body's material or glass", choices=("match", "glass"), weights=POT["lid_weights"]),
     Choice("handle_finish", "handle material", choices=tuple(HANDLE_FAMILY), weights=POT["handle_weights"]),
@@ -85,7 +112,57 @@ class PotLayout(Layout):
                                     p["bead"], "body", "rim")
         body = self.place(body, "body")
         self.grow(node.one(node.choice), body=body, pot=pot)
+        self.grow(node.one("design"), body=body, pot=pot)
+
+    def design(self, node, body, pot):
+        self.grow(node.one(node.choice), body=body, pot=pot)
+
+    def plain(self, node, body, pot):
         self.grow(node.one("lid"), body=body, pot=pot)
+
+    def steamer(self, node, body, pot):
+        for i, tier in enumerate(node.of("tier")):
+            body, pot = self.grow(tier, below=body, pot=pot, name="tier" if i == 0 else f"tier_{i}")
+        self.grow(node.one("lid"), body=body, pot=pot)
+
+    def tier(self, node, below, pot, name):
+        p = self.p
+        slots = self._slots()
+        t, info = CL.steamer_tier(pot, p["tier_height"] * p["radius"], "body", "rim", slots["handle"])
+        t = self.place(t.attached("seat", to=below.anchor("lid_seat")), name)
+        s = t.anchor("seat")
+        self.join(J.prismatic(below.root, t.root, tuple(s.origin), tuple(s.z), 0.0, STEAMER["lift"], role="lid"))
+        return t, info
+
+    def pressure(self, node, body, pot):
+        p, slots = self.p, self._slots()
+        t = p["lid_thickness"]
+        lid, dome = V.dome_lid(pot, p["dome"] * p["radius"], t, "body", slots["band"])
+        lid = self.place(lid.attached("seat", to=body.anchor("lid_seat")), "lid")
+        s = lid.anchor("seat")
+        self.join(J.revolute_prismatic(body.root, lid.root, tuple(s.origin), tuple(s.z), (0.0, PRESSURE["turn"]),
+                                         tuple(s.z), (0.0, LIFT), role="lid"))
+        loop = V.lid_loop(dome, p["knob_radius"], slots["knob"])
+        self.extend(lid.root, loop.attached("base", to=lid.anchor("top")).pieces)
+        self.grow(node.one("valve"), lid=lid, dome=dome)
+        self.grow(node.one("lock"), lid=lid, dome=dome)
+
+    def _on_dome(self, lid, dome, x: float, half: float):
+        """The frame on the dome at (x, 0) of the lid, as high as the dome is within ``half`` of it."""
+        z = float(dome.under(max(abs(x) - half, 0.0))) + dome.thickness
+        return lid.anchor("seat") @ IDENTITY.moved(x, 0.0, z)
+
+    def valve(self, node, lid, dome):
+        r = PRESSURE["valve"][0]
+        at = self._on_dome(lid, dome, PRESSURE["valve_at"] * dome.radius, r)
+        v = self.place(CL.pressure_valve(self._slots()["knob"]).attached("base", to=at), "valve")
+        self.spin(lid.root, v.root, v.anchor("base"))
+
+    def lock(self, node, lid, dome):
+        half = PRESSURE["lock"][0] / 2
+        at = self._on_dome(lid, dome, -PRESSURE["lock_at"] * dome.radius, half)
+        lk = self.place(CL.lock_slider(self._slots()["knob"]).attached("base", to=at.turned("z", math.pi)), "lock")
+        self.slide(lid.root, lk.root, lk.anchor("slide"), PRESSURE["lock_slide"], role="button")
 
     def side_handles(self, node, body, pot):
         p = self.p

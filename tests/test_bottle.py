@@ -18,7 +18,8 @@ SEEDS = range(6)
 
 
 def make(seed, **overrides):
-    return make_bp(bottle, "bottle", seed, **overrides)
+    """``closure_draw=0`` unless a test asks: cap=auto then takes the profile's classic closure."""
+    return make_bp(bottle, "bottle", seed, **{"closure_draw": 0.0, **overrides})
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -75,7 +76,7 @@ def test_overrides_and_bad_values():
     p, bp = make(3, has_label=False, profile="champagne", height=0.3)
     assert "label" not in bp.parts and p["height"] == 0.3
     assert len([j for j in bp.joints if j.movable]) == 1
-    for bad in ({"profile": "magnum"}, {"cap": "cork"}):
+    for bad in ({"profile": "magnum"}, {"cap": "cork"}, {"closure_draw": 1.5}):
         with pytest.raises(ParameterError):
             make(0, **bad)
 
@@ -85,7 +86,7 @@ def test_auto_cap_is_the_profiles_usual_closure(profile):
     p, bp = make(0, profile=profile)
     usual = bottle.KINDS[profile][2]
     assert p["cap"] == usual  # "auto" drawn, recorded as the closure that was built
-    assert bp.materials["cap"] == CAP_MATERIALS[usual]  # the materials follow the resolved closure
+    assert bp.materials["cap"] == {**CAP_MATERIALS, "pump": "plastic:white|black|light_grey"}[usual]
     assert bp.materials["glass"] == bottle.KINDS[profile][3]
     if usual == "stopper":  # a wooden stopper: the cork slot, reaching into the neck
         assert {pc.material for pc in bp.parts["cap"].pieces} == {"cork"}
@@ -96,3 +97,56 @@ def test_varied():
     for name in ("profile", "has_label"):
         assert len({p[name] for p in params}) > 1
     assert math.isclose(min(p["height"] for p in params), 0.15, abs_tol=0.08)
+
+
+def test_swing_top_flips_back_clear_of_the_neck():
+    p, bp = make(2, cap="swing_top", profile="beer", has_label=False)
+    j = by_child(bp, "cap")
+    assert j.kind == "flip_revolute" and j.parent == "body" and j.role == "lid"
+    swing, tip = j.dofs
+    assert swing.axis == pytest.approx((0, -1, 0)) and tip.axis == pytest.approx((0, -1, 0))
+    assert swing.origin[2] < tip.origin[2]  # the bail's clasp on the neck ring, under the stopper's edge
+    body = hulls(bp.parts["body"])
+    assert gap(hulls(bp.parts["cap"]), body) >= 0.001
+    for d in (swing, tip):  # each hinge alone opens the stopper upward and backward, clear of the glass
+        for q in (0.2, 0.8, 1.5):
+            m = motion(d, q)
+            assert gap(hulls(bp.parts["cap"], m), body) >= 0.0005, (d, q)
+    assert {"washer", "wire", "porcelain"} <= {pc.material for pc in bp.parts["cap"].pieces}
+
+
+def test_pump_collar_unscrews_and_its_head_turns_and_rises():
+    _, bp = make(1, profile="dispenser", has_label=False)
+    assert bp.parts["head"].label == "head"
+    check_cap_joint(bp, "cap", bottle.CAP_TRAVEL)
+    h = by_child(bp, "head")
+    assert h.kind == "continuous_prismatic" and h.parent == "cap"
+    slide, _ = h.dofs
+    assert slide.axis == pytest.approx((0, 0, 1)) and slide.upper == pytest.approx(0.012)
+    assert gap(hulls(bp.parts["head"]), hulls(bp.parts["cap"])) > 0.0
+    # the nozzle points toward +X
+    pts = np.vstack([pc.vertices for pc in bp.parts["head"].pieces])
+    assert pts[:, 0].max() > 0.02 > -pts[:, 0].min()
+
+
+def test_sports_cap_spout_pulls_up():
+    _, bp = make(1, cap="sports", profile="soda")
+    s = by_child(bp, "spout")
+    assert s.kind == "prismatic" and s.parent == "cap" and s.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert gap(hulls(bp.parts["spout"]), hulls(bp.parts["cap"])) > 0.0
+
+
+def test_caps_fit_their_necks():
+    # issue 13: a cap is no wider than its finish plus skirt (a crown 32 mm on a 26 mm finish)
+    for cap in ("crown", "screw"):
+        _, bp = make(4, cap=cap, profile="beer" if cap == "crown" else "soda")
+        wall = bp.parts["body"].pieces[0].vertices
+        top = wall[wall[:, 2] > wall[:, 2].max() - 0.005]
+        neck = np.hypot(top[:, 0], top[:, 1]).max()
+        cap_r = max(np.hypot(pc.vertices[:, 0], pc.vertices[:, 1]).max() for pc in bp.parts["cap"].pieces)
+        assert cap_r < 1.3 * neck, (cap, cap_r, neck)
+
+
+def test_closures_vary():
+    caps = {make_bp(bottle, "bottle", s)[0]["cap"] for s in range(40)}
+    assert {"swing_top", "pump", "sports", "crown", "screw"} <= caps

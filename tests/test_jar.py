@@ -15,7 +15,8 @@ SEEDS = range(6)
 
 
 def make(seed, **overrides):
-    return make_bp(jar, "jar", seed, **overrides)
+    """The screw-lid design (mason jar) unless a test asks for another closure."""
+    return make_bp(jar, "jar", seed, **{"closure": "screw", **overrides})
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -98,7 +99,51 @@ def test_seed_61_lid_turns_both_ways_in_sapien(tmp_path):
     import infmob_usd
     from infmob_usd.validate.sim import check_sapien
 
-    folder = infmob_usd.save(infmob_usd.generate("jar", seed=61, texture_size=16), tmp_path)
+    folder = infmob_usd.save(infmob_usd.generate("jar", seed=61, texture_size=16, closure="screw"), tmp_path)
     res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
     assert res["sapien_load"].ok, res["sapien_load"].detail
     assert res["reach"].ok, res["reach"].detail
+
+
+@pytest.mark.parametrize("sides", list(jar.SIDE_COUNT))
+def test_clip_top_lever_clamps_the_hinged_glass_lid(sides):
+    from test_vase import gap, motion
+
+    p, bp = make(3, closure="clip_top", sides=sides)
+    lid, lever = (next(j for j in bp.joints if j.child == c) for c in ("lid", "lever"))
+    assert lid.kind == lever.kind == "revolute" and lid.parent == lever.parent == "body"
+    assert lid.requires_open == "lever"  # the bail holds the lid until the lever is open
+    assert lid.dofs[0].axis == pytest.approx((0, -1, 0)) and lever.dofs[0].axis == pytest.approx((0, 1, 0))
+    assert lid.dofs[0].origin[0] < 0 < lever.dofs[0].origin[0]  # hinge at the back, lever at the front
+    body, L, V_ = hulls(bp.parts["body"]), hulls(bp.parts["lid"]), hulls(bp.parts["lever"])
+    assert gap(L, body) >= 0.001 and gap(V_, body) >= 0.001 and gap(L, V_) >= 0.001
+    # the lever's bar lies over the lid's edge: the closed lever blocks the lid, the open one does not
+    blocked = min(gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), V_) for q in (0.04, 0.08, 0.12, 0.16))
+    assert blocked < 1e-6
+    open_lever = hulls(bp.parts["lever"], motion(lever.dofs[0], 1.5))
+    assert min(gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), open_lever) for q in (0.04, 0.08, 0.12, 0.16, 1.0)) > 0.0
+    # the lid opens upward clear of the body
+    for q in (0.3, 1.0, 1.6):
+        assert gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), body) >= 0.001
+    assert any(pc.material == "gasket" for pc in bp.parts["lid"].pieces)
+
+
+def test_hinged_and_stopper_closures():
+    from test_vase import check_sweep
+
+    _, bp = make(2, closure="hinged")
+    j = next(j for j in bp.joints if j.child == "lid")
+    assert j.kind == "revolute" and j.requires_open is None and "lever" not in bp.parts
+    _, bp = make(2, closure="stopper")
+    assert bp.parts["stopper"].label == "stopper"
+    check_cap_joint(bp, "stopper", jar.LID_LIFT)
+    check_sweep(bp, "stopper")
+
+
+def test_closures_vary_and_every_jar_moves():
+    seen = set()
+    for s in range(24):
+        p, bp = make_bp(jar, "jar", s)
+        seen.add(p["closure"])
+        assert any(j.movable for j in bp.joints)
+    assert seen == set(jar.GRAMMAR.nodes["closure"].one_of)

@@ -15,7 +15,8 @@ SEEDS = range(8)
 
 
 def make(seed, **overrides):
-    return make_bp(pan, "pan", seed, **overrides)
+    """The riveted design (a fixed handle) unless a test asks for another; no helper handle."""
+    return make_bp(pan, "pan", seed, **{"handle_style": "riveted", "has_helper": False, **overrides})
 
 
 def up(dz):
@@ -34,7 +35,7 @@ def lowest(part, pose=None):
 def test_parts_labels_materials(seed):
     p, bp = make(seed)
     assert bp.root == "body"
-    want = {"body": "body", "handle": "handle"} | ({"lid": "lid"} if p["has_lid"] else {})
+    want = {"body": "body", "handle": "handle", "lid": "lid"}  # a riveted pan always has its lid
     assert {n: part.label for n, part in bp.parts.items()} == want
     assert all(pc.name == "handle" for pc in bp.parts["handle"].pieces)
     j = next(j for j in bp.joints if j.child == "handle")
@@ -81,8 +82,11 @@ def test_lid_joint_and_clearance(seed):
 
 
 def test_overrides_drive_the_growth():
-    _, bp = make(1, has_lid=False)
-    assert set(bp.parts) == {"body", "handle"} and not any(j.movable for j in bp.joints)
+    _, bp = make(1, has_lid=False)  # the riveted design grows its lid anyway: every pan moves
+    assert set(bp.parts) == {"body", "handle", "lid"} and any(j.movable for j in bp.joints)
+    _, bp = make(1, has_helper=True)
+    assert bp.parts["helper"].label == "handle"
+    assert next(j for j in bp.joints if j.child == "helper").kind == "fixed"
     _, a = make(1, has_hole=True)
     _, b = make(1, has_hole=False)
     assert len(a.parts["handle"].pieces) > 10 > len(b.parts["handle"].pieces)
@@ -101,6 +105,41 @@ def test_shallowest_pan_with_thick_handle():
 
 
 def test_variety():
-    params = [make(s)[0] for s in range(20)]
-    for name in ("finish", "has_lid", "has_hole", "lid_finish"):
+    params = [make_bp(pan, "pan", s)[0] for s in range(20)]
+    for name in ("finish", "has_lid", "has_hole", "lid_finish", "handle_style"):
         assert len({q[name] for q in params}) > 1, name
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_folding_handle_hinges_on_its_lug_and_lifts(seed):
+    _, bp = make(seed, handle_style="folding")
+    j = next(j for j in bp.joints if j.child == "handle")
+    assert j.kind == "revolute" and j.parent == "body"
+    d = j.dofs[0]
+    assert d.axis == pytest.approx((0, -1, 0)) and d.lower == 0.0 and d.upper > 1.0
+    # clear of the body (its lug) at rest, and a positive turn lifts the grip end
+    assert overlap(bp.parts["handle"], np.eye(4), bp.parts["body"], np.eye(4), pad=0.001) == 0.0
+    grip = np.vstack([pc.vertices for pc in bp.parts["handle"].pieces])
+    tip = grip[grip[:, 0].argmax()]
+    c, s_ = np.cos(0.5), np.sin(0.5)
+    rel = tip - d.origin
+    assert d.origin[2] + rel[0] * s_ + rel[2] * c > tip[2] + 0.02
+    assert any(pc.convex for pc in bp.parts["body"].pieces if pc.material in ("body", "handle"))
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_detachable_handle_slides_off_with_a_release_slider(seed):
+    _, bp = make(seed, handle_style="detachable")
+    j = next(j for j in bp.joints if j.child == "handle")
+    assert j.kind == "prismatic" and j.parent == "body" and j.dofs[0].axis == pytest.approx((1, 0, 0))
+    assert j.dofs[0].upper >= 0.05
+    r = next(j for j in bp.joints if j.child == "release")
+    assert r.kind == "prismatic" and r.parent == "handle" and bp.parts["release"].label == "button"
+    assert overlap(bp.parts["handle"], np.eye(4), bp.parts["body"], np.eye(4), pad=0.001) == 0.0
+    assert overlap(bp.parts["release"], np.eye(4), bp.parts["handle"], np.eye(4), pad=0.0003) == 0.0
+
+
+def test_every_pan_has_a_movable_joint():
+    for s in range(30):
+        _, bp = make_bp(pan, "pan", s)
+        assert any(j.movable for j in bp.joints), s

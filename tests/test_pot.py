@@ -17,7 +17,8 @@ SEEDS = range(8)
 
 
 def make(seed, **overrides):
-    return make_bp(pot, "pot", seed, **overrides)
+    """The plain design (a dome lid on the rim) unless a test asks for another."""
+    return make_bp(pot, "pot", seed, **{"pot_design": "plain", **overrides})
 
 
 def lift(dz, turn=0.0):
@@ -128,3 +129,36 @@ def test_variety():
     params = [make(s)[0] for s in range(20)]
     for name in ("handle_layout", "lid_handle", "body_finish", "lid_finish"):
         assert len({q[name] for q in params}) > 1, name
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_steamer_tiers_stack_and_lift_with_the_lid_on_top(seed):
+    _, bp = make(seed, pot_design="steamer")
+    tiers = sorted(n for n in bp.parts if n.startswith("tier"))
+    assert 1 <= len(tiers) <= 2 and all(bp.parts[t].label == "insert" for t in tiers)
+    parent = "body"
+    for t in tiers:
+        j = next(j for j in bp.joints if j.child == t)
+        assert j.kind == "prismatic" and j.parent == parent and j.dofs[0].axis == pytest.approx((0, 0, 1))
+        assert overlap(bp.parts[t], np.eye(4), bp.parts[parent], np.eye(4), pad=0.001) == 0.0
+        parent = t
+    lid = next(j for j in bp.joints if j.child == "lid")
+    assert lid.parent == tiers[-1] and lid.kind == "continuous_prismatic"
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_pressure_lid_turns_to_unlock_and_lifts_with_valve_and_lock(seed):
+    _, bp = make(seed, pot_design="pressure")
+    j = next(j for j in bp.joints if j.child == "lid")
+    assert j.kind == "revolute_prismatic" and j.parent == "body"
+    slide, turn = j.dofs
+    assert slide.axis == pytest.approx((0, 0, 1)) and turn.axis == pytest.approx((0, 0, 1))
+    assert 0.4 < turn.upper < 0.8
+    kinds = {j.child: (j.parent, j.kind) for j in bp.joints}
+    assert kinds["valve"] == ("lid", "continuous") and kinds["lock"] == ("lid", "prismatic")
+    assert bp.parts["lock"].label == "button" and bp.parts["valve"].label == "valve"
+
+
+def test_designs_vary():
+    designs = {make_bp(pot, "pot", s)[0]["pot_design"] for s in range(20)}
+    assert designs == {"plain", "steamer", "pressure"}

@@ -113,7 +113,9 @@ def test_parts_labels_and_size(seed):
     p, bp = make_bp(vase, "vase", seed)
     check_common(bp)
     assert bp.parts["body"].label == "body"
-    assert ("lid" in bp.parts) == p["has_lid"]
+    closure = p["closure"] if p["closure"] != "auto" else vase.usual_closure(p)
+    assert closure in vase.CLOSURES and bp.parts[closure].label == closure
+    assert [j for j in bp.joints if j.movable]  # every vase has a movable closure
     body = np.array([pc.bounds for pc in bp.parts["body"].pieces])
     lo, hi = body[:, 0].min(0), body[:, 1].max(0)
     assert hi[2] - lo[2] == pytest.approx(p["height"], abs=0.004)
@@ -125,7 +127,7 @@ def test_parts_labels_and_size(seed):
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_lid_turns_lifts_and_clears_the_body(seed):
-    _, bp = make_bp(vase, "vase", seed, has_lid=True)
+    _, bp = make_bp(vase, "vase", seed, closure="lid")
     assert bp.parts["lid"].label == "lid"
     check_cap_joint(bp, "lid", vase.LID_LIFT)
     check_sweep(bp, "lid")
@@ -136,7 +138,7 @@ def test_lid_turns_lifts_and_clears_the_body(seed):
 
 @pytest.mark.parametrize("profile", list(vase.SHAPES))
 def test_every_profile_builds_smooth_and_hollow(profile):
-    p, bp = make_bp(vase, "vase", 3, profile=profile, has_lid=True)
+    p, bp = make_bp(vase, "vase", 3, profile=profile, closure="lid")
     wall = bp.parts["body"].pieces[0]
     assert len(wall.vertices) >= 64 * 60  # many profile points x 64 sections
     check_hollow(bp, 0.3 * p["height"])
@@ -154,22 +156,51 @@ def test_spline_profile_is_smooth_and_the_coarse_one_envelopes_it():
 
 
 def test_overrides_and_bad_values():
-    p, bp = make_bp(vase, "vase", 1, has_lid=False, profile="bowl", finish="enamel")
-    assert "lid" not in bp.parts and not [j for j in bp.joints if j.movable]
+    p, bp = make_bp(vase, "vase", 1, closure="liner", profile="bowl", finish="enamel")
+    assert "lid" not in bp.parts and [j.kind for j in bp.joints if j.movable] == ["prismatic"]
     assert p["profile"] == "bowl" and bp.materials["body"] == "enamel"
     with pytest.raises(ParameterError):
         make_bp(vase, "vase", 0, profile="urn")
+    with pytest.raises(ParameterError):
+        make_bp(vase, "vase", 0, closure="cork")
 
 
 def test_grammar_drives_the_parts():
-    # the grown tree is what gets built: one body node of the chosen shape, a foot, the lid branch
-    _, bp = make_bp(vase, "vase", 2, profile="amphora", has_lid=False)
-    assert {n: p.label for n, p in bp.parts.items()} == {"body": "body", "foot": "stand"}
+    # the grown tree is what gets built: one body node of the chosen shape, a foot, the closure
+    _, bp = make_bp(vase, "vase", 2, profile="amphora", closure="stopper")
+    assert {n: p.label for n, p in bp.parts.items()} == {"body": "body", "foot": "stand", "stopper": "stopper"}
     assert next(j for j in bp.joints if j.child == "foot").kind == "fixed"
     assert "amphora: builds body" in vase.CATEGORY.rules()
 
 
+@pytest.mark.parametrize("closure", vase.CLOSURES)
+def test_each_closure_forced_moves_and_clears(closure):
+    for seed in (0, 5):
+        _, bp = make_bp(vase, "vase", seed, closure=closure)
+        j = by_child(bp, closure)
+        assert j.parent == "body" and j.movable
+        if closure == "liner":
+            assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((0, 0, 1)) and j.dofs[0].upper > 0.05
+            # the liner hangs inside: clear of the wall at rest and lifted halfway
+            body = hulls(bp.parts["body"])
+            for f in (0.0, 0.5):
+                assert gap(hulls(bp.parts["liner"], motion(j.dofs[0], f * j.dofs[0].upper)), body) >= 0.001
+        else:
+            check_sweep(bp, closure)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_the_vase_stands_on_a_wide_foot(seed):
+    # issue 13: the foot is at least 40 % of the widest diameter
+    _, bp = make_bp(vase, "vase", seed)
+    foot = np.vstack([pc.vertices for pc in bp.parts["foot"].pieces])
+    body = np.vstack([pc.vertices for pc in bp.parts["body"].pieces])
+    assert np.ptp(foot[:, 0]) >= 0.4 * np.ptp(body[:, 0])
+
+
 def test_varied():
     params = [make_bp(vase, "vase", s)[0] for s in range(20)]
-    for name in ("profile", "finish", "has_lid"):
+    closures = {vase.usual_closure(p) for p in params}
+    assert closures == set(vase.CLOSURES)
+    for name in ("profile", "finish"):
         assert len({p[name] for p in params}) > 1

@@ -286,11 +286,16 @@ def _body(pieces, profile_height: float, base_radius: float, seat: float | None 
 
 
 def vase_body(shape, height: float, radius: float, wall: float, jitter, slot: str,
-              sheet: float = 0.0) -> tuple[Assembly, Profile]:
+              sheet: float = 0.0, stand: float = 0.0) -> tuple[Assembly, Profile]:
     """A vase: a thin wall through ``shape`` (``(radius / radius, z / height)`` points, each radius
-    scaled by ``1 + jitter[i]``) on a bottom disc. Returns the body and its wall profile."""
+    scaled by ``1 + jitter[i]``) on a bottom disc. Returns the body and its wall profile. ``stand``:
+    the smallest base radius as a share of the widest control radius (the bottom two control points
+    are widened to it, so the vase stands on a foot at least that wide)."""
     r_min = wall + S.VASE_NECK_ROOM
     ctrl = [(max(r_min, min(radius, f * (1.0 + j) * radius)), u * height) for (f, u), j in zip(shape, jitter)]
+    if stand > 0:
+        widest = max(r for r, _ in ctrl)
+        ctrl[:2] = [(max(r, stand * widest * (1.0 + 0.03 * i)), z) for i, (r, z) in enumerate(ctrl[:2])]
     prof = Profile.through(ctrl, wall, S.VASE_SPLINE, r_min=r_min)
     tb = S.BOTTOM_RATIO * wall
     bottom = _piece(g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, SECTIONS), sheet=sheet)
@@ -341,9 +346,13 @@ def bottle_body(prof: Profile, punt: float, slot: str, finish: str) -> Assembly:
     return _body([prof.wall(slot), bottom], prof.height, prof.base_radius, neck_top=_finish_bottom(prof, finish))
 
 
-def threaded_neck(radius: float, z0: float, z1: float) -> list[tuple[float, float]]:
-    """Outside points of a jar neck of ``radius`` from z0 to z1: two thread rings and a rolled lip."""
+def threaded_neck(radius: float, z0: float, z1: float, threads: bool = True) -> list[tuple[float, float]]:
+    """Outside points of a jar neck of ``radius`` from z0 to z1: two thread rings and a rolled lip
+    (``threads=False``: a plain neck with a bead lip, for clip-top, hinged and stopper jars)."""
     h = z1 - z0
+    if not threads:
+        return [(radius, z0), (radius, z1 - 0.35 * h), (radius + 0.8 * S.THREAD, z1 - 0.2 * h),
+                (radius + 0.8 * S.THREAD, z1 - 0.06 * h), (radius + 0.3 * S.THREAD, z1)]
     pts = [(radius, z0), (radius, z0 + 0.18 * h)]
     for c in (0.38, 0.66):
         pts += [(radius + S.THREAD, z0 + (c - 0.04) * h), (radius + S.THREAD, z0 + (c + 0.04) * h),
@@ -353,8 +362,8 @@ def threaded_neck(radius: float, z0: float, z1: float) -> list[tuple[float, floa
 
 
 def round_jar_body(height: float, radius: float, wall: float, neck_ratio: float, shoulder: float,
-                   neck_height: float, slot: str) -> tuple[Assembly, Profile]:
-    """A round jar: body, rounded shoulder and threaded neck in one thin wall on a bottom disc."""
+                   neck_height: float, slot: str, threads: bool = True) -> tuple[Assembly, Profile]:
+    """A round jar: body, rounded shoulder and threaded (or plain) neck in one thin wall on a bottom disc."""
     n = max(neck_ratio * radius, wall + S.JAR_NECK_ROOM)
     z_neck = height - neck_height
     z_sh = z_neck - shoulder * height
@@ -362,7 +371,7 @@ def round_jar_body(height: float, radius: float, wall: float, neck_ratio: float,
     ctrl = [(f * radius, z) for f, z in S.JAR_FOOT] + [
         (radius, z_sh), (0.97 * radius, z_sh + 0.3 * rise),
         (0.5 * (radius + n) + 0.1 * (radius - n), z_sh + 0.7 * rise), (n * 1.01, z_neck - 0.0015)]
-    prof = Profile.through(ctrl + threaded_neck(n, z_neck, height), wall, S.JAR_SPLINE,
+    prof = Profile.through(ctrl + threaded_neck(n, z_neck, height, threads), wall, S.JAR_SPLINE,
                            sectors=sectors_for(radius, 0.02, 12))
     tb = S.BOTTOM_RATIO * wall
     bottom = g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, SECTIONS)
@@ -370,7 +379,7 @@ def round_jar_body(height: float, radius: float, wall: float, neck_ratio: float,
 
 
 def polygon_jar_body(height: float, radius: float, sides: int, wall: float, neck_ratio: float,
-                     neck_height: float, slot: str) -> tuple[Assembly, Profile]:
+                     neck_height: float, slot: str, threads: bool = True) -> tuple[Assembly, Profile]:
     """A square or hexagonal jar: flat panels, a flat shoulder plate with a round hole and a round
     threaded neck on top (its profile is returned: closures fit it)."""
     n = max(neck_ratio * radius, wall + S.JAR_NECK_ROOM)
@@ -379,7 +388,7 @@ def polygon_jar_body(height: float, radius: float, sides: int, wall: float, neck
     z_sh = z_neck - S.POLY_SHOULDER
     panels = polygon_wall([(f * radius, z) for f, z in S.POLY_FOOT] + [(radius, z_sh)], wall, sides, slot)
     plate = _polygon_plate(radius, sides, n - 0.6 * wall, z_sh - tp, z_sh, slot)
-    neck = Profile.through([(n, z_sh - 0.5 * tp)] + threaded_neck(n, z_neck, height), wall, S.JAR_NECK_SPLINE,
+    neck = Profile.through([(n, z_sh - 0.5 * tp)] + threaded_neck(n, z_neck, height, threads), wall, S.JAR_NECK_SPLINE,
                            sectors=24)
     floor = _polygon_floor(0.999 * (radius - wall), S.BOTTOM_RATIO * wall, sides, slot)
     return _body([panels, plate, floor, neck.wall(slot)], height, radius, neck_top=z_neck), neck

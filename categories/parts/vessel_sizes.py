@@ -74,8 +74,11 @@ BOTTLE_KINDS = {
     "champagne": (0.15, 0.34, "capsule", "glass:bottle_green", 0.1, (0.14, 0.44)),
     "soda": (0.155, 0.40, "screw", "glass:clear|clear_blue", 0.0, (0.38, 0.56)),
     "vintage": (0.25, 0.36, "stopper", "glass:clear|clear_blue|bottle_blue|amber", 0.0, (0.18, 0.62)),
+    # a Boston round (soap / lotion dispenser, 250..500 ml): amber or clear glass, short neck
+    "dispenser": (0.2, 0.3, "pump", "glass:amber|clear|bottle_green", 0.0, (0.12, 0.62)),
 }
-BOTTLE_WEIGHTS = {"beer": 1.0, "bordeaux": 1.0, "burgundy": 0.8, "champagne": 0.8, "soda": 1.0, "vintage": 0.7}
+BOTTLE_WEIGHTS = {"beer": 1.0, "bordeaux": 1.0, "burgundy": 0.8, "champagne": 0.8, "soda": 1.0, "vintage": 0.7,
+                  "dispenser": 0.8}
 
 # body outlines as (radius / body radius, z / height) up to the neck (the finish is added on top)
 BOTTLE_BODIES = {
@@ -91,6 +94,8 @@ BOTTLE_BODIES = {
              (1.0, 0.63), (0.97, 0.68), (0.72, 0.77), (None, 0.86)],
     "vintage": [(0.95, 0.0), (0.99, 0.01), (1.0, 0.03), (1.0, 0.7), (0.93, 0.77), (0.6, 0.835),
                 (None, 0.87)],
+    "dispenser": [(0.95, 0.0), (0.99, 0.01), (1.0, 0.03), (1.0, 0.7), (0.9, 0.8), (0.55, 0.86),
+                  (None, 0.9)],
 }
 NECK_TAPER = 1.02  # the neck widens this much toward the shoulder
 NECK_FINISH_ROOM = 0.004  # the shoulder ends at least this far below the finish, m
@@ -115,11 +120,13 @@ CAP_MATERIALS = {
     "stopper": "wood",
 }
 # sleeve closures: where the skirt starts above the finish bottom (dz), skirt and top plate
-# thickness, how far the top plate overhangs the skirt, sheet (crown: 0.3 mm tinplate)
+# thickness, how far the top plate overhangs the skirt (a crown's top is flush with its
+# crimped skirt, 32 mm across a 26 mm finish; a PCO screw cap's top is flush with its
+# knurled skirt, issue 13: caps fit their necks), sheet (crown: 0.3 mm tinplate)
 SLEEVE_CAPS = {
-    "crown": {"skirt_from": 0.0105, "skirt": 0.0012, "top": 0.0025, "overhang": 0.003, "sheet": 0.0003},
-    "screw": {"skirt_from": 0.0065, "skirt": 0.0016, "top": 0.003, "overhang": 0.003, "sheet": 0.0},
-    "capsule": {"skirt": 0.001, "top": 0.003, "overhang": 0.003, "sheet": 0.0},
+    "crown": {"skirt_from": 0.0105, "skirt": 0.0012, "top": 0.0025, "overhang": 0.0004, "sheet": 0.0003},
+    "screw": {"skirt_from": 0.0065, "skirt": 0.0016, "top": 0.003, "overhang": 0.0004, "sheet": 0.0},
+    "capsule": {"skirt": 0.001, "top": 0.003, "overhang": 0.0003, "sheet": 0.0},
 }
 CROWN_FLUTES = 21  # a crown cap has 21 crimps (ISO 12821)
 CROWN_FLARE = [(0.0012, 0.0), (0.0004, 0.002), (0.0, 0.0035)]  # (dr, dz) of the crimped skirt edge
@@ -162,7 +169,7 @@ JAR_FOOT = [(0.93, 0.0), (0.985, 0.004), (1.0, 0.012)]
 POLY_FOOT = [(0.96, 0.0), (0.99, 0.003), (1.0, 0.008)]
 POLY_SHOULDER = 0.003  # flat shoulder plate thickness (at least), m
 BOTTOM_RATIO = 1.6  # bottom disc thickness / wall
-JAR_LID = {"skirt_metal": 0.0012, "skirt_plastic": 0.002, "top": 0.003, "overhang": 0.003,
+JAR_LID = {"skirt_metal": 0.0012, "skirt_plastic": 0.002, "top": 0.003, "overhang": 0.0015,
            "button": 0.7, "button_height": 0.0015, "sheet": 0.0005, "reach": 0.1}
 JAR_LID_FAMILY = {"brushed_metal": "brushed_metal", "chrome": "chrome",
                   "plastic": "plastic:white|black|red|blue|green|light_grey",
