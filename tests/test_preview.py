@@ -89,7 +89,8 @@ def test_joint_fraction_moves_each_joint_along_its_axis(cabinet):
 def test_pictures_open_a_door_before_its_racks(tmp_path):
     """The opened picture and the sweep hold a door fully open while a rack behind it (``requires_open``)
     is out, as a robot and ``validate --sim`` open them; racks never pass through a half-open door."""
-    folder = infmob_usd.save(infmob_usd.generate("dishwasher", seed=3, texture_size=16, rack_count=2),
+    folder = infmob_usd.save(infmob_usd.generate("dishwasher", seed=3, texture_size=16, rack_count=2,
+                                                     design="freestanding"),
                              tmp_path)
     files = preview._read_object(folder)
     gates = preview._gates(files)
