@@ -169,7 +169,8 @@ class OvenLayout(A.PanelNodes):
         elif design == "warming":
             self.grow(style.one("warming_drawer"), xs=(xb, xf, xd1), ys=(y0, y1), zs=(z_pl, z_dt))
         elif not double:  # a fixed drawer front with a trim line
-            self.extend("body", [g.box_between([xf - T, y0, z_pl], [xd1, y1, z_dt], "body", bevel=0.002),
+            self.extend("body", [g.box_between([xf - T, y0, z_pl], [xd1, y1, z_dt], "body", bevel=0.002)
+                                 .replace(sheet=A.OVEN_SHEET),
                                  g.box_between([xd1, -0.3 * W, z_dt - 0.03], [xd1 + 0.002, 0.3 * W, z_dt - 0.025],
                                                "trim")])
         self.grow(node.one("door"), box=(xd1 - ft, xd1, y0 + 0.003, y1 - 0.003, z_h, z_dtop))
@@ -182,7 +183,7 @@ class OvenLayout(A.PanelNodes):
         if not double:
             self.grow(style, xs=(xb, xf, xd1), ys=(y0, y1), z_dtop=z_dtop + gap_top, front=front, H=H)
         else:
-            self.extend("body", [g.box_between([xb, y0, H - T], [xf - T, y1, H], "body")])
+            self.extend("body", [g.box_between([xb, y0, H - T], [xf - T, y1, H], "body").replace(sheet=A.OVEN_SHEET)])
 
     def _section(self, xs, zs, z_dtop, ztop, frame_top, keep_base=True):
         """One oven's casing (sides, back, floor, front frame, liner) from ``zs[0]`` up; returns its cavity.
@@ -194,6 +195,10 @@ class OvenLayout(A.PanelNodes):
         pieces = A.oven_casing((xb, xf, xd1, y0, y1, ztop), zs, cav, GAP_DOOR, frame_top)
         if not keep_base:
             pieces = [pc for pc in pieces if pc.material not in ("plinth", "feet")]
+        # the trim strip and the kick plinth are folded sheet too, not solid blocks (a solid 76 cm trim strip
+        # weighed ~20 kg: ranges came out at 150-185 kg against 60-75 kg real)
+        pieces = [pc.replace(sheet=A.OVEN_SHEET) if pc.material in ("body", "plinth") and not pc.sheet else pc
+                  for pc in pieces]
         if "body" in self.bp.parts:
             self.extend("body", pieces)
         else:
@@ -217,8 +222,9 @@ class OvenLayout(A.PanelNodes):
 
     def range(self, node, xs, ys, z_dtop, front, H):
         xb, xf, xd1 = xs
-        self.extend("body", [g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop"),
-                             g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body")])  # trim strip
+        self.extend("body", [g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop").replace(sheet=A.OVEN_SHEET),
+                             g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body")
+                             .replace(sheet=A.OVEN_SHEET)])  # trim strip
         # a vent slot strip along the back of the cooktop (the oven vent of a real range)
         self.extend("body", [g.box_between([front + 0.004, y - 0.004, H], [front + 0.01, y + 0.004, H + 0.002], "trim")
                              for y in np.linspace(ys[0] + 0.08, ys[1] - 0.08, 9)])
@@ -227,7 +233,7 @@ class OvenLayout(A.PanelNodes):
     warming = range
 
     def wall(self, node, xs, ys, z_dtop, front, H):
-        self.extend("body", [g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body")])
+        self.extend("body", [g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body").replace(sheet=A.OVEN_SHEET)])
 
     def cooktop(self, node, xs, ys, H):
         """Burners in columns; with grates, one over each column."""
