@@ -35,6 +35,7 @@ from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 
+
 def drawer_count(p, rng) -> int:
     """drawers per side x sides (a table under 0.7 m has one drawer per side)"""
     per = 1 if p["width"] < 0.7 else p["drawer_count"]

@@ -26,20 +26,48 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import appliance as A
 from .parts import hardware
 
+
+def rack_count(p, rng) -> int:
+    """rack_count; a compact counter-top model has room for one rack"""
+    return 1 if p["design"] == "compact" else p["rack_count"]
+
+
+def size(p: dict, design: str) -> tuple[float, float, float]:
+    """(width, depth, height): a compact counter-top model is 0.55 x 0.50 x 0.44 m (Midea MCDW6ASS,
+    Farberware FDW05ASBWHA spec sheets); a double dish drawer 0.6 x 0.57 x 0.82 m (Fisher & Paykel
+    DD60DCX9); a freestanding model carries a 20 mm worktop on its top."""
+    W, D, H = p["width"], p["depth"], p["height"]
+    if design == "compact":
+        return 0.5 + 0.1 * (W - 0.44) / 0.22, 0.46 + 0.08 * (D - 0.52) / 0.14, 0.42 + 0.05 * (H - 0.76) / 0.16
+    if design == "dish_drawer":
+        return (0.6 if W < 0.6 else 0.6 + (W - 0.6)), min(D, 0.6), min(max(H, 0.8), 0.86)
+    return W, D, H
+
+
 GRAMMAR = Grammar("dishwasher", {
-    "dishwasher": Node(label="body", required=("door", "racks")),
+    "dishwasher": Node(label="body", one_of={"freestanding": 0.35, "integrated": 0.25, "compact": 0.2,
+                                             "dish_drawer": 0.2}, choice="design"),
+    "freestanding": Node(required=("door", "racks")),
+    "integrated": Node(required=("door", "racks")),
+    "compact": Node(required=("door", "racks")),
+    "dish_drawer": Node(repeat={"drawer": 2}),
+    "drawer": Node(label="drawer", required=("drawer_rack",)),
+    "drawer_rack": Node(label="rack"),
     "door": Node(label="door", optional={"handle": 0.8, "control_panel": 0.5}),
     "handle": Node(one_of={"bar": 0.6, "pocket": 0.4}, choice="handle_style"),
     "bar": Node(), "pocket": Node(),
     "control_panel": Node(label="control_panel", optional={"buttons": 0.7}),
     "buttons": Node(repeat={"button": "button_count"}),
     "button": Node(label="button"),
-    "racks": Node(repeat={"rack": "rack_count"}, optional={"baskets": 0.7}),
+    "racks": Node(repeat={"rack": rack_count}, optional={"baskets": 0.7}),
     "rack": Node(label="rack"),
     "baskets": Node(repeat={"basket": "basket_count"}),
     "basket": Node(label="basket"),
 })
-"""Cutlery ``baskets`` stand in the lowest rack (not in a cutlery tray)."""
+"""Designs (``design``): a ``freestanding`` machine (finished sides, a worktop), an ``integrated`` one
+behind a cabinet front panel (shaker style, the control strip above it if there is one), a ``compact``
+counter-top model (one rack) and a ``dish_drawer`` (two drawers stacked, each a tub with its own rack,
+pulled out by a bar handle). Cutlery ``baskets`` stand in the lowest rack (not in a cutlery tray)."""
 
 PARAMS = (
     Float("width", "overall width (Y)", "m", 0.44, 0.66),
@@ -58,6 +86,7 @@ PARAMS = (
     Int("button_count", "push buttons on the control panel (has_buttons)", "", 2, 6),
     Float("button_size", "push button height (Z); press depth is 1/8 of it", "m", 0.012, 0.02),
     Choice("body_finish", "door front and cabinet finish", choices=("brushed_metal", "painted"), weights=(0.55, 0.45)),
+    Choice("front_finish", "cabinet front panel of an integrated model", choices=("wood", "painted")),
     Choice("rack_finish", "rack wires: nylon coated or chrome", choices=("coated", "chrome"), weights=(0.7, 0.3)),
     Choice("handle_finish", "handle material", choices=("brushed_metal", "chrome", "plastic"),
            weights=(0.45, 0.35, 0.2)),
@@ -69,7 +98,7 @@ MATERIALS = {
     "wheel": "plastic:dark_grey|black", "basket": "plastic:light_grey|white", "arm": "plastic:light_grey|dark_grey",
     "handle": ("handle_finish", {"plastic": "plastic:black|dark_grey"}), "panel": "plastic:black|dark_grey",
     "button": "plastic:black|dark_grey|light_grey", "display": "rubber", "feet": "rubber",
-    "plinth": "plastic:black|dark_grey",
+    "plinth": "plastic:black|dark_grey", "front": "front_finish", "worktop": "plastic:white|light_grey|dark_grey",
 }
 
 GAP = 0.004  # door to cabinet and plinth
@@ -82,9 +111,14 @@ BAR = hardware.HandleSize(standoff=0.028, bar_radius=0.007, post_radius=0.0056, 
 HANDLE_STRIP = 0.03  # the lowest strip of a control panel carries the handle
 
 
+FRONT = 0.019  # an integrated model's cabinet front panel (19 mm board)
+WORKTOP = 0.02  # a freestanding model's worktop
+
+
 PUMP_KG = 5.0
 """kg of the machinery in a dishwasher's base: circulation pump with motor 3-4 kg, drain pump ~0.5 kg,
 sump and heater (service-part listings, e.g. Bosch 00651956 circulation pump ~3.5 kg)."""
+
 
 class DishwasherLayout(A.PanelNodes):
     def pump(self, xb0: float, xb1: float, zf: float, zh: float) -> list[g.Piece]:
@@ -97,37 +131,120 @@ class DishwasherLayout(A.PanelNodes):
 
     def dishwasher(self, node):
         p = self.p
-        W, D, H, w, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
+        design = node.choice
+        style = node.one(design)
+        W, D, H = size(p, design)
+        w, ft = p["wall"], p["door_thickness"]
+        if design == "dish_drawer":
+            geo = self._drawer_cabinet(W, D, H)
+            return self.grow(style, **geo)
+        if design == "freestanding":
+            H -= WORKTOP
         y0, y1 = -W / 2, W / 2
         xf = D / 2  # door front face
         xb1, xb0 = xf - ft - GAP, -D / 2
         zf = p["feet_height"]
-        zh = zf + p["kick_height"]  # hinge and door bottom
+        zh = zf + (0.03 if design == "compact" else p["kick_height"])  # hinge and door bottom
         zt = H - 0.002  # door top
         cav = (xb0 + w + A.TUB_LINER, xb1, y0 + w + A.TUB_LINER, y1 - w - A.TUB_LINER, zh + 0.02, H - w - A.TUB_LINER)
-        door = node.one("door")
+        door = style.one("door")
         ctrl, handle = door.one("control_panel"), door.one("handle")
         # the top band of the door carries the control panel and the handle; racks stay below it
         band = 0.025 + (p["control_height"] if ctrl else 0.0) + (0.03 if ctrl and handle else 0.0)
         if handle and not ctrl:
             band = 0.07
-        self.add("body", "body", A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + self.pump(xb0, xb1, zf, zh))
-        self.grow(door, box=(xf - ft, xf, y0, y1, zh, zt), band=band)
+        body = A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + self.pump(xb0, xb1, zf, zh)
+        if design == "freestanding":  # a worktop over the cabinet, behind the door
+            body.append(g.box_between([xb0, y0, H], [xb1, y1, H + WORKTOP], "worktop",
+                                      bevel=0.004))
+        self.add("body", "body", body)
         # racks: below the band and the ceiling nozzle; above the flat door's inner face and the spray arm
         top = min(cav[5] - 0.032, zt - band - 0.01)
         bottom = max(zh + ft + A.DISPENSER + 0.012, cav[4] + 0.05)
-        self.grow(node.one("racks"), cav=cav, z=(bottom, top))
+        self.grow(style, door=dict(box=(xf - ft, xf, y0, y1, zh, zt), band=band), racks=dict(cav=cav, z=(bottom, top)))
+
+    def freestanding(self, node, door, racks):
+        self.grow(node.one("door"), **door)
+        self.grow(node.one("racks"), **racks)
+
+    integrated = compact = freestanding
+
+    def _drawer_cabinet(self, W, D, H):
+        """A double dish drawer's cabinet with two bays (the body); returns where the drawers go."""
+        p = self.p
+        ft = p["door_thickness"]
+        y0, y1 = -W / 2, W / 2
+        xf, xb0 = D / 2, -D / 2
+        xb1 = xf - ft - GAP
+        zf = p["feet_height"]
+        zk = zf + p["kick_height"]
+        t = 0.012  # cabinet panels (massed as sheet)
+
+        def sheet(lo, hi, slot="body"):
+            return g.box_between(lo, hi, slot).replace(sheet=A.DISHWASHER_SHEET)
+
+        bay = (H - zk - t - GAP) / 2
+        body = [sheet([xb0, y0, zf], [xb1, y0 + t, H]), sheet([xb0, y1 - t, zf], [xb1, y1, H]),
+                sheet([xb0, y0 + t, H - t], [xb1, y1 - t, H]), sheet([xb0, y0 + t, zf], [xb0 + t, y1 - t, H - t]),
+                sheet([xb0 + t, y0 + t, zk - t], [xb1, y1 - t, zk]),
+                sheet([xb0 + t, y0 + t, zk + bay], [xb1, y1 - t, zk + bay + t]),
+                sheet([xb1 - 0.004, y0, zf + 0.004], [xf - 0.012, y1, zk - 0.004], "plinth")]
+        body += [g.cylinder([x, y, 0.0], [x, y, zf], 0.015, "feet", 16) for x in (xb0 + 0.04, xb1 - 0.05)
+                 for y in (y0 + 0.04, y1 - 0.04)]
+        self.add("body", "body", body)
+        return dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
+
+    def dish_drawer(self, node, xs, ys, zs):
+        """Two drawers (a front, an open stainless tub, a rack fixed in it), sliding out along +X."""
+        (xb0t, xb1, xf), (y0, y1, t), (zk, bay, t) = xs, ys, zs
+        for k, kid in enumerate(node.of("drawer")):
+            za = zk + k * (bay + t) + GAP
+            self.grow(kid, k=k, front=(xb1 + GAP, xf, y0 + GAP, y1 - GAP, za, za + bay - GAP),
+                      tub=(xb0t + 0.015, xb1 - 0.002, y0 + t + 0.006, y1 - t - 0.006, za + 0.006, za + bay - 0.03))
+
+    def drawer(self, node, k, front, tub):
+        p = self.p
+        x0, x1, y0, y1, z0, z1 = front
+        tx0, tx1, ty0, ty1, tz0, tz1 = tub
+        name = f"drawer_{k}"
+        pieces = [g.box_between([x1 - 0.0015, y0, z0], [x1, y1, z1], "body").replace(sheet=A.DISHWASHER_SHEET),
+                  g.box_between([x0, y0, z0], [x1 - 0.0015, y1, z1], "door_inner").replace(sheet=0.002),
+                  *[pc.replace(sheet=A.DISHWASHER_SHEET) for pc in A.open_bin((tx0, tx1), (ty0, ty1), tz0, tz1 - tz0,
+                                                                                "tub", t=0.004)]]
+        h = hardware.bar_handle(p["handle_length"] * (y1 - y0), "handle", BAR).attached(
+            "mount", to=Frame.at((x1, 0.0, z1 - 0.04), z=(1, 0, 0), x=(0, 1, 0)))
+        self.add(name, "drawer", pieces + list(h.parts[h.root].pieces))
+        self.slide("body", name, Frame.at((x1, 0.0, z0), z=(1, 0, 0)), upper=0.85 * (tx1 - tx0))
+        self.grow(node.one("drawer_rack"), drawer=name, xs=(tx0 + 0.01, tx1 - 0.01), cy1=ty1 - 0.004, za=tz0 + 0.004,
+                  top=tz1 - 0.01)
+
+    def drawer_rack(self, node, drawer, xs, cy1, za, top):
+        name = self.add(f"{drawer}_rack", "rack", A.dish_rack(xs, cy1, za, top, self.p["wire_pitch"], "lower"))
+        self.fix(drawer, name)
 
     def door(self, node, box, band):
         x0, x1, y0, y1, z0, z1 = box
-        self.add("door", "door", A.layered_door(box))
+        integrated = self.p["design"] == "integrated"
+        ctrl = node.one("control_panel")
+        front = []
+        if integrated:  # a shaker cabinet front on the door, below the control strip (semi-integrated)
+            zt = z1 - band + 0.016 if ctrl else z1
+            x2, r = x1 + FRONT, 0.07  # front face, frame rail width
+            front = [g.box_between([x1, y0, z0], [x2 - 0.006, y1, zt], "front"),
+                     g.box_between([x2 - 0.006, y0, z0], [x2, y0 + r, zt], "front", bevel=0.002),
+                     g.box_between([x2 - 0.006, y1 - r, z0], [x2, y1, zt], "front", bevel=0.002),
+                     g.box_between([x2 - 0.006, y0 + r, z0], [x2, y1 - r, z0 + r], "front", bevel=0.002),
+                     g.box_between([x2 - 0.006, y0 + r, zt - r], [x2, y1 - r, zt], "front", bevel=0.002)]
+        self.add("door", "door", A.layered_door(box) + front)
         self.hinge("body", "door", Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)
         ctrl = node.one("control_panel")
         if ctrl:
             self.grow(ctrl, xf=x1, ys=(y0, y1), zs=(z1 - band + 0.02, z1 - 0.004), handle=bool(node.one("handle")))
         if node.one("handle"):
             z = z1 - band + 0.035 if ctrl else z1 - 0.035
-            at = Frame.at((x1 + (FASCIA if ctrl else 0.0), 0.0, z), z=(1, 0, 0), x=(0, 1, 0))
+            if integrated:  # a cabinet handle on the front panel's top rail
+                z = (z1 - band + 0.016 if ctrl else z1) - 0.035
+            at = Frame.at((x1 + (FRONT if integrated else FASCIA if ctrl else 0.0), 0.0, z), z=(1, 0, 0), x=(0, 1, 0))
             self.grow(node.one("handle"), at=at)
 
     def handle(self, node, at):

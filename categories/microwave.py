@@ -31,8 +31,28 @@ def dials(p, rng) -> int:
     return p["knob_count"] or (1 if p["has_buttons"] else 2)
 
 
+def size(p: dict, design: str) -> tuple[float, float, float]:
+    """(width, depth, height) of a design. Counter-top models use the parameters; an over-the-range model is
+    30 in wide, 0.39-0.44 m high, 0.38-0.42 m deep (GE JVM7195, Whirlpool WMH31017 spec sheets); a drawer
+    microwave 24 or 30 in wide, 0.39 m high, 0.56-0.65 m deep (Sharp SMD2470AS / SMD3070AS)."""
+    W, D, H = p["width"], p["depth"], p["height"]
+    if design == "over_the_range":
+        return 0.759, min(max(D, 0.38), 0.42), min(max(H + 0.1, 0.39), 0.44)
+    if design == "drawer_model":
+        return (0.606 if W < 0.53 else 0.759), 0.56 + 0.09 * (D - 0.32) / 0.14, 0.39
+    return W, D, H
+
+
 GRAMMAR = Grammar("microwave", {
-    "microwave": Node(label="body", required=("door", "plate", "control_panel")),
+    "microwave": Node(label="body", required=("control_panel",),
+                      one_of={"turntable": 0.4, "flatbed": 0.2, "over_the_range": 0.25, "drawer_model": 0.15},
+                      choice="design"),
+    "turntable": Node(required=("door", "plate")),
+    "flatbed": Node(required=("door",)),
+    "over_the_range": Node(required=("otr_door", "plate")),
+    "drawer_model": Node(required=("drawer",)),
+    "otr_door": Node(label="door"),
+    "drawer": Node(label="drawer"),
     "door": Node(label="door", one_of={"bar": 0.4, "recessed": 0.3, "release_button": 0.3}, choice="door_opener"),
     "bar": Node(), "recessed": Node(),
     "release_button": Node(label="button"),
@@ -43,7 +63,11 @@ GRAMMAR = Grammar("microwave", {
     "knob": Node(repeat={"dial": dials}),
     "dial": Node(label="knob"),
 })
-"""A ``release_button`` opener is a button on the control panel that releases the door."""
+"""Designs (``design``): a counter-top ``turntable`` model; a ``flatbed`` (inverter) model with a fixed
+ceramic floor instead of the turntable; an ``over_the_range`` model (30 in, a bar handle, a vent grille
+over the door, grease filters and a light under it); a ``drawer_model`` (a drawer that slides out, the
+control strip above it). A ``release_button`` opener is a button on the control panel that releases the
+door."""
 
 PARAMS = (
     Float("width", "overall width (Y)", "m", 0.44, 0.62),
@@ -72,11 +96,13 @@ PARAMS = (
 MATERIALS = {
     "body": "body_finish", "door": "plastic", "interior": "interior_finish", "glass": "glass", "plate": "glass:clear",
     "roller": "plastic", "button": "plastic", "knob": "plastic", "handle": "handle_finish", "door_inner": "rubber",
-    "display": "rubber", "feet": "rubber", "trim": "chrome",
+    "display": "rubber", "feet": "rubber", "trim": "chrome", "filter": "brushed_metal",
 }
 
 DOOR_OPENS = math.pi / 2
 STEEL_SHEET = 0.0006  # m: casing and cavity liner are 0.5-0.7 mm steel sheet under any finish
+TRANSFORMER = (0.09, 0.075)  # m, depth and height of the HV transformer's laminated core: 2.5-4 kg
+# with its windings (microwave HV transformers weigh 2.5-4 kg: service-part listings, e.g. Samsung DE26-00126A)
 
 
 def steel_sheet(family: str) -> float:
@@ -84,8 +110,23 @@ def steel_sheet(family: str) -> float:
     of steel: a painted or plastic-clad casing is still a steel box."""
     return STEEL_SHEET * 7850.0 / FAMILIES[family].density
 
-TRANSFORMER = (0.09, 0.075)  # m, depth and height of the HV transformer's laminated core: 2.5-4 kg
-# with its windings (microwave HV transformers weigh 2.5-4 kg: service-part listings, e.g. Samsung DE26-00126A)
+
+def steel_casing(p: dict, casing: list, cav, box, t: float) -> list:
+    """The casing massed as steel sheet, with the high-voltage transformer on its floor in the bay
+    beside the cavity (hidden) where there is one."""
+    xb, y1, zc0 = box
+    sheets = {"body": steel_sheet(p["body_finish"]), "interior": steel_sheet(p["interior_finish"])}
+    casing = [pc.replace(sheet=sheets[pc.material]) if pc.material in sheets else pc for pc in casing]
+    bay = (cav[3] + A.LINER + 0.004, y1 - t - 0.004)
+    if bay[1] - bay[0] > 0.03:
+        side = min(0.08, bay[1] - bay[0])
+        ym = (bay[0] + bay[1]) / 2
+        x0 = xb + t + 0.02
+        core = g.box_between([x0, ym - side / 2, zc0 + t],
+                             [x0 + TRANSFORMER[0], ym + side / 2, zc0 + t + TRANSFORMER[1]],
+                             "trim", name="transformer").replace(wall=0.0)
+        casing.append(core)
+    return casing
 EDGE = 0.002  # door and fascia stop this far inside the casing's top and bottom
 LINER_IN = 0.012  # the cavity liner sits this far inside the casing walls
 BACK_ROOM = 0.02  # behind the cavity
@@ -94,15 +135,23 @@ HANDLE_ROOM = {"bar": 0.06, "recessed": 0.045}  # door frame on the free side, w
 PULL = dict(standoff=0.025, bar_radius=0.0065, post_radius=0.0052, inset=0.02)  # a bar pull on the door
 RELEASE_H = 0.022  # door release button height
 PANEL_MARGIN = 0.02  # free fascia above the first item and below the last
+VENT = 0.045  # over-the-range: the vent grille band over the door and the panel
+STRIP = 0.075  # drawer microwave: the control strip above the drawer
 
 
 class MicrowaveLayout(A.PanelNodes):
     def microwave(self, node):
         p = self.p
-        W, D, H, t, ft = p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"]
+        design = node.choice
+        style = node.one(design)
+        W, D, H = size(p, design)
+        t, ft = p["wall"], p["door_thickness"]
+        if design == "drawer_model":
+            return self._drawer_model(node, style, W, D, H)
+        vent = VENT if design == "over_the_range" else 0.0
         y0, y1 = -W / 2, W / 2
         zc0, zc1 = p["feet_height"], H
-        zd = (zc0 + EDGE, zc1 - EDGE)  # door and panel
+        zd = (zc0 + EDGE, zc1 - vent - EDGE)  # door and panel
         panel_w = p["panel_fraction"] * W
         door_w = W - panel_w
         # the door's back corner on its free edge swings out by ~ft^2 / (2 width) in +Y
@@ -113,25 +162,82 @@ class MicrowaveLayout(A.PanelNodes):
         xf = xd1 - ft - gap_door  # body front face (bezel)
         xb = -D / 2
         cav = (xb + t + BACK_ROOM, xf - A.BEZEL, y0 + t + LINER_IN, yd1 - BEZEL_SIDE, zc0 + t + LINER_IN,
-               zc1 - t - LINER_IN)
-        casing = A.casing((xb, xf, y0, y1, zc0, zc1), cav, t, min(0.014, 0.6 * zc0 + 0.006))
-        sheets = {"body": steel_sheet(p["body_finish"]), "interior": steel_sheet(p["interior_finish"])}
-        casing = [pc.replace(sheet=sheets[pc.material]) if pc.material in sheets else pc for pc in casing]
-        # the high-voltage transformer on the casing floor in the bay beside the cavity (hidden)
-        bay = (cav[3] + A.LINER + 0.004, y1 - t - 0.004)
-        if bay[1] - bay[0] > 0.03:
-            side = min(0.08, bay[1] - bay[0])
-            ym = (bay[0] + bay[1]) / 2
-            x0 = xb + t + 0.02
-            core = g.box_between([x0, ym - side / 2, zc0 + t], [x0 + TRANSFORMER[0], ym + side / 2, zc0 + t + TRANSFORMER[1]],
-                                 "trim", name="transformer").replace(wall=0.0)
-            casing.append(core)
-        self.add("body", "body", casing)
-        self.grow(node.one("plate"), cavity=cav)
-        door = node.one("door")
-        self.grow(door, ys=(y0, yd1), zs=zd, x_front=xd1)
+               min(zc1 - t - LINER_IN, zd[1] - 0.03))
+        self.add("body", "body", steel_casing(p, A.casing((xb, xf, y0, y1, zc0, zc1), cav, t,
+                                                          min(0.014, 0.6 * zc0 + 0.006)), cav, (xb, y1, zc0), t))
+        door = style.one("door") or style.one("otr_door")
+        self.grow(style, cavity=cav, door=dict(ys=(y0, yd1), zs=zd, x_front=xd1), box=(xb, xf, xd1, y0, y1, zc0, zc1))
         self.grow(node.one("control_panel"), xs=(xf, xd1), ys=(y1 - panel_w, y1), zs=zd,
                   release=door.one("release_button"))
+
+    def turntable(self, node, cavity, door, box):
+        self.grow(node.one("plate"), cavity=cavity)
+        self.grow(node.one("door"), **door)
+
+    def flatbed(self, node, cavity, door, box):
+        """No turntable: a fixed ceramic floor over the antenna (Panasonic inverter flatbed models)."""
+        cx0, cx1, cy0, cy1, cz0, _ = cavity
+        self.extend("body", [g.box_between([cx0 + 0.01, cy0 + 0.01, cz0], [cx1 - 0.01, cy1 - 0.01, cz0 + 0.005],
+                                           "plate", bevel=0.002)])
+        self.grow(node.one("door"), **door)
+
+    def over_the_range(self, node, cavity, door, box):
+        """A turntable, a door with a bar handle, a vent grille over the door and panel, and under the
+        body two grease filters and a cooktop light (decor on the casing)."""
+        xb, xf, xd1, y0, y1, zc0, zc1 = box
+        self.grow(node.one("plate"), cavity=cavity)
+        self.grow(node.one("otr_door"), **door)
+        zv0 = zc1 - VENT + 0.004
+        grille = [g.box_between([xf - 0.001, y0 + 0.004, zv0], [xd1, y1 - 0.004, zc1 - 0.002], "door", bevel=0.002)]
+        n = int((y1 - y0 - 0.1) / 0.012)
+        grille += [g.box_between([xd1, y0 + 0.05 + k * 0.012, zv0 + 0.01], [xd1 + 0.0008, y0 + 0.056 + k * 0.012,
+                                                                              zc1 - 0.012], "display")
+                   for k in range(n)]
+        w = 0.28 * (y1 - y0)
+        for yc in (-0.25 * (y1 - y0), 0.25 * (y1 - y0)):  # grease filters in the bottom, a light between them
+            grille.append(g.box_between([xb + 0.08, yc - w / 2, zc0 - 0.002], [xf - 0.04, yc + w / 2, zc0],
+                                        "filter"))
+        grille.append(g.box_between([xf - 0.09, -0.04, zc0 - 0.002], [xf - 0.04, 0.04, zc0], "glass"))
+        self.extend("body", grille)
+
+    def otr_door(self, node, ys, zs, x_front):
+        self._door(node, ys, zs, x_front, "bar")
+
+    def drawer_model(self, node, cav, box):
+        self.grow(node.one("drawer"), cav=cav, box=box)
+
+    def _drawer_model(self, node, style, W, D, H):
+        """A drawer microwave: a casing with a wide opening, a drawer (front, open tray, cavity liner) that
+        slides out along +X, a control strip above it (display, buttons, dials) on the body."""
+        p = self.p
+        t, ft = p["wall"], p["door_thickness"]
+        y0, y1 = -W / 2, W / 2
+        zc0, zc1 = p["feet_height"], H
+        xd1, xb = D / 2, -D / 2
+        xf = xd1 - ft - 0.004
+        zt = zc1 - STRIP  # drawer top
+        cav = (xb + t + BACK_ROOM, xf - A.BEZEL, y0 + t + LINER_IN, y1 - t - LINER_IN, zc0 + t + LINER_IN,
+               zt - 0.02)
+        self.add("body", "body", steel_casing(p, A.casing((xb, xf, y0, y1, zc0, zc1), cav, t,
+                                                          min(0.014, 0.6 * zc0 + 0.006)), cav, (xb, y1, zc0), t))
+        self.grow(style, cav=cav, box=(xf, xd1, y0, y1, zc0 + EDGE, zt - 0.003))
+        self.grow(node.one("control_panel"), xs=(xf, xd1), ys=(y0 + EDGE, y1 - EDGE), zs=(zt + 0.003, zc1 - EDGE),
+                  release=None)
+
+    def drawer(self, node, cav, box):
+        p = self.p
+        xf, xd1, y0, y1, z0, z1 = box
+        cx0, cx1, cy0, cy1, cz0, cz1 = cav
+        c = 0.004  # the tray inside the cavity liner
+        tray = (cx0 + 0.02, cy0 + c, cy1 - c, cz0 + c, cz1 - c)
+        pieces = A.storage_drawer((xf + 0.003, xd1, y0, y1, z0, z1), tray, wall=0.004)
+        pieces = [pieces[0].replace(material="body")] + [pc.replace(material="interior") for pc in pieces[1:]]
+        pull = hardware.edge_pull(p["handle_length"] * (y1 - y0), "handle", depth=0.014, lip=0.016).attached(
+            "mount", to=Frame.at((xd1, 0.0, z1 - 0.02), z=(1, 0, 0), x=(0, 1, 0)))
+        hole = (y0 + 0.12 * (y1 - y0), z0 + 0.05, y1 - 0.12 * (y1 - y0), z1 - 0.05)
+        window = g.box_between([xd1, hole[0], hole[1]], [xd1 + 0.001, hole[2], hole[3]], "glass")
+        self.add("drawer", "drawer", pieces + [window] + list(pull.parts[pull.root].pieces))
+        self.slide("body", "drawer", Frame.at((xd1, 0.0, z0), z=(1, 0, 0)), upper=0.85 * (xf - tray[0]))
 
     def plate(self, node, cavity):
         cx0, cx1, cy0, cy1, cz0, _ = cavity
@@ -143,17 +249,22 @@ class MicrowaveLayout(A.PanelNodes):
         self.spin("body", "plate", Frame.at((*c, cz0)), role="turntable")
 
     def door(self, node, ys, zs, x_front):
+        self._door(node, ys, zs, x_front, node.choice)
+
+    def _door(self, node, ys, zs, x_front, opener):
         p = self.p
         skin, inner = ("body", "door_inner") if p["door_finish"] == "match" else ("door", "door")
         m = p["window_margin"]
-        m_free = max(1.5 * m, HANDLE_ROOM.get(node.choice, 0.0))
+        m_free = max(1.5 * m, HANDLE_ROOM.get(opener, 0.0))
         hole = (ys[0] + m, zs[0] + 1.15 * m, ys[1] - m_free, zs[1] - m)
         self.add("door", "door", A.glazed_door(x_front, p["door_thickness"], ys, zs, hole, skin, inner))
         # hinged on its front face at the left edge: about -Z it swings out (+X) and to the left
         self.hinge("body", "door", Frame.at((x_front, ys[0], zs[0]), z=(0, 0, -1)), upper=DOOR_OPENS)
-        if node.choice != "release_button":
-            self.grow(node.one(node.choice), at=Frame.at((x_front, ys[1], (zs[0] + zs[1]) / 2), z=(1, 0, 0),
-                                                         x=(0, 0, 1)), length=p["handle_length"] * (zs[1] - zs[0]))
+        at = Frame.at((x_front, ys[1], (zs[0] + zs[1]) / 2), z=(1, 0, 0), x=(0, 0, 1))
+        if node.kind == "otr_door":
+            self.bar(node, at=at, length=p["handle_length"] * (zs[1] - zs[0]))
+        elif opener != "release_button":
+            self.grow(node.one(opener), at=at, length=p["handle_length"] * (zs[1] - zs[0]))
 
     def bar(self, node, at, length):
         size = hardware.HandleSize(**PULL)
@@ -177,6 +288,9 @@ class MicrowaveLayout(A.PanelNodes):
         keypad = not buttons and not n_dials  # a flat membrane keypad instead
         bh, kr = p["button_height"], min(p["knob_radius"], 0.38 * pw)
         dh = min(max(0.12 * ph, 0.022), 0.04)
+        if pw > 2 * ph:  # a drawer microwave's control strip: everything side by side
+            panel = self._strip(xp, ys, zs, rows, n_dials, keypad)
+            return self._panel_part(node, xs, ys, zs, panel, buttons, release, knob)
 
         def heights(f):
             return ([dh * f] if display else []) + [1.7 * bh * f] * rows + ([0.3 * ph] if keypad else []) + \
@@ -219,6 +333,49 @@ class MicrowaveLayout(A.PanelNodes):
                 panel.holes.append(A.hole_around(yc, zk, (stem, stem)))
                 axis = Frame.at((xp, yc, zk), z=(1, 0, 0))
                 panel.dials.append((f"knob_{k}", A.dial(xp, yc, zk, r_k, stem, style), axis))
+        return self._panel_part(node, xs, ys, zs, panel, buttons, release, knob)
+
+    def _strip(self, xp, ys, zs, rows, n_dials, keypad):
+        """A horizontal control strip: a display on the left, the push buttons in a grid of one or two
+        rows in the middle, the dials on the right (a drawer microwave's angled fascia, flattened)."""
+        p = self.p
+        (ya, yb), (za, zb) = ys, zs
+        ph, zc = zb - za, (za + zb) / 2
+        panel = A.Panel()
+        panel.decor.append(g.box_between([xp - 0.001, ya + 0.04, zc - 0.3 * ph], [xp + 0.0015, ya + 0.2, zc + 0.3 * ph],
+                                         "display"))
+        y = ya + 0.23
+        if rows:
+            n = 3 * rows
+            nrow = min(rows, 2)
+            ncol = -(-n // nrow)
+            bh = min(p["button_height"], (ph - 0.02 - (nrow - 1) * 0.008) / nrow)
+            half = (0.9 * bh, bh / 2) if p["button_shape"] == "rect" else (bh / 2, bh / 2)
+            pitch_y, pitch_z = 2 * half[0] + 2 * A.CLEAR + 0.008, bh + 0.008
+            proud = 0.3 * bh + 0.002
+            for k in range(n):
+                r, c = divmod(k, ncol)
+                yk, zk = y + half[0] + c * pitch_y, zc + (0.5 * (nrow - 1) - r) * pitch_z
+                panel.holes.append(A.hole_around(yk, zk, half))
+                panel.buttons.append((f"button_{r}_{c}", A.push_button(xp, yk, zk, half, p["button_shape"], proud),
+                                      Frame.at((xp + proud, yk, zk), z=(-1, 0, 0)), half[1] / 4, None))
+            y += ncol * pitch_y + 0.01
+        if keypad:
+            panel.decor.append(g.box_between([xp - 0.001, y, zc - 0.3 * ph], [xp + 0.001, y + 0.12, zc + 0.3 * ph],
+                                             "display"))
+        for k in range(n_dials):
+            r_k = min(p["knob_radius"], 0.4 * ph - 0.004)
+            yk = yb - 0.03 - r_k - k * (2 * r_k + 0.02)
+            stem = max(0.003, 0.2 * r_k)
+            style = list(A.DIALS)[int(self.rng.choice(len(A.DIALS), p=list(A.DIALS.values())))]
+            panel.holes.append(A.hole_around(yk, zc, (stem, stem)))
+            panel.dials.append((f"knob_{k}", A.dial(xp, yk, zc, r_k, stem, style), Frame.at((xp, yk, zc), z=(1, 0, 0))))
+        return panel
+
+    def _panel_part(self, node, xs, ys, zs, panel, buttons, release, knob):
+        p = self.p
+        xf, xp = xs
+        ya, yb = ys
         skin, inner = ("body", "door_inner") if p["door_finish"] == "match" else ("door", "door")
         self.add("control_panel", "control_panel", [
             g.panel([xp - A.SKIN, ya, zs[0]], [xp, yb, zs[1]], skin, "x", holes=panel.holes),

@@ -37,7 +37,6 @@ from __future__ import annotations
 import math
 
 from infmob_usd import joints as J
-
 from infmob_usd.category import Category
 from infmob_usd.frames import IDENTITY
 from infmob_usd.grammar import Grammar, Layout, Node

@@ -6,8 +6,11 @@ connector, a tilt bracket whose barrel turns between the cheeks of a fork (revol
 The tilt pivot lies behind the screen, so the screen rests upright on its lower stop and tilts
 its top back by up to ``tilt``; nothing enters the stand or the ground. Stands: a ``single_post``
 (a base plate and a neck, or with ``has_height_adjust`` a post that swivels and slides up in a
-sleeve), ``two_legs`` (two feet with uprights and a crossbar), or ``wall_mount`` (a wall plate and
-one or two arm links turning about Z, the screen kept 1 cm off the wall in every combination).
+sleeve; without it the neck swivels on its base, +-``swivel``), ``two_legs`` (two feet with uprights and a
+crossbar), or ``wall_mount`` (a wall plate and one or two arm links turning about Z, the screen kept 1 cm
+off the wall in every combination; ``displays.wall_mount_ranges`` handles three links, but a 3-link arm with
+its +-0.13 rad per joint missed SAPIEN's reach check on 1 of 3 seeds, so ``arm_links`` stays 1-2). The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
+arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
 Optional push buttons on the right side rim or the bezel's bottom band.
 Parts: ``categories/parts/displays.py``.
 """
@@ -28,8 +31,10 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import displays as S
 
 GRAMMAR = Grammar("tv", {
-    "tv": Node(label="screen", required=("connector",), optional={"buttons": 0.6},
-               one_of={"single_post": 0.48, "two_legs": 0.32, "wall_mount": 0.2}, choice="stand_style"),
+    "tv": Node(label="screen", required=("connector", "panel"), optional={"buttons": 0.6},
+               one_of={"single_post": 0.45, "two_legs": 0.3, "wall_mount": 0.25}, choice="stand_style"),
+    "panel": Node(one_of={"flat": 0.75, "curved": 0.25}, choice="panel_shape"),
+    "flat": Node(), "curved": Node(),
     "connector": Node(label="connector"),
     "single_post": Node(label="stand", optional={"height_adjust": 0.4}),
     "height_adjust": Node(label="stand"),
@@ -56,7 +61,8 @@ PARAMS = (
     Float("tilt", "tilt range: the screen top tilts back 0..tilt", "rad", math.pi / 24, math.pi / 8),
     Float("slide", "travel of a height-adjustable post", "m", 0.04, 0.14),
     Float("swivel", "swivel range (+-) of a height-adjustable post", "rad", math.pi / 12, math.pi / 4),
-    Int("arm_links", "links of a wall-mount arm", "", 1, 2),
+    Int("arm_links", "links of a wall-mount arm (1: a swivel bracket, 2: an articulating arm)", "", 1, 2),
+    Float("curve_radius", "radius of a curved screen (Samsung / LG curved TVs: 3000R-4200R)", "m", 3.0, 4.2),
     Float("arm_length", "wall-mount arm reach from the wall plate to the tilt pivot", "m", 0.15, 0.45),
     Int("button_count", "buttons on the screen", "", 1, 4),
     Choice("button_place", "where the buttons are", choices=("side", "bottom")),
@@ -72,6 +78,8 @@ MATERIALS = {
 }
 
 ASPECT = {"16:9": 9 / 16, "4:3": 3 / 4}
+ARM_LINK_MIN = 0.14  # shortest link of an articulating wall arm (3-link arms reach 0.45-0.65 m: Sanus VLF628,
+#                      Vogel's Wall 3345 spec sheets)
 
 
 class TVLayout(Layout):
@@ -100,10 +108,21 @@ class TVLayout(Layout):
         x_p = x_bk - e
         z_p = min(max((zh0 + zh1) / 2 if not wall else zs0 + 0.5 * H, zh0 + 0.06), zh1 - 0.06)
         buttons = node.one("buttons")
-        band = S.bottom_band(p["bezel"], bool(buttons) and p["button_place"] == "bottom")
-        layout = S.button_layout(p["button_place"], len(buttons.of("button")), W, xf, xs, zs0, band) if buttons else []
-        self.add("screen", "screen", S.screen(W, (xf, xs, xhb), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
-                                              p["button_place"]))
+        curved = node.one("panel").choice == "curved"
+        place = "bottom" if curved else p["button_place"]  # a curved panel's buttons: its flat middle
+        band = S.bottom_band(p["bezel"], bool(buttons) and place == "bottom")
+        layout = S.button_layout(place, len(buttons.of("button")), W, xf, xs, zs0, band) if buttons else []
+        if curved:
+            n = len(layout)
+            layout = [((0.024 * (k - (n - 1) / 2), c[1]), h) for k, (c, h) in enumerate(layout)]
+            flat = max(0.5 * hw, 0.012 * n + 0.04)
+            pieces = S.curved_screen(W, (xf, xs, xhb), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
+                                     p["curve_radius"], flat)
+        else:
+            pieces = S.screen(W, (xf, xs, xhb), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
+                              p["button_place"])
+        self.add("screen", "screen", pieces[-1:])  # the electronics box; the panel node adds the panel
+        self.grow(node.one("panel"), pieces=pieces[:-1])
         if style == "two_legs":
             L_k = 2 * (p["leg_spread"] * W / 2 - S.LEG_W / 2 - S.GAP)  # between the uprights
         else:
@@ -117,7 +136,16 @@ class TVLayout(Layout):
         self.hinge(parent, "connector", Frame.at((x_p, 0.0, z_p), z=(0, -1, 0)), upper=tilt)
         self.fix("connector", "screen")
         if buttons:
-            self.grow(buttons, layout=layout, W=W, xf=xf)
+            self.grow(buttons, layout=layout, W=W, xf=xf, place=place)
+
+    def panel(self, node, pieces):
+        self.grow(node.one(node.choice), pieces=pieces)
+
+    def flat(self, node, pieces):
+        """A flat panel (``displays.screen``): bezel, display, housing."""
+        self.extend("screen", pieces)
+
+    curved = flat  # ``displays.curved_screen``: facets along an arc
 
     def connector(self, node, pivot, r_k, xs2, L_k, vesa, hump):
         self.add("connector", "connector", S.connector(pivot, r_k, xs2, L_k, vesa, hump))
@@ -132,12 +160,15 @@ class TVLayout(Layout):
         z_fork0 = z_p - r_k - S.GAP - S.FORK_T  # bottom of the fork bridge
         room = x_bk - S.GAP - x_p  # the neck stays behind the screen
         adj = node.one("height_adjust")
-        if adj is None:
+        if adj is None:  # the neck swivels on a bearing disc on the base (swivel pedestal stands)
             nx, ny = min(0.012, room - 0.002), float(np.clip(0.05 * W, 0.03, 0.09))
-            pieces.append(g.box_between([x_p - 0.03 - nx, -ny / 2, base_t - 0.001], [x_p + nx, ny / 2, z_fork0 + 0.001],
-                                          "stand", bevel=0.003))
-            self.add("stand", "stand", pieces + S.fork(x_p, z_p, r_k, L_k, "stand"))
-            return "stand", p["tilt"]
+            xc, r_c, z_b = x_p - 0.015, 0.5 * math.hypot(0.03 + 2 * nx, ny) + 0.006, base_t + 0.006
+            self.add("stand", "stand", pieces + [g.cylinder([xc, 0, base_t - 0.001], [xc, 0, z_b], r_c, "stand", 32)])
+            neck = g.box_between([x_p - 0.03 - nx, -ny / 2, z_b + S.GAP], [x_p + nx, ny / 2, z_fork0 + 0.001], "stand",
+                                 bevel=0.003)
+            self.add("post", "stand", [neck] + S.fork(x_p, z_p, r_k, L_k, "stand"))
+            self.hinge("stand", "post", Frame.at((xc, 0.0, z_b)), upper=p["swivel"], lower=-p["swivel"], role="swivel")
+            return "post", p["tilt"]
         r_post = min(0.02, room - 0.002)
         self.add("stand", "stand", pieces + S.sleeve(x_p, r_post + S.GAP, base_t, sleeve_h))
         return self.grow(adj, x_p=x_p, z_p=z_p, r_k=r_k, L_k=L_k, r_post=r_post, z0=base_t + 0.004 + S.GAP,
@@ -162,10 +193,11 @@ class TVLayout(Layout):
         arms = node.of("arm")
         n = len(arms)
         r_a = S.ARM["radius"]
-        x_w = x_p - p["arm_length"] - (r_a + S.GAP + 0.004)  # front face of the wall plate
+        reach = max(p["arm_length"], ARM_LINK_MIN * n) if n >= 3 else p["arm_length"]  # 3 links: each >= 14 cm
+        x_w = x_p - reach - (r_a + S.GAP + 0.004)  # front face of the wall plate
         xa = x_w + r_a + S.GAP + 0.004  # first arm pivot
         self.add("wall_plate", "frame", S.wall_plate(x_w, xa, z_p))
-        length = p["arm_length"] / n
+        length = reach / n
         pivots = [xa + i * length for i in range(n)]
         corners = np.array([[xs, s * W / 2, z] for s in (-1, 1) for z in zs]
                            + [[x_bk, s * hw / 2, z] for s in (-1, 1) for z in (zh0, zh1)])
@@ -182,9 +214,9 @@ class TVLayout(Layout):
         self.hinge(parent, name, Frame.at((x0, 0.0, z_p)), upper=swing, lower=-swing, role="swivel")
         return name
 
-    def buttons(self, node, layout, W, xf):
+    def buttons(self, node, layout, W, xf, place):
         for k, (kid, (c, h)) in enumerate(zip(node.of("button"), layout, strict=True)):
-            self.grow(kid, k=k, made=S.button(self.p["button_place"], c, h, W, xf))
+            self.grow(kid, k=k, made=S.button(place, c, h, W, xf))
 
     def button(self, node, k, made):
         piece, origin, axis = made

@@ -18,7 +18,9 @@ VOL = 1e-7  # m^3: the validators' contact volume
 
 
 def make(seed, **overrides):
-    return make_bp(bf, "beverage_fridge", seed, **overrides)
+    """A glass-door cooler unless ``design`` says otherwise (the tests below check its glass door, racks or
+    divider; the other designs have their own tests at the end)."""
+    return make_bp(bf, "beverage_fridge", seed, **{"design": "glass_cooler", **overrides})
 
 
 def at(j, f):
@@ -197,3 +199,36 @@ def test_seeds_differ():
     params = [make(s)[0] for s in range(20)]
     for name in ("hinge_side", "handle_style", "interior", "rack_style", "has_control_panel", "body_finish"):
         assert len({p[name] for p in params}) > 1, name
+
+
+# -- designs -------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("design", ["glass_cooler", "undercounter", "wine", "dual_zone"])
+def test_each_design_is_forced_and_has_its_mechanism(design):
+    """``--set design=...`` forces a design; each has its own structure and moving parts, all free at rest
+    and with every joint (doors first) open."""
+    p, bp = make(7, design=design, interior="racks", rack_count=4, bin_count=3, crisper_count=2)
+    assert p["design"] == design
+    doors = sorted(n for n, part in bp.parts.items() if part.label == "door")
+    assert doors == (["door", "right_door"] if design == "dual_zone" else ["door"])
+    racks = [n for n, part in bp.parts.items() if part.label in ("rack", "shelf")]
+    want = {"glass_cooler": 4, "undercounter": 2, "wine": 7, "dual_zone": 2 * 3}[design]
+    assert len(racks) == want
+    for n in racks:  # every rack slides out through its own door
+        j = by_child(bp, n)
+        assert j.kind == "prismatic" and j.requires_open == ("right_door" if n.startswith("right_") else "door")
+    if design == "undercounter":  # bins ride on the door and lift off it; crispers slide out on the floor
+        bins = [n for n, part in bp.parts.items() if part.label == "bin"]
+        assert len(bins) == 3 and all(by_child(bp, n).parent == "door" for n in bins)
+        assert all(by_child(bp, n).dofs[0].axis == pytest.approx((0, 0, 1)) for n in bins)
+        crispers = [n for n, part in bp.parts.items() if part.label == "drawer"]
+        assert len(crispers) == 2 and all(by_child(bp, n).requires_open == "door" for n in crispers)
+        assert not any(pc.material == "glass" for pc in bp.parts["door"].pieces)  # a solid door
+    if design == "wine":  # wooden shelf fronts, undercounter height
+        assert all(any(pc.material == "wood" for pc in bp.parts[n].pieces) for n in racks)
+        assert 0.82 <= bp.bounds()[1][2] <= 0.88
+    if design == "dual_zone":  # two doors hinged on the outer sides, both swing out
+        left, right = by_child(bp, "door").dofs[0], by_child(bp, "right_door").dofs[0]
+        assert left.origin[1] < 0 < right.origin[1]
+    assert contacts(bp, {}) == []

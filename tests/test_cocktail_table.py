@@ -6,13 +6,13 @@ import math
 
 import numpy as np
 import pytest
+from test_office_chair import assert_clear, rest_overlaps
+from test_office_chair import states as all_states
 
 from infmob_usd.categories import cocktail_table as ct
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from test_office_chair import assert_clear, rest_overlaps
-from test_office_chair import states as all_states
 from zoo import by_child, make_bp
 
 SEEDS = range(8)

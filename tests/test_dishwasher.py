@@ -19,7 +19,9 @@ VOL = 1e-7  # m^3: the validators' contact volume
 
 
 def make(seed, **overrides):
-    return make_bp(dw, "dishwasher", seed, **overrides)
+    """A built-in door model (``integrated`` on odd seeds, ``freestanding`` on even ones) unless ``design``
+    says otherwise: the tests below check its door and racks; the other designs have their own tests."""
+    return make_bp(dw, "dishwasher", seed, **{"design": ("freestanding", "integrated")[seed % 2], **overrides})
 
 
 def at(j, f):
@@ -85,7 +87,8 @@ def test_joint_kinds_axes_limits(seed):
     assert door.kind == "revolute" and door.parent == "body"
     assert d.axis == pytest.approx((0, 1, 0))
     assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi / 2))
-    leaf = np.array([pc.bounds for pc in bp.parts["door"].pieces if pc.name != "handle"])
+    leaf = np.array([pc.bounds for pc in bp.parts["door"].pieces if pc.name != "handle"
+                     and pc.material != "front"])  # the machine door; a cabinet front hangs on it
     assert d.origin[0] == pytest.approx(leaf[:, 1, 0].max())  # front face ...
     assert d.origin[2] == pytest.approx(leaf[:, 0, 2].min())  # ... bottom edge
     assert d.origin[2] >= p["kick_height"]  # above the plinth
@@ -137,7 +140,7 @@ def test_the_door_is_solid(seed):
     """Front skin, core and inner skin all collide, each over the whole leaf: a rack pulled out
     through the shut door meets the door (open it first), and nothing else."""
     p, bp = make(seed)
-    leaf = [pc for pc in bp.parts["door"].pieces if pc.name != "handle"]
+    leaf = [pc for pc in bp.parts["door"].pieces if pc.name != "handle" and pc.material != "front"]
     assert all(pc.convex for pc in leaf)
     lo = np.min([pc.bounds[0] for pc in leaf], axis=0)
     hi = np.max([pc.bounds[1] for pc in leaf], axis=0)
@@ -211,3 +214,37 @@ def test_seeds_differ():
     params = [make(s)[0] for s in range(20)]
     for name in ("rack_count", "has_handle", "has_control_panel", "has_baskets", "body_finish"):
         assert len({p[name] for p in params}) > 1, name
+
+
+# -- designs -------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("design", ["freestanding", "integrated", "compact", "dish_drawer"])
+def test_each_design_is_forced_and_has_its_mechanism(design):
+    """``--set design=...`` forces a design; each has its own structure, moving parts and real sizes."""
+    p, bp = make(6, design=design, has_handle=True, rack_count=3)
+    assert p["design"] == design
+    lo, hi = bp.bounds()
+    labels = [part.label for part in bp.parts.values()]
+    racks = [n for n, part in bp.parts.items() if part.label == "rack"]
+    if design == "dish_drawer":  # two drawers, each a tub with a rack fixed in it; no door
+        assert "door" not in labels and sorted(n for n in bp.parts if bp.parts[n].label == "drawer") == [
+            "drawer_0", "drawer_1"]
+        for k in range(2):
+            j = by_child(bp, f"drawer_{k}")
+            assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0)) and j.dofs[0].upper > 0.3
+            assert by_child(bp, f"drawer_{k}_rack").parent == f"drawer_{k}"
+        assert 0.79 <= hi[2] - lo[2] <= 0.87
+        return
+    door = by_child(bp, "door")
+    assert door.kind == "revolute" and door.dofs[0].axis == pytest.approx((0, 1, 0))
+    assert all(by_child(bp, n).requires_open == "door" for n in racks)
+    if design == "compact":  # a counter-top model: one rack, 0.42-0.47 m high
+        assert len(racks) == 1 and 0.42 <= hi[2] - lo[2] <= 0.48 and hi[1] - lo[1] <= 0.61
+    else:
+        assert len(racks) == 3
+    if design == "integrated":  # a cabinet front panel on the door, the handle on it
+        assert any(pc.material == "front" for pc in bp.parts["door"].pieces)
+        assert bp.materials["front"] in ("wood", "painted") or bp.materials["front"].split(":")[0] in ("wood", "painted")
+    if design == "freestanding":
+        assert any(pc.material == "worktop" for pc in bp.parts["body"].pieces)

@@ -16,11 +16,13 @@ from infmob_usd.model import build as build_model
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(10)
-LABELS = {"body", "door", "plate", "button", "knob", "control_panel"}
+LABELS = {"body", "door", "plate", "button", "knob", "control_panel", "drawer"}
 
 
 def make(seed, **overrides):
-    return make_bp(mw, "microwave", seed, **overrides)
+    """A counter-top turntable model unless ``design`` says otherwise (the tests below check its door, plate
+    and panel; the other designs have their own tests at the end)."""
+    return make_bp(mw, "microwave", seed, **{"design": "turntable", **overrides})
 
 
 # -- convex geometry helpers ---------------------------------------------------------
@@ -262,3 +264,31 @@ def test_seeds_differ_in_ways_a_person_sees():
         assert len({p[name] for p in params}) > 1, name
     counts = [len(movable(make(s)[1])) for s in range(20)]
     assert min(counts) < max(counts)
+
+
+# -- designs -------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("design", ["turntable", "flatbed", "over_the_range", "drawer_model"])
+def test_each_design_is_forced_and_has_its_mechanism(design):
+    """``--set design=...`` forces a design; each has its own moving parts and real product sizes."""
+    p, bp = make(4, design=design, has_buttons=True)
+    assert p["design"] == design
+    lo, hi = bp.bounds()
+    w, h = hi[1] - lo[1], hi[2] - lo[2]
+    kinds = {bp.parts[j.child].label: j.kind for j in movable(bp)}
+    assert ("plate" in bp.parts) == (design in ("turntable", "over_the_range"))
+    if design == "drawer_model":  # a drawer slides out under a control strip, no hinged door
+        assert "door" not in bp.parts and kinds["drawer"] == "prismatic"
+        d = by_child(bp, "drawer").dofs[0]
+        assert d.axis == pytest.approx((1, 0, 0)) and d.upper > 0.3
+        assert h == pytest.approx(0.39, abs=0.01) and w in (pytest.approx(0.606, abs=0.01), pytest.approx(0.759, abs=0.01))
+    else:
+        assert kinds["door"] == "revolute"
+    if design == "over_the_range":  # 30 in wide, a bar handle on the door, a vent grille over it
+        assert w == pytest.approx(0.759, abs=0.06) and 0.39 <= h <= 0.45
+        assert any(pc.name == "handle" for pc in bp.parts["door"].pieces)
+        assert any(pc.material == "filter" for pc in bp.parts["body"].pieces)
+    if design == "flatbed":  # a fixed ceramic floor instead of the turntable
+        assert any(pc.material == "plate" for pc in bp.parts["body"].pieces)
+    assert sum(bp.parts[j.child].label == "button" for j in movable(bp)) == 3 * p["button_rows"]

@@ -85,7 +85,8 @@ def test_parts_labels_and_materials(seed):
         assert bp.parts[name].label == name
     racks = [n for n, part in bp.parts.items() if part.label == "rack"]
     knobs = [n for n, part in bp.parts.items() if part.label == "knob"]
-    assert len(racks) == p["rack_count"] and 2 <= len(racks) <= 4
+    ovens = 2 if p["style"] == "double_wall" else 1  # a double wall oven has racks in each oven
+    assert len(racks) == ovens * p["rack_count"] and 2 <= p["rack_count"] <= 4
     assert 2 <= len(knobs) <= 8
     assert any(pc.material == "glass" for pc in bp.parts["door"].pieces)
     assert any(pc.name == "handle" for pc in bp.parts["door"].pieces)
@@ -97,6 +98,7 @@ def test_parts_labels_and_materials(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_joint_kinds_axes_and_limits(seed):
     p, bp = make(seed)
+    doors = {n for n, part in bp.parts.items() if part.label == "door"}
     door = by_child(bp, "door")
     d = door.dofs[0]
     assert door.kind == "revolute" and door.parent == "body"
@@ -109,7 +111,9 @@ def test_joint_kinds_axes_and_limits(seed):
             continue
         j = by_child(bp, name)
         # only the racks are behind the door; the drawer, grates, knobs and buttons move freely
-        assert j.requires_open == ("door" if part.label == "rack" else None), name
+        assert (j.requires_open in doors) if part.label == "rack" else j.requires_open is None, name
+        if part.label == "rack":
+            assert j.requires_open == ("lower_door" if name.startswith("lower_") else "door")
         if part.label == "rack":
             assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0))
             b = np.array([pc.bounds for pc in part.pieces])
@@ -128,9 +132,11 @@ def test_joint_kinds_axes_and_limits(seed):
             assert 0.0 == j.dofs[0].lower < j.dofs[0].upper <= 0.006
         elif part.label == "grate":
             assert j.kind == "limited_floating"
-            assert [dd.axis for dd in j.dofs] == [(1, 0, 0), (0, 1, 0), (0, 0, 1)]
-            assert j.dofs[0].upper == pytest.approx(p["grate_slide"] * p["depth"])
-            assert (j.dofs[2].lower, j.dofs[2].upper) == (0.0, pytest.approx(p["grate_lift"]))
+            # lifts off first (clear of the burner caps), then only a little play: no slide across the cooktop
+            assert [dd.axis for dd in j.dofs] == [(0, 0, 1), (1, 0, 0), (0, 1, 0)]
+            assert (j.dofs[0].lower, j.dofs[0].upper) == (0.0, pytest.approx(p["grate_lift"]))
+            assert j.dofs[0].upper >= 0.06 > 0.04 >= j.dofs[1].upper
+            assert max(abs(j.dofs[2].lower), j.dofs[2].upper) <= 0.006
         elif part.label == "drawer":
             assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0))
         elif name == "control_panel":
@@ -215,9 +221,9 @@ def test_overrides_drive_the_growth():
     _, bp = make(0, knob_count=8, has_buttons=True, button_count=6, width=0.5)
     assert sum(part.label == "knob" for part in bp.parts.values()) == 8
     assert sum(part.label == "button" for part in bp.parts.values()) == 6
-    _, bp = make(0, has_drawer=False)
+    _, bp = make(0, style="range", has_drawer=False)
     assert "drawer" not in bp.parts
-    _, bp = make(0, has_drawer=True, rack_count=4)
+    _, bp = make(0, style="range", has_drawer=True, rack_count=4)
     assert bp.parts["drawer"].label == "drawer"
     assert sum(part.label == "rack" for part in bp.parts.values()) == 4
 
@@ -226,3 +232,25 @@ def test_seeds_differ():
     params = [oven.CATEGORY.schema.sample(streams("oven", s)["params"]) for s in range(12)]
     for name in ("style", "knob_motion", "has_drawer", "has_buttons", "rack_count"):
         assert len({p[name] for p in params}) > 1, name
+
+
+@pytest.mark.parametrize("style", ["range", "warming", "wall", "double_wall"])
+def test_each_design_is_forced_and_has_its_parts(style):
+    """``--set style=...`` forces a design; each has its own structure and its movable joints."""
+    p, bp = make(5, style=style, has_grates=True, has_drawer=True)
+    labels = [part.label for part in bp.parts.values()]
+    doors = sorted(n for n, part in bp.parts.items() if part.label == "door")
+    assert doors == (["door", "lower_door"] if style == "double_wall" else ["door"])
+    assert ("grate" in labels) == (style in ("range", "warming"))
+    assert ("drawer" in labels) == (style in ("range", "warming"))
+    racks = [n for n, part in bp.parts.items() if part.label == "rack"]
+    assert len(racks) == p["rack_count"] * (2 if style == "double_wall" else 1)
+    assert all(by_child(bp, n).requires_open in doors for n in racks)
+    top = max(pc.bounds[1][2] for part in bp.parts.values() for pc in part.pieces)
+    if style == "double_wall":  # two ovens stacked: 1.2-1.4 m like real double wall ovens
+        assert 1.15 < top < 1.4
+        lo, up = by_child(bp, "lower_door").dofs[0].origin[2], by_child(bp, "door").dofs[0].origin[2]
+        assert up > lo + 0.35
+    if style == "warming":  # the warming drawer has a bar handle, like the door's
+        assert any(pc.name == "handle" and pc.material == "handle" for pc in bp.parts["drawer"].pieces)
+    assert len(movable(bp)) >= 4

@@ -71,8 +71,9 @@ def test_joint_fraction_moves_each_joint_along_its_axis(cabinet):
         if j.type == "continuous":
             assert q[j.name] == pytest.approx(math.pi / 2)
             continue
+        gate = any(j.name in gates for gates in preview._gates(files).values())  # a door held fully open
         if m["lower"] == 0:
-            assert q[j.name] == pytest.approx(0.7 * m["upper"])
+            assert q[j.name] == pytest.approx((1.0 if gate else 0.7) * m["upper"])
         assert m["lower"] - 1e-9 <= q[j.name] <= m["upper"] + 1e-9
         if j.type == "prismatic":
             shift = opened[j.child][:3, 3] - rest[j.child][:3, 3]
@@ -83,6 +84,30 @@ def test_joint_fraction_moves_each_joint_along_its_axis(cabinet):
             angle = math.acos(np.clip((np.trace(rot) - 1) / 2, -1, 1))
             assert angle == pytest.approx(abs(q[j.name]), abs=1e-6)
             np.testing.assert_allclose(rot @ axis, axis, atol=1e-6)
+
+
+def test_pictures_open_a_door_before_its_racks(tmp_path):
+    """The opened picture and the sweep hold a door fully open while a rack behind it (``requires_open``)
+    is out, as a robot and ``validate --sim`` open them; racks never pass through a half-open door."""
+    folder = infmob_usd.save(infmob_usd.generate("dishwasher", seed=3, texture_size=16, rack_count=2,
+                                                     design="freestanding"),
+                             tmp_path)
+    files = preview._read_object(folder)
+    gates = preview._gates(files)
+    meta = {j["name"]: j for j in json.loads((folder / "metadata.json").read_text())["joints"]}
+    racks = [n for n in gates if meta[n]["requires_open"] == "door"]
+    assert len(racks) == 2 and all(gates[n] == ["joint_door"] for n in racks)
+    door = meta["joint_door"]
+    q = preview._qpos_for(files, preview.OPEN_FRACTION)
+    assert q["joint_door"] == pytest.approx(door["upper"])
+    assert all(q[n] == pytest.approx(0.7 * meta[n]["upper"]) for n in racks)
+    assert preview._qpos_for(files, {"joint_door": 0.5})["joint_door"] == pytest.approx(0.5 * door["upper"])
+    assert preview._qpos_for(files, {racks[0]: 0.3})["joint_door"] == pytest.approx(door["upper"])
+    for name, qs in preview._sweep_plan(files):
+        if name in racks and qs[name] != 0.0:
+            assert qs["joint_door"] == pytest.approx(door["upper"]), name
+        elif name == "joint_door":
+            assert all(qs[n] == 0.0 for n in racks)
 
 
 def test_missing_renderer_names_what_to_install(monkeypatch, cabinet):

@@ -120,11 +120,15 @@ def test_parts_labels_and_materials(tv_bp):
 
 def test_screen_size_follows_width_and_aspect(tv_bp):
     p, bp = tv_bp
-    bezel = bp.parts["screen"].pieces[0].bounds
+    b = np.array([pc.bounds for pc in bp.parts["screen"].pieces if pc.material == "bezel"])
+    bezel = np.array([b[:, 0].min(0), b[:, 1].max(0)])
     w, h = bezel[1, 1] - bezel[0, 1], bezel[1, 2] - bezel[0, 2]
-    assert w == pytest.approx(p["width"])
-    assert h / w == pytest.approx(9 / 16 if p["aspect"] == "16:9" else 3 / 4)
-    assert bezel[1, 0] - bezel[0, 0] <= p["depth"]
+    curved = p["panel_shape"] == "curved"
+    # a curved panel's chord is a little shorter than its (arc) width; its edges come forward by the sagitta
+    assert w == pytest.approx(p["width"], rel=0.02 if curved else 1e-6)
+    assert h / w == pytest.approx(9 / 16 if p["aspect"] == "16:9" else 3 / 4, rel=0.03 if curved else 1e-6)
+    sag = (p["width"] / 2) ** 2 / (2 * p["curve_radius"]) + 0.01 if curved else 0.0
+    assert bezel[1, 0] - bezel[0, 0] <= p["depth"] + sag
     assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
 
 
@@ -161,6 +165,11 @@ def test_stand_joints(tv_bp):
         slide, turn = j.dofs
         assert slide.axis == pytest.approx((0, 0, 1)) and (slide.lower, slide.upper) == (0.0, p["slide"])
         assert turn.axis == pytest.approx((0, 0, 1)) and (turn.lower, turn.upper) == (-p["swivel"], p["swivel"])
+    elif p["stand_style"] == "single_post":  # a swivel pedestal: the neck turns on the base
+        j = by_child(bp, "post")
+        assert parent == "post" and j.kind == "revolute" and j.parent == "stand"
+        assert j.dofs[0].axis == pytest.approx((0, 0, 1))
+        assert (j.dofs[0].lower, j.dofs[0].upper) == (-p["swivel"], p["swivel"])
     else:
         assert parent == "stand" and "post" not in bp.parts
     for n, part in bp.parts.items():
@@ -169,7 +178,7 @@ def test_stand_joints(tv_bp):
             d = j.dofs[0]
             assert j.kind == "prismatic" and j.parent == "screen" and d.lower == 0.0 and d.upper > 0
             assert abs(d.axis[2]) < 1e-12  # pressed horizontally
-            want = (0, -1, 0) if p["button_place"] == "side" else (-1, 0, 0)
+            want = (0, -1, 0) if p["button_place"] == "side" and p["panel_shape"] == "flat" else (-1, 0, 0)
             assert d.axis == pytest.approx(want)
 
 
@@ -202,6 +211,8 @@ def test_overrides_drive_the_growth():
     assert sum(part.label == "button" for part in bp.parts.values()) == 3
     _, bp = make(1, stand_style="single_post", has_height_adjust=True)
     assert by_child(bp, "post").kind == "revolute_prismatic"
+    _, bp = make(1, stand_style="single_post", has_height_adjust=False)
+    assert by_child(bp, "post").kind == "revolute"
     _, bp = make(1, stand_style="two_legs", has_buttons=False)
     assert bp.root == "stand" and "post" not in bp.parts
     assert not any(part.label == "button" for part in bp.parts.values())
@@ -213,3 +224,23 @@ def test_seeds_differ():
     params = [make(s)[0] for s in range(20)]
     for name in ("stand_style", "has_buttons", "aspect", "bezel_finish"):
         assert len({p[name] for p in params}) > 1, name
+
+
+@pytest.mark.parametrize("shape", ["flat", "curved"])
+def test_panel_shape_is_forced_and_a_curved_panel_bends_forward(shape):
+    """``--set panel_shape=curved`` bends the panel along an arc: its edges stand forward of its middle by
+    the sagitta of ``curve_radius``; the buttons sit in the flat middle of the bottom band."""
+    p, bp = make(2, panel_shape=shape, has_buttons=True, button_count=3, width=1.4)
+    disp = [pc for pc in bp.parts["screen"].pieces if pc.material == "display"]
+    mid = [pc for pc in disp if abs(pc.bounds[:, 1].mean()) < 0.05]
+    edge = max(disp, key=lambda pc: pc.bounds[1, 1])
+    lift = edge.bounds[1, 0] - mid[0].bounds[1, 0]
+    if shape == "curved":
+        flat = mid[0].bounds[1, 1]  # the arc starts at the flat middle's edge
+        assert len(disp) >= 5 and lift > 0.8 * (0.7 - flat) ** 2 / (2 * p["curve_radius"])
+        for n, part in bp.parts.items():
+            if part.label == "button":
+                assert abs(by_child(bp, n).dofs[0].origin[1]) < 0.1
+    else:
+        assert len(disp) == 1 and lift == pytest.approx(0.0)
+    assert len([n for n, part in bp.parts.items() if part.label == "button"]) == 3

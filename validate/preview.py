@@ -202,14 +202,40 @@ def _forward_kinematics(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, 
     return poses
 
 
+def _gates(obj: _ObjectFiles) -> dict[str, list[str]]:
+    """{joint name: the movable joints of the part it ``requires_open``} from ``metadata.json`` (a rack behind
+    a door: the door's joints), as ``validate/sim.py`` reads them."""
+    meta = [j for j in obj.metadata.get("joints", []) if j.get("type") not in (None, "fixed")]
+    groups: dict[str, list[str]] = {}
+    for j in meta:
+        groups.setdefault(j.get("group"), []).append(j["name"])
+    movable = {j.name for j in obj.movable}
+    return {j["name"]: [n for n in groups.get(j["requires_open"], []) if n in movable]
+            for j in meta if j.get("requires_open") and j["name"] in movable}
+
+
+def _open_gates(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, float]:
+    """``qpos`` with every door whose dependent joint is off rest held fully open: a picture never drives a
+    rack through a half-open door (the order a robot, and ``validate --sim``, opens them in)."""
+    out = dict(qpos)
+    by_name = {j.name: j for j in obj.movable}
+    for name, gates in _gates(obj).items():
+        j = by_name[name]
+        if abs(out.get(name, j.rest()) - j.rest()) > 1e-9:
+            for gate in gates:
+                out[gate] = by_name[gate].at_fraction(1.0)
+    return out
+
+
 def _qpos_for(obj: _ObjectFiles, joint_fraction) -> dict[str, float]:
-    """``joint_fraction``: one number for every movable joint, or ``{joint name: fraction}``."""
+    """``joint_fraction``: one number for every movable joint, or ``{joint name: fraction}``. A joint that
+    ``requires_open`` a part moves only with that part fully open (:func:`_open_gates`)."""
     if isinstance(joint_fraction, dict):
         unknown = set(joint_fraction) - {j.name for j in obj.movable}
         if unknown:
             raise KeyError(f"no movable joint named {sorted(unknown)} in {obj.name}")
-        return {j.name: j.at_fraction(float(joint_fraction.get(j.name, 0.0))) for j in obj.movable}
-    return {j.name: j.at_fraction(float(joint_fraction)) for j in obj.movable}
+        return _open_gates(obj, {j.name: j.at_fraction(float(joint_fraction.get(j.name, 0.0))) for j in obj.movable})
+    return _open_gates(obj, {j.name: j.at_fraction(float(joint_fraction)) for j in obj.movable})
 
 
 # ---------------------------------------------------------------------------------------------
@@ -799,14 +825,16 @@ def _caption_height(width: int) -> int:
 
 
 def _sweep_plan(files: _ObjectFiles) -> list[tuple[str, dict[str, float]]]:
-    """(joint name, qpos) per frame: each movable joint in turn, lower -> upper, the others at rest."""
+    """(joint name, qpos) per frame: each movable joint in turn, lower -> upper, the others at rest (the
+    doors a joint ``requires_open`` fully open)."""
     movable = files.movable
     if not movable:
         return []
     per = max(4, min(SWEEP_FRAMES_PER_JOINT, SWEEP_MAX_FRAMES // len(movable)))
     joints = movable[: SWEEP_MAX_FRAMES // per]  # past 30 joints the sweep shows the first 30
     rest = {j.name: j.rest() for j in movable}
-    return [(j.name, {**rest, j.name: float(q)}) for j in joints for q in j.sweep(per)]
+    # a rack sweeps with its door fully open (``requires_open``)
+    return [(j.name, _open_gates(files, {**rest, j.name: float(q)})) for j in joints for q in j.sweep(per)]
 
 
 def preview(folder, out=None, size: int = 512) -> dict[str, Path]:

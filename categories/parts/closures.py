@@ -15,7 +15,6 @@ import math
 import numpy as np
 
 from infmob_usd import geometry as g
-from infmob_usd import joints as J
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
 

@@ -186,7 +186,7 @@ def wall_mount_ranges(corners: np.ndarray, pivot, pivots: list[float], x_wall: f
         rel = corners - [x_p, 0, z_p]  # tilt about -y through the pivot: the top goes back
         c, s = math.cos(theta), math.sin(theta)
         tilted = np.c_[rel[:, 0] * c - rel[:, 2] * s, rel[:, 1]] + [x_p, 0]
-        for signs in ([1] * n, [-1] * n, [1, -1][:n], [-1, 1][:n]):
+        for signs in ([1] * n, [-1] * n, [(-1) ** i for i in range(n)], [-(-1) ** i for i in range(n)]):
             for frac in (0.5, 1.0):
                 pts = tilted.copy()
                 for i in reversed(range(n)):  # turn the outermost joint first
@@ -207,3 +207,49 @@ def wall_mount_ranges(corners: np.ndarray, pivot, pivots: list[float], x_wall: f
 
     tilt = max(largest(lambda t: clear(t, 0.0), tilt), 0.02)
     return tilt, max(largest(lambda f: clear(tilt, f), math.pi / 3) / n, 0.02)
+
+
+def curved_screen(W: float, xs3, zs, hump, bezel: float, band: float, buttons: list, radius: float,
+                  flat: float) -> list[g.Piece]:
+    """A curved panel (concave towards the viewer, +x): a flat middle ``-flat..flat`` carrying the bottom
+    band's button holes, then facets along an arc of ``radius`` on each side (about 2 degrees each), the
+    edges brought forward by ``radius (1 - cos phi)``; a flat electronics box on the back of the middle."""
+    xf, xs, xhb = xs3
+    zs0, zs1 = zs
+    hw, zh0, zh1 = hump
+    xb = xf - BEZEL_T
+    half = W / 2
+
+    def slab(y0, y1, side=0):
+        """Bezel strips, display and housing of one stretch ``y0..y1``; ``side`` +-1: the outermost stretch,
+        with the side bezel at its +y (or -y) end."""
+        lo, hi = y0 + (bezel if side < 0 else 0.0), y1 - (bezel if side > 0 else 0.0)
+        pcs = [g.box_between([xb, y0, zs1 - bezel], [xf, y1, zs1], "bezel").replace(sheet=0.0015),
+               g.box_between([xs, y0, zs0], [xb, y1, zs1], "housing").replace(sheet=0.002),
+               g.box_between([xb, y0, zs0], [xf, y1, zs0 + band], "bezel").replace(sheet=0.0015),
+               g.box_between([xb, lo, zs0 + band], [xf - 0.0015, hi, zs1 - bezel], "display").replace(sheet=0.003)]
+        if side:
+            ya, yb = (hi, y1) if side > 0 else (y0, lo)
+            pcs.append(g.box_between([xb, ya, zs0 + band], [xf, yb, zs1 - bezel], "bezel").replace(sheet=0.0015))
+        return pcs
+
+    pieces = [g.panel([xb, -flat, zs0], [xf, flat, zs0 + band], "bezel", "x",
+                      holes=[_hole(c, h) for c, h in buttons]).replace(sheet=0.0015),
+              g.box_between([xb, -flat, zs1 - bezel], [xf, flat, zs1], "bezel").replace(sheet=0.0015),
+              g.box_between([xb, -flat, zs0 + band], [xf - 0.0015, flat, zs1 - bezel], "display").replace(sheet=0.003),
+              g.box_between([xs, -flat, zs0], [xb, flat, zs1], "housing").replace(sheet=0.002),
+              g.box_between([xhb, -hw / 2, zh0], [xs + 0.001, hw / 2, zh1], "housing",
+                            bevel=min(0.01, 0.3 * (xs - xhb))).replace(sheet=0.002)]
+    pieces.append(pieces.pop(4))  # the electronics box last, as in :func:`screen`
+    arc = half - flat
+    n = max(2, int(math.ceil(arc / radius / math.radians(2.0))))
+    step = arc / n  # arc length of a facet
+    for s in (-1, 1):
+        for i in range(n):
+            phi = i * step / radius
+            local = slab(0.0, step, s if i == n - 1 else 0) if s > 0 else slab(-step, 0.0, s if i == n - 1 else 0)
+            c, sn = math.cos(-s * phi), math.sin(-s * phi)
+            m = np.array([[c, -sn, 0, radius * (1 - math.cos(phi))], [sn, c, 0, s * (flat + radius * math.sin(phi))],
+                          [0, 0, 1, 0], [0, 0, 0, 1]], float)  # the facet turned about z, moved to its start on the arc
+            pieces += [pc.transformed(m) for pc in local]
+    return pieces
