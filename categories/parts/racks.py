@@ -278,3 +278,58 @@ def pads(pieces, xs) -> list[g.Piece]:
     hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
     return [g.cylinder([x, y, lo[2] - 0.006], [x, y, lo[2] + 0.001], 0.007, "feet", 16)
             for x in (xs[0] + 0.012, xs[1] - 0.012) for y in (lo[1] + 0.012, hi[1] - 0.012)]
+
+
+# -- storage totes and small-parts bins ------------------------------------------------------------------
+TOTE_WALL = 0.003  # polypropylene storage boxes: 2.5-3.5 mm walls (Really Useful Box, IKEA SAMLA)
+TOTE_RIM = 0.008  # the stacking rim around the top
+LID_T = 0.012  # lid: a 3 mm sheet on a 12 mm skirt (visual), one slab for collisions
+
+
+def tote(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
+    """A storage box: a bottom, four walls and a stacking rim, with a hand grip on the front wall."""
+    w = TOTE_WALL
+    r = TOTE_RIM
+    pieces = [g.box_between([x0 + r, y0 + r, z], [x1 - r, y1 - r, z + w], slot),
+              g.box_between([x0 + r - w, y0 + r - w, z], [x0 + r, y1 - r + w, z + h - 0.015], slot),
+              g.box_between([x1 - r, y0 + r - w, z], [x1 - r + w, y1 - r + w, z + h - 0.015], slot),
+              g.box_between([x0 + r, y0 + r - w, z], [x1 - r, y0 + r, z + h - 0.015], slot),
+              g.box_between([x0 + r, y1 - r, z], [x1 - r, y1 - r + w, z + h - 0.015], slot),
+              # the rim: four flat bars flaring out to the full footprint at the top
+              g.box_between([x0, y0, z + h - 0.015], [x0 + r + w, y1, z + h], slot, bevel=0.002),
+              g.box_between([x1 - r - w, y0, z + h - 0.015], [x1, y1, z + h], slot, bevel=0.002),
+              g.box_between([x0 + r + w, y0, z + h - 0.015], [x1 - r - w, y0 + r + w, z + h], slot),
+              g.box_between([x0 + r + w, y1 - r - w, z + h - 0.015], [x1 - r - w, y1, z + h], slot)]
+    yc = (y0 + y1) / 2  # a moulded grip on the front wall
+    pieces.append(g.box_between([x1 - r + w, yc - 0.05, z + h - 0.05], [x1 - r + w + 0.006, yc + 0.05, z + h - 0.03],
+                                slot))
+    return pieces
+
+
+def tote_lid(x0: float, x1: float, y0: float, y1: float, z: float, slot: str) -> list[g.Piece]:
+    """A flat lid lying on a tote's rim at ``z``: a slab with a raised label panel."""
+    return [g.box_between([x0, y0, z], [x1, y1, z + LID_T], slot, bevel=0.003),
+            g.box_between([x0 + 0.3 * (x1 - x0), y0 + 0.2 * (y1 - y0), z + LID_T],
+                          [x1 - 0.1 * (x1 - x0), y1 - 0.2 * (y1 - y0), z + LID_T + 0.002], slot)]
+
+
+def louvred_bin(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str,
+                label: str) -> list[g.Piece]:
+    """A small-parts bin with an open hopper front: a bottom, sides sloping down to a low front
+    wall, a back wall, and a label holder (Akro-Mils AkroBins: 2 mm walls, front at ~45 % of the
+    height)."""
+    w = 0.002
+    hf = 0.45 * h
+    xm = x1 - 0.35 * (x1 - x0)  # the sides slope down from here to the front
+    pieces = [g.box_between([x0, y0, z], [x1, y1, z + w], slot),
+              g.box_between([x0, y0, z + w], [x0 + w, y1, z + h], slot),
+              g.box_between([x1 - w, y0 + w, z + w], [x1, y1 - w, z + hf], slot)]
+    for ya, yb in ((y0, y0 + w), (y1 - w, y1)):
+        pieces += [g.box_between([x0 + w, ya, z + w], [xm, yb, z + h], slot),
+                   g.from_trimesh(g.convex_hull([[xm, ya, z + w], [xm, yb, z + w], [xm, ya, z + h], [xm, yb, z + h],
+                                                 [x1, ya, z + w], [x1, yb, z + w], [x1, ya, z + hf],
+                                                 [x1, yb, z + hf]]), slot)]
+    yc = (y0 + y1) / 2
+    pieces.append(g.box_between([x1, yc - 0.3 * (y1 - y0), z + hf - 0.03], [x1 + 0.003, yc + 0.3 * (y1 - y0),
+                                                                             z + hf - 0.005], label))
+    return pieces
