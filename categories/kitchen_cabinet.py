@@ -7,13 +7,13 @@ X is depth (fronts face +X), Y is width, Z is up. Five designs (``design``), eac
   drawers (2-4, a shallow top drawer over deep pan drawers), doors (with a shelf), a door with
   internal pull-out drawers behind it (they move only once the door is open), a top drawer over
   doors, or an open shelf.
-- ``larder``: tall cabinets (1.95-2.25 m): a full-height pull-out larder with wire baskets, or
+- ``larder``: 2-4 tall cabinets (1.95-2.25 m): a full-height pull-out larder with wire baskets, or
   an upper door (shelves behind it) over a lower door with internal pull-outs.
 - ``corner``: a square corner base unit whose door opens on a lazy-susan carousel (a
-  continuous joint: pole and trays turn together on a bearing), beside 1-3 base columns.
+  continuous joint: pole and trays turn together on a bearing), beside 2-5 base columns.
 - ``sink_base``: a sink base with a tilt-out false front (hinged at its bottom edge, a
   sponge tray behind it), two doors below and an inset bowl and tap in the worktop, beside
-  0-3 base columns.
+  1-5 base columns.
 - ``wall_run``: hung wall cabinets (0.30-0.35 m deep) on a suspension rail: doors, glazed
   doors, lift-up flaps (hinged at the top edge) or open shelves.
 
@@ -59,12 +59,12 @@ def moves(tree) -> bool:
 # the columns of a base run, per instance
 BASE_COLUMN = {"drawers": 0.32, "doors": 0.2, "door_drawers": 0.2, "drawer_door": 0.2, "open": 0.08}
 GRAMMAR = Grammar("kitchen_cabinet", {
-    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.36, "larder": 0.16, "corner": 0.14,
-                                                  "sink_base": 0.14, "wall_run": 0.2}, choice="design"),
+    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.4, "larder": 0.15, "corner": 0.15,
+                                                  "sink_base": 0.15, "wall_run": 0.15}, choice="design"),
     "base_run": Node(required=("stand", "worktop"), repeat={"column": columns}),
-    "larder": Node(required=("stand",), repeat={"tall": (1, 3)}),
-    "corner": Node(required=("stand", "worktop", "corner_unit"), repeat={"column": (1, 3)}),
-    "sink_base": Node(required=("stand", "worktop", "sink", "tilt_front"), repeat={"sink_door": 2, "column": (0, 3)}),
+    "larder": Node(required=("stand",), repeat={"tall": (2, 4)}),
+    "corner": Node(required=("stand", "worktop", "corner_unit"), repeat={"column": (2, 5)}),
+    "sink_base": Node(required=("stand", "worktop", "sink", "tilt_front"), repeat={"sink_door": 2, "column": (1, 5)}),
     "wall_run": Node(required=("rail",), repeat={"wall_column": columns}),
     "stand": Node(one_of={"plinth": 0.65, "legs": 0.35}, choice="stand_style"),
     "plinth": Node(), "legs": Node(), "worktop": Node(), "rail": Node(),
@@ -73,7 +73,7 @@ GRAMMAR = Grammar("kitchen_cabinet", {
     "drawer": Node(label="drawer"),
     "doors": Node(repeat={"door": leaves}),
     "door": Node(label="door"),
-    "door_drawers": Node(required=("door",), repeat={"inner_drawer": (2, 3)}),
+    "door_drawers": Node(required=("door",), repeat={"inner_drawer": (2, 4)}),
     "inner_drawer": Node(label="drawer"),
     "drawer_door": Node(required=("drawer",), repeat={"door": leaves}),
     "open": Node(),
@@ -89,15 +89,16 @@ GRAMMAR = Grammar("kitchen_cabinet", {
     "sink": Node(label="sink"),
     "tilt_front": Node(label="drawer"),
     "sink_door": Node(label="door"),
-    "wall_column": Node(one_of={"wall_doors": 0.5, "flap": 0.3, "wall_open": 0.2}),
+    "wall_column": Node(one_of={"wall_doors": 0.55, "flap": 0.33, "wall_open": 0.12}),
     "wall_doors": Node(repeat={"door": leaves}),
     "flap": Node(label="door"),
     "wall_open": Node(),
 }, accept=moves)
 
 PARAMS = (
-    Float("width", "run width (Y) of a base or wall run", "m", 1.0, 4.0),
-    Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45))", "", 1, 8, auto=True),
+    # a kitchen wall's run: 1.2-4.8 m (2-10 cabinets of 40-60 cm)
+    Float("width", "run width (Y) of a base or wall run", "m", 1.2, 4.8),
+    Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45))", "", 1, 10, auto=True),
     # EN 1116 / IKEA METOD: base cabinets 60 cm deep incl. front, worktop at 85-92 cm
     Float("base_depth", "base and tall carcass depth (X), front excluded", "m", 0.55, 0.62),
     Float("base_height", "floor to worktop top", "m", 0.85, 0.92),

@@ -333,3 +333,51 @@ def louvred_bin(x0: float, x1: float, y0: float, y1: float, z: float, h: float, 
     pieces.append(g.box_between([x1, yc - 0.3 * (y1 - y0), z + hf - 0.03], [x1 + 0.003, yc + 0.3 * (y1 - y0),
                                                                              z + hf - 0.005], label))
     return pieces
+
+
+# -- dish-rack accessories: cutlery caddy, cups on pegs ------------------------------------------------------
+# a drainer's cutlery caddy: ~11 x 13 cm, 14 cm high, 3 compartments (simplehuman, Joseph Joseph drainers)
+CADDY = dict(x=0.11, y=0.13, h=0.14, wall=0.003)
+# a 300 ml mug: 80-85 mm across, 95 mm high, 4 mm stoneware wall (catalogue sizes)
+MUG = dict(r=0.041, h=0.095, wall=0.004)
+PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail
+CUP_PITCH = 0.11  # centre to centre along a row of cups (a mug and its handle: 82 + 22 mm)
+
+
+def caddy(x0: float, x1: float, y0: float, y1: float, z: float, slot: str, metal: str) -> list[g.Piece]:
+    """An open cutlery caddy with two dividers and a few knives, forks and spoons standing in it."""
+    w, h = CADDY["wall"], CADDY["h"]
+    pieces = [g.box_between([x0, y0, z], [x1, y1, z + w], slot),
+              g.box_between([x0, y0, z + w], [x0 + w, y1, z + h], slot, bevel=0.001),
+              g.box_between([x1 - w, y0, z + w], [x1, y1, z + h], slot, bevel=0.001),
+              g.box_between([x0 + w, y0, z + w], [x1 - w, y0 + w, z + h], slot, bevel=0.001),
+              g.box_between([x0 + w, y1 - w, z + w], [x1 - w, y1, z + h], slot, bevel=0.001)]
+    ys = np.linspace(y0, y1, 4)
+    for yd in ys[1:-1]:  # dividers
+        pieces.append(g.box_between([x0 + w, yd - w / 2, z + w], [x1 - w, yd + w / 2, z + 0.8 * h], slot))
+    for k, (ya, yb) in enumerate(zip(ys[:-1], ys[1:])):  # a handle or two standing in each compartment
+        for i, xc in enumerate(np.linspace(x0 + 0.03, x1 - 0.03, 2)):
+            yc = (ya + yb) / 2
+            top = z + h + 0.05 + 0.01 * ((k + i) % 2)
+            pieces.append(g.box_between([xc - 0.0075, yc - 0.002, z + w], [xc + 0.0075, yc + 0.002, top], metal,
+                                        bevel=0.001))
+    return pieces
+
+
+def cup_peg(x: float, y: float, z: float, slot: str) -> g.Piece:
+    return g.cylinder([x, y, z - 0.001], [x, y, z + PEG["h"]], PEG["r"], slot, 12)
+
+
+def mug(x: float, y: float, z: float, slot: str, handle_dir: float = 1.0) -> list[g.Piece]:
+    """A mug standing upside down with its rim at ``z`` (a hollow wall, its base on top, a handle
+    on the ``handle_dir`` side along +-x)."""
+    r, h, t = MUG["r"], MUG["h"], MUG["wall"]
+    wall = g.shell([(r, 0.0), (r * 1.02, h - t)], t, slot, center=(x, y, z), sections=32)
+    base = g.cylinder([x, y, z + h - t], [x, y, z + h], r * 1.02, slot, 32)
+    s = handle_dir
+    hx0, hx1 = sorted((x + s * (r - 0.002), x + s * (r + 0.022)))
+    bar0, bar1 = sorted((x + s * (r + 0.016), x + s * (r + 0.022)))
+    handle = [g.box_between([hx0, y - 0.005, z + 0.018], [hx1, y + 0.005, z + 0.026], slot, bevel=0.002),
+              g.box_between([hx0, y - 0.005, z + h - 0.03], [hx1, y + 0.005, z + h - 0.022], slot, bevel=0.002),
+              g.box_between([bar0, y - 0.005, z + 0.026], [bar1, y + 0.005, z + h - 0.03], slot, bevel=0.002)]
+    return [wall, base] + handle
