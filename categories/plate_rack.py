@@ -20,7 +20,6 @@ from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.frames import Frame
 from infmob_usd.category import Category
-from infmob_usd.errors import ModelError
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
@@ -39,16 +38,18 @@ GRAMMAR = Grammar("plate_rack", {
                        one_of={"cutlery": 0.35, "cups": 0.3, "station": 0.35}, choice="design"),
     "plate": Node(label="plate"),
     "feet": Node(),
-    "cutlery": Node(required=("caddy",)),
-    "cups": Node(repeat={"cup": (2, 6)}),
-    "station": Node(required=("caddy",), repeat={"cup": (2, 5)}),
+    "cutlery": Node(repeat={"caddy": (1, 2)}),
+    "cups": Node(repeat={"cup": (2, 8)}),
+    "station": Node(repeat={"caddy": (1, 2), "cup": (2, 6)}),
     "caddy": Node(label="basket"),
-    "cup": Node(label="cup"),
+    "cup": Node(one_of={"mug": 0.6, "glass": 0.4}),
+    "mug": Node(label="cup"),
+    "glass": Node(label="glass"),
 })
 """Plates fill ``plates`` of the slots, which ones drawn per rack. ``feet`` are rubber pads under a
 wood or plastic rack; a wire rack always stands on its capped legs. Beside the plates a side
-board carries a cutlery caddy that lifts out (``cutlery``), mugs upside down on pegs that lift
-off (``cups``), or both (``station``): the three designs."""
+board carries one or two cutlery caddies that lift out (``cutlery``), mugs and tumblers upside
+down on pegs that lift off (``cups``), or caddies and cups (``station``): the three designs."""
 
 PARAMS = (
     Int("slot_count", "slots (fences of prong pairs = slots + 1)", "", 3, 7),
@@ -68,7 +69,7 @@ PARAMS = (
 
 MATERIALS = {"frame": ("style", {"wire": "chrome"}), "prong": ("style", {"wire": "chrome"}), "plate": "ceramic",
              "plate_alt": "ceramic", "feet": "rubber:black|soft_black", "caddy": "plastic:white|light_grey|dark_grey",
-             "cutlery": "brushed_metal", "mug": "ceramic"}
+             "cutlery": "brushed_metal", "mug": "ceramic", "glass": "glass:clear|clear_blue"}
 
 
 def wire_has_legs(p: dict) -> dict:
@@ -112,7 +113,7 @@ class RackLayout(Layout):
         y0 = max(hi[1], r + R.PLATE_SLIDE + SIDE_GAP)
         design = node.one(node.choice)
         # two rows of mugs (and the caddy): the board runs past the rack's end where they need it
-        need = (R.CADDY["x"] + 0.02 if design.one("caddy") else 0.0) + math.ceil(len(design.of("cup")) / 2) \
+        need = len(design.of("caddy")) * (R.CADDY["x"] + 0.02) + math.ceil(len(design.of("cup")) / 2) \
             * R.CUP_PITCH + 0.015
         board = ((xs[0], max(xs[1], xs[0] + need)), (y0, y0 + 2 * R.CUP_PITCH + 0.01), lo[2], lo[2] + 0.012)
         self.extend("rack", [g.box_between([xs[0], hi[1] - 0.004, lo[2]], [board[0][1], board[1][1], board[3]],
@@ -141,36 +142,43 @@ class RackLayout(Layout):
 
     # -- the side board: a cutlery caddy, mugs on pegs ---------------------------------------------------
     def cutlery(self, node, board):
-        self.grow(node.one("caddy"), board=board)
+        for k, kid in enumerate(node.of("caddy")):
+            self.grow(kid, board=board, k=k)
 
     def cups(self, node, board, after=0.0):
-        """Two rows of pegs along the board; a mug upside down on each of the first ones."""
+        """Two rows of pegs along the board (its length was made for them); a mug or a tumbler upside down on
+        each of them (a row may have one spare peg)."""
         (x0, x1), (y0, y1), _, z = board
         rows = (y0 + 0.25 * (y1 - y0), y0 + 0.75 * (y1 - y0))
         start = x0 + R.CUP_PITCH / 2 + 0.005
         per_row = math.ceil(len(node.of("cup")) / 2)
         spots = [(start + i * R.CUP_PITCH, y) for y in rows for i in range(per_row)]
-        if len(spots) < len(node.of("cup")):  # cup_room under-estimates the rack's length by design
-            raise ModelError(f"{len(node.of('cup'))} mugs but {len(spots)} pegs on the side board")
         self.extend("rack", [R.cup_peg(x, y, z, "frame") for x, y in spots])
         for k, (kid, (x, y)) in enumerate(zip(node.of("cup"), spots)):
             self.grow(kid, k=k, at=(x, y, z + 0.002))
 
     def station(self, node, board):
-        self.grow(node.one("caddy"), board=board)
-        self.cups(node, board, after=R.CADDY["x"] + 0.02)
+        self.cutlery(node, board)
+        self.cups(node, board, after=len(node.of("caddy")) * (R.CADDY["x"] + 0.02))
 
-    def caddy(self, node, board):
+    def caddy(self, node, board, k=0):
         (x0, x1), (y0, y1), _, z = board
         c = R.CADDY
         yc = (y0 + y1) / 2
-        pieces = R.caddy(x1 - 0.01 - c["x"], x1 - 0.01, yc - c["y"] / 2, yc + c["y"] / 2, z + 0.002, "caddy", "cutlery")
-        name = self.add("caddy", "basket", pieces)
-        self.slide("rack", name, Frame.at((x1 - 0.01 - c["x"] / 2, yc, z), z=(0, 0, 1)), upper=CADDY_LIFT)
+        xe = x1 - 0.01 - k * (c["x"] + 0.02)
+        pieces = R.caddy(xe - c["x"], xe, yc - c["y"] / 2, yc + c["y"] / 2, z + 0.002, "caddy", "cutlery")
+        name = self.add(f"caddy_{k}", "basket", pieces)
+        self.slide("rack", name, Frame.at((xe - c["x"] / 2, yc, z), z=(0, 0, 1)), upper=CADDY_LIFT)
 
     def cup(self, node, k, at):
-        x, y, z = at
-        name = self.add(f"cup_{k}", "cup", R.mug(x, y, z, "mug"))
+        self.grow(node.one(node.choice), k=k, at=at)
+
+    def mug(self, node, k, at):
+        name = self.add(f"cup_{k}", "cup", R.mug(*at, "mug"))
+        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=CUP_LIFT)
+
+    def glass(self, node, k, at):
+        name = self.add(f"glass_{k}", "glass", R.tumbler(*at, "glass"))
         self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=CUP_LIFT)
 
 

@@ -381,3 +381,14 @@ def mug(x: float, y: float, z: float, slot: str, handle_dir: float = 1.0) -> lis
               g.box_between([hx0, y - 0.005, z + h - 0.03], [hx1, y + 0.005, z + h - 0.022], slot, bevel=0.002),
               g.box_between([bar0, y - 0.005, z + 0.026], [bar1, y + 0.005, z + h - 0.03], slot, bevel=0.002)]
     return [wall, base] + handle
+
+
+# a 300 ml tumbler: 70-75 mm across, 100-110 mm high, 3 mm wall on an 8 mm base (catalogue sizes)
+TUMBLER = dict(r=0.036, h=0.105, wall=0.003, base=0.008)
+
+
+def tumbler(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
+    """A tumbler standing upside down with its rim at ``z``: a thin wall narrowing to a thick base."""
+    r, h, t, b = TUMBLER["r"], TUMBLER["h"], TUMBLER["wall"], TUMBLER["base"]
+    wall = g.shell([(r, 0.0), (0.88 * r, h - b)], t, slot, center=(x, y, z), sections=32)
+    return [wall, g.cylinder([x, y, z + h - b], [x, y, z + h], 0.88 * r, slot, 32)]
