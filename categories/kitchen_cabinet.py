@@ -145,6 +145,8 @@ TOP_OVER = 0.02  # worktop overhang at the front
 TOP_DRAWER = 0.2  # a top drawer is this fraction of a column's height
 SINK_DEPTH = 0.19  # bowl depth
 SINK_FRONT = 0.16  # false-front height of a sink base
+GATE = math.pi / 2  # a door with pull-outs or a carousel behind it
+INNER_CLEAR = 0.025  # an inner drawer's box keeps this far from the carcass sides (the hinges)
 SPLITS = {2: (0.5, 0.5), 3: (0.4, 0.4, 0.2), 4: (0.3, 0.3, 0.2, 0.2)}  # drawer heights, bottom up
 
 
@@ -344,6 +346,11 @@ class CabinetLayout(Layout):
         self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fz[0]), z=(1, 0, 0)),
                    upper=self.p["drawer_travel"] * (box[1] - box[0]))
 
+    def _side(self, c: int, n: int) -> str:
+        """The hinge side of a single leaf: towards the nearer end of the run; beside a corner unit every
+        leaf hinges on its right, away from the corner door (both open 90 degrees to the same divider)."""
+        return "left" if c < n / 2 and self.p["design"] != "corner" else "right"
+
     def doors(self, node, c, n, ys, fys, zs, fzs, xs, shelf=True):
         t = self.p["board"]
         if shelf:
@@ -353,13 +360,16 @@ class CabinetLayout(Layout):
         if len(kids) == 2:  # double doors, hinged at both outer edges
             spec = [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
         else:  # one leaf, hinged on the side facing the nearer end of the run
-            spec = [(fys[0], fys[1], "left" if c < n / 2 else "right")]
+            spec = [(fys[0], fys[1], self._side(c, n))]
         for k, (kid, leaf) in enumerate(zip(kids, spec, strict=True)):
             self.grow(kid, name=f"door_{c}_{k}", leaf=leaf, fzs=fzs, D=xs[1] - xs[0])
 
     wall_doors = doors
 
-    def _door(self, name, leaf, fzs, D, glazed=False, handle_at=None):
+    def _door(self, name, leaf, fzs, D, glazed=False, handle_at=None, gate=False):
+        """A hinged door. A ``gate`` (a door with pull-outs or a carousel behind it) opens to 90 degrees:
+        two gates hinged on one divider then never meet (the core scales no gate's limit), and its
+        pull-outs pass the open leaf."""
         p = self.p
         ya, yb, side = leaf
         xf, ft = D / 2 + GAP, p["front_thickness"]
@@ -379,20 +389,21 @@ class CabinetLayout(Layout):
         self.add(name, "door", pieces)
         # on the front face at the outer edge; the axis sign makes it swing out (+X)
         hinge = Frame.at((xf + ft, ya if side == "left" else yb, fzs[0]), z=(0, 0, -1 if side == "left" else 1))
-        self.hinge("carcass", name, hinge, upper=p["door_angle"])
+        self.hinge("carcass", name, hinge, upper=GATE if gate else p["door_angle"])
         return name
 
-    def door(self, node, name, leaf, fzs, D):
+    def door(self, node, name, leaf, fzs, D, gate=False):
         wall = self.p["design"] == "wall_run"
-        self._door(name, leaf, fzs, D, glazed=wall, handle_at=fzs[0] + 0.08 * (fzs[1] - fzs[0]) if wall else None)
+        self._door(name, leaf, fzs, D, glazed=wall, handle_at=fzs[0] + 0.08 * (fzs[1] - fzs[0]) if wall else None,
+                   gate=gate)
 
     sink_door = door
 
     def door_drawers(self, node, c, n, ys, fys, zs, fzs, xs):
         """One door with pull-out drawers behind it: they move once the door is open."""
-        side = "left" if c < n / 2 else "right"
-        door = self.grow(node.one("door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side), fzs=fzs,
-                         D=xs[1] - xs[0])
+        side = self._side(c, n)
+        self.grow(node.one("door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side), fzs=fzs, D=xs[1] - xs[0],
+                  gate=True)
         self._inner_drawers(node.of("inner_drawer"), f"door_{c}_0", c, ys, zs, xs)
 
     def _inner_drawers(self, kids, gate, c, ys, zs, xs):
@@ -403,9 +414,10 @@ class CabinetLayout(Layout):
             self.grow(kid, name=f"inner_{c}_{r}", gate=gate, xs=xs, ys=ys, zs=(z, z + min(0.16, pitch - 0.04)))
 
     def inner_drawer(self, node, name, gate, xs, ys, zs):
-        """An internal pull-out: a low-fronted box set back behind the door (its hinge cups)."""
+        """An internal pull-out: a low-fronted box set back behind the door, narrowed to pass the hinges
+        (Blum / IKEA METOD inner drawers: ~25 mm each side)."""
         p = self.p
-        t, clear = p["board"], 0.012
+        t, clear = p["board"], INNER_CLEAR
         x0, x1 = xs[0] + t + 0.01, xs[1] - 0.03
         pieces = panels.box_drawer((x1 - 0.016, x1, ys[0] + clear, ys[1] - clear, zs[0], zs[1]),
                                    (x0, x1 - 0.016, ys[0] + clear, ys[1] - clear, zs[0], zs[1] - 0.03),
@@ -456,7 +468,7 @@ class CabinetLayout(Layout):
         split = zs[0] + 0.45 * (zs[1] - zs[0])
         self.extend("carcass", [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")]
                     + [panels.shelf(xs, ys, split + (zs[1] - split) * i / 3, t, "body") for i in (1, 2)])
-        side = "left" if c < n / 2 else "right"
+        side = self._side(c, n)
         fsplit = split - t / 2
         self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=(fys[0], fys[1], side),
                   fzs=(fsplit + GAP / 2, fzs[1]), D=xs[1] - xs[0])
@@ -467,7 +479,7 @@ class CabinetLayout(Layout):
         self._door(name, leaf, fzs, D, glazed=True, handle_at=fzs[0] + 0.1)
 
     def lower_door(self, node, name, leaf, fzs, D, c, ys, zs, xs):
-        self._door(name, leaf, fzs, D, handle_at=fzs[1] - 0.1)
+        self._door(name, leaf, fzs, D, handle_at=fzs[1] - 0.1, gate=True)
         self._inner_drawers(node.of("inner_drawer"), name, c, ys, zs, xs)
 
     # -- corner, sink, wall --------------------------------------------------------------------------
@@ -484,7 +496,7 @@ class CabinetLayout(Layout):
         self.extend("carcass", cab.front(x + GAP, x + GAP + p["front_thickness"], (ys[0] + GAP, mid - GAP / 2), fz,
                                          p["front_style"], "front")[0])
         name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, 2 * x,
-                          handle_at=None)
+                          handle_at=None, gate=True)
         self.grow(node.one("carousel"), gate=name, centre=(x - D / 2, (ys[0] + ys[1]) / 2),
                   radius=min(D, ys[1] - ys[0]) / 2 - t - 0.02, zs=(zs[0] + t, zs[1] - t))
 
