@@ -78,7 +78,7 @@ GRAMMAR = Grammar("kitchen_cabinet", {
     "drawer_door": Node(required=("drawer",), repeat={"door": leaves}),
     "open": Node(),
     "tall": Node(one_of={"pullout": 0.4, "tall_doors": 0.6}),
-    "pullout": Node(label="drawer", repeat={"basket": (4, 6)}),
+    "pullout": Node(label="pullout", repeat={"basket": (4, 6)}),
     "basket": Node(label="basket"),
     "tall_doors": Node(required=("upper_door", "lower_door")),
     "upper_door": Node(label="door"),
@@ -138,7 +138,7 @@ MATERIALS = {"body": "body_finish", "front": "body_finish", "handle": "handle_fi
 GAP = 0.003  # between neighbouring fronts and between moving parts and the carcass
 COLUMN = 0.45  # a column per 45 cm of width
 DOUBLE = 0.6  # columns wider than this have double doors
-DRAWER_WALL = 0.012
+DRAWER_WALL = 0.009  # drawer box boards (Blum LEGRABOX: 16 mm bottom on 1 mm steel sides; plywood boxes 9 mm)
 TILT = math.radians(25)  # tilt-out sink fronts tip 20-30 degrees (Rev-A-Shelf 6572 tip-out trays)
 FLAP = math.radians(100)  # lift-up flap stays open 90-107 degrees (Blum AVENTOS HK)
 TOP_OVER = 0.02  # worktop overhang at the front
@@ -446,10 +446,13 @@ class CabinetLayout(Layout):
         t, clear = p["board"], 0.015
         x0, x1 = xs[0] + t + 0.01, xs[1] - 0.002
         y0, y1 = ys[0] + clear, ys[1] - clear
-        # keep the front and a rear post; the box stand-in becomes the frame's bottom rail
-        frame = [g.box_between([x0, y0 + 0.02, zs[0] + 0.01], [x0 + 0.02, y1 - 0.02, zs[1] - 0.02], "wire"),
-                 g.box_between([x0, y0 + 0.02, zs[1] - 0.04], [x1, y1 - 0.02, zs[1] - 0.02], "wire")]
-        name = self.add(f"pullout_{c}", "drawer", [pc for pc in pieces if pc.material != "body"] + frame)
+        # keep the front; the baskets hang on two rear posts and two top rails of 20 mm steel tube
+        tube = 0.0012
+        frame = [g.box_between([x0, y, zs[0] + 0.01], [x0 + 0.02, y + 0.02, zs[1] - 0.02], "wire").replace(sheet=tube)
+                 for y in (y0, y1 - 0.02)]
+        frame += [g.box_between([x0 + 0.02, y, zs[1] - 0.04], [x1, y + 0.02, zs[1] - 0.02], "wire").replace(sheet=tube)
+                  for y in (y0, y1 - 0.02)]
+        name = self.add(f"pullout_{c}", "pullout", [pc for pc in pieces if pc.material != "body"] + frame)
         self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fzs[0]), z=(1, 0, 0)),
                    upper=0.9 * (x1 - x0))
         kids = node.of("basket")

@@ -116,8 +116,9 @@ class RackLayout(Layout):
         need = len(design.of("caddy")) * (R.CADDY["x"] + 0.02) + math.ceil(len(design.of("cup")) / 2) \
             * R.CUP_PITCH + 0.015
         board = ((xs[0], max(xs[1], xs[0] + need)), (y0, y0 + 2 * R.CUP_PITCH + 0.01), lo[2], lo[2] + 0.012)
-        self.extend("rack", [g.box_between([xs[0], hi[1] - 0.004, lo[2]], [board[0][1], board[1][1], board[3]],
-                                           "frame", bevel=0.002)])
+        side = g.box_between([xs[0], hi[1] - 0.004, lo[2]], [board[0][1], board[1][1], board[3]], "frame", bevel=0.002)
+        # a wire rack's side board is a chrome-plated steel drip tray of 0.8 mm sheet, not a steel slab
+        self.extend("rack", [side.replace(sheet=0.0008) if p["style"] == "wire" else side])
         if node.one("feet"):
             self.grow(node.one("feet"), pieces=self.bp.parts["rack"].pieces, xs=xs)
         self.grow(design, board=board)

@@ -20,7 +20,7 @@ def depth(obj):
 def test_parts_and_labels(cabinet):
     labels = {link.label for link in cabinet.links}
     assert "body" in labels
-    assert labels <= {"body", "drawer", "door", "sink", "basket", "carousel"}
+    assert labels <= {"body", "drawer", "door", "sink", "basket", "carousel", "pullout"}
     assert cabinet.links[0].name == "carcass"
 
 

@@ -33,11 +33,12 @@ FOOT_H = 0.008
 # Wire baskets of pull-out larders: 6 mm rod rims, 80-100 mm deep (Kesseböhmer Dispensa).
 BASKET_H = 0.09
 ROD = 0.003
+MESH = 0.0004
 
 # Lazy susan: 25 mm pole, trays with a 40-50 mm rim (Rev-A-Shelf 6000 series, 28-32 in trays).
 POLE_R = 0.0125
 TRAY_RIM = 0.045
-TRAY_T = 0.008
+TRAY_T = 0.005
 
 
 def carcass(xs, ys, zs, t: float, slot: str, top: bool = True) -> list[g.Piece]:
@@ -161,11 +162,13 @@ def basket(xs, ys, z: float, slot: str, h: float = BASKET_H) -> list[g.Piece]:
     """A wire basket: a mesh floor (a thin plate) and a rod rim on four low walls."""
     (x0, x1), (y0, y1) = xs, ys
     r = ROD
-    return [g.box_between([x0, y0, z], [x1, y1, z + 2 * r], slot),
-            g.box_between([x0, y0, z + 2 * r], [x0 + 2 * r, y1, z + h], slot),
-            g.box_between([x1 - 2 * r, y0, z + 2 * r], [x1, y1, z + h], slot),
-            g.box_between([x0 + 2 * r, y0, z + 2 * r], [x1 - 2 * r, y0 + 2 * r, z + h], slot),
-            g.box_between([x0 + 2 * r, y1 - 2 * r, z + 2 * r], [x1 - 2 * r, y1, z + h], slot)]
+    out = [g.box_between([x0, y0, z], [x1, y1, z + 2 * r], slot),
+           g.box_between([x0, y0, z + 2 * r], [x0 + 2 * r, y1, z + h], slot),
+           g.box_between([x1 - 2 * r, y0, z + 2 * r], [x1, y1, z + h], slot),
+           g.box_between([x0 + 2 * r, y0, z + 2 * r], [x1 - 2 * r, y0 + 2 * r, z + h], slot),
+           g.box_between([x0 + 2 * r, y1 - 2 * r, z + 2 * r], [x1 - 2 * r, y1, z + h], slot)]
+    # wire mesh weighs what a 0.4 mm sheet would: a 50 x 45 cm basket ~1.5 kg
+    return [pc.replace(sheet=MESH) for pc in out]
 
 
 def carousel_tray(cx: float, cy: float, z: float, radius: float, slot: str) -> g.Piece:

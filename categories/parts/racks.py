@@ -284,6 +284,7 @@ def pads(pieces, xs) -> list[g.Piece]:
 TOTE_WALL = 0.003  # polypropylene storage boxes: 2.5-3.5 mm walls (Really Useful Box, IKEA SAMLA)
 TOTE_RIM = 0.008  # the stacking rim around the top
 LID_T = 0.012  # lid: a 3 mm sheet on a 12 mm skirt (visual), one slab for collisions
+LID_SHEET = 0.003
 
 
 def tote(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
@@ -308,7 +309,7 @@ def tote(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: s
 
 def tote_lid(x0: float, x1: float, y0: float, y1: float, z: float, slot: str) -> list[g.Piece]:
     """A flat lid lying on a tote's rim at ``z``: a slab with a raised label panel."""
-    return [g.box_between([x0, y0, z], [x1, y1, z + LID_T], slot, bevel=0.003),
+    return [g.box_between([x0, y0, z], [x1, y1, z + LID_T], slot, bevel=0.003).replace(sheet=LID_SHEET),
             g.box_between([x0 + 0.3 * (x1 - x0), y0 + 0.2 * (y1 - y0), z + LID_T],
                           [x1 - 0.1 * (x1 - x0), y1 - 0.2 * (y1 - y0), z + LID_T + 0.002], slot)]
 
