@@ -21,7 +21,7 @@ def test_list_prints_one_category_per_line(capsys):
 def test_params_prints_schema_and_growth(capsys):
     code, out, _ = run(capsys, "params", "kitchen_cabinet")
     assert code == 0
-    assert "width" in out and "U(1, 4)" in out and "growth rules" in out and "drawers (0.40)" in out
+    assert "width" in out and "U(1.2, 4.8)" in out and "growth rules" in out and "drawers (0.32)" in out
 
 
 def test_generate_writes_seeded_folders(capsys, tmp_path):
