@@ -20,6 +20,8 @@ the bay, clear of the uprights. Parts: ``categories/parts/racks.py``.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -213,6 +215,7 @@ class RackLayout(Layout):
     # -- shelving of totes, racks of bins --------------------------------------------------------------
     def shelving(self, node, ys, zs, clear):
         u = SHELF_U
+        self.node_levels = list(zs)
         for b, bay in enumerate(node.children):
             self.grow(bay, b=b, span=(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP), zs=zs, clear=clear)
 
@@ -244,23 +247,28 @@ class RackLayout(Layout):
         d = D - 0.06
         h = min(0.3, 0.6 * clear)  # totes leave room above the lid to lift it once pulled out
         cells_ = np.linspace(span[0] + 0.01, span[1] - 0.01, len(kids) + 1)
+        # a lid may not rise into the space of the tote above, pulled out with it (both are gates, which the
+        # core never scales): its tip stays 1 cm under the level above
+        above = [lv for lv in self.node_levels if lv > z + 1e-9]
+        room = (min(above) - z - h - R.LID_T - 0.01) if above else None
+        lid_up = LID_OPEN if room is None else math.asin(max(0.05, min(1.0, room / d)))
         for k, kid in enumerate(kids):
             self.grow(kid, level=name, name=f"{name}_tote_{k}", xs=(-d / 2, d / 2),
-                      ys=(cells_[k] + 0.008, cells_[k + 1] - 0.008), z=top, h=h)
+                      ys=(cells_[k] + 0.008, cells_[k + 1] - 0.008), z=top, h=h, lid_up=lid_up)
 
-    def tote(self, node, level, name, xs, ys, z, h):
+    def tote(self, node, level, name, xs, ys, z, h, lid_up=LID_OPEN):
         self.add(name, "box", R.tote(*xs, *ys, z, h, "tote"))
         self.slide(level, name, Frame.at((xs[1], sum(ys) / 2, z), z=(1, 0, 0)),
                    upper=self.p["tote_travel"] * (xs[1] - xs[0]))
-        self.grow(node.one(node.choice), tote=name, xs=xs, ys=ys, z=z + h)
+        self.grow(node.one(node.choice), tote=name, xs=xs, ys=ys, z=z + h, up=lid_up)
 
-    def lid(self, node, tote, xs, ys, z):
+    def lid(self, node, tote, xs, ys, z, up=LID_OPEN):
         name = self.add(f"{tote}_lid", "lid", R.tote_lid(*xs, *ys, z, "lid"))
         # hinged at the back edge, axis -Y: the front edge lifts; it opens once the tote is out
-        self.hinge(tote, name, Frame.at((xs[0], sum(ys) / 2, z), z=(0, -1, 0)), upper=LID_OPEN, role="lid",
+        self.hinge(tote, name, Frame.at((xs[0], sum(ys) / 2, z), z=(0, -1, 0)), upper=up, role="lid",
                    requires_open=tote)
 
-    def open_tote(self, node, tote, xs, ys, z):
+    def open_tote(self, node, tote, xs, ys, z, up=None):
         """An open tote: no lid; a label card clipped on its front wall instead."""
         yc = sum(ys) / 2
         self.extend(tote, [g.box_between([xs[1] - R.TOTE_RIM + R.TOTE_WALL, yc - 0.04, z - 0.09],
