@@ -1,11 +1,27 @@
-"""Kitchen cabinet: a panel carcass split into columns of drawers, doors or open shelves.
+"""Kitchen cabinet: base runs, tall larders, corner carousels, sink bases and hung wall runs.
 
-X is depth (fronts face +X), Y is width, Z is up. Drawers slide out along +X; doors hinge about
-a vertical axis on the front face at the column edge and swing outward; double doors when a
-column is wider than 0.6 m. Every hinge opens up to ``door_angle``; the core
-(``limit_to_clearance``) stops a leaf hinged beside another column before it or its handle meets
-the neighbour's door or open drawers. A cabinet always has at least one column that moves.
-Parts: ``categories/parts/panels.py``, ``hardware``.
+X is depth (fronts face +X), Y is width, Z is up. Five designs (``design``), each its own tree:
+
+- ``base_run``: a run of base cabinets (0.55-0.62 m deep, 0.85-0.92 m high to the worktop) on
+  legs behind a kick board or on visible legs with levellers, under a worktop; every column is
+  drawers (2-4, a shallow top drawer over deep pan drawers), doors (with a shelf), a door with
+  internal pull-out drawers behind it (they move only once the door is open), a top drawer over
+  doors, or an open shelf.
+- ``larder``: 2-4 tall cabinets (1.95-2.25 m): a full-height pull-out larder with wire baskets, or
+  an upper door (shelves behind it) over a lower door with internal pull-outs.
+- ``corner``: a square corner base unit whose door opens on a lazy-susan carousel (a
+  continuous joint: pole and trays turn together on a bearing), beside 2-5 base columns.
+- ``sink_base``: a sink base with a tilt-out false front (hinged at its bottom edge, a
+  sponge tray behind it), two doors below and an inset bowl and tap in the worktop, beside
+  1-5 base columns.
+- ``wall_run``: hung wall cabinets (0.30-0.35 m deep) on a suspension rail: doors, glazed
+  doors, lift-up flaps (hinged at the top edge) or open shelves.
+
+Doors hinge about a vertical axis on the front face at the column edge and swing outward;
+the core (``limit_to_clearance``) stops a leaf before it meets the neighbour's door or open
+drawers. Fronts are slab, shaker, raised-panel or glazed (``front_style``: glass in wall and
+upper doors), with 3 mm reveals, concealed hinge cups on the doors' inner faces and real handle
+sizes. Parts: ``categories/parts/cabinetry.py``, ``panels``, ``hardware``.
 """
 
 from __future__ import annotations
@@ -18,6 +34,7 @@ from infmob_usd.frames import Frame, cells
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Flag, Float, Int
 
+from .parts import cabinetry as cab
 from .parts import hardware, panels
 
 
@@ -26,167 +43,511 @@ def columns(p, rng) -> int:
     return p["column_count"] or max(1, math.floor(p["width"] / COLUMN))
 
 
-def rows(p, rng) -> int:
-    """drawer_rows, or floor((height - 0.06) / 0.3)"""
-    return p["drawer_rows"] or max(1, math.floor((p["height"] - 0.06) / ROW))
-
-
 def leaves(p, rng) -> int:
     """two doors in a column wider than 0.6 m, else one"""
-    return 2 if column_width(p) > DOUBLE else 1
+    return 2 if p["width"] / columns(p, rng) > DOUBLE else 1
+
+
+MOVING = {"drawer", "door", "inner_drawer", "flap", "pullout", "tilt_front", "carousel"}
 
 
 def moves(tree) -> bool:
-    """At least one column has drawers or doors."""
-    return any(c.choice != "shelf" for c in tree.of("column"))
+    """Something moves: every design has a moving part except a run of only open shelves."""
+    return any(n.kind in MOVING for n in tree.walk())
 
 
+# the columns of a base run, per instance
+BASE_COLUMN = {"drawers": 0.32, "doors": 0.2, "door_drawers": 0.2, "drawer_door": 0.2, "open": 0.08}
 GRAMMAR = Grammar("kitchen_cabinet", {
-    "kitchen_cabinet": Node(label="body", repeat={"column": columns}, optional={"plinth": 0.6, "countertop": 0.5}),
-    "plinth": Node(), "countertop": Node(),
-    "column": Node(one_of={"drawers": 0.4, "doors": 0.4, "shelf": 0.2}),
-    "drawers": Node(repeat={"drawer": rows}),
+    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.4, "larder": 0.15, "corner": 0.15,
+                                                  "sink_base": 0.15, "wall_run": 0.15}, choice="design"),
+    "base_run": Node(required=("stand", "worktop"), repeat={"column": columns}),
+    "larder": Node(required=("stand",), repeat={"tall": (2, 4)}),
+    "corner": Node(required=("stand", "worktop", "corner_unit"), repeat={"column": (2, 5)}),
+    "sink_base": Node(required=("stand", "worktop", "sink", "tilt_front"), repeat={"sink_door": 2, "column": (1, 5)}),
+    "wall_run": Node(required=("rail",), repeat={"wall_column": columns}),
+    "stand": Node(one_of={"plinth": 0.65, "legs": 0.35}, choice="stand_style"),
+    "plinth": Node(), "legs": Node(), "worktop": Node(), "rail": Node(),
+    "column": Node(one_of=BASE_COLUMN),
+    "drawers": Node(repeat={"drawer": (2, 4)}),
     "drawer": Node(label="drawer"),
     "doors": Node(repeat={"door": leaves}),
     "door": Node(label="door"),
-    "shelf": Node(),
+    "door_drawers": Node(required=("door",), repeat={"inner_drawer": (2, 4)}),
+    "inner_drawer": Node(label="drawer"),
+    "drawer_door": Node(required=("drawer",), repeat={"door": leaves}),
+    "open": Node(),
+    "tall": Node(one_of={"pullout": 0.4, "tall_doors": 0.6}),
+    "pullout": Node(label="pullout", repeat={"basket": (4, 6)}),
+    "basket": Node(label="basket"),
+    "tall_doors": Node(required=("upper_door", "lower_door")),
+    "upper_door": Node(label="door"),
+    "lower_door": Node(label="door", repeat={"inner_drawer": (2, 4)}),
+    "corner_unit": Node(label="door", required=("carousel",)),
+    "carousel": Node(label="carousel", repeat={"tray": (2, 3)}),
+    "tray": Node(),
+    "sink": Node(label="sink"),
+    "tilt_front": Node(label="drawer"),
+    "sink_door": Node(label="door"),
+    "wall_column": Node(one_of={"wall_doors": 0.55, "flap": 0.33, "wall_open": 0.12}),
+    "wall_doors": Node(repeat={"door": leaves}),
+    "flap": Node(label="door"),
+    "wall_open": Node(),
 }, accept=moves)
 
 PARAMS = (
-    Float("width", "overall width (Y)", "m", 1.0, 4.0),
-    Float("height", "overall height incl. plinth (Z)", "m", 0.5, 1.3),
-    Float("depth", "carcass depth (X)", "m", 0.3, 0.6),
-    Float("board", "carcass board thickness", "m", 0.015, 0.022),
-    Float("front_thickness", "door and drawer-front thickness", "m", 0.016, 0.024),
-    Int("column_count", "columns; auto = max(1, floor(width / 0.45))", "", 1, 8, auto=True),
-    Int("drawer_rows", "drawers per drawer column; auto = floor((height - 0.06) / 0.3)", "", 1, 5, auto=True),
-    Float("plinth_height", "kick-board height when there is a plinth", "m", 0.06, 0.12),
-    Flag("has_handles", "fronts have handles", p=0.9),
+    # a kitchen wall's run: 1.2-4.8 m (2-10 cabinets of 40-60 cm)
+    Float("width", "run width (Y) of a base or wall run", "m", 1.2, 4.8),
+    Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45))", "", 1, 10, auto=True),
+    # EN 1116 / IKEA METOD: base cabinets 60 cm deep incl. front, worktop at 85-92 cm
+    Float("base_depth", "base and tall carcass depth (X), front excluded", "m", 0.55, 0.62),
+    Float("base_height", "floor to worktop top", "m", 0.85, 0.92),
+    # IKEA METOD high cabinets 200 / 220 cm + 8-10 cm legs
+    Float("tall_height", "tall (larder) cabinet height", "m", 1.95, 2.25),
+    # wall cabinets 30-35 cm deep (issue 13; IKEA METOD 37 cm incl. door), 60-100 cm high
+    Float("wall_depth", "wall cabinet depth (X)", "m", 0.3, 0.35),
+    Float("wall_height", "wall cabinet height", "m", 0.6, 0.9),
+    # IKEA METOD 40 / 60 cm high-cabinet widths
+    Float("column_width", "width of a tall cabinet or of a column beside a corner or sink unit", "m", 0.4, 0.6),
+    # corner base 88 x 88 cm (IKEA METOD), lazy-susan bases 33-36 in
+    Float("corner_size", "corner unit width and depth", "m", 0.84, 0.92),
+    # sink bases 80 / 90 / 100 cm (IKEA METOD), 30-36 in
+    Float("sink_width", "sink base width", "m", 0.8, 1.0),
+    Float("board", "carcass board thickness", "m", 0.016, 0.019),
+    Float("front_thickness", "door and drawer-front thickness", "m", 0.016, 0.022),
+    Float("worktop_thickness", "worktop thickness (laminate 28-40 mm, stone 20-30 mm)", "m", 0.02, 0.04),
+    # IKEA METOD legs 8 cm; US toe kicks 3.5-4.5 in
+    Float("plinth_height", "leg / kick-board height", "m", 0.08, 0.14),
+    Choice("front_style", "fronts: slab, shaker, raised panel, or glazed (glass in wall and upper doors)",
+           choices=cab.FRONT_STYLES, weights=(0.35, 0.3, 0.15, 0.2)),
+    Flag("has_handles", "fronts have handles (else push-to-open)", p=0.9),
     Choice("handle_style", "handle shape", choices=("bar", "knob", "recessed"), weights=(0.5, 0.3, 0.2)),
     Choice("body_finish", "carcass and front material", choices=("painted", "wood")),
     Choice("handle_finish", "handle material", choices=("brushed_metal", "chrome", "plastic")),
-    Float("drawer_travel", "drawer opening as a fraction of depth", "", 0.5, 0.75),
+    Float("drawer_travel", "drawer opening as a fraction of its depth (full extension runners: 0.9)", "", 0.6, 0.9),
+    # Blum CLIP top hinges: 95, 107, 110, 155 degrees
     Float("door_angle", "hinge opening angle (a door beside another column may stop earlier)", "rad", math.pi / 2,
           0.65 * math.pi),
 )
 
 MATERIALS = {"body": "body_finish", "front": "body_finish", "handle": "handle_finish",
-             "plinth": "plastic:black|dark_grey", "top": "wood"}
+             "plinth": "plastic:black|dark_grey", "top": "wood", "glass": "glass:clear|clear_blue",
+             "hinge": "brushed_metal", "leg": "brushed_metal", "foot": "plastic:black|dark_grey",
+             "sink": "brushed_metal", "tap": "chrome", "wire": "chrome", "tray": "plastic:white|light_grey"}
 
 GAP = 0.003  # between neighbouring fronts and between moving parts and the carcass
 COLUMN = 0.45  # a column per 45 cm of width
-ROW = 0.3  # a drawer per 30 cm of height
 DOUBLE = 0.6  # columns wider than this have double doors
-TOP = 0.03  # countertop thickness
-DRAWER_WALL = 0.012
-
-
-def column_width(p: dict) -> float:
-    n = columns(p, None)
-    return (p["width"] - 2 * p["board"] - (n - 1) * p["board"]) / n
+DRAWER_WALL = 0.009  # drawer box boards (Blum LEGRABOX: 16 mm bottom on 1 mm steel sides; plywood boxes 9 mm)
+TILT = math.radians(25)  # tilt-out sink fronts tip 20-30 degrees (Rev-A-Shelf 6572 tip-out trays)
+FLAP = math.radians(100)  # lift-up flap stays open 90-107 degrees (Blum AVENTOS HK)
+TOP_OVER = 0.02  # worktop overhang at the front
+TOP_DRAWER = 0.2  # a top drawer is this fraction of a column's height
+SINK_DEPTH = 0.19  # bowl depth
+SINK_FRONT = 0.16  # false-front height of a sink base
+GATE = math.pi / 2  # a door with pull-outs or a carousel behind it
+INNER_CLEAR = 0.025  # an inner drawer's box keeps this far from the carcass sides (the hinges)
+SPLITS = {2: (0.5, 0.5), 3: (0.4, 0.4, 0.2), 4: (0.3, 0.3, 0.2, 0.2)}  # drawer heights, bottom up
 
 
 class CabinetLayout(Layout):
+    # -- the designs --------------------------------------------------------------------------------
     def kitchen_cabinet(self, node):
+        """The design's main carcass box (the part every front hangs on), then the design."""
+        design = node.one(node.choice)
         p = self.p
-        W, H, D, t = p["width"], p["height"], p["depth"], p["board"]
-        z0 = p["plinth_height"] if node.one("plinth") else 0.0
-        z1 = H - (TOP if node.one("countertop") else 0.0)  # carcass top
-        self.add("carcass", "body", panels.carcass(W, D, z0, z1, t, "body"))
-        for extra in ("plinth", "countertop"):
-            if node.one(extra):
-                self.grow(node.one(extra), z=(z0, z1))
-        cols = node.of("column")
-        spans = cells(-W / 2 + t, W / 2 - t, len(cols), gap=t)
+        kind = design.kind
+        if kind == "wall_run":
+            D, z0, z1, W = p["wall_depth"], 0.0, p["wall_height"], p["width"]
+        else:
+            D, z0, z1 = self._base_dims(tall=kind == "larder")
+            W = {"base_run": p["width"], "larder": len(design.of("tall")) * p["column_width"],
+                 "corner": p["corner_size"] + len(design.of("column")) * p["column_width"],
+                 "sink_base": p["sink_width"] + len(design.of("column")) * p["column_width"]}[kind]
+        first = {"corner": p["corner_size"], "sink_base": p["sink_width"]}.get(kind, W)
+        xs = (D / 2 - p["corner_size"], D / 2) if kind == "corner" else (-D / 2, D / 2)
+        self.add("carcass", "body", cab.carcass(xs, (-W / 2, -W / 2 + first), (z0, z1), p["board"], "body",
+                                                top=kind != "sink_base"))
+        self.grow(design, W=W, D=D, zs=(z0, z1))
+
+    def _base_dims(self, tall: bool = False):
+        p = self.p
+        z0 = p["plinth_height"]
+        z1 = p["tall_height"] if tall else p["base_height"] - p["worktop_thickness"]
+        return p["base_depth"], z0, z1
+
+    def _box(self, ys, xs, zs, top=True):
+        self.extend("carcass", cab.carcass(xs, ys, zs, self.p["board"], "body", top=top))
+
+    def _run(self, cols, ys, xs, zs, box=True):
+        """Grow ``cols`` as equal columns of one carcass over ``ys`` (dividers between them)."""
+        t = self.p["board"]
+        (W0, W1), D = ys, xs[1] - xs[0]
+        if box:
+            self._box(ys, xs, zs)
+        spans = cells(W0 + t, W1 - t, len(cols), gap=t)
         for c, (col, (ya, yb)) in enumerate(zip(cols, spans)):
             if c < len(cols) - 1:  # divider to the right of this column
-                self.extend("carcass", [g.box_between([-D / 2 + t * 0.5, yb, z0 + t], [D / 2, yb + t, z1 - t], "body")])
-            # the front of a column covers the opening plus half of each bordering board
-            fy = (ya - t / 2 + GAP / 2 if c > 0 else -W / 2 + GAP,
-                  yb + t / 2 - GAP / 2 if c < len(cols) - 1 else W / 2 - GAP)
-            self.grow(col, c=c, n=len(cols), ys=(ya, yb), fys=fy, zs=(z0 + t, z1 - t), fzs=(z0 + GAP, z1 - GAP))
+                self.extend("carcass", [g.box_between([xs[0] + t * 0.5, yb, zs[0] + t], [xs[1], yb + t, zs[1] - t],
+                                                      "body")])
+            fy = (ya - t / 2 + GAP / 2 if c > 0 else W0 + GAP, yb + t / 2 - GAP / 2 if c < len(cols) - 1 else W1 - GAP)
+            self.grow(col, c=c, n=len(cols), ys=(ya, yb), fys=fy, zs=(zs[0] + t, zs[1] - t),
+                      fzs=(zs[0] + GAP, zs[1] - GAP), xs=xs)
 
-    def plinth(self, node, z):
-        D, W = self.p["depth"], self.p["width"]
-        kick = g.box_between([-D / 2 + 0.02, -W / 2 + 0.01, 0], [D / 2 - 0.05, W / 2 - 0.01, z[0]], "plinth")
-        self.extend("carcass", [kick])
+    def _stand_and_top(self, node, ys, D, z0, top_hole=None):
+        self.grow(node.one("stand"), ys=ys, xs=(-D / 2, D / 2), z0=z0)
+        if node.one("worktop"):
+            self.grow(node.one("worktop"), ys=ys, xs=(-D / 2, D / 2), hole=top_hole)
 
-    def countertop(self, node, z):
-        D, W = self.p["depth"], self.p["width"]
-        top = g.box_between([-D / 2, -W / 2 - 0.005, z[1]], [D / 2 + 0.03, W / 2 + 0.005, self.p["height"]], "top",
-                            bevel=0.004)
-        self.extend("carcass", [top])
+    def base_run(self, node, W, D, zs):
+        self._run(node.of("column"), (-W / 2, W / 2), (-D / 2, D / 2), zs, box=False)
+        self._stand_and_top(node, (-W / 2, W / 2), D, zs[0])
 
+    def larder(self, node, W, D, zs):
+        self._run(node.of("tall"), (-W / 2, W / 2), (-D / 2, D / 2), zs, box=False)
+        self._stand_and_top(node, (-W / 2, W / 2), D, zs[0])
+
+    def corner(self, node, W, D, zs):
+        p = self.p
+        z0, z1 = zs
+        C, t = p["corner_size"], p["board"]
+        cols = node.of("column")
+        y0 = -W / 2
+        # the corner box (the root's) reaches further back than the run beside it; all fronts are flush
+        self._run(cols, (y0 + C, W / 2), (-D / 2, D / 2), (z0, z1))
+        self.grow(node.one("corner_unit"), ys=(y0, y0 + C), xs=(D / 2 - C, D / 2), zs=(z0, z1))
+        self.grow(node.one("stand"), ys=(y0, W / 2), xs=(-D / 2, D / 2), z0=z0)
+        self.extend("carcass", cab.legs([D / 2 - C + 0.06], [y0 + 0.06, y0 + C - 0.06], z0, "leg", "foot"))
+        self.grow(node.one("worktop"), ys=(y0, W / 2), xs=(-D / 2, D / 2), hole=None, corner=(y0 + C, D / 2 - C))
+
+    def sink_base(self, node, W, D, zs):
+        p = self.p
+        z0, z1 = zs
+        S, t = p["sink_width"], p["board"]
+        cols = node.of("column")
+        y0 = -W / 2
+        ys = (y0, y0 + S)
+        if cols:
+            self._run(cols, (y0 + S, W / 2), (-D / 2, D / 2), (z0, z1))
+        xf = D / 2
+        hole = ((-D / 2 + 0.1, xf - 0.12), (ys[0] + 0.1, ys[1] - 0.1))
+        H = p["base_height"]
+        self.grow(node.one("sink"), hole=hole, z_top=H)
+        fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if cols else ys[1] - GAP)
+        fz1 = z1 - GAP
+        self.grow(node.one("tilt_front"), fys=fy, fzs=(fz1 - SINK_FRONT, fz1), xs=(-D / 2, D / 2))
+        doors = node.of("sink_door")
+        mid = sum(fy) / 2
+        spec = [(fy[0], mid - GAP / 2, "left"), (mid + GAP / 2, fy[1], "right")]
+        for k, (kid, leaf) in enumerate(zip(doors, spec)):
+            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - SINK_FRONT - GAP), D=D)
+        self._stand_and_top(node, (y0, W / 2), D, z0, top_hole=hole)
+
+    def wall_run(self, node, W, D, zs):
+        H = zs[1]
+        self._run(node.of("wall_column"), (-W / 2, W / 2), (-D / 2, D / 2), (0.0, H), box=False)
+        self.grow(node.one("rail"), ys=(-W / 2, W / 2), xs=(-D / 2, D / 2), z=H - 0.02)
+
+    # -- stands, worktops, rails ---------------------------------------------------------------------
+    def stand(self, node, **where):
+        self.grow(node.one(node.choice), **where)
+
+    def plinth(self, node, ys, xs, z0):
+        """Legs behind a kick board clipped on, set back 50 mm (IKEA METOD plinth)."""
+        (y0, y1), (x0, x1) = ys, xs
+        self.extend("carcass", cab.legs([x0 + 0.06, x1 - 0.08], [y0 + 0.06, y1 - 0.06], z0, "leg", "foot")
+                    + [g.box_between([x1 - 0.06, y0 + 0.005, 0.0], [x1 - 0.045, y1 - 0.005, z0 - 0.002], "plinth")])
+
+    def legs(self, node, ys, xs, z0):
+        """Visible legs with levellers, one pair per ~60 cm of run."""
+        (y0, y1), (x0, x1) = ys, xs
+        n = max(2, 1 + math.ceil((y1 - y0 - 0.12) / 0.6))
+        at = [y0 + 0.05 + i * (y1 - y0 - 0.1) / (n - 1) for i in range(n)]
+        self.extend("carcass", cab.legs([x0 + 0.05, x1 - 0.05], at, z0, "leg", "foot"))
+
+    def worktop(self, node, ys, xs, hole=None, corner=None):
+        p = self.p
+        z1 = p["base_height"]
+        z0 = z1 - p["worktop_thickness"]
+        pieces = cab.worktop((xs[0], xs[1] + TOP_OVER), (ys[0] - 0.005, ys[1] + 0.005), z0, z1, "top", hole)
+        if corner is not None:  # the corner box's deeper part
+            yc, xc = corner
+            pieces.append(g.box_between([xc, ys[0] - 0.005, z0], [xs[0], yc, z1], "top", bevel=0.002))
+        self.extend("carcass", pieces)
+
+    def rail(self, node, ys, xs, z):
+        self.extend("carcass", cab.wall_rail(xs, ys, z, "hinge"))
+
+    def sink(self, node, hole, z_top):
+        name = self.add("sink", "sink", cab.sink(hole, z_top, SINK_DEPTH, "sink", "tap"))
+        self.fix("carcass", name)
+
+    # -- columns -------------------------------------------------------------------------------------
     def column(self, node, **where):
         self.grow(node.one(node.choice), **where)
 
-    def shelf(self, node, c, n, ys, fys, zs, fzs):
-        D, t = self.p["depth"], self.p["board"]
+    wall_column = tall = column
+
+    def open(self, node, c, n, ys, fys, zs, fzs, xs):
         k = 1 + int(self.rng.integers(1, 3))
-        self.extend("carcass", [panels.shelf((-D / 2, D / 2), ys, zs[0] + (zs[1] - zs[0]) * i / 3, t, "body")
+        self.extend("carcass", [panels.shelf(xs, ys, zs[0] + (zs[1] - zs[0]) * i / k, self.p["board"], "body")
                                 for i in range(1, k)])
+
+    wall_open = open
 
     def _handle(self, length: float):
         style = self.p["handle_style"]
-        if style == "bar":
-            return hardware.bar_handle(length, "handle")
-        if style == "knob":
+        if style == "bar":  # 128-320 mm bar pulls
+            return hardware.bar_handle(min(max(length, 0.128), 0.32), "handle")
+        if style == "knob":  # 30 mm knobs
             return hardware.knob_handle(0.015, 0.025, "handle")
         return hardware.edge_pull(length, "handle")
 
-    def drawers(self, node, c, n, ys, fys, zs, fzs):
-        kids = node.of("drawer")
-        for r, kid in enumerate(kids):
-            self.grow(kid, c=c, r=r, rows=len(kids), ys=ys, fys=fys, zs=zs, fzs=fzs)
-
-    def drawer(self, node, c, r, rows, ys, fys, zs, fzs):
+    def _drawer_pieces(self, xs, ys, fys, fz, bz, style=True):
+        """Front (styled) and box of a drawer; ``bz`` the box's z range."""
         p = self.p
-        D, t, ft = p["depth"], p["board"], p["front_thickness"]
-        xf = D / 2
-        row_h, inner_row = (fzs[1] - fzs[0]) / rows, (zs[1] - zs[0]) / rows
-        clear = max(0.004, 0.02 * min(ys[1] - ys[0], inner_row))
-        fz0 = fzs[0] + r * row_h + GAP / 2
-        fz1 = fz0 + row_h - GAP
-        # the box stays above the front of the drawer below, or pulling it drags that one along
-        bz0 = max(zs[0] + r * inner_row + clear, fz0)
-        bz1 = zs[0] + (r + 1) * inner_row - clear - 0.01
-        box = (-D / 2 + t + clear, xf - 0.002, ys[0] + clear, ys[1] - clear, bz0, bz1)
-        pieces = panels.box_drawer((xf + GAP, xf + GAP + ft, *fys, fz0, fz1), box, DRAWER_WALL, "front", "body")
+        D, t, ft = xs[1] - xs[0], p["board"], p["front_thickness"]
+        xf = xs[1]
+        clear = 0.012  # runner space either side
+        box = (xs[0] + t + 0.01, xf - 0.002, ys[0] + clear, ys[1] - clear, bz[0], bz[1])
+        pieces = panels.box_drawer((xf + GAP, xf + GAP + ft, *fys, *fz), box, DRAWER_WALL, "front", "body")[1:]
+        face, xface = cab.front(xf + GAP, xf + GAP + ft, fys, fz, p["front_style"] if style else "slab", "front")
+        pieces += face
         if p["has_handles"]:
-            at = Frame.at((xf + GAP + ft, sum(fys) / 2, (fz0 + fz1) / 2 + 0.25 * (fz1 - fz0)), z=(1, 0, 0), x=(0, 1, 0))
-            h = self._handle(min(0.6 * (fys[1] - fys[0]), 0.35)).attached("mount", to=at)
+            f = cab.frame_width(fys[1] - fys[0], fz[1] - fz[0], p["front_style"] if style else "slab")
+            if fz[1] - fz[0] > 0.25:  # deep drawers: the handle near the top edge, on the top rail
+                hz, hx = fz[1] - (f / 2 if f else 0.05), xf + GAP + ft
+            else:
+                hz, hx = sum(fz) / 2, xface
+            at = Frame.at((hx, sum(fys) / 2, hz), z=(1, 0, 0), x=(0, 1, 0))
+            h = self._handle(min(0.5 * (fys[1] - fys[0]), 0.32)).attached("mount", to=at)
             pieces += list(h.parts[h.root].pieces)
-        name = self.add(f"drawer_{c}_{r}", "drawer", pieces)
-        self.slide("carcass", name, Frame.at((xf, sum(fys) / 2, fz0), z=(1, 0, 0)),
-                   upper=p["drawer_travel"] * (box[1] - box[0]))
+        return pieces, box
 
-    def doors(self, node, c, n, ys, fys, zs, fzs):
-        D, t = self.p["depth"], self.p["board"]
-        self.extend("carcass", [panels.shelf((-D / 2, D / 2), ys, (zs[0] + zs[1]) / 2, t, "body")])
+    def drawers(self, node, c, n, ys, fys, zs, fzs, xs):
+        kids = node.of("drawer")
+        splits = SPLITS[len(kids)]
+        self._drawer_stack(kids, splits, c, ys, fys, zs, fzs, xs)
+
+    def _drawer_stack(self, kids, splits, c, ys, fys, zs, fzs, xs, r0=0):
+        fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
+        f0, i0 = fzs[0], zs[0]
+        for r, (kid, s) in enumerate(zip(kids, splits)):
+            fz = (f0 + GAP / 2, f0 + s * fh - GAP / 2)
+            # the box stays above the front of the drawer below, or pulling it drags that one along
+            bz = (max(i0 + 0.012, fz[0]), i0 + s * ih - 0.03)
+            self.grow(kid, name=f"drawer_{c}_{r + r0}", xs=xs, ys=ys, fys=fys, fz=fz, bz=bz)
+            f0 += s * fh
+            i0 += s * ih
+
+    def drawer(self, node, name, xs, ys, fys, fz, bz):
+        pieces, box = self._drawer_pieces(xs, ys, fys, fz, bz)
+        self.add(name, "drawer", pieces)
+        self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fz[0]), z=(1, 0, 0)),
+                   upper=self.p["drawer_travel"] * (box[1] - box[0]))
+
+    def _side(self, c: int, n: int) -> str:
+        """The hinge side of a single leaf: towards the nearer end of the run; beside a corner unit every
+        leaf hinges on its right, away from the corner door (both open 90 degrees to the same divider)."""
+        return "left" if c < n / 2 and self.p["design"] != "corner" else "right"
+
+    def doors(self, node, c, n, ys, fys, zs, fzs, xs, shelf=True):
+        t = self.p["board"]
+        if shelf:
+            self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, t, "body")])
         kids = node.of("door")
         mid = sum(fys) / 2
         if len(kids) == 2:  # double doors, hinged at both outer edges
             spec = [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
-        else:  # one leaf, hinged on the side facing the nearer end of the cabinet
-            spec = [(fys[0], fys[1], "left" if c < n / 2 else "right")]
+        else:  # one leaf, hinged on the side facing the nearer end of the run
+            spec = [(fys[0], fys[1], self._side(c, n))]
         for k, (kid, leaf) in enumerate(zip(kids, spec, strict=True)):
-            self.grow(kid, name=f"door_{c}_{k}", leaf=leaf, fzs=fzs)
+            self.grow(kid, name=f"door_{c}_{k}", leaf=leaf, fzs=fzs, D=xs[1] - xs[0])
 
-    def door(self, node, name, leaf, fzs):
+    wall_doors = doors
+
+    def _door(self, name, leaf, fzs, D, glazed=False, handle_at=None, gate=False):
+        """A hinged door. A ``gate`` (a door with pull-outs or a carousel behind it) opens to 90 degrees:
+        two gates hinged on one divider then never meet (the core scales no gate's limit), and its
+        pull-outs pass the open leaf."""
         p = self.p
         ya, yb, side = leaf
-        xf, ft = p["depth"] / 2 + GAP, p["front_thickness"]
-        pieces = [g.box_between([xf, ya, fzs[0]], [xf + ft, yb, fzs[1]], "front", bevel=0.002)]
+        xf, ft = D / 2 + GAP, p["front_thickness"]
+        pieces, _ = cab.front(xf, xf + ft, (ya, yb), fzs, p["front_style"], "front", glazed=glazed)
+        pieces += cab.hinge_cups(xf, ya if side == "left" else yb, 1 if side == "left" else -1, fzs, "hinge")
         h = fzs[1] - fzs[0]
         if p["has_handles"]:
-            hz = fzs[0] + (0.8 if h < 0.9 else 0.6) * h
-            at = Frame.at((xf + ft, yb - 0.05 if side == "left" else ya + 0.05, hz), z=(1, 0, 0), x=(0, 0, 1))
-            handle = self._handle(min(0.3 * h, 0.3)).attached("mount", to=at)
+            length = min(0.3 * h, 0.32)
+            hz = handle_at if handle_at is not None else fzs[0] + (0.8 if h < 0.9 else 0.45) * h
+            reach = (max(length, 0.128) if self.p["handle_style"] == "bar" else length) / 2 + 0.03
+            hz = min(max(hz, fzs[0] + reach), fzs[1] - reach)  # the whole handle on the door
+            f = cab.frame_width(yb - ya, h, p["front_style"])
+            off = f / 2 if f else min(0.05, 0.3 * (yb - ya))  # on the stile of a framed door
+            at = Frame.at((xf + ft, yb - off if side == "left" else ya + off, hz), z=(1, 0, 0), x=(0, 0, 1))
+            handle = self._handle(length).attached("mount", to=at)
             pieces += list(handle.parts[handle.root].pieces)
         self.add(name, "door", pieces)
         # on the front face at the outer edge; the axis sign makes it swing out (+X)
         hinge = Frame.at((xf + ft, ya if side == "left" else yb, fzs[0]), z=(0, 0, -1 if side == "left" else 1))
-        self.hinge("carcass", name, hinge, upper=p["door_angle"])
+        self.hinge("carcass", name, hinge, upper=GATE if gate else p["door_angle"])
+        return name
+
+    def door(self, node, name, leaf, fzs, D, gate=False):
+        wall = self.p["design"] == "wall_run"
+        self._door(name, leaf, fzs, D, glazed=wall, handle_at=fzs[0] + 0.08 * (fzs[1] - fzs[0]) if wall else None,
+                   gate=gate)
+
+    sink_door = door
+
+    def door_drawers(self, node, c, n, ys, fys, zs, fzs, xs):
+        """One door with pull-out drawers behind it: they move once the door is open."""
+        side = self._side(c, n)
+        self.grow(node.one("door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side), fzs=fzs, D=xs[1] - xs[0],
+                  gate=True)
+        self._inner_drawers(node.of("inner_drawer"), f"door_{c}_0", c, ys, zs, xs)
+
+    def _inner_drawers(self, kids, gate, c, ys, zs, xs):
+        k = len(kids)
+        pitch = min((zs[1] - zs[0]) / k, 0.3)
+        for r, kid in enumerate(kids):
+            z = zs[0] + 0.02 + r * pitch
+            self.grow(kid, name=f"inner_{c}_{r}", gate=gate, xs=xs, ys=ys, zs=(z, z + min(0.16, pitch - 0.04)))
+
+    def inner_drawer(self, node, name, gate, xs, ys, zs):
+        """An internal pull-out: a low-fronted box set back behind the door, narrowed to pass the hinges
+        (Blum / IKEA METOD inner drawers: ~25 mm each side)."""
+        p = self.p
+        t, clear = p["board"], INNER_CLEAR
+        x0, x1 = xs[0] + t + 0.01, xs[1] - 0.03
+        pieces = panels.box_drawer((x1 - 0.016, x1, ys[0] + clear, ys[1] - clear, zs[0], zs[1]),
+                                   (x0, x1 - 0.016, ys[0] + clear, ys[1] - clear, zs[0], zs[1] - 0.03),
+                                   DRAWER_WALL, "body", "body")
+        self.add(name, "drawer", pieces)
+        self.slide("carcass", name, Frame.at((x1, sum(ys) / 2, zs[0]), z=(1, 0, 0)),
+                   upper=p["drawer_travel"] * (x1 - x0), requires_open=gate)
+
+    def drawer_door(self, node, c, n, ys, fys, zs, fzs, xs):
+        fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
+        s = 1 - TOP_DRAWER
+        top_f = (fzs[0] + s * fh, fzs[1])
+        top_i = (zs[0] + s * ih, zs[1])
+        self.extend("carcass", [g.box_between([xs[0] + self.p["board"] / 2, ys[0], top_i[0] - self.p["board"]],
+                                              [xs[1], ys[1], top_i[0]], "body")])
+        self._drawer_stack(node.of("drawer"), (1.0,), c, ys, fys, top_i, top_f, xs)
+        self.doors(node, c, n, ys, fys, (zs[0], top_i[0] - self.p["board"]), (fzs[0], top_f[0] - GAP / 2), xs,
+                   shelf=False)
+
+    # -- tall cabinets -------------------------------------------------------------------------------
+    def pullout(self, node, c, n, ys, fys, zs, fzs, xs):
+        """A full-height pull-out larder: the front on full-extension runners carries a frame
+        of wire baskets (Kesseböhmer Dispensa: 4-6 baskets, 90 % extension)."""
+        p = self.p
+        pieces, box = self._drawer_pieces(xs, ys, fys, fzs, (zs[0] + 0.01, zs[0] + 0.03), style=True)
+        t, clear = p["board"], 0.015
+        x0, x1 = xs[0] + t + 0.01, xs[1] - 0.002
+        y0, y1 = ys[0] + clear, ys[1] - clear
+        # keep the front; the baskets hang on two rear posts and two top rails of 20 mm steel tube
+        tube = 0.0012
+        frame = [g.box_between([x0, y, zs[0] + 0.01], [x0 + 0.02, y + 0.02, zs[1] - 0.02], "wire").replace(sheet=tube)
+                 for y in (y0, y1 - 0.02)]
+        frame += [g.box_between([x0 + 0.02, y, zs[1] - 0.04], [x1, y + 0.02, zs[1] - 0.02], "wire").replace(sheet=tube)
+                  for y in (y0, y1 - 0.02)]
+        name = self.add(f"pullout_{c}", "pullout", [pc for pc in pieces if pc.material != "body"] + frame)
+        self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fzs[0]), z=(1, 0, 0)),
+                   upper=0.9 * (x1 - x0))
+        kids = node.of("basket")
+        for k, kid in enumerate(kids):
+            z = zs[0] + 0.05 + k * (zs[1] - zs[0] - 0.2) / len(kids)
+            self.grow(kid, parent=name, xs=(x0 + 0.02, x1), ys=(y0 + 0.01, y1 - 0.01), z=z, k=k)
+
+    def basket(self, node, parent, xs, ys, z, k):
+        name = self.add(f"{parent}_basket_{k}", "basket", cab.basket(xs, ys, z, "wire"))
+        self.fix(parent, name)
+
+    def tall_doors(self, node, c, n, ys, fys, zs, fzs, xs):
+        """An upper door with shelves behind it over a lower door with pull-outs behind it."""
+        p = self.p
+        t = p["board"]
+        split = zs[0] + 0.45 * (zs[1] - zs[0])
+        self.extend("carcass", [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")]
+                    + [panels.shelf(xs, ys, split + (zs[1] - split) * i / 3, t, "body") for i in (1, 2)])
+        side = self._side(c, n)
+        fsplit = split - t / 2
+        self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=(fys[0], fys[1], side),
+                  fzs=(fsplit + GAP / 2, fzs[1]), D=xs[1] - xs[0])
+        self.grow(node.one("lower_door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side),
+                  fzs=(fzs[0], fsplit - GAP / 2), D=xs[1] - xs[0], c=c, ys=ys, zs=(zs[0], split - t), xs=xs)
+
+    def upper_door(self, node, name, leaf, fzs, D):
+        self._door(name, leaf, fzs, D, glazed=True, handle_at=fzs[0] + 0.1)
+
+    def lower_door(self, node, name, leaf, fzs, D, c, ys, zs, xs):
+        self._door(name, leaf, fzs, D, handle_at=fzs[1] - 0.1, gate=True)
+        self._inner_drawers(node.of("inner_drawer"), name, c, ys, zs, xs)
+
+    # -- corner, sink, wall --------------------------------------------------------------------------
+    def corner_unit(self, node, ys, xs, zs):
+        """The corner box's front: a blind panel and a door hinged at the run's side, opening on
+        the carousel."""
+        p = self.p
+        t = p["board"]
+        D = xs[1] - xs[0]
+        mid = (ys[0] + ys[1]) / 2 - 0.05
+        fz = (zs[0] + GAP, zs[1] - GAP)
+        x = xs[1]
+        # the blind part of the front: a fixed panel in the carcass
+        self.extend("carcass", cab.front(x + GAP, x + GAP + p["front_thickness"], (ys[0] + GAP, mid - GAP / 2), fz,
+                                         p["front_style"], "front")[0])
+        name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, 2 * x,
+                          handle_at=None, gate=True)
+        self.grow(node.one("carousel"), gate=name, centre=(x - D / 2, (ys[0] + ys[1]) / 2),
+                  radius=min(D, ys[1] - ys[0]) / 2 - t - 0.02, zs=(zs[0] + t, zs[1] - t))
+
+    def carousel(self, node, gate, centre, radius, zs):
+        """A lazy susan: a pole with 2-3 trays turning on a bearing (continuous)."""
+        cx, cy = centre
+        self.extend("carcass", [g.cylinder([cx, cy, zs[0]], [cx, cy, zs[0] + 0.004], 0.04, "hinge", 24),
+                                g.cylinder([cx, cy, zs[1] - 0.004], [cx, cy, zs[1]], 0.04, "hinge", 24)])
+        trays = node.of("tray")
+        z0, z1 = zs[0] + 0.008, zs[1] - 0.008
+        name = self.add("carousel", "carousel", [cab.pole(cx, cy, z0, z1, "hinge")])
+        for k, kid in enumerate(trays):
+            z = z0 + 0.04 + k * (z1 - z0 - 0.1) / len(trays)
+            self.grow(kid, centre=centre, radius=radius, z=z)
+        self.spin("carcass", name, Frame.at((cx, cy, z0)), role="turntable", requires_open=gate)
+
+    def tray(self, node, centre, radius, z):
+        self.extend("carousel", [cab.carousel_tray(*centre, z, radius, "tray")])
+
+    def tilt_front(self, node, fys, fzs, xs):
+        """The sink base's false front: it tips out about its bottom edge, a tray behind it."""
+        p = self.p
+        xf, ft = xs[1] + GAP, p["front_thickness"]
+        pieces, _ = cab.front(xf, xf + ft, fys, fzs, "slab" if p["front_style"] == "slab" else "shaker", "front")
+        y0, y1 = fys[0] + 0.05, fys[1] - 0.05
+        pieces += [g.box_between([xf - 0.06, y0, fzs[0] + 0.015], [xf - 0.002, y1, fzs[0] + 0.018], "tray"),
+                   g.box_between([xf - 0.06, y0, fzs[0] + 0.018], [xf - 0.057, y1, fzs[0] + 0.06], "tray")]
+        if p["has_handles"]:
+            at = Frame.at((xf + ft, sum(fys) / 2, fzs[1] - 0.04), z=(1, 0, 0), x=(0, 1, 0))
+            h = self._handle(min(0.4 * (fys[1] - fys[0]), 0.32)).attached("mount", to=at)
+            pieces += list(h.parts[h.root].pieces)
+        name = self.add("tilt_front", "drawer", pieces)
+        # about the outer bottom edge, +Y: the top tips out towards +X
+        self.hinge("carcass", name, Frame.at((xf + ft, sum(fys) / 2, fzs[0]), z=(0, 1, 0)), upper=TILT)
+
+    def flap(self, node, c, n, ys, fys, zs, fzs, xs):
+        """A lift-up flap hinged at its top edge (Blum AVENTOS HK): the bottom swings out and up."""
+        p = self.p
+        xf, ft = xs[1] + GAP, p["front_thickness"]
+        pieces, xface = cab.front(xf, xf + ft, fys, fzs, p["front_style"], "front", glazed=True)
+        if p["has_handles"]:
+            at = Frame.at((xface, sum(fys) / 2, fzs[0] + 0.04), z=(1, 0, 0), x=(0, 1, 0))
+            h = self._handle(min(0.5 * (fys[1] - fys[0]), 0.32)).attached("mount", to=at)
+            pieces += list(h.parts[h.root].pieces)
+        self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, p["board"], "body")])
+        name = self.add(f"flap_{c}", "door", pieces)
+        # about the inner top edge: hanging closed, the flap's weight keeps it on its rest stop
+        self.hinge("carcass", name, Frame.at((xf, sum(fys) / 2, fzs[1]), z=(0, -1, 0)), upper=FLAP)
 
 
 CATEGORY = Category("kitchen_cabinet", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, CabinetLayout, MATERIALS)

@@ -16,7 +16,9 @@ import math
 
 import numpy as np
 
+from infmob_usd import geometry as g
 from infmob_usd import joints as J
+from infmob_usd.frames import Frame
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
@@ -32,12 +34,22 @@ def plates(p, rng) -> int:
 
 
 GRAMMAR = Grammar("plate_rack", {
-    "plate_rack": Node(label="rack", repeat={"plate": plates}, optional={"feet": 0.5}),
+    "plate_rack": Node(label="rack", repeat={"plate": plates}, optional={"feet": 0.5},
+                       one_of={"cutlery": 0.35, "cups": 0.3, "station": 0.35}, choice="design"),
     "plate": Node(label="plate"),
     "feet": Node(),
+    "cutlery": Node(repeat={"caddy": (1, 2)}),
+    "cups": Node(repeat={"cup": (2, 8)}),
+    "station": Node(repeat={"caddy": (1, 2), "cup": (2, 6)}),
+    "caddy": Node(label="basket"),
+    "cup": Node(one_of={"mug": 0.6, "glass": 0.4}),
+    "mug": Node(label="cup"),
+    "glass": Node(label="glass"),
 })
 """Plates fill ``plates`` of the slots, which ones drawn per rack. ``feet`` are rubber pads under a
-wood or plastic rack; a wire rack always stands on its capped legs."""
+wood or plastic rack; a wire rack always stands on its capped legs. Beside the plates a side
+board carries one or two cutlery caddies that lift out (``cutlery``), mugs and tumblers upside
+down on pegs that lift off (``cups``), or caddies and cups (``station``): the three designs."""
 
 PARAMS = (
     Int("slot_count", "slots (fences of prong pairs = slots + 1)", "", 3, 7),
@@ -56,7 +68,8 @@ PARAMS = (
 )
 
 MATERIALS = {"frame": ("style", {"wire": "chrome"}), "prong": ("style", {"wire": "chrome"}), "plate": "ceramic",
-             "plate_alt": "ceramic", "feet": "rubber:black|soft_black"}
+             "plate_alt": "ceramic", "feet": "rubber:black|soft_black", "caddy": "plastic:white|light_grey|dark_grey",
+             "cutlery": "brushed_metal", "mug": "ceramic", "glass": "glass:clear|clear_blue"}
 
 
 def wire_has_legs(p: dict) -> dict:
@@ -69,6 +82,9 @@ TURN = math.pi / 2  # turn of a plate about its axis (X) either way
 END = 0.03  # rack length beyond the first and last fence
 PAD = 0.006  # rubber pad height under a wood or plastic rack
 WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
+SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
+CADDY_LIFT = 0.2  # a caddy lifts clear of its board
+CUP_LIFT = R.PEG["h"] + 0.025  # a mug lifts off its peg
 
 
 class RackLayout(Layout):
@@ -91,8 +107,21 @@ class RackLayout(Layout):
         else:
             pieces, zs = R.wire_rack(fences, xs, b, rp, p["prong_height"], p["base_height"])
         self.add("rack", "rack", pieces)
+        # the side board: beyond the reach of a plate slid sideways, at the rack's foot
+        lo = np.array([pc.bounds[0] for pc in pieces]).min(0)
+        hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
+        y0 = max(hi[1], r + R.PLATE_SLIDE + SIDE_GAP)
+        design = node.one(node.choice)
+        # two rows of mugs (and the caddy): the board runs past the rack's end where they need it
+        need = len(design.of("caddy")) * (R.CADDY["x"] + 0.02) + math.ceil(len(design.of("cup")) / 2) \
+            * R.CUP_PITCH + 0.015
+        board = ((xs[0], max(xs[1], xs[0] + need)), (y0, y0 + 2 * R.CUP_PITCH + 0.01), lo[2], lo[2] + 0.012)
+        side = g.box_between([xs[0], hi[1] - 0.004, lo[2]], [board[0][1], board[1][1], board[3]], "frame", bevel=0.002)
+        # a wire rack's side board is a chrome-plated steel drip tray of 0.8 mm sheet, not a steel slab
+        self.extend("rack", [side.replace(sheet=0.0008) if p["style"] == "wire" else side])
         if node.one("feet"):
-            self.grow(node.one("feet"), pieces=pieces, xs=xs)
+            self.grow(node.one("feet"), pieces=self.bp.parts["rack"].pieces, xs=xs)
+        self.grow(design, board=board)
         zc = zs + R.SEAT_GAP + r  # plate centre: its lowest point SEAT_GAP above the support
         kids = node.of("plate")
         slots = sorted(int(i) for i in self.rng.choice(n, size=len(kids), replace=False))
@@ -110,6 +139,48 @@ class RackLayout(Layout):
         self.join(J.limited_planar("rack", name, pivot, slide_axes=((0, 0, 1), (0, 1, 0)),
                                    slides=((0.0, LIFT), (-R.PLATE_SLIDE, R.PLATE_SLIDE)), axis=(1, 0, 0),
                                    turn=(-TURN, TURN), role="plate"))
+
+
+    # -- the side board: a cutlery caddy, mugs on pegs ---------------------------------------------------
+    def cutlery(self, node, board):
+        for k, kid in enumerate(node.of("caddy")):
+            self.grow(kid, board=board, k=k)
+
+    def cups(self, node, board, after=0.0):
+        """Two rows of pegs along the board (its length was made for them); a mug or a tumbler upside down on
+        each of them (a row may have one spare peg)."""
+        (x0, x1), (y0, y1), _, z = board
+        rows = (y0 + 0.25 * (y1 - y0), y0 + 0.75 * (y1 - y0))
+        start = x0 + R.CUP_PITCH / 2 + 0.005
+        per_row = math.ceil(len(node.of("cup")) / 2)
+        spots = [(start + i * R.CUP_PITCH, y) for y in rows for i in range(per_row)]
+        self.extend("rack", [R.cup_peg(x, y, z, "frame") for x, y in spots])
+        for k, (kid, (x, y)) in enumerate(zip(node.of("cup"), spots)):
+            self.grow(kid, k=k, at=(x, y, z + 0.002))
+
+    def station(self, node, board):
+        self.cutlery(node, board)
+        self.cups(node, board, after=len(node.of("caddy")) * (R.CADDY["x"] + 0.02))
+
+    def caddy(self, node, board, k=0):
+        (x0, x1), (y0, y1), _, z = board
+        c = R.CADDY
+        yc = (y0 + y1) / 2
+        xe = x1 - 0.01 - k * (c["x"] + 0.02)
+        pieces = R.caddy(xe - c["x"], xe, yc - c["y"] / 2, yc + c["y"] / 2, z + 0.002, "caddy", "cutlery")
+        name = self.add(f"caddy_{k}", "basket", pieces)
+        self.slide("rack", name, Frame.at((xe - c["x"] / 2, yc, z), z=(0, 0, 1)), upper=CADDY_LIFT)
+
+    def cup(self, node, k, at):
+        self.grow(node.one(node.choice), k=k, at=at)
+
+    def mug(self, node, k, at):
+        name = self.add(f"cup_{k}", "cup", R.mug(*at, "mug"))
+        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=CUP_LIFT)
+
+    def glass(self, node, k, at):
+        name = self.add(f"glass_{k}", "glass", R.tumbler(*at, "glass"))
+        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=CUP_LIFT)
 
 
 CATEGORY = Category("plate_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,

@@ -1,6 +1,14 @@
-"""Storage rack: a steel pallet rack / shelving unit with adjustable levels and optional goods.
+"""Storage rack: a pallet rack with adjustable levels, boltless shelving of lidded totes, or a bin rack.
 
-X is depth (the front faces +X), Y is width, Z is up. Frames of two braced uprights stand at
+Three designs (``design``). ``pallet_rack`` is described below. ``shelving``: boltless steel
+shelving (0.35-0.6 m deep, 4-6 fixed levels 0.3-0.45 m apart: Tennsco / IKEA BROR) holding a row
+of plastic storage totes on each level; each tote slides out along +X and a lidded tote's lid
+hinges up about its back edge once the tote is out (``requires_open``). ``bin_rack``: a
+small-parts bin rack (0.35-0.6 m deep, 4-7 levels 0.18-0.24 m apart) whose every level holds a row
+of open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X:
+racks of bins are the large assemblies of the category.
+
+Pallet rack: X is depth (the front faces +X), Y is width, Z is up. Frames of two braced uprights stand at
 both ends and between bays (a rack wider than 2.2 m has two bays). Each level of each bay is a
 pair of beams with a deck (wire mesh, steel panel or wooden board). The bottom level is fixed;
 every other level slides up along +Z, resting just above stop brackets on the uprights (its
@@ -12,8 +20,11 @@ the bay, clear of the uprights. Parts: ``categories/parts/racks.py``.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -32,8 +43,34 @@ def goods(p, rng) -> int:
     return int(p["has_goods"] and rng.random() < p["goods_chance"])
 
 
+def totes(p, rng) -> int:
+    """totes per level of a bay: 2 or 3 boxes side by side (45-60 L totes are 0.4-0.6 m long)"""
+    return int(rng.integers(2, 4))
+
+
+def bins(p, rng) -> int:
+    """bins per level of a bay: as many bin_width bins as fit, at most 6 (wider bins fill a wide bay)"""
+    return max(2, min(MAX_BINS, int(_bay_span(p, SHELF_U) // (p["bin_width"] + BIN_GAP))))
+
+
+def _bay_span(p, u) -> float:
+    return (p["width"] - u) / bays(p, None) - u - 2 * GAP
+
+
 GRAMMAR = Grammar("storage_rack", {
-    "storage_rack": Node(label="frame", repeat={"bay": bays}),
+    "storage_rack": Node(label="frame", one_of={"pallet_rack": 0.4, "shelving": 0.35, "bin_rack": 0.25},
+                         choice="design"),
+    "pallet_rack": Node(repeat={"bay": bays}),
+    "shelving": Node(repeat={"tote_bay": bays}),
+    "tote_bay": Node(repeat={"tote_level": "shelf_levels"}),
+    "tote_level": Node(label="shelf", repeat={"tote": totes}),
+    "tote": Node(label="box", one_of={"lid": 0.7, "open_tote": 0.3}),
+    "lid": Node(label="lid"),
+    "open_tote": Node(),
+    "bin_rack": Node(repeat={"bin_bay": bays}),
+    "bin_bay": Node(repeat={"bin_level": "bin_levels"}),
+    "bin_level": Node(label="shelf", repeat={"bin": bins}),
+    "bin": Node(label="bin"),
     "bay": Node(repeat={"level": "level_count"}),
     "level": Node(label="shelf", repeat={"goods": goods}),
     "goods": Node(one_of={"boxes": 0.4, "pallet": 0.35, "crates": 0.25}),
@@ -56,6 +93,15 @@ PARAMS = (
     Float("goods_chance", "chance that a level holds goods", "", 0.5, 1.0),
     Float("goods_fill", "goods height as a fraction of the clear height of a level", "", 0.35, 0.7),
     Choice("frame_finish", "upright and beam finish", choices=("enamel", "brushed_metal"), weights=(0.7, 0.3)),
+    # boltless shelving: 12-24 in deep, 5 shelves over 72 in (Tennsco Z-line; IKEA BROR 0.4-0.55 m)
+    Float("shelf_depth", "shelving and bin rack depth (X)", "m", 0.35, 0.6),
+    Float("shelf_spacing", "shelving: spacing between levels", "m", 0.3, 0.45),
+    Int("shelf_levels", "shelving: levels", "", 4, 6),
+    # bin racks: AkroBins 30220-30240 are 4-1/8 to 5-1/2 in wide, 5 in high; shelf pitch 6-8 in
+    Float("bin_width", "bin rack: bin width", "m", 0.105, 0.15),
+    Float("bin_spacing", "bin rack: spacing between levels", "m", 0.18, 0.24),
+    Int("bin_levels", "bin rack: levels", "", 4, 7),
+    Float("tote_travel", "how far a tote or bin slides out, as a fraction of its depth", "", 0.5, 0.8),
 )
 
 MATERIALS = {
@@ -64,6 +110,8 @@ MATERIALS = {
     "deck_steel": "brushed_metal", "deck_wood": "wood:birch|maple|oak", "feet": "brushed_metal",
     "box": "painted:off_white|pastel_yellow|light_grey", "crate": "plastic:blue|red|yellow|green|dark_grey",
     "pallet": "wood:birch|maple|oak|teak", "tape": "painted:off_white|light_grey",
+    "tote": "plastic:clear|white|light_grey|dark_grey|blue", "lid": "plastic:blue|red|yellow|green|dark_grey|white",
+    "bin": "plastic:blue|red|yellow|green", "label": "painted:off_white",
 }
 
 GAP = 0.005  # level <-> uprights and stop brackets
@@ -71,32 +119,66 @@ SIDE = 0.03  # goods keep this far from the uprights
 ABOVE_TOP = 0.06  # uprights reach this far above the highest raised level
 HEADROOM = 0.02  # between raised goods or brackets and the level above
 GOODS_LIFT = 0.001  # goods stand this far above the deck
+SHELF_U = 0.04  # boltless shelving / bin rack upright (38-40 mm angle posts)
+SHELF_BEAM = 0.04  # and its beams
+BIN_GAP = 0.004  # between neighbouring bins
+MAX_BINS = 6
+LID_OPEN = 1.9  # a tote lid swings back up to ~110 degrees
 
 
 class RackLayout(Layout):
     def storage_rack(self, node):
+        """The frame of the design (its uprights and, on a pallet rack, stop brackets), then the design."""
         p = self.p
-        W, D, lh, n, u, bh = (p[k] for k in ("width", "depth", "level_height", "level_count", "upright_size",
-                                              "beam_height"))
+        design = node.one(node.choice)
+        n_bays = len(design.children)
+        if design.kind == "pallet_rack":
+            zs, travel = self._pallet_levels()
+            ys = self._frame(n_bays, p["depth"], p["upright_size"], zs[-1] + travel + ABOVE_TOP, zs, brackets=True)
+            self.grow(design, ys=ys, zs=zs, travel=travel)
+            return
+        spacing, count = ((p["shelf_spacing"], p["shelf_levels"]) if design.kind == "shelving"
+                          else (p["bin_spacing"], p["bin_levels"]))
+        zs = [p["bottom_height"] + i * spacing for i in range(count)]
+        ys = self._frame(n_bays, p["shelf_depth"], SHELF_U, zs[-1] + ABOVE_TOP, zs, brackets=False)
+        self.grow(design, ys=ys, zs=zs, clear=spacing - SHELF_BEAM - R.DECK_T[self.deck()])
+
+    def _pallet_levels(self):
+        """Beam tops at rest and the travel every raised level shares."""
+        p = self.p
+        lh, n, bh = p["level_height"], p["level_count"], p["beam_height"]
         dt = R.DECK_T[p["deck"]]
-        zs = [p["bottom_height"] + i * lh for i in range(n)]  # beam tops at rest
+        zs = [p["bottom_height"] + i * lh for i in range(n)]
         clear = lh - bh - dt  # from a deck top to the beams above
         goods_h = p["goods_fill"] * clear
         # raised alone, a level (and its goods) stays below the level above and its stop brackets
         travel = min(lh / 3, clear - goods_h - HEADROOM, clear - GAP - R.BRACKET_H - HEADROOM)
+        return zs, travel
+
+    def _frame(self, n_bays: int, D: float, u: float, top: float, zs: list, brackets: bool) -> np.ndarray:
+        """Upright frames at both ends and between bays (stop brackets under the movable levels)."""
+        p = self.p
         slot = "upright" if p["frame_finish"] == "enamel" else "galvanised"
-        bay_nodes = node.of("bay")
-        ys = np.linspace(-W / 2 + u / 2, W / 2 - u / 2, len(bay_nodes) + 1)
-        frame = R.upright_frame(D, u, zs[-1] + travel + ABOVE_TOP, slot)
+        ys = np.linspace(-p["width"] / 2 + u / 2, p["width"] / 2 - u / 2, n_bays + 1)
+        frame = R.upright_frame(D, u, top, slot)
         pieces = []
         for k, yk in enumerate(ys):
             at = Frame.at((0, yk, 0))
-            sides = tuple(s for s, inner in ((1, k < len(ys) - 1), (-1, k > 0)) if inner)
             pieces += [pc.transformed(at.matrix) for pc in frame]
-            for z in zs[1:]:
-                pieces += [pc.transformed(at.matrix) for pc in R.stop_brackets(D, u, z - bh - GAP, sides)]
+            if brackets:
+                sides = tuple(s for s, inner in ((1, k < len(ys) - 1), (-1, k > 0)) if inner)
+                for z in zs[1:]:
+                    pieces += [pc.transformed(at.matrix) for pc in R.stop_brackets(D, u, z - p["beam_height"] - GAP,
+                                                                                   sides)]
         self.add("frame", "frame", pieces)
-        for b, bay in enumerate(bay_nodes):
+        return ys
+
+    def pallet_rack(self, node, ys, zs, travel):
+        p = self.p
+        u = p["upright_size"]
+        clear = p["level_height"] - p["beam_height"] - R.DECK_T[p["deck"]]
+        goods_h = p["goods_fill"] * clear
+        for b, bay in enumerate(node.of("bay")):
             self.grow(bay, b=b, span=(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP), zs=zs, travel=travel,
                       goods_h=goods_h)
 
@@ -129,6 +211,85 @@ class RackLayout(Layout):
             self.fix(level, name)
 
     boxes = crates = pallet = _row
+
+    # -- shelving of totes, racks of bins --------------------------------------------------------------
+    def shelving(self, node, ys, zs, clear):
+        u = SHELF_U
+        self.node_levels = list(zs)
+        for b, bay in enumerate(node.children):
+            self.grow(bay, b=b, span=(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP), zs=zs, clear=clear)
+
+    bin_rack = shelving
+
+    def tote_bay(self, node, b, span, zs, clear):
+        for i, lv in enumerate(node.children):
+            self.grow(lv, name=f"level_{b}_{i}", span=span, z=zs[i], clear=clear)
+
+    bin_bay = tote_bay
+
+    def deck(self) -> str:
+        return "steel" if self.p["design"] == "bin_rack" else self.p["deck"]
+
+
+    def _shelf(self, name, span, z):
+        p = self.p
+        beam = "beam" if p["frame_finish"] == "enamel" else "galvanised"
+        self.add(name, "shelf", R.level(span, p["shelf_depth"], z, SHELF_BEAM, self.deck(), beam))
+        self.fix("frame", name)
+        return z + R.DECK_T[self.deck()] + GOODS_LIFT
+
+    def tote_level(self, node, name, span, z, clear):
+        """A row of totes, each sliding out along +X on the deck."""
+        p = self.p
+        top = self._shelf(name, span, z)
+        kids = node.of("tote")
+        D = p["shelf_depth"]
+        d = D - 0.06
+        h = min(0.3, 0.6 * clear)  # totes leave room above the lid to lift it once pulled out
+        cells_ = np.linspace(span[0] + 0.01, span[1] - 0.01, len(kids) + 1)
+        # a lid may not rise into the space of the tote above, pulled out with it (both are gates, which the
+        # core never scales): its tip stays 1 cm under the level above
+        above = [lv for lv in self.node_levels if lv > z + 1e-9]
+        room = (min(above) - z - h - R.LID_T - 0.01) if above else None
+        lid_up = LID_OPEN if room is None else math.asin(max(0.05, min(1.0, room / d)))
+        for k, kid in enumerate(kids):
+            self.grow(kid, level=name, name=f"{name}_tote_{k}", xs=(-d / 2, d / 2),
+                      ys=(cells_[k] + 0.008, cells_[k + 1] - 0.008), z=top, h=h, lid_up=lid_up)
+
+    def tote(self, node, level, name, xs, ys, z, h, lid_up=LID_OPEN):
+        self.add(name, "box", R.tote(*xs, *ys, z, h, "tote"))
+        self.slide(level, name, Frame.at((xs[1], sum(ys) / 2, z), z=(1, 0, 0)),
+                   upper=self.p["tote_travel"] * (xs[1] - xs[0]))
+        self.grow(node.one(node.choice), tote=name, xs=xs, ys=ys, z=z + h, up=lid_up)
+
+    def lid(self, node, tote, xs, ys, z, up=LID_OPEN):
+        name = self.add(f"{tote}_lid", "lid", R.tote_lid(*xs, *ys, z, "lid"))
+        # hinged at the back edge, axis -Y: the front edge lifts; it opens once the tote is out
+        self.hinge(tote, name, Frame.at((xs[0], sum(ys) / 2, z), z=(0, -1, 0)), upper=up, role="lid",
+                   requires_open=tote)
+
+    def open_tote(self, node, tote, xs, ys, z, up=None):
+        """An open tote: no lid; a label card clipped on its front wall instead."""
+        yc = sum(ys) / 2
+        self.extend(tote, [g.box_between([xs[1] - R.TOTE_RIM + R.TOTE_WALL, yc - 0.04, z - 0.09],
+                                         [xs[1] - R.TOTE_RIM + R.TOTE_WALL + 0.002, yc + 0.04, z - 0.06], "label")])
+
+    def bin_level(self, node, name, span, z, clear):
+        p = self.p
+        top = self._shelf(name, span, z)
+        kids = node.of("bin")
+        D = p["shelf_depth"]
+        h = min(0.127, clear - 0.02)  # 5 in bins
+        pitch = (span[1] - span[0] - 0.01) / len(kids)
+        for k, kid in enumerate(kids):
+            y0 = span[0] + 0.005 + k * pitch
+            self.grow(kid, level=name, name=f"{name}_bin_{k}", xs=(-D / 2 + 0.01, D / 2 - 0.01),
+                      ys=(y0 + BIN_GAP / 2, y0 + pitch - BIN_GAP / 2), z=top, h=h)
+
+    def bin(self, node, level, name, xs, ys, z, h):
+        self.add(name, "bin", R.louvred_bin(*xs, *ys, z, h, "bin", "label"))
+        self.slide(level, name, Frame.at((xs[1], sum(ys) / 2, z), z=(1, 0, 0)),
+                   upper=self.p["tote_travel"] * (xs[1] - xs[0]))
 
 
 CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS)

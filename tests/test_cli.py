@@ -21,7 +21,7 @@ def test_list_prints_one_category_per_line(capsys):
 def test_params_prints_schema_and_growth(capsys):
     code, out, _ = run(capsys, "params", "kitchen_cabinet")
     assert code == 0
-    assert "width" in out and "U(1, 4)" in out and "growth rules" in out and "drawers (0.40)" in out
+    assert "width" in out and "U(1.2, 4.8)" in out and "growth rules" in out and "drawers (0.32)" in out
 
 
 def test_generate_writes_seeded_folders(capsys, tmp_path):
@@ -38,8 +38,8 @@ def test_generate_writes_seeded_folders(capsys, tmp_path):
 @pytest.mark.parametrize("argv,needle", [
     (["generate", "fridge"], "unknown category 'fridge'; valid categories: bar_chair, beverage_fridge"),
     (["generate", "kitchen_cabinet", "--set", "colour=red"], "unknown parameter 'colour'; valid parameters: width"),
-    (["generate", "kitchen_cabinet", "--set", "width=7"], "expected a number in [1, 4] m"),
-    (["generate", "kitchen_cabinet", "--set", "column_count=two"], "expected an integer in [1, 8]"),
+    (["generate", "kitchen_cabinet", "--set", "width=7"], "expected a number in [1.2, 4.8] m"),
+    (["generate", "kitchen_cabinet", "--set", "column_count=two"], "expected an integer in [1, 10]"),
     (["generate", "kitchen_cabinet", "--set", "width"], "NAME=VALUE"),
     (["generate", "kitchen_cabinet", "--texture-size", "300"], "power of two"),
     (["generate", "kitchen_cabinet", "--count", "0"], "--count must be 1..1000000"),

@@ -13,27 +13,37 @@ def cabinet(request):
     return infmob_usd.generate("kitchen_cabinet", seed=request.param, texture_size=16)
 
 
+def depth(obj):
+    return obj.params["wall_depth" if obj.params["design"] == "wall_run" else "base_depth"]
+
+
 def test_parts_and_labels(cabinet):
     labels = {link.label for link in cabinet.links}
     assert "body" in labels
-    assert labels <= {"body", "drawer", "door"}
+    assert labels <= {"body", "drawer", "door", "sink", "basket", "carousel", "pullout"}
     assert cabinet.links[0].name == "carcass"
 
 
 def test_drawers_slide_out_along_x_and_doors_hinge_about_z(cabinet):
     for j in cabinet.movable_joints:
-        if j.child.startswith("drawer"):
+        if j.child.startswith(("drawer", "inner", "pullout")):
             assert j.type == "prismatic" and np.allclose(j.axis, [1, 0, 0])
-            assert j.lower == 0 and 0 < j.upper <= 0.75 * cabinet.params["depth"]
-        else:
+            assert j.lower == 0 and 0 < j.upper <= 0.9 * depth(cabinet)
+        elif j.child.startswith("door"):
             assert j.type == "revolute" and abs(abs(j.axis[2]) - 1) < 1e-9
             assert j.lower == 0 and 1.2 <= j.upper <= cabinet.params["door_angle"] + 1e-9
+        elif j.child.startswith(("flap", "tilt_front")):  # hinged along a horizontal edge
+            assert j.type == "revolute" and abs(abs(j.axis[1]) - 1) < 1e-9 and j.upper > 0.3
+        else:
+            assert j.child == "carousel" and j.type == "continuous" and np.allclose(np.abs(j.axis), [0, 0, 1])
 
 
 def test_moving_parts_never_enter_the_carcass(cabinet):
     carcass = cabinet.link("carcass")
     rest = cabinet.poses()
     for j in cabinet.movable_joints:
+        if j.type == "continuous":
+            continue
         child = cabinet.link(j.child)
         base = overlap(carcass, rest["carcass"], child, rest[j.child])
         assert base < 1e-9, f"{j.child} is embedded in the carcass at rest"
@@ -44,9 +54,9 @@ def test_moving_parts_never_enter_the_carcass(cabinet):
 
 
 def test_doors_swing_outward(cabinet):
-    front = cabinet.params["depth"] / 2
+    front = depth(cabinet) / 2
     for j in cabinet.movable_joints:
-        if j.type != "revolute":
+        if j.type != "revolute" or j.child == "tilt_front":  # a tilt-out front's tray stays behind it
             continue
         pose = cabinet.poses({j.name: j.upper})[j.child]
         pts = np.vstack([v for p in cabinet.link(j.child).pieces for v, _ in p.hulls()])
@@ -64,15 +74,51 @@ def test_no_two_fronts_touch_at_rest(cabinet):
 
 def test_overrides_shape_the_cabinet():
     obj = infmob_usd.generate("kitchen_cabinet", seed=1, texture_size=16, column_count=2, has_handles=False,
-                              width=1.5)
+                              width=1.5, design="base_run")
     assert obj.params["column_count"] == 2
     assert not any(p.name == "handle" for link in obj.links for p in link.pieces)
     lo, hi = obj.bounds()
-    assert hi[1] - lo[1] == pytest.approx(1.5, abs=0.02)
-    # double doors: a door column wider than 0.6 m gets two leaves
-    wide = infmob_usd.generate("kitchen_cabinet", seed=2, texture_size=16, column_count=1, width=1.4)
-    doors = [link for link in wide.links if link.label == "door"]
-    assert len(doors) in (0, 2)
+    assert hi[1] - lo[1] == pytest.approx(1.5 + 0.01, abs=0.005)  # the worktop overhangs 5 mm each end
+
+
+DESIGN_PARTS = {  # what each design must have among its movable joints' children
+    "base_run": ("drawer", "door", "inner"),
+    "larder": ("pullout", "door"),
+    "corner": ("carousel",),
+    "sink_base": ("tilt_front", "door_sink"),
+    "wall_run": ("door", "flap"),
+}
+
+
+@pytest.mark.parametrize("design", sorted(DESIGN_PARTS))
+def test_each_design_generates_with_its_mechanisms(design):
+    """Forced by ``design=``, each design has its own moving parts over a few seeds; base cabinets stand
+    0.85-0.92 m to the worktop and 0.55-0.62 m deep, wall cabinets are 0.30-0.35 m deep."""
+    seen = set()
+    for seed in range(4):
+        obj = infmob_usd.generate("kitchen_cabinet", seed=seed, texture_size=16, design=design)
+        assert obj.params["design"] == design and obj.movable_joints
+        for j in obj.movable_joints:
+            seen |= {k for k in DESIGN_PARTS[design] if j.child.startswith(k)}
+        lo, hi = obj.bounds()
+        if design in ("base_run", "corner", "sink_base"):
+            top = hi[2] - lo[2] if design != "sink_base" else obj.params["base_height"]
+            assert 0.85 <= top <= 0.92 + 0.3  # a sink's tap rises above the worktop
+            assert obj.params["base_height"] == pytest.approx(
+                max(p.vertices[:, 2].max() for p in obj.link("carcass").pieces if p.material == "top") - lo[2],
+                abs=1e-6)
+        if design == "wall_run":
+            body = np.vstack([p.vertices for p in obj.link("carcass").pieces if p.material == "body"])
+            assert 0.3 <= np.ptp(body[:, 0]) <= 0.35 + 1e-6
+        gated = [j for j in obj.movable_joints if j.requires_open]
+        assert all(j.child.startswith(("inner", "carousel")) for j in gated)
+    assert seen == set(DESIGN_PARTS[design]), seen
+
+
+def test_runs_are_large_assemblies():
+    """A 4 m base run of 8 columns carries many drawers: the heavy tail of the joint-count distribution."""
+    obj = infmob_usd.generate("kitchen_cabinet", seed=3, texture_size=16, design="base_run", width=4.0)
+    assert len(obj.movable_joints) >= 12
 
 
 def test_open_doors_never_meet_the_neighbouring_columns(cabinet):
@@ -90,7 +136,8 @@ def test_open_doors_never_meet_the_neighbouring_columns(cabinet):
                 if link.name != j.child:
                     vol = overlap(cabinet.link(j.child), poses[j.child], link, poses[link.name])
                     assert vol < 1e-8, f"{j.child} meets {link.name} at {q}: {vol * 1e6:.3f} cm^3"
-        assert j.upper <= cabinet.params["door_angle"] + 1e-9
+        if j.child.startswith("door"):
+            assert j.upper <= cabinet.params["door_angle"] + 1e-9
 
 
 @pytest.mark.sim
@@ -105,12 +152,20 @@ def test_in_sapien_drawers_slide_out_and_doors_swing_outward(seed, tmp_path):
     scene, art = load_sapien(folder / f"{folder.name}.urdf")
     joints = {j.name: j for j in art.get_active_joints()}
     links = {link.name: link for link in art.get_links()}
-    front = obj.params["depth"] / 2
+    front = depth(obj) / 2
+    gate = {g.child: g for g in obj.movable_joints}
     for j in obj.movable_joints:
+        if j.type == "continuous":
+            continue
         for other in joints.values():
             other.set_drive_property(stiffness=2e4, damping=2e3)
             other.set_drive_target(0.0)
-        art.set_qpos(np.zeros(art.dof))
+        q0 = np.zeros(art.dof)
+        if j.requires_open:  # an inner drawer: its door stands open first
+            g = gate[j.requires_open]
+            joints[g.name].set_drive_target(g.upper)
+            q0[list(joints).index(g.name)] = g.upper
+        art.set_qpos(q0)
         joints[j.name].set_drive_target(j.upper)
         index = list(joints).index(j.name)
         for _ in range(600):
@@ -124,7 +179,7 @@ def test_in_sapien_drawers_slide_out_and_doors_swing_outward(seed, tmp_path):
         rest = obj.link(j.child).origin + obj.link(j.child).com
         if j.type == "prismatic":  # the drawer came out of the carcass along +X
             assert centre[0] - rest[0] == pytest.approx(j.upper, abs=0.01)
-        else:  # the door's centre of mass swung out in front of the carcass
+        elif j.child != "tilt_front":  # the door's centre of mass swung out in front of the carcass
             assert centre[0] > front + 0.1 and centre[0] > rest[0] + 0.1
 
 

@@ -123,7 +123,8 @@ def test_parts_labels_and_materials(seed):
     assert bp.root == "rack" and bp.parts["rack"].label == "rack"
     names = plates(bp)
     assert 1 <= len(names) <= p["slot_count"]
-    assert {part.label for part in bp.parts.values()} == {"rack", "plate"}
+    extra = {"cutlery": {"basket"}, "cups": {"cup", "glass"}, "station": {"basket", "cup", "glass"}}[p["design"]]
+    assert {"rack", "plate"} < {part.label for part in bp.parts.values()} <= {"rack", "plate"} | extra
     assert bp.materials["plate"] == bp.materials["plate_alt"] == "ceramic"
     assert bp.materials["frame"] == {"wood": "wood", "plastic": "plastic", "wire": "chrome"}[p["style"]]
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
@@ -259,3 +260,27 @@ def test_seeds_vary():
         assert len({p[key] for p, _ in made}) > 1, key
     counts = {len(plates(bp)) for _, bp in made}
     assert len(counts) > 1
+
+
+@pytest.mark.parametrize("design", ["cutlery", "cups", "station"])
+def test_each_design_has_its_side_board_mechanisms(design):
+    """Forced by ``design=``: a caddy that lifts out and / or mugs that lift off their pegs, each a
+    prismatic joint along +Z from the rack, standing on the side board clear of the plates' reach."""
+    for seed in range(3):
+        p, bp = make(seed, design=design)
+        assert p["design"] == design
+        caddies = [n for n, part in bp.parts.items() if part.label == "basket"]
+        mugs = [n for n, part in bp.parts.items() if part.label in ("cup", "glass")]
+        assert (len(caddies) >= 1) == (design != "cups") and (2 <= len(mugs) <= 8) == (design != "cutlery")
+        for n in caddies + mugs:
+            j = by_child(bp, n)
+            d = j.dofs[0]
+            assert j.kind == "prismatic" and j.parent == "rack" and d.axis == pytest.approx((0, 0, 1))
+            assert d.upper >= (pr.CUP_LIFT if n in mugs else pr.CADDY_LIFT) - 1e-9
+            ys = np.vstack([pc.vertices for pc in bp.parts[n].pieces])[:, 1]
+            assert ys.min() > p["plate_radius"] + pr.R.PLATE_SLIDE  # beyond a plate slid sideways
+        for i, a in enumerate(mugs):  # mugs stand apart
+            for b in mugs[i + 1:]:
+                va = np.vstack([pc.vertices for pc in bp.parts[a].pieces])
+                vb = np.vstack([pc.vertices for pc in bp.parts[b].pieces])
+                assert (va.min(0) > vb.max(0)).any() or (vb.min(0) > va.max(0)).any(), (a, b)

@@ -16,7 +16,8 @@ VOL = 1e-7  # m^3, the validator's contact volume
 
 
 def make(seed, **overrides):
-    return make_bp(sr, "storage_rack", seed, **overrides)
+    """The pallet-rack design unless another is asked for."""
+    return make_bp(sr, "storage_rack", seed, **{"design": "pallet_rack", **overrides})
 
 
 def levels(bp):
@@ -150,3 +151,44 @@ def test_seeds_differ():
     params = [sr.CATEGORY.schema.sample(streams("storage_rack", s)["params"]) for s in range(12)]
     for name in ("deck", "level_count", "has_goods", "frame_finish"):
         assert len({p[name] for p in params}) > 1, name
+
+
+@pytest.mark.parametrize("seed", range(3))
+@pytest.mark.parametrize("design", ["shelving", "bin_rack"])
+def test_totes_and_bins_slide_out_and_lids_open_once_out(design, seed):
+    """Forced by ``design=``: every tote or bin slides out along +X from a fixed level, a lid hinges
+    up about its tote's back edge and only once the tote is out; every state stays free."""
+    p, bp = make(seed, design=design)
+    assert p["design"] == design
+    goods = [n for n, part in bp.parts.items() if part.label in ("box", "bin")]
+    lids = [n for n, part in bp.parts.items() if part.label == "lid"]
+    assert len(goods) >= 2 * (p["shelf_levels"] if design == "shelving" else p["bin_levels"])
+    for name in levels(bp):
+        assert by_child(bp, name).kind == "fixed"
+    for n in goods:
+        j = by_child(bp, n)
+        d = j.dofs[0]
+        assert j.kind == "prismatic" and bp.parts[j.parent].label == "shelf"
+        assert d.axis == pytest.approx((1, 0, 0)) and 0 < d.upper < p["shelf_depth"]
+    for n in lids:
+        j = by_child(bp, n)
+        assert j.kind == "revolute" and j.requires_open == j.parent and bp.parts[j.parent].label == "box"
+        assert j.dofs[0].axis == pytest.approx((0, -1, 0))
+    if design == "bin_rack":
+        assert not lids
+    ps = {n: np.eye(4) for n in bp.parts}
+    names = list(bp.parts)
+    for i, a in enumerate(names):  # at rest nothing meets anything but its parent or child
+        for b in names[i + 1:]:
+            if any({j.parent, j.child} == {a, b} for j in bp.joints):
+                continue
+            assert overlap(bp.parts[a], ps[a], bp.parts[b], ps[b]) < VOL, (a, b)
+
+
+def test_shelving_has_lidded_and_open_totes():
+    kinds = set()
+    for seed in range(4):
+        _, bp = make(seed, design="shelving")
+        totes = [n for n, part in bp.parts.items() if part.label == "box"]
+        kinds |= {any(j.parent == t for j in bp.joints) for t in totes}
+    assert kinds == {True, False}

@@ -278,3 +278,118 @@ def pads(pieces, xs) -> list[g.Piece]:
     hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
     return [g.cylinder([x, y, lo[2] - 0.006], [x, y, lo[2] + 0.001], 0.007, "feet", 16)
             for x in (xs[0] + 0.012, xs[1] - 0.012) for y in (lo[1] + 0.012, hi[1] - 0.012)]
+
+
+# -- storage totes and small-parts bins ------------------------------------------------------------------
+TOTE_WALL = 0.003  # polypropylene storage boxes: 2.5-3.5 mm walls (Really Useful Box, IKEA SAMLA)
+TOTE_RIM = 0.008  # the stacking rim around the top
+LID_T = 0.012  # lid: a 3 mm sheet on a 12 mm skirt (visual), one slab for collisions
+LID_SHEET = 0.003
+
+
+def tote(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
+    """A storage box: a bottom, four walls and a stacking rim, with a hand grip on the front wall."""
+    w = TOTE_WALL
+    r = TOTE_RIM
+    pieces = [g.box_between([x0 + r, y0 + r, z], [x1 - r, y1 - r, z + w], slot),
+              g.box_between([x0 + r - w, y0 + r - w, z], [x0 + r, y1 - r + w, z + h - 0.015], slot),
+              g.box_between([x1 - r, y0 + r - w, z], [x1 - r + w, y1 - r + w, z + h - 0.015], slot),
+              g.box_between([x0 + r, y0 + r - w, z], [x1 - r, y0 + r, z + h - 0.015], slot),
+              g.box_between([x0 + r, y1 - r, z], [x1 - r, y1 - r + w, z + h - 0.015], slot),
+              # the rim: four flat bars flaring out to the full footprint at the top
+              g.box_between([x0, y0, z + h - 0.015], [x0 + r + w, y1, z + h], slot, bevel=0.002),
+              g.box_between([x1 - r - w, y0, z + h - 0.015], [x1, y1, z + h], slot, bevel=0.002),
+              g.box_between([x0 + r + w, y0, z + h - 0.015], [x1 - r - w, y0 + r + w, z + h], slot),
+              g.box_between([x0 + r + w, y1 - r - w, z + h - 0.015], [x1 - r - w, y1, z + h], slot)]
+    yc = (y0 + y1) / 2  # a moulded grip on the front wall
+    pieces.append(g.box_between([x1 - r + w, yc - 0.05, z + h - 0.05], [x1 - r + w + 0.006, yc + 0.05, z + h - 0.03],
+                                slot))
+    return pieces
+
+
+def tote_lid(x0: float, x1: float, y0: float, y1: float, z: float, slot: str) -> list[g.Piece]:
+    """A flat lid lying on a tote's rim at ``z``: a slab with a raised label panel."""
+    return [g.box_between([x0, y0, z], [x1, y1, z + LID_T], slot, bevel=0.003).replace(sheet=LID_SHEET),
+            g.box_between([x0 + 0.3 * (x1 - x0), y0 + 0.2 * (y1 - y0), z + LID_T],
+                          [x1 - 0.1 * (x1 - x0), y1 - 0.2 * (y1 - y0), z + LID_T + 0.002], slot)]
+
+
+def louvred_bin(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str,
+                label: str) -> list[g.Piece]:
+    """A small-parts bin with an open hopper front: a bottom, sides sloping down to a low front
+    wall, a back wall, and a label holder (Akro-Mils AkroBins: 2 mm walls, front at ~45 % of the
+    height)."""
+    w = 0.002
+    hf = 0.45 * h
+    xm = x1 - 0.35 * (x1 - x0)  # the sides slope down from here to the front
+    pieces = [g.box_between([x0, y0, z], [x1, y1, z + w], slot),
+              g.box_between([x0, y0, z + w], [x0 + w, y1, z + h], slot),
+              g.box_between([x1 - w, y0 + w, z + w], [x1, y1 - w, z + hf], slot)]
+    for ya, yb in ((y0, y0 + w), (y1 - w, y1)):
+        pieces += [g.box_between([x0 + w, ya, z + w], [xm, yb, z + h], slot),
+                   g.from_trimesh(g.convex_hull([[xm, ya, z + w], [xm, yb, z + w], [xm, ya, z + h], [xm, yb, z + h],
+                                                 [x1, ya, z + w], [x1, yb, z + w], [x1, ya, z + hf],
+                                                 [x1, yb, z + hf]]), slot)]
+    yc = (y0 + y1) / 2
+    pieces.append(g.box_between([x1, yc - 0.3 * (y1 - y0), z + hf - 0.03], [x1 + 0.003, yc + 0.3 * (y1 - y0),
+                                                                             z + hf - 0.005], label))
+    return pieces
+
+
+# -- dish-rack accessories: cutlery caddy, cups on pegs ------------------------------------------------------
+# a drainer's cutlery caddy: ~11 x 13 cm, 14 cm high, 3 compartments (simplehuman, Joseph Joseph drainers)
+CADDY = dict(x=0.11, y=0.13, h=0.14, wall=0.003)
+# a 300 ml mug: 80-85 mm across, 95 mm high, 4 mm stoneware wall (catalogue sizes)
+MUG = dict(r=0.041, h=0.095, wall=0.004)
+PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail
+CUP_PITCH = 0.11  # centre to centre along a row of cups (a mug and its handle: 82 + 22 mm)
+
+
+def caddy(x0: float, x1: float, y0: float, y1: float, z: float, slot: str, metal: str) -> list[g.Piece]:
+    """An open cutlery caddy with two dividers and a few knives, forks and spoons standing in it."""
+    w, h = CADDY["wall"], CADDY["h"]
+    pieces = [g.box_between([x0, y0, z], [x1, y1, z + w], slot),
+              g.box_between([x0, y0, z + w], [x0 + w, y1, z + h], slot, bevel=0.001),
+              g.box_between([x1 - w, y0, z + w], [x1, y1, z + h], slot, bevel=0.001),
+              g.box_between([x0 + w, y0, z + w], [x1 - w, y0 + w, z + h], slot, bevel=0.001),
+              g.box_between([x0 + w, y1 - w, z + w], [x1 - w, y1, z + h], slot, bevel=0.001)]
+    ys = np.linspace(y0, y1, 4)
+    for yd in ys[1:-1]:  # dividers
+        pieces.append(g.box_between([x0 + w, yd - w / 2, z + w], [x1 - w, yd + w / 2, z + 0.8 * h], slot))
+    for k, (ya, yb) in enumerate(zip(ys[:-1], ys[1:])):  # a handle or two standing in each compartment
+        for i, xc in enumerate(np.linspace(x0 + 0.03, x1 - 0.03, 2)):
+            yc = (ya + yb) / 2
+            top = z + h + 0.05 + 0.01 * ((k + i) % 2)
+            pieces.append(g.box_between([xc - 0.0075, yc - 0.002, z + w], [xc + 0.0075, yc + 0.002, top], metal,
+                                        bevel=0.001))
+    return pieces
+
+
+def cup_peg(x: float, y: float, z: float, slot: str) -> g.Piece:
+    return g.cylinder([x, y, z - 0.001], [x, y, z + PEG["h"]], PEG["r"], slot, 12)
+
+
+def mug(x: float, y: float, z: float, slot: str, handle_dir: float = 1.0) -> list[g.Piece]:
+    """A mug standing upside down with its rim at ``z`` (a hollow wall, its base on top, a handle
+    on the ``handle_dir`` side along +-x)."""
+    r, h, t = MUG["r"], MUG["h"], MUG["wall"]
+    wall = g.shell([(r, 0.0), (r * 1.02, h - t)], t, slot, center=(x, y, z), sections=32)
+    base = g.cylinder([x, y, z + h - t], [x, y, z + h], r * 1.02, slot, 32)
+    s = handle_dir
+    hx0, hx1 = sorted((x + s * (r - 0.002), x + s * (r + 0.022)))
+    bar0, bar1 = sorted((x + s * (r + 0.016), x + s * (r + 0.022)))
+    handle = [g.box_between([hx0, y - 0.005, z + 0.018], [hx1, y + 0.005, z + 0.026], slot, bevel=0.002),
+              g.box_between([hx0, y - 0.005, z + h - 0.03], [hx1, y + 0.005, z + h - 0.022], slot, bevel=0.002),
+              g.box_between([bar0, y - 0.005, z + 0.026], [bar1, y + 0.005, z + h - 0.03], slot, bevel=0.002)]
+    return [wall, base] + handle
+
+
+# a 300 ml tumbler: 70-75 mm across, 100-110 mm high, 3 mm wall on an 8 mm base (catalogue sizes)
+TUMBLER = dict(r=0.036, h=0.105, wall=0.003, base=0.008)
+
+
+def tumbler(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
+    """A tumbler standing upside down with its rim at ``z``: a thin wall narrowing to a thick base."""
+    r, h, t, b = TUMBLER["r"], TUMBLER["h"], TUMBLER["wall"], TUMBLER["base"]
+    wall = g.shell([(r, 0.0), (0.88 * r, h - b)], t, slot, center=(x, y, z), sections=32)
+    return [wall, g.cylinder([x, y, z + h - b], [x, y, z + h], 0.88 * r, slot, 32)]
