@@ -194,7 +194,9 @@ def pullout_spout(reach: float, r: float, z0: float, height: float, z_low: float
     head = [g.revolve([(0, 0), (0.75 * rh, 0), (rh, 0.012), (rh, 0.06), (0.8 * rh, 0.07), (0, 0.07)], "metal",
                       sections=32).transformed(Frame.at((x1, 0, top), z=(1, 0, 0)).matrix),
             g.cylinder([x1 + 0.066, 0, top], [x1 + 0.0705, 0, top], 0.65 * rh, "aerator", 24),
-            g.cylinder([x1 - travel - 0.01, 0, top], [x1, 0, top], max(r - TUBE - 0.0015, 0.002), "seal", 12)]
+            # the hose inside the arm: seen when the head is out, no collision (the arm's hulls are solid)
+            g.cylinder([x1 - travel - 0.01, 0, top], [x1, 0, top], max(r - TUBE - 0.0015, 0.002), "seal", 12
+                       ).replace(convex=[])]
     return tube(pts, r), head, Frame.at((x1, 0, top), z=(1, 0, 0)), travel
 
 
