@@ -45,13 +45,13 @@ GRAMMAR = Grammar("toilet", {
     "tank_lid": Node(label="lid"),
     "button": Node(label="button"),
     "lever": Node(label="lever"),
-    "dual": Node(repeat={"lid_key": 2}),
-    "lid_key": Node(label="button"),
+    "dual": Node(repeat={"flush_key": 2}),
 })
 """Designs: close-coupled (a cistern on the pan's deck), one-piece (a low cistern on a skirted pan),
 back-to-wall (a skirted pan against a furniture unit hiding the cistern; dual-flush plate on the unit),
 wall-hung (the pan bolted to a boxed-in frame, off the floor; dual-flush plate on the frame). A cistern
-flushes by a front button, a side trip lever or two keys on its lid (dual flush)."""
+flushes by a front button, a side trip lever or two front buttons (dual flush: small and large; pressed
+horizontally, so gravity does not press them)."""
 
 PARAMS = (
     Float("seat_height", "height of the seat top above the floor (the toilet's size)", "m", 0.40, 0.50),
@@ -90,6 +90,12 @@ PRESS = 0.006  # flush button travel
 LEVER_TURN = math.pi / 4
 TAB = 0.035  # the seat's rear tab, from the rim's back to the hinge line
 FLUSH_BELOW = 0.06  # the flush control sits this far below the cistern's top
+
+
+def DUAL_Y(rb: float) -> tuple[float, float]:  # noqa: N802
+    """The y of a dual flush's small and large buttons on the cistern front (their rings 4 mm apart)."""
+    d = rb + S.CLEAR + 0.008 + 0.002
+    return (-d, d)
 
 
 SHEET = 0.006  # a boxed frame's and a unit's boards count as shells this thick (hollow, for the mass)
@@ -169,33 +175,24 @@ class ToiletLayout(Layout):
         z1 = z0 + tall - p["lid_thickness"] - S.GAP  # top of the walls
         zf = z1 - FLUSH_BELOW
         rb = p["button_radius"]
-        holes = [(-rb - S.CLEAR, zf - rb - S.CLEAR, rb + S.CLEAR, zf + rb + S.CLEAR)] if node.choice == "button" else []
+        ys_b = {"button": (0.0,), "dual": DUAL_Y(rb)}.get(node.choice, ())
+        holes = [(y - rb - S.CLEAR, zf - rb - S.CLEAR, y + rb + S.CLEAR, zf + rb + S.CLEAR) for y in ys_b]
         self.add("tank", "tank", S.cistern(xs, ys, z0, z1, holes))
         self.fix("base", "tank")
-        keys = node.choice == "dual"
-        self.grow(node.one("tank_lid"), xs=xs, ys=ys, z=z1 + S.GAP, keys=keys)
-        if keys:
-            self.grow(node.one("dual"), keys=self._keys, z_top=z1 + S.GAP + p["lid_thickness"])
-        else:
-            self.grow(node.one(node.choice), xs=xs, ys=ys, z=zf)
+        self.grow(node.one("tank_lid"), xs=xs, ys=ys, z=z1 + S.GAP)
+        self.grow(node.one(node.choice), xs=xs, ys=ys, z=zf)
 
-    def tank_lid(self, node, xs, ys, z, keys=False):
-        t = self.p["lid_thickness"]
-        if keys:
-            pieces, self._keys = S.lid_with_keys(xs, ys, z, t, self.p["button_radius"])
-        else:
-            pieces = S.cistern_lid(xs, ys, z, t)
-        self.add("tank_lid", "lid", pieces)
+    def tank_lid(self, node, xs, ys, z):
+        self.add("tank_lid", "lid", S.cistern_lid(xs, ys, z, self.p["lid_thickness"]))
         self.slide("tank", "tank_lid", Frame.at((xs[1], 0.0, z)), upper=LID_LIFT, role="lid")
 
-    def dual(self, node, keys, z_top):
-        for kid, (side, (x, y)) in zip(node.of("lid_key"), zip(("small", "large"), keys), strict=True):
-            self.grow(kid, side=side, x=x, y=y, z_top=z_top)
-
-    def lid_key(self, node, side, x, y, z_top):
-        r, depth = self.p["button_radius"], self.p["lid_thickness"] - 0.005
-        name = self.add(f"flush_{side}", "button", S.top_key(x, y, z_top, r, depth))
-        self.slide("tank_lid", name, Frame.at((x, y, z_top + 0.002), z=(0, 0, -1)), upper=PRESS, role="button")
+    def dual(self, node, xs, ys, z):
+        rb, x_tf = self.p["button_radius"], xs[1]
+        for kid, side, y in zip(node.of("flush_key"), ("small", "large"), DUAL_Y(rb), strict=True):
+            self.extend("tank", [S.flush_ring(S.on_face(x_tf, z).shifted((0, y, 0)), rb)])
+            pieces = [pc.transformed(Frame.at((0, y, 0)).matrix)
+                      for pc in S.flush_button(x_tf, S.CISTERN_WALL + 0.004, z, rb)]
+            self.grow(kid, part="tank", side=side, pieces=pieces, z=z)
 
     def button(self, node, xs, ys, z):
         rb, x_tf = self.p["button_radius"], xs[1]

@@ -206,21 +206,3 @@ def flush_plate(x_face: float, z: float) -> tuple[list[g.Piece], list[tuple[str,
         keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR], [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR],
                                           "chrome", bevel=0.0015)]))
     return plate, keys
-
-
-def lid_with_keys(xs, ys, z: float, thickness: float, r: float) -> tuple[list[g.Piece], list[tuple[float, float]]]:
-    """A cistern lid with two round key openings on its top (dual flush, 'push-button' lids of close-coupled
-    cisterns); returns the lid and the key centres (x, y)."""
-    (x_tb, x_tf), (y0, y1) = xs, ys
-    xc = (x_tb + x_tf) / 2
-    centres = [(xc, -1.15 * r - 0.002), (xc, 1.15 * r + 0.002)]
-    holes = [(x - r - CLEAR, y - r - CLEAR, x + r + CLEAR, y + r + CLEAR) for x, y in centres]
-    pieces = cistern_lid(xs, ys, z, thickness)
-    ov = LID["overhang"]
-    pieces[0] = g.panel([x_tb - ov, y0 - ov, z], [x_tf + ov, y1 + ov, z + thickness], "ceramic", "z", holes=holes)
-    return pieces, centres
-
-
-def top_key(x: float, y: float, z_top: float, r: float, depth: float) -> list[g.Piece]:
-    """A round key in a lid opening, 2 mm proud of the lid top ``z_top``, reaching ``depth`` into it."""
-    return [g.cylinder([x, y, z_top - depth], [x, y, z_top + 0.002], r, "chrome", 32)]
