@@ -193,6 +193,8 @@ class DoorLayout(Layout):
 
     def thumb_turn(self, node, xs, y, z, inward, leaf):
         zt = z + P.THUMB["above"]
+        if self.p["handle"] == "pull":  # above the bar pull's top post
+            zt = z + max(P.THUMB["above"], self.p["pull_length"] / 2 + P.THUMB["rose"] + 0.02)
         self.extend(leaf, P.thumb_rose(xs[0], -1.0, y, zt, key=False) + P.thumb_rose(xs[1], 1.0, y, zt, key=True))
         start = xs[0] - P.ROSE[1] - GAP
         name = self.add(f"thumb_turn{leaf[4:]}", "knob", P.thumb_turn(start, -1.0, y, zt))

@@ -234,3 +234,11 @@ def test_seeds_differ():
     params = [make_bp(mod, "door", s)[0] for s in range(12)]
     for name in ("design", "handle", "leaf_style", "hinge_side", "glazing"):
         assert len({p[name] for p in params}) > 1, name
+
+
+def test_thumb_turn_clears_a_bar_pull():
+    """The thumb-turn sits above a long bar pull's top post (door seed 8 had it embedded in the pull)."""
+    _, bp = make(8, design="single", handle="pull", has_thumb_turn=True, pull_length=0.45)
+    d = by_child(bp, "thumb_turn").dofs[0]
+    for q in (0.0, d.upper):
+        assert overlap(bp.parts["thumb_turn"], dof_motion(d, q), bp.parts["leaf"], np.eye(4)) < VOLUME_TOL
