@@ -68,6 +68,9 @@ def _parser() -> argparse.ArgumentParser:
                    help="an object folder or a folder of them (with --sweep: category ids, or `all`)")
     v.add_argument("--sim", action="store_true", help="add the physical-plausibility checks")
     v.add_argument("--usd-only", action="store_true", help="skip every simulator check")
+    v.add_argument("--mass", action="store_true",
+                   help="add the mass check: total and moving-part masses within the ranges of real products"
+                   " (validate/mass_ranges.csv)")
     v.add_argument("--simready", action="store_true",
                    help="add NVIDIA's validators: SimReady Robotics-Prop 4.0.0, Robot-Body 3.0.0 FET_024/FET_022,"
                    " omniverse-asset-validator defaults (pip install -e '.[simready]')")
@@ -348,7 +351,8 @@ def cmd_validate(args) -> int:
             return _fail(f"no object folders (with metadata.json) under {' '.join(paths)}")
         rows = []
         n_ok = 0
-        for folder, report in _validate_all(folders, not args.usd_only, args.sim, args.workers, args.simready):
+        for folder, report in _validate_all(folders, not args.usd_only, args.sim, args.workers, args.simready,
+                                            args.mass):
             n_ok += report.ok
             status = "ok  " if report.ok else "FAIL"
             fails = "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
@@ -371,7 +375,7 @@ def cmd_validate(args) -> int:
             shutil.rmtree(tmp, ignore_errors=True)
 
 
-def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False):
+def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False, mass: bool = False):
     """``(folder, report)`` in folder order; a process pool when ``workers > 1``.
 
     Checks never raise (:func:`~infmob_usd.validate.result.guarded`); a worker that dies (a
@@ -384,7 +388,7 @@ def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: boo
     from .validate import ObjectReport, validate_object
     from .validate.result import CheckResult, one_line
 
-    check = partial(validate_object, sim=sim, physics=physics, simready=simready)
+    check = partial(validate_object, sim=sim, physics=physics, simready=simready, mass=mass)
     if workers <= 1 or len(folders) <= 1:
         for folder in folders:
             yield folder, check(folder)

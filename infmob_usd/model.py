@@ -20,7 +20,7 @@ from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
 from .geometry import Piece
-from .mass import DUMMY_INERTIA, DUMMY_MASS, inertial
+from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial
 from .physical import dynamics
 from .rotation import motion
 
@@ -202,4 +202,10 @@ def build(bp: Blueprint, densities: dict[str, float]) -> tuple[list[Link], list[
     missing = set(bp.parts) - reached
     if missing:
         raise ModelError(f"parts not connected to the root {root!r}: {sorted(missing)}")
+    children: dict[str, list[str]] = {}
+    for j in joints:
+        children.setdefault(j.parent, []).append(j.child)
+    floored = floor_chain_inertia({link.name: link.inertia for link in links}, children)
+    for link in links:
+        link.inertia = floored[link.name]
     return links, joints

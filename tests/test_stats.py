@@ -53,6 +53,16 @@ def test_dataset_stats_on_generated_objects(tmp_path, capsys):
     trees = [tree_from_metadata(m) for m in metas]
     expected = (ted(trees[0], trees[1]) + ted(trees[0], trees[2]) + ted(trees[1], trees[2])) / 3
     assert abs(s["mean_ted"] - expected) < 1e-12
+    assert s["distinct_trees"] == len({t.bracket() for t in trees})
+    assert s["no_movable_joint"] == sum(1 for j in joints if j == 0)
+    # the reference's convention, counted from the URDF files themselves: every joint element, one
+    # abstract fixed link per revolute or continuous joint, and the world joint
+    import xml.etree.ElementTree as ET
+    ref = []
+    for urdf in sorted(tmp_path.rglob("*.urdf")):
+        js = ET.parse(urdf).getroot().findall("joint")
+        ref.append(len(js) + sum(j.get("type") in ("revolute", "continuous") for j in js) + 1)
+    assert abs(s["ref_mean_joints"] - sum(ref) / 3) < 1e-12 and s["ref_mean_joints"] > s["mean_joints"]
     assert main(["stats", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     assert "kitchen_cabinet" in out and "Infinite Mobility" in out and "78.62" in out

@@ -4,6 +4,8 @@
 
 * always: the USD checks (:mod:`.usd_check`): every ``pxr.UsdValidation`` validator,
   the UsdPhysics parse, joint-frame agreement, referenced files, USD/URDF agreement;
+* with ``mass``: the total and every moving part's mass within the ranges of real products in
+  ``mass_ranges.csv`` (:mod:`.masses`);
 * with ``sim`` (default): SAPIEN physics on CPU (:mod:`.sim`): the URDF loads
   (``sapien_load``) and every movable joint driven alone reaches both limits (``reach``);
 * with ``simready``: NVIDIA's validators (:mod:`.simready`): SimReady Robotics-Prop 4.0.0, the
@@ -74,7 +76,7 @@ def _skipped(names, fmt: str) -> list[CheckResult]:
 
 
 def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
-                    simready: bool = False) -> ObjectReport:
+                    simready: bool = False, mass: bool = False) -> ObjectReport:
     """Validate one object folder (see the module docstring for what each flag adds).
 
     Every check runs under :func:`~.result.guarded`: one that raises is a failed check, never a crash.
@@ -97,6 +99,10 @@ def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
             report.checks += guarded("simready", check_simready, folder)
     else:
         report.checks += _skipped(["usd"] + (["simready"] if simready else []), "usd")
+    if mass:
+        from .masses import check_mass
+
+        report.checks += guarded("mass", check_mass, folder)
     sapien = ["reach", "rest"] if physics else ["reach"]
     if (sim or physics) and "urdf" in present:
         from .sim import check_sapien

@@ -239,7 +239,7 @@ def card(meta: dict) -> dict:
 
 def gallery_stats(metas: list[dict], max_pairs: int = 2000) -> dict:
     """``infmob stats`` figures (validate/stats.py) plus a movable-joint-count histogram per category."""
-    from .stats import REFERENCE, Group, tree_from_metadata
+    from .stats import REFERENCE, Group, reference_count, tree_from_metadata
 
     groups: dict[str, Group] = {}
     overall = Group("overall")
@@ -249,8 +249,11 @@ def gallery_stats(metas: list[dict], max_pairs: int = 2000) -> dict:
         n = sum(kinds.values())
         tree = tree_from_metadata(meta)
         cat = meta.get("category", "?")
+        ref = reference_count(meta) if "joints" in meta else None
         for g in (groups.setdefault(cat, Group(cat)), overall):
             g.joints.append(n)
+            if ref is not None:
+                g.ref_joints.append(ref)
             g.kinds.update(kinds)
             g.trees.append(tree)
         hist.setdefault(cat, Counter())[n] += 1
