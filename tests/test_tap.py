@@ -120,7 +120,9 @@ def test_parts_labels_and_materials(tap_bp):
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
     assert used <= set(bp.materials)
     assert bp.materials["metal"] in ("chrome", "brushed_metal", "enamel:black")
-    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
+    # every piece collides but the pull-out hose, drawn inside the spout's solid arm hulls
+    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces
+               if not (part.label == "spray_head" and pc.material == "seal"))
 
 
 def test_size(tap_bp):
