@@ -1,4 +1,8 @@
-"""Door: a hinged leaf in a fixed frame, with a knob, a lever or a pull on both faces.
+"""Door: a single or double hinged leaf or a sliding barn door in a fixed frame, with handles.
+
+Designs (``design``): ``single`` (optionally latched), ``double`` (a French pair), ``sliding`` (a leaf
+hung on two wheels from a rail above the opening, sliding along Y). What follows describes the hinged
+leaves.
 
 X is depth, Y is width, Z is up. The frame (the root) stands around x = 0 on the floor: two jambs
 and a head as deep as the wall, an optional threshold, stops behind the leaf and architraves on
@@ -24,16 +28,28 @@ from .parts import doors as P
 from .parts import hardware
 
 GRAMMAR = Grammar("door", {
-    "door": Node(label="frame", required=("leaf",), optional={"threshold": 0.4}),
+    "door": Node(label="frame", optional={"threshold": 0.4},
+                 one_of={"single": 0.5, "double": 0.25, "sliding": 0.25}, choice="design"),
     "threshold": Node(),
-    "leaf": Node(label="leaf", one_of={"knob": 1 / 3, "lever": 1 / 3, "pull": 1 / 3}, choice="handle"),
+    "single": Node(required=("leaf",), optional={"latch": 0.7}),
+    "double": Node(repeat={"leaf": 2}),
+    "sliding": Node(required=("slider",)),
+    "slider": Node(label="leaf", repeat={"roller": 2}),
+    "roller": Node(label="wheel"),
+    "leaf": Node(label="leaf", one_of={"knob": 1 / 3, "lever": 1 / 3, "pull": 1 / 3}, choice="handle",
+                 optional={"thumb_turn": 0.4}),
+    "latch": Node(label="latch"),
+    "thumb_turn": Node(label="knob"),
     "knob": Node(repeat={"knob_face": 2}),
     "knob_face": Node(label="knob"),
     "lever": Node(repeat={"lever_face": 2}),
     "lever_face": Node(label="lever"),
     "pull": Node(),
 })
-"""Knobs and levers come in pairs, one on each face; a pull is fixed to the leaf."""
+"""Designs: a single hinged leaf (with a latch bolt thrown into the jamb's strike: the leaf opens once it
+is drawn back), a double (French) pair hinged on both jambs, or a sliding barn-door leaf hung on two
+wheels from a rail above the opening. Knobs and levers come in pairs, one on each face; a pull is fixed
+to the leaf; a thumb-turn sits on the back face above the handle (a key escutcheon on the front)."""
 
 PARAMS = (
     Float("leaf_width", "leaf width (Y)", "m", 0.8, 1.0),
@@ -51,6 +67,9 @@ PARAMS = (
     Float("lever_length", "lever grip length", "m", 0.1, 0.14),
     Float("knob_radius", "knob radius", "m", 0.025, 0.032),
     Float("pull_length", "bar pull length", "m", 0.25, 0.45),
+    Float("pair_fraction", "each leaf of a double door as a fraction of leaf_width (0.6-0.75 m leaves)", "",
+          0.68, 0.75),
+    Float("wheel_radius", "barn-door hanger wheel radius", "m", 0.03, 0.045),
     Choice("leaf_finish", "leaf material", choices=("wood", "painted")),
     Choice("frame_finish", "frame material: the leaf's or painted white", choices=("match", "white"),
            weights=(0.6, 0.4)),
@@ -77,49 +96,156 @@ LEVER_TURN = math.pi / 4
 PULL = hardware.HandleSize(standoff=0.04, bar_radius=0.012, post_radius=0.0096, inset=0.02)
 
 
+SLIDE_GAP = 0.01  # a sliding leaf's back face in front of the header board
+HEADER = 0.02  # barn-door header board thickness (on the architraves)
+RAIL_CLEAR = 0.0015  # hanger wheels ride this far above the rail (they never touch it at rest)
+
+
 class DoorLayout(Layout):
     def door(self, node):
         p = self.p
+        design = node.choice
         W, H, T = p["leaf_width"], p["leaf_height"], p["leaf_thickness"]
         Dj = p["frame_depth"]
         left = p["hinge_side"] == "left"
-        gap_lock = GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
         th = THRESHOLD if node.one("threshold") else 0.0
         z0 = th + FLOOR_GAP
-        oy0 = -W / 2 - (GAP if left else gap_lock)
-        oy1 = W / 2 + (gap_lock if left else GAP)
-        shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
-        self.add("frame", "frame", P.frame(Dj / 2, Dj, (oy0 + shift, oy1 + shift), z0 + H + GAP, p["jamb_width"],
-                                           p["casing_width"], 0.0, Dj / 2 - T - GAP))
+        if design == "double":
+            Wl = p["pair_fraction"] * W
+            gap_mid = GAP + T * T / Wl  # both back corners swing out at the meeting stiles
+            oy0, oy1 = -Wl - gap_mid / 2 - GAP, Wl + gap_mid / 2 + GAP
+            leaves = [((-Wl - gap_mid / 2, -gap_mid / 2), "left"), ((gap_mid / 2, Wl + gap_mid / 2), "right")]
+            shift = 0.0
+        elif design == "sliding":  # the leaf covers the opening and its architraves
+            trim = p["casing_width"] + P.REVEAL + 0.015
+            oy0, oy1 = -W / 2 + trim, W / 2 - trim
+            shift, H_open = 0.0, H - trim - FLOOR_GAP
+        else:
+            gap_lock = GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
+            oy0 = -W / 2 - (GAP if left else gap_lock)
+            oy1 = W / 2 + (gap_lock if left else GAP)
+            shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
+        head = z0 + (H_open if design == "sliding" else H) + GAP
+        frame = P.frame(Dj / 2, Dj, (oy0 + shift, oy1 + shift), head, p["jamb_width"], p["casing_width"], 0.0,
+                        Dj / 2 - T - GAP)
+        latch = None
+        if design == "single" and node.one("single").one("latch"):
+            y_lock, out = ((W / 2 + shift), 1.0) if left else ((-W / 2 + shift), -1.0)
+            latch = P.latch_bolt((Dj / 2 - T, Dj / 2), y_lock, out, p["handle_height"])
+            k = 1 if left else 0  # the lock-side jamb
+            frame[k] = P.mortise(frame[k], *latch[2])
+            jamb_face = (oy1 if left else oy0) + shift
+            frame.append(P.strike_plate(Dj / 2 - T / 2, jamb_face, out, p["handle_height"]))
+        self.add("frame", "frame", frame)
         if th:
             self.grow(node.one("threshold"), ys=(oy0 + shift, oy1 + shift))
-        self.grow(node.one("leaf"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=(z0, z0 + H))
+        zs = (z0, z0 + H)
+        if design == "single":
+            self.grow(node.one("single"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs,
+                      latch=latch)
+        elif design == "double":
+            self.grow(node.one("double"), xs=(Dj / 2 - T, Dj / 2), leaves=leaves, zs=zs)
+        else:
+            x0 = Dj / 2 + P.CASING_T + HEADER + SLIDE_GAP
+            self.grow(node.one("sliding"), xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(FLOOR_GAP, FLOOR_GAP + H),
+                      travel=(oy1 - oy0) + 0.03)
 
     def threshold(self, node, ys):
         Dj = self.p["frame_depth"]
         self.extend("frame", [g.box_between([-Dj / 2, ys[0], 0.0], [Dj / 2, ys[1], THRESHOLD], "frame", bevel=0.004)])
 
-    def leaf(self, node, xs, ys, zs):
+    def single(self, node, xs, ys, zs, latch):
+        side = self.p["hinge_side"]
+        line = self.grow(node.one("leaf"), xs=xs, ys=ys, zs=zs, side=side, name="leaf", latch=latch)
+        if latch:  # the bolt's joint first: the leaf's hinge requires it drawn back
+            self.grow(node.one("latch"), bolt=latch[0], out=1.0 if side == "left" else -1.0)
+            self.hinge("frame", "leaf", line, upper=OPENS, requires_open="latch")
+
+    def double(self, node, xs, leaves, zs):
+        for kid, (ys, side), name in zip(node.of("leaf"), leaves, ("leaf", "leaf_2"), strict=True):
+            self.grow(kid, xs=xs, ys=ys, zs=zs, side=side, name=name, latch=None)
+
+    def leaf(self, node, xs, ys, zs, side, name, latch):
         p = self.p
-        left = p["hinge_side"] == "left"
+        left = side == "left"
         y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
         inward = 1.0 if left else -1.0  # from the hinge edge across the leaf
         zk = p["handle_height"]
         pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], p["glazing"], p["stile_width"], p["panel_count"])
-        self.add("leaf", "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
-        self.hinge("frame", "leaf", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=OPENS)
-        self.grow(node.one(node.choice), xs=xs, y=y_lock - inward * BACKSET, z=zk, inward=inward)
+        if latch:
+            pieces[0] = P.mortise(pieces[0], *latch[1])
+        self.add(name, "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
+        line = Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1))
+        if not latch:
+            self.hinge("frame", name, line, upper=OPENS)
+        where = dict(xs=xs, y=y_lock - inward * BACKSET, z=zk, inward=inward, leaf=name)
+        self.grow(node.one(node.choice), **where)
+        if node.one("thumb_turn"):
+            self.grow(node.one("thumb_turn"), **where)
+        return line
 
-    def pull(self, node, xs, y, z, inward):
+    def latch(self, node, bolt, out):
+        self.add("latch", "latch", bolt)
+        # drawn back into its mortise by the handle (a 13 mm throw), horizontal: still under gravity
+        y, z = bolt[0].bounds.mean(0)[1:]
+        x = bolt[0].bounds.mean(0)[0]
+        self.slide("leaf", "latch", Frame.at((x, y, z), z=(0, -out, 0)), upper=P.BOLT["throw"] + 0.002, role="slide")
+
+    def thumb_turn(self, node, xs, y, z, inward, leaf):
+        zt = z + P.THUMB["above"]
+        if self.p["handle"] == "pull":  # above the bar pull's top post
+            zt = z + max(P.THUMB["above"], self.p["pull_length"] / 2 + P.THUMB["rose"] + 0.02)
+        self.extend(leaf, P.thumb_rose(xs[0], -1.0, y, zt, key=False) + P.thumb_rose(xs[1], 1.0, y, zt, key=True))
+        start = xs[0] - P.ROSE[1] - GAP
+        name = self.add(f"thumb_turn{leaf[4:]}", "knob", P.thumb_turn(start, -1.0, y, zt))
+        self.hinge(leaf, name, Frame.at((start, y, zt), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
+
+    def sliding(self, node, xs, ys, zs, travel):
+        self.grow(node.one("slider"), xs=xs, ys=ys, zs=zs, travel=travel)
+
+    def slider(self, node, xs, ys, zs, travel):
+        p = self.p
+        d = -1.0 if p["hinge_side"] == "left" else 1.0  # it slides toward the hinge side's wall
+        r = p["wheel_radius"]
+        z_ax = zs[1] + 0.05 + r  # wheel axles above the leaf's top
+        z_rail = z_ax - r - RAIL_CLEAR
+        x_wall = xs[0] - SLIDE_GAP - HEADER  # the architraves' front face
+        x_w = x_wall + 0.048  # over the rail
+        lo, hi = (ys[0] + d * travel, ys[1]) if d < 0 else (ys[0], ys[1] + travel)
+        self.extend("frame", P.barn_track(x_wall, lo - 0.06, hi + 0.06, z_rail))
+        pieces = P.leaf(xs, ys, zs, p["handle_height"], p["leaf_style"], p["glazing"], p["stile_width"],
+                        p["panel_count"])
+        yh = [ys[0] + 0.12, ys[1] - 0.12]
+        for y in yh:
+            pieces += P.hanger_strap(xs[1], x_w, y, zs[1] - 0.12, z_ax)
+        # a bar pull on the front face near the trailing edge, a flush pull on the back
+        y_pull = (ys[1] - 0.08) if d < 0 else (ys[0] + 0.08)
+        at = Frame.at((xs[1], y_pull, p["handle_height"]), z=(1, 0, 0), x=(0, 0, 1))
+        bar = hardware.bar_handle(p["pull_length"], "handle", PULL).attached("mount", to=at)
+        pieces += list(bar.parts[bar.root].pieces)
+        pieces.append(g.box_between([xs[0] - 0.002, y_pull - 0.025, p["handle_height"] - 0.07],
+                                    [xs[0], y_pull + 0.025, p["handle_height"] + 0.07], "handle", bevel=0.001))
+        self.add("leaf", "leaf", pieces)
+        self.slide("frame", "leaf", Frame.at((xs[1], ys[1] if d > 0 else ys[0], zs[0]), z=(0, d, 0)), upper=travel,
+                   role="slide")
+        for k, (kid, y) in enumerate(zip(node.of("roller"), yh, strict=True)):
+            self.grow(kid, k=k, at=(x_w, y, z_ax), r=r)
+
+    def roller(self, node, k, at, r):
+        name = self.add(f"wheel_{k}", "wheel", P.wheel(*at, r))
+        self.spin("leaf", name, Frame.at(at, z=(1, 0, 0)), role="wheel")
+
+    def pull(self, node, xs, y, z, inward, leaf):
         for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
             at = Frame.at((face, y, z), z=(n, 0, 0), x=(0, 0, 1))
             bar = hardware.bar_handle(self.p["pull_length"], "handle", PULL).attached("mount", to=at)
-            self.extend("leaf", bar.parts[bar.root].pieces)
+            self.extend(leaf, bar.parts[bar.root].pieces)
 
-    def _faces(self, node, kind, xs, y, z, inward):
+    def _faces(self, node, kind, xs, y, z, inward, leaf):
         for kid, (side, n, face) in zip(node.of(kind), (("front", 1.0, xs[1]), ("back", -1.0, xs[0])), strict=True):
-            self.extend("leaf", [P.rose(face, n, y, z)])
-            self.grow(kid, side=side, n=n, start=face + n * (P.ROSE[1] + GAP), y=y, z=z, inward=inward)
+            self.extend(leaf, [P.rose(face, n, y, z)])
+            self.grow(kid, side=side + leaf[4:], n=n, start=face + n * (P.ROSE[1] + GAP), y=y, z=z, inward=inward,
+                      leaf=leaf)
 
     def knob(self, node, **where):
         self._faces(node, "knob_face", **where)
@@ -127,16 +253,16 @@ class DoorLayout(Layout):
     def lever(self, node, **where):
         self._faces(node, "lever_face", **where)
 
-    def knob_face(self, node, side, n, start, y, z, inward):
+    def knob_face(self, node, side, n, start, y, z, inward, leaf):
         at = Frame.at((start, y, z), z=(n, 0, 0))
         knob = self.place(P.knob_part(self.p["knob_radius"]).attached("mount", to=at), f"knob_{side}")
-        self.spin("leaf", knob.root, at, role="knob")
+        self.spin(leaf, knob.root, at, role="knob")
 
-    def lever_face(self, node, side, n, start, y, z, inward):
+    def lever_face(self, node, side, n, start, y, z, inward, leaf):
         grip = -inward  # the grip points back toward the hinge
         name = self.add(f"lever_{side}", "lever", P.lever(start, n, y, z, grip, self.p["lever_length"]))
         # about (grip direction) x (-Z) = (-grip, 0, 0): a positive angle turns the grip down
-        self.hinge("leaf", name, Frame.at((start, y, z), z=(-grip, 0, 0)), upper=LEVER_TURN, role="knob")
+        self.hinge(leaf, name, Frame.at((start, y, z), z=(-grip, 0, 0)), upper=LEVER_TURN, role="knob")
 
 
 CATEGORY = Category("door", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DoorLayout, MATERIALS,

@@ -90,14 +90,16 @@ PARAMS = (
     Int("arm_segments", "segments of a chain arm", "", 2, 3),
     Float("arm_reach", "horizontal reach of a curved or chain arm, as a fraction of the height",
           "", 0.25, 0.45),
-    Choice("base_shape", "base plate shape", choices=("round", "square", "domed"),
-           weights=(0.45, 0.3, 0.25)),
+    Choice("base_shape", "base plate shape, or a tripod of three splayed legs", choices=("round", "square", "domed",
+                                                                                       "tripod"),
+           weights=(0.4, 0.25, 0.2, 0.15)),
     Float("desk_base_radius", "base radius (half side of a square base) of a desk lamp", "m",
           0.065, 0.11),
     Float("floor_base_radius", "base radius (half side of a square base) of a floor lamp", "m",
           0.13, 0.2),
     Float("base_thickness", "base plate thickness", "m", 0.015, 0.035),
-    Float("pole_radius", "upper pole radius (the lower pole is a tube around it)", "m", 0.005, 0.011),
+    # 15-25 mm poles and arm tubes (IKEA Hektar / Ranarp, Anglepoise Type 75: 16-25 mm tube, 9 mm arm rods)
+    Float("pole_radius", "upper pole radius (the lower pole is a tube around it)", "m", 0.0075, 0.0125),
     Float("lower_pole_fraction", "share of the pole length taken by the lower tube", "", 0.35, 0.55),
     Choice("shade_shape", "shade profile", choices=("cone", "drum", "dome", "bell"),
            weights=(0.35, 0.25, 0.25, 0.15)),
@@ -161,4 +163,10 @@ class LampLayout(Layout):
     shade = _parts
 
 
-CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS)
+def tripod_switch(p: dict) -> dict:
+    """A tripod has no base plate to carry the push switch (its switch is on the cord)."""
+    return {**p, "has_switch": p["has_switch"] and p["base_shape"] != "tripod"}
+
+
+CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS,
+                    derive=tripod_switch)

@@ -17,6 +17,7 @@ import math
 
 import numpy as np
 
+from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -25,14 +26,23 @@ from infmob_usd.params import Choice, Float
 from .parts import taps as T
 
 GRAMMAR = Grammar("tap", {
-    "tap": Node(label="base", required=("spout",), optional={"separate_pipe": 0.5},
-                one_of={"single_lever": 0.6, "two_handles": 0.4}, choice="handles"),
+    "tap": Node(label="base", required=("spout",), one_of={"deck": 0.4, "bridge": 0.2, "pull_out": 0.25, "wall": 0.15},
+                choice="design"),
+    "deck": Node(optional={"separate_pipe": 0.5}, one_of={"single_lever": 0.6, "two_handles": 0.4}, choice="handles"),
+    "bridge": Node(required=("two_handles",)),
+    "pull_out": Node(required=("single_lever", "spray_head")),
+    "wall": Node(required=("single_lever",)),
     "separate_pipe": Node(),
     "spout": Node(label="spout"),
+    "spray_head": Node(label="spray_head"),
     "single_lever": Node(label="lever"),
     "two_handles": Node(repeat={"valve": 2}),
     "valve": Node(label="handle"),
 })
+"""Designs: a deck mixer (single lever or two valves; the spout on a collar or its own pipe), a bridge
+mixer (two valves on risers joined by a bridge pipe, the spout rising from its middle), a pull-out
+kitchen mixer (side lever; the spray head slides out of the spout on its hose and turns), a wall mixer
+(a bar on two S-unions, the lever on top, the spout swivelling under it)."""
 
 PARAMS = (
     Float("height", "height of the tap (top of the spout or of the lever cap)", "m", 0.15, 0.4),
@@ -49,6 +59,8 @@ PARAMS = (
     Float("lever_tilt", "lever lift range", "rad", math.pi / 9, math.pi / 5),
     Float("handle_spread", "distance of each valve handle or side mixer from the middle (Y)", "m", 0.05, 0.1),
     Choice("handle_kind", "valve handle form", choices=("cross", "lever")),
+    Float("head_travel", "how far a pull-out spray head slides out on its hose", "m", 0.12, 0.2),
+    Float("wall_length", "length of a wall mixer's body (Y)", "m", 0.15, 0.22),
     Choice("finish", "tap finish", choices=("chrome", "brushed_metal", "matte_black"), weights=(0.5, 0.3, 0.2)),
 )
 
@@ -64,48 +76,79 @@ RISER = 0.004  # a spout riser is this much wider than the spout tube
 FLARE = 1.25  # column feet flare to this fraction of their radius
 
 
+WALL_SWIVEL = 5 * math.pi / 12  # a wall mixer's spout swings +-75 degrees, clear of the wall
+WALL_X = -0.065  # the wall plane behind a wall mixer's axis (S-unions: 40-70 mm projection)
+BRIDGE_H = 0.05  # bridge mixer risers: height of the bridge pipe's axis above the deck
+
+
+def designs(p: dict) -> dict:
+    """A wall mixer's spout swivel is limited (it would swing into the wall)."""
+    if p["design"] != "wall":
+        return p
+    return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], WALL_SWIVEL)}
+
+
 class TapLayout(Layout):
     def tap(self, node):
         p = self.p
-        lever = p["handles"] == "single_lever"
-        pipe = node.one("separate_pipe")
+        design = node.one(node.choice)
+        if node.choice == "wall":
+            return self._wall(node, design)
+        if node.choice == "deck":
+            lever, pipe = design.choice == "single_lever", design.one("separate_pipe")
+        else:
+            lever, pipe = node.choice == "pull_out", True
+        bridge = node.choice == "bridge"
         rb = p["body_radius"]
         rs = min(p["spout_radius"], 0.6 * rb)
         height = p["height"]
-        columns, controls = [], {}
+        columns, controls, extra = [], {}, []
         # what the spout sweeps over: a side mixer with its lever, or two valve handles
         if lever and pipe:
             d = max(p["handle_spread"], rs + RISER + CAP * rb + 0.045)
             arm = min(p["lever_length"], d - rs - RISER - CAP * rb - 0.015)
-            columns.append(T.column((0.0, d), T.DECK_T, T.DECK_T + MIXER_H, rb))
-            controls["pieces"], controls["hinge"] = T.lever((0.0, d), T.DECK_T + MIXER_H + T.GAP, CAP * rb, arm)
+            z_cap = T.DECK_T + MIXER_H
+            columns += [T.column((0.0, d), T.DECK_T, z_cap, rb), T.lever_cap((0.0, d), z_cap, CAP * rb)]
+            controls["pieces"], controls["hinge"] = T.lever((0.0, d), z_cap + T.CAP_H, CAP * rb, arm)
             side_top = T.highest_when_tilted(controls["pieces"], controls["hinge"], p["lever_tilt"])
         elif not lever:
             d = max(p["handle_spread"], rb + 2 * T.RISER_R + 0.02)
             reach = min(0.045, d - max(rb, rs + RISER) - 0.012)
-            z_r = T.DECK_T + T.RISER_H
+            z_r = T.DECK_T + (BRIDGE_H + T.RISER_R if bridge else T.RISER_H)
             controls["valves"] = []
             for y, slot in ((d, "hot"), (-d, "cold")):
                 columns.append(T.column((0.0, y), T.DECK_T, z_r, T.RISER_R))
                 controls["valves"].append((T.valve_handle((0.0, y), z_r + T.GAP, reach, p["handle_kind"], slot),
                                            (0.0, y, z_r + T.GAP)))
+            if bridge:
+                extra = T.bridge_bar(d, T.DECK_T + BRIDGE_H, 0.75 * T.RISER_R)
             side_top = max(pc.bounds[1, 2] for pcs, _ in controls["valves"] for pc in pcs)
         else:
             d, side_top = 0.0, T.DECK_T
         # the spout: on its own riser, or on a collar around the main column (with the lever on top)
+        head = None
         if pipe:
             z_low = side_top + SPOUT_OVER  # the outlet (aerator included) stays above the side elements
-            height = max(height, z_low + 0.06)
-            z_rt = T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T))
+            z_rt = T.DECK_T + (BRIDGE_H + 0.012 if bridge else 0.0)
+            if node.choice == "pull_out":
+                height = max(height, z_low + 2 * max(1.6 * rs, 0.015) + 0.06)
+                z_rt = T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T))
+                spout, hp, hf, travel = T.pullout_spout(p["spout_reach"] + 0.05, rs, z_rt + T.GAP, height, z_low,
+                                                        p["head_travel"])
+                head = dict(pieces=hp, at=hf, travel=travel)
+            else:
+                height = max(height, z_low + 0.06, z_rt + 0.1)
+                z_rt = max(z_rt, T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T)))
+                spout = T.top_spout(p["spout_shape"], p["spout_reach"], rs, z_rt + T.GAP, height, z_low)
             riser = T.column((0.0, 0.0), T.DECK_T, z_rt, rs + RISER, flare=1.5)
-            spout = T.top_spout(p["spout_shape"], p["spout_reach"], rs, z_rt + T.GAP, height, z_low)
             axis = z_rt + T.GAP
         else:
             hc = 2 * rs + 0.014
             if lever:
-                z_bt = height - T.CAP_H - T.GAP  # top of the column under the cap
+                z_bt = height - T.CAP_H - T.lever_height(CAP * rb, p["lever_length"])  # the column's top
                 z_cm = min(T.DECK_T + 0.55 * (z_bt - T.DECK_T), z_bt - 0.012 - hc / 2)
-                controls["pieces"], controls["hinge"] = T.lever((0.0, 0.0), z_bt + T.GAP, CAP * rb,
+                columns.append(T.lever_cap((0.0, 0.0), z_bt, CAP * rb))
+                controls["pieces"], controls["hinge"] = T.lever((0.0, 0.0), z_bt + T.CAP_H, CAP * rb,
                                                                 p["lever_length"])
             else:
                 z_cm = max(side_top + 0.065 + rs, T.DECK_T + 0.5 * (height - T.DECK_T))
@@ -117,29 +160,70 @@ class TapLayout(Layout):
         need = 2 * (d + (rb if lever else T.RISER_R) * FLARE + 0.008) if d else 2 * (FLARE * rb + 0.008)
         width = max(p["base_width"], need) if d else max(need, min(p["base_width"], 0.12))
         depth = float(np.clip(0.4 * width, 2 * FLARE * max(rb, T.RISER_R) + 0.016, 0.09))
-        self.add("base", "base", T.deck(width, depth, p["base_shape"], bridge=bool(d)) + columns)
-        if pipe:
-            self.grow(pipe, riser=riser)
-        self.grow(node.one("spout"), pieces=spout, axis=axis)
+        self.add("base", "base", T.deck(width, depth, p["base_shape"], bridge=bool(d)) + columns + extra)
+        if pipe and node.choice == "deck":
+            self.grow(design.one("separate_pipe"), riser=riser)
+        elif pipe:
+            self.extend("base", [riser])
+        self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, axis))
+        self.grow(design, controls=controls, head=head)
+
+    def _wall(self, node, design):
+        """A wall mixer: the body bar at ``z``, a cartridge column up from it, a stub down into the spout's
+        collar."""
+        p = self.p
+        rb = p["body_radius"]
+        rs = min(p["spout_radius"], 0.6 * rb)
+        r_bar = max(rb, 0.02)
+        hc = 2 * rs + 0.014
+        z = 0.075  # the bar's axis: the plate's bottom edge at z = 0.01
+        z_cm = z - r_bar - T.GAP - hc / 2
+        stub0 = z_cm - hc / 2 - 0.014
+        z_top = z + r_bar + 0.006  # the cartridge column's top
+        pieces = T.wall_body(p["wall_length"], r_bar, z, WALL_X)
+        pieces += [T.column((0.0, 0.0), z, z_top, rb, flare=1.0), T.lever_cap((0.0, 0.0), z_top, CAP * rb),
+                   g.cylinder([0, 0, stub0], [0, 0, z], rb, "metal", 32),
+                   g.cylinder([0, 0, stub0], [0, 0, stub0 + 0.01], 1.3 * rb, "metal", 32)]
+        self.add("base", "base", pieces)
+        shape = "curved" if p["spout_shape"] == "gooseneck" else p["spout_shape"]
+        spout = T.collar_spout(shape, p["spout_reach"], rs, rb, z_cm, hc, z_cm - 0.09)
+        self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, z_cm - hc / 2))
+        lever, hinge = T.lever((0.0, 0.0), z_top + T.CAP_H, CAP * rb, p["lever_length"])
+        self.grow(design, controls=dict(pieces=lever, hinge=hinge), head=None)
+
+    def deck(self, node, controls, head):
         self.grow(node.one(node.choice), **controls)
+
+    def bridge(self, node, controls, head):
+        self.grow(node.one("two_handles"), **controls)
+
+    def wall(self, node, controls, head):
+        self.grow(node.one("single_lever"), **controls)
+
+    def pull_out(self, node, controls, head):
+        self.grow(node.one("single_lever"), **controls)
+        self.grow(node.one("spray_head"), **head)
 
     def separate_pipe(self, node, riser):
         self.extend("base", [riser])
 
     def spout(self, node, pieces, axis):
         self.add("spout", "spout", pieces)
-        at = (0.0, 0.0, axis)
         if self.p["spout_joint"] == "continuous":
-            self.join(J.continuous("base", "spout", at, (0, 0, 1), role="swivel"))
+            self.join(J.continuous("base", "spout", axis, (0, 0, 1), role="swivel"))
         else:
             a = self.p["spout_swivel"]
-            self.join(J.revolute("base", "spout", at, (0, 0, 1), -a, a, role="swivel"))
+            self.join(J.revolute("base", "spout", axis, (0, 0, 1), -a, a, role="swivel"))
+
+    def spray_head(self, node, pieces, at, travel):
+        self.add("spray_head", "spray_head", pieces)
+        # pulls out along the spout's arm on its hose and turns freely about it
+        self.join(J.continuous_prismatic("spout", "spray_head", at.origin, at.z, (0.0, travel), role="slide"))
 
     def single_lever(self, node, pieces, hinge):
         name = self.add("lever", "lever", pieces)
-        # swivel about the column's axis, then tilt about the cap's back bottom edge
-        column = (hinge.origin[0] + CAP * self.p["body_radius"], hinge.origin[1], hinge.origin[2])
-        self.join(J.flip_revolute("base", name, column, (0, 0, 1), (-LEVER_SWIVEL, LEVER_SWIVEL), hinge.origin,
+        # swivel about the cartridge's vertical axis (temperature), then lift about its pin (flow)
+        self.join(J.flip_revolute("base", name, hinge.origin, (0, 0, 1), (-LEVER_SWIVEL, LEVER_SWIVEL), hinge.origin,
                                   hinge.z, (0.0, self.p["lever_tilt"]), role="hinge"))
 
     def two_handles(self, node, valves):
@@ -151,4 +235,5 @@ class TapLayout(Layout):
         self.join(J.revolute("base", name, at, (0, 0, 1), -HANDLE_TURN, HANDLE_TURN, role="knob"))
 
 
-CATEGORY = Category("tap", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TapLayout, MATERIALS)
+CATEGORY = Category("tap", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TapLayout, MATERIALS,
+                    derive=designs)

@@ -1,4 +1,10 @@
-"""Window: a frame with 1-4 casement or sliding sashes, optional shutters and curtains.
+"""Window: casement, sliding, tilt-and-turn, top-hung awning or double-hung sashes in a frame.
+
+Designs (``style``) beyond the two below: ``tilt_turn`` (casements whose side hinge rides on a tilt
+hinge along the bottom rail: flip_revolute, the tilt pressed closed by gravity), ``awning`` (top-hung
+sashes opening outward about a pivot in front of their centre of mass), ``double_hung`` (the lower sash
+slides up, the upper one tilts in; a passive down-sliding upper sash would drop without its spring
+balance). Optional shutters and curtains as before.
 
 X is depth (the room side faces +X), Y is width, Z is up. The frame (jambs, head,
 bottom rail, mullions, an optional transom light and the glazing stops) is the
@@ -56,10 +62,14 @@ def shutter_leaves(p, rng) -> int:
 
 
 GRAMMAR = Grammar("window", {
-    "window": Node(label="frame", one_of={"casement": 0.55, "sliding": 0.45}, choice="style",
+    "window": Node(label="frame", one_of={"casement": 0.3, "sliding": 0.2, "tilt_turn": 0.2, "awning": 0.15,
+                                          "double_hung": 0.15}, choice="style",
                    optional={"shutters": 0.2, "curtains": 0.3, "sill": 0.6, "transom": 0.25}),
     "casement": Node(repeat={"sash": sashes}),
     "sliding": Node(repeat={"sash": sashes}),
+    "tilt_turn": Node(repeat={"sash": sashes}),
+    "awning": Node(repeat={"sash": sashes}),
+    "double_hung": Node(repeat={"sash": 2}),
     "sash": Node(label="sash"),
     "sill": Node(), "transom": Node(),
     "shutters": Node(repeat={"shutter": shutter_leaves}),
@@ -124,8 +134,19 @@ SILL_EAR = 0.03  # the sill reaches this far past the frame on each side
 BOTTOM_RAIL = 1.25  # the bottom rail is this much wider than the jambs
 
 
+SIZES = {"tilt_turn": dict(width=(0.6, 1.6), height=(0.6, 2.4)), "awning": dict(width=(0.6, 2.5), height=(0.4, 1.0)),
+         "double_hung": dict(width=(0.6, 1.2), height=(0.9, 2.0))}
+"""Frame sizes of the designs that come in a narrower range (manufacturers' size tables: Roto, Velfac,
+Andersen 400 series): a wider or taller draw is brought into it."""
+
+
 def transom_fits(p: dict) -> dict:
-    """A transom light only on frames taller than 1.1 m."""
+    """A transom light only on frames taller than 1.1 m (casements and sliders); sizes per design."""
+    p = dict(p)
+    for k, (lo, hi) in SIZES.get(p["style"], {}).items():
+        p[k] = float(min(max(p[k], lo), hi))
+    if p["style"] in ("awning", "double_hung"):
+        p["has_transom"] = False
     return {**p, "has_transom": p["has_transom"] and p["height"] > TRANSOM_FROM}
 
 
@@ -149,10 +170,12 @@ class WindowLayout(Layout):
             return "left" if self.rng.random() < 0.5 else "right"
 
         style = node.one(node.choice)
-        if node.choice == "casement":
-            made, x_room = P.casement(frame, light, p, (fd, yi0, yi1, zi0, zs1, mw), transom, middle)
+        if node.choice in ("casement", "tilt_turn", "awning"):
+            build = {"casement": P.casement, "tilt_turn": P.tilt_turn, "awning": P.awning}[node.choice]
+            made, x_room = build(frame, light, p, (fd, yi0, yi1, zi0, zs1, mw), transom, middle)
         else:
-            made, x_room = P.sliding(frame, light, p, (fd, yi0, yi1, zi0, zs1), transom, middle)
+            build = P.sliding if node.choice == "sliding" else P.double_hung
+            made, x_room = build(frame, light, p, (fd, yi0, yi1, zi0, zs1), transom, middle)
         self.add("frame", "frame", frame)
         if node.one("sill"):
             self.grow(node.one("sill"), z0=z0)
@@ -183,7 +206,7 @@ class WindowLayout(Layout):
     def casement(self, node, made):
         self._parts(node, "sash", made)
 
-    sliding = casement
+    sliding = tilt_turn = awning = double_hung = casement
 
     def sash(self, node, name, pieces, spec):
         self.add(name, "sash", pieces)

@@ -21,7 +21,9 @@ VOLUME_TOL = 1e-7  # m^3, as the physics checks
 
 
 def make(seed, **overrides):
-    return make_bp(mod, "door", seed, **overrides)
+    """A single unlatched leaf unless the test asks for another design (the tests below were written for it)."""
+    return make_bp(mod, "door", seed, **{"design": "single", "has_latch": False, "has_thumb_turn": False,
+                                         **overrides})
 
 
 def leaf_body(bp):
@@ -97,7 +99,7 @@ def test_handles_on_both_faces(seed):
     assert len(movable(bp)) == 3
     # in the object, the core's counterweight puts the centre of mass on the axis: gravity does
     # not turn the handle
-    obj = generate("door", seed, 16)
+    obj = generate("door", seed, 16, design="single", has_latch=False, has_thumb_turn=False)
     for name in names:
         torque, _, _ = gravity_torque(obj.links, obj.joints, next(j for j in obj.joints if j.child == name))
         assert abs(torque) < 1e-6
@@ -183,7 +185,60 @@ def test_overrides_drive_the_styles():
     assert p["leaf_width"] == 0.9 and p["hinge_side"] == "right"
 
 
+def test_latch_bolt_sits_in_the_strike_and_draws_back():
+    for side in ("left", "right"):
+        p, bp = make(4, has_latch=True, hinge_side=side)
+        j, leaf = by_child(bp, "latch"), by_child(bp, "leaf")
+        assert j.kind == "prismatic" and j.parent == "leaf" and leaf.requires_open == "latch"
+        d = j.dofs[0]
+        lo, hi = leaf_body(bp)
+        bolt = np.array([pc.bounds for pc in bp.parts["latch"].pieces])
+        out = 1.0 if side == "left" else -1.0
+        edge = hi[1] if side == "left" else lo[1]
+        tip = bolt[:, 1, 1].max() if out > 0 else bolt[:, 0, 1].min()
+        assert out * (tip - edge) >= 0.012  # thrown into the jamb at rest
+        assert d.axis == pytest.approx((0, -out, 0)) and d.upper > 0.013
+        for q in (0.0, d.upper / 2, d.upper):  # in its mortise and the strike, touching nothing
+            m = dof_motion(d, q)
+            assert overlap(bp.parts["latch"], m, bp.parts["leaf"], np.eye(4)) < VOLUME_TOL
+            assert overlap(bp.parts["latch"], m, bp.parts["frame"], np.eye(4)) < VOLUME_TOL
+        back = bolt[:, 1, 1].max() - d.upper if out > 0 else bolt[:, 0, 1].min() + d.upper
+        assert out * (back - edge) < 0  # drawn back inside the leaf
+
+
+@pytest.mark.parametrize("design", ["single", "double", "sliding"])
+def test_each_design_is_forced_and_moves(design):
+    p, bp = make(6, design=design, has_latch=True, has_thumb_turn=True, handle="lever")
+    assert p["design"] == design
+    kinds = {j.child: j.kind for j in movable(bp)}
+    if design == "double":
+        assert kinds["leaf"] == kinds["leaf_2"] == "revolute"
+        a, b = by_child(bp, "leaf").dofs[0], by_child(bp, "leaf_2").dofs[0]
+        assert a.origin[1] < 0 < b.origin[1] and a.axis[2] == -b.axis[2]  # hung on both jambs
+        assert {"lever_front_2", "thumb_turn_2"} <= set(kinds)
+    elif design == "sliding":
+        d = by_child(bp, "leaf").dofs[0]
+        assert kinds["leaf"] == "prismatic" and abs(d.axis[1]) == pytest.approx(1.0) and d.upper > 0.5
+        assert kinds["wheel_0"] == kinds["wheel_1"] == "continuous"
+        assert all(by_child(bp, w).parent == "leaf" for w in ("wheel_0", "wheel_1"))
+    else:
+        assert kinds["latch"] == "prismatic" and kinds["thumb_turn"] == "revolute"
+    for label, q in states(bp):
+        if design == "single" and ("leaf", 0) in q:  # the leaf moves with its latch drawn back
+            q = {**q, ("latch", 0): by_child(bp, "latch").dofs[0].upper}
+        bad = contacts(bp, q, VOLUME_TOL)
+        assert not bad, f"(part, part, m^3) overlapping at {label}: {bad}"
+
+
 def test_seeds_differ():
-    params = [make(s)[0] for s in range(12)]
-    for name in ("handle", "leaf_style", "hinge_side", "glazing"):
+    params = [make_bp(mod, "door", s)[0] for s in range(12)]
+    for name in ("design", "handle", "leaf_style", "hinge_side", "glazing"):
         assert len({p[name] for p in params}) > 1, name
+
+
+def test_thumb_turn_clears_a_bar_pull():
+    """The thumb-turn sits above a long bar pull's top post (door seed 8 had it embedded in the pull)."""
+    _, bp = make(8, design="single", handle="pull", has_thumb_turn=True, pull_length=0.45)
+    d = by_child(bp, "thumb_turn").dofs[0]
+    for q in (0.0, d.upper):
+        assert overlap(bp.parts["thumb_turn"], dof_motion(d, q), bp.parts["leaf"], np.eye(4)) < VOLUME_TOL

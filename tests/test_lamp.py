@@ -356,3 +356,17 @@ def test_deterministic():
         for name in a.parts:
             for x, y in zip(a.parts[name].pieces, b.parts[name].pieces):
                 assert np.array_equal(x.vertices, y.vertices)
+
+
+@pytest.mark.parametrize("style", ["straight", "chain"])
+def test_tripod_base_stands_on_three_feet(style):
+    p, bp = make(3, base_shape="tripod", arm_style=style, has_switch=True)
+    assert p["base_shape"] == "tripod" and not p["has_switch"] and "switch" not in bp.parts
+    base = bp.parts["base"].pieces
+    feet = [pc for pc in base if pc.material == "fitting"]
+    assert len(feet) == 3 and all(pc.bounds[0, 2] == pytest.approx(0.0, abs=1e-9) for pc in feet)
+    centres = np.array([pc.bounds.mean(0)[:2] for pc in feet])
+    assert np.linalg.norm(centres, axis=1).min() > 0.1  # splayed well out from the pole
+    # real pole and arm thicknesses: 15-25 mm poles
+    pole = np.array([pc.bounds for pc in bp.parts["upper_pole"].pieces])
+    assert pole[:, 1, 0].max() - pole[:, 0, 0].min() >= 0.015

@@ -16,7 +16,7 @@ from infmob_usd.materials.families import split_spec
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
-LABELS = {"base", "spout", "lever", "handle"}
+LABELS = {"base", "spout", "lever", "handle", "spray_head"}
 TOL = 1e-7  # m^3, as the validator's contact volume
 
 
@@ -97,12 +97,20 @@ def carried_mass(bp, name):
 # -- structure -----------------------------------------------------------------------------
 
 
+def single_lever(p):
+    return p["design"] in ("pull_out", "wall") or (p["design"] == "deck" and p["handles"] == "single_lever")
+
+
+def own_pipe(p):
+    return p["design"] in ("pull_out", "bridge") or (p["design"] == "deck" and p["has_separate_pipe"])
+
+
 def test_parts_labels_and_materials(tap_bp):
     p, bp = tap_bp
     assert bp.root == "base" and bp.parts["base"].label == "base"
     assert bp.parts["spout"].label == "spout"
     assert {part.label for part in bp.parts.values()} <= LABELS
-    if p["handles"] == "single_lever":
+    if single_lever(p):
         assert bp.parts["lever"].label == "lever" and "handle_0" not in bp.parts
         assert any(pc.name == "handle" for pc in bp.parts["lever"].pieces)
     else:
@@ -112,14 +120,18 @@ def test_parts_labels_and_materials(tap_bp):
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
     assert used <= set(bp.materials)
     assert bp.materials["metal"] in ("chrome", "brushed_metal", "enamel:black")
-    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
+    # every piece collides but the pull-out hose, drawn inside the spout's solid arm hulls
+    assert all(pc.convex for part in bp.parts.values() for pc in part.pieces
+               if not (part.label == "spray_head" and pc.material == "seal"))
 
 
 def test_size(tap_bp):
     p, bp = tap_bp
     lo, hi = bp.bounds()
     assert lo[2] == pytest.approx(0.0, abs=1e-9)
-    assert p["height"] - 1e-6 <= hi[2] <= 0.45
+    assert hi[2] <= 0.45
+    if p["design"] != "wall":  # a wall mixer is as tall as its body and lever
+        assert p["height"] - 1e-6 <= hi[2]
     deck = bp.parts["base"].pieces[0].bounds
     assert deck[1, 1] - deck[0, 1] >= min(p["base_width"], 0.12) - 1e-9
 
@@ -137,7 +149,7 @@ def test_spout_swivels_about_its_vertical_axis(tap_bp):
     spout = np.array([pc.bounds for pc in bp.parts["spout"].pieces])
     lo, hi = spout[:, 0].min(0), spout[:, 1].max(0)
     assert hi[0] > 0.05  # it reaches forward
-    if p["has_separate_pipe"]:  # on top of its own pipe: nothing of it behind the axis
+    if own_pipe(p):  # on top of its own pipe: nothing of it behind the axis
         assert lo[0] > -0.0125 and lo[2] > 0.02
     else:  # a collar around the column
         assert lo[0] < -p["body_radius"]
@@ -145,7 +157,7 @@ def test_spout_swivels_about_its_vertical_axis(tap_bp):
 
 def test_controls(tap_bp):
     p, bp = tap_bp
-    if p["handles"] == "single_lever":
+    if single_lever(p):
         j = by_child(bp, "lever")
         assert j.kind == "flip_revolute" and j.parent == "base"
         swivel, lift = j.dofs
@@ -190,14 +202,49 @@ def test_no_contact_and_nothing_below_ground_in_any_state(tap_bp):
 @pytest.mark.parametrize("handles", ["single_lever", "two_handles"])
 @pytest.mark.parametrize("pipe", [True, False])
 def test_overrides_drive_the_growth(handles, pipe):
-    p, bp = make(2, handles=handles, has_separate_pipe=pipe, spout_shape="gooseneck", height=0.15)
+    p, bp = make(2, design="deck", handles=handles, has_separate_pipe=pipe, spout_shape="gooseneck", height=0.15)
     assert ("lever" in bp.parts) == (handles == "single_lever")
     assert ("handle_1" in bp.parts) == (handles == "two_handles")
     assert p["has_separate_pipe"] == pipe
     test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
 
 
+@pytest.mark.parametrize("design", ["deck", "bridge", "pull_out", "wall"])
+def test_each_design_is_forced_and_moves(design):
+    p, bp = make(5, design=design, height=0.3)
+    assert p["design"] == design
+    kinds = {j.child: j.kind for j in movable(bp)}
+    assert kinds["spout"] in ("continuous", "revolute")
+    if design == "pull_out":  # the spray head slides out of the spout along its arm and turns
+        j = by_child(bp, "spray_head")
+        assert j.parent == "spout" and j.kind == "continuous_prismatic"
+        assert j.dofs[0].axis == pytest.approx((1, 0, 0)) and j.dofs[0].upper >= 0.1
+    if design == "bridge":
+        assert {"handle_0", "handle_1"} <= set(kinds)
+    if design in ("pull_out", "wall"):
+        assert kinds["lever"] == "flip_revolute"
+    if design == "wall":  # the spout swings in front of the wall, never into it
+        d = by_child(bp, "spout").dofs[0]
+        assert kinds["spout"] == "revolute" and d.upper <= tap.WALL_SWIVEL + 1e-9
+    test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
+
+
+def test_lever_never_leaves_its_cartridge():
+    """The lever turns about the cartridge pin through its hub: at full lift the hub is where it was
+    (issue 13: levers used to lift straight off the body, tap 7004-7006)."""
+    for seed in range(6):
+        p, bp = make(seed, design="deck", handles="single_lever")
+        j = by_child(bp, "lever")
+        lift = j.dofs[1].upper
+        hub = bp.parts["lever"].pieces[0]
+        rest = bp.poses()["lever"]
+        up = bp.poses({("lever", 1): lift})["lever"]
+        for pose in (rest, up):
+            c = hub.vertices.mean(0) @ pose[:3, :3].T + pose[:3, 3]
+            assert np.linalg.norm(c - np.asarray(j.dofs[1].origin)) < 1e-6
+
+
 def test_seeds_differ():
     params = [make(s)[0] for s in range(20)]
-    for name in ("handles", "has_separate_pipe", "spout_shape", "finish", "spout_joint"):
+    for name in ("design", "handles", "has_separate_pipe", "spout_shape", "finish", "spout_joint"):
         assert len({p[name] for p in params}) > 1, name

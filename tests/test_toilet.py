@@ -20,6 +20,16 @@ SEEDS = range(8)
 VOLUME_TOL = 1e-7  # m^3, as the physics checks
 
 
+REAR = {"close_coupled": {"tank": "tank", "tank_lid": "lid"}, "one_piece": {"tank": "tank", "tank_lid": "lid"},
+        "back_to_wall": {"unit": "cabinet"}, "wall_hung": {"prewall": "frame"}}
+"""Each design's part behind the seat (fixed to the pan) and what it carries."""
+DESIGNS = tuple(REAR)
+
+
+def has_cistern(p):
+    return p["design"] in ("close_coupled", "one_piece")
+
+
 def make(seed, **overrides):
     return make_bp(mod, "toilet", seed, **overrides)
 
@@ -53,12 +63,18 @@ def welded(bp, a, b):
 def test_parts_labels_and_materials(seed):
     p, bp = make(seed)
     assert bp.root == "base"
-    want = {"base": "body", "seat": "seat", "cover": "lid", "tank": "tank", "tank_lid": "lid"}
+    want = {"base": "body", "seat": "seat", "cover": "lid", **REAR[p["design"]]}
     for name, label in want.items():
         assert bp.parts[name].label == label
-    flush = {"button": ("flush_button", "button"), "lever": ("flush_lever", "lever")}[p["flush"]]
-    assert bp.parts[flush[0]].label == flush[1]
-    assert by_child(bp, "tank").kind == "fixed"
+    if has_cistern(p):
+        flush = {"button": [("flush_button", "button")], "lever": [("flush_lever", "lever")],
+                 "dual": [("flush_small", "button"), ("flush_large", "button")]}[p["flush"]]
+    else:
+        flush = [("flush_small", "button"), ("flush_large", "button")]
+    for name, label in flush:
+        assert bp.parts[name].label == label
+    rear = next(iter(REAR[p["design"]]))
+    assert by_child(bp, rear).kind == "fixed"
     assert bp.materials["ceramic"].startswith("ceramic")
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
     assert used <= set(bp.materials)
@@ -74,13 +90,17 @@ def test_parts_labels_and_materials(seed):
 def test_front_faces_plus_x_and_size(seed):
     p, bp = make(seed)
     bowl_x = np.mean([pc.bounds[:, 0].mean() for pc in bp.parts["seat"].pieces])
-    tank_x = np.mean([pc.bounds[:, 0].mean() for pc in bp.parts["tank"].pieces])
+    rear = next(iter(REAR[p["design"]]))
+    tank_x = np.mean([pc.bounds[:, 0].mean() for pc in bp.parts[rear].pieces])
     assert bowl_x > tank_x
     lo, hi = bp.bounds()
     assert abs(lo[0] + hi[0]) < 0.02 and abs(lo[1] + hi[1]) < 0.02  # centred
     seat_top = max(pc.bounds[1, 2] for pc in bp.parts["seat"].pieces)
-    assert seat_top == pytest.approx(p["seat_height"], abs=1e-6)
+    want = p["hung_seat_height"] if p["design"] == "wall_hung" else p["seat_height"]
+    assert seat_top == pytest.approx(want, abs=1e-6)
     assert 0.4 <= seat_top <= 0.5
+    if p["design"] == "wall_hung":  # off the floor: nothing of the pan below 0.1 m
+        assert min(pc.bounds[0, 2] for pc in bp.parts["base"].pieces) > 0.1
 
 
 def test_the_bowl_is_hollow():
@@ -123,6 +143,13 @@ def test_seat_and_cover_share_one_hinge(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_lid_and_flush_joints(seed):
     p, bp = make(seed)
+    if not has_cistern(p):  # a dual-flush plate: two keys pressed into it
+        for name in ("flush_small", "flush_large"):
+            j = by_child(bp, name)
+            assert j.kind == "prismatic" and j.parent == next(iter(REAR[p["design"]]))
+            assert j.dofs[0].axis == pytest.approx((-1, 0, 0)) and 0 < j.dofs[0].upper <= 0.01
+        assert len(movable(bp)) == 4
+        return
     lid = by_child(bp, "tank_lid")
     assert lid.kind == "prismatic" and lid.parent == "tank"
     assert lid.dofs[0].axis == pytest.approx((0, 0, 1))
@@ -131,6 +158,12 @@ def test_lid_and_flush_joints(seed):
         j = by_child(bp, "flush_button")
         assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((-1, 0, 0))
         assert 0 < j.dofs[0].upper <= 0.01
+    elif p["flush"] == "dual":  # two buttons side by side on the cistern front
+        for name in ("flush_small", "flush_large"):
+            j = by_child(bp, name)
+            assert j.kind == "prismatic" and j.parent == "tank" and j.dofs[0].axis == pytest.approx((-1, 0, 0))
+        assert len(movable(bp)) == 5
+        return
     else:
         j = by_child(bp, "flush_lever")
         d = j.dofs[0]
@@ -140,10 +173,10 @@ def test_lid_and_flush_joints(seed):
 
 
 def test_lever_centre_of_mass_is_on_its_axis():
-    _, bp = make(0, flush="lever")
+    _, bp = make(0, flush="lever", design="close_coupled")
     d = by_child(bp, "flush_lever").dofs[0]
     # the core's counterweight heel puts it on the axis in the object
-    obj = generate("toilet", 0, 16, flush="lever")
+    obj = generate("toilet", 0, 16, flush="lever", design="close_coupled")
     j = next(j for j in obj.joints if j.child == "flush_lever")
     torque, m, com = gravity_torque(obj.links, obj.joints, j)
     assert abs(torque) < 1e-6 and any(p.name == "counterweight" for p in obj.link("flush_lever").pieces)
@@ -222,10 +255,37 @@ def test_nothing_below_ground(seed):
 # -- overrides, determinism -----------------------------------------------------------------
 
 
+@pytest.mark.parametrize("design", DESIGNS)
+def test_each_design_is_forced_moves_and_stays_clear(design):
+    seed = 5
+    p, bp = make(seed, design=design, flush="dual")
+    assert p["design"] == design and set(REAR[design]) <= set(bp.parts)
+    assert len(movable(bp)) == 5 if has_cistern(p) else 4
+    bp = object_limits("toilet", seed, bp, design=design, flush="dual")
+    for label, q in states(bp):
+        bad = contacts(bp, q, VOLUME_TOL, skip=lambda a, b: welded(bp, a, b))
+        assert not bad, f"(part, part, m^3) overlapping at {label}: {bad}"
+    for j in movable(bp):
+        d = j.dofs[0]
+        for f in (0.0, 0.5, 1.0):
+            pose = bp.poses({(j.child, 0): d.lower + f * (d.upper - d.lower)})
+            v = overlap(bp.parts[j.child], pose[j.child], bp.parts[j.parent], pose[j.parent])
+            assert v < VOLUME_TOL, f"{j.child} enters {j.parent} at {f:.0%}"
+
+
+def test_designs_look_apart():
+    """One-piece cisterns are lower than close-coupled ones; a wall-hung pan's frame is the tallest part."""
+    _, cc = make(4, design="close_coupled")
+    _, op = make(4, design="one_piece")
+    assert op.bounds()[1, 2] < cc.bounds()[1, 2] - 0.05
+    _, wh = make(4, design="wall_hung")
+    assert max(pc.bounds[1, 2] for pc in wh.parts["prewall"].pieces) > 0.95
+
+
 def test_overrides():
-    _, bp = make(3, flush="button")
+    _, bp = make(3, flush="button", design="close_coupled")
     assert "flush_button" in bp.parts and "flush_lever" not in bp.parts
-    _, bp = make(3, flush="lever")
+    _, bp = make(3, flush="lever", design="one_piece")
     assert "flush_lever" in bp.parts and "flush_button" not in bp.parts
     p, bp = make(3, seat_height=0.45, seat_finish="wood")
     assert p["seat_height"] == 0.45 and bp.materials["seat"] == "wood"
@@ -233,5 +293,5 @@ def test_overrides():
 
 def test_seeds_differ():
     params = [make(s)[0] for s in range(12)]
-    for name in ("flush", "seat_finish", "ceramic_colour"):
+    for name in ("design", "flush", "seat_finish", "ceramic_colour"):
         assert len({p[name] for p in params}) > 1, name

@@ -195,6 +195,37 @@ def test_moving_parts_keep_a_gap_at_rest(seed):
 # -- overrides, growth, determinism ------------------------------------------------------------------
 
 
+@pytest.mark.parametrize("style", ["tilt_turn", "awning", "double_hung"])
+def test_each_design_is_forced_moves_and_stays_clear(style):
+    # (object_limits reads back one-DoF joints only: a tilt-and-turn chain keeps its declared turn, which
+    # the core stops short of curtains)
+    over = dict(style=style, has_shutters=False, has_curtains=style != "tilt_turn")
+    p, bp = make(12, **over)
+    assert p["style"] == style
+    kinds = {j.child: j.kind for j in movable(bp) if j.child.startswith("sash")}
+    if style == "tilt_turn":  # turn on the side hinge, then tilt about the bottom rail (top inward)
+        assert set(kinds.values()) == {"flip_revolute"}
+        j = by_child(bp, "sash_0")
+        turn, tilt = j.dofs
+        assert abs(turn.axis[2]) == pytest.approx(1.0) and tilt.axis == pytest.approx((0, 1, 0))
+        top = np.array([bounds(bp.parts["sash_0"], True)[1][0], tilt.origin[1], 1.0, 1.0])
+        assert (dof_motion(tilt, tilt.upper) @ top)[0] > top[0] + 0.05
+    elif style == "awning":  # top-hung, the bottom swings out (-X)
+        assert set(kinds.values()) == {"revolute"}
+        d = by_child(bp, "sash_0").dofs[0]
+        lo, hi = bounds(bp.parts["sash_0"], True)
+        bottom = np.array([lo[0], d.origin[1], lo[2], 1.0])
+        assert d.origin[2] >= hi[2] - 1e-9 and (dof_motion(d, 0.3) @ bottom)[0] < bottom[0] - 0.05
+        assert p["height"] <= 1.0
+    else:  # the lower sash slides up, the upper one tilts in
+        assert kinds == {"sash_0": "prismatic", "sash_1": "revolute"}
+        assert by_child(bp, "sash_0").dofs[0].axis == pytest.approx((0, 0, 1))
+        assert p["width"] <= 1.2
+    bp = object_limits("window", 12, bp, **over)
+    for q in states(bp):
+        _pairs_clear(bp, q)
+
+
 def test_overrides_drive_the_growth():
     _, bp = make(3, sash_count=3, style="casement", has_shutters=False, has_curtains=False)
     assert sorted(n for n, part in bp.parts.items() if part.label == "sash") == ["sash_0", "sash_1", "sash_2"]

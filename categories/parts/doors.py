@@ -8,6 +8,8 @@ wall; architraves 50-90 mm; handles at 0.95-1.05 m with a 60 mm backset (BS EN 1
 
 from __future__ import annotations
 
+import numpy as np
+
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY
@@ -161,3 +163,113 @@ def lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> l
     xg = x0 + n * 0.042  # grip axis
     return [g.cylinder([x0, y, z], [x0 + n * 0.05, y, z], 0.011, "handle", 24),
             g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20).replace(sheet=0.0012)]
+
+
+# -- latch bolt, thumb-turn, sliding (barn) door hardware (issue 14) ---------------------------------------
+# Sizes: tubular/mortice latches: bolt 12-14 mm throw, 16-18 mm high, 60 mm backset (EN 12209); thumb-turns
+# on a 50 mm rose with a 30-35 mm grip (EN 1906 accessories); barn-door kits: flat rail 40 x 6 mm on a header,
+# 2 hangers with 70-100 mm nylon or steel wheels, leaves overlapping the opening by 50 mm a side
+# (e.g. Rustica, National Hardware).
+
+BOLT = dict(throw=0.013, height=0.018, thickness=0.016, inside=0.025)
+"""A latch bolt: throw beyond the lock edge, height, thickness (x), length inside the leaf at rest."""
+THUMB = dict(rose=0.025, grip=0.034, grip_w=0.009, grip_d=0.016, above=0.16)
+"""Thumb-turn: rose radius, grip length and width and projection, height above the handle axis."""
+
+
+def _boxes_around(lo, hi, clo, chi) -> list[np.ndarray]:
+    """Corner sets of axis-aligned boxes filling the box ``lo..hi`` minus the box ``clo..chi``."""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    clo, chi = np.maximum(np.asarray(clo, float), lo), np.minimum(np.asarray(chi, float), hi)
+    if np.any(chi <= clo):
+        return [np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])]
+    out, a, b = [], lo.copy(), hi.copy()
+    for k in range(3):  # slabs below and above the cutter along each axis, then narrow to it
+        for s0, s1 in ((a[k], clo[k]), (chi[k], b[k])):
+            if s1 - s0 > 1e-9:
+                l, h = a.copy(), b.copy()
+                l[k], h[k] = s0, s1
+                out.append(np.array([[x, y, z] for x in (l[0], h[0]) for y in (l[1], h[1]) for z in (l[2], h[2])]))
+        a[k], b[k] = clo[k], chi[k]
+    return out
+
+
+def mortise(piece: g.Piece, lo, hi) -> g.Piece:
+    """``piece`` with the box ``lo..hi`` cut out of its mesh and of its collision boxes (every convex piece
+    is taken as its bounding box: true of boxes and panels)."""
+    import trimesh
+
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    cutter = trimesh.creation.box(hi - lo, trimesh.transformations.translation_matrix((lo + hi) / 2))
+    mesh = g.subtract(trimesh.Trimesh(piece.vertices, piece.faces, process=False), [cutter])
+    convex = []
+    for c in piece.convex:
+        c = np.asarray(c, float)
+        convex += _boxes_around(c.min(0), c.max(0), lo, hi)
+    return g.Piece(mesh.vertices, mesh.faces, piece.material, convex, piece.name)
+
+
+def latch_bolt(xs, y_edge: float, out: float, z: float) -> tuple[list[g.Piece], tuple, tuple]:
+    """A latch bolt at the lock edge ``y_edge`` (``out`` = +-1 points out of it) at height ``z``, thrown at
+    rest. Returns its pieces, the mortise box (in the leaf) and the strike box (in the jamb), each
+    (lo, hi) with 1.5 mm of clearance round the bolt."""
+    xm = (xs[0] + xs[1]) / 2
+    t, h, throw, inside = BOLT["thickness"], BOLT["height"], BOLT["throw"], BOLT["inside"]
+    ya, yb = sorted((y_edge - out * inside, y_edge + out * throw))
+    bolt = [g.box_between([xm - t / 2, ya, z - h / 2], [xm + t / 2, yb, z + h / 2], "handle", bevel=0.002)]
+    c = 0.0015
+    m_lo, m_hi = sorted((y_edge - out * (inside + throw + 0.004), y_edge + out * 0.001))
+    s_lo, s_hi = sorted((y_edge + out * 0.0, y_edge + out * (throw + 0.004)))
+    box = lambda y0, y1: ((xm - t / 2 - c, y0, z - h / 2 - c), (xm + t / 2 + c, y1, z + h / 2 + c))  # noqa: E731
+    return bolt, box(m_lo, m_hi), box(s_lo, s_hi)
+
+
+def strike_plate(x_mid: float, y_face: float, into: float, z: float) -> g.Piece:
+    """The strike plate on the jamb's face ``y_face`` (``into`` = +-1 points into the jamb), around the bolt
+    opening (decoration: the jamb carries the collision)."""
+    ya, yb = sorted((y_face - into * 0.0015, y_face))
+    plate = g.panel([x_mid - 0.012, ya, z - 0.04], [x_mid + 0.012, yb, z + 0.04], "handle", "y",
+                    holes=[(x_mid - BOLT["thickness"] / 2 - 0.0015, z - BOLT["height"] / 2 - 0.0015,
+                            x_mid + BOLT["thickness"] / 2 + 0.0015, z + BOLT["height"] / 2 + 0.0015)])
+    return plate.replace(convex=[])
+
+
+def thumb_turn(x0: float, n: float, y: float, z: float) -> list[g.Piece]:
+    """A thumb-turn grip out of the face at ``x0`` along ``n`` (a spindle and a flat oblong grip, vertical at
+    rest), turning about x through ``(x0, y, z)``."""
+    gl, gw, gd = THUMB["grip"], THUMB["grip_w"], THUMB["grip_d"]
+    x1 = x0 + n * 0.006
+    xa, xb = sorted((x1, x1 + n * gd))
+    return [g.cylinder([x0, y, z], [x1, y, z], 0.008, "handle", 20),
+            g.box_between([xa, y - gw / 2, z - gl / 2], [xb, y + gw / 2, z + gl / 2], "handle", bevel=0.003)]
+
+
+def thumb_rose(face: float, n: float, y: float, z: float, key: bool) -> list[g.Piece]:
+    """The thumb-turn's rose, or on the other face a cylinder escutcheon with a key slot ring."""
+    rose = g.cylinder([face, y, z], [face + n * ROSE[1], y, z], THUMB["rose"], "handle", 32)
+    if not key:
+        return [rose]
+    return [rose, g.cylinder([face + n * ROSE[1], y, z], [face + n * (ROSE[1] + 0.004), y, z], 0.012, "hinge", 24)]
+
+
+def barn_track(x_face: float, y0: float, y1: float, z: float) -> list[g.Piece]:
+    """A barn-door header board on the wall face ``x_face`` from ``y0`` to ``y1`` with its flat rail on
+    stand-offs; the rail's top is at ``z``."""
+    return [g.box_between([x_face, y0, z - 0.13], [x_face + 0.02, y1, z + 0.06], "frame", bevel=0.003),
+            g.box_between([x_face + 0.045, y0 + 0.02, z - 0.04], [x_face + 0.051, y1 - 0.02, z], "handle",
+                          bevel=0.001)] + \
+        [g.cylinder([x_face + 0.02, y, z - 0.02], [x_face + 0.045, y, z - 0.02], 0.008, "handle", 16)
+         for y in np.linspace(y0 + 0.08, y1 - 0.08, 4)]
+
+
+def hanger_strap(x_leaf: float, x_wheel: float, y: float, z0: float, z1: float) -> list[g.Piece]:
+    """A hanger strap from the leaf's face at ``x_leaf`` up to a wheel axle at (``x_wheel``, ``z1``)."""
+    xa, xb = sorted((x_leaf, x_leaf + 0.006))
+    return [g.box_between([xa, y - 0.02, z0], [xb, y + 0.02, z1 + 0.012], "handle", bevel=0.002),
+            g.cylinder([xa, y, z1], [x_wheel + 0.012, y, z1], 0.006, "handle", 16)]
+
+
+def wheel(x_mid: float, y: float, z: float, r: float) -> list[g.Piece]:
+    """A grooved hanger wheel on an axle along x at (``x_mid``, y, z)."""
+    return [g.cylinder([x_mid - 0.009, y, z], [x_mid + 0.009, y, z], r, "handle", 32),
+            g.cylinder([x_mid - 0.011, y, z], [x_mid + 0.011, y, z], 0.35 * r, "hinge", 16)]

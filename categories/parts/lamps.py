@@ -24,9 +24,12 @@ SWITCH_WALL = 0.0015  # wall of the switch housing
 PITCH = math.pi / 6  # chain pitch joints lift by up to PITCH
 SWIVEL = math.pi / 2  # chain swing arms turn +-SWIVEL
 SOCKET_LEN = 0.03  # socket shell length
-TWIN_R = 0.0035  # radius of the twin side bars of a chain segment
+TWIN_R = 0.0045  # radius of the twin side bars of a chain segment (9 mm rods, Anglepoise Type 75)
 COLLAR_LEN = 0.022  # collar ring around a swivel pin
 BASE_PER_REACH = 0.33  # an arm lamp's base radius is at least this times its head's reach
+TRIPOD_HUB = 0.16  # a tripod's hub top (where the pole starts) above the floor
+TRIPOD_SPAN = 1.8  # a tripod's feet stand on a circle this many base radii wide (Hay / IKEA tripod lamps:
+#                    legs spread 0.25-0.4 m from the pole)
 
 
 def blueprint(p: dict, rng: np.random.Generator) -> Blueprint:
@@ -82,7 +85,7 @@ def _design(p: dict, d: dict, R: float) -> dict:
     r_up = p["pole_radius"]
     r_lo = r_up + GAP + _tube_wall(r_up)
     t = p["base_thickness"]
-    z_b = t + 0.22 * R if p["base_shape"] == "domed" else t
+    z_b = {"domed": t + 0.22 * R, "tripod": TRIPOD_HUB}.get(p["base_shape"], t)
     q = dict(floor=floor, style=style, H=H, R=R, rs=rs, z_b=z_b, r_up=r_up, r_lo=r_lo,
              spokes=d["spokes"], shade_drop=d["shade_drop"], switch_angle=d["switch_angle"],
              curve_end=curve_end, reach_x=0.0)
@@ -198,7 +201,7 @@ def _knuckle(r_up: float) -> dict:
     return dict(
         w_c=w,
         r_h=r_up + 0.004,  # hub and cheek radius
-        r_c=min(0.0055, w / 2 - 0.0015),  # central bar radius
+        r_c=min(0.0075, w / 2 - 0.0015),  # central bar radius (up to a 15 mm tube)
         y_tw=w / 2 + GAP + TWIN_R,  # twin bar centre line
         r_pin=0.004,
         r_x=r_up + 0.004,  # half height of the block a swivel pin hangs from
@@ -249,6 +252,9 @@ def _assemble(p: dict, q: dict, z_top: float) -> Blueprint:
 
 def _base(bp: Blueprint, p: dict, q: dict) -> None:
     R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+    if shape == "tripod":
+        bp.add("base", "base", _tripod(q["r_lo"], R, q["z_b"]))
+        return
     if shape == "square":
         a = 0.9 * R
         piece = g.box_between((-a, -a, 0), (a, a, t), "base", bevel=min(0.004, t / 4))
@@ -263,6 +269,22 @@ def _base(bp: Blueprint, p: dict, q: dict) -> None:
         prof.append((0, z_b))
         piece = g.revolve(prof, "base", sections=48)
     bp.add("base", "base", [piece, _weight(shape, R, t, prof if shape == "domed" else None)])
+
+
+def _tripod(r_lo: float, R: float, z_hub: float) -> list[g.Piece]:
+    """A hub under the pole and three splayed legs (one under the head, +x) to rubber-tipped feet on a circle
+    ``TRIPOD_SPAN * R`` wide; a steel slug in the hub (no collision) adds weight low down."""
+    r_hub, r_leg = r_lo + 0.008, max(0.007, 0.8 * r_lo)
+    out = [g.cylinder((0, 0, z_hub - 0.05), (0, 0, z_hub), r_hub, "base", 32)]
+    for k in range(3):
+        a = 2 * math.pi * k / 3
+        d = np.array([math.cos(a), math.sin(a), 0.0])
+        top = d * 0.6 * r_hub + (0, 0, z_hub - 0.035)
+        foot = d * TRIPOD_SPAN * R + (0, 0, 0.012)
+        out += [g.cylinder(top, foot, r_leg, "pole", 16),
+                g.cylinder(foot - (0, 0, 0.012), foot + (0, 0, 0.004), r_leg + 0.003, "fitting", 16)]
+    out.append(g.cylinder((0, 0, z_hub - 0.048), (0, 0, z_hub - 0.002), r_hub - 0.002, "weight", 24).replace(convex=[]))
+    return out
 
 
 def _weight(shape: str, R: float, t: float, prof: list | None = None) -> g.Piece:

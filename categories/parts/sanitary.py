@@ -122,3 +122,94 @@ def trip_lever(xa: float, ys: float, z: float, length: float) -> list[g.Piece]:
 def on_face(x: float, z: float) -> Frame:
     """A frame on a +x-facing face at height ``z`` (its z along +x)."""
     return Frame.at((x, 0.0, z), z=(1, 0, 0), x=(0, 0, -1))
+
+
+# -- the other designs: one-piece, back-to-wall, wall-hung (issue 14) ---------------------------------------
+# Sizes: one-piece WCs carry a low cistern 0.17-0.25 m above the rim on a skirted (concealed-trap) base
+# (TOTO Ultramax, Kohler Santa Rosa); back-to-wall pans stand against a furniture unit 0.8-0.85 m high,
+# 0.2-0.3 m deep (Roca, Ideal Standard Tesi); wall-hung pans are 0.52-0.56 m long, their seat at 0.40-0.43
+# m on a pre-wall frame about 1.12 m high and 0.5 m wide with its flush plate (Geberit Duofix, plate
+# 246 x 164 mm, dual flush: a small and a large key).
+
+PLATE = dict(width=0.246, height=0.164, thickness=0.012, key_gap=0.004)
+KEY_PROUD = 0.003  # a flush key stands this far proud of its plate
+KEY_BEHIND = 0.006  # and reaches this far into it
+
+
+def bowl(a: float, b: float, wall: float, z_r: float, x_c: float, z_bot: float) -> list[g.Piece]:
+    """The oval bowl of ``ceramic_base`` alone: a thin wall of revolution, its rim and the trap's floor."""
+    sx = a / b
+    hb = z_r - z_bot
+    outer = [(0.32 * b, z_bot), (0.55 * b, z_bot + 0.22 * hb), (0.82 * b, z_bot + 0.55 * hb),
+             (0.96 * b, z_bot + 0.85 * hb), (b - 0.004, z_r - 0.03)]
+    return [oval(g.shell(outer, wall, "ceramic", sections=48), x_c, sx),
+            oval(g.shell([(b, z_r - 0.035), (b, z_r)], 0.032, "ceramic", sections=48), x_c, sx),
+            oval(g.disc((0, 0, z_bot - 0.005), 0.34 * b, 0.03, "ceramic", 32), x_c, sx)]
+
+
+def hinge_posts(tab_w: float, z_r: float, hinge) -> list[g.Piece]:
+    """The chrome posts beside the seat and cover tabs."""
+    x_h, z_h = hinge
+    out = []
+    for s in (-1, 1):
+        y0, y1 = sorted((s * (tab_w / 2 + 0.006), s * (tab_w / 2 + 0.026)))
+        out.append(g.box_between([x_h - 0.018, y0, z_r], [x_h + 0.008, y1, z_h - 0.004], "chrome", bevel=0.003))
+    return out
+
+
+def skirted_base(a: float, b: float, wall: float, z_r: float, x_c: float, x_back: float, tab_w: float,
+                 hinge, back_width: float) -> list[g.Piece]:
+    """A bowl on a skirt (the trapway concealed in a smooth oval wall down to the floor) whose back is a
+    block as wide as ``back_width`` up to the rim, ending at ``x_back`` (a cistern or a wall unit)."""
+    sx = a / b
+    z_bot = 0.42 * z_r
+    skirt = [(0.0, 0.0), (0.8 * b, 0.0), (0.8 * b, 0.01), (0.78 * b, z_bot + 0.02), (0.0, z_bot + 0.02)]
+    pieces = bowl(a, b, wall, z_r, x_c, z_bot)
+    pieces.append(oval(g.revolve(skirt, "ceramic", sections=48), x_c - 0.08 * a, 1.05 * sx))
+    x1 = x_c - 0.55 * a
+    pieces.append(g.box_between([x_back, -back_width / 2, 0.0], [x1, back_width / 2, z_r], "ceramic", bevel=0.02))
+    return pieces + hinge_posts(tab_w, z_r, hinge)
+
+
+def hung_base(a: float, b: float, wall: float, z_r: float, x_c: float, x_back: float, tab_w: float,
+              hinge) -> list[g.Piece]:
+    """A wall-hung pan: the bowl and a rear body to the wall at ``x_back`` (bolted through it), nothing to
+    the floor; its underside is a short oval skirt under the bowl."""
+    sx = a / b
+    z_bot = z_r - 0.24  # the bowl is 0.24 m deep under its rim
+    pieces = bowl(a, b, wall, z_r, x_c, z_bot)
+    pieces.append(oval(g.revolve([(0.0, z_bot - 0.03), (0.62 * b, z_bot - 0.03), (0.8 * b, z_bot + 0.05),
+                                  (0.0, z_bot + 0.05)], "ceramic", sections=48), x_c - 0.12 * a, 1.1 * sx))
+    x1 = x_c - 0.5 * a
+    pieces.append(g.box_between([x_back, -0.62 * b, z_bot - 0.03], [x1, 0.62 * b, z_r], "ceramic", bevel=0.025))
+    return pieces + hinge_posts(tab_w, z_r, hinge)
+
+
+def prewall(x_front: float, depth: float, width: float, height: float) -> list[g.Piece]:
+    """A boxed-in installation frame (the wall a wall-hung pan or a back-to-wall unit stands against):
+    a tiled box from the floor with a bevelled top."""
+    return [g.box_between([x_front - depth, -width / 2, 0.0], [x_front, width / 2, height], "wall", bevel=0.006)]
+
+
+def vanity_unit(x_front: float, depth: float, width: float, height: float) -> list[g.Piece]:
+    """A back-to-wall furniture unit: a carcass hiding the cistern, a plinth recess and a worktop."""
+    t = 0.025
+    return [g.box_between([x_front - depth, -width / 2, 0.07], [x_front, width / 2, height - t], "unit", bevel=0.003),
+            g.box_between([x_front - depth, -width / 2 + 0.01, 0.0], [x_front - 0.05, width / 2 - 0.01, 0.07], "unit"),
+            g.box_between([x_front - depth, -width / 2 - 0.01, height - t], [x_front + 0.02, width / 2 + 0.01, height],
+                          "top", bevel=0.004)]
+
+
+def flush_plate(x_face: float, z: float) -> tuple[list[g.Piece], list[tuple[str, list[g.Piece]]]]:
+    """A dual-flush plate on a +x face at height ``z`` (its centre): the plate with two key openings,
+    and the two keys (small flush at -y, large at +y), each in its opening with ``CLEAR`` around it."""
+    w, h, t, kg = PLATE["width"], PLATE["height"], PLATE["thickness"], PLATE["key_gap"]
+    ki = 0.022  # the plate's rim around the keys
+    holes = [(-w / 2 + ki, z - h / 2 + ki, -kg / 2, z + h / 2 - ki), (kg / 2, z - h / 2 + ki, w / 2 - ki, z + h / 2 - ki)]
+    plate = [g.panel([x_face, -w / 2, z - h / 2], [x_face + t, w / 2, z + h / 2], "chrome", "x", holes=holes)]
+    keys = []
+    xf = x_face + t
+    for side, (y0, z0, y1, z1) in zip(("small", "large"), holes):
+        keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR], [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR],
+                                          "chrome", bevel=0.0015)]))
+    return plate, keys

@@ -38,17 +38,36 @@ def column(xy, z0: float, z1: float, r: float, flare: float = 1.25, dome: bool =
     return g.revolve(prof, "metal", center=(xy[0], xy[1], z0), sections=40)
 
 
+HUB = 0.55  # a lever's pivot hub radius as a fraction of its cartridge cap's (hub length 1.6x the cap radius)
+
+
+def lever_cap(xy, z0: float, r_cap: float) -> g.Piece:
+    """The cartridge housing on top of a column (fixed to the column): a short dome with a slot for the
+    lever's hub (the ceramic cartridge of a single-lever mixer, e.g. Grohe Eurosmart: 35-46 mm)."""
+    return g.revolve([(0, 0), (r_cap, 0), (r_cap, 0.7 * CAP_H), (0.8 * r_cap, CAP_H), (0, CAP_H)], "metal",
+                     center=(xy[0], xy[1], z0), sections=40)
+
+
 def lever(xy, z0: float, r_cap: float, arm: float) -> tuple[list[g.Piece], Frame]:
-    """A cartridge cap on a column and an arm forward. Returns the pieces and the tilt hinge: on the
-    cap's back bottom edge, z along -y (a positive turn lifts the arm)."""
+    """A single lever on the cartridge pin above a cap whose top is at ``z0``: a hub round the pin (a
+    cylinder along y centred on it: turning about the pin it stays in place, so the lever never
+    leaves its cartridge) and an arm forward. Returns the pieces and the tilt hinge: the pin's axis,
+    z along -y (a positive turn lifts the arm)."""
     x, y = xy
-    cap = g.revolve([(0, 0), (r_cap, 0), (r_cap, 0.7 * CAP_H), (0.8 * r_cap, CAP_H), (0, CAP_H)], "metal",
-                    center=(x, y, z0), sections=40)
-    w, t = min(0.016, 1.2 * r_cap), 0.008
-    rise, zt = 0.25 * arm, z0 + 0.6 * CAP_H
-    pts = [[x + 0.3 * r_cap, y + s * w / 2, zt + dz] for s in (-1, 1) for dz in (0, t)]
-    pts += [[x + r_cap + arm, y + s * 0.35 * w, zt + rise + dz] for s in (-1, 1) for dz in (0.001, 0.7 * t)]
-    return [cap, _hull(pts, "metal", "handle")], Frame.at((x - r_cap, y, z0), x=(1, 0, 0), z=(0, -1, 0))
+    rh = HUB * r_cap
+    zc = z0 + GAP + rh  # the pin
+    hub = g.cylinder([x, y - 0.8 * r_cap, zc], [x, y + 0.8 * r_cap, zc], rh, "metal", 32)
+    w, t = min(0.016, 1.2 * r_cap), min(0.008, 1.2 * rh)
+    rise = 0.25 * arm
+    pts = [[x + 0.2 * rh, y + s * w / 2, zc + dz] for s in (-1, 1) for dz in (-t / 2, t / 2)]
+    pts += [[x + r_cap + arm, y + s * 0.35 * w, zc + rise + dz] for s in (-1, 1) for dz in (-0.4 * t, 0.3 * t)]
+    return [hub, _hull(pts, "metal", "handle")], Frame.at((x, y, zc), x=(1, 0, 0), z=(0, -1, 0))
+
+
+def lever_height(r_cap: float, arm: float) -> float:
+    """Height of a lever above its cap's top at rest (the arm's tip or the hub)."""
+    rh = HUB * r_cap
+    return GAP + rh + max(rh, 0.25 * arm + 0.3 * min(0.008, 1.2 * rh))
 
 
 def highest_when_tilted(pieces, hinge: Frame, tilt: float) -> float:
@@ -156,6 +175,49 @@ def collar_spout(shape: str, reach: float, r: float, rb: float, z_cm: float, hc:
         pts = _line([x0, 0, z_cm], [reach, 0, z_cm - drop], 10)
         tip = (reach - r, 0, z_cm - drop - 0.6 * r)
     return [collar] + tube(pts, r) + outlet(tip, r)
+
+
+def pullout_spout(reach: float, r: float, z0: float, height: float, z_low: float, travel: float
+                  ) -> tuple[list[g.Piece], list[g.Piece], Frame, float]:
+    """A pull-out kitchen spout (Grohe Minta / Hansgrohe Focus: 20-26 cm reach, 0.15-0.5 m of hose): a
+    riser up from ``z0``, a bend and a straight arm forward; the spray head docks on the arm's end and
+    pulls out along it on its hose. Returns the spout pieces, the head pieces (head, nozzle face and
+    the hose inside the arm), the head's slide frame (z along the arm) and the slide's travel."""
+    rh = max(1.6 * r, 0.015)  # spray head radius
+    top = height - rh  # the arm's centre line
+    R = max(min(0.04, 0.4 * (top - z0)), 0.015)
+    x_dock = max(reach - 0.07, R + 0.06)
+    pts = _line([0, 0, z0], [0, 0, top - R], 6) + _arc([R, 0, top - R], R, math.pi, math.pi / 2, 8)[1:]
+    pts += _line([R, 0, top], [x_dock, 0, top], 6)[1:]
+    travel = min(travel, x_dock - R - 0.03)
+    x1 = x_dock + GAP
+    head = [g.revolve([(0, 0), (0.75 * rh, 0), (rh, 0.012), (rh, 0.06), (0.8 * rh, 0.07), (0, 0.07)], "metal",
+                      sections=32).transformed(Frame.at((x1, 0, top), z=(1, 0, 0)).matrix),
+            g.cylinder([x1 + 0.066, 0, top], [x1 + 0.0705, 0, top], 0.65 * rh, "aerator", 24),
+            # the hose inside the arm: seen when the head is out, no collision (the arm's hulls are solid)
+            g.cylinder([x1 - travel - 0.01, 0, top], [x1, 0, top], max(r - TUBE - 0.0015, 0.002), "seal", 12
+                       ).replace(convex=[])]
+    return tube(pts, r), head, Frame.at((x1, 0, top), z=(1, 0, 0)), travel
+
+
+def bridge_bar(d: float, z: float, r: float) -> list[g.Piece]:
+    """The horizontal bridge pipe joining two valve risers at +-``d`` (a bridge mixer, e.g. Perrin &
+    Rowe: 200-230 mm centres), with a boss in the middle for the spout riser."""
+    return [g.cylinder([0, -d, z], [0, d, z], r, "metal", 24),
+            g.sphere([0, 0, z], 1.35 * r, "metal")]
+
+
+def wall_body(length: float, r: float, z: float, wall_x: float) -> list[g.Piece]:
+    """A wall mixer's body: a bar along y at height ``z`` on two S-unions into escutcheons on the wall
+    plane ``wall_x`` (150 mm centres, EN 200), and the plate they are fixed to."""
+    ends = length / 2 - 0.02
+    pieces = [g.box_between([wall_x - 0.008, -length / 2 - 0.04, z - 0.065], [wall_x, length / 2 + 0.04, z + 0.065],
+                            "metal", bevel=0.004),
+              g.cylinder([0, -length / 2, z], [0, length / 2, z], r, "metal", 32)]
+    for y in (-ends, ends):
+        pieces += [g.cylinder([wall_x, y, z], [wall_x + 0.012, y, z], 0.028, "metal", 32),
+                   g.cylinder([wall_x + 0.012, y, z], [0, y, z], 0.011, "metal", 20)]
+    return pieces
 
 
 # -- deck plates --------------------------------------------------------------------------------------------

@@ -364,3 +364,101 @@ def curtains(p, W, H, fd, z0, fw, x_room):
         halves.append((name, pieces, J.prismatic("frame", name, (xc, sign * span / 2, (zb + zt) / 2), (0, sign, 0),
                                                   0.0, travel, role="slide")))
     return rod, halves
+
+
+# -- tilt-and-turn, top-hung awning, double-hung (issue 14) ------------------------------------------------
+# Tilt-and-turn sashes tilt inward about their bottom rail by 10-15 degrees (a 100-150 mm gap at the top)
+# before turning on their side hinges (Roto NT, Winkhaus activPilot hardware); top-hung awnings open
+# outward 30-45 degrees on their top edge; double-hung sashes: the lower one slides up in the room-side
+# track, the upper one tilts in for cleaning (tilt-in sashes, Andersen 400 / Marvin, 0.6-1.2 m wide).
+
+TILT = math.radians(12)  # tilt-and-turn: the tilt
+AWNING_OPENS = math.radians(36)  # top-hung: the mechanical maximum of its friction stays
+AWNING_PIVOT = 0.6  # top-hung: the pivot sits this share of the sash depth from its outer face (in front
+#                     of the sash's centre of mass: gravity presses it closed)
+UPPER_TILT = math.pi / 3  # double-hung: the upper sash's declared tilt; the core stops it at the lower sash
+
+
+def tilt_turn(frame, light, p, dims, transom, middle):
+    """Casement frame and sashes that turn on their side hinge and tilt about their bottom rail's front
+    edge (flip_revolute: turn, then tilt about y through that edge)."""
+    made, x_room = casement(frame, light, p, dims, transom, middle)
+    out = []
+    for name, pieces, spec in made:
+        d = spec.dofs[0]
+        v = np.vstack([pc.vertices for pc in pieces if pc.material != "handle"])
+        pivot = (float(v[:, 0].max()), float(v[:, 1].mean()), float(v[:, 2].min()))
+        # turn first, then tilt about the sash's own bottom rail: tilted and turned at once (the validators
+        # sample every joint at its maximum) the bottom rail keeps its height above the floor
+        out.append((name, pieces, J.flip_revolute("frame", name, d.origin, d.axis, (d.lower, d.upper), pivot,
+                                                  (0, 1, 0), (0.0, TILT), role="hinge")))
+    return out, x_room
+
+
+def _cells(yi0, yi1, n, mw):
+    """``n`` equal cells across the opening, separated by mullions ``mw`` wide."""
+    w = ((yi1 - yi0) - (n - 1) * mw) / n
+    return [(yi0 + i * (w + mw), yi0 + i * (w + mw) + w) for i in range(n)]
+
+
+def awning(frame, light, p, dims, transom, middle):
+    """Top-hung sashes flush with the outer face, side by side between mullions, opening outward about a
+    horizontal pivot near their top; glazing stops on the room side. Returns (sashes, room-side x)."""
+    fd, yi0, yi1, zi0, zs1, mw = dims
+    n = p["sash_count"] or int(np.clip(round((yi1 - yi0) / p["sash_width"]), 1, 4))
+    st = min(float(np.clip(0.5 * fd, 0.035, 0.06)), fd - CLR - 0.015)
+    xs0, xs1 = -fd / 2, -fd / 2 + st
+    cells = [(a, zi0, b, zs1) for a, b in _cells(yi0, yi1, n, mw)]
+    frame.append(ring(-fd / 2, xs1 + CLR, cells, p))
+    frame.append(ring(xs1 + CLR, fd / 2, [(a + LIP, b + LIP, c - LIP, d - LIP) for a, b, c, d in cells], p))
+    x_piv = xs0 + AWNING_PIVOT * st
+    top_gap = CLR + (x_piv - xs0) * math.sin(AWNING_OPENS) + 0.001  # the outer top edge rises into it
+    sashes = []
+    for i, (a, _, b, _) in enumerate(cells):
+        ya, yb, zb, zt = a + CLR, b - CLR, zi0 + CLR, zs1 - top_gap
+        pieces = sash(ya, yb, zb, zt, xs0, xs1, p["stile_width"], p)
+        sw = min(p["stile_width"], 0.22 * (yb - ya), 0.22 * (zt - zb))
+        zk = zb + max(sw / 2, LIP + 0.022)  # the handle clears the stop lip below it
+        pieces += g.knob_handle((xs1, (ya + yb) / 2, zk), (1, 0, 0), "handle", radius=0.016, depth=0.035)
+        spec = J.revolute("frame", f"sash_{i}", (x_piv, (ya + yb) / 2, zt), (0, 1, 0), 0.0, AWNING_OPENS,
+                          role="hinge")
+        sashes.append((f"sash_{i}", pieces, spec))
+    return sashes, fd / 2 + 0.06
+
+
+def double_hung(frame, light, p, dims, transom, middle):
+    """Two sashes in two tracks: the lower one (room side) slides up, the upper one (outside) tilts in about
+    its bottom rail's front edge. Returns (sashes, room-side x)."""
+    fd, yi0, yi1, zi0, zs1 = dims
+    st = min(float(np.clip(0.3 * fd, 0.022, 0.045)), (fd - TRACK_GAP - 0.004) / 2)
+    xb = (-TRACK_GAP / 2 - st, -TRACK_GAP / 2)  # upper sash (outside)
+    xf = (TRACK_GAP / 2, TRACK_GAP / 2 + st)  # lower sash (room side)
+    sw = min(p["stile_width"], 0.2 * (zs1 - zi0), 0.2 * (yi1 - yi0))
+    ov = 0.7 * sw  # the meeting rails overlap
+    zb, zt = zi0 + CLR, zs1 - CLR
+    zm = (zb + zt) / 2
+    frame.append(ring(-fd / 2, fd / 2, [(yi0, zi0, yi1, zs1)], p))
+    # blind stops behind the upper sash (jambs, head, sill), stop beads before the lower one below the
+    # meeting rail and on the sill
+    for y0, y1 in ((yi0, yi0 + LIP), (yi1 - LIP, yi1)):
+        frame.append(g.box_between([-fd / 2, y0, zi0], [xb[0] - CLR, y1, zs1], "frame"))
+        frame.append(g.box_between([xf[1] + CLR, y0, zi0], [fd / 2, y1, zm - ov / 2 - 0.01], "frame"))
+    frame.append(g.box_between([-fd / 2, yi0, zs1 - LIP], [xb[0] - CLR, yi1, zs1], "frame"))
+    frame.append(g.box_between([-fd / 2, yi0, zi0], [xb[0] - CLR, yi1, zi0 + LIP], "frame"))
+    frame.append(g.box_between([xf[1] + CLR, yi0, zi0], [fd / 2, yi1, zi0 + LIP], "frame"))
+    ya, yb = yi0 + CLR, yi1 - CLR
+    lower = sash(ya, yb, zb, zm + ov / 2, *xf, sw, p)
+    sw_l = min(sw, 0.22 * (yb - ya), 0.22 * (zm + ov / 2 - zb))
+    lower += g.pull_handle((xf[1], (ya + yb) / 2, zb + sw_l / 2), (1, 0, 0), (0, 1, 0), min(0.12, 0.3 * (yb - ya)),
+                           "handle", depth=0.02, lip=min(0.012, 0.6 * sw_l))
+    upper = sash(ya, yb, zm - ov / 2, zt, *xb, sw, p)
+    sw_u = min(sw, 0.22 * (yb - ya), 0.22 * (zt - zm + ov / 2))
+    for y in (ya + sw_u / 2, yb - sw_u / 2):  # the tilt latches at the ends of its top rail
+        upper.append(g.box_between([xb[1], y - 0.012, zt - sw_u / 2 - 0.008], [xb[1] + 0.005, y + 0.012,
+                                                                                zt - sw_u / 2 + 0.008],
+                                   "handle", bevel=0.0015, name="handle"))
+    travel = zt - (zm + ov / 2) - 0.02  # the lower sash stops short of the head
+    return [("sash_0", lower, J.prismatic("frame", "sash_0", (xf[1], (ya + yb) / 2, zb), (0, 0, 1), 0.0, travel,
+                                          role="slide")),
+            ("sash_1", upper, J.revolute("frame", "sash_1", (xb[1], (ya + yb) / 2, zm - ov / 2), (0, 1, 0), 0.0,
+                                         UPPER_TILT, role="hinge"))], xf[1] + 0.05
