@@ -188,12 +188,14 @@ class TableLayout(Layout):
             self.grow(n, k=k, at=f, lw=lw)
 
     def leveller(self, node, k, at, lw):
-        """A levelling foot: a glide disc on a threaded stem screwed into the leg; it turns to level."""
+        """A levelling foot: a glide disc on a threaded stem screwed into the leg. Fixed: a foot under load
+        turns only with the table lifted (the sweep's reach could not spin two of four feet carrying a
+        table: ground friction), so it is a part, not a joint."""
         r = min(0.022, 0.42 * lw)
         pieces = [g.cylinder(at.point((0, 0, 0)), at.point((0, 0, 0.009)), r, "foot", 24),
                   g.cylinder(at.point((0, 0, 0.009)), at.point((0, 0, LEVELLER)), 0.005, "metal", 12)]
         self.add(f"leveller_{k}", "foot", pieces)
-        self.spin("body", f"leveller_{k}", at, role="knob")
+        self.fix("body", f"leveller_{k}")
 
     def adjustable_legs(self, node, corners, lw, zs0, za1):
         zi1 = zs0 + INNER_AT_REST

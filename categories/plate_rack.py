@@ -18,8 +18,8 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
-from infmob_usd.frames import Frame
 from infmob_usd.category import Category
+from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 

@@ -165,7 +165,8 @@ class ToiletLayout(Layout):
             self.grow(kid, part=part, side=side, pieces=pieces, z=z)
 
     def flush_key(self, node, part, side, pieces, z):
-        name = self.add(f"flush_{side}", "button", pieces)
+        # a flush-plate key is chrome-plated plastic like the round buttons (S.BUTTON_WALL)
+        name = self.add(f"flush_{side}", "button", [pc.replace(wall=S.BUTTON_WALL) for pc in pieces])
         x = max(pc.bounds[1, 0] for pc in pieces)
         self.slide(part, name, Frame.at((x, 0.0, z), z=(-1, 0, 0)), upper=PRESS, role="button")
 

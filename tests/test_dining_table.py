@@ -66,8 +66,8 @@ def test_joint_kinds_axes_and_limits(seed):
         if j.child == "leaf":  # the stored extension leaf
             assert j.kind == "fixed"
             continue
-        if part.label == "foot":  # a levelling foot turns about z under its leg
-            assert j.kind == "continuous" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+        if part.label == "foot":  # a levelling foot, fixed under its leg (it turns only with the table lifted)
+            assert j.kind == "fixed"
             assert min(pc.bounds[0, 2] for pc in part.pieces) == pytest.approx(0.0, abs=1e-9)
             continue
         if part.label in ("leaf", "bracket"):  # drop leaves rise level, lopers swing out under them
@@ -179,8 +179,8 @@ def test_drop_leaf_table(over):
 
 def test_levelling_feet():
     p, bp = make(1, support="legs", has_adjustable_legs=False, has_levellers=True)
-    feet = [j for j in movable(bp) if bp.parts[j.child].label == "foot"]
-    assert len(feet) == 4 and all(j.kind == "continuous" and j.parent == "body" for j in feet)
+    feet = [j for j in bp.joints if bp.parts[j.child].label == "foot"]
+    assert len(feet) == 4 and all(j.kind == "fixed" and j.parent == "body" for j in feet)
     legs = [pc for pc in bp.parts["body"].pieces if pc.bounds[0, 2] < 0.05]
     assert legs and min(pc.bounds[0, 2] for pc in legs) == pytest.approx(0.015, abs=1e-6)  # legs on the feet
     assert clash(bp, at([], 0.0)) == []

@@ -152,6 +152,7 @@ def test_real_heavy_offenders_are_fixed():
     toilet = infmob_usd.generate("toilet", seed=1, texture_size=16)
     assert 20 < sum(lk.mass for lk in toilet.links) < 55
     button = [lk for lk in toilet.links if lk.label == "button"]
-    assert button and all(lk.mass < 0.03 for lk in button)
+    # round cistern buttons under 30 g; the larger keys of a dual-flush plate under 60 g (mass_ranges.csv)
+    assert button and all(lk.mass < (0.03 if lk.name == "flush_button" else 0.06) for lk in button)
     door = infmob_usd.generate("door", seed=1, texture_size=16)
     assert 10 < next(lk.mass for lk in door.links if lk.label == "leaf") < 45

@@ -206,7 +206,9 @@ def mortise(piece: g.Piece, lo, hi) -> g.Piece:
     for c in piece.convex:
         c = np.asarray(c, float)
         convex += _boxes_around(c.min(0), c.max(0), lo, hi)
-    return g.Piece(mesh.vertices, mesh.faces, piece.material, convex, piece.name)
+    # the cut piece keeps how it is massed (a hollow-core leaf stays hollow) and its sheet
+    return g.Piece(mesh.vertices, mesh.faces, piece.material, convex, piece.name).replace(
+        wall=piece.wall, sheet=piece.sheet)
 
 
 def latch_bolt(xs, y_edge: float, out: float, z: float) -> tuple[list[g.Piece], tuple, tuple]:
