@@ -190,7 +190,9 @@ def test_generated_with_library_validate_in_sim(libs, name, tmp_path):
         if got:
             with_parts.append(str(m.parent))
     assert sorted(retrieved) == sorted(RETRIEVABLE)
-    assert len(with_parts) >= len(RETRIEVABLE)  # most objects carry a retrieved part
+    # many objects carry a retrieved part (not all: a dish drawer, a barn door or recessed-grip fronts have
+    # no handle or knob slot; the built-in library's 2 seeds x 9 categories gave 6 after the new designs)
+    assert len(with_parts) >= len(RETRIEVABLE) // 2
     # the others drew nothing retrievable: byte for byte the procedural objects the category tests validate
     r = subprocess.run([sys.executable, "-m", "infmob_usd", "validate", "--sim", *with_parts, "--workers", "2"],
                        capture_output=True, text=True)

@@ -74,7 +74,8 @@ def test_joint_fraction_moves_each_joint_along_its_axis(cabinet):
         gate = any(j.name in gates for gates in preview._gates(files).values())  # a door held fully open
         if m["lower"] == 0:
             assert q[j.name] == pytest.approx((1.0 if gate else 0.7) * m["upper"])
-        assert m["lower"] - 1e-9 <= q[j.name] <= m["upper"] + 1e-9
+        # 1e-6: a door held fully open for the racks behind it sits at its upper limit as written (9 digits)
+        assert m["lower"] - 1e-6 <= q[j.name] <= m["upper"] + 1e-6
         if j.type == "prismatic":
             shift = opened[j.child][:3, 3] - rest[j.child][:3, 3]
             np.testing.assert_allclose(shift, np.asarray(m["axis"]) * q[j.name], atol=1e-6)

@@ -41,6 +41,10 @@ KNOWN_FAILURES = {
     "slide adds as much weight, so no effort or URDF inertia can fix it: a vertical slide needs at least "
     "0.59 mm / 0.04 = 15 mm of travel (the lamp's slide is 0.25 of the exposed pole, parts/lamps.py). "
     "Seen with the 5-seed sweep (INFMOB_PUSH_SEEDS=5) only.",
+    ("mujoco", "bottle", 0): "bottle seed 0's screw cap rises 1.6 mm on the vertical slide of its "
+    "continuous_prismatic joint; 5.6 % of so short a range is 0.09 mm: the same sag into MuJoCo's soft stop as "
+    "lamp 4 (a vertical slide far shorter than 15 mm), seen after the vessel designs were merged; PyBullet "
+    "passes. Fix with the lamp: a floor on vertical travel, or armature in the URDF path.",
 }
 
 
