@@ -77,18 +77,11 @@ def split_handle(pot, length: float, angle: float, width: float, thickness: floa
     hinge along -Y at the top edge of the cut, so a positive turn lifts the handle up over the pan;
     ``pull``: +X along the horizontal run; ``rise``: the rising part's frame, x along it)."""
     from . import vessel_sizes as S
-    from .vessel import _hull, _section
+    from .vessel import _hull, _section, handle_root
 
     L, H = S.LONG_HANDLE, C.SPLIT_HANDLE
-    thickness = min(thickness, L["depth_share"] * (pot.rim_bottom - S.HANDLE_RIM_CLEAR - pot.floor))
-    zc = pot.rim_bottom - S.HANDLE_RIM_CLEAR - thickness / 2
+    thickness, zc, root = handle_root(pot, width, thickness)
     y = width / 2
-    root = []
-    for z in (zc - thickness / 2, zc + thickness / 2):
-        x = math.sqrt(max(float(pot.radius_at(z)) ** 2 - y * y, 1e-6)) - 0.5 * pot.wall
-        for s in (-1, 1):
-            root += [(x, s * y * 0.999, z), (x, s * y * L["root_in"], z)]
-    root = np.array(root)
     x_knee = pot.lid_radius + L["clear"] + S.HANDLE_KNEE + H["lug"]
     x_cut = min(root[:, 0].max() + H["lug"], x_knee - H["knee_room"] - H["gap"])
     cut = Frame.at((x_cut, 0.0, zc))

@@ -113,7 +113,7 @@ def clip_outline(xy: np.ndarray, y0: float, y1: float) -> np.ndarray:
     n = len(xy)
     for i in range(n):
         a, b = xy[i], xy[(i + 1) % n]
-        ina, inb = y0 <= a[1] <= y1, y0 <= b[1] <= y1
+        ina = y0 <= a[1] <= y1
         if ina:
             out.append(a)
         for yc in (y0, y1):

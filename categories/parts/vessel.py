@@ -759,12 +759,9 @@ def _hull(points, slot: str) -> g.Piece:
     return g.from_trimesh(g.convex_hull(np.asarray(points, float)), slot, name="handle")
 
 
-def long_handle(pot: Cookware, length: float, angle: float, width: float, thickness: float, slot: str,
-                end_room: float = 0.0) -> Assembly:
-    """A long handle toward +X, in the vessel's frame (anchor ``vessel``): horizontal below the rim
-    out past the lid's edge (its top 3 mm under the bead, so a lid lifting over the rim never meets
-    it), then rising at ``angle``. It stops ``end_room`` short of ``length``: its ``end`` anchor (x
-    along the handle, z across its thickness) carries a :func:`handle_tip` or a :func:`hanging_ring`."""
+def handle_root(pot: Cookware, width: float, thickness: float) -> tuple[float, float, np.ndarray]:
+    """Where a long handle meets the wall: its thickness (at most a share of the wall below the rim),
+    the height of its centre and the (8, 3) points of its root, half a wall inside the outer surface."""
     L = S.LONG_HANDLE
     thickness = min(thickness, L["depth_share"] * (pot.rim_bottom - S.HANDLE_RIM_CLEAR - pot.floor))
     zc = pot.rim_bottom - S.HANDLE_RIM_CLEAR - thickness / 2
@@ -774,7 +771,17 @@ def long_handle(pot: Cookware, length: float, angle: float, width: float, thickn
         x = math.sqrt(max(float(pot.radius_at(z)) ** 2 - y * y, 1e-6)) - 0.5 * pot.wall
         for s in (-1, 1):
             root += [(x, s * y * 0.999, z), (x, s * y * L["root_in"], z)]
-    root = np.array(root)
+    return thickness, zc, np.array(root)
+
+
+def long_handle(pot: Cookware, length: float, angle: float, width: float, thickness: float, slot: str,
+                end_room: float = 0.0) -> Assembly:
+    """A long handle toward +X, in the vessel's frame (anchor ``vessel``): horizontal below the rim
+    out past the lid's edge (its top 3 mm under the bead, so a lid lifting over the rim never meets
+    it), then rising at ``angle``. It stops ``end_room`` short of ``length``: its ``end`` anchor (x
+    along the handle, z across its thickness) carries a :func:`handle_tip` or a :func:`hanging_ring`."""
+    L = S.LONG_HANDLE
+    thickness, zc, root = handle_root(pot, width, thickness)
     x_knee = pot.lid_radius + L["clear"] + S.HANDLE_KNEE
     knee = Frame.at((x_knee, 0.0, zc))
     knee_pts = _section(knee, width / 2, thickness / 2)
