@@ -127,12 +127,9 @@ class FridgeLayout(Layout):
         """The hermetic compressor in the machine compartment behind the kick grille (hidden, no
         collision): a steel can in the ``wire`` slot (chrome, 7850 kg/m^3) massed as a shell whose wall
         makes it :data:`COMPRESSOR_KG` with the motor inside."""
-        h = zk - zf - 0.012
         r = 0.07
-        x = xb0 + 0.004 + 0.01 + r
-        can = g.cylinder([x, 0.0, zf + 0.004], [x, 0.0, zf + 0.004 + h], r, "wire", 24)
-        area = 2 * math.pi * r * (r + h)
-        return [can.replace(convex=(), wall=COMPRESSOR_KG / (7850.0 * area), name="compressor")]
+        return [A.machine_can(xb0 + 0.004 + 0.01 + r, zf + 0.004, zk - zf - 0.012, r, "wire", COMPRESSOR_KG,
+                              "compressor")]
 
     def beverage_fridge(self, node):
         p = self.p

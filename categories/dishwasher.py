@@ -124,10 +124,7 @@ class DishwasherLayout(A.PanelNodes):
     def pump(self, xb0: float, xb1: float, zf: float, zh: float) -> list[g.Piece]:
         """The wash pump with its motor and the sump in the base under the tub (hidden, no collision):
         a steel can in the ``tub`` slot (stainless, 7850 kg/m^3) whose wall makes it :data:`PUMP_KG`."""
-        h, r = zh - zf - 0.012, 0.06
-        x = (xb0 + xb1) / 2 - 0.04
-        can = g.cylinder([x, 0.0, zf + 0.006], [x, 0.0, zf + 0.006 + h], r, "tub", 24)
-        return [can.replace(convex=(), wall=PUMP_KG / (7850.0 * 2 * math.pi * r * (r + h)), name="pump")]
+        return [A.machine_can((xb0 + xb1) / 2 - 0.04, zf + 0.006, zh - zf - 0.012, 0.06, "tub", PUMP_KG, "pump")]
 
     def dishwasher(self, node):
         p = self.p

@@ -22,6 +22,14 @@ CLEAR = 0.0025  # clearance of buttons and dial stems in their panel holes
 BEHIND = 0.008  # buttons and stems reach this far behind the fascia's face
 
 
+def machine_can(x: float, z0: float, h: float, r: float, slot: str, kg: float, name: str) -> g.Piece:
+    """A hidden machine (compressor, pump) as an upright steel can at ``(x, 0)`` from ``z0`` up ``h``, no
+    collision, massed as a steel shell (7850 kg/m^3) whose wall makes it weigh ``kg``."""
+    can = g.cylinder([x, 0.0, z0], [x, 0.0, z0 + h], r, slot, 24)
+    area = 2 * math.pi * r * (r + h)
+    return can.replace(convex=(), wall=kg / (7850.0 * area), name=name)
+
+
 def casing(outer, cavity, wall: float, feet_r: float) -> list[g.Piece]:
     """A sheet casing (bottom, top, sides, back), a front bezel with the cavity opening, a cavity
     liner of five thin walls, four feet and louvres on the right side.
