@@ -180,13 +180,14 @@ class Group:
             pairs = list(combinations(range(n), 2))
         teds = [ted(self.trees[i], self.trees[j]) for i, j in pairs]
         depths = [t.depth() for t in self.trees]
+        distinct = len({t.bracket() for t in self.trees})
         return {
             "objects": n,
             "mean_joints": float(np.mean(self.joints)) if n else 0.0,
             "var_joints": float(np.var(self.joints)) if n else 0.0,
             "no_movable_joint": sum(1 for j in self.joints if j == 0),
-            "distinct_trees": len({t.bracket() for t in self.trees}),
-            "distinct_share": len({t.bracket() for t in self.trees}) / n if n else 0.0,
+            "distinct_trees": distinct,
+            "distinct_share": distinct / n if n else 0.0,
             "ref_mean_joints": float(np.mean(self.ref_joints)) if self.ref_joints else 0.0,
             "ref_var_joints": float(np.var(self.ref_joints)) if self.ref_joints else 0.0,
             "joint_kinds": dict(sorted(self.kinds.items())),
