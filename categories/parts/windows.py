@@ -377,6 +377,7 @@ AWNING_OPENS = math.radians(36)  # top-hung: the mechanical maximum of its frict
 AWNING_PIVOT = 0.6  # top-hung: the pivot sits this share of the sash depth from its outer face (in front
 #                     of the sash's centre of mass: gravity presses it closed)
 UPPER_TILT = math.pi / 3  # double-hung: the upper sash's declared tilt; the core stops it at the lower sash
+TILT_CLEAR = 0.004  # m: a tilting sash's top back edge passes under the head with this much to spare
 
 
 def tilt_turn(frame, light, p, dims, transom, middle):
@@ -388,6 +389,16 @@ def tilt_turn(frame, light, p, dims, transom, middle):
         d = spec.dofs[0]
         v = np.vstack([pc.vertices for pc in pieces if pc.material != "handle"])
         pivot = (float(v[:, 0].max()), float(v[:, 1].mean()), float(v[:, 2].min()))
+        # tilting about its front bottom edge, the sash's back top edge first rises by hypot(depth, height) -
+        # height (at atan(depth / height), as it leaves the head): a short deep sash would scrape the head
+        # across the CLR gap, so such a sash is made that much lower
+        h, depth = float(np.ptp(v[:, 2])), float(np.ptp(v[:, 0]))
+        short = math.hypot(depth, h) - h + TILT_CLEAR - CLR
+        if short > 0:
+            lower = np.eye(4)
+            lower[2, 2] = (h - short) / h
+            lower[2, 3] = pivot[2] * (1 - lower[2, 2])
+            pieces = [pc.transformed(lower) for pc in pieces]
         # turn first, then tilt about the sash's own bottom rail: tilted and turned at once (the validators
         # sample every joint at its maximum) the bottom rail keeps its height above the floor
         out.append((name, pieces, J.flip_revolute("frame", name, d.origin, d.axis, (d.lower, d.upper), pivot,
