@@ -167,6 +167,41 @@ def goods_row(kind: str, span: tuple[float, float], depth: float, rng: np.random
     return d, [(ya + (k + 0.5) * pitch - w / 2, ya + (k + 0.5) * pitch + w / 2) for k in range(count)]
 
 
+# -- modular drawer cabinets on a pallet-rack level ----------------------------------------------------------
+# Lista / Stanley Vidmar pallet-rack drawer systems: a steel housing 22-1/2, 30 or 45 in wide (narrowest
+# first), 28-1/4 in deep, whose drawers (front heights 3-12 in, 75-300 mm) run on full-extension slides;
+# 1.2-1.5 mm sheet steel
+DRAWER_CAB = dict(widths=(0.572, 0.762, 1.143), depth=0.718, sheet=0.0015, gap=0.003, front=0.018, lip=0.02)
+
+
+def drawer_housing(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
+    """The housing of a drawer cabinet: bottom, top, two sides and a back of sheet steel, open at the front."""
+    t = 0.012  # panels are folded channels; one slab each for collisions
+    s = DRAWER_CAB["sheet"]
+    return [g.box_between([x0, y0, z], [x1, y1, z + t], slot).replace(sheet=s),
+            g.box_between([x0, y0, z + h - t], [x1, y1, z + h], slot).replace(sheet=s),
+            g.box_between([x0, y0, z + t], [x1, y0 + t, z + h - t], slot).replace(sheet=s),
+            g.box_between([x0, y1 - t, z + t], [x1, y1, z + h - t], slot).replace(sheet=s),
+            g.box_between([x0, y0 + t, z + t], [x0 + t, y1 - t, z + h - t], slot).replace(sheet=s)]
+
+
+def cabinet_drawer(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float, slot: str,
+                   pull: str) -> list[g.Piece]:
+    """A steel drawer between ``x0`` (back) and ``x1`` (its front face), ``z0``-``z1`` tall: a tray of
+    bottom, sides and back behind a front panel with a full-width pull lip along its top edge."""
+    s, f, w = DRAWER_CAB["sheet"], DRAWER_CAB["front"], 0.01
+    hs = max(0.6 * (z1 - z0), min(z1 - z0, 0.05))  # the tray's walls are lower than the front
+    xf = x1 - f
+    pieces = [g.box_between([xf, y0, z0], [x1, y1, z1], slot, bevel=0.002).replace(sheet=s),
+              g.box_between([x0, y0 + 0.005, z0], [xf, y1 - 0.005, z0 + w], slot).replace(sheet=s),
+              g.box_between([x0, y0 + 0.005, z0 + w], [xf, y0 + 0.005 + w, z0 + hs], slot).replace(sheet=s),
+              g.box_between([x0, y1 - 0.005 - w, z0 + w], [xf, y1 - 0.005, z0 + hs], slot).replace(sheet=s),
+              g.box_between([x0, y0 + 0.005 + w, z0 + w], [x0 + w, y1 - 0.005 - w, z0 + hs], slot).replace(sheet=s)]
+    lip = min(DRAWER_CAB["lip"], 0.3 * (z1 - z0))
+    pieces.append(g.box_between([x1, y0 + 0.01, z1 - lip], [x1 + 0.012, y1 - 0.01, z1 - 0.002], pull, bevel=0.002))
+    return pieces
+
+
 # -- dish racks and plates -----------------------------------------------------------------------------
 SEAT_GAP = 0.004  # a plate's lowest point above the support surface at rest
 PLATE_SECTIONS = 64
