@@ -27,20 +27,24 @@ from .parts import racks as R
 
 
 def plates(p, rng) -> int:
-    """plate_count (at most slot_count), or each slot filled with chance 0.5, at least one"""
+    """plate_count (at most slot_count), or each slot filled with chance ``fill``, at least one"""
     n = p["slot_count"]
-    drawn = max(1, int((rng.random(n) < 0.5).sum()))
+    drawn = max(1, int((rng.random(n) < p["fill"]).sum()))
     return min(p["plate_count"], n) if p["plate_count"] else drawn
 
 
 GRAMMAR = Grammar("plate_rack", {
-    "plate_rack": Node(label="rack", repeat={"plate": plates}, optional={"feet": 0.5},
+    "plate_rack": Node(label="rack", repeat={"plate": plates},
+                       optional={"feet": 0.5, "tier": 0.5, "drip_tray": 0.6, "spout": 0.6},
                        one_of={"cutlery": 0.35, "cups": 0.3, "station": 0.35}, choice="design"),
     "plate": Node(label="plate"),
     "feet": Node(),
+    "tier": Node(repeat={"plate": plates}),
+    "drip_tray": Node(label="tray"),
+    "spout": Node(label="spout"),
     "cutlery": Node(repeat={"caddy": (1, 2)}),
-    "cups": Node(repeat={"cup": (2, 8)}),
-    "station": Node(repeat={"caddy": (1, 2), "cup": (2, 6)}),
+    "cups": Node(repeat={"cup": (3, 10)}),
+    "station": Node(repeat={"caddy": (1, 2), "cup": (2, 8)}),
     "caddy": Node(label="basket"),
     "cup": Node(one_of={"mug": 0.6, "glass": 0.4}),
     "mug": Node(label="cup"),
@@ -49,11 +53,18 @@ GRAMMAR = Grammar("plate_rack", {
 """Plates fill ``plates`` of the slots, which ones drawn per rack. ``feet`` are rubber pads under a
 wood or plastic rack; a wire rack always stands on its capped legs. Beside the plates a side
 board carries one or two cutlery caddies that lift out (``cutlery``), mugs and tumblers upside
-down on pegs that lift off (``cups``), or caddies and cups (``station``): the three designs."""
+down on pegs that lift off (``cups``), or caddies and cups (``station``): the three designs.
+A wire or wood rack may have a second ``tier`` of prongs on four posts above the first, its own
+plates in its slots (two-tier chrome drainers: Kitsure, simplehuman; two-tier bamboo dish racks);
+a wire rack a ``drip_tray`` between its legs that slides out along +X to be emptied; a moulded
+plastic tray a ``spout`` on its front end wall that swivels 180 degrees about Z (Rubbermaid, OXO
+drainer trays)."""
 
 PARAMS = (
-    Int("slot_count", "slots (fences of prong pairs = slots + 1)", "", 3, 7),
-    Int("plate_count", "plates; auto = each slot holds one with chance 0.5 (at least one)", "", 1, 7, auto=True),
+    # drainers and wall plate racks have 6-12 plate slots (IKEA OSTBIT 8, simplehuman 2-tier 10-12 per tier)
+    Int("slot_count", "slots (fences of prong pairs = slots + 1)", "", 3, 10),
+    Int("plate_count", "plates; auto = each slot holds one with chance fill (at least one)", "", 1, 10, auto=True),
+    Float("fill", "chance that a slot holds a plate (auto plate count)", "", 0.4, 0.95),
     Choice("style", "rack construction", choices=("wood", "plastic", "wire"), weights=(0.35, 0.3, 0.35)),
     Float("prong_height", "prong height above the support surface", "m", 0.08, 0.15),
     Float("prong_radius", "prong radius (a wire rack uses 0.6 of it)", "m", 0.003, 0.006),
@@ -69,12 +80,16 @@ PARAMS = (
 
 MATERIALS = {"frame": ("style", {"wire": "chrome"}), "prong": ("style", {"wire": "chrome"}), "plate": "ceramic",
              "plate_alt": "ceramic", "feet": "rubber:black|soft_black", "caddy": "plastic:white|light_grey|dark_grey",
-             "cutlery": "brushed_metal", "mug": "ceramic", "glass": "glass:clear|clear_blue"}
+             "cutlery": "brushed_metal", "mug": "ceramic", "glass": "glass:clear|clear_blue",
+             "tray": "plastic:white|light_grey|dark_grey|black", "spout": "plastic:white|light_grey|dark_grey"}
 
 
 def wire_has_legs(p: dict) -> dict:
-    """A wire rack stands on its capped legs, never on pads."""
-    return {**p, "has_feet": p["has_feet"] and p["style"] != "wire"}
+    """A wire rack stands on its capped legs, never on pads; a moulded plastic tray carries no second tier; only
+    a wire rack has a drip tray between its legs (the others are their own trays), only a plastic tray a spout."""
+    wire, plastic = p["style"] == "wire", p["style"] == "plastic"
+    return {**p, "has_feet": p["has_feet"] and not wire, "has_tier": p["has_tier"] and not plastic,
+            "has_drip_tray": p["has_drip_tray"] and wire, "has_spout": p["has_spout"] and plastic}
 
 
 LIFT = 0.1  # lift of a plate along +Z
@@ -85,6 +100,9 @@ WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
 SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
 CADDY_LIFT = 0.2  # a caddy lifts clear of its board
 CUP_LIFT = R.PEG["h"] + 0.025  # a mug lifts off its peg
+TIER_GAP = 0.02  # between a lower plate lifted fully and the upper tier's lowest wire
+TRAY_OUT = 0.8  # the drip tray slides out by this fraction of its length
+SPOUT_OFF = R.SPOUT["hub"] + 0.004  # the spout's hub axis beyond the tray's end wall
 
 
 class RackLayout(Layout):
@@ -123,18 +141,66 @@ class RackLayout(Layout):
             self.grow(node.one("feet"), pieces=self.bp.parts["rack"].pieces, xs=xs)
         self.grow(design, board=board)
         zc = zs + R.SEAT_GAP + r  # plate centre: its lowest point SEAT_GAP above the support
-        kids = node.of("plate")
+        self._plates(node.of("plate"), plate0, fences, pitch, x_lo, zc, "plate")
+        if node.one("tier"):
+            self.grow(node.one("tier"), rack=(fences, xs, b, rp, z0), top=zc + r + LIFT + TIER_GAP, plate0=plate0,
+                      pitch=pitch, x_lo=x_lo, zc=zc)
+        if node.one("drip_tray"):
+            self.grow(node.one("drip_tray"), xs=xs, b=b, rp=rp)
+        if node.one("spout"):
+            self.grow(node.one("spout"), x=xs[1] + 0.004, z=z0)  # the tray's end wall is 4 mm
+
+    def _plates(self, kids, plate0, fences, pitch, x_lo, zc, prefix):
+        p = self.p
+        n = p["slot_count"]
+        rp = p["prong_radius"] * (WIRE if p["style"] == "wire" else 1.0)
         slots = sorted(int(i) for i in self.rng.choice(n, size=len(kids), replace=False))
         for kid, i in zip(kids, slots):
             x_foot = fences[i] + rp + p["clearance"] - x_lo
-            self.grow(kid, i=i, piece=plate0.translated((x_foot, 0.0, zc)), pivot=(fences[i] + pitch / 2, 0.0, zc))
+            self.grow(kid, i=i, piece=plate0.translated((x_foot, 0.0, zc)), pivot=(fences[i] + pitch / 2, 0.0, zc),
+                      prefix=prefix)
+
+    def tier(self, node, rack, top, plate0, pitch, x_lo, zc):
+        """The upper tier: the rack again, raised until its lowest member over the plates is at ``top`` (TIER_GAP
+        above a lower plate lifted fully), on four posts that rise from the lower tier; its plates in its own
+        slots. Wire: the legs (caps dropped) stand on posts over the lower legs, its cross wires are the lowest
+        members (a rail's radius under the rail axis). Wood: the rails are, and the posts are dowels from the
+        lower rails to the upper battens."""
+        fences, xs, b, rp, z0 = rack
+        p = self.p
+        if p["style"] == "wire":
+            pieces, zs = R.wire_rack(fences, xs, b, rp, p["prong_height"], p["base_height"])
+            dz = top - (zs - 3 * rp)
+            pieces = [pc for pc in pieces if pc.material != "feet"]
+            posts = R.tier_posts((xs[0] + 0.012, xs[1] - 0.012), b, rp, zs - rp, dz + 0.007)  # rail axis to leg foot
+        else:
+            pieces, zs = R.wood_rack(fences, xs, b, rp, z0, p["prong_height"], p["base_height"])
+            dz = top - (zs - p["base_height"])
+            bw = R.BATTEN_W
+            posts = R.tier_posts((xs[0] + bw / 2, xs[1] - bw / 2), b, max(0.006, 1.5 * rp), zs, z0 + dz)
+        self.extend("rack", [pc.translated((0.0, 0.0, dz)) for pc in pieces] + posts)
+        self._plates(node.of("plate"), plate0, fences, pitch, x_lo, zc + dz, "upper_plate")
+
+    def spout(self, node, x, z):
+        """The swivel spout at the middle of the tray's front end wall, its bottom just above the floor's
+        underside; at rest it lies along the wall (pointing -Y) and swings through +X to +Y."""
+        at = (x + SPOUT_OFF, 0.0, z + 0.003)
+        name = self.add("spout", "spout", R.swivel_spout(*at, "spout"))
+        self.hinge("rack", name, Frame.at(at, z=(0, 0, 1)), upper=math.pi, role="swivel")
+
+    def drip_tray(self, node, xs, b, rp):
+        """A shallow tray between the legs, under the cross wires; it slides out along +X past the front legs."""
+        y = b - 0.0055 - 0.004  # inside the legs' 5.5 mm rubber caps
+        x0, x1 = xs[0] + 0.005, xs[1] + 0.01
+        name = self.add("drip_tray", "tray", R.drip_tray(x0, x1, -y, y, 0.001, R.DRIP_TRAY["h"], "tray"))
+        self.slide("rack", name, Frame.at((x1, 0.0, 0.0), z=(1, 0, 0)), upper=TRAY_OUT * (x1 - x0))
 
     def feet(self, node, pieces, xs):
         self.extend("rack", R.pads(pieces, xs))
 
-    def plate(self, node, i, piece, pivot):
+    def plate(self, node, i, piece, pivot, prefix="plate"):
         slot = "plate_alt" if self.p["plate_set"] == "mixed" and i % 2 else "plate"
-        name = self.add(f"plate_{i}", "plate", [piece.replace(material=slot)])
+        name = self.add(f"{prefix}_{i}", "plate", [piece.replace(material=slot)])
         # in its own plane: lift along +Z, slide along Y, turn about its axis (X) through its centre
         self.join(J.limited_planar("rack", name, pivot, slide_axes=((0, 0, 1), (0, 1, 0)),
                                    slides=((0.0, LIFT), (-R.PLATE_SLIDE, R.PLATE_SLIDE)), axis=(1, 0, 0),

@@ -2,10 +2,10 @@
 
 Three designs (``design``). ``pallet_rack`` is described below. ``shelving``: boltless steel
 shelving (0.35-0.6 m deep, 4-6 fixed levels 0.3-0.45 m apart: Tennsco / IKEA BROR) holding a row
-of plastic storage totes on each level; each tote slides out along +X and a lidded tote's lid
+of 2-5 plastic storage totes (0.28-0.45 m wide, their number drawn per level) on each level; each tote slides out along +X and a lidded tote's lid
 hinges up about its back edge once the tote is out (``requires_open``). ``bin_rack``: a
-small-parts bin rack (0.35-0.6 m deep, 4-7 levels 0.18-0.24 m apart) whose every level holds a row
-of open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X:
+small-parts bin rack (0.35-0.6 m deep, 4-8 levels 0.18-0.24 m apart) whose every level holds a row
+of up to 12 open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X:
 racks of bins are the large assemblies of the category.
 
 Pallet rack: X is depth (the front faces +X), Y is width, Z is up. Frames of two braced uprights stand at
@@ -14,8 +14,10 @@ pair of beams with a deck (wire mesh, steel panel or wooden board). The bottom l
 every other level slides up along +Z, resting just above stop brackets on the uprights (its
 lower limit, where gravity holds it), by the same travel for every level, so raised together
 nothing closes up and a level raised alone never reaches the level above or its goods. Goods
-(cardboard boxes, plastic crates, or pallets with stacked boxes) are fixed on a level, inside
-the bay, clear of the uprights. Parts: ``categories/parts/racks.py``.
+(cardboard boxes, plastic crates, pallets with stacked boxes, or modular drawer cabinets: Lista /
+Stanley Vidmar pallet-rack drawer systems) are fixed on a level, inside the bay, clear of the
+uprights; a level's goods kind is drawn per level. A drawer cabinet's drawers (1-10, fronts 75-300
+mm) slide out along +X on full-extension slides. Parts: ``categories/parts/racks.py``.
 """
 
 from __future__ import annotations
@@ -44,8 +46,11 @@ def goods(p, rng) -> int:
 
 
 def totes(p, rng) -> int:
-    """totes per level of a bay: 2 or 3 boxes side by side (45-60 L totes are 0.4-0.6 m long)"""
-    return int(rng.integers(2, 4))
+    """totes per level of a bay, drawn per level: as many as fit at 0.28-0.45 m wide each (IKEA SAMLA 22 L is
+    28 cm wide, 45 L 39 cm; Really Useful Box 35-64 L 39-44 cm), at least 2, at most 5"""
+    span = _bay_span(p, SHELF_U)
+    lo = max(2, int(span // TOTE_W[1]))
+    return int(rng.integers(lo, max(lo, min(5, int(span // TOTE_W[0]))) + 1))
 
 
 def bins(p, rng) -> int:
@@ -55,6 +60,26 @@ def bins(p, rng) -> int:
 
 def _bay_span(p, u) -> float:
     return (p["width"] - u) / bays(p, None) - u - 2 * GAP
+
+
+def _goods_h(p) -> float:
+    """goods height on a pallet-rack level: goods_fill of the clear height between a deck and the beams above"""
+    return p["goods_fill"] * (p["level_height"] - p["beam_height"] - R.DECK_T[p["deck"]])
+
+
+def cabinets(p, rng) -> int:
+    """drawer cabinets side by side on a level, drawn per level: from as many 45 in ones as fit (at least one) to as
+    many 30 in ones as fit"""
+    width = _bay_span(p, p["upright_size"]) - 2 * SIDE
+    lo = max(1, int(width // (R.DRAWER_CAB["widths"][-1] + CAB_GAP)))
+    return int(rng.integers(lo, max(lo, int(width // (R.DRAWER_CAB["widths"][1] + CAB_GAP))) + 1))
+
+
+def drawers(p, rng) -> int:
+    """drawers of a cabinet, drawn per cabinet: fronts 75-300 mm high (Lista / Vidmar) filling the cabinet, 1-10"""
+    inner = _goods_h(p) - 2 * CAB_PANEL
+    lo = max(1, math.ceil(inner / 0.3))
+    return int(rng.integers(lo, max(lo, min(10, int(inner // 0.075))) + 1))
 
 
 GRAMMAR = Grammar("storage_rack", {
@@ -73,7 +98,10 @@ GRAMMAR = Grammar("storage_rack", {
     "bin": Node(label="bin"),
     "bay": Node(repeat={"level": "level_count"}),
     "level": Node(label="shelf", repeat={"goods": goods}),
-    "goods": Node(one_of={"boxes": 0.4, "pallet": 0.35, "crates": 0.25}),
+    "goods": Node(one_of={"boxes": 0.3, "pallet": 0.25, "crates": 0.2, "drawers": 0.25}),
+    "drawers": Node(repeat={"drawer_cabinet": cabinets}),
+    "drawer_cabinet": Node(label="cabinet", repeat={"drawer": drawers}),
+    "drawer": Node(label="drawer"),
     "boxes": Node(label="box"),
     "crates": Node(label="box"),
     "pallet": Node(label="pallet"),
@@ -100,7 +128,8 @@ PARAMS = (
     # bin racks: AkroBins 30220-30240 are 4-1/8 to 5-1/2 in wide, 5 in high; shelf pitch 6-8 in
     Float("bin_width", "bin rack: bin width", "m", 0.105, 0.15),
     Float("bin_spacing", "bin rack: spacing between levels", "m", 0.18, 0.24),
-    Int("bin_levels", "bin rack: levels", "", 4, 7),
+    # 72-84 in bin shelving units carry up to 8 shelves of 5 in bins (Akro-Mils AWS / Edsal bin units)
+    Int("bin_levels", "bin rack: levels", "", 4, 8),
     Float("tote_travel", "how far a tote or bin slides out, as a fraction of its depth", "", 0.5, 0.8),
 )
 
@@ -112,6 +141,8 @@ MATERIALS = {
     "pallet": "wood:birch|maple|oak|teak", "tape": "painted:off_white|light_grey",
     "tote": "plastic:clear|white|light_grey|dark_grey|blue", "lid": "plastic:blue|red|yellow|green|dark_grey|white",
     "bin": "plastic:blue|red|yellow|green", "label": "painted:off_white",
+    "cabinet": "enamel:graphite|cobalt|white|green", "drawer": "enamel:graphite|cobalt|white|red|green",
+    "pull": "brushed_metal",
 }
 
 GAP = 0.005  # level <-> uprights and stop brackets
@@ -122,7 +153,13 @@ GOODS_LIFT = 0.001  # goods stand this far above the deck
 SHELF_U = 0.04  # boltless shelving / bin rack upright (38-40 mm angle posts)
 SHELF_BEAM = 0.04  # and its beams
 BIN_GAP = 0.004  # between neighbouring bins
-MAX_BINS = 6
+# AkroBins 30220 (4-1/8 in wide): 8 across a 36 in shelf, 11 across a 48 in one; a 60 in bay takes 12-13
+MAX_BINS = 12
+TOTE_W = (0.28, 0.45)  # tote widths across the shelf (see totes)
+CAB_GAP = 0.02  # between drawer cabinets side by side
+CAB_PANEL = 0.012  # a drawer cabinet's top and bottom panels
+DRAWER_GAP = 0.003  # between drawer fronts
+DRAWER_OUT = 0.95  # full-extension slides: a drawer comes out by ~95 % of its depth
 LID_OPEN = 1.9  # a tote lid swings back up to ~110 degrees
 
 
@@ -150,7 +187,7 @@ class RackLayout(Layout):
         dt = R.DECK_T[p["deck"]]
         zs = [p["bottom_height"] + i * lh for i in range(n)]
         clear = lh - bh - dt  # from a deck top to the beams above
-        goods_h = p["goods_fill"] * clear
+        goods_h = _goods_h(p)
         # raised alone, a level (and its goods) stays below the level above and its stop brackets
         travel = min(lh / 3, clear - goods_h - HEADROOM, clear - GAP - R.BRACKET_H - HEADROOM)
         return zs, travel
@@ -176,8 +213,7 @@ class RackLayout(Layout):
     def pallet_rack(self, node, ys, zs, travel):
         p = self.p
         u = p["upright_size"]
-        clear = p["level_height"] - p["beam_height"] - R.DECK_T[p["deck"]]
-        goods_h = p["goods_fill"] * clear
+        goods_h = _goods_h(p)
         for b, bay in enumerate(node.of("bay")):
             self.grow(bay, b=b, span=(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP), zs=zs, travel=travel,
                       goods_h=goods_h)
@@ -211,6 +247,36 @@ class RackLayout(Layout):
             self.fix(level, name)
 
     boxes = crates = pallet = _row
+
+    def drawers(self, node, level, span, z, h):
+        """Modular drawer cabinets standing on the level, side by side, fronts flush with the front beam."""
+        kids = node.of("drawer_cabinet")
+        width = span[1] - span[0]
+        pitch = width / len(kids)
+        w = next((cw for cw in reversed(R.DRAWER_CAB["widths"]) if cw + CAB_GAP <= pitch), pitch - CAB_GAP)
+        x1 = self.p["depth"] / 2 - 0.02
+        xs = (x1 - min(R.DRAWER_CAB["depth"], self.p["depth"] - 0.06), x1)
+        for k, kid in enumerate(kids):
+            yc = span[0] + (k + 0.5) * pitch
+            self.grow(kid, level=level, name=f"{level}_cabinet_{k}", xs=xs, ys=(yc - w / 2, yc + w / 2), z=z, h=h)
+
+    def drawer_cabinet(self, node, level, name, xs, ys, z, h):
+        self.add(name, "cabinet", R.drawer_housing(*xs, *ys, z, h, "cabinet"))
+        self.fix(level, name)
+        kids = node.of("drawer")
+        x0, x1 = xs[0] + CAB_PANEL + 0.01, xs[1] - 0.002
+        y0, y1 = ys[0] + CAB_PANEL + DRAWER_GAP, ys[1] - CAB_PANEL - DRAWER_GAP
+        z0, z1 = z + CAB_PANEL + DRAWER_GAP, z + h - CAB_PANEL - DRAWER_GAP
+        pitch = (z1 - z0) / len(kids)
+        for k, kid in enumerate(kids):
+            za = z0 + k * pitch
+            self.grow(kid, cabinet=name, name=f"{name}_drawer_{k}", xs=(x0, x1), ys=(y0, y1),
+                      zs=(za, za + pitch - DRAWER_GAP))
+
+    def drawer(self, node, cabinet, name, xs, ys, zs):
+        self.add(name, "drawer", R.cabinet_drawer(*xs, *ys, *zs, "drawer", "pull"))
+        self.slide(cabinet, name, Frame.at((xs[1], sum(ys) / 2, zs[0]), z=(1, 0, 0)),
+                   upper=DRAWER_OUT * (xs[1] - xs[0]))
 
     # -- shelving of totes, racks of bins --------------------------------------------------------------
     def shelving(self, node, ys, zs, clear):

@@ -122,9 +122,16 @@ def test_parts_labels_and_materials(seed):
     p, bp = make(seed)
     assert bp.root == "rack" and bp.parts["rack"].label == "rack"
     names = plates(bp)
-    assert 1 <= len(names) <= p["slot_count"]
+    d = pr.wire_has_legs(p)  # what the rack was built from: tier and drip tray on a wire rack only
+    tiers = 2 if d["has_tier"] else 1
+    assert 1 <= len([n for n in names if n.startswith("plate_")]) <= p["slot_count"]
+    assert len(names) <= tiers * p["slot_count"]
     extra = {"cutlery": {"basket"}, "cups": {"cup", "glass"}, "station": {"basket", "cup", "glass"}}[p["design"]]
+    extra = extra | ({"tray"} if d["has_drip_tray"] else set()) | ({"spout"} if d["has_spout"] else set())
     assert {"rack", "plate"} < {part.label for part in bp.parts.values()} <= {"rack", "plate"} | extra
+    assert ("tray" in {part.label for part in bp.parts.values()}) == d["has_drip_tray"]
+    assert ("spout" in {part.label for part in bp.parts.values()}) == d["has_spout"]
+    assert any(n.startswith("upper_plate_") for n in names) == d["has_tier"]
     assert bp.materials["plate"] == bp.materials["plate_alt"] == "ceramic"
     assert bp.materials["frame"] == {"wood": "wood", "plastic": "plastic", "wire": "chrome"}[p["style"]]
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
@@ -135,7 +142,7 @@ def test_parts_labels_and_materials(seed):
     # prongs: a pair at each of slot_count + 1 fences, at least prong_height tall
     prongs = [pc for pc in bp.parts["rack"].pieces if pc.material == "prong"]
     xs = {round(float(pc.bounds.mean(0)[0]), 4) for pc in prongs}
-    assert len(xs) == p["slot_count"] + 1
+    assert len(xs) == p["slot_count"] + 1  # an upper tier's fences stand over the lower ones
     top = max(pc.bounds[1, 2] for pc in prongs)
     base = min(pc.bounds[0, 2] for pc in prongs)
     assert top - base >= p["prong_height"] - 1e-9
@@ -233,11 +240,11 @@ def test_nothing_below_ground_and_plates_above_the_support(seed):
 
 
 def test_overrides():
-    p, bp = make(2, slot_count=7, plate_count=7)
+    p, bp = make(2, slot_count=7, plate_count=7, has_tier=False)
     assert len(plates(bp)) == 7
-    p, bp = make(2, slot_count=3, plate_count=7)  # capped at the slot count
+    p, bp = make(2, slot_count=3, plate_count=7, has_tier=False)  # capped at the slot count
     assert len(plates(bp)) == 3
-    p, bp = make(2, slot_count=5, plate_count=1, style="wire", plate_set="mixed")
+    p, bp = make(2, slot_count=5, plate_count=1, style="wire", plate_set="mixed", has_tier=False)
     assert len(plates(bp)) == 1 and bp.materials["frame"] == "chrome"
     _, bp = make(4, slot_count=4, plate_count=4, plate_set="mixed")
     mats = [bp.parts[n].pieces[0].material for n in plates(bp)]
@@ -251,7 +258,7 @@ def test_overrides():
 def test_at_least_one_plate_every_seed():
     for seed in range(12):
         p, bp = make(seed)
-        assert 1 <= len(plates(bp)) <= p["slot_count"]
+        assert 1 <= len(plates(bp)) <= (2 if p["has_tier"] else 1) * p["slot_count"]
 
 
 def test_seeds_vary():
@@ -271,7 +278,7 @@ def test_each_design_has_its_side_board_mechanisms(design):
         assert p["design"] == design
         caddies = [n for n, part in bp.parts.items() if part.label == "basket"]
         mugs = [n for n, part in bp.parts.items() if part.label in ("cup", "glass")]
-        assert (len(caddies) >= 1) == (design != "cups") and (2 <= len(mugs) <= 8) == (design != "cutlery")
+        assert (len(caddies) >= 1) == (design != "cups") and (2 <= len(mugs) <= 10) == (design != "cutlery")
         for n in caddies + mugs:
             j = by_child(bp, n)
             d = j.dofs[0]
@@ -284,3 +291,62 @@ def test_each_design_has_its_side_board_mechanisms(design):
                 va = np.vstack([pc.vertices for pc in bp.parts[a].pieces])
                 vb = np.vstack([pc.vertices for pc in bp.parts[b].pieces])
                 assert (va.min(0) > vb.max(0)).any() or (vb.min(0) > va.max(0)).any(), (a, b)
+
+
+@pytest.mark.parametrize("style", ["wire", "wood"])
+@pytest.mark.parametrize("seed", [0, 2])
+def test_second_tier_and_drip_tray(seed, style):
+    """Forced by ``has_tier`` (wire or wood) / ``has_drip_tray`` (wire): plates of the upper tier stand in their
+    own slots on limited_planar joints; every plate of both tiers moves through all its states without entering
+    the rack (upper tier and posts included); a wire rack's drip tray slides out along +X clear of its legs."""
+    p, bp = make(seed, style=style, has_tier=True, has_drip_tray=True, fill=0.95)
+    rack = Hulls(hulls(bp.parts["rack"]))
+    lower = [n for n in plates(bp) if n.startswith("plate_")]
+    upper = [n for n in plates(bp) if n.startswith("upper_plate_")]
+    assert lower and upper
+    top_lower = max(pc.bounds[1, 2] for n in lower for pc in bp.parts[n].pieces)
+    assert min(pc.bounds[0, 2] for n in upper for pc in bp.parts[n].pieces) > top_lower + pr.LIFT
+    for name in lower + upper:
+        j = by_child(bp, name)
+        assert j.kind == "limited_planar" and j.parent == "rack"
+        for q in states(j):
+            assert max_depth(hulls(bp.parts[name], j, q), rack) < 5e-4, f"{name} at {q}"
+    for name in lower:  # a lower plate lifted fully stays under the upper tier
+        j = by_child(bp, name)
+        assert max_depth(hulls(bp.parts[name], j, (pr.LIFT, 0.0, 0.0)), rack) < 5e-4
+    if style == "wood":
+        assert "drip_tray" not in bp.parts
+        return
+    j = by_child(bp, "drip_tray")
+    d = j.dofs[0]
+    assert j.kind == "prismatic" and j.parent == "rack" and d.axis == pytest.approx((1, 0, 0))
+    tray = bp.parts["drip_tray"]
+    length = np.ptp(np.vstack([pc.vertices for pc in tray.pieces])[:, 0])
+    assert d.upper >= 0.7 * length
+    for x in (0.0, 0.5 * d.upper, d.upper):
+        moved_ = [h + np.array([x, 0.0, 0.0]) for h in hulls(tray)]
+        assert max_depth(moved_, rack) < 5e-4, f"tray at {x}"
+    assert min(pc.bounds[0, 2] for pc in tray.pieces) >= -1e-9
+
+
+@pytest.mark.parametrize("seed", [0, 3])
+def test_plastic_tray_swivel_spout(seed):
+    """Forced by ``has_spout`` on a plastic tray: a spout on the tray's end wall turns 180 degrees about Z from
+    lying along the wall, clear of the tray at every angle and above the ground; other styles have none."""
+    _, bp = make(seed, style="plastic", has_spout=True)
+    j = by_child(bp, "spout")
+    d = j.dofs[0]
+    assert j.kind == "revolute" and j.parent == "rack" and d.axis == pytest.approx((0, 0, 1))
+    assert (d.lower, d.upper) == (0.0, pytest.approx(math.pi))
+    rack = Hulls(hulls(bp.parts["rack"]))
+    o = np.asarray(d.origin)
+    for a in np.linspace(0.0, math.pi, 7):
+        turned = [(h - o) @ rotation((0, 0, 1), a).T + o for h in hulls(bp.parts["spout"])]
+        assert max_depth(turned, rack) < 5e-4, a
+        assert min(t[:, 2].min() for t in turned) > 0.001
+    # at rest along the end wall, pointing -Y; half-way it points out along +X
+    v = np.vstack([pc.vertices for pc in bp.parts["spout"].pieces])
+    assert np.ptp(v[:, 1]) > np.ptp(v[:, 0])
+    for style in ("wood", "wire"):
+        _, bp = make(seed, style=style, has_spout=True)
+        assert "spout" not in bp.parts

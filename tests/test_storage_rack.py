@@ -100,14 +100,15 @@ def test_levels_slide_up_from_their_stops(seed):
         assert j.kind == "prismatic" and j.parent == "frame"
         assert d.axis == pytest.approx((0, 0, 1))  # gravity presses it into its lower limit
         assert d.lower == 0.0 and 0.02 < d.upper <= p["level_height"] / 3 + 1e-9
-    # one common travel for every adjustable level
-    assert len({round(j.dofs[0].upper, 9) for j in bp.joints if j.kind == "prismatic"}) == 1
+    # one common travel for every adjustable level (drawers of drawer cabinets slide on their own)
+    assert len({round(j.dofs[0].upper, 9) for j in bp.joints
+                if j.kind == "prismatic" and bp.parts[j.child].label == "shelf"}) == 1
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_goods_are_fixed_to_their_level(seed):
     _, bp = make(seed, has_goods=True, goods_chance=1.0)
-    goods = [n for n, part in bp.parts.items() if part.label in ("box", "pallet")]
+    goods = [n for n, part in bp.parts.items() if part.label in ("box", "pallet", "cabinet")]
     assert goods
     for n in goods:
         j = by_child(bp, n)
@@ -192,3 +193,41 @@ def test_shelving_has_lidded_and_open_totes():
         totes = [n for n, part in bp.parts.items() if part.label == "box"]
         kinds |= {any(j.parent == t for j in bp.joints) for t in totes}
     assert kinds == {True, False}
+
+
+def test_drawer_cabinets_on_pallet_levels():
+    """Forced by ``has_goods`` / ``goods_chance=1``: on some levels the goods are modular drawer cabinets
+    (a level's goods kind is drawn per level, so several seeds are looked at). A cabinet is fixed on its level;
+    its drawers stack inside it, each sliding out along +X on full-extension slides; every state is free:
+    rest, all drawers out, all drawers out with every level raised, and each drawer out alone."""
+    found = 0
+    for seed in range(6):
+        p, bp = make(seed, has_goods=True, goods_chance=1.0)
+        cabinets = [n for n, part in bp.parts.items() if part.label == "cabinet"]
+        if not cabinets:
+            continue
+        found += 1
+        drawers = []
+        for c in cabinets:
+            j = by_child(bp, c)
+            assert j.kind == "fixed" and bp.parts[j.parent].label == "shelf"
+            box = np.vstack([pc.vertices for pc in bp.parts[c].pieces])
+            kids = [j.child for j in bp.joints if j.parent == c]
+            assert 1 <= len(kids) <= 10
+            for k in kids:
+                jk = by_child(bp, k)
+                d = jk.dofs[0]
+                assert jk.kind == "prismatic" and bp.parts[k].label == "drawer"
+                assert d.axis == pytest.approx((1, 0, 0))
+                v = np.vstack([pc.vertices for pc in bp.parts[k].pieces])
+                assert d.upper >= 0.9 * np.ptp(v[:, 0]) - 0.03  # nearly all of the drawer comes out
+                # inside its housing across and up; its front (and pull) at the housing's open front
+                assert v[:, 1].min() > box[:, 1].min() and v[:, 1].max() < box[:, 1].max()
+                assert v[:, 2].min() > box[:, 2].min() and v[:, 2].max() < box[:, 2].max()
+                assert v[:, 0].max() > box[:, 0].max()
+            drawers += kids
+        levels_ = [j.child for j in bp.joints if j.kind == "prismatic" and bp.parts[j.child].label == "shelf"]
+        every = {d: 1.0 for d in drawers}
+        for s in ({}, every, {**every, **{m: 1.0 for m in levels_}}, *({d: 1.0} for d in drawers)):
+            assert contacts(bp, s) == [], (seed, s)
+    assert found >= 2

@@ -167,6 +167,41 @@ def goods_row(kind: str, span: tuple[float, float], depth: float, rng: np.random
     return d, [(ya + (k + 0.5) * pitch - w / 2, ya + (k + 0.5) * pitch + w / 2) for k in range(count)]
 
 
+# -- modular drawer cabinets on a pallet-rack level ----------------------------------------------------------
+# Lista / Stanley Vidmar pallet-rack drawer systems: a steel housing 22-1/2, 30 or 45 in wide (narrowest
+# first), 28-1/4 in deep, whose drawers (front heights 3-12 in, 75-300 mm) run on full-extension slides;
+# 1.2-1.5 mm sheet steel
+DRAWER_CAB = dict(widths=(0.572, 0.762, 1.143), depth=0.718, sheet=0.0015, gap=0.003, front=0.018, lip=0.02)
+
+
+def drawer_housing(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
+    """The housing of a drawer cabinet: bottom, top, two sides and a back of sheet steel, open at the front."""
+    t = 0.012  # panels are folded channels; one slab each for collisions
+    s = DRAWER_CAB["sheet"]
+    return [g.box_between([x0, y0, z], [x1, y1, z + t], slot).replace(sheet=s),
+            g.box_between([x0, y0, z + h - t], [x1, y1, z + h], slot).replace(sheet=s),
+            g.box_between([x0, y0, z + t], [x1, y0 + t, z + h - t], slot).replace(sheet=s),
+            g.box_between([x0, y1 - t, z + t], [x1, y1, z + h - t], slot).replace(sheet=s),
+            g.box_between([x0, y0 + t, z + t], [x0 + t, y1 - t, z + h - t], slot).replace(sheet=s)]
+
+
+def cabinet_drawer(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float, slot: str,
+                   pull: str) -> list[g.Piece]:
+    """A steel drawer between ``x0`` (back) and ``x1`` (its front face), ``z0``-``z1`` tall: a tray of
+    bottom, sides and back behind a front panel with a full-width pull lip along its top edge."""
+    s, f, w = DRAWER_CAB["sheet"], DRAWER_CAB["front"], 0.01
+    hs = max(0.6 * (z1 - z0), min(z1 - z0, 0.05))  # the tray's walls are lower than the front
+    xf = x1 - f
+    pieces = [g.box_between([xf, y0, z0], [x1, y1, z1], slot, bevel=0.002).replace(sheet=s),
+              g.box_between([x0, y0 + 0.005, z0], [xf, y1 - 0.005, z0 + w], slot).replace(sheet=s),
+              g.box_between([x0, y0 + 0.005, z0 + w], [xf, y0 + 0.005 + w, z0 + hs], slot).replace(sheet=s),
+              g.box_between([x0, y1 - 0.005 - w, z0 + w], [xf, y1 - 0.005, z0 + hs], slot).replace(sheet=s),
+              g.box_between([x0, y0 + 0.005 + w, z0 + w], [x0 + w, y1 - 0.005 - w, z0 + hs], slot).replace(sheet=s)]
+    lip = min(DRAWER_CAB["lip"], 0.3 * (z1 - z0))
+    pieces.append(g.box_between([x1, y0 + 0.01, z1 - lip], [x1 + 0.012, y1 - 0.01, z1 - 0.002], pull, bevel=0.002))
+    return pieces
+
+
 # -- dish racks and plates -----------------------------------------------------------------------------
 SEAT_GAP = 0.004  # a plate's lowest point above the support surface at rest
 PLATE_SECTIONS = 64
@@ -213,12 +248,15 @@ def dowel(x: float, y: float, z_lo: float, z_hi: float, r: float, material: str)
     return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, 16), g.sphere([x, y, z_hi - r], r, material)]
 
 
+BATTEN_W = 0.024  # a wooden rack's cross battens
+
+
 def wood_rack(fences, xs, b, rp, z0, hp, base_h) -> tuple[list[g.Piece], float]:
     """Two rails on two cross battens, dowels in the rails. Returns pieces and the support height."""
     xa, xb = xs
     hb = 0.4 * base_h + 0.006  # battens
     wr = max(0.018, 3.2 * rp)
-    bw = 0.024
+    bw = BATTEN_W
     pieces = [g.box_between([x, -b - wr, z0], [x + bw, b + wr, z0 + hb], "frame", bevel=0.002) for x in (xa, xb - bw)]
     zr = z0 + hb
     zs = zr + base_h
@@ -270,6 +308,43 @@ def wire_rack(fences, xs, b, rw, hp, base_h) -> tuple[list[g.Piece], float]:
             pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", 12), g.sphere([x, y, top], rw, "prong")]
         pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", 12))
     return pieces, zs
+
+
+def tier_posts(xs, b, r: float, z0: float, z1: float, slot: str = "frame") -> list[g.Piece]:
+    """Four posts carrying a rack's upper tier, at ``xs`` (two) and y = +-b, from ``z0`` up to ``z1``."""
+    return [g.cylinder([x, y, z0], [x, y, z1], r, slot, 12) for x in xs for y in (-b, b)]
+
+
+# a moulded drainer tray's swivel spout (Rubbermaid, OXO, simplehuman drainer trays): a 25-30 mm wide trough
+# 40-60 mm long on a round hub through the tray's end wall; it swings 180 degrees to point water at the sink
+SPOUT = dict(length=0.05, width=0.026, h=0.012, hub=0.012, wall=0.002)
+
+
+def swivel_spout(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
+    """A spout with its hub axis at (x, y), its bottom at ``z``, pointing along -Y at rest: a round hub and a
+    trough (bottom and two side walls) running from it."""
+    L, w, h, t = SPOUT["length"], SPOUT["width"], SPOUT["h"], SPOUT["wall"]
+    return [g.cylinder([x, y, z], [x, y, z + h], SPOUT["hub"], slot, 24).replace(sheet=t),
+            g.box_between([x - w / 2, y - L, z], [x + w / 2, y, z + t], slot).replace(sheet=t),
+            g.box_between([x - w / 2, y - L, z + t], [x - w / 2 + t, y, z + h], slot),
+            g.box_between([x + w / 2 - t, y - L, z + t], [x + w / 2, y, z + h], slot)]
+
+
+# a drainer's drip tray: a 1.5 mm polypropylene tray 8-12 mm deep (simplehuman, Joseph Joseph, Kitsure)
+DRIP_TRAY = dict(h=0.009, wall=0.0015, tab=0.012)
+
+
+def drip_tray(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
+    """A shallow tray: a bottom, four low walls and a finger tab on its front (+X) wall."""
+    t = 0.003  # walls and bottom as 3 mm slabs for collisions, 1.5 mm sheet for mass
+    s = DRIP_TRAY["wall"]
+    yc = (y0 + y1) / 2
+    return [g.box_between([x0, y0, z], [x1, y1, z + t], slot).replace(sheet=s),
+            g.box_between([x0, y0, z + t], [x0 + t, y1, z + h], slot).replace(sheet=s),
+            g.box_between([x1 - t, y0, z + t], [x1, y1, z + h], slot).replace(sheet=s),
+            g.box_between([x0 + t, y0, z + t], [x1 - t, y0 + t, z + h], slot).replace(sheet=s),
+            g.box_between([x0 + t, y1 - t, z + t], [x1 - t, y1, z + h], slot).replace(sheet=s),
+            g.box_between([x1, yc - 0.02, z + h - t], [x1 + DRIP_TRAY["tab"], yc + 0.02, z + h], slot)]
 
 
 def pads(pieces, xs) -> list[g.Piece]:
