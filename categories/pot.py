@@ -22,7 +22,7 @@ Three designs (``pot_design``, :data:`.parts.closure_sizes.POT_DESIGNS`):
 * ``plain``: the dome lid above, maybe on a pasta insert (``has_pasta``: a deep straining basket of
   0.6 mm sheet hung from the rim, a collar above it carrying its handles and the lid; it lifts out,
   prismatic, label ``basket``);
-* ``steamer``: one to three stacking steamer tiers of 0.8 mm pressed sheet (:func:`~.parts.closures.steamer_tier`:
+* ``steamer``: one or two stacking steamer tiers of 0.8 mm pressed sheet (:func:`~.parts.closures.steamer_tier`:
   a wall as wide as the pot's, a nesting skirt with clearance, a floor, two small loop
   handles), each lifting off the one below along +Z (prismatic, a chain: body -> tier ->
   tier), the dome lid on the top tier;

@@ -157,7 +157,7 @@ def test_variety():
 def test_steamer_tiers_stack_and_lift_with_the_lid_on_top(seed):
     _, bp = make(seed, pot_design="steamer")
     tiers = sorted(n for n in bp.parts if n.startswith("tier"))
-    assert 1 <= len(tiers) <= 3 and all(bp.parts[t].label == "insert" for t in tiers)
+    assert 1 <= len(tiers) <= 2 and all(bp.parts[t].label == "insert" for t in tiers)
     parent = "body"
     for t in tiers:
         j = next(j for j in bp.joints if j.child == t)
@@ -186,8 +186,8 @@ def test_designs_vary():
     assert designs == {"plain", "steamer", "pressure"}
 
 
-def test_steamer_tiers_one_to_three_and_light():
-    """Tiers vary 1..3 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size (issue 14: they were 2-4 kg)."""
+def test_steamer_tiers_one_or_two_and_light():
+    """Tiers vary 1..2 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size (issue 14: they were 2-4 kg)."""
     from infmob_usd.mass import inertial
 
     counts = set()
@@ -198,7 +198,7 @@ def test_steamer_tiers_one_to_three_and_light():
         for t in tiers:
             kg = inertial((pc, 7900.0, 0.0) for pc in bp.parts[t].pieces)[0]
             assert 0.15 < kg < 2.0, (seed, t, kg)  # the insert row of mass_ranges.csv: 0.1-2.0
-    assert counts == {1, 2, 3}
+    assert counts == {1, 2}
 
 
 @pytest.mark.parametrize("seed", range(3))
