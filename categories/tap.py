@@ -8,7 +8,10 @@ Controls: a single lever (on the main column, or with a separate riser on a shor
 at +Y): flip_revolute, swivel about Z (temperature) then tilt about the cap's back bottom edge
 (flow), resting closed on its lower stop; or two valve handles (cross or lever) on risers at
 +-``handle_spread``, revolute about Z, hot on the left, cold on the right. Whatever the spout
-sweeps over stays below its outlet. Parts: ``categories/parts/taps.py``.
+sweeps over stays below its outlet. Optional real extras: a pull-out head's spray-mode button
+(prismatic, pressed 2 mm), a bath-shower wall mixer's diverter knob (prismatic, pulled up 8 mm)
+and a basin mixer's pop-up waste rod behind the column (prismatic, 12 mm; its spout then swings
++-60 degrees). Parts: ``categories/parts/taps.py``.
 """
 
 from __future__ import annotations
@@ -28,13 +31,17 @@ from .parts import taps as T
 GRAMMAR = Grammar("tap", {
     "tap": Node(label="base", required=("spout",), one_of={"deck": 0.4, "bridge": 0.2, "pull_out": 0.25, "wall": 0.15},
                 choice="design"),
-    "deck": Node(optional={"separate_pipe": 0.5}, one_of={"single_lever": 0.6, "two_handles": 0.4}, choice="handles"),
+    "deck": Node(optional={"separate_pipe": 0.5, "pop_up": 0.4}, one_of={"single_lever": 0.6, "two_handles": 0.4},
+                 choice="handles"),
+    "pop_up": Node(label="rod", doc="a basin mixer's pop-up waste lift rod behind the column (pulled up 12 mm)"),
     "bridge": Node(required=("two_handles",)),
     "pull_out": Node(required=("single_lever", "spray_head")),
-    "wall": Node(required=("single_lever",)),
+    "wall": Node(required=("single_lever",), optional={"diverter": 0.5}),
     "separate_pipe": Node(),
     "spout": Node(label="spout"),
-    "spray_head": Node(label="spray_head"),
+    "spray_head": Node(label="spray_head", optional={"mode_button": 0.6}),
+    "mode_button": Node(label="button", doc="the head's stream / spray toggle (pressed 2 mm)"),
+    "diverter": Node(label="knob", doc="a bath-shower mixer's diverter knob (pulled up 8 mm)"),
     "single_lever": Node(label="lever"),
     "two_handles": Node(repeat={"valve": 2}),
     "valve": Node(label="handle"),
@@ -76,13 +83,17 @@ RISER = 0.004  # a spout riser is this much wider than the spout tube
 FLARE = 1.25  # column feet flare to this fraction of their radius
 
 
+POP_UP_SWIVEL = math.pi / 3  # a basin mixer's spout with a pop-up rod behind it swings +-60 degrees
 WALL_SWIVEL = 5 * math.pi / 12  # a wall mixer's spout swings +-75 degrees, clear of the wall
 WALL_X = -0.065  # the wall plane behind a wall mixer's axis (S-unions: 40-70 mm projection)
 BRIDGE_H = 0.05  # bridge mixer risers: height of the bridge pipe's axis above the deck
 
 
 def designs(p: dict) -> dict:
-    """A wall mixer's spout swivel is limited (it would swing into the wall)."""
+    """A wall mixer's spout swivel is limited (it would swing into the wall); so is a basin mixer's with a
+    pop-up rod behind it (basin mixers with pop-up waste have fixed or short-swing spouts)."""
+    if p["design"] == "deck" and p.get("has_pop_up"):
+        return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], POP_UP_SWIVEL)}
     if p["design"] != "wall":
         return p
     return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], WALL_SWIVEL)}
@@ -135,7 +146,7 @@ class TapLayout(Layout):
                 z_rt = T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T))
                 spout, hp, hf, travel = T.pullout_spout(p["spout_reach"] + 0.05, rs, z_rt + T.GAP, height, z_low,
                                                         p["head_travel"])
-                head = dict(pieces=hp, at=hf, travel=travel)
+                head = dict(pieces=hp, at=hf, travel=travel, rh=max(1.6 * rs, 0.015))
             else:
                 height = max(height, z_low + 0.06, z_rt + 0.1)
                 z_rt = max(z_rt, T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T)))
@@ -166,6 +177,20 @@ class TapLayout(Layout):
         elif pipe:
             self.extend("base", [riser])
         self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, axis))
+        if node.choice == "deck" and design.one("pop_up"):
+            # behind the main column's foot, its knob (pulled up) below whatever the spout sweeps over
+            # the spout swings at most +-POP_UP_SWIVEL about +X (designs()): the rod stands behind the column
+            # foot and whatever of the spout is behind the axis (a collar), under what of it comes over the rod
+            k = T.POP_UP
+            pts = np.vstack([pc.vertices for pc in spout])
+            r_pts = np.hypot(pts[:, 0], pts[:, 1])
+            behind = pts[:, 0] < 0.0
+            r_back = float(r_pts[behind].max()) if behind.any() else 0.0
+            x = -(max(FLARE * max(rb, (rs + RISER) * 1.5 / FLARE), r_back) + k["knob"][0] + 0.003)
+            over = behind & (r_pts > abs(x) - k["knob"][0] - 0.003)
+            room = float(pts[over, 2].min()) - 0.004 if over.any() else T.DECK_T + 0.1
+            top = float(np.clip(room - k["pull"], T.DECK_T + k["knob"][1] + 0.001, T.DECK_T + k["tallest"]))
+            self.grow(design.one("pop_up"), x=x, top=top, pull=min(k["pull"], room - top))
         self.grow(design, controls=controls, head=head)
 
     def _wall(self, node, design):
@@ -189,7 +214,8 @@ class TapLayout(Layout):
         spout = T.collar_spout(shape, p["spout_reach"], rs, rb, z_cm, hc, z_cm - 0.09)
         self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, z_cm - hc / 2))
         lever, hinge = T.lever((0.0, 0.0), z_top + T.CAP_H, CAP * rb, p["lever_length"])
-        self.grow(design, controls=dict(pieces=lever, hinge=hinge), head=None)
+        self.grow(design, controls=dict(pieces=lever, hinge=hinge), head=None,
+                  diverter=(-(p["wall_length"] / 2 - T.DIVERTER["inset"]), z + r_bar))
 
     def deck(self, node, controls, head):
         self.grow(node.one(node.choice), **controls)
@@ -197,12 +223,26 @@ class TapLayout(Layout):
     def bridge(self, node, controls, head):
         self.grow(node.one("two_handles"), **controls)
 
-    def wall(self, node, controls, head):
+    def wall(self, node, controls, head, diverter):
         self.grow(node.one("single_lever"), **controls)
+        if node.one("diverter"):
+            self.grow(node.one("diverter"), y=diverter[0], z_top=diverter[1])
+
+    def diverter(self, node, y, z_top):
+        pieces, at = T.diverter_knob(y, z_top)
+        self.add("diverter", "knob", pieces)
+        self.join(J.prismatic("base", "diverter", tuple(at.origin), tuple(at.z), 0.0, T.DIVERTER["pull"],
+                              role="button"))
 
     def pull_out(self, node, controls, head):
         self.grow(node.one("single_lever"), **controls)
         self.grow(node.one("spray_head"), **head)
+
+    def pop_up(self, node, x, top, pull):
+        """The rod pulls up 12 mm, less under a low collar spout (its knob then sits near the deck)."""
+        pieces, at = T.pop_up_rod(x, T.DECK_T - 0.004, top)
+        self.add("pop_up", "rod", pieces)
+        self.join(J.prismatic("base", "pop_up", tuple(at.origin), tuple(at.z), 0.0, pull, role="slide"))
 
     def separate_pipe(self, node, riser):
         self.extend("base", [riser])
@@ -215,10 +255,18 @@ class TapLayout(Layout):
             a = self.p["spout_swivel"]
             self.join(J.revolute("base", "spout", axis, (0, 0, 1), -a, a, role="swivel"))
 
-    def spray_head(self, node, pieces, at, travel):
+    def spray_head(self, node, pieces, at, travel, rh):
         self.add("spray_head", "spray_head", pieces)
         # pulls out along the spout's arm on its hose and turns freely about it
         self.join(J.continuous_prismatic("spout", "spray_head", at.origin, at.z, (0.0, travel), role="slide"))
+        if node.one("mode_button"):
+            self.grow(node.one("mode_button"), at=at, rh=rh)
+
+    def mode_button(self, node, at, rh):
+        pieces, press = T.mode_button(at, rh)
+        self.add("mode_button", "button", pieces)
+        self.join(J.prismatic("spray_head", "mode_button", tuple(press.origin), tuple(press.z), 0.0,
+                              T.MODE_BUTTON["press"], role="button"))
 
     def single_lever(self, node, pieces, hinge):
         name = self.add("lever", "lever", pieces)
