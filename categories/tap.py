@@ -9,9 +9,8 @@ at +Y): flip_revolute, swivel about Z (temperature) then tilt about the cap's ba
 (flow), resting closed on its lower stop; or two valve handles (cross or lever) on risers at
 +-``handle_spread``, revolute about Z, hot on the left, cold on the right. Whatever the spout
 sweeps over stays below its outlet. Optional real extras: a pull-out head's spray-mode button
-(prismatic, pressed 2 mm), a bath-shower wall mixer's diverter knob (prismatic, pulled up 8 mm)
-and a basin mixer's pop-up waste rod behind the column (prismatic, 12 mm; its spout then swings
-+-60 degrees). Parts: ``categories/parts/taps.py``.
+on the head's side (prismatic, pressed 2 mm across the head: pressed down, gravity would hold it in)
+and a bath-shower wall mixer's diverter knob (prismatic, pulled up 8 mm). Parts: ``categories/parts/taps.py``.
 """
 
 from __future__ import annotations
@@ -31,9 +30,7 @@ from .parts import taps as T
 GRAMMAR = Grammar("tap", {
     "tap": Node(label="base", required=("spout",), one_of={"deck": 0.4, "bridge": 0.2, "pull_out": 0.25, "wall": 0.15},
                 choice="design"),
-    "deck": Node(optional={"separate_pipe": 0.5, "pop_up": 0.4}, one_of={"single_lever": 0.6, "two_handles": 0.4},
-                 choice="handles"),
-    "pop_up": Node(label="rod", doc="a basin mixer's pop-up waste lift rod behind the column (pulled up 12 mm)"),
+    "deck": Node(optional={"separate_pipe": 0.5}, one_of={"single_lever": 0.6, "two_handles": 0.4}, choice="handles"),
     "bridge": Node(required=("two_handles",)),
     "pull_out": Node(required=("single_lever", "spray_head")),
     "wall": Node(required=("single_lever",), optional={"diverter": 0.5}),
@@ -83,17 +80,13 @@ RISER = 0.004  # a spout riser is this much wider than the spout tube
 FLARE = 1.25  # column feet flare to this fraction of their radius
 
 
-POP_UP_SWIVEL = math.pi / 3  # a basin mixer's spout with a pop-up rod behind it swings +-60 degrees
 WALL_SWIVEL = 5 * math.pi / 12  # a wall mixer's spout swings +-75 degrees, clear of the wall
 WALL_X = -0.065  # the wall plane behind a wall mixer's axis (S-unions: 40-70 mm projection)
 BRIDGE_H = 0.05  # bridge mixer risers: height of the bridge pipe's axis above the deck
 
 
 def designs(p: dict) -> dict:
-    """A wall mixer's spout swivel is limited (it would swing into the wall); so is a basin mixer's with a
-    pop-up rod behind it (basin mixers with pop-up waste have fixed or short-swing spouts)."""
-    if p["design"] == "deck" and p.get("has_pop_up"):
-        return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], POP_UP_SWIVEL)}
+    """A wall mixer's spout swivel is limited (it would swing into the wall)."""
     if p["design"] != "wall":
         return p
     return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], WALL_SWIVEL)}
@@ -177,20 +170,6 @@ class TapLayout(Layout):
         elif pipe:
             self.extend("base", [riser])
         self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, axis))
-        if node.choice == "deck" and design.one("pop_up"):
-            # behind the main column's foot, its knob (pulled up) below whatever the spout sweeps over
-            # the spout swings at most +-POP_UP_SWIVEL about +X (designs()): the rod stands behind the column
-            # foot and whatever of the spout is behind the axis (a collar), under what of it comes over the rod
-            k = T.POP_UP
-            pts = np.vstack([pc.vertices for pc in spout])
-            r_pts = np.hypot(pts[:, 0], pts[:, 1])
-            behind = pts[:, 0] < 0.0
-            r_back = float(r_pts[behind].max()) if behind.any() else 0.0
-            x = -(max(FLARE * max(rb, (rs + RISER) * 1.5 / FLARE), r_back) + k["knob"][0] + 0.003)
-            over = behind & (r_pts > abs(x) - k["knob"][0] - 0.003)
-            room = float(pts[over, 2].min()) - 0.004 if over.any() else T.DECK_T + 0.1
-            top = float(np.clip(room - k["pull"], T.DECK_T + k["knob"][1] + 0.001, T.DECK_T + k["tallest"]))
-            self.grow(design.one("pop_up"), x=x, top=top, pull=min(k["pull"], room - top))
         self.grow(design, controls=controls, head=head)
 
     def _wall(self, node, design):
@@ -237,12 +216,6 @@ class TapLayout(Layout):
     def pull_out(self, node, controls, head):
         self.grow(node.one("single_lever"), **controls)
         self.grow(node.one("spray_head"), **head)
-
-    def pop_up(self, node, x, top, pull):
-        """The rod pulls up 12 mm, less under a low collar spout (its knob then sits near the deck)."""
-        pieces, at = T.pop_up_rod(x, T.DECK_T - 0.004, top)
-        self.add("pop_up", "rod", pieces)
-        self.join(J.prismatic("base", "pop_up", tuple(at.origin), tuple(at.z), 0.0, pull, role="slide"))
 
     def separate_pipe(self, node, riser):
         self.extend("base", [riser])

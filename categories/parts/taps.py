@@ -239,7 +239,7 @@ def deck(width: float, depth: float, shape: str, bridge: bool) -> list[g.Piece]:
 
 
 # A pull-out head's spray-mode button (stream / spray toggle: Hansgrohe Focus 2jet, Grohe Minta
-# pull-out heads): a rocker-like button 12 x 8 mm on top of the head, pressed 2 mm.
+# pull-out heads): a button 12 x 8 mm on the head, pressed 2 mm.
 MODE_BUTTON = {"size": (0.012, 0.008, 0.004), "at": 0.45, "press": 0.002, "gap": 0.0006}
 # A bath-shower wall mixer's diverter (EN 200 bath mixers with an automatic diverter, e.g. Grohe
 # Eurosmart / Hansgrohe Logis bath mixers): a knob on top of the body bar at one end, pulled up
@@ -248,15 +248,16 @@ DIVERTER = {"radius": 0.009, "height": 0.014, "inset": 0.035, "pull": 0.008, "ga
 
 
 def mode_button(head: Frame, rh: float) -> tuple[list[g.Piece], Frame]:
-    """The spray-mode button on top of a pull-out head whose slide frame is ``head`` (origin at the
-    head's back, z along the arm, head radius ``rh``): its pieces and its press frame (z down)."""
+    """The spray-mode button on the +Y side of a pull-out head whose slide frame is ``head`` (origin at
+    the head's back, z along the arm, head radius ``rh``): its pieces and its press frame (z into the
+    head, -Y: pressed sideways, so gravity does not press it)."""
     k = MODE_BUTTON
     ln, w, h = k["size"]
     o = np.asarray(head.origin, float) + k["at"] * 0.07 * np.asarray(head.z, float)
-    z0 = o[2] + rh + k["gap"]
-    piece = g.box_between([o[0] - ln / 2, o[1] - w / 2, z0], [o[0] + ln / 2, o[1] + w / 2, z0 + h], "aerator",
+    y0 = o[1] + rh + k["gap"]
+    piece = g.box_between([o[0] - ln / 2, y0, o[2] - w / 2], [o[0] + ln / 2, y0 + h, o[2] + w / 2], "aerator",
                           bevel=0.0015)
-    return [piece], Frame.at((o[0], o[1], z0 + h), z=(0, 0, -1), x=(1, 0, 0))
+    return [piece], Frame.at((o[0], y0 + h, o[2]), z=(0, -1, 0), x=(1, 0, 0))
 
 
 def diverter_knob(y: float, z_top: float) -> tuple[list[g.Piece], Frame]:
@@ -267,19 +268,3 @@ def diverter_knob(y: float, z_top: float) -> tuple[list[g.Piece], Frame]:
     pieces = [g.cylinder([0, y, z0], [0, y, z0 + 0.4 * h], 0.45 * r, "metal", 20),
               g.cylinder([0, y, z0 + 0.4 * h], [0, y, z0 + h], r, "metal", 24)]
     return pieces, Frame.at((0.0, y, z0), z=(0, 0, 1), x=(1, 0, 0))
-
-
-# A basin mixer's pop-up waste lift rod (Grohe Eurosmart / Hansgrohe Talis basin mixers "with
-# pop-up waste"): a 5 mm rod behind the column with a knob on top, pulled up 12 mm to close the
-# plug. Rod radius, knob radius and height, the pull.
-POP_UP = {"rod": 0.0025, "knob": (0.0055, 0.01), "pull": 0.012, "tallest": 0.05}
-
-
-def pop_up_rod(x: float, z0: float, z_top: float) -> tuple[list[g.Piece], Frame]:
-    """A pop-up waste rod through the deck at (``x``, 0) from ``z0`` (inside the plate) to a knob
-    topping out at ``z_top``: its pieces and its pull frame (z up)."""
-    k = POP_UP
-    rk, hk = k["knob"]
-    pieces = [g.cylinder([x, 0, z0], [x, 0, z_top - hk], k["rod"], "metal", 16),
-              g.cylinder([x, 0, z_top - hk], [x, 0, z_top], rk, "metal", 20)]
-    return pieces, Frame.at((x, 0.0, z_top), z=(0, 0, 1), x=(1, 0, 0))
