@@ -19,14 +19,21 @@ lid is symmetric about Z, so the turn is neutral).
 
 Three designs (``pot_design``, :data:`.parts.closure_sizes.POT_DESIGNS`):
 
-* ``plain``: the dome lid above;
-* ``steamer``: one or two stacking steamer tiers (:func:`~.parts.closures.steamer_tier`:
+* ``plain``: the dome lid above, maybe on a pasta insert (``has_pasta``: a deep straining basket of
+  0.6 mm sheet hung from the rim, a collar above it carrying its handles and the lid; it lifts out,
+  prismatic, label ``basket``);
+* ``steamer``: one or two stacking steamer tiers of 0.8 mm pressed sheet (:func:`~.parts.closures.steamer_tier`:
   a wall as wide as the pot's, a nesting skirt with clearance, a floor, two small loop
   handles), each lifting off the one below along +Z (prismatic, a chain: body -> tier ->
   tier), the dome lid on the top tier;
 * ``pressure``: a pressure cooker's bayonet lid (``revolute_prismatic``: it turns
   0..35 degrees about Z to unlock and lifts 0..3 cm) with a loop handle, a pressure valve
   that turns (continuous, the selector) and a lock slider that slides outward (prismatic).
+
+The lid's knob or loop is its own part fixed to the lid (label ``knob`` / ``handle``), and a lid may
+carry a rotary steam vent (``has_vent``: a disc with a grip tab on the dome, revolute 0..90 degrees).
+A long handle is its own part fixed to the body (label ``handle``), with an optional helper loop
+opposite (``has_helper``); side loops stay pieces of the body.
 
 Finishes: brushed steel, enamel (with a steel rim and lid band) or chrome; the lid is of
 the body's finish or glass; handles match the body or are black plastic or wood.
@@ -44,7 +51,7 @@ from infmob_usd.params import Choice, Float
 
 from .parts import closures as CL
 from .parts import vessel as V
-from .parts.closure_sizes import POT_DESIGNS, PRESSURE, STEAMER
+from .parts.closure_sizes import HELPER, PASTA, POT_DESIGNS, PRESSURE, STEAMER, VENT
 from .parts.vessel_sizes import GLASS, GLASS_LID_THICKER, HANDLE_FAMILY, POT, POT_LIFT, POT_RIM
 
 LIFT = POT_LIFT
@@ -54,19 +61,24 @@ GRAMMAR = Grammar("pot", {
                 one_of=dict(zip(("side_handles", "long_handle"), POT["layout_weights"])),
                 doc="a rolled-rim vessel with its handles, and what sits on it"),
     "design": Node(one_of=POT_DESIGNS, choice="pot_design", doc="plain, steamer or pressure cooker"),
-    "plain": Node(required=("lid",), doc="a dome lid on the rim"),
+    "plain": Node(required=("lid",), optional={"pasta": PASTA["p"]},
+                  doc="a dome lid on the rim, or on a pasta insert hung in the pot"),
+    "pasta": Node(label="basket", doc="a deep straining insert hung from the rim (lifts out), the lid on it"),
     "steamer": Node(required=("lid",), repeat={"tier": STEAMER["tiers"]},
                     doc="stacking steamer tiers, the lid on the top one"),
     "tier": Node(label="insert", doc="a steamer tier nesting in the vessel below (lifts off)"),
     "pressure": Node(label="lid", required=("valve", "lock"), doc="a bayonet pressure lid (turns, lifts)"),
     "valve": Node(label="valve", doc="the pressure valve / selector (turns)"),
     "lock": Node(label="button", doc="the lid's lock slider (slides outward)"),
-    "side_handles": Node(doc="two loop handles on the sides (pieces of the body)"),
-    "long_handle": Node(doc="one long handle toward +X with a rounded tip (pieces of the body)"),
+    "side_handles": Node(doc="two loop handles on the sides (welded loops: pieces of the body)"),
+    "long_handle": Node(label="handle", optional={"helper": HELPER["p"]},
+                        doc="one long riveted handle toward +X with a rounded tip (fixed to the body)"),
+    "helper": Node(label="handle", doc="a short helper loop opposite the long handle (big saucepans)"),
     "lid": Node(label="lid", one_of=dict(zip(("knob", "loop"), POT["lid_handle_weights"])), choice="lid_handle",
-                doc="a dome lid with a band, lifting and turning on the rim"),
-    "knob": Node(doc="a round knob on the lid (pieces of the lid)"),
-    "loop": Node(doc="a loop handle on two posts on the lid (pieces of the lid)"),
+                optional={"vent": VENT["p"]}, doc="a dome lid with a band, lifting and turning on the rim"),
+    "knob": Node(label="knob", doc="a round knob screwed onto the lid (fixed to it)"),
+    "loop": Node(label="handle", doc="a loop handle on two posts screwed onto the lid (fixed to it)"),
+    "vent": Node(label="vent", doc="a rotary steam vent on the dome (turns 0..90 degrees)"),
 })
 
 PARAMS = (
@@ -88,6 +100,8 @@ PARAMS = (
     Float("side_handle_reach", "finger room between the wall and a side loop", "m", *POT["side_handle_reach"]),
     Float("knob_radius", "lid knob radius", "m", *POT["knob_radius"]),
     Float("tier_height", "steamer tier height / radius", "", *STEAMER["height"]),
+    Float("pasta_collar", "pasta insert collar above the rim / radius", "", *PASTA["collar"]),
+    Float("pasta_reach", "pasta insert depth / the pot's inside depth", "", *PASTA["reach"]),
     Choice("body_finish", "body material", choices=tuple(POT_RIM), weights=POT["body_weights"]),
     Choice("lid_finish", "lid: the body's material or glass", choices=("match", "glass"), weights=POT["lid_weights"]),
     Choice("handle_finish", "handle material", choices=tuple(HANDLE_FAMILY), weights=POT["handle_weights"]),
@@ -117,7 +131,21 @@ class PotLayout(Layout):
         self.grow(node.one(node.choice), body=body, pot=pot)
 
     def plain(self, node, body, pot):
+        if node.one("pasta"):
+            body, pot = self.grow(node.one("pasta"), body=body, pot=pot)
         self.grow(node.one("lid"), body=body, pot=pot)
+
+    def pasta(self, node, body, pot):
+        p = self.p
+        collar = p["pasta_collar"] * p["radius"]
+        skirt = min(p["pasta_reach"] * (pot.rim_top - pot.floor), PASTA["deepest"])
+        b, info = CL.steamer_tier(pot, collar, "body", "rim", self._slots()["handle"], skirt=skirt, label="basket",
+                                  sheet=PASTA["sheet"])
+        b = self.place(b.attached("seat", to=body.anchor("lid_seat")), "pasta")
+        s = b.anchor("seat")
+        self.join(J.prismatic(body.root, b.root, tuple(s.origin), tuple(s.z), 0.0, skirt + PASTA["clear"],
+                              role="lid"))
+        return b, info
 
     def steamer(self, node, body, pot):
         for i, tier in enumerate(node.of("tier")):
@@ -174,7 +202,14 @@ class PotLayout(Layout):
         h = V.long_handle(pot, p["handle_length"], p["handle_angle"], p["handle_width"], p["handle_thickness"], slot)
         h = h.attached("vessel", to=body.anchor("base"))
         tip = V.handle_tip(p["handle_width"], p["handle_thickness"], slot).attached("start", to=h.anchor("end"))
-        self.extend(body.root, h.pieces + tip.pieces)
+        self.fix(body.root, self.add("handle", "handle", h.pieces + tip.pieces))
+        if node.one("helper"):
+            self.grow(node.one("helper"), body=body, pot=pot)
+
+    def helper(self, node, body, pot):
+        h = self.place(CL.helper_handle(pot, self._slots()["handle"]).attached("vessel", to=body.anchor("base")),
+                       "helper")
+        self.fix(body.root, h.root)
 
     def lid(self, node, body, pot):
         p, slots = self.p, self._slots()
@@ -183,14 +218,22 @@ class PotLayout(Layout):
         lid = self.place(lid.attached("seat", to=body.anchor("lid_seat")), "lid")
         self.join(V.seat_joint(body.root, lid, LIFT))
         self.grow(node.one(node.choice), lid=lid, dome=dome)
+        if node.one("vent"):
+            self.grow(node.one("vent"), lid=lid, dome=dome)
 
     def knob(self, node, lid, dome):
         knob = V.lid_knob(self.p["knob_radius"], self._slots()["knob"])
-        self.extend(lid.root, knob.attached("base", to=lid.anchor("top")).pieces)
+        self.fix(lid.root, self.add("lid_knob", "knob", knob.attached("base", to=lid.anchor("top")).pieces))
 
     def loop(self, node, lid, dome):
         loop = V.lid_loop(dome, self.p["knob_radius"], self._slots()["knob"])
-        self.extend(lid.root, loop.attached("base", to=lid.anchor("top")).pieces)
+        self.fix(lid.root, self.add("lid_handle", "handle", loop.attached("base", to=lid.anchor("top")).pieces))
+
+    def vent(self, node, lid, dome):
+        """The steam vent on the dome at -X (clear of a centred knob or a loop along Y)."""
+        at = self._on_dome(lid, dome, -VENT["at"] * dome.radius, VENT["radius"])
+        v = self.place(CL.steam_vent("rim").attached("base", to=at), "vent")
+        self.hinge(lid.root, v.root, v.anchor("base"), upper=VENT["turn"], role="knob")
 
 
 CATEGORY = Category("pot", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, PotLayout, materials={

@@ -8,7 +8,9 @@ Controls: a single lever (on the main column, or with a separate riser on a shor
 at +Y): flip_revolute, swivel about Z (temperature) then tilt about the cap's back bottom edge
 (flow), resting closed on its lower stop; or two valve handles (cross or lever) on risers at
 +-``handle_spread``, revolute about Z, hot on the left, cold on the right. Whatever the spout
-sweeps over stays below its outlet. Parts: ``categories/parts/taps.py``.
+sweeps over stays below its outlet. Optional real extras: a pull-out head's spray-mode button
+on the head's side (prismatic, pressed 2 mm across the head: pressed down, gravity would hold it in)
+and a bath-shower wall mixer's diverter knob (prismatic, pulled up 8 mm). Parts: ``categories/parts/taps.py``.
 """
 
 from __future__ import annotations
@@ -31,10 +33,12 @@ GRAMMAR = Grammar("tap", {
     "deck": Node(optional={"separate_pipe": 0.5}, one_of={"single_lever": 0.6, "two_handles": 0.4}, choice="handles"),
     "bridge": Node(required=("two_handles",)),
     "pull_out": Node(required=("single_lever", "spray_head")),
-    "wall": Node(required=("single_lever",)),
+    "wall": Node(required=("single_lever",), optional={"diverter": 0.5}),
     "separate_pipe": Node(),
     "spout": Node(label="spout"),
-    "spray_head": Node(label="spray_head"),
+    "spray_head": Node(label="spray_head", optional={"mode_button": 0.6}),
+    "mode_button": Node(label="button", doc="the head's stream / spray toggle (pressed 2 mm)"),
+    "diverter": Node(label="knob", doc="a bath-shower mixer's diverter knob (pulled up 8 mm)"),
     "single_lever": Node(label="lever"),
     "two_handles": Node(repeat={"valve": 2}),
     "valve": Node(label="handle"),
@@ -135,7 +139,7 @@ class TapLayout(Layout):
                 z_rt = T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T))
                 spout, hp, hf, travel = T.pullout_spout(p["spout_reach"] + 0.05, rs, z_rt + T.GAP, height, z_low,
                                                         p["head_travel"])
-                head = dict(pieces=hp, at=hf, travel=travel)
+                head = dict(pieces=hp, at=hf, travel=travel, rh=max(1.6 * rs, 0.015))
             else:
                 height = max(height, z_low + 0.06, z_rt + 0.1)
                 z_rt = max(z_rt, T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T)))
@@ -189,7 +193,8 @@ class TapLayout(Layout):
         spout = T.collar_spout(shape, p["spout_reach"], rs, rb, z_cm, hc, z_cm - 0.09)
         self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, z_cm - hc / 2))
         lever, hinge = T.lever((0.0, 0.0), z_top + T.CAP_H, CAP * rb, p["lever_length"])
-        self.grow(design, controls=dict(pieces=lever, hinge=hinge), head=None)
+        self.grow(design, controls=dict(pieces=lever, hinge=hinge), head=None,
+                  diverter=(-(p["wall_length"] / 2 - T.DIVERTER["inset"]), z + r_bar))
 
     def deck(self, node, controls, head):
         self.grow(node.one(node.choice), **controls)
@@ -197,8 +202,16 @@ class TapLayout(Layout):
     def bridge(self, node, controls, head):
         self.grow(node.one("two_handles"), **controls)
 
-    def wall(self, node, controls, head):
+    def wall(self, node, controls, head, diverter):
         self.grow(node.one("single_lever"), **controls)
+        if node.one("diverter"):
+            self.grow(node.one("diverter"), y=diverter[0], z_top=diverter[1])
+
+    def diverter(self, node, y, z_top):
+        pieces, at = T.diverter_knob(y, z_top)
+        self.add("diverter", "knob", pieces)
+        self.join(J.prismatic("base", "diverter", tuple(at.origin), tuple(at.z), 0.0, T.DIVERTER["pull"],
+                              role="button"))
 
     def pull_out(self, node, controls, head):
         self.grow(node.one("single_lever"), **controls)
@@ -215,10 +228,18 @@ class TapLayout(Layout):
             a = self.p["spout_swivel"]
             self.join(J.revolute("base", "spout", axis, (0, 0, 1), -a, a, role="swivel"))
 
-    def spray_head(self, node, pieces, at, travel):
+    def spray_head(self, node, pieces, at, travel, rh):
         self.add("spray_head", "spray_head", pieces)
         # pulls out along the spout's arm on its hose and turns freely about it
         self.join(J.continuous_prismatic("spout", "spray_head", at.origin, at.z, (0.0, travel), role="slide"))
+        if node.one("mode_button"):
+            self.grow(node.one("mode_button"), at=at, rh=rh)
+
+    def mode_button(self, node, at, rh):
+        pieces, press = T.mode_button(at, rh)
+        self.add("mode_button", "button", pieces)
+        self.join(J.prismatic("spray_head", "mode_button", tuple(press.origin), tuple(press.z), 0.0,
+                              T.MODE_BUTTON["press"], role="button"))
 
     def single_lever(self, node, pieces, hinge):
         name = self.add("lever", "lever", pieces)

@@ -17,8 +17,17 @@ SEEDS = range(8)
 
 
 def make(seed, **overrides):
-    """The plain design (a dome lid on the rim) unless a test asks for another."""
-    return make_bp(pot, "pot", seed, **{"pot_design": "plain", **overrides})
+    """The plain design (a dome lid on the rim, no pasta insert, no steam vent) unless a test asks for another."""
+    return make_bp(pot, "pot", seed, **{"pot_design": "plain", "has_pasta": False, "has_vent": False, **overrides})
+
+
+def handle_pieces(bp):
+    """The pot's handles: side loops are pieces of the body, a long handle and a helper are fixed parts."""
+    out = [pc for pc in bp.parts["body"].pieces if pc.name == "handle"]
+    for n in ("handle", "helper"):
+        if n in bp.parts:
+            out += bp.parts[n].pieces
+    return out
 
 
 def lift(dz, turn=0.0):
@@ -39,10 +48,19 @@ def lowest(part, pose=None):
 def test_parts_labels_materials(seed):
     p, bp = make(seed)
     assert bp.root == "body"
-    assert {n: part.label for n, part in bp.parts.items()} == {"body": "body", "lid": "lid"}
-    handles = [pc for pc in bp.parts["body"].pieces if pc.name == "handle"]
-    assert handles, "the body carries its handles"
-    assert any(pc.name == "handle" for pc in bp.parts["lid"].pieces), "lid knob or loop"
+    labels = {n: part.label for n, part in bp.parts.items()}
+    want = {"body": "body", "lid": "lid"}
+    want.update({"lid_knob": "knob"} if p["lid_handle"] == "knob" else {"lid_handle": "handle"})
+    if p["handle_layout"] == "long_handle":
+        want["handle"] = "handle"
+        if p["has_helper"]:
+            want["helper"] = "handle"
+    assert labels == want
+    assert handle_pieces(bp), "the pot has its handles"
+    assert (p["handle_layout"] == "side_handles") == any(pc.name == "handle" for pc in bp.parts["body"].pieces)
+    lid_top = "lid_knob" if p["lid_handle"] == "knob" else "lid_handle"
+    j = next(j for j in bp.joints if j.child == lid_top)
+    assert (j.parent, j.kind) == ("lid", "fixed")
     assert bp.materials["body"] == p["body_finish"]
     if p["lid_finish"] == "glass":
         assert any(pc.material == "glass" for pc in bp.parts["lid"].pieces)
@@ -99,14 +117,18 @@ def test_lid_is_clear_along_its_motion(seed):
 
 
 def test_overrides_drive_the_growth():
-    _, bp = make(2, handle_layout="long_handle")
-    xs = np.vstack([pc.vertices for pc in bp.parts["body"].pieces if pc.name == "handle"])
+    _, bp = make(2, handle_layout="long_handle", has_helper=False)
+    xs = np.vstack([pc.vertices for pc in bp.parts["handle"].pieces])
     assert xs[:, 0].min() > 0 and xs[:, 0].max() > 0.2  # one long handle toward +X
+    assert "helper" not in bp.parts
+    _, bp = make(2, handle_layout="long_handle", has_helper=True)
+    assert np.vstack([pc.vertices for pc in bp.parts["helper"].pieces])[:, 0].max() < 0  # the helper at -X
     _, bp = make(2, handle_layout="side_handles")
     ys = np.vstack([pc.vertices for pc in bp.parts["body"].pieces if pc.name == "handle"])
     assert ys[:, 1].min() < 0 < ys[:, 1].max()
+    assert "handle" not in bp.parts
     _, bp = make(2, lid_handle="loop", lid_finish="glass")
-    assert sum(pc.name == "handle" for pc in bp.parts["lid"].pieces) == 3
+    assert sum(pc.name == "handle" for pc in bp.parts["lid_handle"].pieces) == 3
     assert bp.materials["glass"].startswith("glass")
     p, bp = make(2, radius=0.1, depth_ratio=2.0)
     assert bp.bounds()[1, 2] > 0.2
@@ -117,7 +139,7 @@ def test_handles_stay_below_the_rim_and_above_the_ground():
         for seed in range(6):
             _, bp = make(seed, handle_layout=layout, radius=0.08, depth_ratio=0.6)
             rim_bottom = max(pc.bounds[1, 2] for pc in bp.parts["body"].pieces if pc.name != "handle") - 0.006
-            hs = [pc for pc in bp.parts["body"].pieces if pc.name == "handle"]
+            hs = handle_pieces(bp)
             lid_r = max(np.linalg.norm(np.vstack([pc.vertices for pc in bp.parts["lid"].pieces])[:, :2], axis=1))
             for pc in hs:
                 near = np.linalg.norm(pc.vertices[:, :2], axis=1) <= lid_r + 0.005
@@ -162,3 +184,46 @@ def test_pressure_lid_turns_to_unlock_and_lifts_with_valve_and_lock(seed):
 def test_designs_vary():
     designs = {make_bp(pot, "pot", s)[0]["pot_design"] for s in range(20)}
     assert designs == {"plain", "steamer", "pressure"}
+
+
+def test_steamer_tiers_one_or_two_and_light():
+    """Tiers vary 1..2 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size (issue 14: they were 2-4 kg)."""
+    from infmob_usd.mass import inertial
+
+    counts = set()
+    for seed in range(30):
+        _, bp = make(seed, pot_design="steamer")
+        tiers = [n for n in bp.parts if n.startswith("tier")]
+        counts.add(len(tiers))
+        for t in tiers:
+            kg = inertial((pc, 7900.0, 0.0) for pc in bp.parts[t].pieces)[0]
+            assert 0.15 < kg < 2.0, (seed, t, kg)  # the insert row of mass_ranges.csv: 0.1-2.0
+    assert counts == {1, 2}
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_steam_vent_turns_on_the_lid(seed):
+    _, bp = make(seed, has_vent=True)
+    j = next(j for j in bp.joints if j.child == "vent")
+    assert (j.parent, j.kind, j.role) == ("lid", "revolute", "knob")
+    assert j.dofs[0].axis == pytest.approx((0, 0, 1), abs=0.3) and j.dofs[0].upper == pytest.approx(math.pi / 2)
+    assert bp.parts["vent"].label == "vent"
+    vent = bp.parts["vent"]
+    # on the dome, clear of the lid at rest and turned
+    assert overlap(vent, np.eye(4), bp.parts["lid"], np.eye(4)) < 1e-9
+    assert lowest(vent) > lowest(bp.parts["lid"])
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_pasta_insert_hangs_in_the_pot_and_lifts_out_with_the_lid_on_it(seed):
+    p, bp = make(seed, has_pasta=True)
+    j = next(j for j in bp.joints if j.child == "pasta")
+    assert (j.parent, j.kind) == ("body", "prismatic") and bp.parts["pasta"].label == "basket"
+    assert j.dofs[0].axis == pytest.approx((0, 0, 1))
+    basket, body = bp.parts["pasta"], bp.parts["body"]
+    depth = lowest(basket)
+    rim = max(pc.bounds[1, 2] for pc in body.pieces if pc.name != "handle")
+    assert rim - depth > 0.5 * min(p["pasta_reach"] * p["depth_ratio"] * p["radius"], 0.2)  # it reaches down
+    assert j.dofs[0].upper > rim - depth  # and lifts out past the rim
+    assert overlap(basket, np.eye(4), body, np.eye(4), pad=0.001) == 0.0
+    assert next(j for j in bp.joints if j.child == "lid").parent == "pasta"

@@ -16,7 +16,7 @@ from infmob_usd.materials.families import split_spec
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
-LABELS = {"base", "spout", "lever", "handle", "spray_head"}
+LABELS = {"base", "spout", "lever", "handle", "spray_head", "button", "knob"}
 TOL = 1e-7  # m^3, as the validator's contact volume
 
 
@@ -248,3 +248,26 @@ def test_seeds_differ():
     params = [make(s)[0] for s in range(20)]
     for name in ("design", "handles", "has_separate_pipe", "spout_shape", "finish", "spout_joint"):
         assert len({p[name] for p in params}) > 1, name
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_pull_out_head_has_its_spray_mode_button(seed):
+    p, bp = make(seed, design="pull_out", has_mode_button=True)
+    j = by_child(bp, "mode_button")
+    assert (j.parent, j.kind, j.role) == ("spray_head", "prismatic", "button")
+    assert j.dofs[0].axis == pytest.approx((0, -1, 0)) and j.dofs[0].upper == pytest.approx(0.002)
+    assert bp.parts["mode_button"].label == "button"
+    head = np.vstack([pc.vertices for pc in bp.parts["spray_head"].pieces])
+    button = np.vstack([pc.vertices for pc in bp.parts["mode_button"].pieces])
+    assert button[:, 1].min() > head[:, 1].max()  # on the head's side, a gap off it
+    assert head[:, 0].min() < button[:, 0].min() and button[:, 0].max() < head[:, 0].max()
+    test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_wall_mixer_diverter_pulls_up(seed):
+    p, bp = make(seed, design="wall", has_diverter=True)
+    j = by_child(bp, "diverter")
+    assert (j.parent, j.kind) == ("base", "prismatic") and j.dofs[0].axis == pytest.approx((0, 0, 1))
+    assert bp.parts["diverter"].label == "knob" and j.dofs[0].upper == pytest.approx(0.008)
+    test_no_contact_and_nothing_below_ground_in_any_state((p, bp))

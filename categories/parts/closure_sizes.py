@@ -5,6 +5,8 @@ folding and detachable pan handles. Metres (or ratios) of real products; each ta
 
 from __future__ import annotations
 
+import math
+
 # -- vase -------------------------------------------------------------------------------------
 # A vase stands: its foot is at least 40 % of its widest diameter (issue 13; Kähler Omaggio, IKEA
 # Vilja and Chinese ginger jars measure 45..70 %). Foot rings of thrown stoneware are 4..8 mm tall,
@@ -93,8 +95,24 @@ SPORTS = {"spout": 0.0055, "spout_h": 0.012, "pull": 0.006, "ring": 0.0015}
 # 45..70 % of the radius tall with a nesting skirt 15 mm deep: WMF / Fissler steamer sets); a
 # pressure cooker (Fissler Vitavit, WMF Perfect: a bayonet lid that turns 0..35 degrees to unlock
 # and lifts, a pressure valve that turns (selector), a lock slider 5 mm).
-POT_DESIGNS = {"plain": 0.5, "steamer": 0.25, "pressure": 0.25}
+POT_DESIGNS = {"plain": 0.45, "steamer": 0.35, "pressure": 0.2}  # steamer sets sell in 1-3 tier variants
+# Tiers 1..2 (steamer sets are also sold with three tiers, but a chain of three stacked slides
+# sags 1.1 mm at rest in MuJoCo, past the 1 mm rest check: effort.py's armature takes the joint's
+# free inertia as its load, while a middle tier's stop carries the tiers and lid above it). A tier is pressed from thinner sheet than the pot's clad
+# wall: 0.6-0.8 mm 18/10 steel, a tier of 20-28 cm weighing 0.4-1.0 kg (WMF, Fissler, Cuisinart
+# steamer inserts); "sheet" is that gauge (a clad 2-3 mm wall made them 2-4 kg, issue 14).
 STEAMER = {"tiers": (1, 2), "height": (0.45, 0.7), "skirt": 0.015, "room": 0.004, "gap": 0.0025, "lift": 0.12,
-           "handle": (0.05, 0.004, 0.014)}
+           "handle": (0.05, 0.004, 0.014), "sheet": 0.0008}
+# A pasta pot's straining insert (Cuisinart 77-412, All-Clad and WMF pasta pots: a deep steel
+# basket hung in the pot, lifted out to drain): it stands on the rim with a collar 15-25 % of the
+# pot's radius above it (its handles on the collar, the lid on top), reaching down to 65-80 % of
+# the pot's inside depth but at most 20 cm (inserts of 8-12 qt pots), of 0.6 mm perforated sheet;
+# it lifts out past the rim (its skirt + 5 cm). Chance in a plain pot.
+PASTA = {"collar": (0.15, 0.25), "reach": (0.65, 0.8), "deepest": 0.2, "sheet": 0.0006, "clear": 0.05, "p": 0.3}
+# A rotary steam vent on a pot lid: a steel disc 24-32 mm across with a grip tab, turned 0..90
+# degrees to open its steam holes (the vented glass lids of Tefal, Lagostina and WMF pots);
+# radius, thickness, tab height (m); at 55 % of the lid radius; the turn (rad).
+VENT = {"radius": 0.013, "thickness": 0.0025, "tab": 0.006, "at": 0.55, "turn": math.pi / 2, "gap": 0.0006,
+        "p": 0.5}
 PRESSURE = {"turn": 0.61, "valve": (0.012, 0.016), "valve_at": 0.42, "lock": (0.018, 0.01, 0.007), "lock_at": 0.6,
             "lock_slide": 0.005, "gap": 0.0006}

@@ -336,19 +336,24 @@ def sports_spout(cap_top: float, slot: str) -> Assembly:
 # pot: stacking steamer tiers, pressure-cooker lid fittings
 
 
-def steamer_tier(pot, height: float, slot: str, rim_slot: str, handle_slot: str):
+def steamer_tier(pot, height: float, slot: str, rim_slot: str, handle_slot: str, skirt: float | None = None,
+                 label: str = "insert", sheet: float | None = None):
     """A steamer tier that nests into ``pot`` (a :class:`.vessel.Cookware`, or the tier below): a wall
     as wide as the pot's, a rolled rim, a skirt that reaches into the vessel below with clearance, a
     shoulder ring and a (perforated) floor at the skirt's bottom, two small loop handles at +-Y.
     ``seat`` (origin) is the bottom of its wall, resting a gap above the rim below; returns the tier
-    and its own :class:`.vessel.Cookware` (for the next tier and the lid; ``lid_seat`` anchor)."""
+    and its own :class:`.vessel.Cookware` (for the next tier and the lid; ``lid_seat`` anchor).
+    Wall, skirt, shoulder and floor are of ``STEAMER["sheet"]`` (a pressed insert, not a clad pot wall).
+    ``skirt``: how deep it reaches into the vessel below (default ``STEAMER["skirt"]``); a pasta insert
+    is this with a short collar above the rim and a skirt reaching most of the way down (``label``
+    ``"basket"``, ``sheet`` its gauge)."""
     from . import vessel_sizes as S
     from .vessel import Cookware
 
     k = C.STEAMER
     r_top = pot.rim_inner + pot.wall
-    t = pot.wall
-    d = k["skirt"]
+    t = k["sheet"] if sheet is None else float(sheet)  # pressed sheet, thinner than the pot's clad wall
+    d = k["skirt"] if skirt is None else float(skirt)
     r_s = float(pot.radius_at(pot.rim_top - d - 0.002)) - pot.wall - k["room"]
     bead = max(0.0015, 0.8 * (pot.rim_outer - pot.rim_inner - pot.wall) / 2)
     wall = g.shell([(r_top, 0.0), (r_top, height - bead)], t, slot, sections=SECTIONS)
@@ -367,7 +372,7 @@ def steamer_tier(pot, height: float, slot: str, rim_slot: str, handle_slot: str)
                                standoff=hs, radius=hr)
     prof = np.array([(r_top, 0.0), (r_top, height)])
     info = Cookware(prof, height, cx + bead, r_top - t, cz - bead, -d + t, r_s - t, t)
-    a = Assembly.single("insert", pieces, {"seat": IDENTITY, "lid_seat": _at(height + S.LID_GAP)})
+    a = Assembly.single(label, pieces, {"seat": IDENTITY, "lid_seat": _at(height + S.LID_GAP)})
     return a, info
 
 
@@ -396,3 +401,13 @@ def lock_slider(slot: str) -> Assembly:
     piece = g.from_trimesh(g.convex_hull(np.array(pts)), slot, name="button")
     return Assembly.single("button", [piece], {"base": IDENTITY, "slide": Frame.at((0, 0, z0 + h / 2), z=(1, 0, 0),
                                                                                  x=(0, 0, 1))})
+
+
+def steam_vent(slot: str) -> Assembly:
+    """A pot lid's rotary steam vent: a flat disc with a grip tab across it, turning about its axis
+    (``base`` at its bottom, resting a small gap above the lid; :data:`.closure_sizes.VENT`)."""
+    k = C.VENT
+    r, t, tab, z0 = k["radius"], k["thickness"], k["tab"], k["gap"]
+    disc = g.disc((0, 0, z0 + t / 2), r, t, slot, 24)
+    grip = g.box_between((-0.8 * r, -0.0015, z0 + t - 0.0005), (0.8 * r, 0.0015, z0 + t + tab), slot)
+    return Assembly.single("vent", [disc, grip], {"base": IDENTITY})

@@ -236,3 +236,35 @@ def deck(width: float, depth: float, shape: str, bridge: bool) -> list[g.Piece]:
     return [g.box_between([-depth / 2, -width / 2, 0], [depth / 2, width / 2, DECK_T], "metal", bevel=0.003),
             g.box_between([-depth / 2 + 0.004, -width / 2 + 0.004, -0.002], [depth / 2 - 0.004, width / 2 - 0.004, 0.0],
                           "seal")]
+
+
+# A pull-out head's spray-mode button (stream / spray toggle: Hansgrohe Focus 2jet, Grohe Minta
+# pull-out heads): a button 12 x 8 mm on the head, pressed 2 mm.
+MODE_BUTTON = {"size": (0.012, 0.008, 0.004), "at": 0.45, "press": 0.002, "gap": 0.0006}
+# A bath-shower wall mixer's diverter (EN 200 bath mixers with an automatic diverter, e.g. Grohe
+# Eurosmart / Hansgrohe Logis bath mixers): a knob on top of the body bar at one end, pulled up
+# 8 mm to send the water to the shower. Knob radius and height.
+DIVERTER = {"radius": 0.009, "height": 0.014, "inset": 0.035, "pull": 0.008, "gap": 0.0008}
+
+
+def mode_button(head: Frame, rh: float) -> tuple[list[g.Piece], Frame]:
+    """The spray-mode button on the +Y side of a pull-out head whose slide frame is ``head`` (origin at
+    the head's back, z along the arm, head radius ``rh``): its pieces and its press frame (z into the
+    head, -Y: pressed sideways, so gravity does not press it)."""
+    k = MODE_BUTTON
+    ln, w, h = k["size"]
+    o = np.asarray(head.origin, float) + k["at"] * 0.07 * np.asarray(head.z, float)
+    y0 = o[1] + rh + k["gap"]
+    piece = g.box_between([o[0] - ln / 2, y0, o[2] - w / 2], [o[0] + ln / 2, y0 + h, o[2] + w / 2], "aerator",
+                          bevel=0.0015)
+    return [piece], Frame.at((o[0], y0 + h, o[2]), z=(0, -1, 0), x=(1, 0, 0))
+
+
+def diverter_knob(y: float, z_top: float) -> tuple[list[g.Piece], Frame]:
+    """A wall mixer's diverter knob standing on the body bar's top ``z_top`` at ``y`` (x = 0): its
+    pieces (a stem and a ribbed knob) and its pull frame (z up)."""
+    k = DIVERTER
+    r, h, z0 = k["radius"], k["height"], z_top + k["gap"]
+    pieces = [g.cylinder([0, y, z0], [0, y, z0 + 0.4 * h], 0.45 * r, "metal", 20),
+              g.cylinder([0, y, z0 + 0.4 * h], [0, y, z0 + h], r, "metal", 24)]
+    return pieces, Frame.at((0.0, y, z0), z=(0, 0, 1), x=(1, 0, 0))
