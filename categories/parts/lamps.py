@@ -283,7 +283,10 @@ def _tripod(r_lo: float, R: float, z_hub: float) -> list[g.Piece]:
         foot = d * TRIPOD_SPAN * R + (0, 0, 0.012)
         out += [g.cylinder(top, foot, r_leg, "pole", 16),
                 g.cylinder(foot - (0, 0, 0.012), foot + (0, 0, 0.004), r_leg + 0.003, "fitting", 16)]
-    out.append(g.cylinder((0, 0, z_hub - 0.048), (0, 0, z_hub - 0.002), r_hub - 0.002, "weight", 24).replace(convex=[]))
+    # the slug is solid steel (wall 0): a hollow one left small desk tripods at 0.37 kg, lighter than any real
+    # tripod desk lamp (0.8-1.5 kg: IKEA / Hay listings); solid, a 25 mm hub's slug adds ~0.6 kg
+    out.append(g.cylinder((0, 0, z_hub - 0.048), (0, 0, z_hub - 0.002), r_hub - 0.002, "weight", 24).replace(
+        convex=[], wall=0.0))
     return out
 
 
