@@ -25,6 +25,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
+from infmob_usd.assembly import Assembly
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -126,6 +127,7 @@ NEST_SIZE = (0.7, 0.6)  # a nest of tables is at most 0.7 m across and 0.6 m hig
 #                         West Elm / Wayfair nests 0.45-0.65 m)
 NEST_TOP = {"glass": 0.008}  # nested tables' tops: 8 mm toughened glass, else 18 mm boards
 DRAWER_DEPTH = 0.45  # coffee-table drawers run 0.3-0.45 m deep
+METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (as the dining table's)
 DRAWER_WIDE = 0.6  # and are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)
 
 
@@ -276,7 +278,12 @@ class TableLayout(Layout):
         y0, z0, y1, z1 = hole
         w, h = y1 - y0 - 2 * DRAWER_CLEAR, z1 - z0 - 2 * DRAWER_CLEAR
         face = Frame.at((x, (y0 + y1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
-        box = panels.drawer_box(w, h, depth, T.BOARD, 0.01, "frame").attached("slide", to=face)
+        box = panels.drawer_box(w, h, depth, T.BOARD, 0.01, "frame")
+        if self.p["frame_finish"] == "brushed_metal":  # a steel drawer is folded sheet, not steel boards
+            part = box.parts[box.root]
+            box = Assembly.single(part.label, [pc.replace(sheet=METAL_DRAWER_SHEET) for pc in part.pieces],
+                                  box.anchors, box.supports, name=box.root)
+        box = box.attached("slide", to=face)
         handle = hardware.knob_handle(min(0.015, 0.3 * h), 0.025, "handle") if w < 0.3 else \
             hardware.bar_handle(min(0.14, 0.5 * w), "handle")
         handle = handle.attached("mount", to=box.anchor("handle"))

@@ -117,7 +117,8 @@ def test_moving_parts_clear_at_rest(seed):
 
 
 def test_busy_table_all_mechanisms():
-    over = dict(support="legs", top_style="extension", has_drawers=True, drawer_count=2, drawer_sides="both",
+    over = dict(support="legs", top_style="extension", has_drawers=True, drawer_count=2, back_drawer_count=2,
+                drawer_sides="both",
                 has_adjustable_legs=True, length=1.6, width=0.9, apron_height=0.08)
     _, bp = make(2, **over)
     labels = [part.label for part in bp.parts.values()]
@@ -186,3 +187,17 @@ def test_levelling_feet():
     assert clash(bp, at([], 0.0)) == []
     _, bp = make(1, support="legs", has_adjustable_legs=True, has_levellers=True)
     assert not any(part.label == "foot" for part in bp.parts.values())  # inner legs have their own feet
+
+
+@pytest.mark.parametrize("front,back,length", [(3, 1, 2.4), (1, 2, 1.8), (3, 3, 1.8)])
+def test_each_long_side_draws_its_own_drawer_count(front, back, length):
+    """The +Y and -Y long sides carry their own drawer counts (three only on a table 2.2 m or longer), spread
+    evenly, each pulling out along its side's normal and clear of the others when all are out."""
+    p, bp = make(2, support="legs", top_style="extension", has_drawers=True, drawer_sides="both",
+                 drawer_count=front, back_drawer_count=back, length=length, width=1.0, apron_height=0.12,
+                 has_adjustable_legs=False)
+    cap = 3 if length >= 2.2 else 2
+    js = [j for j in movable(bp) if bp.parts[j.child].label == "drawer"]
+    sides = [np.sign(j.dofs[0].axis[1]) for j in js]
+    assert sides.count(1) == min(front, cap) and sides.count(-1) == min(back, cap)
+    assert clash(bp, at(js, 1.0)) == []
