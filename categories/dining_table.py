@@ -119,6 +119,8 @@ CLEAR = 0.003  # drawer fronts in their openings, inner legs in their sleeves
 LEAF_T = 0.02  # stored leaf thickness
 LEAF_GAP_Y = 0.003  # a drop leaf's edge off the centre top at its rule joint
 LOPER = 0.25  # swing-out bracket length
+TWO_LOPERS = 1.3  # m of apron: a longer drop leaf rests on two lopers (long drop-leaf / harvest tables carry each
+#                   leaf on two swing brackets or gates; a Pembroke table's short leaf on one)
 LEVELLER = 0.015  # levelling foot height under a leg (M8 furniture levellers: 10-20 mm)
 LEAF_GAP = 0.004  # between the leaf and the halves above it
 SLEEVE_WALL = 0.004
@@ -252,11 +254,15 @@ class TableLayout(Layout):
                       reach=wc / 2 + 0.8 * (W - wc) / 2)
 
     def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
+        """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
+        under a leaf whose apron is ``TWO_LOPERS`` long or longer."""
         length = min(LOPER, 0.4 * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        pieces, hinge = M.loper(-length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
-        name = f"loper_{'left' if side > 0 else 'right'}"
-        self.add(name, "bracket", pieces)
-        self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
+        xs = [-La / 4, La / 4] if La >= TWO_LOPERS else [0.0]
+        for k, xc in enumerate(xs):
+            pieces, hinge = M.loper(xc - length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
+            name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
+            self.add(name, "bracket", pieces)
+            self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
 
     def extension(self, node, x_in, La, Wa, leaf, **slot):
         p = self.p

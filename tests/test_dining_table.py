@@ -9,7 +9,7 @@ from infmob_usd.categories import dining_table as dt
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import make_bp, movable
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(6)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
@@ -201,3 +201,18 @@ def test_each_long_side_draws_its_own_drawer_count(front, back, length):
     sides = [np.sign(j.dofs[0].axis[1]) for j in js]
     assert sides.count(1) == min(front, cap) and sides.count(-1) == min(back, cap)
     assert clash(bp, at(js, 1.0)) == []
+
+
+@pytest.mark.parametrize("length,count", [(1.4, 1), (2.4, 2)])
+def test_long_drop_leaves_rest_on_two_lopers(length, count):
+    """A drop leaf over an apron 1.3 m or longer gets two lopers (a quarter of the apron from each end), a
+    shorter one a single loper in the middle; each needs its leaf up and swings out clear of the rest."""
+    p, bp = make(4, top_style="drop_leaf", has_loper=True, length=length, top_shape="rectangular",
+                 end_overhang=0.1, support="legs", has_adjustable_legs=False)
+    for side in ("left", "right"):
+        names = [n for n in bp.parts if n.startswith(f"loper_{side}")]
+        assert len(names) == count
+        js = [by_child(bp, n) for n in names]
+        assert all(j.requires_open == f"leaf_{side}" and j.kind == "revolute" for j in js)
+    moving = [j for j in movable(bp)]
+    assert clash(bp, at([], 0.0)) == [] and clash(bp, at(moving, 1.0)) == []  # as the single loper's test
