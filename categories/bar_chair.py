@@ -10,7 +10,8 @@ upright). Three designs (``base_type``): ``wheeled`` (a drafting stool: the foot
 has one, slides up and down the column), ``disc`` (a pedestal bar stool with a fixed foot ring),
 ``four_leg`` (four splayed steel legs with a foot rail and a swivel bearing plate; no lift, as on
 most four-leg swivel bar stools). A gas-lift stool may have its height lever as a moving part and a
-seat that tilts forward (sit-stand stools).
+seat that tilts forward (sit-stand stools). A stool with a back may have two arms: fixed, height-adjustable
+(the post slides up) or flip-up (drafting chairs).
 Parts: ``categories/parts/seating.py`` (shared with the office chair).
 """
 
@@ -27,7 +28,7 @@ from .parts import seating as S
 
 GRAMMAR = Grammar("bar_chair", {
     "bar_chair": Node(required=("seat",), one_of={"wheeled": 0.3, "disc": 0.45, "four_leg": 0.25},
-                      choice="base_type", optional={"back": 0.45}),
+                      choice="base_type", optional={"back": 0.45, "arms": 0.4}),
     "wheeled": Node(label="base", required=("lift",), repeat={"caster": S.legs}, optional={"ring_slide": 0.7}),
     "disc": Node(label="base", required=("lift", "foot_ring")),
     "four_leg": Node(label="base"),
@@ -41,6 +42,9 @@ GRAMMAR = Grammar("bar_chair", {
     "seat_tilt": Node(label="seat"),
     "seat": Node(label="seat"),
     "back": Node(label="back"),
+    "arms": Node(repeat={"arm": 2}),
+    "arm": Node(label="arm", one_of={"arm_fixed": 0.4, "arm_height": 0.3, "arm_flip": 0.3}, choice="arm_style"),
+    "arm_fixed": Node(), "arm_height": Node(), "arm_flip": Node(),
 })
 
 PARAMS = (
@@ -65,6 +69,12 @@ PARAMS = (
     Float("back_gap", "backrest bottom above the seat top", "m", 0.06, 0.14),
     Choice("back_mount", "the back is fixed or reclines", choices=("fixed", "hinged")),
     Float("recline", "back recline range (hinged back)", "rad", 0.15, 0.3),
+    # arms of drafting chairs and bar stools with backs (Boss B1615/B16245 drafting stools: fixed or height-
+    # adjustable loop arms; Flash Furniture drafting chairs: flip-up arms): pads 22-26 cm above the seat
+    Float("arm_height", "arm pad top above the seat top", "m", 0.18, 0.25),
+    Float("arm_travel", "height-adjustable arms: travel", "m", 0.04, 0.07),
+    Float("pad_length", "arm pad length (X)", "m", 0.2, 0.26),
+    Float("pad_width", "arm pad width (Y)", "m", 0.055, 0.08),
     Choice("base_finish", "base material", choices=("chrome", "brushed_metal", "plastic"),
            weights=(0.45, 0.25, 0.3)),
     Choice("lift_finish", "gas lift tube material", choices=("chrome", "plastic"), weights=(0.7, 0.3)),
@@ -88,7 +98,38 @@ class StoolLayout(S.ChairNodes):
                          tilt=bool(lift and lift.one("seat_tilt")))
         self.grow(design, seat=seat)
         if node.one("back"):
-            self.grow(node.one("back"), seat=seat, hinged=p["back_mount"] == "hinged")
+            front = self.grow(node.one("back"), seat=seat, hinged=p["back_mount"] == "hinged")
+            if node.one("arms"):
+                self.grow(node.one("arms"), seat=seat, back_front=front)
+
+    def arms(self, node, seat, back_front):
+        """Two arms on brackets under the seat, beside the back (as the office chair's, without its 4D pads)."""
+        p = self.p
+        dims = S.ArmDims(p["pad_length"], p["pad_width"], p["arm_height"], 0.0, 0.0, 0.0)
+        y = S.arm_y(p["seat_width"], dims, p["back_width"] * p["seat_width"], back_front, seat)
+        for arm, (side, sign) in zip(node.of("arm"), (("left", 1), ("right", -1)), strict=True):
+            self.grow(arm, seat=seat, y=sign * y, side=side, dims=dims)
+
+    def arm(self, node, seat, y, side, dims):
+        """Fixed; sliding up its post (a height-adjustable arm); or flipping up and back about the post's rear
+        bottom edge (a flip-up arm, so the sitter can slide in sideways)."""
+        a = S.arm(seat, self.p["seat_height"], y, dims)
+        style = node.choice
+        self.extend("seat", a.bracket if style != "arm_flip" else a.bracket[:2])
+        post = self.add(f"arm_{side}", "arm", a.post)
+        if style == "arm_height":
+            self.slide("seat", post, a.post_slide, upper=self.p["arm_travel"], role="telescope")
+        elif style == "arm_fixed":
+            self.fix("seat", post)
+        else:  # flip-up: a positive turn about -y tips the arm up and back
+            pivot = a.post_slide.moved(dx=-S.ARM_POST_HALF)
+            self.hinge("seat", post, Frame.at(pivot.origin, x=(1, 0, 0), z=(0, -1, 0)), upper=S.ARM_FLIP)
+        self.grow(node.one(style), arm=a, post=post)
+
+    def arm_fixed(self, node, arm, post):
+        self.extend(post, [*arm.slider, *arm.pad])
+
+    arm_height = arm_flip = arm_fixed
 
     def seat(self, node, lever, tilt):
         p = self.p
@@ -177,5 +218,10 @@ class StoolLayout(S.ChairNodes):
                    role="slide")
 
 
+def arms_need_a_back(p: dict) -> dict:
+    """Arms stand beside a back: a stool without one has none."""
+    return {**p, "has_arms": p["has_arms"] and p["has_back"]}
+
+
 CATEGORY = Category("bar_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, StoolLayout,
-                    S.CHAIR_MATERIALS)
+                    S.CHAIR_MATERIALS, derive=arms_need_a_back)

@@ -25,6 +25,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
+from infmob_usd.assembly import Assembly
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -36,10 +37,20 @@ from .parts import table_mechanisms as M
 from .parts import tables as T
 
 
+def per_side(p: dict, count: int) -> int:
+    """A side's drawer count, capped by the table's width: one under 0.7 m, two under 0.9 m, else up to three
+    (the cap keeps every drawer front at least ~0.25 m wide, as on IKEA HEMNES / LIATORP storage tables)."""
+    return min(count, 1 if p["width"] < 0.7 else 2 if p["width"] < 0.9 else 3)
+
+
 def drawer_count(p, rng) -> int:
-    """drawers per side x sides (a table under 0.7 m has one drawer per side)"""
-    per = 1 if p["width"] < 0.7 else p["drawer_count"]
-    return per * (2 if p["drawer_sides"] == "both" else 1)
+    """drawer_count in the front, capped by the width"""
+    return per_side(p, p["drawer_count"])
+
+
+def back_drawer_count(p, rng) -> int:
+    """back_drawer_count in the back when drawer_sides is both, capped by the width"""
+    return per_side(p, p["back_drawer_count"]) if p["drawer_sides"] == "both" else 0
 
 
 GRAMMAR = Grammar("cocktail_table", {
@@ -50,7 +61,9 @@ GRAMMAR = Grammar("cocktail_table", {
     "lift_top": Node(label="lift"),
     "shelf": Node(),
     "pedestal": Node(label="stand"),
-    "drawers": Node(label="body", repeat={"drawer": drawer_count}, optional={"shelf": 0.4, "casters": 0.4}),
+    "drawers": Node(label="body", repeat={"drawer": drawer_count, "back_drawer": back_drawer_count},
+                    optional={"shelf": 0.4, "casters": 0.4}),
+    "back_drawer": Node(label="drawer"),
     "casters": Node(repeat={"table_caster": 4}),
     "table_caster": Node(label="caster", one_of={"twin": 0.4, "single": 0.6}, choice="caster_style"),
     "twin": Node(label="wheel"),
@@ -61,7 +74,7 @@ GRAMMAR = Grammar("cocktail_table", {
     "inner": Node(label="table"),
 })
 """``shelf`` and ``lift_top`` grow on a legged table; without a lift-top its legs are telescopic.
-A storage table has 1-4 drawers and maybe stands on four swivel casters (a cart-style coffee table); a nest has one or two tables under the top (front, back), each
+A storage table has 1-3 drawers in the front and maybe 1-3 in the back (fewer on a narrow table) and maybe stands on four swivel casters (a cart-style coffee table); a nest has one or two tables under the top (front, back), each
 maybe with a smaller one inside it."""
 
 PARAMS = (
@@ -81,7 +94,8 @@ PARAMS = (
     Float("lift_forward_ratio", "forward (+X) over upward motion of a forward lift-top", "", 0.3, 0.8),
     Float("box_depth", "storage well (lift-top) or drawer apron depth (13-20 cm on lift-top tables)", "m",
           0.13, 0.2),
-    Int("drawer_count", "drawers per drawer side on a table 0.7 m or wider", "", 1, 2),
+    Int("drawer_count", "drawers in the front (one under 0.7 m wide, at most two under 0.9 m)", "", 1, 3),
+    Int("back_drawer_count", "drawers in the back when drawer_sides is both (capped as the front)", "", 1, 3),
     Choice("drawer_sides", "drawers in the front only or front and back", choices=("front", "both")),
     Float("caster_radius", "wheel radius of a storage table's casters (50-75 mm furniture casters)", "m",
           0.025, 0.0375),
@@ -113,10 +127,18 @@ NEST_SIZE = (0.7, 0.6)  # a nest of tables is at most 0.7 m across and 0.6 m hig
 #                         West Elm / Wayfair nests 0.45-0.65 m)
 NEST_TOP = {"glass": 0.008}  # nested tables' tops: 8 mm toughened glass, else 18 mm boards
 DRAWER_DEPTH = 0.45  # coffee-table drawers run 0.3-0.45 m deep
+METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (as the dining table's)
+DRAWER_WIDE = 0.6  # and are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)
+
+
+LIFT_TOP_T = 0.03  # a lift-top is an 18-30 mm board: lift-top mechanisms carry 10-25 kg (hardware listings of
+#                   lift-top coffee-table hinges); a 45 mm solid 1 m top (33 kg) was heavier than any real lid
 
 
 def nest_size(p: dict) -> dict:
-    """A nest of tables is side-table sized (``NEST_SIZE``)."""
+    """A nest of tables is side-table sized (``NEST_SIZE``); a lift-top is at most ``LIFT_TOP_T`` thick."""
+    if p["support"] == "legs" and p["has_lift_top"]:
+        return {**p, "top_thickness": min(p["top_thickness"], LIFT_TOP_T)}
     if p["support"] != "nesting":
         return p
     return {**p, "width": min(p["width"], NEST_SIZE[0]), "height": min(p["height"], NEST_SIZE[1])}
@@ -217,12 +239,19 @@ class TableLayout(Layout):
         half = W / 2 - inset + lw / 2
         za1 = H - tt
         za0 = za1 - p["box_depth"]
-        sides = (1, -1) if p["drawer_sides"] == "both" else (1,)
-        per = len(node.of("drawer")) // len(sides)
+        front, back = node.of("drawer"), node.of("back_drawer")
+        sides = (1, -1) if back else (1,)
         span = 2 * (half - lw)
-        dw = span / per
-        holes = [(-span / 2 + k * dw + 0.012, za0 + DRAWER_MARGIN, -span / 2 + (k + 1) * dw - 0.012,
-                  za1 - DRAWER_MARGIN) for k in range(per)]
+
+        def openings(per):  # one bay per drawer; a drawer at most DRAWER_WIDE wide, centred in its bay
+            dw = span / per
+            w = min(dw - 0.024, DRAWER_WIDE)
+            return [(-span / 2 + (k + 0.5) * dw - w / 2, za0 + DRAWER_MARGIN, -span / 2 + (k + 0.5) * dw + w / 2,
+                     za1 - DRAWER_MARGIN) for k in range(per)]
+
+        holes = {1: openings(len(front))}
+        if back:
+            holes[-1] = openings(len(back))
         frames = T.corner_frames(2 * half, 2 * half, lw / 2)
         casters = node.one("casters")
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
@@ -233,28 +262,35 @@ class TableLayout(Layout):
         if c:
             legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
                                    f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]
-        self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", {s: holes for s in sides})
-                 + legs)
+        self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", holes) + legs)
         if node.one("shelf"):
             self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
                       z=max(min(p["shelf_height"] * H, za0 - 0.08), z_leg + 0.03), shape="square")
         if casters:
             self.grow(casters, frames=frames, caster=c)
         depth = min(DRAWER_DEPTH, (2 * half - 2 * T.BOARD) * (0.45 if len(sides) == 2 else 0.85))
-        for k, d in enumerate(node.of("drawer")):
-            self.grow(d, k=k, side=sides[k // per], hole=holes[k % per], x=sides[k // per] * half, depth=depth)
+        slots = [(1, h) for h in holes[1]] + [(-1, h) for h in holes.get(-1, [])]
+        for k, (d, (side, hole)) in enumerate(zip(front + back, slots, strict=True)):
+            self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=depth)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
     def drawer(self, node, k, side, hole, x, depth):
         y0, z0, y1, z1 = hole
         w, h = y1 - y0 - 2 * DRAWER_CLEAR, z1 - z0 - 2 * DRAWER_CLEAR
         face = Frame.at((x, (y0 + y1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
-        box = panels.drawer_box(w, h, depth, T.BOARD, 0.01, "frame").attached("slide", to=face)
+        box = panels.drawer_box(w, h, depth, T.BOARD, 0.01, "frame")
+        if self.p["frame_finish"] == "brushed_metal":  # a steel drawer is folded sheet, not steel boards
+            part = box.parts[box.root]
+            box = Assembly.single(part.label, [pc.replace(sheet=METAL_DRAWER_SHEET) for pc in part.pieces],
+                                  box.anchors, box.supports, name=box.root)
+        box = box.attached("slide", to=face)
         handle = hardware.knob_handle(min(0.015, 0.3 * h), 0.025, "handle") if w < 0.3 else \
             hardware.bar_handle(min(0.14, 0.5 * w), "handle")
         handle = handle.attached("mount", to=box.anchor("handle"))
         drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=0.75 * depth)
+
+    back_drawer = drawer
 
     def casters(self, node, frames, caster):
         for i, (n, f) in enumerate(zip(node.of("table_caster"), frames)):

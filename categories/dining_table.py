@@ -29,9 +29,21 @@ from .parts import table_mechanisms as M
 from .parts import tables as T
 
 
+def per_side(p: dict, count: int) -> int:
+    """A long side's drawer count: up to three on a table 2.2 m or longer (farmhouse and refectory tables carry
+    2-3 apron drawers a side), else up to two."""
+    return min(count, 3 if p["length"] >= 2.2 else 2)
+
+
 def drawer_count(p, rng) -> int:
-    """drawer_count per long side x sides, or one in each end"""
-    return (1 if p["drawer_sides"] == "ends" else p["drawer_count"]) * (1 if p["drawer_sides"] == "one" else 2)
+    """drawer_count in the +Y long side (capped by the length), or one in the +X end"""
+    return 1 if p["drawer_sides"] == "ends" else per_side(p, p["drawer_count"])
+
+
+def back_drawer_count(p, rng) -> int:
+    """back_drawer_count in the -Y side when drawer_sides is both (capped), one in the -X end, else none"""
+    sides = p["drawer_sides"]
+    return 0 if sides == "one" else 1 if sides == "ends" else per_side(p, p["back_drawer_count"])
 
 
 GRAMMAR = Grammar("dining_table", {
@@ -49,7 +61,8 @@ GRAMMAR = Grammar("dining_table", {
     "pedestal": Node(),
     "extension": Node(label="top", required=("leaf",)),
     "leaf": Node(label="leaf"),
-    "drawers": Node(repeat={"drawer": drawer_count}),
+    "drawers": Node(repeat={"drawer": drawer_count, "back_drawer": back_drawer_count}),
+    "back_drawer": Node(label="drawer"),
     "drawer": Node(label="drawer"),
 })
 
@@ -68,7 +81,9 @@ PARAMS = (
           0.2, 0.28),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
           "", 0.25, 0.4),
-    Int("drawer_count", "drawers per drawer side", "", 1, 2),
+    Int("drawer_count", "drawers in the +Y long side (at most two under 2.2 m long)", "", 1, 3),
+    Int("back_drawer_count", "drawers in the -Y long side when drawer_sides is both (capped as the +Y side)", "",
+        1, 3),
     Choice("drawer_sides", "drawers in one long side (+Y), both long sides, or both ends (X)",
            choices=("one", "both", "ends"), weights=(0.4, 0.35, 0.25)),
     Choice("handle_style", "drawer handle", choices=("knob", "bar"), weights=(0.55, 0.45)),
@@ -104,6 +119,8 @@ CLEAR = 0.003  # drawer fronts in their openings, inner legs in their sleeves
 LEAF_T = 0.02  # stored leaf thickness
 LEAF_GAP_Y = 0.003  # a drop leaf's edge off the centre top at its rule joint
 LOPER = 0.25  # swing-out bracket length
+TWO_LOPERS = 1.3  # m of apron: a longer drop leaf rests on two lopers (long drop-leaf / harvest tables carry each
+#                   leaf on two swing brackets or gates; a Pembroke table's short leaf on one)
 LEVELLER = 0.015  # levelling foot height under a leg (M8 furniture levellers: 10-20 mm)
 LEAF_GAP = 0.004  # between the leaf and the halves above it
 SLEEVE_WALL = 0.004
@@ -142,12 +159,17 @@ class TableLayout(Layout):
         x_in = La / 2 - max(lw, BOARD)  # free length between the legs (half)
         ends = p["drawer_sides"] == "ends"
         span = Wa / 2 - max(lw, BOARD) if ends else x_in
-        holes = self._holes(span, za0, (leaf[0] - 0.006) if ext else za1 - MARGIN) if drawers else []
-        sides = (1,) if p["drawer_sides"] == "one" else (1, -1)
+        z_top = (leaf[0] - 0.006) if ext else za1 - MARGIN
+        holes = {}
+        if drawers:
+            holes[1] = self._holes(span, za0, z_top, len(drawers.of("drawer")))
+            if drawers.of("back_drawer"):
+                holes[-1] = self._holes(span, za0, z_top, len(drawers.of("back_drawer")))
+        sides = tuple(holes)
         if ends:
-            body = M.apron_rails_ends(La, Wa, lw, za0, za1, BOARD, "frame", {s: holes for s in sides})
+            body = M.apron_rails_ends(La, Wa, lw, za0, za1, BOARD, "frame", holes)
         else:
-            body = T.apron_rails(La, Wa, lw, za0, za1, BOARD, "frame", {s: holes for s in sides})
+            body = T.apron_rails(La, Wa, lw, za0, za1, BOARD, "frame", holes)
         if leaves:
             xy = T.outline(L, W, p["top_shape"], 192)
             body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, 0.15 * tt, "top"))
@@ -157,13 +179,13 @@ class TableLayout(Layout):
         self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
         self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
         if drawers:
-            self.grow(drawers, slots=[(s, h) for s in sides for h in holes], Wa=Wa, La=La, sides=len(sides))
+            self.grow(drawers, slots=[(s, h) for s in sides for h in holes[s]], Wa=Wa, La=La, sides=len(sides))
 
-    def _holes(self, x_in, z0, z1):
+    def _holes(self, x_in, z0, z1, n):
+        """``n`` drawer openings spread evenly along a board with ``x_in`` free each side of its centre."""
         ends = self.p["drawer_sides"] == "ends"
-        n = 1 if ends else self.p["drawer_count"]
         dw = min(DRAWER_WIDTH, 2 * x_in / n - (0.05 if ends else 0.1))
-        xs = [0.0] if n == 1 else [-x_in / 2, x_in / 2]
+        xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
         return [(x - dw / 2, z0 + MARGIN, x + dw / 2, z1) for x in xs]
 
     def legs(self, node, La, Wa, lw, za0, za1):
@@ -232,11 +254,15 @@ class TableLayout(Layout):
                       reach=wc / 2 + 0.8 * (W - wc) / 2)
 
     def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
+        """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
+        under a leaf whose apron is ``TWO_LOPERS`` long or longer."""
         length = min(LOPER, 0.4 * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        pieces, hinge = M.loper(-length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
-        name = f"loper_{'left' if side > 0 else 'right'}"
-        self.add(name, "bracket", pieces)
-        self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
+        xs = [-La / 4, La / 4] if La >= TWO_LOPERS else [0.0]
+        for k, xc in enumerate(xs):
+            pieces, hinge = M.loper(xc - length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
+            name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
+            self.add(name, "bracket", pieces)
+            self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
 
     def extension(self, node, x_in, La, Wa, leaf, **slot):
         p = self.p
@@ -249,6 +275,7 @@ class TableLayout(Layout):
         self.grow(node.one("leaf"), lo=(-half, -Wa / 2 + BOARD, leaf[0]), hi=(half, Wa / 2 - BOARD, leaf[1]))
 
     def leaf(self, node, lo, hi):
+        """One leaf stored on the runners in the apron, under the split (it is taken out by hand)."""
         self.add("leaf", "leaf", [g.box_between(lo, hi, "top")])
         self.fix("body", "leaf")
 
@@ -258,7 +285,7 @@ class TableLayout(Layout):
             depth = min(DRAWER_DEPTH, (La - 2 * BOARD) * 0.45)
         else:
             depth = min(DRAWER_DEPTH, (Wa - 2 * BOARD) * (0.45 if sides == 2 else 0.8))
-        for k, (d, (s, hole)) in enumerate(zip(node.of("drawer"), slots)):
+        for k, (d, (s, hole)) in enumerate(zip(node.of("drawer") + node.of("back_drawer"), slots, strict=True)):
             self.grow(d, k=k, side=s, hole=hole, at=s * (La if ends else Wa) / 2, depth=depth, ends=ends)
 
     def drawer(self, node, k, side, hole, at, depth, ends):
@@ -281,6 +308,8 @@ class TableLayout(Layout):
         handle = handle.attached("mount", to=box.anchor("handle"))
         drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=PULL * depth)
+
+    back_drawer = drawer
 
 
 CATEGORY = Category("dining_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS,

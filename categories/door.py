@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
@@ -30,14 +32,18 @@ from .parts import hardware
 GRAMMAR = Grammar("door", {
     "door": Node(label="frame", optional={"threshold": 0.4},
                  one_of={"single": 0.5, "double": 0.25, "sliding": 0.25}, choice="design"),
-    "threshold": Node(),
-    "single": Node(required=("leaf",), optional={"latch": 0.7}),
+    "threshold": Node(label="threshold"),
+    "single": Node(required=("leaf",), optional={"latch": 0.7, "letter_plate": 0.35, "viewer": 0.35}),
+    "letter_plate": Node(label="flap"),
+    "viewer": Node(label="cover"),
     "double": Node(repeat={"leaf": 2}),
     "sliding": Node(required=("slider",)),
-    "slider": Node(label="leaf", repeat={"roller": 2}),
+    "slider": Node(label="leaf", repeat={"roller": 2}, optional={"kick_plate": 0.3, "floor_guide": 0.6}),
+    "floor_guide": Node(label="guide"),
     "roller": Node(label="wheel"),
     "leaf": Node(label="leaf", one_of={"knob": 1 / 3, "lever": 1 / 3, "pull": 1 / 3}, choice="handle",
-                 optional={"thumb_turn": 0.4}),
+                 optional={"thumb_turn": 0.4, "kick_plate": 0.3}),
+    "kick_plate": Node(label="plate"),
     "latch": Node(label="latch"),
     "thumb_turn": Node(label="knob"),
     "knob": Node(repeat={"knob_face": 2}),
@@ -49,7 +55,9 @@ GRAMMAR = Grammar("door", {
 """Designs: a single hinged leaf (with a latch bolt thrown into the jamb's strike: the leaf opens once it
 is drawn back), a double (French) pair hinged on both jambs, or a sliding barn-door leaf hung on two
 wheels from a rail above the opening. Knobs and levers come in pairs, one on each face; a pull is fixed
-to the leaf; a thumb-turn sits on the back face above the handle (a key escutcheon on the front)."""
+to the leaf; a thumb-turn sits on the back face above the handle (a key escutcheon on the front). A single
+(entrance) leaf may carry a letter plate (its flap pushed in through the leaf) and a door viewer (its privacy
+cover swinging aside on the back face)."""
 
 PARAMS = (
     Float("leaf_width", "leaf width (Y)", "m", 0.8, 1.0),
@@ -82,8 +90,11 @@ MATERIALS = {"leaf": ("leaf_finish", {"painted": PAINTS}), "frame": "frame_famil
 
 
 def frame_family(p: dict) -> dict:
-    """A frame matching the leaf wears the leaf's family; otherwise it is painted white."""
+    """A frame matching the leaf wears the leaf's family; otherwise it is painted white. A fully glazed leaf
+    takes no letter plate (its opening would cross a lite), a glazed one no viewer (its glass is the view)."""
     leaf = "wood" if p["leaf_finish"] == "wood" else PAINTS
+    p = {**p, "has_letter_plate": p["has_letter_plate"] and p["glazing"] != "full",
+         "has_viewer": p["has_viewer"] and p["glazing"] == "none"}
     return {**p, "frame_family": leaf if p["frame_finish"] == "match" else "painted:white|off_white"}
 
 
@@ -94,6 +105,24 @@ THRESHOLD = 0.02
 BACKSET = 0.06  # handle axis from the lock edge
 LEVER_TURN = math.pi / 4
 PULL = hardware.HandleSize(standoff=0.04, bar_radius=0.012, post_radius=0.0096, inset=0.02)
+
+
+GUIDE = dict(clear=0.003, wall=0.004, height=0.035, length=0.05)  # barn-door floor guide channel
+GUIDE_IN = 0.05  # the guide sits this far inside the leaf's edge at rest
+KICK_HEIGHT = 0.2  # kick plates are 150-300 mm high, 1-1.5 mm stainless (Eurospec, Zoo Hardware listings)
+KICK_T = 0.0015
+KICK_INSET = 0.025  # short of each edge of the leaf
+LETTER_LOW = 0.72  # a letter plate's centre at least this high (BS EN 13724: opening 0.7-1.7 m above the floor)
+LETTER_BELOW = 0.25  # and this far below the handle axis
+LETTER_FLAP_OPENS = 1.4  # the flap swings in to about 80 degrees
+VIEWER_HEIGHT = 1.5  # door viewers are fitted at 1.4-1.6 m (Yale, Brinks fitting instructions)
+VIEWER_SWING = math.pi / 2  # the privacy cover swings a quarter turn aside
+
+
+def _crosses(piece, box) -> bool:
+    """Whether a piece's bounds overlap the box ``(lo, hi)``."""
+    lo, hi = piece.bounds
+    return bool(np.all(lo < np.asarray(box[1])) and np.all(hi > np.asarray(box[0])))
 
 
 SLIDE_GAP = 0.01  # a sliding leaf's back face in front of the header board
@@ -151,8 +180,11 @@ class DoorLayout(Layout):
                       travel=(oy1 - oy0) + 0.03)
 
     def threshold(self, node, ys):
+        """The threshold (a separate sill strip screwed to the floor between the jambs)."""
         Dj = self.p["frame_depth"]
-        self.extend("frame", [g.box_between([-Dj / 2, ys[0], 0.0], [Dj / 2, ys[1], THRESHOLD], "frame", bevel=0.004)])
+        self.add("threshold", "threshold",
+                 [g.box_between([-Dj / 2, ys[0], 0.0], [Dj / 2, ys[1], THRESHOLD], "frame", bevel=0.004)])
+        self.fix("frame", "threshold")
 
     def single(self, node, xs, ys, zs, latch):
         side = self.p["hinge_side"]
@@ -160,6 +192,27 @@ class DoorLayout(Layout):
         if latch:  # the bolt's joint first: the leaf's hinge requires it drawn back
             self.grow(node.one("latch"), bolt=latch[0], out=1.0 if side == "left" else -1.0)
             self.hinge("frame", "leaf", line, upper=OPENS, requires_open="latch")
+        for kind in ("letter_plate", "viewer"):
+            if node.one(kind):
+                self.grow(node.one(kind), xs=xs, ys=ys, leaf="leaf")
+
+    def letter_plate(self, node, xs, ys, leaf):
+        """A letter plate below the handle (BS EN 13724: the opening 0.7-1.7 m above the floor), centred on the
+        leaf: its opening is cut through every leaf piece it crosses; the flap turns in about +y."""
+        z = max(LETTER_LOW, self.p["handle_height"] - LETTER_BELOW)
+        cut, fixed, flap, (o, a) = P.letter_plate(xs, (ys[0] + ys[1]) / 2, z)
+        part = self.bp.parts[leaf]
+        part.pieces[:] = [P.mortise(pc, *cut) if _crosses(pc, cut) else pc for pc in part.pieces]
+        self.extend(leaf, fixed)
+        self.add("letter_flap", "flap", flap)
+        self.hinge(leaf, "letter_flap", Frame.at(o, z=a), upper=LETTER_FLAP_OPENS)
+
+    def viewer(self, node, xs, ys, leaf):
+        """A door viewer at eye height on the leaf's centre line; its cover swings aside on the back face."""
+        fixed, cover, (o, a) = P.viewer(xs, (ys[0] + ys[1]) / 2, VIEWER_HEIGHT)
+        self.extend(leaf, fixed)
+        self.add("viewer_cover", "cover", cover)
+        self.hinge(leaf, "viewer_cover", Frame.at(o, z=a), upper=VIEWER_SWING)
 
     def double(self, node, xs, leaves, zs):
         for kid, (ys, side), name in zip(node.of("leaf"), leaves, ("leaf", "leaf_2"), strict=True):
@@ -182,7 +235,17 @@ class DoorLayout(Layout):
         self.grow(node.one(node.choice), **where)
         if node.one("thumb_turn"):
             self.grow(node.one("thumb_turn"), **where)
+        if node.one("kick_plate"):
+            self.grow(node.one("kick_plate"), xs=xs, ys=ys, zs=zs, leaf=name)
         return line
+
+    def kick_plate(self, node, xs, ys, zs, leaf):
+        """A stainless kick plate screwed across the bottom of the leaf's front face (a separate part)."""
+        name = self.add(f"kick_plate{leaf[4:]}", "plate",
+                        [g.box_between([xs[1] + 0.0005, ys[0] + KICK_INSET, zs[0] + 0.01],
+                                       [xs[1] + 0.0005 + KICK_T, ys[1] - KICK_INSET, zs[0] + 0.01 + KICK_HEIGHT],
+                                       "handle", bevel=0.0006)])
+        self.fix(leaf, name)
 
     def latch(self, node, bolt, out):
         self.add("latch", "latch", bolt)
@@ -230,6 +293,21 @@ class DoorLayout(Layout):
                    role="slide")
         for k, (kid, y) in enumerate(zip(node.of("roller"), yh, strict=True)):
             self.grow(kid, k=k, at=(x_w, y, z_ax), r=r)
+        if node.one("kick_plate"):
+            self.grow(node.one("kick_plate"), xs=xs, ys=ys, zs=zs, leaf="leaf")
+        if node.one("floor_guide"):  # at the opening's edge on the side the leaf slides to: always under it
+            self.grow(node.one("floor_guide"), xs=xs, y=(ys[0] + GUIDE_IN) if d < 0 else (ys[1] - GUIDE_IN))
+
+    def floor_guide(self, node, xs, y):
+        """A barn door's floor guide: a U channel screwed to the floor that the leaf's bottom edge runs in
+        (National Hardware / Rustica stay rollers and floor guides: 40-60 mm long, 20-40 mm high)."""
+        c, t, h, ln = GUIDE["clear"], GUIDE["wall"], GUIDE["height"], GUIDE["length"]
+        pieces = [g.box_between([xs[0] - c - t, y - ln / 2, 0.0], [xs[1] + c + t, y + ln / 2, 0.004], "handle"),
+                  g.box_between([xs[0] - c - t, y - ln / 2, 0.0], [xs[0] - c, y + ln / 2, h], "handle"),
+                  g.box_between([xs[1] + c + KICK_T + 0.0005, y - ln / 2, 0.0], [xs[1] + c + KICK_T + 0.0005 + t,
+                                                                                   y + ln / 2, h], "handle")]
+        self.add("floor_guide", "guide", pieces)
+        self.fix("frame", "floor_guide")
 
     def roller(self, node, k, at, r):
         name = self.add(f"wheel_{k}", "wheel", P.wheel(*at, r))

@@ -25,8 +25,8 @@ Hanging heads are a cap over the shade's top ring with the socket under it. An
 upright head's bulb (optional) screws out of its socket (continuous-prismatic:
 turns freely and slides up to 12 mm out, gravity seats it again); a hanging bulb
 only turns in its socket (continuous): gravity would pull it out of a free slide.
-An optional push switch sticks out of a small housing on the base and is pressed
-horizontally, toward the pole.
+An optional switch on the base: a push button sticking out of a small housing, pressed
+horizontally toward the pole, or a rotary dimmer knob turning about z on the base's top.
 
 Every passive joint is still at rest under gravity (PhysX joint friction holds
 neither a slide along gravity nor a loaded hinge): swivels about Z are neutral;
@@ -77,11 +77,13 @@ GRAMMAR = Grammar("lamp", {
     "head": Node(label="head", required=("shade",)),
     "shade": Node(label="shade"),
     "bulb": Node(label="bulb"),
-    "switch": Node(label="switch"),
+    "switch": Node(one_of={"push_switch": 0.6, "rotary_switch": 0.4}, choice="switch_kind"),
+    "push_switch": Node(label="switch"),
+    "rotary_switch": Node(label="switch"),
 })
 """A ``straight`` arm is a head on the pole top; ``curved`` an arc the head hangs from; ``chain`` 2-3
 segments like an architect lamp (the segments after the first pitch or swing, drawn per segment).
-Every head carries its shade."""
+Every head carries its shade. A base switch is a push button or a rotary dimmer."""
 
 PARAMS = (
     Choice("lamp_type", "desk lamp or floor lamp", choices=("desk", "floor"), weights=(0.7, 0.3)),
@@ -145,7 +147,10 @@ class LampLayout(Layout):
         for name in names:
             self.add(name, made.parts[name].label, made.parts[name].pieces)
 
-    pole = bulb = switch = _parts
+    pole = bulb = push_switch = rotary_switch = _parts
+
+    def switch(self, node, made, names):
+        self.grow(node.one(node.choice), made=made, names=names)
 
     def arm(self, node, made, names):
         self.grow(node.one(node.choice), made=made, names=names)

@@ -44,6 +44,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.category import Category
+from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
@@ -56,6 +57,11 @@ def sashes(p, rng) -> int:
     return p["sash_count"] or int(np.clip(round(opening / p["sash_width"]), 1, 4))
 
 
+def vents(p, rng) -> int:
+    """one per sash (sashes), one over a double-hung pair"""
+    return 1 if p["style"] == "double_hung" else sashes(p, rng)
+
+
 def shutter_leaves(p, rng) -> int:
     """two leaves, four (bifolds) when a side is wider than shutter_leaf_width"""
     return 4 if p["width"] / 2 > p["shutter_leaf_width"] else 2
@@ -64,20 +70,25 @@ def shutter_leaves(p, rng) -> int:
 GRAMMAR = Grammar("window", {
     "window": Node(label="frame", one_of={"casement": 0.3, "sliding": 0.2, "tilt_turn": 0.2, "awning": 0.15,
                                           "double_hung": 0.15}, choice="style",
-                   optional={"shutters": 0.2, "curtains": 0.3, "sill": 0.6, "transom": 0.25}),
+                   optional={"shutters": 0.2, "curtains": 0.3, "sill": 0.6, "transom": 0.25, "trickle_vents": 0.35}),
+    "trickle_vents": Node(repeat={"vent": vents}),
+    "vent": Node(label="vent"),
     "casement": Node(repeat={"sash": sashes}),
     "sliding": Node(repeat={"sash": sashes}),
     "tilt_turn": Node(repeat={"sash": sashes}),
     "awning": Node(repeat={"sash": sashes}),
     "double_hung": Node(repeat={"sash": 2}),
-    "sash": Node(label="sash"),
+    "sash": Node(label="sash", optional={"lever": 1.0}),
+    "lever": Node(label="handle"),
     "sill": Node(), "transom": Node(),
     "shutters": Node(repeat={"shutter": shutter_leaves}),
     "shutter": Node(label="shutter"),
     "curtains": Node(repeat={"curtain": 2}),
     "curtain": Node(label="curtain"),
 })
-"""A transom light grows only on frames taller than 1.1 m."""
+"""A transom light grows only on frames taller than 1.1 m. A casement or tilt-and-turn sash's lever handle
+turns (an espagnolette handle: down is locked, a quarter turn unlocks); knobs and pulls are fixed to their sash.
+Trickle vents sit on the head's room face, one over each sash (one over a double-hung pair)."""
 
 PARAMS = (
     Float("width", "overall frame width (Y)", "m", 0.6, 2.5),
@@ -129,6 +140,16 @@ MATERIALS = {
     "curtain": "fabric", "rod": "rod_finish",
 }
 
+LEVER_TURN = np.pi / 2  # an espagnolette lever's quarter turn (Hoppe, Roto: 90 degrees to open)
+VENT = dict(length=0.3, height=0.02, depth=0.012, wall=0.002, slide=0.08, stroke=0.035)
+CLR_VENT = 0.0015  # the vent's slide in its housing
+
+
+def _bounds(pieces):
+    b = np.array([pc.bounds for pc in pieces])
+    return b[:, 0].min(0), b[:, 1].max(0)
+
+
 TRANSOM_FROM = 1.1  # frames taller than this may have a transom light
 SILL_EAR = 0.03  # the sill reaches this far past the frame on each side
 BOTTOM_RAIL = 1.25  # the bottom rail is this much wider than the jambs
@@ -147,6 +168,7 @@ def transom_fits(p: dict) -> dict:
         p[k] = float(min(max(p[k], lo), hi))
     if p["style"] in ("awning", "double_hung"):
         p["has_transom"] = False
+    p["has_lever"] = p["has_lever"] and p["style"] in ("casement", "tilt_turn") and p["handle_style"] == "lever"
     return {**p, "has_transom": p["has_transom"] and p["height"] > TRANSOM_FROM}
 
 
@@ -186,6 +208,12 @@ class WindowLayout(Layout):
             self.grow(node.one("shutters"), made=P.shutters(p, W, H, fd, z0))
         if node.one("curtains"):
             self.grow(node.one("curtains"), made=P.curtains(p, W, H, fd, z0, fw, x_room))
+        if node.one("trickle_vents"):
+            spans = [(float(b[0][1]), float(b[1][1])) for b in
+                     (_bounds([pc for pc in pieces if pc.material != "handle"]) for _, pieces, _ in made)]
+            if node.choice == "double_hung":
+                spans = spans[:1]
+            self.grow(node.one("trickle_vents"), spans=spans, x=fd / 2, z=(zi1 + z0 + H) / 2, h=z0 + H - zi1)
 
     def sill(self, node, z0):
         p = self.p
@@ -209,8 +237,51 @@ class WindowLayout(Layout):
     sliding = tilt_turn = awning = double_hung = casement
 
     def sash(self, node, name, pieces, spec):
-        self.add(name, "sash", pieces)
+        lever = [pc for pc in pieces if pc.name == "handle"] if node.one("lever") else []
+        self.add(name, "sash", [pc for pc in pieces if pc not in lever or pc is lever[0]])  # the rose stays
         self.join(spec)
+        if lever:
+            self.grow(node.one("lever"), sash=name, pieces=lever[1:])
+
+    def lever(self, node, sash, pieces):
+        """The espagnolette lever (spindle and grip; its rose stays on the sash) turns a quarter turn about the
+        sash normal toward the hinge side: hanging under its spindle it is neutral under gravity."""
+        spindle = pieces[0].bounds
+        y, z = (spindle[0][1:] + spindle[1][1:]) / 2
+        x0 = float(spindle[0][0]) + 0.0025  # the spindle starts at the rose's face (it was sunk 2 mm into it)
+        pieces = [g.cylinder([x0, y, z], [float(spindle[1][0]), y, z], 0.0055, "handle", 16, name="handle"),
+                  *pieces[1:]]
+        hinge_y = float(self.bp.joints[-1].dofs[0].origin[1])
+        toward = 1.0 if hinge_y > y else -1.0
+        name = self.add(f"{sash}_lever", "handle", pieces)
+        self.hinge(sash, name, Frame.at((x0, y, z), z=(toward, 0, 0)), upper=LEVER_TURN, role="knob")
+
+    def trickle_vents(self, node, spans, x, z, h):
+        for k, (kid, span) in enumerate(zip(node.of("vent"), spans, strict=True)):
+            self.grow(kid, k=k, span=span, x=x, z=z, h=h)
+
+    def vent(self, node, k, span, x, z, h):
+        """A trickle vent on the head's room face over one sash: a housing with a slot and a shutter slide
+        that covers or opens it (Titon Trimvent / Greenwood slot vents: 250-400 mm housings, ~20 mm high,
+        a 30-40 mm slide stroke)."""
+        ln = min(VENT["length"], 0.8 * (span[1] - span[0]))
+        yc = (span[0] + span[1]) / 2
+        hh = min(VENT["height"], 0.8 * h)
+        d, t = VENT["depth"], VENT["wall"]
+        y0, y1 = yc - ln / 2, yc + ln / 2
+        self.extend("frame", [
+            g.box_between([x, y0, z - hh / 2], [x + d, y1, z - hh / 2 + t], "handle"),  # floor of the track
+            g.box_between([x, y0, z + hh / 2 - t], [x + d, y1, z + hh / 2], "handle"),  # roof
+            g.box_between([x, y0 - t, z - hh / 2], [x + d, y0, z + hh / 2], "handle"),  # end caps
+            g.box_between([x, y1, z - hh / 2], [x + d, y1 + t, z + hh / 2], "handle")])
+        sw = min(VENT["slide"], 0.45 * ln)
+        travel = min(VENT["stroke"], ln - sw - 2 * CLR_VENT)
+        ys = y0 + CLR_VENT
+        name = self.add(f"vent_{k}", "vent",
+                        [g.box_between([x + 0.002, ys, z - hh / 2 + t + CLR_VENT], [x + d - 0.001, ys + sw,
+                                                                                   z + hh / 2 - t - CLR_VENT],
+                                       "handle", bevel=0.0008)])
+        self.slide("frame", name, Frame.at((x + d / 2, ys, z), z=(0, 1, 0)), upper=travel)
 
     def shutters(self, node, made):
         self._parts(node, "shutter", made)

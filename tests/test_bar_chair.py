@@ -12,7 +12,7 @@ from infmob_usd.model import build as build_model
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
-LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring"}
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring", "arm"}
 
 
 def make(seed, **overrides):
@@ -112,3 +112,26 @@ def test_designs_grow_their_mechanisms():
     j = by_child(bp, "seat_pan")
     assert j.kind == "revolute" and j.parent == "seat" and j.dofs[0].axis == pytest.approx((0, 1, 0))
     assert {pc.material for pc in bp.parts["seat_pan"].pieces} == {"seat", "pan"}
+
+
+@pytest.mark.parametrize("style,base", [("arm_fixed", "disc"), ("arm_height", "wheeled"), ("arm_flip", "four_leg"),
+                                        ("arm_flip", "wheeled")])
+def test_arms_beside_the_back(style, base):
+    """A stool with a back may have two arms on brackets under its seat, beside the back: fixed, sliding up
+    their posts, or flipping up and back; every state stays clear. No back, no arms."""
+    _, bp = make(5, base_type=base, has_back=True, has_arms=True, arm_style=style, back_mount="hinged",
+                 seat_shape="square")
+    arms = [n for n, part in bp.parts.items() if part.label == "arm"]
+    assert sorted(arms) == ["arm_left", "arm_right"]
+    kinds = {by_child(bp, n).kind for n in arms}
+    assert kinds == {{"arm_fixed": "fixed", "arm_height": "prismatic", "arm_flip": "revolute"}[style]}
+    assert all(by_child(bp, n).parent == "seat" for n in arms)
+    ys = [np.array([pc.bounds for pc in bp.parts[n].pieces])[:, :, 1].mean() for n in arms]
+    assert ys[0] > 0 > ys[1]
+    rest_pc = rest_overlaps(bp)
+    for q in states(bp):
+        ps = bp.poses(q)
+        assert min(_box(bp.parts[n], ps[n])[0][2] for n in bp.parts) >= -5e-4
+        assert_clear(bp, ps, rest_pc, q)
+    p, bp = make(5, has_back=False, has_arms=True)
+    assert not p["has_arms"] and not any(part.label == "arm" for part in bp.parts.values())

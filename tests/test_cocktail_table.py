@@ -152,6 +152,7 @@ def test_seeds_vary():
 DESIGNS = [dict(support="legs", has_lift_top=True, has_lift_forward=True, has_shelf=True),
            dict(support="legs", has_lift_top=True, has_lift_forward=False, top_shape="round"),
            dict(support="drawers", drawer_sides="both", drawer_count=2, width=0.9, has_shelf=True),
+           dict(support="drawers", drawer_sides="both", drawer_count=3, back_drawer_count=1, width=0.95),
            dict(support="drawers", drawer_sides="front", width=0.6, has_casters=False),
            dict(support="drawers", drawer_sides="front", has_casters=True, caster_style="twin", has_shelf=True),
            dict(support="drawers", drawer_sides="both", has_casters=True, caster_style="single"),
@@ -165,7 +166,8 @@ def test_designs_move_without_collisions(over):
     p, bp = make(6, **over)
     moving = [j for j in bp.joints if j.kind != "fixed"]
     if p["support"] == "drawers":
-        n = (1 if p["width"] < 0.7 else p["drawer_count"]) * (2 if p["drawer_sides"] == "both" else 1)
+        cap = 1 if p["width"] < 0.7 else 2 if p["width"] < 0.9 else 3
+        n = min(cap, p["drawer_count"]) + (min(cap, p["back_drawer_count"]) if p["drawer_sides"] == "both" else 0)
         drawers = [j for j in moving if bp.parts[j.child].label == "drawer"]
         assert len(drawers) == n and all(abs(j.dofs[0].axis[0]) == pytest.approx(1.0) for j in drawers)
     if p["support"] == "drawers":

@@ -9,7 +9,7 @@ from infmob_usd.categories import dining_table as dt
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import make_bp, movable
+from zoo import by_child, make_bp, movable
 
 SEEDS = range(6)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
@@ -117,7 +117,8 @@ def test_moving_parts_clear_at_rest(seed):
 
 
 def test_busy_table_all_mechanisms():
-    over = dict(support="legs", top_style="extension", has_drawers=True, drawer_count=2, drawer_sides="both",
+    over = dict(support="legs", top_style="extension", has_drawers=True, drawer_count=2, back_drawer_count=2,
+                drawer_sides="both",
                 has_adjustable_legs=True, length=1.6, width=0.9, apron_height=0.08)
     _, bp = make(2, **over)
     labels = [part.label for part in bp.parts.values()]
@@ -186,3 +187,32 @@ def test_levelling_feet():
     assert clash(bp, at([], 0.0)) == []
     _, bp = make(1, support="legs", has_adjustable_legs=True, has_levellers=True)
     assert not any(part.label == "foot" for part in bp.parts.values())  # inner legs have their own feet
+
+
+@pytest.mark.parametrize("front,back,length", [(3, 1, 2.4), (1, 2, 1.8), (3, 3, 1.8)])
+def test_each_long_side_draws_its_own_drawer_count(front, back, length):
+    """The +Y and -Y long sides carry their own drawer counts (three only on a table 2.2 m or longer), spread
+    evenly, each pulling out along its side's normal and clear of the others when all are out."""
+    p, bp = make(2, support="legs", top_style="extension", has_drawers=True, drawer_sides="both",
+                 drawer_count=front, back_drawer_count=back, length=length, width=1.0, apron_height=0.12,
+                 has_adjustable_legs=False)
+    cap = 3 if length >= 2.2 else 2
+    js = [j for j in movable(bp) if bp.parts[j.child].label == "drawer"]
+    sides = [np.sign(j.dofs[0].axis[1]) for j in js]
+    assert sides.count(1) == min(front, cap) and sides.count(-1) == min(back, cap)
+    assert clash(bp, at(js, 1.0)) == []
+
+
+@pytest.mark.parametrize("length,count", [(1.4, 1), (2.4, 2)])
+def test_long_drop_leaves_rest_on_two_lopers(length, count):
+    """A drop leaf over an apron 1.3 m or longer gets two lopers (a quarter of the apron from each end), a
+    shorter one a single loper in the middle; each needs its leaf up and swings out clear of the rest."""
+    p, bp = make(4, top_style="drop_leaf", has_loper=True, length=length, top_shape="rectangular",
+                 end_overhang=0.1, support="legs", has_adjustable_legs=False)
+    for side in ("left", "right"):
+        names = [n for n in bp.parts if n.startswith(f"loper_{side}")]
+        assert len(names) == count
+        js = [by_child(bp, n) for n in names]
+        assert all(j.requires_open == f"leaf_{side}" and j.kind == "revolute" for j in js)
+    moving = [j for j in movable(bp)]
+    assert clash(bp, at([], 0.0)) == [] and clash(bp, at(moving, 1.0)) == []  # as the single loper's test

@@ -23,7 +23,7 @@ VOLUME_TOL = 1e-7  # m^3, as the physics checks
 def make(seed, **overrides):
     """A single unlatched leaf unless the test asks for another design (the tests below were written for it)."""
     return make_bp(mod, "door", seed, **{"design": "single", "has_latch": False, "has_thumb_turn": False,
-                                         **overrides})
+                                         "has_letter_plate": False, "has_viewer": False, **overrides})
 
 
 def leaf_body(bp):
@@ -177,7 +177,7 @@ def test_overrides_drive_the_styles():
     assert {"knob_front", "knob_back"} <= set(bp.parts)
     _, bp = make(2, leaf_style="recessed", panel_count=4, glazing="full")
     assert sum(1 for pc in bp.parts["leaf"].pieces if pc.material == "glass") == 4
-    _, bp = make(2, leaf_style="flat", glazing="none", handle="pull")
+    _, bp = make(2, leaf_style="flat", glazing="none", handle="pull", has_threshold=False, has_kick_plate=False)
     assert len(bp.parts) == 1 + 1 and not movable(bp)[1:]
     _, bp = make(2, has_threshold=True)
     assert min(pc.bounds[0, 2] for pc in bp.parts["leaf"].pieces) > 0.02
@@ -242,3 +242,62 @@ def test_thumb_turn_clears_a_bar_pull():
     d = by_child(bp, "thumb_turn").dofs[0]
     for q in (0.0, d.upper):
         assert overlap(bp.parts["thumb_turn"], dof_motion(d, q), bp.parts["leaf"], np.eye(4)) < VOLUME_TOL
+
+
+@pytest.mark.parametrize("seed", [0, 3, 6])
+def test_letter_plate_flap_swings_in_through_the_leaf(seed):
+    """The letter plate's flap hangs in its opening, turns in about +y through the cut in the leaf without
+    touching it, and gravity holds it closed (its centre of mass inward of the pin)."""
+    p, bp = make(seed, has_letter_plate=True, glazing="none")
+    j = by_child(bp, "letter_flap")
+    d = j.dofs[0]
+    assert j.parent == "leaf" and j.kind == "revolute" and bp.parts["letter_flap"].label == "flap"
+    assert d.axis[1] == pytest.approx(1.0) and d.upper > 1.3
+    lo, hi = leaf_body(bp)
+    assert 0.7 < d.origin[2] < p["handle_height"] - 0.2 and d.origin[0] > hi[0]
+    for q in (0.0, 0.5 * d.upper, d.upper):
+        assert overlap(bp.parts["letter_flap"], dof_motion(d, q), bp.parts["leaf"], np.eye(4)) < VOLUME_TOL
+    # pushed in, the flap's bottom edge goes into the leaf (toward -x)
+    tip = np.array([d.origin[0], d.origin[1], d.origin[2] - 0.03, 1.0])
+    assert (dof_motion(d, 1.0) @ tip)[0] < d.origin[0] - 0.02
+    links, joints = build_model(bp, {k: 700.0 for k in bp.materials})
+    jm = next(jj for jj in joints if jj.child == "letter_flap")
+    assert gravity_torque(links, joints, jm)[0] < 0  # pressed onto its closed stop
+
+
+@pytest.mark.parametrize("seed", [1, 4])
+def test_viewer_cover_swings_aside(seed):
+    """A door viewer at eye height; its privacy cover hangs over the eyepiece on the back face and swings
+    aside about the leaf normal without entering the leaf."""
+    _, bp = make(seed, has_viewer=True, glazing="none")
+    j = by_child(bp, "viewer_cover")
+    d = j.dofs[0]
+    assert j.parent == "leaf" and j.kind == "revolute" and abs(d.axis[0]) == pytest.approx(1.0)
+    lo, hi = leaf_body(bp)
+    assert 1.4 <= d.origin[2] <= 1.6 and d.origin[0] < lo[0]
+    for q in (0.0, d.upper):
+        assert overlap(bp.parts["viewer_cover"], dof_motion(d, q), bp.parts["leaf"], np.eye(4)) < VOLUME_TOL
+
+
+def test_entrance_options_forced_and_glazing_rules():
+    """Letter plate and viewer are forced by their flags on a single leaf; a fully glazed leaf takes no
+    letter plate and a glazed one no viewer; a kick plate and a threshold are their own fixed parts."""
+    _, bp = make(2, has_letter_plate=True, has_viewer=True, glazing="none", has_kick_plate=True,
+                 has_threshold=True)
+    names = {j.child for j in movable(bp)}
+    assert {"letter_flap", "viewer_cover"} <= names
+    assert by_child(bp, "kick_plate").kind == "fixed" and by_child(bp, "threshold").kind == "fixed"
+    _, bp = make(2, has_letter_plate=True, has_viewer=True, glazing="full")
+    assert "letter_flap" not in bp.parts and "viewer_cover" not in bp.parts
+
+
+def test_barn_door_floor_guide_straddles_the_leaf():
+    """A sliding leaf's floor guide stands on the floor with the leaf's bottom edge between its fins, at rest
+    and slid open."""
+    _, bp = make(5, design="sliding", has_floor_guide=True, has_kick_plate=True)
+    d = by_child(bp, "leaf").dofs[0]
+    for q in (0.0, d.upper):
+        assert overlap(bp.parts["floor_guide"], np.eye(4), bp.parts["leaf"], dof_motion(d, q)) < VOLUME_TOL
+        assert overlap(bp.parts["floor_guide"], np.eye(4), bp.parts["kick_plate"], dof_motion(d, q)) < VOLUME_TOL
+    g_lo = np.array([pc.bounds for pc in bp.parts["floor_guide"].pieces])[:, 0].min(0)
+    assert g_lo[2] == pytest.approx(0.0, abs=1e-6)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.spatial import ConvexHull
 
-from infmob_usd.blueprint import descendants
+from infmob_usd.blueprint import descendants, dof_motion
 from infmob_usd.categories import lamp
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES, split_spec
@@ -205,7 +205,7 @@ def test_bulb_screws_out_of_its_socket(lamp_bp):
 
 def test_switch_is_pressed_horizontally_toward_the_pole(lamp_bp):
     p, bp = lamp_bp
-    if not p["has_switch"]:
+    if not p["has_switch"] or p["switch_kind"] != "push_switch":
         return
     j = joint_of(bp, "switch")
     (d,) = j.dofs
@@ -370,3 +370,23 @@ def test_tripod_base_stands_on_three_feet(style):
     # real pole and arm thicknesses: 15-25 mm poles
     pole = np.array([pc.bounds for pc in bp.parts["upper_pole"].pieces])
     assert pole[:, 1, 0].max() - pole[:, 0, 0].min() >= 0.015
+
+
+@pytest.mark.parametrize("shape", ["round", "square", "domed"])
+def test_rotary_dimmer_turns_on_the_base(shape):
+    """A rotary switch is a dimmer knob on the base's top: it turns about z (neutral under gravity) through
+    about 300 degrees, above its boss, inside the base's outline, clear of everything at any angle."""
+    p, bp = make(2, base_shape=shape, has_switch=True, switch_kind="rotary_switch")
+    j = joint_of(bp, "switch")
+    (d,) = j.dofs
+    assert j.kind == "revolute" and j.parent == "base" and d.axis == pytest.approx((0, 0, 1))
+    assert d.lower == 0 and 5.0 < d.upper < 5.5
+    knob = np.vstack([pc.vertices for pc in bp.parts["switch"].pieces])
+    base = np.vstack([pc.vertices for pc in bp.parts["base"].pieces if pc.material == "base"])
+    assert np.hypot(*knob[:, :2].T).max() < np.hypot(*base[:, :2].T).max()
+    assert knob[:, 2].min() > d.origin[2] - 1e-9
+    for q in (0.0, 0.5 * d.upper, d.upper):
+        m = dof_motion(d, q)
+        for other in bp.parts:
+            if other != "switch":
+                assert overlap(bp.parts["switch"], m, bp.parts[other], np.eye(4)) < 1e-9, (other, q)

@@ -14,7 +14,7 @@ from collide import overlap
 from zoo import by_child, make_bp, movable, object_limits
 
 SEEDS = range(8)
-LABELS = {"frame", "sash", "shutter", "curtain"}
+LABELS = {"frame", "sash", "shutter", "curtain", "handle", "vent"}
 VOLUME_TOL = 1e-7  # m^3, as the validator
 EYE = np.eye(4)
 
@@ -227,7 +227,7 @@ def test_each_design_is_forced_moves_and_stays_clear(style):
 
 
 def test_overrides_drive_the_growth():
-    _, bp = make(3, sash_count=3, style="casement", has_shutters=False, has_curtains=False)
+    _, bp = make(3, sash_count=3, style="casement", has_shutters=False, has_curtains=False, has_trickle_vents=False)
     assert sorted(n for n, part in bp.parts.items() if part.label == "sash") == ["sash_0", "sash_1", "sash_2"]
     assert {j.kind for j in movable(bp)} == {"revolute"}
     _, bp = make(3, sash_count=2, style="sliding", has_shutters=True, width=1.0)
@@ -249,3 +249,47 @@ def test_seeds_differ_in_ways_a_person_sees():
     assert len({sum(part.label == "sash" for part in bp.parts.values()) for _, bp in made}) >= 3
     counts = [len(movable(bp)) for _, bp in made]
     assert min(counts) < max(counts)
+
+
+@pytest.mark.parametrize("style", ["casement", "tilt_turn"])
+def test_lever_handles_turn_toward_the_hinge(style):
+    """A casement or tilt-and-turn sash's lever is its own part: hanging under its spindle, it turns a quarter
+    turn about the sash normal toward the hinge side, clear of its sash; knob handles stay fixed."""
+    _, bp = make(2, style=style, sash_count=2, handle_style="lever", has_curtains=False, has_shutters=False)
+    levers = [n for n, part in bp.parts.items() if part.label == "handle"]
+    assert len(levers) == 2
+    for name in levers:
+        j = by_child(bp, name)
+        d = j.dofs[0]
+        sash = j.parent
+        assert j.kind == "revolute" and abs(d.axis[0]) == pytest.approx(1.0) and d.upper == pytest.approx(math.pi / 2)
+        hinge_y = by_child(bp, sash).dofs[0].origin[1]
+        grip = max(bp.parts[name].pieces, key=lambda pc: np.ptp(pc.bounds[:, 2]))
+        tip = np.array([grip.bounds[:, 0].mean(), d.origin[1], grip.bounds[0, 2], 1.0])
+        moved = dof_motion(d, d.upper) @ tip
+        assert abs(moved[1] - hinge_y) < abs(d.origin[1] - hinge_y)  # it swung toward the hinge side
+        for q in (0.0, d.upper):
+            assert overlap(bp.parts[name], dof_motion(d, q), bp.parts[sash], np.eye(4)) < VOLUME_TOL
+    _, bp = make(2, style="casement", sash_count=2, handle_style="knob")
+    assert not any(part.label == "handle" for part in bp.parts.values())
+
+
+@pytest.mark.parametrize("style", ["casement", "sliding", "double_hung", "awning"])
+def test_trickle_vents_slide_in_the_head(style):
+    """Trickle vents: one per sash (one over a double-hung pair) on the head's room face; each shutter
+    slides along y in its housing without leaving it or touching the frame."""
+    p, bp = make(4, style=style, has_trickle_vents=True, has_curtains=False, has_shutters=False, sash_count=2)
+    vents = sorted(n for n, part in bp.parts.items() if part.label == "vent")
+    sashes = [n for n, part in bp.parts.items() if part.label == "sash"]
+    assert len(vents) == (1 if style == "double_hung" else len(sashes))
+    frame_hi = bounds(bp.parts["frame"])[1]
+    for name in vents:
+        j = by_child(bp, name)
+        d = j.dofs[0]
+        assert j.parent == "frame" and j.kind == "prismatic" and abs(d.axis[1]) == pytest.approx(1.0)
+        assert 0.02 < d.upper <= 0.035
+        lo, hi = bounds(bp.parts[name])
+        assert lo[2] > max(bounds(bp.parts[s])[1][2] for s in sashes)  # above every sash
+        assert hi[2] < frame_hi[2]
+        for q in (0.0, d.upper):
+            assert overlap(bp.parts[name], dof_motion(d, q), bp.parts["frame"], np.eye(4)) < VOLUME_TOL

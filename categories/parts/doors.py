@@ -275,3 +275,54 @@ def wheel(x_mid: float, y: float, z: float, r: float) -> list[g.Piece]:
     """A grooved hanger wheel on an axle along x at (``x_mid``, y, z)."""
     return [g.cylinder([x_mid - 0.009, y, z], [x_mid + 0.009, y, z], r, "handle", 32),
             g.cylinder([x_mid - 0.011, y, z], [x_mid + 0.011, y, z], 0.35 * r, "hinge", 16)]
+
+
+LETTER = dict(plate=(0.3, 0.076), aperture=(0.25, 0.046), flap=(0.24, 0.034), flap_t=0.003, plate_t=0.004)
+"""Letter plate (m): face plate (width, height), aperture through the leaf, flap (width, height) and
+thicknesses. UK letter plates are ~300 x 76 mm with a 250 x 40-50 mm opening (Eurospec, Zoo Hardware
+listings); BS EN 13724 asks for an aperture of at least 230 x 30 mm."""
+VIEWER = dict(barrel=0.007, eyepiece=0.016, cover=(0.024, 0.044), pin_above=0.02)
+"""Door viewer (m): lens barrel radius, eyepiece ring radius, privacy cover (width, length) and how far its
+pivot pin sits above the lens (Yale / Brinks 200-degree viewers: 14 mm bore, 30-35 mm eyepiece, a swing cover)."""
+
+
+def letter_plate(xs, y: float, z: float) -> tuple[tuple, list[g.Piece], list[g.Piece], tuple]:
+    """A letter plate centred at ``(y, z)`` on a leaf ``xs`` thick: the aperture box to cut through the leaf,
+    the fixed pieces (outer plate and inner trim around the opening), the flap pieces and the flap's pivot
+    ``(origin, axis)``. The flap hangs in the outer plate's opening from a pin just outside it, above its top
+    edge; a positive turn pushes its bottom edge in through the leaf (about +y), and its centre of mass is
+    inward of the pin so gravity holds it closed on its stop."""
+    (x0, x1) = xs
+    pw, ph = LETTER["plate"]
+    aw, ah = LETTER["aperture"]
+    fw, fh = LETTER["flap"]
+    pt, ft = LETTER["plate_t"], LETTER["flap_t"]
+    za0, za1 = z - ah / 2, z + ah / 2  # the flap hangs from near the opening's top, room above for its pin
+    cut = ((x0 - 0.001, y - aw / 2, za0), (x1 + 0.001, y + aw / 2, za1))
+    hole = (y - aw / 2, za0, y + aw / 2, za1)
+    fixed = [g.panel([x1, y - pw / 2, z - ph / 2], [x1 + pt, y + pw / 2, z + ph / 2], "handle", "x", holes=[hole]),
+             g.panel([x0 - pt, y - pw / 2, z - ph / 2], [x0, y + pw / 2, z + ph / 2], "handle", "x", holes=[hole])]
+    z_pin = za1 - 0.008
+    flap = [g.box_between([x1 + 0.001, y - fw / 2, z_pin - 0.001 - fh], [x1 + 0.001 + ft, y + fw / 2, z_pin - 0.001],
+                          "handle", bevel=0.0008)]
+    return cut, fixed, flap, ((x1 + 0.001 + ft + 0.0005, y, z_pin), (0.0, 1.0, 0.0))
+
+
+def viewer(xs, y: float, z: float) -> tuple[list[g.Piece], list[g.Piece], tuple]:
+    """A door viewer at ``(y, z)``: the lens barrel through the leaf and its eyepiece ring on the back face
+    (fixed), and the privacy cover hanging over the eyepiece from a pin above it, swinging aside about the
+    leaf normal (it hangs under its pin: neutral under gravity). Returns fixed pieces, cover pieces and the
+    pivot ``(origin, axis)``."""
+    x0, x1 = xs
+    r, re = VIEWER["barrel"], VIEWER["eyepiece"]
+    cw, cl = VIEWER["cover"]
+    fixed = [g.cylinder([x0 - 0.006, y, z], [x1 + 0.004, y, z], r, "handle", 20),
+             g.cylinder([x1, y, z], [x1 + 0.003, y, z], 0.011, "handle", 24),
+             g.cylinder([x0 - 0.006, y, z], [x0, y, z], re, "handle", 32)]
+    zp = z + VIEWER["pin_above"]
+    fixed.append(g.cylinder([x0, y, zp], [x0 - 0.0065, y, zp], 0.004, "handle", 16))  # the cover's pin boss
+    xc0, xc1 = x0 - 0.0095, x0 - 0.007
+    cover = [g.box_between([xc0, y - cw / 2, zp + 0.006 - cl], [xc1, y + cw / 2, zp + 0.006], "handle",
+                           bevel=0.0008),
+             g.cylinder([x0 - 0.007, y, zp], [xc0, y, zp], 0.004, "handle", 16)]
+    return fixed, cover, ((xc1, y, zp), (-1.0, 0.0, 0.0))

@@ -208,6 +208,33 @@ def _knuckle(r_up: float) -> dict:
     )
 
 
+ROTARY_TURN = 5.2  # a rotary dimmer knob turns about 300 degrees end to end (Lutron rotary dimmers, dimmable
+#                    LED desk lamps with a base dial)
+ROTARY_H = 0.014  # knob height above its boss
+
+
+def _rotary(bp: Blueprint, p: dict, q: dict) -> None:
+    """A rotary dimmer knob standing on the base's top (on a dome's flat rim), turning about z: a boss in the
+    base, the knob 1 mm above it with a pointer rib on top. About a vertical axis it is neutral under gravity."""
+    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+    r_k = float(np.clip(0.1 * R, 0.008, 0.012))
+    if shape == "square":
+        rho, z = 0.9 * R - r_k - 0.006, t
+    elif shape == "round":
+        rho, z = R - 0.4 * t - r_k - 0.004, t
+    else:  # the middle of the dome's flat rim
+        rho, z = 0.85 * R, 0.5 * t
+    a = q["switch_angle"]
+    c = np.array([rho * math.cos(a), rho * math.sin(a), 0.0])
+    boss = g.cylinder(c + (0, 0, z - 0.001), c + (0, 0, z + 0.003), 0.45 * r_k, "switch", 20)
+    knob = [g.cylinder(c + (0, 0, z + 0.004), c + (0, 0, z + 0.004 + ROTARY_H), r_k, "switch", 32),
+            g.box_between(c + (-0.6 * r_k, -0.0012, z + 0.004 + ROTARY_H), c + (0.6 * r_k, 0.0012,
+                                                                               z + 0.006 + ROTARY_H), "switch")]
+    bp.extend("base", [boss])
+    bp.add("switch", "switch", knob)
+    bp.join(J.revolute("base", "switch", c + (0, 0, z + 0.004), (0, 0, 1), 0.0, ROTARY_TURN, role="knob"))
+
+
 # ---------------------------------------------------------------------------
 # assembly at a given pole top height
 
@@ -217,7 +244,7 @@ def _assemble(p: dict, q: dict, z_top: float) -> Blueprint:
     z_b = q["z_b"]
     _base(bp, p, q)
     if p["has_switch"]:
-        _switch(bp, p, q)
+        (_rotary if p.get("switch_kind") == "rotary_switch" else _switch)(bp, p, q)
 
     # --- lower pole: a tube on the base; upper pole slides and turns in it ----
     r_up, r_lo = q["r_up"], q["r_lo"]
@@ -283,7 +310,10 @@ def _tripod(r_lo: float, R: float, z_hub: float) -> list[g.Piece]:
         foot = d * TRIPOD_SPAN * R + (0, 0, 0.012)
         out += [g.cylinder(top, foot, r_leg, "pole", 16),
                 g.cylinder(foot - (0, 0, 0.012), foot + (0, 0, 0.004), r_leg + 0.003, "fitting", 16)]
-    out.append(g.cylinder((0, 0, z_hub - 0.048), (0, 0, z_hub - 0.002), r_hub - 0.002, "weight", 24).replace(convex=[]))
+    # the slug is solid steel (wall 0): a hollow one left small desk tripods at 0.37 kg, lighter than any real
+    # tripod desk lamp (0.8-1.5 kg: IKEA / Hay listings); solid, a 25 mm hub's slug adds ~0.6 kg
+    out.append(g.cylinder((0, 0, z_hub - 0.048), (0, 0, z_hub - 0.002), r_hub - 0.002, "weight", 24).replace(
+        convex=[], wall=0.0))
     return out
 
 
