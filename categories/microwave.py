@@ -27,8 +27,11 @@ from .parts import hardware
 
 
 def dials(p, rng) -> int:
-    """knob_count, or 2 without push buttons, else 1"""
-    return p["knob_count"] or (1 if p["has_buttons"] else 2)
+    """knob_count, or 1 beside a keypad; without one 1 or 2 (drawn): a timer dial alone (Sharp R-21LVF) or
+    timer and power dials (most manual counter-top models)"""
+    if p["knob_count"]:
+        return p["knob_count"]
+    return 1 if p["has_buttons"] else 1 + int(rng.integers(0, 2))
 
 
 def size(p: dict, design: str) -> tuple[float, float, float]:
