@@ -71,7 +71,9 @@ def size(p: dict, design: str) -> tuple[float, float, float]:
 
 
 GRAMMAR = Grammar("beverage_fridge", {
-    "beverage_fridge": Node(label="body", optional={"control_panel": 0.6},
+    # most beverage centres and wine coolers sold have an electronic control strip (Newair, Whynter, Danby,
+    # Kalamera ranges); the rest a dial thermostat inside
+    "beverage_fridge": Node(label="body", optional={"control_panel": 0.8},
                             one_of={"glass_cooler": 0.3, "undercounter": 0.25, "wine": 0.25, "dual_zone": 0.2},
                             choice="design"),
     "glass_cooler": Node(required=("door",), one_of={"racks": 0.8, "divider": 0.2}, choice="interior"),

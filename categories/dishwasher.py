@@ -148,6 +148,14 @@ sump and heater (service-part listings, e.g. Bosch 00651956 circulation pump ~3.
 
 
 class DishwasherLayout(A.PanelNodes):
+    def steel(self, pieces: list[g.Piece]) -> list[g.Piece]:
+        """A painted cabinet is painted steel sheet, but the painted family is massed as board (750 kg/m^3):
+        its sheet pieces count 7850 / 750 times thicker (a painted compact model weighed 10 kg)."""
+        if self.p["body_finish"] != "painted":
+            return pieces
+        return [pc.replace(sheet=pc.sheet * 7850.0 / 750.0) if pc.sheet > 0 and pc.material == "body" else pc
+                for pc in pieces]
+
     def pump(self, xb0: float, xb1: float, zf: float, zh: float) -> list[g.Piece]:
         """The wash pump with its motor and the sump in the base under the tub (hidden, no collision):
         a steel can in the ``tub`` slot (stainless, 7850 kg/m^3) whose wall makes it :data:`PUMP_KG`."""
@@ -177,7 +185,7 @@ class DishwasherLayout(A.PanelNodes):
         band = 0.025 + (p["control_height"] if ctrl else 0.0) + (0.03 if ctrl and handle else 0.0)
         if handle and not ctrl:
             band = 0.07
-        body = A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + self.pump(xb0, xb1, zf, zh)
+        body = self.steel(A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf)) + self.pump(xb0, xb1, zf, zh)
         if design == "freestanding":  # a worktop over the cabinet, behind the door
             body.append(g.box_between([xb0, y0, H], [xb1, y1, H + WORKTOP], "worktop",
                                       bevel=0.004))
@@ -215,7 +223,7 @@ class DishwasherLayout(A.PanelNodes):
                 sheet([xb1 - 0.004, y0, zf + 0.004], [xf - 0.012, y1, zk - 0.004], "plinth")]
         body += [g.cylinder([x, y, 0.0], [x, y, zf], 0.015, "feet", 16) for x in (xb0 + 0.04, xb1 - 0.05)
                  for y in (y0 + 0.04, y1 - 0.04)]
-        self.add("body", "body", body)
+        self.add("body", "body", self.steel(body))
         return dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
 
     def dish_drawer(self, node, xs, ys, zs):
