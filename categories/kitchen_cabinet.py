@@ -16,6 +16,10 @@ X is depth (fronts face +X), Y is width, Z is up. Five designs (``design``), eac
   1-5 base columns.
 - ``wall_run``: hung wall cabinets (0.30-0.35 m deep) on a suspension rail: doors, glazed
   doors, lift-up flaps (hinged at the top edge) or open shelves.
+- ``kitchen``: a whole kitchen wall, 2.4-4.8 m: a sink base and base columns under one worktop, a
+  splashback and a row of wall cabinets above it (one over each column, 45-60 cm over the worktop),
+  sometimes a tall larder at one end (the wall cabinets' tops then line up with it): the large
+  assemblies of the category (20-60 moving parts).
 
 Doors hinge about a vertical axis on the front face at the column edge and swing outward;
 the core (``limit_to_clearance``) stops a leaf before it meets the neighbour's door or open
@@ -38,14 +42,25 @@ from .parts import cabinetry as cab
 from .parts import hardware, panels
 
 
+def run_width(p) -> float:
+    """The width the columns share: a kitchen wall's width beside its sink base, else ``width``."""
+    return p["kitchen_width"] - p["sink_width"] if p["design"] == "kitchen" else p["width"]
+
+
 def columns(p, rng) -> int:
-    """column_count, or max(1, floor(width / 0.45))"""
-    return p["column_count"] or max(1, math.floor(p["width"] / COLUMN))
+    """column_count, or max(1, floor(width / 0.45)); a kitchen wall's columns are at most 0.9 m wide"""
+    n = p["column_count"] or max(1, math.floor(run_width(p) / COLUMN))
+    return max(n, math.ceil(run_width(p) / KITCHEN_COLUMN_MAX)) if p["design"] == "kitchen" else n
+
+
+def wall_columns(p, rng) -> int:
+    """a kitchen wall's wall cabinets: one over each base column and one over the sink"""
+    return columns(p, rng) + 1
 
 
 def leaves(p, rng) -> int:
     """two doors in a column wider than 0.6 m, else one"""
-    return 2 if p["width"] / columns(p, rng) > DOUBLE else 1
+    return 2 if run_width(p) / columns(p, rng) > DOUBLE else 1
 
 
 MOVING = {"drawer", "door", "inner_drawer", "flap", "pullout", "tilt_front", "carousel"}
@@ -59,9 +74,15 @@ def moves(tree) -> bool:
 # the columns of a base run, per instance
 BASE_COLUMN = {"drawers": 0.32, "doors": 0.2, "door_drawers": 0.2, "drawer_door": 0.2, "open": 0.08}
 GRAMMAR = Grammar("kitchen_cabinet", {
-    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.4, "larder": 0.15, "corner": 0.15,
-                                                  "sink_base": 0.15, "wall_run": 0.15}, choice="design"),
+    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.2, "kitchen": 0.45, "larder": 0.1,
+                                                  "corner": 0.09, "sink_base": 0.08, "wall_run": 0.08}, choice="design"),
     "base_run": Node(required=("stand", "worktop"), repeat={"column": columns}),
+    # a kitchen wall: base columns, and a wall cabinet over each (IKEA METOD planning: wall cabinets line
+    # up with the base cabinets under them), sometimes a tall unit at the end
+    "kitchen": Node(required=("stand", "worktop", "splashback", "sink_unit"),
+                    repeat={"column": columns, "wall_column": wall_columns, "tall": (0, 1)}),
+    "splashback": Node(),
+    "sink_unit": Node(required=("sink", "tilt_front"), repeat={"sink_door": 2}),
     "larder": Node(required=("stand",), repeat={"tall": (2, 4)}),
     "corner": Node(required=("stand", "worktop", "corner_unit"), repeat={"column": (2, 5)}),
     "sink_base": Node(required=("stand", "worktop", "sink", "tilt_front"), repeat={"sink_door": 2, "column": (1, 5)}),
@@ -90,7 +111,8 @@ GRAMMAR = Grammar("kitchen_cabinet", {
     "tilt_front": Node(label="drawer"),
     "sink_door": Node(label="door"),
     "wall_column": Node(one_of={"wall_doors": 0.55, "flap": 0.33, "wall_open": 0.12}),
-    "wall_doors": Node(repeat={"door": leaves}),
+    "wall_doors": Node(repeat={"wall_door": leaves}),
+    "wall_door": Node(label="door"),
     "flap": Node(label="door"),
     "wall_open": Node(),
 }, accept=moves)
@@ -113,6 +135,10 @@ PARAMS = (
     Float("corner_size", "corner unit width and depth", "m", 0.84, 0.92),
     # sink bases 80 / 90 / 100 cm (IKEA METOD), 30-36 in
     Float("sink_width", "sink base width", "m", 0.8, 1.0),
+    # a kitchen wall of 4-8 base cabinets (IKEA METOD 40/60/80 cm units), tall end unit excluded
+    Float("kitchen_width", "kitchen wall: width of the base columns under the worktop", "m", 2.4, 4.8),
+    # worktop to wall-cabinet bottom: 45-60 cm (IKEA kitchen planner 50-60 cm; NKBA minimum 15 in)
+    Float("wall_gap", "kitchen wall: worktop to the bottom of the wall cabinets", "m", 0.45, 0.6),
     Float("board", "carcass board thickness", "m", 0.016, 0.019),
     Float("front_thickness", "door and drawer-front thickness", "m", 0.016, 0.022),
     Float("worktop_thickness", "worktop thickness (laminate 28-40 mm, stone 20-30 mm)", "m", 0.02, 0.04),
@@ -138,6 +164,9 @@ MATERIALS = {"body": "body_finish", "front": "body_finish", "handle": "handle_fi
 GAP = 0.003  # between neighbouring fronts and between moving parts and the carcass
 COLUMN = 0.45  # a column per 45 cm of width
 DOUBLE = 0.6  # columns wider than this have double doors
+KITCHEN_COLUMN_MAX = 0.9  # a kitchen wall's columns: at most 90 cm (IKEA METOD's widest base cabinet is 80 cm)
+SPLASH = 0.012  # splashback panel (12 mm compact laminate / glass)
+WALL_MIN = 0.4  # the lowest wall cabinet (IKEA METOD 40 cm high)
 DRAWER_WALL = 0.009  # drawer box boards (Blum LEGRABOX: 16 mm bottom on 1 mm steel sides; plywood boxes 9 mm)
 TILT = math.radians(25)  # tilt-out sink fronts tip 20-30 degrees (Rev-A-Shelf 6572 tip-out trays)
 FLAP = math.radians(100)  # lift-up flap stays open 90-107 degrees (Blum AVENTOS HK)
@@ -162,12 +191,13 @@ class CabinetLayout(Layout):
         else:
             D, z0, z1 = self._base_dims(tall=kind == "larder")
             W = {"base_run": p["width"], "larder": len(design.of("tall")) * p["column_width"],
+                 "kitchen": p["kitchen_width"] + len(design.of("tall")) * p["column_width"],
                  "corner": p["corner_size"] + len(design.of("column")) * p["column_width"],
                  "sink_base": p["sink_width"] + len(design.of("column")) * p["column_width"]}[kind]
-        first = {"corner": p["corner_size"], "sink_base": p["sink_width"]}.get(kind, W)
+        first = {"corner": p["corner_size"], "sink_base": p["sink_width"], "kitchen": p["sink_width"]}.get(kind, W)
         xs = (D / 2 - p["corner_size"], D / 2) if kind == "corner" else (-D / 2, D / 2)
         self.add("carcass", "body", cab.carcass(xs, (-W / 2, -W / 2 + first), (z0, z1), p["board"], "body",
-                                                top=kind != "sink_base"))
+                                                top=kind not in ("sink_base", "kitchen")))
         self.grow(design, W=W, D=D, zs=(z0, z1))
 
     def _base_dims(self, tall: bool = False):
@@ -179,8 +209,11 @@ class CabinetLayout(Layout):
     def _box(self, ys, xs, zs, top=True):
         self.extend("carcass", cab.carcass(xs, ys, zs, self.p["board"], "body", top=top))
 
-    def _run(self, cols, ys, xs, zs, box=True):
-        """Grow ``cols`` as equal columns of one carcass over ``ys`` (dividers between them)."""
+    def _run(self, cols, ys, xs, zs, box=True, first=0, side=None):
+        """Grow ``cols`` as equal columns of one carcass over ``ys`` (dividers between them), named from
+        column ``first`` on. A single leaf hinges on ``side``, or towards the nearer end of the run
+        (beside a corner unit every leaf hinges on its right, away from the corner door: both open 90
+        degrees to the same divider)."""
         t = self.p["board"]
         (W0, W1), D = ys, xs[1] - xs[0]
         if box:
@@ -191,7 +224,8 @@ class CabinetLayout(Layout):
                 self.extend("carcass", [g.box_between([xs[0] + t * 0.5, yb, zs[0] + t], [xs[1], yb + t, zs[1] - t],
                                                       "body")])
             fy = (ya - t / 2 + GAP / 2 if c > 0 else W0 + GAP, yb + t / 2 - GAP / 2 if c < len(cols) - 1 else W1 - GAP)
-            self.grow(col, c=c, n=len(cols), ys=(ya, yb), fys=fy, zs=(zs[0] + t, zs[1] - t),
+            hand = side or ("left" if c < len(cols) / 2 and self.p["design"] != "corner" else "right")
+            self.grow(col, c=first + c, side=hand, ys=(ya, yb), fys=fy, zs=(zs[0] + t, zs[1] - t),
                       fzs=(zs[0] + GAP, zs[1] - GAP), xs=xs)
 
     def _stand_and_top(self, node, ys, D, z0, top_hole=None):
@@ -221,32 +255,62 @@ class CabinetLayout(Layout):
         self.grow(node.one("worktop"), ys=(y0, W / 2), xs=(-D / 2, D / 2), hole=None, corner=(y0 + C, D / 2 - C))
 
     def sink_base(self, node, W, D, zs):
-        p = self.p
-        z0, z1 = zs
-        S, t = p["sink_width"], p["board"]
         cols = node.of("column")
         y0 = -W / 2
-        ys = (y0, y0 + S)
+        ys = (y0, y0 + self.p["sink_width"])
         if cols:
-            self._run(cols, (y0 + S, W / 2), (-D / 2, D / 2), (z0, z1))
-        xf = D / 2
-        hole = ((-D / 2 + 0.1, xf - 0.12), (ys[0] + 0.1, ys[1] - 0.1))
-        H = p["base_height"]
-        self.grow(node.one("sink"), hole=hole, z_top=H)
-        fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if cols else ys[1] - GAP)
+            self._run(cols, (ys[1], W / 2), (-D / 2, D / 2), zs)
+        hole = self.sink_unit(node, ys, D, zs, beside=bool(cols))
+        self._stand_and_top(node, (y0, W / 2), D, zs[0], top_hole=hole)
+
+    def sink_unit(self, node, ys, D, zs, beside):
+        """The sink, its tilt-out false front and two doors in the box over ``ys`` (a run of columns
+        ``beside`` it on its right); returns the worktop's cut-out."""
+        p = self.p
+        z0, z1 = zs
+        t = p["board"]
+        hole = ((-D / 2 + 0.1, D / 2 - 0.12), (ys[0] + 0.1, ys[1] - 0.1))
+        self.grow(node.one("sink"), hole=hole, z_top=p["base_height"])
+        fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if beside else ys[1] - GAP)
         fz1 = z1 - GAP
         self.grow(node.one("tilt_front"), fys=fy, fzs=(fz1 - SINK_FRONT, fz1), xs=(-D / 2, D / 2))
         doors = node.of("sink_door")
         mid = sum(fy) / 2
         spec = [(fy[0], mid - GAP / 2, "left"), (mid + GAP / 2, fy[1], "right")]
         for k, (kid, leaf) in enumerate(zip(doors, spec)):
-            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - SINK_FRONT - GAP), D=D)
-        self._stand_and_top(node, (y0, W / 2), D, z0, top_hole=hole)
+            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - SINK_FRONT - GAP), x1=D / 2)
+        return hole
 
     def wall_run(self, node, W, D, zs):
         H = zs[1]
         self._run(node.of("wall_column"), (-W / 2, W / 2), (-D / 2, D / 2), (0.0, H), box=False)
         self.grow(node.one("rail"), ys=(-W / 2, W / 2), xs=(-D / 2, D / 2), z=H - 0.02)
+
+    def kitchen(self, node, W, D, zs):
+        """Base columns under a worktop, a splashback, a wall cabinet over each base column, and maybe
+        a tall unit at the +Y end (the wall cabinets' tops then line up with its top)."""
+        p = self.p
+        y0, yk = -W / 2, -W / 2 + p["kitchen_width"]
+        base, wall, talls = node.of("column"), node.of("wall_column"), node.of("tall")
+        ys = (y0, y0 + p["sink_width"])  # the sink base at the -Y end (the root's box)
+        self._run(base, (ys[1], yk), (-D / 2, D / 2), zs)
+        hole = self.grow(node.one("sink_unit"), ys=ys, D=D, zs=zs, beside=True)
+        if talls:
+            self._run(talls, (yk, W / 2), (-D / 2, D / 2), (zs[0], p["tall_height"]), first=len(base),
+                      side="right")
+        bottom = p["base_height"] + p["wall_gap"]
+        top = p["tall_height"] if talls else bottom + p["wall_height"]
+        top = max(top, bottom + WALL_MIN)
+        self._run(wall, (y0, yk), (-D / 2, -D / 2 + p["wall_depth"]), (bottom, top),
+                  first=len(base) + len(talls))
+        self.grow(node.one("splashback"), ys=(y0, yk), x=-D / 2, zs=(p["base_height"], bottom))
+        self.grow(node.one("stand"), ys=(y0, W / 2), xs=(-D / 2, D / 2), z0=zs[0])
+        # the worktop overhangs 5 mm at a free end; it butts against a tall unit's side
+        self.grow(node.one("worktop"), ys=(y0, yk - 0.005 if talls else yk), xs=(-D / 2, D / 2), hole=hole)
+
+    def splashback(self, node, ys, x, zs):
+        """A panel on the wall between the worktop and the wall cabinets: it carries them."""
+        self.extend("carcass", [g.box_between([x, ys[0], zs[0]], [x + SPLASH, ys[1], zs[1]], "body")])
 
     # -- stands, worktops, rails ---------------------------------------------------------------------
     def stand(self, node, **where):
@@ -288,7 +352,7 @@ class CabinetLayout(Layout):
 
     wall_column = tall = column
 
-    def open(self, node, c, n, ys, fys, zs, fzs, xs):
+    def open(self, node, c, side, ys, fys, zs, fzs, xs):
         k = 1 + int(self.rng.integers(1, 3))
         self.extend("carcass", [panels.shelf(xs, ys, zs[0] + (zs[1] - zs[0]) * i / k, self.p["board"], "body")
                                 for i in range(1, k)])
@@ -324,7 +388,7 @@ class CabinetLayout(Layout):
             pieces += list(h.parts[h.root].pieces)
         return pieces, box
 
-    def drawers(self, node, c, n, ys, fys, zs, fzs, xs):
+    def drawers(self, node, c, side, ys, fys, zs, fzs, xs):
         kids = node.of("drawer")
         splits = SPLITS[len(kids)]
         self._drawer_stack(kids, splits, c, ys, fys, zs, fzs, xs)
@@ -346,33 +410,28 @@ class CabinetLayout(Layout):
         self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fz[0]), z=(1, 0, 0)),
                    upper=self.p["drawer_travel"] * (box[1] - box[0]))
 
-    def _side(self, c: int, n: int) -> str:
-        """The hinge side of a single leaf: towards the nearer end of the run; beside a corner unit every
-        leaf hinges on its right, away from the corner door (both open 90 degrees to the same divider)."""
-        return "left" if c < n / 2 and self.p["design"] != "corner" else "right"
-
-    def doors(self, node, c, n, ys, fys, zs, fzs, xs, shelf=True):
+    def doors(self, node, c, side, ys, fys, zs, fzs, xs, shelf=True):
         t = self.p["board"]
         if shelf:
             self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, t, "body")])
-        kids = node.of("door")
+        kids = node.of("door") or node.of("wall_door")
         mid = sum(fys) / 2
         if len(kids) == 2:  # double doors, hinged at both outer edges
             spec = [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
         else:  # one leaf, hinged on the side facing the nearer end of the run
-            spec = [(fys[0], fys[1], self._side(c, n))]
+            spec = [(fys[0], fys[1], side)]
         for k, (kid, leaf) in enumerate(zip(kids, spec, strict=True)):
-            self.grow(kid, name=f"door_{c}_{k}", leaf=leaf, fzs=fzs, D=xs[1] - xs[0])
+            self.grow(kid, name=f"door_{c}_{k}", leaf=leaf, fzs=fzs, x1=xs[1])
 
     wall_doors = doors
 
-    def _door(self, name, leaf, fzs, D, glazed=False, handle_at=None, gate=False):
+    def _door(self, name, leaf, fzs, x1, glazed=False, handle_at=None, gate=False):
         """A hinged door. A ``gate`` (a door with pull-outs or a carousel behind it) opens to 90 degrees:
         two gates hinged on one divider then never meet (the core scales no gate's limit), and its
         pull-outs pass the open leaf."""
         p = self.p
         ya, yb, side = leaf
-        xf, ft = D / 2 + GAP, p["front_thickness"]
+        xf, ft = x1 + GAP, p["front_thickness"]
         pieces, _ = cab.front(xf, xf + ft, (ya, yb), fzs, p["front_style"], "front", glazed=glazed)
         pieces += cab.hinge_cups(xf, ya if side == "left" else yb, 1 if side == "left" else -1, fzs, "hinge")
         h = fzs[1] - fzs[0]
@@ -392,17 +451,19 @@ class CabinetLayout(Layout):
         self.hinge("carcass", name, hinge, upper=GATE if gate else p["door_angle"])
         return name
 
-    def door(self, node, name, leaf, fzs, D, gate=False):
-        wall = self.p["design"] == "wall_run"
-        self._door(name, leaf, fzs, D, glazed=wall, handle_at=fzs[0] + 0.08 * (fzs[1] - fzs[0]) if wall else None,
+    def door(self, node, name, leaf, fzs, x1, gate=False, wall=False):
+        """A base or tall door; a wall cabinet's door is glazed, its handle near the bottom edge."""
+        self._door(name, leaf, fzs, x1, glazed=wall, handle_at=fzs[0] + 0.08 * (fzs[1] - fzs[0]) if wall else None,
                    gate=gate)
 
     sink_door = door
 
-    def door_drawers(self, node, c, n, ys, fys, zs, fzs, xs):
+    def wall_door(self, node, name, leaf, fzs, x1):
+        self.door(node, name, leaf, fzs, x1, wall=True)
+
+    def door_drawers(self, node, c, side, ys, fys, zs, fzs, xs):
         """One door with pull-out drawers behind it: they move once the door is open."""
-        side = self._side(c, n)
-        self.grow(node.one("door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side), fzs=fzs, D=xs[1] - xs[0],
+        self.grow(node.one("door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side), fzs=fzs, x1=xs[1],
                   gate=True)
         self._inner_drawers(node.of("inner_drawer"), f"door_{c}_0", c, ys, zs, xs)
 
@@ -426,7 +487,7 @@ class CabinetLayout(Layout):
         self.slide("carcass", name, Frame.at((x1, sum(ys) / 2, zs[0]), z=(1, 0, 0)),
                    upper=p["drawer_travel"] * (x1 - x0), requires_open=gate)
 
-    def drawer_door(self, node, c, n, ys, fys, zs, fzs, xs):
+    def drawer_door(self, node, c, side, ys, fys, zs, fzs, xs):
         fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
         s = 1 - TOP_DRAWER
         top_f = (fzs[0] + s * fh, fzs[1])
@@ -434,11 +495,11 @@ class CabinetLayout(Layout):
         self.extend("carcass", [g.box_between([xs[0] + self.p["board"] / 2, ys[0], top_i[0] - self.p["board"]],
                                               [xs[1], ys[1], top_i[0]], "body")])
         self._drawer_stack(node.of("drawer"), (1.0,), c, ys, fys, top_i, top_f, xs)
-        self.doors(node, c, n, ys, fys, (zs[0], top_i[0] - self.p["board"]), (fzs[0], top_f[0] - GAP / 2), xs,
+        self.doors(node, c, side, ys, fys, (zs[0], top_i[0] - self.p["board"]), (fzs[0], top_f[0] - GAP / 2), xs,
                    shelf=False)
 
     # -- tall cabinets -------------------------------------------------------------------------------
-    def pullout(self, node, c, n, ys, fys, zs, fzs, xs):
+    def pullout(self, node, c, side, ys, fys, zs, fzs, xs):
         """A full-height pull-out larder: the front on full-extension runners carries a frame
         of wire baskets (Kesseböhmer Dispensa: 4-6 baskets, 90 % extension)."""
         p = self.p
@@ -464,25 +525,24 @@ class CabinetLayout(Layout):
         name = self.add(f"{parent}_basket_{k}", "basket", cab.basket(xs, ys, z, "wire"))
         self.fix(parent, name)
 
-    def tall_doors(self, node, c, n, ys, fys, zs, fzs, xs):
+    def tall_doors(self, node, c, side, ys, fys, zs, fzs, xs):
         """An upper door with shelves behind it over a lower door with pull-outs behind it."""
         p = self.p
         t = p["board"]
         split = zs[0] + 0.45 * (zs[1] - zs[0])
         self.extend("carcass", [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")]
                     + [panels.shelf(xs, ys, split + (zs[1] - split) * i / 3, t, "body") for i in (1, 2)])
-        side = self._side(c, n)
         fsplit = split - t / 2
         self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=(fys[0], fys[1], side),
-                  fzs=(fsplit + GAP / 2, fzs[1]), D=xs[1] - xs[0])
+                  fzs=(fsplit + GAP / 2, fzs[1]), x1=xs[1])
         self.grow(node.one("lower_door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side),
-                  fzs=(fzs[0], fsplit - GAP / 2), D=xs[1] - xs[0], c=c, ys=ys, zs=(zs[0], split - t), xs=xs)
+                  fzs=(fzs[0], fsplit - GAP / 2), x1=xs[1], c=c, ys=ys, zs=(zs[0], split - t), xs=xs)
 
-    def upper_door(self, node, name, leaf, fzs, D):
-        self._door(name, leaf, fzs, D, glazed=True, handle_at=fzs[0] + 0.1)
+    def upper_door(self, node, name, leaf, fzs, x1):
+        self._door(name, leaf, fzs, x1, glazed=True, handle_at=fzs[0] + 0.1)
 
-    def lower_door(self, node, name, leaf, fzs, D, c, ys, zs, xs):
-        self._door(name, leaf, fzs, D, handle_at=fzs[1] - 0.1, gate=True)
+    def lower_door(self, node, name, leaf, fzs, x1, c, ys, zs, xs):
+        self._door(name, leaf, fzs, x1, handle_at=fzs[1] - 0.1, gate=True)
         self._inner_drawers(node.of("inner_drawer"), name, c, ys, zs, xs)
 
     # -- corner, sink, wall --------------------------------------------------------------------------
@@ -498,7 +558,7 @@ class CabinetLayout(Layout):
         # the blind part of the front: a fixed panel in the carcass
         self.extend("carcass", cab.front(x + GAP, x + GAP + p["front_thickness"], (ys[0] + GAP, mid - GAP / 2), fz,
                                          p["front_style"], "front")[0])
-        name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, 2 * x,
+        name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, x,
                           handle_at=None, gate=True)
         self.grow(node.one("carousel"), gate=name, centre=(x - D / 2, (ys[0] + ys[1]) / 2),
                   radius=min(D, ys[1] - ys[0]) / 2 - t - 0.02, zs=(zs[0] + t, zs[1] - t))
@@ -535,7 +595,7 @@ class CabinetLayout(Layout):
         # about the outer bottom edge, +Y: the top tips out towards +X
         self.hinge("carcass", name, Frame.at((xf + ft, sum(fys) / 2, fzs[0]), z=(0, 1, 0)), upper=TILT)
 
-    def flap(self, node, c, n, ys, fys, zs, fzs, xs):
+    def flap(self, node, c, side, ys, fys, zs, fzs, xs):
         """A lift-up flap hinged at its top edge (Blum AVENTOS HK): the bottom swings out and up."""
         p = self.p
         xf, ft = xs[1] + GAP, p["front_thickness"]

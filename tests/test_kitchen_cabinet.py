@@ -54,14 +54,22 @@ def test_moving_parts_never_enter_the_carcass(cabinet):
 
 
 def test_doors_swing_outward(cabinet):
-    front = depth(cabinet) / 2
+    rest = cabinet.poses()
     for j in cabinet.movable_joints:
         if j.type != "revolute" or j.child == "tilt_front":  # a tilt-out front's tray stays behind it
             continue
-        pose = cabinet.poses({j.name: j.upper})[j.child]
         pts = np.vstack([v for p in cabinet.link(j.child).pieces for v, _ in p.hulls()])
+        p = cabinet.params
+        front = depth(cabinet) / 2
+        if p["design"] == "kitchen" and (pts @ rest[j.child][:3, :3].T + rest[j.child][:3, 3])[:, 2].min() > (
+                p["base_height"] + p["wall_gap"]):  # a wall cabinet's door: its carcass stands on the back wall
+            front = -p["base_depth"] / 2 + p["wall_depth"]
+        pose = cabinet.poses({j.name: j.upper})[j.child]
         x = pts @ pose[:3, :3].T + pose[:3, 3]
-        assert x[:, 0].min() > front - 1e-6  # the whole door is in front of the carcass
+        # the whole door swings out in front of its carcass (a lift-up flap may tip back above it)
+        behind = x[:, 0] < front - 1e-6
+        top = (pts @ rest[j.child][:3, :3].T + rest[j.child][:3, 3])[:, 2].max()
+        assert np.all(x[behind, 2] > top - 1e-6), j.child
 
 
 def test_no_two_fronts_touch_at_rest(cabinet):
@@ -87,6 +95,7 @@ DESIGN_PARTS = {  # what each design must have among its movable joints' childre
     "corner": ("carousel",),
     "sink_base": ("tilt_front", "door_sink"),
     "wall_run": ("door", "flap"),
+    "kitchen": ("drawer", "door", "flap", "inner"),
 }
 
 
@@ -119,6 +128,26 @@ def test_runs_are_large_assemblies():
     """A 4 m base run of 8 columns carries many drawers: the heavy tail of the joint-count distribution."""
     obj = infmob_usd.generate("kitchen_cabinet", seed=3, texture_size=16, design="base_run", width=4.0)
     assert len(obj.movable_joints) >= 12
+
+
+def test_kitchen_walls_are_the_largest_assemblies():
+    """A kitchen wall: a wall cabinet over each base column, hung 45-60 cm over the worktop on a
+    splashback (the object stands on its base cabinets), the tall unit's top in line with theirs."""
+    for seed in range(3):
+        obj = infmob_usd.generate("kitchen_cabinet", seed=seed, texture_size=16, design="kitchen")
+        p = obj.params
+        assert len(obj.movable_joints) >= 15
+        body = np.vstack([pc.vertices for pc in obj.link("carcass").pieces if pc.material == "body"])
+        lo, _ = obj.bounds()
+        assert lo[2] == pytest.approx(0, abs=1e-6)
+        y0 = body[:, 1].min()  # the tall unit, if any, stands beyond the base columns (+Y)
+        wall = body[(body[:, 2] > p["base_height"] + p["wall_gap"] - 1e-6)
+                    & (body[:, 1] < y0 + p["kitchen_width"] - 1e-6)]
+        assert np.ptp(wall[:, 0]) == pytest.approx(p["wall_depth"], abs=0.002)
+        top = wall[:, 2].max()
+        assert top - p["base_height"] - p["wall_gap"] >= 0.4 - 1e-6
+        if body[:, 2].max() > top + 1e-6:
+            raise AssertionError("a tall unit rises above the wall cabinets")
 
 
 def test_open_doors_never_meet_the_neighbouring_columns(cabinet):

@@ -189,6 +189,22 @@ def test_contact_sheet_grid(renderer, cabinets, tmp_path):
     assert (sheet[128:, 128:] == 255).all(), "the unused cell stays blank"
 
 
+def test_contact_sheet_rest_and_open_rows(renderer, cabinets, tmp_path):
+    """``--open F``: each row of objects at rest is followed by the same objects opened."""
+    ap = argparse.ArgumentParser()
+    preview.add_arguments(ap)
+    root = cabinets[0].parent
+    out = tmp_path / "ro.png"
+    assert preview.main(ap.parse_args(["--sheet", str(root), "--out", str(out), "--size", "96", "--open", "1"])) == 0
+    sheet = cv2.imread(str(out))
+    assert sheet.shape == (4 * 96, 2 * 96, 3)  # 3 objects: 2 columns, 2 rows of objects, each rest + open
+    band = preview._caption_height(96)
+    rest, opened = sheet[:96 - band, :96], sheet[96:2 * 96 - band, :96]
+    assert np.abs(rest.astype(int) - opened.astype(int)).mean() > 3, "the open row shows the rest pose"
+    assert preview.main(ap.parse_args(["--sheet", str(root), "--out", str(out), "--open", "1.5"])) == 2
+    assert preview.main(ap.parse_args([str(cabinets[0]), "--open", "0.5"])) == 2
+
+
 def test_preview_writes_png_and_sweep(renderer, cabinet, tmp_path):
     from PIL import Image
 

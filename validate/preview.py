@@ -900,12 +900,16 @@ def _write_gif(path: Path, frames: list[np.ndarray], fps: float = 10.0) -> Path:
     return path
 
 
-def contact_sheet(folders, out_png, cell: int = 256, joint_fraction=0.0, columns: int | None = None) -> Path:
+def contact_sheet(folders, out_png, cell: int = 256, joint_fraction=0.0, columns: int | None = None,
+                  open_fraction: float | None = None) -> Path:
     """One PNG grid of many object folders, each cell captioned ``category  seed N  J joints``.
 
     The sheet is ``columns * cell`` wide and ``rows * cell`` high (``columns`` defaults to
     ``ceil(sqrt(n))``, ``rows = ceil(n / columns)``); each cell is the picture with its caption
-    under it. Objects are shown at rest unless ``joint_fraction`` says otherwise.
+    under it. Objects are shown at rest unless ``joint_fraction`` says otherwise. With
+    ``open_fraction`` every row is followed by a row of the same objects with their joints at that
+    fraction of their range (dependent parts after their door), captioned ``... NN% open``:
+    twice the rows.
     """
     import cv2
 
@@ -914,19 +918,22 @@ def contact_sheet(folders, out_png, cell: int = 256, joint_fraction=0.0, columns
         raise ValueError("contact_sheet needs at least one object folder")
     cols = columns or math.ceil(math.sqrt(len(folders)))
     rows = math.ceil(len(folders) / cols)
-    sheet = np.full((rows * cell, cols * cell, 3), 255, np.uint8)
+    poses = [joint_fraction] if open_fraction is None else [joint_fraction, open_fraction]
+    sheet = np.full((rows * len(poses) * cell, cols * cell, 3), 255, np.uint8)
     img_h = cell - _caption_height(cell)
     for i, f in enumerate(folders):
+        y, x = divmod(i, cols)
         with ObjectRenderer(f) as r:
-            r.set_fraction(joint_fraction)
-            img = r.render(cell, r.camera_for(aspect=cell / img_h), _supersample(cell), height=img_h).rgb
             meta = r.files.metadata
             n = len(r.files.movable)
             text = f"{meta.get('category', r.files.name)}  seed {meta.get('seed', '?')}  {n} joint{'s' * (n != 1)}"
-        img = _captioned(img, text)
-        cv2.rectangle(img, (0, 0), (cell - 1, cell - 1), (255, 255, 255), 1)
-        y, x = divmod(i, cols)
-        sheet[y * cell:(y + 1) * cell, x * cell:(x + 1) * cell] = img
+            for k, fraction in enumerate(poses):
+                r.set_fraction(fraction)
+                img = r.render(cell, r.camera_for(aspect=cell / img_h), _supersample(cell), height=img_h).rgb
+                img = _captioned(img, text + (f"  {fraction:.0%} open" if k else ""))
+                cv2.rectangle(img, (0, 0), (cell - 1, cell - 1), (255, 255, 255), 1)
+                row = y * len(poses) + k
+                sheet[row * cell:(row + 1) * cell, x * cell:(x + 1) * cell] = img
     out_png = Path(out_png)
     out_png.parent.mkdir(parents=True, exist_ok=True)
     if not cv2.imwrite(str(out_png), sheet[..., ::-1]):
@@ -947,6 +954,9 @@ def add_arguments(parser) -> None:
                         help="panel edge in pixels (default 512); with --sheet: the cell edge (default 256)")
     parser.add_argument("--sheet", metavar="DIR", default=None,
                         help="write one contact sheet of every object found under DIR instead")
+    parser.add_argument("--open", type=float, default=None, metavar="F", dest="open_fraction",
+                        help="with --sheet: under each row of objects at rest, a row of them with every joint at "
+                             "fraction F (0-1] of its range")
 
 
 def main(args) -> int:
@@ -955,6 +965,10 @@ def main(args) -> int:
 
     if args.size is not None and not 16 <= args.size <= 4096:
         print(f"infmob: error: --size must be 16..4096 pixels, got {args.size}", file=sys.stderr)
+        return 2
+    opened = getattr(args, "open_fraction", None)
+    if opened is not None and (not args.sheet or not 0 < opened <= 1):
+        print(f"infmob: error: --open takes a fraction in (0, 1] and needs --sheet, got {opened}", file=sys.stderr)
         return 2
     try:
         if args.sheet:
@@ -976,7 +990,7 @@ def main(args) -> int:
 
                 with tempfile.NamedTemporaryFile(dir=out.parent, prefix=".infmob-probe-"):
                     pass
-            path = contact_sheet(found, out, cell=cell)
+            path = contact_sheet(found, out, cell=cell, open_fraction=opened)
             print(f"{path}  ({len(found)} objects)")
             return 0
         if not args.paths:
