@@ -19,6 +19,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.families import FAMILIES, split_spec
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
@@ -30,7 +31,31 @@ def rack_count(p, rng) -> int:
     """rack_count; a wine cooler has 3 more (6-8 slide-out shelves), an undercounter fridge 2 fewer above its
     crispers, a dual-zone cooler 1 fewer per zone"""
     extra = {"wine": 3, "undercounter": -2, "dual_zone": -1}.get(p["design"], 0)
-    return max(1, p["rack_count"] + extra)
+    n = max(1, p["rack_count"] + extra)
+    if p["design"] == "undercounter":  # shelves at least 8 cm apart above the crispers, below a freezer
+        n = min(n, max(1, int(shelf_room(p) / 0.08 - 0.6)))
+    return n
+
+
+def cavity_height(p: dict) -> float:
+    """Height of the cooled cavity (floor liner to ceiling liner)."""
+    return size(p, p["design"])[2] - 2 * p["wall"] - 2 * A.LINER - p["feet_height"] - p["kick_height"]
+
+
+def freezer_height(p: dict) -> float:
+    """freezer_height, at most a fifth of the cavity"""
+    return min(p["freezer_height"], 0.2 * cavity_height(p))
+
+
+def shelf_room(p: dict) -> float:
+    """Height an undercounter fridge's shelves share: above the crispers, below the freezer compartment."""
+    return cavity_height(p) - CRISPER_H - 0.03 - (freezer_height(p) + 0.012 if p.get("has_freezer") else 0.0)
+
+
+def right_rack_count(p, rng) -> int:
+    """right_rack_count, 1 fewer (a dual-zone cooler's right zone, set apart from the left one: wine in one
+    zone, cans in the other, e.g. Whynter BWB-3388FDS, Kalamera KRC-150BV)"""
+    return max(1, p["right_rack_count"] - 1)
 
 
 def size(p: dict, design: str) -> tuple[float, float, float]:
@@ -46,14 +71,18 @@ def size(p: dict, design: str) -> tuple[float, float, float]:
 
 
 GRAMMAR = Grammar("beverage_fridge", {
-    "beverage_fridge": Node(label="body", optional={"control_panel": 0.6},
+    # most beverage centres and wine coolers sold have an electronic control strip (Newair, Whynter, Danby,
+    # Kalamera ranges); the rest a dial thermostat inside
+    "beverage_fridge": Node(label="body", optional={"control_panel": 0.8},
                             one_of={"glass_cooler": 0.3, "undercounter": 0.25, "wine": 0.25, "dual_zone": 0.2},
                             choice="design"),
     "glass_cooler": Node(required=("door",), one_of={"racks": 0.8, "divider": 0.2}, choice="interior"),
     "wine": Node(required=("door", "racks")),
-    "undercounter": Node(required=("solid_door", "racks", "crispers")),
+    "undercounter": Node(required=("solid_door", "racks", "crispers"), optional={"freezer": 0.5}),
+    "freezer": Node(label="flap"),
     "dual_zone": Node(required=("door", "right_door", "racks", "right_racks")),
-    "control_panel": Node(),
+    "control_panel": Node(repeat={"key": "key_count"}),
+    "key": Node(label="button"),
     "door": Node(label="door", required=("handle",)),
     "right_door": Node(label="door", required=("handle",)),
     "solid_door": Node(label="door", required=("handle",), repeat={"door_bin": "bin_count"}),
@@ -63,14 +92,18 @@ GRAMMAR = Grammar("beverage_fridge", {
     "crispers": Node(repeat={"crisper": "crisper_count"}),
     "crisper": Node(label="drawer"),
     "racks": Node(repeat={"rack": rack_count}),
-    "right_racks": Node(repeat={"rack": rack_count}),
+    "right_racks": Node(repeat={"rack": right_rack_count}),
     "rack": Node(label=("rack", "shelf")),
     "divider": Node(label="shelf"),
 })
 """Designs (``design``): a ``glass_cooler`` (a glass door, racks or a divider plate); an ``undercounter``
 fridge (a solid insulated door carrying 2-4 door bins that lift out, glass shelves, 1-2 crisper drawers at
 the bottom); a ``wine`` cooler (6-8 slide-out shelves with wooden fronts); a ``dual_zone`` cooler (two glass
-doors hinged at the outer sides, a mullion between two zones with their own racks)."""
+doors hinged at the outer sides, a mullion between two zones with their own racks, counted apart). An
+undercounter fridge may have a freezer compartment across the top of its cavity, closed by a flap hinged
+at its top edge that swings up (Danby DCR044A2, Midea WHS-87LB1 compact fridges). A control strip carries
+2-5 push keys of the electronic thermostat (power, light, up, down, zone: Danby DBC117A1, Whynter
+BR-130SB, Newair AB-1200 control panels)."""
 
 PARAMS = (
     Float("width", "overall width (Y)", "m", 0.45, 0.7),
@@ -89,6 +122,11 @@ PARAMS = (
     Float("divider_height", "divider plate height as a fraction of the cavity height", "", 0.35, 0.65),
     Int("bin_count", "door bins on an undercounter fridge's door", "", 2, 4),
     Int("crisper_count", "crisper drawers side by side at the bottom of an undercounter fridge", "", 1, 2),
+    Int("right_rack_count", "racks of a dual-zone cooler's right zone (one fewer than this, as on the left)", "",
+        3, 5),
+    Int("key_count", "push keys on the control strip (has_control_panel)", "", 2, 5),
+    Float("freezer_height", "height of an undercounter fridge's freezer compartment (has_freezer)", "m",
+          0.09, 0.14),
     Choice("body_finish", "cabinet material", choices=("painted", "brushed_metal"), weights=(0.6, 0.4)),
     Choice("door_finish", "door frame: match the cabinet or black plastic", choices=("match", "black")),
     Choice("trim_finish", "front trim of the racks", choices=("wood", "chrome", "plastic"), weights=(0.45, 0.35, 0.2)),
@@ -100,7 +138,8 @@ MATERIALS = {
     "body": "body_finish", "liner": "plastic:black|dark_grey|white", "glass": "glass:clear|clear_blue",
     "handle": ("handle_finish", {"plastic": "plastic:black|dark_grey"}), "trim": "trim_finish", "wire": "chrome",
     "grille": "plastic:black|dark_grey", "feet": "rubber", "display": "rubber", "gasket": "rubber",
-    "bin": "plastic:white|light_grey", "wood": "wood",
+    "bin": "plastic:white|light_grey", "wood": "wood", "button": "plastic:black|dark_grey|light_grey",
+    "evaporator": "brushed_metal",
 }
 
 
@@ -166,14 +205,38 @@ class FridgeLayout(Layout):
         self.grow(node.one("racks"), cav=cav, hole=hole, xs=xs, margin=hole[0] - box[2], wine=True)
 
     def undercounter(self, node, cav, hole, box, xs):
-        """A solid door with bins, 1-2 crisper drawers on the cavity floor, glass shelves above them; the
-        shelves and crispers stop short of the bins on the closed door."""
+        """A solid door with bins, 1-2 crisper drawers on the cavity floor, glass shelves above them, a freezer
+        compartment at the top (optional); shelves, crispers and the freezer flap stop short of the bins on the
+        closed door."""
         self.grow(node.one("solid_door"), box=box, hole=hole)
         xs = (xs[0], xs[1] - BIN_DEPTH - 0.012)
         cz0 = cav[4]
         top = cz0 + CRISPER_H
+        ceiling = cav[5]
+        if node.one("freezer"):
+            ceiling = self.grow(node.one("freezer"), cav=cav, xs=xs)
         self.grow(node.one("crispers"), cav=cav, xs=xs, zs=(cz0 + 0.004, top), margin=hole[0] - box[2])
-        self.grow(node.one("racks"), cav=(*cav[:4], top + 0.03, cav[5]), hole=hole, xs=xs, margin=hole[0] - box[2])
+        self.grow(node.one("racks"), cav=(*cav[:4], top + 0.03, ceiling), hole=hole, xs=xs, margin=hole[0] - box[2])
+
+    def freezer(self, node, cav, xs):
+        """A freezer compartment across the top of the cavity: an aluminium evaporator box (its floor and sides,
+        fixed) and a flap over its front, hinged on its top back edge, that swings up out of the way (only with
+        the door open). Returns the height below which the shelves stay."""
+        cx0, _, cy0, cy1, _, cz1 = cav
+        fh = freezer_height(self.p)
+        xf, t = xs[1], 0.006  # the flap's front face, its thickness
+        z0 = cz1 - fh
+        self.extend("body", [g.box_between([cx0, cy0, z0 - 0.003], [xf - t - 0.003, cy1, z0], "evaporator")
+                             .replace(sheet=0.0015),
+                             *[g.box_between([cx0, y0, z0], [xf - t - 0.003, y0 + 0.003, cz1], "evaporator")
+                               .replace(sheet=0.0015) for y0 in (cy0, cy1 - 0.003)]])
+        self.add("freezer_flap", "flap", [
+            g.box_between([xf - t, cy0 + 0.006, z0 + 0.002], [xf, cy1 - 0.006, cz1 - 0.004], "bin", bevel=0.002),
+            g.box_between([xf, -0.04, z0 + 0.006], [xf + 0.006, 0.04, z0 + 0.016], "bin", bevel=0.002)])  # finger lip
+        # about -Y the bottom edge swings forward and up; the pivot is behind the flap's centre of mass
+        self.hinge("body", "freezer_flap", Frame.at((xf - t, 0.0, cz1 - 0.004), z=(0, -1, 0)), upper=math.pi / 2,
+                   requires_open="door")
+        return z0 - 0.012
 
     def dual_zone(self, node, cav, hole, box, xs):
         """Two glass doors meeting over the mullion, each hinged on its outer side; racks in each zone."""
@@ -198,8 +261,14 @@ class FridgeLayout(Layout):
     def solid_door(self, node, box, hole):
         """An insulated door: an outer skin, a foam core, a moulded inner liner with a gasket, and bins."""
         x0, x1, y0, y1, z0, z1 = box
-        pieces = [g.box_between([x1 - 0.002, y0, z0], [x1, y1, z1], "frame", bevel=0.0015).replace(sheet=A.FRIDGE_SHEET),
-                  g.box_between([x0, y0, z0], [x1 - 0.002, y1, z1], "liner").replace(sheet=0.003),
+        # the outer skin is a steel pan (its face and flanges over the front 60 % of the edges) whatever its
+        # finish: a painted or plastic family is massed as that much steel (a 2 mm skin massed as board at
+        # 750 kg/m^3 made these doors 1.1-1.3 kg)
+        skin = A.FRIDGE_SHEET * 7850.0 / FAMILIES[split_spec(self.p["frame_family"])[0]].density
+        xp = x1 - 0.6 * (x1 - x0)
+        pieces = [g.box_between([xp, y0, z0], [x1, y1, z1], "frame", bevel=0.0015).replace(sheet=skin),
+                  g.box_between([x0, y0 + 0.001, z0 + 0.001], [xp + 0.002, y1 - 0.001, z1 - 0.001], "liner")
+                  .replace(sheet=0.003),
                   g.panel([x0 - 0.0015, y0 + 0.006, z0 + 0.006], [x0, y1 - 0.006, z1 - 0.006], "gasket", "x",
                           holes=[(y0 + 0.02, z0 + 0.02, y1 - 0.02, z1 - 0.02)])]
         left = self._door(node, box, hole, pieces, "door", None)
@@ -238,7 +307,17 @@ class FridgeLayout(Layout):
                    upper=0.7 * (x1 - x0), requires_open="door")
 
     def control_panel(self, node, xs, ys, zs):
-        self.extend("body", A.control_strip(*xs, *ys, *zs))
+        """The control strip over the door (part of the body) and its push keys, pressing in along -X."""
+        keys = node.of("key")
+        pieces, made = A.control_strip_keys(*xs, *ys, *zs, len(keys))
+        self.extend("body", pieces)
+        for k, (kid, m) in enumerate(zip(keys, made, strict=True)):
+            self.grow(kid, k=k, made=m)
+
+    def key(self, node, k, made):
+        piece, at, travel = made
+        self.add(f"key_{k}", "button", [piece])
+        self.slide("body", f"key_{k}", at, upper=travel, role="button")
 
     def door(self, node, box, hole, side=None, name="door"):
         self._door(node, box, hole, A.glass_door(box, hole), name, side)

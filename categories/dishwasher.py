@@ -32,6 +32,17 @@ def rack_count(p, rng) -> int:
     return 1 if p["design"] == "compact" else p["rack_count"]
 
 
+def upper_racks(p, rng) -> int:
+    """the racks between the lower rack and a cutlery tray (on top of three or more racks)"""
+    n = rack_count(p, rng)
+    return max(0, n - 1 - (n >= 3))
+
+
+def trays(p, rng) -> int:
+    """a cutlery tray on top of three or more racks"""
+    return int(rack_count(p, rng) >= 3)
+
+
 def size(p: dict, design: str) -> tuple[float, float, float]:
     """(width, depth, height): a compact counter-top model is 0.55 x 0.50 x 0.44 m (Midea MCDW6ASS,
     Farberware FDW05ASBWHA spec sheets); a double dish drawer 0.6 x 0.57 x 0.82 m (Fisher & Paykel
@@ -52,22 +63,32 @@ GRAMMAR = Grammar("dishwasher", {
     "compact": Node(required=("door", "racks")),
     "dish_drawer": Node(repeat={"drawer": 2}),
     "drawer": Node(label="drawer", required=("drawer_rack",)),
-    "drawer_rack": Node(label="rack"),
+    "drawer_rack": Node(label="rack", repeat={"tine_row": "tine_rows"}),
     "door": Node(label="door", optional={"handle": 0.8, "control_panel": 0.5}),
     "handle": Node(one_of={"bar": 0.6, "pocket": 0.4}, choice="handle_style"),
     "bar": Node(), "pocket": Node(),
     "control_panel": Node(label="control_panel", optional={"buttons": 0.7}),
     "buttons": Node(repeat={"button": "button_count"}),
     "button": Node(label="button"),
-    "racks": Node(repeat={"rack": rack_count}, optional={"baskets": 0.7}),
-    "rack": Node(label="rack"),
+    "racks": Node(required=("lower_rack",), repeat={"rack": upper_racks, "tray": trays}, optional={"baskets": 0.7}),
+    "lower_rack": Node(label="rack", repeat={"tine_row": "tine_rows"}),
+    "rack": Node(label="rack", repeat={"tine_row": "upper_tine_rows"}, optional={"cup_shelves": 0.7}),
+    "tray": Node(label="rack"),
+    "tine_row": Node(label="tines"),
+    "cup_shelves": Node(repeat={"cup_shelf": "cup_shelf_count"}),
+    "cup_shelf": Node(label="shelf"),
     "baskets": Node(repeat={"basket": "basket_count"}),
     "basket": Node(label="basket"),
 })
 """Designs (``design``): a ``freestanding`` machine (finished sides, a worktop), an ``integrated`` one
 behind a cabinet front panel (shaker style, the control strip above it if there is one), a ``compact``
 counter-top model (one rack) and a ``dish_drawer`` (two drawers stacked, each a tub with its own rack,
-pulled out by a bar handle). Cutlery ``baskets`` stand in the lowest rack (not in a cutlery tray)."""
+pulled out by a bar handle). Cutlery ``baskets`` stand in the lowest rack (not in a cutlery tray) and lift
+out of it. The lower rack (and each drawer's rack) carries 2-4 rows of fold-down plate tines instead of
+fixed ones; an upper rack 0-2 rows and optional flip-down cup shelves on its sides (1: the left one, 2:
+both). Real racks: Bosch 300/500 Series (two fold-down tine sections in each rack, cup shelves, a third
+rack), Miele G 7000 ("FlexCare" fold-down spikes, cup racks), Whirlpool WDT750 (fold-down tines),
+Fisher & Paykel DD60 DishDrawer (fold-down tines in each drawer's rack)."""
 
 PARAMS = (
     Float("width", "overall width (Y)", "m", 0.44, 0.66),
@@ -81,6 +102,12 @@ PARAMS = (
     Float("rack_travel", "rack slide-out as a fraction of its own depth", "", 0.6, 0.8),
     Float("wire_pitch", "spacing of the rack wires", "m", 0.045, 0.07),
     Int("basket_count", "cutlery baskets in the lowest rack (has_baskets)", "", 1, 4),
+    Int("tine_rows", "fold-down tine rows in the lower rack (and in each drawer's rack)", "", 2, 4),
+    Int("upper_tine_rows", "fold-down tine rows in an upper rack", "", 0, 2),
+    Int("cup_shelf_count", "flip-down cup shelves of an upper rack (has_cup_shelves): left, or both sides", "",
+        1, 2),
+    Float("basket_lift", "lift of a cutlery basket out of its rack (shortened to the rack above)", "m",
+          0.03, 0.06),
     Float("handle_length", "handle length as a fraction of the width", "", 0.35, 0.7),
     Float("control_height", "control panel height (has_control_panel)", "m", 0.06, 0.1),
     Int("button_count", "push buttons on the control panel (has_buttons)", "", 2, 6),
@@ -121,6 +148,14 @@ sump and heater (service-part listings, e.g. Bosch 00651956 circulation pump ~3.
 
 
 class DishwasherLayout(A.PanelNodes):
+    def steel(self, pieces: list[g.Piece]) -> list[g.Piece]:
+        """A painted cabinet is painted steel sheet, but the painted family is massed as board (750 kg/m^3):
+        its sheet pieces count 7850 / 750 times thicker (a painted compact model weighed 10 kg)."""
+        if self.p["body_finish"] != "painted":
+            return pieces
+        return [pc.replace(sheet=pc.sheet * 7850.0 / 750.0) if pc.sheet > 0 and pc.material == "body" else pc
+                for pc in pieces]
+
     def pump(self, xb0: float, xb1: float, zf: float, zh: float) -> list[g.Piece]:
         """The wash pump with its motor and the sump in the base under the tub (hidden, no collision):
         a steel can in the ``tub`` slot (stainless, 7850 kg/m^3) whose wall makes it :data:`PUMP_KG`."""
@@ -150,7 +185,7 @@ class DishwasherLayout(A.PanelNodes):
         band = 0.025 + (p["control_height"] if ctrl else 0.0) + (0.03 if ctrl and handle else 0.0)
         if handle and not ctrl:
             band = 0.07
-        body = A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + self.pump(xb0, xb1, zf, zh)
+        body = self.steel(A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf)) + self.pump(xb0, xb1, zf, zh)
         if design == "freestanding":  # a worktop over the cabinet, behind the door
             body.append(g.box_between([xb0, y0, H], [xb1, y1, H + WORKTOP], "worktop",
                                       bevel=0.004))
@@ -188,7 +223,7 @@ class DishwasherLayout(A.PanelNodes):
                 sheet([xb1 - 0.004, y0, zf + 0.004], [xf - 0.012, y1, zk - 0.004], "plinth")]
         body += [g.cylinder([x, y, 0.0], [x, y, zf], 0.015, "feet", 16) for x in (xb0 + 0.04, xb1 - 0.05)
                  for y in (y0 + 0.04, y1 - 0.04)]
-        self.add("body", "body", body)
+        self.add("body", "body", self.steel(body))
         return dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
 
     def dish_drawer(self, node, xs, ys, zs):
@@ -216,8 +251,32 @@ class DishwasherLayout(A.PanelNodes):
                   top=tz1 - 0.01)
 
     def drawer_rack(self, node, drawer, xs, cy1, za, top):
-        name = self.add(f"{drawer}_rack", "rack", A.dish_rack(xs, cy1, za, top, self.p["wire_pitch"], "lower"))
+        name = self.add(f"{drawer}_rack", "rack", A.dish_rack(xs, cy1, za, top, self.p["wire_pitch"], "lower",
+                                                               tines=False))
         self.fix(drawer, name)
+        self._tines(node, name, xs, cy1 - 0.02, za, top, 0.03)
+
+    def _tines(self, node, rack, xs, ry, za, top, front, yh=None):
+        """The fold-down tine rows of a rack, side by side across it (each in its own strip), along X from
+        behind ``front`` (metres kept free at the rack's front) to its back; each folds flat about its bar
+        towards -Y, into its strip, and stands leaning 6 % of its height against the fold."""
+        rows = node.of("tine_row")
+        if not rows:
+            return
+        yh = ry - 0.01 if yh is None else yh
+        z = A.dish_rack_floor(za)
+        strip = 2 * yh / len(rows)
+        h = min(0.16, 0.85 * (top - z), strip - 0.02)
+        for k, kid in enumerate(rows):
+            y = -yh + k * strip + h + 0.008
+            self.grow(kid, name=f"{rack}_tines_{k}", rack=rack, pieces=A.tine_row((xs[0] + 0.03, xs[1] - front), y, z,
+                                                                                   h, 0.06 * h), at=(y, z))
+
+    def tine_row(self, node, name, rack, pieces, at):
+        y, z = at
+        self.add(name, "tines", pieces)
+        # about +X a standing tine folds towards -Y
+        self.hinge(rack, name, Frame.at((0.0, y, z), z=(1, 0, 0)), upper=math.pi / 2)
 
     def door(self, node, box, band):
         x0, x1, y0, y1, z0, z1 = box
@@ -287,7 +346,7 @@ class DishwasherLayout(A.PanelNodes):
 
     def racks(self, node, cav, z):
         cx0, cx1, cy0, cy1 = cav[:4]
-        kids = node.of("rack")
+        kids = [*node.of("lower_rack"), *node.of("rack"), *node.of("tray")]
         n = len(kids)
         shares = RACK_SHARES[n]
         span = z[1] - z[0]
@@ -296,37 +355,69 @@ class DishwasherLayout(A.PanelNodes):
         for k, (kid, share) in enumerate(zip(kids, shares)):
             zb = za + span * share / sum(shares)
             top = zb - (0.0 if k == n - 1 else RACK_GAP + 0.006)  # this rack's highest point
-            kind = "tray" if n >= 3 and k == n - 1 else ("lower" if k == 0 and n >= 2 else "upper")
+            kind = {"lower_rack": "lower", "rack": "upper", "tray": "tray"}[kid.kind]
             for s in (-1, 1):  # rails: channels on the side liners
                 ya, yb = sorted((s * (cy1 - 0.013), s * (cy1 + A.TUB_LINER)))
                 rail = g.box_between([cx0 + 0.03, ya, za - RACK_GAP - 0.01], [cx1 - 0.004, yb, za - RACK_GAP], "tub")
                 self.extend("body", [rail])
-            self.grow(kid, k=k, xs=xs, cy1=cy1, za=za, top=top, kind=kind)
+            front = 0.03 + (0.012 + min(0.12, 0.35 * (xs[1] - xs[0])) if k == 0 and node.one("baskets") else 0.0)
+            self.grow(kid, k=k, xs=xs, cy1=cy1, za=za, top=top, kind=kind, front=front)
             if k == 0 and node.one("baskets"):
                 self.grow(node.one("baskets"), rack="rack_0", xs=xs, ry=cy1 - 0.02, za=za, top=top)
             za = zb
 
-    def rack(self, node, k, xs, cy1, za, top, kind):
+    def rack(self, node, k, xs, cy1, za, top, kind, front):
         p = self.p
-        name = self.add(f"rack_{k}", "rack", A.dish_rack(xs, cy1, za, top, p["wire_pitch"], kind))
+        name = self.add(f"rack_{k}", "rack", A.dish_rack(xs, cy1, za, top, p["wire_pitch"], kind,
+                                                         tines=kind != "lower"))
         self.slide("body", name, Frame.at((xs[1], 0.0, za), z=(1, 0, 0)), upper=p["rack_travel"] * (xs[1] - xs[0]),
                    requires_open="door")
+        ry = cy1 - 0.02
+        shelves = node.one("cup_shelves") if kind == "upper" else None
+        w = 0.0
+        if shelves:
+            zc = za + A.RACK_WHEEL
+            zt = zc + 0.7 * max(top - zc, 0.02) - A.DISH_WIRE  # the rack's top rim
+            w = min(0.08, 0.45 * (zt - zc))
+            self.grow(shelves, rack=name, xs=(xs[0] + 0.04, xs[1] - 0.04), ry=ry, z=zt - w - 0.01, w=w)
+        if kind != "tray":
+            self._tines(node, name, xs, ry, za, top, front, yh=ry - w - 0.03 if shelves else None)
+
+    lower_rack = tray = rack
+
+    def cup_shelves(self, node, rack, xs, ry, z, w):
+        for k, kid in enumerate(node.of("cup_shelf")):
+            self.grow(kid, k=k, rack=rack, xs=xs, ry=ry, z=z, w=w)
+
+    def cup_shelf(self, node, k, rack, xs, ry, z, w):
+        """The first on the left side wall, the second on the right; each swings down inwards to level."""
+        s = -1 if k == 0 else 1
+        y = s * (ry - 0.015)
+        name = self.add(f"{rack}_cup_shelf_{k}", "shelf", A.cup_shelf(xs, y, z, w, s * 0.006))
+        # about -X (left) or +X (right) the top swings inwards
+        self.hinge(rack, name, Frame.at((0.0, y, z), z=(s, 0, 0)), upper=math.pi / 2)
 
     def baskets(self, node, rack, xs, ry, za, top):
         """Open cutlery baskets side by side at the front of the lowest rack, fixed to it."""
         rx0, rx1 = xs
         z0 = za + A.RACK_WHEEL + 2.6 * 0.0025 + 0.001  # on the bottom grid
         kids = node.of("basket")
-        h = max(min(0.14, top - z0 - 0.004), 0.04)
+        h = max(min(0.14, 0.75 * (top - z0)), 0.04)
+        lift = min(self.p["basket_lift"], top - z0 - h - 0.002)
         depth = min(0.12, 0.35 * (rx1 - rx0))
         bw = min(0.12, (2 * ry - 0.02) / len(kids) - 0.004)
         for k, kid in enumerate(kids):
             y1 = ry - 0.01 - k * (bw + 0.004)
             self.grow(kid, k=k, rack=rack, pieces=A.open_bin((rx1 - 0.012 - depth, rx1 - 0.012), (y1 - bw, y1), z0, h,
-                                                             "basket"))
+                                                             "basket"), at=(rx1 - 0.012, y1 - bw / 2, z0), lift=lift)
 
-    def basket(self, node, k, rack, pieces):
-        self.fix(rack, self.add(f"basket_{k}", "basket", pieces))
+    def basket(self, node, k, rack, pieces, at, lift):
+        """A cutlery basket stands in its rack and lifts straight up out of it (below the rack above)."""
+        name = self.add(f"basket_{k}", "basket", pieces)
+        if lift > 0.01:
+            self.slide(rack, name, Frame.at(at), upper=lift)
+        else:
+            self.fix(rack, name)
 
 
 CATEGORY = Category("dishwasher", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DishwasherLayout, MATERIALS,

@@ -27,8 +27,11 @@ from .parts import hardware
 
 
 def dials(p, rng) -> int:
-    """knob_count, or 2 without push buttons, else 1"""
-    return p["knob_count"] or (1 if p["has_buttons"] else 2)
+    """knob_count, or 1 beside a keypad; without one 1 or 2 (drawn): a timer dial alone (Sharp R-21LVF) or
+    timer and power dials (most manual counter-top models)"""
+    if p["knob_count"]:
+        return p["knob_count"]
+    return 1 if p["has_buttons"] else 1 + int(rng.integers(0, 2))
 
 
 def size(p: dict, design: str) -> tuple[float, float, float]:
@@ -41,6 +44,36 @@ def size(p: dict, design: str) -> tuple[float, float, float]:
     if design == "drawer_model":
         return (0.606 if W < 0.53 else 0.759), 0.56 + 0.09 * (D - 0.32) / 0.14, 0.39
     return W, D, H
+
+
+KEYPAD_ROWS = 6
+"""Counter-top keypads are grids of three columns: a 10-key number pad (four rows: 1-9, then 0 between
+two function keys) under one or two rows of function keys, e.g. Panasonic NN-SN686S, GE JES1657SRSS,
+Toshiba ML-EM34P owner's manuals: 3-6 rows of three. Below four rows it is a function-key panel with
+the time set by a dial."""
+
+
+def key_rows(p: dict) -> int:
+    """button_rows; up to three always fit (the layout shrinks keys to 50 %), a fourth to sixth row only
+    where the panel holds it with keys at 65 % of button_height or more (a drawer model's strip: 4 rows)"""
+    rows = p["button_rows"]
+    if rows <= 3:
+        return rows
+    design = p["design"]
+    if design == "drawer_model":
+        return min(rows, 4)
+    W, _, H = size(p, design)
+    ph = H - (VENT if design == "over_the_range" else 0.0) - p["feet_height"] - 2 * EDGE
+    pw = p["panel_fraction"] * W
+    n_dials = dials(p, None) if p["has_knob"] else 0
+    release = p["door_opener"] == "release_button" and design in ("turntable", "flatbed")
+    f = 0.65
+    kr, bh = min(p["knob_radius"], 0.38 * pw) * f, p["button_height"] * f
+    dh = min(max(0.12 * ph, 0.022), 0.04) * f
+    fixed = [dh] + [2 * kr + 0.012] * n_dials + ([RELEASE_H] if release else [])
+    while rows > 3 and sum(fixed) + rows * 1.7 * bh + 0.008 * (len(fixed) + rows - 1) > ph - 2 * PANEL_MARGIN:
+        rows -= 1
+    return rows
 
 
 GRAMMAR = Grammar("microwave", {
@@ -58,7 +91,7 @@ GRAMMAR = Grammar("microwave", {
     "release_button": Node(label="button"),
     "plate": Node(label="plate"),
     "control_panel": Node(label="control_panel", optional={"buttons": 0.75, "knob": 0.8}),
-    "buttons": Node(repeat={"button": lambda p, rng: 3 * p["button_rows"]}),
+    "buttons": Node(repeat={"button": lambda p, rng: 3 * key_rows(p)}),
     "button": Node(label="button"),
     "knob": Node(repeat={"dial": dials}),
     "dial": Node(label="knob"),
@@ -78,7 +111,8 @@ PARAMS = (
     Float("door_thickness", "door thickness", "m", 0.03, 0.045),
     Float("window_margin", "door frame width around the window (hinge side, top, bottom)", "m", 0.025, 0.055),
     Float("plate_fraction", "turntable diameter as a fraction of the largest that fits", "", 0.8, 0.95),
-    Int("button_rows", "rows of three push buttons", "", 1, 3),
+    Int("button_rows", "rows of three push buttons (4-6: a number pad with function keys, where it fits)", "",
+        1, KEYPAD_ROWS),
     Float("button_height", "push button height (Z); press depth is 1/8 of it", "m", 0.012, 0.02),
     Choice("button_shape", "push button shape", choices=("rect", "round"), weights=(0.65, 0.35)),
     Int("knob_count", "dials; auto = 2 without push buttons, else 1", "", 1, 2, auto=True),
@@ -232,6 +266,10 @@ class MicrowaveLayout(A.PanelNodes):
         tray = (cx0 + 0.02, cy0 + c, cy1 - c, cz0 + c, cz1 - c)
         pieces = A.storage_drawer((xf + 0.003, xd1, y0, y1, z0, z1), tray, wall=0.004)
         pieces = [pieces[0].replace(material="body")] + [pc.replace(material="interior") for pc in pieces[1:]]
+        # front and tray are 0.6 mm steel sheet like the casing and liner, under any finish (a painted family is
+        # massed as board: painted drawers weighed 0.9 kg; 0.8 mm enamelled ones 7.9 kg)
+        sheets = {"body": steel_sheet(p["body_finish"]), "interior": steel_sheet(p["interior_finish"])}
+        pieces = [pc.replace(sheet=sheets[pc.material]) for pc in pieces]
         pull = hardware.edge_pull(p["handle_length"] * (y1 - y0), "handle", depth=0.014, lip=0.016).attached(
             "mount", to=Frame.at((xd1, 0.0, z1 - 0.02), z=(1, 0, 0), x=(0, 1, 0)))
         hole = (y0 + 0.12 * (y1 - y0), z0 + 0.05, y1 - 0.12 * (y1 - y0), z1 - 0.05)
@@ -283,7 +321,7 @@ class MicrowaveLayout(A.PanelNodes):
         yc = (ya + yb) / 2
         buttons, knob = node.one("buttons"), node.one("knob")
         n_dials = len(knob.of("dial")) if knob else 0
-        rows = p["button_rows"] if buttons else 0
+        rows = len(buttons.of("button")) // 3 if buttons else 0
         display = bool(buttons) or not n_dials
         keypad = not buttons and not n_dials  # a flat membrane keypad instead
         bh, kr = p["button_height"], min(p["knob_radius"], 0.38 * pw)
@@ -349,7 +387,10 @@ class MicrowaveLayout(A.PanelNodes):
             n = 3 * rows
             nrow = min(rows, 2)
             ncol = -(-n // nrow)
-            bh = min(p["button_height"], (ph - 0.02 - (nrow - 1) * 0.008) / nrow)
+            room = yb - 0.03 - n_dials * (2 * min(p["knob_radius"], 0.4 * ph - 0.004) + 0.02) - y - 0.01
+            wide = 1.8 if p["button_shape"] == "rect" else 1.0  # key width / height
+            bh = min(p["button_height"], (ph - 0.02 - (nrow - 1) * 0.008) / nrow,
+                     (room / ncol - 2 * A.CLEAR - 0.008) / wide)  # the grid fits beside the dials
             half = (0.9 * bh, bh / 2) if p["button_shape"] == "rect" else (bh / 2, bh / 2)
             pitch_y, pitch_z = 2 * half[0] + 2 * A.CLEAR + 0.008, bh + 0.008
             proud = 0.3 * bh + 0.002

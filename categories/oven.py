@@ -140,7 +140,7 @@ class OvenLayout(A.PanelNodes):
     def steel(self, pieces):
         """Painted sheet pieces weigh as painted steel (:data:`PAINTED_STEEL`): the door's inner frame
         (``door_inner``, always painted) and, on a painted oven, its casing-finish pieces."""
-        painted = {"door_inner"} | ({"body", "door"} if self.p["body_finish"] == "painted" else set())
+        painted = {"door_inner", "plinth"} | ({"body", "door"} if self.p["body_finish"] == "painted" else set())
         return [pc.replace(sheet=pc.sheet * PAINTED_STEEL) if pc.sheet > 0 and pc.material in painted else pc
                 for pc in pieces]
 
@@ -181,10 +181,10 @@ class OvenLayout(A.PanelNodes):
         elif design == "warming":
             self.grow(style.one("warming_drawer"), xs=(xb, xf, xd1), ys=(y0, y1), zs=(z_pl, z_dt))
         elif not double:  # a fixed drawer front with a trim line
-            self.extend("body", [g.box_between([xf - T, y0, z_pl], [xd1, y1, z_dt], "body", bevel=0.002)
-                                 .replace(sheet=A.OVEN_SHEET),
-                                 g.box_between([xd1, -0.3 * W, z_dt - 0.03], [xd1 + 0.002, 0.3 * W, z_dt - 0.025],
-                                               "trim")])
+            self.extend("body", self.steel([g.box_between([xf - T, y0, z_pl], [xd1, y1, z_dt], "body", bevel=0.002)
+                                            .replace(sheet=A.OVEN_SHEET),
+                                            g.box_between([xd1, -0.3 * W, z_dt - 0.03],
+                                                          [xd1 + 0.002, 0.3 * W, z_dt - 0.025], "trim")]))
         self.grow(node.one("door"), box=(xd1 - ft, xd1, y0 + 0.003, y1 - 0.003, z_h, z_dtop))
         self.grow(node.one("racks"), cav=cav)
         if rng_style:
@@ -195,7 +195,8 @@ class OvenLayout(A.PanelNodes):
         if not double:
             self.grow(style, xs=(xb, xf, xd1), ys=(y0, y1), z_dtop=z_dtop + gap_top, front=front, H=H)
         else:
-            self.extend("body", [g.box_between([xb, y0, H - T], [xf - T, y1, H], "body").replace(sheet=A.OVEN_SHEET)])
+            self.extend("body", self.steel([g.box_between([xb, y0, H - T], [xf - T, y1, H], "body")
+                                            .replace(sheet=A.OVEN_SHEET)]))
 
     def _section(self, xs, zs, z_dtop, ztop, frame_top, keep_base=True):
         """One oven's casing (sides, back, floor, front frame, liner) from ``zs[0]`` up; returns its cavity.
@@ -211,6 +212,7 @@ class OvenLayout(A.PanelNodes):
         # weighed ~20 kg: ranges came out at 150-185 kg against 60-75 kg real)
         pieces = [pc.replace(sheet=A.OVEN_SHEET) if pc.material in ("body", "plinth") and not pc.sheet else pc
                   for pc in pieces]
+        pieces = self.steel(pieces)  # a painted casing is painted steel (a painted wall oven weighed 20 kg)
         if "body" in self.bp.parts:
             self.extend("body", pieces)
         else:
@@ -234,9 +236,10 @@ class OvenLayout(A.PanelNodes):
 
     def range(self, node, xs, ys, z_dtop, front, H):
         xb, xf, xd1 = xs
-        self.extend("body", [g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop").replace(sheet=A.OVEN_SHEET),
-                             g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body")
-                             .replace(sheet=A.OVEN_SHEET)])  # trim strip
+        self.extend("body", self.steel([g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop")
+                                        .replace(sheet=A.OVEN_SHEET),
+                                        g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body")
+                                        .replace(sheet=A.OVEN_SHEET)]))  # trim strip
         # a vent slot strip along the back of the cooktop (the oven vent of a real range)
         self.extend("body", [g.box_between([front + 0.004, y - 0.004, H], [front + 0.01, y + 0.004, H + 0.002], "trim")
                              for y in np.linspace(ys[0] + 0.08, ys[1] - 0.08, 9)])
@@ -245,7 +248,8 @@ class OvenLayout(A.PanelNodes):
     warming = range
 
     def wall(self, node, xs, ys, z_dtop, front, H):
-        self.extend("body", [g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body").replace(sheet=A.OVEN_SHEET)])
+        self.extend("body", self.steel([g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body")
+                                        .replace(sheet=A.OVEN_SHEET)]))
 
     def cooktop(self, node, xs, ys, H):
         """Burners in columns; with grates, one over each column."""
@@ -289,9 +293,10 @@ class OvenLayout(A.PanelNodes):
         fx0, tx0 = xf + 0.003, xb + T + 0.015
         pieces = A.storage_drawer((fx0, xd1, y0 + 0.003, y1 - 0.003, z_pl + 0.002, z_dt),
                                   (tx0, y0 + T + c, y1 - T - c, z_pl + T + c, z_dt - 0.012))
+        if warming:  # an enamel tray (before the painted-steel scaling: scaled, a painted oven's tray weighed 47 kg)
+            pieces = [pc.replace(material="interior") if k else pc for k, pc in enumerate(pieces)]
         pieces = self.steel(pieces)
         if warming:
-            pieces = [pc.replace(material="interior") if k else pc for k, pc in enumerate(pieces)]
             size = hardware.HandleSize(standoff=0.03, bar_radius=0.008, post_radius=0.0065, inset=0.02)
             zc = (z_pl + z_dt) / 2 + 0.01
             pull = hardware.bar_handle(p["handle_length"] * (y1 - y0), "handle", size).attached(

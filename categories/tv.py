@@ -31,7 +31,7 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import displays as S
 
 GRAMMAR = Grammar("tv", {
-    "tv": Node(label="screen", required=("connector", "panel"), optional={"buttons": 0.6},
+    "tv": Node(label="screen", required=("connector", "panel"), optional={"buttons": 0.9},
                one_of={"single_post": 0.45, "two_legs": 0.3, "wall_mount": 0.25}, choice="stand_style"),
     "panel": Node(one_of={"flat": 0.75, "curved": 0.25}, choice="panel_shape"),
     "flat": Node(), "curved": Node(),
@@ -64,7 +64,8 @@ PARAMS = (
     Int("arm_links", "links of a wall-mount arm (1: a swivel bracket, 2: an articulating arm)", "", 1, 2),
     Float("curve_radius", "radius of a curved screen (Samsung / LG curved TVs: 3000R-4200R)", "m", 3.0, 4.2),
     Float("arm_length", "wall-mount arm reach from the wall plate to the tilt pivot", "m", 0.15, 0.45),
-    Int("button_count", "buttons on the screen", "", 1, 4),
+    Int("button_count", "push keys on the screen: 1 (a power key) to 7 (power, input, menu, volume +/-, channel"
+        " +/-), as on LED TVs' side or bottom key rows (Samsung UN*EH / LG *LB owner's manuals)", "", 1, 7),
     Choice("button_place", "where the buttons are", choices=("side", "bottom")),
     Choice("bezel_finish", "bezel material", choices=("black", "grey", "silver"), weights=(0.6, 0.2, 0.2)),
     Choice("stand_finish", "stand material", choices=("metal", "black", "chrome"), weights=(0.4, 0.4, 0.2)),

@@ -45,7 +45,7 @@ def test_parts_labels_and_materials(seed):
     p, bp = make(seed)
     assert bp.root == "body"
     assert bp.parts["body"].label == "body" and bp.parts["door"].label == "door"
-    assert {part.label for part in bp.parts.values()} <= {"body", "door", "rack", "shelf"}
+    assert {part.label for part in bp.parts.values()} <= {"body", "door", "rack", "shelf", "button"}
     door = bp.parts["door"].pieces
     assert any(pc.material == "glass" for pc in door) and bp.materials["glass"].startswith("glass")
     assert sum(pc.name == "handle" for pc in door) >= 1
@@ -100,7 +100,9 @@ def test_joint_kinds_axes_limits(seed):
             assert r.axis == pytest.approx((1, 0, 0)) and r.lower == 0.0
             b = np.array([pc.bounds for pc in bp.parts[j.child].pieces])
             assert r.upper == pytest.approx(p["rack_travel"] * (b[:, 1, 0].max() - b[:, 0, 0].min()), rel=1e-6)
-    assert 1 <= len(movable(bp)) <= 6
+    keys = sum(bp.parts[j.child].label == "button" for j in movable(bp))  # the control strip's push keys
+    assert keys == (p["key_count"] if p["has_control_panel"] else 0)
+    assert 1 <= len(movable(bp)) - keys <= 6
 
 
 def test_door_opens_outward():
@@ -208,7 +210,8 @@ def test_seeds_differ():
 def test_each_design_is_forced_and_has_its_mechanism(design):
     """``--set design=...`` forces a design; each has its own structure and moving parts, all free at rest
     and with every joint (doors first) open."""
-    p, bp = make(7, design=design, interior="racks", rack_count=4, bin_count=3, crisper_count=2)
+    p, bp = make(7, design=design, interior="racks", rack_count=4, right_rack_count=4, bin_count=3, crisper_count=2,
+                 has_freezer=False)
     assert p["design"] == design
     doors = sorted(n for n, part in bp.parts.items() if part.label == "door")
     assert doors == (["door", "right_door"] if design == "dual_zone" else ["door"])
@@ -232,3 +235,23 @@ def test_each_design_is_forced_and_has_its_mechanism(design):
         left, right = by_child(bp, "door").dofs[0], by_child(bp, "right_door").dofs[0]
         assert left.origin[1] < 0 < right.origin[1]
     assert contacts(bp, {}) == []
+
+
+def test_control_keys_freezer_flap_and_zone_counts_are_forced():
+    """--set forces the control strip's 2-5 push keys (pressing in along -X), an undercounter fridge's freezer
+    flap (hinged at its top, swinging up only with the door open) and a dual-zone cooler's right zone count."""
+    p, bp = make(3, design="undercounter", has_control_panel=True, key_count=5, has_freezer=True)
+    keys = [j for j in movable(bp) if bp.parts[j.child].label == "button"]
+    assert len(keys) == 5 and all(j.parent == "body" and j.dofs[0].axis == pytest.approx((-1, 0, 0)) for j in keys)
+    flap = by_child(bp, "freezer_flap")
+    assert flap.kind == "revolute" and flap.requires_open == "door" and bp.parts["freezer_flap"].label == "flap"
+    assert flap.dofs[0].axis == pytest.approx((0, -1, 0)) and flap.dofs[0].upper == pytest.approx(math.pi / 2)
+    flap_lo = min(pc.bounds[0, 2] for pc in bp.parts["freezer_flap"].pieces)
+    shelves = [n for n, part in bp.parts.items() if part.label in ("rack", "shelf")]
+    assert shelves and max(pc.bounds[1, 2] for n in shelves for pc in bp.parts[n].pieces) < flap_lo
+    q = {("door", 0): by_child(bp, "door").dofs[0].upper, ("freezer_flap", 0): math.pi / 2}
+    assert not contacts(bp, q)
+    _, bp = make(3, design="undercounter", has_control_panel=False, has_freezer=False)
+    assert "freezer_flap" not in bp.parts and not any(part.label == "button" for part in bp.parts.values())
+    _, bp = make(3, design="dual_zone", rack_count=5, right_rack_count=3)
+    assert sum(n.startswith("rack_") for n in bp.parts) == 4 and sum(n.startswith("right_rack_") for n in bp.parts) == 2

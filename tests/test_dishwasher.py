@@ -40,7 +40,7 @@ def opened(bp, q):
 
 # -- parts, labels, materials -------------------------------------------------------
 
-LABELS = {"body", "door", "rack", "basket", "control_panel", "button"}
+LABELS = {"body", "door", "rack", "basket", "control_panel", "button", "tines", "shelf"}
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -54,8 +54,10 @@ def test_parts_labels_and_materials(seed):
     assert ("control_panel" in bp.parts) == p["has_control_panel"]
     assert any(pc.name == "handle" for pc in bp.parts["door"].pieces) == p["has_handle"]
     baskets = [n for n, part in bp.parts.items() if part.label == "basket"]
-    for n in baskets:
-        assert by_child(bp, n).kind == "fixed" and by_child(bp, n).parent == "rack_0"
+    for n in baskets:  # a cutlery basket lifts straight up out of the lowest rack
+        j = by_child(bp, n)
+        assert j.kind == "prismatic" and j.parent == "rack_0" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+        assert 0.01 < j.dofs[0].upper <= p["basket_lift"]
     used = {pc.material for part in bp.parts.values() for pc in part.pieces}
     assert used <= set(bp.materials)
     links, _ = build_model(bp, {k: 1000.0 for k in bp.materials})
@@ -95,8 +97,12 @@ def test_joint_kinds_axes_limits(seed):
     for j in movable(bp):
         r = j.dofs[0]
         # racks are behind the door: they slide once it is open; nothing else waits for it
-        assert j.requires_open == ("door" if j.child.startswith("rack_") else None), j.child
-        if j.child.startswith("rack_"):
+        label = bp.parts[j.child].label
+        assert j.requires_open == ("door" if label == "rack" else None), j.child
+        if label in ("tines", "shelf"):  # fold-down tines and cup shelves turn a quarter turn about X in a rack
+            assert j.kind == "revolute" and bp.parts[j.parent].label == "rack"
+            assert abs(r.axis[0]) == pytest.approx(1.0) and (r.lower, r.upper) == (0.0, pytest.approx(math.pi / 2))
+        elif label == "rack":
             assert j.kind == "prismatic" and j.parent == "body"
             assert r.axis == pytest.approx((1, 0, 0)) and r.lower == 0.0 and r.upper > 0.2
         elif j.child.startswith("button_"):
@@ -152,7 +158,7 @@ def test_the_door_is_solid(seed):
         assert any(a[1] <= lo[1] + 0.011 and b[1] >= hi[1] - 0.011 and a[2] <= lo[2] + 0.011
                    and b[2] >= hi[2] - 0.011 for a, b in spans), x
     for j in movable(bp):
-        if j.child.startswith("rack_"):
+        if bp.parts[j.child].label == "rack":
             hit = {frozenset((a, b)) for a, b, _ in contacts(bp, {(j.child, 0): at(j, 1.0)})}
             assert hit and all("door" in pair for pair in hit), hit
             assert not contacts(bp, opened(bp, {(j.child, 0): at(j, 1.0)}))
@@ -198,16 +204,45 @@ def test_nothing_below_ground(seed):
 
 
 def test_overrides_drive_the_growth():
+    def racks(bp):
+        return [n for n, part in bp.parts.items() if part.label == "rack"]
+
     _, bp = make(2, rack_count=1, has_baskets=True, basket_count=3)
-    assert [n for n in bp.parts if n.startswith("rack_")] == ["rack_0"]
+    assert racks(bp) == ["rack_0"]
     assert sorted(n for n in bp.parts if n.startswith("basket_")) == ["basket_0", "basket_1", "basket_2"]
     _, bp = make(2, rack_count=4, has_baskets=False)
-    assert sum(n.startswith("rack_") for n in bp.parts) == 4 and not any(n.startswith("basket") for n in bp.parts)
+    assert len(racks(bp)) == 4 and not any(n.startswith("basket") for n in bp.parts)
     _, bp = make(2, has_control_panel=True, has_buttons=True, button_count=5)
     assert sum(n.startswith("button_") for n in bp.parts) == 5
     _, bp = make(2, has_control_panel=False, has_handle=False)
-    assert len(movable(bp)) == 1 + sum(n.startswith("rack_") for n in bp.parts)
+    moving = [bp.parts[j.child].label for j in movable(bp)]
+    assert set(moving) <= {"door", "rack", "tines", "shelf", "basket"} and moving.count("rack") == len(racks(bp))
     assert not any(pc.name == "handle" for pc in bp.parts["door"].pieces)
+
+
+def test_fold_down_tines_cup_shelves_and_lift_out_baskets_are_forced():
+    """--set forces 2-4 fold-down tine rows in the lower rack, 0-2 in an upper rack, 1-2 flip-down cup
+    shelves on an upper rack (none on the cutlery tray), and baskets that lift out of the lower rack."""
+    over = dict(rack_count=3, tine_rows=4, upper_tine_rows=2, has_cup_shelves=True, cup_shelf_count=2,
+                has_baskets=True, basket_count=2)
+    p, bp = make(3, **over)
+    kids = {}
+    for j in movable(bp):
+        kids.setdefault(j.parent, []).append(bp.parts[j.child].label)
+    assert sorted(kids["rack_0"]) == ["basket"] * 2 + ["tines"] * 4
+    assert sorted(kids["rack_1"]) == ["shelf"] * 2 + ["tines"] * 2
+    assert "rack_2" not in kids  # the cutlery tray
+    for j in movable(bp):  # each folds a quarter turn and lands clear of everything but its rack
+        if bp.parts[j.child].label in ("tines", "shelf", "basket"):
+            q = opened(bp, {(j.child, 0): at(j, 1.0), (j.parent, 0): by_child(bp, j.parent).dofs[0].upper})
+            assert not contacts(bp, q), j.child
+    _, bp = make(3, **{**over, "tine_rows": 2, "upper_tine_rows": 0, "has_cup_shelves": False})
+    labels = [bp.parts[j.child].label for j in movable(bp)]
+    assert labels.count("tines") == 2 and "shelf" not in labels
+    _, bp = make(3, design="dish_drawer", tine_rows=3)  # each drawer's rack has its own rows
+    for d in ("drawer_0", "drawer_1"):
+        rack = f"{d}_rack"
+        assert sum(j.parent == rack and bp.parts[j.child].label == "tines" for j in movable(bp)) == 3
 
 
 def test_seeds_differ():

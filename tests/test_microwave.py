@@ -151,7 +151,8 @@ def test_joint_kinds_axes_and_limits(seed):
         elif part.label == "knob":
             assert j.kind == "continuous" and j.parent == "control_panel"
             assert abs(j.dofs[0].axis[0]) == pytest.approx(1.0)
-    assert 2 <= len(movable(bp)) <= 14
+    # door, plate, up to six rows of three keys (a number pad with function keys), two dials, a release
+    assert 2 <= len(movable(bp)) <= 2 + 3 * mw.KEYPAD_ROWS + 3
 
 
 # -- clearances ----------------------------------------------------------------------------
@@ -292,3 +293,21 @@ def test_each_design_is_forced_and_has_its_mechanism(design):
     if design == "flatbed":  # a fixed ceramic floor instead of the turntable
         assert any(pc.material == "plate" for pc in bp.parts["body"].pieces)
     assert sum(bp.parts[j.child].label == "button" for j in movable(bp)) == 3 * p["button_rows"]
+
+
+@pytest.mark.parametrize("design", ["turntable", "over_the_range", "drawer_model"])
+def test_a_number_pad_with_function_keys_is_forced(design):
+    """--set button_rows=4..6 grows a keypad of three columns (a number pad and function keys) where the
+    panel holds it: every key a button pressing in along -X inside the panel's outline; a drawer model's
+    strip holds four rows, a tall counter-top panel six."""
+    over = dict(design=design, has_buttons=True, button_rows=6, height=0.34, has_knob=True, knob_count=1)
+    p, bp = make(2, **over)
+    keys = [j for j in movable(bp) if bp.parts[j.child].label == "button" and j.child != "door_release"]
+    assert len(keys) == 3 * mw.key_rows(p) and len(keys) == (12 if design == "drawer_model" else 18)
+    panel = bp.parts["control_panel"].pieces[0].bounds
+    for j in keys:
+        assert j.dofs[0].axis == pytest.approx((-1, 0, 0))
+        lo, hi = np.array([pc.bounds for pc in bp.parts[j.child].pieces]).transpose(1, 0, 2)
+        assert (lo[:, 1:].min(0) > panel[0, 1:]).all() and (hi[:, 1:].max(0) < panel[1, 1:]).all()
+    p, bp = make(2, **{**over, "button_rows": 3})
+    assert sum(bp.parts[j.child].label == "button" for j in movable(bp)) == 9

@@ -244,3 +244,23 @@ def test_panel_shape_is_forced_and_a_curved_panel_bends_forward(shape):
     else:
         assert len(disp) == 1 and lift == pytest.approx(0.0)
     assert len([n for n, part in bp.parts.items() if part.label == "button"]) == 3
+
+
+@pytest.mark.parametrize("place", ["side", "bottom"])
+def test_a_full_key_row_fits_the_smallest_screen(place):
+    """--set button_count=7 (power, input, menu, volume +/-, channel +/-) on a 0.6 m screen: seven keys, each
+    pressing in, inside the screen's outline and clear of each other."""
+    p, bp = make(3, width=0.6, has_buttons=True, button_count=7, button_place=place, panel_shape="flat")
+    keys = [j for j in movable(bp) if bp.parts[j.child].label == "button"]
+    assert len(keys) == 7 and all(j.kind == "prismatic" and j.parent == "screen" for j in keys)
+    b = np.array([pc.bounds for pc in bp.parts["screen"].pieces if pc.material == "bezel"])
+    lo, hi = b[:, 0].min(0), b[:, 1].max(0)
+    boxes = [np.array([pc.bounds for pc in bp.parts[j.child].pieces]) for j in keys]
+    boxes = [(x[:, 0].min(0), x[:, 1].max(0)) for x in boxes]
+    dims = [2] if place == "side" else [1, 2]  # side keys stand proud of the right rim, in its height
+    for a, c in boxes:
+        assert (a[dims] >= lo[dims] - 1e-9).all() and (c[dims] <= hi[dims] + 1e-9).all()
+    for i in range(7):
+        for k in range(i + 1, 7):
+            (a0, a1), (b0, b1) = boxes[i], boxes[k]
+            assert (a1 < b0).any() or (b1 < a0).any()

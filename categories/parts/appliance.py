@@ -204,6 +204,28 @@ def control_strip(x0: float, x1: float, y0: float, y1: float, z0: float, z1: flo
     return pieces
 
 
+def control_strip_keys(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float, n: int):
+    """A strip above a door, flush with its front, with a display and ``n`` push keys in a row to its right
+    (a cooler's electronic thermostat: power, light, up, down, zone ...). Returns the strip's pieces and
+    one ``(piece, press frame, travel)`` per key; a key stands proud of the face and presses in along -X."""
+    W, h = y1 - y0, z1 - z0
+    zc = (z0 + z1) / 2
+    ya, yb = 0.15 * W, 0.46 * W  # the keys' row
+    pitch = (yb - ya) / n
+    half = (min(0.011, 0.5 * pitch - CLEAR - 0.003), min(0.008, 0.3 * h))
+    proud, travel = 0.003, 0.002
+    keys, holes = [], []
+    for k in range(n):
+        y = ya + (k + 0.5) * pitch
+        holes.append(hole_around(y, zc, half))
+        piece = g.box_between([x1 - BEHIND, y - half[0], zc - half[1]], [x1 + proud, y + half[0], zc + half[1]],
+                              "button", bevel=0.0015)
+        keys.append((piece, Frame.at((x1 + proud, y, zc), z=(-1, 0, 0)), travel))
+    pieces = [g.panel([x0, y0, z0], [x1, y1, z1], "frame", "x", holes=holes),
+              g.box_between([x1, -0.12 * W, z0 + 0.25 * h], [x1 + 0.001, 0.12 * W, z1 - 0.25 * h], "display")]
+    return pieces, keys
+
+
 def glass_door(box, hole) -> list[g.Piece]:
     """A frame around a double glass pane and a gasket behind it (all collide)."""
     x0, x1, y0, y1, z0, z1 = box
@@ -308,9 +330,10 @@ def _wire(a, b, r):
     return g.cylinder(a, b, r, "wire", 8)
 
 
-def dish_rack(xs, cy1: float, za: float, top: float, pitch: float, kind: str) -> list[g.Piece]:
+def dish_rack(xs, cy1: float, za: float, top: float, pitch: float, kind: str, tines: bool = True) -> list[g.Piece]:
     """A wire basket on four wheels from ``za`` (the wheels' bottom) up to ``top``: a tall ``lower``
-    rack with plate tines, an ``upper`` rack, or a shallow cutlery ``tray``. Every wire is its own
+    rack with plate tines (``tines=False``: without its fixed tines, for fold-down rows), an ``upper``
+    rack, or a shallow cutlery ``tray``. Every wire is its own
     convex piece; the wheels ride over rails beside the side liners (out to ``cy1 - 6 mm``)."""
     rx0, rx1 = xs
     ry = cy1 - 0.02  # basket half width
@@ -337,7 +360,7 @@ def dish_rack(xs, cy1: float, za: float, top: float, pitch: float, kind: str) ->
     for k in range(1, nxs):
         x = rx0 + k * (rx1 - rx0) / nxs
         pieces += [_wire([x, y, zc], [x, y, zt], 0.8 * r) for y in (-ry, ry)]
-    if kind == "lower":  # plate tines: two rows across the rack
+    if kind == "lower" and tines:  # plate tines: two rows across the rack
         t_h = min(0.85 * height, 0.16)
         for xr in (rx0 + 0.3 * (rx1 - rx0), rx0 + 0.5 * (rx1 - rx0)):
             pieces.append(_wire([xr, -ry, zc + 1.6 * r], [xr, ry, zc + 1.6 * r], r))
@@ -345,6 +368,40 @@ def dish_rack(xs, cy1: float, za: float, top: float, pitch: float, kind: str) ->
             pieces += [_wire([xr, -ry + k * 2 * ry / nt, zc + 2 * r], [xr, -ry + k * 2 * ry / nt, zc + t_h], 0.7 * r)
                        for k in range(1, nt)]
     pieces.append(g.box_between([rx1 - 0.006, -0.06, zt - 0.012], [rx1 + 0.004, 0.06, zt + r], "wheel", bevel=0.002))
+    return pieces
+
+
+DISH_WIRE = 0.0025  # wire radius of a dish rack
+
+
+def dish_rack_floor(za: float) -> float:
+    """Height of the axis of a fold-down row over a dish rack whose wheels stand on ``za``: clear of the
+    bottom grid's wires, so a folded row lies over them."""
+    return za + RACK_WHEEL + 4 * DISH_WIRE
+
+
+def tine_row(xs, y: float, z: float, h: float, lean: float, pitch: float = 0.04) -> list[g.Piece]:
+    """A fold-down row of plate tines: a bar along X at ``(y, z)`` (the hinge line) carrying tines ``h``
+    tall every ``pitch``, their tops leaning ``lean`` along Y so gravity holds the row on its upright
+    stop (Bosch / Miele "flip tines": rows that fold flat for pots, 2-4 per lower rack)."""
+    xa, xb = xs
+    r = DISH_WIRE
+    n = max(2, int((xb - xa) / pitch))
+    return [_wire([xa, y, z], [xb, y, z], r)] + [
+        _wire([xa + (k + 0.5) * (xb - xa) / n, y, z], [xa + (k + 0.5) * (xb - xa) / n, y + lean, z + h], 0.7 * r)
+        for k in range(n)]
+
+
+def cup_shelf(xs, y: float, z: float, w: float, lean: float) -> list[g.Piece]:
+    """A flip-down cup shelf of an upper dish rack: a wire frame ``w`` tall standing at ``y`` on its hinge
+    line at height ``z`` along X, its top leaning ``lean`` along Y onto the rack's side wall (it rests
+    folded up there and swings down to a level shelf; Bosch, Whirlpool upper racks)."""
+    xa, xb = xs
+    r = 0.8 * DISH_WIRE
+    top = (y + lean, z + w)
+    pieces = [_wire([xa, y, z], [xb, y, z], DISH_WIRE), _wire([xa, top[0], top[1]], [xb, top[0], top[1]], r)]
+    n = max(2, int((xb - xa) / 0.03))
+    pieces += [_wire([xa + k * (xb - xa) / n, y, z], [xa + k * (xb - xa) / n, *top], r) for k in range(n + 1)]
     return pieces
 
 
