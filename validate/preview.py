@@ -988,8 +988,13 @@ def main(args) -> int:
             if out.parent.is_dir():  # fail before rendering, not after
                 import tempfile
 
-                with tempfile.NamedTemporaryFile(dir=out.parent, prefix=".infmob-probe-"):
-                    pass
+                try:
+                    with tempfile.NamedTemporaryFile(dir=out.parent, prefix=".infmob-probe-"):
+                        pass
+                except OSError as exc:
+                    print(f"infmob: error: --out {str(out)!r}: cannot write in {str(out.parent)!r} "
+                          f"({exc.strerror or type(exc).__name__}); choose another --out", file=sys.stderr)
+                    return 2
             path = contact_sheet(found, out, cell=cell, open_fraction=opened)
             print(f"{path}  ({len(found)} objects)")
             return 0
