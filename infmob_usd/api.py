@@ -101,6 +101,17 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, parts=None, 
     return obj
 
 
+def blueprint(category: str, seed: int = 0, **overrides: Any):
+    """The world-space :class:`~infmob_usd.blueprint.Blueprint` of one object: its grown parts and
+    declared joints, what :func:`generate` builds before the core's passes (ground, gaps, limits,
+    masses) and before any texture or file. Cheap (milliseconds); used for statistics of the grammar
+    (``infmob stats --grammar``). Same seed and overrides, same blueprint as ``generate`` starts from."""
+    cat = get_category(category)
+    rng = streams(category, seed)
+    params = cat.schema.sample(rng["params"], overrides)
+    return cat.build(params, rng["structure"], rng["geometry"])
+
+
 def save(obj: ArticulatedObject, folder: str | Path, formats: str | list[str] | tuple[str, ...] | None = None
          ) -> Path:
     """Write ``obj`` into ``folder/<name>/`` (atomically: written under a temporary name, then

@@ -80,3 +80,25 @@ def test_pair_sampling_scales_to_10000_objects():
     assert 0.3 < s["mean_ted"] < 0.7  # about half the sampled pairs differ by one node
     small = Group("small", joints=[1] * 4, trees=[T("a"), T("a", T("b")), T("a"), T("a", T("b"))])
     assert small.summary(max_pairs=3)["ted_pairs"] == 3 and small.summary(max_pairs=10)["ted_pairs"] == 6
+
+
+def test_grammar_stats_equal_the_files_stats(tmp_path, capsys):
+    """``infmob stats --grammar`` (blueprints only) gives the figures ``infmob stats DIR`` reads from the
+    written files: trees, movable joints, kinds and the reference count, for categories with compound
+    joints (flip_revolute windows, limited_planar plate racks, revolute_prismatic lamps)."""
+    from infmob_usd.validate.stats import grammar_stats
+
+    cats = ["window", "plate_rack", "lamp", "tap"]
+    assert main(["generate", ",".join(cats), "--count", "3", "--seed", "5", "--texture-size", "16",
+                 "--workers", "1", "--out", str(tmp_path)]) == 0
+    files = dataset_stats(tmp_path)
+    grown = grammar_stats(cats, count=3, seed=5)
+    keys = ("objects", "mean_joints", "var_joints", "distinct_trees", "ref_mean_joints", "ref_var_joints",
+            "joint_kinds", "mean_depth", "mean_ted")
+    for cat in cats:
+        assert {k: files["categories"][cat][k] for k in keys} == {k: grown["categories"][cat][k] for k in keys}, cat
+    capsys.readouterr()
+    assert main(["stats", "--grammar", "window", "--count", "3", "--seed", "5"]) == 0
+    assert "window" in capsys.readouterr().out
+    assert main(["stats", str(tmp_path), "--grammar", "window"]) == 2
+    assert main(["stats"]) == 2

@@ -205,6 +205,45 @@ def reference_count(meta: dict) -> int:
     return len(joints) + turning + 1
 
 
+def blueprint_figures(bp) -> tuple[Tree, int, int, Counter]:
+    """Tree, movable-joint count, reference count and movable kinds of one blueprint (the grown parts
+    and declared joints of :func:`infmob_usd.api.blueprint`): the figures ``infmob stats`` reads
+    from the object's files, before the core builds and writes it. A declared joint is one URDF
+    joint per degree of freedom (a fixed one: one), its revolute and continuous ones turning."""
+    into = {j.child: j for j in bp.joints}
+    nodes = {name: Tree(f"{into[name].kind if name in into else 'root'}:{part.label}") for name, part in bp.parts.items()}
+    for j in bp.joints:
+        nodes[j.parent].children.append(nodes[j.child])
+    movable = [j for j in bp.joints if j.kind != "fixed"]
+    urdf = sum(max(1, len(j.dofs)) for j in bp.joints)
+    turning = sum(1 for j in bp.joints for d in j.dofs if d.type in ("revolute", "continuous"))
+    return nodes[bp.root].canonical(), len(movable), urdf + turning + 1, Counter(j.kind for j in movable)
+
+
+def grammar_stats(categories, count: int, seed: int = 0, max_pairs: int = 2000) -> dict:
+    """:func:`dataset_stats` of seeds ``seed .. seed + count - 1`` of each category, computed from the
+    blueprints alone (no passes, no files: about 100x faster than generating). The files' figures
+    are the same: the core adds only dummy links, which the tree leaves out and the reference count
+    takes from the joints' degrees of freedom (``tests/test_stats.py`` checks the two agree)."""
+    from infmob_usd.api import blueprint
+
+    groups: dict[str, Group] = {}
+    overall = Group("overall")
+    for category in categories:
+        for s in range(seed, seed + count):
+            tree, joints, ref, kinds = blueprint_figures(blueprint(category, s))
+            for g in (groups.setdefault(category, Group(category)), overall):
+                g.joints.append(joints)
+                g.ref_joints.append(ref)
+                g.kinds.update(kinds)
+                g.trees.append(tree)
+    return {
+        "categories": {name: g.summary(max_pairs) for name, g in sorted(groups.items())},
+        "overall": overall.summary(max_pairs),
+        "reference": REFERENCE,
+    }
+
+
 def dataset_stats(folder: str | Path, max_pairs: int = 2000, skipped: list | None = None) -> dict:
     """Statistics per category and overall of every object folder under ``folder``.
 
