@@ -9,7 +9,7 @@ at +Y): flip_revolute, swivel about Z (temperature) then tilt about the cap's ba
 (flow), resting closed on its lower stop; or two valve handles (cross or lever) on risers at
 +-``handle_spread``, revolute about Z, hot on the left, cold on the right. Whatever the spout
 sweeps over stays below its outlet. Optional real extras: a pull-out head's spray-mode button
-on the head's side (prismatic, pressed 2 mm across the head: pressed down, gravity would hold it in)
+under the head (prismatic, pressed 2 mm up: gravity holds it out; on the side its weight turned the head)
 and a bath-shower wall mixer's diverter knob (prismatic, pulled up 8 mm). Parts: ``categories/parts/taps.py``.
 """
 

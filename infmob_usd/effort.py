@@ -251,8 +251,11 @@ def drive(obj, j, free: float | None = None) -> Drive:
     effort = m_eff * max(a, floor)
     armature = ARMATURE_SHARE * m_eff
     if j.type != "continuous" and a_gravity > 0:
-        # the stop holding the subtree's weight sags by C_SOFT * load / (m_eff + armature)
-        armature = max(armature, C_SOFT * a_gravity * m_eff / (SAG_SHARE * (j.upper - j.lower)) - m_eff)
+        # the stop holding the subtree's weight sags by C_SOFT * load / (m_eff + armature); the load is the
+        # whole subtree's weight, also where a free joint lets part of it go (a lift-top's frame carries
+        # the top resting on its own stop, a steamer tier the tiers above it)
+        load = mass * a_gravity if j.type == "prismatic" else a_gravity * m_eff
+        armature = max(armature, C_SOFT * load / (SAG_SHARE * (j.upper - j.lower)) - m_eff)
     return Drive(float(effort), float(velocity), float(armature), float(damping), m_eff, arm,
                  a_gravity, a_stop)
 

@@ -248,16 +248,18 @@ DIVERTER = {"radius": 0.009, "height": 0.014, "inset": 0.035, "pull": 0.008, "ga
 
 
 def mode_button(head: Frame, rh: float) -> tuple[list[g.Piece], Frame]:
-    """The spray-mode button on the +Y side of a pull-out head whose slide frame is ``head`` (origin at
-    the head's back, z along the arm, head radius ``rh``): its pieces and its press frame (z into the
-    head, -Y: pressed sideways, so gravity does not press it)."""
+    """The spray-mode button under a pull-out head whose slide frame is ``head`` (origin at the head's
+    back, z along the horizontal arm, head radius ``rh``): its pieces and its press frame (z up into the
+    head). Under the head, in the vertical plane of the head's turning axis, its weight neither turns
+    the head (a button on the side did, 6 degrees in MuJoCo) nor presses it (one on top did): gravity
+    holds it on its rest stop (paddle-style triggers under the head, e.g. Grohe Minta, Delta Trinsic)."""
     k = MODE_BUTTON
     ln, w, h = k["size"]
     o = np.asarray(head.origin, float) + k["at"] * 0.07 * np.asarray(head.z, float)
-    y0 = o[1] + rh + k["gap"]
-    piece = g.box_between([o[0] - ln / 2, y0, o[2] - w / 2], [o[0] + ln / 2, y0 + h, o[2] + w / 2], "aerator",
+    z1 = o[2] - rh - k["gap"]
+    piece = g.box_between([o[0] - ln / 2, o[1] - w / 2, z1 - h], [o[0] + ln / 2, o[1] + w / 2, z1], "aerator",
                           bevel=0.0015)
-    return [piece], Frame.at((o[0], y0 + h, o[2]), z=(0, -1, 0), x=(1, 0, 0))
+    return [piece], Frame.at((o[0], o[1], z1 - h), z=(0, 0, 1), x=(1, 0, 0))
 
 
 def diverter_knob(y: float, z_top: float) -> tuple[list[g.Piece], Frame]:
