@@ -48,11 +48,11 @@ def run_width(p) -> float:
 
 
 def columns(p, rng) -> int:
-    """column_count, or max(1, floor(width / 0.45)); at most floor(width / 0.2) (columns at least 20 cm wide);
-    a kitchen wall's columns are at most 0.9 m wide"""
+    """column_count, or max(1, floor(width / 0.45)); at most floor(width / 0.2) (columns at least 20 cm wide),
+    at least ceil(width / 1.0) (at most 1 m wide; a kitchen wall's at most 0.9 m)"""
     w = run_width(p)
     n = min(p["column_count"] or max(1, math.floor(w / COLUMN)), max(1, math.floor(w / COLUMN_MIN)))
-    return max(n, math.ceil(w / KITCHEN_COLUMN_MAX)) if p["design"] == "kitchen" else n
+    return max(n, math.ceil(w / (KITCHEN_COLUMN_MAX if p["design"] == "kitchen" else COLUMN_MAX)))
 
 
 def wall_columns(p, rng) -> int:
@@ -122,7 +122,7 @@ GRAMMAR = Grammar("kitchen_cabinet", {
 PARAMS = (
     # a kitchen wall's run: 1.2-4.8 m (2-10 cabinets of 40-60 cm)
     Float("width", "run width (Y) of a base or wall run", "m", 1.2, 4.8),
-    Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45)); at most one per 20 cm",
+    Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45)); kept 0.2-1 m wide",
         "", 1, 10, auto=True),
     # EN 1116 / IKEA METOD: base cabinets 60 cm deep incl. front, worktop at 85-92 cm
     Float("base_depth", "base and tall carcass depth (X), front excluded", "m", 0.55, 0.62),
@@ -169,6 +169,7 @@ COLUMN = 0.45  # a column per 45 cm of width
 COLUMN_MIN = 0.2  # the narrowest column (IKEA METOD's narrowest base cabinet is 20 cm): a hinged leaf's free
 #                   edge swings out sideways by thickness^2 / (2 width) and must stay inside the 3 mm reveal
 DOUBLE = 0.6  # columns wider than this have double doors
+COLUMN_MAX = 1.0  # the widest column (US base cabinets go to 42-48 in; a 1.2 m drawer front and box weigh ~40 kg)
 KITCHEN_COLUMN_MAX = 0.9  # a kitchen wall's columns: at most 90 cm (IKEA METOD's widest base cabinet is 80 cm)
 SPLASH = 0.012  # splashback panel (12 mm compact laminate / glass)
 WALL_MIN = 0.4  # the lowest wall cabinet (IKEA METOD 40 cm high)
