@@ -8,9 +8,8 @@ Controls: a single lever (on the main column, or with a separate riser on a shor
 at +Y): flip_revolute, swivel about Z (temperature) then tilt about the cap's back bottom edge
 (flow), resting closed on its lower stop; or two valve handles (cross or lever) on risers at
 +-``handle_spread``, revolute about Z, hot on the left, cold on the right. Whatever the spout
-sweeps over stays below its outlet. Optional real extras: a pull-out head's spray-mode button
-under the head (prismatic, pressed 2 mm up: gravity holds it out; on the side its weight turned the head)
-and a bath-shower wall mixer's diverter knob (prismatic, pulled up 8 mm). Parts: ``categories/parts/taps.py``.
+sweeps over stays below its outlet. Optional real extra: a bath-shower wall mixer's diverter knob
+(prismatic, pulled up 8 mm). Parts: ``categories/parts/taps.py``.
 """
 
 from __future__ import annotations
@@ -36,8 +35,7 @@ GRAMMAR = Grammar("tap", {
     "wall": Node(required=("single_lever",), optional={"diverter": 0.5}),
     "separate_pipe": Node(),
     "spout": Node(label="spout"),
-    "spray_head": Node(label="spray_head", optional={"mode_button": 0.6}),
-    "mode_button": Node(label="button", doc="the head's stream / spray toggle (pressed 2 mm)"),
+    "spray_head": Node(label="spray_head"),
     "diverter": Node(label="knob", doc="a bath-shower mixer's diverter knob (pulled up 8 mm)"),
     "single_lever": Node(label="lever"),
     "two_handles": Node(repeat={"valve": 2}),
@@ -139,7 +137,7 @@ class TapLayout(Layout):
                 z_rt = T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T))
                 spout, hp, hf, travel = T.pullout_spout(p["spout_reach"] + 0.05, rs, z_rt + T.GAP, height, z_low,
                                                         p["head_travel"])
-                head = dict(pieces=hp, at=hf, travel=travel, rh=max(1.6 * rs, 0.015))
+                head = dict(pieces=hp, at=hf, travel=travel)
             else:
                 height = max(height, z_low + 0.06, z_rt + 0.1)
                 z_rt = max(z_rt, T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T)))
@@ -228,18 +226,10 @@ class TapLayout(Layout):
             a = self.p["spout_swivel"]
             self.join(J.revolute("base", "spout", axis, (0, 0, 1), -a, a, role="swivel"))
 
-    def spray_head(self, node, pieces, at, travel, rh):
+    def spray_head(self, node, pieces, at, travel):
         self.add("spray_head", "spray_head", pieces)
         # pulls out along the spout's arm on its hose and turns freely about it
         self.join(J.continuous_prismatic("spout", "spray_head", at.origin, at.z, (0.0, travel), role="slide"))
-        if node.one("mode_button"):
-            self.grow(node.one("mode_button"), at=at, rh=rh)
-
-    def mode_button(self, node, at, rh):
-        pieces, press = T.mode_button(at, rh)
-        self.add("mode_button", "button", pieces)
-        self.join(J.prismatic("spray_head", "mode_button", tuple(press.origin), tuple(press.z), 0.0,
-                              T.MODE_BUTTON["press"], role="button"))
 
     def single_lever(self, node, pieces, hinge):
         name = self.add("lever", "lever", pieces)

@@ -251,20 +251,6 @@ def test_seeds_differ():
 
 
 @pytest.mark.parametrize("seed", range(3))
-def test_pull_out_head_has_its_spray_mode_button(seed):
-    p, bp = make(seed, design="pull_out", has_mode_button=True)
-    j = by_child(bp, "mode_button")
-    assert (j.parent, j.kind, j.role) == ("spray_head", "prismatic", "button")
-    assert j.dofs[0].axis == pytest.approx((0, 0, 1)) and j.dofs[0].upper == pytest.approx(0.002)
-    assert bp.parts["mode_button"].label == "button"
-    head = np.vstack([pc.vertices for pc in bp.parts["spray_head"].pieces])
-    button = np.vstack([pc.vertices for pc in bp.parts["mode_button"].pieces])
-    assert button[:, 2].max() < head[:, 2].min()  # under the head, a gap below it (gravity holds it out)
-    assert head[:, 0].min() < button[:, 0].min() and button[:, 0].max() < head[:, 0].max()
-    test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
-
-
-@pytest.mark.parametrize("seed", range(3))
 def test_wall_mixer_diverter_pulls_up(seed):
     p, bp = make(seed, design="wall", has_diverter=True)
     j = by_child(bp, "diverter")

@@ -238,28 +238,10 @@ def deck(width: float, depth: float, shape: str, bridge: bool) -> list[g.Piece]:
                           "seal")]
 
 
-# A pull-out head's spray-mode button (stream / spray toggle: Hansgrohe Focus 2jet, Grohe Minta
-# pull-out heads): a button 12 x 8 mm on the head, pressed 2 mm.
-MODE_BUTTON = {"size": (0.012, 0.008, 0.004), "at": 0.45, "press": 0.002, "gap": 0.0006}
 # A bath-shower wall mixer's diverter (EN 200 bath mixers with an automatic diverter, e.g. Grohe
 # Eurosmart / Hansgrohe Logis bath mixers): a knob on top of the body bar at one end, pulled up
 # 8 mm to send the water to the shower. Knob radius and height.
 DIVERTER = {"radius": 0.009, "height": 0.014, "inset": 0.035, "pull": 0.008, "gap": 0.0008}
-
-
-def mode_button(head: Frame, rh: float) -> tuple[list[g.Piece], Frame]:
-    """The spray-mode button under a pull-out head whose slide frame is ``head`` (origin at the head's
-    back, z along the horizontal arm, head radius ``rh``): its pieces and its press frame (z up into the
-    head). Under the head, in the vertical plane of the head's turning axis, its weight neither turns
-    the head (a button on the side did, 6 degrees in MuJoCo) nor presses it (one on top did): gravity
-    holds it on its rest stop (paddle-style triggers under the head, e.g. Grohe Minta, Delta Trinsic)."""
-    k = MODE_BUTTON
-    ln, w, h = k["size"]
-    o = np.asarray(head.origin, float) + k["at"] * 0.07 * np.asarray(head.z, float)
-    z1 = o[2] - rh - k["gap"]
-    piece = g.box_between([o[0] - ln / 2, o[1] - w / 2, z1 - h], [o[0] + ln / 2, o[1] + w / 2, z1], "aerator",
-                          bevel=0.0015)
-    return [piece], Frame.at((o[0], o[1], z1 - h), z=(0, 0, 1), x=(1, 0, 0))
 
 
 def diverter_knob(y: float, z_top: float) -> tuple[list[g.Piece], Frame]:
