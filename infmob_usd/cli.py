@@ -517,11 +517,7 @@ def cmd_stats(args) -> int:
             return _fail("give either DIR or --grammar CATEGORIES, not both")
         if not 1 <= args.count <= 100_000 or not 0 <= args.seed <= 2**63 - 1 - args.count:
             return _fail(f"--count must be 1..100000 and --seed 0..2^63-1-count, got {args.count}, {args.seed}")
-        try:
-            cats = _categories(args.grammar)
-        except ValueError as exc:
-            return _fail(str(exc))
-        stats = grammar_stats(cats, args.count, args.seed, max_pairs=args.max_pairs)
+        stats = grammar_stats(_categories(args.grammar), args.count, args.seed, max_pairs=args.max_pairs)
         print(json.dumps(stats, indent=2) if args.json else format_stats(stats))
         return 0
     if args.folder is None:

@@ -227,16 +227,21 @@ def grammar_stats(categories, count: int, seed: int = 0, max_pairs: int = 2000) 
     takes from the joints' degrees of freedom (``tests/test_stats.py`` checks the two agree)."""
     from infmob_usd.api import blueprint
 
+    return _summarise(((category, *blueprint_figures(blueprint(category, s)))
+                       for category in categories for s in range(seed, seed + count)), max_pairs)
+
+
+def _summarise(objects, max_pairs: int) -> dict:
+    """Per-category and overall :class:`Group` summaries of ``(category, tree, movable joints,
+    reference count, movable kinds)`` records."""
     groups: dict[str, Group] = {}
     overall = Group("overall")
-    for category in categories:
-        for s in range(seed, seed + count):
-            tree, joints, ref, kinds = blueprint_figures(blueprint(category, s))
-            for g in (groups.setdefault(category, Group(category)), overall):
-                g.joints.append(joints)
-                g.ref_joints.append(ref)
-                g.kinds.update(kinds)
-                g.trees.append(tree)
+    for category, tree, joints, ref, kinds in objects:
+        for g in (groups.setdefault(category, Group(category)), overall):
+            g.joints.append(joints)
+            g.ref_joints.append(ref)
+            g.kinds.update(kinds)
+            g.trees.append(tree)
     return {
         "categories": {name: g.summary(max_pairs) for name, g in sorted(groups.items())},
         "overall": overall.summary(max_pairs),
@@ -254,30 +259,21 @@ def dataset_stats(folder: str | Path, max_pairs: int = 2000, skipped: list | Non
 
     if isinstance(max_pairs, bool) or not isinstance(max_pairs, int) or max_pairs < 1:
         raise ValueError(f"max_pairs must be a positive integer, got {max_pairs!r}")
-    groups: dict[str, Group] = {}
-    overall = Group("overall")
-    for obj in find_objects([folder]):
-        try:
-            meta = json.loads((obj / "metadata.json").read_text())
-            tree = tree_from_metadata(meta)
-            kinds = meta["joint_kinds"]
-            sum(kinds.values())
-            str(meta["category"])
-            ref = reference_count(meta)
-        except Exception as e:  # noqa: BLE001 - a damaged metadata.json is one object left out
-            if skipped is not None:
-                skipped.append((obj, f"{type(e).__name__}: {' '.join(str(e).split())[:200]}"))
-            continue
-        for g in (groups.setdefault(meta["category"], Group(meta["category"])), overall):
-            g.joints.append(sum(kinds.values()))
-            g.ref_joints.append(ref)
-            g.kinds.update(kinds)
-            g.trees.append(tree)
-    return {
-        "categories": {name: g.summary(max_pairs) for name, g in sorted(groups.items())},
-        "overall": overall.summary(max_pairs),
-        "reference": REFERENCE,
-    }
+
+    def records():
+        for obj in find_objects([folder]):
+            try:
+                meta = json.loads((obj / "metadata.json").read_text())
+                tree = tree_from_metadata(meta)
+                kinds = meta["joint_kinds"]
+                record = (str(meta["category"]), tree, sum(kinds.values()), reference_count(meta), kinds)
+            except Exception as e:  # noqa: BLE001 - a damaged metadata.json is one object left out
+                if skipped is not None:
+                    skipped.append((obj, f"{type(e).__name__}: {' '.join(str(e).split())[:200]}"))
+                continue
+            yield record
+
+    return _summarise(records(), max_pairs)
 
 
 def format_stats(stats: dict) -> str:
