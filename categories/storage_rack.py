@@ -83,7 +83,7 @@ def drawers(p, rng) -> int:
 
 
 GRAMMAR = Grammar("storage_rack", {
-    "storage_rack": Node(label="frame", one_of={"pallet_rack": 0.4, "shelving": 0.35, "bin_rack": 0.25},
+    "storage_rack": Node(label="frame", one_of={"pallet_rack": 0.35, "shelving": 0.3, "bin_rack": 0.35},
                          choice="design"),
     "pallet_rack": Node(repeat={"bay": bays}),
     "shelving": Node(repeat={"tote_bay": bays}),
