@@ -1,7 +1,8 @@
 """Door: a single or double hinged leaf or a sliding barn door in a fixed frame, with handles.
 
 Designs (``design``): ``single`` (optionally latched), ``double`` (a French pair), ``sliding`` (a leaf
-hung on two wheels from a rail above the opening, sliding along Y). What follows describes the hinged
+hung on two wheels from a rail above the opening, sliding along Y), ``dutch`` (a single leaf split into
+a bottom and a top half that hinge separately). What follows describes the hinged
 leaves.
 
 X is depth, Y is width, Z is up. The frame (the root) stands around x = 0 on the floor: two jambs
@@ -30,19 +31,24 @@ from .parts import doors as P
 from .parts import hardware
 
 GRAMMAR = Grammar("door", {
-    "door": Node(label="frame", optional={"threshold": 0.4},
-                 one_of={"single": 0.5, "double": 0.25, "sliding": 0.25}, choice="design"),
+    "door": Node(label="frame", optional={"threshold": 0.5},
+                 one_of={"single": 0.45, "double": 0.22, "sliding": 0.15, "dutch": 0.18}, choice="design"),
     "threshold": Node(label="threshold"),
-    "single": Node(required=("leaf",), optional={"latch": 0.7, "letter_plate": 0.35, "viewer": 0.35}),
+    "single": Node(required=("leaf",), optional={"latch": 0.55, "letter_plate": 0.45, "viewer": 0.45}),
     "letter_plate": Node(label="flap"),
     "viewer": Node(label="cover"),
     "double": Node(repeat={"leaf": 2}),
+    "dutch": Node(required=("leaf", "top_leaf")),
+    "top_leaf": Node(label="leaf", optional={"deadbolt": 0.6}),
+    "deadbolt": Node(label="knob"),
     "sliding": Node(required=("slider",)),
-    "slider": Node(label="leaf", repeat={"roller": 2}, optional={"kick_plate": 0.3, "floor_guide": 0.6}),
+    "slider": Node(label="leaf", repeat={"roller": 2}, optional={"kick_plate": 0.45, "guide": 0.8}),
+    "guide": Node(one_of={"floor_guide": 0.55, "stay_roller": 0.45}, choice="guide_style"),
     "floor_guide": Node(label="guide"),
+    "stay_roller": Node(label="wheel"),
     "roller": Node(label="wheel"),
     "leaf": Node(label="leaf", one_of={"knob": 1 / 3, "lever": 1 / 3, "pull": 1 / 3}, choice="handle",
-                 optional={"thumb_turn": 0.4, "kick_plate": 0.3}),
+                 optional={"thumb_turn": 0.5, "kick_plate": 0.45}),
     "kick_plate": Node(label="plate"),
     "latch": Node(label="latch"),
     "thumb_turn": Node(label="knob"),
@@ -54,10 +60,14 @@ GRAMMAR = Grammar("door", {
 })
 """Designs: a single hinged leaf (with a latch bolt thrown into the jamb's strike: the leaf opens once it
 is drawn back), a double (French) pair hinged on both jambs, or a sliding barn-door leaf hung on two
-wheels from a rail above the opening. Knobs and levers come in pairs, one on each face; a pull is fixed
+wheels from a rail above the opening, its bottom edge kept off the wall by a floor guide it runs in, or by a
+stay roller it rolls against (or neither). Knobs and levers come in pairs, one on each face; a pull is fixed
 to the leaf; a thumb-turn sits on the back face above the handle (a key escutcheon on the front). A single
 (entrance) leaf may carry a letter plate (its flap pushed in through the leaf) and a door viewer (its privacy
-cover swinging aside on the back face)."""
+cover swinging aside on the back face). A Dutch (stable) door is a single leaf cut across above its handle
+into two solid halves on one hinge line, each opening alone: the bottom half carries the handles (and a kick
+plate), the top half a fixed knob and, often, a deadbolt's thumb-turn (Simpson, JELD-WEN Dutch doors: a
+lockset in the bottom half, a deadbolt in the top)."""
 
 PARAMS = (
     Float("leaf_width", "leaf width (Y)", "m", 0.8, 1.0),
@@ -94,7 +104,8 @@ def frame_family(p: dict) -> dict:
     takes no letter plate (its opening would cross a lite), a glazed one no viewer (its glass is the view)."""
     leaf = "wood" if p["leaf_finish"] == "wood" else PAINTS
     p = {**p, "has_letter_plate": p["has_letter_plate"] and p["glazing"] != "full",
-         "has_viewer": p["has_viewer"] and p["glazing"] == "none"}
+         "has_viewer": p["has_viewer"] and p["glazing"] == "none",
+         "has_thumb_turn": p["has_thumb_turn"] and p["design"] != "dutch"}  # a Dutch door's lock is its top's
     return {**p, "frame_family": leaf if p["frame_finish"] == "match" else "painted:white|off_white"}
 
 
@@ -108,6 +119,7 @@ PULL = hardware.HandleSize(standoff=0.04, bar_radius=0.012, post_radius=0.0096, 
 
 
 GUIDE = dict(clear=0.003, wall=0.004, height=0.035, length=0.05)  # barn-door floor guide channel
+STAY = dict(radius=0.02, height=0.03, clear=0.003, width=0.034)  # barn-door stay roller (m): a 40 mm roller
 GUIDE_IN = 0.05  # the guide sits this far inside the leaf's edge at rest
 KICK_HEIGHT = 0.2  # kick plates are 150-300 mm high, 1-1.5 mm stainless (Eurospec, Zoo Hardware listings)
 KICK_T = 0.0015
@@ -116,7 +128,9 @@ LETTER_LOW = 0.72  # a letter plate's centre at least this high (BS EN 13724: op
 LETTER_BELOW = 0.25  # and this far below the handle axis
 LETTER_FLAP_OPENS = 1.4  # the flap swings in to about 80 degrees
 VIEWER_HEIGHT = 1.5  # door viewers are fitted at 1.4-1.6 m (Yale, Brinks fitting instructions)
-VIEWER_SWING = math.pi / 2  # the privacy cover swings a quarter turn aside
+VIEWER_SWING = math.pi / 2
+DUTCH_CUT = 1.07  # a Dutch door's halves meet 1.0-1.2 m above the floor, above the lockset (Simpson, JELD-WEN)
+DUTCH_KNOB = 0.12  # the top half's knob this far above the cut  # the privacy cover swings a quarter turn aside
 
 
 def _crosses(piece, box) -> bool:
@@ -172,6 +186,8 @@ class DoorLayout(Layout):
         if design == "single":
             self.grow(node.one("single"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs,
                       latch=latch)
+        elif design == "dutch":
+            self.grow(node.one("dutch"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs)
         elif design == "double":
             self.grow(node.one("double"), xs=(Dj / 2 - T, Dj / 2), leaves=leaves, zs=zs)
         else:
@@ -218,13 +234,48 @@ class DoorLayout(Layout):
         for kid, (ys, side), name in zip(node.of("leaf"), leaves, ("leaf", "leaf_2"), strict=True):
             self.grow(kid, xs=xs, ys=ys, zs=zs, side=side, name=name, latch=None)
 
-    def leaf(self, node, xs, ys, zs, side, name, latch):
+    def dutch(self, node, xs, ys, zs):
+        """The bottom half up to the cut above its handle (at least DUTCH_CUT above the floor), the top half
+        above it; both solid-core (Dutch doors are exterior doors), one panel or lite each."""
+        p = self.p
+        above = P.ROSE[0] if p["handle"] != "pull" else p["pull_length"] / 2 + 0.015
+        cut = max(DUTCH_CUT, p["handle_height"] + above + 0.06)
+        self.grow(node.one("leaf"), xs=xs, ys=ys, zs=(zs[0], cut - GAP / 2), side=p["hinge_side"], name="leaf",
+                  latch=None, dutch=True)
+        self.grow(node.one("top_leaf"), xs=xs, ys=ys, zs=(cut + GAP / 2, zs[1]))
+
+    def top_leaf(self, node, xs, ys, zs):
+        """A Dutch door's top half: a fixed knob on each face by its lock edge, a deadbolt's thumb-turn above."""
+        p = self.p
+        left = p["hinge_side"] == "left"
+        y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
+        y = y_lock - (1.0 if left else -1.0) * BACKSET
+        zk = zs[0] + DUTCH_KNOB
+        pieces = P.leaf(xs, ys, zs, zs[0], p["leaf_style"], p["glazing"], p["stile_width"], 1, wall=P.EXTERIOR_WALL)
+        for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
+            pieces += [P.rose(face, n, y, zk)] + g.knob_handle((face + n * P.ROSE[1], y, zk), (n, 0, 0), "handle",
+                                                               radius=p["knob_radius"], depth=0.05)
+        self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
+        self.hinge("frame", "leaf_2", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=OPENS)
+        if node.one("deadbolt"):
+            self.grow(node.one("deadbolt"), xs=xs, y=y, z=zk + P.THUMB["above"])
+
+    def deadbolt(self, node, xs, y, z):
+        self.extend("leaf_2", P.thumb_rose(xs[0], -1.0, y, z, key=False) + P.thumb_rose(xs[1], 1.0, y, z, key=True))
+        start = xs[0] - P.ROSE[1] - GAP
+        self.add("deadbolt", "knob", P.thumb_turn(start, -1.0, y, z))
+        self.hinge("leaf_2", "deadbolt", Frame.at((start, y, z), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
+
+    def leaf(self, node, xs, ys, zs, side, name, latch, dutch=False):
         p = self.p
         left = side == "left"
         y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
         inward = 1.0 if left else -1.0  # from the hinge edge across the leaf
         zk = p["handle_height"]
-        pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], p["glazing"], p["stile_width"], p["panel_count"])
+        if dutch:  # a Dutch door's bottom half: solid-core, one unglazed panel
+            pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], "none", p["stile_width"], 1, wall=P.EXTERIOR_WALL)
+        else:
+            pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], p["glazing"], p["stile_width"], p["panel_count"])
         if latch:
             pieces[0] = P.mortise(pieces[0], *latch[1])
         self.add(name, "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
@@ -295,8 +346,35 @@ class DoorLayout(Layout):
             self.grow(kid, k=k, at=(x_w, y, z_ax), r=r)
         if node.one("kick_plate"):
             self.grow(node.one("kick_plate"), xs=xs, ys=ys, zs=zs, leaf="leaf")
-        if node.one("floor_guide"):  # at the opening's edge on the side the leaf slides to: always under it
+        if node.one("guide"):
+            self.grow(node.one("guide"), xs=xs, x_wall=x_wall, ys=ys, d=d)
+
+    def guide(self, node, xs, x_wall, ys, d):
+        """What keeps the leaf's bottom edge off the wall: a floor guide it runs in, at the opening's edge on the
+        side it slides to (always under it), or a stay roller on the architrave it slides over."""
+        if node.choice == "floor_guide":
             self.grow(node.one("floor_guide"), xs=xs, y=(ys[0] + GUIDE_IN) if d < 0 else (ys[1] - GUIDE_IN))
+        else:
+            y = ys[0] + 0.015 + self.p["casing_width"] / 2
+            self.grow(node.one("stay_roller"), xs=xs, x_wall=x_wall, y=y if d < 0 else -y)
+
+    def stay_roller(self, node, xs, x_wall, y):
+        """A barn door's stay roller: a bracket screwed to the architrave's face and the floor, reaching under
+        the leaf's bottom edge, with a roller on a vertical pin that the leaf's front face runs against
+        (National Hardware N187-165, Rustica stay rollers: a 30-40 mm roller on an L bracket)."""
+        r, h = STAY["radius"], STAY["height"]
+        xr = xs[1] + KICK_T + 0.0005 + STAY["clear"] + r  # clear of a kick plate
+        xp = xr + r + STAY["clear"]  # the bracket's upright, in front of the roller
+        t, w = 0.004, STAY["width"]
+        z0, z1 = t + STAY["clear"], t + STAY["clear"] + h  # the roller between the floor plate and the top arm
+        self.extend("frame", [
+            g.box_between([x_wall, y - w / 2, 0.0], [x_wall + t, y + w / 2, 0.07], "handle", bevel=0.001),
+            g.box_between([x_wall, y - w / 2, 0.0], [xp + t, y + w / 2, t], "handle", bevel=0.001),
+            g.box_between([xp, y - w / 2, 0.0], [xp + t, y + w / 2, z1 + STAY["clear"] + t], "handle", bevel=0.001),
+            g.box_between([xr - 0.008, y - w / 2, z1 + STAY["clear"]], [xp + t, y + w / 2, z1 + STAY["clear"] + t],
+                          "handle", bevel=0.001)])
+        self.add("stay_roller", "wheel", [g.cylinder([xr, y, z0], [xr, y, z1], r, "handle", 32)])
+        self.spin("frame", "stay_roller", Frame.at((xr, y, (z0 + z1) / 2), z=(0, 0, 1)), role="wheel")
 
     def floor_guide(self, node, xs, y):
         """A barn door's floor guide: a U channel screwed to the floor that the leaf's bottom edge runs in

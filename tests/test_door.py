@@ -294,10 +294,49 @@ def test_entrance_options_forced_and_glazing_rules():
 def test_barn_door_floor_guide_straddles_the_leaf():
     """A sliding leaf's floor guide stands on the floor with the leaf's bottom edge between its fins, at rest
     and slid open."""
-    _, bp = make(5, design="sliding", has_floor_guide=True, has_kick_plate=True)
+    _, bp = make(5, design="sliding", has_guide=True, guide_style="floor_guide", has_kick_plate=True)
     d = by_child(bp, "leaf").dofs[0]
     for q in (0.0, d.upper):
         assert overlap(bp.parts["floor_guide"], np.eye(4), bp.parts["leaf"], dof_motion(d, q)) < VOLUME_TOL
         assert overlap(bp.parts["floor_guide"], np.eye(4), bp.parts["kick_plate"], dof_motion(d, q)) < VOLUME_TOL
     g_lo = np.array([pc.bounds for pc in bp.parts["floor_guide"].pieces])[:, 0].min(0)
     assert g_lo[2] == pytest.approx(0.0, abs=1e-6)
+
+
+def test_barn_door_stay_roller_runs_on_the_leaf_face():
+    """A stay roller (a continuous wheel on the frame, about the vertical) sits in front of the leaf's bottom
+    edge, over the floor, and stays clear of the leaf and its kick plate through the whole slide."""
+    for side in ("left", "right"):
+        _, bp = make(5, design="sliding", has_guide=True, guide_style="stay_roller", has_kick_plate=True,
+                     hinge_side=side)
+        j = by_child(bp, "stay_roller")
+        assert j.kind == "continuous" and j.parent == "frame" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+        assert bp.parts["stay_roller"].label == "wheel"
+        lo, hi = leaf_body(bp)
+        r_lo = np.array([pc.bounds for pc in bp.parts["stay_roller"].pieces])[:, 0].min(0)
+        assert hi[0] < r_lo[0] < hi[0] + 0.01 and 0.0 < r_lo[2] < lo[2] + 0.03  # at the leaf's face, low
+        d = by_child(bp, "leaf").dofs[0]
+        for q in np.linspace(0.0, d.upper, 5):
+            for other in ("leaf", "kick_plate"):
+                assert overlap(bp.parts["stay_roller"], np.eye(4), bp.parts[other], dof_motion(d, q)) < VOLUME_TOL
+                assert overlap(bp.parts["frame"], np.eye(4), bp.parts[other], dof_motion(d, q)) < VOLUME_TOL
+            # the roller is behind the leaf wherever it slides (its y within the leaf's span)
+            shift = dof_motion(d, q)[1, 3]
+            assert lo[1] + shift < j.dofs[0].origin[1] < hi[1] + shift
+
+
+@pytest.mark.parametrize("seed", (3, 6))
+def test_dutch_door_halves_open_alone(seed):
+    """A Dutch door: two halves on one hinge line, cut above the bottom half's handles; each opens on its own
+    without touching the other; the bottom half has the handles, the top half its deadbolt's thumb-turn."""
+    p, bp = make(seed, design="dutch", has_deadbolt=True, handle="lever")
+    lo, hi = (np.array([pc.bounds for pc in bp.parts[n].pieces if pc.material == "leaf"]) for n in ("leaf", "leaf_2"))
+    bottom_top, top_bottom = lo[:, 1, 2].max(), hi[:, 0, 2].min()
+    assert 0.002 < top_bottom - bottom_top < 0.01  # a cut a few mm wide
+    assert bottom_top > p["handle_height"] + 0.05 and bottom_top >= 1.0
+    a, b = by_child(bp, "leaf").dofs[0], by_child(bp, "leaf_2").dofs[0]
+    assert a.origin[:2] == pytest.approx(b.origin[:2]) and a.axis == pytest.approx(b.axis)
+    assert by_child(bp, "lever_front").parent == "leaf" and by_child(bp, "deadbolt").parent == "leaf_2"
+    assert "thumb_turn" not in bp.parts
+    for qa, qb in ((a.upper, 0.0), (0.0, b.upper), (a.upper / 2, b.upper)):
+        assert overlap(bp.parts["leaf"], dof_motion(a, qa), bp.parts["leaf_2"], dof_motion(b, qb)) < VOLUME_TOL

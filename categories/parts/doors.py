@@ -70,12 +70,18 @@ pine stile-and-rail frame over a honeycomb core), massed as a 6 mm shell: a 0.9 
 (hollow-core 30 x 80 in slabs weigh 10-13 kg: JELD-WEN, Masonite listings)."""
 
 
-def leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int) -> list[g.Piece]:
+def leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int,
+         wall: float = 0.0) -> list[g.Piece]:
     """A plain slab, or a stile-and-rail frame with ``count`` recessed or raised panels or glass lites
-    in its holes (glazing: ``none``, the ``top`` row, or ``full``); the wooden pieces are hollow-core
-    (:data:`LEAF_WALL`), the glass solid."""
-    return [p.replace(wall=LEAF_WALL) if p.material == "leaf" else p
-            for p in _leaf(xs, ys, zs, handle_z, style, glazing, stile, count)]
+    in its holes (glazing: ``none``, the ``top`` row, or ``full``); the wooden pieces are massed as a shell
+    ``wall`` thick (default :data:`LEAF_WALL`: hollow-core), the glass solid."""
+    pieces = _leaf(xs, ys, zs, handle_z, style, glazing, stile, count)
+    return [p.replace(wall=wall or LEAF_WALL) if p.material == "leaf" else p for p in pieces]
+
+
+EXTERIOR_WALL = 0.014
+"""m: an exterior leaf (a Dutch door's halves) is solid-core or solid stile-and-rail, massed as a 14 mm shell:
+a 0.9 x 2.05 m leaf ~35 kg (solid-core and solid-wood 36 x 80 in exterior slabs 30-45 kg: JELD-WEN, Simpson)."""
 
 
 def _leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int) -> list[g.Piece]:
