@@ -31,7 +31,7 @@ Optional shutters hang outside (-X) on the frame's outer edges: closed at rest,
 they turn about Z away from the window up to ``shutter_angle`` (< pi/2); on a wide
 window each side is a bifold whose inner leaf folds back over the outer one. Optional
 curtain halves hang from a rod on the room side and slide outward along Y from
-the centre (horizontal slides: neutral under gravity). In front of casements the
+the centre, or one panel draws to one side (horizontal slides: neutral under gravity). In front of casements the
 rod stands off by half a sash width more; the core stops the casements
 before they reach the curtains (``limit_to_clearance``). A transom light (fixed glass above a bar)
 grows only on frames taller than 1.1 m. Every hinge axis is vertical and every
@@ -62,6 +62,16 @@ def vents(p, rng) -> int:
     return 1 if p["style"] == "double_hung" else sashes(p, rng)
 
 
+def sash_locks(p, rng) -> int:
+    """one cam lock on the meeting rail, two on a frame wider than 0.9 m"""
+    return 2 if p["width"] > LOCKS_FROM else 1
+
+
+def curtain_panels(p, rng) -> int:
+    """two halves, or one panel (curtain_panels)"""
+    return 1 if p["curtain_panels"] == "single" else 2
+
+
 def shutter_leaves(p, rng) -> int:
     """two leaves, four (bifolds) when a side is wider than shutter_leaf_width"""
     return 4 if p["width"] / 2 > p["shutter_leaf_width"] else 2
@@ -70,25 +80,28 @@ def shutter_leaves(p, rng) -> int:
 GRAMMAR = Grammar("window", {
     "window": Node(label="frame", one_of={"casement": 0.3, "sliding": 0.2, "tilt_turn": 0.2, "awning": 0.15,
                                           "double_hung": 0.15}, choice="style",
-                   optional={"shutters": 0.2, "curtains": 0.3, "sill": 0.6, "transom": 0.25, "trickle_vents": 0.35}),
+                   optional={"shutters": 0.35, "curtains": 0.4, "sill": 0.6, "transom": 0.25, "trickle_vents": 0.45}),
     "trickle_vents": Node(repeat={"vent": vents}),
     "vent": Node(label="vent"),
     "casement": Node(repeat={"sash": sashes}),
     "sliding": Node(repeat={"sash": sashes}),
     "tilt_turn": Node(repeat={"sash": sashes}),
     "awning": Node(repeat={"sash": sashes}),
-    "double_hung": Node(repeat={"sash": 2}),
+    "double_hung": Node(repeat={"sash": 2}, optional={"sash_locks": 0.8}),
+    "sash_locks": Node(repeat={"sash_lock": sash_locks}),
+    "sash_lock": Node(label="lock"),
     "sash": Node(label="sash", optional={"lever": 1.0}),
     "lever": Node(label="handle"),
     "sill": Node(), "transom": Node(),
     "shutters": Node(repeat={"shutter": shutter_leaves}),
     "shutter": Node(label="shutter"),
-    "curtains": Node(repeat={"curtain": 2}),
+    "curtains": Node(repeat={"curtain": curtain_panels}),
     "curtain": Node(label="curtain"),
 })
 """A transom light grows only on frames taller than 1.1 m. A casement or tilt-and-turn sash's lever handle
 turns (an espagnolette handle: down is locked, a quarter turn unlocks); knobs and pulls are fixed to their sash.
-Trickle vents sit on the head's room face, one over each sash (one over a double-hung pair)."""
+Trickle vents sit on the head's room face, one over each sash (one over a double-hung pair). A double-hung
+window's lower sash may carry cam sash locks on its meeting rail, their levers turning about the vertical."""
 
 PARAMS = (
     Float("width", "overall frame width (Y)", "m", 0.6, 2.5),
@@ -126,6 +139,8 @@ PARAMS = (
     Float("curtain_overhang", "rod and closed curtains reach past each side of the frame", "m",
           0.05, 0.25),
     Float("curtain_drop", "curtain length as a fraction of the rod height", "", 0.6, 0.98),
+    Choice("curtain_panels", "a pair of curtains drawn apart, or one panel drawn to one side",
+           choices=("pair", "single"), weights=(0.65, 0.35)),
     Float("curtain_open", "how far a curtain half slides, as a fraction of its width", "", 0.45, 0.75),
     Choice("rod_finish", "curtain rod material", choices=("brushed_metal", "wood", "chrome")),
 )
@@ -140,6 +155,12 @@ MATERIALS = {
     "curtain": "fabric", "rod": "rod_finish",
 }
 
+LOCK = dict(base=(0.064, 0.012), lever=(0.05, 0.012, 0.006), hub=0.009, gap=0.001)
+"""Cam sash lock (m): base length along the rail and height, lever (length, width, thickness), hub radius, gap
+between base and lever. Double-hung sashes carry one cam lock, two on units wider than about 36 in (0.9 m)
+(Andersen 400 / Marvin / Pella double-hung hardware: 60-75 mm bases, the lever turning a quarter to a half turn
+in the rail's plane)."""
+LOCKS_FROM = 0.9
 LEVER_TURN = np.pi / 2  # an espagnolette lever's quarter turn (Hoppe, Roto: 90 degrees to open)
 VENT = dict(length=0.3, height=0.02, depth=0.012, wall=0.002, slide=0.08, stroke=0.035)
 CLR_VENT = 0.0015  # the vent's slide in its housing
@@ -207,7 +228,8 @@ class WindowLayout(Layout):
         if node.one("shutters"):
             self.grow(node.one("shutters"), made=P.shutters(p, W, H, fd, z0))
         if node.one("curtains"):
-            self.grow(node.one("curtains"), made=P.curtains(p, W, H, fd, z0, fw, x_room))
+            side = (1 if self.rng.random() < 0.5 else -1) if p["curtain_panels"] == "single" else 0
+            self.grow(node.one("curtains"), made=P.curtains(p, W, H, fd, z0, fw, x_room, side))
         if node.one("trickle_vents"):
             spans = [(float(b[0][1]), float(b[1][1])) for b in
                      (_bounds([pc for pc in pieces if pc.material != "handle"]) for _, pieces, _ in made)]
@@ -234,7 +256,34 @@ class WindowLayout(Layout):
     def casement(self, node, made):
         self._parts(node, "sash", made)
 
-    sliding = tilt_turn = awning = double_hung = casement
+    sliding = tilt_turn = awning = casement
+
+    def double_hung(self, node, made):
+        self._parts(node, "sash", made)
+        if node.one("sash_locks"):
+            lo, hi = _bounds([pc for pc in made[0][1] if pc.material != "handle"])  # the lower sash
+            self.grow(node.one("sash_locks"), sash=made[0][0], lo=lo, hi=hi)
+
+    def sash_locks(self, node, sash, lo, hi):
+        kids = node.of("sash_lock")
+        for k, kid in enumerate(kids):
+            y = lo[1] + (hi[1] - lo[1]) * (k + 1) / (len(kids) + 1)  # centred, or at the third points
+            self.grow(kid, k=k, sash=sash, xs=(float(lo[0]), float(hi[0])), y=float(y), z=float(hi[2]))
+
+    def sash_lock(self, node, k, sash, xs, y, z):
+        """A cam sash lock on the lower sash's meeting rail: its base screwed to the rail's top, its lever
+        lying along the rail (locked) and turning a quarter turn about the vertical toward the room."""
+        bl, bh = LOCK["base"]
+        ll, lw, lt = LOCK["lever"]
+        xc = (xs[0] + xs[1]) / 2
+        self.extend(sash, [g.box_between([xs[0] + 0.002, y - bl / 2, z], [xs[1], y + bl / 2, z + bh], "handle",
+                                         bevel=0.002)])
+        z0 = z + bh + LOCK["gap"]
+        name = self.add(f"lock_{k}", "lock", [
+            g.cylinder([xc, y, z0], [xc, y, z0 + lt + 0.002], LOCK["hub"], "handle", 24),
+            g.box_between([xc - lw / 2, y, z0], [xc + lw / 2, y + ll, z0 + lt], "handle", bevel=0.002)])
+        # about -z: the lever turns from along +y toward the room (+x), away from the upper sash
+        self.hinge(sash, name, Frame.at((xc, y, z0), z=(0, 0, -1)), upper=LEVER_TURN, role="knob")
 
     def sash(self, node, name, pieces, spec):
         lever = [pc for pc in pieces if pc.name == "handle"] if node.one("lever") else []
@@ -248,7 +297,7 @@ class WindowLayout(Layout):
         sash normal toward the hinge side: hanging under its spindle it is neutral under gravity."""
         spindle = pieces[0].bounds
         y, z = (spindle[0][1:] + spindle[1][1:]) / 2
-        x0 = float(spindle[0][0]) + 0.0025  # the spindle starts at the rose's face (it was sunk 2 mm into it)
+        x0 = float(spindle[0][0]) + 0.0035  # 1.5 mm off the rose's face (the spindle was sunk 2 mm into it)
         pieces = [g.cylinder([x0, y, z], [float(spindle[1][0]), y, z], 0.0055, "handle", 16, name="handle"),
                   *pieces[1:]]
         hinge_y = float(self.bp.joints[-1].dofs[0].origin[1])

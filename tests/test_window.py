@@ -14,7 +14,7 @@ from collide import overlap
 from zoo import by_child, make_bp, movable, object_limits
 
 SEEDS = range(8)
-LABELS = {"frame", "sash", "shutter", "curtain", "handle", "vent"}
+LABELS = {"frame", "sash", "shutter", "curtain", "handle", "vent", "lock"}
 VOLUME_TOL = 1e-7  # m^3, as the validator
 EYE = np.eye(4)
 
@@ -57,7 +57,8 @@ def test_parts_labels_and_materials(seed):
     assert used <= set(bp.materials)
     shutters = sum(part.label == "shutter" for part in bp.parts.values())
     assert shutters == ((4 if p["width"] / 2 > p["shutter_leaf_width"] else 2) if p["has_shutters"] else 0)
-    assert (sum(part.label == "curtain" for part in bp.parts.values()) == 2) == p["has_curtains"]
+    curtains = sum(part.label == "curtain" for part in bp.parts.values())
+    assert curtains == ((1 if p["curtain_panels"] == "single" else 2) if p["has_curtains"] else 0)
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -121,7 +122,7 @@ def test_sliding_sashes_stay_in_the_frame(seed):
 
 
 def test_shutters_and_curtains():
-    _, bp = make(4, has_shutters=True, has_curtains=True, width=2.0, shutter_leaf_width=0.6)
+    _, bp = make(4, has_shutters=True, has_curtains=True, curtain_panels="pair", width=2.0, shutter_leaf_width=0.6)
     for k in (0, 1):
         d = by_child(bp, f"shutter_{k}").dofs[0]
         assert abs(d.axis[2]) == pytest.approx(1.0) and 0 < d.upper < math.pi / 2
@@ -215,7 +216,7 @@ def test_each_design_is_forced_moves_and_stays_clear(style):
         d = by_child(bp, "sash_0").dofs[0]
         lo, hi = bounds(bp.parts["sash_0"], True)
         bottom = np.array([lo[0], d.origin[1], lo[2], 1.0])
-        assert d.origin[2] >= hi[2] - 1e-9 and (dof_motion(d, 0.3) @ bottom)[0] < bottom[0] - 0.05
+        assert d.origin[2] >= hi[2] - 1e-6 and (dof_motion(d, 0.3) @ bottom)[0] < bottom[0] - 0.05  # float32 vertices
         assert p["height"] <= 1.0
     else:  # the lower sash slides up, the upper one tilts in
         assert kinds == {"sash_0": "prismatic", "sash_1": "revolute"}
@@ -293,3 +294,35 @@ def test_trickle_vents_slide_in_the_head(style):
         assert hi[2] < frame_hi[2]
         for q in (0.0, d.upper):
             assert overlap(bp.parts[name], dof_motion(d, q), bp.parts["frame"], np.eye(4)) < VOLUME_TOL
+
+
+def test_double_hung_sash_locks():
+    """Cam locks on the lower sash's meeting rail, one on a narrow unit and two on one wider than 0.9 m; each
+    lever turns a quarter turn about the vertical (no gravity torque) and stays clear of the upper sash."""
+    for width, n in ((0.7, 1), (1.1, 2)):
+        over = dict(style="double_hung", has_sash_locks=True, width=width, has_curtains=False, has_shutters=False)
+        _, bp = make(5, **over)
+        locks = [name for name, part in bp.parts.items() if part.label == "lock"]
+        assert len(locks) == n
+        top = bounds(bp.parts["sash_0"], True)[1][2]
+        for name in locks:
+            j = by_child(bp, name)
+            d = j.dofs[0]
+            assert j.parent == "sash_0" and j.kind == "revolute" and abs(d.axis[2]) == pytest.approx(1.0)
+            assert d.origin[2] > top and d.upper == pytest.approx(math.pi / 2)
+        bp = object_limits("window", 5, bp, **over)
+        for q in states(bp):
+            _pairs_clear(bp, q)
+
+
+def test_single_curtain_panel_draws_to_one_side():
+    """One curtain panel across the rod, sliding to one side; the rod reaches past it fully drawn."""
+    _, bp = make(6, has_curtains=True, curtain_panels="single", style="sliding")
+    assert [n for n, part in bp.parts.items() if part.label == "curtain"] == ["curtain_0"]
+    d = by_child(bp, "curtain_0").dofs[0]
+    lo, hi = bounds(bp.parts["curtain_0"])
+    assert lo[1] < -0.3 and hi[1] > 0.3  # across the window
+    m = dof_motion(d, d.upper)
+    end = (m @ [0, hi[1] if d.axis[1] > 0 else lo[1], 0, 1])[1]
+    rod = max((pc for pc in bp.parts["frame"].pieces if pc.material == "rod"), key=lambda pc: np.ptp(pc.bounds[:, 1]))
+    assert rod.bounds[0, 1] < end < rod.bounds[1, 1]

@@ -312,21 +312,26 @@ def shutter_leaf(ya, yb, za, zb, x0, x1, p) -> list[g.Piece]:
 
 
 
-def curtains(p, W, H, fd, z0, fw, x_room):
-    """A rod on two brackets above the frame and two pleated halves sliding apart.
+def curtains(p, W, H, fd, z0, fw, x_room, single: int = 0):
+    """A rod on two brackets above the frame and two pleated halves sliding apart, or (``single`` = +1 or -1)
+    one panel across the whole rod that draws to that side (a single-panel curtain, common on narrow windows).
 
-    Returns the rod's pieces (fixed to the frame) and ``(name, pieces, joint spec)`` per half."""
+    Returns the rod's pieces (fixed to the frame) and ``(name, pieces, joint spec)`` per panel."""
     amp, tc = 0.025, 0.004  # pleat half-depth, fabric thickness
     xc = x_room + p["curtain_offset"] + amp + tc  # curtain and rod plane
     rr = 0.012
     zr = z0 + H + p["curtain_rise"]
     span = W / 2 + p["curtain_overhang"]  # closed curtains reach +-span
     half = span - 0.004
+    panels = [(sign * 0.002, sign * span, sign) for sign in (-1, 1)]  # (inner edge, outer edge, direction)
+    if single:
+        half = 2 * span - 0.004
+        panels = [(-single * span, single * span, single)]
     travel = p["curtain_open"] * half
-    rod_end = span + travel + 0.03
-    rod = [g.cylinder([xc, -rod_end, zr], [xc, rod_end, zr], rr, "rod", 20)]
+    ends = {s: span + (travel if not single or s == single else 0.0) + 0.03 for s in (-1, 1)}
+    rod = [g.cylinder([xc, -ends[-1], zr], [xc, ends[1], zr], rr, "rod", 20)]
     for s in (-1, 1):
-        rod.append(g.sphere([xc, s * (rod_end + 0.02), zr], 0.022, "rod"))
+        rod.append(g.sphere([xc, s * (ends[s] + 0.02), zr], 0.022, "rod"))
         yb = s * (W / 2 - fw / 2)
         rod += [
             g.box_between([fd / 2 - 0.012, yb - 0.01, z0 + H - fw], [fd / 2, yb + 0.01, zr + 0.006], "rod"),
@@ -337,8 +342,7 @@ def curtains(p, W, H, fd, z0, fw, x_room):
     zt = zr - rr - 0.022
     zb = zt - p["curtain_drop"] * (zt - 0.015)
     lam = 0.14  # pleat wavelength
-    for k, sign in enumerate((-1, 1)):
-        y_in, y_out = sign * 0.002, sign * span
+    for k, (y_in, y_out, sign) in enumerate(panels):
         n = max(2, int(round(abs(y_out - y_in) / (lam / 2))))
         ys = np.linspace(y_in, y_out, n + 1)
         xs = xc + amp * np.where(np.arange(n + 1) % 2 == 0, 1.0, -1.0)
@@ -361,7 +365,7 @@ def curtains(p, W, H, fd, z0, fw, x_room):
             hook = g.cylinder([xc, y, zt - 0.005], [xc, y, zr - rr - 0.008], 0.0015, "rod", 8).replace(convex=[])
             pieces.append(hook)
         name = f"curtain_{k}"
-        halves.append((name, pieces, J.prismatic("frame", name, (xc, sign * span / 2, (zb + zt) / 2), (0, sign, 0),
+        halves.append((name, pieces, J.prismatic("frame", name, (xc, (y_in + y_out) / 2, (zb + zt) / 2), (0, sign, 0),
                                                   0.0, travel, role="slide")))
     return rod, halves
 
