@@ -71,7 +71,7 @@ GRAMMAR = Grammar("dining_table", {
     "leveller": Node(label="foot"),
     "adjustable_legs": Node(label="leg"),
     "pedestal": Node(optional={"pedestal_levellers": 0.5}),
-    "pedestal_levellers": Node(repeat={"leveller": 4}),
+    "pedestal_levellers": Node(repeat={"leveller": T.pedestal_glide_count}),
     "extension": Node(label="top", repeat={"leaf": "leaf_count"}),
     "leaf": Node(label="leaf"),
     "drawers": Node(repeat={"drawer": drawer_count, "back_drawer": back_drawer_count}),
@@ -92,6 +92,8 @@ PARAMS = (
     Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", 0.05, 0.09),
     Float("leaf_fraction", "a drop leaf's width as a fraction of the table width (leaves of 20-34 cm)", "",
           0.2, 0.28),
+    Int("lopers_per_leaf", "swing brackets under each drop leaf: one in the middle, or two on an apron 1.3 m or "
+        "longer", "", 1, 2),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
           "", 0.25, 0.4),
     Int("drawer_count", "drawers in the +Y long side (at most two under 1.9 m long)", "", 1, 3),
@@ -362,9 +364,9 @@ class TableLayout(Layout):
 
     def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
         """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
-        under a leaf whose apron is ``TWO_LOPERS`` long or longer."""
+        under a leaf whose apron is ``TWO_LOPERS`` long or longer when ``lopers_per_leaf`` is 2."""
         length = min(LOPER, 0.4 * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        xs = [-La / 4, La / 4] if La >= TWO_LOPERS else [0.0]
+        xs = [-La / 4, La / 4] if La >= TWO_LOPERS and self.p["lopers_per_leaf"] == 2 else [0.0]
         for k, xc in enumerate(xs):
             pieces, hinge = M.loper(xc - length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
             name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
