@@ -11,7 +11,8 @@ has one, slides up and down the column), ``disc`` (a pedestal bar stool with a f
 ``four_leg`` (four splayed steel legs with a foot rail and a swivel bearing plate; no lift, as on
 most four-leg swivel bar stools). A gas-lift stool may have its height lever as a moving part and a
 seat that tilts forward (sit-stand stools). A stool with a back may have two arms: fixed, height-adjustable
-(the post slides up) or flip-up (drafting chairs).
+(the post slides up) or flip-up (drafting chairs). A gas-lift stool's square pan may slide forward on its
+mechanism (seat depth adjustment), and one whose back reclines may have a tilt-tension knob.
 Parts: ``categories/parts/seating.py`` (shared with the office chair).
 """
 

@@ -1,4 +1,4 @@
-"""Dining table: a fixed, extending or drop-leaf top on an apron, on 4 legs or a pedestal.
+"""Dining table: a fixed, extending, draw-leaf or drop-leaf top on an apron, on 4 legs or a pedestal.
 
 X is the long axis (``length``), Y the short axis (``width``), Z is up. The top overhangs an
 apron of four boards on 4 legs at its corners (tapered, turned or square) or on one pedestal
@@ -8,9 +8,14 @@ leaves (a narrow fixed centre and a leaf along each long side hanging from a rul
 raised level on a swing-out bracket (loper) that turns out of the apron side under it: a
 Pembroke / drop-leaf table). Optional mechanisms: drawers in the long apron boards, pulled out
 along Y, or in the end boards, pulled out along X (always so on a drop-leaf table, whose lopers are
-in the long boards); levelling feet screwed into the legs (turning about z); adjustable legs (inner legs sliding
-up in square sleeves under the apron corners, resting on the floor). A table that would grow no
-moving part gets apron drawers. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
+in the long boards; one or both ends); levelling feet screwed into the legs (fixed parts); four swivelling
+plate casters under the legs (a rolling kitchen table); adjustable legs (inner legs sliding up in square
+sleeves under the apron corners, resting on the floor); levelling glides under a pedestal's foot (three
+under a round foot, four under trestle feet). An extending top stores one or two leaves, stacked, in the
+apron. A draw-leaf top (``draw_leaf``) is fixed over two leaves stored under its ends that pull out along
+X. A fixed or draw-leaf top may carry a lazy susan (a turntable on a bearing ring, turning about z). A
+table that would grow no moving part gets apron drawers. Parts: ``categories/parts/tables.py``,
+``panels.drawer_box``, ``hardware``, ``seating.caster``.
 """
 
 from __future__ import annotations
