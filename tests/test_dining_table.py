@@ -63,13 +63,23 @@ def test_joint_kinds_axes_and_limits(seed):
     p, bp = make(seed)
     for j in bp.joints:
         part = bp.parts[j.child]
+        if part.label == "wheel":  # a caster's wheel turns about its axle under the fork
+            assert j.kind == "continuous" and bp.parts[j.parent].label == "caster"
+            continue
         assert j.parent == "body"
-        if j.child == "leaf":  # the stored extension leaf
-            assert j.kind == "fixed"
+        if j.child.startswith("leaf") and j.kind == "fixed":  # the stored extension leaves
+            assert j.child in ("leaf", "leaf_2")
+            continue
+        if part.label in ("caster", "turntable"):  # casters swivel, the lazy susan turns, about z
+            assert j.kind == "continuous" and j.dofs[0].axis == pytest.approx((0, 0, 1))
             continue
         if part.label == "foot":  # a levelling foot, fixed under its leg (it turns only with the table lifted)
             assert j.kind == "fixed"
             assert min(pc.bounds[0, 2] for pc in part.pieces) == pytest.approx(0.0, abs=1e-9)
+            continue
+        if part.label == "leaf" and j.kind == "prismatic":  # draw leaves pull out along the long axis
+            d = j.dofs[0]
+            assert abs(d.axis[0]) == pytest.approx(1.0) and d.lower == 0.0 and d.upper > 0.0
             continue
         if part.label in ("leaf", "bracket"):  # drop leaves rise level, lopers swing out under them
             d = j.dofs[0]
