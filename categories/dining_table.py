@@ -215,9 +215,11 @@ class TableLayout(Layout):
             body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, 0.15 * tt, "top"))
         elif not ext:
             body.append(T.top(L, W, p["top_shape"], H - tt, H, 0.2 * tt, "top"))
-        if draw:  # the top rests on a centre bearer between the two leaves stored under its ends
-            xb = L / 2 - self._draw_leaf_length() - LEAF_GAP
-            body.append(g.box_between((-xb, -Wa / 2 + BOARD, za1), (xb, Wa / 2 - BOARD, H - tt), "frame"))
+        if draw:  # the top rests on a bearer frame (two side rails, a cross rail) between the stored leaves
+            xb, yb = L / 2 - self._draw_leaf_length() - LEAF_GAP, Wa / 2 - BOARD
+            for y0, y1 in ((-yb, -yb + 0.06), (yb - 0.06, yb)):
+                body.append(g.box_between((-xb, y0, za1), (xb, y1, H - tt), "frame"))
+            body.append(g.box_between((-0.04, -yb + 0.06, za1), (0.04, yb - 0.06, H - tt), "frame"))
         self.add("body", "body", body)
         self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
         self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
