@@ -11,7 +11,8 @@ has one, slides up and down the column), ``disc`` (a pedestal bar stool with a f
 ``four_leg`` (four splayed steel legs with a foot rail and a swivel bearing plate; no lift, as on
 most four-leg swivel bar stools). A gas-lift stool may have its height lever as a moving part and a
 seat that tilts forward (sit-stand stools). A stool with a back may have two arms: fixed, height-adjustable
-(the post slides up) or flip-up (drafting chairs).
+(the post slides up) or flip-up (drafting chairs). A gas-lift stool's square pan may slide forward on its
+mechanism (seat depth adjustment), and one whose back reclines may have a tilt-tension knob.
 Parts: ``categories/parts/seating.py`` (shared with the office chair).
 """
 
@@ -27,8 +28,8 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import seating as S
 
 GRAMMAR = Grammar("bar_chair", {
-    "bar_chair": Node(required=("seat",), one_of={"wheeled": 0.3, "disc": 0.45, "four_leg": 0.25},
-                      choice="base_type", optional={"back": 0.45, "arms": 0.4}),
+    "bar_chair": Node(required=("seat",), one_of={"wheeled": 0.5, "disc": 0.36, "four_leg": 0.14},
+                      choice="base_type", optional={"back": 0.65, "arms": 0.45}),
     "wheeled": Node(label="base", required=("lift",), repeat={"caster": S.legs}, optional={"ring_slide": 0.7}),
     "disc": Node(label="base", required=("lift", "foot_ring")),
     "four_leg": Node(label="base"),
@@ -40,7 +41,9 @@ GRAMMAR = Grammar("bar_chair", {
     "lift": Node(label="lift", optional={"lever": 0.5, "seat_tilt": 0.35}),
     "lever": Node(label="lever"),
     "seat_tilt": Node(label="seat"),
-    "seat": Node(label="seat"),
+    "seat": Node(label="seat", optional={"seat_slider": 0.35, "tension_knob": 0.5}),
+    "seat_slider": Node(label="seat"),
+    "tension_knob": Node(label="knob"),
     "back": Node(label="back"),
     "arms": Node(repeat={"arm": 2}),
     "arm": Node(label="arm", one_of={"arm_fixed": 0.4, "arm_height": 0.3, "arm_flip": 0.3}, choice="arm_style"),
@@ -139,10 +142,30 @@ class StoolLayout(S.ChairNodes):
         pieces = seat.assembly.parts[seat.assembly.root].pieces
         if lever:  # the lever is its own part (grown under the lift)
             pieces = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())[0]
-        if tilt:  # the pan and cushion are their own part (grown under the lift)
+        slider = node.one("seat_slider")
+        if tilt or slider:  # the pan and cushion are their own part (grown under the lift, or the slider)
             pieces = [pc for pc in pieces if pc.material not in ("seat", "pan")]
         self.add("seat", "seat", pieces)
+        if slider:
+            self.grow(slider, seat=seat)
+        if node.one("tension_knob"):
+            self.grow(node.one("tension_knob"), seat=seat)
         return seat
+
+    def seat_slider(self, node, seat):
+        """The pan and cushion slide forward on rails of the mechanism (seat depth adjustment of drafting chairs,
+        e.g. Steelcase Leap / Herman Miller Aeron stools, Boss B16xx drafting stools' seat slider)."""
+        self.add("seat_pan", "seat", S.split_seat(seat)[1])
+        self.slide("seat", "seat_pan", Frame.at((seat.xc, 0, seat.z_pan0), z=(1, 0, 0)), upper=S.SEAT_SLIDE)
+
+    def tension_knob(self, node, seat):
+        """The tilt-tension knob at the front of the mechanism (drafting stools whose back reclines)."""
+        p = self.p
+        r_mech = min(0.12, 0.6 * p["seat_width"] / 2)  # a round seat's mechanism, as its tilt pivot
+        depth = p["seat_depth"] if p["seat_shape"] == "square" else 2 * r_mech / 0.55
+        pieces, axis = S.tension_knob(seat, depth, MECHANISM)
+        self.add("tension_knob", "knob", pieces)
+        self.spin("seat", "tension_knob", axis, role="knob")
 
     def _lever_reach(self):
         """The paddle's y, under the seat's edge (as on the office chair's seat)."""
@@ -219,8 +242,14 @@ class StoolLayout(S.ChairNodes):
 
 
 def arms_need_a_back(p: dict) -> dict:
-    """Arms stand beside a back: a stool without one has none."""
-    return {**p, "has_arms": p["has_arms"] and p["has_back"]}
+    """Arms stand beside a back: a stool without one has none. A seat slider moves a square pan that does not
+    tilt; a tension knob sets the recline of a hinged back (and sits where a tilting pan would dip); both are
+    parts of a gas-lift stool's seat mechanism."""
+    tilt, mech = p["has_seat_tilt"], p["base_type"] != "four_leg"  # a four-leg stool's seat is on a bare bearing
+    return {**p, "has_arms": p["has_arms"] and p["has_back"],
+            "has_seat_slider": p["has_seat_slider"] and mech and p["seat_shape"] == "square" and not tilt,
+            "has_tension_knob": (p["has_tension_knob"] and mech and p["has_back"] and p["back_mount"] == "hinged"
+                                 and not tilt)}
 
 
 CATEGORY = Category("bar_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, StoolLayout,

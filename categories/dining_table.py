@@ -1,4 +1,4 @@
-"""Dining table: a fixed, extending or drop-leaf top on an apron, on 4 legs or a pedestal.
+"""Dining table: a fixed, extending, draw-leaf or drop-leaf top on an apron, on 4 legs or a pedestal.
 
 X is the long axis (``length``), Y the short axis (``width``), Z is up. The top overhangs an
 apron of four boards on 4 legs at its corners (tapered, turned or square) or on one pedestal
@@ -8,9 +8,14 @@ leaves (a narrow fixed centre and a leaf along each long side hanging from a rul
 raised level on a swing-out bracket (loper) that turns out of the apron side under it: a
 Pembroke / drop-leaf table). Optional mechanisms: drawers in the long apron boards, pulled out
 along Y, or in the end boards, pulled out along X (always so on a drop-leaf table, whose lopers are
-in the long boards); levelling feet screwed into the legs (turning about z); adjustable legs (inner legs sliding
-up in square sleeves under the apron corners, resting on the floor). A table that would grow no
-moving part gets the extension. Parts: ``categories/parts/tables.py``, ``panels.drawer_box``, ``hardware``.
+in the long boards; one or both ends); levelling feet screwed into the legs (fixed parts); four swivelling
+plate casters under the legs (a rolling kitchen table); adjustable legs (inner legs sliding up in square
+sleeves under the apron corners, resting on the floor); levelling glides under a pedestal's foot (three
+under a round foot, four under trestle feet). An extending top stores one or two leaves, stacked, in the
+apron. A draw-leaf top (``draw_leaf``) is fixed over two leaves stored under its ends that pull out along
+X. A fixed or draw-leaf top may carry a lazy susan (a turntable on a bearing ring, turning about z). A
+table that would grow no moving part gets apron drawers. Parts: ``categories/parts/tables.py``,
+``panels.drawer_box``, ``hardware``, ``seating.caster``.
 """
 
 from __future__ import annotations
@@ -25,14 +30,15 @@ from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import hardware, panels
+from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 
 
 def per_side(p: dict, count: int) -> int:
-    """A long side's drawer count: up to three on a table 2.2 m or longer (farmhouse and refectory tables carry
+    """A long side's drawer count: up to three on a table 1.9 m or longer (farmhouse and refectory tables carry
     2-3 apron drawers a side), else up to two."""
-    return min(count, 3 if p["length"] >= 2.2 else 2)
+    return min(count, 3 if p["length"] >= 1.9 else 2)
 
 
 def drawer_count(p, rng) -> int:
@@ -41,25 +47,37 @@ def drawer_count(p, rng) -> int:
 
 
 def back_drawer_count(p, rng) -> int:
-    """back_drawer_count in the -Y side when drawer_sides is both (capped), one in the -X end, else none"""
+    """back_drawer_count in the -Y side when drawer_sides is both (capped), one in the -X end when end_drawers
+    is 2, else none"""
     sides = p["drawer_sides"]
-    return 0 if sides == "one" else 1 if sides == "ends" else per_side(p, p["back_drawer_count"])
+    if sides == "ends":
+        return 1 if p["end_drawers"] == 2 else 0
+    return 0 if sides == "one" else per_side(p, p["back_drawer_count"])
 
 
 GRAMMAR = Grammar("dining_table", {
-    "dining_table": Node(label="body", one_of={"legs": 0.7, "pedestal": 0.3}, choice="support",
-                         optional={"drawers": 0.4}, required=("top_style",)),
-    "top_style": Node(one_of={"fixed": 0.3, "extension": 0.45, "drop_leaf": 0.25}, choice="top_style"),
-    "fixed": Node(),
+    "dining_table": Node(label="body", one_of={"legs": 0.75, "pedestal": 0.25}, choice="support",
+                         optional={"drawers": 0.75}, required=("top_style",)),
+    "top_style": Node(one_of={"fixed": 0.35, "extension": 0.25, "drop_leaf": 0.2, "draw_leaf": 0.2},
+                      choice="top_style"),
+    "draw_leaf": Node(repeat={"end_leaf": 2}, optional={"lazy_susan": 0.5}),
+    "end_leaf": Node(label="leaf"),
+    "fixed": Node(optional={"lazy_susan": 0.5}),
+    "lazy_susan": Node(label="turntable"),
     "drop_leaf": Node(repeat={"leaf_side": 2}),
     "leaf_side": Node(label="leaf", optional={"loper": 0.85}),
     "loper": Node(label="bracket"),
-    "legs": Node(optional={"adjustable_legs": 0.25, "levellers": 0.45}),
+    "legs": Node(optional={"adjustable_legs": 0.35, "levellers": 0.6, "casters": 0.35}),
+    "casters": Node(repeat={"table_caster": 4}),
+    "table_caster": Node(label="caster", one_of={"twin": 0.6, "single": 0.4}, choice="caster_style"),
+    "twin": Node(label="wheel"),
+    "single": Node(label="wheel"),
     "levellers": Node(repeat={"leveller": 4}),
     "leveller": Node(label="foot"),
     "adjustable_legs": Node(label="leg"),
-    "pedestal": Node(),
-    "extension": Node(label="top", required=("leaf",)),
+    "pedestal": Node(optional={"pedestal_levellers": 0.5}),
+    "pedestal_levellers": Node(repeat={"leveller": T.pedestal_glide_count}),
+    "extension": Node(label="top", repeat={"leaf": "leaf_count"}),
     "leaf": Node(label="leaf"),
     "drawers": Node(repeat={"drawer": drawer_count, "back_drawer": back_drawer_count}),
     "back_drawer": Node(label="drawer"),
@@ -79,36 +97,54 @@ PARAMS = (
     Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", 0.05, 0.09),
     Float("leaf_fraction", "a drop leaf's width as a fraction of the table width (leaves of 20-34 cm)", "",
           0.2, 0.28),
+    Int("lopers_per_leaf", "swing brackets under each drop leaf: one in the middle, or two on an apron 1.3 m or "
+        "longer", "", 1, 2),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
           "", 0.25, 0.4),
-    Int("drawer_count", "drawers in the +Y long side (at most two under 2.2 m long)", "", 1, 3),
+    Int("drawer_count", "drawers in the +Y long side (at most two under 1.9 m long)", "", 1, 3),
     Int("back_drawer_count", "drawers in the -Y long side when drawer_sides is both (capped as the +Y side)", "",
         1, 3),
-    Choice("drawer_sides", "drawers in one long side (+Y), both long sides, or both ends (X)",
+    Choice("drawer_sides", "drawers in one long side (+Y), both long sides, or the ends (X)",
            choices=("one", "both", "ends"), weights=(0.4, 0.35, 0.25)),
+    # a Pembroke table has one drawer in one end (often a false front at the other); refectory tables one in each
+    Int("end_drawers", "drawers in the ends when drawer_sides is ends: one (+X) or both", "", 1, 2),
+    # self-storing extension leaves: one or two stacked in the apron (e.g. Bassett, Ethan Allen, Pottery Barn
+    # extension tables ship with one or two leaves), each half the opening wide
+    Int("leaf_count", "extension leaves stored in the apron, stacked", "", 1, 2),
+    # lazy susans on dining tables: 50-70 cm turntables on a ball-bearing ring (round banquet tables, family tables)
+    Float("lazy_susan_radius", "turntable radius as a fraction of the table width (fixed top)", "", 0.22, 0.3),
     Choice("handle_style", "drawer handle", choices=("knob", "bar"), weights=(0.55, 0.45)),
     Float("leg_travel", "how far an adjustable inner leg slides up", "m", 0.03, 0.1),
+    # rolling kitchen / farmhouse tables on four locking plate casters (e.g. John Boos work tables, industrial
+    # rolling dining tables): 50-75 mm wheels, twin-wheel or single-wheel
+    Float("wheel_radius", "caster wheel radius", "m", 0.025, 0.038),
     Float("pedestal_radius", "pedestal column radius", "m", 0.05, 0.09),
     Choice("top_finish", "material of the top and the leaf", choices=("wood", "painted"), weights=(0.75, 0.25)),
     Choice("frame_finish", "legs, apron, pedestal", choices=("wood", "painted", "brushed_metal"),
            weights=(0.6, 0.25, 0.15)),
     Choice("handle_finish", "drawer handle material", choices=("brushed_metal", "chrome", "wood")),
+    Choice("wheel_finish", "caster tyres", choices=("plastic", "rubber"), weights=(0.4, 0.6)),
 )
 
 MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_finish", "metal": "brushed_metal",
-             "foot": "rubber"}
+             "foot": "rubber", "caster": S.BLACK, "wheel": ("wheel_finish", {"plastic": S.BLACK})}
 
 
 def has_a_moving_part(p: dict) -> dict:
-    """A table whose draw grows no moving part (extension, drop leaves, drawers, adjustable legs) gets the
-    extension; adjustable legs have no levellers; a drop-leaf table's drawers are in its ends (its lopers
+    """A table whose draw grows no moving part (extension, drop leaves, drawers, adjustable legs, lazy susan) gets
+    apron drawers; adjustable legs have no levellers; a drop-leaf table's drawers are in its ends (its lopers
     turn out of the long apron boards)."""
     if p["has_adjustable_legs"]:  # inner legs stand on their own rubber feet
+        p = {**p, "has_levellers": False, "has_casters": False}
+    if p["has_casters"]:  # legs on casters have no levelling feet
         p = {**p, "has_levellers": False}
+    if p["top_style"] == "draw_leaf" and p["top_shape"] != "rectangular":  # draw leaves are square-ended
+        p = {**p, "top_shape": "rectangular"}
     if p["top_style"] == "drop_leaf" and p["drawer_sides"] != "ends":
         p = {**p, "drawer_sides": "ends"}
-    if p["top_style"] == "fixed" and not (p["has_drawers"] or (p["support"] == "legs" and p["has_adjustable_legs"])):
-        p = {**p, "top_style": "extension"}
+    if p["top_style"] == "fixed" and not (p["has_drawers"] or p["has_lazy_susan"]
+                                          or (p["support"] == "legs" and p["has_adjustable_legs"])):
+        p = {**p, "has_drawers": True}
     return p
 
 
@@ -122,7 +158,9 @@ LOPER = 0.25  # swing-out bracket length
 TWO_LOPERS = 1.3  # m of apron: a longer drop leaf rests on two lopers (long drop-leaf / harvest tables carry each
 #                   leaf on two swing brackets or gates; a Pembroke table's short leaf on one)
 LEVELLER = 0.015  # levelling foot height under a leg (M8 furniture levellers: 10-20 mm)
-LEAF_GAP = 0.004  # between the leaf and the halves above it
+LEAF_GAP = 0.004  # between the leaf and the halves above it (and between stacked leaves)
+BEARING = 0.01  # a lazy susan's ball-bearing ring (10 mm high 6-12 in bearings)
+SUSAN_T = 0.02  # the turntable's thickness
 SLEEVE_WALL = 0.004
 DRAWER_WALL = 0.01
 OVAL_APRON = 0.64  # an oval top's apron spans this fraction of its length and width
@@ -152,9 +190,11 @@ class TableLayout(Layout):
         if leaves:  # the apron and the folded lopers stay inside the hanging leaves
             Wa = min(Wa, wc - 2 * (LEAF_GAP_Y + 0.026))
         lw = p["leg_width"] if p["support"] == "legs" else 0.0
-        za1 = H - tt - (SEAT if ext else 0.0)
-        leaf = (za1 - LEAF_GAP - LEAF_T, za1 - LEAF_GAP)
-        need = 2 * MARGIN + DRAWER_MIN + (LEAF_T + 0.01 if ext else 0.0) if drawers else DRAWER_MIN
+        draw = style.one("draw_leaf")
+        za1 = H - tt - (SEAT if ext else 0.0) - (2 * LEAF_GAP + LEAF_T if draw else 0.0)
+        n_leaves = len(ext.of("leaf")) if ext else 0
+        leaf = (za1 - n_leaves * (LEAF_GAP + LEAF_T), za1 - LEAF_GAP)  # the stack of stored leaves
+        need = 2 * MARGIN + DRAWER_MIN + (za1 - leaf[0] + 0.006 if ext else 0.0) if drawers else DRAWER_MIN
         za0 = za1 - max(p["apron_height"], need)
         x_in = La / 2 - max(lw, BOARD)  # free length between the legs (half)
         ends = p["drawer_sides"] == "ends"
@@ -175,6 +215,11 @@ class TableLayout(Layout):
             body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, 0.15 * tt, "top"))
         elif not ext:
             body.append(T.top(L, W, p["top_shape"], H - tt, H, 0.2 * tt, "top"))
+        if draw:  # the top rests on a bearer frame (two side rails, a cross rail) between the stored leaves
+            xb, yb = L / 2 - self._draw_leaf_length() - LEAF_GAP, Wa / 2 - BOARD
+            for y0, y1 in ((-yb, -yb + 0.06), (yb - 0.06, yb)):
+                body.append(g.box_between((-xb, y0, za1), (xb, y1, H - tt), "frame"))
+            body.append(g.box_between((-0.04, -yb + 0.06, za1), (0.04, yb - 0.06, H - tt), "frame"))
         self.add("body", "body", body)
         self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
         self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
@@ -193,12 +238,17 @@ class TableLayout(Layout):
         corners = T.corner_frames(La, Wa, lw / 2)
         adj = node.one("adjustable_legs")
         if adj is None:
-            lev = node.one("levellers")
-            z0 = LEVELLER if lev else 0.0  # the legs stand on screw-in levelling feet
+            lev, cas = node.one("levellers"), node.one("casters")
+            c = S.caster(p["caster_style"], p["wheel_radius"]) if cas else None
+            z0 = LEVELLER if lev else c.stem_top + 0.004 if cas else 0.0  # levelling feet or casters under the legs
             self.extend("body", [pc.transformed(f.moved(dz=z0).matrix) for f in corners
                                  for pc in T.leg(p["leg_style"], lw / 2, za1 - z0, "frame", kind="dining")])
             if lev:
                 self.grow(lev, corners=corners, lw=lw)
+            if cas:
+                self.extend("body", [g.box(((lw + 0.01), (lw + 0.01), 0.004), f.point((0, 0, z0 - 0.002)), "metal")
+                                     for f in corners])  # the casters' top plates under the legs
+                self.grow(cas, corners=corners, c=c)
             return
         zs0 = SLEEVE_FROM * p["height"]
         self.extend("body", [pc.transformed(f.matrix) for f in corners
@@ -219,6 +269,23 @@ class TableLayout(Layout):
         self.add(f"leveller_{k}", "foot", pieces)
         self.fix("body", f"leveller_{k}")
 
+    def casters(self, node, corners, c):
+        for k, (n, f) in enumerate(zip(node.of("table_caster"), corners, strict=True)):
+            self.grow(n, k=k, at=f, c=c)
+
+    def table_caster(self, node, k, at, c):
+        """A swivelling plate caster under leg ``k`` (its fork turns about z under the leg)."""
+        fork = self.place(S.fork(c).placed(at), f"caster_{k}")
+        self.spin("body", fork.root, fork.anchor("swivel"), role="swivel")
+        self.grow(node.one(node.choice), fork=fork, wheels=[w.placed(at) for w in S.wheels(c)], k=k)
+
+    def twin(self, node, fork, wheels, k):
+        for j, w in enumerate(wheels):
+            wheel = self.place(w, f"wheel_{k}" if len(wheels) == 1 else f"wheel_{k}_{j}")
+            self.spin(fork.root, wheel.root, wheel.anchor("axle"), role="wheel")
+
+    single = twin
+
     def adjustable_legs(self, node, corners, lw, zs0, za1):
         zi1 = zs0 + INNER_AT_REST
         travel = min(self.p["leg_travel"], za1 - 0.03 - zi1)
@@ -230,13 +297,62 @@ class TableLayout(Layout):
 
     def pedestal(self, node, La, Wa, lw, za0, za1):
         p = self.p
-        self.extend("body", T.pedestals(p["length"], La, Wa, p["width"], p["pedestal_radius"], za0 - 0.002, "frame"))
+        lev = node.one("pedestal_levellers")
+        z0 = LEVELLER if lev else 0.0  # the foot stands on levelling glides
+        up = Frame.at((0, 0, z0)).matrix
+        self.extend("body", [pc.transformed(up) for pc in T.pedestals(p["length"], La, Wa, p["width"],
+                                                                      p["pedestal_radius"], za0 - 0.002 - z0,
+                                                                      "frame")])
+        if lev:
+            self.grow(lev, feet=T.pedestal_glides(p["length"], La, p["width"]))
+
+    def pedestal_levellers(self, node, feet):
+        """Levelling glides under the pedestal foot: four under a round foot, two under each trestle foot."""
+        for k, (n, f) in enumerate(zip(node.of("leveller"), feet, strict=True)):
+            self.grow(n, k=k, at=f, lw=0.05)
 
     def top_style(self, node, **slot):
         self.grow(node.one(node.choice), **slot)
 
     def fixed(self, node, **slot):
         self.extend("body", [])  # the top is the body's (built with it)
+        if node.one("lazy_susan"):
+            self.grow(node.one("lazy_susan"))
+
+    def lazy_susan(self, node):
+        """A turntable in the middle of the top on a ball-bearing ring (the ring is the body's)."""
+        p = self.p
+        H, r = p["height"], p["lazy_susan_radius"] * p["width"]
+        self.extend("body", [g.cylinder([0, 0, H], [0, 0, H + BEARING], 0.4 * r, "metal", 48)])
+        z0 = H + BEARING + 0.001
+        self.add("lazy_susan", "turntable", [g.revolve([(0.0, z0), (r - 0.004, z0), (r, z0 + 0.004),
+                                                        (r, z0 + SUSAN_T - 0.004), (r - 0.004, z0 + SUSAN_T),
+                                                        (0.0, z0 + SUSAN_T)], "top", sections=96)])
+        self.spin("body", "lazy_susan", Frame.at((0, 0, z0)), role="turntable")
+
+    def _draw_leaf_length(self):
+        """A draw leaf's length: 40-50 cm on a long table (each adds that much), never past a third of the top."""
+        return min(0.5, self.p["length"] / 3)
+
+    def draw_leaf(self, node, za1, **slot):
+        for side, n in zip((1, -1), node.of("end_leaf"), strict=True):
+            self.grow(n, side=side, za1=za1)
+        if node.one("lazy_susan"):
+            self.grow(node.one("lazy_susan"))
+
+    def end_leaf(self, node, side, za1):
+        """A draw leaf: stored under one end of the top on runners over the apron, pulled out along X
+        (a draw-leaf / refectory table, e.g. IKEA BJURSTA, Ercol draw-leaf tables; on the real table the leaf
+        then rises level with the top on its tapered runners, here it stays on them)."""
+        p = self.p
+        L, W = p["length"], p["width"]
+        ll = self._draw_leaf_length()
+        x0, x1 = sorted((side * (L / 2 - ll), side * (L / 2 - 0.005)))
+        z0 = za1 + LEAF_GAP
+        name = "leaf_front" if side > 0 else "leaf_back"
+        self.add(name, "leaf", [g.box_between((x0, -W / 2 + 0.01, z0), (x1, W / 2 - 0.01, z0 + LEAF_T), "top",
+                                              bevel=0.003)])
+        self.slide("body", name, Frame.at((side * (L / 2 - 0.005), 0, z0), z=(side, 0, 0)), upper=ll - 0.03)
 
     def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
         for side, n in zip((1, -1), node.of("leaf_side")):
@@ -255,9 +371,9 @@ class TableLayout(Layout):
 
     def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
         """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
-        under a leaf whose apron is ``TWO_LOPERS`` long or longer."""
+        under a leaf whose apron is ``TWO_LOPERS`` long or longer when ``lopers_per_leaf`` is 2."""
         length = min(LOPER, 0.4 * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        xs = [-La / 4, La / 4] if La >= TWO_LOPERS else [0.0]
+        xs = [-La / 4, La / 4] if La >= TWO_LOPERS and self.p["lopers_per_leaf"] == 2 else [0.0]
         for k, xc in enumerate(xs):
             pieces, hinge = M.loper(xc - length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
             name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
@@ -272,12 +388,18 @@ class TableLayout(Layout):
             self.add(name, "top", [T.half_top(L, W, p["top_shape"], H - tt, H, SPLIT, s, "top")])
             self.slide("body", name, Frame.at((s * SPLIT / 2, 0, H - tt), z=(s, 0, 0)), upper=travel)
         half = min(travel, x_in - 0.01)
-        self.grow(node.one("leaf"), lo=(-half, -Wa / 2 + BOARD, leaf[0]), hi=(half, Wa / 2 - BOARD, leaf[1]))
+        leaves = node.of("leaf")
+        if len(leaves) > 1:  # two leaves, each half the opening wide, fill it side by side
+            half /= 2
+        for k, n in enumerate(leaves):
+            z1 = leaf[1] - k * (LEAF_T + LEAF_GAP)
+            self.grow(n, k=k, lo=(-half, -Wa / 2 + BOARD, z1 - LEAF_T), hi=(half, Wa / 2 - BOARD, z1))
 
-    def leaf(self, node, lo, hi):
-        """One leaf stored on the runners in the apron, under the split (it is taken out by hand)."""
-        self.add("leaf", "leaf", [g.box_between(lo, hi, "top")])
-        self.fix("body", "leaf")
+    def leaf(self, node, k, lo, hi):
+        """A leaf stored on the runners in the apron, under the split (it is taken out by hand)."""
+        name = "leaf" if k == 0 else f"leaf_{k + 1}"
+        self.add(name, "leaf", [g.box_between(lo, hi, "top")])
+        self.fix("body", name)
 
     def drawers(self, node, slots, Wa, La, sides):
         ends = self.p["drawer_sides"] == "ends"

@@ -12,7 +12,7 @@ from infmob_usd.model import build as build_model
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
-LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring", "arm"}
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring", "arm", "knob"}
 
 
 def make(seed, **overrides):
@@ -135,3 +135,29 @@ def test_arms_beside_the_back(style, base):
         assert_clear(bp, ps, rest_pc, q)
     p, bp = make(5, has_back=False, has_arms=True)
     assert not p["has_arms"] and not any(part.label == "arm" for part in bp.parts.values())
+
+
+@pytest.mark.parametrize("base", ["wheeled", "disc"])
+def test_seat_slider_and_tension_knob(base):
+    """A gas-lift stool's square pan may slide forward on the mechanism (seat depth) and a stool whose back
+    reclines may have a tilt-tension knob at the front of the mechanism; every state stays clear. No slider on
+    a round or tilting seat, no knob without a hinged back, neither on a four-leg stool."""
+    _, bp = make(6, base_type=base, seat_shape="square", has_seat_slider=True, has_tension_knob=True,
+                 has_back=True, back_mount="hinged", has_seat_tilt=False, has_arms=False)
+    j = by_child(bp, "seat_pan")
+    assert j.kind == "prismatic" and j.parent == "seat" and j.dofs[0].axis == pytest.approx((1, 0, 0))
+    assert {pc.material for pc in bp.parts["seat_pan"].pieces} == {"seat", "pan"}
+    k = by_child(bp, "tension_knob")
+    assert k.kind == "continuous" and k.parent == "seat" and k.dofs[0].axis == pytest.approx((1, 0, 0))
+    rest_pc = rest_overlaps(bp)
+    for q in states(bp):
+        ps = bp.poses(q)
+        assert min(_box(bp.parts[n], ps[n])[0][2] for n in bp.parts) >= -5e-4
+        assert_clear(bp, ps, rest_pc, q)
+    for over in (dict(seat_shape="round"), dict(has_seat_tilt=True), dict(base_type="four_leg")):
+        p, _ = make(6, **{**dict(base_type=base, seat_shape="square", has_seat_slider=True), **over})
+        assert not p["has_seat_slider"], over
+    for over in (dict(back_mount="fixed"), dict(has_back=False), dict(base_type="four_leg")):
+        p, _ = make(6, **{**dict(base_type=base, has_back=True, back_mount="hinged", has_tension_knob=True,
+                                 has_seat_tilt=False), **over})
+        assert not p["has_tension_knob"], over

@@ -46,13 +46,14 @@ def test_parts_labels_and_model(seed):
     p, bp = make(seed)
     assert bp.root == "body"
     labels = {part.label for part in bp.parts.values()}
-    assert labels <= {"body", "top", "leaf", "drawer", "leg", "bracket", "foot"}
+    assert labels <= {"body", "top", "leaf", "drawer", "leg", "bracket", "foot", "turntable", "caster", "wheel"}
     assert {pc.material for part in bp.parts.values() for pc in part.pieces} <= set(bp.materials)
     assert all(pc.convex for part in bp.parts.values() for pc in part.pieces)
     links, _ = build_model(bp, {k: 700.0 for k in bp.materials})
     assert all(link.mass > 0 for link in links)
     lo, hi = bp.bounds()
-    assert lo[2] == pytest.approx(0.0, abs=1e-9) and hi[2] == pytest.approx(p["height"], abs=1e-6)
+    susan = dt.BEARING + 0.001 + dt.SUSAN_T if "lazy_susan" in bp.parts else 0.0  # a lazy susan stands on the top
+    assert lo[2] == pytest.approx(0.0, abs=1e-9) and hi[2] == pytest.approx(p["height"] + susan, abs=1e-6)
     assert hi[0] - lo[0] == pytest.approx(p["length"], rel=1e-3)
     assert movable(bp), "every table has a moving part"
 
@@ -62,13 +63,23 @@ def test_joint_kinds_axes_and_limits(seed):
     p, bp = make(seed)
     for j in bp.joints:
         part = bp.parts[j.child]
+        if part.label == "wheel":  # a caster's wheel turns about its axle under the fork
+            assert j.kind == "continuous" and bp.parts[j.parent].label == "caster"
+            continue
         assert j.parent == "body"
-        if j.child == "leaf":  # the stored extension leaf
-            assert j.kind == "fixed"
+        if j.child.startswith("leaf") and j.kind == "fixed":  # the stored extension leaves
+            assert j.child in ("leaf", "leaf_2")
+            continue
+        if part.label in ("caster", "turntable"):  # casters swivel, the lazy susan turns, about z
+            assert j.kind == "continuous" and j.dofs[0].axis == pytest.approx((0, 0, 1))
             continue
         if part.label == "foot":  # a levelling foot, fixed under its leg (it turns only with the table lifted)
             assert j.kind == "fixed"
             assert min(pc.bounds[0, 2] for pc in part.pieces) == pytest.approx(0.0, abs=1e-9)
+            continue
+        if part.label == "leaf" and j.kind == "prismatic":  # draw leaves pull out along the long axis
+            d = j.dofs[0]
+            assert abs(d.axis[0]) == pytest.approx(1.0) and d.lower == 0.0 and d.upper > 0.0
             continue
         if part.label in ("leaf", "bracket"):  # drop leaves rise level, lopers swing out under them
             d = j.dofs[0]
@@ -119,7 +130,7 @@ def test_moving_parts_clear_at_rest(seed):
 def test_busy_table_all_mechanisms():
     over = dict(support="legs", top_style="extension", has_drawers=True, drawer_count=2, back_drawer_count=2,
                 drawer_sides="both",
-                has_adjustable_legs=True, length=1.6, width=0.9, apron_height=0.08)
+                has_adjustable_legs=True, length=1.6, width=0.9, apron_height=0.08, leaf_count=1)
     _, bp = make(2, **over)
     labels = [part.label for part in bp.parts.values()]
     assert labels.count("drawer") == 4 and labels.count("leg") == 4 and labels.count("top") == 2
@@ -133,12 +144,13 @@ def test_busy_table_all_mechanisms():
 
 def test_overrides_drive_the_growth():
     _, bp = make(3, top_style="fixed", has_drawers=True, drawer_count=1, drawer_sides="one",
-                 has_adjustable_legs=False)
+                 has_adjustable_legs=False, has_lazy_susan=False)
     assert [j.child for j in movable(bp)] == ["drawer_0"]
     assert "leaf" not in bp.parts
-    # nothing movable asked for: the table still gets its extension
-    _, bp = make(3, top_style="fixed", has_drawers=False, has_adjustable_legs=False)
-    assert sorted(j.child for j in movable(bp)) == ["top_back", "top_front"]
+    # nothing movable asked for: the table still gets apron drawers
+    p, bp = make(3, top_style="fixed", has_drawers=False, has_adjustable_legs=False, has_lazy_susan=False)
+    assert p["has_drawers"] and movable(bp)
+    assert all(bp.parts[j.child].label == "drawer" for j in movable(bp))
     _, bp = make(3, support="pedestal", has_adjustable_legs=True)
     assert not any(part.label == "leg" for part in bp.parts.values())
     p, _ = make(3, length=2.5, top_shape="oval")
@@ -159,7 +171,7 @@ def test_seeds_vary():
 def test_drop_leaf_table(over):
     """Two leaves hang from the narrow centre at rest and rise level on their hinges; a loper swings out
     under each raised leaf; nothing clashes with the leaves up or down; drawers in the ends."""
-    p, bp = make(4, top_style="drop_leaf", has_drawers=True, drawer_sides="one", **over)
+    p, bp = make(4, top_style="drop_leaf", has_drawers=True, drawer_sides="one", end_drawers=2, **over)
     assert p["drawer_sides"] == "ends"  # the lopers are in the long boards
     drawers = [j for j in movable(bp) if bp.parts[j.child].label == "drawer"]
     assert len(drawers) == 2 and all(abs(j.dofs[0].axis[0]) == 1.0 for j in drawers)  # one in each end
@@ -189,26 +201,28 @@ def test_levelling_feet():
     assert not any(part.label == "foot" for part in bp.parts.values())  # inner legs have their own feet
 
 
-@pytest.mark.parametrize("front,back,length", [(3, 1, 2.4), (1, 2, 1.8), (3, 3, 1.8)])
+@pytest.mark.parametrize("front,back,length", [(3, 1, 2.4), (1, 2, 1.8), (3, 3, 1.8), (3, 2, 1.95)])
 def test_each_long_side_draws_its_own_drawer_count(front, back, length):
-    """The +Y and -Y long sides carry their own drawer counts (three only on a table 2.2 m or longer), spread
-    evenly, each pulling out along its side's normal and clear of the others when all are out."""
+    """The +Y and -Y long sides carry their own drawer counts, spread
+    evenly, each pulling out along its side's normal and clear of the others when all are out (three only on
+    a table 1.9 m or longer)."""
     p, bp = make(2, support="legs", top_style="extension", has_drawers=True, drawer_sides="both",
                  drawer_count=front, back_drawer_count=back, length=length, width=1.0, apron_height=0.12,
                  has_adjustable_legs=False)
-    cap = 3 if length >= 2.2 else 2
+    cap = 3 if length >= 1.9 else 2
     js = [j for j in movable(bp) if bp.parts[j.child].label == "drawer"]
     sides = [np.sign(j.dofs[0].axis[1]) for j in js]
     assert sides.count(1) == min(front, cap) and sides.count(-1) == min(back, cap)
     assert clash(bp, at(js, 1.0)) == []
 
 
-@pytest.mark.parametrize("length,count", [(1.4, 1), (2.4, 2)])
-def test_long_drop_leaves_rest_on_two_lopers(length, count):
-    """A drop leaf over an apron 1.3 m or longer gets two lopers (a quarter of the apron from each end), a
-    shorter one a single loper in the middle; each needs its leaf up and swings out clear of the rest."""
+@pytest.mark.parametrize("length,per_leaf,count", [(1.4, 2, 1), (2.4, 2, 2), (2.4, 1, 1)])
+def test_long_drop_leaves_rest_on_two_lopers(length, per_leaf, count):
+    """A drop leaf over an apron 1.3 m or longer gets two lopers (a quarter of the apron from each end) when
+    lopers_per_leaf is 2, else a single loper in the middle; each needs its leaf up and swings out clear of
+    the rest."""
     p, bp = make(4, top_style="drop_leaf", has_loper=True, length=length, top_shape="rectangular",
-                 end_overhang=0.1, support="legs", has_adjustable_legs=False)
+                 end_overhang=0.1, support="legs", has_adjustable_legs=False, lopers_per_leaf=per_leaf)
     for side in ("left", "right"):
         names = [n for n in bp.parts if n.startswith(f"loper_{side}")]
         assert len(names) == count
@@ -216,3 +230,80 @@ def test_long_drop_leaves_rest_on_two_lopers(length, count):
         assert all(j.requires_open == f"leaf_{side}" and j.kind == "revolute" for j in js)
     moving = [j for j in movable(bp)]
     assert clash(bp, at([], 0.0)) == [] and clash(bp, at(moving, 1.0)) == []  # as the single loper's test
+
+
+def test_draw_leaf_table():
+    """A draw-leaf table: a leaf under each end of the fixed top pulls out along +-X, stays under the top at
+    rest, ends past the top's end when out, and clears everything."""
+    p, bp = make(2, top_style="draw_leaf", top_shape="oval", support="legs", has_drawers=True,
+                 drawer_sides="one", has_adjustable_legs=False, has_lazy_susan=False)
+    assert p["top_shape"] == "rectangular"  # draw leaves are square-ended
+    js = {j.child: j for j in movable(bp) if bp.parts[j.child].label == "leaf"}
+    assert sorted(js) == ["leaf_back", "leaf_front"]
+    for name, s in (("leaf_front", 1), ("leaf_back", -1)):
+        j = js[name]
+        assert j.kind == "prismatic" and j.parent == "body" and j.dofs[0].axis == pytest.approx((s, 0, 0))
+        xs = np.array([pc.bounds[:, 0] for pc in bp.parts[name].pieces])
+        assert s * xs.max() * s <= p["length"] / 2 + 1e-9 and abs(xs).max() <= p["length"] / 2
+        assert j.dofs[0].upper > 0.2
+        zs = np.array([pc.bounds[:, 2] for pc in bp.parts[name].pieces])
+        assert zs.max() < p["height"] - p["top_thickness"]  # under the top
+    moving = movable(bp)
+    assert clash(bp, at([], 0.0)) == [] and clash(bp, at(moving, 1.0)) == []
+
+
+@pytest.mark.parametrize("style", ["fixed", "draw_leaf"])
+def test_lazy_susan(style):
+    """A lazy susan turns about z on a bearing in the middle of a fixed or draw-leaf top, above it."""
+    p, bp = make(1, top_style=style, has_lazy_susan=True, has_drawers=False, support="pedestal")
+    j = by_child(bp, "lazy_susan")
+    assert j.kind == "continuous" and j.parent == "body" and j.dofs[0].axis == pytest.approx((0, 0, 1))
+    o = j.dofs[0].origin
+    assert tuple(o) == pytest.approx((0, 0, o[2])) and o[2] > p["height"]
+    lo = min(pc.bounds[0, 2] for pc in bp.parts["lazy_susan"].pieces)
+    assert lo > p["height"]
+    assert clash(bp, at([], 0.0)) == []
+    _, bp = make(1, top_style="extension", has_lazy_susan=True)
+    assert "lazy_susan" not in bp.parts  # a split top has no middle to turn on
+
+
+def test_stacked_extension_leaves():
+    """Two extension leaves lie stacked in the apron under the split, each half the opening wide."""
+    _, bp = make(2, top_style="extension", leaf_count=2, has_drawers=True, drawer_sides="one", drawer_count=2,
+                 support="legs", has_adjustable_legs=False)
+    leaves = [n for n, part in bp.parts.items() if part.label == "leaf"]
+    assert sorted(leaves) == ["leaf", "leaf_2"]
+    assert all(by_child(bp, n).kind == "fixed" for n in leaves)
+    z = [bp.parts[n].pieces[0].bounds[:, 2] for n in leaves]
+    assert z[1][1] < z[0][0]  # the second under the first
+    travel = by_child(bp, "top_front").dofs[0].upper
+    w = [np.ptp(bp.parts[n].pieces[0].bounds[:, 0]) for n in leaves]
+    assert w[0] == pytest.approx(w[1]) and w[0] <= travel + 1e-9
+    assert clash(bp, at(movable(bp), 1.0)) == []
+
+
+@pytest.mark.parametrize("style", ["twin", "single"])
+def test_casters_under_the_legs(style):
+    """Four swivelling casters carry the legs (no levelling feet); their wheels touch the floor."""
+    p, bp = make(3, support="legs", has_casters=True, has_levellers=True, has_adjustable_legs=False,
+                 caster_style=style)
+    assert not any(part.label == "foot" for part in bp.parts.values())
+    casters = [n for n, part in bp.parts.items() if part.label == "caster"]
+    wheels = [n for n, part in bp.parts.items() if part.label == "wheel"]
+    assert len(casters) == 4 and len(wheels) == 4 * (2 if style == "twin" else 1)
+    assert all(by_child(bp, n).kind == "continuous" and by_child(bp, n).parent == "body" for n in casters)
+    assert all(by_child(bp, n).kind == "continuous" for n in wheels)
+    assert min(pc.bounds[0, 2] for n in wheels for pc in bp.parts[n].pieces) == pytest.approx(0.0, abs=1e-9)
+    assert clash(bp, at([], 0.0)) == []
+
+
+@pytest.mark.parametrize("length,count", [(1.6, 3), (2.4, 4)])
+def test_pedestal_glides(length, count):
+    """Levelling glides under a pedestal: three under a round foot, four under two trestle feet; the pedestal
+    stands on them."""
+    _, bp = make(1, support="pedestal", has_pedestal_levellers=True, length=length)
+    feet = [n for n, part in bp.parts.items() if part.label == "foot"]
+    assert len(feet) == count and all(by_child(bp, n).kind == "fixed" for n in feet)
+    low = min(pc.bounds[0, 2] for pc in bp.parts["body"].pieces)
+    assert low == pytest.approx(0.015, abs=1e-6)
+    assert clash(bp, at([], 0.0)) == []

@@ -214,6 +214,22 @@ def column_tube(outer_r: float, z0: float, z1: float, material: str) -> list[g.P
 TRESTLE_LENGTH = 1.9  # tables longer than this stand on two columns (trestle style)
 
 
+def pedestal_glide_count(p: dict, rng) -> int:
+    """levelling glides under the pedestal: three under a round foot (three points never rock), four under
+    two trestle feet"""
+    return 3 if p["length"] <= TRESTLE_LENGTH else 4
+
+
+def pedestal_glides(table_length: float, apron_length: float, table_width: float) -> list[Frame]:
+    """Where levelling glides go under :func:`pedestals`' feet (z up, at the floor): three around a round
+    foot, two at the ends of each trestle foot."""
+    if table_length <= TRESTLE_LENGTH:
+        rf = 0.32 * table_width * 0.8
+        return [Frame.at((rf * math.cos(a), rf * math.sin(a), 0.0)) for a in (0.0, 2 * math.pi / 3, 4 * math.pi / 3)]
+    ye = 0.36 * table_width - 0.04
+    return [Frame.at((x, y, 0.0)) for x in (-0.27 * apron_length, 0.27 * apron_length) for y in (ye, -ye)]
+
+
 def pedestals(table_length: float, apron_length: float, apron_width: float, table_width: float, column_r: float,
               z_top: float, material: str) -> list[g.Piece]:
     """One turned column (two on a long table) on a foot, under cross beams ending at ``z_top``."""
