@@ -85,7 +85,7 @@ def key_count(p: dict) -> int:
 
 GRAMMAR = Grammar("microwave", {
     "microwave": Node(label="body", required=("control_panel",),
-                      one_of={"turntable": 0.35, "flatbed": 0.25, "over_the_range": 0.2, "drawer_model": 0.2},
+                      one_of={"turntable": 0.3, "flatbed": 0.2, "over_the_range": 0.3, "drawer_model": 0.2},
                       choice="design"),
     "turntable": Node(required=("door", "plate")),
     "flatbed": Node(required=("door",), optional={"rack": 0.5}),
@@ -99,7 +99,7 @@ GRAMMAR = Grammar("microwave", {
     "release_button": Node(label="button"),
     "plate": Node(label="plate", optional={"rack": 0.5}),
     "rack": Node(label="rack"),
-    "control_panel": Node(label="control_panel", optional={"buttons": 0.85, "knob": 0.6}),
+    "control_panel": Node(label="control_panel", optional={"buttons": 0.8, "knob": 0.5}),
     "buttons": Node(repeat={"button": lambda p, rng: key_count(p)}),
     "button": Node(label="button"),
     "knob": Node(repeat={"dial": dials}),
