@@ -6,7 +6,8 @@ front face, so it swings outward and to the left. The control panel is a fascia 
 fixed to the body; its push buttons slide in along -X, its dials turn about X. The turntable (a
 glass tray on a roller ring) spins about Z over a spindle in the middle of the cavity floor.
 The body is a sheet casing with a front bezel and a hollow cavity liner; the door and the fascia
-are a thin skin on a dark inner frame. Sizes are those of real counter-top microwaves.
+are a thin skin on a dark inner frame. Sizes are those of real counter-top microwaves. A combination model
+has a low wire rack on its turntable or floor; an over-the-range model's two grease filters slide back.
 Parts: ``categories/parts/appliance.py``, ``hardware``.
 """
 

@@ -7,9 +7,10 @@ The tilt pivot lies behind the screen, so the screen rests upright on its lower 
 its top back by up to ``tilt``; nothing enters the stand or the ground. Stands: a ``single_post``
 (a base plate and a neck, or with ``has_height_adjust`` a post that swivels and slides up in a
 sleeve; without it the neck swivels on its base, +-``swivel``), ``two_legs`` (two feet with uprights and a
-crossbar), or ``wall_mount`` (a wall plate and one or two arm links turning about Z, the screen kept 1 cm
-off the wall in every combination; ``displays.wall_mount_ranges`` handles three links, but a 3-link arm with
-its +-0.13 rad per joint missed SAPIEN's reach check on 1 of 3 seeds, so ``arm_links`` stays 1-2). The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
+crossbar), or ``wall_mount`` (a wall plate and 0-3 arm links turning about Z: 0 is a tilting mount, the fork
+on a bracket as far off the wall as the full tilt needs; the screen kept 1 cm off the wall in every combination,
+``displays.wall_mount_ranges``). A stand's connector tilts or is ``rigid`` (feet and swivel-only pedestals);
+a wall mount always tilts. An optional pop-up camera rises out of a pocket behind the top edge. The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
 arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
 Optional push buttons on the right side rim or the bezel's bottom band.
 Parts: ``categories/parts/displays.py``.
