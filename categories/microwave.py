@@ -6,7 +6,8 @@ front face, so it swings outward and to the left. The control panel is a fascia 
 fixed to the body; its push buttons slide in along -X, its dials turn about X. The turntable (a
 glass tray on a roller ring) spins about Z over a spindle in the middle of the cavity floor.
 The body is a sheet casing with a front bezel and a hollow cavity liner; the door and the fascia
-are a thin skin on a dark inner frame. Sizes are those of real counter-top microwaves.
+are a thin skin on a dark inner frame. Sizes are those of real counter-top microwaves. A combination model
+has a low wire rack on its turntable or floor; an over-the-range model's two grease filters slide back.
 Parts: ``categories/parts/appliance.py``, ``hardware``.
 """
 
@@ -76,22 +77,31 @@ def key_rows(p: dict) -> int:
     return rows
 
 
+def key_count(p: dict) -> int:
+    """Push keys: three a row over :func:`key_rows` rows, the bottom row three keys or two wide ones
+    (``bottom_keys``: Stop/Cancel and Start as two wide keys under the number pad, as on GE JES1072 and
+    Panasonic NN-ST66 keypads)"""
+    return 3 * key_rows(p) - (3 - p["bottom_keys"])
+
+
 GRAMMAR = Grammar("microwave", {
     "microwave": Node(label="body", required=("control_panel",),
-                      one_of={"turntable": 0.4, "flatbed": 0.2, "over_the_range": 0.25, "drawer_model": 0.15},
+                      one_of={"turntable": 0.3, "flatbed": 0.2, "over_the_range": 0.3, "drawer_model": 0.2},
                       choice="design"),
     "turntable": Node(required=("door", "plate")),
-    "flatbed": Node(required=("door",)),
-    "over_the_range": Node(required=("otr_door", "plate")),
+    "flatbed": Node(required=("door",), optional={"rack": 0.5}),
+    "over_the_range": Node(required=("otr_door", "plate"), repeat={"filter": 2}),
+    "filter": Node(label="filter"),
     "drawer_model": Node(required=("drawer",)),
     "otr_door": Node(label="door"),
     "drawer": Node(label="drawer"),
     "door": Node(label="door", one_of={"bar": 0.4, "recessed": 0.3, "release_button": 0.3}, choice="door_opener"),
     "bar": Node(), "recessed": Node(),
     "release_button": Node(label="button"),
-    "plate": Node(label="plate"),
-    "control_panel": Node(label="control_panel", optional={"buttons": 0.75, "knob": 0.8}),
-    "buttons": Node(repeat={"button": lambda p, rng: 3 * key_rows(p)}),
+    "plate": Node(label="plate", optional={"rack": 0.5}),
+    "rack": Node(label="rack"),
+    "control_panel": Node(label="control_panel", optional={"buttons": 0.8, "knob": 0.5}),
+    "buttons": Node(repeat={"button": lambda p, rng: key_count(p)}),
     "button": Node(label="button"),
     "knob": Node(repeat={"dial": dials}),
     "dial": Node(label="knob"),
@@ -100,7 +110,9 @@ GRAMMAR = Grammar("microwave", {
 ceramic floor instead of the turntable; an ``over_the_range`` model (30 in, a bar handle, a vent grille
 over the door, grease filters and a light under it); a ``drawer_model`` (a drawer that slides out, the
 control strip above it). A ``release_button`` opener is a button on the control panel that releases the
-door."""
+door. A ``rack``: a combination (grill / convection) model's low wire rack, standing on the turntable (it turns
+with it) or on a flatbed's ceramic floor (Panasonic NN-CT55, Sharp R-861 and GE JES1657 convection owner's
+manuals: a rack for grilling and two-level cooking)."""
 
 PARAMS = (
     Float("width", "overall width (Y)", "m", 0.44, 0.62),
@@ -113,6 +125,9 @@ PARAMS = (
     Float("plate_fraction", "turntable diameter as a fraction of the largest that fits", "", 0.8, 0.95),
     Int("button_rows", "rows of three push buttons (4-6: a number pad with function keys, where it fits)", "",
         1, KEYPAD_ROWS),
+    Int("bottom_keys", "keys in the keypad's bottom row: three, or two wide ones (Stop/Cancel, Start)", "", 2, 3),
+    Float("rack_height", "a combination model's wire rack: height of its grid over what it stands on", "m",
+          0.03, 0.09),
     Float("button_height", "push button height (Z); press depth is 1/8 of it", "m", 0.012, 0.02),
     Choice("button_shape", "push button shape", choices=("rect", "round"), weights=(0.65, 0.35)),
     Int("knob_count", "dials; auto = 2 without push buttons, else 1", "", 1, 2, auto=True),
@@ -130,7 +145,7 @@ PARAMS = (
 MATERIALS = {
     "body": "body_finish", "door": "plastic", "interior": "interior_finish", "glass": "glass", "plate": "glass:clear",
     "roller": "plastic", "button": "plastic", "knob": "plastic", "handle": "handle_finish", "door_inner": "rubber",
-    "display": "rubber", "feet": "rubber", "trim": "chrome", "filter": "brushed_metal",
+    "display": "rubber", "feet": "rubber", "trim": "chrome", "filter": "brushed_metal", "rack": "chrome",
 }
 
 DOOR_OPENS = math.pi / 2
@@ -214,6 +229,10 @@ class MicrowaveLayout(A.PanelNodes):
         self.extend("body", [g.box_between([cx0 + 0.01, cy0 + 0.01, cz0], [cx1 - 0.01, cy1 - 0.01, cz0 + 0.005],
                                            "plate", bevel=0.002)])
         self.grow(node.one("door"), **door)
+        if rack := node.one("rack"):
+            r = min(cx1 - cx0, cy1 - cy0) / 2 - 0.02
+            self.grow(rack, parent="body", center=((cx0 + cx1) / 2, (cy0 + cy1) / 2), z0=cz0 + 0.005, radius=r,
+                      room=cavity[5] - cz0 - 0.005)
 
     def over_the_range(self, node, cavity, door, box):
         """A turntable, a door with a bar handle, a vent grille over the door and panel, and under the
@@ -227,12 +246,22 @@ class MicrowaveLayout(A.PanelNodes):
         grille += [g.box_between([xd1, y0 + 0.05 + k * 0.012, zv0 + 0.01], [xd1 + 0.0008, y0 + 0.056 + k * 0.012,
                                                                               zc1 - 0.012], "display")
                    for k in range(n)]
-        w = 0.28 * (y1 - y0)
-        for yc in (-0.25 * (y1 - y0), 0.25 * (y1 - y0)):  # grease filters in the bottom, a light between them
-            grille.append(g.box_between([xb + 0.08, yc - w / 2, zc0 - 0.002], [xf - 0.04, yc + w / 2, zc0],
-                                        "filter"))
-        grille.append(g.box_between([xf - 0.09, -0.04, zc0 - 0.002], [xf - 0.04, 0.04, zc0], "glass"))
+        grille.append(g.box_between([xf - 0.09, -0.04, zc0 - 0.002], [xf - 0.04, 0.04, zc0], "glass"))  # cooktop light
         self.extend("body", grille)
+        w = 0.28 * (y1 - y0)
+        for k, (kid, yc) in enumerate(zip(node.of("filter"), (-0.25 * (y1 - y0), 0.25 * (y1 - y0)), strict=True)):
+            self.grow(kid, k=k, box=(xb + 0.08, xf - 0.04, yc - w / 2, yc + w / 2, zc0))
+
+    def filter(self, node, k, box):
+        """A grease filter in the body's bottom: it slides 25 mm back in its track before it drops out
+        (GE JVM7195, Whirlpool WMH31017 owner's manuals: "slide the filter to the rear, pull down")."""
+        x0, x1, ya, yb, zc0 = box
+        tab = min(0.009, zc0 - 0.0015)  # a finger tab under its front edge, clear of the ground
+        frame = [g.box_between([x0, ya, zc0 - 0.0045], [x1, yb, zc0 - 0.002], "filter").replace(sheet=0.0004),
+                 g.box_between([x1 - 0.012, (ya + yb) / 2 - 0.02, zc0 - tab], [x1 - 0.004, (ya + yb) / 2 + 0.02,
+                                                                              zc0 - 0.0044], "filter")]
+        name = self.add(f"filter_{k}", "filter", frame)
+        self.slide("body", name, Frame.at((x1, (ya + yb) / 2, zc0 - 0.002), z=(-1, 0, 0)), upper=0.025)
 
     def otr_door(self, node, ys, zs, x_front):
         self._door(node, ys, zs, x_front, "bar")
@@ -285,6 +314,15 @@ class MicrowaveLayout(A.PanelNodes):
         self.extend("body", [A.spindle(c, cz0)])
         self.add("plate", "plate", A.turntable(c, cz0, radius))
         self.spin("body", "plate", Frame.at((*c, cz0)), role="turntable")
+        if rack := node.one("rack"):  # on the tray's floor, inside its rim
+            self.grow(rack, parent="plate", center=c, z0=cz0 + A.TRAY_TOP, radius=radius - 0.012,
+                      room=cavity[5] - cz0 - A.TRAY_TOP)
+
+    def rack(self, node, parent, center, z0, radius, room):
+        """A low wire rack: a square grid inscribed in ``radius`` on four legs, fixed to what it stands on."""
+        h = min(self.p["rack_height"], 0.45 * room)
+        self.add("rack", "rack", A.stand_rack(center, z0, radius / math.sqrt(2), h))
+        self.fix(parent, "rack")
 
     def door(self, node, ys, zs, x_front):
         self._door(node, ys, zs, x_front, node.choice)
@@ -321,13 +359,14 @@ class MicrowaveLayout(A.PanelNodes):
         yc = (ya + yb) / 2
         buttons, knob = node.one("buttons"), node.one("knob")
         n_dials = len(knob.of("dial")) if knob else 0
-        rows = len(buttons.of("button")) // 3 if buttons else 0
+        n_keys = len(buttons.of("button")) if buttons else 0
+        rows = -(-n_keys // 3)
         display = bool(buttons) or not n_dials
         keypad = not buttons and not n_dials  # a flat membrane keypad instead
         bh, kr = p["button_height"], min(p["knob_radius"], 0.38 * pw)
         dh = min(max(0.12 * ph, 0.022), 0.04)
         if pw > 2 * ph:  # a drawer microwave's control strip: everything side by side
-            panel = self._strip(xp, ys, zs, rows, n_dials, keypad)
+            panel = self._strip(xp, ys, zs, n_keys, n_dials, keypad)
             return self._panel_part(node, xs, ys, zs, panel, buttons, release, knob)
 
         def heights(f):
@@ -347,7 +386,7 @@ class MicrowaveLayout(A.PanelNodes):
                                              [xp + 0.0015, yc + 0.39 * pw, z], "display"))
             z -= dh + gap
         if buttons:
-            z = self._button_grid(panel, xp, yc, pw, z, bh, gap, rows)
+            z = self._button_grid(panel, xp, yc, pw, z, bh, gap, n_keys)
         if keypad:
             panel.decor.append(g.box_between([xp - 0.001, ya + 0.12 * pw, z - 0.3 * ph],
                                              [xp + 0.001, yb - 0.12 * pw, z], "display"))
@@ -373,7 +412,7 @@ class MicrowaveLayout(A.PanelNodes):
                 panel.dials.append((f"knob_{k}", A.dial(xp, yc, zk, r_k, stem, style), axis))
         return self._panel_part(node, xs, ys, zs, panel, buttons, release, knob)
 
-    def _strip(self, xp, ys, zs, rows, n_dials, keypad):
+    def _strip(self, xp, ys, zs, n_keys, n_dials, keypad):
         """A horizontal control strip: a display on the left, the push buttons in a grid of one or two
         rows in the middle, the dials on the right (a drawer microwave's angled fascia, flattened)."""
         p = self.p
@@ -383,9 +422,9 @@ class MicrowaveLayout(A.PanelNodes):
         panel.decor.append(g.box_between([xp - 0.001, ya + 0.04, zc - 0.3 * ph], [xp + 0.0015, ya + 0.2, zc + 0.3 * ph],
                                          "display"))
         y = ya + 0.23
-        if rows:
-            n = 3 * rows
-            nrow = min(rows, 2)
+        if n_keys:
+            n = n_keys
+            nrow = min(-(-n // 3), 2)
             ncol = -(-n // nrow)
             room = yb - 0.03 - n_dials * (2 * min(p["knob_radius"], 0.4 * ph - 0.004) + 0.02) - y - 0.01
             wide = 1.8 if p["button_shape"] == "rect" else 1.0  # key width / height
@@ -429,16 +468,19 @@ class MicrowaveLayout(A.PanelNodes):
         if knob:
             self.grow(knob, made=panel.dials)
 
-    def _button_grid(self, panel, xp, yc, pw, z, bh, gap, rows):
+    def _button_grid(self, panel, xp, yc, pw, z, bh, gap, n_keys):
+        """Rows of three keys top-down; a bottom row of two holds two wide keys over the same span."""
         p = self.p
-        pitch = 0.82 * pw / 3
         proud = 0.3 * bh + 0.002  # a pressed button (1/8 of its height in) still stands proud
+        rows = -(-n_keys // 3)
         for r in range(rows):
             zb = z - 0.85 * bh
-            for c in range(3):
-                y = yc + (c - 1) * pitch
+            cols = min(3, n_keys - 3 * r)
+            pitch = 0.82 * pw / cols
+            for c in range(cols):
+                y = yc + (c - (cols - 1) / 2) * pitch
                 if p["button_shape"] == "rect":
-                    half = (min(pitch - 2 * A.CLEAR - 0.005, 1.8 * bh) / 2, bh / 2)
+                    half = (min(pitch - 2 * A.CLEAR - 0.005, (1.8 if cols == 3 else 2.8) * bh) / 2, bh / 2)
                 else:
                     rad = min(0.6 * bh, (pitch - 2 * A.CLEAR - 0.005) / 2)
                     half = (rad, rad)

@@ -7,9 +7,10 @@ The tilt pivot lies behind the screen, so the screen rests upright on its lower 
 its top back by up to ``tilt``; nothing enters the stand or the ground. Stands: a ``single_post``
 (a base plate and a neck, or with ``has_height_adjust`` a post that swivels and slides up in a
 sleeve; without it the neck swivels on its base, +-``swivel``), ``two_legs`` (two feet with uprights and a
-crossbar), or ``wall_mount`` (a wall plate and one or two arm links turning about Z, the screen kept 1 cm
-off the wall in every combination; ``displays.wall_mount_ranges`` handles three links, but a 3-link arm with
-its +-0.13 rad per joint missed SAPIEN's reach check on 1 of 3 seeds, so ``arm_links`` stays 1-2). The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
+crossbar), or ``wall_mount`` (a wall plate and 0-3 arm links turning about Z: 0 is a tilting mount, the fork
+on a bracket as far off the wall as the full tilt needs; the screen kept 1 cm off the wall in every combination,
+``displays.wall_mount_ranges``). A stand's connector tilts or is ``rigid`` (feet and swivel-only pedestals);
+a wall mount always tilts. An optional pop-up camera rises out of a pocket behind the top edge. The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
 arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
 Optional push buttons on the right side rim or the bezel's bottom band.
 Parts: ``categories/parts/displays.py``.
@@ -30,20 +31,34 @@ from infmob_usd.params import Choice, Float, Int
 
 from .parts import displays as S
 
+MOVES = {"tilt", "single_post", "arm", "button", "camera"}
+
+
+def moves(tree) -> bool:
+    """Something moves: a tilt, a swivel post, an arm, a key or the camera (feet without tilt and without keys
+    or camera would not)."""
+    return any(n.kind in MOVES for n in tree.walk())
+
+
 GRAMMAR = Grammar("tv", {
-    "tv": Node(label="screen", required=("connector", "panel"), optional={"buttons": 0.9},
-               one_of={"single_post": 0.45, "two_legs": 0.3, "wall_mount": 0.25}, choice="stand_style"),
+    "tv": Node(label="screen", required=("connector", "panel"), optional={"buttons": 0.875, "camera": 0.45},
+               one_of={"single_post": 0.45, "two_legs": 0.25, "wall_mount": 0.3}, choice="stand_style"),
     "panel": Node(one_of={"flat": 0.75, "curved": 0.25}, choice="panel_shape"),
     "flat": Node(), "curved": Node(),
     "connector": Node(label="connector"),
-    "single_post": Node(label="stand", optional={"height_adjust": 0.4}),
+    "single_post": Node(label="stand", optional={"height_adjust": 0.4}, one_of={"tilt": 0.6, "rigid": 0.4}),
     "height_adjust": Node(label="stand"),
-    "two_legs": Node(label="stand"),
-    "wall_mount": Node(label="frame", repeat={"arm": "arm_links"}),
+    "two_legs": Node(label="stand", one_of={"tilt": 0.6, "rigid": 0.4}),
+    "wall_mount": Node(label="frame", required=("tilt",), repeat={"arm": "arm_links"}),
+    "tilt": Node(), "rigid": Node(),
     "arm": Node(label="arm"),
     "buttons": Node(repeat={"button": "button_count"}),
     "button": Node(label="button"),
-})
+    "camera": Node(label="camera"),
+}, accept=moves)
+"""The screen on its connector: ``tilt`` (the connector turns in its fork, the top back) or ``rigid`` (fixed
+to the stand: most TVs on feet, and pedestals that only swivel, e.g. Samsung and LG swivel stands), drawn per
+stand; a wall mount always tilts. ``camera``: a pop-up camera behind the top edge (``displays.CAMERA``)."""
 
 PARAMS = (
     Float("width", "screen width incl. the bezel (Y)", "m", 0.6, 2.1),
@@ -61,7 +76,8 @@ PARAMS = (
     Float("tilt", "tilt range: the screen top tilts back 0..tilt", "rad", math.pi / 24, math.pi / 8),
     Float("slide", "travel of a height-adjustable post", "m", 0.04, 0.14),
     Float("swivel", "swivel range (+-) of a height-adjustable post", "rad", math.pi / 12, math.pi / 4),
-    Int("arm_links", "links of a wall-mount arm (1: a swivel bracket, 2: an articulating arm)", "", 1, 2),
+    Int("arm_links", "links of a wall-mount arm (0: a tilting mount, 1: a swivel bracket, 2-3: an articulating"
+        " arm)", "", 0, 3),
     Float("curve_radius", "radius of a curved screen (Samsung / LG curved TVs: 3000R-4200R)", "m", 3.0, 4.2),
     Float("arm_length", "wall-mount arm reach from the wall plate to the tilt pivot", "m", 0.15, 0.45),
     Int("button_count", "push keys on the screen: 1 (a power key) to 7 (power, input, menu, volume +/-, channel"
@@ -75,7 +91,7 @@ _FINISH = {"black": "plastic:black", "grey": "plastic:dark_grey", "silver": "bru
 MATERIALS = {
     "bezel": ("bezel_finish", _FINISH), "display": "screen", "housing": "plastic:black|dark_grey",
     "stand": ("stand_finish", {**_FINISH, "black": "plastic:black|dark_grey"}), "connector": "brushed_metal",
-    "button": "plastic:black|dark_grey", "arm": "painted:black|charcoal",
+    "button": "plastic:black|dark_grey", "arm": "painted:black|charcoal", "camera": "plastic:black|dark_grey",
 }
 
 ASPECT = {"16:9": 9 / 16, "4:3": 3 / 4}
@@ -122,7 +138,9 @@ class TVLayout(Layout):
         else:
             pieces = S.screen(W, (xf, xs, xhb), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
                               p["button_place"])
-        self.add("screen", "screen", pieces[-1:])  # the electronics box; the panel node adds the panel
+        camera = node.one("camera")
+        self.add("screen", "screen", pieces[-1:] + (S.camera_pocket(xs, zs1) if camera else []))
+        # the electronics box (and a camera's pocket); the panel node adds the panel
         self.grow(node.one("panel"), pieces=pieces[:-1])
         if style == "two_legs":
             L_k = 2 * (p["leg_spread"] * W / 2 - S.LEG_W / 2 - S.GAP)  # between the uprights
@@ -131,13 +149,31 @@ class TVLayout(Layout):
         self.grow(node.one("connector"), pivot=(x_p, z_p), r_k=r_k, xs2=(x_bk, xhb), L_k=L_k,
                   vesa=min(hw - 0.02, 0.8 * L_k + 0.1), hump=(hh, zh0, zh1))
         geo = dict(pivot=(x_p, z_p), r_k=r_k, L_k=L_k, W=W, xf=xf, xs=xs, x_bk=x_bk, base_t=base_t, zs=(zs0, zs1),
-                   hump=(hw, zh0, zh1), sleeve_h=sleeve_h)
+                   hump=(hw, zh0, zh1), sleeve_h=sleeve_h, camera=bool(camera))
         parent, tilt = self.grow(stand, **geo)
-        # tilt: the top goes back, about -Y through the barrel axis (load in front: rests on q = 0)
-        self.hinge(parent, "connector", Frame.at((x_p, 0.0, z_p), z=(0, -1, 0)), upper=tilt)
+        self.grow(stand.one("tilt") or stand.one("rigid"), parent=parent, pivot=(x_p, z_p), upper=tilt)
         self.fix("connector", "screen")
         if buttons:
             self.grow(buttons, layout=layout, W=W, xf=xf, place=place)
+        if camera:
+            self.grow(camera, xs=xs, zs1=zs1)
+
+    def tilt(self, node, parent, pivot, upper):
+        """The barrel turns in the fork: the top goes back, about -Y through its axis (load in front: rests on
+        q = 0)."""
+        self.extend("connector", [self.barrel])
+        self.hinge(parent, "connector", Frame.at((pivot[0], 0.0, pivot[1]), z=(0, -1, 0)), upper=upper)
+
+    def rigid(self, node, parent, pivot, upper):
+        """The barrel bolted in the fork: the screen does not tilt."""
+        self.extend("connector", [self.barrel])
+        self.fix(parent, "connector")
+
+    def camera(self, node, xs, zs1):
+        """A pop-up camera: rises out of its pocket above the top edge (prismatic +Z, rests on its lower stop)."""
+        self.add("camera", "camera", S.camera(xs, zs1))
+        self.slide("screen", "camera", Frame.at((xs - 0.004, 0.0, zs1 - 0.001), z=(0, 0, 1)), upper=S.CAMERA["rise"],
+                   role="telescope")
 
     def panel(self, node, pieces):
         self.grow(node.one(node.choice), pieces=pieces)
@@ -149,7 +185,10 @@ class TVLayout(Layout):
     curved = flat  # ``displays.curved_screen``: facets along an arc
 
     def connector(self, node, pivot, r_k, xs2, L_k, vesa, hump):
-        self.add("connector", "connector", S.connector(pivot, r_k, xs2, L_k, vesa, hump))
+        """The VESA plate and neck plates; the mount (``tilt`` or ``rigid``) adds the barrel in the fork."""
+        barrel, *rest = S.connector(pivot, r_k, xs2, L_k, vesa, hump)
+        self.add("connector", "connector", rest)
+        self.barrel = barrel
 
     def single_post(self, node, pivot, r_k, L_k, W, xf, x_bk, base_t, zs, sleeve_h, **_):
         p = self.p
@@ -187,21 +226,31 @@ class TVLayout(Layout):
         self.add("stand", "stand", S.two_legs(*pivot, r_k, L_k, xf, x_bk, base_t, self.p["base_depth"]))
         return "stand", self.p["tilt"]
 
-    def wall_mount(self, node, pivot, r_k, L_k, W, xs, x_bk, zs, hump, **_):
+    def wall_mount(self, node, pivot, r_k, L_k, W, xs, x_bk, zs, hump, camera, **_):
         p = self.p
         x_p, z_p = pivot
         hw, zh0, zh1 = hump
         arms = node.of("arm")
         n = len(arms)
         r_a = S.ARM["radius"]
+        corners = np.array([[xs, s * W / 2, z] for s in (-1, 1) for z in zs]
+                           + [[x_bk, s * hw / 2, z] for s in (-1, 1) for z in (zh0, zh1)]
+                           + (S.camera_corners(xs, zs[1]) if camera else []))
+        if n == 0:  # a tilting mount: the fork on a bracket, as far off the wall as the full tilt needs
+            stand_off = 1.3 * r_k + S.FORK_T + 0.02
+            while True:
+                tilt, _ = S.wall_mount_ranges(corners, pivot, [], x_p - stand_off, p["tilt"], 0)
+                if tilt >= p["tilt"] - 1e-3 or stand_off > 0.3:
+                    break
+                stand_off += 0.01
+            self.add("wall_plate", "frame", S.tilt_bracket(x_p - stand_off, x_p, z_p, r_k, L_k))
+            return "wall_plate", tilt
         reach = max(p["arm_length"], ARM_LINK_MIN * n) if n >= 3 else p["arm_length"]  # 3 links: each >= 14 cm
         x_w = x_p - reach - (r_a + S.GAP + 0.004)  # front face of the wall plate
         xa = x_w + r_a + S.GAP + 0.004  # first arm pivot
         self.add("wall_plate", "frame", S.wall_plate(x_w, xa, z_p))
         length = reach / n
         pivots = [xa + i * length for i in range(n)]
-        corners = np.array([[xs, s * W / 2, z] for s in (-1, 1) for z in zs]
-                           + [[x_bk, s * hw / 2, z] for s in (-1, 1) for z in (zh0, zh1)])
         tilt, swing = S.wall_mount_ranges(corners, pivot, pivots, x_w, p["tilt"], n)
         parent = "wall_plate"
         for i, arm in enumerate(arms):

@@ -16,7 +16,7 @@ from infmob_usd.model import build as build_model
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(10)
-LABELS = {"body", "door", "plate", "button", "knob", "control_panel", "drawer"}
+LABELS = {"body", "door", "plate", "button", "knob", "control_panel", "drawer", "rack", "filter"}
 
 
 def make(seed, **overrides):
@@ -71,9 +71,24 @@ def max_depth(hs_a, hs_b):
     return max((depth(a, b) for a in hs_a for b in hs_b), default=-1.0)
 
 
+def carried(bp, name):
+    """``name`` and the parts fixed to it (a rack on the turntable turns with it)."""
+    out = {name}
+    for j in bp.joints:
+        if j.kind == "fixed" and j.parent in out:
+            out.add(j.child)
+    return out
+
+
+def group_hulls(bp, name, dof=None, q=0.0):
+    """Convex hulls of ``name`` and what it carries, moved by ``q`` along ``dof``."""
+    return [h for n in carried(bp, name) for h in hulls(bp.parts[n], dof, q)]
+
+
 def others(bp, name):
-    """Convex hulls of every part except ``name``, at rest."""
-    return [h for n, part in bp.parts.items() if n != name for h in hulls(part)]
+    """Convex hulls of every part except ``name`` and what it carries, at rest."""
+    group = carried(bp, name)
+    return [h for n, part in bp.parts.items() if n not in group for h in hulls(part)]
 
 
 # -- parts and labels ------------------------------------------------------------------
@@ -175,7 +190,7 @@ def test_moving_parts_are_clear_at_rest(seed):
     """Every moving part keeps >= 2 mm from everything else at rest."""
     _, bp = make(seed)
     for j in movable(bp):
-        d = max_depth(hulls(bp.parts[j.child]), others(bp, j.child))
+        d = max_depth(group_hulls(bp, j.child), others(bp, j.child))
         assert -2 * d >= 0.0019, f"{j.child} is within 2 mm of another part"
 
 
@@ -189,7 +204,7 @@ def test_buttons_knobs_plate_move_freely(seed):
         qs = [dof.upper] if dof.type == "prismatic" else [0.7, math.pi / 2, 2.5, -1.3]
         rest = others(bp, j.child)
         for q in qs:
-            assert max_depth(hulls(bp.parts[j.child], dof, q), rest) < TOUCH, f"{j.child} at {q}"
+            assert max_depth(group_hulls(bp, j.child, dof, q), rest) < TOUCH, f"{j.child} at {q}"
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -232,7 +247,7 @@ def test_overrides_drive_the_growth():
     _, bp = make(3, has_knob=True, knob_count=2, has_buttons=False)
     assert sorted(n for n, part in bp.parts.items() if part.label == "knob") == ["knob_0", "knob_1"]
     assert not any(n.startswith("button_") for n in bp.parts)
-    _, bp = make(3, has_buttons=True, button_rows=2, door_opener="bar")
+    _, bp = make(3, has_buttons=True, button_rows=2, bottom_keys=3, door_opener="bar")
     assert sum(n.startswith("button_") for n in bp.parts) == 6
     assert "door_release" not in bp.parts
     assert any(pc.name == "handle" for pc in bp.parts["door"].pieces)
@@ -245,7 +260,7 @@ def test_overrides_drive_the_growth():
 
 def test_smallest_and_busiest_panel_fit():
     """Three rows of buttons, two dials and a release on the smallest front still fit."""
-    over = dict(width=0.44, height=0.25, panel_fraction=0.2, has_buttons=True, button_rows=3,
+    over = dict(width=0.44, height=0.25, panel_fraction=0.2, has_buttons=True, button_rows=3, bottom_keys=3, has_rack=False,
                 has_knob=True, knob_count=2, door_opener="release_button", knob_radius=0.028)
     _, bp = make(0, **over)
     panel = bp.parts["control_panel"].pieces[0].bounds
@@ -289,10 +304,12 @@ def test_each_design_is_forced_and_has_its_mechanism(design):
     if design == "over_the_range":  # 30 in wide, a bar handle on the door, a vent grille over it
         assert w == pytest.approx(0.759, abs=0.06) and 0.39 <= h <= 0.45
         assert any(pc.name == "handle" for pc in bp.parts["door"].pieces)
-        assert any(pc.material == "filter" for pc in bp.parts["body"].pieces)
+        filters = [j for j in movable(bp) if bp.parts[j.child].label == "filter"]  # two grease filters slide back
+        assert len(filters) == 2 and all(j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((-1, 0, 0))
+                                         for j in filters)
     if design == "flatbed":  # a fixed ceramic floor instead of the turntable
         assert any(pc.material == "plate" for pc in bp.parts["body"].pieces)
-    assert sum(bp.parts[j.child].label == "button" for j in movable(bp)) == 3 * p["button_rows"]
+    assert sum(bp.parts[j.child].label == "button" and j.child != "door_release" for j in movable(bp)) == mw.key_count(p)
 
 
 @pytest.mark.parametrize("design", ["turntable", "over_the_range", "drawer_model"])
@@ -303,11 +320,44 @@ def test_a_number_pad_with_function_keys_is_forced(design):
     over = dict(design=design, has_buttons=True, button_rows=6, height=0.34, has_knob=True, knob_count=1)
     p, bp = make(2, **over)
     keys = [j for j in movable(bp) if bp.parts[j.child].label == "button" and j.child != "door_release"]
-    assert len(keys) == 3 * mw.key_rows(p) and len(keys) == (12 if design == "drawer_model" else 18)
+    assert len(keys) == mw.key_count(p) and len(keys) == (12 if design == "drawer_model" else 18) - (3 - p["bottom_keys"])
     panel = bp.parts["control_panel"].pieces[0].bounds
     for j in keys:
         assert j.dofs[0].axis == pytest.approx((-1, 0, 0))
         lo, hi = np.array([pc.bounds for pc in bp.parts[j.child].pieces]).transpose(1, 0, 2)
         assert (lo[:, 1:].min(0) > panel[0, 1:]).all() and (hi[:, 1:].max(0) < panel[1, 1:]).all()
-    p, bp = make(2, **{**over, "button_rows": 3})
-    assert sum(bp.parts[j.child].label == "button" for j in movable(bp)) == 9
+    p, bp = make(2, **{**over, "button_rows": 3, "bottom_keys": 3})
+    assert sum(bp.parts[j.child].label == "button" and j.child != "door_release" for j in movable(bp)) == 9
+
+
+@pytest.mark.parametrize("design", ["turntable", "flatbed", "over_the_range"])
+def test_a_combination_rack_stands_on_what_carries_it(design):
+    """--set has_rack=true: a low wire rack fixed to the turntable (it turns with it, clear of the cavity at
+    every angle) or to a flatbed's body, its legs on the tray's top."""
+    p, bp = make(5, design=design, has_rack=True)
+    rack = [j for j in bp.joints if j.child == "rack"]
+    assert len(rack) == 1 and rack[0].kind == "fixed"
+    assert rack[0].parent == ("body" if design == "flatbed" else "plate")
+    lo, hi = np.array([pc.bounds for pc in bp.parts["rack"].pieces]).transpose(1, 0, 2)
+    if design != "flatbed":  # on the glass tray's top face
+        assert lo[:, 2].min() == pytest.approx(bp.parts["plate"].pieces[0].bounds[1][2], abs=1e-6)
+        dof = by_child(bp, "plate").dofs[0]
+        rest = others(bp, "plate")
+        for q in (0.4, 1.1, 2.6):
+            assert max_depth(group_hulls(bp, "plate", dof, q), rest) < TOUCH
+    else:
+        assert -2 * max_depth(hulls(bp.parts["rack"]), [h for n, part in bp.parts.items()
+                                                         if n not in ("rack", "body") for h in hulls(part)]) > 0.0019
+    _, bp = make(5, design=design, has_rack=False)
+    assert "rack" not in bp.parts
+
+
+def test_two_wide_keys_under_the_number_pad():
+    """bottom_keys=2: the keypad's last row holds two keys over the span three take above."""
+    p, bp = make(1, has_buttons=True, button_rows=3, bottom_keys=2, design="turntable")
+    keys = [n for n in bp.parts if n.startswith("button_")]
+    assert len(keys) == 8 == mw.key_count(p)
+    width = {n: np.ptp(np.array(bp.parts[n].pieces[0].bounds)[:, 1]) for n in keys}
+    assert {n for n in keys if n.startswith("button_2_")} == {"button_2_0", "button_2_1"}
+    if p["button_shape"] == "rect":
+        assert width["button_2_0"] > width["button_0_0"]

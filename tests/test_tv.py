@@ -16,7 +16,7 @@ from infmob_usd.materials.families import split_spec
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
-LABELS = {"screen", "stand", "connector", "button", "frame", "arm"}
+LABELS = {"screen", "stand", "connector", "button", "frame", "arm", "camera"}
 TOL = 1e-7  # m^3, as the validator's contact volume
 
 
@@ -138,6 +138,9 @@ def test_screen_size_follows_width_and_aspect(tv_bp):
 def test_tilt_connector_rests_on_its_lower_stop(tv_bp):
     p, bp = tv_bp
     j = by_child(bp, "connector")
+    if j.kind == "fixed":  # a rigid mount: a stand that does not tilt (never a wall mount)
+        assert p["stand_style"] != "wall_mount"
+        return
     assert j.kind == "revolute"
     d = j.dofs[0]
     assert d.axis == pytest.approx((0, -1, 0))
@@ -264,3 +267,43 @@ def test_a_full_key_row_fits_the_smallest_screen(place):
         for k in range(i + 1, 7):
             (a0, a1), (b0, b1) = boxes[i], boxes[k]
             assert (a1 < b0).any() or (b1 < a0).any()
+
+
+def test_a_tilting_wall_mount_and_a_three_link_arm():
+    """arm_links=0: the fork on a bracket off the wall plate, the screen's full tilt clear of the wall;
+    arm_links=3: three swivels about Z, then the tilt."""
+    p, bp = make(2, stand_style="wall_mount", arm_links=0, tilt=math.pi / 10, has_camera=True)
+    assert bp.root == "wall_plate" and not any(n.startswith("arm_") for n in bp.parts)
+    j = by_child(bp, "connector")
+    assert j.parent == "wall_plate" and j.kind == "revolute"
+    assert j.dofs[0].upper == pytest.approx(math.pi / 10, abs=2e-3)
+    wall = max(pc.bounds[1, 0] for pc in bp.parts["wall_plate"].pieces if pc.bounds[1, 1] - pc.bounds[0, 1] >= 0.2)
+    for name in ("screen", "camera"):
+        pose = bp.poses({("connector", 0): j.dofs[0].upper})[name]
+        pts = np.vstack([c for pc in bp.parts[name].pieces for c in pc.convex]) @ pose[:3, :3].T + pose[:3, 3]
+        assert pts[:, 0].min() > wall + 0.009
+    _, bp = make(2, stand_style="wall_mount", arm_links=3)
+    chain = [by_child(bp, f"arm_{k}") for k in range(3)]
+    assert [j.parent for j in chain] == ["wall_plate", "arm_0", "arm_1"] and by_child(bp, "connector").parent == "arm_2"
+    assert all(j.kind == "revolute" and j.dofs[0].axis == pytest.approx((0, 0, 1)) for j in chain)
+
+
+def test_a_pop_up_camera_rises_out_of_its_pocket():
+    """has_camera: a module behind the top edge, flush at rest, sliding up 35 mm clear of its pocket."""
+    p, bp = make(3, has_camera=True, stand_style="single_post")
+    j = by_child(bp, "camera")
+    assert j.parent == "screen" and j.kind == "prismatic" and bp.parts["camera"].label == "camera"
+    d = j.dofs[0]
+    assert d.axis == pytest.approx((0, 0, 1)) and (d.lower, d.upper) == (0.0, pytest.approx(0.035))
+    top = max(pc.bounds[1, 2] for pc in bp.parts["screen"].pieces)
+    cam = np.array([pc.bounds for pc in bp.parts["camera"].pieces])
+    assert cam[:, 1, 2].max() < top and cam[:, 0, 2].min() + d.upper > top - 0.02  # rises clear of the frame
+    _, bp = make(3, has_camera=False)
+    assert "camera" not in bp.parts
+
+
+def test_every_tree_moves():
+    """Feet without tilt, keys or camera would not move: the grammar draws the mount again."""
+    for seed in range(12):
+        _, bp = make(seed, stand_style="two_legs", has_buttons=False, has_camera=False)
+        assert by_child(bp, "connector").kind == "revolute"

@@ -86,6 +86,25 @@ def turntable(center, floor: float, radius: float) -> list[g.Piece]:
     return pieces
 
 
+TRAY_TOP = 0.021  # the turntable tray's top face over the cavity floor (wheels 9 mm, tray 6 mm over them)
+STAND_RACK_R = 0.0025  # wire radius of a microwave's low rack
+
+
+def stand_rack(center, z0: float, half: float, height: float) -> list[g.Piece]:
+    """A combination microwave's low wire rack: a square frame ``2 half`` wide ``height`` over ``z0`` with
+    wires across it, on four legs that stand on ``z0`` at its corners."""
+    cx, cy = center
+    r, zc = STAND_RACK_R, z0 + height
+    x0, x1, y0, y1 = cx - half + r, cx + half - r, cy - half + r, cy + half - r
+    pieces = [g.cylinder([x, y, z0], [x, y, zc], r, "rack", 8) for x in (x0, x1) for y in (y0, y1)]
+    pieces += [g.cylinder(a, b, r, "rack", 8) for a, b in (([x0, y0, zc], [x1, y0, zc]), ([x0, y1, zc], [x1, y1, zc]),
+                                                            ([x0, y0, zc], [x0, y1, zc]), ([x1, y0, zc], [x1, y1, zc]))]
+    n = max(3, int((y1 - y0) / 0.03))
+    pieces += [g.cylinder([x0 + r, y0 + (y1 - y0) * k / n, zc], [x1 - r, y0 + (y1 - y0) * k / n, zc], 0.7 * r, "rack", 6)
+               for k in range(1, n)]
+    return pieces
+
+
 def spindle(center, floor: float) -> g.Piece:
     """The turntable's drive spindle in the middle of the cavity floor (8 mm tall)."""
     return g.cylinder([*center, floor], [*center, floor + 0.008], 0.006, "roller", 16)

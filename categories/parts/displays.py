@@ -22,6 +22,9 @@ PRESS = 0.002  # button travel
 FORK_T = 0.008  # fork cheek and bridge thickness
 LEG_W = 0.025  # two-leg stand upright width (y)
 ARM = dict(radius=0.014, barrel=0.05, lug=0.008)  # wall-arm barrel radius, barrel height, lug thickness
+CAMERA = dict(w=0.05, d=0.016, h=0.05, rise=0.035, gap=0.003, wall=0.003)
+"""A pop-up camera behind the top edge: 50 x 16 x 50 mm, rises 35 mm (Honor Vision, Huawei Vision X65 pop-up
+cameras: a module at the top centre that rises above the frame for video calls and retracts when off)."""
 
 
 def bottom_band(bezel: float, bottom_buttons: bool) -> float:
@@ -206,6 +209,8 @@ def wall_mount_ranges(corners: np.ndarray, pivot, pivots: list[float], x_wall: f
         return lo
 
     tilt = max(largest(lambda t: clear(t, 0.0), tilt), 0.02)
+    if n == 0:  # a tilting mount: no arm joints
+        return tilt, 0.0
     return tilt, max(largest(lambda f: clear(tilt, f), math.pi / 3) / n, 0.02)
 
 
@@ -253,3 +258,44 @@ def curved_screen(W: float, xs3, zs, hump, bezel: float, band: float, buttons: l
                           [0, 0, 1, 0], [0, 0, 0, 1]], float)  # the facet turned about z, moved to its start on the arc
             pieces += [pc.transformed(m) for pc in local]
     return pieces
+
+
+def camera_pocket(xs: float, zs1: float) -> list[g.Piece]:
+    """The pocket on the back of the housing that the pop-up camera sits in: a floor, two sides and a back
+    wall, open at the top; ``xs`` is the housing's back face, ``zs1`` the screen's top."""
+    c = CAMERA
+    gp, t = c["gap"], c["wall"]
+    xc1 = xs - 0.004  # the camera's front face
+    xc0 = xc1 - c["d"]
+    yo, zb = c["w"] / 2 + gp, zs1 - c["h"] - gp
+    return [g.box_between([xc0 - gp - t, -yo - t, zb], [xc0 - gp, yo + t, zs1], "housing"),
+            g.box_between([xc0 - gp - t, -yo - t, zb - t], [xs + 0.001, yo + t, zb], "housing"),
+            *[g.box_between([xc0 - gp, ya, zb], [xs + 0.001, yb, zs1], "housing") for ya, yb in ((yo, yo + t),
+                                                                                                 (-yo - t, -yo))]]
+
+
+def camera(xs: float, zs1: float) -> list[g.Piece]:
+    """The camera module at rest, its top 1 mm under the screen's top, its lens on the front face near the top."""
+    c = CAMERA
+    xc1 = xs - 0.004
+    z1 = zs1 - 0.001
+    return [g.box_between([xc1 - c["d"], -c["w"] / 2, z1 - c["h"]], [xc1, c["w"] / 2, z1], "camera", bevel=0.003),
+            g.cylinder([xc1 - 0.001, 0, z1 - 0.013], [xc1 + 0.0008, 0, z1 - 0.013], 0.0065, "display", 24)]
+
+
+def camera_corners(xs: float, zs1: float) -> list[list[float]]:
+    """Back corners of the pocket and of the raised camera (for the wall-clearance search)."""
+    c = CAMERA
+    x = xs - 0.004 - c["d"] - c["gap"] - c["wall"]
+    y = c["w"] / 2 + c["gap"] + c["wall"]
+    return [[x, s * y, z] for s in (-1, 1) for z in (zs1, zs1 + c["rise"])]
+
+
+def tilt_bracket(x_w: float, x_p: float, z_p: float, r_k: float, L_k: float) -> list[g.Piece]:
+    """A tilting wall mount: a wall plate with its face at ``x_w``, a bracket out to the tilt fork at ``x_p``."""
+    ph = max(0.2, 2.6 * r_k + 0.08)
+    x_fork = x_p - 1.3 * r_k - FORK_T  # the fork's back plate
+    hz = min(0.02, 1.1 * r_k)
+    return [g.box_between([x_w - 0.006, -0.1, z_p - ph / 2], [x_w, 0.1, z_p + ph / 2], "arm", bevel=0.002),
+            g.box_between([x_w - 0.001, -0.35 * L_k, z_p - hz], [x_fork + 0.001, 0.35 * L_k, z_p + hz], "arm"),
+            *fork(x_p, z_p, r_k, L_k, "arm")]
