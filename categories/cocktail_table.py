@@ -10,7 +10,9 @@ square, ``width`` across. Designs (``support``):
 - ``pedestal``: a column carrying the top slides up out of a tube on a base disc and turns in it
   (revolute_prismatic);
 - ``drawers``: a square storage table, drawers in the front (and maybe the back) of a deep apron
-  between four legs, an optional lower shelf;
+  between four legs, an optional lower shelf, maybe four swivel casters, and maybe one or two drop
+  leaves on its sides hanging from the top's edges (a Pembroke / drop-leaf coffee table), each maybe
+  held up by a swing-out bracket (loper) under it;
 - ``nesting``: a square table on slim legs with one or two smaller tables under it that slide out
   to the front and back, each maybe with a third nested inside it (a nest of tables).
 Every slide rests at its bottom or closed. Parts: ``categories/parts/tables.py`` and
@@ -54,15 +56,18 @@ def back_drawer_count(p, rng) -> int:
 
 
 GRAMMAR = Grammar("cocktail_table", {
-    "cocktail_table": Node(required=("top",), one_of={"legs": 0.35, "pedestal": 0.15, "drawers": 0.25,
-                                                      "nesting": 0.25}, choice="support"),
+    "cocktail_table": Node(required=("top",), one_of={"legs": 0.14, "pedestal": 0.06, "drawers": 0.6,
+                                                      "nesting": 0.2}, choice="support"),
     "top": Node(label=("top", "lid")),  # a lift-top is the lid of a storage box
     "legs": Node(label="body", optional={"shelf": 0.4, "lift_top": 0.55}),
     "lift_top": Node(label="lift"),
     "shelf": Node(),
     "pedestal": Node(label="stand"),
     "drawers": Node(label="body", repeat={"drawer": drawer_count, "back_drawer": back_drawer_count},
-                    optional={"shelf": 0.4, "casters": 0.4}),
+                    optional={"shelf": 0.4, "casters": 0.45, "drop_leaves": 0.55}),
+    "drop_leaves": Node(repeat={"leaf_side": (1, 2)}),
+    "leaf_side": Node(label="leaf", optional={"loper": 0.5}),
+    "loper": Node(label="bracket"),
     "back_drawer": Node(label="drawer"),
     "casters": Node(repeat={"table_caster": 4}),
     "table_caster": Node(label="caster", one_of={"twin": 0.4, "single": 0.6}, choice="caster_style"),
@@ -74,8 +79,10 @@ GRAMMAR = Grammar("cocktail_table", {
     "inner": Node(label="table"),
 })
 """``shelf`` and ``lift_top`` grow on a legged table; without a lift-top its legs are telescopic.
-A storage table has 1-3 drawers in the front and maybe 1-3 in the back (fewer on a narrow table) and maybe stands on four swivel casters (a cart-style coffee table); a nest has one or two tables under the top (front, back), each
-maybe with a smaller one inside it."""
+A storage table has 1-3 drawers in the front and maybe 1-3 in the back (fewer on a narrow table), maybe stands on
+four swivel casters (a cart-style coffee table) and maybe has one or two drop leaves on its sides (drop-leaf / Pembroke
+coffee tables: a leaf on each side, or one on a table kept against a sofa's arm), each maybe on a loper; a nest has one
+or two tables under the top (front, back), each maybe with a smaller one inside it."""
 
 PARAMS = (
     Float("width", "top diameter (round) or side (square)", "m", 0.5, 1.0),
@@ -97,6 +104,8 @@ PARAMS = (
     Int("drawer_count", "drawers in the front (one under 0.7 m wide, at most two under 0.9 m)", "", 1, 3),
     Int("back_drawer_count", "drawers in the back when drawer_sides is both (capped as the front)", "", 1, 3),
     Choice("drawer_sides", "drawers in the front only or front and back", choices=("front", "both")),
+    Float("leaf_width", "a drop leaf's width (drop-leaf coffee tables: 18-30 cm leaves; less on a low table)", "m",
+          0.15, 0.3),
     Float("caster_radius", "wheel radius of a storage table's casters (50-75 mm furniture casters)", "m",
           0.025, 0.0375),
     Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", 0.06, 0.18),
@@ -128,15 +137,23 @@ NEST_SIZE = (0.7, 0.6)  # a nest of tables is at most 0.7 m across and 0.6 m hig
 NEST_TOP = {"glass": 0.008}  # nested tables' tops: 8 mm toughened glass, else 18 mm boards
 DRAWER_DEPTH = 0.45  # coffee-table drawers run 0.3-0.45 m deep
 METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (as the dining table's)
+LEAF_GAP_Y = 0.003  # a drop leaf's edge off the top's edge at its hinge
+LOPER_ROOM = 0.03  # the apron stays this far inside a leaf's hinge line: a folded loper (20 mm board) lies there
+LOPER = 0.2  # swing-out bracket length at most
 DRAWER_WIDE = 0.6  # and are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)
 
 
+DRAWERS_W = 0.75  # storage coffee tables with drawers are 0.75-1.2 m across (IKEA HEMNES 0.9 m, LIATORP 0.93 m,
+#                   Wayfair / West Elm drawer coffee tables 0.8-1.2 m): a smaller one is a side table
 LIFT_TOP_T = 0.03  # a lift-top is an 18-30 mm board: lift-top mechanisms carry 10-25 kg (hardware listings of
 #                   lift-top coffee-table hinges); a 45 mm solid 1 m top (33 kg) was heavier than any real lid
 
 
 def nest_size(p: dict) -> dict:
-    """A nest of tables is side-table sized (``NEST_SIZE``); a lift-top is at most ``LIFT_TOP_T`` thick."""
+    """A nest of tables is side-table sized (``NEST_SIZE``); a lift-top is at most ``LIFT_TOP_T`` thick; a storage
+    table with drawers is at least ``DRAWERS_W`` wide."""
+    if p["support"] == "drawers":
+        return {**p, "width": max(p["width"], DRAWERS_W)}
     if p["support"] == "legs" and p["has_lift_top"]:
         return {**p, "top_thickness": min(p["top_thickness"], LIFT_TOP_T)}
     if p["support"] != "nesting":
@@ -234,8 +251,11 @@ class TableLayout(Layout):
     def drawers(self, node):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
-        inset = min(p["leg_inset"], INSET_MAX * W)
         lw = 2 * p["leg_radius"] + 0.01  # square legs a little stouter than the rails
+        inset = min(p["leg_inset"], INSET_MAX * W)
+        leaves = node.one("drop_leaves")
+        if leaves:  # the side boards and the folded lopers stay inside the hanging leaves
+            inset = max(inset, lw / 2 + LOPER_ROOM)
         half = W / 2 - inset + lw / 2
         za1 = H - tt
         za0 = za1 - p["box_depth"]
@@ -272,6 +292,8 @@ class TableLayout(Layout):
         slots = [(1, h) for h in holes[1]] + [(-1, h) for h in holes.get(-1, [])]
         for k, (d, (side, hole)) in enumerate(zip(front + back, slots, strict=True)):
             self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=depth)
+        if leaves:
+            self.grow(leaves, half=half, za0=za0, za1=za1, z_low=z_leg)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
     def drawer(self, node, k, side, hole, x, depth):
@@ -291,6 +313,35 @@ class TableLayout(Layout):
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=0.75 * depth)
 
     back_drawer = drawer
+
+    def drop_leaves(self, node, half, za0, za1, z_low):
+        """A leaf on the +y side, and maybe one on the -y side, hanging from the top's edges at rest."""
+        for side, n in zip((1, -1), node.of("leaf_side")):
+            self.grow(n, side=side, half=half, za0=za0, za1=za1, z_low=z_low)
+
+    def leaf_side(self, node, side, half, za0, za1, z_low):
+        """One drop leaf, hinged along the top's edge (a positive turn raises it level); it hangs clear of
+        the floor and the casters, and a loper swung out under it ends under its middle."""
+        p = self.p
+        W, H, tt = p["width"], p["height"], p["top_thickness"]
+        leaf_w = min(p["leaf_width"], H - tt - z_low - 0.05)
+        y_h = W / 2 + LEAF_GAP_Y
+        xy = T.outline(W, 2 * (y_h + leaf_w), "square", 192)
+        piece, hinge = M.drop_leaf(xy, side, y_h, H - tt, H, "top")
+        name = "leaf_left" if side > 0 else "leaf_right"
+        self.add(name, "leaf", [piece])
+        self.hinge("body", name, hinge, upper=math.pi / 2)
+        if node.one("loper"):
+            self.grow(node.one("loper"), leaf=name, side=side, half=half, za0=za0, za1=za1,
+                      length=min(LOPER, 0.8 * half, y_h + 0.6 * leaf_w - half))
+
+    def loper(self, node, leaf, side, half, za0, za1, length):
+        """A swing-out bracket lying along the side board under ``leaf``; swung out (once the leaf is up)
+        it holds the leaf level (as the dining table's)."""
+        pieces, at = M.loper(-length / 2, side * half, side, za0 + 0.01, za1 - 0.006, length, "frame")
+        name = f"loper_{leaf[5:]}"
+        self.add(name, "bracket", pieces)
+        self.hinge("body", name, at, upper=math.pi / 2, requires_open=leaf)
 
     def casters(self, node, frames, caster):
         for i, (n, f) in enumerate(zip(node.of("table_caster"), frames)):

@@ -3,7 +3,8 @@
 X is depth (the head reaches out toward +X), Y is width, Z is up. Every lamp has
 a base (a round or square plate, or a domed foot), a lower pole that is a hollow
 tube standing on it and an upper pole that turns in the tube and pulls up out of
-it (revolute-prismatic). At rest the upper pole is collapsed, resting on its stop
+it (revolute-prismatic); a floor lamp's pole may have two stages: a middle tube
+turns and slides in the lower one, the upper pole slides (prismatic) in the middle one. At rest the upper pole is collapsed, resting on its stop
 (slide 0), and extends upward by a quarter of its visible length. On top of the
 upper pole, ``arm_style`` decides:
 
@@ -26,7 +27,9 @@ upright head's bulb (optional) screws out of its socket (continuous-prismatic:
 turns freely and slides up to 12 mm out, gravity seats it again); a hanging bulb
 only turns in its socket (continuous): gravity would pull it out of a free slide.
 An optional switch on the base: a push button sticking out of a small housing, pressed
-horizontally toward the pole, or a rotary dimmer knob turning about z on the base's top.
+horizontally toward the pole, or a rotary dimmer knob turning about z on the base's top; or, on an
+upright head, the knob of a turn-knob socket sticking out of the socket's side (continuous about
+its own radial axis).
 
 Every passive joint is still at rest under gravity (PhysX joint friction holds
 neither a slide along gravity nor a loaded hinge): swivels about Z are neutral;
@@ -68,25 +71,27 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import lamps as L
 
 GRAMMAR = Grammar("lamp", {
-    "lamp": Node(label="base", required=("pole", "arm"), optional={"bulb": 0.85, "switch": 0.5}),
+    "lamp": Node(label="base", required=("pole", "arm"), optional={"bulb": 0.6, "switch": 0.8}),
     "pole": Node(label="pole"),
-    "arm": Node(one_of={"straight": 0.45, "curved": 0.2, "chain": 0.35}, choice="arm_style"),
+    "arm": Node(one_of={"straight": 0.35, "curved": 0.2, "chain": 0.45}, choice="arm_style"),
     "straight": Node(required=("head",)),
     "curved": Node(label="arm", required=("head",)),
     "chain": Node(label="arm", required=("head",)),
     "head": Node(label="head", required=("shade",)),
     "shade": Node(label="shade"),
     "bulb": Node(label="bulb"),
-    "switch": Node(one_of={"push_switch": 0.6, "rotary_switch": 0.4}, choice="switch_kind"),
+    "switch": Node(one_of={"push_switch": 0.35, "rotary_switch": 0.3, "socket_switch": 0.35}, choice="switch_kind"),
     "push_switch": Node(label="switch"),
     "rotary_switch": Node(label="switch"),
+    "socket_switch": Node(label="switch"),
 })
 """A ``straight`` arm is a head on the pole top; ``curved`` an arc the head hangs from; ``chain`` 2-3
 segments like an architect lamp (the segments after the first pitch or swing, drawn per segment).
-Every head carries its shade. A base switch is a push button or a rotary dimmer."""
+Every head carries its shade. A switch is a push button or a rotary dimmer on the base, or the turn knob of the
+socket of an upright head (a table lamp's keyed socket)."""
 
 PARAMS = (
-    Choice("lamp_type", "desk lamp or floor lamp", choices=("desk", "floor"), weights=(0.7, 0.3)),
+    Choice("lamp_type", "desk lamp or floor lamp", choices=("desk", "floor"), weights=(0.55, 0.45)),
     Float("desk_height", "height of a desk lamp at rest (pole collapsed)", "m", 0.35, 0.6),
     Float("floor_height", "height of a floor lamp at rest (pole collapsed)", "m", 1.0, 1.5),
     Int("arm_segments", "segments of a chain arm", "", 2, 3),
@@ -102,6 +107,9 @@ PARAMS = (
     Float("base_thickness", "base plate thickness", "m", 0.015, 0.035),
     # 15-25 mm poles and arm tubes (IKEA Hektar / Ranarp, Anglepoise Type 75: 16-25 mm tube, 9 mm arm rods)
     Float("pole_radius", "upper pole radius (the lower pole is a tube around it)", "m", 0.0075, 0.0125),
+    # telescoping floor lamps: a one-stage pole, or a two-stage one (a middle tube: IKEA-style telescopic reading
+    # lamps, photographers' tripod floor lamps with 2-3 section columns); a desk lamp's pole has one stage
+    Int("pole_stages", "telescoping stages of a floor lamp's pole (a desk lamp's has 1)", "", 1, 2),
     Float("lower_pole_fraction", "share of the pole length taken by the lower tube", "", 0.35, 0.55),
     Choice("shade_shape", "shade profile", choices=("cone", "drum", "dome", "bell"),
            weights=(0.35, 0.25, 0.25, 0.15)),
@@ -124,7 +132,7 @@ MATERIALS = {
     "bulb": BULB_GLASS, "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
 }
 
-OWNERS = {"base": "lamp", "lower_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch",
+OWNERS = {"base": "lamp", "lower_pole": "pole", "middle_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch",
           "head": "head", "shade": "shade"}
 """Which grown node makes each part of the lamp; the others (the arm's bars and segments) are the arm's."""
 
@@ -147,7 +155,7 @@ class LampLayout(Layout):
         for name in names:
             self.add(name, made.parts[name].label, made.parts[name].pieces)
 
-    pole = bulb = push_switch = rotary_switch = _parts
+    pole = bulb = push_switch = rotary_switch = socket_switch = _parts
 
     def switch(self, node, made, names):
         self.grow(node.one(node.choice), made=made, names=names)
@@ -169,8 +177,15 @@ class LampLayout(Layout):
 
 
 def tripod_switch(p: dict) -> dict:
-    """A tripod has no base plate to carry the push switch (its switch is on the cord)."""
-    return {**p, "has_switch": p["has_switch"] and p["base_shape"] != "tripod"}
+    """A turn-knob socket is an upright head's (a hanging head's socket is inside its shade): another lamp draws a
+    push switch instead; a tripod has no base plate to carry a base switch (its switch is the socket's, or on
+    the cord)."""
+    if p["switch_kind"] == "socket_switch" and p["arm_style"] != "straight":
+        p = {**p, "switch_kind": "push_switch"}
+    base_switch = p["switch_kind"] != "socket_switch"
+    if p["lamp_type"] == "desk":
+        p = {**p, "pole_stages": 1}
+    return {**p, "has_switch": p["has_switch"] and not (base_switch and p["base_shape"] == "tripod")}
 
 
 CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS,

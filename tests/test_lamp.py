@@ -109,8 +109,11 @@ def test_every_piece_collides_except_the_hidden_base_weight(lamp_bp):
 
 
 def test_upper_pole_rests_collapsed_pulls_up_and_turns(lamp_bp):
-    _, bp = lamp_bp
-    j = joint_of(bp, "upper_pole")
+    p, bp = lamp_bp
+    # a two-stage floor pole: the middle tube turns and slides in the lower one, the upper pole slides in it
+    first = "middle_pole" if "middle_pole" in bp.parts else "upper_pole"
+    assert (first == "middle_pole") == (p["lamp_type"] == "floor" and p["pole_stages"] == 2)
+    j = joint_of(bp, first)
     assert j.kind == "revolute_prismatic" and j.parent == "lower_pole"
     slide, turn = j.dofs
     # at rest it sits on its stop (slide 0) and extends upward: gravity holds it collapsed
@@ -118,18 +121,43 @@ def test_upper_pole_rests_collapsed_pulls_up_and_turns(lamp_bp):
     assert turn.type == "revolute" and np.allclose(turn.axis, (0, 0, 1))
     assert (turn.lower, turn.upper) == pytest.approx((-math.pi, math.pi))
     assert np.allclose(turn.origin[:2], 0) and np.allclose(slide.origin, turn.origin)
-    # L = the pole's length above the tube top (the joint origin)
-    L = bp.parts["upper_pole"].pieces[0].bounds[1, 2] - slide.origin[2]
+    # L = the stage's length above the tube top (the joint origin)
+    stage = bp.parts[first].pieces[:2 if first == "middle_pole" else 1]  # tube (and collar); not an arm's hub
+    L = max(pc.bounds[1, 2] for pc in stage) - slide.origin[2]
     assert slide.lower == 0 and slide.upper == pytest.approx(0.25 * L, rel=1e-6)
-    # the upper pole sits inside the tube: its radius is below the tube's inner radius
+    # the stage sits inside the tube: its radius is below the tube's inner radius
     tube = bp.parts["lower_pole"].pieces[0].vertices
-    pole = bp.parts["upper_pole"].pieces[0].vertices
+    pole = stage[0].vertices  # (a middle tube's collar stays above the lower tube)
     r_in = np.hypot(tube[:, 0], tube[:, 1]).min()
     assert np.hypot(pole[:, 0], pole[:, 1]).max() + 0.002 <= r_in
     # collapsed, its end stays above the base; fully extended, it is still well inside the tube
     z_end = pole[:, 2].min()
     assert z_end > tube[:, 2].min() + 0.002
     assert z_end + slide.upper < slide.origin[2] - 0.005
+    if first == "middle_pole":
+        up = joint_of(bp, "upper_pole")
+        (d,) = up.dofs
+        assert up.kind == "prismatic" and up.parent == "middle_pole"
+        assert np.allclose(d.axis, (0, 0, 1)) and d.lower == 0 < d.upper
+        mid = bp.parts["middle_pole"].pieces[0].vertices
+        rod = bp.parts["upper_pole"].pieces[0].vertices
+        assert np.hypot(rod[:, 0], rod[:, 1]).max() + 0.002 <= np.hypot(mid[:, 0], mid[:, 1]).min()
+        assert rod[:, 2].min() > mid[:, 2].min() + 0.002  # collapsed, above the middle tube's end
+        assert rod[:, 2].min() + d.upper < d.origin[2] - 0.005  # extended, still inside it
+
+
+def test_socket_knob_turns_on_an_upright_head():
+    p, bp = make(0, arm_style="straight", has_switch=True, switch_kind="socket_switch")
+    j = joint_of(bp, "switch")
+    (d,) = j.dofs
+    assert j.kind == "continuous" and j.parent == "head"
+    assert abs(d.axis[2]) < 1e-9  # about its own horizontal, radial axis: balanced, gravity leaves it
+    knob = np.vstack([pc.vertices for pc in bp.parts["switch"].pieces])
+    r = np.hypot(knob[:, 0], knob[:, 1])
+    assert r.min() > 0.005 and r.max() < 0.05  # it stands out of the socket, inside the shade
+    # a hanging head has no turn-knob socket: another lamp draws a push switch on its base
+    p, bp = make(0, arm_style="chain", has_switch=True, switch_kind="socket_switch")
+    assert p["switch_kind"] == "push_switch" and joint_of(bp, "switch").parent == "base"
 
 
 def test_pole_extended_makes_the_lamp_taller(lamp_bp):
@@ -229,6 +257,10 @@ def test_limits_contain_rest_and_pivots_sit_in_the_hinge(lamp_bp):
                 # the pivot is inside (within 5 mm of) a collision piece of the turning part or its
                 # parent: the axis runs through the hinge, not through empty space
                 x = np.asarray(d.origin)
+                if j.child == "middle_pole":  # a tube turning in a tube: the pivot is on their common axis
+                    z = np.vstack([pc.vertices for pc in bp.parts["middle_pole"].pieces])[:, 2]
+                    assert np.allclose(x[:2], 0) and z.min() < x[2] < z.max()
+                    continue
                 depth = min(float((eq[:, :3] @ x + eq[:, 3]).max()) for eq in planes)
                 assert depth < 0.005, f"{j.child}: pivot {x} is {depth * 1000:.1f} mm off its hinge"
 
@@ -328,8 +360,8 @@ def test_schema_has_the_growth_flags_and_arm_choice():
     names = lamp.CATEGORY.schema.names
     assert {"has_bulb", "has_switch", "lamp_type", "arm_style", "arm_segments"} <= set(names)
     assert lamp.CATEGORY.schema["arm_style"].choices == tuple(lamp.GRAMMAR.nodes["arm"].one_of)
-    assert lamp.CATEGORY.schema["lamp_type"].weights == (0.7, 0.3)
-    assert "lamp: builds base; requires pole, arm; may grow bulb (0.85), switch (0.5)" in lamp.CATEGORY.rules()
+    assert lamp.CATEGORY.schema["lamp_type"].weights == (0.55, 0.45)
+    assert "lamp: builds base; requires pole, arm; may grow bulb (0.6), switch (0.8)" in lamp.CATEGORY.rules()
 
 
 @pytest.mark.parametrize("seed", [0, 3])
@@ -360,7 +392,7 @@ def test_deterministic():
 
 @pytest.mark.parametrize("style", ["straight", "chain"])
 def test_tripod_base_stands_on_three_feet(style):
-    p, bp = make(3, base_shape="tripod", arm_style=style, has_switch=True)
+    p, bp = make(3, base_shape="tripod", arm_style=style, has_switch=True, switch_kind="push_switch")
     assert p["base_shape"] == "tripod" and not p["has_switch"] and "switch" not in bp.parts
     base = bp.parts["base"].pieces
     feet = [pc for pc in base if pc.material == "fitting"]

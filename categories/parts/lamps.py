@@ -83,10 +83,12 @@ def _design(p: dict, d: dict, R: float) -> dict:
         rs *= 0.75
     curve_end = d["curve_end"]
     r_up = p["pole_radius"]
-    r_lo = r_up + GAP + _tube_wall(r_up)
+    # a two-stage pole (floor lamps) has a middle tube between the upper pole and the lower tube
+    r_mid = r_up + GAP + _tube_wall(r_up) if floor and p.get("pole_stages", 1) == 2 else 0.0
+    r_lo = (r_mid or r_up) + GAP + _tube_wall(r_mid or r_up)
     t = p["base_thickness"]
     z_b = {"domed": t + 0.22 * R, "tripod": TRIPOD_HUB}.get(p["base_shape"], t)
-    q = dict(floor=floor, style=style, H=H, R=R, rs=rs, z_b=z_b, r_up=r_up, r_lo=r_lo,
+    q = dict(floor=floor, style=style, H=H, R=R, rs=rs, z_b=z_b, r_up=r_up, r_lo=r_lo, r_mid=r_mid,
              spokes=d["spokes"], shade_drop=d["shade_drop"], switch_angle=d["switch_angle"],
              curve_end=curve_end, reach_x=0.0)
     q.update(_knuckle(r_up))
@@ -235,6 +237,29 @@ def _rotary(bp: Blueprint, p: dict, q: dict) -> None:
     bp.join(J.revolute("base", "switch", c + (0, 0, z + 0.004), (0, 0, 1), 0.0, ROTARY_TURN, role="knob"))
 
 
+SOCKET_KNOB_Z = 0.012  # a turn-knob socket's knob: its axis this far above the socket floor
+SOCKET_KNOB = (0.0025, 0.004, 0.0065, 0.009)  # stem radius and length, knob radius and length (E27 turn-knob
+#                                              sockets: a 12-14 mm knurled knob on a 4-5 mm stem)
+
+
+def _socket_knob(bp: Blueprint, p: dict, q: dict, r_so: float, z: float, prof: np.ndarray, th: float,
+                 z0: float) -> None:
+    """The knob of a turn-knob socket (the classic table lamp switch: each turn clicks it on or off), standing
+    out of the socket's side between two spokes, 1 mm off the shell, turning about its own radial axis:
+    balanced on that axis, gravity leaves it where it is. A shade too narrow there keeps the knob shorter."""
+    r_st, l_st, r_k, l_k = SOCKET_KNOB
+    a = math.pi / 2 + math.pi / q["spokes"]
+    d = np.array([math.cos(a), math.sin(a), 0.0])
+    room = float(_inner_radius(prof, th, z0, np.array([z - r_k, z, z + r_k])).min()) - r_so - 0.004
+    l_k = float(np.clip(room - l_st - 0.001, 0.004, l_k))
+    r0 = r_so + 0.001
+    c = np.array([0.0, 0.0, z])
+    knob = [g.cylinder(c + d * r0, c + d * (r0 + l_st), r_st, "switch", 16),
+            g.cylinder(c + d * (r0 + l_st), c + d * (r0 + l_st + l_k), r_k, "switch", 24)]
+    bp.add("switch", "switch", knob)
+    bp.join(J.continuous("head", "switch", c + d * r0, d, role="knob"))
+
+
 # ---------------------------------------------------------------------------
 # assembly at a given pole top height
 
@@ -243,17 +268,19 @@ def _assemble(p: dict, q: dict, z_top: float) -> Blueprint:
     bp = Blueprint("lamp")
     z_b = q["z_b"]
     _base(bp, p, q)
-    if p["has_switch"]:
+    if p["has_switch"] and p.get("switch_kind") != "socket_switch":
         (_rotary if p.get("switch_kind") == "rotary_switch" else _switch)(bp, p, q)
 
     # --- lower pole: a tube on the base; upper pole slides and turns in it ----
-    r_up, r_lo = q["r_up"], q["r_lo"]
-    tw = _tube_wall(r_up)
+    r_up, r_lo, r_mid = q["r_up"], q["r_lo"], q["r_mid"]
+    tw = _tube_wall(r_mid or r_up)
     S = z_top - z_b
     T = p["lower_pole_fraction"] * S
     z_t = z_b + T
     L = z_top - z_t
-    slide = 0.25 * L
+    # two stages: a middle tube shows half the length above the lower tube, and slides as one stage does
+    z_m = z_t + 0.5 * L if r_mid else z_top
+    slide = 0.25 * (z_m - z_t)
     spare = T - slide - 0.004  # tube depth left below the pole end at rest (collapsed)
     z_ub = z_t - 0.5 * spare - slide  # the pole end at rest; fully extended it is still 0.5 spare deep
     lower = [
@@ -263,8 +290,19 @@ def _assemble(p: dict, q: dict, z_top: float) -> Blueprint:
     ]
     bp.add("lower_pole", "pole", lower)
     bp.join(J.fixed("base", "lower_pole"))
-    bp.add("upper_pole", "pole", [_tube((0, 0, z_ub), (0, 0, z_top), r_up, 24)])
-    bp.join(J.revolute_prismatic("lower_pole", "upper_pole", (0, 0, z_t), (0, 0, 1), (-math.pi, math.pi),
+    first = "middle_pole" if r_mid else "upper_pole"
+    if r_mid:  # a tube like the lower one, with its collar; the upper pole slides (without turning) in it
+        tw_m = _tube_wall(r_up)
+        bp.add("middle_pole", "pole", [_ring([(r_mid, z_ub), (r_mid, z_m - 0.012)], tw_m, "pole"),
+                                       _ring([(r_mid + 0.0015, z_m - 0.012), (r_mid + 0.0015, z_m)], tw_m + 0.0015,
+                                             "pole")])
+        slide2 = 0.25 * (z_top - z_m)
+        spare2 = (z_m - z_ub) - slide2 - 0.004
+        bp.add("upper_pole", "pole", [_tube((0, 0, z_m - 0.5 * spare2 - slide2), (0, 0, z_top), r_up, 24)])
+        bp.join(J.prismatic("middle_pole", "upper_pole", (0, 0, z_m), (0, 0, 1), 0.0, slide2, role="telescope"))
+    else:
+        bp.add("upper_pole", "pole", [_tube((0, 0, z_ub), (0, 0, z_top), r_up, 24)])
+    bp.join(J.revolute_prismatic("lower_pole", first, (0, 0, z_t), (0, 0, 1), (-math.pi, math.pi),
                                  (0, 0, 1), (0.0, slide), role="telescope"))
 
     style = q["style"]
@@ -504,6 +542,9 @@ def _upright_head(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
                                 "fitting", 8))
     bp.add("shade", "shade", shade)
     bp.join(J.fixed("head", "shade"))
+
+    if p["has_switch"] and p.get("switch_kind") == "socket_switch":
+        _socket_knob(bp, p, q, r_so, z_sock + SOCKET_KNOB_Z, prof, th, z0)
 
     if p["has_bulb"]:
         glass = np.vstack([[0.0, z_sb], np.c_[bulb_prof[:, 0], z_sb + bulb_prof[:, 1]]])
