@@ -8,7 +8,7 @@ its top back by up to ``tilt``; nothing enters the stand or the ground. Stands: 
 (a base plate and a neck, or with ``has_height_adjust`` a post that swivels and slides up in a
 sleeve; without it the neck swivels on its base, +-``swivel``), ``two_legs`` (two feet with uprights and a
 crossbar), or ``wall_mount`` (a wall plate and 0-3 arm links turning about Z: 0 is a tilting mount, the fork
-on a bracket as far off the wall as the full tilt needs; the screen kept 1 cm off the wall in every combination,
+on a bracket as far off the wall as the full tilt needs; hung with the screen's centre 1.07 m up; the screen kept 1 cm off the wall in every combination,
 ``displays.wall_mount_ranges``). A stand's connector tilts or is ``rigid`` (feet and swivel-only pedestals);
 a wall mount always tilts. An optional pop-up camera rises out of a pocket behind the top edge. The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
 arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
@@ -95,6 +95,10 @@ MATERIALS = {
 }
 
 ASPECT = {"16:9": 9 / 16, "4:3": 3 / 4}
+# mounting height of a wall TV: the screen's centre at seated eye level, about 42 in (1.07 m) off the floor
+# (Sanus and Crutchfield TV mounting-height guides); a very tall screen keeps its bottom 30 cm up
+WALL_CENTRE = 1.07
+WALL_BOTTOM_MIN = 0.3
 ARM_LINK_MIN = 0.14  # shortest link of an articulating wall arm (3-link arms reach 0.45-0.65 m: Sanus VLF628,
 #                      Vogel's Wall 3345 spec sheets)
 
@@ -106,6 +110,8 @@ class TVLayout(Layout):
         H = W * ASPECT[p["aspect"]]
         style = node.choice
         wall = style == "wall_mount"
+        if wall:  # hung on the wall: the screen's centre at seated eye height, its bottom at least 30 cm up
+            self.bp.elevation = max(WALL_BOTTOM_MIN, WALL_CENTRE - H / 2)
         stand = node.one(style)
         adjust = stand.one("height_adjust") if style == "single_post" else None
         base_t = 0.0 if wall else float(np.clip(0.008 + 0.006 * W, 0.01, 0.02))  # plate / foot height

@@ -38,6 +38,9 @@ class Blueprint:
     materials: dict[str, str] = field(default_factory=dict)  # slot -> family
     parts: dict[str, Part] = field(default_factory=dict)
     joints: list[JointSpec] = field(default_factory=list)
+    # m: where the core puts the lowest point at rest. 0 for what stands on the floor; a wall-mounted
+    # object (a TV on a wall arm) hangs this high, so that nothing it moves drags on the floor
+    elevation: float = 0.0
 
     def add(self, name: str, label: str, pieces: Iterable[Piece]) -> str:
         """Add a part and return its name."""

@@ -1,6 +1,6 @@
 """Physical plausibility passes applied once, for every category.
 
-* :func:`rest_on_ground` moves the object so its lowest point at rest is z = 0.
+* :func:`rest_on_ground` moves the object so its lowest point at rest is z = 0 (or its ``elevation``).
 * :func:`rest_on_stops` makes every passive hinge neutral under gravity or pressed onto its
   rest stop (picking the side of a two-sided range, or adding a counterweight heel).
 * :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent.
@@ -57,8 +57,9 @@ def dynamics(role: str) -> Dynamics:
 
 
 def rest_on_ground(bp: Blueprint) -> Blueprint:
-    """A copy of ``bp`` translated (parts and joints) so its lowest point at rest sits at z = 0."""
-    dz = -float(bp.bounds()[0, 2])
+    """A copy of ``bp`` translated (parts and joints) so its lowest point at rest sits at z = 0, or at
+    ``bp.elevation`` for a wall-mounted object."""
+    dz = float(bp.elevation) - float(bp.bounds()[0, 2])
     if abs(dz) < 1e-12:
         return bp
     offset = np.array([0.0, 0.0, dz])

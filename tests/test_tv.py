@@ -129,7 +129,8 @@ def test_screen_size_follows_width_and_aspect(tv_bp):
     assert h / w == pytest.approx(9 / 16 if p["aspect"] == "16:9" else 3 / 4, rel=0.03 if curved else 1e-6)
     sag = (p["width"] / 2) ** 2 / (2 * p["curve_radius"]) + 0.01 if curved else 0.0
     assert bezel[1, 0] - bezel[0, 0] <= p["depth"] + sag
-    assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+    assert bp.elevation == 0.0 or p["stand_style"] == "wall_mount"  # only a wall TV hangs
+    assert bp.bounds()[0, 2] == pytest.approx(bp.elevation, abs=1e-9)
 
 
 # -- joints --------------------------------------------------------------------------------
@@ -307,3 +308,28 @@ def test_every_tree_moves():
     for seed in range(12):
         _, bp = make(seed, stand_style="two_legs", has_buttons=False, has_camera=False)
         assert by_child(bp, "connector").kind == "revolute"
+
+
+@pytest.mark.parametrize("width,aspect,bottom", [(2.1, "4:3", 0.3), (1.0, "16:9", 1.07 - 0.5625 / 2)])
+def test_a_wall_mounted_tv_hangs_with_its_centre_at_eye_height(width, aspect, bottom):
+    """Hung, not standing on the floor: the screen's centre 1.07 m up, its bottom at least 0.3 m up."""
+    _, bp = make(3, stand_style="wall_mount", width=width, aspect=aspect)
+    screen = np.vstack([c for pc in bp.parts["screen"].pieces for c in pc.convex])
+    assert bp.bounds()[0, 2] == pytest.approx(bottom, abs=1e-6)
+    assert screen[:, 2].min() == pytest.approx(bottom, abs=0.01)
+    _, standing = make(3, stand_style="two_legs")
+    assert standing.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
+
+
+@pytest.mark.sim
+def test_a_large_tv_on_a_wall_arm_swings_freely_in_sapien(tmp_path):
+    """Fuzz #2471: a 2.1 m 4:3 screen on a two-link arm stood on the floor and dragged on it (the arm
+    stopped at 77-81 % of its swing in SAPIEN); hung, every joint reaches both ends."""
+    pytest.importorskip("sapien")
+    import infmob_usd
+    from infmob_usd.validate.sim import check_sapien
+
+    obj = infmob_usd.generate("tv", 597338, texture_size=16, width=2.1, aspect="4:3", depth=0.02,
+                              stand_style="wall_mount", arm_links=2, has_buttons=True, button_place="bottom")
+    reach = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach"])}["reach"]
+    assert reach.ok, reach.detail
