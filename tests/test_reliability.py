@@ -172,8 +172,9 @@ def test_a_second_run_fails_fast_naming_the_first_or_waits(tmp_path, capsys):
         code, _, err = run(capsys, "generate", "tv", "--out", out, "--texture-size", 16, "--workers", 1)
         assert code == 2 and f"pid {holder.pid}" in err and "--wait" in err and len(err.splitlines()) == 1
         assert time.perf_counter() - t0 < 5 and not (out / "tv").exists()
-        code, _, _ = run(capsys, "generate", "tv", "--out", out, "--texture-size", 16, "--workers", 1, "--wait")
+        code, _, err = run(capsys, "generate", "tv", "--out", out, "--texture-size", 16, "--workers", 1, "--wait")
         assert code == 0 and time.perf_counter() - t_locked > 5.5  # it waited for the holder to let go
+        assert f"waiting for another infmob run writing to {out} (pid {holder.pid}" in err  # and said for whom
     finally:
         holder.kill()
         holder.wait()
