@@ -81,8 +81,9 @@ def test_validate_reports_every_corruption_as_a_fail_and_goes_on(made, tmp_path,
     assert "Traceback" not in out
     rep = json.loads(report.read_text())
     assert rep["objects"] == len(CORRUPTIONS) + 1 and rep["passed"] == 1
-    bad_texture = {f["check"] for f in rep["failures"] if f["object"] == "flipped_texture"}
+    bad_texture = {f["check"] for f in rep["failures"] if f["object"] == str(objs / "flipped_texture")}
     assert bad_texture == {"textures"}
+    assert len({r["object"] for r in rep["results"]}) == rep["objects"]  # copies of one object told apart
 
 
 def test_validate_with_sapien_fails_a_deleted_urdf_without_crashing(made, tmp_path, capsys):
