@@ -297,9 +297,10 @@ def _rewrite_manifest(out: Path, rows: dict[tuple[str, int], dict], run_id: str)
 class OutputLock:
     """An exclusive advisory lock (``fcntl.flock``) on ``DIR/.infmob.lock`` naming its holder."""
 
-    def __init__(self, out: Path, wait: bool = False) -> None:
+    def __init__(self, out: Path, wait: bool = False, log: Callable[[str], None] | None = None) -> None:
         self.path = Path(out) / LOCK
         self.wait = wait
+        self.log = log
         self.fd: int | None = None
 
     def holder(self) -> str:
@@ -319,6 +320,8 @@ class OutputLock:
                 os.close(fd)
                 raise OutputError(f"another infmob run is writing to {self.path.parent} ({self.holder()});"
                                   f" wait for it (--wait) or choose another --out") from None
+            if self.log:
+                self.log(f"waiting for another infmob run writing to {self.path.parent} ({self.holder()})")
             fcntl.flock(fd, fcntl.LOCK_EX)
         info = {"pid": os.getpid(), "host": socket.gethostname(),
                 "started": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
@@ -393,7 +396,7 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
     ``log`` told why). ``pool``: an already running executor to use (with ``workers`` its
     size), e.g. one warmed up by a benchmark; by default a pool is started and shut down
     here. ``total``: the number of jobs, for the progress line. ``wait_lock``: wait for
-    another run into ``out`` instead of raising :class:`OutputError`.
+    another run into ``out`` instead of raising :class:`OutputError` (``log`` is told who it waits for).
     Returned rows omit the per-file digests (they are in the manifest).
     """
     out = Path(out)
@@ -402,7 +405,7 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
     except OSError as e:
         raise OutputError(f"cannot create output folder {str(out)!r}: {e.strerror}; choose another --out") from None
     run_id = new_run_id()
-    with OutputLock(out, wait=wait_lock):
+    with OutputLock(out, wait=wait_lock, log=log):
         clean_partial(out)
         rows = read_manifest(out)
         manifest_fd = _open_nofollow(out / MANIFEST, os.O_WRONLY | os.O_APPEND | os.O_CREAT, "the manifest")

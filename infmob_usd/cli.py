@@ -449,7 +449,9 @@ def cmd_validate(args) -> int:
                 category = str(load_metadata(folder)["category"])
             except Exception:  # noqa: BLE001 - unreadable metadata is already a FAIL of that object
                 category = "?"
-            rows.append((category, report.checks, folder.name))
+            # the report names each object as the ok/FAIL line does (a sweep's by category/name, its
+            # temporary folder being gone), so that copies of one object stay apart
+            rows.append((category, report.checks, str(folder.relative_to(out)) if tmp else str(folder)))
         print(f"\n{n_ok}/{len(folders)} objects passed every check\n")
         print(summary_table(rows))
         if report_path:

@@ -81,8 +81,9 @@ def test_validate_reports_every_corruption_as_a_fail_and_goes_on(made, tmp_path,
     assert "Traceback" not in out
     rep = json.loads(report.read_text())
     assert rep["objects"] == len(CORRUPTIONS) + 1 and rep["passed"] == 1
-    bad_texture = {f["check"] for f in rep["failures"] if f["object"] == "flipped_texture"}
+    bad_texture = {f["check"] for f in rep["failures"] if f["object"] == str(objs / "flipped_texture")}
     assert bad_texture == {"textures"}
+    assert len({r["object"] for r in rep["results"]}) == rep["objects"]  # copies of one object told apart
 
 
 def test_validate_with_sapien_fails_a_deleted_urdf_without_crashing(made, tmp_path, capsys):
@@ -172,8 +173,9 @@ def test_a_second_run_fails_fast_naming_the_first_or_waits(tmp_path, capsys):
         code, _, err = run(capsys, "generate", "tv", "--out", out, "--texture-size", 16, "--workers", 1)
         assert code == 2 and f"pid {holder.pid}" in err and "--wait" in err and len(err.splitlines()) == 1
         assert time.perf_counter() - t0 < 5 and not (out / "tv").exists()
-        code, _, _ = run(capsys, "generate", "tv", "--out", out, "--texture-size", 16, "--workers", 1, "--wait")
+        code, _, err = run(capsys, "generate", "tv", "--out", out, "--texture-size", 16, "--workers", 1, "--wait")
         assert code == 0 and time.perf_counter() - t_locked > 5.5  # it waited for the holder to let go
+        assert f"waiting for another infmob run writing to {out} (pid {holder.pid}" in err  # and said for whom
     finally:
         holder.kill()
         holder.wait()
