@@ -179,7 +179,11 @@ class LampLayout(Layout):
 def tripod_switch(p: dict) -> dict:
     """A turn-knob socket is an upright head's (a hanging head's socket is inside its shade): another lamp draws a
     push switch instead; a tripod has no base plate to carry a base switch (its switch is the socket's, or on
-    the cord)."""
+    the cord). A desk lamp on a tripod has a straight pole: its 16 cm hub leaves a 0.35-0.6 m lamp no room
+    for a head hanging from an arc or a chain arm (the head shrank to a 7-17 mm shade, its bulb caught in it:
+    fuzz #2009, #4077), so such a lamp gets a round base."""
+    if p["lamp_type"] == "desk" and p["base_shape"] == "tripod" and p["arm_style"] != "straight":
+        p = {**p, "base_shape": "round"}
     if p["switch_kind"] == "socket_switch" and p["arm_style"] != "straight":
         p = {**p, "switch_kind": "push_switch"}
     base_switch = p["switch_kind"] != "socket_switch"

@@ -390,9 +390,10 @@ def test_deterministic():
                 assert np.array_equal(x.vertices, y.vertices)
 
 
-@pytest.mark.parametrize("style", ["straight", "chain"])
-def test_tripod_base_stands_on_three_feet(style):
-    p, bp = make(3, base_shape="tripod", arm_style=style, has_switch=True, switch_kind="push_switch")
+@pytest.mark.parametrize("style,kind", [("straight", "desk"), ("chain", "floor"), ("curved", "floor")])
+def test_tripod_base_stands_on_three_feet(style, kind):
+    p, bp = make(3, base_shape="tripod", arm_style=style, lamp_type=kind, has_switch=True,
+                 switch_kind="push_switch")
     assert p["base_shape"] == "tripod" and not p["has_switch"] and "switch" not in bp.parts
     base = bp.parts["base"].pieces
     feet = [pc for pc in base if pc.material == "fitting"]
@@ -402,6 +403,16 @@ def test_tripod_base_stands_on_three_feet(style):
     # real pole and arm thicknesses: 15-25 mm poles
     pole = np.array([pc.bounds for pc in bp.parts["upper_pole"].pieces])
     assert pole[:, 1, 0].max() - pole[:, 0, 0].min() >= 0.015
+
+
+@pytest.mark.parametrize("style", ["curved", "chain"])
+def test_a_desk_lamp_with_a_hanging_head_is_not_on_a_tripod(style):
+    """A tripod's 16 cm hub leaves a desk lamp no room for a head hanging from an arm: fuzz #2009 / #4077 grew
+    a 7-17 mm shade whose rim held the bulb fast. Such a lamp stands on a round base, its shade full size."""
+    p, bp = make(35, base_shape="tripod", arm_style=style, lamp_type="desk", has_bulb=True)
+    assert p["base_shape"] == "round"
+    shade = np.array([pc.bounds for pc in bp.parts["shade"].pieces])
+    assert (shade[:, 1, 1].max() - shade[:, 0, 1].min()) / 2 >= 0.75 * 0.5 * p["desk_shade_radius"]
 
 
 @pytest.mark.parametrize("shape", ["round", "square", "domed"])
