@@ -166,5 +166,5 @@ def test_appliance_bodies_wear_real_appliance_finishes(category):
 def test_tv_screen_is_glossy_and_bulbs_warm_white():
     tv = infmob_usd.generate("tv", seed=0, texture_size=16)
     assert tv.materials["display"].family == "screen" and tv.materials["display"].roughness < 0.1
-    lamp = infmob_usd.generate("lamp", seed=0, texture_size=16)
+    lamp = infmob_usd.generate("lamp", seed=0, texture_size=16, has_bulb=True)
     assert lamp.materials["bulb"].variant == "frosted"
