@@ -18,6 +18,15 @@ from infmob_usd.grammar import Layout
 LINER = 0.002  # cavity liner wall
 BEZEL = 0.006  # front bezel thickness
 SKIN = 0.003  # outer skin of a door or fascia; a dark inner frame behind it
+INNER_KG_M2 = 7.0  # kg/m2 of the inner frame behind a door's or fascia's skin: a 0.6 mm steel inner plate
+# (4.7 kg/m2) under a 2 mm moulded choke cover (2.2 kg/m2); massed solid, an over-the-range door's 25 mm rubber
+# frame weighed 3.9 kg and the door 7.0 kg against the 1.5-4 kg of replacement door assemblies
+# (validate/mass_ranges.csv microwave,door)
+
+
+def inner_sheet(density: float) -> float:
+    """The sheet (m) an inner frame of ``density`` kg/m3 is massed with to weigh :data:`INNER_KG_M2`."""
+    return INNER_KG_M2 / density
 CLEAR = 0.0025  # clearance of buttons and dial stems in their panel holes
 BEHIND = 0.008  # buttons and stems reach this far behind the fascia's face
 
@@ -110,12 +119,14 @@ def spindle(center, floor: float) -> g.Piece:
     return g.cylinder([*center, floor], [*center, floor + 0.008], 0.006, "roller", 16)
 
 
-def glazed_door(x_front: float, thickness: float, ys, zs, hole, skin: str, inner: str) -> list[g.Piece]:
-    """A door of a thin outer skin on a dark inner frame, both with a window ``hole`` (y0, z0, y1, z1),
-    and the glass set in it."""
+def glazed_door(x_front: float, thickness: float, ys, zs, hole, skin: str, inner: str, inner_sheet: float
+                ) -> list[g.Piece]:
+    """A door of a thin outer skin on a dark inner frame (massed as ``inner_sheet`` m of sheet), both with a
+    window ``hole`` (y0, z0, y1, z1), and the glass set in it."""
     x0 = x_front - thickness
     return [g.panel([x_front - SKIN, ys[0], zs[0]], [x_front, ys[1], zs[1]], skin, "x", holes=[hole]),
-            g.panel([x0, ys[0], zs[0]], [x_front - SKIN, ys[1], zs[1]], inner, "x", holes=[hole]),
+            g.panel([x0, ys[0], zs[0]], [x_front - SKIN, ys[1], zs[1]], inner, "x", holes=[hole]).replace(
+                sheet=inner_sheet),
             g.box_between([x_front - 0.009, hole[0], hole[1]], [x_front - 0.004, hole[2], hole[3]], "glass")]
 
 

@@ -24,6 +24,7 @@ SWITCH_WALL = 0.0015  # wall of the switch housing
 PITCH = math.pi / 6  # chain pitch joints lift by up to PITCH
 SWIVEL = math.pi / 2  # chain swing arms turn +-SWIVEL
 SOCKET_LEN = 0.03  # socket shell length
+SOCKET_WALL = 0.003  # a hanging socket's moulded shell wall
 TWIN_R = 0.0045  # radius of the twin side bars of a chain segment (9 mm rods, Anglepoise Type 75)
 COLLAR_LEN = 0.022  # collar ring around a swivel pin
 BASE_PER_REACH = 0.33  # an arm lamp's base radius is at least this times its head's reach
@@ -618,8 +619,11 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
     x, y = E[0], E[1]
     z_c = E[2] - hd["d_neck"]  # cap top
     z_cb = z_c - h_cap  # cap bottom = shade top = socket top
+    # the socket: a moulded shell with a 3 mm wall, closed at the cable end (an E27 pendant socket is a
+    # solid bakelite or porcelain part of 30-60 g; a 2 mm open ring left a floor arc lamp's head at 9.7 g)
     head = _cap(r_cap, h_cap, cap_slot, (x, y, z_cb)) + [
-        _ring([(r_so, z_cb - SOCKET_LEN), (r_so, z_cb)], 0.002, "fitting", center=(x, y, 0)),
+        _ring([(r_so, z_cb - SOCKET_LEN), (r_so, z_cb)], SOCKET_WALL, "fitting", center=(x, y, 0)),
+        g.disc((x, y, z_cb - 0.001), r_so - SOCKET_WALL, 0.002, "fitting", 24),
     ]
     w, r_h = q["w_c"], q["r_h"]
     if mount == "yoke":
