@@ -182,11 +182,29 @@ SIZES = {"tilt_turn": dict(width=(0.6, 1.6), height=(0.6, 2.4)), "awning": dict(
 Andersen 400 series): a wider or taller draw is brought into it."""
 
 
+MIN_SASH = 0.25
+"""m: the narrowest sash a frame is divided into. The automatic count (opening / sash_width >= 0.4 m,
+rounded) never goes below 0.26 m; the narrowest stock casements are ~0.4 m overall (Andersen 400 series
+size tables). Fuzz draw 51 (sash_count 4 in a 0.6 m tilt-and-turn frame) made 6 cm sashes narrower than their
+two stiles, whose turns jammed at 0.8 rad."""
+
+
+def max_sashes(p: dict) -> int:
+    """The most sashes the opening holds at MIN_SASH each, with a mullion between two."""
+    fw = min(p["frame_width"], 0.12 * p["width"], 0.12 * p["height"])
+    opening = p["width"] - 2 * fw
+    mw = min(p["mullion_width"], 0.1 * opening)
+    return max(1, int((opening + mw) // (MIN_SASH + mw)))
+
+
 def transom_fits(p: dict) -> dict:
-    """A transom light only on frames taller than 1.1 m (casements and sliders); sizes per design."""
+    """A transom light only on frames taller than 1.1 m (casements and sliders); sizes per design; a sash
+    count that would make sashes narrower than MIN_SASH is lowered to the most that fit."""
     p = dict(p)
     for k, (lo, hi) in SIZES.get(p["style"], {}).items():
         p[k] = float(min(max(p[k], lo), hi))
+    if p["sash_count"]:
+        p["sash_count"] = min(p["sash_count"], max_sashes(p))
     if p["style"] in ("awning", "double_hung"):
         p["has_transom"] = False
     p["has_lever"] = p["has_lever"] and p["style"] in ("casement", "tilt_turn") and p["handle_style"] == "lever"

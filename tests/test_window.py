@@ -326,3 +326,31 @@ def test_single_curtain_panel_draws_to_one_side():
     end = (m @ [0, hi[1] if d.axis[1] > 0 else lo[1], 0, 1])[1]
     rod = max((pc for pc in bp.parts["frame"].pieces if pc.material == "rod"), key=lambda pc: np.ptp(pc.bounds[:, 1]))
     assert rod.bounds[0, 1] < end < rod.bounds[1, 1]
+
+
+@pytest.mark.parametrize("style", ["casement", "tilt_turn", "sliding"])
+@pytest.mark.parametrize("width", [0.6, 1.0, 1.6])
+def test_a_sash_count_too_many_for_the_frame_is_lowered(style, width):
+    """Fuzz draw 51: sash_count 4 in a 0.6 m tilt-and-turn frame gave 6 cm sashes, narrower than their two stiles,
+    whose turns jammed at 0.8 rad. The count is lowered to the most sashes of at least MIN_SASH."""
+    p, bp = make(5, style=style, width=width, sash_count=4, has_shutters=False, has_curtains=False)
+    sashes = [part for part in bp.parts.values() if part.label == "sash"]
+    assert len(sashes) == p["sash_count"] == min(4, win.max_sashes(p)) >= 1
+    for part in sashes:
+        b = np.array([pc.bounds for pc in part.pieces if pc.material != "handle"])
+        assert b[:, 1, 1].max() - b[:, 0, 1].min() > win.MIN_SASH - 0.02  # sliding sashes overlap a little
+
+
+@pytest.mark.sim
+def test_fuzz_draw_51_turns_its_sash_open_in_sapien(tmp_path):
+    pytest.importorskip("sapien")
+    import infmob_usd
+    from infmob_usd.validate.sim import check_sapien
+
+    draw = dict(width=0.6, sash_count=4, frame_depth=0.14, frame_width=0.09, frame_finish="painted",
+                handle_style="lever", handle_finish="plastic", shutter_leaf_width=0.8,
+                curtain_offset=0.10134250746539765, curtain_overhang=0.25, curtain_panels="single", curtain_open=0.45,
+                rod_finish="chrome", style="tilt_turn", has_curtains=False, has_transom=True)
+    obj = infmob_usd.generate("window", seed=784298, texture_size=16, **draw)
+    res = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach"])}
+    assert res["reach"].ok, res["reach"].detail
