@@ -106,7 +106,8 @@ window's lower sash may carry cam sash locks on its meeting rail, their levers t
 PARAMS = (
     Float("width", "overall frame width (Y)", "m", 0.6, 2.5),
     Float("height", "overall frame height, excl. the sill (Z)", "m", 0.6, 2.5),
-    Int("sash_count", "sashes; auto = round(opening width / sash_width), 1..4", "", 1, 4, auto=True),
+    Int("sash_count", "sashes; auto = round(opening width / sash_width), 1..4; lowered to the most of >= 0.25 m "
+        "that fit", "", 1, 4, auto=True),
     Float("sash_width", "target sash width for the automatic sash count", "m", 0.4, 0.85),
     Float("frame_depth", "frame depth (X)", "m", 0.07, 0.14),
     Float("frame_width", "face width of jambs and head (the bottom rail is 1.25x)", "m", 0.04, 0.09),
