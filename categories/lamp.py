@@ -1,7 +1,9 @@
 """Lamp: desk and floor lamps with a weighted base, a telescoping pole and a shaded head.
 
 X is depth (the head reaches out toward +X), Y is width, Z is up. Every lamp has
-a base (a round or square plate, or a domed foot), a lower pole that is a hollow
+a base (a round or square plate, a domed foot, a tripod, or on a desk lamp a desk clamp whose
+spindle turns and rises to grip the desk top: continuous-prismatic; a clamp lamp hangs with its
+upper jaw on a desk top ``DESK_TOP`` up), a lower pole that is a hollow
 tube standing on it and an upper pole that turns in the tube and pulls up out of
 it (revolute-prismatic); a floor lamp's pole may have two stages: a middle tube
 turns and slides in the lower one, the upper pole slides (prismatic) in the middle one. At rest the upper pole is collapsed, resting on its stop
@@ -71,8 +73,9 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import lamps as L
 
 GRAMMAR = Grammar("lamp", {
-    "lamp": Node(label="base", required=("pole", "arm"), optional={"bulb": 0.6, "switch": 0.8}),
+    "lamp": Node(label="base", required=("pole", "arm"), optional={"bulb": 0.6, "switch": 0.8, "screw": 0.15}),
     "pole": Node(label="pole"),
+    "screw": Node(label="screw"),
     "arm": Node(one_of={"straight": 0.35, "curved": 0.2, "chain": 0.45}, choice="arm_style"),
     "straight": Node(required=("head",)),
     "curved": Node(label="arm", required=("head",)),
@@ -88,7 +91,8 @@ GRAMMAR = Grammar("lamp", {
 """A ``straight`` arm is a head on the pole top; ``curved`` an arc the head hangs from; ``chain`` 2-3
 segments like an architect lamp (the segments after the first pitch or swing, drawn per segment).
 Every head carries its shade. A switch is a push button or a rotary dimmer on the base, or the turn knob of the
-socket of an upright head (a table lamp's keyed socket)."""
+socket of an upright head (a table lamp's keyed socket). A desk clamp's spindle (``screw``) grows with a clamp base
+only (the derive rule sets ``has_screw``)."""
 
 PARAMS = (
     Choice("lamp_type", "desk lamp or floor lamp", choices=("desk", "floor"), weights=(0.55, 0.45)),
@@ -97,9 +101,8 @@ PARAMS = (
     Int("arm_segments", "segments of a chain arm", "", 2, 3),
     Float("arm_reach", "horizontal reach of a curved or chain arm, as a fraction of the height",
           "", 0.25, 0.45),
-    Choice("base_shape", "base plate shape, or a tripod of three splayed legs", choices=("round", "square", "domed",
-                                                                                       "tripod"),
-           weights=(0.4, 0.25, 0.2, 0.15)),
+    Choice("base_shape", "base plate shape, a tripod of three splayed legs, or a desk clamp (desk lamps)",
+           choices=("round", "square", "domed", "tripod", "clamp"), weights=(0.35, 0.2, 0.15, 0.15, 0.15)),
     Float("desk_base_radius", "base radius (half side of a square base) of a desk lamp", "m",
           0.065, 0.11),
     Float("floor_base_radius", "base radius (half side of a square base) of a floor lamp", "m",
@@ -130,10 +133,11 @@ PARAMS = (
 MATERIALS = {
     "base": "base_finish", "pole": "pole_finish", "shade": "shade_finish", "fitting": "plastic",
     "bulb": BULB_GLASS, "bulb_cap": "brushed_metal", "switch": "plastic", "weight": "brushed_metal",
+    "clamp": "brushed_metal",
 }
 
 OWNERS = {"base": "lamp", "lower_pole": "pole", "middle_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch",
-          "head": "head", "shade": "shade"}
+          "head": "head", "shade": "shade", "screw": "screw"}
 """Which grown node makes each part of the lamp; the others (the arm's bars and segments) are the arm's."""
 
 
@@ -141,7 +145,9 @@ class LampLayout(Layout):
     def lamp(self, node):
         made = L.blueprint(self.p, self.rng)
         kids = {"pole": node.one("pole"), "arm": node.one("arm"), "bulb": node.one("bulb"),
-                "switch": node.one("switch")}
+                "switch": node.one("switch"), "screw": node.one("screw")}
+        if self.p["base_shape"] == "clamp":  # clamped on a desk edge: the upper jaw's underside is the desk top
+            self.bp.elevation = L.DESK_TOP + float(made.bounds()[0, 2])
         mine = [n for n in made.parts if OWNERS.get(n, "arm") == "lamp"]
         for name in mine:
             self.add(name, made.parts[name].label, made.parts[name].pieces)
@@ -155,7 +161,7 @@ class LampLayout(Layout):
         for name in names:
             self.add(name, made.parts[name].label, made.parts[name].pieces)
 
-    pole = bulb = push_switch = rotary_switch = socket_switch = _parts
+    pole = bulb = push_switch = rotary_switch = socket_switch = screw = _parts
 
     def switch(self, node, made, names):
         self.grow(node.one(node.choice), made=made, names=names)
@@ -181,15 +187,19 @@ def tripod_switch(p: dict) -> dict:
     push switch instead; a tripod has no base plate to carry a base switch (its switch is the socket's, or on
     the cord). A desk lamp on a tripod has a straight pole: its 16 cm hub leaves a 0.35-0.6 m lamp no room
     for a head hanging from an arc or a chain arm (the head shrank to a 7-17 mm shade, its bulb caught in it:
-    fuzz #2009, #4077), so such a lamp gets a round base."""
+    fuzz #2009, #4077), so such a lamp gets a round base. A clamp is a desk lamp's (a floor lamp drawing one
+    gets a round base); it has no base plate either, and always its screw."""
     if p["lamp_type"] == "desk" and p["base_shape"] == "tripod" and p["arm_style"] != "straight":
         p = {**p, "base_shape": "round"}
+    if p["lamp_type"] == "floor" and p["base_shape"] == "clamp":
+        p = {**p, "base_shape": "round"}
+    p = {**p, "has_screw": p["base_shape"] == "clamp"}
     if p["switch_kind"] == "socket_switch" and p["arm_style"] != "straight":
         p = {**p, "switch_kind": "push_switch"}
     base_switch = p["switch_kind"] != "socket_switch"
     if p["lamp_type"] == "desk":
         p = {**p, "pole_stages": 1}
-    return {**p, "has_switch": p["has_switch"] and not (base_switch and p["base_shape"] == "tripod")}
+    return {**p, "has_switch": p["has_switch"] and not (base_switch and p["base_shape"] in ("tripod", "clamp"))}
 
 
 CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS,

@@ -17,12 +17,19 @@ from infmob_usd.materials import FAMILIES, split_spec
 from collide import overlap
 from zoo import make_bp
 
+from infmob_usd.categories.parts import lamps as L
+
 SEEDS = range(10)
-LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch"}
+LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch", "screw"}
 
 
 def make(seed: int, **overrides):
     return make_bp(lamp, "lamp", seed, **overrides)
+
+
+def desk_top(p) -> float:
+    """Where the lamp's base stands: the floor, or the desk top a clamp lamp is clamped to."""
+    return L.DESK_TOP if p["base_shape"] == "clamp" else 0.0
 
 
 @pytest.fixture(scope="module", params=SEEDS)
@@ -82,8 +89,8 @@ def test_height_is_the_sampled_height(lamp_bp):
     p, bp = lamp_bp
     H = p["floor_height"] if p["lamp_type"] == "floor" else p["desk_height"]
     lo, hi = bp.bounds()
-    assert abs(lo[2]) < 1e-9
-    assert hi[2] == pytest.approx(H, abs=1e-6)
+    assert lo[2] == pytest.approx(bp.elevation, abs=1e-9)
+    assert hi[2] == pytest.approx(desk_top(p) + H, abs=1e-6)
 
 
 def test_materials_are_declared_and_fit_their_parts(lamp_bp):
@@ -167,7 +174,7 @@ def test_pole_extended_makes_the_lamp_taller(lamp_bp):
     up = bp.poses({("upper_pole", 0): slide.upper})
     top = max((pc.vertices @ up[n][:3, :3].T + up[n][:3, 3])[:, 2].max()
               for n, part in bp.parts.items() for pc in part.pieces)
-    assert top == pytest.approx(H + slide.upper, abs=1e-6)
+    assert top == pytest.approx(desk_top(p) + H + slide.upper, abs=1e-6)
 
 
 def test_head_turns_or_tilts(lamp_bp):
@@ -339,11 +346,14 @@ def test_gravity_holds_every_joint_at_rest(seed):
 
 
 def test_stands_on_its_base(lamp_bp):
-    """Only the base touches the ground, and the centre of mass lies over it."""
-    _, bp = lamp_bp
+    """Only the base touches the ground, and the centre of mass lies over it; a clamp lamp's clamp holds it on the
+    desk top, which nothing else reaches below."""
+    p, bp = lamp_bp
     for name, part in bp.parts.items():
-        if name != "base":
-            assert min(pc.bounds[0, 2] for pc in part.pieces) > 1e-3, name
+        if name not in ("base", "screw"):
+            assert min(pc.bounds[0, 2] for pc in part.pieces) > desk_top(p) + 1e-3, name
+    if p["base_shape"] == "clamp":
+        return
     mass, moment = 0.0, np.zeros(3)
     for part in bp.parts.values():
         m, com, _ = inertial((pc, FAMILIES[split_spec(bp.materials[pc.material])[0]].density) for pc in part.pieces)
@@ -433,3 +443,44 @@ def test_rotary_dimmer_turns_on_the_base(shape):
         for other in bp.parts:
             if other != "switch":
                 assert overlap(bp.parts["switch"], m, bp.parts[other], np.eye(4)) < 1e-9, (other, q)
+
+
+@pytest.mark.parametrize("style", ["straight", "curved", "chain"])
+def test_clamp_lamp_hangs_on_a_desk_edge(style):
+    """A desk clamp (architect lamps): the upper jaw lies on the desk top, DESK_TOP up; the spindle turns and
+    rises until its pad is a gap under the upper jaw, its T-bar then still clear of the lower jaw; no base
+    switch (no base plate); a floor lamp drawing a clamp stands on a round base."""
+    p, bp = make(5, base_shape="clamp", lamp_type="desk", arm_style=style, has_switch=True,
+                 switch_kind="rotary_switch")
+    assert p["base_shape"] == "clamp" and p["has_screw"] and "switch" not in bp.parts
+    base = np.array([pc.bounds for pc in bp.parts["base"].pieces])
+    jaw = bp.parts["base"].pieces[0].bounds
+    assert jaw[0, 2] == pytest.approx(L.DESK_TOP, abs=1e-9)  # the upper jaw's underside on the desk top
+    assert base[:, 0, 2].min() < L.DESK_TOP - L.CLAMP["throat"]
+    j = next(j for j in bp.joints if j.child == "screw")
+    assert j.kind == "continuous_prismatic" and j.parent == "base"
+    slide = j.dofs[0]
+    assert slide.lower == 0 and slide.upper > 0.8 * L.CLAMP["throat"]
+    rest = bp.poses()
+    assert not overlaps(bp, ["screw"], rest, ["base"], rest)
+    for q in ({("screw", 0): slide.upper}, {("screw", 0): slide.upper, ("screw", 1): 1.3}):
+        now = bp.poses(q)
+        assert not overlaps(bp, ["screw"], now, ["base"], rest), q
+        pad_top = max((pc.vertices @ now["screw"][:3, :3].T + now["screw"][:3, 3])[:, 2].max()
+                      for pc in bp.parts["screw"].pieces)
+        assert L.DESK_TOP - 0.004 < pad_top < L.DESK_TOP  # the pad meets the desk's underside
+    p, bp = make(5, base_shape="clamp", lamp_type="floor", arm_style=style)
+    assert p["base_shape"] == "round" and "screw" not in bp.parts and bp.elevation == 0
+
+
+@pytest.mark.sim
+def test_clamp_lamp_screw_and_arm_reach_in_sapien(tmp_path):
+    pytest.importorskip("sapien")
+    import infmob_usd
+    from infmob_usd.validate.sim import check_sapien
+
+    obj = infmob_usd.generate("lamp", seed=5, texture_size=16, base_shape="clamp", lamp_type="desk",
+                              arm_style="chain")
+    res = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach", "rest"])}
+    assert res["reach"].ok, res["reach"].detail
+    assert res["rest"].ok, res["rest"].detail

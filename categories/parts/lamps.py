@@ -29,6 +29,14 @@ TWIN_R = 0.0045  # radius of the twin side bars of a chain segment (9 mm rods, A
 COLLAR_LEN = 0.022  # collar ring around a swivel pin
 BASE_PER_REACH = 0.33  # an arm lamp's base radius is at least this times its head's reach
 TRIPOD_HUB = 0.16  # a tripod's hub top (where the pole starts) above the floor
+CLAMP = dict(throat=0.06, jaw=0.011, spine=0.012, back=0.035, front=0.05, screw_x=0.018, rod=0.005, pad=0.012,
+             pad_t=0.004, bar=0.0045, bar_len=0.06)
+"""A desk clamp (architect lamps: Anglepoise, IKEA TERTIAL with clamp): a C of cast steel whose jaws take desk tops
+up to ~55-60 mm; the upper jaw carries the pole, the spine stands behind the pole at the desk edge, a spindle
+with a pad and a T-bar handle comes up through the lower jaw. m: throat, jaw and spine thickness, how far the
+jaws reach behind (back) and in front of (front) the pole, the spindle's x, rod radius, pad radius and
+thickness, T-bar radius and length."""
+DESK_TOP = 0.74  # m: a clamp lamp hangs on a desk 0.74 m high (desk heights 0.72-0.76 m, EN 527-1 / BIFMA)
 TRIPOD_SPAN = 1.8  # a tripod's feet stand on a circle this many base radii wide (Hay / IKEA tripod lamps:
 #                    legs spread 0.25-0.4 m from the pole)
 
@@ -88,7 +96,7 @@ def _design(p: dict, d: dict, R: float) -> dict:
     r_mid = r_up + GAP + _tube_wall(r_up) if floor and p.get("pole_stages", 1) == 2 else 0.0
     r_lo = (r_mid or r_up) + GAP + _tube_wall(r_mid or r_up)
     t = p["base_thickness"]
-    z_b = {"domed": t + 0.22 * R, "tripod": TRIPOD_HUB}.get(p["base_shape"], t)
+    z_b = {"domed": t + 0.22 * R, "tripod": TRIPOD_HUB, "clamp": CLAMP["jaw"]}.get(p["base_shape"], t)
     q = dict(floor=floor, style=style, H=H, R=R, rs=rs, z_b=z_b, r_up=r_up, r_lo=r_lo, r_mid=r_mid,
              spokes=d["spokes"], shade_drop=d["shade_drop"], switch_angle=d["switch_angle"],
              curve_end=curve_end, reach_x=0.0)
@@ -321,6 +329,9 @@ def _base(bp: Blueprint, p: dict, q: dict) -> None:
     if shape == "tripod":
         bp.add("base", "base", _tripod(q["r_lo"], R, q["z_b"]))
         return
+    if shape == "clamp":
+        _clamp(bp, q["r_lo"])
+        return
     if shape == "square":
         a = 0.9 * R
         piece = g.box_between((-a, -a, 0), (a, a, t), "base", bevel=min(0.004, t / 4))
@@ -335,6 +346,36 @@ def _base(bp: Blueprint, p: dict, q: dict) -> None:
         prof.append((0, z_b))
         piece = g.revolve(prof, "base", sections=48)
     bp.add("base", "base", [piece, _weight(shape, R, t, prof if shape == "domed" else None)])
+
+
+def _clamp(bp: Blueprint, r_lo: float) -> None:
+    """A desk clamp under the pole (the desk top is z = 0, the desk edge the spine's inner face): the upper jaw
+    carries the pole's foot, the spine runs down behind it, the lower jaw has a hole the spindle turns in. The
+    spindle (rod, pad on top, T-bar below) turns freely and rises until its pad meets the upper jaw
+    (continuous-prismatic, like a screw); at rest it hangs on its lower stop, the pad on the lower jaw."""
+    c = CLAMP
+    tj, th = c["jaw"], c["throat"]
+    w = max(0.045, 2 * (r_lo + 0.012)) / 2  # the upper jaw is wider than the pole's foot ring
+    x0, x1 = -c["back"], max(c["front"], r_lo + 0.012)
+    xs = c["screw_x"]
+    hole = c["rod"] + GAP
+    z_lo = -th - tj  # the lower jaw's underside
+    pieces = [
+        g.box_between((x0, -w, 0.0), (x1, w, tj), "clamp", bevel=0.002),  # upper jaw (on the desk)
+        g.box_between((x0, -w, z_lo), (x0 + c["spine"], w, 0.0), "clamp", bevel=0.002),  # spine
+        g.panel([x0 + c["spine"], -w, z_lo], [x1, w, -th], "clamp", "z",
+                holes=[(xs - hole, -hole, xs + hole, hole)]),  # lower jaw, the spindle's hole through it
+    ]
+    bp.add("base", "base", [pc.replace(wall=0.0) for pc in pieces])  # cast: solid
+    travel = th - 2 * GAP - c["pad_t"]  # the pad rises to GAP under the upper jaw
+    z_bar = z_lo - GAP - travel - c["bar"]  # the T-bar clears the lower jaw with the pad at the top
+    screw = [
+        g.cylinder((xs, 0, z_bar - c["bar"]), (xs, 0, -th + GAP), c["rod"], "clamp", 16),
+        g.cylinder((xs, 0, -th + GAP), (xs, 0, -th + GAP + c["pad_t"]), c["pad"], "fitting", 24),
+        g.cylinder((xs, -c["bar_len"] / 2, z_bar), (xs, c["bar_len"] / 2, z_bar), c["bar"], "clamp", 16),
+    ]
+    bp.add("screw", "screw", [pc.replace(wall=0.0) for pc in screw])
+    bp.join(J.continuous_prismatic("base", "screw", (xs, 0, -th + GAP), (0, 0, 1), (0.0, travel), role="lid"))
 
 
 def _tripod(r_lo: float, R: float, z_hub: float) -> list[g.Piece]:
