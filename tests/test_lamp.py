@@ -484,3 +484,22 @@ def test_clamp_lamp_screw_and_arm_reach_in_sapien(tmp_path):
     res = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach", "rest"])}
     assert res["reach"].ok, res["reach"].detail
     assert res["rest"].ok, res["rest"].detail
+
+
+@pytest.mark.parametrize("seed,over", [
+    (598892, dict(desk_shade_radius=0.13, lamp_type="desk", desk_height=0.352, base_shape="tripod",
+                  arm_style="straight", switch_kind="socket_switch", has_bulb=False)),
+    (938943, dict(desk_height=0.35, pole_radius=0.0125, base_shape="tripod", arm_style="straight", has_bulb=False)),
+    (590166, dict(desk_height=0.35, lamp_type="desk", base_shape="tripod", arm_style="straight", pole_radius=0.0075,
+                  lower_pole_fraction=0.55, desk_shade_radius=0.13)),
+])
+def test_a_short_desk_lamp_on_a_tripod_keeps_a_pole_under_its_head(seed, over):
+    """Fuzz (lamp, seed 7) #243, #247, #382: a 0.35 m desk lamp on a 0.16 m tripod hub under a 13 cm shade had
+    29-43 mm of pole and its head's collar sat in the lower pole's. The shade shrinks until MIN_POLE is left."""
+    p, bp = make(seed, **over)
+    assert p["base_shape"] == "tripod" and p["arm_style"] == "straight"
+    lo = min(pc.bounds[0, 2] for pc in bp.parts["lower_pole"].pieces)
+    hi = max(pc.bounds[1, 2] for pc in bp.parts["upper_pole"].pieces)
+    assert hi - lo >= L.MIN_POLE - 1e-9
+    rest = bp.poses()
+    assert not overlaps(bp, ["head"], rest, ["lower_pole", "base"], rest)
