@@ -334,7 +334,7 @@ class MicrowaveLayout(A.PanelNodes):
         m_free = max(1.5 * m, HANDLE_ROOM.get(opener, 0.0))
         hole = (ys[0] + m, zs[0] + 1.15 * m, ys[1] - m_free, zs[1] - m)
         self.add("door", "door", A.glazed_door(x_front, p["door_thickness"], ys, zs, hole, skin, inner,
-                                                   self._inner_sheet(inner)))
+                                                   A.inner_sheet(MATERIALS[inner])))
         # hinged on its front face at the left edge: about -Z it swings out (+X) and to the left
         self.hinge("body", "door", Frame.at((x_front, ys[0], zs[0]), z=(0, 0, -1)), upper=DOOR_OPENS)
         at = Frame.at((x_front, ys[1], (zs[0] + zs[1]) / 2), z=(1, 0, 0), x=(0, 0, 1))
@@ -342,10 +342,6 @@ class MicrowaveLayout(A.PanelNodes):
             self.bar(node, at=at, length=p["handle_length"] * (zs[1] - zs[0]))
         elif opener != "release_button":
             self.grow(node.one(opener), at=at, length=p["handle_length"] * (zs[1] - zs[0]))
-
-    def _inner_sheet(self, slot: str) -> float:
-        """Sheet of the door's or fascia's inner frame (``door_inner`` rubber or ``door`` plastic: fixed families)."""
-        return A.inner_sheet(FAMILIES[MATERIALS[slot]].density)
 
     def bar(self, node, at, length):
         size = hardware.HandleSize(**PULL)
@@ -465,7 +461,7 @@ class MicrowaveLayout(A.PanelNodes):
         self.add("control_panel", "control_panel", [
             g.panel([xp - A.SKIN, ya, zs[0]], [xp, yb, zs[1]], skin, "x", holes=panel.holes),
             g.panel([xf, ya, zs[0]], [xp - A.SKIN, yb, zs[1]], inner, "x", holes=panel.holes).replace(
-                sheet=self._inner_sheet(inner)), *panel.decor])
+                sheet=A.inner_sheet(MATERIALS[inner])), *panel.decor])
         self.fix("body", "control_panel")
         if buttons:
             self.grow(buttons, made=[b for b in panel.buttons if b[-1] is None])

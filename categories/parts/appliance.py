@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame, polar
 from infmob_usd.grammar import Layout
+from infmob_usd.materials import FAMILIES
 
 LINER = 0.002  # cavity liner wall
 BEZEL = 0.006  # front bezel thickness
@@ -22,13 +23,13 @@ INNER_KG_M2 = 7.0  # kg/m2 of the inner frame behind a door's or fascia's skin: 
 # (4.7 kg/m2) under a 2 mm moulded choke cover (2.2 kg/m2); massed solid, an over-the-range door's 25 mm rubber
 # frame weighed 3.9 kg and the door 7.0 kg against the 1.5-4 kg of replacement door assemblies
 # (validate/mass_ranges.csv microwave,door)
-
-
-def inner_sheet(density: float) -> float:
-    """The sheet (m) an inner frame of ``density`` kg/m3 is massed with to weigh :data:`INNER_KG_M2`."""
-    return INNER_KG_M2 / density
 CLEAR = 0.0025  # clearance of buttons and dial stems in their panel holes
 BEHIND = 0.008  # buttons and stems reach this far behind the fascia's face
+
+
+def inner_sheet(family: str) -> float:
+    """The sheet (m) an inner frame of material ``family`` is massed with to weigh :data:`INNER_KG_M2`."""
+    return INNER_KG_M2 / FAMILIES[family].density
 
 
 def machine_can(x: float, z0: float, h: float, r: float, slot: str, kg: float, name: str) -> g.Piece:
@@ -109,8 +110,8 @@ def stand_rack(center, z0: float, half: float, height: float) -> list[g.Piece]:
     pieces += [g.cylinder(a, b, r, "rack", 8) for a, b in (([x0, y0, zc], [x1, y0, zc]), ([x0, y1, zc], [x1, y1, zc]),
                                                             ([x0, y0, zc], [x0, y1, zc]), ([x1, y0, zc], [x1, y1, zc]))]
     n = max(3, int((y1 - y0) / 0.03))
-    pieces += [g.cylinder([x0 + r, y0 + (y1 - y0) * k / n, zc], [x1 - r, y0 + (y1 - y0) * k / n, zc], 0.7 * r, "rack", 6)
-               for k in range(1, n)]
+    ys = [y0 + (y1 - y0) * k / n for k in range(1, n)]
+    pieces += [g.cylinder([x0 + r, y, zc], [x1 - r, y, zc], 0.7 * r, "rack", 6) for y in ys]
     return pieces
 
 
@@ -119,14 +120,14 @@ def spindle(center, floor: float) -> g.Piece:
     return g.cylinder([*center, floor], [*center, floor + 0.008], 0.006, "roller", 16)
 
 
-def glazed_door(x_front: float, thickness: float, ys, zs, hole, skin: str, inner: str, inner_sheet: float
+def glazed_door(x_front: float, thickness: float, ys, zs, hole, skin: str, inner: str, frame_sheet: float
                 ) -> list[g.Piece]:
-    """A door of a thin outer skin on a dark inner frame (massed as ``inner_sheet`` m of sheet), both with a
-    window ``hole`` (y0, z0, y1, z1), and the glass set in it."""
+    """A door of a thin outer skin on a dark inner frame (massed as ``frame_sheet`` m of sheet, see
+    :func:`inner_sheet`), both with a window ``hole`` (y0, z0, y1, z1), and the glass set in it."""
     x0 = x_front - thickness
     return [g.panel([x_front - SKIN, ys[0], zs[0]], [x_front, ys[1], zs[1]], skin, "x", holes=[hole]),
             g.panel([x0, ys[0], zs[0]], [x_front - SKIN, ys[1], zs[1]], inner, "x", holes=[hole]).replace(
-                sheet=inner_sheet),
+                sheet=frame_sheet),
             g.box_between([x_front - 0.009, hole[0], hole[1]], [x_front - 0.004, hole[2], hole[3]], "glass")]
 
 
