@@ -128,9 +128,9 @@ LETTER_LOW = 0.72  # a letter plate's centre at least this high (BS EN 13724: op
 LETTER_BELOW = 0.25  # and this far below the handle axis
 LETTER_FLAP_OPENS = 1.4  # the flap swings in to about 80 degrees
 VIEWER_HEIGHT = 1.5  # door viewers are fitted at 1.4-1.6 m (Yale, Brinks fitting instructions)
-VIEWER_SWING = math.pi / 2
+VIEWER_SWING = math.pi / 2  # the privacy cover swings a quarter turn aside
 DUTCH_CUT = 1.07  # a Dutch door's halves meet 1.0-1.2 m above the floor, above the lockset (Simpson, JELD-WEN)
-DUTCH_KNOB = 0.12  # the top half's knob this far above the cut  # the privacy cover swings a quarter turn aside
+DUTCH_KNOB = 0.12  # the top half's knob this far above the cut
 
 
 def _crosses(piece, box) -> bool:

@@ -6,8 +6,9 @@ spindle turns and rises to grip the desk top: continuous-prismatic; a clamp lamp
 upper jaw on a desk top ``DESK_TOP`` up), a lower pole that is a hollow
 tube standing on it and an upper pole that turns in the tube and pulls up out of
 it (revolute-prismatic); a floor lamp's pole may have two stages: a middle tube
-turns and slides in the lower one, the upper pole slides (prismatic) in the middle one. At rest the upper pole is collapsed, resting on its stop
-(slide 0), and extends upward by a quarter of its visible length. On top of the
+turns and slides in the lower one, the upper pole slides (prismatic) in the middle one. At rest
+the upper pole is collapsed, resting on its stop (slide 0), and extends upward by a quarter of its
+visible length. On top of the
 upper pole, ``arm_style`` decides:
 
 * ``straight``: the head sits on the pole top (a table or classic floor lamp):
@@ -136,8 +137,8 @@ MATERIALS = {
     "clamp": "brushed_metal",
 }
 
-OWNERS = {"base": "lamp", "lower_pole": "pole", "middle_pole": "pole", "upper_pole": "pole", "bulb": "bulb", "switch": "switch",
-          "head": "head", "shade": "shade", "screw": "screw"}
+OWNERS = {"base": "lamp", "lower_pole": "pole", "middle_pole": "pole", "upper_pole": "pole", "bulb": "bulb",
+          "switch": "switch", "head": "head", "shade": "shade", "screw": "screw"}
 """Which grown node makes each part of the lamp; the others (the arm's bars and segments) are the arm's."""
 
 
@@ -182,7 +183,7 @@ class LampLayout(Layout):
     shade = _parts
 
 
-def tripod_switch(p: dict) -> dict:
+def fit_parts(p: dict) -> dict:
     """A turn-knob socket is an upright head's (a hanging head's socket is inside its shade): another lamp draws a
     push switch instead; a tripod has no base plate to carry a base switch (its switch is the socket's, or on
     the cord). A desk lamp on a tripod has a straight pole: its 16 cm hub leaves a 0.35-0.6 m lamp no room
@@ -203,4 +204,4 @@ def tripod_switch(p: dict) -> dict:
 
 
 CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS,
-                    derive=tripod_switch)
+                    derive=fit_parts)

@@ -8,10 +8,11 @@ its top back by up to ``tilt``; nothing enters the stand or the ground. Stands: 
 (a base plate and a neck, or with ``has_height_adjust`` a post that swivels and slides up in a
 sleeve; without it the neck swivels on its base, +-``swivel``), ``two_legs`` (two feet with uprights and a
 crossbar), or ``wall_mount`` (a wall plate and 0-3 arm links turning about Z: 0 is a tilting mount, the fork
-on a bracket as far off the wall as the full tilt needs; hung with the screen's centre 1.07 m up; the screen kept 1 cm off the wall in every combination,
-``displays.wall_mount_ranges``). A stand's connector tilts or is ``rigid`` (feet and swivel-only pedestals);
-a wall mount always tilts. An optional pop-up camera rises out of a pocket behind the top edge. The panel is ``flat`` or ``curved`` (``panel_shape``: facets along an
-arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
+on a bracket as far off the wall as the full tilt needs; hung with the screen's centre 1.07 m up; the
+screen kept 1 cm off the wall in every combination, ``displays.wall_mount_ranges``). A stand's connector
+tilts or is ``rigid`` (feet and swivel-only pedestals); a wall mount always tilts. An optional pop-up
+camera rises out of a pocket behind the top edge. The panel is ``flat`` or ``curved`` (``panel_shape``:
+facets along an arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
 Optional push buttons on the right side rim or the bezel's bottom band.
 Parts: ``categories/parts/displays.py``.
 """
@@ -191,7 +192,8 @@ class TVLayout(Layout):
     curved = flat  # ``displays.curved_screen``: facets along an arc
 
     def connector(self, node, pivot, r_k, xs2, L_k, vesa, hump):
-        """The VESA plate and neck plates; the mount (``tilt`` or ``rigid``) adds the barrel in the fork."""
+        """The VESA plate and neck plates; the mount (``tilt`` or ``rigid``) adds the barrel in the fork (a grown
+        node must make a piece of its own: the grammar's check)."""
         barrel, *rest = S.connector(pivot, r_k, xs2, L_k, vesa, hump)
         self.add("connector", "connector", rest)
         self.barrel = barrel

@@ -51,9 +51,14 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import windows as P
 
 
+def jamb_width(p) -> float:
+    """The jambs' and head's face width: ``frame_width``, at most 12 % of the frame's width and height."""
+    return min(p["frame_width"], 0.12 * p["width"], 0.12 * p["height"])
+
+
 def sashes(p, rng) -> int:
     """sash_count, or round(opening width / sash_width), 1..4"""
-    opening = p["width"] - 2 * min(p["frame_width"], 0.12 * p["width"], 0.12 * p["height"])
+    opening = p["width"] - 2 * jamb_width(p)
     return p["sash_count"] or int(np.clip(round(opening / p["sash_width"]), 1, 4))
 
 
@@ -192,13 +197,12 @@ two stiles, whose turns jammed at 0.8 rad."""
 
 def max_sashes(p: dict) -> int:
     """The most sashes the opening holds at MIN_SASH each, with a mullion between two."""
-    fw = min(p["frame_width"], 0.12 * p["width"], 0.12 * p["height"])
-    opening = p["width"] - 2 * fw
+    opening = p["width"] - 2 * jamb_width(p)
     mw = min(p["mullion_width"], 0.1 * opening)
     return max(1, int((opening + mw) // (MIN_SASH + mw)))
 
 
-def transom_fits(p: dict) -> dict:
+def fit_frame(p: dict) -> dict:
     """A transom light only on frames taller than 1.1 m (casements and sliders); sizes per design; a sash
     count that would make sashes narrower than MIN_SASH is lowered to the most that fit."""
     p = dict(p)
@@ -217,7 +221,7 @@ class WindowLayout(Layout):
         p = self.p
         W, H, fd = p["width"], p["height"], p["frame_depth"]
         z0 = p["sill_thickness"] if node.one("sill") else 0.0
-        fw = min(p["frame_width"], 0.12 * W, 0.12 * H)
+        fw = jamb_width(p)
         yi0, yi1 = -W / 2 + fw, W / 2 - fw  # opening
         zi0, zi1 = z0 + BOTTOM_RAIL * fw, z0 + H - fw
         mw = min(p["mullion_width"], 0.1 * (yi1 - yi0))
@@ -369,4 +373,4 @@ class WindowLayout(Layout):
 
 
 CATEGORY = Category("window", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, WindowLayout, MATERIALS,
-                    derive=transom_fits)
+                    derive=fit_frame)

@@ -11,13 +11,12 @@ from scipy.spatial import ConvexHull
 
 from infmob_usd.blueprint import descendants, dof_motion
 from infmob_usd.categories import lamp
+from infmob_usd.categories.parts import lamps as L
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES, split_spec
 
 from collide import overlap
 from zoo import make_bp
-
-from infmob_usd.categories.parts import lamps as L
 
 SEEDS = range(10)
 LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch", "screw"}

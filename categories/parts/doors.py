@@ -71,12 +71,12 @@ pine stile-and-rail frame over a honeycomb core), massed as a 6 mm shell: a 0.9 
 
 
 def leaf(xs, ys, zs, handle_z: float, style: str, glazing: str, stile: float, count: int,
-         wall: float = 0.0) -> list[g.Piece]:
+         wall: float = LEAF_WALL) -> list[g.Piece]:
     """A plain slab, or a stile-and-rail frame with ``count`` recessed or raised panels or glass lites
     in its holes (glazing: ``none``, the ``top`` row, or ``full``); the wooden pieces are massed as a shell
     ``wall`` thick (default :data:`LEAF_WALL`: hollow-core), the glass solid."""
     pieces = _leaf(xs, ys, zs, handle_z, style, glazing, stile, count)
-    return [p.replace(wall=wall or LEAF_WALL) if p.material == "leaf" else p for p in pieces]
+    return [p.replace(wall=wall) if p.material == "leaf" else p for p in pieces]
 
 
 EXTERIOR_WALL = 0.014
