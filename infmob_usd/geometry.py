@@ -420,25 +420,31 @@ def shell_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np
     return area, centroid + ref, inertia
 
 
-def _solid_meshes(piece: Piece) -> list[tuple[np.ndarray, np.ndarray]]:
-    """The closed meshes a piece's mass comes from: its mesh if closed (with volume), else its hulls."""
-    if is_closed(piece.faces) and mass_properties(piece.vertices, piece.faces)[0] > 1e-12:
-        return [(piece.vertices, piece.faces)]
-    return [(v, f) for v, f in piece.hulls()]
+def _solid_parts(piece: Piece) -> tuple[tuple, tuple]:
+    """``(meshes, properties)``: the closed meshes a piece's mass comes from (its mesh if closed, with
+    volume, else its hulls) and their :func:`mass_properties`; computed once per piece (the piece is
+    immutable, so the cache never goes stale)."""
+    memo = piece.__dict__.get("_solids")
+    if memo is None:
+        if is_closed(piece.faces):
+            props = mass_properties(piece.vertices, piece.faces)
+            if props[0] > 1e-12:
+                memo = (((piece.vertices, piece.faces),), (props,))
+        if memo is None:
+            meshes = tuple(piece.hulls())
+            memo = (meshes, tuple(mass_properties(v, f) for v, f in meshes))
+        object.__setattr__(piece, "_solids", memo)  # a cache of a pure function of the value
+    return memo
 
 
 def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
     """Mass properties of the solids of a piece: its mesh if closed, else its convex hulls."""
-    if is_closed(piece.faces):
-        props = mass_properties(piece.vertices, piece.faces)
-        if props[0] > 1e-12:
-            return [props]
-    return [mass_properties(v, f) for v, f in piece.hulls()]
+    return list(_solid_parts(piece)[1])
 
 
 def shells(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray]]:
     """:func:`shell_properties` of the same closed meshes :func:`solids` measures."""
-    return [shell_properties(v, f) for v, f in _solid_meshes(piece)]
+    return [shell_properties(v, f) for v, f in _solid_parts(piece)[0]]
 
 
 # ---------------------------------------------------------------------------
