@@ -91,7 +91,8 @@ PARAMS = (
     Float("top_thickness", "thickness of the top", "m", 0.02, 0.045),
     Float("bevel", "bevel of the top's edges, as a fraction of its thickness", "", 0.1, 0.4),
     Int("leg_count", "legs under a round top (a square top has 4); auto = drawn 3 or 4", "", 3, 4, auto=True),
-    Choice("leg_style", "shape of fixed legs", choices=("turned", "tapered", "square"), weights=(0.35, 0.4, 0.25)),
+    Choice("leg_style", "shape of fixed legs (hairpin and tube legs are steel, in metal_finish)",
+           choices=("turned", "tapered", "square", "hairpin", "tube"), weights=(0.28, 0.32, 0.2, 0.12, 0.08)),
     Float("leg_radius", "leg radius (half side of a square leg) at its top", "m", 0.015, 0.03),
     Float("leg_inset", "distance of the leg centres in from the top's edge", "m", 0.05, 0.12),
     Float("apron_height", "height of the apron under the top", "m", 0.05, 0.11),
@@ -185,7 +186,7 @@ class TableLayout(Layout):
         za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
-            body = apron + [pc.transformed(f.matrix) for f in frames for pc in T.leg(p["leg_style"], rl, za1, "frame")]
+            body = apron + [pc.transformed(f.matrix) for f in frames for pc in self._leg(p["leg_style"], rl, za1)]
             self.add("body", "body", body)
             if node.one("shelf"):
                 self.grow(node.one("shelf"), inset=inset, r_leg=0.8 * rl, z=min(p["shelf_height"] * H, za0 - 0.06))
@@ -247,6 +248,15 @@ class TableLayout(Layout):
             "body", "top", at.origin, at.z, (-p["stand_turn"], p["stand_turn"]), at.z, (0.0, travel),
             role="telescope")}
 
+    @staticmethod
+    def _leg(style, radius, height):
+        """One fixed leg: wooden or painted in the frame's finish, or a steel hairpin or tube leg."""
+        if style == "hairpin":
+            return T.hairpin_leg(radius, height, "metal")
+        if style == "tube":
+            return T.tube_leg(radius, height, "metal", "foot")
+        return T.leg(style, radius, height, "frame")
+
     # -- storage table with drawers --------------------------------------------------------------
     def drawers(self, node):
         p = self.p
@@ -276,9 +286,8 @@ class TableLayout(Layout):
         casters = node.one("casters")
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
         z_leg = c.stem_top + 0.001 + 0.008 if c else 0.0  # legs on a caster's top plate
-        style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
-        legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames for pc in T.leg(style, lw / 2, za1 - z_leg,
-                                                                                          "frame")]
+        style = "square" if p["leg_style"] in ("turned", "hairpin") or c else p["leg_style"]
+        legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames for pc in self._leg(style, lw / 2, za1 - z_leg)]
         if c:
             legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
                                    f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]

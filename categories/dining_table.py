@@ -113,7 +113,7 @@ PARAMS = (
     Int("leaf_count", "extension leaves stored in the apron, stacked", "", 1, 2),
     # lazy susans on dining tables: 50-70 cm turntables on a ball-bearing ring (round banquet tables, family tables)
     Float("lazy_susan_radius", "turntable radius as a fraction of the table width (fixed top)", "", 0.22, 0.3),
-    Choice("handle_style", "drawer handle", choices=("knob", "bar"), weights=(0.55, 0.45)),
+    Choice("handle_style", "drawer handle", choices=("knob", "bar", "bow"), weights=(0.45, 0.35, 0.2)),
     Float("leg_travel", "how far an adjustable inner leg slides up", "m", 0.03, 0.1),
     # rolling kitchen / farmhouse tables on four locking plate casters (e.g. John Boos work tables, industrial
     # rolling dining tables): 50-75 mm wheels, twin-wheel or single-wheel
@@ -426,7 +426,7 @@ class TableLayout(Layout):
         if self.p["handle_style"] == "knob":
             handle = hardware.knob_handle(min(0.016, 0.3 * h), 0.025, "handle")
         else:
-            handle = hardware.bar_handle(min(0.16, 0.5 * w), "handle")
+            handle = hardware.HANDLES[self.p["handle_style"]](min(0.16, 0.5 * w), "handle")
         handle = handle.attached("mount", to=box.anchor("handle"))
         drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=PULL * depth)

@@ -902,6 +902,63 @@ def cylinder(p0: Sequence[float], p1: Sequence[float], radius: float, material: 
     return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)  # a closed convex mesh is its own hull
 
 
+def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections: int = 12,
+         name: str = "") -> Piece:
+    """A solid round rod of ``radius`` swept along the polyline ``path`` (``(k >= 2, 3)``): a bent wire, a
+    bow handle, a hairpin leg. Each ring is square to the path's mean tangent at its point (rings turned
+    with the path by parallel transport, so the rod never twists); the ends are capped flat. Each segment
+    between two rings is one convex collision piece (a short, possibly slanted, cylinder)."""
+    pts = np.asarray(path, float)
+    if pts.ndim != 2 or pts.shape[1] != 3 or len(pts) < 2 or not np.isfinite(pts).all() or radius <= 0:
+        raise GeometryError(f"tube needs a (k>=2, 3) finite path and radius > 0, got {pts.shape}, r={radius}")
+    seg = np.diff(pts, axis=0)
+    length = np.linalg.norm(seg, axis=1)
+    if (length < 1e-9).any():
+        raise GeometryError("tube path has two equal consecutive points")
+    seg = seg / length[:, None]
+    tangent = np.vstack([seg[:1], seg[:-1] + seg[1:], seg[-1:]])
+    tangent /= np.maximum(np.linalg.norm(tangent, axis=1, keepdims=True), 1e-12)
+    # a first normal across the first tangent, then carried along (parallel transport)
+    ref = np.eye(3)[int(np.argmin(np.abs(tangent[0])))]
+    n = ref - tangent[0] * float(ref @ tangent[0])
+    n /= np.linalg.norm(n)
+    th = 2 * np.pi * np.arange(sections) / sections
+    rings = []
+    for k, t in enumerate(tangent):
+        if k:
+            n = n - t * float(n @ t)
+            n /= np.linalg.norm(n)
+        b = cross_rows(t, n)
+        ring = radius * (np.cos(th)[:, None] * b + np.sin(th)[:, None] * n)
+        if 0 < k < len(pts) - 1:  # a bend: the ring is a mitre, stretched in the bend's plane
+            turn = seg[k] - seg[k - 1]
+            turn -= t * float(turn @ t)
+            size = float(np.linalg.norm(turn))
+            if size > 1e-9:
+                u = turn / size
+                cos_half = math.cos(0.5 * math.acos(float(np.clip(seg[k - 1] @ seg[k], -1.0, 1.0))))
+                ring = ring + np.outer(ring @ u, u) * (1.0 / max(cos_half, 0.2) - 1.0)
+        rings.append(pts[k] + ring)
+    verts = np.vstack(rings + [pts[:1], pts[-1:]])
+    m = sections
+    faces = []
+    for k in range(len(pts) - 1):
+        a0, a1 = k * m, (k + 1) * m
+        for i in range(m):
+            j = (i + 1) % m
+            faces += [(a0 + i, a0 + j, a1 + j), (a0 + i, a1 + j, a1 + i)]
+    c0, c1 = len(pts) * m, len(pts) * m + 1
+    last = (len(pts) - 1) * m
+    for i in range(m):
+        j = (i + 1) % m
+        faces += [(c0, j, i), (c1, last + i, last + j)]
+    faces = np.asarray(faces, np.int64)
+    if mass_properties(verts, faces)[0] < 0:  # wound inward: the parallel-transported frame is left-handed
+        faces = faces[:, ::-1].copy()
+    convex = [np.vstack([rings[k], rings[k + 1]]) for k in range(len(pts) - 1)]
+    return Piece(verts, faces, material, convex, name, _owned=True)
+
+
 def sphere(center: Sequence[float], radius: float, material: str, name: str = "") -> Piece:
     """A solid sphere (icosphere, subdivided twice)."""
     v, f = _unit_icosphere()

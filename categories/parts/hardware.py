@@ -7,6 +7,7 @@ points are where it touches that surface. Bars run along local x.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from infmob_usd import geometry as g
@@ -58,7 +59,33 @@ def edge_pull(length: float, material: str, depth: float = 0.018, lip: float = 0
                            {"mount_a": (-length / 2, 0, 0), "mount_b": (length / 2, 0, 0)})
 
 
-HANDLES = {"bar": bar_handle, "edge": edge_pull}
+BOW_PROJECTION = 0.03
+"""m, face to the top of a bow pull: 27 mm (Cosmas 4390 bow pull, 4 in long, 1-1/16 in projection:
+doorcorner.com/blogs/articles-and-advice/how-to-measure-hole-spacing-on-your-cabinet-hardware) to the ~32 mm
+(1.25 in) a comfortable grip wants (engineerfix.com/what-size-handle-for-kitchen-cabinets)."""
+
+BOW_WIRE = 0.005
+"""m, radius of a bow pull's round wire: 10 mm, between the 3/8 and 1/2 in rod of bent-wire pulls."""
+
+
+def bow_handle(length: float, material: str, projection: float = BOW_PROJECTION, wire: float = BOW_WIRE,
+               segments: int = 12) -> Assembly:
+    """A bow (D) pull along local x: one round wire rising square out of the face at both screw holes
+    and arching over, ``projection`` from the face to its top; ``length`` is the hole centres (96-160 mm,
+    shopmeraki.co hardware measuring guide: 128 mm the common European size). Support points ``mount_a`` /
+    ``mount_b`` are the wire's feet on the face, as a bar pull's."""
+    foot = 0.004  # a short straight rise out of each hole before the arch
+    half, rise = length / 2, projection - wire - foot
+    t = [math.pi * k / segments for k in range(segments + 1)]
+    # an elliptic arch: square to the face at the feet (its tangent there is along z)
+    path = [(-half * math.cos(a), 0.0, rise * math.sin(a)) for a in t]
+    path = [(-half, 0.0, 0.0)] + [(x, y, z + foot) for x, y, z in path] + [(half, 0.0, 0.0)]
+    piece = g.tube(path, wire, material, 12, name="handle")
+    return Assembly.single("handle", [piece], {"mount": IDENTITY},
+                           {"mount_a": (-half, 0, 0), "mount_b": (half, 0, 0)})
+
+
+HANDLES = {"bar": bar_handle, "edge": edge_pull, "bow": bow_handle}
 """Handles that run along local x, by style name: ``HANDLES[style](length, material)``."""
 
 

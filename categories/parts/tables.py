@@ -98,6 +98,49 @@ def leg(style: str, radius: float, height: float, material: str, kind: str = "co
             g.box_between([-r, -r, height - block - 0.001], [r, r, height], material)]
 
 
+HAIRPIN_ROD = 0.0048
+"""m, radius of a hairpin leg's rod: 3/8 in (10 mm) is the standard rod, 1/2 in the heavy-duty one
+(semiexact.com/products/hairpin-leg-sold-separately-2-rod-design-clear-coat; engineerfix.com: 3/8 in for
+coffee and end tables, 1/2 in or three rods for dining tables); 16 in legs for coffee tables, 28 in for
+dining tables (tablelegs.com/blog/hairpin-leg-table-diy-tips)."""
+
+HAIRPIN_PLATE = 0.004
+"""m, the steel mounting plate a hairpin leg is welded to and screwed under the top by."""
+
+GLIDE = (0.012, 0.9)
+"""A tube leg's glide: its height (m) and its radius as a share of the tube's (push-in nylon glides of round
+furniture tubes, 25-32 mm tubes on 10-15 mm tall glides)."""
+
+
+HAIRPIN_SPREAD = 0.045
+"""m, at least this far out along the plate's diagonal each rod meets the plate (a 4 in plate's corners:
+the rods stand 9 cm apart at the top whatever the leg's nominal radius)."""
+
+
+def hairpin_leg(radius: float, height: float, material: str, rod: float = HAIRPIN_ROD) -> list[g.Piece]:
+    """A two-rod hairpin leg standing on the origin: one bent rod from the corners of a steel plate under the
+    top (``2 radius`` square, or wider to reach :data:`HAIRPIN_SPREAD`) down to a U bend on the floor, in the
+    plate's diagonal plane."""
+    zt = height - HAIRPIN_PLATE
+    s_top = max(math.sqrt(2) * (radius - rod), HAIRPIN_SPREAD)
+    bend = min(0.018, 0.8 * s_top)
+    zc = rod + bend
+    arc = [(bend * math.cos(a), zc - bend * math.sin(a)) for a in np.linspace(0.0, math.pi, 9)]
+    path2 = [(s_top, zt)] + arc + [(-s_top, zt)]
+    path = [(s / math.sqrt(2), s / math.sqrt(2), z) for s, z in path2]
+    half = max(radius, s_top / math.sqrt(2) + rod)
+    bent = g.tube(path, rod, material, 10)
+    bent = bent.translated((0, 0, -float(bent.vertices[:, 2].min())))  # the bend's mitred rings dip ~0.1 mm
+    return [g.box_between([-half, -half, zt], [half, half, height], material), bent]
+
+
+def tube_leg(radius: float, height: float, material: str, foot: str) -> list[g.Piece]:
+    """A round steel tube leg (``radius``) on a push-in glide (:data:`GLIDE`) in ``foot``."""
+    gh, share = GLIDE
+    return [g.cylinder((0, 0, gh), (0, 0, height), radius, material, 24),
+            g.cylinder((0, 0, 0), (0, 0, gh + 0.002), share * radius, foot, 24)]
+
+
 def leg_frames(width: float, shape: str, inset: float, count: int) -> list[Frame]:
     """Where legs stand under a top ``width`` across: 4 at the corners of a square, or ``count``
     evenly around a round top (a 4-legged round table has them at 45 degrees)."""
