@@ -30,7 +30,8 @@ upright head's bulb (optional) screws out of its socket (continuous-prismatic:
 turns freely and slides up to 12 mm out, gravity seats it again); a hanging bulb
 only turns in its socket (continuous): gravity would pull it out of a free slide.
 An optional switch on the base: a push button sticking out of a small housing, pressed
-horizontally toward the pole, or a rotary dimmer knob turning about z on the base's top; or, on an
+horizontally toward the pole, a rotary dimmer knob turning about z on the base's top, or a rocker switch
+on the base's top (its paddle tilts between two stops about the base's tangent); or, on an
 upright head, the knob of a turn-knob socket sticking out of the socket's side (continuous about
 its own radial axis).
 
@@ -84,8 +85,10 @@ GRAMMAR = Grammar("lamp", {
     "head": Node(label="head", required=("shade",)),
     "shade": Node(label="shade"),
     "bulb": Node(label="bulb"),
-    "switch": Node(one_of={"push_switch": 0.35, "rotary_switch": 0.3, "socket_switch": 0.35}, choice="switch_kind"),
+    "switch": Node(one_of={"push_switch": 0.3, "rotary_switch": 0.25, "rocker_switch": 0.15, "socket_switch": 0.3},
+                   choice="switch_kind"),
     "push_switch": Node(label="switch"),
+    "rocker_switch": Node(label="switch"),
     "rotary_switch": Node(label="switch"),
     "socket_switch": Node(label="switch"),
 })
@@ -162,7 +165,7 @@ class LampLayout(Layout):
         for name in names:
             self.add(name, made.parts[name].label, made.parts[name].pieces)
 
-    pole = bulb = push_switch = rotary_switch = socket_switch = screw = _parts
+    pole = bulb = push_switch = rotary_switch = rocker_switch = socket_switch = screw = _parts
 
     def switch(self, node, made, names):
         self.grow(node.one(node.choice), made=made, names=names)

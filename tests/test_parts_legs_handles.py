@@ -57,3 +57,28 @@ def test_categories_draw_the_new_parts():
     bp = api.blueprint("dining_table", 2, handle_style="bow")
     bows = [p for p in bp.parts["drawer_0"].pieces if p.material == "handle"]
     assert len(bows) == 1 and len(bows[0].convex) == 14  # 15 path points: two feet and a 13-point arch
+
+
+def test_rocker_switch_paddle_rocks_inside_its_bezel():
+    from infmob_usd.rotation import axis_angle
+
+    asm = hardware.rocker_switch("switch")
+    (joint,) = asm.joints
+    (dof,) = joint.dofs
+    paddle = asm.parts["rocker"].pieces[0].vertices
+    il = hardware.ROCKER["length"] / 2 - hardware.ROCKER["rim"]
+    ends = []
+    for q in np.linspace(dof.lower, dof.upper, 9):  # from the "off" stop to the "on" stop
+        r = axis_angle(np.asarray(dof.axis), q)
+        v = (paddle - dof.origin) @ r.T + dof.origin
+        assert v[:, 2].min() > 0  # never into the surface it is mounted on
+        assert np.abs(v[:, 0]).max() < il  # never through the bezel's ends
+        ends.append(v[v[:, 0] > 0, 2].mean() - v[v[:, 0] < 0, 2].mean())
+    assert ends[0] < 0 < ends[-1]  # the +x end goes from down to up
+    assert dof.upper == pytest.approx(2 * hardware.ROCKER["throw"])
+
+
+def test_lamp_draws_a_rocker_switch():
+    bp = api.blueprint("lamp", 20)
+    (joint,) = [j for j in bp.joints if j.child == "switch"]
+    assert joint.kind == "revolute" and joint.role == "button"

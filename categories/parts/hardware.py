@@ -1,4 +1,4 @@
-"""Small hardware: handles (bar, bow, knob, edge pull), knobs, push buttons, hinge knuckles.
+"""Small hardware: handles (bar, bow, knob, edge pull), knobs, push buttons, rocker switches, hinge knuckles.
 
 Every builder here returns an :class:`~infmob_usd.assembly.Assembly` whose
 anchor ``"mount"`` is the mounting surface (z out of it) and whose support
@@ -11,8 +11,9 @@ import math
 from dataclasses import dataclass
 
 from infmob_usd import geometry as g
-from infmob_usd.assembly import Assembly
-from infmob_usd.frames import IDENTITY
+from infmob_usd import joints as J
+from infmob_usd.assembly import Assembly, SubPart
+from infmob_usd.frames import IDENTITY, Frame
 
 
 @dataclass(frozen=True)
@@ -101,3 +102,35 @@ def turn_button(length: float, material: str, stem: float = 0.008, thickness: fl
               g.box_between((-0.15 * length, -0.006, stem), (0.85 * length, 0.006, stem + thickness), material,
                             name="latch")]
     return Assembly.single("latch", pieces, {"mount": IDENTITY, "pivot": IDENTITY}, {"stem": (0, 0, 0)})
+
+
+ROCKER = dict(length=0.021, width=0.015, bezel_h=0.0035, rim=0.0015, paddle_t=0.0045, throw=0.2, gap=0.0006)
+"""A snap-in rocker switch (the KCD1 size of appliance and lamp-base switches: bezel 21-23 x 15 mm over a
+19-21 x 13-15 mm panel cut-out, blogs.lcsc.com/blog/kcd1-switches-rocker-switches-guide): bezel length and
+width (m), bezel height, rim width, paddle thickness, the paddle's tilt each side of level (rad: its two
+positions ~23 degrees apart) and its clearance in the bezel."""
+
+
+def rocker_switch(material: str, size: dict | None = None) -> Assembly:
+    """A rocker switch on a mounting surface (local z out of it): a rectangular bezel (root part
+    ``bezel``, to be merged into what carries it) and a paddle (part ``rocker``, label ``switch``) that
+    tilts about the bezel's short axis (local y) through its middle. At rest the paddle is tilted down at
+    its +x end ("off"); its joint turns it to the other stop, 2 ``throw`` away. Anchor ``mount`` is the
+    surface, support points ``corner_a`` / ``corner_b`` the bezel's diagonal corners on it."""
+    d = {**ROCKER, **(size or {})}
+    L, W, hb, rim, t, th, gap = (d[k] for k in ("length", "width", "bezel_h", "rim", "paddle_t", "throw", "gap"))
+    half_l, half_w = L / 2, W / 2
+    il, iw = half_l - rim, half_w - rim  # the opening
+    bezel = [g.box_between((-half_l, -half_w, 0.0), (half_l, -iw, hb), material),
+             g.box_between((-half_l, iw, 0.0), (half_l, half_w, hb), material),
+             g.box_between((-half_l, -iw, 0.0), (-il, iw, hb), material),
+             g.box_between((il, -iw, 0.0), (half_l, iw, hb), material)]
+    # the paddle: half-length a, so that tilted by ``th`` it keeps ``gap`` from the opening's ends
+    a = (il - gap - 0.5 * t * math.sin(th)) / math.cos(th)
+    zp = gap + a * math.sin(th) + 0.5 * t * math.cos(th)  # its lowest corner ``gap`` off the surface
+    paddle = g.box_between((-a, -(iw - gap), -t / 2), (a, iw - gap, t / 2), material, bevel=0.2 * t)
+    paddle = paddle.transformed(Frame.at((0, 0, zp)).turned("y", th).matrix)  # its +x end down
+    # turning about -y lifts the +x end: from "off" at rest to "on" at 2 th
+    joint = J.revolute("bezel", "rocker", (0, 0, zp), (0, -1, 0), 0.0, 2 * th, role="button")
+    return Assembly({"bezel": SubPart("switch_bezel", tuple(bezel)), "rocker": SubPart("switch", (paddle,))},
+                    (joint,), {"mount": IDENTITY}, {"corner_a": (-half_l, -half_w, 0), "corner_b": (half_l, half_w, 0)})

@@ -10,12 +10,14 @@ lamps 1.0-1.5 m, 10-22 mm poles, E14/E27 bulbs 35-65 mm across, shades 0.14-0.44
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.blueprint import Blueprint
+from infmob_usd.frames import Frame
 
 GAP = 0.0025  # clearance between parts that move against each other
 BULB_TRAVEL = 0.012  # how far a bulb slides out of its socket while unscrewing
@@ -254,6 +256,30 @@ def _rotary(bp: Blueprint, p: dict, q: dict) -> None:
     bp.join(J.revolute("base", "switch", c + (0, 0, z + 0.004), (0, 0, 1), 0.0, ROTARY_TURN, role="knob"))
 
 
+def _rocker(bp: Blueprint, p: dict, q: dict) -> None:
+    """A rocker switch (:func:`~categories.parts.hardware.rocker_switch`) on the base's top (on a dome's
+    flat rim), its long side along the base radius: the bezel is the base's, the paddle tilts about the
+    tangent. Balanced on its pivot, it rests on its "off" stop."""
+    from .hardware import ROCKER, rocker_switch
+
+    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+    half = ROCKER["length"] / 2
+    if shape == "square":
+        rho, z = 0.9 * R - half - 0.006, t
+    elif shape == "round":
+        rho, z = R - 0.4 * t - half - 0.004, t
+    else:  # the middle of the dome's flat rim
+        rho, z = 0.85 * R, 0.5 * t
+    rho = max(rho, q["r_lo"] + half + 0.008)  # clear of the lower pole's tube
+    a = q["switch_angle"]
+    rocker = rocker_switch("switch").attached(
+        "mount", to=Frame.at((rho * math.cos(a), rho * math.sin(a), z), x=(math.cos(a), math.sin(a), 0.0)))
+    bp.extend("base", rocker.parts["bezel"].pieces)
+    bp.add("switch", "switch", rocker.parts["rocker"].pieces)
+    (joint,) = rocker.joints
+    bp.join(replace(joint, parent="base", child="switch"))
+
+
 SOCKET_KNOB_Z = 0.012  # a turn-knob socket's knob: its axis this far above the socket floor
 SOCKET_KNOB = (0.0025, 0.004, 0.0065, 0.009)  # stem radius and length, knob radius and length (E27 turn-knob
 #                                              sockets: a 12-14 mm knurled knob on a 4-5 mm stem)
@@ -286,7 +312,7 @@ def _assemble(p: dict, q: dict, z_top: float) -> Blueprint:
     z_b = q["z_b"]
     _base(bp, p, q)
     if p["has_switch"] and p.get("switch_kind") != "socket_switch":
-        (_rotary if p.get("switch_kind") == "rotary_switch" else _switch)(bp, p, q)
+        {"rotary_switch": _rotary, "rocker_switch": _rocker}.get(p.get("switch_kind"), _switch)(bp, p, q)
 
     # --- lower pole: a tube on the base; upper pole slides and turns in it ----
     r_up, r_lo, r_mid = q["r_up"], q["r_lo"], q["r_mid"]
