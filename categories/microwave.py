@@ -8,7 +8,8 @@ glass tray on a roller ring) spins about Z over a spindle in the middle of the c
 The body is a sheet casing with a front bezel and a hollow cavity liner; the door and the fascia
 are a thin skin on a dark inner frame. Sizes are those of real counter-top microwaves. A combination model
 has a low wire rack on its turntable or floor; an over-the-range model's two grease filters slide back.
-Parts: ``categories/parts/appliance.py``, ``hardware``.
+Parts: ``categories/parts/microwaves.py`` (layout), ``appliance.py`` (pieces), ``hardware``; sizes in
+``appliance_sizes.py``.
 """
 
 from __future__ import annotations

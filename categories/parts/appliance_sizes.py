@@ -87,3 +87,81 @@ MICROWAVE_KEYS = {
     "knob_share": 0.38, "dial_room": 0.012, "dial_shrink": (0.8, 0.95), "stem": 0.003, "stem_share": 0.2,
     "release": 0.022, "release_w": 0.62, "release_proud": 0.006,  # the door release button
 }
+
+# -- dishwasher -------------------------------------------------------------------------------------
+# Built-in dishwashers 0.45 / 0.6 m wide, 0.55-0.6 m deep, 0.82-0.87 m tall under the counter (Bosch
+# 300/500 Series, Miele G 7000, Whirlpool WDT750 spec sheets).
+DISHWASHER = {
+    # a compact counter-top model 0.55 x 0.50 x 0.44 m (Midea MCDW6ASS, Farberware FDW05ASBWHA spec sheets):
+    # (size at the parameter's low end, span, the parameter's low end, its span) per width, depth, height
+    "compact": {"width": (0.5, 0.1, 0.44, 0.22), "depth": (0.46, 0.08, 0.52, 0.14),
+                "height": (0.42, 0.05, 0.76, 0.16)},
+    "compact_kick": 0.03,  # a compact model's door hinges 30 mm over its feet
+    # a double dish drawer 0.6 x 0.57 x 0.82 m (Fisher & Paykel DD60DCX9): at least 0.6 m wide, at most 0.6
+    # deep, 0.8-0.86 m tall
+    "dish_drawer": {"width": 0.6, "depth": 0.6, "height": (0.8, 0.86)},
+    "worktop": 0.02,  # a freestanding model's worktop
+    "gap": 0.004,  # door to cabinet and plinth
+    "rack_gap": 0.004,  # rack to rails, liner and neighbours
+    "fascia": 0.012,  # control panel thickness (in front of the door)
+    "handle_strip": 0.03,  # the lowest strip of a control panel carries the handle
+    "handle_below": 0.035,  # a door handle's mounts under the band's bottom (or the door's top)
+    "door_under_top": 0.002,  # the door's top under the cabinet's top
+    "tub_over_hinge": 0.02,  # the tub's floor over the door's hinge line
+    # the door's top band: 25 mm, plus the control panel and a 30 mm handle strip under it; 70 mm for a
+    # handle alone
+    "band": {"base": 0.025, "handle_strip": 0.03, "handle_only": 0.07},
+    # racks stay 32 mm under the ceiling nozzle, 10 mm under the band; 12 mm over the flat door's
+    # dispenser and 50 mm over the tub floor (the spray arm)
+    "rack_room": {"nozzle": 0.032, "band": 0.01, "door": 0.012, "arm": 0.05},
+    # machinery in the base: circulation pump with motor 3-4 kg, drain pump ~0.5 kg, sump and heater
+    # (service-part listings, e.g. Bosch 00651956 circulation pump ~3.5 kg), a 60 mm can 40 mm behind the
+    # base's middle, 6 mm clear of the base plate and the tub
+    "pump_kg": 5.0,
+    "pump": {"behind_centre": 0.04, "clear": 0.006, "radius": 0.06},
+    "bar": dict(standoff=0.028, bar_radius=0.007, post_radius=0.0056, inset=0.02),  # a bar handle
+    "pocket": dict(depth=0.016, lip=0.02),  # a pocket (edge) pull
+    # an integrated model's shaker front: a 19 mm board, 70 mm rails 6 mm proud, 16 mm into the band
+    "front": {"board": 0.019, "rail": 0.07, "rail_proud": 0.006, "under_band": 0.016},
+    # the control fascia: 20 mm into the band, 4 mm under the door's top and inside its sides; a display over
+    # 12-38 % of the width, 22 mm tall; keys over the right 45 %, at most 1.6 x as wide as tall, 8 mm
+    # room above and below, 4 mm between; proud 30 % of their height + 2 mm; bevel 15 %
+    "control": {"over_band": 0.02, "under_top": 0.004, "inset": 0.004, "display": ((0.12, 0.38), 0.011),
+                "key_gap": 0.008, "key_wide": 1.6, "keys_w": 0.4, "key_space": 0.004, "keys_span": 0.45,
+                "proud_share": 0.3, "proud": 0.002, "bevel": 0.15},
+    # a double dish drawer: 12 mm cabinet panels, a plinth 4 mm sheet 12 mm behind the fronts; feet 15 mm
+    # radius, 40 / 50 mm in from back / front, 40 mm in from the sides
+    "drawer_panel": 0.012,
+    "plinth": {"sheet": 0.004, "behind_door": 0.012},
+    "feet": ((0.04, 0.05), 0.04, 0.015),
+    # each drawer: a 1.5 mm skin on a 2 mm-sheet core, a tub 15 mm off the cabinet's back, 2 mm behind the
+    # front, 6 mm inside the sides and over the bay's floor, 30 mm under the bay's top, 4 mm walls; the bar
+    # handle 40 mm under its top; it slides out 85 % of the tub; its rack 10 mm inside the tub's ends, 4 mm
+    # inside its sides, floor and 10 mm under its top
+    "drawer": {"tub_back": 0.015, "tub_front": 0.002, "tub_side": 0.006, "tub_floor": 0.006, "tub_top": 0.03,
+               "skin": 0.0015, "core": 0.002, "tub_wall": 0.004, "handle_below": 0.04, "travel": 0.85,
+               "rack": {"ends": 0.01, "side": 0.004, "floor": 0.004, "top": 0.01}},
+    # Rack heights as shares of the usable height, bottom up (a cutlery tray on top of three or more)
+    "shares": {1: [1.0], 2: [1.25, 1.0], 3: [1.25, 1.0, 0.42], 4: [1.1, 0.85, 0.75, 0.4]},
+    # racks 10 mm inside the tub's ends; a rack's top 6 mm under the next; rails 10 mm tall, 13 mm wide,
+    # from 30 mm off the back to 4 mm inside the front; 30 mm kept free at the rack's front; a basket's or
+    # tine row's rack is 20 mm inside the rails
+    "racks": {"ends": 0.01, "under_next": 0.006, "rail": 0.01, "rail_in": 0.013, "rail_back": 0.03,
+              "rail_front": 0.004, "front": 0.03, "half_in": 0.02},
+    # fold-down tine rows (Bosch / Miele "flip tines", 2-4 per lower rack): at most 160 mm tall and 85 % of
+    # the rack's height, 20 mm short of their strip, leaning 6 % of their height (8 mm room), 30 mm off the
+    # rack's back, 10 mm inside its sides
+    "tines": {"height": 0.16, "share": 0.85, "strip_room": 0.02, "lean": 0.06, "lean_room": 0.008, "back": 0.03,
+              "side": 0.01},
+    # flip-down cup shelves (Bosch, Whirlpool upper racks): at most 80 mm and 45 % of the rack's wall (70 % of
+    # its height, at least 20 mm), 10 mm under its rim, 40 mm inside its ends, 15 mm in from its side, leaning
+    # 6 mm; the tine rows keep 30 mm inside them
+    "cup_shelf": {"height": 0.08, "share": 0.45, "wall_share": 0.7, "min_height": 0.02, "under_rim": 0.01,
+                  "ends": 0.04, "wall_in": 0.015, "lean": 0.006, "tines_in": 0.03},
+    # cutlery baskets: on the bottom grid (2.6 wire radii + 1 mm), 40-140 mm tall and 75 % of the rack, at most
+    # 120 mm deep (35 % of the rack) and wide, 4 mm apart, 12 mm behind the rack's front, 20 mm of side room;
+    # they lift 2 mm short of the rack above, a lift under 10 mm keeps them fixed
+    "baskets": {"grid": 2.6, "over_grid": 0.001, "height": (0.04, 0.14, 0.75), "under_next": 0.002,
+                "depth": 0.12, "depth_share": 0.35, "width": 0.12, "space": 0.004, "side_room": 0.02,
+                "front_gap": 0.012, "min_lift": 0.01},
+}
