@@ -165,3 +165,59 @@ DISHWASHER = {
                 "depth": 0.12, "depth_share": 0.35, "width": 0.12, "space": 0.004, "side_room": 0.02,
                 "front_gap": 0.012, "min_lift": 0.01},
 }
+
+# -- beverage fridge ------------------------------------------------------------------------------------
+# Glass-door beverage coolers 0.45-0.7 m wide, 0.5-0.9 m tall (Newair, Whynter, Danby, Kalamera ranges);
+# insulated walls of 0.8 mm sheet round a moulded liner (``appliance.insulated_cabinet``).
+FRIDGE = {
+    # wine and dual-zone coolers are undercounter height, 0.82-0.87 m (Liebherr UWTes 1672, Sub-Zero UW-24,
+    # Bosch/Haier dual-zone spec sheets), over the height parameter's 0.5 + 0.4 m range:
+    # (height at its low end, span, the parameter's low end, its span)
+    "undercounter_height": (0.82, 0.05, 0.5, 0.4),
+    "dual_zone_width": 0.6,  # a dual-zone cooler with two doors is at least 0.6 m wide
+    # a wine cooler has 3 more racks (6-8 slide-out shelves), an undercounter fridge 2 fewer above its
+    # crispers, a dual-zone cooler 1 fewer per zone
+    "rack_extra": {"wine": 3, "undercounter": -2, "dual_zone": -1},
+    "shelf_pitch": 0.08, "shelf_spare": 0.6,  # undercounter shelves at least 8 cm apart
+    "gap": 0.004,  # door to cabinet, control strip and kick grille
+    "rack_gap": 0.004,  # rack to rails, liner, back wall and neighbours
+    "rack_front": 0.006,  # racks end this far behind the cabinet front
+    "glass_grow": 0.003,  # a glass door's glass: the cavity opening grown by 3 mm
+    "glass_margin": 0.02,  # door frame at least this wide above and below the glass
+    "mullion": 0.03,  # between the zones of a dual-zone cooler
+    "meeting_stile": 0.04,  # a dual-zone door's meeting stile past the mullion (it carries the handle)
+    "meeting_gap": 0.006,  # between the two doors, past what their free edges swing
+    "stile": 0.03,  # a door's free stile is at least this wide (the handle sits on it)
+    # hermetic reciprocating compressors of small coolers weigh 5-8 kg (Embraco EMT/EMX, Secop TLS data
+    # sheets); a 70 mm can 14 mm in front of the back, 4 mm over the base plate, 12 mm short of the grille's top
+    "compressor_kg": 6.0,
+    "compressor": {"radius": 0.07, "behind": 0.004, "clear": 0.01, "floor": 0.004, "room": 0.012},
+    "bar": dict(standoff=0.03, bar_radius=0.007, post_radius=0.0056, inset=0.02),  # a bar handle
+    "pull": (0.016, 0.02, 0.6),  # a recessed pull: depth, lip (at most this share of the stile)
+    # a solid door: a steel pan over the front 60 % of its edges, a 3 mm moulded liner 1 mm inside it, a
+    # gasket 1.5 mm thick 6 mm inside the edges round a 20 mm hole margin
+    "solid_door": {"pan": 0.6, "liner": 0.003, "liner_in": 0.001, "gasket": 0.0015, "gasket_in": 0.006,
+                   "gasket_hole": 0.02},
+    # door bins (Danby DCR044A2, Midea WHS-87LB1): 75 mm deep, at most 70 mm tall, 3 mm walls, 3 mm off the
+    # liner, 20 mm over the glass' bottom and 50 mm under its top, 40 mm between; 30 mm off the hinge side,
+    # 20 mm past what the free side swings; they lift 40 mm off their hooks; shelves stay 12 mm behind them
+    "bin": {"depth": 0.075, "height": 0.07, "wall": 0.003, "behind": 0.003, "bottom": 0.02, "top": 0.05,
+            "spare": 0.04, "hinge_room": 0.03, "swing_room": 0.02, "lift": 0.04, "clear": 0.012},
+    # crisper drawers: 140 mm tall, 4 mm over the floor and under their top, 30 mm under the shelves, 6 mm
+    # apart and off the door's swing, a 12 mm front, 3 mm walls; they slide out 70 % of their depth
+    "crisper": {"height": 0.14, "floor": 0.004, "over": 0.03, "side": 0.006, "front": 0.012, "under_top": 0.004,
+                "wall": 0.003, "travel": 0.7},
+    # freezer compartment (Danby DCR044A2, Midea WHS-87LB1 compact fridges): at most a fifth of the cavity, an
+    # evaporator box of 3 mm sheet massed as 1.5 mm, a 6 mm flap 6 mm inside the sides and 4 mm under the top;
+    # a finger lip 80 mm wide, 6 mm deep, 6-16 mm over the flap's bottom; shelves stay 12 mm under it
+    "freezer": {"share": 0.2, "under": 0.012, "flap": 0.006, "flap_in": 0.006, "top": 0.004, "sheet": 0.003,
+                "sheet_mass": 0.0015, "lip": ((0.006, 0.016), 0.04, 0.006)},
+    # rack levels: n + 0.6 pitches over the cavity, the first at 0.8 of one; racks at most 30 mm tall and 20 mm
+    # under the next, 6 mm off the open door, 18 mm inside the zone's sides, 4 mm under the glass; ledge rails
+    # 8 mm tall, 8 mm under the rack's runners, 4 mm short of the cavity front, 2 mm past the rack
+    "racks": {"spare": 0.6, "first": 0.8, "height": 0.03, "room": 0.02, "door": 0.006, "side": 0.018,
+              "under_glass": 0.004, "rail": 0.008, "rail_in": 0.008, "rail_front": 0.004, "rail_past": 0.002},
+    "wire_pitch": (0.028, 0.04),  # a wire rack's bottle cradles
+    # a divider plate: 6 mm glass, a 16 mm trim from 30 mm to 10 mm behind the cavity front
+    "divider": {"glass": 0.003, "trim": 0.008, "trim_x": (0.03, 0.01)},
+}
