@@ -8,6 +8,8 @@ writes no bare number.
 
 from __future__ import annotations
 
+import math
+
 # -- microwave --------------------------------------------------------------------------------------
 # Counter-top models 0.44-0.62 m wide, 0.32-0.46 m deep with the door, 0.25-0.36 m tall (Panasonic,
 # Samsung, Whirlpool spec sheets); casing and cavity liner 0.5-0.7 mm steel sheet under any finish.
@@ -220,4 +222,67 @@ FRIDGE = {
     "wire_pitch": (0.028, 0.04),  # a wire rack's bottle cradles
     # a divider plate: 6 mm glass, a 16 mm trim from 30 mm to 10 mm behind the cavity front
     "divider": {"glass": 0.003, "trim": 0.008, "trim_x": (0.03, 0.01)},
+}
+
+# -- oven -------------------------------------------------------------------------------------------
+# 30 in ranges 0.76 x 0.64-0.71 x 0.91-0.94 m, warming drawers 0.13-0.18 m high (GE JB735, Frigidaire
+# FGEF3036 spec sheets); double wall ovens 1.24-1.31 m high (GE JKD5000, Bosch HBL8651UC installation
+# guides); 0.8 mm steel sheet casings and doors (``appliance.oven_casing``).
+OVEN = {
+    "door_gap": 0.004,  # door <-> body front
+    "door_side": 0.003,  # doors and drawer fronts inside the body's sides
+    "handle": dict(standoff=0.04, bar_radius=0.01, post_radius=0.008, inset=0.02),  # the door's bar handle
+    "handle_below": 0.045,  # the door handle's mounts under the door's top
+    "handle_tube": 0.0012,  # the door handle is a tube (its wall)
+    "handle_room": 0.014,  # the open door's handle hangs this far clear over the drawer bay
+    "door_top_gap": 0.005,  # over the door's top, plus what its top back edge rises opening (~ft^2 / 2h)
+    "door_rise": 0.3,  # h of that: the door's height
+    "window": (1.2, 1.6),  # the door's frame under and over the window, x the window margin
+    "range_door_top": 0.045,  # a range's door top under the cooktop
+    "backguard": 0.06,  # depth of a range's control panel (backguard)
+    "divider": 0.004,  # the casing's divider over the drawer bay
+    # a double wall oven: a 16 mm trim band under the lower door, a 20 mm trim strip + 4 mm gap between the
+    # ovens, a fascia 35 % of the panel fraction tall
+    "lower_trim": 0.016, "mid_trim": 0.02, "mid_gap": 0.004, "double_panel": 0.35,
+    # the cavity inside the casing panels: 40 mm room at the back, 30 mm at the sides, its floor over the
+    # open door (15 mm over its thickness, at least 50 mm over the hinge), 50 mm under the door's top
+    "cavity": {"back": 0.04, "side": 0.03, "over_door": 0.015, "floor": 0.05, "top": 0.05},
+    "trim_line": ((0.03, 0.025), 0.3),  # a fixed drawer front's chrome line: z under its top, half width / W
+    # a range's vent slot strip: 9 slots 8 mm wide, 2 mm proud, 4-10 mm in front of the backguard, 80 mm in
+    # from the sides
+    "vent": {"slots": 9, "ends": 0.08, "slot": ((0.004, 0.01), 0.004, 0.002)},
+    # the burners' area: 12 mm (the vent strip) + 12 mm in front of the backguard, 15 mm behind the front,
+    # 20 mm inside the sides
+    "cooktop": {"vent": 0.012, "behind_vent": 0.012, "front": 0.015, "side": 0.02},
+    # burners: at most 55 mm radius, 35 % of the cooktop's depth per burner, 22 mm inside their grate's
+    # column; every other one 80 % of that
+    "burners": {"radius": 0.055, "share": 0.35, "side": 0.022, "small": 0.8},
+    "grate_gap": 0.02,  # between neighbouring grates
+    "grate_side": 0.006,  # grate sideways play (+-), at most
+    "grate_clear": 0.004,  # a grate's play stops this far short of its neighbour
+    "grate_over": 0.002,  # grates stand this far over the cooktop
+    # a storage drawer: its front 3 mm off the body, 2 mm over the plinth; a tray 15 mm off the back panel,
+    # 4 mm inside the bay, 12 mm under its top; an edge pull over half the width, 16 mm deep with a 14 mm
+    # lip, 22 mm under the top
+    "drawer": {"front_gap": 0.003, "over_plinth": 0.002, "tray_back": 0.015, "in_bay": 0.004, "tray_under": 0.012,
+               "pull": (0.016, 0.014, 0.5, 0.022)},
+    # a warming drawer: a bar handle 10 mm over its middle, a marking strip 120 mm wide 14-20 mm over its bottom
+    "warming": {"handle": dict(standoff=0.03, bar_radius=0.008, post_radius=0.0065, inset=0.02),
+                "handle_over": 0.01, "mark": ((0.014, 0.02), 0.06)},
+    # rail levels from 45 mm over the floor to 70 mm under the ceiling, rails 10 mm off the back and 4 mm
+    # short of the front; racks 20 mm off the back, 35 mm behind the front, 4 mm inside the rails, on them
+    "racks": {"bottom": 0.045, "top": 0.07, "rail_back": 0.01, "rail_front": 0.004, "back": 0.02, "front": 0.035,
+              "side": 0.004, "over_rail": 0.002},
+    # knobs: 30 mm margins at the panel's ends, at most 40 % of their pitch and 12 mm inside the panel's half
+    # height; stems 3 mm or 20 % of the radius; a centre of at least 110 mm (28 mm a button) + 30 mm for the
+    # display and the buttons
+    "knobs": {"margin": 0.03, "share": 0.4, "rim": 0.012, "stem": 0.003, "stem_share": 0.2, "centre": 0.11,
+              "per_button": 0.028, "centre_room": 0.03},
+    # the centre: a display at most 30 mm (30 % of the panel) tall, 4 mm over the middle of a panel taller
+    # than 100 mm; buttons at most 16 mm tall (22 %) and 20 mm wide, 8 mm under the display, 4 mm apart,
+    # travel 3 mm or a quarter of their height, 2 mm proud when pressed
+    "buttons": {"display": 0.03, "display_share": 0.3, "display_over": 0.004, "tall_panel": 0.1, "height": 0.016,
+                "share": 0.22, "width": 0.02, "under_display": 0.008, "space": 0.004, "travel": 0.003,
+                "proud": 0.002},
+    "knob_turn": math.pi / 4,  # a revolute knob turns +-45 degrees
 }
