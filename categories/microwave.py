@@ -145,9 +145,9 @@ class MicrowaveLayout(A.PanelNodes):
                              vent=design == "over_the_range")
         self.add("body", "body", MW.casing(body, p["wall"], p["body_finish"], p["interior_finish"]))
         door = style.one("door") or style.one("otr_door")
-        self.grow(style, cavity=body.cavity, door=dict(ys=body.door_ys, zs=body.zs, x_front=body.outer[2]),
+        self.grow(style, cavity=body.cavity, door=dict(ys=body.door_ys, zs=body.zs, x_front=body.x_front),
                   box=body.outer)
-        self.grow(node.one("control_panel"), xs=body.outer[1:3], ys=body.panel_ys, zs=body.panel_zs,
+        self.grow(node.one("control_panel"), xs=body.fascia_xs, ys=body.panel_ys, zs=body.panel_zs,
                   release=door.one("release_button"))
 
     def turntable(self, node, cavity, door, box):
@@ -190,7 +190,7 @@ class MicrowaveLayout(A.PanelNodes):
         body = MW.drawer_body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"])
         self.add("body", "body", MW.casing(body, p["wall"], p["body_finish"], p["interior_finish"]))
         self.grow(style, body=body)
-        self.grow(node.one("control_panel"), xs=body.outer[1:3], ys=body.panel_ys, zs=body.panel_zs, release=None)
+        self.grow(node.one("control_panel"), xs=body.fascia_xs, ys=body.panel_ys, zs=body.panel_zs, release=None)
 
     def drawer(self, node, body):
         p = self.p

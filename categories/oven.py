@@ -217,9 +217,10 @@ class OvenLayout(A.PanelNodes):
 
     def door(self, node, box, name="door"):
         p = self.p
+        _, x1, _, _, z0, _ = box
         self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"], p["body_finish"]))
         # hinged on the front face at the bottom edge: about +Y the top falls forward (+X)
-        self.hinge("body", name, Frame.at((box[1], 0.0, box[4]), z=(0, 1, 0)), upper=DOOR_OPENS)
+        self.hinge("body", name, Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)
 
     def racks(self, node, cav, prefix="", door="door"):
         kids = node.of("rack")

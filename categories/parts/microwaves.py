@@ -58,6 +58,16 @@ class Body:
     zs: tuple
     panel_zs: tuple
 
+    @property
+    def x_front(self) -> float:
+        """The door's (and fascia's) front face."""
+        return self.outer[2]
+
+    @property
+    def fascia_xs(self) -> tuple[float, float]:
+        """The fascia's back (the bezel plane) and front face."""
+        return self.outer[1:3]
+
 
 def countertop(W, D, H, wall, door_thickness, feet, panel_fraction, vent: bool) -> Body:
     """A counter-top (or over-the-range, ``vent``) body: the door on the left, the fascia on the right,
