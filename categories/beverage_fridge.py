@@ -8,32 +8,32 @@ glass pane, hinged on one side about a vertical axis through its front face: it 
 0..pi/2; the handle (a bar or an edge pull) is on the free edge. Inside are 3-5 racks (wire racks
 or glass shelves) sliding out along +X on ledge rails, or a fixed divider plate. The door is solid
 to a robot, so a rack slides out only with the door open (``requires_open``); racks keep clear of
-the open door's hinge-side edge. Parts: ``categories/parts/appliance.py``, ``hardware``.
+the open door's hinge-side edge.
+Parts: ``categories/parts/fridges.py`` (layout), ``appliance.py`` (pieces), ``hardware``; sizes in
+``appliance_sizes.py``.
 """
 
 from __future__ import annotations
 
 import math
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
-from infmob_usd.materials.families import FAMILIES, split_spec
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
+from .parts import fridges as FR
 from .parts import hardware
 
 
 def rack_count(p, rng) -> int:
     """rack_count; a wine cooler has 3 more (6-8 slide-out shelves), an undercounter fridge 2 fewer above its
     crispers, a dual-zone cooler 1 fewer per zone"""
-    extra = {"wine": 3, "undercounter": -2, "dual_zone": -1}.get(p["design"], 0)
-    n = max(1, p["rack_count"] + extra)
+    n = max(1, p["rack_count"] + FR.RACK_EXTRA.get(p["design"], 0))
     if p["design"] == "undercounter":  # shelves at least 8 cm apart above the crispers, below a freezer
-        n = min(n, max(1, int(shelf_room(p) / 0.08 - 0.6)))
+        n = min(n, FR.shelves_fit(shelf_room(p)))
     return n
 
 
@@ -44,12 +44,12 @@ def cavity_height(p: dict) -> float:
 
 def freezer_height(p: dict) -> float:
     """freezer_height, at most a fifth of the cavity"""
-    return min(p["freezer_height"], 0.2 * cavity_height(p))
+    return FR.freezer_height(p["freezer_height"], cavity_height(p))
 
 
 def shelf_room(p: dict) -> float:
     """Height an undercounter fridge's shelves share: above the crispers, below the freezer compartment."""
-    return cavity_height(p) - CRISPER_H - 0.03 - (freezer_height(p) + 0.012 if p.get("has_freezer") else 0.0)
+    return FR.shelf_room(cavity_height(p), freezer_height(p) if p.get("has_freezer") else None)
 
 
 def right_rack_count(p, rng) -> int:
@@ -59,15 +59,9 @@ def right_rack_count(p, rng) -> int:
 
 
 def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): wine coolers and dual-zone coolers are undercounter height, 0.82-0.87 m
-    (Liebherr UWTes 1672, Sub-Zero UW-24, Bosch/Haier dual-zone spec sheets); a dual-zone cooler with two doors
-    is at least 0.6 m wide."""
-    W, D, H = p["width"], p["depth"], p["height"]
-    if design in ("wine", "dual_zone"):
-        H = 0.82 + 0.05 * (H - 0.5) / 0.4
-    if design == "dual_zone":
-        W = max(W, 0.6)
-    return W, D, H
+    """(width, depth, height): wine coolers and dual-zone coolers are undercounter height, 0.82-0.87 m; a
+    dual-zone cooler with two doors is at least 0.6 m wide (:data:`~.parts.appliance_sizes.FRIDGE`)."""
+    return FR.size(p["width"], p["depth"], p["height"], design)
 
 
 GRAMMAR = Grammar("beverage_fridge", {
@@ -148,53 +142,23 @@ def frame_finish(p: dict) -> dict:
     return {**p, "frame_family": p["body_finish"] if p["door_finish"] == "match" else "plastic:black"}
 
 
-GAP = 0.004  # door to cabinet, control strip and kick grille
-COMPRESSOR_KG = 6.0  # hermetic reciprocating compressors of small coolers weigh 5-8 kg (Embraco EMT/EMX,
-# Secop TLS data sheets); the modelled machine compartment is only the kick grille's height
-RACK_GAP = 0.004  # rack to rails, liner, back wall and neighbours
 DOOR_OPENS = math.pi / 2
-GLASS_MARGIN = 0.02  # door frame at least this wide above and below the glass
-BAR = hardware.HandleSize(standoff=0.03, bar_radius=0.007, post_radius=0.0056, inset=0.02)
-MULLION = 0.03  # between the zones of a dual-zone cooler
-BIN_DEPTH = 0.075  # door bins (x), behind the closed door
-BIN_LIFT = 0.04  # a door bin lifts this far off its hooks
-CRISPER_H = 0.14  # crisper drawer height
 
 
 class FridgeLayout(Layout):
-    def compressor(self, xb0: float, zf: float, zk: float) -> list[g.Piece]:
-        """The hermetic compressor in the machine compartment behind the kick grille (hidden, no
-        collision): a steel can in the ``wire`` slot (chrome, 7850 kg/m^3) massed as a shell whose wall
-        makes it :data:`COMPRESSOR_KG` with the motor inside."""
-        r = 0.07
-        return [A.machine_can(xb0 + 0.004 + 0.01 + r, zf + 0.004, zk - zf - 0.012, r, "wire", COMPRESSOR_KG,
-                              "compressor")]
-
     def beverage_fridge(self, node):
         p = self.p
         design = node.choice
         style = node.one(design)
         W, D, H = size(p, design)
-        w, ft = p["wall"], p["door_thickness"]
-        y0, y1 = -W / 2, W / 2
-        xf = D / 2  # door front face
-        xb1, xb0 = xf - ft - GAP, -D / 2  # cabinet front and back
-        zf = p["feet_height"]
-        zk = zf + p["kick_height"]  # top of the kick grille
         ctrl = node.one("control_panel")
-        zd = (zk + GAP, H - (p["control_height"] + GAP if ctrl else 0.0))  # door
-        cav = (xb0 + w + A.LINER, xb1, y0 + w + A.LINER, y1 - w - A.LINER, zk + w + A.LINER, H - w - A.LINER)
-        # the door's glass: the cavity opening grown by 3 mm, inside the door's frame
-        hole = (cav[2] - 0.003, max(cav[4] - 0.003, zd[0] + GLASS_MARGIN), cav[3] + 0.003,
-                min(cav[5] + 0.003, zd[1] - GLASS_MARGIN))
-        body = A.insulated_cabinet((xb0, xb1, y0, y1, zf, H), cav, zk) + self.compressor(xb0, zf, zk)
-        if design == "dual_zone":  # a mullion between the zones, the doors close on it
-            body.append(g.box_between([cav[0], -MULLION / 2, cav[4]], [xb1, MULLION / 2, cav[5]], "body")
-                        .replace(sheet=A.FRIDGE_SHEET))
-        self.add("body", "body", body)
+        body = FR.body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["kick_height"],
+                       p["control_height"] if ctrl else None, design == "dual_zone")
+        self.add("body", "body", body.pieces)
         if ctrl:
-            self.grow(ctrl, xs=(xb1, xf), ys=(y0, y1), zs=(zd[1] + GAP, H))
-        self.grow(style, cav=cav, hole=hole, box=(xf - ft, xf, y0, y1, *zd), xs=(cav[0] + RACK_GAP, xb1 - 0.006))
+            xs, ys, zs = body.control
+            self.grow(ctrl, xs=xs, ys=ys, zs=zs)
+        self.grow(style, cav=body.cav, hole=body.hole, box=body.box, xs=body.xs)
 
     def glass_cooler(self, node, cav, hole, box, xs):
         self.grow(node.one("door"), box=box, hole=hole)
@@ -209,48 +173,33 @@ class FridgeLayout(Layout):
         compartment at the top (optional); shelves, crispers and the freezer flap stop short of the bins on the
         closed door."""
         self.grow(node.one("solid_door"), box=box, hole=hole)
-        xs = (xs[0], xs[1] - BIN_DEPTH - 0.012)
-        cz0 = cav[4]
-        top = cz0 + CRISPER_H
+        xs = FR.behind_bins(xs)
         ceiling = cav[5]
         if node.one("freezer"):
             ceiling = self.grow(node.one("freezer"), cav=cav, xs=xs)
-        self.grow(node.one("crispers"), cav=cav, xs=xs, zs=(cz0 + 0.004, top), margin=hole[0] - box[2])
-        self.grow(node.one("racks"), cav=(*cav[:4], top + 0.03, ceiling), hole=hole, xs=xs, margin=hole[0] - box[2])
+        self.grow(node.one("crispers"), cav=cav, xs=xs, zs=FR.crisper_zs(cav), margin=hole[0] - box[2])
+        self.grow(node.one("racks"), cav=FR.over_crispers(cav, ceiling), hole=hole, xs=xs, margin=hole[0] - box[2])
 
     def freezer(self, node, cav, xs):
         """A freezer compartment across the top of the cavity: an aluminium evaporator box (its floor and sides,
         fixed) and a flap over its front, hinged on its top back edge, that swings up out of the way (only with
         the door open). Returns the height below which the shelves stay."""
-        cx0, _, cy0, cy1, _, cz1 = cav
-        fh = freezer_height(self.p)
-        xf, t = xs[1], 0.006  # the flap's front face, its thickness
-        z0 = cz1 - fh
-        self.extend("body", [g.box_between([cx0, cy0, z0 - 0.003], [xf - t - 0.003, cy1, z0], "evaporator")
-                             .replace(sheet=0.0015),
-                             *[g.box_between([cx0, y0, z0], [xf - t - 0.003, y0 + 0.003, cz1], "evaporator")
-                               .replace(sheet=0.0015) for y0 in (cy0, cy1 - 0.003)]])
-        self.add("freezer_flap", "flap", [
-            g.box_between([xf - t, cy0 + 0.006, z0 + 0.002], [xf, cy1 - 0.006, cz1 - 0.004], "bin", bevel=0.002),
-            g.box_between([xf, -0.04, z0 + 0.006], [xf + 0.006, 0.04, z0 + 0.016], "bin", bevel=0.002)])  # finger lip
-        # about -Y the bottom edge swings forward and up; the pivot is behind the flap's centre of mass
-        self.hinge("body", "freezer_flap", Frame.at((xf - t, 0.0, cz1 - 0.004), z=(0, -1, 0)), upper=math.pi / 2,
-                   requires_open="door")
-        return z0 - 0.012
+        box, flap, at, ceiling = FR.freezer(cav, xs, freezer_height(self.p))
+        self.extend("body", box)
+        self.add("freezer_flap", "flap", flap)
+        self.hinge("body", "freezer_flap", at, upper=math.pi / 2, requires_open="door")
+        return ceiling
 
     def dual_zone(self, node, cav, hole, box, xs):
         """Two glass doors meeting over the mullion, each hinged on its outer side; racks in each zone."""
-        x0, x1, y0, y1, z0, z1 = box
-        hl = (hole[0], hole[1], -MULLION / 2 - 0.04, hole[3])  # wide meeting stiles carry the handles
-        hr = (MULLION / 2 + 0.04, hole[1], hole[2], hole[3])
-        # a free edge's back corner swings ~ft^2 / 2w towards the other door: the gap between them allows it
-        gc = max(GAP, (x1 - x0) ** 2 / (y1 - y0)) + 0.006
-        self.grow(node.one("door"), box=(x0, x1, y0, -gc / 2, z0, z1), hole=hl, side="left")
-        self.grow(node.one("right_door"), box=(x0, x1, gc / 2, y1, z0, z1), hole=hr, side="right")
-        margin = hole[0] - y0
-        self.grow(node.one("racks"), cav=(*cav[:3], -MULLION / 2, *cav[4:]), hole=hole, xs=xs, margin=margin)
-        self.grow(node.one("right_racks"), cav=(cav[0], cav[1], MULLION / 2, *cav[3:]), hole=hole, xs=xs,
-                  margin=margin, door="right_door", prefix="right_")
+        left, right = FR.dual_doors(box, hole)
+        self.grow(node.one("door"), **left, side="left")
+        self.grow(node.one("right_door"), **right, side="right")
+        margin = hole[0] - box[2]
+        left_cav, right_cav = FR.zones(cav)
+        self.grow(node.one("racks"), cav=left_cav, hole=hole, xs=xs, margin=margin)
+        self.grow(node.one("right_racks"), cav=right_cav, hole=hole, xs=xs, margin=margin, door="right_door",
+                  prefix="right_")
 
     def right_door(self, node, box, hole, side):
         self.door(node, box, hole, side=side, name="right_door")
@@ -260,51 +209,29 @@ class FridgeLayout(Layout):
 
     def solid_door(self, node, box, hole):
         """An insulated door: an outer skin, a foam core, a moulded inner liner with a gasket, and bins."""
-        x0, x1, y0, y1, z0, z1 = box
-        # the outer skin is a steel pan (its face and flanges over the front 60 % of the edges) whatever its
-        # finish: a painted or plastic family is massed as that much steel (a 2 mm skin massed as board at
-        # 750 kg/m^3 made these doors 1.1-1.3 kg)
-        skin = A.FRIDGE_SHEET * 7850.0 / FAMILIES[split_spec(self.p["frame_family"])[0]].density
-        xp = x1 - 0.6 * (x1 - x0)
-        pieces = [g.box_between([xp, y0, z0], [x1, y1, z1], "frame", bevel=0.0015).replace(sheet=skin),
-                  g.box_between([x0, y0 + 0.001, z0 + 0.001], [xp + 0.002, y1 - 0.001, z1 - 0.001], "liner")
-                  .replace(sheet=0.003),
-                  g.panel([x0 - 0.0015, y0 + 0.006, z0 + 0.006], [x0, y1 - 0.006, z1 - 0.006], "gasket", "x",
-                          holes=[(y0 + 0.02, z0 + 0.02, y1 - 0.02, z1 - 0.02)])]
-        left = self._door(node, box, hole, pieces, "door", None)
-        # bins behind the door, inside the opening, clear of the hinge side while the door swings
-        # the free side's back corners swing out by ~(ft + depth)^2 / 2W past the cabinet wall: inset them
-        free = (x1 - x0 + BIN_DEPTH) ** 2 / (2 * (y1 - y0)) + 0.02
-        ya, yb = (hole[0] + BIN_DEPTH + 0.03, hole[2] - free) if left else (hole[0] + free, hole[2] - BIN_DEPTH - 0.03)
+        left = self._door(node, box, hole, FR.solid_door(box, self.p["frame_family"]), "door", None)
         kids = node.of("door_bin")
-        pitch = (hole[3] - 0.05 - (hole[1] + 0.02)) / len(kids)
-        for k, kid in enumerate(kids):
-            zb = hole[1] + 0.02 + k * pitch
-            self.grow(kid, k=k, xs=(x0 - BIN_DEPTH, x0 - 0.003), ys=(ya, yb), zs=(zb, zb + min(0.07, pitch - 0.04)))
+        for k, (kid, slot) in enumerate(zip(kids, FR.door_bins(len(kids), box, hole, left), strict=True)):
+            self.grow(kid, k=k, **slot)
 
     def door_bin(self, node, k, xs, ys, zs):
         """A door bin: an open moulded tray hooked on the door liner; it lifts straight up off its hooks."""
-        name = self.add(f"door_bin_{k}", "bin", [pc.replace(sheet=0.003) for pc in
-                                                 A.open_bin(xs, ys, zs[0], zs[1] - zs[0], "bin", t=0.003)])
-        self.slide("door", name, Frame.at((xs[1], (ys[0] + ys[1]) / 2, zs[0]), z=(0, 0, 1)), upper=BIN_LIFT)
+        pieces, at = FR.door_bin(xs, ys, zs)
+        name = self.add(f"door_bin_{k}", "bin", pieces)
+        self.slide("door", name, at, upper=FR.BIN_LIFT)
 
     def crispers(self, node, cav, xs, zs, margin):
         p = self.p
         kids = node.of("crisper")
-        ry = min(p["width"] / 2 - math.hypot(margin, p["door_thickness"]) - 0.006, cav[3] - 0.006)
-        w = (2 * ry - 0.006 * (len(kids) - 1)) / len(kids)
-        for k, kid in enumerate(kids):
-            ya = -ry + k * (w + 0.006)
-            self.grow(kid, k=k, xs=xs, ys=(ya, ya + w), zs=zs)
+        for k, (kid, ys) in enumerate(zip(kids, FR.crisper_ys(len(kids), cav, p["width"], p["door_thickness"],
+                                                               margin), strict=True)):
+            self.grow(kid, k=k, xs=xs, ys=ys, zs=zs)
 
     def crisper(self, node, k, xs, ys, zs):
         """A crisper drawer: a clear open bin with a front and a finger pull, sliding out along +X."""
-        x0, x1 = xs
-        pieces = A.open_bin((x0, x1 - 0.012), ys, zs[0], zs[1] - zs[0] - 0.004, "glass", t=0.003)
-        pieces.append(g.box_between([x1 - 0.012, ys[0], zs[0]], [x1, ys[1], zs[1] - 0.004], "trim", bevel=0.002))
+        pieces, at, travel = FR.crisper(xs, ys, zs)
         name = self.add(f"crisper_{k}", "drawer", pieces)
-        self.slide("body", name, Frame.at((x1, (ys[0] + ys[1]) / 2, zs[0]), z=(1, 0, 0)),
-                   upper=0.7 * (x1 - x0), requires_open="door")
+        self.slide("body", name, at, upper=travel, requires_open="door")
 
     def control_panel(self, node, xs, ys, zs):
         """The control strip over the door (part of the body) and its push keys, pressing in along -X."""
@@ -331,9 +258,7 @@ class FridgeLayout(Layout):
         left = (side or p["hinge_side"]) == "left"
         self.hinge("body", name, Frame.at((x1, y0 if left else y1, z0), z=(0, 0, -1 if left else 1)),
                    upper=DOOR_OPENS)
-        stile = max(0.03, (y1 - hole[2]) if left else (hole[0] - y0))
-        free = y1 - stile / 2 if left else y0 + stile / 2
-        at = Frame.at((x1, free, (z0 + z1) / 2), z=(1, 0, 0), x=(0, 0, 1))
+        at, stile = FR.handle_anchor(box, hole, left)
         self.grow(node.one("handle"), at=at, length=p["handle_length"] * (z1 - z0), stile=stile, door=name)
         return left
 
@@ -341,38 +266,30 @@ class FridgeLayout(Layout):
         self.grow(node.one(node.choice), at=at, length=length, stile=stile, door=door)
 
     def bar(self, node, at, length, stile, door="door"):
-        h = hardware.bar_handle(length, "handle", BAR).attached("mount", to=at)
+        h = hardware.bar_handle(length, "handle", FR.BAR).attached("mount", to=at)
         self.extend(door, h.parts[h.root].pieces)
 
     def recessed(self, node, at, length, stile, door="door"):
-        h = hardware.edge_pull(length, "handle", depth=0.016, lip=min(0.02, 0.6 * stile)).attached("mount", to=at)
+        h = FR.recessed_pull(length, stile).attached("mount", to=at)
         self.extend(door, h.parts[h.root].pieces)
 
     def racks(self, node, cav, hole, xs, margin, wine=False, door="door", prefix=""):
         p = self.p
-        cx0, cx1, cy0, cy1, cz0, cz1 = cav
-        yc = (cy0 + cy1) / 2  # a dual-zone cooler's zones are off the middle
-        # the racks keep clear of the open door's hinge-side edge
-        W = size(p, p["design"])[0]
-        ry = min(W / 2 - abs(yc) - math.hypot(margin, p["door_thickness"]) - 0.006, (cy1 - cy0) / 2 - 0.018)
         kids = node.of("rack")
-        z_top = min(cz1, hole[3] - 0.004)  # racks stay behind the glass, clear of the top rail
-        pitch = (z_top - cz0) / (len(kids) + 0.6)
-        hr = min(0.03, pitch - 0.02)  # rack height
-        for k, kid in enumerate(kids):
-            z_rail = cz0 + pitch * (k + 0.8)  # top of the ledge rails of this level
-            for s in (-1, 1):  # ledge rails moulded into the side liner, under the rack's runners
-                ya, yb = sorted((yc + s * (ry - 0.008), yc + s * ((cy1 - cy0) / 2 + A.LINER)))
-                self.extend("body", [g.box_between([cx0, ya, z_rail - 0.008], [min(cx1 - 0.004, xs[1] + 0.002), yb, z_rail],
-                                                   "liner")])  # short of the bins on a closed solid door
-            self.grow(kid, k=k, xs=xs, ry=ry, zb=z_rail + RACK_GAP, hr=hr, yc=yc, wine=wine, door=door, prefix=prefix)
+        # the racks keep clear of the open door's hinge-side edge
+        fit = FR.rack_levels(len(kids), cav, hole, xs, size(p, p["design"])[0], p["door_thickness"], margin)
+        for k, (kid, (rails, zb)) in enumerate(zip(kids, fit["levels"], strict=True)):
+            for rail in rails:
+                self.extend("body", [rail])
+            self.grow(kid, k=k, xs=xs, ry=fit["ry"], zb=zb, hr=fit["hr"], yc=fit["yc"], wine=wine, door=door,
+                      prefix=prefix)
 
     def rack(self, node, k, xs, ry, zb, hr, yc=0.0, wine=False, door="door", prefix=""):
         p = self.p
         if p["rack_style"] == "glass" and not wine:
             label, pieces = "shelf", A.glass_shelf(xs, ry, zb, hr)
         else:  # a wine cooler's shelves: wire cradles with a wooden front
-            pieces = A.wire_rack(xs, ry, zb, hr, float(self.rng.uniform(0.028, 0.04)))
+            pieces = A.wire_rack(xs, ry, zb, hr, float(self.rng.uniform(*FR.WIRE_PITCH)))
             label, pieces = "rack", [pc.replace(material="wood") if wine and pc.material == "trim" else pc
                                      for pc in pieces]
         name = self.add(f"{prefix}rack_{k}", label, [pc.translated((0.0, yc, 0.0)) for pc in pieces])
@@ -380,11 +297,7 @@ class FridgeLayout(Layout):
                    requires_open=door)
 
     def divider(self, node, cav, hole, xs, margin):
-        cx0, cx1, cy0, cy1, cz0, cz1 = cav
-        zp = cz0 + self.p["divider_height"] * (cz1 - cz0)
-        self.add("divider", "shelf", [g.box_between([cx0, cy0, zp - 0.003], [cx1 - 0.01, cy1, zp + 0.003], "glass"),
-                                      g.box_between([cx1 - 0.03, cy0, zp - 0.008], [cx1 - 0.01, cy1, zp + 0.008],
-                                                    "trim")])
+        self.add("divider", "shelf", FR.divider(cav, self.p["divider_height"]))
         self.fix("body", "divider")
 
 

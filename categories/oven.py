@@ -10,16 +10,15 @@ hinge line, so gravity holds it shut. The cavity is hollow (a sheet casing and a
 wire racks rest on side rails and slide out only with the door open (``requires_open``). The
 control panel carries knobs (continuous or +-pi/4 about +X) and optional push buttons; a range's
 cooktop has burners and optional cast grates, each on a ``limited_floating`` joint (forward, a
-little sideways, lifted). Parts: ``categories/parts/appliance.py``, ``hardware``.
+little sideways, lifted).
+Parts: ``categories/parts/ovens.py`` (layout), ``appliance.py`` (pieces), ``hardware``; sizes in
+``appliance_sizes.py``.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
@@ -28,7 +27,7 @@ from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
-from .parts import hardware
+from .parts import ovens as OV
 
 
 def grates(p, rng) -> int:
@@ -121,111 +120,51 @@ MATERIALS = {
 }
 
 DOOR_OPENS = math.pi / 2
-T = A.OVEN_PANEL
-GAP_DOOR = 0.004  # door <-> body front
-HANDLE = hardware.HandleSize(standoff=0.04, bar_radius=0.01, post_radius=0.008, inset=0.02)
-HANDLE_TUBE = 0.0012  # the door handle is a tube
-GRATE_GAP = 0.02  # between neighbouring grates
-GRATE_SIDE = 0.006  # grate sideways play (+-), at most
-BACKGUARD = 0.06  # depth of a range's control panel (backguard)
-KNOB_MARGIN = 0.03  # control panel ends beside the outer knobs
-
-
-PAINTED_STEEL = 7850.0 / 750.0
-"""Sheet of a painted door or drawer is painted steel (7850 kg/m^3) but the painted family is massed
-as board (750 kg/m^3): its sheet counts this many times thicker (a 0.8 mm steel drawer ~2-3 kg)."""
 
 
 class OvenLayout(A.PanelNodes):
-    def steel(self, pieces):
-        """Painted sheet pieces weigh as painted steel (:data:`PAINTED_STEEL`): the door's inner frame
-        (``door_inner``, always painted) and, on a painted oven, its casing-finish pieces."""
-        painted = {"door_inner", "plinth"} | ({"body", "door"} if self.p["body_finish"] == "painted" else set())
-        return [pc.replace(sheet=pc.sheet * PAINTED_STEEL) if pc.sheet > 0 and pc.material in painted else pc
-                for pc in pieces]
-
-    def oven(self, node):
-        p = self.p
-        W, D, ft = p["width"], p["depth"], p["door_thickness"]
-        design = node.choice
-        rng_style, double = design in ("range", "warming"), design == "double_wall"
-        style = node.one(design)
-        H = p["height"] + (p["lower_height"] if double else 0.0)  # floor to the cooktop or the top
-        xb, xd1 = -D / 2, D / 2  # back of the body, front face of the door
-        xf = xd1 - ft - GAP_DOOR  # body front plane
-        y0, y1 = -W / 2, W / 2
-        z_pl = p["plinth_height"]
-        bay = {"warming": p["warming_height"], "double_wall": 0.016}.get(design, p["drawer_height"])
-        z_dt = z_pl + bay  # drawer top (double wall: a trim band under the lower door)
-        reach = HANDLE.standoff + 2 * HANDLE.bar_radius + 0.014  # the open door's handle hangs clear below
-        z_h = z_dt + reach  # hinge of the (lower) door
-        gap_top = 0.005 + ft * ft / (2 * 0.3)  # the door's top back edge rises ~ft^2/2h when opening
-        if double:  # two equal doors, a trim strip between them, a shallow fascia on top
-            panel_h = 0.35 * p["panel_fraction"]
-            door_h = (H - z_h - 0.02 - 0.004 - reach - gap_top - panel_h) / 2
-            z_mid = z_h + door_h + 0.02  # top of the lower oven's frame
-            lower = dict(xs=(xb, xf, xd1), ys=(y0, y1), zs=(z_pl, z_dt, z_h, z_h + door_h, z_mid), H=H)
-            z_h = z_mid + 0.004 + reach
-            z_dtop = z_h + door_h
-            base = z_mid
-        else:
-            panel_h = p["panel_fraction"] * (H - z_h)
-            z_dtop = H - 0.045 if rng_style else H - panel_h - gap_top
-            base = z_pl
-        zs = (base, base if double else z_dt, (base if double else z_dt) + 0.004, z_h)
-        cav = self._section((xb, xf, xd1, y0, y1), zs, z_dtop, H - T, H - T if rng_style else H, keep_base=not double)
-        if double:
-            self.grow(style, **lower)
-        if design == "range" and style.one("drawer"):
-            self.grow(style.one("drawer"), xs=(xb, xf, xd1), ys=(y0, y1), zs=(z_pl, z_dt))
-        elif design == "warming":
-            self.grow(style.one("warming_drawer"), xs=(xb, xf, xd1), ys=(y0, y1), zs=(z_pl, z_dt))
-        elif not double:  # a fixed drawer front with a trim line
-            self.extend("body", self.steel([g.box_between([xf - T, y0, z_pl], [xd1, y1, z_dt], "body", bevel=0.002)
-                                            .replace(sheet=A.OVEN_SHEET),
-                                            g.box_between([xd1, -0.3 * W, z_dt - 0.03],
-                                                          [xd1 + 0.002, 0.3 * W, z_dt - 0.025], "trim")]))
-        self.grow(node.one("door"), box=(xd1 - ft, xd1, y0 + 0.003, y1 - 0.003, z_h, z_dtop))
-        self.grow(node.one("racks"), cav=cav)
-        if rng_style:
-            panel = ((xb, xb + BACKGUARD), (H, H + panel_h))
-        else:
-            panel = ((xf, xd1), (z_dtop + gap_top, H))
-        front = self.grow(node.one("control_panel"), xs=panel[0], ys=(y0 + 0.003, y1 - 0.003), zs=panel[1])
-        if not double:
-            self.grow(style, xs=(xb, xf, xd1), ys=(y0, y1), z_dtop=z_dtop + gap_top, front=front, H=H)
-        else:
-            self.extend("body", self.steel([g.box_between([xb, y0, H - T], [xf - T, y1, H], "body")
-                                            .replace(sheet=A.OVEN_SHEET)]))
-
-    def _section(self, xs, zs, z_dtop, ztop, frame_top, keep_base=True):
-        """One oven's casing (sides, back, floor, front frame, liner) from ``zs[0]`` up; returns its cavity.
-        ``keep_base``: with the plinth and the feet (the lowest section)."""
-        xb, xf, xd1, y0, y1 = xs
-        ft = self.p["door_thickness"]
-        z_h = zs[3]
-        cav = (xb + T + 0.04, xf - T, y0 + T + 0.03, y1 - T - 0.03, z_h + max(ft + 0.015, 0.05), z_dtop - 0.05)
-        pieces = A.oven_casing((xb, xf, xd1, y0, y1, ztop), zs, cav, GAP_DOOR, frame_top)
-        if not keep_base:
-            pieces = [pc for pc in pieces if pc.material not in ("plinth", "feet")]
-        # the trim strip and the kick plinth are folded sheet too, not solid blocks (a solid 76 cm trim strip
-        # weighed ~20 kg: ranges came out at 150-185 kg against 60-75 kg real)
-        pieces = [pc.replace(sheet=A.OVEN_SHEET) if pc.material in ("body", "plinth") and not pc.sheet else pc
-                  for pc in pieces]
-        pieces = self.steel(pieces)  # a painted casing is painted steel (a painted wall oven weighed 20 kg)
+    def _body(self, pieces):
+        """The body part: added by the first oven section, extended after."""
         if "body" in self.bp.parts:
             self.extend("body", pieces)
         else:
             self.add("body", "body", pieces)
-        return cav
+
+    def oven(self, node):
+        p = self.p
+        finish = p["body_finish"]
+        design = node.choice
+        style = node.one(design)
+        st = OV.stack(p["width"], p["depth"], p["height"], p["door_thickness"], design, p["panel_fraction"],
+                      p["plinth_height"], p["drawer_height"], p["warming_height"], p["lower_height"])
+        rng_style, double = design in ("range", "warming"), st.lower is not None
+        H = st.H
+        pieces, cav = OV.section((*st.xs, *st.ys), st.zs, st.z_dtop, H - OV.T, H - OV.T if rng_style else H,
+                                 p["door_thickness"], finish, keep_base=not double)
+        self._body(pieces)
+        if double:
+            self.grow(style, **st.lower)
+        bay = dict(xs=st.xs, ys=st.ys, zs=(st.z_pl, st.z_dt))
+        if design == "range" and style.one("drawer"):
+            self.grow(style.one("drawer"), **bay)
+        elif design == "warming":
+            self.grow(style.one("warming_drawer"), **bay)
+        elif not double:  # a fixed drawer front with a trim line
+            self.extend("body", OV.fixed_drawer_front(st, finish))
+        self.grow(node.one("door"), box=st.door)
+        self.grow(node.one("racks"), cav=cav)
+        front = self.grow(node.one("control_panel"), xs=st.panel[0], ys=st.door[2:4], zs=st.panel[1])
+        if not double:
+            self.grow(style, xs=st.xs, ys=st.ys, z_dtop=st.z_dtop + st.gap_top, front=front, H=H)
+        else:
+            self.extend("body", OV.top_cover(st.xs, st.ys, H, finish))
 
     def double_wall(self, node, xs, ys, zs, H):
         """The lower oven of a double wall oven: its casing, door and racks (the upper oven is the usual one)."""
-        xb, xf, xd1 = xs
-        y0, y1 = ys
-        z_pl, z_dt, z_h, z_top, z_mid = zs
-        cav = self._section((xb, xf, xd1, y0, y1), (z_pl, z_pl, z_dt, z_h), z_top, z_mid, z_mid)
-        self.grow(node.one("lower_door"), box=(xd1 - self.p["door_thickness"], xd1, y0 + 0.003, y1 - 0.003, z_h, z_top))
+        pieces, cav, door = OV.lower_section(dict(xs=xs, ys=ys, zs=zs), self.p["door_thickness"],
+                                             self.p["body_finish"])
+        self._body(pieces)
+        self.grow(node.one("lower_door"), box=door)
         self.grow(node.one("lower_racks"), cav=cav)
 
     def lower_door(self, node, box):
@@ -235,36 +174,20 @@ class OvenLayout(A.PanelNodes):
         self.racks(node, cav, prefix="lower_", door="lower_door")
 
     def range(self, node, xs, ys, z_dtop, front, H):
-        xb, xf, xd1 = xs
-        self.extend("body", self.steel([g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop")
-                                        .replace(sheet=A.OVEN_SHEET),
-                                        g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body")
-                                        .replace(sheet=A.OVEN_SHEET)]))  # trim strip
-        # a vent slot strip along the back of the cooktop (the oven vent of a real range)
-        self.extend("body", [g.box_between([front + 0.004, y - 0.004, H], [front + 0.01, y + 0.004, H + 0.002], "trim")
-                             for y in np.linspace(ys[0] + 0.08, ys[1] - 0.08, 9)])
-        self.grow(node.one("cooktop"), xs=(front + 0.012 + 0.012, xd1 - 0.015), ys=(ys[0] + 0.02, ys[1] - 0.02), H=H)
+        plate, vent, area = OV.range_top(xs, ys, z_dtop, front, H, self.p["body_finish"])
+        self.extend("body", plate)
+        self.extend("body", vent)
+        self.grow(node.one("cooktop"), **area, H=H)
 
     warming = range
 
     def wall(self, node, xs, ys, z_dtop, front, H):
-        self.extend("body", self.steel([g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body")
-                                        .replace(sheet=A.OVEN_SHEET)]))
+        self.extend("body", OV.top_cover(xs, ys, H, self.p["body_finish"]))
 
     def cooktop(self, node, xs, ys, H):
         """Burners in columns; with grates, one over each column."""
-        p = self.p
-        n = grates(p, None)
-        gw = (ys[1] - ys[0] - (n - 1) * GRATE_GAP) / n
-        depth = xs[1] - xs[0]
-        columns = []
-        for k, per in enumerate(burners_per_grate(n)):
-            ga = ys[0] + k * (gw + GRATE_GAP)
-            r_burn = min(gw / 2 - 0.022, 0.35 * depth / per, 0.055)
-            bx = [xs[0] + depth * (j + 0.5) / per for j in range(per)]
-            for j, x in enumerate(bx):
-                self.extend("body", A.burner(x, ga + gw / 2, H, r_burn * (1.0 if (j + k) % 2 == 0 else 0.8)))
-            columns.append(((ga, ga + gw), bx))
+        pieces, columns = OV.burner_columns(xs, ys, H, burners_per_grate(grates(self.p, None)))
+        self.extend("body", pieces)
         if node.one("grates"):
             self.grow(node.one("grates"), xs=xs, columns=columns, H=H)
 
@@ -276,70 +199,37 @@ class OvenLayout(A.PanelNodes):
         """A loose cast grate: it lifts straight off its feet (clear of the burner caps), then has a little
         play forward and sideways (a lift first, then free; not a slide across the cooktop)."""
         p = self.p
-        (ga, gb), bx = col
-        z0 = H + 0.002
-        name = self.add(f"grate_{k}", "grate", A.grate(xs, (ga, gb), z0, bx))
-        side = min(GRATE_SIDE, 0.5 * GRATE_GAP - 0.004)
-        self.join(J.limited_floating("body", name, ((xs[0] + xs[1]) / 2, (ga + gb) / 2, z0),
-                                     ((0, 0, 1), (1, 0, 0), (0, 1, 0)),
+        pieces, origin, side = OV.grate(xs, col, H)
+        name = self.add(f"grate_{k}", "grate", pieces)
+        self.join(J.limited_floating("body", name, origin, ((0, 0, 1), (1, 0, 0), (0, 1, 0)),
                                      ((0.0, p["grate_lift"]), (0.0, p["grate_play"]), (-side, side))))
 
     def drawer(self, node, xs, ys, zs, warming=False):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
         warming drawer: an enamel tray, a bar handle like the door's and a marking strip."""
         p = self.p
-        (xb, xf, xd1), (y0, y1), (z_pl, z_dt) = xs, ys, zs
-        c = 0.004
-        fx0, tx0 = xf + 0.003, xb + T + 0.015
-        pieces = A.storage_drawer((fx0, xd1, y0 + 0.003, y1 - 0.003, z_pl + 0.002, z_dt),
-                                  (tx0, y0 + T + c, y1 - T - c, z_pl + T + c, z_dt - 0.012))
-        if warming:  # an enamel tray (before the painted-steel scaling: scaled, a painted oven's tray weighed 47 kg)
-            pieces = [pc.replace(material="interior") if k else pc for k, pc in enumerate(pieces)]
-        pieces = self.steel(pieces)
-        if warming:
-            size = hardware.HandleSize(standoff=0.03, bar_radius=0.008, post_radius=0.0065, inset=0.02)
-            zc = (z_pl + z_dt) / 2 + 0.01
-            pull = hardware.bar_handle(p["handle_length"] * (y1 - y0), "handle", size).attached(
-                "mount", to=Frame.at((xd1, 0.0, zc), z=(1, 0, 0), x=(0, 1, 0)))
-            pieces.append(g.box_between([xd1, -0.06, z_pl + 0.014], [xd1 + 0.0008, 0.06, z_pl + 0.02], "display"))
-        else:
-            pull = hardware.edge_pull(0.5 * (y1 - y0), "handle", depth=0.016, lip=0.014).attached(
-                "mount", to=Frame.at((xd1, 0.0, z_dt - 0.022), z=(1, 0, 0), x=(0, 1, 0)))
-        self.add("drawer", "drawer", pieces + [pc.replace(sheet=HANDLE_TUBE) if warming else pc
-                                               for pc in pull.parts[pull.root].pieces])
-        self.slide("body", "drawer", Frame.at((xd1, 0.0, z_pl), z=(1, 0, 0)), upper=p["drawer_travel"] * (fx0 - tx0))
+        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"], p["body_finish"])
+        self.add("drawer", "drawer", pieces)
+        self.slide("body", "drawer", at, upper=p["drawer_travel"] * depth)
 
     def warming_drawer(self, node, xs, ys, zs):
         self.drawer(node, xs, ys, zs, warming=True)
 
     def door(self, node, box, name="door"):
         p = self.p
-        x0, x1, y0, y1, z0, z1 = box
-        m = p["window_margin"]
-        hole = (y0 + m, z0 + 1.2 * m, y1 - m, z1 - 1.6 * m)
-        bar = hardware.bar_handle(p["handle_length"] * (y1 - y0), "handle", HANDLE).attached(
-            "mount", to=Frame.at((x1, 0.0, z1 - 0.045), z=(1, 0, 0), x=(0, 1, 0)))
-        self.add(name, "door", self.steel(A.oven_door(box, hole)) + [pc.replace(sheet=HANDLE_TUBE)
-                                                         for pc in bar.parts[bar.root].pieces])
+        _, x1, _, _, z0, _ = box
+        self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"], p["body_finish"]))
         # hinged on the front face at the bottom edge: about +Y the top falls forward (+X)
         self.hinge("body", name, Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)
 
     def racks(self, node, cav, prefix="", door="door"):
-        cx0, cx1, cy0, cy1, cz0, cz1 = cav
         kids = node.of("rack")
-        levels = len(kids) + 1
-        lo, hi = cz0 + 0.045, cz1 - 0.07
-        rails = [lo + k * (hi - lo) / (levels - 1) for k in range(levels)]
-        empty = int(self.rng.integers(0, levels))  # one rail level stays free
-        w, h = A.RAIL
-        for z in rails:
-            for ya, yb in ((cy0, cy0 + w), (cy1 - w, cy1)):
-                self.extend("body", [g.box_between([cx0 + 0.01, ya, z - h], [cx1 - 0.004, yb, z], "interior")])
-        used = [z for lvl, z in enumerate(rails) if lvl != empty]
-        for k, (kid, z) in enumerate(zip(kids, used, strict=True)):
-            # the racks' front wire sits ~5 cm behind the door
-            self.grow(kid, k=k, xs=(cx0 + 0.02, cx1 - 0.035), ys=(cy0 + 0.004, cy1 - 0.004),
-                      zc=z + 0.002 + A.OVEN_RACK_R, prefix=prefix, door=door)
+        empty = int(self.rng.integers(0, len(kids) + 1))  # one rail level stays free
+        rails, slots = OV.rack_levels(cav, len(kids), empty)
+        for rail in rails:
+            self.extend("body", [rail])
+        for k, (kid, slot) in enumerate(zip(kids, slots, strict=True)):
+            self.grow(kid, k=k, **slot, prefix=prefix, door=door)
 
     def rack(self, node, k, xs, ys, zc, prefix="", door="door"):
         name = self.add(f"{prefix}rack_{k}", "rack", A.oven_rack(xs, ys, zc))
@@ -351,43 +241,11 @@ class OvenLayout(A.PanelNodes):
         """A hollow housing; knobs left and right, display and buttons in the middle. Returns the x of
         the knobs' (and buttons') front, for the cooktop layout."""
         p = self.p
-        xp, (ya, yb), (za, zb) = xs[1], ys, zs
-        ph, zm = zb - za, (za + zb) / 2
-        kids = node.one("knobs").of("knob")
-        n_k = len(kids)
         buttons = node.one("buttons")
-        n_b = len(buttons.of("button")) if buttons else 0
-        centre_w = (max(0.11, n_b * 0.028) + 0.03) if n_b else 0.0
-        pitch = (yb - ya - 2 * KNOB_MARGIN - centre_w) / n_k
-        r = min(p["knob_radius"], 0.4 * pitch, 0.5 * ph - 0.012)
-        left = (n_k + 1) // 2 if n_b else n_k
-        panel, front = A.Panel(), xp
-        for i in range(n_k):
-            y = ya + KNOB_MARGIN + (centre_w if n_b and i >= left else 0.0) + (i + 0.5) * pitch
-            stem = max(0.003, 0.2 * r)
-            panel.holes.append(A.hole_around(y, zm, (stem, stem)))
-            pieces, reach = A.cooker_knob(xp, y, zm, r, stem, p["knob_style"])
-            front = max(front, xp + reach)
-            panel.dials.append((f"knob_{i}", pieces, Frame.at((xp, y, zm), z=(1, 0, 0))))
-        if n_b:
-            yc = ya + KNOB_MARGIN + left * pitch + centre_w / 2
-            inner = centre_w - 0.03
-            dh, bh = min(0.03, 0.3 * ph), min(0.016, 0.22 * ph)
-            zd = zm + 0.004 + dh / 2 if ph > 0.1 else zm + bh
-            panel.decor.append(g.box_between([xp - 0.001, yc - inner / 2, zd - dh / 2],
-                                             [xp + 0.0015, yc + inner / 2, zd + dh / 2], "display"))
-            zbt = zd - dh / 2 - 0.008 - bh / 2
-            half = (min(0.02, inner / n_b - 2 * A.CLEAR - 0.004) / 2, bh / 2)
-            press = max(0.003, bh / 4)
-            for j in range(n_b):
-                y = yc - inner / 2 + (j + 0.5) * inner / n_b
-                panel.holes.append(A.hole_around(y, zbt, half))
-                piece = g.box_between([xp - A.BEHIND, y - half[0], zbt - half[1]],
-                                      [xp + press + 0.002, y + half[0], zbt + half[1]], "button", bevel=0.0015)
-                at = Frame.at((xp + press + 0.002, y, zbt), z=(-1, 0, 0))
-                panel.buttons.append((f"button_{j}", piece, at, press))
-            front = max(front, xp + press + 0.002)
-        self.add("control_panel", "control_panel", A.panel_housing(xs, ys, zs, panel.holes) + panel.decor)
+        pieces, panel, front = OV.control_panel(xs, ys, zs, len(node.one("knobs").of("knob")),
+                                                len(buttons.of("button")) if buttons else 0, p["knob_radius"],
+                                                p["knob_style"])
+        self.add("control_panel", "control_panel", pieces)
         self.fix("body", "control_panel")
         self.grow(node.one("knobs"), made=panel.dials)
         if buttons:
@@ -404,8 +262,7 @@ class OvenLayout(A.PanelNodes):
         if self.p["knob_motion"] == "continuous":
             self.spin("control_panel", name, at, role="knob")
         else:
-            self.hinge("control_panel", name, at, upper=math.pi / 4, lower=-math.pi / 4, role="knob")
-
+            self.hinge("control_panel", name, at, upper=OV.KNOB_TURN, lower=-OV.KNOB_TURN, role="knob")
 
 
 CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS,

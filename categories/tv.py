@@ -14,14 +14,12 @@ tilts or is ``rigid`` (feet and swivel-only pedestals); a wall mount always tilt
 camera rises out of a pocket behind the top edge. The panel is ``flat`` or ``curved`` (``panel_shape``:
 facets along an arc of ``curve_radius``, its push buttons then in the bottom band's flat middle).
 Optional push buttons on the right side rim or the bezel's bottom band.
-Parts: ``categories/parts/displays.py``.
+Parts: ``categories/parts/displays.py`` (screen, stand and wall-mount builders, the layout table ``TV``).
 """
 
 from __future__ import annotations
 
 import math
-
-import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
@@ -95,70 +93,43 @@ MATERIALS = {
     "button": "plastic:black|dark_grey", "arm": "painted:black|charcoal", "camera": "plastic:black|dark_grey",
 }
 
-ASPECT = {"16:9": 9 / 16, "4:3": 3 / 4}
-# mounting height of a wall TV: the screen's centre at seated eye level, about 42 in (1.07 m) off the floor
-# (Sanus and Crutchfield TV mounting-height guides); a very tall screen keeps its bottom 30 cm up
-WALL_CENTRE = 1.07
-WALL_BOTTOM_MIN = 0.3
-ARM_LINK_MIN = 0.14  # shortest link of an articulating wall arm (3-link arms reach 0.45-0.65 m: Sanus VLF628,
-#                      Vogel's Wall 3345 spec sheets)
-
-
 class TVLayout(Layout):
     def tv(self, node):
         p = self.p
-        W, D = p["width"], p["depth"]
-        H = W * ASPECT[p["aspect"]]
+        W = p["width"]
         style = node.choice
         wall = style == "wall_mount"
-        if wall:  # hung on the wall: the screen's centre at seated eye height, its bottom at least 30 cm up
-            self.bp.elevation = max(WALL_BOTTOM_MIN, WALL_CENTRE - H / 2)
         stand = node.one(style)
         adjust = stand.one("height_adjust") if style == "single_post" else None
-        base_t = 0.0 if wall else float(np.clip(0.008 + 0.006 * W, 0.01, 0.02))  # plate / foot height
-        sleeve_h = p["slide"] + 0.03
-        clearance = max(p["clearance"], sleeve_h + 0.015) if adjust else p["clearance"]
-        zs0 = base_t + clearance
-        zs1 = zs0 + H
-        xf, xs = D / 2, -D / 2  # front and back face of the thin panel
-        hw, hh = p["back_width"] * W, p["back_height"] * H
-        zh0 = zs0 + (0.06 if wall else 0.04) * H  # electronics box
-        zh1 = zh0 + hh
-        xhb = xs - p["back_depth"]
-        x_bk = xhb - 0.004  # back face of the VESA plate (part of the connector)
-        # the tilt barrel, its pivot behind the back: the fork clears the screen over the whole tilt
-        r_k = float(np.clip(0.008 + 0.004 * W, 0.01, 0.016))
-        e = (1.3 * r_k + 1.2 * r_k * math.sin(p["tilt"]) + S.GAP + 0.004) / math.cos(p["tilt"])
-        x_p = x_bk - e
-        z_p = min(max((zh0 + zh1) / 2 if not wall else zs0 + 0.5 * H, zh0 + 0.06), zh1 - 0.06)
+        f = S.screen_frame(W, p["depth"], p["aspect"], wall, bool(adjust), p["clearance"], p["slide"],
+                           (p["back_width"], p["back_height"], p["back_depth"]), p["tilt"])
+        if wall:  # hung on the wall: the screen's centre at seated eye height, its bottom at least 30 cm up
+            self.bp.elevation = S.wall_elevation(f["H"])
+        xf, xs, (zs0, zs1) = f["xf"], f["xs"], f["zs"]
+        hw, hh, zh0, zh1 = f["hump"]
         buttons = node.one("buttons")
         curved = node.one("panel").choice == "curved"
         place = "bottom" if curved else p["button_place"]  # a curved panel's buttons: its flat middle
         band = S.bottom_band(p["bezel"], bool(buttons) and place == "bottom")
         layout = S.button_layout(place, len(buttons.of("button")), W, xf, xs, zs0, band) if buttons else []
         if curved:
-            n = len(layout)
-            layout = [((0.024 * (k - (n - 1) / 2), c[1]), h) for k, (c, h) in enumerate(layout)]
-            flat = max(0.5 * hw, 0.012 * n + 0.04)
-            pieces = S.curved_screen(W, (xf, xs, xhb), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
+            layout, flat = S.curved_keys(layout, hw)
+            pieces = S.curved_screen(W, (xf, xs, f["xhb"]), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
                                      p["curve_radius"], flat)
         else:
-            pieces = S.screen(W, (xf, xs, xhb), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
+            pieces = S.screen(W, (xf, xs, f["xhb"]), (zs0, zs1), (hw, zh0, zh1), p["bezel"], band, layout,
                               p["button_place"])
         camera = node.one("camera")
         self.add("screen", "screen", pieces[-1:] + (S.camera_pocket(xs, zs1) if camera else []))
         # the electronics box (and a camera's pocket); the panel node adds the panel
         self.grow(node.one("panel"), pieces=pieces[:-1])
-        if style == "two_legs":
-            L_k = 2 * (p["leg_spread"] * W / 2 - S.LEG_W / 2 - S.GAP)  # between the uprights
-        else:
-            L_k = float(np.clip(0.12 * W, 0.08, 0.16))
-        self.grow(node.one("connector"), pivot=(x_p, z_p), r_k=r_k, xs2=(x_bk, xhb), L_k=L_k,
-                  vesa=min(hw - 0.02, 0.8 * L_k + 0.1), hump=(hh, zh0, zh1))
-        geo = dict(pivot=(x_p, z_p), r_k=r_k, L_k=L_k, W=W, xf=xf, xs=xs, x_bk=x_bk, base_t=base_t, zs=(zs0, zs1),
-                   hump=(hw, zh0, zh1), sleeve_h=sleeve_h, camera=bool(camera))
+        L_k = S.fork_width(style == "two_legs", W, p["leg_spread"])
+        self.grow(node.one("connector"), pivot=f["pivot"], r_k=f["r_k"], xs2=(f["x_bk"], f["xhb"]), L_k=L_k,
+                  vesa=S.vesa_width(hw, L_k), hump=(hh, zh0, zh1))
+        geo = dict(pivot=f["pivot"], r_k=f["r_k"], L_k=L_k, W=W, xf=xf, xs=xs, x_bk=f["x_bk"], base_t=f["base_t"],
+                   zs=(zs0, zs1), hump=(hw, zh0, zh1), sleeve_h=f["sleeve_h"], camera=bool(camera))
         parent, tilt = self.grow(stand, **geo)
-        self.grow(stand.one("tilt") or stand.one("rigid"), parent=parent, pivot=(x_p, z_p), upper=tilt)
+        self.grow(stand.one("tilt") or stand.one("rigid"), parent=parent, pivot=f["pivot"], upper=tilt)
         self.fix("connector", "screen")
         if buttons:
             self.grow(buttons, layout=layout, W=W, xf=xf, place=place)
@@ -179,7 +150,7 @@ class TVLayout(Layout):
     def camera(self, node, xs, zs1):
         """A pop-up camera: rises out of its pocket above the top edge (prismatic +Z, rests on its lower stop)."""
         self.add("camera", "camera", S.camera(xs, zs1))
-        self.slide("screen", "camera", Frame.at((xs - 0.004, 0.0, zs1 - 0.001), z=(0, 0, 1)), upper=S.CAMERA["rise"],
+        self.slide("screen", "camera", Frame.at(S.camera_slide(xs, zs1), z=(0, 0, 1)), upper=S.CAMERA["rise"],
                    role="telescope")
 
     def panel(self, node, pieces):
@@ -201,26 +172,17 @@ class TVLayout(Layout):
     def single_post(self, node, pivot, r_k, L_k, W, xf, x_bk, base_t, zs, sleeve_h, **_):
         p = self.p
         x_p, z_p = pivot
-        bw = max(0.25, p["base_width"] * W)
-        bd = p["base_depth"] * min(1.0, 0.6 + 0.3 * W)
-        xc = min(x_p + 0.35 * bd * 0.5, (x_p + xf) / 2 + 0.02)
-        pieces = [S.base_plate(p["base_shape"], bw, bd, base_t, x_p, xc)]
-        z_fork0 = z_p - r_k - S.GAP - S.FORK_T  # bottom of the fork bridge
-        room = x_bk - S.GAP - x_p  # the neck stays behind the screen
+        pieces = [S.pedestal_base(p["base_shape"], p["base_width"], p["base_depth"], W, base_t, x_p, xf)]
         adj = node.one("height_adjust")
         if adj is None:  # the neck swivels on a bearing disc on the base (swivel pedestal stands)
-            nx, ny = min(0.012, room - 0.002), float(np.clip(0.05 * W, 0.03, 0.09))
-            xc, r_c, z_b = x_p - 0.015, 0.5 * math.hypot(0.03 + 2 * nx, ny) + 0.006, base_t + 0.006
-            self.add("stand", "stand", pieces + [g.cylinder([xc, 0, base_t - 0.001], [xc, 0, z_b], r_c, "stand", 32)])
-            neck = g.box_between([x_p - 0.03 - nx, -ny / 2, z_b + S.GAP], [x_p + nx, ny / 2, z_fork0 + 0.001], "stand",
-                                 bevel=0.003)
-            self.add("post", "stand", [neck] + S.fork(x_p, z_p, r_k, L_k, "stand"))
-            self.hinge("stand", "post", Frame.at((xc, 0.0, z_b)), upper=p["swivel"], lower=-p["swivel"], role="swivel")
+            disc, post, axis = S.swivel_neck(x_p, z_p, r_k, L_k, W, x_bk, base_t)
+            self.add("stand", "stand", pieces + [disc])
+            self.add("post", "stand", post)
+            self.hinge("stand", "post", Frame.at(axis), upper=p["swivel"], lower=-p["swivel"], role="swivel")
             return "post", p["tilt"]
-        r_post = min(0.02, room - 0.002)
-        self.add("stand", "stand", pieces + S.sleeve(x_p, r_post + S.GAP, base_t, sleeve_h))
-        return self.grow(adj, x_p=x_p, z_p=z_p, r_k=r_k, L_k=L_k, r_post=r_post, z0=base_t + 0.004 + S.GAP,
-                         z1=z_fork0 + 0.001)
+        sleeve, slot = S.post_sleeve(x_p, z_p, r_k, x_bk, base_t, sleeve_h)
+        self.add("stand", "stand", pieces + sleeve)
+        return self.grow(adj, x_p=x_p, z_p=z_p, r_k=r_k, L_k=L_k, **slot)
 
     def height_adjust(self, node, x_p, z_p, r_k, L_k, r_post, z0, z1):
         p = self.p
@@ -237,28 +199,15 @@ class TVLayout(Layout):
     def wall_mount(self, node, pivot, r_k, L_k, W, xs, x_bk, zs, hump, camera, **_):
         p = self.p
         x_p, z_p = pivot
-        hw, zh0, zh1 = hump
         arms = node.of("arm")
         n = len(arms)
-        r_a = S.ARM["radius"]
-        corners = np.array([[xs, s * W / 2, z] for s in (-1, 1) for z in zs]
-                           + [[x_bk, s * hw / 2, z] for s in (-1, 1) for z in (zh0, zh1)]
-                           + (S.camera_corners(xs, zs[1]) if camera else []))
+        corners = S.screen_corners(xs, W, zs, x_bk, hump, camera)
         if n == 0:  # a tilting mount: the fork on a bracket, as far off the wall as the full tilt needs
-            stand_off = 1.3 * r_k + S.FORK_T + 0.02
-            while True:
-                tilt, _ = S.wall_mount_ranges(corners, pivot, [], x_p - stand_off, p["tilt"], 0)
-                if tilt >= p["tilt"] - 1e-3 or stand_off > 0.3:
-                    break
-                stand_off += 0.01
-            self.add("wall_plate", "frame", S.tilt_bracket(x_p - stand_off, x_p, z_p, r_k, L_k))
+            pieces, tilt = S.tilt_mount(corners, pivot, r_k, L_k, p["tilt"])
+            self.add("wall_plate", "frame", pieces)
             return "wall_plate", tilt
-        reach = max(p["arm_length"], ARM_LINK_MIN * n) if n >= 3 else p["arm_length"]  # 3 links: each >= 14 cm
-        x_w = x_p - reach - (r_a + S.GAP + 0.004)  # front face of the wall plate
-        xa = x_w + r_a + S.GAP + 0.004  # first arm pivot
-        self.add("wall_plate", "frame", S.wall_plate(x_w, xa, z_p))
-        length = reach / n
-        pivots = [xa + i * length for i in range(n)]
+        x_w, pivots, length = S.arm_pivots(x_p, p["arm_length"], n)
+        self.add("wall_plate", "frame", S.wall_plate(x_w, pivots[0], z_p))
         tilt, swing = S.wall_mount_ranges(corners, pivot, pivots, x_w, p["tilt"], n)
         parent = "wall_plate"
         for i, arm in enumerate(arms):
@@ -267,7 +216,7 @@ class TVLayout(Layout):
         return parent, tilt
 
     def arm(self, node, i, parent, x0, x1, z_p, swing, fork, x_p, r_k):
-        end = x_p - 1.3 * r_k - 0.008 if fork is not None else x1 - S.ARM["radius"] - S.GAP - 0.012
+        end = S.arm_end(x1, fork is not None, x_p, r_k)
         name = self.add(f"arm_{i}", "arm", S.arm_link(x0, x1, z_p, end, fork))
         self.hinge(parent, name, Frame.at((x0, 0.0, z_p)), upper=swing, lower=-swing, role="swivel")
         return name

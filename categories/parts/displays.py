@@ -299,3 +299,187 @@ def tilt_bracket(x_w: float, x_p: float, z_p: float, r_k: float, L_k: float) -> 
     return [g.box_between([x_w - 0.006, -0.1, z_p - ph / 2], [x_w, 0.1, z_p + ph / 2], "arm", bevel=0.002),
             g.box_between([x_w - 0.001, -0.35 * L_k, z_p - hz], [x_fork + 0.001, 0.35 * L_k, z_p + hz], "arm"),
             *fork(x_p, z_p, r_k, L_k, "arm")]
+
+
+# -- a TV's layout: where the screen, the connector and the stand go ---------------------------------------
+ASPECT = {"16:9": 9 / 16, "4:3": 3 / 4}  # screen height / width
+TV = {
+    # mounting height of a wall TV: the screen's centre at seated eye level, about 42 in (1.07 m) off the floor
+    # (Sanus and Crutchfield TV mounting-height guides); a very tall screen keeps its bottom 30 cm up
+    "wall_centre": 1.07, "wall_bottom_min": 0.3,
+    # shortest link of an articulating wall arm (3-link arms reach 0.45-0.65 m: Sanus VLF628, Vogel's Wall 3345
+    # spec sheets)
+    "arm_link_min": 0.14,
+    "base_t": (0.008, 0.006, 0.01, 0.02),  # pedestal plate / foot height: a + b * W, clipped to [lo, hi]
+    "barrel": (0.008, 0.004, 0.01, 0.016),  # tilt barrel radius: a + b * W, clipped to [lo, hi]
+    "sleeve_over_slide": 0.03,  # a height-adjustable post's sleeve is this much taller than its travel
+    "over_sleeve": 0.015,  # the screen's bottom clears the sleeve's top by at least this
+    "box_over_bottom": (0.04, 0.06),  # the electronics box's bottom over the screen's, x H (stand, wall)
+    "vesa_plate": 0.004,  # the VESA plate behind the electronics box
+    "pivot_in_box": 0.06,  # the tilt pivot at least this far inside the box's top and bottom
+    "fork_back": (1.3, 1.2),  # the fork's reach behind the pivot: a * r + b * r * sin(tilt), + GAP + VESA plate
+    "fork_w": (0.12, 0.08, 0.16),  # a single post's fork: this share of W, clipped to [lo, hi]
+    "vesa": (0.02, 0.8, 0.1),  # VESA plate width: the box less a, or b * the fork's width + c
+    "curved_keys": (0.024, 0.012, 0.04),  # a curved panel's keys: pitch; its flat middle >= pitch * n + c
+    "camera_slide": (0.004, 0.001),  # the camera's slide origin behind the back and under the top edge
+    # a pedestal: at least 25 cm wide, its depth shrinks on small screens (0.6 + 0.3 W, at most 1), its
+    # centre 35 % of half its depth in front of the pivot, at most 2 cm in front of the middle of the panel
+    "pedestal": {"min_width": 0.25, "depth": (0.6, 0.3), "ahead": 0.35, "ahead_max": 0.02},
+    # a swivel neck (Samsung / LG swivel stands): at most 12 mm in front of the pivot (2 mm behind the screen),
+    # 5 % of W wide (30-90 mm), 30 mm behind the pivot; on a 6 mm bearing disc 15 mm behind the pivot
+    "neck": {"front": 0.012, "room": 0.002, "width": (0.05, 0.03, 0.09), "back": 0.03, "disc": 0.006,
+             "disc_back": 0.015},
+    "post": 0.02,  # a height-adjustable post's radius, at most
+    "sleeve_floor": 0.004,  # the post's bottom over the base, past the sleeve's floor
+    "into_fork": 0.001,  # the neck or post reaches this far into the fork's bridge
+    # a tilting wall mount: the fork 1.3 barrel radii + the cheek + 2 cm off the plate, 1 cm more until the full
+    # tilt clears the wall (1 mrad short of it is enough), at most 30 cm
+    "tilt_mount": {"standoff": 0.02, "step": 0.01, "max": 0.3, "tol": 1e-3},
+    "plate_room": 0.004,  # a wall arm's first barrel clears the wall plate by GAP and this
+    "arm_end": (0.008, 0.012),  # an arm beam ends this far short of the tilt fork / the next lugs
+}
+
+
+def wall_elevation(H: float) -> float:
+    """A wall TV's elevation: its centre at seated eye height, its bottom at least ``TV["wall_bottom_min"]`` up."""
+    return max(TV["wall_bottom_min"], TV["wall_centre"] - H / 2)
+
+
+def screen_frame(W: float, D: float, aspect: str, wall: bool, adjust: bool, clearance: float, slide: float,
+                 back: tuple[float, float, float], tilt: float) -> dict:
+    """Where a TV's screen, electronics box and tilt pivot go: the screen ``W`` wide (``aspect``), ``D`` thick,
+    ``clearance`` over a pedestal's base (a height-adjustable post's sleeve ``slide`` + 3 cm tall under it) or
+    on a wall; the electronics box (``back``: width and height shares, depth) behind it; the tilt barrel's
+    pivot behind the VESA plate, far enough back for its fork to clear the screen over the whole ``tilt``."""
+    H = W * ASPECT[aspect]
+    a, b, lo, hi = TV["base_t"]
+    base_t = 0.0 if wall else float(np.clip(a + b * W, lo, hi))  # plate / foot height
+    sleeve_h = slide + TV["sleeve_over_slide"]
+    clearance = max(clearance, sleeve_h + TV["over_sleeve"]) if adjust else clearance
+    zs0 = base_t + clearance
+    zs1 = zs0 + H
+    xf, xs = D / 2, -D / 2  # front and back face of the thin panel
+    hw, hh = back[0] * W, back[1] * H
+    stand_share, wall_share = TV["box_over_bottom"]
+    zh0 = zs0 + (wall_share if wall else stand_share) * H  # electronics box
+    zh1 = zh0 + hh
+    xhb = xs - back[2]
+    x_bk = xhb - TV["vesa_plate"]  # back face of the VESA plate (part of the connector)
+    a, b, lo, hi = TV["barrel"]
+    r_k = float(np.clip(a + b * W, lo, hi))
+    fa, fb = TV["fork_back"]
+    e = (fa * r_k + fb * r_k * math.sin(tilt) + GAP + TV["vesa_plate"]) / math.cos(tilt)
+    x_p = x_bk - e
+    m = TV["pivot_in_box"]
+    z_p = min(max((zh0 + zh1) / 2 if not wall else zs0 + 0.5 * H, zh0 + m), zh1 - m)
+    return dict(H=H, base_t=base_t, sleeve_h=sleeve_h, zs=(zs0, zs1), xf=xf, xs=xs, xhb=xhb, x_bk=x_bk,
+                hump=(hw, hh, zh0, zh1), r_k=r_k, pivot=(x_p, z_p))
+
+
+def curved_keys(layout: list, hump_w: float) -> tuple[list, float]:
+    """A curved panel's keys along its flat middle (``layout`` as :func:`button_layout` on the bottom), and
+    that flat middle's width (half the electronics box, at least what the keys need)."""
+    pitch, per_key, spare = TV["curved_keys"]
+    n = len(layout)
+    return [((pitch * (k - (n - 1) / 2), c[1]), h) for k, (c, h) in enumerate(layout)], \
+        max(0.5 * hump_w, per_key * n + spare)
+
+
+def fork_width(two_legs: bool, W: float, leg_spread: float) -> float:
+    """The tilt fork's width: between the uprights of two legs ``leg_spread`` x W apart, else a share of W."""
+    if two_legs:
+        return 2 * (leg_spread * W / 2 - LEG_W / 2 - GAP)  # between the uprights
+    share, lo, hi = TV["fork_w"]
+    return float(np.clip(share * W, lo, hi))
+
+
+def vesa_width(hump_w: float, L_k: float) -> float:
+    """The VESA plate's width: inside the electronics box, scaled with the fork."""
+    a, b, c = TV["vesa"]
+    return min(hump_w - a, b * L_k + c)
+
+
+def camera_slide(xs: float, zs1: float):
+    """The pop-up camera's slide origin (it rises along +Z from there)."""
+    dx, dz = TV["camera_slide"]
+    return (xs - dx, 0.0, zs1 - dz)
+
+
+def pedestal_base(shape: str, base_width: float, base_depth: float, W: float, base_t: float, x_p: float,
+                  xf: float) -> g.Piece:
+    """A pedestal's base plate (:func:`base_plate`): at least 25 cm wide, shallower under a small screen,
+    centred a little in front of the pivot."""
+    d = TV["pedestal"]
+    bw = max(d["min_width"], base_width * W)
+    bd = base_depth * min(1.0, d["depth"][0] + d["depth"][1] * W)
+    xc = min(x_p + d["ahead"] * bd * 0.5, (x_p + xf) / 2 + d["ahead_max"])
+    return base_plate(shape, bw, bd, base_t, x_p, xc)
+
+
+def fork_bottom(z_p: float, r_k: float) -> float:
+    """Bottom of the tilt fork's bridge under the pivot."""
+    return z_p - r_k - GAP - FORK_T
+
+
+def swivel_neck(x_p: float, z_p: float, r_k: float, L_k: float, W: float, x_bk: float, base_t: float
+                ) -> tuple[g.Piece, list[g.Piece], tuple]:
+    """A swivel pedestal's neck: a bearing disc on the base (the stand's), the neck up to the fork (the
+    post's, with the fork) behind the screen; returns both and the swivel axis' origin."""
+    n = TV["neck"]
+    room = x_bk - GAP - x_p  # the neck stays behind the screen
+    share, lo, hi = n["width"]
+    nx, ny = min(n["front"], room - n["room"]), float(np.clip(share * W, lo, hi))
+    xc, r_c, z_b = x_p - n["disc_back"], 0.5 * math.hypot(n["back"] + 2 * nx, ny) + n["disc"], base_t + n["disc"]
+    disc = g.cylinder([xc, 0, base_t - 0.001], [xc, 0, z_b], r_c, "stand", 32)
+    neck = g.box_between([x_p - n["back"] - nx, -ny / 2, z_b + GAP],
+                         [x_p + nx, ny / 2, fork_bottom(z_p, r_k) + TV["into_fork"]], "stand", bevel=0.003)
+    return disc, [neck] + fork(x_p, z_p, r_k, L_k, "stand"), (xc, 0.0, z_b)
+
+
+def post_sleeve(x_p: float, z_p: float, r_k: float, x_bk: float, base_t: float, sleeve_h: float
+                ) -> tuple[list[g.Piece], dict]:
+    """A height-adjustable pedestal's sleeve on the base (:func:`sleeve`) and where its post goes
+    (``r_post``, ``z0``, ``z1``: from the sleeve's floor into the fork)."""
+    room = x_bk - GAP - x_p  # the post stays behind the screen
+    r_post = min(TV["post"], room - TV["neck"]["room"])
+    return sleeve(x_p, r_post + GAP, base_t, sleeve_h), \
+        dict(r_post=r_post, z0=base_t + TV["sleeve_floor"] + GAP, z1=fork_bottom(z_p, r_k) + TV["into_fork"])
+
+
+def screen_corners(xs: float, W: float, zs, x_bk: float, hump, camera: bool) -> np.ndarray:
+    """The screen's back corners, the electronics box's and (``camera``) the camera's: what must clear the wall."""
+    hw, zh0, zh1 = hump
+    return np.array([[xs, s * W / 2, z] for s in (-1, 1) for z in zs]
+                    + [[x_bk, s * hw / 2, z] for s in (-1, 1) for z in (zh0, zh1)]
+                    + (camera_corners(xs, zs[1]) if camera else []))
+
+
+def tilt_mount(corners: np.ndarray, pivot, r_k: float, L_k: float, tilt: float) -> tuple[list[g.Piece], float]:
+    """A tilting wall mount: the fork on a bracket (:func:`tilt_bracket`), as far off the wall as the full
+    ``tilt`` needs; returns its pieces and the tilt it allows."""
+    x_p, z_p = pivot
+    t = TV["tilt_mount"]
+    stand_off = TV["fork_back"][0] * r_k + FORK_T + t["standoff"]
+    while True:
+        got, _ = wall_mount_ranges(corners, pivot, [], x_p - stand_off, tilt, 0)
+        if got >= tilt - t["tol"] or stand_off > t["max"]:
+            break
+        stand_off += t["step"]
+    return tilt_bracket(x_p - stand_off, x_p, z_p, r_k, L_k), got
+
+
+def arm_pivots(x_p: float, arm_length: float, n: int) -> tuple[float, list[float], float]:
+    """An articulating wall arm of ``n`` links reaching ``arm_length`` (3 links: each at least
+    ``TV["arm_link_min"]``) to the tilt pivot ``x_p``: the wall plate's face, the link pivots, a link's length."""
+    reach = max(arm_length, TV["arm_link_min"] * n) if n >= 3 else arm_length
+    r_a = ARM["radius"]
+    x_w = x_p - reach - (r_a + GAP + TV["plate_room"])  # front face of the wall plate
+    xa = x_w + r_a + GAP + TV["plate_room"]  # first arm pivot
+    length = reach / n
+    return x_w, [xa + i * length for i in range(n)], length
+
+
+def arm_end(x1: float, last: bool, x_p: float, r_k: float) -> float:
+    """Where an arm link's beam ends: short of the tilt fork (the last link) or of the next link's lugs."""
+    to_fork, to_lugs = TV["arm_end"]
+    return x_p - TV["fork_back"][0] * r_k - to_fork if last else x1 - ARM["radius"] - GAP - to_lugs

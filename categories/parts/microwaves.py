@@ -1,0 +1,403 @@
+"""Microwave parts: the counter-top / over-the-range body and where its door, fascia and cavity go,
+the drawer model's body and drawer, the over-the-range vent grille and grease filters, and the
+control panels (a column of display, keys and dials, or a drawer model's horizontal strip).
+
+World-aligned like :mod:`.appliance`: X is depth (fronts face +X), Y width, Z up. Sizes come from
+:mod:`.appliance_sizes` (``MICROWAVE``), where each figure names its source.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from infmob_usd import geometry as g
+from infmob_usd.frames import Frame
+from infmob_usd.materials import FAMILIES
+
+from . import appliance as A
+from . import hardware
+from .appliance_sizes import MICROWAVE as M
+from .appliance_sizes import MICROWAVE_KEYS as K
+
+STEEL_DENSITY = 7850.0  # kg/m^3
+ROWS_ALWAYS_FIT = 3  # key rows a column panel always holds (shrinking the keys)
+STRIP_ROWS = 4  # key rows a drawer model's strip takes (two rows of up to six keys)
+
+
+def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
+    """(width, depth, height) of a design from the parameters' width, depth and height: counter-top
+    models use them; an over-the-range and a drawer model take the sizes of :data:`MICROWAVE`."""
+    if design == "over_the_range":
+        otr = M["over_the_range"]
+        return otr["width"], min(max(D, otr["depth"][0]), otr["depth"][1]), \
+            min(max(H + otr["taller"], otr["height"][0]), otr["height"][1])
+    if design == "drawer_model":
+        dr = M["drawer_model"]
+        return (dr["widths"][0] if W < dr["narrow_below"] else dr["widths"][1]), \
+            dr["depth"][0] + dr["depth"][1] * (D - dr["param_depth"][0]) / dr["param_depth"][1], dr["height"]
+    return W, D, H
+
+
+def steel_sheet(family: str) -> float:
+    """The sheet (m) a casing piece of ``family`` is massed with so it weighs as ``MICROWAVE["sheet"]``
+    of steel: a painted or plastic-clad casing is still a steel box."""
+    return M["sheet"] * STEEL_DENSITY / FAMILIES[family].density
+
+
+@dataclass(frozen=True)
+class Body:
+    """Where a microwave's parts go: ``outer`` (x back, x bezel, x door front, y left, y right, z bottom,
+    z top), the ``cavity`` (as :func:`.appliance.casing`), the door's ``door_ys``, the fascia's
+    ``panel_ys`` and the ``zs`` both span (for a drawer model: the drawer's and the strip's)."""
+
+    outer: tuple
+    cavity: tuple
+    door_ys: tuple
+    panel_ys: tuple
+    zs: tuple
+    panel_zs: tuple
+
+    @property
+    def x_front(self) -> float:
+        """The door's (and fascia's) front face."""
+        return self.outer[2]
+
+    @property
+    def fascia_xs(self) -> tuple[float, float]:
+        """The fascia's back (the bezel plane) and front face."""
+        return self.outer[1:3]
+
+
+def countertop(W, D, H, wall, door_thickness, feet, panel_fraction, vent: bool) -> Body:
+    """A counter-top (or over-the-range, ``vent``) body: the door on the left, the fascia on the right,
+    both inside the casing's top and bottom (under the vent band); the door's free edge clears the
+    fascia by what its back corner swings out (~ft^2 / (2 width)); the cavity liner inside the walls."""
+    t, ft = wall, door_thickness
+    y0, y1 = -W / 2, W / 2
+    zc0, zc1 = feet, H
+    zd = (zc0 + M["edge"], zc1 - (M["vent"] if vent else 0.0) - M["edge"])
+    panel_w = panel_fraction * W
+    door_w = W - panel_w
+    gap, share = M["door_gap"]
+    gap_dp = max(gap, share * door_w) + ft * ft / (2 * door_w) + M["swing_room"]
+    yd1 = y1 - panel_w - gap_dp
+    gap_door = max(gap, share * min(yd1 - y0, zd[1] - zd[0]))
+    xd1 = D / 2  # door and panel front face
+    xf = xd1 - ft - gap_door  # body front face (bezel)
+    xb = -D / 2
+    li = M["liner_in"]
+    cav = (xb + t + M["back_room"], xf - A.BEZEL, y0 + t + li, yd1 - M["bezel_side"], zc0 + t + li,
+           min(zc1 - t - li, zd[1] - M["cavity_under_top"]))
+    return Body((xb, xf, xd1, y0, y1, zc0, zc1), cav, (y0, yd1), (y1 - panel_w, y1), zd, zd)
+
+
+def drawer_body(W, D, H, wall, door_thickness, feet) -> Body:
+    """A drawer model's body: the drawer under a control strip ``MICROWAVE["strip"]`` tall."""
+    t, ft = wall, door_thickness
+    y0, y1 = -W / 2, W / 2
+    zc0, zc1 = feet, H
+    xd1, xb = D / 2, -D / 2
+    xf = xd1 - ft - M["drawer_gap"]
+    zt = zc1 - M["strip"]  # drawer top
+    li = M["liner_in"]
+    cav = (xb + t + M["back_room"], xf - A.BEZEL, y0 + t + li, y1 - t - li, zc0 + t + li,
+           zt - M["drawer_cavity_under"])
+    e = M["edge"]
+    return Body((xb, xf, xd1, y0, y1, zc0, zc1), cav, (y0, y1), (y0 + e, y1 - e),
+                (zc0 + e, zt - M["strip_gap"]), (zt + M["strip_gap"], zc1 - e))
+
+
+def casing(body: Body, wall: float, body_finish: str, interior_finish: str) -> list[g.Piece]:
+    """The sheet casing (:func:`.appliance.casing`) massed as steel sheet, with the high-voltage
+    transformer on its floor in the bay beside the cavity (hidden) where there is one."""
+    xb, xf, _, y0, y1, zc0, zc1 = body.outer
+    cav, t = body.cavity, wall
+    fr, fz, fb = M["foot"]
+    pieces = A.casing((xb, xf, y0, y1, zc0, zc1), cav, t, min(fr, fz * zc0 + fb))
+    sheets = {"body": steel_sheet(body_finish), "interior": steel_sheet(interior_finish)}
+    pieces = [pc.replace(sheet=sheets[pc.material]) if pc.material in sheets else pc for pc in pieces]
+    tr = M["transformer"]
+    bay = (cav[3] + A.LINER + tr["clear"], y1 - t - tr["clear"])
+    if bay[1] - bay[0] > tr["min_bay"]:
+        side = min(tr["side"], bay[1] - bay[0])
+        ym = (bay[0] + bay[1]) / 2
+        x0 = xb + t + tr["from_back"]
+        core = g.box_between([x0, ym - side / 2, zc0 + t],
+                             [x0 + tr["core"][0], ym + side / 2, zc0 + t + tr["core"][1]],
+                             "trim", name="transformer").replace(wall=0.0)
+        pieces.append(core)
+    return pieces
+
+
+def ceramic_floor(cavity) -> g.Piece:
+    """A flatbed model's fixed ceramic floor over the antenna, inside the liner."""
+    cx0, cx1, cy0, cy1, cz0, _ = cavity
+    i, t = M["floor_inset"], M["floor"]
+    return g.box_between([cx0 + i, cy0 + i, cz0], [cx1 - i, cy1 - i, cz0 + t], "plate", bevel=0.002)
+
+
+def floor_rack_seat(cavity) -> dict:
+    """Where a flatbed's wire rack stands: centre, floor height, inscribed radius, free height."""
+    cx0, cx1, cy0, cy1, cz0, _ = cavity
+    r = min(cx1 - cx0, cy1 - cy0) / 2 - M["rack_clear"]
+    return dict(center=((cx0 + cx1) / 2, (cy0 + cy1) / 2), z0=cz0 + M["floor"], radius=r,
+                room=cavity[5] - cz0 - M["floor"])
+
+
+def plate_fit(cavity, fraction: float) -> tuple[tuple[float, float], float]:
+    """The turntable's centre and radius: ``fraction`` of the largest that fits the cavity floor."""
+    cx0, cx1, cy0, cy1, _, _ = cavity
+    c = ((cx0 + cx1) / 2, (cy0 + cy1) / 2)
+    r_fit = min(cx1 - cx0, cy1 - cy0) / 2
+    lo, share = M["plate_room"]
+    return c, fraction * (r_fit - max(lo, share * r_fit))
+
+
+def rack_on_plate(cavity, center, radius) -> dict:
+    """Where a turntable's wire rack stands: on the tray's floor, inside its rim."""
+    cz0 = cavity[4]
+    return dict(center=center, z0=cz0 + A.TRAY_TOP, radius=radius - M["rim_room"], room=cavity[5] - cz0 - A.TRAY_TOP)
+
+
+def stand_rack(center, z0, radius, room, height) -> list[g.Piece]:
+    """A low wire rack: a square grid inscribed in ``radius`` on four legs, at most its share of ``room``."""
+    h = min(height, M["rack_room"] * room)
+    return A.stand_rack(center, z0, radius / math.sqrt(2), h)
+
+
+def vent_grille(outer) -> list[g.Piece]:
+    """An over-the-range model's vent grille band over the door and panel (slots printed on it), and the
+    cooktop light under the body (decor on the casing)."""
+    xb, xf, xd1, y0, y1, zc0, zc1 = outer
+    v = M["grille"]
+    zv0 = zc1 - M["vent"] + v["under"]
+    grille = [g.box_between([xf - 0.001, y0 + v["side"], zv0], [xd1, y1 - v["side"], zc1 - 0.002], "door",
+                            bevel=0.002)]
+    pitch, a, b = v["pitch"], v["slot_from"], v["slot_to"]
+    n = int((y1 - y0 - v["slot_margin"]) / pitch)
+    grille += [g.box_between([xd1, y0 + a + k * pitch, zv0 + v["slot_in"]], [xd1 + 0.0008, y0 + b + k * pitch,
+                                                                              zc1 - v["slot_top"]], "display")
+               for k in range(n)]
+    (l0, l1), ly = v["light"]
+    grille.append(g.box_between([xf - l0, -ly, zc0 - 0.002], [xf - l1, ly, zc0], "glass"))  # cooktop light
+    return grille
+
+
+def filter_boxes(outer) -> list[tuple]:
+    """The two grease filters' boxes (x0, x1, y0, y1, z of the body's bottom), left and right."""
+    xb, xf, xd1, y0, y1, zc0, zc1 = outer
+    f = M["filters"]
+    w = f["width"] * (y1 - y0)
+    return [(xb + f["from_back"], xf - f["from_front"], yc - w / 2, yc + w / 2, zc0)
+            for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
+
+
+def grease_filter(box) -> tuple[list[g.Piece], Frame, float]:
+    """A grease filter in the body's bottom and its finger tab: pieces, the slide frame, its travel (it
+    slides back in its track before it drops out)."""
+    x0, x1, ya, yb, zc0 = box
+    f = M["filters"]
+    tab = min(f["tab"], zc0 - 0.0015)  # a finger tab under its front edge, clear of the ground
+    frame = [g.box_between([x0, ya, zc0 - 0.0045], [x1, yb, zc0 - 0.002], "filter").replace(sheet=f["sheet"]),
+             g.box_between([x1 - 0.012, (ya + yb) / 2 - 0.02, zc0 - tab], [x1 - 0.004, (ya + yb) / 2 + 0.02,
+                                                                          zc0 - 0.0044], "filter")]
+    return frame, Frame.at((x1, (ya + yb) / 2, zc0 - 0.002), z=(-1, 0, 0)), f["travel"]
+
+
+def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float
+           ) -> tuple[list[g.Piece], Frame, float]:
+    """A drawer model's drawer: a front with a window and an edge pull, an open tray inside the cavity
+    liner; returns its pieces, slide frame and travel."""
+    xb, xf, xd1, y0, y1, _, _ = body.outer
+    cx0, cx1, cy0, cy1, cz0, cz1 = body.cavity
+    (z0, z1), (y0, y1) = body.zs, body.door_ys
+    d = M["drawer"]
+    c = d["in_liner"]  # the tray inside the cavity liner
+    tray = (cx0 + d["tray_back"], cy0 + c, cy1 - c, cz0 + c, cz1 - c)
+    pieces = A.storage_drawer((xf + d["front_gap"], xd1, y0, y1, z0, z1), tray, wall=d["wall"])
+    pieces = [pieces[0].replace(material="body")] + [pc.replace(material="interior") for pc in pieces[1:]]
+    # front and tray are 0.6 mm steel sheet like the casing and liner, under any finish (a painted family is
+    # massed as board: painted drawers weighed 0.9 kg; 0.8 mm enamelled ones 7.9 kg)
+    sheets = {"body": steel_sheet(body_finish), "interior": steel_sheet(interior_finish)}
+    pieces = [pc.replace(sheet=sheets[pc.material]) for pc in pieces]
+    pull = hardware.edge_pull(handle_length * (y1 - y0), "handle", **M["edge_pull"]).attached(
+        "mount", to=Frame.at((xd1, 0.0, z1 - d["pull_below"]), z=(1, 0, 0), x=(0, 1, 0)))
+    s, m = d["window"]
+    hole = (y0 + s * (y1 - y0), z0 + m, y1 - s * (y1 - y0), z1 - m)
+    window = g.box_between([xd1, hole[0], hole[1]], [xd1 + 0.001, hole[2], hole[3]], "glass")
+    return pieces + [window] + list(pull.parts[pull.root].pieces), Frame.at((xd1, 0.0, z0), z=(1, 0, 0)), \
+        d["travel"] * (xf - tray[0])
+
+
+def door_window(ys, zs, margin: float, opener: str) -> tuple[float, float, float, float]:
+    """The door's window (y0, z0, y1, z1): ``margin`` of frame on the hinge side and top, more below and
+    on the free side, where the handle goes."""
+    m_free = max(M["free_margin"] * margin, M["handle_room"].get(opener, 0.0))
+    return (ys[0] + margin, zs[0] + M["bottom_margin"] * margin, ys[1] - m_free, zs[1] - margin)
+
+
+def door_handle(kind: str, length: float, at: Frame) -> list[g.Piece]:
+    """A door's ``bar`` pull or ``recessed`` edge pull on the handle anchor ``at`` (the free edge)."""
+    if kind == "bar":
+        handle = hardware.bar_handle(length, "handle", hardware.HandleSize(**M["pull"])).attached(
+            "mount", to=at.moved(dy=M["bar_in"]))
+    else:
+        handle = hardware.edge_pull(length, "handle", **M["edge_pull"]).attached("mount", to=at.moved(dy=M["pull_in"]))
+    return list(handle.parts[handle.root].pieces)
+
+
+def _dial_style(rng) -> str:
+    return list(A.DIALS)[int(rng.choice(len(A.DIALS), p=list(A.DIALS.values())))]
+
+
+def keypad_rows(rows: int, H: float, feet: float, vent: bool, panel_w: float, n_dials: int, release: bool,
+                knob_radius: float, button_height: float) -> int:
+    """``rows`` of keys, fewer where the column panel of a body ``H`` tall (``vent``: under an
+    over-the-range vent band) cannot hold them at the smallest key scale."""
+    panel_h = H - (M["vent"] if vent else 0.0) - feet - 2 * M["edge"]
+    f = K["min_scale"]
+    kr, bh = min(knob_radius, K["knob_share"] * panel_w) * f, button_height * f
+    lo, hi = K["display"]
+    dh = min(max(K["display_share"] * panel_h, lo), hi) * f
+    fixed = [dh] + [2 * kr + K["dial_room"]] * n_dials + ([K["release"]] if release else [])
+    while rows > 3 and sum(fixed) + rows * K["row_pitch"] * bh + K["gap"] * (len(fixed) + rows - 1) > \
+            panel_h - 2 * K["margin"]:
+        rows -= 1
+    return rows
+
+
+def column_panel(xp, ys, zs, n_keys, n_dials, release: bool, knob_radius, button_height, shape, rng) -> A.Panel:
+    """A fascia's column, top-down: a display (with keys, or alone), ``n_keys`` keys in rows of three, a
+    flat membrane keypad (without keys or dials), the dials sharing what is left, a door release button
+    at the bottom. Buttons, dials and display shrink together on a short panel."""
+    ya, yb = ys
+    pw, ph = yb - ya, zs[1] - zs[0]
+    yc = (ya + yb) / 2
+    rows = -(-n_keys // 3)
+    display = bool(n_keys) or not n_dials
+    keypad = not n_keys and not n_dials  # a flat membrane keypad instead
+    bh, kr = button_height, min(knob_radius, K["knob_share"] * pw)
+    lo, hi = K["display"]
+    dh = min(max(K["display_share"] * ph, lo), hi)
+    pad = K["membrane"]
+    rh = K["release"]
+
+    def heights(f):
+        return ([dh * f] if display else []) + [K["row_pitch"] * bh * f] * rows + ([pad * ph] if keypad else []) + \
+            [2 * kr * f + K["dial_room"]] * n_dials + ([rh] if release else [])
+
+    avail = ph - 2 * K["margin"]
+    f = 1.0  # shrink buttons, dials and display together on a short panel
+    while f > K["min_scale_shrink"] and sum(heights(f)) + K["gap"] * (len(heights(f)) - 1) > avail:
+        f *= K["shrink"]
+    gap = min(K["max_gap"], max(K["min_gap"], (avail - sum(heights(f))) / (len(heights(f)) + 1)))
+    bh, kr, dh = bh * f, kr * f, dh * f
+    panel = A.Panel()
+    z = zs[1] - K["margin"]  # top of the next item
+    if display:
+        panel.decor.append(g.box_between([xp - 0.001, yc - K["display_w"] * pw, z - dh],
+                                         [xp + 0.0015, yc + K["display_w"] * pw, z], "display"))
+        z -= dh + gap
+    if n_keys:
+        z = _button_grid(panel, xp, yc, pw, z, bh, gap, n_keys, shape)
+    if keypad:
+        panel.decor.append(g.box_between([xp - 0.001, ya + K["membrane_side"] * pw, z - pad * ph],
+                                         [xp + 0.001, yb - K["membrane_side"] * pw, z], "display"))
+        z -= pad * ph + gap
+    z_floor = zs[0] + K["margin"] + (rh + gap if release else 0.0)
+    if release:
+        rw, zr = K["release_w"] * pw, zs[0] + K["margin"] + rh / 2
+        half = (rw / 2, rh / 2)
+        panel.holes.append(A.hole_around(yc, zr, half))
+        proud = K["release_proud"]
+        piece = g.box_between([xp - A.BEHIND, yc - half[0], zr - half[1]], [xp + proud, yc + half[0], zr + half[1]],
+                              "button", bevel=0.003)
+        panel.buttons.append(("door_release", piece, Frame.at((xp + proud, yc, zr), z=(-1, 0, 0)), rh / 8, True))
+    if n_dials:
+        span = (z - z_floor) / n_dials
+        for k in range(n_dials):
+            zk = z - span * (k + 0.5)
+            r_k = min(kr * (1.0 if k == 0 else float(rng.uniform(*K["dial_shrink"]))), 0.5 * span - 0.004)
+            style = _dial_style(rng)
+            stem = max(K["stem"], K["stem_share"] * r_k)
+            panel.holes.append(A.hole_around(yc, zk, (stem, stem)))
+            axis = Frame.at((xp, yc, zk), z=(1, 0, 0))
+            panel.dials.append((f"knob_{k}", A.dial(xp, yc, zk, r_k, stem, style), axis))
+    return panel
+
+
+def _button_grid(panel, xp, yc, pw, z, bh, gap, n_keys, shape):
+    """Rows of three keys top-down; a bottom row of two holds two wide keys over the same span."""
+    proud = K["proud_share"] * bh + K["proud"]  # a pressed button (1/8 of its height in) still stands proud
+    rows = -(-n_keys // 3)
+    for r in range(rows):
+        zb = z - K["key_drop"] * bh
+        cols = min(3, n_keys - 3 * r)
+        pitch = K["keys_w"] * pw / cols
+        for c in range(cols):
+            y = yc + (c - (cols - 1) / 2) * pitch
+            if shape == "rect":
+                half = (min(pitch - 2 * A.CLEAR - K["key_gap"], (K["key_wide"] if cols == 3 else K["key_wider"]) * bh)
+                        / 2, bh / 2)
+            else:
+                rad = min(K["round"] * bh, (pitch - 2 * A.CLEAR - K["key_gap"]) / 2)
+                half = (rad, rad)
+            panel.holes.append(A.hole_around(y, zb, half))
+            piece = A.push_button(xp, y, zb, half, shape, proud)
+            panel.buttons.append((f"button_{r}_{c}", piece, Frame.at((xp + proud, y, zb), z=(-1, 0, 0)),
+                                  half[1] / 4, None))
+        z -= K["row_pitch"] * bh + gap
+    return z
+
+
+def strip_panel(xp, ys, zs, n_keys, n_dials, knob_radius, button_height, shape, rng) -> A.Panel:
+    """A horizontal control strip: a display on the left, the push buttons in a grid of one or two
+    rows in the middle, the dials on the right (a drawer microwave's angled fascia, flattened)."""
+    S = M["strip_panel"]
+    (ya, yb), (za, zb) = ys, zs
+    ph, zc = zb - za, (za + zb) / 2
+    keypad = not n_keys and not n_dials
+    half_h = S["display_h"] * ph
+    panel = A.Panel()
+    panel.decor.append(g.box_between([xp - 0.001, ya + S["display"][0], zc - half_h],
+                                     [xp + 0.0015, ya + S["display"][1], zc + half_h], "display"))
+    y = ya + S["keys_from"]
+    r_dial = min(knob_radius, S["knob_share"] * ph - 0.004)
+    if n_keys:
+        n = n_keys
+        nrow = min(-(-n // 3), 2)
+        ncol = -(-n // nrow)
+        room = yb - S["end"] - n_dials * (2 * r_dial + S["dial_gap"]) - y - S["keys_gap"]
+        wide = K["key_wide"] if shape == "rect" else 1.0  # key width / height
+        bh = min(button_height, (ph - S["keys_margin"] - (nrow - 1) * K["gap"]) / nrow,
+                 (room / ncol - 2 * A.CLEAR - K["gap"]) / wide)  # the grid fits beside the dials
+        half = (S["rect_half"] * bh, bh / 2) if shape == "rect" else (bh / 2, bh / 2)
+        pitch_y, pitch_z = 2 * half[0] + 2 * A.CLEAR + K["gap"], bh + K["gap"]
+        proud = K["proud_share"] * bh + K["proud"]
+        for k in range(n):
+            r, c = divmod(k, ncol)
+            yk, zk = y + half[0] + c * pitch_y, zc + (0.5 * (nrow - 1) - r) * pitch_z
+            panel.holes.append(A.hole_around(yk, zk, half))
+            panel.buttons.append((f"button_{r}_{c}", A.push_button(xp, yk, zk, half, shape, proud),
+                                  Frame.at((xp + proud, yk, zk), z=(-1, 0, 0)), half[1] / 4, None))
+        y += ncol * pitch_y + S["keys_gap"]
+    if keypad:
+        panel.decor.append(g.box_between([xp - 0.001, y, zc - half_h], [xp + 0.001, y + S["membrane"], zc + half_h],
+                                         "display"))
+    for k in range(n_dials):
+        r_k = r_dial
+        yk = yb - S["end"] - r_k - k * (2 * r_k + S["dial_gap"])
+        stem = max(K["stem"], K["stem_share"] * r_k)
+        style = _dial_style(rng)
+        panel.holes.append(A.hole_around(yk, zc, (stem, stem)))
+        panel.dials.append((f"knob_{k}", A.dial(xp, yk, zc, r_k, stem, style), Frame.at((xp, yk, zc), z=(1, 0, 0))))
+    return panel
+
+
+def fascia(xs, ys, zs, holes, skin: str, inner: str, inner_sheet: float) -> list[g.Piece]:
+    """The control panel's fascia: a thin skin on a dark inner frame, both with the ``holes``."""
+    xf, xp = xs
+    ya, yb = ys
+    return [g.panel([xp - A.SKIN, ya, zs[0]], [xp, yb, zs[1]], skin, "x", holes=holes),
+            g.panel([xf, ya, zs[0]], [xp - A.SKIN, yb, zs[1]], inner, "x", holes=holes).replace(sheet=inner_sheet)]
