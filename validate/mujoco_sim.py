@@ -118,11 +118,12 @@ def effort_of(model, i: int) -> float:
     return float(min(-lo, hi))
 
 
-def push_joints(model, duration: float = PUSH_TIME) -> list[Push]:
+def push_joints(model, duration: float = PUSH_TIME, rest: bool = True) -> list[Push]:
     """Push every hinge or slide joint alone with its effort towards each limit (module docstring).
 
     A joint without limits (continuous) is pushed one way; only the other joints are judged then.
-    Each :class:`Push` also carries the joint's :func:`rest_excess` over the same time.
+    Each :class:`Push` also carries the joint's :func:`rest_excess` over the same time (``rest``
+    false: not run; the ``mujoco`` check judges the pushes themselves, and rests 2 s on its own).
     """
     mujoco = import_mujoco()
     data = mujoco.MjData(model)
@@ -133,7 +134,7 @@ def push_joints(model, duration: float = PUSH_TIME) -> list[Push]:
     span = np.maximum(hi - lo, 1e-12)
     qadr = np.array([model.jnt_qposadr[i] for i in limited], int)
     steps = int(round(duration / model.opt.timestep))
-    rest = rest_excess(model, duration)
+    still = rest_excess(model, duration) if rest else {}
     slide = int(mujoco.mjtJoint.mjJNT_SLIDE)
     out = []
     for i in moving:
@@ -153,7 +154,7 @@ def push_joints(model, duration: float = PUSH_TIME) -> list[Push]:
                 travel = (q_end - a) / (b - a) if side == "upper" else (b - q_end) / (b - a)
             else:
                 travel = q_end / math.pi
-            out.append(_push(names[i], side, effort, travel, [names[k] for k in limited], worst, rest,
+            out.append(_push(names[i], side, effort, travel, [names[k] for k in limited], worst, still,
                              float(np.diff(model.jnt_range[i])[0]) if model.jnt_limited[i] else 0.0,
                              int(model.jnt_type[i]) == slide))
     return out
@@ -268,7 +269,7 @@ def _check(path: Path, meta: dict) -> CheckResult:
             problems.append(f"rest: {names[i]} moved {unit}")
     contacts = rest_contacts(model, start)
     problems += [f"contact at rest {a} / {b} {d * 1000:.2g} mm deep" for a, b, d in contacts]
-    pushes = push_joints(model)
+    pushes = push_joints(model, rest=False)
     bad = [p for p in pushes if not p.excess <= PUSH_TOL]
     problems += [f"push {p.joint} -> {p.side} with {p.effort:.3g}: {p.excess * 100:.1f} % of its range"
                  " past its limit" for p in bad]
