@@ -8,6 +8,8 @@ pallet racking and boltless shelving: 60-100 mm uprights, 60-140 mm beams, 0.6-1
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -19,6 +21,39 @@ UPRIGHT_SHEET = 0.002  # upright steel
 BRACE_SHEET = 0.0015
 BEAM_SHEET = 0.0015
 CARTON = 0.004  # corrugated board
+
+
+# -- the storage rack's layout (``categories/storage_rack.py`` reads these) ----------------------------
+GAP = 0.005  # level <-> uprights and stop brackets
+SIDE = 0.03  # goods keep this far from the uprights
+ABOVE_TOP = 0.06  # uprights reach this far above the highest raised level
+HEADROOM = 0.02  # between raised goods or brackets and the level above
+GOODS_LIFT = 0.001  # goods stand this far above the deck
+SHELF_U = 0.04  # boltless shelving / bin rack upright (38-40 mm angle posts)
+SHELF_BEAM = 0.04  # and its beams
+BIN_GAP = 0.004  # between neighbouring bins
+# AkroBins 30220 (4-1/8 in wide): 8 across a 36 in shelf, 11 across a 48 in one; a 60 in bay takes 12-13
+MAX_BINS = 12
+TOTE_W = (0.28, 0.45)  # tote widths across the shelf (see totes)
+CAB_GAP = 0.02  # between drawer cabinets side by side
+CAB_PANEL = 0.012  # a drawer cabinet's top and bottom panels
+DRAWER_GAP = 0.003  # between drawer fronts
+DRAWER_OUT = 0.95  # full-extension slides: a drawer comes out by ~95 % of its depth
+LID_OPEN = 1.9  # a tote lid swings back up to ~110 degrees
+MAX_TOTES = 5  # totes across a level at most
+GOODS_FILL_MIN = 0.75  # goods on a pallet-rack level fill 75-100 % of the height allowed them
+DRAWER_FRONTS = (0.3, 0.075, 10)  # drawer fronts 75-300 mm high (Lista / Vidmar), at most 10 to a cabinet
+CAB_BACK = (0.02, 0.06)  # a drawer cabinet's front 2 cm behind the front beam; it leaves 6 cm of the level
+CAB_DRAWER = (0.01, 0.002)  # its drawers' boxes: 1 cm off its back panel, fronts 2 mm behind its front
+# Totes on a shelf (IKEA SAMLA, Really Useful Box): 6 cm shorter than the shelf is deep, at most 30 cm or
+# 60 % of the clear height tall (room to lift the lid once pulled out), 1 cm in from the bay's ends and
+# 8 mm apart each side; a lid's tip stays 1 cm under the level above (opening at least asin 0.05)
+TOTE_ROW = dict(short=0.06, tall=0.3, fill=0.6, end=0.01, apart=0.008, under=0.01, least=0.05)
+# Bins on a bin rack (AkroBins 30220: 5 in = 127 mm tall): 2 cm under the level above, 5 mm in from the bay's
+# ends, 1 cm in from the shelf's front and back
+BIN_ROW = dict(tall=0.127, under=0.02, end=0.005, edge=0.01)
+# an open tote's label card: 80 x 30 mm, 2 mm thick, 6-9 cm under the rim, on the front wall
+TOTE_LABEL = dict(half_w=0.04, z=(0.09, 0.06), t=0.002)
 
 
 def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece]:
@@ -470,3 +505,44 @@ def tumbler(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
     r, h, t, b = TUMBLER["r"], TUMBLER["h"], TUMBLER["wall"], TUMBLER["base"]
     wall = g.shell([(r, 0.0), (0.88 * r, h - b)], t, slot, center=(x, y, z), sections=32)
     return [wall, g.cylinder([x, y, z + h - b], [x, y, z + h], 0.88 * r, slot, 32)]
+
+
+# -- rows of totes and bins on a storage-rack level --------------------------------------------------------
+def tote_row(span, count: int, shelf_depth: float, clear: float):
+    """``count`` totes across a level ``span`` (y) of a shelf ``shelf_depth`` deep with ``clear`` height over
+    its deck: returns their x range, each one's y range and their height (``TOTE_ROW``)."""
+    r = TOTE_ROW
+    d = shelf_depth - r["short"]
+    h = min(r["tall"], r["fill"] * clear)  # totes leave room above the lid to lift it once pulled out
+    cells_ = np.linspace(span[0] + r["end"], span[1] - r["end"], count + 1)
+    return (-d / 2, d / 2), [(cells_[k] + r["apart"], cells_[k + 1] - r["apart"]) for k in range(count)], h
+
+
+def tote_lid_opening(room: float | None, depth: float) -> float:
+    """How far a tote lid ``depth`` deep may swing up under ``room`` of height above the tote (None: no level
+    above, ``LID_OPEN``): its tip stays ``TOTE_ROW["under"]`` under the level above."""
+    if room is None:
+        return LID_OPEN
+    return math.asin(max(TOTE_ROW["least"], min(1.0, (room - LID_T - TOTE_ROW["under"]) / depth)))
+
+
+def bin_row(span, count: int, shelf_depth: float, clear: float):
+    """``count`` bins across a level ``span`` (y) of a shelf ``shelf_depth`` deep with ``clear`` height over its
+    deck, ``BIN_GAP`` apart: returns their x range, each one's y range and their height (``BIN_ROW``)."""
+    r = BIN_ROW
+    D = shelf_depth
+    h = min(r["tall"], clear - r["under"])  # 5 in bins
+    pitch = (span[1] - span[0] - 2 * r["end"]) / count
+    rows = []
+    for k in range(count):
+        y0 = span[0] + r["end"] + k * pitch
+        rows.append((y0 + BIN_GAP / 2, y0 + pitch - BIN_GAP / 2))
+    return (-D / 2 + r["edge"], D / 2 - r["edge"]), rows, h
+
+
+def tote_label(x_front: float, y: float, z_rim: float) -> g.Piece:
+    """An open tote's label card clipped on its front wall (the tote's front at ``x_front``, rim at ``z_rim``)."""
+    c = TOTE_LABEL
+    x = x_front - TOTE_RIM + TOTE_WALL
+    return g.box_between([x, y - c["half_w"], z_rim - c["z"][0]], [x + c["t"], y + c["half_w"], z_rim - c["z"][1]],
+                         "label")
