@@ -56,6 +56,35 @@ BIN_ROW = dict(tall=0.127, under=0.02, end=0.005, edge=0.01)
 TOTE_LABEL = dict(half_w=0.04, z=(0.09, 0.06), t=0.002)
 
 
+# -- the plate rack's layout (``categories/plate_rack.py`` reads these) -------------------------------
+LIFT = 0.1  # lift of a plate along +Z
+TURN = math.pi / 2  # turn of a plate about its axis (X) either way
+END = 0.03  # rack length beyond the first and last fence
+PAD = 0.006  # rubber pad height under a wood or plastic rack
+WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
+SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
+CADDY_LIFT = 0.2  # a caddy lifts clear of its board
+TIER_GAP = 0.02  # between a lower plate lifted fully and the upper tier's lowest wire
+TRAY_OUT = 0.8  # the drip tray slides out by this fraction of its length
+TRAY_END_WALL = 0.004  # a plastic tray's end wall (the spout hangs on it)
+SPOUT_ABOVE = 0.003  # the spout's bottom just above the tray floor's underside
+BOARD_STAND = 0.002  # mugs, tumblers and caddies stand this far above the side board
+CADDY_APART, CADDY_END = 0.02, 0.01  # caddies 2 cm apart, the last 1 cm from the board's end
+# The side board (a drip board beside the rack): 12 mm thick, 4 mm under the rack's side, two rows of cups
+# (one CUP_PITCH each, 1 cm spare) and caddies along it, 15 mm spare at its end; a wire rack's is a
+# chrome-plated steel drip tray of 0.8 mm sheet
+SIDE_BOARD = dict(t=0.012, under=0.004, spare_y=0.01, spare_x=0.015, sheet=0.0008)
+CUP_ROWS = (0.25, 0.75)  # the two rows of cup pegs across the board
+CUP_START = 0.005  # the first peg this far past half a pitch from the board's end
+# A wire rack's upper tier: its cross wires (3 rail radii under the rails' axis) are its lowest members; its
+# posts stand 12 mm in from the rack's ends, reaching 7 mm into the leg feet; a wood tier's dowel posts are
+# at least 6 mm or 1.5 prong radii
+TIER = dict(cross=3, post_in=0.012, post_into=0.007, dowel=(0.006, 1.5))
+# A wire rack's drip tray: inside the legs' 5.5 mm rubber caps with 4 mm to spare, from 5 mm inside the back
+# legs to 1 cm past the front ones, 1 mm over the floor
+RACK_TRAY = dict(caps=0.0055, clear=0.004, back=0.005, front=0.01, floor=0.001)
+
+
 def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece]:
     """Two uprights (front, back) in the plane y = 0 with foot plates, perforations and bracing."""
     pieces = []
@@ -355,6 +384,7 @@ def tier_posts(xs, b, r: float, z0: float, z1: float, slot: str = "frame") -> li
 # a moulded drainer tray's swivel spout (Rubbermaid, OXO, simplehuman drainer trays): a 25-30 mm wide trough
 # 40-60 mm long on a round hub through the tray's end wall; it swings 180 degrees to point water at the sink
 SPOUT = dict(length=0.05, width=0.026, h=0.012, hub=0.012, wall=0.002)
+SPOUT_OFF = SPOUT["hub"] + 0.004  # the spout's hub axis beyond the tray's end wall
 
 
 def swivel_spout(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
@@ -454,6 +484,7 @@ CADDY = dict(x=0.11, y=0.13, h=0.14, wall=0.003)
 # a 300 ml mug: 80-85 mm across, 95 mm high, 4 mm stoneware wall (catalogue sizes)
 MUG = dict(r=0.041, h=0.095, wall=0.004)
 PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail
+CUP_LIFT = PEG["h"] + 0.025  # a mug lifts off its peg
 CUP_PITCH = 0.11  # centre to centre along a row of cups (a mug and its handle: 82 + 22 mm)
 
 
@@ -546,3 +577,49 @@ def tote_label(x_front: float, y: float, z_rim: float) -> g.Piece:
     x = x_front - TOTE_RIM + TOTE_WALL
     return g.box_between([x, y - c["half_w"], z_rim - c["z"][0]], [x + c["t"], y + c["half_w"], z_rim - c["z"][1]],
                          "label")
+
+
+# -- plate-rack fittings --------------------------------------------------------------------------------
+def side_board(pieces, xs, plate_r: float, caddies: int, cups: int, wire: bool):
+    """The side board beside a rack of ``pieces`` over ``xs``: beyond the reach of a plate (``plate_r``) slid
+    fully sideways, at the rack's foot, running past the rack's end where ``caddies`` caddies and two rows of
+    ``cups`` need it. Returns its extent (x range, y range, bottom, top) and its piece."""
+    lo = np.array([pc.bounds[0] for pc in pieces]).min(0)
+    hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
+    y0 = max(hi[1], plate_r + PLATE_SLIDE + SIDE_GAP)
+    sb = SIDE_BOARD
+    need = caddies * (CADDY["x"] + CADDY_APART) + math.ceil(cups / 2) * CUP_PITCH + sb["spare_x"]
+    board = ((xs[0], max(xs[1], xs[0] + need)), (y0, y0 + 2 * CUP_PITCH + sb["spare_y"]), lo[2], lo[2] + sb["t"])
+    side = g.box_between([xs[0], hi[1] - sb["under"], lo[2]], [board[0][1], board[1][1], board[3]], "frame",
+                         bevel=0.002)
+    return board, side.replace(sheet=sb["sheet"]) if wire else side
+
+
+def cup_spots(board, count: int):
+    """Where the pegs of ``count`` cups stand on a side ``board``: two rows along it. Returns the (x, y) of
+    each and the board's top."""
+    (x0, x1), (y0, y1), _, z = board
+    rows = (y0 + CUP_ROWS[0] * (y1 - y0), y0 + CUP_ROWS[1] * (y1 - y0))
+    start = x0 + CUP_PITCH / 2 + CUP_START
+    per_row = math.ceil(count / 2)
+    return [(start + i * CUP_PITCH, y) for y in rows for i in range(per_row)], z
+
+
+def wire_tier(pieces, zs: float, top: float, xs, b: float, rp: float):
+    """A wire rack's upper tier: its ``pieces`` (rails at ``zs``) without their leg caps, raised so its cross
+    wires are at ``top``, and the posts from the lower tier's rails to its legs. Returns the pieces, the posts
+    and the rise."""
+    dz = top - (zs - TIER["cross"] * rp)
+    pieces = [pc for pc in pieces if pc.material != "feet"]
+    posts = tier_posts((xs[0] + TIER["post_in"], xs[1] - TIER["post_in"]), b, rp, zs - rp,
+                       dz + TIER["post_into"])  # rail axis to leg foot
+    return pieces, posts, dz
+
+
+def rack_drip_tray(xs, b: float):
+    """A wire rack's drip tray between its legs (at +-``b``), under the cross wires: returns its x range and
+    pieces."""
+    t = RACK_TRAY
+    y = b - t["caps"] - t["clear"]  # inside the legs' 5.5 mm rubber caps
+    x0, x1 = xs[0] + t["back"], xs[1] + t["front"]
+    return (x0, x1), drip_tray(x0, x1, -y, y, t["floor"], DRIP_TRAY["h"], "tray")
