@@ -27,16 +27,16 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
-from infmob_usd.assembly import Assembly
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Flag, Float, Int
 
-from .parts import hardware, panels
 from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
+from .parts.furniture_sizes import COCKTAIL as C
+from .parts.furniture_sizes import NEST
 
 
 def per_side(p: dict, count: int) -> int:
@@ -123,43 +123,17 @@ MATERIALS = {"top": "top_finish", "frame": "frame_finish", "metal": "metal_finis
              "handle": "metal_finish", "strut": "brushed_metal", "caster": "plastic:black|dark_grey",
              "wheel": "rubber"}
 
-SEAT = 0.003  # a lift-top rests this far above the apron rim
-INSET_MAX = 0.2  # leg inset as a fraction of the width at most
-SLEEVE_TOP = 0.7  # telescopic sleeves end at this fraction of the apron's bottom height
-TUBE_TOP = 0.55  # a pedestal tube ends at this fraction of the top's underside height
-POST = 0.75  # telescopic post radius as a fraction of the leg radius
-STRETCHER_Z = 0.06
-DRAWER_CLEAR = 0.003  # drawer fronts in their openings
-DRAWER_MARGIN = 0.015  # apron board above and below the openings
-NEST_GAP = 0.012  # a nested table's top under the one above it
-NEST_LEG = 0.011  # nesting tables' leg half side (22 mm legs)
-NEST_SIZE = (0.7, 0.6)  # a nest of tables is at most 0.7 m across and 0.6 m high (IKEA VITTSJÖ 0.46-0.6 m,
-#                         West Elm / Wayfair nests 0.45-0.65 m)
-NEST_TOP = {"glass": 0.008}  # nested tables' tops: 8 mm toughened glass, else 18 mm boards
-DRAWER_DEPTH = 0.45  # coffee-table drawers run 0.3-0.45 m deep
-METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (as the dining table's)
-LEAF_GAP_Y = 0.003  # a drop leaf's edge off the top's edge at its hinge
-LOPER_ROOM = 0.03  # the apron stays this far inside a leaf's hinge line: a folded loper (20 mm board) lies there
-LOPER = 0.2  # swing-out bracket length at most
-DRAWER_WIDE = 0.6  # and are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)
-
-
-DRAWERS_W = 0.75  # storage coffee tables with drawers are 0.75-1.2 m across (IKEA HEMNES 0.9 m, LIATORP 0.93 m,
-#                   Wayfair / West Elm drawer coffee tables 0.8-1.2 m): a smaller one is a side table
-LIFT_TOP_T = 0.03  # a lift-top is an 18-30 mm board: lift-top mechanisms carry 10-25 kg (hardware listings of
-#                   lift-top coffee-table hinges); a 45 mm solid 1 m top (33 kg) was heavier than any real lid
-
 
 def nest_size(p: dict) -> dict:
-    """A nest of tables is side-table sized (``NEST_SIZE``); a lift-top is at most ``LIFT_TOP_T`` thick; a storage
-    table with drawers is at least ``DRAWERS_W`` wide."""
+    """A nest of tables is side-table sized (``NEST["size"]``); a lift-top is at most ``C["lift_top_t"]`` thick; a
+    storage table with drawers is at least ``C["drawers_w"]`` wide (:mod:`.parts.furniture_sizes`)."""
     if p["support"] == "drawers":
-        return {**p, "width": max(p["width"], DRAWERS_W)}
+        return {**p, "width": max(p["width"], C["drawers_w"])}
     if p["support"] == "legs" and p["has_lift_top"]:
-        return {**p, "top_thickness": min(p["top_thickness"], LIFT_TOP_T)}
+        return {**p, "top_thickness": min(p["top_thickness"], C["lift_top_t"])}
     if p["support"] != "nesting":
         return p
-    return {**p, "width": min(p["width"], NEST_SIZE[0]), "height": min(p["height"], NEST_SIZE[1])}
+    return {**p, "width": min(p["width"], NEST["size"][0]), "height": min(p["height"], NEST["size"][1])}
 
 
 class TableLayout(Layout):
@@ -177,33 +151,35 @@ class TableLayout(Layout):
     def legs(self, node):
         p = self.p
         W, H, tt, shape = p["width"], p["height"], p["top_thickness"], p["top_shape"]
-        n = 4 if shape == "square" else (p["leg_count"] or int(self.rng.integers(3, 5)))
-        inset = min(p["leg_inset"], INSET_MAX * W)
+        few, most = C["leg_counts"]
+        n = most if shape == "square" else (p["leg_count"] or int(self.rng.integers(few, most + 1)))
+        inset = min(p["leg_inset"], C["inset_max"] * W)
         frames = T.leg_frames(W, shape, inset, n)
         lift = node.one("lift_top")
         rl = p["leg_radius"]
-        za1 = H - tt - (SEAT if lift else 0.0)
+        za1 = H - tt - (C["seat"] if lift else 0.0)
         za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
             body = apron + [pc.transformed(f.matrix) for f in frames for pc in self._leg(p["leg_style"], rl, za1)]
             self.add("body", "body", body)
             if node.one("shelf"):
-                self.grow(node.one("shelf"), inset=inset, r_leg=0.8 * rl, z=min(p["shelf_height"] * H, za0 - 0.06))
+                self.grow(node.one("shelf"), inset=inset, r_leg=C["shelf_leg"] * rl,
+                          z=min(p["shelf_height"] * H, za0 - C["shelf_under_well"]))
             fwd = p["lift_forward_ratio"] if p["has_lift_forward"] else 0.0
             return self.grow(lift, inset=inset, z=za0, fwd=fwd)
         # telescopic: sleeves stay, the top lifts with its apron and posts
-        rp = POST * rl
+        rp = C["post"] * rl
         ro = rp + T.CLEAR + T.WALL
-        zs1 = SLEEVE_TOP * za0
-        travel = min(p["stand_travel"], zs1 - 0.1)
-        zp0 = zs1 - travel - 0.05  # post bottom at rest
+        zs1 = C["sleeve_top"] * za0
+        travel = min(p["stand_travel"], zs1 - C["sleeve_room"])
+        zp0 = zs1 - travel - C["post_in"]  # post bottom at rest
         self.add("body", "body", [pc.transformed(f.matrix) for f in frames
                                   for pc in T.round_sleeve(ro, zs1, "metal", "foot")])
         if node.one("shelf"):
-            self.grow(node.one("shelf"), inset=inset, r_leg=ro, z=min(p["shelf_height"] * H, zs1 - 0.04))
+            self.grow(node.one("shelf"), inset=inset, r_leg=ro, z=min(p["shelf_height"] * H, zs1 - C["shelf_under"]))
         else:
-            self.extend("body", T.stretchers(frames, STRETCHER_Z, ro, "metal", square=shape == "square"))
+            self.extend("body", T.stretchers(frames, C["stretcher_z"], ro, "metal", square=shape == "square"))
         posts = [g.cylinder(f.point((0, 0, zp0)), f.point((0, 0, za1)), rp, "metal", 32) for f in frames]
         at = Frame.at((0, 0, zs1))
         return {"pieces": apron + posts,
@@ -215,10 +191,10 @@ class TableLayout(Layout):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
         self.extend("body", [T.apron_bottom(W, p["top_shape"], inset, p["leg_radius"], z, "frame")])
-        z_floor = z + 0.012
-        half = (W / 2 - inset) * (0.7 if p["top_shape"] == "round" else 1.0) - T.BOARD
+        z_floor = z + C["well_floor"]
+        half = (W / 2 - inset) * (C["round_struts"] if p["top_shape"] == "round" else 1.0) - T.BOARD
         u = np.array([fwd, 0.0, 1.0])
-        x = -0.2 * half - 0.5 * fwd * (H - tt - z_floor)  # tilted struts lean forward across the centre
+        x = -C["struts_back"] * half - 0.5 * fwd * (H - tt - z_floor)  # tilted struts lean forward across the centre
         ys = (0.5 * half, -0.5 * half)
         sleeves, middle, rods, t1, t2 = M.lift_struts(ys, x, z_floor, H - tt, u, p["lift_travel"], "strut")
         self.extend("body", sleeves)
@@ -237,12 +213,12 @@ class TableLayout(Layout):
         rc = p["column_radius"]
         ro = rc + T.CLEAR + T.WALL
         base, zb = T.pedestal_base(p["base_radius"] * W, ro, "metal")
-        zt1 = TUBE_TOP * (H - tt)
-        travel = min(p["stand_travel"], zt1 - zb - 0.08)
-        self.add("body", "stand", base + T.column_tube(ro, zb - 0.002, zt1, "metal"))
-        zs = H - tt  # underside of the top
-        column = [g.cylinder([0, 0, zt1 - travel - 0.06], [0, 0, zs - 0.012], rc, "metal", 48),
-                  g.cylinder([0, 0, zs - 0.012], [0, 0, zs], min(0.35 * W, 0.2), "metal", 48)]  # mounting plate
+        zt1 = C["tube_top"] * (H - tt)
+        room, foot, below = C["pedestal_tube"]
+        travel = min(p["stand_travel"], zt1 - zb - room)
+        self.add("body", "stand", base + T.column_tube(ro, zb - foot, zt1, "metal"))
+        share, most = C["plate"]
+        column = T.column_and_plate(rc, zt1 - travel - below, H - tt, min(share * W, most), "metal")
         at = Frame.at((0, 0, zt1))
         return {"pieces": column, "joint": J.revolute_prismatic(
             "body", "top", at.origin, at.z, (-p["stand_turn"], p["stand_turn"]), at.z, (0.0, travel),
@@ -261,11 +237,11 @@ class TableLayout(Layout):
     def drawers(self, node):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
-        lw = 2 * p["leg_radius"] + 0.01  # square legs a little stouter than the rails
-        inset = min(p["leg_inset"], INSET_MAX * W)
+        lw = 2 * p["leg_radius"] + C["square_leg"]  # square legs a little stouter than the rails
+        inset = min(p["leg_inset"], C["inset_max"] * W)
         leaves = node.one("drop_leaves")
         if leaves:  # the side boards and the folded lopers stay inside the hanging leaves
-            inset = max(inset, lw / 2 + LOPER_ROOM)
+            inset = max(inset, lw / 2 + C["loper_room"])
         half = W / 2 - inset + lw / 2
         za1 = H - tt
         za0 = za1 - p["box_depth"]
@@ -273,11 +249,8 @@ class TableLayout(Layout):
         sides = (1, -1) if back else (1,)
         span = 2 * (half - lw)
 
-        def openings(per):  # one bay per drawer; a drawer at most DRAWER_WIDE wide, centred in its bay
-            dw = span / per
-            w = min(dw - 0.024, DRAWER_WIDE)
-            return [(-span / 2 + (k + 0.5) * dw - w / 2, za0 + DRAWER_MARGIN, -span / 2 + (k + 0.5) * dw + w / 2,
-                     za1 - DRAWER_MARGIN) for k in range(per)]
+        def openings(per):  # one bay per drawer, the drawer centred in it
+            return M.drawer_openings(span, per, za0, za1, C["drawer_margin"], C["drawer_stile"], C["drawer_wide"])
 
         holes = {1: openings(len(front))}
         if back:
@@ -285,20 +258,23 @@ class TableLayout(Layout):
         frames = T.corner_frames(2 * half, 2 * half, lw / 2)
         casters = node.one("casters")
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
-        z_leg = c.stem_top + 0.001 + 0.008 if c else 0.0  # legs on a caster's top plate
+        over, plate, past = C["caster_plate"]
+        z_leg = c.stem_top + over + plate if c else 0.0  # legs on a caster's top plate
         style = "square" if p["leg_style"] in ("turned", "hairpin") or c else p["leg_style"]
         legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames
                 for pc in self._leg(style, lw / 2, za1 - z_leg)]
         if c:
-            legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
-                                   f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]
+            legs += [g.box_between(f.point((-lw / 2 - past, -lw / 2 - past, c.stem_top + over)),
+                                   f.point((lw / 2 + past, lw / 2 + past, z_leg)), "metal") for f in frames]
         self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", holes) + legs)
         if node.one("shelf"):
             self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
-                      z=max(min(p["shelf_height"] * H, za0 - 0.08), z_leg + 0.03), shape="square")
+                      z=max(min(p["shelf_height"] * H, za0 - C["shelf_low"][0]), z_leg + C["shelf_low"][1]),
+                      shape="square")
         if casters:
             self.grow(casters, frames=frames, caster=c)
-        depth = min(DRAWER_DEPTH, (2 * half - 2 * T.BOARD) * (0.45 if len(sides) == 2 else 0.85))
+        both, one = C["drawer_reach"]
+        depth = min(C["drawer_depth"], (2 * half - 2 * T.BOARD) * (both if len(sides) == 2 else one))
         slots = [(1, h) for h in holes[1]] + [(-1, h) for h in holes.get(-1, [])]
         for k, (d, (side, hole)) in enumerate(zip(front + back, slots, strict=True)):
             self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=depth)
@@ -308,19 +284,13 @@ class TableLayout(Layout):
 
     def drawer(self, node, k, side, hole, x, depth):
         y0, z0, y1, z1 = hole
-        w, h = y1 - y0 - 2 * DRAWER_CLEAR, z1 - z0 - 2 * DRAWER_CLEAR
+        w, h = y1 - y0 - 2 * C["drawer_clear"], z1 - z0 - 2 * C["drawer_clear"]
         face = Frame.at((x, (y0 + y1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
-        box = panels.drawer_box(w, h, depth, T.BOARD, 0.01, "frame")
-        if self.p["frame_finish"] == "brushed_metal":  # a steel drawer is folded sheet, not steel boards
-            part = box.parts[box.root]
-            box = Assembly.single(part.label, [pc.replace(sheet=METAL_DRAWER_SHEET) for pc in part.pieces],
-                                  box.anchors, box.supports, name=box.root)
-        box = box.attached("slide", to=face)
-        handle = hardware.knob_handle(min(0.015, 0.3 * h), 0.025, "handle") if w < 0.3 else \
-            hardware.bar_handle(min(0.14, 0.5 * w), "handle")
-        handle = handle.attached("mount", to=box.anchor("handle"))
-        drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
-        self.slide("body", drawer.root, drawer.anchor("slide"), upper=0.75 * depth)
+        metal = self.p["frame_finish"] == "brushed_metal"
+        drawer = self.place(M.apron_drawer(w, h, depth, T.BOARD, C["drawer_wall"], face,
+                                           "knob" if w < C["knob_under"] else "bar", C,
+                                           C["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
+        self.slide("body", drawer.root, drawer.anchor("slide"), upper=C["drawer_pull"] * depth)
 
     back_drawer = drawer
 
@@ -334,21 +304,21 @@ class TableLayout(Layout):
         the floor and the casters, and a loper swung out under it ends under its middle."""
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
-        leaf_w = min(p["leaf_width"], H - tt - z_low - 0.05)
-        y_h = W / 2 + LEAF_GAP_Y
-        xy = T.outline(W, 2 * (y_h + leaf_w), "square", 192)
+        leaf_w = min(p["leaf_width"], H - tt - z_low - C["leaf_floor"])
+        y_h = W / 2 + C["leaf_gap_y"]
+        xy = T.outline(W, 2 * (y_h + leaf_w), "square", C["outline"])
         piece, hinge = M.drop_leaf(xy, side, y_h, H - tt, H, "top")
         name = "leaf_left" if side > 0 else "leaf_right"
         self.add(name, "leaf", [piece])
         self.hinge("body", name, hinge, upper=math.pi / 2)
         if node.one("loper"):
             self.grow(node.one("loper"), leaf=name, side=side, half=half, za0=za0, za1=za1,
-                      length=min(LOPER, 0.8 * half, y_h + 0.6 * leaf_w - half))
+                      length=min(C["loper"], C["loper_reach"][0] * half, y_h + C["loper_reach"][1] * leaf_w - half))
 
     def loper(self, node, leaf, side, half, za0, za1, length):
         """A swing-out bracket lying along the side board under ``leaf``; swung out (once the leaf is up)
         it holds the leaf level (as the dining table's)."""
-        pieces, at = M.loper(-length / 2, side * half, side, za0 + 0.01, za1 - 0.006, length, "frame")
+        pieces, at = M.apron_loper(-length / 2, side * half, side, za0, za1, length, "frame")
         name = f"loper_{leaf[5:]}"
         self.add(name, "bracket", pieces)
         self.hinge("body", name, at, upper=math.pi / 2, requires_open=leaf)
@@ -375,35 +345,29 @@ class TableLayout(Layout):
     def nesting(self, node):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
-        r = NEST_LEG + 0.003
-        a = W / 2 - r - 0.01
-        legs = [g.box_between([sx * a - r, sy * a - r, 0.0], [sx * a + r, sy * a + r, H - tt], "frame", bevel=0.002)
-                for sx in (-1, 1) for sy in (-1, 1)]
-        rails = [g.box_between([-a + r, sy * a - 0.008, H - tt - 0.05], [a - r, sy * a + 0.008, H - tt], "frame")
-                 for sy in (-1, 1)]
-        self.add("body", "body", legs + rails)
-        span = 2 * (a - r) - 0.016  # between the legs and rails, along y
+        frame, span = M.nest_frame(W, H - tt, NEST, "frame")
+        self.add("body", "body", frame)
         kids = node.of("nested")
         for k, n in enumerate(kids):
             side = 1 if k == 0 else -1
-            depth = (0.8 if len(kids) == 1 else 0.44) * W
-            x0 = -depth / 2 if len(kids) == 1 else 0.02
-            self.grow(n, name=f"nested_{k}", parent="body", side=side, width=span - 0.02, depth=depth, x0=x0,
-                      height=H - tt - NEST_GAP, top_t=NEST_TOP.get(p["top_finish"], 0.018))
+            depth = NEST["depth"][0 if len(kids) == 1 else 1] * W
+            x0 = -depth / 2 if len(kids) == 1 else NEST["x0"]
+            self.grow(n, name=f"nested_{k}", parent="body", side=side, width=span - NEST["side_clear"], depth=depth,
+                      x0=x0, height=H - tt - NEST["gap"], top_t=NEST["top"].get(p["top_finish"], NEST["top_board"]))
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
     def nested(self, node, name, parent, side, width, depth, x0, height, top_t):
         """One table of the nest, sliding out along ``side`` * x; its own nested table inside it."""
-        pieces, span = M.nesting_table(width, depth, height, top_t, NEST_LEG, x0, "top", "frame")
+        pieces, span = M.nesting_table(width, depth, height, top_t, NEST["leg"], x0, "top", "frame")
         if side < 0:
             pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
         self.add(name, "table", pieces)
         self.slide(parent, name, Frame.at((side * (x0 + depth), 0, height / 2), z=(side, 0, 0)),
-                   upper=0.95 * depth, role="slide")
+                   upper=NEST["travel"] * depth, role="slide")
         if node.one("inner"):
-            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, width=span - 0.02,
-                      depth=0.85 * depth, x0=x0 + 0.04 * depth, height=height - top_t - NEST_GAP,
-                      top_t=top_t)
+            deeper, out = NEST["inner"]
+            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, width=span - NEST["side_clear"],
+                      depth=deeper * depth, x0=x0 + out * depth, height=height - top_t - NEST["gap"], top_t=top_t)
 
     inner = nested
 

@@ -23,16 +23,15 @@ from __future__ import annotations
 import math
 
 from infmob_usd import geometry as g
-from infmob_usd.assembly import Assembly
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
-from .parts import hardware, panels
 from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
+from .parts.furniture_sizes import DINING as D
 
 
 def per_side(p: dict, count: int) -> int:
@@ -148,32 +147,6 @@ def has_a_moving_part(p: dict) -> dict:
     return p
 
 
-SEAT = 0.003  # top halves above the apron rim
-SPLIT = 0.004  # gap between the two halves at rest
-BOARD = 0.02  # apron board thickness
-CLEAR = 0.003  # drawer fronts in their openings, inner legs in their sleeves
-LEAF_T = 0.02  # stored leaf thickness
-LEAF_GAP_Y = 0.003  # a drop leaf's edge off the centre top at its rule joint
-LOPER = 0.25  # swing-out bracket length
-TWO_LOPERS = 1.3  # m of apron: a longer drop leaf rests on two lopers (long drop-leaf / harvest tables carry each
-#                   leaf on two swing brackets or gates; a Pembroke table's short leaf on one)
-LEVELLER = 0.015  # levelling foot height under a leg (M8 furniture levellers: 10-20 mm)
-LEAF_GAP = 0.004  # between the leaf and the halves above it (and between stacked leaves)
-BEARING = 0.01  # a lazy susan's ball-bearing ring (10 mm high 6-12 in bearings)
-SUSAN_T = 0.02  # the turntable's thickness
-SLEEVE_WALL = 0.004
-DRAWER_WALL = 0.01
-OVAL_APRON = 0.64  # an oval top's apron spans this fraction of its length and width
-MARGIN = 0.012  # apron board above and below a drawer opening
-DRAWER_MIN = 0.06  # the lowest drawer opening worth having
-DRAWER_WIDTH = 0.5  # the widest drawer
-METAL_DRAWER_SHEET = 0.001  # m: steel drawers are 0.8-1.2 mm folded sheet (a 50 cm drawer ~2-3 kg)
-DRAWER_DEPTH = 0.45  # the deepest drawer
-SLEEVE_FROM = 0.45  # adjustable legs: sleeves start at this fraction of the height
-INNER_AT_REST = 0.12  # an inner leg reaches this far up its sleeve at rest
-PULL = 0.75  # a drawer pulls out this fraction of its depth
-
-
 class TableLayout(Layout):
     def dining_table(self, node):
         p = self.p
@@ -183,23 +156,25 @@ class TableLayout(Layout):
         ext = style.one("extension")
         leaves = style.one("drop_leaf")
         if p["top_shape"] == "oval":
-            La, Wa = OVAL_APRON * L, OVAL_APRON * W
+            La, Wa = D["oval_apron"] * L, D["oval_apron"] * W
         else:
             La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
         wc = W * (1 - 2 * p["leaf_fraction"])  # a drop-leaf table's fixed centre
         if leaves:  # the apron and the folded lopers stay inside the hanging leaves
-            Wa = min(Wa, wc - 2 * (LEAF_GAP_Y + 0.026))
+            Wa = min(Wa, wc - 2 * (D["leaf_gap_y"] + D["loper_room"]))
         lw = p["leg_width"] if p["support"] == "legs" else 0.0
         draw = style.one("draw_leaf")
-        za1 = H - tt - (SEAT if ext else 0.0) - (2 * LEAF_GAP + LEAF_T if draw else 0.0)
+        za1 = H - tt - (D["seat"] if ext else 0.0) - (2 * D["leaf_gap"] + D["leaf_t"] if draw else 0.0)
         n_leaves = len(ext.of("leaf")) if ext else 0
-        leaf = (za1 - n_leaves * (LEAF_GAP + LEAF_T), za1 - LEAF_GAP)  # the stack of stored leaves
-        need = 2 * MARGIN + DRAWER_MIN + (za1 - leaf[0] + 0.006 if ext else 0.0) if drawers else DRAWER_MIN
+        leaf = (za1 - n_leaves * (D["leaf_gap"] + D["leaf_t"]), za1 - D["leaf_gap"])  # the stack of stored leaves
+        need = (2 * D["margin"] + D["drawer_min"] + (za1 - leaf[0] + D["leaf_room"] if ext else 0.0) if drawers
+                else D["drawer_min"])
         za0 = za1 - max(p["apron_height"], need)
-        x_in = La / 2 - max(lw, BOARD)  # free length between the legs (half)
+        board = D["board"]
+        x_in = La / 2 - max(lw, board)  # free length between the legs (half)
         ends = p["drawer_sides"] == "ends"
-        span = Wa / 2 - max(lw, BOARD) if ends else x_in
-        z_top = (leaf[0] - 0.006) if ext else za1 - MARGIN
+        span = Wa / 2 - max(lw, board) if ends else x_in
+        z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
         holes = {}
         if drawers:
             holes[1] = self._holes(span, za0, z_top, len(drawers.of("drawer")))
@@ -207,19 +182,18 @@ class TableLayout(Layout):
                 holes[-1] = self._holes(span, za0, z_top, len(drawers.of("back_drawer")))
         sides = tuple(holes)
         if ends:
-            body = M.apron_rails_ends(La, Wa, lw, za0, za1, BOARD, "frame", holes)
+            body = M.apron_rails_ends(La, Wa, lw, za0, za1, board, "frame", holes)
         else:
-            body = T.apron_rails(La, Wa, lw, za0, za1, BOARD, "frame", holes)
+            body = T.apron_rails(La, Wa, lw, za0, za1, board, "frame", holes)
+        whole, centre = D["top_bevel"]
         if leaves:
-            xy = T.outline(L, W, p["top_shape"], 192)
-            body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, 0.15 * tt, "top"))
+            xy = T.outline(L, W, p["top_shape"], D["outline"])
+            body.append(T.slab(M.clip_outline(xy, -wc / 2, wc / 2), H - tt, H, centre * tt, "top"))
         elif not ext:
-            body.append(T.top(L, W, p["top_shape"], H - tt, H, 0.2 * tt, "top"))
+            body.append(T.top(L, W, p["top_shape"], H - tt, H, whole * tt, "top"))
         if draw:  # the top rests on a bearer frame (two side rails, a cross rail) between the stored leaves
-            xb, yb = L / 2 - self._draw_leaf_length() - LEAF_GAP, Wa / 2 - BOARD
-            for y0, y1 in ((-yb, -yb + 0.06), (yb - 0.06, yb)):
-                body.append(g.box_between((-xb, y0, za1), (xb, y1, H - tt), "frame"))
-            body.append(g.box_between((-0.04, -yb + 0.06, za1), (0.04, yb - 0.06, H - tt), "frame"))
+            xb, yb = L / 2 - self._draw_leaf_length() - D["leaf_gap"], Wa / 2 - board
+            body += M.bearer_frame(xb, yb, za1, H - tt, D["bearer"], "frame")
         self.add("body", "body", body)
         self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
         self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
@@ -229,9 +203,9 @@ class TableLayout(Layout):
     def _holes(self, x_in, z0, z1, n):
         """``n`` drawer openings spread evenly along a board with ``x_in`` free each side of its centre."""
         ends = self.p["drawer_sides"] == "ends"
-        dw = min(DRAWER_WIDTH, 2 * x_in / n - (0.05 if ends else 0.1))
+        dw = min(D["drawer_width"], 2 * x_in / n - D["drawer_stile"][0 if ends else 1])
         xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
-        return [(x - dw / 2, z0 + MARGIN, x + dw / 2, z1) for x in xs]
+        return [(x - dw / 2, z0 + D["margin"], x + dw / 2, z1) for x in xs]
 
     def legs(self, node, La, Wa, lw, za0, za1):
         p = self.p
@@ -240,19 +214,22 @@ class TableLayout(Layout):
         if adj is None:
             lev, cas = node.one("levellers"), node.one("casters")
             c = S.caster(p["caster_style"], p["wheel_radius"]) if cas else None
-            z0 = LEVELLER if lev else c.stem_top + 0.004 if cas else 0.0  # levelling feet or casters under the legs
+            plate, wider = D["caster_plate"]
+            # levelling feet or casters under the legs
+            z0 = D["leveller"] if lev else c.stem_top + plate if cas else 0.0
             self.extend("body", [pc.transformed(f.moved(dz=z0).matrix) for f in corners
                                  for pc in T.leg(p["leg_style"], lw / 2, za1 - z0, "frame", kind="dining")])
             if lev:
                 self.grow(lev, corners=corners, lw=lw)
             if cas:
-                self.extend("body", [g.box(((lw + 0.01), (lw + 0.01), 0.004), f.point((0, 0, z0 - 0.002)), "metal")
-                                     for f in corners])  # the casters' top plates under the legs
+                # the casters' top plates under the legs
+                self.extend("body", [g.box((lw + wider, lw + wider, plate), f.point((0, 0, z0 - plate / 2)), "metal")
+                                     for f in corners])
                 self.grow(cas, corners=corners, c=c)
             return
-        zs0 = SLEEVE_FROM * p["height"]
+        zs0 = D["sleeve_from"] * p["height"]
         self.extend("body", [pc.transformed(f.matrix) for f in corners
-                             for pc in T.square_sleeve(lw, zs0, za1, SLEEVE_WALL, "frame")])
+                             for pc in T.square_sleeve(lw, zs0, za1, D["sleeve_wall"], "frame")])
         self.grow(adj, corners=corners, lw=lw, zs0=zs0, za1=za1)
 
     def levellers(self, node, corners, lw):
@@ -263,10 +240,7 @@ class TableLayout(Layout):
         """A levelling foot: a glide disc on a threaded stem screwed into the leg. Fixed: a foot under load
         turns only with the table lifted (the sweep's reach could not spin two of four feet carrying a
         table: ground friction), so it is a part, not a joint."""
-        r = min(0.022, 0.42 * lw)
-        pieces = [g.cylinder(at.point((0, 0, 0)), at.point((0, 0, 0.009)), r, "foot", 24),
-                  g.cylinder(at.point((0, 0, 0.009)), at.point((0, 0, LEVELLER)), 0.005, "metal", 12)]
-        self.add(f"leveller_{k}", "foot", pieces)
+        self.add(f"leveller_{k}", "foot", M.leveller(at, lw, D["leveller"], D))
         self.fix("body", f"leveller_{k}")
 
     def casters(self, node, corners, c):
@@ -287,9 +261,9 @@ class TableLayout(Layout):
     single = twin
 
     def adjustable_legs(self, node, corners, lw, zs0, za1):
-        zi1 = zs0 + INNER_AT_REST
-        travel = min(self.p["leg_travel"], za1 - 0.03 - zi1)
-        wi = lw - 2 * (SLEEVE_WALL + CLEAR)
+        zi1 = zs0 + D["inner_at_rest"]
+        travel = min(self.p["leg_travel"], za1 - D["inner_top"] - zi1)
+        wi = lw - 2 * (D["sleeve_wall"] + D["clear"])
         for k, f in enumerate(corners):
             pieces = [pc.transformed(f.matrix) for pc in T.inner_leg(wi, zi1, "metal", "foot")]
             leg = self.add(f"leg_{k}", "leg", pieces)
@@ -298,7 +272,7 @@ class TableLayout(Layout):
     def pedestal(self, node, La, Wa, lw, za0, za1):
         p = self.p
         lev = node.one("pedestal_levellers")
-        z0 = LEVELLER if lev else 0.0  # the foot stands on levelling glides
+        z0 = D["leveller"] if lev else 0.0  # the foot stands on levelling glides
         up = Frame.at((0, 0, z0)).matrix
         self.extend("body", [pc.transformed(up) for pc in T.pedestals(p["length"], La, Wa, p["width"],
                                                                       p["pedestal_radius"], za0 - 0.002 - z0,
@@ -309,7 +283,7 @@ class TableLayout(Layout):
     def pedestal_levellers(self, node, feet):
         """Levelling glides under the pedestal foot: four under a round foot, two under each trestle foot."""
         for k, (n, f) in enumerate(zip(node.of("leveller"), feet, strict=True)):
-            self.grow(n, k=k, at=f, lw=0.05)
+            self.grow(n, k=k, at=f, lw=D["pedestal_glide_leg"])
 
     def top_style(self, node, **slot):
         self.grow(node.one(node.choice), **slot)
@@ -322,17 +296,15 @@ class TableLayout(Layout):
     def lazy_susan(self, node):
         """A turntable in the middle of the top on a ball-bearing ring (the ring is the body's)."""
         p = self.p
-        H, r = p["height"], p["lazy_susan_radius"] * p["width"]
-        self.extend("body", [g.cylinder([0, 0, H], [0, 0, H + BEARING], 0.4 * r, "metal", 48)])
-        z0 = H + BEARING + 0.001
-        self.add("lazy_susan", "turntable", [g.revolve([(0.0, z0), (r - 0.004, z0), (r, z0 + 0.004),
-                                                        (r, z0 + SUSAN_T - 0.004), (r - 0.004, z0 + SUSAN_T),
-                                                        (0.0, z0 + SUSAN_T)], "top", sections=96)])
+        ring, table, z0 = M.lazy_susan(p["lazy_susan_radius"] * p["width"], p["height"], D["bearing"], D["susan_t"],
+                                       "metal", "top")
+        self.extend("body", [ring])
+        self.add("lazy_susan", "turntable", [table])
         self.spin("body", "lazy_susan", Frame.at((0, 0, z0)), role="turntable")
 
     def _draw_leaf_length(self):
         """A draw leaf's length: 40-50 cm on a long table (each adds that much), never past a third of the top."""
-        return min(0.5, self.p["length"] / 3)
+        return min(D["draw_leaf"], self.p["length"] / D["draw_leaf_share"])
 
     def draw_leaf(self, node, za1, **slot):
         for side, n in zip((1, -1), node.of("end_leaf"), strict=True):
@@ -347,12 +319,14 @@ class TableLayout(Layout):
         p = self.p
         L, W = p["length"], p["width"]
         ll = self._draw_leaf_length()
-        x0, x1 = sorted((side * (L / 2 - ll), side * (L / 2 - 0.005)))
-        z0 = za1 + LEAF_GAP
+        end, edge = D["draw_leaf_in"]
+        x0, x1 = sorted((side * (L / 2 - ll), side * (L / 2 - end)))
+        z0 = za1 + D["leaf_gap"]
         name = "leaf_front" if side > 0 else "leaf_back"
-        self.add(name, "leaf", [g.box_between((x0, -W / 2 + 0.01, z0), (x1, W / 2 - 0.01, z0 + LEAF_T), "top",
+        self.add(name, "leaf", [g.box_between((x0, -W / 2 + edge, z0), (x1, W / 2 - edge, z0 + D["leaf_t"]), "top",
                                               bevel=0.003)])
-        self.slide("body", name, Frame.at((side * (L / 2 - 0.005), 0, z0), z=(side, 0, 0)), upper=ll - 0.03)
+        self.slide("body", name, Frame.at((side * (L / 2 - end), 0, z0), z=(side, 0, 0)),
+                   upper=ll - D["draw_leaf_keep"])
 
     def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
         for side, n in zip((1, -1), node.of("leaf_side")):
@@ -362,20 +336,21 @@ class TableLayout(Layout):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         name = "leaf_left" if side > 0 else "leaf_right"
-        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], 192), side, wc / 2 + LEAF_GAP_Y, H - tt, H, "top")
+        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], D["outline"]), side, wc / 2 + D["leaf_gap_y"],
+                                   H - tt, H, "top")
         self.add(name, "leaf", [piece])
         self.hinge("body", name, hinge, upper=math.pi / 2)
         if node.one("loper"):
             self.grow(node.one("loper"), side=side, leaf=name, Wa=Wa, La=La, za0=za0, za1=za1,
-                      reach=wc / 2 + 0.8 * (W - wc) / 2)
+                      reach=wc / 2 + D["loper_reach"] * (W - wc) / 2)
 
     def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
         """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
-        under a leaf whose apron is ``TWO_LOPERS`` long or longer when ``lopers_per_leaf`` is 2."""
-        length = min(LOPER, 0.4 * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        xs = [-La / 4, La / 4] if La >= TWO_LOPERS and self.p["lopers_per_leaf"] == 2 else [0.0]
+        under a leaf whose apron is ``D["two_lopers"]`` long or longer when ``lopers_per_leaf`` is 2."""
+        length = min(D["loper"], D["loper_apron"] * La, reach - Wa / 2)  # swung out, it ends under the leaf
+        xs = [-La / 4, La / 4] if La >= D["two_lopers"] and self.p["lopers_per_leaf"] == 2 else [0.0]
         for k, xc in enumerate(xs):
-            pieces, hinge = M.loper(xc - length / 2, side * Wa / 2, side, za0 + 0.01, za1 - 0.006, length, "frame")
+            pieces, hinge = M.apron_loper(xc - length / 2, side * Wa / 2, side, za0, za1, length, "frame")
             name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
             self.add(name, "bracket", pieces)
             self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
@@ -385,15 +360,15 @@ class TableLayout(Layout):
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         travel = p["extension_fraction"] * La / 2
         for name, s in (("top_front", 1), ("top_back", -1)):
-            self.add(name, "top", [T.half_top(L, W, p["top_shape"], H - tt, H, SPLIT, s, "top")])
-            self.slide("body", name, Frame.at((s * SPLIT / 2, 0, H - tt), z=(s, 0, 0)), upper=travel)
-        half = min(travel, x_in - 0.01)
+            self.add(name, "top", [T.half_top(L, W, p["top_shape"], H - tt, H, D["split"], s, "top")])
+            self.slide("body", name, Frame.at((s * D["split"] / 2, 0, H - tt), z=(s, 0, 0)), upper=travel)
+        half = min(travel, x_in - D["leaf_store"])
         leaves = node.of("leaf")
         if len(leaves) > 1:  # two leaves, each half the opening wide, fill it side by side
             half /= 2
         for k, n in enumerate(leaves):
-            z1 = leaf[1] - k * (LEAF_T + LEAF_GAP)
-            self.grow(n, k=k, lo=(-half, -Wa / 2 + BOARD, z1 - LEAF_T), hi=(half, Wa / 2 - BOARD, z1))
+            z1 = leaf[1] - k * (D["leaf_t"] + D["leaf_gap"])
+            self.grow(n, k=k, lo=(-half, -Wa / 2 + D["board"], z1 - D["leaf_t"]), hi=(half, Wa / 2 - D["board"], z1))
 
     def leaf(self, node, k, lo, hi):
         """A leaf stored on the runners in the apron, under the split (it is taken out by hand)."""
@@ -403,33 +378,25 @@ class TableLayout(Layout):
 
     def drawers(self, node, slots, Wa, La, sides):
         ends = self.p["drawer_sides"] == "ends"
+        both, one = D["drawer_reach"]
         if ends:
-            depth = min(DRAWER_DEPTH, (La - 2 * BOARD) * 0.45)
+            depth = min(D["drawer_depth"], (La - 2 * D["board"]) * both)
         else:
-            depth = min(DRAWER_DEPTH, (Wa - 2 * BOARD) * (0.45 if sides == 2 else 0.8))
+            depth = min(D["drawer_depth"], (Wa - 2 * D["board"]) * (both if sides == 2 else one))
         for k, (d, (s, hole)) in enumerate(zip(node.of("drawer") + node.of("back_drawer"), slots, strict=True)):
             self.grow(d, k=k, side=s, hole=hole, at=s * (La if ends else Wa) / 2, depth=depth, ends=ends)
 
     def drawer(self, node, k, side, hole, at, depth, ends):
         a0, z0, a1, z1 = hole
-        w, h = a1 - a0 - 2 * CLEAR, z1 - z0 - 2 * CLEAR
+        w, h = a1 - a0 - 2 * D["clear"], z1 - z0 - 2 * D["clear"]
         if ends:
             face = Frame.at((at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
         else:
             face = Frame.at(((a0 + a1) / 2, at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
-        box = panels.drawer_box(w, h, depth, BOARD, DRAWER_WALL, "frame")
-        if self.p["frame_finish"] == "brushed_metal":  # a steel drawer is folded sheet, not steel boards
-            part = box.parts[box.root]
-            box = Assembly.single(part.label, [pc.replace(sheet=METAL_DRAWER_SHEET) for pc in part.pieces],
-                                  box.anchors, box.supports, name=box.root)
-        box = box.attached("slide", to=face)
-        if self.p["handle_style"] == "knob":
-            handle = hardware.knob_handle(min(0.016, 0.3 * h), 0.025, "handle")
-        else:
-            handle = hardware.HANDLES[self.p["handle_style"]](min(0.16, 0.5 * w), "handle")
-        handle = handle.attached("mount", to=box.anchor("handle"))
-        drawer = self.place(box.with_pieces(box.root, handle.parts[handle.root].pieces), f"drawer_{k}")
-        self.slide("body", drawer.root, drawer.anchor("slide"), upper=PULL * depth)
+        metal = self.p["frame_finish"] == "brushed_metal"
+        drawer = self.place(M.apron_drawer(w, h, depth, D["board"], D["drawer_wall"], face, self.p["handle_style"],
+                                           D, D["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
+        self.slide("body", drawer.root, drawer.anchor("slide"), upper=D["pull"] * depth)
 
     back_drawer = drawer
 

@@ -109,39 +109,10 @@ def frame_family(p: dict) -> dict:
     return {**p, "frame_family": leaf if p["frame_finish"] == "match" else "painted:white|off_white"}
 
 
-OPENS = math.pi / 2
-GAP = 0.003  # leaf to jambs and head
-FLOOR_GAP = 0.012  # under the leaf
-THRESHOLD = 0.02
-BACKSET = 0.06  # handle axis from the lock edge
-LEVER_TURN = math.pi / 4
-PULL = hardware.HandleSize(standoff=0.04, bar_radius=0.012, post_radius=0.0096, inset=0.02)
-
-
-GUIDE = dict(clear=0.003, wall=0.004, height=0.035, length=0.05)  # barn-door floor guide channel
-STAY = dict(radius=0.02, height=0.03, clear=0.003, width=0.034)  # barn-door stay roller (m): a 40 mm roller
-GUIDE_IN = 0.05  # the guide sits this far inside the leaf's edge at rest
-KICK_HEIGHT = 0.2  # kick plates are 150-300 mm high, 1-1.5 mm stainless (Eurospec, Zoo Hardware listings)
-KICK_T = 0.0015
-KICK_INSET = 0.025  # short of each edge of the leaf
-LETTER_LOW = 0.72  # a letter plate's centre at least this high (BS EN 13724: opening 0.7-1.7 m above the floor)
-LETTER_BELOW = 0.25  # and this far below the handle axis
-LETTER_FLAP_OPENS = 1.4  # the flap swings in to about 80 degrees
-VIEWER_HEIGHT = 1.5  # door viewers are fitted at 1.4-1.6 m (Yale, Brinks fitting instructions)
-VIEWER_SWING = math.pi / 2  # the privacy cover swings a quarter turn aside
-DUTCH_CUT = 1.07  # a Dutch door's halves meet 1.0-1.2 m above the floor, above the lockset (Simpson, JELD-WEN)
-DUTCH_KNOB = 0.12  # the top half's knob this far above the cut
-
-
 def _crosses(piece, box) -> bool:
     """Whether a piece's bounds overlap the box ``(lo, hi)``."""
     lo, hi = piece.bounds
     return bool(np.all(lo < np.asarray(box[1])) and np.all(hi > np.asarray(box[0])))
-
-
-SLIDE_GAP = 0.01  # a sliding leaf's back face in front of the header board
-HEADER = 0.02  # barn-door header board thickness (on the architraves)
-RAIL_CLEAR = 0.0015  # hanger wheels ride this far above the rail (they never touch it at rest)
 
 
 class DoorLayout(Layout):
@@ -151,26 +122,26 @@ class DoorLayout(Layout):
         W, H, T = p["leaf_width"], p["leaf_height"], p["leaf_thickness"]
         Dj = p["frame_depth"]
         left = p["hinge_side"] == "left"
-        th = THRESHOLD if node.one("threshold") else 0.0
-        z0 = th + FLOOR_GAP
+        th = P.THRESHOLD if node.one("threshold") else 0.0
+        z0 = th + P.FLOOR_GAP
         if design == "double":
             Wl = p["pair_fraction"] * W
-            gap_mid = GAP + T * T / Wl  # both back corners swing out at the meeting stiles
-            oy0, oy1 = -Wl - gap_mid / 2 - GAP, Wl + gap_mid / 2 + GAP
+            gap_mid = P.GAP + T * T / Wl  # both back corners swing out at the meeting stiles
+            oy0, oy1 = -Wl - gap_mid / 2 - P.GAP, Wl + gap_mid / 2 + P.GAP
             leaves = [((-Wl - gap_mid / 2, -gap_mid / 2), "left"), ((gap_mid / 2, Wl + gap_mid / 2), "right")]
             shift = 0.0
         elif design == "sliding":  # the leaf covers the opening and its architraves
-            trim = p["casing_width"] + P.REVEAL + 0.015
+            trim = p["casing_width"] + P.REVEAL + P.BARN["trim_past"]
             oy0, oy1 = -W / 2 + trim, W / 2 - trim
-            shift, H_open = 0.0, H - trim - FLOOR_GAP
+            shift, H_open = 0.0, H - trim - P.FLOOR_GAP
         else:
-            gap_lock = GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
-            oy0 = -W / 2 - (GAP if left else gap_lock)
-            oy1 = W / 2 + (gap_lock if left else GAP)
+            gap_lock = P.GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
+            oy0 = -W / 2 - (P.GAP if left else gap_lock)
+            oy1 = W / 2 + (gap_lock if left else P.GAP)
             shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
-        head = z0 + (H_open if design == "sliding" else H) + GAP
+        head = z0 + (H_open if design == "sliding" else H) + P.GAP
         frame = P.frame(Dj / 2, Dj, (oy0 + shift, oy1 + shift), head, p["jamb_width"], p["casing_width"], 0.0,
-                        Dj / 2 - T - GAP)
+                        Dj / 2 - T - P.GAP)
         latch = None
         if design == "single" and node.one("single").one("latch"):
             y_lock, out = ((W / 2 + shift), 1.0) if left else ((-W / 2 + shift), -1.0)
@@ -191,15 +162,15 @@ class DoorLayout(Layout):
         elif design == "double":
             self.grow(node.one("double"), xs=(Dj / 2 - T, Dj / 2), leaves=leaves, zs=zs)
         else:
-            x0 = Dj / 2 + P.CASING_T + HEADER + SLIDE_GAP
-            self.grow(node.one("sliding"), xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(FLOOR_GAP, FLOOR_GAP + H),
-                      travel=(oy1 - oy0) + 0.03)
+            x0 = Dj / 2 + P.CASING_T + P.HEADER + P.SLIDE_GAP
+            self.grow(node.one("sliding"), xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(P.FLOOR_GAP, P.FLOOR_GAP + H),
+                      travel=(oy1 - oy0) + P.BARN["travel_past"])
 
     def threshold(self, node, ys):
         """The threshold (a separate sill strip screwed to the floor between the jambs)."""
         Dj = self.p["frame_depth"]
         self.add("threshold", "threshold",
-                 [g.box_between([-Dj / 2, ys[0], 0.0], [Dj / 2, ys[1], THRESHOLD], "frame", bevel=0.004)])
+                 [g.box_between([-Dj / 2, ys[0], 0.0], [Dj / 2, ys[1], P.THRESHOLD], "frame", bevel=0.004)])
         self.fix("frame", "threshold")
 
     def single(self, node, xs, ys, zs, latch):
@@ -207,7 +178,7 @@ class DoorLayout(Layout):
         line = self.grow(node.one("leaf"), xs=xs, ys=ys, zs=zs, side=side, name="leaf", latch=latch)
         if latch:  # the bolt's joint first: the leaf's hinge requires it drawn back
             self.grow(node.one("latch"), bolt=latch[0], out=1.0 if side == "left" else -1.0)
-            self.hinge("frame", "leaf", line, upper=OPENS, requires_open="latch")
+            self.hinge("frame", "leaf", line, upper=P.OPENS, requires_open="latch")
         for kind in ("letter_plate", "viewer"):
             if node.one(kind):
                 self.grow(node.one(kind), xs=xs, ys=ys, leaf="leaf")
@@ -215,54 +186,55 @@ class DoorLayout(Layout):
     def letter_plate(self, node, xs, ys, leaf):
         """A letter plate below the handle (BS EN 13724: the opening 0.7-1.7 m above the floor), centred on the
         leaf: its opening is cut through every leaf piece it crosses; the flap turns in about +y."""
-        z = max(LETTER_LOW, self.p["handle_height"] - LETTER_BELOW)
+        z = max(P.LETTER_LOW, self.p["handle_height"] - P.LETTER_BELOW)
         cut, fixed, flap, (o, a) = P.letter_plate(xs, (ys[0] + ys[1]) / 2, z)
         part = self.bp.parts[leaf]
         part.pieces[:] = [P.mortise(pc, *cut) if _crosses(pc, cut) else pc for pc in part.pieces]
         self.extend(leaf, fixed)
         self.add("letter_flap", "flap", flap)
-        self.hinge(leaf, "letter_flap", Frame.at(o, z=a), upper=LETTER_FLAP_OPENS)
+        self.hinge(leaf, "letter_flap", Frame.at(o, z=a), upper=P.LETTER_FLAP_OPENS)
 
     def viewer(self, node, xs, ys, leaf):
         """A door viewer at eye height on the leaf's centre line; its cover swings aside on the back face."""
-        fixed, cover, (o, a) = P.viewer(xs, (ys[0] + ys[1]) / 2, VIEWER_HEIGHT)
+        fixed, cover, (o, a) = P.viewer(xs, (ys[0] + ys[1]) / 2, P.VIEWER_HEIGHT)
         self.extend(leaf, fixed)
         self.add("viewer_cover", "cover", cover)
-        self.hinge(leaf, "viewer_cover", Frame.at(o, z=a), upper=VIEWER_SWING)
+        self.hinge(leaf, "viewer_cover", Frame.at(o, z=a), upper=P.VIEWER_SWING)
 
     def double(self, node, xs, leaves, zs):
         for kid, (ys, side), name in zip(node.of("leaf"), leaves, ("leaf", "leaf_2"), strict=True):
             self.grow(kid, xs=xs, ys=ys, zs=zs, side=side, name=name, latch=None)
 
     def dutch(self, node, xs, ys, zs):
-        """The bottom half up to the cut above its handle (at least DUTCH_CUT above the floor), the top half
+        """The bottom half up to the cut above its handle (at least P.DUTCH_CUT above the floor), the top half
         above it; both solid-core (Dutch doors are exterior doors), one panel or lite each."""
         p = self.p
-        above = P.ROSE[0] if p["handle"] != "pull" else p["pull_length"] / 2 + 0.015
-        cut = max(DUTCH_CUT, p["handle_height"] + above + 0.06)
-        self.grow(node.one("leaf"), xs=xs, ys=ys, zs=(zs[0], cut - GAP / 2), side=p["hinge_side"], name="leaf",
+        post, over = P.DUTCH_CLEAR
+        above = P.ROSE[0] if p["handle"] != "pull" else p["pull_length"] / 2 + post
+        cut = max(P.DUTCH_CUT, p["handle_height"] + above + over)
+        self.grow(node.one("leaf"), xs=xs, ys=ys, zs=(zs[0], cut - P.GAP / 2), side=p["hinge_side"], name="leaf",
                   latch=None, dutch=True)
-        self.grow(node.one("top_leaf"), xs=xs, ys=ys, zs=(cut + GAP / 2, zs[1]))
+        self.grow(node.one("top_leaf"), xs=xs, ys=ys, zs=(cut + P.GAP / 2, zs[1]))
 
     def top_leaf(self, node, xs, ys, zs):
         """A Dutch door's top half: a fixed knob on each face by its lock edge, a deadbolt's thumb-turn above."""
         p = self.p
         left = p["hinge_side"] == "left"
         y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
-        y = y_lock - (1.0 if left else -1.0) * BACKSET
-        zk = zs[0] + DUTCH_KNOB
+        y = y_lock - (1.0 if left else -1.0) * P.BACKSET
+        zk = zs[0] + P.DUTCH_KNOB
         pieces = P.leaf(xs, ys, zs, zs[0], p["leaf_style"], p["glazing"], p["stile_width"], 1, wall=P.EXTERIOR_WALL)
         for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
             pieces += [P.rose(face, n, y, zk)] + g.knob_handle((face + n * P.ROSE[1], y, zk), (n, 0, 0), "handle",
-                                                               radius=p["knob_radius"], depth=0.05)
+                                                               radius=p["knob_radius"], depth=P.DUTCH_KNOB_DEPTH)
         self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
-        self.hinge("frame", "leaf_2", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=OPENS)
+        self.hinge("frame", "leaf_2", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=P.OPENS)
         if node.one("deadbolt"):
             self.grow(node.one("deadbolt"), xs=xs, y=y, z=zk + P.THUMB["above"])
 
     def deadbolt(self, node, xs, y, z):
         self.extend("leaf_2", P.thumb_rose(xs[0], -1.0, y, z, key=False) + P.thumb_rose(xs[1], 1.0, y, z, key=True))
-        start = xs[0] - P.ROSE[1] - GAP
+        start = xs[0] - P.ROSE[1] - P.GAP
         self.add("deadbolt", "knob", P.thumb_turn(start, -1.0, y, z))
         self.hinge("leaf_2", "deadbolt", Frame.at((start, y, z), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
 
@@ -281,8 +253,8 @@ class DoorLayout(Layout):
         self.add(name, "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
         line = Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1))
         if not latch:
-            self.hinge("frame", name, line, upper=OPENS)
-        where = dict(xs=xs, y=y_lock - inward * BACKSET, z=zk, inward=inward, leaf=name)
+            self.hinge("frame", name, line, upper=P.OPENS)
+        where = dict(xs=xs, y=y_lock - inward * P.BACKSET, z=zk, inward=inward, leaf=name)
         self.grow(node.one(node.choice), **where)
         if node.one("thumb_turn"):
             self.grow(node.one("thumb_turn"), **where)
@@ -292,10 +264,7 @@ class DoorLayout(Layout):
 
     def kick_plate(self, node, xs, ys, zs, leaf):
         """A stainless kick plate screwed across the bottom of the leaf's front face (a separate part)."""
-        name = self.add(f"kick_plate{leaf[4:]}", "plate",
-                        [g.box_between([xs[1] + 0.0005, ys[0] + KICK_INSET, zs[0] + 0.01],
-                                       [xs[1] + 0.0005 + KICK_T, ys[1] - KICK_INSET, zs[0] + 0.01 + KICK_HEIGHT],
-                                       "handle", bevel=0.0006)])
+        name = self.add(f"kick_plate{leaf[4:]}", "plate", P.kick_plate(xs, ys, zs))
         self.fix(leaf, name)
 
     def latch(self, node, bolt, out):
@@ -303,14 +272,15 @@ class DoorLayout(Layout):
         # drawn back into its mortise by the handle (a 13 mm throw), horizontal: still under gravity
         y, z = bolt[0].bounds.mean(0)[1:]
         x = bolt[0].bounds.mean(0)[0]
-        self.slide("leaf", "latch", Frame.at((x, y, z), z=(0, -out, 0)), upper=P.BOLT["throw"] + 0.002, role="slide")
+        self.slide("leaf", "latch", Frame.at((x, y, z), z=(0, -out, 0)), upper=P.BOLT["throw"] + P.BOLT["slack"],
+                   role="slide")
 
     def thumb_turn(self, node, xs, y, z, inward, leaf):
         zt = z + P.THUMB["above"]
         if self.p["handle"] == "pull":  # above the bar pull's top post
-            zt = z + max(P.THUMB["above"], self.p["pull_length"] / 2 + P.THUMB["rose"] + 0.02)
+            zt = z + max(P.THUMB["above"], self.p["pull_length"] / 2 + P.THUMB["rose"] + P.THUMB["over_pull"])
         self.extend(leaf, P.thumb_rose(xs[0], -1.0, y, zt, key=False) + P.thumb_rose(xs[1], 1.0, y, zt, key=True))
-        start = xs[0] - P.ROSE[1] - GAP
+        start = xs[0] - P.ROSE[1] - P.GAP
         name = self.add(f"thumb_turn{leaf[4:]}", "knob", P.thumb_turn(start, -1.0, y, zt))
         self.hinge(leaf, name, Frame.at((start, y, zt), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
 
@@ -321,24 +291,24 @@ class DoorLayout(Layout):
         p = self.p
         d = -1.0 if p["hinge_side"] == "left" else 1.0  # it slides toward the hinge side's wall
         r = p["wheel_radius"]
-        z_ax = zs[1] + 0.05 + r  # wheel axles above the leaf's top
-        z_rail = z_ax - r - RAIL_CLEAR
-        x_wall = xs[0] - SLIDE_GAP - HEADER  # the architraves' front face
-        x_w = x_wall + 0.048  # over the rail
+        barn = P.BARN
+        z_ax = zs[1] + barn["axle_above"] + r  # wheel axles above the leaf's top
+        z_rail = z_ax - r - P.RAIL_CLEAR
+        x_wall = xs[0] - P.SLIDE_GAP - P.HEADER  # the architraves' front face
+        x_w = x_wall + barn["wheel_out"]  # over the rail
         lo, hi = (ys[0] + d * travel, ys[1]) if d < 0 else (ys[0], ys[1] + travel)
-        self.extend("frame", P.barn_track(x_wall, lo - 0.06, hi + 0.06, z_rail))
+        self.extend("frame", P.barn_track(x_wall, lo - barn["track_past"], hi + barn["track_past"], z_rail))
         pieces = P.leaf(xs, ys, zs, p["handle_height"], p["leaf_style"], p["glazing"], p["stile_width"],
                         p["panel_count"])
-        yh = [ys[0] + 0.12, ys[1] - 0.12]
+        yh = [ys[0] + barn["strap_in"], ys[1] - barn["strap_in"]]
         for y in yh:
-            pieces += P.hanger_strap(xs[1], x_w, y, zs[1] - 0.12, z_ax)
+            pieces += P.hanger_strap(xs[1], x_w, y, zs[1] - barn["strap_below"], z_ax)
         # a bar pull on the front face near the trailing edge, a flush pull on the back
-        y_pull = (ys[1] - 0.08) if d < 0 else (ys[0] + 0.08)
+        y_pull = (ys[1] - barn["pull_in"]) if d < 0 else (ys[0] + barn["pull_in"])
         at = Frame.at((xs[1], y_pull, p["handle_height"]), z=(1, 0, 0), x=(0, 0, 1))
-        bar = hardware.bar_handle(p["pull_length"], "handle", PULL).attached("mount", to=at)
+        bar = hardware.bar_handle(p["pull_length"], "handle", P.PULL).attached("mount", to=at)
         pieces += list(bar.parts[bar.root].pieces)
-        pieces.append(g.box_between([xs[0] - 0.002, y_pull - 0.025, p["handle_height"] - 0.07],
-                                    [xs[0], y_pull + 0.025, p["handle_height"] + 0.07], "handle", bevel=0.001))
+        pieces.append(P.flush_pull(xs[0], y_pull, p["handle_height"]))
         self.add("leaf", "leaf", pieces)
         self.slide("frame", "leaf", Frame.at((xs[1], ys[1] if d > 0 else ys[0], zs[0]), z=(0, d, 0)), upper=travel,
                    role="slide")
@@ -353,37 +323,24 @@ class DoorLayout(Layout):
         """What keeps the leaf's bottom edge off the wall: a floor guide it runs in, at the opening's edge on the
         side it slides to (always under it), or a stay roller on the architrave it slides over."""
         if node.choice == "floor_guide":
-            self.grow(node.one("floor_guide"), xs=xs, y=(ys[0] + GUIDE_IN) if d < 0 else (ys[1] - GUIDE_IN))
+            self.grow(node.one("floor_guide"), xs=xs, y=(ys[0] + P.GUIDE_IN) if d < 0 else (ys[1] - P.GUIDE_IN))
         else:
-            y = ys[0] + 0.015 + self.p["casing_width"] / 2
+            y = ys[0] + P.BARN["stay_in"] + self.p["casing_width"] / 2
             self.grow(node.one("stay_roller"), xs=xs, x_wall=x_wall, y=y if d < 0 else -y)
 
     def stay_roller(self, node, xs, x_wall, y):
         """A barn door's stay roller: a bracket screwed to the architrave's face and the floor, reaching under
         the leaf's bottom edge, with a roller on a vertical pin that the leaf's front face runs against
         (National Hardware N187-165, Rustica stay rollers: a 30-40 mm roller on an L bracket)."""
-        r, h = STAY["radius"], STAY["height"]
-        xr = xs[1] + KICK_T + 0.0005 + STAY["clear"] + r  # clear of a kick plate
-        xp = xr + r + STAY["clear"]  # the bracket's upright, in front of the roller
-        t, w = 0.004, STAY["width"]
-        z0, z1 = t + STAY["clear"], t + STAY["clear"] + h  # the roller between the floor plate and the top arm
-        self.extend("frame", [
-            g.box_between([x_wall, y - w / 2, 0.0], [x_wall + t, y + w / 2, 0.07], "handle", bevel=0.001),
-            g.box_between([x_wall, y - w / 2, 0.0], [xp + t, y + w / 2, t], "handle", bevel=0.001),
-            g.box_between([xp, y - w / 2, 0.0], [xp + t, y + w / 2, z1 + STAY["clear"] + t], "handle", bevel=0.001),
-            g.box_between([xr - 0.008, y - w / 2, z1 + STAY["clear"]], [xp + t, y + w / 2, z1 + STAY["clear"] + t],
-                          "handle", bevel=0.001)])
-        self.add("stay_roller", "wheel", [g.cylinder([xr, y, z0], [xr, y, z1], r, "handle", 32)])
-        self.spin("frame", "stay_roller", Frame.at((xr, y, (z0 + z1) / 2), z=(0, 0, 1)), role="wheel")
+        bracket, roller, centre = P.stay_roller(xs, x_wall, y)
+        self.extend("frame", bracket)
+        self.add("stay_roller", "wheel", [roller])
+        self.spin("frame", "stay_roller", Frame.at(centre, z=(0, 0, 1)), role="wheel")
 
     def floor_guide(self, node, xs, y):
         """A barn door's floor guide: a U channel screwed to the floor that the leaf's bottom edge runs in
         (National Hardware / Rustica stay rollers and floor guides: 40-60 mm long, 20-40 mm high)."""
-        c, t, h, ln = GUIDE["clear"], GUIDE["wall"], GUIDE["height"], GUIDE["length"]
-        pieces = [g.box_between([xs[0] - c - t, y - ln / 2, 0.0], [xs[1] + c + t, y + ln / 2, 0.004], "handle"),
-                  g.box_between([xs[0] - c - t, y - ln / 2, 0.0], [xs[0] - c, y + ln / 2, h], "handle"),
-                  g.box_between([xs[1] + c + KICK_T + 0.0005, y - ln / 2, 0.0], [xs[1] + c + KICK_T + 0.0005 + t,
-                                                                                   y + ln / 2, h], "handle")]
+        pieces = P.floor_guide(xs, y)
         self.add("floor_guide", "guide", pieces)
         self.fix("frame", "floor_guide")
 
@@ -394,13 +351,13 @@ class DoorLayout(Layout):
     def pull(self, node, xs, y, z, inward, leaf):
         for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
             at = Frame.at((face, y, z), z=(n, 0, 0), x=(0, 0, 1))
-            bar = hardware.bar_handle(self.p["pull_length"], "handle", PULL).attached("mount", to=at)
+            bar = hardware.bar_handle(self.p["pull_length"], "handle", P.PULL).attached("mount", to=at)
             self.extend(leaf, bar.parts[bar.root].pieces)
 
     def _faces(self, node, kind, xs, y, z, inward, leaf):
         for kid, (side, n, face) in zip(node.of(kind), (("front", 1.0, xs[1]), ("back", -1.0, xs[0])), strict=True):
             self.extend(leaf, [P.rose(face, n, y, z)])
-            self.grow(kid, side=side + leaf[4:], n=n, start=face + n * (P.ROSE[1] + GAP), y=y, z=z, inward=inward,
+            self.grow(kid, side=side + leaf[4:], n=n, start=face + n * (P.ROSE[1] + P.GAP), y=y, z=z, inward=inward,
                       leaf=leaf)
 
     def knob(self, node, **where):
@@ -418,7 +375,7 @@ class DoorLayout(Layout):
         grip = -inward  # the grip points back toward the hinge
         name = self.add(f"lever_{side}", "lever", P.lever(start, n, y, z, grip, self.p["lever_length"]))
         # about (grip direction) x (-Z) = (-grip, 0, 0): a positive angle turns the grip down
-        self.hinge(leaf, name, Frame.at((start, y, z), z=(-grip, 0, 0)), upper=LEVER_TURN, role="knob")
+        self.hinge(leaf, name, Frame.at((start, y, z), z=(-grip, 0, 0)), upper=P.LEVER_TURN, role="knob")
 
 
 CATEGORY = Category("door", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DoorLayout, MATERIALS,

@@ -39,7 +39,8 @@ from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import cabinetry as cab
-from .parts import hardware, panels
+from .parts import panels
+from .parts.cabinetry import GAP
 
 
 def run_width(p) -> float:
@@ -51,8 +52,8 @@ def columns(p, rng) -> int:
     """column_count, or max(1, floor(width / 0.45)); at most floor(width / 0.2) (columns at least 20 cm wide),
     at least ceil(width / 1.0) (at most 1 m wide; a kitchen wall's at most 0.9 m)"""
     w = run_width(p)
-    n = min(p["column_count"] or max(1, math.floor(w / COLUMN)), max(1, math.floor(w / COLUMN_MIN)))
-    return max(n, math.ceil(w / (KITCHEN_COLUMN_MAX if p["design"] == "kitchen" else COLUMN_MAX)))
+    n = min(p["column_count"] or max(1, math.floor(w / cab.COLUMN)), max(1, math.floor(w / cab.COLUMN_MIN)))
+    return max(n, math.ceil(w / (cab.KITCHEN_COLUMN_MAX if p["design"] == "kitchen" else cab.COLUMN_MAX)))
 
 
 def wall_columns(p, rng) -> int:
@@ -62,7 +63,7 @@ def wall_columns(p, rng) -> int:
 
 def leaves(p, rng) -> int:
     """two doors in a column wider than 0.6 m, else one"""
-    return 2 if run_width(p) / columns(p, rng) > DOUBLE else 1
+    return 2 if run_width(p) / columns(p, rng) > cab.DOUBLE else 1
 
 
 MOVING = {"drawer", "door", "inner_drawer", "flap", "pullout", "tilt_front", "carousel"}
@@ -164,25 +165,6 @@ MATERIALS = {"body": "body_finish", "front": "body_finish", "handle": "handle_fi
              "hinge": "brushed_metal", "leg": "brushed_metal", "foot": "plastic:black|dark_grey",
              "sink": "brushed_metal", "tap": "chrome", "wire": "chrome", "tray": "plastic:white|light_grey"}
 
-GAP = 0.003  # between neighbouring fronts and between moving parts and the carcass
-COLUMN = 0.45  # a column per 45 cm of width
-COLUMN_MIN = 0.2  # the narrowest column (IKEA METOD's narrowest base cabinet is 20 cm): a hinged leaf's free
-#                   edge swings out sideways by thickness^2 / (2 width) and must stay inside the 3 mm reveal
-DOUBLE = 0.6  # columns wider than this have double doors
-COLUMN_MAX = 1.0  # the widest column (US base cabinets go to 42-48 in; a 1.2 m drawer front and box weigh ~40 kg)
-KITCHEN_COLUMN_MAX = 0.9  # a kitchen wall's columns: at most 90 cm (IKEA METOD's widest base cabinet is 80 cm)
-SPLASH = 0.012  # splashback panel (12 mm compact laminate / glass)
-WALL_MIN = 0.4  # the lowest wall cabinet (IKEA METOD 40 cm high)
-DRAWER_WALL = 0.009  # drawer box boards (Blum LEGRABOX: 16 mm bottom on 1 mm steel sides; plywood boxes 9 mm)
-TILT = math.radians(25)  # tilt-out sink fronts tip 20-30 degrees (Rev-A-Shelf 6572 tip-out trays)
-FLAP = math.radians(100)  # lift-up flap stays open 90-107 degrees (Blum AVENTOS HK)
-TOP_OVER = 0.02  # worktop overhang at the front
-TOP_DRAWER = 0.2  # a top drawer is this fraction of a column's height
-SINK_DEPTH = 0.19  # bowl depth
-SINK_FRONT = 0.16  # false-front height of a sink base
-GATE = math.pi / 2  # a door with pull-outs or a carousel behind it
-INNER_CLEAR = 0.025  # an inner drawer's box keeps this far from the carcass sides (the hinges)
-SPLITS = {2: (0.5, 0.5), 3: (0.4, 0.4, 0.2), 4: (0.3, 0.3, 0.2, 0.2)}  # drawer heights, bottom up
 
 
 class CabinetLayout(Layout):
@@ -257,7 +239,7 @@ class CabinetLayout(Layout):
         self._run(cols, (y0 + C, W / 2), (-D / 2, D / 2), (z0, z1))
         self.grow(node.one("corner_unit"), ys=(y0, y0 + C), xs=(D / 2 - C, D / 2), zs=(z0, z1))
         self.grow(node.one("stand"), ys=(y0, W / 2), xs=(-D / 2, D / 2), z0=z0)
-        self.extend("carcass", cab.legs([D / 2 - C + 0.06], [y0 + 0.06, y0 + C - 0.06], z0, "leg", "foot"))
+        self.extend("carcass", cab.corner_legs(D / 2 - C, (y0, y0 + C), z0))
         self.grow(node.one("worktop"), ys=(y0, W / 2), xs=(-D / 2, D / 2), hole=None, corner=(y0 + C, D / 2 - C))
 
     def sink_base(self, node, W, D, zs):
@@ -275,22 +257,22 @@ class CabinetLayout(Layout):
         p = self.p
         z0, z1 = zs
         t = p["board"]
-        hole = ((-D / 2 + 0.1, D / 2 - 0.12), (ys[0] + 0.1, ys[1] - 0.1))
+        hole = cab.sink_hole((-D / 2, D / 2), ys)
         self.grow(node.one("sink"), hole=hole, z_top=p["base_height"])
         fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if beside else ys[1] - GAP)
         fz1 = z1 - GAP
-        self.grow(node.one("tilt_front"), fys=fy, fzs=(fz1 - SINK_FRONT, fz1), xs=(-D / 2, D / 2))
+        self.grow(node.one("tilt_front"), fys=fy, fzs=(fz1 - cab.SINK_FRONT, fz1), xs=(-D / 2, D / 2))
         doors = node.of("sink_door")
         mid = sum(fy) / 2
         spec = [(fy[0], mid - GAP / 2, "left"), (mid + GAP / 2, fy[1], "right")]
         for k, (kid, leaf) in enumerate(zip(doors, spec)):
-            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - SINK_FRONT - GAP), x1=D / 2)
+            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - cab.SINK_FRONT - GAP), x1=D / 2)
         return hole
 
     def wall_run(self, node, W, D, zs):
         H = zs[1]
         self._run(node.of("wall_column"), (-W / 2, W / 2), (-D / 2, D / 2), (0.0, H), box=False)
-        self.grow(node.one("rail"), ys=(-W / 2, W / 2), xs=(-D / 2, D / 2), z=H - 0.02)
+        self.grow(node.one("rail"), ys=(-W / 2, W / 2), xs=(-D / 2, D / 2), z=H - cab.RAIL_BELOW)
 
     def kitchen(self, node, W, D, zs):
         """Base columns under a worktop, a splashback, a wall cabinet over each base column, and maybe
@@ -306,17 +288,17 @@ class CabinetLayout(Layout):
                       side="right")
         bottom = p["base_height"] + p["wall_gap"]
         top = p["tall_height"] if talls else bottom + p["wall_height"]
-        top = max(top, bottom + WALL_MIN)
+        top = max(top, bottom + cab.WALL_MIN)
         self._run(wall, (y0, yk), (-D / 2, -D / 2 + p["wall_depth"]), (bottom, top),
                   first=len(base) + len(talls))
         self.grow(node.one("splashback"), ys=(y0, yk), x=-D / 2, zs=(p["base_height"], bottom))
         self.grow(node.one("stand"), ys=(y0, W / 2), xs=(-D / 2, D / 2), z0=zs[0])
         # the worktop overhangs 5 mm at a free end; it butts against a tall unit's side
-        self.grow(node.one("worktop"), ys=(y0, yk - 0.005 if talls else yk), xs=(-D / 2, D / 2), hole=hole)
+        self.grow(node.one("worktop"), ys=(y0, yk - cab.TOP_END if talls else yk), xs=(-D / 2, D / 2), hole=hole)
 
     def splashback(self, node, ys, x, zs):
         """A panel on the wall between the worktop and the wall cabinets: it carries them."""
-        self.extend("carcass", [g.box_between([x, ys[0], zs[0]], [x + SPLASH, ys[1], zs[1]], "body")])
+        self.extend("carcass", [g.box_between([x, ys[0], zs[0]], [x + cab.SPLASH, ys[1], zs[1]], "body")])
 
     # -- stands, worktops, rails ---------------------------------------------------------------------
     def stand(self, node, **where):
@@ -324,32 +306,23 @@ class CabinetLayout(Layout):
 
     def plinth(self, node, ys, xs, z0):
         """Legs behind a kick board clipped on, set back 50 mm (IKEA METOD plinth)."""
-        (y0, y1), (x0, x1) = ys, xs
-        self.extend("carcass", cab.legs([x0 + 0.06, x1 - 0.08], [y0 + 0.06, y1 - 0.06], z0, "leg", "foot")
-                    + [g.box_between([x1 - 0.06, y0 + 0.005, 0.0], [x1 - 0.045, y1 - 0.005, z0 - 0.002], "plinth")])
+        self.extend("carcass", cab.plinth(xs, ys, z0))
 
     def legs(self, node, ys, xs, z0):
         """Visible legs with levellers, one pair per ~60 cm of run."""
-        (y0, y1), (x0, x1) = ys, xs
-        n = max(2, 1 + math.ceil((y1 - y0 - 0.12) / 0.6))
-        at = [y0 + 0.05 + i * (y1 - y0 - 0.1) / (n - 1) for i in range(n)]
-        self.extend("carcass", cab.legs([x0 + 0.05, x1 - 0.05], at, z0, "leg", "foot"))
+        self.extend("carcass", cab.leg_run(xs, ys, z0))
 
     def worktop(self, node, ys, xs, hole=None, corner=None):
         p = self.p
         z1 = p["base_height"]
         z0 = z1 - p["worktop_thickness"]
-        pieces = cab.worktop((xs[0], xs[1] + TOP_OVER), (ys[0] - 0.005, ys[1] + 0.005), z0, z1, "top", hole)
-        if corner is not None:  # the corner box's deeper part
-            yc, xc = corner
-            pieces.append(g.box_between([xc, ys[0] - 0.005, z0], [xs[0], yc, z1], "top", bevel=0.002))
-        self.extend("carcass", pieces)
+        self.extend("carcass", cab.kitchen_worktop(xs, ys, z0, z1, hole, corner))
 
     def rail(self, node, ys, xs, z):
         self.extend("carcass", cab.wall_rail(xs, ys, z, "hinge"))
 
     def sink(self, node, hole, z_top):
-        name = self.add("sink", "sink", cab.sink(hole, z_top, SINK_DEPTH, "sink", "tap"))
+        name = self.add("sink", "sink", cab.sink(hole, z_top, cab.SINK_DEPTH, "sink", "tap"))
         self.fix("carcass", name)
 
     # -- columns -------------------------------------------------------------------------------------
@@ -365,50 +338,24 @@ class CabinetLayout(Layout):
 
     wall_open = open
 
-    def _handle(self, length: float):
-        style = self.p["handle_style"]
-        if style == "bar":  # 128-320 mm bar pulls
-            return hardware.bar_handle(min(max(length, 0.128), 0.32), "handle")
-        if style == "knob":  # 30 mm knobs
-            return hardware.knob_handle(0.015, 0.025, "handle")
-        return hardware.edge_pull(length, "handle")
+    def _handles(self):
+        """The handle style, or None on a handle-less (push-to-open) front."""
+        return self.p["handle_style"] if self.p["has_handles"] else None
 
     def _drawer_pieces(self, xs, ys, fys, fz, bz, style=True):
         """Front (styled) and box of a drawer; ``bz`` the box's z range."""
         p = self.p
-        D, t, ft = xs[1] - xs[0], p["board"], p["front_thickness"]
-        xf = xs[1]
-        clear = 0.012  # runner space either side
-        box = (xs[0] + t + 0.01, xf - 0.002, ys[0] + clear, ys[1] - clear, bz[0], bz[1])
-        pieces = panels.box_drawer((xf + GAP, xf + GAP + ft, *fys, *fz), box, DRAWER_WALL, "front", "body")[1:]
-        face, xface = cab.front(xf + GAP, xf + GAP + ft, fys, fz, p["front_style"] if style else "slab", "front")
-        pieces += face
-        if p["has_handles"]:
-            f = cab.frame_width(fys[1] - fys[0], fz[1] - fz[0], p["front_style"] if style else "slab")
-            if fz[1] - fz[0] > 0.25:  # deep drawers: the handle near the top edge, on the top rail
-                hz, hx = fz[1] - (f / 2 if f else 0.05), xf + GAP + ft
-            else:
-                hz, hx = sum(fz) / 2, xface
-            at = Frame.at((hx, sum(fys) / 2, hz), z=(1, 0, 0), x=(0, 1, 0))
-            h = self._handle(min(0.5 * (fys[1] - fys[0]), 0.32)).attached("mount", to=at)
-            pieces += list(h.parts[h.root].pieces)
-        return pieces, box
+        return cab.drawer(xs, ys, fys, fz, bz, p["board"], p["front_thickness"], p["front_style"] if style else "slab",
+                          self._handles())
 
     def drawers(self, node, c, side, ys, fys, zs, fzs, xs):
         kids = node.of("drawer")
-        splits = SPLITS[len(kids)]
+        splits = cab.SPLITS[len(kids)]
         self._drawer_stack(kids, splits, c, ys, fys, zs, fzs, xs)
 
     def _drawer_stack(self, kids, splits, c, ys, fys, zs, fzs, xs, r0=0):
-        fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
-        f0, i0 = fzs[0], zs[0]
-        for r, (kid, s) in enumerate(zip(kids, splits)):
-            fz = (f0 + GAP / 2, f0 + s * fh - GAP / 2)
-            # the box stays above the front of the drawer below, or pulling it drags that one along
-            bz = (max(i0 + 0.012, fz[0]), i0 + s * ih - 0.03)
+        for r, (kid, (fz, bz)) in enumerate(zip(kids, cab.drawer_stack(splits, zs, fzs))):
             self.grow(kid, name=f"drawer_{c}_{r + r0}", xs=xs, ys=ys, fys=fys, fz=fz, bz=bz)
-            f0 += s * fh
-            i0 += s * ih
 
     def drawer(self, node, name, xs, ys, fys, fz, bz):
         pieces, box = self._drawer_pieces(xs, ys, fys, fz, bz)
@@ -436,31 +383,16 @@ class CabinetLayout(Layout):
         two gates hinged on one divider then never meet (the core scales no gate's limit), and its
         pull-outs pass the open leaf."""
         p = self.p
-        ya, yb, side = leaf
-        xf, ft = x1 + GAP, p["front_thickness"]
-        pieces, _ = cab.front(xf, xf + ft, (ya, yb), fzs, p["front_style"], "front", glazed=glazed)
-        pieces += cab.hinge_cups(xf, ya if side == "left" else yb, 1 if side == "left" else -1, fzs, "hinge")
-        h = fzs[1] - fzs[0]
-        if p["has_handles"]:
-            length = min(0.3 * h, 0.32)
-            hz = handle_at if handle_at is not None else fzs[0] + (0.8 if h < 0.9 else 0.45) * h
-            reach = (max(length, 0.128) if self.p["handle_style"] == "bar" else length) / 2 + 0.03
-            hz = min(max(hz, fzs[0] + reach), fzs[1] - reach)  # the whole handle on the door
-            f = cab.frame_width(yb - ya, h, p["front_style"])
-            off = f / 2 if f else min(0.05, 0.3 * (yb - ya))  # on the stile of a framed door
-            at = Frame.at((xf + ft, yb - off if side == "left" else ya + off, hz), z=(1, 0, 0), x=(0, 0, 1))
-            handle = self._handle(length).attached("mount", to=at)
-            pieces += list(handle.parts[handle.root].pieces)
+        pieces, hinge = cab.door(x1, leaf, fzs, p["front_thickness"], p["front_style"], self._handles(), glazed,
+                                 handle_at)
         self.add(name, "door", pieces)
-        # on the front face at the outer edge; the axis sign makes it swing out (+X)
-        hinge = Frame.at((xf + ft, ya if side == "left" else yb, fzs[0]), z=(0, 0, -1 if side == "left" else 1))
-        self.hinge("carcass", name, hinge, upper=GATE if gate else p["door_angle"])
+        self.hinge("carcass", name, hinge, upper=cab.GATE if gate else p["door_angle"])
         return name
 
     def door(self, node, name, leaf, fzs, x1, gate=False, wall=False):
         """A base or tall door; a wall cabinet's door is glazed, its handle near the bottom edge."""
-        self._door(name, leaf, fzs, x1, glazed=wall, handle_at=fzs[0] + 0.08 * (fzs[1] - fzs[0]) if wall else None,
-                   gate=gate)
+        self._door(name, leaf, fzs, x1, glazed=wall,
+                   handle_at=fzs[0] + cab.WALL_HANDLE * (fzs[1] - fzs[0]) if wall else None, gate=gate)
 
     sink_door = door
 
@@ -474,28 +406,21 @@ class CabinetLayout(Layout):
         self._inner_drawers(node.of("inner_drawer"), f"door_{c}_0", c, ys, zs, xs)
 
     def _inner_drawers(self, kids, gate, c, ys, zs, xs):
-        k = len(kids)
-        pitch = min((zs[1] - zs[0]) / k, 0.3)
-        for r, kid in enumerate(kids):
-            z = zs[0] + 0.02 + r * pitch
-            self.grow(kid, name=f"inner_{c}_{r}", gate=gate, xs=xs, ys=ys, zs=(z, z + min(0.16, pitch - 0.04)))
+        for r, (kid, z) in enumerate(zip(kids, cab.inner_drawer_rows(len(kids), zs))):
+            self.grow(kid, name=f"inner_{c}_{r}", gate=gate, xs=xs, ys=ys, zs=z)
 
     def inner_drawer(self, node, name, gate, xs, ys, zs):
         """An internal pull-out: a low-fronted box set back behind the door, narrowed to pass the hinges
         (Blum / IKEA METOD inner drawers: ~25 mm each side)."""
         p = self.p
-        t, clear = p["board"], INNER_CLEAR
-        x0, x1 = xs[0] + t + 0.01, xs[1] - 0.03
-        pieces = panels.box_drawer((x1 - 0.016, x1, ys[0] + clear, ys[1] - clear, zs[0], zs[1]),
-                                   (x0, x1 - 0.016, ys[0] + clear, ys[1] - clear, zs[0], zs[1] - 0.03),
-                                   DRAWER_WALL, "body", "body")
+        pieces, x0, x1 = cab.inner_drawer(xs, ys, zs, p["board"])
         self.add(name, "drawer", pieces)
         self.slide("carcass", name, Frame.at((x1, sum(ys) / 2, zs[0]), z=(1, 0, 0)),
                    upper=p["drawer_travel"] * (x1 - x0), requires_open=gate)
 
     def drawer_door(self, node, c, side, ys, fys, zs, fzs, xs):
         fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
-        s = 1 - TOP_DRAWER
+        s = 1 - cab.TOP_DRAWER
         top_f = (fzs[0] + s * fh, fzs[1])
         top_i = (zs[0] + s * ih, zs[1])
         self.extend("carcass", [g.box_between([xs[0] + self.p["board"] / 2, ys[0], top_i[0] - self.p["board"]],
@@ -509,23 +434,13 @@ class CabinetLayout(Layout):
         """A full-height pull-out larder: the front on full-extension runners carries a frame
         of wire baskets (Kesseböhmer Dispensa: 4-6 baskets, 90 % extension)."""
         p = self.p
-        pieces, box = self._drawer_pieces(xs, ys, fys, fzs, (zs[0] + 0.01, zs[0] + 0.03), style=True)
-        t, clear = p["board"], 0.015
-        x0, x1 = xs[0] + t + 0.01, xs[1] - 0.002
-        y0, y1 = ys[0] + clear, ys[1] - clear
-        # keep the front; the baskets hang on two rear posts and two top rails of 20 mm steel tube
-        tube = 0.0012
-        frame = [g.box_between([x0, y, zs[0] + 0.01], [x0 + 0.02, y + 0.02, zs[1] - 0.02], "wire").replace(sheet=tube)
-                 for y in (y0, y1 - 0.02)]
-        frame += [g.box_between([x0 + 0.02, y, zs[1] - 0.04], [x1, y + 0.02, zs[1] - 0.02], "wire").replace(sheet=tube)
-                  for y in (y0, y1 - 0.02)]
-        name = self.add(f"pullout_{c}", "pullout", [pc for pc in pieces if pc.material != "body"] + frame)
-        self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fzs[0]), z=(1, 0, 0)),
-                   upper=0.9 * (x1 - x0))
         kids = node.of("basket")
-        for k, kid in enumerate(kids):
-            z = zs[0] + 0.05 + k * (zs[1] - zs[0] - 0.2) / len(kids)
-            self.grow(kid, parent=name, xs=(x0 + 0.02, x1), ys=(y0 + 0.01, y1 - 0.01), z=z, k=k)
+        pieces, travel, rows = cab.pullout(xs, ys, fys, fzs, zs, p["board"], p["front_thickness"], p["front_style"],
+                                           self._handles(), len(kids))
+        name = self.add(f"pullout_{c}", "pullout", pieces)
+        self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fzs[0]), z=(1, 0, 0)), upper=travel)
+        for k, (kid, (bxs, bys, z)) in enumerate(zip(kids, rows)):
+            self.grow(kid, parent=name, xs=bxs, ys=bys, z=z, k=k)
 
     def basket(self, node, parent, xs, ys, z, k):
         name = self.add(f"{parent}_basket_{k}", "basket", cab.basket(xs, ys, z, "wire"))
@@ -535,9 +450,10 @@ class CabinetLayout(Layout):
         """An upper door with shelves behind it over a lower door with pull-outs behind it."""
         p = self.p
         t = p["board"]
-        split = zs[0] + 0.45 * (zs[1] - zs[0])
+        split = zs[0] + cab.TALL_SPLIT * (zs[1] - zs[0])
         self.extend("carcass", [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")]
-                    + [panels.shelf(xs, ys, split + (zs[1] - split) * i / 3, t, "body") for i in (1, 2)])
+                    + [panels.shelf(xs, ys, split + (zs[1] - split) * i / cab.TALL_SHELVES, t, "body")
+                       for i in range(1, cab.TALL_SHELVES)])
         fsplit = split - t / 2
         self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=(fys[0], fys[1], side),
                   fzs=(fsplit + GAP / 2, fzs[1]), x1=xs[1])
@@ -545,10 +461,10 @@ class CabinetLayout(Layout):
                   fzs=(fzs[0], fsplit - GAP / 2), x1=xs[1], c=c, ys=ys, zs=(zs[0], split - t), xs=xs)
 
     def upper_door(self, node, name, leaf, fzs, x1):
-        self._door(name, leaf, fzs, x1, glazed=True, handle_at=fzs[0] + 0.1)
+        self._door(name, leaf, fzs, x1, glazed=True, handle_at=fzs[0] + cab.TALL_HANDLE)
 
     def lower_door(self, node, name, leaf, fzs, x1, c, ys, zs, xs):
-        self._door(name, leaf, fzs, x1, handle_at=fzs[1] - 0.1, gate=True)
+        self._door(name, leaf, fzs, x1, handle_at=fzs[1] - cab.TALL_HANDLE, gate=True)
         self._inner_drawers(node.of("inner_drawer"), name, c, ys, zs, xs)
 
     # -- corner, sink, wall --------------------------------------------------------------------------
@@ -558,7 +474,7 @@ class CabinetLayout(Layout):
         p = self.p
         t = p["board"]
         D = xs[1] - xs[0]
-        mid = (ys[0] + ys[1]) / 2 - 0.05
+        mid = (ys[0] + ys[1]) / 2 - cab.CORNER_BLIND
         fz = (zs[0] + GAP, zs[1] - GAP)
         x = xs[1]
         # the blind part of the front: a fixed panel in the carcass
@@ -567,18 +483,16 @@ class CabinetLayout(Layout):
         name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, x,
                           handle_at=None, gate=True)
         self.grow(node.one("carousel"), gate=name, centre=(x - D / 2, (ys[0] + ys[1]) / 2),
-                  radius=min(D, ys[1] - ys[0]) / 2 - t - 0.02, zs=(zs[0] + t, zs[1] - t))
+                  radius=min(D, ys[1] - ys[0]) / 2 - t - cab.CAROUSEL_CLEAR, zs=(zs[0] + t, zs[1] - t))
 
     def carousel(self, node, gate, centre, radius, zs):
         """A lazy susan: a pole with 2-3 trays turning on a bearing (continuous)."""
         cx, cy = centre
-        self.extend("carcass", [g.cylinder([cx, cy, zs[0]], [cx, cy, zs[0] + 0.004], 0.04, "hinge", 24),
-                                g.cylinder([cx, cy, zs[1] - 0.004], [cx, cy, zs[1]], 0.04, "hinge", 24)])
         trays = node.of("tray")
-        z0, z1 = zs[0] + 0.008, zs[1] - 0.008
-        name = self.add("carousel", "carousel", [cab.pole(cx, cy, z0, z1, "hinge")])
-        for k, kid in enumerate(trays):
-            z = z0 + 0.04 + k * (z1 - z0 - 0.1) / len(trays)
+        plates, pole, z0, tray_zs = cab.carousel(cx, cy, zs, len(trays), "hinge")
+        self.extend("carcass", plates)
+        name = self.add("carousel", "carousel", [pole])
+        for kid, z in zip(trays, tray_zs):
             self.grow(kid, centre=centre, radius=radius, z=z)
         self.spin("carcass", name, Frame.at((cx, cy, z0)), role="turntable", requires_open=gate)
 
@@ -588,32 +502,16 @@ class CabinetLayout(Layout):
     def tilt_front(self, node, fys, fzs, xs):
         """The sink base's false front: it tips out about its bottom edge, a tray behind it."""
         p = self.p
-        xf, ft = xs[1] + GAP, p["front_thickness"]
-        pieces, _ = cab.front(xf, xf + ft, fys, fzs, "slab" if p["front_style"] == "slab" else "shaker", "front")
-        y0, y1 = fys[0] + 0.05, fys[1] - 0.05
-        pieces += [g.box_between([xf - 0.06, y0, fzs[0] + 0.015], [xf - 0.002, y1, fzs[0] + 0.018], "tray"),
-                   g.box_between([xf - 0.06, y0, fzs[0] + 0.018], [xf - 0.057, y1, fzs[0] + 0.06], "tray")]
-        if p["has_handles"]:
-            at = Frame.at((xf + ft, sum(fys) / 2, fzs[1] - 0.04), z=(1, 0, 0), x=(0, 1, 0))
-            h = self._handle(min(0.4 * (fys[1] - fys[0]), 0.32)).attached("mount", to=at)
-            pieces += list(h.parts[h.root].pieces)
+        pieces, hinge = cab.tilt_front(xs, fys, fzs, p["front_thickness"], p["front_style"], self._handles())
         name = self.add("tilt_front", "drawer", pieces)
-        # about the outer bottom edge, +Y: the top tips out towards +X
-        self.hinge("carcass", name, Frame.at((xf + ft, sum(fys) / 2, fzs[0]), z=(0, 1, 0)), upper=TILT)
+        self.hinge("carcass", name, hinge, upper=cab.TILT)
 
     def flap(self, node, c, side, ys, fys, zs, fzs, xs):
         """A lift-up flap hinged at its top edge (Blum AVENTOS HK): the bottom swings out and up."""
         p = self.p
-        xf, ft = xs[1] + GAP, p["front_thickness"]
-        pieces, xface = cab.front(xf, xf + ft, fys, fzs, p["front_style"], "front", glazed=True)
-        if p["has_handles"]:
-            at = Frame.at((xface, sum(fys) / 2, fzs[0] + 0.04), z=(1, 0, 0), x=(0, 1, 0))
-            h = self._handle(min(0.5 * (fys[1] - fys[0]), 0.32)).attached("mount", to=at)
-            pieces += list(h.parts[h.root].pieces)
+        pieces, hinge = cab.flap(xs, fys, fzs, p["front_thickness"], p["front_style"], self._handles())
         self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, p["board"], "body")])
         name = self.add(f"flap_{c}", "door", pieces)
-        # about the inner top edge: hanging closed, the flap's weight keeps it on its rest stop
-        self.hinge("carcass", name, Frame.at((xf, sum(fys) / 2, fzs[1]), z=(0, -1, 0)), upper=FLAP)
-
+        self.hinge("carcass", name, hinge, upper=cab.FLAP)
 
 CATEGORY = Category("kitchen_cabinet", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, CabinetLayout, MATERIALS)

@@ -16,7 +16,6 @@ import math
 
 import numpy as np
 
-from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
@@ -92,32 +91,19 @@ def wire_has_legs(p: dict) -> dict:
             "has_drip_tray": p["has_drip_tray"] and wire, "has_spout": p["has_spout"] and plastic}
 
 
-LIFT = 0.1  # lift of a plate along +Z
-TURN = math.pi / 2  # turn of a plate about its axis (X) either way
-END = 0.03  # rack length beyond the first and last fence
-PAD = 0.006  # rubber pad height under a wood or plastic rack
-WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
-SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
-CADDY_LIFT = 0.2  # a caddy lifts clear of its board
-CUP_LIFT = R.PEG["h"] + 0.025  # a mug lifts off its peg
-TIER_GAP = 0.02  # between a lower plate lifted fully and the upper tier's lowest wire
-TRAY_OUT = 0.8  # the drip tray slides out by this fraction of its length
-SPOUT_OFF = R.SPOUT["hub"] + 0.004  # the spout's hub axis beyond the tray's end wall
-
-
 class RackLayout(Layout):
     def plate_rack(self, node):
         p = self.p
         n, r = p["slot_count"], p["plate_radius"]
-        rp = p["prong_radius"] * (WIRE if p["style"] == "wire" else 1.0)
+        rp = p["prong_radius"] * (R.WIRE if p["style"] == "wire" else 1.0)
         b = p["prong_spread"] * r
         plate0 = R.plate(r, p["plate_depth"] * r, p["plate_thickness"], p["foot_fraction"] * r, "plate")
         pts = np.vstack([plate0.vertices, *plate0.convex])
         x_lo, x_hi = pts[:, 0].min(), pts[:, 0].max()
         pitch = x_hi - x_lo + 2 * p["clearance"] + 2 * rp
         fences = (np.arange(n + 1) - n / 2) * pitch
-        xs = (fences[0] - END, fences[-1] + END)
-        z0 = PAD if node.one("feet") else 0.0  # underside of the rack body
+        xs = (fences[0] - R.END, fences[-1] + R.END)
+        z0 = R.PAD if node.one("feet") else 0.0  # underside of the rack body
         if p["style"] == "wood":
             pieces, zs = R.wood_rack(fences, xs, b, rp, z0, p["prong_height"], p["base_height"])
         elif p["style"] == "plastic":
@@ -126,34 +112,27 @@ class RackLayout(Layout):
             pieces, zs = R.wire_rack(fences, xs, b, rp, p["prong_height"], p["base_height"])
         self.add("rack", "rack", pieces)
         # the side board: beyond the reach of a plate slid sideways, at the rack's foot
-        lo = np.array([pc.bounds[0] for pc in pieces]).min(0)
-        hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
-        y0 = max(hi[1], r + R.PLATE_SLIDE + SIDE_GAP)
         design = node.one(node.choice)
-        # two rows of mugs (and the caddy): the board runs past the rack's end where they need it
-        need = len(design.of("caddy")) * (R.CADDY["x"] + 0.02) + math.ceil(len(design.of("cup")) / 2) \
-            * R.CUP_PITCH + 0.015
-        board = ((xs[0], max(xs[1], xs[0] + need)), (y0, y0 + 2 * R.CUP_PITCH + 0.01), lo[2], lo[2] + 0.012)
-        side = g.box_between([xs[0], hi[1] - 0.004, lo[2]], [board[0][1], board[1][1], board[3]], "frame", bevel=0.002)
-        # a wire rack's side board is a chrome-plated steel drip tray of 0.8 mm sheet, not a steel slab
-        self.extend("rack", [side.replace(sheet=0.0008) if p["style"] == "wire" else side])
+        board, side = R.side_board(pieces, xs, r, len(design.of("caddy")), len(design.of("cup")),
+                                   p["style"] == "wire")
+        self.extend("rack", [side])
         if node.one("feet"):
             self.grow(node.one("feet"), pieces=self.bp.parts["rack"].pieces, xs=xs)
         self.grow(design, board=board)
         zc = zs + R.SEAT_GAP + r  # plate centre: its lowest point SEAT_GAP above the support
         self._plates(node.of("plate"), plate0, fences, pitch, x_lo, zc, "plate")
         if node.one("tier"):
-            self.grow(node.one("tier"), rack=(fences, xs, b, rp, z0), top=zc + r + LIFT + TIER_GAP, plate0=plate0,
+            self.grow(node.one("tier"), rack=(fences, xs, b, rp, z0), top=zc + r + R.LIFT + R.TIER_GAP, plate0=plate0,
                       pitch=pitch, x_lo=x_lo, zc=zc)
         if node.one("drip_tray"):
             self.grow(node.one("drip_tray"), xs=xs, b=b, rp=rp)
         if node.one("spout"):
-            self.grow(node.one("spout"), x=xs[1] + 0.004, z=z0)  # the tray's end wall is 4 mm
+            self.grow(node.one("spout"), x=xs[1] + R.TRAY_END_WALL, z=z0)
 
     def _plates(self, kids, plate0, fences, pitch, x_lo, zc, prefix):
         p = self.p
         n = p["slot_count"]
-        rp = p["prong_radius"] * (WIRE if p["style"] == "wire" else 1.0)
+        rp = p["prong_radius"] * (R.WIRE if p["style"] == "wire" else 1.0)
         slots = sorted(int(i) for i in self.rng.choice(n, size=len(kids), replace=False))
         for kid, i in zip(kids, slots):
             x_foot = fences[i] + rp + p["clearance"] - x_lo
@@ -161,7 +140,7 @@ class RackLayout(Layout):
                       prefix=prefix)
 
     def tier(self, node, rack, top, plate0, pitch, x_lo, zc):
-        """The upper tier: the rack again, raised until its lowest member over the plates is at ``top`` (TIER_GAP
+        """The upper tier: the rack again, raised until its lowest member over the plates is at ``top`` (R.TIER_GAP
         above a lower plate lifted fully), on four posts that rise from the lower tier; its plates in its own
         slots. Wire: the legs (caps dropped) stand on posts over the lower legs, its cross wires are the lowest
         members (a rail's radius under the rail axis). Wood: the rails are, and the posts are dowels from the
@@ -170,30 +149,28 @@ class RackLayout(Layout):
         p = self.p
         if p["style"] == "wire":
             pieces, zs = R.wire_rack(fences, xs, b, rp, p["prong_height"], p["base_height"])
-            dz = top - (zs - 3 * rp)
-            pieces = [pc for pc in pieces if pc.material != "feet"]
-            posts = R.tier_posts((xs[0] + 0.012, xs[1] - 0.012), b, rp, zs - rp, dz + 0.007)  # rail axis to leg foot
+            pieces, posts, dz = R.wire_tier(pieces, zs, top, xs, b, rp)
         else:
             pieces, zs = R.wood_rack(fences, xs, b, rp, z0, p["prong_height"], p["base_height"])
             dz = top - (zs - p["base_height"])
             bw = R.BATTEN_W
-            posts = R.tier_posts((xs[0] + bw / 2, xs[1] - bw / 2), b, max(0.006, 1.5 * rp), zs, z0 + dz)
+            least, share = R.TIER["dowel"]
+            posts = R.tier_posts((xs[0] + bw / 2, xs[1] - bw / 2), b, max(least, share * rp), zs, z0 + dz)
         self.extend("rack", [pc.translated((0.0, 0.0, dz)) for pc in pieces] + posts)
         self._plates(node.of("plate"), plate0, fences, pitch, x_lo, zc + dz, "upper_plate")
 
     def spout(self, node, x, z):
         """The swivel spout at the middle of the tray's front end wall, its bottom just above the floor's
         underside; at rest it lies along the wall (pointing -Y) and swings through +X to +Y."""
-        at = (x + SPOUT_OFF, 0.0, z + 0.003)
+        at = (x + R.SPOUT_OFF, 0.0, z + R.SPOUT_ABOVE)
         name = self.add("spout", "spout", R.swivel_spout(*at, "spout"))
         self.hinge("rack", name, Frame.at(at, z=(0, 0, 1)), upper=math.pi, role="swivel")
 
     def drip_tray(self, node, xs, b, rp):
         """A shallow tray between the legs, under the cross wires; it slides out along +X past the front legs."""
-        y = b - 0.0055 - 0.004  # inside the legs' 5.5 mm rubber caps
-        x0, x1 = xs[0] + 0.005, xs[1] + 0.01
-        name = self.add("drip_tray", "tray", R.drip_tray(x0, x1, -y, y, 0.001, R.DRIP_TRAY["h"], "tray"))
-        self.slide("rack", name, Frame.at((x1, 0.0, 0.0), z=(1, 0, 0)), upper=TRAY_OUT * (x1 - x0))
+        (x0, x1), pieces = R.rack_drip_tray(xs, b)
+        name = self.add("drip_tray", "tray", pieces)
+        self.slide("rack", name, Frame.at((x1, 0.0, 0.0), z=(1, 0, 0)), upper=R.TRAY_OUT * (x1 - x0))
 
     def feet(self, node, pieces, xs):
         self.extend("rack", R.pads(pieces, xs))
@@ -203,8 +180,8 @@ class RackLayout(Layout):
         name = self.add(f"{prefix}_{i}", "plate", [piece.replace(material=slot)])
         # in its own plane: lift along +Z, slide along Y, turn about its axis (X) through its centre
         self.join(J.limited_planar("rack", name, pivot, slide_axes=((0, 0, 1), (0, 1, 0)),
-                                   slides=((0.0, LIFT), (-R.PLATE_SLIDE, R.PLATE_SLIDE)), axis=(1, 0, 0),
-                                   turn=(-TURN, TURN), role="plate"))
+                                   slides=((0.0, R.LIFT), (-R.PLATE_SLIDE, R.PLATE_SLIDE)), axis=(1, 0, 0),
+                                   turn=(-R.TURN, R.TURN), role="plate"))
 
 
     # -- the side board: a cutlery caddy, mugs on pegs ---------------------------------------------------
@@ -215,38 +192,34 @@ class RackLayout(Layout):
     def cups(self, node, board, after=0.0):
         """Two rows of pegs along the board (its length was made for them); a mug or a tumbler upside down on
         each of them (a row may have one spare peg)."""
-        (x0, x1), (y0, y1), _, z = board
-        rows = (y0 + 0.25 * (y1 - y0), y0 + 0.75 * (y1 - y0))
-        start = x0 + R.CUP_PITCH / 2 + 0.005
-        per_row = math.ceil(len(node.of("cup")) / 2)
-        spots = [(start + i * R.CUP_PITCH, y) for y in rows for i in range(per_row)]
+        spots, z = R.cup_spots(board, len(node.of("cup")))
         self.extend("rack", [R.cup_peg(x, y, z, "frame") for x, y in spots])
         for k, (kid, (x, y)) in enumerate(zip(node.of("cup"), spots)):
-            self.grow(kid, k=k, at=(x, y, z + 0.002))
+            self.grow(kid, k=k, at=(x, y, z + R.BOARD_STAND))
 
     def station(self, node, board):
         self.cutlery(node, board)
-        self.cups(node, board, after=len(node.of("caddy")) * (R.CADDY["x"] + 0.02))
+        self.cups(node, board, after=len(node.of("caddy")) * (R.CADDY["x"] + R.CADDY_APART))
 
     def caddy(self, node, board, k=0):
         (x0, x1), (y0, y1), _, z = board
         c = R.CADDY
         yc = (y0 + y1) / 2
-        xe = x1 - 0.01 - k * (c["x"] + 0.02)
-        pieces = R.caddy(xe - c["x"], xe, yc - c["y"] / 2, yc + c["y"] / 2, z + 0.002, "caddy", "cutlery")
+        xe = x1 - R.CADDY_END - k * (c["x"] + R.CADDY_APART)
+        pieces = R.caddy(xe - c["x"], xe, yc - c["y"] / 2, yc + c["y"] / 2, z + R.BOARD_STAND, "caddy", "cutlery")
         name = self.add(f"caddy_{k}", "basket", pieces)
-        self.slide("rack", name, Frame.at((xe - c["x"] / 2, yc, z), z=(0, 0, 1)), upper=CADDY_LIFT)
+        self.slide("rack", name, Frame.at((xe - c["x"] / 2, yc, z), z=(0, 0, 1)), upper=R.CADDY_LIFT)
 
     def cup(self, node, k, at):
         self.grow(node.one(node.choice), k=k, at=at)
 
     def mug(self, node, k, at):
         name = self.add(f"cup_{k}", "cup", R.mug(*at, "mug"))
-        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=CUP_LIFT)
+        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=R.CUP_LIFT)
 
     def glass(self, node, k, at):
         name = self.add(f"glass_{k}", "glass", R.tumbler(*at, "glass"))
-        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=CUP_LIFT)
+        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=R.CUP_LIFT)
 
 
 CATEGORY = Category("plate_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,

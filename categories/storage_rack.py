@@ -26,7 +26,6 @@ import math
 
 import numpy as np
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -48,18 +47,18 @@ def goods(p, rng) -> int:
 def totes(p, rng) -> int:
     """totes per level of a bay, drawn per level: as many as fit at 0.28-0.45 m wide each (IKEA SAMLA 22 L is
     28 cm wide, 45 L 39 cm; Really Useful Box 35-64 L 39-44 cm), at least 2, at most 5"""
-    span = _bay_span(p, SHELF_U)
-    lo = max(2, int(span // TOTE_W[1]))
-    return int(rng.integers(lo, max(lo, min(5, int(span // TOTE_W[0]))) + 1))
+    span = _bay_span(p, R.SHELF_U)
+    lo = max(2, int(span // R.TOTE_W[1]))
+    return int(rng.integers(lo, max(lo, min(R.MAX_TOTES, int(span // R.TOTE_W[0]))) + 1))
 
 
 def bins(p, rng) -> int:
     """bins per level of a bay: as many bin_width bins as fit, at most 6 (wider bins fill a wide bay)"""
-    return max(2, min(MAX_BINS, int(_bay_span(p, SHELF_U) // (p["bin_width"] + BIN_GAP))))
+    return max(2, min(R.MAX_BINS, int(_bay_span(p, R.SHELF_U) // (p["bin_width"] + R.BIN_GAP))))
 
 
 def _bay_span(p, u) -> float:
-    return (p["width"] - u) / bays(p, None) - u - 2 * GAP
+    return (p["width"] - u) / bays(p, None) - u - 2 * R.GAP
 
 
 def _goods_h(p) -> float:
@@ -70,16 +69,17 @@ def _goods_h(p) -> float:
 def cabinets(p, rng) -> int:
     """drawer cabinets side by side on a level, drawn per level: from as many 45 in ones as fit (at least one) to as
     many 30 in ones as fit"""
-    width = _bay_span(p, p["upright_size"]) - 2 * SIDE
-    lo = max(1, int(width // (R.DRAWER_CAB["widths"][-1] + CAB_GAP)))
-    return int(rng.integers(lo, max(lo, int(width // (R.DRAWER_CAB["widths"][1] + CAB_GAP))) + 1))
+    width = _bay_span(p, p["upright_size"]) - 2 * R.SIDE
+    lo = max(1, int(width // (R.DRAWER_CAB["widths"][-1] + R.CAB_GAP)))
+    return int(rng.integers(lo, max(lo, int(width // (R.DRAWER_CAB["widths"][1] + R.CAB_GAP))) + 1))
 
 
 def drawers(p, rng) -> int:
     """drawers of a cabinet, drawn per cabinet: fronts 75-300 mm high (Lista / Vidmar) filling the cabinet, 1-10"""
-    inner = _goods_h(p) - 2 * CAB_PANEL
-    lo = max(1, math.ceil(inner / 0.3))
-    return int(rng.integers(lo, max(lo, min(10, int(inner // 0.075))) + 1))
+    inner = _goods_h(p) - 2 * R.CAB_PANEL
+    tallest, lowest, most = R.DRAWER_FRONTS
+    lo = max(1, math.ceil(inner / tallest))
+    return int(rng.integers(lo, max(lo, min(most, int(inner // lowest))) + 1))
 
 
 GRAMMAR = Grammar("storage_rack", {
@@ -145,23 +145,6 @@ MATERIALS = {
     "pull": "brushed_metal",
 }
 
-GAP = 0.005  # level <-> uprights and stop brackets
-SIDE = 0.03  # goods keep this far from the uprights
-ABOVE_TOP = 0.06  # uprights reach this far above the highest raised level
-HEADROOM = 0.02  # between raised goods or brackets and the level above
-GOODS_LIFT = 0.001  # goods stand this far above the deck
-SHELF_U = 0.04  # boltless shelving / bin rack upright (38-40 mm angle posts)
-SHELF_BEAM = 0.04  # and its beams
-BIN_GAP = 0.004  # between neighbouring bins
-# AkroBins 30220 (4-1/8 in wide): 8 across a 36 in shelf, 11 across a 48 in one; a 60 in bay takes 12-13
-MAX_BINS = 12
-TOTE_W = (0.28, 0.45)  # tote widths across the shelf (see totes)
-CAB_GAP = 0.02  # between drawer cabinets side by side
-CAB_PANEL = 0.012  # a drawer cabinet's top and bottom panels
-DRAWER_GAP = 0.003  # between drawer fronts
-DRAWER_OUT = 0.95  # full-extension slides: a drawer comes out by ~95 % of its depth
-LID_OPEN = 1.9  # a tote lid swings back up to ~110 degrees
-
 
 class RackLayout(Layout):
     def storage_rack(self, node):
@@ -171,14 +154,14 @@ class RackLayout(Layout):
         n_bays = len(design.children)
         if design.kind == "pallet_rack":
             zs, travel = self._pallet_levels()
-            ys = self._frame(n_bays, p["depth"], p["upright_size"], zs[-1] + travel + ABOVE_TOP, zs, brackets=True)
+            ys = self._frame(n_bays, p["depth"], p["upright_size"], zs[-1] + travel + R.ABOVE_TOP, zs, brackets=True)
             self.grow(design, ys=ys, zs=zs, travel=travel)
             return
         spacing, count = ((p["shelf_spacing"], p["shelf_levels"]) if design.kind == "shelving"
                           else (p["bin_spacing"], p["bin_levels"]))
         zs = [p["bottom_height"] + i * spacing for i in range(count)]
-        ys = self._frame(n_bays, p["shelf_depth"], SHELF_U, zs[-1] + ABOVE_TOP, zs, brackets=False)
-        self.grow(design, ys=ys, zs=zs, clear=spacing - SHELF_BEAM - R.DECK_T[self.deck()])
+        ys = self._frame(n_bays, p["shelf_depth"], R.SHELF_U, zs[-1] + R.ABOVE_TOP, zs, brackets=False)
+        self.grow(design, ys=ys, zs=zs, clear=spacing - R.SHELF_BEAM - R.DECK_T[self.deck()])
 
     def _pallet_levels(self):
         """Beam tops at rest and the travel every raised level shares."""
@@ -189,7 +172,7 @@ class RackLayout(Layout):
         clear = lh - bh - dt  # from a deck top to the beams above
         goods_h = _goods_h(p)
         # raised alone, a level (and its goods) stays below the level above and its stop brackets
-        travel = min(lh / 3, clear - goods_h - HEADROOM, clear - GAP - R.BRACKET_H - HEADROOM)
+        travel = min(lh / 3, clear - goods_h - R.HEADROOM, clear - R.GAP - R.BRACKET_H - R.HEADROOM)
         return zs, travel
 
     def _frame(self, n_bays: int, D: float, u: float, top: float, zs: list, brackets: bool) -> np.ndarray:
@@ -205,7 +188,7 @@ class RackLayout(Layout):
             if brackets:
                 sides = tuple(s for s, inner in ((1, k < len(ys) - 1), (-1, k > 0)) if inner)
                 for z in zs[1:]:
-                    pieces += [pc.transformed(at.matrix) for pc in R.stop_brackets(D, u, z - p["beam_height"] - GAP,
+                    pieces += [pc.transformed(at.matrix) for pc in R.stop_brackets(D, u, z - p["beam_height"] - R.GAP,
                                                                                    sides)]
         self.add("frame", "frame", pieces)
         return ys
@@ -215,7 +198,7 @@ class RackLayout(Layout):
         u = p["upright_size"]
         goods_h = _goods_h(p)
         for b, bay in enumerate(node.of("bay")):
-            self.grow(bay, b=b, span=(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP), zs=zs, travel=travel,
+            self.grow(bay, b=b, span=(ys[b] + u / 2 + R.GAP, ys[b + 1] - u / 2 - R.GAP), zs=zs, travel=travel,
                       goods_h=goods_h)
 
     def bay(self, node, b, span, zs, travel, goods_h):
@@ -231,8 +214,8 @@ class RackLayout(Layout):
         else:
             self.fix("frame", name)
         for g_ in node.of("goods"):
-            self.grow(g_, level=name, span=(span[0] + SIDE, span[1] - SIDE),
-                      z=z + R.DECK_T[p["deck"]] + GOODS_LIFT, h=goods_h)
+            self.grow(g_, level=name, span=(span[0] + R.SIDE, span[1] - R.SIDE),
+                      z=z + R.DECK_T[p["deck"]] + R.GOODS_LIFT, h=goods_h)
 
     def goods(self, node, **where):
         self.grow(node.one(node.choice), **where)
@@ -242,7 +225,7 @@ class RackLayout(Layout):
         depth, items = R.goods_row(kind, span, self.p["depth"], self.rng)
         label = "pallet" if kind == "pallet" else "box"
         for k, (lo, hi) in enumerate(items):
-            hk = h * float(self.rng.uniform(0.75, 1.0))
+            hk = h * float(self.rng.uniform(R.GOODS_FILL_MIN, 1.0))
             name = self.add(f"{level}_{label}_{k}", label, R.GOODS[kind](-depth / 2, depth / 2, lo, hi, z, hk))
             self.fix(level, name)
 
@@ -253,9 +236,9 @@ class RackLayout(Layout):
         kids = node.of("drawer_cabinet")
         width = span[1] - span[0]
         pitch = width / len(kids)
-        w = next((cw for cw in reversed(R.DRAWER_CAB["widths"]) if cw + CAB_GAP <= pitch), pitch - CAB_GAP)
-        x1 = self.p["depth"] / 2 - 0.02
-        xs = (x1 - min(R.DRAWER_CAB["depth"], self.p["depth"] - 0.06), x1)
+        w = next((cw for cw in reversed(R.DRAWER_CAB["widths"]) if cw + R.CAB_GAP <= pitch), pitch - R.CAB_GAP)
+        x1 = self.p["depth"] / 2 - R.CAB_BACK[0]
+        xs = (x1 - min(R.DRAWER_CAB["depth"], self.p["depth"] - R.CAB_BACK[1]), x1)
         for k, kid in enumerate(kids):
             yc = span[0] + (k + 0.5) * pitch
             self.grow(kid, level=level, name=f"{level}_cabinet_{k}", xs=xs, ys=(yc - w / 2, yc + w / 2), z=z, h=h)
@@ -264,26 +247,26 @@ class RackLayout(Layout):
         self.add(name, "cabinet", R.drawer_housing(*xs, *ys, z, h, "cabinet"))
         self.fix(level, name)
         kids = node.of("drawer")
-        x0, x1 = xs[0] + CAB_PANEL + 0.01, xs[1] - 0.002
-        y0, y1 = ys[0] + CAB_PANEL + DRAWER_GAP, ys[1] - CAB_PANEL - DRAWER_GAP
-        z0, z1 = z + CAB_PANEL + DRAWER_GAP, z + h - CAB_PANEL - DRAWER_GAP
+        x0, x1 = xs[0] + R.CAB_PANEL + R.CAB_DRAWER[0], xs[1] - R.CAB_DRAWER[1]
+        y0, y1 = ys[0] + R.CAB_PANEL + R.DRAWER_GAP, ys[1] - R.CAB_PANEL - R.DRAWER_GAP
+        z0, z1 = z + R.CAB_PANEL + R.DRAWER_GAP, z + h - R.CAB_PANEL - R.DRAWER_GAP
         pitch = (z1 - z0) / len(kids)
         for k, kid in enumerate(kids):
             za = z0 + k * pitch
             self.grow(kid, cabinet=name, name=f"{name}_drawer_{k}", xs=(x0, x1), ys=(y0, y1),
-                      zs=(za, za + pitch - DRAWER_GAP))
+                      zs=(za, za + pitch - R.DRAWER_GAP))
 
     def drawer(self, node, cabinet, name, xs, ys, zs):
         self.add(name, "drawer", R.cabinet_drawer(*xs, *ys, *zs, "drawer", "pull"))
         self.slide(cabinet, name, Frame.at((xs[1], sum(ys) / 2, zs[0]), z=(1, 0, 0)),
-                   upper=DRAWER_OUT * (xs[1] - xs[0]))
+                   upper=R.DRAWER_OUT * (xs[1] - xs[0]))
 
     # -- shelving of totes, racks of bins --------------------------------------------------------------
     def shelving(self, node, ys, zs, clear):
-        u = SHELF_U
+        u = R.SHELF_U
         self.node_levels = list(zs)
         for b, bay in enumerate(node.children):
-            self.grow(bay, b=b, span=(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP), zs=zs, clear=clear)
+            self.grow(bay, b=b, span=(ys[b] + u / 2 + R.GAP, ys[b + 1] - u / 2 - R.GAP), zs=zs, clear=clear)
 
     bin_rack = shelving
 
@@ -300,35 +283,30 @@ class RackLayout(Layout):
     def _shelf(self, name, span, z):
         p = self.p
         beam = "beam" if p["frame_finish"] == "enamel" else "galvanised"
-        self.add(name, "shelf", R.level(span, p["shelf_depth"], z, SHELF_BEAM, self.deck(), beam))
+        self.add(name, "shelf", R.level(span, p["shelf_depth"], z, R.SHELF_BEAM, self.deck(), beam))
         self.fix("frame", name)
-        return z + R.DECK_T[self.deck()] + GOODS_LIFT
+        return z + R.DECK_T[self.deck()] + R.GOODS_LIFT
 
     def tote_level(self, node, name, span, z, clear):
         """A row of totes, each sliding out along +X on the deck."""
         p = self.p
         top = self._shelf(name, span, z)
         kids = node.of("tote")
-        D = p["shelf_depth"]
-        d = D - 0.06
-        h = min(0.3, 0.6 * clear)  # totes leave room above the lid to lift it once pulled out
-        cells_ = np.linspace(span[0] + 0.01, span[1] - 0.01, len(kids) + 1)
+        xs, rows, h = R.tote_row(span, len(kids), p["shelf_depth"], clear)
         # a lid may not rise into the space of the tote above, pulled out with it (both are gates, which the
-        # core never scales): its tip stays 1 cm under the level above
+        # core never scales): its tip stays under the level above
         above = [lv for lv in self.node_levels if lv > z + 1e-9]
-        room = (min(above) - z - h - R.LID_T - 0.01) if above else None
-        lid_up = LID_OPEN if room is None else math.asin(max(0.05, min(1.0, room / d)))
-        for k, kid in enumerate(kids):
-            self.grow(kid, level=name, name=f"{name}_tote_{k}", xs=(-d / 2, d / 2),
-                      ys=(cells_[k] + 0.008, cells_[k + 1] - 0.008), z=top, h=h, lid_up=lid_up)
+        lid_up = R.tote_lid_opening(min(above) - z - h if above else None, xs[1] - xs[0])
+        for k, (kid, ys) in enumerate(zip(kids, rows)):
+            self.grow(kid, level=name, name=f"{name}_tote_{k}", xs=xs, ys=ys, z=top, h=h, lid_up=lid_up)
 
-    def tote(self, node, level, name, xs, ys, z, h, lid_up=LID_OPEN):
+    def tote(self, node, level, name, xs, ys, z, h, lid_up=R.LID_OPEN):
         self.add(name, "box", R.tote(*xs, *ys, z, h, "tote"))
         self.slide(level, name, Frame.at((xs[1], sum(ys) / 2, z), z=(1, 0, 0)),
                    upper=self.p["tote_travel"] * (xs[1] - xs[0]))
         self.grow(node.one(node.choice), tote=name, xs=xs, ys=ys, z=z + h, up=lid_up)
 
-    def lid(self, node, tote, xs, ys, z, up=LID_OPEN):
+    def lid(self, node, tote, xs, ys, z, up=R.LID_OPEN):
         name = self.add(f"{tote}_lid", "lid", R.tote_lid(*xs, *ys, z, "lid"))
         # hinged at the back edge, axis -Y: the front edge lifts; it opens once the tote is out
         self.hinge(tote, name, Frame.at((xs[0], sum(ys) / 2, z), z=(0, -1, 0)), upper=up, role="lid",
@@ -336,21 +314,15 @@ class RackLayout(Layout):
 
     def open_tote(self, node, tote, xs, ys, z, up=None):
         """An open tote: no lid; a label card clipped on its front wall instead."""
-        yc = sum(ys) / 2
-        self.extend(tote, [g.box_between([xs[1] - R.TOTE_RIM + R.TOTE_WALL, yc - 0.04, z - 0.09],
-                                         [xs[1] - R.TOTE_RIM + R.TOTE_WALL + 0.002, yc + 0.04, z - 0.06], "label")])
+        self.extend(tote, [R.tote_label(xs[1], sum(ys) / 2, z)])
 
     def bin_level(self, node, name, span, z, clear):
         p = self.p
         top = self._shelf(name, span, z)
         kids = node.of("bin")
-        D = p["shelf_depth"]
-        h = min(0.127, clear - 0.02)  # 5 in bins
-        pitch = (span[1] - span[0] - 0.01) / len(kids)
-        for k, kid in enumerate(kids):
-            y0 = span[0] + 0.005 + k * pitch
-            self.grow(kid, level=name, name=f"{name}_bin_{k}", xs=(-D / 2 + 0.01, D / 2 - 0.01),
-                      ys=(y0 + BIN_GAP / 2, y0 + pitch - BIN_GAP / 2), z=top, h=h)
+        xs, rows, h = R.bin_row(span, len(kids), p["shelf_depth"], clear)
+        for k, (kid, ys) in enumerate(zip(kids, rows)):
+            self.grow(kid, level=name, name=f"{name}_bin_{k}", xs=xs, ys=ys, z=top, h=h)
 
     def bin(self, node, level, name, xs, ys, z, h):
         self.add(name, "bin", R.louvred_bin(*xs, *ys, z, h, "bin", "label"))

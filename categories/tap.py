@@ -16,9 +16,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -69,25 +66,12 @@ PARAMS = (
 MATERIALS = {"metal": ("finish", {"matte_black": "enamel:black"}), "seal": "rubber",
              "aerator": "plastic:black|dark_grey", "hot": "plastic:red", "cold": "plastic:blue"}
 
-LEVER_SWIVEL = math.pi / 2
-HANDLE_TURN = math.pi / 4
-CAP = 0.95  # a lever cap's radius as a fraction of its column's
-SPOUT_OVER = 0.035  # an outlet stays this far above whatever it sweeps over
-MIXER_H = 0.035  # a side mixer column's height
-RISER = 0.004  # a spout riser is this much wider than the spout tube
-FLARE = 1.25  # column feet flare to this fraction of their radius
-
-
-WALL_SWIVEL = 5 * math.pi / 12  # a wall mixer's spout swings +-75 degrees, clear of the wall
-WALL_X = -0.065  # the wall plane behind a wall mixer's axis (S-unions: 40-70 mm projection)
-BRIDGE_H = 0.05  # bridge mixer risers: height of the bridge pipe's axis above the deck
-
 
 def designs(p: dict) -> dict:
     """A wall mixer's spout swivel is limited (it would swing into the wall)."""
     if p["design"] != "wall":
         return p
-    return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], WALL_SWIVEL)}
+    return {**p, "spout_joint": "revolute", "spout_swivel": min(p["spout_swivel"], T.WALL_SWIVEL)}
 
 
 class TapLayout(Layout):
@@ -102,66 +86,69 @@ class TapLayout(Layout):
             lever, pipe = node.choice == "pull_out", True
         bridge = node.choice == "bridge"
         rb = p["body_radius"]
-        rs = min(p["spout_radius"], 0.6 * rb)
+        rs = min(p["spout_radius"], T.LAYOUT["spout_max"] * rb)
+        lay = T.LAYOUT
         height = p["height"]
         columns, controls, extra = [], {}, []
         # what the spout sweeps over: a side mixer with its lever, or two valve handles
         if lever and pipe:
-            d = max(p["handle_spread"], rs + RISER + CAP * rb + 0.045)
-            arm = min(p["lever_length"], d - rs - RISER - CAP * rb - 0.015)
-            z_cap = T.DECK_T + MIXER_H
-            columns += [T.column((0.0, d), T.DECK_T, z_cap, rb), T.lever_cap((0.0, d), z_cap, CAP * rb)]
-            controls["pieces"], controls["hinge"] = T.lever((0.0, d), z_cap + T.CAP_H, CAP * rb, arm)
+            d = max(p["handle_spread"], rs + T.RISER + T.CAP * rb + lay["mixer_room"])
+            arm = min(p["lever_length"], d - rs - T.RISER - T.CAP * rb - lay["lever_clear"])
+            z_cap = T.DECK_T + T.MIXER_H
+            columns += [T.column((0.0, d), T.DECK_T, z_cap, rb), T.lever_cap((0.0, d), z_cap, T.CAP * rb)]
+            controls["pieces"], controls["hinge"] = T.lever((0.0, d), z_cap + T.CAP_H, T.CAP * rb, arm)
             side_top = T.highest_when_tilted(controls["pieces"], controls["hinge"], p["lever_tilt"])
         elif not lever:
-            d = max(p["handle_spread"], rb + 2 * T.RISER_R + 0.02)
-            reach = min(0.045, d - max(rb, rs + RISER) - 0.012)
-            z_r = T.DECK_T + (BRIDGE_H + T.RISER_R if bridge else T.RISER_H)
+            d = max(p["handle_spread"], rb + 2 * T.RISER_R + lay["valve_room"])
+            reach = min(lay["valve_reach"], d - max(rb, rs + T.RISER) - lay["valve_clear"])
+            z_r = T.DECK_T + (T.BRIDGE_H + T.RISER_R if bridge else T.RISER_H)
             controls["valves"] = []
             for y, slot in ((d, "hot"), (-d, "cold")):
                 columns.append(T.column((0.0, y), T.DECK_T, z_r, T.RISER_R))
                 controls["valves"].append((T.valve_handle((0.0, y), z_r + T.GAP, reach, p["handle_kind"], slot),
                                            (0.0, y, z_r + T.GAP)))
             if bridge:
-                extra = T.bridge_bar(d, T.DECK_T + BRIDGE_H, 0.75 * T.RISER_R)
+                extra = T.bridge_bar(d, T.DECK_T + T.BRIDGE_H, lay["bridge_bar"] * T.RISER_R)
             side_top = max(pc.bounds[1, 2] for pcs, _ in controls["valves"] for pc in pcs)
         else:
             d, side_top = 0.0, T.DECK_T
         # the spout: on its own riser, or on a collar around the main column (with the lever on top)
         head = None
         if pipe:
-            z_low = side_top + SPOUT_OVER  # the outlet (aerator included) stays above the side elements
-            z_rt = T.DECK_T + (BRIDGE_H + 0.012 if bridge else 0.0)
+            z_low = side_top + T.SPOUT_OVER  # the outlet (aerator included) stays above the side elements
+            z_rt = T.DECK_T + (T.BRIDGE_H + lay["bridge_riser"] if bridge else 0.0)
+            low, share = lay["riser"]
             if node.choice == "pull_out":
-                height = max(height, z_low + 2 * max(1.6 * rs, 0.015) + 0.06)
-                z_rt = T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T))
-                spout, hp, hf, travel = T.pullout_spout(p["spout_reach"] + 0.05, rs, z_rt + T.GAP, height, z_low,
-                                                        p["head_travel"])
+                head_r, head_min, hose = lay["head"]
+                height = max(height, z_low + 2 * max(head_r * rs, head_min) + hose)
+                z_rt = T.DECK_T + max(low, share * (height - T.DECK_T))
+                spout, hp, hf, travel = T.pullout_spout(p["spout_reach"] + lay["head_reach"], rs, z_rt + T.GAP, height,
+                                                        z_low, p["head_travel"])
                 head = dict(pieces=hp, at=hf, travel=travel)
             else:
-                height = max(height, z_low + 0.06, z_rt + 0.1)
-                z_rt = max(z_rt, T.DECK_T + max(0.03, 0.2 * (height - T.DECK_T)))
+                over_outlet, over_riser = lay["spout_rise"]
+                height = max(height, z_low + over_outlet, z_rt + over_riser)
+                z_rt = max(z_rt, T.DECK_T + max(low, share * (height - T.DECK_T)))
                 spout = T.top_spout(p["spout_shape"], p["spout_reach"], rs, z_rt + T.GAP, height, z_low)
-            riser = T.column((0.0, 0.0), T.DECK_T, z_rt, rs + RISER, flare=1.5)
+            riser = T.column((0.0, 0.0), T.DECK_T, z_rt, rs + T.RISER, flare=lay["riser_flare"])
             axis = z_rt + T.GAP
         else:
-            hc = 2 * rs + 0.014
+            hc = 2 * rs + T.COLLAR
             if lever:
-                z_bt = height - T.CAP_H - T.lever_height(CAP * rb, p["lever_length"])  # the column's top
-                z_cm = min(T.DECK_T + 0.55 * (z_bt - T.DECK_T), z_bt - 0.012 - hc / 2)
-                columns.append(T.lever_cap((0.0, 0.0), z_bt, CAP * rb))
-                controls["pieces"], controls["hinge"] = T.lever((0.0, 0.0), z_bt + T.CAP_H, CAP * rb,
+                z_bt = height - T.CAP_H - T.lever_height(T.CAP * rb, p["lever_length"])  # the column's top
+                at, under = lay["lever_collar"]
+                z_cm = min(T.DECK_T + at * (z_bt - T.DECK_T), z_bt - under - hc / 2)
+                columns.append(T.lever_cap((0.0, 0.0), z_bt, T.CAP * rb))
+                controls["pieces"], controls["hinge"] = T.lever((0.0, 0.0), z_bt + T.CAP_H, T.CAP * rb,
                                                                 p["lever_length"])
             else:
-                z_cm = max(side_top + 0.065 + rs, T.DECK_T + 0.5 * (height - T.DECK_T))
-                z_bt = height = max(height, z_cm + hc / 2 + 0.03)
+                z_cm = max(side_top + lay["collar_over"] + rs, T.DECK_T + 0.5 * (height - T.DECK_T))
+                z_bt = height = max(height, z_cm + hc / 2 + lay["column_over"])
             columns.append(T.column((0.0, 0.0), T.DECK_T, z_bt, rb, dome=not lever))
             shape = "curved" if p["spout_shape"] == "gooseneck" else p["spout_shape"]
             spout = T.collar_spout(shape, p["spout_reach"], rs, rb, z_cm, hc, T.DECK_T)
             axis = z_cm - hc / 2
-        need = 2 * (d + (rb if lever else T.RISER_R) * FLARE + 0.008) if d else 2 * (FLARE * rb + 0.008)
-        width = max(p["base_width"], need) if d else max(need, min(p["base_width"], 0.12))
-        depth = float(np.clip(0.4 * width, 2 * FLARE * max(rb, T.RISER_R) + 0.016, 0.09))
+        width, depth = T.deck_size(p["base_width"], d, rb, rb if lever else T.RISER_R)
         self.add("base", "base", T.deck(width, depth, p["base_shape"], bridge=bool(d)) + columns + extra)
         if pipe and node.choice == "deck":
             self.grow(design.one("separate_pipe"), riser=riser)
@@ -175,22 +162,13 @@ class TapLayout(Layout):
         collar."""
         p = self.p
         rb = p["body_radius"]
-        rs = min(p["spout_radius"], 0.6 * rb)
-        r_bar = max(rb, 0.02)
-        hc = 2 * rs + 0.014
-        z = 0.075  # the bar's axis: the plate's bottom edge at z = 0.01
-        z_cm = z - r_bar - T.GAP - hc / 2
-        stub0 = z_cm - hc / 2 - 0.014
-        z_top = z + r_bar + 0.006  # the cartridge column's top
-        pieces = T.wall_body(p["wall_length"], r_bar, z, WALL_X)
-        pieces += [T.column((0.0, 0.0), z, z_top, rb, flare=1.0), T.lever_cap((0.0, 0.0), z_top, CAP * rb),
-                   g.cylinder([0, 0, stub0], [0, 0, z], rb, "metal", 32),
-                   g.cylinder([0, 0, stub0], [0, 0, stub0 + 0.01], 1.3 * rb, "metal", 32)]
+        rs = min(p["spout_radius"], T.LAYOUT["spout_max"] * rb)
+        pieces, (z, r_bar, z_top, z_cm, hc) = T.wall_mixer(p["wall_length"], rb, rs)
         self.add("base", "base", pieces)
         shape = "curved" if p["spout_shape"] == "gooseneck" else p["spout_shape"]
-        spout = T.collar_spout(shape, p["spout_reach"], rs, rb, z_cm, hc, z_cm - 0.09)
+        spout = T.collar_spout(shape, p["spout_reach"], rs, rb, z_cm, hc, z_cm - T.WALL_SPOUT_FOOT)
         self.grow(node.one("spout"), pieces=spout, axis=(0.0, 0.0, z_cm - hc / 2))
-        lever, hinge = T.lever((0.0, 0.0), z_top + T.CAP_H, CAP * rb, p["lever_length"])
+        lever, hinge = T.lever((0.0, 0.0), z_top + T.CAP_H, T.CAP * rb, p["lever_length"])
         self.grow(design, controls=dict(pieces=lever, hinge=hinge), head=None,
                   diverter=(-(p["wall_length"] / 2 - T.DIVERTER["inset"]), z + r_bar))
 
@@ -234,8 +212,8 @@ class TapLayout(Layout):
     def single_lever(self, node, pieces, hinge):
         name = self.add("lever", "lever", pieces)
         # swivel about the cartridge's vertical axis (temperature), then lift about its pin (flow)
-        self.join(J.flip_revolute("base", name, hinge.origin, (0, 0, 1), (-LEVER_SWIVEL, LEVER_SWIVEL), hinge.origin,
-                                  hinge.z, (0.0, self.p["lever_tilt"]), role="hinge"))
+        self.join(J.flip_revolute("base", name, hinge.origin, (0, 0, 1), (-T.LEVER_SWIVEL, T.LEVER_SWIVEL),
+                                  hinge.origin, hinge.z, (0.0, self.p["lever_tilt"]), role="hinge"))
 
     def two_handles(self, node, valves):
         for k, (valve, (pieces, at)) in enumerate(zip(node.of("valve"), valves)):
@@ -243,7 +221,7 @@ class TapLayout(Layout):
 
     def valve(self, node, k, pieces, at):
         name = self.add(f"handle_{k}", "handle", pieces)
-        self.join(J.revolute("base", name, at, (0, 0, 1), -HANDLE_TURN, HANDLE_TURN, role="knob"))
+        self.join(J.revolute("base", name, at, (0, 0, 1), -T.HANDLE_TURN, T.HANDLE_TURN, role="knob"))
 
 
 CATEGORY = Category("tap", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TapLayout, MATERIALS,

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -85,21 +84,6 @@ MATERIALS = {"ceramic": ("ceramic_colour", {c: f"ceramic:{c}" for c in ("white",
              "rubber": "rubber", "wall": "painted:white|off_white|light_grey",
              "unit": "painted:white|light_grey|charcoal|sage|navy", "top": "wood"}
 
-LID_LIFT = 0.2  # the cistern lid lifts 0..0.2 m
-PRESS = 0.006  # flush button travel
-LEVER_TURN = math.pi / 4
-TAB = 0.035  # the seat's rear tab, from the rim's back to the hinge line
-FLUSH_BELOW = 0.06  # the flush control sits this far below the cistern's top
-
-
-def DUAL_Y(rb: float) -> tuple[float, float]:  # noqa: N802
-    """The y of a dual flush's small and large buttons on the cistern front (their rings 4 mm apart)."""
-    d = rb + S.CLEAR + 0.008 + 0.002
-    return (-d, d)
-
-
-SHEET = 0.006  # a boxed frame's and a unit's boards count as shells this thick (hollow, for the mass)
-
 
 class ToiletLayout(Layout):
     def toilet(self, node):
@@ -111,20 +95,24 @@ class ToiletLayout(Layout):
         z_h = z_r + S.GAP + p["seat_thickness"]  # hinge line: the seat's top rear edge
         TD, TW = p["tank_depth"], p["tank_width"]
         rear = TD if design in ("close_coupled", "one_piece") else p["unit_depth"]
-        x_front = (2 * a + TAB + p["tank_gap"] + rear) / 2  # the object centred on x = 0
+        x_front = (2 * a + S.TAB + p["tank_gap"] + rear) / 2  # the object centred on x = 0
         x_c = x_front - a  # bowl axis
-        x_h = x_c - a - TAB  # hinge line
+        x_h = x_c - a - S.TAB  # hinge line
         x_tf = x_h - p["tank_gap"]  # cistern front face (or the unit's, the frame's)
-        tab_w = 0.34 * b
+        shape = S.TOILET
+        tab_w = shape["tab"] * b
         geo = dict(a=a, b=b, z_r=z_r, x_c=x_c, hinge=(x_h, z_h), tab_w=tab_w)
         hinge = (x_h, z_h)
         if design == "close_coupled":
-            deck = (x_tf - TD + 0.02, x_c - 0.75 * a, min(0.75 * TW, 1.3 * b))
+            back, front, tank_share, bowl_share = shape["deck"]
+            deck = (x_tf - TD + back, x_c - front * a, min(tank_share * TW, bowl_share * b))
             base = S.ceramic_base(a, b, p["wall"], z_r, x_c, deck, tab_w, hinge)
         elif design == "one_piece":
-            base = S.skirted_base(a, b, p["wall"], z_r, x_c, x_tf - TD, tab_w, hinge, min(0.85 * TW, 1.5 * b))
+            tank_share, bowl_share = shape["one_piece"]
+            base = S.skirted_base(a, b, p["wall"], z_r, x_c, x_tf - TD, tab_w, hinge,
+                                  min(tank_share * TW, bowl_share * b))
         elif design == "back_to_wall":
-            base = S.skirted_base(a, b, p["wall"], z_r, x_c, x_tf + S.GAP, tab_w, hinge, 1.3 * b)
+            base = S.skirted_base(a, b, p["wall"], z_r, x_c, x_tf + S.GAP, tab_w, hinge, shape["back_to_wall"] * b)
         else:
             base = S.hung_base(a, b, p["wall"], z_r, x_c, x_tf + S.GAP, tab_w, hinge)
         self.add("base", "body", base)
@@ -148,15 +136,16 @@ class ToiletLayout(Layout):
 
     def unit(self, node, x_face, size):
         D, W, H = size
-        self.add("unit", "cabinet", [pc.replace(sheet=SHEET) for pc in S.vanity_unit(x_face, D, W, H)])
+        self.add("unit", "cabinet", [pc.replace(sheet=S.SHEET) for pc in S.vanity_unit(x_face, D, W, H)])
         self.fix("base", "unit")
-        self.grow(node.one("flush_plate"), part="unit", x_face=x_face, z=H - 0.025 - 0.13)
+        top, plate = S.TOILET["unit_plate"]
+        self.grow(node.one("flush_plate"), part="unit", x_face=x_face, z=H - top - plate)
 
     def prewall(self, node, x_face, size):
         D, W, H = size
-        self.add("prewall", "frame", [pc.replace(sheet=SHEET) for pc in S.prewall(x_face, D, W, H)])
+        self.add("prewall", "frame", [pc.replace(sheet=S.SHEET) for pc in S.prewall(x_face, D, W, H)])
         self.fix("base", "prewall")
-        self.grow(node.one("flush_plate"), part="prewall", x_face=x_face, z=H - 0.16)
+        self.grow(node.one("flush_plate"), part="prewall", x_face=x_face, z=H - S.TOILET["frame_plate"])
 
     def flush_plate(self, node, part, x_face, z):
         plate, keys = S.flush_plate(x_face, z)
@@ -168,15 +157,15 @@ class ToiletLayout(Layout):
         # a flush-plate key is chrome-plated plastic like the round buttons (S.BUTTON_WALL)
         name = self.add(f"flush_{side}", "button", [pc.replace(wall=S.BUTTON_WALL) for pc in pieces])
         x = max(pc.bounds[1, 0] for pc in pieces)
-        self.slide(part, name, Frame.at((x, 0.0, z), z=(-1, 0, 0)), upper=PRESS, role="button")
+        self.slide(part, name, Frame.at((x, 0.0, z), z=(-1, 0, 0)), upper=S.PRESS, role="button")
 
     def tank(self, node, xs, ys, z0, low=False):
         p = self.p
         tall = p["tank_height"] * (p["one_piece_tank"] if low else 1.0)
         z1 = z0 + tall - p["lid_thickness"] - S.GAP  # top of the walls
-        zf = z1 - FLUSH_BELOW
+        zf = z1 - S.FLUSH_BELOW
         rb = p["button_radius"]
-        ys_b = {"button": (0.0,), "dual": DUAL_Y(rb)}.get(node.choice, ())
+        ys_b = {"button": (0.0,), "dual": S.DUAL_Y(rb)}.get(node.choice, ())
         holes = [(y - rb - S.CLEAR, zf - rb - S.CLEAR, y + rb + S.CLEAR, zf + rb + S.CLEAR) for y in ys_b]
         self.add("tank", "tank", S.cistern(xs, ys, z0, z1, holes))
         self.fix("base", "tank")
@@ -185,48 +174,51 @@ class ToiletLayout(Layout):
 
     def tank_lid(self, node, xs, ys, z):
         self.add("tank_lid", "lid", S.cistern_lid(xs, ys, z, self.p["lid_thickness"]))
-        self.slide("tank", "tank_lid", Frame.at((xs[1], 0.0, z)), upper=LID_LIFT, role="lid")
+        self.slide("tank", "tank_lid", Frame.at((xs[1], 0.0, z)), upper=S.LID_LIFT, role="lid")
 
     def dual(self, node, xs, ys, z):
         rb, x_tf = self.p["button_radius"], xs[1]
-        for kid, side, y in zip(node.of("flush_key"), ("small", "large"), DUAL_Y(rb), strict=True):
+        for kid, side, y in zip(node.of("flush_key"), ("small", "large"), S.DUAL_Y(rb), strict=True):
             self.extend("tank", [S.flush_ring(S.on_face(x_tf, z).shifted((0, y, 0)), rb)])
             pieces = [pc.transformed(Frame.at((0, y, 0)).matrix)
-                      for pc in S.flush_button(x_tf, S.CISTERN_WALL + 0.004, z, rb)]
+                      for pc in S.flush_button(x_tf, S.CISTERN_WALL + S.BUTTON_BEHIND, z, rb)]
             self.grow(kid, part="tank", side=side, pieces=pieces, z=z)
 
     def button(self, node, xs, ys, z):
         rb, x_tf = self.p["button_radius"], xs[1]
         self.extend("tank", [S.flush_ring(S.on_face(x_tf, z), rb)])
-        self.add("flush_button", "button", S.flush_button(x_tf, S.CISTERN_WALL + 0.004, z, rb))
-        self.slide("tank", "flush_button", Frame.at((x_tf + 0.0125, 0.0, z), z=(-1, 0, 0)), upper=PRESS, role="button")
+        self.add("flush_button", "button", S.flush_button(x_tf, S.CISTERN_WALL + S.BUTTON_BEHIND, z, rb))
+        self.slide("tank", "flush_button", Frame.at((x_tf + S.BUTTON_PROUD, 0.0, z), z=(-1, 0, 0)), upper=S.PRESS,
+                   role="button")
 
     def lever(self, node, xs, ys, z):
         # on the left (-Y) wall near the front; its grip points forward, behind the cistern front
         length = self.p["lever_length"]
-        xa = xs[1] - length - 0.012
-        y_in = ys[0] - 0.006 - S.GAP  # the lever's inner face, off the rose
-        self.extend("tank", [g.cylinder([xa, ys[0], z], [xa, ys[0] - 0.006, z], 0.02, "chrome", 32)])
+        xa = xs[1] - length - S.LEVER_ROSE["behind"]
+        rose, y_in = S.lever_rose(xa, ys[0], z)
+        self.extend("tank", [rose])
         self.add("flush_lever", "lever", S.trip_lever(xa, y_in, z, length))
         # pressing the grip (+X of the axis) down: about +Y
-        self.hinge("tank", "flush_lever", Frame.at((xa, y_in, z), z=(0, 1, 0)), upper=LEVER_TURN, role="button")
+        self.hinge("tank", "flush_lever", Frame.at((xa, y_in, z), z=(0, 1, 0)), upper=S.LEVER_TURN, role="button")
 
     def seat(self, node, a, b, z_r, x_c, hinge, tab_w):
         p = self.p
-        a_s, b_s = a + 0.002, b + 0.002
+        past, lid_past, tab = S.TOILET["seat"]
+        a_s, b_s = a + past, b + past
         x_h, z_h = hinge
         self.add("seat", "seat", S.seat(a_s, b_s, x_c, z_r + S.GAP, p["seat_thickness"], p["seat_ring"],
-                                        (x_h, x_c - a_s + 0.03, tab_w)))
+                                        (x_h, x_c - a_s + tab, tab_w)))
         # the two leaves turn at most half a turn together, split by cover_share; the core stops them
         # where the cover leans on the cistern
         cover_up = p["cover_share"] * math.pi
         line = Frame.at((x_h, 0.0, z_h), z=(0, -1, 0))
         self.hinge("base", "seat", line, upper=math.pi - cover_up)
-        self.grow(node.one("cover"), a=a_s + 0.004, b=b_s + 0.004, x_c=x_c, line=line, upper=cover_up, tab_w=tab_w)
+        self.grow(node.one("cover"), a=a_s + lid_past, b=b_s + lid_past, x_c=x_c, line=line, upper=cover_up,
+                  tab_w=tab_w)
 
     def cover(self, node, a, b, x_c, line, upper, tab_w):
         x_h, z_h = line.origin[0], line.origin[2]
-        tab = (x_h, x_c - a + 0.03, tab_w)
+        tab = (x_h, x_c - a + S.TOILET["seat"][2], tab_w)
         self.add("cover", "lid", S.cover(a, b, x_c, z_h + S.GAP, self.p["cover_thickness"], tab))
         self.hinge("seat", "cover", line, upper=upper)
 

@@ -42,7 +42,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -53,13 +52,13 @@ from .parts import windows as P
 
 def jamb_width(p) -> float:
     """The jambs' and head's face width: ``frame_width``, at most 12 % of the frame's width and height."""
-    return min(p["frame_width"], 0.12 * p["width"], 0.12 * p["height"])
+    return min(p["frame_width"], P.JAMB_MAX * p["width"], P.JAMB_MAX * p["height"])
 
 
 def sashes(p, rng) -> int:
     """sash_count, or round(opening width / sash_width), 1..4"""
     opening = p["width"] - 2 * jamb_width(p)
-    return p["sash_count"] or int(np.clip(round(opening / p["sash_width"]), 1, 4))
+    return p["sash_count"] or int(np.clip(round(opening / p["sash_width"]), 1, P.MOST_SASHES))
 
 
 def vents(p, rng) -> int:
@@ -69,7 +68,7 @@ def vents(p, rng) -> int:
 
 def sash_locks(p, rng) -> int:
     """one cam lock on the meeting rail, two on a frame wider than 0.9 m"""
-    return 2 if p["width"] > LOCKS_FROM else 1
+    return 2 if p["width"] > P.LOCKS_FROM else 1
 
 
 def curtain_panels(p, rng) -> int:
@@ -161,59 +160,31 @@ MATERIALS = {
     "curtain": "fabric", "rod": "rod_finish",
 }
 
-LOCK = dict(base=(0.064, 0.012), lever=(0.05, 0.012, 0.006), hub=0.009, gap=0.001)
-"""Cam sash lock (m): base length along the rail and height, lever (length, width, thickness), hub radius, gap
-between base and lever. Double-hung sashes carry one cam lock, two on units wider than about 36 in (0.9 m)
-(Andersen 400 / Marvin / Pella double-hung hardware: 60-75 mm bases, the lever turning a quarter to a half turn
-in the rail's plane)."""
-LOCKS_FROM = 0.9
-LEVER_TURN = np.pi / 2  # an espagnolette lever's quarter turn (Hoppe, Roto: 90 degrees to open)
-VENT = dict(length=0.3, height=0.02, depth=0.012, wall=0.002, slide=0.08, stroke=0.035)
-CLR_VENT = 0.0015  # the vent's slide in its housing
-
 
 def _bounds(pieces):
     b = np.array([pc.bounds for pc in pieces])
     return b[:, 0].min(0), b[:, 1].max(0)
 
 
-TRANSOM_FROM = 1.1  # frames taller than this may have a transom light
-SILL_EAR = 0.03  # the sill reaches this far past the frame on each side
-BOTTOM_RAIL = 1.25  # the bottom rail is this much wider than the jambs
-
-
-SIZES = {"tilt_turn": dict(width=(0.6, 1.6), height=(0.6, 2.4)), "awning": dict(width=(0.6, 2.5), height=(0.4, 1.0)),
-         "double_hung": dict(width=(0.6, 1.2), height=(0.9, 2.0))}
-"""Frame sizes of the designs that come in a narrower range (manufacturers' size tables: Roto, Velfac,
-Andersen 400 series): a wider or taller draw is brought into it."""
-
-
-MIN_SASH = 0.25
-"""m: the narrowest sash a frame is divided into. The automatic count (opening / sash_width >= 0.4 m,
-rounded) never goes below 0.26 m; the narrowest stock casements are ~0.4 m overall (Andersen 400 series
-size tables). Fuzz draw 51 (sash_count 4 in a 0.6 m tilt-and-turn frame) made 6 cm sashes narrower than their
-two stiles, whose turns jammed at 0.8 rad."""
-
-
 def max_sashes(p: dict) -> int:
-    """The most sashes the opening holds at MIN_SASH each, with a mullion between two."""
+    """The most sashes the opening holds at P.MIN_SASH each, with a mullion between two."""
     opening = p["width"] - 2 * jamb_width(p)
-    mw = min(p["mullion_width"], 0.1 * opening)
-    return max(1, int((opening + mw) // (MIN_SASH + mw)))
+    mw = min(p["mullion_width"], P.MULLION_MAX * opening)
+    return max(1, int((opening + mw) // (P.MIN_SASH + mw)))
 
 
 def fit_frame(p: dict) -> dict:
     """A transom light only on frames taller than 1.1 m (casements and sliders); sizes per design; a sash
-    count that would make sashes narrower than MIN_SASH is lowered to the most that fit."""
+    count that would make sashes narrower than P.MIN_SASH is lowered to the most that fit."""
     p = dict(p)
-    for k, (lo, hi) in SIZES.get(p["style"], {}).items():
+    for k, (lo, hi) in P.SIZES.get(p["style"], {}).items():
         p[k] = float(min(max(p[k], lo), hi))
     if p["sash_count"]:
         p["sash_count"] = min(p["sash_count"], max_sashes(p))
     if p["style"] in ("awning", "double_hung"):
         p["has_transom"] = False
     p["has_lever"] = p["has_lever"] and p["style"] in ("casement", "tilt_turn") and p["handle_style"] == "lever"
-    return {**p, "has_transom": p["has_transom"] and p["height"] > TRANSOM_FROM}
+    return {**p, "has_transom": p["has_transom"] and p["height"] > P.TRANSOM_FROM}
 
 
 class WindowLayout(Layout):
@@ -223,8 +194,8 @@ class WindowLayout(Layout):
         z0 = p["sill_thickness"] if node.one("sill") else 0.0
         fw = jamb_width(p)
         yi0, yi1 = -W / 2 + fw, W / 2 - fw  # opening
-        zi0, zi1 = z0 + BOTTOM_RAIL * fw, z0 + H - fw
-        mw = min(p["mullion_width"], 0.1 * (yi1 - yi0))
+        zi0, zi1 = z0 + P.BOTTOM_RAIL * fw, z0 + H - fw
+        mw = min(p["mullion_width"], P.MULLION_MAX * (yi1 - yi0))
         zs1, transom = zi1, None  # top of the sash area, the transom light's hole
         if node.one("transom"):
             zt = zi1 - p["transom_fraction"] * (zi1 - zi0)
@@ -262,11 +233,7 @@ class WindowLayout(Layout):
 
     def sill(self, node, z0):
         p = self.p
-        W, fd, sd = p["width"], p["frame_depth"], p["sill_depth"]
-        self.extend("frame", [
-            g.box_between([-fd / 2 - sd, -W / 2 - SILL_EAR, 0.0], [fd / 2, W / 2 + SILL_EAR, z0], "frame", bevel=0.003),
-            g.box_between([-fd / 2 - sd, -W / 2 - SILL_EAR, -0.012], [-fd / 2 - sd + 0.012, W / 2 + SILL_EAR, 0.0],
-                          "frame")])  # drip edge
+        self.extend("frame", P.sill(p["width"], p["frame_depth"], p["sill_depth"], z0))
 
     def transom(self, node, light):
         """The transom light's glass; its opening and bar are cut in the frame by the sash layout."""
@@ -296,17 +263,11 @@ class WindowLayout(Layout):
     def sash_lock(self, node, k, sash, xs, y, z):
         """A cam sash lock on the lower sash's meeting rail: its base screwed to the rail's top, its lever
         lying along the rail (locked) and turning a quarter turn about the vertical toward the room."""
-        bl, bh = LOCK["base"]
-        ll, lw, lt = LOCK["lever"]
-        xc = (xs[0] + xs[1]) / 2
-        self.extend(sash, [g.box_between([xs[0] + 0.002, y - bl / 2, z], [xs[1], y + bl / 2, z + bh], "handle",
-                                         bevel=0.002)])
-        z0 = z + bh + LOCK["gap"]
-        name = self.add(f"lock_{k}", "lock", [
-            g.cylinder([xc, y, z0], [xc, y, z0 + lt + 0.002], LOCK["hub"], "handle", 24),
-            g.box_between([xc - lw / 2, y, z0], [xc + lw / 2, y + ll, z0 + lt], "handle", bevel=0.002)])
+        base, lever, pivot = P.sash_lock(xs, y, z)
+        self.extend(sash, base)
+        name = self.add(f"lock_{k}", "lock", lever)
         # about -z: the lever turns from along +y toward the room (+x), away from the upper sash
-        self.hinge(sash, name, Frame.at((xc, y, z0), z=(0, 0, -1)), upper=LEVER_TURN, role="knob")
+        self.hinge(sash, name, Frame.at(pivot, z=(0, 0, -1)), upper=P.LEVER_TURN, role="knob")
 
     def sash(self, node, name, pieces, spec):
         lever = [pc for pc in pieces if pc.name == "handle"] if node.one("lever") else []
@@ -318,15 +279,12 @@ class WindowLayout(Layout):
     def lever(self, node, sash, pieces):
         """The espagnolette lever (spindle and grip; its rose stays on the sash) turns a quarter turn about the
         sash normal toward the hinge side: hanging under its spindle it is neutral under gravity."""
-        spindle = pieces[0].bounds
-        y, z = (spindle[0][1:] + spindle[1][1:]) / 2
-        x0 = float(spindle[0][0]) + 0.0035  # 1.5 mm off the rose's face (the spindle was sunk 2 mm into it)
-        pieces = [g.cylinder([x0, y, z], [float(spindle[1][0]), y, z], 0.0055, "handle", 16, name="handle"),
-                  *pieces[1:]]
+        spindle, (x0, y, z) = P.free_spindle(pieces[0])
+        pieces = [spindle, *pieces[1:]]
         hinge_y = float(self.bp.joints[-1].dofs[0].origin[1])
         toward = 1.0 if hinge_y > y else -1.0
         name = self.add(f"{sash}_lever", "handle", pieces)
-        self.hinge(sash, name, Frame.at((x0, y, z), z=(toward, 0, 0)), upper=LEVER_TURN, role="knob")
+        self.hinge(sash, name, Frame.at((x0, y, z), z=(toward, 0, 0)), upper=P.LEVER_TURN, role="knob")
 
     def trickle_vents(self, node, spans, x, z, h):
         for k, (kid, span) in enumerate(zip(node.of("vent"), spans, strict=True)):
@@ -336,24 +294,10 @@ class WindowLayout(Layout):
         """A trickle vent on the head's room face over one sash: a housing with a slot and a shutter slide
         that covers or opens it (Titon Trimvent / Greenwood slot vents: 250-400 mm housings, ~20 mm high,
         a 30-40 mm slide stroke)."""
-        ln = min(VENT["length"], 0.8 * (span[1] - span[0]))
-        yc = (span[0] + span[1]) / 2
-        hh = min(VENT["height"], 0.8 * h)
-        d, t = VENT["depth"], VENT["wall"]
-        y0, y1 = yc - ln / 2, yc + ln / 2
-        self.extend("frame", [
-            g.box_between([x, y0, z - hh / 2], [x + d, y1, z - hh / 2 + t], "handle"),  # floor of the track
-            g.box_between([x, y0, z + hh / 2 - t], [x + d, y1, z + hh / 2], "handle"),  # roof
-            g.box_between([x, y0 - t, z - hh / 2], [x + d, y0, z + hh / 2], "handle"),  # end caps
-            g.box_between([x, y1, z - hh / 2], [x + d, y1 + t, z + hh / 2], "handle")])
-        sw = min(VENT["slide"], 0.45 * ln)
-        travel = min(VENT["stroke"], ln - sw - 2 * CLR_VENT)
-        ys = y0 + CLR_VENT
-        name = self.add(f"vent_{k}", "vent",
-                        [g.box_between([x + 0.002, ys, z - hh / 2 + t + CLR_VENT], [x + d - 0.001, ys + sw,
-                                                                                   z + hh / 2 - t - CLR_VENT],
-                                       "handle", bevel=0.0008)])
-        self.slide("frame", name, Frame.at((x + d / 2, ys, z), z=(0, 1, 0)), upper=travel)
+        housing, slide, start, travel = P.trickle_vent(span, x, z, h)
+        self.extend("frame", housing)
+        name = self.add(f"vent_{k}", "vent", [slide])
+        self.slide("frame", name, Frame.at(start, z=(0, 1, 0)), upper=travel)
 
     def shutters(self, node, made):
         self._parts(node, "shutter", made)

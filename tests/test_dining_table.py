@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import dining_table as dt
+from infmob_usd.categories.parts.furniture_sizes import DINING
 from infmob_usd.model import build as build_model
 
 from collide import overlap
@@ -52,7 +53,8 @@ def test_parts_labels_and_model(seed):
     links, _ = build_model(bp, {k: 700.0 for k in bp.materials})
     assert all(link.mass > 0 for link in links)
     lo, hi = bp.bounds()
-    susan = dt.BEARING + 0.001 + dt.SUSAN_T if "lazy_susan" in bp.parts else 0.0  # a lazy susan stands on the top
+    # a lazy susan stands on the top
+    susan = DINING["bearing"] + 0.001 + DINING["susan_t"] if "lazy_susan" in bp.parts else 0.0
     assert lo[2] == pytest.approx(0.0, abs=1e-9) and hi[2] == pytest.approx(p["height"] + susan, abs=1e-6)
     assert hi[0] - lo[0] == pytest.approx(p["length"], rel=1e-3)
     assert movable(bp), "every table has a moving part"

@@ -283,7 +283,7 @@ def test_each_design_has_its_side_board_mechanisms(design):
             j = by_child(bp, n)
             d = j.dofs[0]
             assert j.kind == "prismatic" and j.parent == "rack" and d.axis == pytest.approx((0, 0, 1))
-            assert d.upper >= (pr.CUP_LIFT if n in mugs else pr.CADDY_LIFT) - 1e-9
+            assert d.upper >= (pr.R.CUP_LIFT if n in mugs else pr.R.CADDY_LIFT) - 1e-9
             ys = np.vstack([pc.vertices for pc in bp.parts[n].pieces])[:, 1]
             assert ys.min() > p["plate_radius"] + pr.R.PLATE_SLIDE  # beyond a plate slid sideways
         for i, a in enumerate(mugs):  # mugs stand apart
@@ -305,7 +305,7 @@ def test_second_tier_and_drip_tray(seed, style):
     upper = [n for n in plates(bp) if n.startswith("upper_plate_")]
     assert lower and upper
     top_lower = max(pc.bounds[1, 2] for n in lower for pc in bp.parts[n].pieces)
-    assert min(pc.bounds[0, 2] for n in upper for pc in bp.parts[n].pieces) > top_lower + pr.LIFT
+    assert min(pc.bounds[0, 2] for n in upper for pc in bp.parts[n].pieces) > top_lower + pr.R.LIFT
     for name in lower + upper:
         j = by_child(bp, name)
         assert j.kind == "limited_planar" and j.parent == "rack"
@@ -313,7 +313,7 @@ def test_second_tier_and_drip_tray(seed, style):
             assert max_depth(hulls(bp.parts[name], j, q), rack) < 5e-4, f"{name} at {q}"
     for name in lower:  # a lower plate lifted fully stays under the upper tier
         j = by_child(bp, name)
-        assert max_depth(hulls(bp.parts[name], j, (pr.LIFT, 0.0, 0.0)), rack) < 5e-4
+        assert max_depth(hulls(bp.parts[name], j, (pr.R.LIFT, 0.0, 0.0)), rack) < 5e-4
     if style == "wood":
         assert "drip_tray" not in bp.parts
         return

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import tap
+from infmob_usd.categories.parts import taps
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
@@ -225,7 +226,7 @@ def test_each_design_is_forced_and_moves(design):
         assert kinds["lever"] == "flip_revolute"
     if design == "wall":  # the spout swings in front of the wall, never into it
         d = by_child(bp, "spout").dofs[0]
-        assert kinds["spout"] == "revolute" and d.upper <= tap.WALL_SWIVEL + 1e-9
+        assert kinds["spout"] == "revolute" and d.upper <= taps.WALL_SWIVEL + 1e-9
     test_no_contact_and_nothing_below_ground_in_any_state((p, bp))
 
 

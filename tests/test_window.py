@@ -9,6 +9,7 @@ import pytest
 
 from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import window as win
+from infmob_usd.categories.parts import windows
 
 from collide import overlap
 from zoo import by_child, make_bp, movable, object_limits
@@ -338,7 +339,7 @@ def test_a_sash_count_too_many_for_the_frame_is_lowered(style, width):
     assert len(sashes) == p["sash_count"] == min(4, win.max_sashes(p)) >= 1
     for part in sashes:
         b = np.array([pc.bounds for pc in part.pieces if pc.material != "handle"])
-        assert b[:, 1, 1].max() - b[:, 0, 1].min() > win.MIN_SASH - 0.02  # sliding sashes overlap a little
+        assert b[:, 1, 1].max() - b[:, 0, 1].min() > windows.MIN_SASH - 0.02  # sliding sashes overlap a little
 
 
 @pytest.mark.sim

@@ -10,6 +10,85 @@ from __future__ import annotations
 import math
 
 from infmob_usd import geometry as g
+from infmob_usd.frames import Frame
+
+from . import hardware, panels
+
+# -- kitchen cabinet dimensions (the layout in ``categories/kitchen_cabinet.py`` reads these) ----
+GAP = 0.003  # between neighbouring fronts and between moving parts and the carcass
+COLUMN = 0.45  # a column per 45 cm of width
+COLUMN_MIN = 0.2  # the narrowest column (IKEA METOD's narrowest base cabinet is 20 cm): a hinged leaf's free
+#                   edge swings out sideways by thickness^2 / (2 width) and must stay inside the 3 mm reveal
+DOUBLE = 0.6  # columns wider than this have double doors
+COLUMN_MAX = 1.0  # the widest column (US base cabinets go to 42-48 in; a 1.2 m drawer front and box weigh ~40 kg)
+KITCHEN_COLUMN_MAX = 0.9  # a kitchen wall's columns: at most 90 cm (IKEA METOD's widest base cabinet is 80 cm)
+SPLASH = 0.012  # splashback panel (12 mm compact laminate / glass)
+WALL_MIN = 0.4  # the lowest wall cabinet (IKEA METOD 40 cm high)
+DRAWER_WALL = 0.009  # drawer box boards (Blum LEGRABOX: 16 mm bottom on 1 mm steel sides; plywood boxes 9 mm)
+TILT = math.radians(25)  # tilt-out sink fronts tip 20-30 degrees (Rev-A-Shelf 6572 tip-out trays)
+FLAP = math.radians(100)  # lift-up flap stays open 90-107 degrees (Blum AVENTOS HK)
+TOP_OVER = 0.02  # worktop overhang at the front
+TOP_END = 0.005  # worktop overhang at a free end of the run
+TOP_DRAWER = 0.2  # a top drawer is this fraction of a column's height
+SINK_DEPTH = 0.19  # bowl depth
+SINK_FRONT = 0.16  # false-front height of a sink base
+SINK_MARGIN = (0.1, 0.12, 0.1)  # worktop left around the sink cut-out: front, back, sides
+GATE = math.pi / 2  # a door with pull-outs or a carousel behind it
+INNER_CLEAR = 0.025  # an inner drawer's box keeps this far from the carcass sides (the hinges)
+SPLITS = {2: (0.5, 0.5), 3: (0.4, 0.4, 0.2), 4: (0.3, 0.3, 0.2, 0.2)}  # drawer heights, bottom up
+RAIL_BELOW = 0.02  # a wall run's suspension rail: its top this far below the cabinets' top
+TALL_SPLIT = 0.45  # a tall cabinet's fixed shelf (upper over lower door) at this fraction of its height
+TALL_SHELVES = 3  # the upper door's compartment: this many equal shelf spaces
+TALL_HANDLE = 0.1  # handles of a tall cabinet's doors this far from the split
+WALL_HANDLE = 0.08  # a wall door's handle: this fraction of its height above its bottom edge
+CORNER_BLIND = 0.05  # a corner unit's blind panel reaches this far past the unit's middle
+CORNER_LEG = 0.06  # legs under the corner box, this far in from its edges
+LIFT_HANDLE = 0.04  # handles of tilt-out fronts and flaps this far from the free edge
+
+# Handles: 128-320 mm bar pulls (hole centres), 30 mm knobs 25 mm proud, edge pulls as long as asked.
+BAR_HANDLE = (0.128, 0.32)
+KNOB = (0.015, 0.025)
+HANDLE_REACH = 0.03  # a door's handle keeps this far (beyond half its length) from the door's ends
+HANDLE_IN = 0.05  # on a slab front a handle is 50 mm from the edge (framed: on the stile or rail)
+DOOR_HANDLE = (0.8, 0.9, 0.45)  # handle height / door height: on doors under 0.9 m, on taller doors
+
+# Drawers: 12 mm runner space either side, the box 10 mm off the back, 2 mm behind the front; a
+# deep drawer (over 25 cm) has its handle near the top edge (on a slab front HANDLE_IN down); the box
+# stays 12 mm over the drawer below and 30 mm under the next one.
+RUNNER = 0.012
+BOX_BACK = 0.01
+BOX_FRONT = 0.002
+DEEP_DRAWER = 0.25
+BOX_BELOW, BOX_ABOVE = 0.012, 0.03
+# Inner (behind-door) drawers: at most 30 cm pitch, 2 cm over the carcass bottom, boxes at most
+# 16 cm tall and 4 cm under the next; set back 30 mm behind the door, 16 mm fronts, 30 mm low sides.
+INNER_PITCH, INNER_FLOOR, INNER_H, INNER_ROOM = 0.3, 0.02, 0.16, 0.04
+INNER_SETBACK, INNER_FRONT, INNER_LOW = 0.03, 0.016, 0.03
+
+# Pull-out larder (Kesseböhmer Dispensa): 90 % extension, a frame of 20 mm steel tube (1.2 mm wall)
+# 15 mm in from the carcass sides: rear posts and top rails; the baskets from 5 cm up, 20 cm of the
+# height kept free at the top, 1 cm in from the frame.
+PULLOUT_EXTENSION = 0.9
+PULLOUT_CLEAR = 0.015
+TUBE, TUBE_WALL = 0.02, 0.0012
+PULLOUT_FLOOR = (0.01, 0.03)  # the front's foot box, over the carcass bottom
+BASKETS_FROM, BASKETS_ROOM, BASKET_IN = 0.05, 0.2, 0.01
+
+# Lazy-susan bearing plates (80 mm, 4 mm) top and bottom; trays from 4 cm over the lower plate,
+# 10 cm kept free at the top; trays 2 cm inside the carcass.
+BEARING_R, BEARING_T = 0.04, 0.004
+TRAYS_FROM, TRAYS_ROOM, CAROUSEL_CLEAR = 0.04, 0.1, 0.02
+
+# Tilt-out sink front (Rev-A-Shelf 6572): a sponge tray 6 cm deep and 4.2 cm high, 5 cm in from the
+# front's sides, its floor 15 mm over the hinge.
+# (x: its back 6 cm behind the front, its back wall 3 mm; z: floor 15-18 mm, lip up to 6 cm over the hinge)
+SPONGE_TRAY = {"back": 0.06, "wall": 0.057, "inset": 0.05, "floor": (0.015, 0.018), "lip": 0.06}
+
+# Legs: behind a kick board (IKEA METOD plinth: set back 50 mm, legs 6-8 cm in), or visible legs with
+# levellers 5 cm in from the edges, a pair per 60 cm of run.
+PLINTH_LEGS = (0.06, 0.08, 0.06)  # legs in from the back, the front and the sides
+KICK_BOARD = (0.06, 0.045, 0.005, 0.002)  # back of board from the front, front of board, end inset, floor gap
+LEG_IN, LEG_PITCH, LEG_RUN_END = 0.05, 0.6, 0.12
 
 # Front styles. Shaker / raised-panel frames: 60-70 mm stiles and rails on a 600 mm door
 # (Shaker cabinet doors, e.g. IKEA AXSTAD / BODBYN: 62 mm frame, 5-6 mm recessed centre panel).
@@ -191,3 +270,196 @@ def wall_rail(xs, ys, z: float, slot: str) -> list[g.Piece]:
 
 def angle(deg: float) -> float:
     return math.radians(deg)
+
+
+# -- kitchen cabinet assemblies -----------------------------------------------------------------
+def handle(style: str, length: float, slot: str = "handle"):
+    """A cabinet handle of ``style`` (``bar``: a 128-320 mm pull; ``knob``: a 30 mm knob; else an edge
+    pull of ``length``), mounted by its ``mount`` support point."""
+    if style == "bar":
+        return hardware.bar_handle(min(max(length, BAR_HANDLE[0]), BAR_HANDLE[1]), slot)
+    if style == "knob":
+        return hardware.knob_handle(*KNOB, slot)
+    return hardware.edge_pull(length, slot)
+
+
+def handle_on(style: str, length: float, at, across=(0, 1, 0)) -> list[g.Piece]:
+    """The pieces of a handle of ``style`` mounted on a front face at point ``at`` (the face's normal
+    +X), its length along ``across``."""
+    h = handle(style, length).attached("mount", to=Frame.at(at, z=(1, 0, 0), x=across))
+    return list(h.parts[h.root].pieces)
+
+
+def drawer(xs, ys, fys, fz, bz, t: float, ft: float, style: str, handle_style) -> tuple[list[g.Piece], tuple]:
+    """A drawer in a carcass over ``xs`` x ``ys`` (board ``t``): a front (``style``, thickness ``ft``)
+    over ``fys`` x ``fz`` a reveal in front of the carcass, its box (``bz`` its z range) on runners,
+    and a handle of ``handle_style`` (None: none). Returns the pieces and the box (x0, x1, y0, y1,
+    z0, z1)."""
+    xf = xs[1]
+    box = (xs[0] + t + BOX_BACK, xf - BOX_FRONT, ys[0] + RUNNER, ys[1] - RUNNER, bz[0], bz[1])
+    pieces = panels.box_drawer((xf + GAP, xf + GAP + ft, *fys, *fz), box, DRAWER_WALL, "front", "body")[1:]
+    face, xface = front(xf + GAP, xf + GAP + ft, fys, fz, style, "front")
+    pieces += face
+    if handle_style:
+        f = frame_width(fys[1] - fys[0], fz[1] - fz[0], style)
+        if fz[1] - fz[0] > DEEP_DRAWER:  # deep drawers: the handle near the top edge, on the top rail
+            hz, hx = fz[1] - (f / 2 if f else HANDLE_IN), xf + GAP + ft
+        else:
+            hz, hx = sum(fz) / 2, xface
+        pieces += handle_on(handle_style, min(0.5 * (fys[1] - fys[0]), BAR_HANDLE[1]), (hx, sum(fys) / 2, hz))
+    return pieces, box
+
+
+def drawer_stack(splits, zs, fzs):
+    """Rows of a drawer stack: per share of ``splits`` (bottom up) the front's z range in ``fzs`` and
+    the box's in the carcass interior ``zs`` (the box stays above the front of the drawer below, or
+    pulling it drags that one along)."""
+    fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
+    f0, i0 = fzs[0], zs[0]
+    rows = []
+    for s in splits:
+        fz = (f0 + GAP / 2, f0 + s * fh - GAP / 2)
+        rows.append((fz, (max(i0 + BOX_BELOW, fz[0]), i0 + s * ih - BOX_ABOVE)))
+        f0 += s * fh
+        i0 += s * ih
+    return rows
+
+
+def door(x1: float, leaf, fzs, ft: float, style: str, handle_style, glazed: bool = False, handle_at=None):
+    """A hinged door a reveal in front of a carcass face ``x1``: ``leaf`` (y0, y1, hinge side), over
+    ``fzs``; its front, hinge cups and a handle of ``handle_style`` (None: none) on the free stile, at
+    ``handle_at`` (else 80 % up a short door, 45 % up a tall one). Returns the pieces and the hinge
+    frame (on the front face at the hinge edge; its axis makes the door swing out, +X)."""
+    ya, yb, side = leaf
+    xf = x1 + GAP
+    pieces, _ = front(xf, xf + ft, (ya, yb), fzs, style, "front", glazed=glazed)
+    pieces += hinge_cups(xf, ya if side == "left" else yb, 1 if side == "left" else -1, fzs, "hinge")
+    h = fzs[1] - fzs[0]
+    if handle_style:
+        length = min(0.3 * h, BAR_HANDLE[1])
+        low, tall, high = DOOR_HANDLE
+        hz = handle_at if handle_at is not None else fzs[0] + (low if h < tall else high) * h
+        reach = (max(length, BAR_HANDLE[0]) if handle_style == "bar" else length) / 2 + HANDLE_REACH
+        hz = min(max(hz, fzs[0] + reach), fzs[1] - reach)  # the whole handle on the door
+        f = frame_width(yb - ya, h, style)
+        off = f / 2 if f else min(HANDLE_IN, 0.3 * (yb - ya))  # on the stile of a framed door
+        pieces += handle_on(handle_style, length, (xf + ft, yb - off if side == "left" else ya + off, hz),
+                            across=(0, 0, 1))
+    hinge = Frame.at((xf + ft, ya if side == "left" else yb, fzs[0]), z=(0, 0, -1 if side == "left" else 1))
+    return pieces, hinge
+
+
+def inner_drawer_rows(k: int, zs) -> list[tuple[float, float]]:
+    """z ranges of ``k`` inner drawers in a compartment ``zs``: at most 30 cm apart."""
+    pitch = min((zs[1] - zs[0]) / k, INNER_PITCH)
+    out = []
+    for r in range(k):
+        z = zs[0] + INNER_FLOOR + r * pitch
+        out.append((z, z + min(INNER_H, pitch - INNER_ROOM)))
+    return out
+
+
+def inner_drawer(xs, ys, zs, t: float) -> tuple[list[g.Piece], float, float]:
+    """An internal pull-out: a low-fronted box set back behind the door, narrowed to pass the hinges
+    (Blum / IKEA METOD inner drawers: ~25 mm each side). Returns the pieces and the box's x range."""
+    clear = INNER_CLEAR
+    x0, x1 = xs[0] + t + BOX_BACK, xs[1] - INNER_SETBACK
+    pieces = panels.box_drawer((x1 - INNER_FRONT, x1, ys[0] + clear, ys[1] - clear, zs[0], zs[1]),
+                               (x0, x1 - INNER_FRONT, ys[0] + clear, ys[1] - clear, zs[0], zs[1] - INNER_LOW),
+                               DRAWER_WALL, "body", "body")
+    return pieces, x0, x1
+
+
+def pullout(xs, ys, fys, fzs, zs, t: float, ft: float, style: str, handle_style, baskets: int):
+    """A full-height pull-out larder: the front on full-extension runners carries a frame of wire
+    baskets hung on two rear posts and two top rails. Returns the pieces, the travel, and per basket
+    its (xs, ys, z)."""
+    pieces, _ = drawer(xs, ys, fys, fzs, (zs[0] + PULLOUT_FLOOR[0], zs[0] + PULLOUT_FLOOR[1]), t, ft, style,
+                       handle_style)
+    clear = PULLOUT_CLEAR
+    x0, x1 = xs[0] + t + BOX_BACK, xs[1] - BOX_FRONT
+    y0, y1 = ys[0] + clear, ys[1] - clear
+    # keep the front; the baskets hang on two rear posts and two top rails of 20 mm steel tube
+    frame = [g.box_between([x0, y, zs[0] + PULLOUT_FLOOR[0]], [x0 + TUBE, y + TUBE, zs[1] - TUBE], "wire").replace(
+        sheet=TUBE_WALL) for y in (y0, y1 - TUBE)]
+    frame += [g.box_between([x0 + TUBE, y, zs[1] - 2 * TUBE], [x1, y + TUBE, zs[1] - TUBE], "wire").replace(
+        sheet=TUBE_WALL) for y in (y0, y1 - TUBE)]
+    rows = [((x0 + TUBE, x1), (y0 + BASKET_IN, y1 - BASKET_IN),
+             zs[0] + BASKETS_FROM + k * (zs[1] - zs[0] - BASKETS_ROOM) / baskets) for k in range(baskets)]
+    return [pc for pc in pieces if pc.material != "body"] + frame, PULLOUT_EXTENSION * (x1 - x0), rows
+
+
+def carousel(cx: float, cy: float, zs, trays: int, slot: str):
+    """A lazy susan's bearing plates (fixed, in the carcass) and its pole, from the lower to the upper
+    plate. Returns the plates, the pole, the pole's foot z and the trays' z."""
+    plates = [g.cylinder([cx, cy, zs[0]], [cx, cy, zs[0] + BEARING_T], BEARING_R, slot, 24),
+              g.cylinder([cx, cy, zs[1] - BEARING_T], [cx, cy, zs[1]], BEARING_R, slot, 24)]
+    z0, z1 = zs[0] + 2 * BEARING_T, zs[1] - 2 * BEARING_T
+    return plates, pole(cx, cy, z0, z1, slot), z0, [z0 + TRAYS_FROM + k * (z1 - z0 - TRAYS_ROOM) / trays
+                                                   for k in range(trays)]
+
+
+def tilt_front(xs, fys, fzs, ft: float, style: str, handle_style):
+    """A sink base's false front (slab, or shaker for any framed style) that tips out about its bottom
+    edge, a sponge tray behind it. Returns the pieces and the hinge frame (about the outer bottom
+    edge, +Y: the top tips out towards +X)."""
+    xf = xs[1] + GAP
+    pieces, _ = front(xf, xf + ft, fys, fzs, "slab" if style == "slab" else "shaker", "front")
+    s = SPONGE_TRAY
+    y0, y1 = fys[0] + s["inset"], fys[1] - s["inset"]
+    f0, f1 = s["floor"]
+    pieces += [g.box_between([xf - s["back"], y0, fzs[0] + f0], [xf - BOX_FRONT, y1, fzs[0] + f1], "tray"),
+               g.box_between([xf - s["back"], y0, fzs[0] + f1], [xf - s["wall"], y1, fzs[0] + s["lip"]], "tray")]
+    if handle_style:
+        pieces += handle_on(handle_style, min(0.4 * (fys[1] - fys[0]), BAR_HANDLE[1]),
+                            (xf + ft, sum(fys) / 2, fzs[1] - LIFT_HANDLE))
+    return pieces, Frame.at((xf + ft, sum(fys) / 2, fzs[0]), z=(0, 1, 0))
+
+
+def flap(xs, fys, fzs, ft: float, style: str, handle_style):
+    """A lift-up flap hinged at its inner top edge (Blum AVENTOS HK): the bottom swings out and up;
+    hanging closed, its weight keeps it on its rest stop. Returns the pieces and the hinge frame."""
+    xf = xs[1] + GAP
+    pieces, xface = front(xf, xf + ft, fys, fzs, style, "front", glazed=True)
+    if handle_style:
+        pieces += handle_on(handle_style, min(0.5 * (fys[1] - fys[0]), BAR_HANDLE[1]),
+                            (xface, sum(fys) / 2, fzs[0] + LIFT_HANDLE))
+    return pieces, Frame.at((xf, sum(fys) / 2, fzs[1]), z=(0, -1, 0))
+
+
+def plinth(xs, ys, z0: float) -> list[g.Piece]:
+    """Legs behind a kick board clipped on, set back 50 mm (IKEA METOD plinth)."""
+    (y0, y1), (x0, x1) = ys, xs
+    back, fwd, side = PLINTH_LEGS
+    kb0, kb1, end, floor = KICK_BOARD
+    return (legs([x0 + back, x1 - fwd], [y0 + side, y1 - side], z0, "leg", "foot")
+            + [g.box_between([x1 - kb0, y0 + end, 0.0], [x1 - kb1, y1 - end, z0 - floor], "plinth")])
+
+
+def leg_run(xs, ys, z0: float) -> list[g.Piece]:
+    """Visible legs with levellers, one pair per ~60 cm of run."""
+    (y0, y1), (x0, x1) = ys, xs
+    n = max(2, 1 + math.ceil((y1 - y0 - LEG_RUN_END) / LEG_PITCH))
+    at = [y0 + LEG_IN + i * (y1 - y0 - 2 * LEG_IN) / (n - 1) for i in range(n)]
+    return legs([x0 + LEG_IN, x1 - LEG_IN], at, z0, "leg", "foot")
+
+
+def corner_legs(x: float, ys, z0: float) -> list[g.Piece]:
+    """Two legs under a corner box's front ``x`` (its back edge), in from its ends ``ys``."""
+    return legs([x + CORNER_LEG], [ys[0] + CORNER_LEG, ys[1] - CORNER_LEG], z0, "leg", "foot")
+
+
+def sink_hole(xs, ys):
+    """The worktop's cut-out for a sink over a base box ``xs`` x ``ys``."""
+    front_, back, side = SINK_MARGIN
+    return ((xs[0] + front_, xs[1] - back), (ys[0] + side, ys[1] - side))
+
+
+def kitchen_worktop(xs, ys, z0: float, z1: float, hole=None, corner=None) -> list[g.Piece]:
+    """The worktop over a run ``xs`` x ``ys``: overhanging at the front and the ends, cut out for a
+    sink (``hole``), with a corner box's deeper part (``corner``: (y, x) of its inner corner)."""
+    pieces = worktop((xs[0], xs[1] + TOP_OVER), (ys[0] - TOP_END, ys[1] + TOP_END), z0, z1, "top", hole)
+    if corner is not None:  # the corner box's deeper part
+        yc, xc = corner
+        pieces.append(g.box_between([xc, ys[0] - TOP_END, z0], [xs[0], yc, z1], "top", bevel=0.002))
+    return pieces

@@ -8,16 +8,61 @@ wall; architraves 50-90 mm; handles at 0.95-1.05 m with a 60 mm backset (BS EN 1
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY
 
+from .hardware import HandleSize
+
 CASING_T = 0.016  # architrave thickness
 STOP = (0.012, 0.014)  # door stop: protrusion into the opening, depth
 REVEAL = 0.005  # architraves set back from the jamb's inner face
 ROSE = (0.028, 0.008)  # handle rose radius, thickness
+
+
+# -- the door's layout: clearances, heights and fittings (``categories/door.py`` reads these) ---------
+OPENS = math.pi / 2
+GAP = 0.003  # leaf to jambs and head
+FLOOR_GAP = 0.012  # under the leaf
+THRESHOLD = 0.02
+BACKSET = 0.06  # handle axis from the lock edge
+LEVER_TURN = math.pi / 4
+PULL = HandleSize(standoff=0.04, bar_radius=0.012, post_radius=0.0096, inset=0.02)
+
+
+GUIDE = dict(clear=0.003, wall=0.004, height=0.035, length=0.05)  # barn-door floor guide channel
+# barn-door stay roller (m): a 40 mm roller on a 4 mm L bracket 7 cm up the architrave, its arm 8 mm past the roller
+STAY = dict(radius=0.02, height=0.03, clear=0.003, width=0.034, plate=0.004, foot=0.07, arm=0.008)
+# Barn-door hardware (National Hardware, Rustica kits): wheel axles 5 cm over the leaf's top, their wheels
+# 48 mm in front of the architraves, the track 6 cm past the leaf's travel each way; hanger straps 12 cm in
+# from the leaf's edges, from 12 cm under its top; the bar pull 8 cm from the trailing edge, a flush pull
+# (half width, half height, depth) behind it; the leaf covers the architraves 15 mm past their width and
+# slides 3 cm past the opening; a stay roller 15 mm plus half an architrave in from the leaf's edge.
+BARN = dict(axle_above=0.05, wheel_out=0.048, track_past=0.06, strap_in=0.12, strap_below=0.12, pull_in=0.08,
+            flush_pull=(0.025, 0.07, 0.002), trim_past=0.015, travel_past=0.03, stay_in=0.015)
+GUIDE_IN = 0.05  # the guide sits this far inside the leaf's edge at rest
+KICK_HEIGHT = 0.2  # kick plates are 150-300 mm high, 1-1.5 mm stainless (Eurospec, Zoo Hardware listings)
+KICK_T = 0.0015
+KICK_INSET = 0.025  # short of each edge of the leaf
+LETTER_LOW = 0.72  # a letter plate's centre at least this high (BS EN 13724: opening 0.7-1.7 m above the floor)
+LETTER_BELOW = 0.25  # and this far below the handle axis
+LETTER_FLAP_OPENS = 1.4  # the flap swings in to about 80 degrees
+VIEWER_HEIGHT = 1.5  # door viewers are fitted at 1.4-1.6 m (Yale, Brinks fitting instructions)
+VIEWER_SWING = math.pi / 2  # the privacy cover swings a quarter turn aside
+DUTCH_CUT = 1.07  # a Dutch door's halves meet 1.0-1.2 m above the floor, above the lockset (Simpson, JELD-WEN)
+DUTCH_KNOB = 0.12  # the top half's knob this far above the cut
+
+SLIDE_GAP = 0.01  # a sliding leaf's back face in front of the header board
+HEADER = 0.02  # barn-door header board thickness (on the architraves)
+RAIL_CLEAR = 0.0015  # hanger wheels ride this far above the rail (they never touch it at rest)
+# a kick plate stands 0.5 mm off the leaf's face, 10 mm over its bottom edge
+KICK_OFF, KICK_ABOVE = 0.0005, 0.01
+DUTCH_CLEAR = (0.015, 0.06)  # a Dutch door's cut clears a bar pull's end by 15 mm, the handle's top by 6 cm
+DUTCH_KNOB_DEPTH = 0.05  # the top half's fixed knobs stand 5 cm off its faces
 
 
 def frame(x_front: float, depth: float, opening, head: float, jamb: float, casing: float, threshold: float,
@@ -177,10 +222,12 @@ def lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> l
 # 2 hangers with 70-100 mm nylon or steel wheels, leaves overlapping the opening by 50 mm a side
 # (e.g. Rustica, National Hardware).
 
-BOLT = dict(throw=0.013, height=0.018, thickness=0.016, inside=0.025)
-"""A latch bolt: throw beyond the lock edge, height, thickness (x), length inside the leaf at rest."""
-THUMB = dict(rose=0.025, grip=0.034, grip_w=0.009, grip_d=0.016, above=0.16)
-"""Thumb-turn: rose radius, grip length and width and projection, height above the handle axis."""
+BOLT = dict(throw=0.013, height=0.018, thickness=0.016, inside=0.025, slack=0.002)
+"""A latch bolt: throw beyond the lock edge, height, thickness (x), length inside the leaf at rest, slack (how
+far past its throw the handle draws it)."""
+THUMB = dict(rose=0.025, grip=0.034, grip_w=0.009, grip_d=0.016, above=0.16, over_pull=0.02)
+"""Thumb-turn: rose radius, grip length and width and projection, height above the handle axis, and its rose's
+clearance over a bar pull's end."""
 
 
 def _boxes_around(lo, hi, clo, chi) -> list[np.ndarray]:
@@ -332,3 +379,46 @@ def viewer(xs, y: float, z: float) -> tuple[list[g.Piece], list[g.Piece], tuple]
                            bevel=0.0008),
              g.cylinder([x0 - 0.007, y, zp], [xc0, y, zp], 0.004, "handle", 16)]
     return fixed, cover, ((xc1, y, zp), (-1.0, 0.0, 0.0))
+
+
+# -- door fittings ---------------------------------------------------------------------------------
+def kick_plate(xs, ys, zs) -> list[g.Piece]:
+    """A stainless kick plate across the bottom of a leaf's front face (``xs[1]``), ``KICK_INSET`` short of its
+    edges ``ys``, ``KICK_ABOVE`` over its bottom ``zs[0]``."""
+    return [g.box_between([xs[1] + KICK_OFF, ys[0] + KICK_INSET, zs[0] + KICK_ABOVE],
+                          [xs[1] + KICK_OFF + KICK_T, ys[1] - KICK_INSET, zs[0] + KICK_ABOVE + KICK_HEIGHT],
+                          "handle", bevel=0.0006)]
+
+
+def floor_guide(xs, y: float) -> list[g.Piece]:
+    """A barn door's floor guide at ``y``: a U channel screwed to the floor that the bottom edge of a leaf over
+    ``xs`` runs in (its front wall clear of a kick plate)."""
+    c, t, h, ln = GUIDE["clear"], GUIDE["wall"], GUIDE["height"], GUIDE["length"]
+    front = xs[1] + c + KICK_T + KICK_OFF
+    return [g.box_between([xs[0] - c - t, y - ln / 2, 0.0], [xs[1] + c + t, y + ln / 2, t], "handle"),
+            g.box_between([xs[0] - c - t, y - ln / 2, 0.0], [xs[0] - c, y + ln / 2, h], "handle"),
+            g.box_between([front, y - ln / 2, 0.0], [front + t, y + ln / 2, h], "handle")]
+
+
+def stay_roller(xs, x_wall: float, y: float) -> tuple[list[g.Piece], g.Piece, tuple]:
+    """A barn door's stay roller at ``y``: an L bracket (4 mm steel, 7 cm up the architrave's face at
+    ``x_wall``) reaching under the leaf's bottom edge, and a roller on a vertical pin that the leaf's front face
+    (``xs[1]``, a kick plate on it) runs against. Returns the bracket, the roller and its centre."""
+    r, h, clear, w = STAY["radius"], STAY["height"], STAY["clear"], STAY["width"]
+    xr = xs[1] + KICK_T + KICK_OFF + clear + r  # clear of a kick plate
+    xp = xr + r + clear  # the bracket's upright, in front of the roller
+    t = STAY["plate"]
+    z0, z1 = t + clear, t + clear + h  # the roller between the floor plate and the top arm
+    bracket = [
+        g.box_between([x_wall, y - w / 2, 0.0], [x_wall + t, y + w / 2, STAY["foot"]], "handle", bevel=0.001),
+        g.box_between([x_wall, y - w / 2, 0.0], [xp + t, y + w / 2, t], "handle", bevel=0.001),
+        g.box_between([xp, y - w / 2, 0.0], [xp + t, y + w / 2, z1 + clear + t], "handle", bevel=0.001),
+        g.box_between([xr - STAY["arm"], y - w / 2, z1 + clear], [xp + t, y + w / 2, z1 + clear + t],
+                      "handle", bevel=0.001)]
+    return bracket, g.cylinder([xr, y, z0], [xr, y, z1], r, "handle", 32), (xr, y, (z0 + z1) / 2)
+
+
+def flush_pull(x_face: float, y: float, z: float) -> g.Piece:
+    """A flush pull (50 x 140 mm) on a sliding leaf's back face ``x_face``."""
+    w, h, d = BARN["flush_pull"]
+    return g.box_between([x_face - d, y - w, z - h], [x_face, y + w, z + h], "handle", bevel=0.001)

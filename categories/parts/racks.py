@@ -8,6 +8,8 @@ pallet racking and boltless shelving: 60-100 mm uprights, 60-140 mm beams, 0.6-1
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -19,6 +21,68 @@ UPRIGHT_SHEET = 0.002  # upright steel
 BRACE_SHEET = 0.0015
 BEAM_SHEET = 0.0015
 CARTON = 0.004  # corrugated board
+
+
+# -- the storage rack's layout (``categories/storage_rack.py`` reads these) ----------------------------
+GAP = 0.005  # level <-> uprights and stop brackets
+SIDE = 0.03  # goods keep this far from the uprights
+ABOVE_TOP = 0.06  # uprights reach this far above the highest raised level
+HEADROOM = 0.02  # between raised goods or brackets and the level above
+GOODS_LIFT = 0.001  # goods stand this far above the deck
+SHELF_U = 0.04  # boltless shelving / bin rack upright (38-40 mm angle posts)
+SHELF_BEAM = 0.04  # and its beams
+BIN_GAP = 0.004  # between neighbouring bins
+# AkroBins 30220 (4-1/8 in wide): 8 across a 36 in shelf, 11 across a 48 in one; a 60 in bay takes 12-13
+MAX_BINS = 12
+TOTE_W = (0.28, 0.45)  # tote widths across the shelf (see totes)
+CAB_GAP = 0.02  # between drawer cabinets side by side
+CAB_PANEL = 0.012  # a drawer cabinet's top and bottom panels
+DRAWER_GAP = 0.003  # between drawer fronts
+DRAWER_OUT = 0.95  # full-extension slides: a drawer comes out by ~95 % of its depth
+LID_OPEN = 1.9  # a tote lid swings back up to ~110 degrees
+MAX_TOTES = 5  # totes across a level at most
+GOODS_FILL_MIN = 0.75  # goods on a pallet-rack level fill 75-100 % of the height allowed them
+DRAWER_FRONTS = (0.3, 0.075, 10)  # drawer fronts 75-300 mm high (Lista / Vidmar), at most 10 to a cabinet
+CAB_BACK = (0.02, 0.06)  # a drawer cabinet's front 2 cm behind the front beam; it leaves 6 cm of the level
+CAB_DRAWER = (0.01, 0.002)  # its drawers' boxes: 1 cm off its back panel, fronts 2 mm behind its front
+# Totes on a shelf (IKEA SAMLA, Really Useful Box): 6 cm shorter than the shelf is deep, at most 30 cm or
+# 60 % of the clear height tall (room to lift the lid once pulled out), 1 cm in from the bay's ends and
+# 8 mm apart each side; a lid's tip stays 1 cm under the level above (opening at least asin 0.05)
+TOTE_ROW = dict(short=0.06, tall=0.3, fill=0.6, end=0.01, apart=0.008, under=0.01, least=0.05)
+# Bins on a bin rack (AkroBins 30220: 5 in = 127 mm tall): 2 cm under the level above, 5 mm in from the bay's
+# ends, 1 cm in from the shelf's front and back
+BIN_ROW = dict(tall=0.127, under=0.02, end=0.005, edge=0.01)
+# an open tote's label card: 80 x 30 mm, 2 mm thick, 6-9 cm under the rim, on the front wall
+TOTE_LABEL = dict(half_w=0.04, z=(0.09, 0.06), t=0.002)
+
+
+# -- the plate rack's layout (``categories/plate_rack.py`` reads these) -------------------------------
+LIFT = 0.1  # lift of a plate along +Z
+TURN = math.pi / 2  # turn of a plate about its axis (X) either way
+END = 0.03  # rack length beyond the first and last fence
+PAD = 0.006  # rubber pad height under a wood or plastic rack
+WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
+SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
+CADDY_LIFT = 0.2  # a caddy lifts clear of its board
+TIER_GAP = 0.02  # between a lower plate lifted fully and the upper tier's lowest wire
+TRAY_OUT = 0.8  # the drip tray slides out by this fraction of its length
+TRAY_END_WALL = 0.004  # a plastic tray's end wall (the spout hangs on it)
+SPOUT_ABOVE = 0.003  # the spout's bottom just above the tray floor's underside
+BOARD_STAND = 0.002  # mugs, tumblers and caddies stand this far above the side board
+CADDY_APART, CADDY_END = 0.02, 0.01  # caddies 2 cm apart, the last 1 cm from the board's end
+# The side board (a drip board beside the rack): 12 mm thick, 4 mm under the rack's side, two rows of cups
+# (one CUP_PITCH each, 1 cm spare) and caddies along it, 15 mm spare at its end; a wire rack's is a
+# chrome-plated steel drip tray of 0.8 mm sheet
+SIDE_BOARD = dict(t=0.012, under=0.004, spare_y=0.01, spare_x=0.015, sheet=0.0008)
+CUP_ROWS = (0.25, 0.75)  # the two rows of cup pegs across the board
+CUP_START = 0.005  # the first peg this far past half a pitch from the board's end
+# A wire rack's upper tier: its cross wires (3 rail radii under the rails' axis) are its lowest members; its
+# posts stand 12 mm in from the rack's ends, reaching 7 mm into the leg feet; a wood tier's dowel posts are
+# at least 6 mm or 1.5 prong radii
+TIER = dict(cross=3, post_in=0.012, post_into=0.007, dowel=(0.006, 1.5))
+# A wire rack's drip tray: inside the legs' 5.5 mm rubber caps with 4 mm to spare, from 5 mm inside the back
+# legs to 1 cm past the front ones, 1 mm over the floor
+RACK_TRAY = dict(caps=0.0055, clear=0.004, back=0.005, front=0.01, floor=0.001)
 
 
 def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece]:
@@ -320,6 +384,7 @@ def tier_posts(xs, b, r: float, z0: float, z1: float, slot: str = "frame") -> li
 # a moulded drainer tray's swivel spout (Rubbermaid, OXO, simplehuman drainer trays): a 25-30 mm wide trough
 # 40-60 mm long on a round hub through the tray's end wall; it swings 180 degrees to point water at the sink
 SPOUT = dict(length=0.05, width=0.026, h=0.012, hub=0.012, wall=0.002)
+SPOUT_OFF = SPOUT["hub"] + 0.004  # the spout's hub axis beyond the tray's end wall
 
 
 def swivel_spout(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
@@ -419,6 +484,7 @@ CADDY = dict(x=0.11, y=0.13, h=0.14, wall=0.003)
 # a 300 ml mug: 80-85 mm across, 95 mm high, 4 mm stoneware wall (catalogue sizes)
 MUG = dict(r=0.041, h=0.095, wall=0.004)
 PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail
+CUP_LIFT = PEG["h"] + 0.025  # a mug lifts off its peg
 CUP_PITCH = 0.11  # centre to centre along a row of cups (a mug and its handle: 82 + 22 mm)
 
 
@@ -470,3 +536,90 @@ def tumbler(x: float, y: float, z: float, slot: str) -> list[g.Piece]:
     r, h, t, b = TUMBLER["r"], TUMBLER["h"], TUMBLER["wall"], TUMBLER["base"]
     wall = g.shell([(r, 0.0), (0.88 * r, h - b)], t, slot, center=(x, y, z), sections=32)
     return [wall, g.cylinder([x, y, z + h - b], [x, y, z + h], 0.88 * r, slot, 32)]
+
+
+# -- rows of totes and bins on a storage-rack level --------------------------------------------------------
+def tote_row(span, count: int, shelf_depth: float, clear: float):
+    """``count`` totes across a level ``span`` (y) of a shelf ``shelf_depth`` deep with ``clear`` height over
+    its deck: returns their x range, each one's y range and their height (``TOTE_ROW``)."""
+    r = TOTE_ROW
+    d = shelf_depth - r["short"]
+    h = min(r["tall"], r["fill"] * clear)  # totes leave room above the lid to lift it once pulled out
+    cells_ = np.linspace(span[0] + r["end"], span[1] - r["end"], count + 1)
+    return (-d / 2, d / 2), [(cells_[k] + r["apart"], cells_[k + 1] - r["apart"]) for k in range(count)], h
+
+
+def tote_lid_opening(room: float | None, depth: float) -> float:
+    """How far a tote lid ``depth`` deep may swing up under ``room`` of height above the tote (None: no level
+    above, ``LID_OPEN``): its tip stays ``TOTE_ROW["under"]`` under the level above."""
+    if room is None:
+        return LID_OPEN
+    return math.asin(max(TOTE_ROW["least"], min(1.0, (room - LID_T - TOTE_ROW["under"]) / depth)))
+
+
+def bin_row(span, count: int, shelf_depth: float, clear: float):
+    """``count`` bins across a level ``span`` (y) of a shelf ``shelf_depth`` deep with ``clear`` height over its
+    deck, ``BIN_GAP`` apart: returns their x range, each one's y range and their height (``BIN_ROW``)."""
+    r = BIN_ROW
+    D = shelf_depth
+    h = min(r["tall"], clear - r["under"])  # 5 in bins
+    pitch = (span[1] - span[0] - 2 * r["end"]) / count
+    rows = []
+    for k in range(count):
+        y0 = span[0] + r["end"] + k * pitch
+        rows.append((y0 + BIN_GAP / 2, y0 + pitch - BIN_GAP / 2))
+    return (-D / 2 + r["edge"], D / 2 - r["edge"]), rows, h
+
+
+def tote_label(x_front: float, y: float, z_rim: float) -> g.Piece:
+    """An open tote's label card clipped on its front wall (the tote's front at ``x_front``, rim at ``z_rim``)."""
+    c = TOTE_LABEL
+    x = x_front - TOTE_RIM + TOTE_WALL
+    return g.box_between([x, y - c["half_w"], z_rim - c["z"][0]], [x + c["t"], y + c["half_w"], z_rim - c["z"][1]],
+                         "label")
+
+
+# -- plate-rack fittings --------------------------------------------------------------------------------
+def side_board(pieces, xs, plate_r: float, caddies: int, cups: int, wire: bool):
+    """The side board beside a rack of ``pieces`` over ``xs``: beyond the reach of a plate (``plate_r``) slid
+    fully sideways, at the rack's foot, running past the rack's end where ``caddies`` caddies and two rows of
+    ``cups`` need it. Returns its extent (x range, y range, bottom, top) and its piece."""
+    lo = np.array([pc.bounds[0] for pc in pieces]).min(0)
+    hi = np.array([pc.bounds[1] for pc in pieces]).max(0)
+    y0 = max(hi[1], plate_r + PLATE_SLIDE + SIDE_GAP)
+    sb = SIDE_BOARD
+    need = caddies * (CADDY["x"] + CADDY_APART) + math.ceil(cups / 2) * CUP_PITCH + sb["spare_x"]
+    board = ((xs[0], max(xs[1], xs[0] + need)), (y0, y0 + 2 * CUP_PITCH + sb["spare_y"]), lo[2], lo[2] + sb["t"])
+    side = g.box_between([xs[0], hi[1] - sb["under"], lo[2]], [board[0][1], board[1][1], board[3]], "frame",
+                         bevel=0.002)
+    return board, side.replace(sheet=sb["sheet"]) if wire else side
+
+
+def cup_spots(board, count: int):
+    """Where the pegs of ``count`` cups stand on a side ``board``: two rows along it. Returns the (x, y) of
+    each and the board's top."""
+    (x0, x1), (y0, y1), _, z = board
+    rows = (y0 + CUP_ROWS[0] * (y1 - y0), y0 + CUP_ROWS[1] * (y1 - y0))
+    start = x0 + CUP_PITCH / 2 + CUP_START
+    per_row = math.ceil(count / 2)
+    return [(start + i * CUP_PITCH, y) for y in rows for i in range(per_row)], z
+
+
+def wire_tier(pieces, zs: float, top: float, xs, b: float, rp: float):
+    """A wire rack's upper tier: its ``pieces`` (rails at ``zs``) without their leg caps, raised so its cross
+    wires are at ``top``, and the posts from the lower tier's rails to its legs. Returns the pieces, the posts
+    and the rise."""
+    dz = top - (zs - TIER["cross"] * rp)
+    pieces = [pc for pc in pieces if pc.material != "feet"]
+    posts = tier_posts((xs[0] + TIER["post_in"], xs[1] - TIER["post_in"]), b, rp, zs - rp,
+                       dz + TIER["post_into"])  # rail axis to leg foot
+    return pieces, posts, dz
+
+
+def rack_drip_tray(xs, b: float):
+    """A wire rack's drip tray between its legs (at +-``b``), under the cross wires: returns its x range and
+    pieces."""
+    t = RACK_TRAY
+    y = b - t["caps"] - t["clear"]  # inside the legs' 5.5 mm rubber caps
+    x0, x1 = xs[0] + t["back"], xs[1] + t["front"]
+    return (x0, x1), drip_tray(x0, x1, -y, y, t["floor"], DRIP_TRAY["h"], "tray")

@@ -8,6 +8,8 @@ vitreous china walls 10-16 mm (EN 997; manufacturers' dimension sheets: Ideal St
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -17,6 +19,35 @@ CLEAR = 0.0025  # a button in its hole
 GAP = 0.003
 CISTERN_WALL = 0.012
 LID = dict(overhang=0.008, lip=0.015, lip_t=0.008)  # cistern lid overhang, locating lip depth, thickness
+
+
+# -- the toilet's layout (``categories/toilet.py`` reads these) -------------------------------------
+LID_LIFT = 0.2  # the cistern lid lifts 0..0.2 m
+PRESS = 0.006  # flush button travel
+LEVER_TURN = math.pi / 4
+TAB = 0.035  # the seat's rear tab, from the rim's back to the hinge line
+FLUSH_BELOW = 0.06  # the flush control sits this far below the cistern's top
+
+
+def DUAL_Y(rb: float) -> tuple[float, float]:  # noqa: N802
+    """The y of a dual flush's small and large buttons on the cistern front (their rings 4 mm apart)."""
+    d = rb + CLEAR + 0.008 + 0.002
+    return (-d, d)
+
+
+SHEET = 0.006  # a boxed frame's and a unit's boards count as shells this thick (hollow, for the mass)
+# Proportions of the bowl and its neighbours (Ideal Standard / Roca / Duravit dimension sheets): the seat's
+# rear tab is 34 % of the bowl's half width; a close-coupled deck reaches 2 cm into the cistern's foot and
+# 75 % of the bowl's half length forward, as wide as 75 % of the cistern or 1.3 times the bowl's half width;
+# a one-piece skirt 85 % of the cistern or 1.5 times the half width, a back-to-wall skirt 1.3 times; the seat
+# 2 mm past the rim, the cover 4 mm past the seat, their tabs from 3 cm inside the rim; a flush plate's top
+# 2.5 cm + 13 cm under a unit's top, 16 cm under a frame's.
+TOILET = dict(tab=0.34, deck=(0.02, 0.75, 0.75, 1.3), one_piece=(0.85, 1.5), back_to_wall=1.3,
+              seat=(0.002, 0.004, 0.03), unit_plate=(0.025, 0.13), frame_plate=0.16)
+BUTTON_BEHIND = 0.004  # a cistern button's body reaches this far behind the cistern's wall
+BUTTON_PROUD = 0.0125  # its slide starts this far in front of the cistern's face
+# a flush lever's rose: 20 mm radius, 6 mm thick on the cistern's side wall, 12 mm behind the grip's reach
+LEVER_ROSE = dict(radius=0.02, thickness=0.006, behind=0.012)
 
 
 def oval(piece: g.Piece, cx: float, sx: float) -> g.Piece:
@@ -213,3 +244,10 @@ def flush_plate(x_face: float, z: float) -> tuple[list[g.Piece], list[tuple[str,
         keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR], [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR],
                                           "chrome", bevel=0.0015)]))
     return plate, keys
+
+
+def lever_rose(xa: float, y_wall: float, z: float) -> tuple[g.Piece, float]:
+    """A flush lever's rose on a cistern's -y side wall ``y_wall`` at (``xa``, ``z``); returns it and the y of
+    the lever's inner face (off the rose)."""
+    r, t = LEVER_ROSE["radius"], LEVER_ROSE["thickness"]
+    return g.cylinder([xa, y_wall, z], [xa, y_wall - t, z], r, "chrome", 32), y_wall - t - GAP

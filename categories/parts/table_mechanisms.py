@@ -15,8 +15,10 @@ import math
 import numpy as np
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 
+from . import hardware, panels
 from . import tables as T
 
 SLEEVE_R, INNER_R, ROD_R = 0.016, 0.0125, 0.0075  # lift strut stages (outer radius of each)
@@ -163,4 +165,89 @@ def apron_rails_ends(length: float, width: float, leg_w: float, z0: float, z1: f
         out.append(g.box_between([-xb, y0, z0], [xb, y1, z1], material))
         x0, x1 = sorted((s * length / 2, s * (length / 2 - board)))
         out.append(g.panel([x0, -ye, z0], [x1, ye, z1], material, "x", holes=holes.get(s, [])))
+    return out
+
+
+def apron_loper(x0: float, y_face: float, side: int, za0: float, za1: float, length: float, material: str
+                ) -> tuple[list[g.Piece], Frame]:
+    """A :func:`loper` in an apron board from ``za0`` to ``za1``: 1 cm over its bottom edge, 6 mm under its top
+    (the top's underside)."""
+    return loper(x0, y_face, side, za0 + 0.01, za1 - 0.006, length, material)
+
+
+# -- apron drawers ---------------------------------------------------------------------------------
+def apron_drawer(w: float, h: float, depth: float, board: float, wall: float, face: Frame, handle: str,
+                 sizes: dict, sheet: float | None = None) -> Assembly:
+    """A drawer in an apron opening: a box whose front is ``w`` x ``h`` (boards ``board``, box walls ``wall``),
+    attached by its ``slide`` anchor to ``face``, with a handle on the front: a ``"knob"`` (radius at most
+    ``sizes["knob"][0]``, 30 % of the front's height, ``sizes["knob"][1]`` proud), else a pull of
+    :data:`~categories.parts.hardware.HANDLES` (``"bar"``, ``"bow"``) at most ``sizes["bar"]`` long (half
+    the front's width). ``sheet``: a steel drawer's folded-sheet thickness (None: boards)."""
+    box = panels.drawer_box(w, h, depth, board, wall, "frame")
+    if sheet is not None:  # a steel drawer is folded sheet, not steel boards
+        part = box.parts[box.root]
+        box = Assembly.single(part.label, [pc.replace(sheet=sheet) for pc in part.pieces],
+                              box.anchors, box.supports, name=box.root)
+    box = box.attached("slide", to=face)
+    r, d = sizes["knob"]
+    pull = hardware.knob_handle(min(r, 0.3 * h), d, "handle") if handle == "knob" else \
+        hardware.HANDLES[handle](min(sizes["bar"], 0.5 * w), "handle")
+    pull = pull.attached("mount", to=box.anchor("handle"))
+    return box.with_pieces(box.root, pull.parts[pull.root].pieces)
+
+
+def drawer_openings(span: float, per: int, z0: float, z1: float, margin: float, stile: float, widest: float
+                    ) -> list[tuple[float, float, float, float]]:
+    """``per`` drawer openings ((y0, z0, y1, z1)) in a board ``span`` long between ``z0`` and ``z1``: one bay
+    per drawer, each opening at most ``widest`` wide and ``stile`` narrower than its bay, centred in it,
+    ``margin`` of board above and below."""
+    dw = span / per
+    w = min(dw - stile, widest)
+    return [(-span / 2 + (k + 0.5) * dw - w / 2, z0 + margin, -span / 2 + (k + 0.5) * dw + w / 2, z1 - margin)
+            for k in range(per)]
+
+
+# -- a nest of tables ------------------------------------------------------------------------------
+def nest_frame(width: float, z_top: float, sizes: dict, material: str) -> tuple[list[g.Piece], float]:
+    """The outer table of a nest, ``width`` square, its top's underside at ``z_top``: four square legs
+    ``sizes["leg_in"]`` in from the edges and a rail under each side along x (the nested tables slide out
+    along x between them). Returns its pieces and the clear span between legs and rails along y."""
+    r = sizes["leg"] + sizes["leg_room"]
+    a = width / 2 - r - sizes["leg_in"]
+    t, h = sizes["rail"]
+    legs = [g.box_between([sx * a - r, sy * a - r, 0.0], [sx * a + r, sy * a + r, z_top], material, bevel=0.002)
+            for sx in (-1, 1) for sy in (-1, 1)]
+    rails = [g.box_between([-a + r, sy * a - t, z_top - h], [a - r, sy * a + t, z_top], material) for sy in (-1, 1)]
+    return legs + rails, 2 * (a - r) - 2 * t
+
+
+# -- dining-table fittings -------------------------------------------------------------------------
+def leveller(at: Frame, leg_w: float, height: float, sizes: dict) -> list[g.Piece]:
+    """A levelling foot ``height`` tall under a leg ``leg_w`` wide at ``at``: a glide disc (``sizes["glide"]``:
+    radius at most, fraction of the leg, height) on a threaded stem (``sizes["stem"]`` radius)."""
+    r_max, share, disc = sizes["glide"]
+    r = min(r_max, share * leg_w)
+    return [g.cylinder(at.point((0, 0, 0)), at.point((0, 0, disc)), r, "foot", 24),
+            g.cylinder(at.point((0, 0, disc)), at.point((0, 0, height)), sizes["stem"], "metal", 12)]
+
+
+def lazy_susan(radius: float, z: float, bearing: float, thickness: float, ring: str, top: str
+               ) -> tuple[g.Piece, g.Piece, float]:
+    """A turntable of ``radius`` on a ball-bearing ring ``bearing`` high (40 % of its radius) standing on a top
+    at ``z``; returns the ring, the turntable (rounded 4 mm at its rim) and the turntable's underside."""
+    ring_piece = g.cylinder([0, 0, z], [0, 0, z + bearing], 0.4 * radius, ring, 48)
+    z0 = z + bearing + 0.001
+    r, t = radius, thickness
+    table = g.revolve([(0.0, z0), (r - 0.004, z0), (r, z0 + 0.004), (r, z0 + t - 0.004), (r - 0.004, z0 + t),
+                       (0.0, z0 + t)], top, sections=96)
+    return ring_piece, table, z0
+
+
+def bearer_frame(xb: float, yb: float, z0: float, z1: float, rails: tuple[float, float], material: str
+                 ) -> list[g.Piece]:
+    """A draw-leaf table's bearer frame under a fixed top: two side rails (``rails[0]`` wide) ``xb`` along x
+    each side of the centre just inside ``|y| = yb``, and a cross rail (``2 * rails[1]`` wide) between them."""
+    side, cross = rails
+    out = [g.box_between((-xb, y0, z0), (xb, y1, z1), material) for y0, y1 in ((-yb, -yb + side), (yb - side, yb))]
+    out.append(g.box_between((-cross, -yb + side, z0), (cross, yb - side, z1), material))
     return out

@@ -253,6 +253,12 @@ def column_tube(outer_r: float, z0: float, z1: float, material: str) -> list[g.P
                     convex_sectors=24)]
 
 
+def column_and_plate(radius: float, z0: float, z_under: float, plate_r: float, material: str) -> list[g.Piece]:
+    """A column from ``z0`` up to a 12 mm mounting plate (``plate_r``) under a top at ``z_under``."""
+    return [g.cylinder([0, 0, z0], [0, 0, z_under - 0.012], radius, material, 48),
+            g.cylinder([0, 0, z_under - 0.012], [0, 0, z_under], plate_r, material, 48)]
+
+
 # -- dining-table pedestals --------------------------------------------------------------------------------
 TRESTLE_LENGTH = 1.9  # tables longer than this stand on two columns (trestle style)
 

@@ -25,6 +25,48 @@ RISER_R = 0.016  # valve riser radius
 RISER_H = 0.018
 
 
+# -- the tap's layout (``categories/tap.py`` reads these) ----------------------------------------------
+LEVER_SWIVEL = math.pi / 2
+HANDLE_TURN = math.pi / 4
+CAP = 0.95  # a lever cap's radius as a fraction of its column's
+SPOUT_OVER = 0.035  # an outlet stays this far above whatever it sweeps over
+MIXER_H = 0.035  # a side mixer column's height
+RISER = 0.004  # a spout riser is this much wider than the spout tube
+FLARE = 1.25  # column feet flare to this fraction of their radius
+
+
+WALL_SWIVEL = 5 * math.pi / 12  # a wall mixer's spout swings +-75 degrees, clear of the wall
+WALL_X = -0.065  # the wall plane behind a wall mixer's axis (S-unions: 40-70 mm projection)
+BRIDGE_H = 0.05  # bridge mixer risers: height of the bridge pipe's axis above the deck
+COLLAR = 0.014  # a collar spout's collar is this much taller than the spout tube's diameter
+# Deck tap layout (m, or ratios), after the dimension sheets of Grohe / Hansgrohe mixers
+LAYOUT = dict(
+    spout_max=0.6,  # a spout tube's radius: at most this share of the body column's
+    mixer_room=0.045,  # a side mixer stands this far beyond the spout riser and its own cap (the lever's swing)
+    lever_clear=0.015,  # the side mixer's lever stops this far short of the spout riser
+    valve_room=0.02,  # valve risers stand at least this far beyond the body column and their own width
+    valve_reach=0.045, valve_clear=0.012,  # a valve handle's reach: at most, and short of the body or riser
+    bridge_bar=0.75,  # a bridge pipe's radius as a share of the valve risers'
+    bridge_riser=0.012,  # a bridge mixer's spout riser rises this far above the bridge pipe's axis
+    riser=(0.03, 0.2),  # a spout riser: at least 3 cm, or a fifth of the tap's height over the deck
+    head=(1.6, 0.015, 0.06),  # a pull-out head's radius (x the tube's, at least), and its hose over the outlet
+    head_reach=0.05,  # a pull-out spout reaches this much further (its head)
+    spout_rise=(0.06, 0.1),  # a top spout rises at least this far above its outlet and above its riser
+    riser_flare=1.5,  # a spout riser's foot flare
+    lever_collar=(0.55, 0.012),  # a lever tap's spout collar: at this share of the column, this far under its cap
+    collar_over=0.065,  # a two-handle tap's collar: this far (plus the tube) above its valve handles
+    column_over=0.03,  # and the column this far above the collar
+)
+# deck plates: the columns' flared feet stand 8 mm inside the plate's edge; a single-column plate is at most
+# 12 cm, every plate 40 % as deep as it is wide, at most 9 cm, and its feet 8 mm inside it front and back
+DECK = dict(edge=0.008, single_max=0.12, depth=0.4, most_deep=0.09)
+# a wall mixer (EN 200: 150 mm centres): its bar's axis 75 mm up (the plate's bottom edge 1 cm off the floor
+# of the local frame), at least 20 mm radius; the cartridge column 6 mm over the bar; a stub 14 mm under the
+# spout's collar with a 1 cm flange 1.3 times the column's radius; the spout's foot 9 cm under its collar
+WALL_MIXER = dict(z=0.075, bar_min=0.02, column_over=0.006, stub=0.014, flange=(0.01, 1.3))
+WALL_SPOUT_FOOT = 0.09
+
+
 def _hull(points, material: str, name: str = "") -> g.Piece:
     v, f = g.hull_arrays(np.asarray(points, float))
     return g.Piece(v, f, material, [v], name)
@@ -252,3 +294,33 @@ def diverter_knob(y: float, z_top: float) -> tuple[list[g.Piece], Frame]:
     pieces = [g.cylinder([0, y, z0], [0, y, z0 + 0.4 * h], 0.45 * r, "metal", 20),
               g.cylinder([0, y, z0 + 0.4 * h], [0, y, z0 + h], r, "metal", 24)]
     return pieces, Frame.at((0.0, y, z0), z=(0, 0, 1), x=(1, 0, 0))
+
+
+def deck_size(base_width: float, d: float, rb: float, r_side: float) -> tuple[float, float]:
+    """The deck plate's width and depth for a body column ``rb`` and, ``d`` off the axis on either side (0:
+    none), columns ``r_side``: at least ``base_width`` (a single column's: at most 12 cm), wide enough for
+    the columns' flared feet."""
+    e = DECK["edge"]
+    need = 2 * (d + r_side * FLARE + e) if d else 2 * (FLARE * rb + e)
+    width = max(base_width, need) if d else max(need, min(base_width, DECK["single_max"]))
+    depth = float(np.clip(DECK["depth"] * width, 2 * FLARE * max(rb, RISER_R) + 2 * e, DECK["most_deep"]))
+    return width, depth
+
+
+def wall_mixer(length: float, rb: float, rs: float) -> tuple[list[g.Piece], tuple]:
+    """A wall mixer's fixed body: the bar (:func:`wall_body`) on the wall ``WALL_X``, a cartridge column up
+    from it (with its lever cap) and a stub down into the spout's collar. Returns the pieces and (bar axis z,
+    bar radius, the column's top, the spout collar's centre z, the collar's height)."""
+    w = WALL_MIXER
+    r_bar = max(rb, w["bar_min"])
+    hc = 2 * rs + COLLAR
+    z = w["z"]  # the bar's axis: the plate's bottom edge at z = 0.01
+    z_cm = z - r_bar - GAP - hc / 2
+    stub0 = z_cm - hc / 2 - w["stub"]
+    z_top = z + r_bar + w["column_over"]  # the cartridge column's top
+    flange_h, flange_r = w["flange"]
+    pieces = wall_body(length, r_bar, z, WALL_X)
+    pieces += [column((0.0, 0.0), z, z_top, rb, flare=1.0), lever_cap((0.0, 0.0), z_top, CAP * rb),
+               g.cylinder([0, 0, stub0], [0, 0, z], rb, "metal", 32),
+               g.cylinder([0, 0, stub0], [0, 0, stub0 + flange_h], flange_r * rb, "metal", 32)]
+    return pieces, (z, r_bar, z_top, z_cm, hc)

@@ -25,6 +25,42 @@ PULL = 0.007  # sliding: finger pull depth on a back-track sash (fits in TRACK_G
 
 
 
+# -- the window's layout: frame proportions, locks, vents (``categories/window.py`` reads these) --------
+LOCK = dict(base=(0.064, 0.012), lever=(0.05, 0.012, 0.006), hub=0.009, gap=0.001)
+"""Cam sash lock (m): base length along the rail and height, lever (length, width, thickness), hub radius, gap
+between base and lever. Double-hung sashes carry one cam lock, two on units wider than about 36 in (0.9 m)
+(Andersen 400 / Marvin / Pella double-hung hardware: 60-75 mm bases, the lever turning a quarter to a half turn
+in the rail's plane)."""
+LOCKS_FROM = 0.9
+LEVER_TURN = np.pi / 2  # an espagnolette lever's quarter turn (Hoppe, Roto: 90 degrees to open)
+VENT = dict(length=0.3, height=0.02, depth=0.012, wall=0.002, slide=0.08, stroke=0.035)
+CLR_VENT = 0.0015  # the vent's slide in its housing
+
+
+TRANSOM_FROM = 1.1  # frames taller than this may have a transom light
+SILL_EAR = 0.03  # the sill reaches this far past the frame on each side
+BOTTOM_RAIL = 1.25  # the bottom rail is this much wider than the jambs
+
+
+SIZES = {"tilt_turn": dict(width=(0.6, 1.6), height=(0.6, 2.4)), "awning": dict(width=(0.6, 2.5), height=(0.4, 1.0)),
+         "double_hung": dict(width=(0.6, 1.2), height=(0.9, 2.0))}
+"""Frame sizes of the designs that come in a narrower range (manufacturers' size tables: Roto, Velfac,
+Andersen 400 series): a wider or taller draw is brought into it."""
+
+
+MIN_SASH = 0.25
+"""m: the narrowest sash a frame is divided into. The automatic count (opening / sash_width >= 0.4 m,
+rounded) never goes below 0.26 m; the narrowest stock casements are ~0.4 m overall (Andersen 400 series
+size tables). Fuzz draw 51 (sash_count 4 in a 0.6 m tilt-and-turn frame) made 6 cm sashes narrower than their
+two stiles, whose turns jammed at 0.8 rad."""
+JAMB_MAX = 0.12  # the jambs' and head's face width: at most this share of the frame's width and height
+MULLION_MAX = 0.1  # a mullion: at most this share of the opening
+MOST_SASHES = 4  # the automatic sash count: at most four
+SILL_DRIP = 0.012  # an exterior sill's drip edge: 12 mm square under its outer edge
+# an espagnolette lever's free spindle: 1.5 mm off the rose's face (the spindle was sunk 2 mm into it), 5.5 mm
+SPINDLE = (0.0035, 0.0055)
+
+
 def sash(y0, y1, z0, z1, x0, x1, sw, p) -> list[g.Piece]:
     """A glazed sash: a frame of stiles and rails, a pane, optional glazing bars."""
     sw = min(sw, 0.22 * (y1 - y0), 0.22 * (z1 - z0))
@@ -477,3 +513,58 @@ def double_hung(frame, light, p, dims, transom, middle):
                                           role="slide")),
             ("sash_1", upper, J.revolute("frame", "sash_1", (xb[1], (ya + yb) / 2, zm - ov / 2), (0, 1, 0), 0.0,
                                          UPPER_TILT, role="hinge"))], xf[1] + 0.05
+
+
+# -- window fittings -------------------------------------------------------------------------------
+def sill(width: float, frame_depth: float, sill_depth: float, z0: float) -> list[g.Piece]:
+    """An exterior sill slab under a frame (its top at ``z0``), ``sill_depth`` out from the frame's outer face and
+    ``SILL_EAR`` past it each side, with a drip edge under its outer edge."""
+    W, fd, sd = width, frame_depth, sill_depth
+    x0, y0, y1 = -fd / 2 - sd, -W / 2 - SILL_EAR, W / 2 + SILL_EAR
+    return [g.box_between([x0, y0, 0.0], [fd / 2, y1, z0], "frame", bevel=0.003),
+            g.box_between([x0, y0, -SILL_DRIP], [-fd / 2 - sd + SILL_DRIP, y1, 0.0], "frame")]  # drip edge
+
+
+def sash_lock(xs, y: float, z: float) -> tuple[list[g.Piece], list[g.Piece], tuple]:
+    """A cam sash lock (``LOCK``) on a meeting rail over ``xs`` whose top is at ``z``, centred at ``y``: its base
+    screwed to the rail's top and its lever (hub and arm) lying along +y. Returns the base, the lever and the
+    lever's pivot."""
+    bl, bh = LOCK["base"]
+    ll, lw, lt = LOCK["lever"]
+    xc = (xs[0] + xs[1]) / 2
+    base = [g.box_between([xs[0] + 0.002, y - bl / 2, z], [xs[1], y + bl / 2, z + bh], "handle", bevel=0.002)]
+    z0 = z + bh + LOCK["gap"]
+    lever_ = [g.cylinder([xc, y, z0], [xc, y, z0 + lt + 0.002], LOCK["hub"], "handle", 24),
+              g.box_between([xc - lw / 2, y, z0], [xc + lw / 2, y + ll, z0 + lt], "handle", bevel=0.002)]
+    return base, lever_, (xc, y, z0)
+
+
+def free_spindle(spindle: g.Piece) -> tuple[g.Piece, tuple]:
+    """An espagnolette lever's spindle (``spindle``, as sunk into its rose) shortened to turn free of the rose;
+    returns it and its axis's start."""
+    b = spindle.bounds
+    y, z = (b[0][1:] + b[1][1:]) / 2
+    x0 = float(b[0][0]) + SPINDLE[0]
+    return g.cylinder([x0, y, z], [float(b[1][0]), y, z], SPINDLE[1], "handle", 16, name="handle"), (x0, y, z)
+
+
+def trickle_vent(span, x: float, z: float, h: float) -> tuple[list[g.Piece], g.Piece, tuple, float]:
+    """A trickle vent (``VENT``) on a head's room face ``x``, over the sash spanning ``span`` in y, centred at
+    height ``z`` in a head ``h`` high: a housing with a slot and a shutter slide that covers or opens it.
+    Returns the housing, the slide, the slide's start and its travel."""
+    ln = min(VENT["length"], 0.8 * (span[1] - span[0]))
+    yc = (span[0] + span[1]) / 2
+    hh = min(VENT["height"], 0.8 * h)
+    d, t = VENT["depth"], VENT["wall"]
+    y0, y1 = yc - ln / 2, yc + ln / 2
+    housing = [
+        g.box_between([x, y0, z - hh / 2], [x + d, y1, z - hh / 2 + t], "handle"),  # floor of the track
+        g.box_between([x, y0, z + hh / 2 - t], [x + d, y1, z + hh / 2], "handle"),  # roof
+        g.box_between([x, y0 - t, z - hh / 2], [x + d, y0, z + hh / 2], "handle"),  # end caps
+        g.box_between([x, y1, z - hh / 2], [x + d, y1 + t, z + hh / 2], "handle")]
+    sw = min(VENT["slide"], 0.45 * ln)
+    travel = min(VENT["stroke"], ln - sw - 2 * CLR_VENT)
+    ys = y0 + CLR_VENT
+    slide = g.box_between([x + 0.002, ys, z - hh / 2 + t + CLR_VENT],
+                          [x + d - 0.001, ys + sw, z + hh / 2 - t - CLR_VENT], "handle", bevel=0.0008)
+    return housing, slide, (x + d / 2, ys, z), travel
