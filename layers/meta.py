@@ -45,8 +45,9 @@ def _clean(x):
 # label); IN = github.com/Molrn/animal-image-ontology, Data/KaggleChallenge/synset_mapping.json (ImageNet
 # class -> WordNet 3.1 synset -> Wikidata id and label); OEWN = github.com/globalwordnet/english-wordnet,
 # src/yaml/noun.artifact.yaml (the synset's `wikidata:`, kept in sync with Wikidata; also its hypernyms).
-# Where no item of the category itself could be verified, the nearest verified broader one (SimReady's
-# `qcode` is "the asset's general category"), and the comment says so.
+# Where no item of the category itself could be verified, the nearest verified one, broader where possible
+# (SimReady's `qcode` is "the asset's general category"), and the comment says so. Every category has one
+# (tests/test_simready.py); the zoo of the tests, no category, has none.
 WIKIDATA: dict[str, tuple[str, str]] = {
     "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
     "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
@@ -102,7 +103,7 @@ def date_generated() -> str:
 
 def simready_metadata(obj, bounds) -> dict:
     """SimReady provenance metadata (``SimReady_Metadata`` in the USD root layer, SR.004): author, asset name,
-    type, licence, category, source, date, Wikidata Q-code (when verified), rigid-body count, extents (m) and
+    type, licence, category, source, date, Wikidata Q-code (:data:`WIKIDATA`), rigid-body count, extents (m) and
     mass (kg). ``bounds`` is the ``(2, 3)`` world bounds of the visual meshes."""
     lo, hi = (np.asarray(b, float) for b in bounds)
     meta = {
