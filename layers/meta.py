@@ -39,9 +39,15 @@ def _clean(x):
 # Wikidata item of each category and where it was verified: the item's Wikidata label (and description)
 # as exported into a public file. COCO = github.com/datable-be/AI4C_ContentAnalysis, COCO_2_WIKIDATA
 # (wikidata_concepturi, label, description per COCO class); VU = github.com/HeardLibrary/vandycite,
-# gallery_buchanan/classification/wikidata.gml (wikidata_label, wikidata_id). A category missing here has
-# no verified Q-code (tv, tap, dishwasher, storage_rack, plate_rack, pot, pan): its SimReady metadata
-# leaves `qcode` out, and SR.004 fails for it.
+# gallery_buchanan/classification/wikidata.gml (wikidata_label, wikidata_id); WN = github.com/
+# teamprosperlink/Singletap-backend, canonicalization/static_dicts/wordnet_wikidata_map.json (a Wikidata SPARQL
+# export: every item with a "WordNet 3.1 Synset ID" (P8814), keyed by that synset, with the item's English
+# label); IN = github.com/Molrn/animal-image-ontology, Data/KaggleChallenge/synset_mapping.json (ImageNet
+# class -> WordNet 3.1 synset -> Wikidata id and label); OEWN = github.com/globalwordnet/english-wordnet,
+# src/yaml/noun.artifact.yaml (the synset's `wikidata:`, kept in sync with Wikidata; also its hypernyms).
+# Where no item of the category itself could be verified, the nearest verified one, broader where possible
+# (SimReady's `qcode` is "the asset's general category"), and the comment says so. Every category has one
+# (tests/test_simready.py); the zoo of the tests, no category, has none.
 WIKIDATA: dict[str, tuple[str, str]] = {
     "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
     "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
@@ -60,6 +66,21 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "jar": ("Q1207302", "http://www.wikidata.org/entity/Q1207302 'jar' (VU)"),
     "lamp": ("Q1138737", "http://www.wikidata.org/entity/Q1138737 'lamp' (VU)"),
     "kitchen_cabinet": ("Q2741056", "http://www.wikidata.org/entity/Q2741056 'cabinet' (VU)"),
+    "dishwasher": ("Q186263", "http://www.wikidata.org/entity/Q186263 'dishwasher' (WN 03212662-n"
+                              " 'a machine for washing dishes'; IN; OEWN)"),
+    "pan": ("Q127666", "http://www.wikidata.org/entity/Q127666 'frying pan' (WN 03405146-n 'frying pan,"
+                       " frypan, skillet'; IN)"),
+    "tap": ("Q656656", "http://www.wikidata.org/entity/Q656656 'tap' (WN 03330033-n 'faucet, spigot' and"
+                       " 04334820-n 'stopcock')"),
+    "pot": ("Q15711817", "http://www.wikidata.org/entity/Q15711817 'stock pot' (WN 04146060-n 'saucepan' and"
+                         " 04331435-n 'stockpot'; no verified item for cooking pot itself)"),
+    "storage_rack": ("Q45242859", "http://www.wikidata.org/entity/Q45242859 'shelf' (WN 04197095-n; no"
+                                  " verified item for shelving unit or pallet rack, which are built of shelves)"),
+    "plate_rack": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU;"
+                               " no verified item for dish rack or plate rack)"),
+    "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
+                        " verified item for television set: OEWN's chain television receiver > receiver >"
+                        " set > electronic equipment > equipment has no nearer item)"),
 }
 
 LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released
@@ -82,7 +103,7 @@ def date_generated() -> str:
 
 def simready_metadata(obj, bounds) -> dict:
     """SimReady provenance metadata (``SimReady_Metadata`` in the USD root layer, SR.004): author, asset name,
-    type, licence, category, source, date, Wikidata Q-code (when verified), rigid-body count, extents (m) and
+    type, licence, category, source, date, Wikidata Q-code (:data:`WIKIDATA`), rigid-body count, extents (m) and
     mass (kg). ``bounds`` is the ``(2, 3)`` world bounds of the visual meshes."""
     lo, hi = (np.asarray(b, float) for b in bounds)
     meta = {
