@@ -260,7 +260,7 @@ class TableLayout(Layout):
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
         over, plate, past = C["caster_plate"]
         z_leg = c.stem_top + over + plate if c else 0.0  # legs on a caster's top plate
-        style = "square" if p["leg_style"] in ("turned", "hairpin") or c else p["leg_style"]
+        style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
         legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames
                 for pc in self._leg(style, lw / 2, za1 - z_leg)]
         if c:
