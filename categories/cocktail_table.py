@@ -185,7 +185,7 @@ class TableLayout(Layout):
         za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
-            body = apron + [pc.transformed(f.matrix) for f in frames for pc in T.leg(p["leg_style"], rl, za1, "frame")]
+            body = apron + [pc for f in frames for pc in T.leg_part(p["leg_style"], rl, za1, "frame").mounted(f).pieces]
             self.add("body", "body", body)
             if node.one("shelf"):
                 self.grow(node.one("shelf"), inset=inset, r_leg=0.8 * rl, z=min(p["shelf_height"] * H, za0 - 0.06))
@@ -277,8 +277,7 @@ class TableLayout(Layout):
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
         z_leg = c.stem_top + 0.001 + 0.008 if c else 0.0  # legs on a caster's top plate
         style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
-        legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames for pc in T.leg(style, lw / 2, za1 - z_leg,
-                                                                                          "frame")]
+        legs = [pc for f in frames for pc in T.leg_part(style, lw / 2, za1 - z_leg, "frame").mounted(f.moved(dz=z_leg)).pieces]
         if c:
             legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
                                    f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]
@@ -352,7 +351,7 @@ class TableLayout(Layout):
         """A swivel caster under a leg: the fork turns about z, its wheels about their axle."""
         f = self.place(S.fork(caster).placed(tip), f"caster_{i}")
         self.spin("body", f.root, f.anchor("swivel"), role="swivel")
-        self.grow(node.one(node.choice), fork=f, wheels=[w.placed(tip) for w in S.wheels(caster)], i=i)
+        self.grow(node.one(node.choice), fork=f, wheels=[w.mounted(tip) for w in S.wheels(caster)], i=i)
 
     def twin(self, node, fork, wheels, i):
         for k, w in enumerate(wheels):

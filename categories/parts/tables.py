@@ -13,7 +13,8 @@ import math
 import numpy as np
 
 from infmob_usd import geometry as g
-from infmob_usd.frames import Frame, polar
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import IDENTITY, Frame, polar
 
 BOARD = 0.018  # apron and shelf board
 WALL = 0.003  # metal tube wall
@@ -96,6 +97,13 @@ def leg(style: str, radius: float, height: float, material: str, kind: str = "co
     prof.append((0.0, height - block))
     return [g.revolve(prof, material, sections=48),
             g.box_between([-r, -r, height - block - 0.001], [r, r, height], material)]
+
+
+def leg_part(style: str, radius: float, height: float, material: str, kind: str = "coffee") -> Assembly:
+    """:func:`leg` as a part a library may replace: anchor ``foot`` (the origin); supports ``foot`` on the
+    floor and ``top`` under what it carries."""
+    return Assembly.single("leg", leg(style, radius, height, material, kind), {"foot": IDENTITY},
+                           {"foot": (0.0, 0.0, 0.0), "top": (0.0, 0.0, height)})
 
 
 def leg_frames(width: float, shape: str, inset: float, count: int) -> list[Frame]:
