@@ -38,7 +38,8 @@ class Fit:
     """A placement: ``(4, 4)`` matrix library frame -> procedural frame, and how the feet land."""
 
     matrix: np.ndarray
-    gaps: dict  # support -> signed distance of the library foot above the procedural one, along z (m)
+    gaps: dict  # support -> signed distance of the library foot from the procedural one, away from what
+    # carries it along z (m): + a gap, - a penetration
     lateral: dict  # support -> distance across the mount normal (m)
 
 
@@ -49,11 +50,16 @@ def _scale_box(lib_bounds: np.ndarray, bounds: np.ndarray, policy: dict) -> np.n
     return np.array([np.clip(s[i], *policy["xyz"[i]]) for i in range(3)])
 
 
+CARRIED_FROM_ABOVE = frozenset({"top", "axle_b"})
+"""Support points whose carrier lies on their +z side (a leg's top under the table top, a wheel's
+axle end against the fork's +z cheek); every other support rests on a carrier below it along z."""
+
+
 def _measure(m: np.ndarray, lib_sup: dict, targets: dict) -> tuple[dict, dict]:
     gaps, lat = {}, {}
     for k, q in targets.items():
         p = m[:3, :3] @ lib_sup[k] + m[:3, 3]
-        gaps[k] = float(p[2] - q[2])
+        gaps[k] = float(q[2] - p[2]) if k in CARRIED_FROM_ABOVE else float(p[2] - q[2])
         lat[k] = float(np.linalg.norm(p[:2] - q[:2]))
     return gaps, lat
 
