@@ -277,7 +277,8 @@ class TableLayout(Layout):
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
         z_leg = c.stem_top + 0.001 + 0.008 if c else 0.0  # legs on a caster's top plate
         style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
-        legs = [pc for f in frames for pc in T.leg_part(style, lw / 2, za1 - z_leg, "frame").mounted(f.moved(dz=z_leg)).pieces]
+        legs = [pc for f in frames
+                for pc in T.leg_part(style, lw / 2, za1 - z_leg, "frame").mounted(f.moved(dz=z_leg)).pieces]
         if c:
             legs += [g.box_between(f.point((-lw / 2 - 0.004, -lw / 2 - 0.004, c.stem_top + 0.001)),
                                    f.point((lw / 2 + 0.004, lw / 2 + 0.004, z_leg)), "metal") for f in frames]

@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import shutil
 import subprocess
 import sys
 from pathlib import Path
-
-import os
 
 import numpy as np
 import pytest
