@@ -192,6 +192,29 @@ def convex_pieces(vertices: np.ndarray, faces: np.ndarray, seed: int = 0) -> lis
     return out
 
 
+def clip_pieces(pieces: list[np.ndarray], z_max: float) -> list[np.ndarray]:
+    """Convex pieces cut by the plane z = ``z_max`` (what lies above is inside the carrier); pieces wholly
+    above it are dropped."""
+    import trimesh
+
+    out = []
+    for v in pieces:
+        if v[:, 2].max() <= z_max + 1e-9:
+            out.append(v)
+            continue
+        if v[:, 2].min() >= z_max - 1e-6:
+            continue
+        hull = trimesh.convex.convex_hull(v)
+        hv = np.asarray(hull.vertices, float)
+        a, b = hv[hull.edges_unique[:, 0]], hv[hull.edges_unique[:, 1]]
+        cross = (a[:, 2] - z_max) * (b[:, 2] - z_max) < 0  # hull edges through the plane
+        t = (z_max - a[cross, 2]) / (b[cross, 2] - a[cross, 2])
+        pts = np.vstack([hv[hv[:, 2] <= z_max], a[cross] + t[:, None] * (b[cross] - a[cross])])
+        if len(pts) >= 4 and np.ptp(pts, axis=0).min() > 1e-6:
+            out.append(np.asarray(trimesh.convex.convex_hull(pts).vertices, float))
+    return out
+
+
 # -- the rule per label: part frame and support points ---------------------------------------------
 def canonical_frame(vertices: np.ndarray, faces: np.ndarray, label: str) -> tuple[np.ndarray, str]:
     """``(rotation (3, 3) mesh -> part frame, kind)`` by the rule of ``label``.
@@ -577,6 +600,8 @@ def _entry(label: str, pid: str, source: str, licence: str, v: np.ndarray, f: np
     v = v - c
     sup = {k: p - c for k, p in sup.items()}
     convex = convex_pieces(v, f)
+    if kind == "leg":  # a bolt or dowel above the shoulder goes into the table top: no collider there
+        convex = clip_pieces(convex, float(sup["top"][2]))
     if not convex:
         raise _err(where, "CoACD found no convex piece", "check the mesh is a solid or leave it out")
     return Entry(label, pid, source, licence, v, f, sup, convex, rep.watertight, rep.report)

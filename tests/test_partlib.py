@@ -170,6 +170,9 @@ def test_import_repairs_and_rejects(libs):
         assert np.abs(p.supports["top"][:2]).max() < 1e-9
     assert abs(np.ptp(splayed.vertices[:, 2]) - 0.70) < 0.002 and abs(splayed.supports["top"][2] - 0.70) < 0.002
     assert abs(bolted.supports["top"][2] - 0.38) < 1e-6 and abs(bolted.vertices[:, 2].max() - 0.41) < 1e-6
+    # the bolt goes into the table top: its collider is cut at the shoulder (a part joined to the top by a
+    # joint would otherwise collide with it)
+    assert max(c[:, 2].max() for c in bolted.convex) < 0.38 + 1e-6
     # the wheel: axle along z whatever its direction in the source, its ends on the hub faces, an axis hint
     wheel = next(p for p in lib.parts if p.label == "wheel")
     ext = np.ptp(wheel.vertices, axis=0)
