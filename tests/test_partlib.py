@@ -333,3 +333,36 @@ def test_import_mesh_folder_with_csv(tmp_path, capsys):
     assert set(parts["knob"].supports) == {"stem"}
     assert main(["parts", "check", str(lib), "--placements", "20"]) == 0
     assert "support placement over 20 placements" in capsys.readouterr().out
+
+
+def _wheel_joints(lib, seed=0):
+    from infmob_usd.api import blueprint
+    from infmob_usd.retrieval import ACTIVE, Retriever
+
+    token = ACTIVE.set(Retriever(load_library(lib), 1.0, "office_chair", seed)) if lib else None
+    try:
+        bp = blueprint("office_chair", seed)
+    finally:
+        if token is not None:
+            ACTIVE.reset(token)
+    return {j.child: j.dofs[0] for j in bp.joints if j.child.startswith("wheel")}
+
+
+def test_wheel_turns_about_the_mesh_axle(libs, tmp_path):
+    """A wheel's joint goes through the placed mesh's own axle (its axis hint), not the procedural one."""
+    plain, same = _wheel_joints(None), _wheel_joints(libs["builtin"])
+    assert plain and set(plain) == set(same)
+    for k, d in plain.items():  # the built-in wheels' axles are the procedural ones
+        assert np.allclose(same[k].origin, d.origin, atol=1e-9) and np.allclose(same[k].axis, d.axis, atol=1e-9)
+    lib = tmp_path / "offset"
+    shutil.copytree(libs["builtin"], lib)
+    for pj in lib.glob("wheel/*/part.json"):  # every wheel's axle 2 mm off its middle, across the axle
+        d = json.loads(pj.read_text())
+        d["joint_hints"]["axis"]["point"][0] += 0.002
+        pj.write_text(json.dumps(d))
+    moved = _wheel_joints(lib)
+    for k, d in plain.items():
+        off = np.subtract(moved[k].origin, d.origin)
+        assert 0.001 < np.linalg.norm(off) < 0.0035  # 2 mm times the wheel's fitted scale
+        assert abs(float(off @ np.asarray(d.axis))) < 1e-9  # across the axle, which keeps its direction
+        assert np.allclose(np.abs(moved[k].axis), np.abs(d.axis), atol=1e-9)
