@@ -14,7 +14,8 @@ Layout (``LIB/``)::
 ``source``     where the mesh came from (a PartNet-Mobility object id, a file name, ``builtin``)
 ``licence``    its licence (``CC-BY-NC-4.0``, ``Apache-2.0`` ...)
 ``units``      ``m`` | ``cm`` | ``mm``: the mesh file's unit
-``up``         the mesh axis that points out of the surface the part is mounted on (``+z``, ``-y`` ...)
+``up``         the mesh axis that points out of the surface the part is mounted on (``+z``, ``-y`` ...;
+               a leg: from its foot to its top; a wheel: along its axle)
 ``front``      the mesh axis along the part's long direction (a bar's length; any axis for a knob)
 ``supports``   named support points in the mesh file's coordinates and units (a bar handle's
                ``mount_a`` / ``mount_b``, a knob's ``stem``, a leg's ``top`` / ``foot``, a wheel's
