@@ -161,7 +161,7 @@ class TableLayout(Layout):
         za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
-            body = apron + [pc.transformed(f.matrix) for f in frames for pc in self._leg(p["leg_style"], rl, za1)]
+            body = apron + [pc for f in frames for pc in self._leg(p["leg_style"], rl, za1).mounted(f).pieces]
             self.add("body", "body", body)
             if node.one("shelf"):
                 self.grow(node.one("shelf"), inset=inset, r_leg=C["shelf_leg"] * rl,
@@ -226,12 +226,10 @@ class TableLayout(Layout):
 
     @staticmethod
     def _leg(style, radius, height):
-        """One fixed leg: wooden or painted in the frame's finish, or a steel hairpin or tube leg."""
-        if style == "hairpin":
-            return T.hairpin_leg(radius, height, "metal")
-        if style == "tube":
-            return T.tube_leg(radius, height, "metal", "foot")
-        return T.leg(style, radius, height, "frame")
+        """One fixed leg (a part a library may replace): wooden or painted in the frame's finish, or a steel
+        hairpin or tube leg in the metal finish."""
+        steel = style in ("hairpin", "tube")
+        return T.leg_part(style, radius, height, "metal" if steel else "frame", foot="foot")
 
     # -- storage table with drawers --------------------------------------------------------------
     def drawers(self, node):
@@ -261,8 +259,7 @@ class TableLayout(Layout):
         over, plate, past = C["caster_plate"]
         z_leg = c.stem_top + over + plate if c else 0.0  # legs on a caster's top plate
         style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
-        legs = [pc.transformed(f.moved(dz=z_leg).matrix) for f in frames
-                for pc in self._leg(style, lw / 2, za1 - z_leg)]
+        legs = [pc for f in frames for pc in self._leg(style, lw / 2, za1 - z_leg).mounted(f.moved(dz=z_leg)).pieces]
         if c:
             legs += [g.box_between(f.point((-lw / 2 - past, -lw / 2 - past, c.stem_top + over)),
                                    f.point((lw / 2 + past, lw / 2 + past, z_leg)), "metal") for f in frames]
@@ -332,7 +329,7 @@ class TableLayout(Layout):
         """A swivel caster under a leg: the fork turns about z, its wheels about their axle."""
         f = self.place(S.fork(caster).placed(tip), f"caster_{i}")
         self.spin("body", f.root, f.anchor("swivel"), role="swivel")
-        self.grow(node.one(node.choice), fork=f, wheels=[w.placed(tip) for w in S.wheels(caster)], i=i)
+        self.grow(node.one(node.choice), fork=f, wheels=[w.mounted(tip) for w in S.wheels(caster)], i=i)
 
     def twin(self, node, fork, wheels, i):
         for k, w in enumerate(wheels):

@@ -217,8 +217,9 @@ class TableLayout(Layout):
             plate, wider = D["caster_plate"]
             # levelling feet or casters under the legs
             z0 = D["leveller"] if lev else c.stem_top + plate if cas else 0.0
-            self.extend("body", [pc.transformed(f.moved(dz=z0).matrix) for f in corners
-                                 for pc in T.leg(p["leg_style"], lw / 2, za1 - z0, "frame", kind="dining")])
+            self.extend("body", [pc for f in corners for pc in
+                                 T.leg_part(p["leg_style"], lw / 2, za1 - z0, "frame", kind="dining").mounted(
+                                     f.moved(dz=z0)).pieces])
             if lev:
                 self.grow(lev, corners=corners, lw=lw)
             if cas:
@@ -251,7 +252,7 @@ class TableLayout(Layout):
         """A swivelling plate caster under leg ``k`` (its fork turns about z under the leg)."""
         fork = self.place(S.fork(c).placed(at), f"caster_{k}")
         self.spin("body", fork.root, fork.anchor("swivel"), role="swivel")
-        self.grow(node.one(node.choice), fork=fork, wheels=[w.placed(at) for w in S.wheels(c)], k=k)
+        self.grow(node.one(node.choice), fork=fork, wheels=[w.mounted(at) for w in S.wheels(c)], k=k)
 
     def twin(self, node, fork, wheels, k):
         for j, w in enumerate(wheels):

@@ -125,6 +125,14 @@ class Assembly:
 
         return swap(self).placed(to @ self.anchor(anchor).inverse())
 
+    def mounted(self, to: Frame) -> Assembly:
+        """Placed with its local frame at ``to`` (as :meth:`placed`), through the same retrieval hook as
+        :meth:`attached`: for a part a layout sets down in its own frame (a table leg on its corner, a
+        caster's wheel under the leg tip)."""
+        from .retrieval import swap
+
+        return swap(self).placed(to)
+
     def merged(self, other: Assembly, prefix: str = "") -> Assembly:
         """This assembly with ``other``'s parts (renamed ``prefix + name``), joints, anchors and supports."""
         ren = {k: prefix + k for k in other.parts}

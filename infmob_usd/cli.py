@@ -330,6 +330,11 @@ def cmd_parts(args) -> int:
         print(f"{label + '/' + pid:34} {how:9} {len(rs):3d} {max(r['gap_mm'] for r in rs):10.3f}"
               f" {max(r['penetration_mm'] for r in rs):10.3f} {max(r['lateral_mm'] for r in rs):14.3f}")
     _print_check(parts_tools.summary(rows), args.placements)
+    if len(lib.labels) > 1:  # and n placements of each label on its own
+        for label in lib.labels:
+            print(f"{label}:")
+            _print_check(parts_tools.summary(parts_tools.study(lib, args.placements, args.seed, args.as_drawn, label)),
+                         args.placements)
     return 0
 
 

@@ -14,11 +14,14 @@ Layout (``LIB/``)::
 ``source``     where the mesh came from (a PartNet-Mobility object id, a file name, ``builtin``)
 ``licence``    its licence (``CC-BY-NC-4.0``, ``Apache-2.0`` ...)
 ``units``      ``m`` | ``cm`` | ``mm``: the mesh file's unit
-``up``         the mesh axis that points out of the surface the part is mounted on (``+z``, ``-y`` ...)
+``up``         the mesh axis that points out of the surface the part is mounted on (``+z``, ``-y`` ...;
+               a leg: from its foot to its top; a wheel: along its axle)
 ``front``      the mesh axis along the part's long direction (a bar's length; any axis for a knob)
 ``supports``   named support points in the mesh file's coordinates and units (a bar handle's
-               ``mount_a`` / ``mount_b``, a knob's ``stem``): where it touches what carries it
-``joint_hints`` e.g. ``{"axis": {"point": [...], "direction": [...]}}`` (a knob turns about its stem)
+               ``mount_a`` / ``mount_b``, a knob's ``stem``, a leg's ``top`` / ``foot``, a wheel's
+               ``axle_a`` / ``axle_b``): where it touches what carries it
+``joint_hints`` e.g. ``{"axis": {"point": [...], "direction": [...]}}``: the axis a knob turns about
+               (its stem) or a wheel (its axle); a wheel's joint is put on it
 ``scale``      per-axis ranges of the scale factor the part may be fitted with:
                ``{"x": [lo, hi], "y": [lo, hi], "z": [lo, hi]}`` (x along ``front``, z along ``up``)
 ``materials``  material slots of the mesh: ``["main"]`` (painted with the slot of the procedural part)
@@ -61,7 +64,17 @@ LABELS: dict[str, dict] = {
                "scale": {"x": (0.5, 2.0), "y": (0.67, 1.5), "z": (0.67, 1.5)}},
     # door knobs: 50-65 mm across on a 50-60 mm projection (EN 1906 lever/knob furniture ranges)
     "knob": {"supports": ({"stem"},), "scale": {"x": (0.67, 1.5), "y": (0.67, 1.5), "z": (0.67, 1.5)}},
+    # table legs are cut to length: one turned or tapered design serves coffee tables (0.3-0.45 m) and
+    # dining tables (0.7-0.78 m); their thickness (30-90 mm) follows the table within a factor 2
+    "leg": {"supports": ({"top", "foot"},), "scale": {"x": (0.5, 2.0), "y": (0.5, 2.0), "z": (0.4, 2.5)}},
+    # caster wheels: 40-76 mm across (chair casters EN 12529: 50 mm; furniture plate casters 50-75 mm);
+    # the joint turns about the mesh's own axle (its ``axis`` hint) through the ``axle`` anchor
+    "wheel": {"supports": ({"axle_a", "axle_b"},), "scale": {"x": (0.6, 1.6), "y": (0.6, 1.6), "z": (0.5, 2.0)},
+              "axis_anchor": "axle"},
 }
+"""Part frames: ``handle``/``knob``: z out of the mounted surface, supports on z = 0, x along a bar;
+``leg``: z from ``foot`` (the origin) to ``top``, both on the z axis; ``wheel``: z along the axle, the
+wheel centred on the origin, ``axle_a``/``axle_b`` the axle's ends on the hub faces."""
 SHARED = {frozenset({"stem"}): ("handle", "knob")}
 """Support kinds whose parts serve several labels: a round knob is a cabinet handle or a door knob."""
 
@@ -180,6 +193,29 @@ def convex_pieces(vertices: np.ndarray, faces: np.ndarray, seed: int = 0) -> lis
     return out
 
 
+def clip_pieces(pieces: list[np.ndarray], z_max: float) -> list[np.ndarray]:
+    """Convex pieces cut by the plane z = ``z_max`` (what lies above is inside the carrier); pieces wholly
+    above it are dropped."""
+    import trimesh
+
+    out = []
+    for v in pieces:
+        if v[:, 2].max() <= z_max + 1e-9:
+            out.append(v)
+            continue
+        if v[:, 2].min() >= z_max - 1e-6:
+            continue
+        hull = trimesh.convex.convex_hull(v)
+        hv = np.asarray(hull.vertices, float)
+        a, b = hv[hull.edges_unique[:, 0]], hv[hull.edges_unique[:, 1]]
+        cross = (a[:, 2] - z_max) * (b[:, 2] - z_max) < 0  # hull edges through the plane
+        t = (z_max - a[cross, 2]) / (b[cross, 2] - a[cross, 2])
+        pts = np.vstack([hv[hv[:, 2] <= z_max], a[cross] + t[:, None] * (b[cross] - a[cross])])
+        if len(pts) >= 4 and np.ptp(pts, axis=0).min() > 1e-6:
+            out.append(np.asarray(trimesh.convex.convex_hull(pts).vertices, float))
+    return out
+
+
 # -- the rule per label: part frame and support points ---------------------------------------------
 def canonical_frame(vertices: np.ndarray, faces: np.ndarray, label: str) -> tuple[np.ndarray, str]:
     """``(rotation (3, 3) mesh -> part frame, kind)`` by the rule of ``label``.
@@ -196,6 +232,14 @@ def canonical_frame(vertices: np.ndarray, faces: np.ndarray, label: str) -> tupl
     centroid = (tri.mean(1) * area[:, None]).sum(0) / max(area.sum(), 1e-30)
     mid = 0.5 * (vertices.min(0) + vertices.max(0))
     eye = np.eye(3)
+    if label == "leg":
+        return _leg_frame(vertices, ext), "leg"
+    if label == "wheel":  # the axle: the axis across which the wheel is round
+        ratios = [min(ext[[b for b in range(3) if b != a]]) / max(max(ext[[b for b in range(3) if b != a]]), 1e-12)
+                  for a in range(3)]
+        zi = int(np.argmax(ratios))
+        xi = next(b for b in range(3) if b != zi)
+        return np.vstack([eye[xi], np.cross(eye[zi], eye[xi]), eye[zi]]), "wheel"
     if label != "knob" and ext[order[0]] >= 2.0 * ext[order[1]]:
         kind = "bar"
         xi = int(order[0])
@@ -214,13 +258,61 @@ def canonical_frame(vertices: np.ndarray, faces: np.ndarray, label: str) -> tupl
     return np.vstack([x, np.cross(z, x), z]), kind
 
 
+def _slab_centre(v: np.ndarray, axis: int, high: bool) -> tuple[np.ndarray, float]:
+    """The centroid of the vertices within 3 % of the length of the lowest (highest) end along ``axis``,
+    and the end's width (the largest extent across)."""
+    span = float(np.ptp(v[:, axis]))
+    tol = max(0.0005, 0.03 * span)
+    end = v[:, axis].max() if high else v[:, axis].min()
+    s = v[np.abs(v[:, axis] - end) <= tol]
+    others = [b for b in range(3) if b != axis]
+    return s.mean(0), float(np.ptp(s[:, others], axis=0).max())
+
+
+def _leg_frame(v: np.ndarray, ext: np.ndarray) -> np.ndarray:
+    """A leg's rotation: z along the leg from its foot to its top. The leg runs along the mesh's longest
+    axis; upright in the source (along z) its top is the higher end, lying down the wider end (a leg
+    tapers to its foot); a splayed leg's z goes from the centre of its foot to the centre of its top."""
+    ax = int(np.argmax(ext))
+    a, wa = _slab_centre(v, ax, False)
+    b, wb = _slab_centre(v, ax, True)
+    foot, top = (a, b) if ax == 2 or wb >= wa else (b, a)
+    d = top - foot
+    d = d / np.linalg.norm(d)
+    from .frames import Frame
+
+    other = np.eye(3)[next(b for b in range(3) if b != ax)]
+    return Frame.at(z=d, x=other).rotation.T
+
+
 def support_rule(vertices: np.ndarray, kind: str, where: str) -> dict[str, np.ndarray]:
     """Support points of a part already in its frame: the contact patches on its lowest plane.
 
     ``bar``: the centroids of the lowest vertices on each side of the middle (``mount_a`` at -x,
     ``mount_b`` at +x); ``stem``: the centroid of the lowest vertices (``stem``). Points lie on
-    the lowest plane.
+    the lowest plane. ``leg``: ``foot`` on the lowest plane and ``top`` on the highest where the leg
+    is at least half its full width (the shoulder under a stud), both on the line through the centres
+    of the two ends; ``wheel``: ``axle_a`` / ``axle_b`` at the middle of the
+    wheel's round outline on its two faces.
     """
+    if kind == "leg":
+        a, _ = _slab_centre(vertices, 2, False)
+        b, _ = _slab_centre(vertices, 2, True)
+        xy = 0.5 * (a[:2] + b[:2])
+        # the top: the highest level where the leg is at least half its full width (its shoulder, under
+        # a hanger bolt or dowel that goes into what it carries)
+        r = np.linalg.norm(vertices[:, :2] - xy, axis=1)
+        tol = max(1e-5, 1e-3 * float(np.ptp(vertices[:, 2])))
+        top = float(vertices[:, 2].max())
+        for z in np.unique(np.round(vertices[:, 2] / tol))[::-1] * tol:
+            if r[np.abs(vertices[:, 2] - z) <= tol].max() >= 0.5 * r.max():
+                top = float(vertices[np.abs(vertices[:, 2] - z) <= tol][:, 2].max())
+                break
+        return {"foot": np.array([*xy, vertices[:, 2].min()]), "top": np.array([*xy, top])}
+    if kind == "wheel":
+        c = 0.5 * (vertices.min(0) + vertices.max(0))
+        return {"axle_a": np.array([c[0], c[1], vertices[:, 2].min()]),
+                "axle_b": np.array([c[0], c[1], vertices[:, 2].max()])}
     z0 = float(vertices[:, 2].min())
     tol = max(0.0005, 0.03 * float(np.ptp(vertices[:, 2])))
     low = vertices[vertices[:, 2] <= z0 + tol]
@@ -252,6 +344,9 @@ class LibPart:
     scale: dict
     joint_hints: dict = field(default_factory=dict)
     folder: str = ""
+    axis: tuple | None = None
+    """``(point (3,), unit direction (3,))`` in the part frame: the ``axis`` joint hint (a knob's stem,
+    a wheel's axle), or None."""
 
     @property
     def kind(self) -> frozenset:
@@ -345,6 +440,16 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
     hints = d.get("joint_hints", {})
     if not isinstance(hints, dict):
         raise _err(pj, "field 'joint_hints' must be an object", "fix that field")
+    axis = None
+    if "axis" in hints:
+        ax = hints["axis"]
+        if not isinstance(ax, dict) or set(ax) != {"point", "direction"}:
+            raise _err(pj, "field 'joint_hints.axis' must be {\"point\": [x, y, z], \"direction\": [x, y, z]}",
+                       "fix that field")
+        u = rot @ _vec3(ax["direction"], pj, "joint_hints.axis.direction")
+        if np.linalg.norm(u) < 1e-9:
+            raise _err(pj, "field 'joint_hints.axis.direction' is zero", "give the axis direction")
+        axis = (rot @ _vec3(ax["point"], pj, "joint_hints.axis.point") * k, u / np.linalg.norm(u))
     for name in ("mesh", "convex"):
         if not isinstance(d[name], str) or "/" in d[name] or d[name].startswith("."):
             raise _err(pj, f"field {name!r} must be a file name in the part's folder", "fix that field")
@@ -369,7 +474,7 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
 
     hulls = tuple(hull_arrays(c) for c in convex)
     return LibPart(label, pid, d["source"], d["licence"], v, f, tuple(convex), hulls, supports, scale, hints,
-                   str(folder))
+                   str(folder), axis)
 
 
 def load_library(root) -> Library:
@@ -453,6 +558,10 @@ def write_library(entries: list[Entry], out: Path) -> Path:
             if hints is None and set(e.supports) == {"stem"}:
                 hints = {"axis": {"point": [round(float(x), 9) for x in e.supports["stem"]],
                                   "direction": [0.0, 0.0, 1.0]}}
+            if hints is None and set(e.supports) == {"axle_a", "axle_b"}:
+                a, b = np.asarray(e.supports["axle_a"], float), np.asarray(e.supports["axle_b"], float)
+                hints = {"axis": {"point": [round(float(x), 9) for x in (a + b) / 2],
+                                  "direction": [round(float(x), 9) for x in (b - a) / np.linalg.norm(b - a)]}}
             meta = {"label": e.label, "id": e.id, "source": e.source, "licence": e.licence, "units": "m",
                     "up": "+z", "front": "+x",
                     "supports": {k: [round(float(x), 9) for x in v] for k, v in sorted(e.supports.items())},
@@ -485,13 +594,15 @@ def _entry(label: str, pid: str, source: str, licence: str, v: np.ndarray, f: np
     v = v @ rot.T
     if kind is None:
         ext = np.ptp(v, axis=0)
-        kind = "bar" if ext[0] >= 2 * max(ext[1], 1e-12) else "stem"
+        kind = label if label in ("leg", "wheel") else "bar" if ext[0] >= 2 * max(ext[1], 1e-12) else "stem"
     sup = support_rule(v, kind, where)
-    # the part frame: supports' centre on the origin, the mounting plane at z = 0
-    c = np.mean(list(sup.values()), axis=0)
+    # the part frame: supports' centre on the origin (a leg's foot), the mounting plane at z = 0
+    c = sup["foot"] if kind == "leg" else np.mean(list(sup.values()), axis=0)
     v = v - c
     sup = {k: p - c for k, p in sup.items()}
     convex = convex_pieces(v, f)
+    if kind == "leg":  # a bolt or dowel above the shoulder goes into the table top: no collider there
+        convex = clip_pieces(convex, float(sup["top"][2]))
     if not convex:
         raise _err(where, "CoACD found no convex piece", "check the mesh is a solid or leave it out")
     return Entry(label, pid, source, licence, v, f, sup, convex, rep.watertight, rep.report)
@@ -503,7 +614,7 @@ def _safe_id(text: str) -> str:
 
 
 # -- PartNet-Mobility ------------------------------------------------------------------------------------
-SEMANTIC_LABELS = {"handle": "handle", "knob": "knob"}
+SEMANTIC_LABELS = {"handle": "handle", "knob": "knob", "leg": "leg", "wheel": "wheel"}
 """PartNet-Mobility semantic labels imported, and the label they get."""
 
 

@@ -14,14 +14,15 @@ from pathlib import Path
 import numpy as np
 
 from .partlib import Entry, write_library
-from .retrieval import bbox_fit, candidates, support_fit
+from .retrieval import FIT_ANCHOR, bbox_fit, candidates, part_frame, support_fit
 
 
 def builtin_entries() -> list[Entry]:
-    """The procedural handles of ``categories/parts`` as library parts, with their exact convex pieces."""
+    """The procedural handles, knobs, table legs and caster wheels of ``categories/parts`` as library
+    parts (in their part frames), with their exact convex pieces."""
     import trimesh
 
-    from .categories.parts import doors, hardware
+    from .categories.parts import doors, hardware, seating, tables
     from .categories.parts import vessel as V
 
     made = {
@@ -31,9 +32,17 @@ def builtin_entries() -> list[Entry]:
         "builtin_knob_30": hardware.knob_handle(0.015, 0.025, "main"),
         "builtin_lid_knob_20": V.lid_knob(0.02, "main"),
         "builtin_door_knob_28": doors.knob_part(0.028),
+        "builtin_leg_turned_400": tables.leg_part("turned", 0.022, 0.40, "main"),
+        "builtin_leg_turned_720": tables.leg_part("turned", 0.035, 0.72, "main", kind="dining"),
+        "builtin_leg_tapered_720": tables.leg_part("tapered", 0.035, 0.72, "main", kind="dining"),
+        "builtin_wheel_single_60": seating.wheels(seating.caster("single", 0.03))[0],
+        "builtin_wheel_twin_50": seating.wheels(seating.caster("twin", 0.025))[0],
     }
     out = []
     for pid, asm in made.items():
+        frame = asm.anchors.get(FIT_ANCHOR)
+        if frame is not None:  # built in another frame (a wheel under its leg tip): into its part frame
+            asm = asm.placed(frame.inverse())
         pieces = asm.pieces
         mesh = trimesh.util.concatenate([trimesh.Trimesh(p.vertices, p.faces, process=False) for p in pieces])
         convex = []
@@ -52,8 +61,19 @@ def export_builtin(out) -> Path:
 
 def targets_for(kind: frozenset, rng: np.random.Generator):
     """A procedural part of a kind at a drawn real size (the ranges the categories use)."""
-    from .categories.parts import hardware
+    from .categories.parts import hardware, seating, tables
     from .categories.parts import vessel as V
+
+    if kind == frozenset({"top", "foot"}):  # coffee-table legs (0.3-0.7 m) or dining-table legs
+        style = ("turned", "tapered", "square")[int(rng.integers(3))]
+        if rng.random() < 0.5:
+            return tables.leg_part(style, float(rng.uniform(0.015, 0.03)), float(rng.uniform(0.3, 0.7)), "m")
+        return tables.leg_part(style, float(rng.uniform(0.025, 0.045)), float(rng.uniform(0.62, 0.78)), "m",
+                               kind="dining")
+    if kind == frozenset({"axle_a", "axle_b"}):  # chair and table caster wheels, 44-76 mm across
+        c = seating.caster(("twin", "single")[int(rng.integers(2))], float(rng.uniform(0.022, 0.038)))
+        ws = seating.wheels(c)
+        return ws[int(rng.integers(len(ws)))]
 
     if kind == frozenset({"stem"}):
         u = rng.random()
@@ -69,15 +89,17 @@ def targets_for(kind: frozenset, rng: np.random.Generator):
     return hardware.edge_pull(float(rng.uniform(0.10, 0.45)), "m", depth=float(rng.uniform(0.014, 0.02)))
 
 
-def study(library, n: int = 100, seed: int = 0, box: bool = False) -> list[dict]:
+def study(library, n: int = 100, seed: int = 0, box: bool = False, label: str | None = None) -> list[dict]:
     """``n`` placements of drawn library parts on drawn procedural targets: bounding-box vs support
     placement, the gap (+) or penetration (-) of each foot along the mount normal and its offset across.
 
     ``box=False``: every part of the label and kind whose feet reach the target's (the bounding-box fit
     clipped to the scale policy where the box asks for more); ``True``: only the parts generation
-    draws (:func:`candidates`: the box within the policy)."""
+    draws (:func:`candidates`: the box within the policy). ``label``: only parts of that label."""
     rng = np.random.default_rng(seed)
-    kinds = sorted({p.kind for p in library.parts}, key=sorted)
+    kinds = sorted({p.kind for p in library.parts if label is None or p.label == label}, key=sorted)
+    if not kinds:
+        return []
     rows = []
     tries = 0
     while len(rows) < 2 * n and tries < 50 * n:
@@ -86,10 +108,14 @@ def study(library, n: int = 100, seed: int = 0, box: bool = False) -> list[dict]
         found = candidates(library, asm, box)
         if not found:
             continue
+        if label is not None:
+            found = [x for x in found if x[0].label == label]
+            if not found:
+                continue
         lib = found[int(rng.integers(len(found)))][0]
-        tg = dict(asm.supports)
+        _frame, bounds, tg = part_frame(asm)
         for how, f in (("bbox", bbox_fit), ("support", support_fit)):
-            fit = f(lib, asm.bounds(), tg)
+            fit = f(lib, bounds, tg)
             rows.append({"part": lib.id, "label": lib.label, "placement": how,
                          "gap_mm": max(0.0, max(fit.gaps.values())) * 1000,
                          "penetration_mm": max(0.0, -min(fit.gaps.values())) * 1000,

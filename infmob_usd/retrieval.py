@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .partlib import LABELS
 from .seeding import category_id
 
 ACTIVE: contextvars.ContextVar = contextvars.ContextVar("infmob_retriever", default=None)
@@ -37,7 +38,8 @@ class Fit:
     """A placement: ``(4, 4)`` matrix library frame -> procedural frame, and how the feet land."""
 
     matrix: np.ndarray
-    gaps: dict  # support -> signed distance of the library foot above the procedural one, along z (m)
+    gaps: dict  # support -> signed distance of the library foot from the procedural one, away from what
+    # carries it along z (m): + a gap, - a penetration
     lateral: dict  # support -> distance across the mount normal (m)
 
 
@@ -48,11 +50,16 @@ def _scale_box(lib_bounds: np.ndarray, bounds: np.ndarray, policy: dict) -> np.n
     return np.array([np.clip(s[i], *policy["xyz"[i]]) for i in range(3)])
 
 
+CARRIED_FROM_ABOVE = frozenset({"top", "axle_b"})
+"""Support points whose carrier lies on their +z side (a leg's top under the table top, a wheel's
+axle end against the fork's +z cheek); every other support rests on a carrier below it along z."""
+
+
 def _measure(m: np.ndarray, lib_sup: dict, targets: dict) -> tuple[dict, dict]:
     gaps, lat = {}, {}
     for k, q in targets.items():
         p = m[:3, :3] @ lib_sup[k] + m[:3, 3]
-        gaps[k] = float(p[2] - q[2])
+        gaps[k] = float(q[2] - p[2]) if k in CARRIED_FROM_ABOVE else float(p[2] - q[2])
         lat[k] = float(np.linalg.norm(p[:2] - q[:2]))
     return gaps, lat
 
@@ -72,7 +79,7 @@ def support_fit(lib, bounds: np.ndarray, targets: dict) -> Fit:
 
     The similarity turns about z only (the mount normal: both frames have it along +z), scales
     uniformly within what the scale policy leaves, and translates; with one support point it is a
-    translation.
+    translation; with supports on one line along z (a leg, a wheel) it scales z to their spacing.
     """
     lb = np.array([lib.vertices.min(0), lib.vertices.max(0)])
     s = _scale_box(lb, bounds, lib.scale)
@@ -94,6 +101,12 @@ def support_fit(lib, bounds: np.ndarray, targets: dict) -> Fit:
             hi = min(lib.scale[ax][1] / s[i] for i, ax in enumerate("xyz"))
             k = float(np.clip(k, lo, hi)) if lo <= hi else 1.0
             R = np.array([[np.cos(th), -np.sin(th), 0.0], [np.sin(th), np.cos(th), 0.0], [0.0, 0.0, 1.0]])
+        elif np.ptp(P[:, 2]) > 1e-9:
+            # supports along one line on z (a leg's foot and top, a wheel's axle ends): z scaled so their
+            # spacing is the target's, within the policy (a leg's stud stays out of its length)
+            s = s.copy()
+            s[2] = float(np.clip(s[2] * np.ptp(Q[:, 2]) / np.ptp(P[:, 2]), *lib.scale["z"]))
+            P = np.array([s * lib.supports[k] for k in names])
     L = k * (R @ np.diag(s))
     t = (Q - P @ (k * R).T).mean(0)
     m = np.eye(4)
@@ -115,13 +128,28 @@ def fits_box(lib, bounds: np.ndarray) -> bool:
     return all(lib.scale[ax][0] <= s[i] <= lib.scale[ax][1] for i, ax in enumerate("xyz"))
 
 
+FIT_ANCHOR = "part_frame"
+"""The anchor a procedural part names its part frame by when it is not its local frame (the label's
+convention of :mod:`infmob_usd.partlib`: a caster wheel built with its axle along x declares a frame
+with z along the axle); absent: the local frame is the part frame."""
+
+
+def part_frame(asm):
+    """``(frame or None, (2, 3) bounds, {support: point})`` of a one-part assembly in its part frame."""
+    frame = asm.anchors.get(FIT_ANCHOR)
+    if frame is None:
+        return None, asm.bounds(), dict(asm.supports)
+    inv = frame.inverse()
+    v = np.vstack([inv.point(pc.vertices) for pc in asm.parts[asm.root].pieces])
+    return frame, np.array([v.min(0), v.max(0)]), {k: inv.point(p) for k, p in asm.supports.items()}
+
+
 def candidates(library, asm, box: bool = True) -> list[tuple]:
     """``[(library part, support fit)]`` for a one-part assembly: same label, same support kind, the
     procedural bounding box within the scale policy (``box``), and feet that reach the procedural feet
-    within :data:`LATERAL_TOL`."""
+    within :data:`LATERAL_TOL`. Fits are in the assembly's part frame (:func:`part_frame`)."""
     part = asm.parts[asm.root]
-    tg = dict(asm.supports)
-    bounds = asm.bounds()
+    _frame, bounds, tg = part_frame(asm)
     out = []
     for lib in library.candidates(part.label, frozenset(tg)):
         if box and not fits_box(lib, bounds):
@@ -165,14 +193,37 @@ class Retriever:
         if pick is None:  # no library part reaches these feet within its scale policy
             return Assembly(asm.parts, asm.joints, asm.anchors, asm.supports, retrieved="-")
         lib, fit = pick, found[id(pick)]
+        frame = asm.anchors.get(FIT_ANCHOR)
+        matrix = fit.matrix if frame is None else frame.matrix @ fit.matrix
         first = part.pieces[0]
-        piece = lib.piece(first.material, first.name or part.label).transformed(fit.matrix)
+        piece = lib.piece(first.material, first.name or part.label).transformed(matrix)
 
         self.records.append({"label": part.label, "id": lib.id, "source": lib.source, "licence": lib.licence,
                              "scale": [round(float(x), 4) for x in np.linalg.norm(fit.matrix[:3, :3], axis=0)],
                              "max_support_gap_mm": round(1000 * max(abs(g) for g in fit.gaps.values()), 4)})
-        return Assembly({asm.root: SubPart(part.label, (piece,))}, asm.joints, asm.anchors, asm.supports,
-                        retrieved=lib.id)
+        return Assembly({asm.root: SubPart(part.label, (piece,))}, asm.joints, _hinted(asm, lib, matrix),
+                        asm.supports, retrieved=lib.id)
+
+
+def _hinted(asm, lib, matrix: np.ndarray) -> dict:
+    """The anchors of ``asm`` with its label's joint anchor (a wheel's ``axle``) moved onto the library
+    part's own axis hint, placed: the joint turns about the mesh's axle, not the procedural one. The
+    anchor keeps its sense (z turned to agree with the procedural z) and, as near as it can, its x."""
+    anchors = dict(asm.anchors)
+    name = LABELS.get(asm.parts[asm.root].label, {}).get("axis_anchor")
+    if lib.axis is None or name not in anchors:
+        return anchors
+    old = anchors[name]
+    point = matrix[:3, :3] @ lib.axis[0] + matrix[:3, 3]
+    d = matrix[:3, :3] @ lib.axis[1]
+    d = d / np.linalg.norm(d)
+    if float(d @ old.z) < 0:
+        d = -d
+    # the anchor's origin: the hint line's point nearest the procedural origin (the wheel's middle)
+    point = point + d * float((old.origin - point) @ d)
+    x = old.x - d * float(old.x @ d)
+    anchors[name] = type(old).at(point, z=d, x=x if np.linalg.norm(x) > 1e-6 else None)
+    return anchors
 
 
 def swap(asm):

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -15,18 +16,20 @@ import pytest
 import trimesh
 
 from infmob_usd import generate, save
-from infmob_usd.categories.parts import doors, hardware
+from infmob_usd.categories.parts import doors, hardware, seating, tables
 from infmob_usd.categories.parts import vessel as V
 from infmob_usd.cli import main
 from infmob_usd.partlib import import_parts, load_library
 from infmob_usd.parts_tools import study, summary
 
-# every category whose layouts attach a part retrieval can replace (a handle with support points)
-RETRIEVABLE = ("beverage_fridge", "dining_table", "dishwasher", "door", "kitchen_cabinet", "microwave", "oven",
-               "pan", "pot")
-SEEDS = {"messy": range(5), "builtin": range(2)}
-"""Seeds per category in the sim test: 5 with the imported library; 2 with the built-in one to keep the
-test short (5 seeds of both: 90 objects, all passed, 12 min on the shared 2-core VM)."""
+# every category whose layouts attach a part retrieval can replace (a handle, knob, table leg or caster wheel
+# with support points)
+RETRIEVABLE = ("bar_chair", "beverage_fridge", "cocktail_table", "dining_table", "dishwasher", "door",
+               "kitchen_cabinet", "microwave", "office_chair", "oven", "pan", "pot")
+_N = int(os.environ.get("INFMOB_PARTS_SEEDS", "0"))
+SEEDS = {"messy": range(_N or 1), "builtin": range(_N or 1)}
+"""Seeds per category in the sim test: 1 with each library, to keep the test short;
+``INFMOB_PARTS_SEEDS=5`` runs 5 of each (the check quoted in the README)."""
 
 
 def _mesh(asm) -> trimesh.Trimesh:
@@ -100,6 +103,20 @@ def build_messy(root: Path) -> Path:
     _write_object(src, "7002", [("handle", _messy(pull, _rot("z", -90), (0.0, -0.3, 0.8), "all")),
                                 ("handle", _messy(finned, np.eye(3), (0.31, 0.0, 0.3), "none")),
                                 ("knob", _messy(door_knob, _rot("x", 180), (-0.01, 0.2, 0.9), "some"))])
+    # a table and a chair base: a splayed turned leg (8 degrees off upright), a tapered leg with a 30 mm
+    # hanger bolt on top (its support is the shoulder, not the bolt's end), a caster wheel on its side
+    turned = _mesh(tables.leg_part("turned", 0.03, 0.70, "m", kind="dining"))
+    bolt = trimesh.creation.cylinder(0.004, 0.032, sections=12,
+                                     transform=trimesh.transformations.translation_matrix([0, 0, 0.38 + 0.014]))
+    stud = trimesh.boolean.union([_mesh(tables.leg_part("tapered", 0.022, 0.38, "m")), bolt], engine="manifold")
+    w = seating.wheels(seating.caster("single", 0.03))[0]
+    tyre = w.placed(w.anchor("part_frame").inverse()).pieces[0]  # axle along z, centred
+    tyre = trimesh.Trimesh(tyre.vertices, tyre.faces, process=False)
+    boss = trimesh.creation.cylinder(0.012, np.ptp(tyre.vertices[:, 2]) + 0.006, sections=16)  # 3 mm proud a side
+    wheel = trimesh.boolean.union([tyre, boss], engine="manifold")
+    _write_object(src, "7003", [("leg", _messy(turned, _rot("x", 8), (0.2, 0.3, -0.7), "some")),
+                                ("leg", _messy(stud, np.eye(3), (-0.2, 0.3, -0.4), "all")),
+                                ("wheel", _messy(wheel, _rot("y", 90), (0.1, -0.2, -0.5), "some"))])
     return src
 
 
@@ -115,23 +132,26 @@ def libs(tmp_path_factory):
 
 def test_import_repairs_and_rejects(libs):
     lib = load_library(libs["messy"])
-    # the non-manifold pull is refused with one line naming it and why; the four others are in
+    # the non-manifold pull is refused with one line naming it and why; the seven others are in
     assert len(libs["rejected"]) == 1
     assert "7002" in libs["rejected"][0] and "non-manifold" in libs["rejected"][0]
     assert "\n" not in libs["rejected"][0]
     assert sorted((p.label, sorted(p.supports)) for p in lib.parts) == [
-        ("handle", ["mount_a", "mount_b"]), ("handle", ["mount_a", "mount_b"]), ("knob", ["stem"]), ("knob", ["stem"])]
+        ("handle", ["mount_a", "mount_b"]), ("handle", ["mount_a", "mount_b"]), ("knob", ["stem"]), ("knob", ["stem"]),
+        ("leg", ["foot", "top"]), ("leg", ["foot", "top"]), ("wheel", ["axle_a", "axle_b"])]
     door_knob = next(p for p in lib.parts if p.id == "7002_link_3")
     assert abs(np.ptp(door_knob.vertices[:, 2]) - 0.056) < 1e-6  # stem foot to cap along z, the right way up
     assert door_knob.vertices[:, 2].min() == 0.0 and np.ptp(door_knob.vertices[:, 0]) > 0.05
     for p in lib.parts:
         m = trimesh.Trimesh(p.vertices, p.faces, process=False)
-        # centimetres -> metres: the largest is the 240 mm pull, every part under 0.3 m
-        assert 0.02 < np.ptp(p.vertices, axis=0).max() < 0.3
+        # centimetres -> metres: the largest is the 240 mm pull, every part under 0.3 m; legs 0.41 and 0.70 m
+        assert 0.02 < np.ptp(p.vertices, axis=0).max() < (0.75 if p.label == "leg" else 0.3)
         # duplicates merged: the repaired mesh is closed and points outward (every piece was closed)
         assert m.is_watertight and m.volume > 0
         for c in p.convex:
             assert 4 <= len(c) <= 255
+        if p.label in ("leg", "wheel"):
+            continue
         # support points on the mounting plane z = 0, under the part, the part above it
         for s in p.supports.values():
             assert abs(s[2] - p.vertices[:, 2].min()) < 1e-9
@@ -141,16 +161,43 @@ def test_import_repairs_and_rejects(libs):
     assert lengths == [0.192, 0.24]  # long axis found along x whatever its direction in the source
     pull = next(p for p in bars if abs(np.ptp(p.vertices[:, 0]) - 0.24) < 1e-3)
     assert abs(np.ptp(pull.vertices[:, 2]) - 0.018) < 1e-6  # depth out of the face along z
+    # legs: upright (the splayed one straightened), foot on the origin, top on the z axis; the bolted leg's
+    # top support at its shoulder, 30 mm under the bolt's end
+    legs = {p.id: p for p in lib.parts if p.label == "leg"}
+    splayed, bolted = legs["7003_link_1"], legs["7003_link_2"]
+    for p in legs.values():
+        assert np.abs(p.supports["foot"]).max() < 1e-9 and p.vertices[:, 2].min() == 0.0
+        assert np.abs(p.supports["top"][:2]).max() < 1e-9
+    assert abs(np.ptp(splayed.vertices[:, 2]) - 0.70) < 0.002 and abs(splayed.supports["top"][2] - 0.70) < 0.002
+    assert abs(bolted.supports["top"][2] - 0.38) < 1e-6 and abs(bolted.vertices[:, 2].max() - 0.41) < 1e-6
+    # the bolt goes into the table top: its collider is cut at the shoulder (a part joined to the top by a
+    # joint would otherwise collide with it)
+    assert max(c[:, 2].max() for c in bolted.convex) < 0.38 + 1e-6
+    # the wheel: axle along z whatever its direction in the source, its ends on the hub faces, an axis hint
+    wheel = next(p for p in lib.parts if p.label == "wheel")
+    ext = np.ptp(wheel.vertices, axis=0)
+    assert abs(ext[0] - 0.06) < 1e-6 and abs(ext[1] - 0.06) < 1e-6 and abs(ext[2] - 0.030) < 1e-6
+    assert abs(wheel.supports["axle_b"][2] - wheel.supports["axle_a"][2] - ext[2]) < 1e-9
+    assert wheel.axis is not None and abs(abs(wheel.axis[1][2]) - 1.0) < 1e-9
 
 
 def test_support_points_beat_bounding_boxes(libs):
     for name in ("messy", "builtin"):
-        rows = study(load_library(libs[name]), 100, seed=1)
+        lib = load_library(libs[name])
+        rows = study(lib, 100, seed=1)
         s = summary(rows)
         assert s["support"]["placements"] == 100
         assert s["support"]["within_0.5mm"] == 100
         assert s["support"]["max_lateral_mm"] <= 1.0
         assert s["bbox"]["within_0.5mm"] < 100  # bounding boxes leave gaps or penetrations somewhere
+        for label in ("leg", "wheel"):  # 100 placements of each new label on procedural legs and wheels
+            s = summary(study(lib, 100, seed=1, label=label))
+            assert s["support"]["placements"] == 100 and s["support"]["within_0.5mm"] == 100, (name, label, s)
+            assert s["support"]["max_lateral_mm"] <= 1.0
+    # the bolted leg: its box puts the bolt's end under the table top and leaves the leg 30 mm short of it
+    # (scaled); its support points put the shoulder there
+    s = summary(study(load_library(libs["messy"]), 100, seed=1, label="leg"))
+    assert s["bbox"]["max_gap_mm"] > 10.0 and s["bbox"]["within_0.5mm"] < 100
 
 
 def _digest(folder: Path) -> str:
@@ -191,8 +238,11 @@ def test_generated_with_library_validate_in_sim(libs, name, tmp_path):
             with_parts.append(str(m.parent))
     assert sorted(retrieved) == sorted(RETRIEVABLE)
     # many objects carry a retrieved part (not all: a dish drawer, a barn door or recessed-grip fronts have
-    # no handle or knob slot; the built-in library's 2 seeds x 9 categories gave 6 after the new designs)
-    assert len(with_parts) >= len(RETRIEVABLE) // 2
+    # no handle or knob slot, a pedestal table no leg)
+    assert len(with_parts) >= len(RETRIEVABLE) // 3
+    got = {r["label"] for m in with_parts for r in json.loads((Path(m) / "metadata.json").read_text())
+           ["retrieved_parts"]}
+    assert {"leg", "wheel"} <= got  # legs and caster wheels were retrieved somewhere
     # the others drew nothing retrievable: byte for byte the procedural objects the category tests validate
     r = subprocess.run([sys.executable, "-m", "infmob_usd", "validate", "--sim", *with_parts, "--workers", "2"],
                        capture_output=True, text=True)
@@ -283,3 +333,36 @@ def test_import_mesh_folder_with_csv(tmp_path, capsys):
     assert set(parts["knob"].supports) == {"stem"}
     assert main(["parts", "check", str(lib), "--placements", "20"]) == 0
     assert "support placement over 20 placements" in capsys.readouterr().out
+
+
+def _wheel_joints(lib, seed=0):
+    from infmob_usd.api import blueprint
+    from infmob_usd.retrieval import ACTIVE, Retriever
+
+    token = ACTIVE.set(Retriever(load_library(lib), 1.0, "office_chair", seed)) if lib else None
+    try:
+        bp = blueprint("office_chair", seed)
+    finally:
+        if token is not None:
+            ACTIVE.reset(token)
+    return {j.child: j.dofs[0] for j in bp.joints if j.child.startswith("wheel")}
+
+
+def test_wheel_turns_about_the_mesh_axle(libs, tmp_path):
+    """A wheel's joint goes through the placed mesh's own axle (its axis hint), not the procedural one."""
+    plain, same = _wheel_joints(None), _wheel_joints(libs["builtin"])
+    assert plain and set(plain) == set(same)
+    for k, d in plain.items():  # the built-in wheels' axles are the procedural ones
+        assert np.allclose(same[k].origin, d.origin, atol=1e-9) and np.allclose(same[k].axis, d.axis, atol=1e-9)
+    lib = tmp_path / "offset"
+    shutil.copytree(libs["builtin"], lib)
+    for pj in lib.glob("wheel/*/part.json"):  # every wheel's axle 2 mm off its middle, across the axle
+        d = json.loads(pj.read_text())
+        d["joint_hints"]["axis"]["point"][0] += 0.002
+        pj.write_text(json.dumps(d))
+    moved = _wheel_joints(lib)
+    for k, d in plain.items():
+        off = np.subtract(moved[k].origin, d.origin)
+        assert 0.001 < np.linalg.norm(off) < 0.0035  # 2 mm times the wheel's fitted scale
+        assert abs(float(off @ np.asarray(d.axis))) < 1e-9  # across the axle, which keeps its direction
+        assert np.allclose(np.abs(moved[k].axis), np.abs(d.axis), atol=1e-9)

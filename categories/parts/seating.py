@@ -121,9 +121,13 @@ def fork(c: Caster) -> Assembly:
 
 
 def wheels(c: Caster) -> list[Assembly]:
-    """The caster's wheels in the leg tip's frame (anchor ``axle``: z along the axle)."""
+    """The caster's wheels in the leg tip's frame (anchor ``axle``: z along the axle); supports ``axle_a``
+    / ``axle_b`` where the axle meets the wheel's faces, part frame ``part_frame`` at its middle."""
     axle = Frame.at(c.axle, z=(1, 0, 0))
-    return [Assembly.single("wheel", pcs, {"axle": axle}) for pcs in c.wheels]
+    _, y, z = c.axle
+    return [Assembly.single("wheel", pcs, {"axle": axle, "part_frame": Frame.at(((x0 + x1) / 2, y, z), z=(1, 0, 0))},
+                            {"axle_a": (x0, y, z), "axle_b": (x1, y, z)})
+            for pcs, (x0, x1) in zip(c.wheels, c.spans, strict=True)]
 
 
 # -- bases ------------------------------------------------------------------------------------------------
@@ -523,7 +527,7 @@ class ChairNodes(Layout):
     def caster(self, node, tip, caster, i):
         f = self.place(fork(caster).placed(tip), f"caster_{i}")
         self.spin("base", f.root, f.anchor("swivel"), role="swivel")
-        self.grow(node.one(node.choice), fork=f, wheels=[w.placed(tip) for w in wheels(caster)], i=i)
+        self.grow(node.one(node.choice), fork=f, wheels=[w.mounted(tip) for w in wheels(caster)], i=i)
 
     def twin(self, node, fork, wheels, i):
         for k, w in enumerate(wheels):

@@ -13,7 +13,8 @@ import math
 import numpy as np
 
 from infmob_usd import geometry as g
-from infmob_usd.frames import Frame, polar
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import IDENTITY, Frame, polar
 
 BOARD = 0.018  # apron and shelf board
 WALL = 0.003  # metal tube wall
@@ -139,6 +140,20 @@ def tube_leg(radius: float, height: float, material: str, foot: str) -> list[g.P
     gh, share = GLIDE
     return [g.cylinder((0, 0, gh), (0, 0, height), radius, material, 24),
             g.cylinder((0, 0, 0), (0, 0, gh + 0.002), share * radius, foot, 24)]
+
+
+def leg_part(style: str, radius: float, height: float, material: str, kind: str = "coffee",
+             foot: str | None = None) -> Assembly:
+    """A leg of any style (:func:`leg`'s, ``"hairpin"``: :func:`hairpin_leg`, ``"tube"``: :func:`tube_leg` on a
+    glide in ``foot``) as a part a library may replace: anchor ``foot`` (the origin); supports ``foot`` on
+    the floor and ``top`` under what it carries."""
+    if style == "hairpin":
+        pieces = hairpin_leg(radius, height, material)
+    elif style == "tube":
+        pieces = tube_leg(radius, height, material, foot or material)
+    else:
+        pieces = leg(style, radius, height, material, kind)
+    return Assembly.single("leg", pieces, {"foot": IDENTITY}, {"foot": (0.0, 0.0, 0.0), "top": (0.0, 0.0, height)})
 
 
 def leg_frames(width: float, shape: str, inset: float, count: int) -> list[Frame]:

@@ -1,6 +1,7 @@
 """Seconds per object with and without retrieval (warm library cache), A/B interleaved.
 
-Usage: python docs/examples/retrieval_timing.py LIB [SEEDS] [save]   (README, "Part libraries: Measured")
+Usage: python docs/examples/retrieval_timing.py LIB [SEEDS] [save|nosave] [CATEGORIES]
+(README, "Part libraries: Measured"; CATEGORIES comma-separated, default the seven with handles)
 """
 import statistics
 import sys
@@ -13,6 +14,8 @@ from infmob_usd.partlib import load_library
 lib = load_library(sys.argv[1])
 SAVE = len(sys.argv) > 3 and sys.argv[3] == "save"
 cats = ["kitchen_cabinet", "microwave", "beverage_fridge", "dishwasher", "oven", "pot", "pan"]
+if len(sys.argv) > 4:
+    cats = sys.argv[4].split(",")
 seeds = range(int(sys.argv[2]) if len(sys.argv) > 2 else 4)
 for c in cats:  # warm: imports, texture cache, library
     generate(c, 99, 16)
