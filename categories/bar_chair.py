@@ -23,6 +23,7 @@ import math
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
@@ -253,4 +254,4 @@ def arms_need_a_back(p: dict) -> dict:
 
 
 CATEGORY = Category("bar_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, StoolLayout,
-                    S.CHAIR_MATERIALS, derive=arms_need_a_back)
+                    S.CHAIR_MATERIALS, derive=arms_need_a_back, palette=furniture)

@@ -30,6 +30,7 @@ from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import seating as S
@@ -370,4 +371,4 @@ class TableLayout(Layout):
 
 
 CATEGORY = Category("cocktail_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS,
-                    derive=nest_size)
+                    derive=nest_size, palette=furniture)

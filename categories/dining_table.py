@@ -26,6 +26,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
@@ -403,4 +404,4 @@ class TableLayout(Layout):
 
 
 CATEGORY = Category("dining_table", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, TableLayout, MATERIALS,
-                    derive=has_a_moving_part)
+                    derive=has_a_moving_part, palette=furniture)

@@ -25,6 +25,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import doors as P
@@ -379,4 +380,4 @@ class DoorLayout(Layout):
 
 
 CATEGORY = Category("door", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DoorLayout, MATERIALS,
-                    derive=frame_family)
+                    derive=frame_family, palette=furniture)

@@ -36,6 +36,7 @@ from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame, cells
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import cabinetry as cab
@@ -514,4 +515,5 @@ class CabinetLayout(Layout):
         name = self.add(f"flap_{c}", "door", pieces)
         self.hinge("carcass", name, hinge, upper=cab.FLAP)
 
-CATEGORY = Category("kitchen_cabinet", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, CabinetLayout, MATERIALS)
+CATEGORY = Category("kitchen_cabinet", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, CabinetLayout, MATERIALS,
+                    palette=furniture)

@@ -69,7 +69,7 @@ import math
 
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
-from infmob_usd.materials.palettes import BULB_GLASS
+from infmob_usd.materials.palettes import BULB_GLASS, furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import lamps as L
@@ -207,4 +207,4 @@ def fit_parts(p: dict) -> dict:
 
 
 CATEGORY = Category("lamp", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, LampLayout, MATERIALS,
-                    derive=fit_parts)
+                    derive=fit_parts, palette=furniture)

@@ -27,6 +27,7 @@ from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
@@ -267,4 +268,4 @@ class ChairLayout(S.ChairNodes):
 
 
 CATEGORY = Category("office_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, ChairLayout,
-                    S.CHAIR_MATERIALS, derive=drafting_height)
+                    S.CHAIR_MATERIALS, derive=drafting_height, palette=furniture)

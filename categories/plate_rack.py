@@ -20,6 +20,7 @@ from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import racks as R
@@ -223,4 +224,4 @@ class RackLayout(Layout):
 
 
 CATEGORY = Category("plate_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,
-                    derive=wire_has_legs)
+                    derive=wire_has_legs, palette=furniture)

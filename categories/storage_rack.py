@@ -29,6 +29,7 @@ import numpy as np
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import racks as R
@@ -330,4 +331,4 @@ class RackLayout(Layout):
                    upper=self.p["tote_travel"] * (xs[1] - xs[0]))
 
 
-CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS)
+CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS, palette=furniture)

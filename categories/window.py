@@ -45,6 +45,7 @@ import numpy as np
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import windows as P
@@ -317,4 +318,4 @@ class WindowLayout(Layout):
 
 
 CATEGORY = Category("window", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, WindowLayout, MATERIALS,
-                    derive=fit_frame)
+                    derive=fit_frame, palette=furniture)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from .families import split_spec
 
-__all__ = ["APPLIANCE", "BULB_GLASS", "appliance"]
+__all__ = ["APPLIANCE", "BULB_GLASS", "FURNITURE", "appliance", "furniture"]
 
 APPLIANCE: dict[str, str] = {
     # Finishes sold for microwaves, ovens, wine/beverage fridges and dishwashers by Bosch,
@@ -30,6 +30,20 @@ APPLIANCE: dict[str, str] = {
 }
 """Appliance finishes: family -> the variants real appliances are sold in."""
 
+FURNITURE: dict[str, str] = {
+    # Painted furniture, kitchen fronts and carcasses, lamp poles: white first (47 % of kitchens in an NKBA
+    # survey, grey next at 17 %: tipking.com/kitchen/what-is-the-most-popular-color-for-kitchen-cabinets),
+    # then the off-whites, greys, sage / grey-green, navy and matte black that cabinet and furniture paint
+    # ranges are sold in (yahoo.com/lifestyle/7-paint-colors-loving-kitchen-212826925.html: Sherwin-Williams
+    # Naval and Pewter Green, Benjamin Moore Onyx; homeplaceparts.com/what-color-should-i-paint-my-kitchen-
+    # cabinets: sage, cream and off-white, charcoal). No pastel pink, yellow or baby blue carcasses.
+    "painted": "painted:white|white|off_white|light_grey|grey|charcoal|sage|navy|black",
+    # moulded furniture parts (chair shells and bases, lamp fittings and switches, feet): black, greys, white
+    "plastic": "plastic:black|dark_grey|light_grey|white",
+}
+"""Furniture and lamp finishes: family -> the variants they are sold in (white listed twice: drawn twice as
+often)."""
+
 BULB_GLASS = "glass:frosted"
 """A household bulb: opal (frosted) warm-white glass, as the common A19/A60 LED and
 incandescent bulbs (Philips, Osram, IKEA)."""
@@ -40,3 +54,10 @@ def appliance(spec: str) -> str:
     without an appliance palette (chrome, rubber ...), is returned unchanged."""
     family, variants = split_spec(spec)
     return spec if variants else APPLIANCE.get(family, spec)
+
+
+def furniture(spec: str) -> str:
+    """``spec`` restricted to furniture finishes (:data:`FURNITURE`); a spec that names its variants, or a
+    family without a furniture palette (wood, chrome, fabric ...), is returned unchanged."""
+    family, variants = split_spec(spec)
+    return spec if variants else FURNITURE.get(family, spec)

@@ -168,3 +168,27 @@ def test_tv_screen_is_glossy_and_bulbs_warm_white():
     assert tv.materials["display"].family == "screen" and tv.materials["display"].roughness < 0.1
     lamp = infmob_usd.generate("lamp", seed=0, texture_size=16, has_bulb=True)
     assert lamp.materials["bulb"].variant == "frosted"
+
+
+
+@pytest.mark.parametrize("category", ["kitchen_cabinet", "lamp", "cocktail_table", "dining_table", "office_chair",
+                                      "bar_chair", "plate_rack", "storage_rack", "door", "window"])
+def test_furniture_wears_real_paint_and_plastic_colours(category):
+    """Kitchens, tables, chairs, lamps, racks, doors and windows draw painted and moulded parts from the
+    furniture palette (materials.palettes.FURNITURE): no pastel-pink carcass, no teal lamp fitting. A slot
+    that names its own variants (a bar stool's coloured seat, a storage crate) keeps them."""
+    from infmob_usd.materials.palettes import FURNITURE
+
+    cat = infmob_usd.get_category(category)
+    checked = 0
+    for seed in range(8):
+        obj = infmob_usd.generate(category, seed=seed, texture_size=16)
+        specs = cat.resolve_materials(obj.params)
+        for slot, look in obj.materials.items():
+            family, variants = split_spec(specs[slot])
+            assert variants or family not in FURNITURE, (slot, specs[slot])  # no bare painted / plastic
+            if specs[slot] == FURNITURE.get(family):
+                assert look.variant in variants, (slot, look.variant)
+                checked += 1
+    if category in ("kitchen_cabinet", "lamp", "cocktail_table"):  # their paints and fittings come from it
+        assert checked
