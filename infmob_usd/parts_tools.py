@@ -18,8 +18,8 @@ from .retrieval import FIT_ANCHOR, bbox_fit, candidates, part_frame, support_fit
 
 
 def builtin_entries() -> list[Entry]:
-    """The procedural handles, knobs, table legs and caster wheels of ``categories/parts`` as library
-    parts (in their part frames), with their exact convex pieces."""
+    """The procedural handles (bar, edge and bow pulls), knobs, table legs and caster wheels of
+    ``categories/parts`` as library parts (in their part frames), with their exact convex pieces."""
     import trimesh
 
     from .categories.parts import doors, hardware, seating, tables
@@ -29,6 +29,7 @@ def builtin_entries() -> list[Entry]:
         "builtin_bar_160": hardware.bar_handle(0.16, "main"),
         "builtin_bar_320": hardware.bar_handle(0.32, "main"),
         "builtin_edge_200": hardware.edge_pull(0.20, "main"),
+        "builtin_bow_128": hardware.bow_handle(0.128, "main"),
         "builtin_knob_30": hardware.knob_handle(0.015, 0.025, "main"),
         "builtin_lid_knob_20": V.lid_knob(0.02, "main"),
         "builtin_door_knob_28": doors.knob_part(0.028),
