@@ -118,6 +118,26 @@ def effort_of(model, i: int) -> float:
     return float(min(-lo, hi))
 
 
+def _limits(model, moving: list[int]) -> tuple[list[int], tuple]:
+    """The limited joints among ``moving`` and ``(qpos addresses, lower, upper, range)`` of them."""
+    limited = [i for i in moving if model.jnt_limited[i]]
+    lo = np.array([model.jnt_range[i][0] for i in limited])
+    hi = np.array([model.jnt_range[i][1] for i in limited])
+    qadr = np.array([model.jnt_qposadr[i] for i in limited], int)
+    return limited, (qadr, lo, hi, np.maximum(hi - lo, 1e-12))
+
+
+def _run(mujoco, model, data, steps: int, bounds: tuple) -> np.ndarray:
+    """Step ``data`` ``steps`` times (with whatever forces it holds): ``(2, n)`` the furthest each limited
+    joint of ``bounds`` (:func:`_limits`) went past its lower and its upper limit, per range."""
+    qadr, lo, hi, span = bounds
+    worst = np.full((2, len(qadr)), -np.inf)
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+        worst = np.maximum(worst, _past(data.qpos[qadr], lo, hi, span))
+    return worst
+
+
 def push_joints(model, duration: float = PUSH_TIME, rest: bool = True) -> list[Push]:
     """Push every hinge or slide joint alone with its effort towards each limit (module docstring).
 
@@ -128,11 +148,7 @@ def push_joints(model, duration: float = PUSH_TIME, rest: bool = True) -> list[P
     mujoco = import_mujoco()
     data = mujoco.MjData(model)
     names, moving = _joint_info(model)
-    limited = [i for i in moving if model.jnt_limited[i]]
-    lo = np.array([model.jnt_range[i][0] for i in limited])
-    hi = np.array([model.jnt_range[i][1] for i in limited])
-    span = np.maximum(hi - lo, 1e-12)
-    qadr = np.array([model.jnt_qposadr[i] for i in limited], int)
+    limited, bounds = _limits(model, moving)
     steps = int(round(duration / model.opt.timestep))
     still = rest_excess(model, duration) if rest else {}
     slide = int(mujoco.mjtJoint.mjJNT_SLIDE)
@@ -144,10 +160,7 @@ def push_joints(model, duration: float = PUSH_TIME, rest: bool = True) -> list[P
             mujoco.mj_resetData(model, data)
             sign = 1.0 if side == "upper" else -1.0
             data.qfrc_applied[model.jnt_dofadr[i]] = sign * effort
-            worst = np.full((2, len(limited)), -np.inf)
-            for _ in range(steps):
-                mujoco.mj_step(model, data)
-                worst = np.maximum(worst, _past(data.qpos[qadr], lo, hi, span))
+            worst = _run(mujoco, model, data, steps, bounds)
             q_end = float(data.qpos[model.jnt_qposadr[i]])
             if model.jnt_limited[i]:
                 a, b = model.jnt_range[i]
@@ -175,17 +188,9 @@ def rest_excess(model, duration: float = PUSH_TIME) -> dict[str, tuple[float, fl
     ``<mujoco>`` element, and ``option``'s ``o_solref`` / ``o_solimp`` override contacts only), so a
     6 mm push-pull spout sits 7 % of its range past its stop in MuJoCo at rest."""
     mujoco = import_mujoco()
-    data = mujoco.MjData(model)
     names, moving = _joint_info(model)
-    limited = [i for i in moving if model.jnt_limited[i]]
-    lo = np.array([model.jnt_range[i][0] for i in limited])
-    hi = np.array([model.jnt_range[i][1] for i in limited])
-    span = np.maximum(hi - lo, 1e-12)
-    qadr = np.array([model.jnt_qposadr[i] for i in limited], int)
-    worst = np.full((2, len(limited)), -np.inf)
-    for _ in range(int(round(duration / model.opt.timestep))):
-        mujoco.mj_step(model, data)
-        worst = np.maximum(worst, _past(data.qpos[qadr], lo, hi, span))
+    limited, bounds = _limits(model, moving)
+    worst = _run(mujoco, model, mujoco.MjData(model), int(round(duration / model.opt.timestep)), bounds)
     return {names[i]: (float(worst[0, k]), float(worst[1, k])) for k, i in enumerate(limited)}
 
 
