@@ -234,17 +234,22 @@ ROTARY_TURN = 5.2  # a rotary dimmer knob turns about 300 degrees end to end (Lu
 ROTARY_H = 0.014  # knob height above its boss
 
 
+def _on_base_top(p: dict, q: dict, half: float) -> tuple[float, float]:
+    """``(radius, height)`` on the base's top where a control ``half`` wide (radially) sits: near the rim of
+    a square or round base, in the middle of a dome's flat rim."""
+    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+    if shape == "square":
+        return 0.9 * R - half - 0.006, t
+    if shape == "round":
+        return R - 0.4 * t - half - 0.004, t
+    return 0.85 * R, 0.5 * t
+
+
 def _rotary(bp: Blueprint, p: dict, q: dict) -> None:
     """A rotary dimmer knob standing on the base's top (on a dome's flat rim), turning about z: a boss in the
     base, the knob 1 mm above it with a pointer rib on top. About a vertical axis it is neutral under gravity."""
-    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
-    r_k = float(np.clip(0.1 * R, 0.008, 0.012))
-    if shape == "square":
-        rho, z = 0.9 * R - r_k - 0.006, t
-    elif shape == "round":
-        rho, z = R - 0.4 * t - r_k - 0.004, t
-    else:  # the middle of the dome's flat rim
-        rho, z = 0.85 * R, 0.5 * t
+    r_k = float(np.clip(0.1 * q["R"], 0.008, 0.012))
+    rho, z = _on_base_top(p, q, r_k)
     a = q["switch_angle"]
     c = np.array([rho * math.cos(a), rho * math.sin(a), 0.0])
     boss = g.cylinder(c + (0, 0, z - 0.001), c + (0, 0, z + 0.003), 0.45 * r_k, "switch", 20)
@@ -262,14 +267,8 @@ def _rocker(bp: Blueprint, p: dict, q: dict) -> None:
     tangent. Balanced on its pivot, it rests on its "off" stop."""
     from .hardware import ROCKER, rocker_switch
 
-    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
     half = ROCKER["length"] / 2
-    if shape == "square":
-        rho, z = 0.9 * R - half - 0.006, t
-    elif shape == "round":
-        rho, z = R - 0.4 * t - half - 0.004, t
-    else:  # the middle of the dome's flat rim
-        rho, z = 0.85 * R, 0.5 * t
+    rho, z = _on_base_top(p, q, half)
     rho = max(rho, q["r_lo"] + half + 0.008)  # clear of the lower pole's tube
     a = q["switch_angle"]
     rocker = rocker_switch("switch").attached(
