@@ -49,15 +49,18 @@ BULB_GLASS = "glass:frosted"
 incandescent bulbs (Philips, Osram, IKEA)."""
 
 
-def appliance(spec: str) -> str:
-    """``spec`` restricted to appliance finishes; a spec that names its variants, or a family
-    without an appliance palette (chrome, rubber ...), is returned unchanged."""
+def _restricted(spec: str, palette: dict[str, str]) -> str:
+    """``spec`` restricted to ``palette``'s variants; a spec that names its variants, or a family the
+    palette has no entry for, is returned unchanged."""
     family, variants = split_spec(spec)
-    return spec if variants else APPLIANCE.get(family, spec)
+    return spec if variants else palette.get(family, spec)
+
+
+def appliance(spec: str) -> str:
+    """``spec`` restricted to appliance finishes (:data:`APPLIANCE`; chrome, rubber ... unchanged)."""
+    return _restricted(spec, APPLIANCE)
 
 
 def furniture(spec: str) -> str:
-    """``spec`` restricted to furniture finishes (:data:`FURNITURE`); a spec that names its variants, or a
-    family without a furniture palette (wood, chrome, fabric ...), is returned unchanged."""
-    family, variants = split_spec(spec)
-    return spec if variants else FURNITURE.get(family, spec)
+    """``spec`` restricted to furniture finishes (:data:`FURNITURE`; wood, chrome, fabric ... unchanged)."""
+    return _restricted(spec, FURNITURE)
