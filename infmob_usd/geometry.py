@@ -51,6 +51,12 @@ def triangle_cross(tri: np.ndarray) -> np.ndarray:
     return cross_rows(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
 
 
+_EYE3 = np.eye(3)
+_EYE3.flags.writeable = False
+_EYE4 = np.eye(4)
+_EYE4.flags.writeable = False
+
+
 class _Band:
     """Shell wedges that are turned copies of one prototype point set ``src`` (its hull topology,
     found once when first needed, serves them all); ``axis`` None: a stretched band, whose
@@ -126,8 +132,10 @@ class Piece:
     bands: tuple = field(default=(), init=False, repr=False)  # per convex piece: (_Band, turn angle) or None
 
     def __init__(self, vertices, faces, material: str, convex=(), name: str = "", sheet: float = 0.0,
-                 hulls=None, bands=None, _owned: bool = False, wall: float | None = None) -> None:
-        # _owned (internal): every array given was made for this piece alone, freeze it in place
+                 hulls=None, bands=None, _owned: bool = False, wall: float | None = None,
+                 _checked: Piece | None = None) -> None:
+        # _owned (internal): every array given was made for this piece alone, freeze it in place;
+        # _checked (internal): a checked piece whose faces these are (a moved copy)
         put = object.__setattr__
         put(self, "vertices", _frozen(vertices, np.float64, _owned))
         put(self, "faces", _frozen(faces, np.int64, _owned))
@@ -148,23 +156,31 @@ class Piece:
         put(self, "hulls_known", tuple(known))
         b = tuple(bands or ())
         put(self, "bands", b[:n] + (None,) * (n - len(b[:n])))
-        self.check()
+        self._check(_checked)
 
     def check(self) -> None:
         """Raise :class:`GeometryError` if the mesh is corrupt."""
+        self._check(None)
+
+    def _check(self, like: Piece | None) -> None:
+        """:meth:`check`; the face indices are not checked again against a ``like`` piece's vertex
+        count when they are its faces."""
         v, f = self.vertices, self.faces
-        what = f"piece {self.name or self.material!r}"
         if v.ndim != 2 or v.shape[1] != 3 or len(v) < 3:
-            raise GeometryError(f"{what}: vertices must be (n>=3, 3), got {v.shape}")
+            raise GeometryError(f"{self._what()}: vertices must be (n>=3, 3), got {v.shape}")
         if f.ndim != 2 or f.shape[1] != 3 or len(f) < 1:
-            raise GeometryError(f"{what}: faces must be (m>=1, 3), got {f.shape}")
+            raise GeometryError(f"{self._what()}: faces must be (m>=1, 3), got {f.shape}")
         if not np.isfinite(v).all():
-            raise GeometryError(f"{what}: vertices contain NaN or inf; fix the part's dimensions")
-        if f.min() < 0 or f.max() >= len(v):
-            raise GeometryError(f"{what}: a face indexes a missing vertex (corrupt mesh)")
+            raise GeometryError(f"{self._what()}: vertices contain NaN or inf; fix the part's dimensions")
+        if like is None or f is not like.faces or len(v) != len(like.vertices):
+            if f.min() < 0 or f.max() >= len(v):
+                raise GeometryError(f"{self._what()}: a face indexes a missing vertex (corrupt mesh)")
         for c in self.convex:
             if c.ndim != 2 or c.shape[1] != 3 or len(c) < 4 or not np.isfinite(c).all():
-                raise GeometryError(f"{what}: a convex collision piece needs >= 4 finite points")
+                raise GeometryError(f"{self._what()}: a convex collision piece needs >= 4 finite points")
+
+    def _what(self) -> str:
+        return f"piece {self.name or self.material!r}"
 
     def replace(self, **changes) -> Piece:
         """A copy with some fields changed (``vertices``, ``faces``, ``material``, ``convex``,
@@ -190,14 +206,21 @@ class Piece:
     # -- transforms ---------------------------------------------------------
     def transformed(self, matrix: np.ndarray) -> Piece:
         """A copy moved by a ``(4, 4)`` transform (rigid, or a stretch that keeps orientation)."""
-        r, t = matrix[:3, :3], matrix[:3, 3]
-        convex = [c @ r.T + t for c in self.convex]
-        keeps = np.linalg.det(r) > 0  # an orientation-keeping map keeps hull topologies, faces outward
+        r = matrix[:3, :3]
+        return self._moved(r, matrix[:3, 3], np.linalg.det(r) > 0, None)
+
+    def _moved(self, r: np.ndarray, t: np.ndarray, keeps: bool, rigid: bool | None) -> Piece:
+        """:meth:`transformed` by rotation (or stretch) ``r`` and translation ``t``; ``keeps``: ``r``
+        keeps orientation; ``rigid``: ``r`` is a rotation (None: find out if needed)."""
+        rt = r.T
+        convex = [c @ rt + t for c in self.convex]
+        # an orientation-keeping map keeps hull topologies, faces outward
         hulls, bands = None, None
         if keeps:
-            hulls = [None if e is None else (e[0] @ r.T + t, e[1]) for e in self._hulls_so_far()]
+            hulls = [None if e is None else (e[0] @ rt + t, e[1]) for e in self._hulls_so_far()]
         if keeps and any(b is not None for b in self.bands):
-            rigid = np.allclose(r @ r.T, np.eye(3), atol=1e-9)
+            if rigid is None:
+                rigid = np.allclose(r @ rt, np.eye(3), atol=1e-9)
             moved: dict[int, _Band] = {}
             bands = []
             for hint in self.bands:
@@ -210,18 +233,18 @@ class Piece:
                     intact = first < len(self.bands) and self.bands[first] is not None and \
                         self.bands[first][0] is band
                     moved[id(band)] = _Band(
-                        convex[first] if intact else band.src @ r.T + t, band.topology, first,
+                        convex[first] if intact else band.src @ rt + t, band.topology, first,
                         r @ band.point + t,
                         # a stretch keeps the hull topology but the wedges stop being turned copies
                         r @ band.axis if rigid and band.axis is not None else None)
                 bands.append((moved[id(band)], angle))
-        return Piece(self.vertices @ r.T + t, self.faces, self.material, convex, self.name, self.sheet,
-                     hulls, bands, _owned=True, wall=self.wall)
+        return self._same_faces(Piece(self.vertices @ rt + t, self.faces, self.material, convex, self.name,
+                                      self.sheet, hulls, bands, _owned=True, wall=self.wall, _checked=self))
 
     def translated(self, offset: Sequence[float]) -> Piece:
-        m = np.eye(4)
-        m[:3, 3] = offset
-        return self.transformed(m)
+        t = np.empty(3)
+        t[:] = offset  # as transformed() by a 4x4 identity with this translation column, bit for bit
+        return self._moved(_EYE4[:3, :3], t, True, True)
 
     @property
     def bounds(self) -> np.ndarray:
@@ -345,6 +368,20 @@ class Piece:
             out[k] = (j, rot, t)
         return out
 
+    def closed(self) -> bool:
+        """:func:`is_closed` of the faces (computed once; copies with the same faces share it)."""
+        memo = self.__dict__.get("_closed")
+        if memo is None:
+            memo = is_closed(self.faces)
+            object.__setattr__(self, "_closed", memo)  # a cache of a pure function of the faces
+        return memo
+
+    def _same_faces(self, other: Piece) -> Piece:
+        """``other`` (a copy of this piece with the same faces) with what is known of them."""
+        if "_closed" in self.__dict__ and other.faces is self.faces:
+            object.__setattr__(other, "_closed", self.__dict__["_closed"])
+        return other
+
     def volume(self) -> float:
         """Solid volume in m^3: the mesh's if it is closed, else its convex pieces' (the solids
         its mass comes from, :func:`solids`)."""
@@ -359,15 +396,41 @@ def is_closed(faces: np.ndarray) -> bool:
     """Whether a triangle mesh is closed and consistently oriented: every directed edge
     appears exactly once and so does its reverse (what ``trimesh.is_watertight`` and
     ``is_winding_consistent`` check, without building a Trimesh)."""
-    f = np.asarray(faces, np.int64)
+    f = faces if type(faces) is np.ndarray and faces.dtype == np.int64 else np.asarray(faces, np.int64)
     if not len(f):
         return False
     n = int(f.max()) + 1
-    a, b = f.ravel(), f[:, [1, 2, 0]].ravel()
-    fwd = np.sort(a * n + b)
+    a, b = f.ravel(), f[:, _NEXT_CORNER].ravel()
+    fwd = a * n + b
+    fwd.sort()
     if (fwd[1:] == fwd[:-1]).any():
         return False
-    return bool(np.array_equal(fwd, np.sort(b * n + a)))
+    bwd = b * n + a
+    bwd.sort()
+    return bool((fwd == bwd).all())
+
+
+_NEXT_CORNER = np.array([1, 2, 0])
+
+
+def _relative_triangles(vertices, faces) -> tuple[np.ndarray, np.ndarray]:
+    """``(ref, tri)``: the vertex mean and the ``(m, 3, 3)`` triangles relative to it."""
+    v = vertices if type(vertices) is np.ndarray and vertices.dtype == np.float64 else np.asarray(vertices, float)
+    f = faces if type(faces) is np.ndarray and faces.dtype == np.int64 else np.asarray(faces, np.int64)
+    ref = np.add.reduce(v, 0) / len(v)  # v.mean(0), bit for bit, without its wrapper
+    return ref, v[f] - ref
+
+
+def _twice_areas(tri: np.ndarray) -> np.ndarray:
+    """``(m,)`` lengths of :func:`triangle_cross` of ``tri`` (bit for bit its ``np.linalg.norm``)."""
+    e1 = tri[:, 1] - tri[:, 0]
+    e2 = tri[:, 2] - tri[:, 0]
+    ax, ay, az = e1[:, 0], e1[:, 1], e1[:, 2]
+    bx, by, bz = e2[:, 0], e2[:, 1], e2[:, 2]
+    x = ay * bz - az * by
+    y = az * bx - ax * bz
+    z = ax * by - ay * bx
+    return np.sqrt(x * x + y * y + z * z)
 
 
 def mass_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
@@ -378,21 +441,28 @@ def mass_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np.
     with one vertex at the reference point and edge vectors a, b, c is
     ``det[a b c] / 120 * (a a^T + b b^T + c c^T + s s^T)`` with ``s = a + b + c``.
     """
-    v = np.asarray(vertices, float)
-    ref = v.mean(0)  # close to the solid: no cancellation for parts far from the origin
-    tri = v[np.asarray(faces, np.int64)] - ref  # (m, 3, 3)
-    cross = cross_rows(tri[:, 1], tri[:, 2])
+    ref, tri = _relative_triangles(vertices, faces)
+    return _mass_of(ref, tri, _twice_areas(tri))
+
+
+def _mass_of(ref: np.ndarray, tri: np.ndarray, twice: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
+    """:func:`mass_properties` from :func:`_relative_triangles` and :func:`_twice_areas` (few numpy
+    calls: this runs for every piece of every object)."""
+    t1, t2 = tri[:, 1], tri[:, 2]
+    cross = np.empty((len(tri), 3))  # cross_rows(t1, t2)
+    cross[:, 0] = t1[:, 1] * t2[:, 2] - t1[:, 2] * t2[:, 1]
+    cross[:, 1] = t1[:, 2] * t2[:, 0] - t1[:, 0] * t2[:, 2]
+    cross[:, 2] = t1[:, 0] * t2[:, 1] - t1[:, 1] * t2[:, 0]
     det = np.einsum("ij,ij->i", tri[:, 0], cross)  # 6 x signed tetra volume
-    area = 0.5 * float(np.linalg.norm(triangle_cross(tri), axis=1).sum())
-    volume = float(det.sum()) / 6.0
+    area = 0.5 * float(np.add.reduce(twice))
+    volume = float(np.add.reduce(det)) / 6.0
     if abs(volume) <= 1e-15:
         return 0.0, ref, np.zeros((3, 3)), area
-    s = tri.sum(1)  # (m, 3)
+    s = np.add.reduce(tri, 1)  # (m, 3)
     centroid = (det @ s) / (24.0 * volume)
-    corners = tri.reshape(-1, 3)
-    second = ((corners * np.repeat(det, 3)[:, None]).T @ corners + (s * det[:, None]).T @ s) / 120.0
-    second -= volume * np.outer(centroid, centroid)  # about the centroid
-    inertia = np.trace(second) * np.eye(3) - second
+    second = ((tri * det[:, None, None]).reshape(-1, 3).T @ tri.reshape(-1, 3) + (s * det[:, None]).T @ s) / 120.0
+    second -= volume * (centroid[:, None] * centroid[None, :])  # about the centroid
+    inertia = (second[0, 0] + second[1, 1] + second[2, 2]) * _EYE3 - second
     return volume, centroid + ref, inertia, area
 
 
@@ -404,36 +474,53 @@ def shell_properties(vertices: np.ndarray, faces: np.ndarray) -> tuple[float, np
     Per triangle with corners ``p_i`` (from a reference point) and area ``a``, the second moment
     is ``a / 12 * (sum p_i p_i^T + s s^T)`` with ``s = sum p_i``.
     """
-    v = np.asarray(vertices, float)
-    ref = v.mean(0)
-    tri = v[np.asarray(faces, np.int64)] - ref  # (m, 3, 3)
-    a = 0.5 * np.linalg.norm(triangle_cross(tri), axis=1)  # (m,)
-    area = float(a.sum())
+    ref, tri = _relative_triangles(vertices, faces)
+    return _shell_of(ref, tri, _twice_areas(tri))
+
+
+def _shell_of(ref: np.ndarray, tri: np.ndarray, twice: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
+    """:func:`shell_properties` from :func:`_relative_triangles` and :func:`_twice_areas`."""
+    a = 0.5 * twice  # (m,)
+    area = float(np.add.reduce(a))
     if area <= 1e-15:
         return 0.0, ref, np.zeros((3, 3))
-    s = tri.sum(1)
+    s = np.add.reduce(tri, 1)
     centroid = (a @ s) / (3.0 * area)
-    corners = tri.reshape(-1, 3)
-    second = ((corners * np.repeat(a, 3)[:, None]).T @ corners + (s * a[:, None]).T @ s) / 12.0
-    second -= area * np.outer(centroid, centroid)
-    inertia = np.trace(second) * np.eye(3) - second
+    second = ((tri * a[:, None, None]).reshape(-1, 3).T @ tri.reshape(-1, 3) + (s * a[:, None]).T @ s) / 12.0
+    second -= area * (centroid[:, None] * centroid[None, :])
+    inertia = (second[0, 0] + second[1, 1] + second[2, 2]) * _EYE3 - second
     return area, centroid + ref, inertia
 
 
-def _solid_parts(piece: Piece) -> tuple[tuple, tuple]:
+def _measured(vertices, faces) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    ref, tri = _relative_triangles(vertices, faces)
+    return ref, tri, _twice_areas(tri)
+
+
+def _solid_parts(piece: Piece, with_shells: bool = False) -> tuple:
     """``(meshes, properties)``: the closed meshes a piece's mass comes from (its mesh if closed, with
-    volume, else its hulls) and their :func:`mass_properties`; computed once per piece (the piece is
-    immutable, so the cache never goes stale)."""
+    volume, else its hulls) and their :func:`mass_properties`; with ``with_shells`` a third entry,
+    their :func:`shell_properties`. Computed once per piece (the piece is immutable, so the cache
+    never goes stale); solids and shells share their triangles when computed together."""
     memo = piece.__dict__.get("_solids")
+    if memo is not None and (len(memo) == 3 or not with_shells):
+        return memo
     if memo is None:
-        if is_closed(piece.faces):
-            props = mass_properties(piece.vertices, piece.faces)
+        meshes = None
+        if piece.closed():
+            whole = _measured(piece.vertices, piece.faces)
+            props = _mass_of(*whole)
             if props[0] > 1e-12:
-                memo = (((piece.vertices, piece.faces),), (props,))
-        if memo is None:
+                meshes, measured, solid = ((piece.vertices, piece.faces),), [whole], (props,)
+        if meshes is None:
             meshes = tuple(piece.hulls())
-            memo = (meshes, tuple(mass_properties(v, f) for v, f in meshes))
-        object.__setattr__(piece, "_solids", memo)  # a cache of a pure function of the value
+            measured = [_measured(v, f) for v, f in meshes]
+            solid = tuple(_mass_of(*m) for m in measured)
+    else:
+        meshes, solid = memo
+        measured = [_measured(v, f) for v, f in meshes]
+    memo = (meshes, solid, tuple(_shell_of(*m) for m in measured)) if with_shells else (meshes, solid)
+    object.__setattr__(piece, "_solids", memo)  # a cache of a pure function of the value
     return memo
 
 
@@ -444,7 +531,7 @@ def solids(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray, float]]:
 
 def shells(piece: Piece) -> list[tuple[float, np.ndarray, np.ndarray]]:
     """:func:`shell_properties` of the same closed meshes :func:`solids` measures."""
-    return [shell_properties(v, f) for v, f in _solid_parts(piece)[0]]
+    return list(_solid_parts(piece, True)[2])
 
 
 # ---------------------------------------------------------------------------

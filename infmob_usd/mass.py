@@ -18,7 +18,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from .geometry import Piece, shells, solids
+from .geometry import _EYE3, Piece, _solid_parts
 
 DUMMY_MASS = 0.01
 """kg of a dummy link of a compound joint: light, never zero (zero means "compute it")."""
@@ -62,10 +62,11 @@ def inertial(pieces: Iterable[tuple]) -> tuple[float, np.ndarray, np.ndarray]:
     for entry in pieces:
         piece, density = entry[0], entry[1]
         family_wall = entry[2] if len(entry) > 2 else 0.0
-        parts = solids(piece)
         wall = wall_of(piece, family_wall)
+        measured = _solid_parts(piece, wall > 0)  # solids (and shells) measured once per piece
+        parts = measured[1]
         if wall > 0:
-            skins = shells(piece)
+            skins = measured[2]
             area = float(sum(s[0] for s in skins))
             if wall * area < float(sum(abs(s[0]) for s in parts)):
                 for a, centroid, unit_inertia in skins:
@@ -95,7 +96,7 @@ def inertial(pieces: Iterable[tuple]) -> tuple[float, np.ndarray, np.ndarray]:
     inertia = np.zeros((3, 3))
     for m, c, t in zip(masses, coms, tensors):
         d = c - com
-        inertia += t + m * (np.dot(d, d) * np.eye(3) - np.outer(d, d))
+        inertia += t + m * (np.dot(d, d) * _EYE3 - d[:, None] * d[None, :])  # np.eye(3), np.outer
     if total < MIN_MASS:
         inertia *= MIN_MASS / total
         total = MIN_MASS
