@@ -103,10 +103,14 @@ def _separated(a: np.ndarray, a_normals: np.ndarray, d: float, b: np.ndarray, b_
     """Whether a face plane of either hull separates the hull of points ``a`` grown by a cube of
     half-size ``d`` (:func:`_inflate`) from the hull of points ``b``: a sufficient test for
     "no overlap" (edge-edge separations are left to the exact test)."""
-    n = np.vstack([a_normals, b_normals])
-    pa, pb = a @ n.T, b @ n.T
-    grow = d * np.abs(n).sum(1)
-    return bool(np.any((pa.max(0) + grow < pb.min(0)) | (pa.min(0) - grow > pb.max(0))))
+    n = np.concatenate((a_normals, b_normals))
+    nt = n.T
+    pa, pb = a @ nt, b @ nt
+    amax, amin = np.maximum.reduce(pa, 0), np.minimum.reduce(pa, 0)
+    if d != 0:  # adding a zero grow changes no comparison
+        grow = d * np.add.reduce(np.abs(n), 1)
+        amax, amin = amax + grow, amin - grow
+    return bool(np.logical_or.reduce((amax < np.minimum.reduce(pb, 0)) | (amin > np.maximum.reduce(pb, 0))))
 
 
 def ensure_gaps(links, joints) -> list:
@@ -130,6 +134,7 @@ def ensure_gaps(links, joints) -> list:
         return p
 
     new_pieces: dict[str, list] = {}
+    boxes: dict[str, tuple | None] = {}  # per parent link: its convex pieces and their boxes, link frame
     for j in joints:
         child = by_name[j.child]
         if not j.movable or child.dummy or not child.pieces:
@@ -138,13 +143,30 @@ def ensure_gaps(links, joints) -> list:
         if not parent.pieces:
             continue
         offset = parent.origin - child.origin  # parent frame -> child frame (world-aligned at rest)
-        parent_hulls = [c + offset for p in parent.pieces for c in p.convex]
-        if not parent_hulls:
+        if parent.name not in boxes:
+            convex = [c for p in parent.pieces for c in p.convex]
+            if convex:
+                stacked = np.concatenate(convex)
+                starts = np.cumsum([0] + [len(c) for c in convex[:-1]])
+                boxes[parent.name] = (convex, np.minimum.reduceat(stacked, starts, axis=0),
+                                      np.maximum.reduceat(stacked, starts, axis=0))
+            else:
+                boxes[parent.name] = None
+        if boxes[parent.name] is None:
             continue
+        parent_convex, parent_lo, parent_hi = boxes[parent.name]
+        parent_hulls: dict[int, np.ndarray] = {}  # those met, moved into the child frame
+
+        def parent_hull(i, convex=parent_convex, offset=offset, moved=parent_hulls):
+            if i not in moved:
+                moved[i] = convex[i] + offset
+            return moved[i]
+
         parent_meshes = [vf for p in parent.pieces for vf in p.hulls()]
         normals: dict[int, np.ndarray] = {}  # face normals of the parent hulls met, as test directions
-        box_lo = np.array([h.min(0) for h in parent_hulls])
-        box_hi = np.array([h.max(0) for h in parent_hulls])
+        # the box of a translated point set is the translated box, bit for bit (rounding is monotone)
+        box_lo = parent_lo + offset
+        box_hi = parent_hi + offset
         pts = np.vstack([c for p in child.pieces for c in p.convex] or [np.zeros((1, 3))])
         gap = gap_size(np.ptp(pts, axis=0))
         cache: dict[int, manifold3d.Manifold] = {}
@@ -163,12 +185,12 @@ def ensure_gaps(links, joints) -> list:
                 for i in near:
                     if i not in normals:
                         normals[i] = _face_normals(*parent_meshes[i])
-                    if _separated(c, child_n, gap - 1e-6, parent_hulls[i], normals[i]):
+                    if _separated(c, child_n, gap - 1e-6, parent_hull(i), normals[i]):
                         continue  # a face plane separates them: no overlap, no exact test needed
                     if grown is None:
                         grown = manifold3d.Manifold.hull_points(_inflate(c, gap - 1e-6))
                     if i not in cache:
-                        cache[i] = manifold3d.Manifold.hull_points(parent_hulls[i])
+                        cache[i] = manifold3d.Manifold.hull_points(parent_hull(i))
                     if (grown ^ cache[i]).volume() > 1e-12:
                         hit = True
                         break
@@ -767,21 +789,27 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         names = sorted({n for pair in pairs for n in pair})
         obstacles = _Obstacles(names, hulls, poses, cache)
         index = {n: k for k, n in enumerate(names)}
-        link = np.repeat(np.arange(len(names)), [len(hulls[n]) for n in names])
-        wanted = np.zeros((len(names), len(names)), bool)
-        for a, b in pairs:
-            wanted[index[a], index[b]] = wanted[index[b], index[a]] = True
+        starts = np.cumsum([0] + [len(hulls[n]) for n in names]).tolist()
         lo, hi = obstacles.lo, obstacles.hi
-        near = np.all((lo[:, None] < hi[None] + CLEARANCE) & (lo[None] < hi[:, None] + CLEARANCE), axis=2)
-        near &= wanted[link[:, None], link[None, :]]
+        # link boxes first: hull boxes of two links whose boxes are not near are not near
+        # either (the same comparisons, monotone), so only near link pairs compare hull boxes
+        link_lo = np.minimum.reduceat(lo, starts[:-1], axis=0)
+        link_hi = np.maximum.reduceat(hi, starts[:-1], axis=0)
+        link_near = np.all((link_lo[:, None] < link_hi[None] + CLEARANCE)
+                           & (link_lo[None] < link_hi[:, None] + CLEARANCE), axis=2)
         out = set()
-        for u, v in zip(*np.nonzero(np.triu(near, 1))):
-            pair = tuple(sorted((names[link[u]], names[link[v]])))
-            if pair in out:
+        for pair in sorted(tuple(sorted(p)) for p in pairs):
+            ka, kb = index[pair[0]], index[pair[1]]  # ka < kb: the hulls of pair[0] come first
+            if pair in out or not link_near[ka, kb]:
                 continue
+            a0, a1, b0, b1 = starts[ka], starts[ka + 1], starts[kb], starts[kb + 1]
+            near = np.all((lo[a0:a1, None] < hi[None, b0:b1] + CLEARANCE)
+                          & (lo[None, b0:b1] < hi[a0:a1, None] + CLEARANCE), axis=2)
             d = margin if not isinstance(margin, dict) else margin[pair]
-            if _hits(obstacles.world[u], obstacles.normals(u), d, obstacles, v):
-                out.add(pair)
+            for u, v in zip(*np.nonzero(near)):
+                if _hits(obstacles.world[a0 + u], obstacles.normals(a0 + u), d, obstacles, b0 + v):
+                    out.add(pair)
+                    break
         return out
 
     def state(f, scale=None):
