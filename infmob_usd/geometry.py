@@ -39,7 +39,7 @@ CREASE_DEG = 35.0
 def cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row-wise cross product of ``(n, 3)`` arrays: ``np.cross`` without its per-call overhead
     (which dominates for the small arrays of hulls)."""
-    out = np.empty(np.broadcast_shapes(a.shape, b.shape))
+    out = np.empty(a.shape if a.shape == b.shape else np.broadcast_shapes(a.shape, b.shape))
     out[..., 0] = a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]
     out[..., 1] = a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]
     out[..., 2] = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
@@ -698,19 +698,61 @@ _HULL_TEMPLATES = {
 }
 
 
+def _template_used(n: int, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    used = np.unique(faces)
+    remap = np.full(n, -1)
+    remap[used] = np.arange(len(used))
+    return used, remap
+
+
+_TEMPLATE_USED = {n: _template_used(n, f) for n, f in _HULL_TEMPLATES.items()}
+
+
+def _box_hull(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """:func:`_template_hull` of 8 points that are exactly the corners of an axis-aligned box of
+    positive size in :func:`_box_arrays` order, in plain float arithmetic (the answer is then the
+    unit box's: every face normal is an axis, no point is outside a face plane, and the faces flip
+    alike); None where that is not certain (then the general check decides)."""
+    r = pts.tolist()
+    (x0, y0, z0), (x1, y1, z1) = r[0], r[7]
+    if not (x1 > x0 and y1 > y0 and z1 > z0):
+        return None
+    for i, (x, y, z) in enumerate(r):
+        if x != (x1 if i & 4 else x0) or y != (y1 if i & 2 else y0) or z != (z1 if i & 1 else z0):
+            return None
+    dx, dy, dz = x1 - x0, y1 - y0, z1 - z0
+    scale = max(dx, dy, dz)  # np.ptp(pts, axis=0).max()
+    # the general check's face normal lengths are sqrt(0 + 0 + (da * db) ** 2)
+    if min(math.sqrt((dx * dy) * (dx * dy)), math.sqrt((dy * dz) * (dy * dz)),
+           math.sqrt((dx * dz) * (dx * dz))) <= 1e-12 * scale * scale:
+        return None
+    cx, cy, cz = (np.add.reduce(pts, 0) / len(pts)).tolist()  # pts.mean(0): faces flip by its side
+    if not (x0 < cx < x1 and y0 < cy < y1 and z0 < cz < z1):
+        return None
+    return _UNIT_BOX_HULL[0].copy(), _UNIT_BOX_HULL[1].copy()
+
+
 def _template_hull(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
     """``(used point indices, faces over them)`` from a known layout, or None."""
+    if len(pts) == 8:
+        known = _box_hull(pts)
+        if known is not None:
+            return known
+    return _checked_template(pts)
+
+
+def _checked_template(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
     faces = _HULL_TEMPLATES.get(len(pts))
     if faces is None:
         return None
     tri = pts[faces]
     normal = triangle_cross(tri)
-    length = np.linalg.norm(normal, axis=1)
-    scale = float(np.ptp(pts, axis=0).max())
+    length = _norm(normal)  # np.linalg.norm(normal, axis=1), bit for bit
+    scale = float((np.maximum.reduce(pts, 0) - np.minimum.reduce(pts, 0)).max())  # np.ptp(pts, axis=0).max()
     if scale <= 0 or length.min() <= 1e-12 * scale * scale:
         return None
     normal /= length[:, None]
-    centre = pts.mean(0)
+    centre = np.add.reduce(pts, 0) / len(pts)  # pts.mean(0), bit for bit
     flip = np.einsum("ij,ij->i", normal, tri[:, 0] - centre) < 0
     normal[flip] *= -1
     height = (pts @ normal.T) - np.einsum("ij,ij->i", normal, tri[:, 0])  # (points, faces)
@@ -718,7 +760,8 @@ def _template_hull(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
         return None
     faces = faces.copy()
     faces[flip] = faces[flip][:, ::-1]
-    return _compact(len(pts), faces)
+    used, remap = _TEMPLATE_USED[len(pts)]
+    return used.copy(), remap[faces]  # _compact(len(pts), faces): the template's points are the used ones
 
 
 def _compact(n: int, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -726,6 +769,7 @@ def _compact(n: int, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     remap = np.full(n, -1)
     remap[used] = np.arange(len(used))
     return used, remap[faces]
+
 
 
 def hull_indices(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -818,6 +862,10 @@ def _box_arrays(size: np.ndarray, center: np.ndarray) -> tuple[np.ndarray, np.nd
     faces = np.array([[1, 3, 0], [4, 1, 0], [0, 3, 2], [2, 4, 0], [1, 7, 3], [5, 1, 4],
                       [5, 7, 1], [3, 7, 2], [6, 4, 2], [2, 7, 6], [6, 5, 4], [7, 5, 6]])
     return corners * size + center, faces
+
+
+_UNIT_BOX_HULL = _checked_template(_box_arrays(np.ones(3), np.zeros(3))[0])
+"""The hull of every box in :func:`_box_arrays` order (:func:`_box_hull`)."""
 
 
 def revolve_arrays(profile: np.ndarray, sections: int) -> tuple[np.ndarray, np.ndarray]:
