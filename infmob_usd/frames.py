@@ -24,6 +24,16 @@ V3 = Sequence[float]
 _AXES = {"x": 0, "y": 1, "z": 2}
 
 
+_EYE3 = np.eye(3)
+_ORTHONORMAL_TOL = 1e-8 + 1e-5 * np.abs(_EYE3)  # np.allclose's bound against the identity, atol=1e-8
+
+
+def _triple(r: list) -> float:
+    """``det`` of a ``(3, 3)`` matrix given as rows, as the triple product ``r0 . (r1 x r2)``."""
+    (a, b, c), (d, e, f), (g, h, i) = r
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+
 def _unit(v: V3, what: str) -> np.ndarray:
     a = np.asarray(v, float)
     n = float(np.linalg.norm(a))
@@ -56,7 +66,9 @@ class Frame:
         r = np.array(self.rotation, dtype=float).reshape(3, 3)
         if not (np.isfinite(o).all() and np.isfinite(r).all()):
             raise GeometryError("a frame needs a finite origin and rotation")
-        if not np.allclose(r.T @ r, np.eye(3), atol=1e-8) or np.linalg.det(r) < 0:
+        # np.allclose(r.T @ r, np.eye(3), atol=1e-8) for finite r, then the sign of det(r) (near +-1
+        # once orthonormal: the triple product's sign is the determinant's), without their overhead
+        if not (np.abs(r.T @ r - _EYE3) <= _ORTHONORMAL_TOL).all() or _triple(r.tolist()) < 0:
             raise GeometryError("a frame's axes must be orthonormal and right-handed")
         o.setflags(write=False)
         r.setflags(write=False)
