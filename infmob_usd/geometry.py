@@ -372,7 +372,7 @@ class Piece:
         """:func:`is_closed` of the faces (computed once; copies with the same faces share it)."""
         memo = self.__dict__.get("_closed")
         if memo is None:
-            memo = is_closed(self.faces)
+            memo = _CLOSED_FACES[id(self.faces)][1] if id(self.faces) in _CLOSED_FACES else is_closed(self.faces)
             object.__setattr__(self, "_closed", memo)  # a cache of a pure function of the faces
         return memo
 
@@ -856,13 +856,21 @@ def _axis_index(axis: str | int) -> int:
     return int(axis)
 
 
-def _box_arrays(size: np.ndarray, center: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """An axis-aligned box: 8 corners (in trimesh.creation.box order) and 12 outward triangles."""
-    corners = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
-    faces = np.array([[1, 3, 0], [4, 1, 0], [0, 3, 2], [2, 4, 0], [1, 7, 3], [5, 1, 4],
-                      [5, 7, 1], [3, 7, 2], [6, 4, 2], [2, 7, 6], [6, 5, 4], [7, 5, 6]])
-    return corners * size + center, faces
+_BOX_CORNERS = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
+_BOX_CORNERS.flags.writeable = False
+_BOX_FACES = np.array([[1, 3, 0], [4, 1, 0], [0, 3, 2], [2, 4, 0], [1, 7, 3], [5, 1, 4],
+                       [5, 7, 1], [3, 7, 2], [6, 4, 2], [2, 7, 6], [6, 5, 4], [7, 5, 6]])
+_BOX_FACES.flags.writeable = False  # shared by every box piece (read-only, like every piece's faces)
 
+
+def _box_arrays(size: np.ndarray, center: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """An axis-aligned box: 8 corners (in trimesh.creation.box order) and 12 outward triangles
+    (the shared read-only :data:`_BOX_FACES`)."""
+    return _BOX_CORNERS * size + center, _BOX_FACES
+
+
+_CLOSED_FACES: dict[int, tuple[np.ndarray, bool]] = {id(_BOX_FACES): (_BOX_FACES, is_closed(_BOX_FACES))}
+""":func:`is_closed` of shared read-only face arrays (kept alive here, so their ids stay theirs)."""
 
 _UNIT_BOX_HULL = _checked_template(_box_arrays(np.ones(3), np.zeros(3))[0])
 """The hull of every box in :func:`_box_arrays` order (:func:`_box_hull`)."""
@@ -877,9 +885,11 @@ def revolve_arrays(profile: np.ndarray, sections: int) -> tuple[np.ndarray, np.n
     dropped.  Built with NumPy alone: trimesh's revolve spends most of its time merging.
     """
     prof = np.asarray(profile, float)
-    keep = np.r_[True, np.any(np.abs(np.diff(prof, axis=0)) > 1e-12, axis=1)]
+    keep = np.concatenate(([True], (np.abs(np.diff(prof, axis=0)) > 1e-12).any(axis=1)))
     prof = prof[keep]
-    cyclic = len(prof) > 2 and np.allclose(prof[0], prof[-1], atol=1e-12)
+    # np.allclose(prof[0], prof[-1], atol=1e-12), without its overhead
+    cyclic = len(prof) > 2 and bool(((np.abs(prof[0] - prof[-1]) <= 1e-12 + 1e-5 * np.abs(prof[-1]))
+                                      | (prof[0] == prof[-1])).all())
     if cyclic:
         prof = prof[:-1]
     p, n = len(prof), int(sections)
@@ -888,19 +898,18 @@ def revolve_arrays(profile: np.ndarray, sections: int) -> tuple[np.ndarray, np.n
     ring_pts = prof[~pole]
     rings = np.stack([np.outer(np.cos(theta), ring_pts[:, 0]), np.outer(np.sin(theta), ring_pts[:, 0]),
                       np.broadcast_to(ring_pts[:, 1], (n, len(ring_pts)))], -1).reshape(-1, 3)
-    poles = np.c_[np.zeros((pole.sum(), 2)), prof[pole, 1]]
+    poles = np.column_stack((np.zeros((pole.sum(), 2)), prof[pole, 1]))
     verts = np.vstack([rings, poles])
     idx = np.empty((n, p), np.int64)
     ring_col = np.cumsum(~pole) - 1
     idx[:, ~pole] = np.arange(n)[:, None] * len(ring_pts) + ring_col[~pole][None, :]
     idx[:, pole] = len(rings) + np.arange(pole.sum())[None, :]
-    segs = [(i, (i + 1) % p) for i in range(p if cyclic else p - 1)]
-    k0, k1 = np.arange(n), (np.arange(n) + 1) % n
-    tris = []
-    for i, j in segs:
-        a, b, c, d = idx[k0, i], idx[k0, j], idx[k1, i], idx[k1, j]
-        tris += [np.stack([a, c, d], 1), np.stack([a, d, b], 1)]
-    faces = np.vstack(tris)
+    si = np.arange(p if cyclic else p - 1)
+    sj = (si + 1) % p
+    k1 = (np.arange(n) + 1) % n
+    # per segment (i, j), rows k: (a, c, d) then (a, d, b), segments in order
+    a, b, c, d = idx[:, si].T, idx[:, sj].T, idx[k1][:, si].T, idx[k1][:, sj].T  # (segments, n)
+    faces = np.stack([np.stack([a, c, d], -1), np.stack([a, d, b], -1)], 1).reshape(-1, 3)
     faces = faces[(faces[:, 0] != faces[:, 1]) & (faces[:, 1] != faces[:, 2]) & (faces[:, 0] != faces[:, 2])]
     tri = verts[faces]
     signed = np.einsum("ij,ij->i", tri[:, 0], cross_rows(tri[:, 1], tri[:, 2])).sum()
@@ -947,7 +956,8 @@ def instances(vertices: np.ndarray, faces: np.ndarray, offsets: np.ndarray) -> t
 
 def box_arrays(size: Sequence[float], center: Sequence[float] = (0, 0, 0)) -> tuple[np.ndarray, np.ndarray]:
     """``(vertices, faces)`` of an axis-aligned box: 8 corners, 12 outward triangles."""
-    return _box_arrays(np.asarray(size, float), np.asarray(center, float))
+    v, f = _box_arrays(np.asarray(size, float), np.asarray(center, float))
+    return v, f.copy()
 
 
 def cylinder_arrays(p0: Sequence[float], p1: Sequence[float], radius: float,
