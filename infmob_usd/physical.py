@@ -729,6 +729,14 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
     by_joint = {j.name: j for j in movable}
     cache: dict = {}
     scenes: dict = {}
+    posed: dict = {}
+
+    def poses_at(q):
+        """``obj.poses(q)``, computed once per state (the search revisits states; callers only read)."""
+        key = tuple((k, float(v).hex()) for k, v in sorted(q.items()))
+        if key not in posed:
+            posed[key] = obj.poses(q)
+        return posed[key]
 
     def real_parent(j):
         p = j.parent
@@ -753,7 +761,7 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         q = {g: limits[g][1] for g in gates.get(j.name, [])}
         key = tuple(sorted(q.items()))
         if key not in scenes:  # every link posed, shared by the joints that sweep in this state
-            poses = obj.poses(q)
+            poses = poses_at(q)
             scenes[key] = (poses, _Obstacles(list(hulls), hulls, poses, cache))
         poses, obstacles = scenes[key]
         allowed = np.array([h.link not in subtree[j.name] and h.link != parent for h in obstacles.hulls])
@@ -822,11 +830,11 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         for name in [n for n in q if q[n] != 0.0]:
             for g in gates.get(name, []):
                 q[g] = lim[g][1]
-        return obj.poses(q)
+        return poses_at(q)
 
     # pairs apart by the clearance at rest keep it; closer ones keep apart; overlapping ones are
     # left out (not a joint's doing)
-    rest = obj.poses({})
+    rest = poses_at({})
     touching = contacts(rest, set(path))
     near_rest = contacts(rest, set(path), CLEARANCE)
     checked = set(path) - touching

@@ -28,10 +28,19 @@ def axis_angle(axis: Sequence[float], angle: float) -> np.ndarray:
         if key not in _NO_TURN:
             _NO_TURN[key] = Rotation.from_rotvec(rv).as_matrix()
         return _NO_TURN[key].copy()
-    return Rotation.from_rotvec(a * angle).as_matrix()
+    # the same turns recur (forward kinematics of the same states, bisections): remember them
+    key = (a.shape, a.tobytes(), angle.hex())
+    turn = _TURNS.get(key)
+    if turn is None:
+        turn = Rotation.from_rotvec(a * angle).as_matrix()
+        if len(_TURNS) >= 4096:
+            _TURNS.clear()
+        _TURNS[key] = turn
+    return turn.copy()
 
 
 _NO_TURN: dict[tuple, np.ndarray] = {}
+_TURNS: dict[tuple, np.ndarray] = {}  # (axis shape, axis bytes, angle.hex()) -> scipy's matrix
 
 
 def axis_angles(axis: Sequence[float], angles: Sequence[float]) -> np.ndarray:
