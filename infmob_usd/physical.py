@@ -583,9 +583,15 @@ def _sweep_limit(joint, limit: float, moving: list[_Hull], poses, obstacles: _Ob
     normals = _Normals(moving, poses)
     # each pair that may meet keeps CLEARANCE if it starts that far apart, else 0 if it starts
     # apart, else (it overlaps at rest: not this joint's doing) it is left out
+    # (only pairs near in some interval: the others are never tested); a pair whose boxes at rest
+    # are farther apart than the clearance (and a nanometre) on an axis cannot meet the obstacle
+    # grown by it, so the exact test is left out for it
     margin = np.full(len(hs), np.nan)
-    for p, (h, o) in enumerate(zip(hs, os)):
-        if not _hits(world[h], normals[h], CLEARANCE, obstacles, o):
+    apart = np.any((lo0[hs] - (CLEARANCE + 1e-9) > obstacles.hi[os]) | (obstacles.lo[os] - (CLEARANCE + 1e-9) > hi0[hs]),
+                   axis=1)
+    for p in np.flatnonzero(near.any(axis=0)):
+        h, o = hs[p], os[p]
+        if apart[p] or not _hits(world[h], normals[h], CLEARANCE, obstacles, o):
             margin[p] = CLEARANCE
         elif not _hits(world[h], normals[h], 0.0, obstacles, o):
             margin[p] = 0.0
