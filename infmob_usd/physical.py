@@ -208,14 +208,17 @@ def ensure_gaps(links, joints) -> list:
     return [replace(link, pieces=new_pieces[link.name]) if link.name in new_pieces else link for link in links]
 
 
-def _extreme_points(links) -> dict[str, np.ndarray]:
-    """Per link, the vertices of the convex hull of all its collision hulls (in the link frame).
+def _extreme_points(links, only: set | None = None) -> dict[str, np.ndarray]:
+    """Per link (of ``only`` if given), the vertices of the convex hull of all its collision hulls
+    (in the link frame).
 
     The lowest point of a rigidly moved link is one of them, and there are far fewer of them
     than hull vertices.
     """
     out = {}
     for link in links:
+        if only is not None and link.name not in only:
+            continue
         pts = [v for p in link.pieces for v, _ in p.hulls()]
         if pts:
             pts = np.vstack(pts)
@@ -233,14 +236,16 @@ def limit_to_ground(links, joints) -> list:
     category must raise its base). The joints given are not changed; joints whose
     limits stand are returned as they are.
     """
-    extreme = _extreme_points(links)
+    # only links that some joint moves are ever tested (the root's hull, often the largest, is not)
+    moved_by = {j.name: descendants(joints, j.child) for j in joints if j.movable}
+    extreme = _extreme_points(links, set().union(*moved_by.values()))
     origin = {link.name: np.asarray(link.origin, float) for link in links}
     out = []
     for j in joints:
         out.append(j)
         if not j.movable:
             continue
-        moved = descendants(joints, j.child)
+        moved = moved_by[j.name]
         # one joint moves from rest, so its subtree moves rigidly: world points at rest, about the pivot
         pts = [extreme[n] + origin[n] for n in moved if n in extreme]
         if not pts:
