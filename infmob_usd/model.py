@@ -136,8 +136,12 @@ class ArticulatedObject:
         return pose
 
 
+_EYE4 = np.eye(4)
+_EYE4.flags.writeable = False
+
+
 def _translation(t) -> np.ndarray:
-    m = np.eye(4)
+    m = _EYE4.copy()  # np.eye(4)
     m[:3, 3] = t
     return m
 

@@ -167,18 +167,26 @@ def ensure_gaps(links, joints) -> list:
         # the box of a translated point set is the translated box, bit for bit (rounding is monotone)
         box_lo = parent_lo + offset
         box_hi = parent_hi + offset
-        pts = np.vstack([c for p in child.pieces for c in p.convex] or [np.zeros((1, 3))])
+        child_convex = [c for p in child.pieces for c in p.convex]
+        pts = np.vstack(child_convex or [np.zeros((1, 3))])
         gap = gap_size(np.ptp(pts, axis=0))
         cache: dict[int, manifold3d.Manifold] = {}
         pieces = list(child.pieces)
+        if child_convex:  # every child hull's box grown by the gap against every parent hull's box at once
+            starts = np.cumsum([0] + [len(c) for c in child_convex[:-1]])
+            lo_all = np.minimum.reduceat(pts, starts, axis=0) - gap
+            hi_all = np.maximum.reduceat(pts, starts, axis=0) + gap
+            near_all = np.all(hi_all[:, None] > box_lo[None], axis=2) & np.all(box_hi[None] > lo_all[:, None], axis=2)
+            near_any = near_all.any(axis=1).tolist()
+        g = -1  # index of the child convex piece among all of the link's
         for n, piece in enumerate(child.pieces):
             hulls = piece.hulls()
             eroded: dict[int, tuple] = {}
             for k, c in enumerate(piece.convex):
-                lo, hi = c.min(0) - gap, c.max(0) + gap
-                near = np.flatnonzero(np.all(hi > box_lo, axis=1) & np.all(box_hi > lo, axis=1))
-                if not len(near):
+                g += 1
+                if not near_any[g]:
                     continue
+                near = np.flatnonzero(near_all[g])
                 child_n = _face_normals(*hulls[k])
                 grown = None
                 hit = False
@@ -441,8 +449,12 @@ def _value_at(joint, limits, fraction: float) -> float:
     return lo + fraction * (hi - lo)
 
 
+_EYE4 = np.eye(4)
+_EYE4.flags.writeable = False
+
+
 def _motion(joint_type: str, pivot: np.ndarray, axis: np.ndarray, value: float) -> np.ndarray:
-    m = np.eye(4)
+    m = _EYE4.copy()  # np.eye(4)
     if joint_type == "prismatic":
         m[:3, 3] = axis * value
     else:
@@ -457,7 +469,7 @@ def _motions(joint_type: str, pivot: np.ndarray, axis: np.ndarray, values: np.nd
         return [_motion(joint_type, pivot, axis, v) for v in values]
     out = []
     for r in axis_angles(axis, values):
-        m = np.eye(4)
+        m = _EYE4.copy()  # np.eye(4)
         m[:3, :3], m[:3, 3] = r, pivot - r @ pivot
         out.append(m)
     return out

@@ -40,6 +40,8 @@ def axis_angle(axis: Sequence[float], angle: float) -> np.ndarray:
 
 
 _NO_TURN: dict[tuple, np.ndarray] = {}
+_EYE4 = np.eye(4)
+_EYE4.flags.writeable = False
 _TURNS: dict[tuple, np.ndarray] = {}  # (axis shape, axis bytes, angle.hex()) -> scipy's matrix
 
 
@@ -114,7 +116,7 @@ def motion(kind: str, axis: Sequence[float], value: float) -> np.ndarray:
     """The ``(4, 4)`` motion of a simple joint of type ``kind`` moved to ``value`` about (or along)
     the unit ``axis`` through the frame origin: a rotation (revolute, continuous), a translation
     (prismatic), or the identity (fixed). Every forward kinematics is a product of these."""
-    m = np.eye(4)
+    m = _EYE4.copy()  # np.eye(4)
     if kind == "prismatic":
         m[:3, 3] = np.asarray(axis, float) * value
     elif kind in ("revolute", "continuous"):
