@@ -184,20 +184,23 @@ def wall_mount_ranges(corners: np.ndarray, pivot, pivots: list[float], x_wall: f
     """The largest tilt (<= ``tilt``) and arm swing per joint that keep the screen ``corners`` 1 cm off
     the wall plane in every combination of the arm joints (bisection over sampled combinations)."""
     x_p, z_p = pivot
+    x_p, z_p = float(x_p), float(z_p)
+    points = np.asarray(corners, float).tolist()
+    # plain float arithmetic, term for term the array arithmetic it replaces (same bits, no per-call
+    # numpy overhead: this runs thousands of times per object)
 
     def clear(theta, phi):
-        rel = corners - [x_p, 0, z_p]  # tilt about -y through the pivot: the top goes back
-        c, s = math.cos(theta), math.sin(theta)
-        tilted = np.c_[rel[:, 0] * c - rel[:, 2] * s, rel[:, 1]] + [x_p, 0]
+        c, s = math.cos(theta), math.sin(theta)  # tilt about -y through the pivot: the top goes back
+        tilted = [((x - x_p) * c - (z - z_p) * s + x_p, (y - 0.0) + 0.0) for x, y, z in points]
         for signs in ([1] * n, [-1] * n, [(-1) ** i for i in range(n)], [-(-1) ** i for i in range(n)]):
             for frac in (0.5, 1.0):
-                pts = tilted.copy()
+                pts = tilted
                 for i in reversed(range(n)):  # turn the outermost joint first
                     a = signs[i] * frac * phi / n
                     c, s = math.cos(a), math.sin(a)
-                    r = pts - [pivots[i], 0]
-                    pts = np.c_[r[:, 0] * c - r[:, 1] * s, r[:, 0] * s + r[:, 1] * c] + [pivots[i], 0]
-                if pts[:, 0].min() < x_wall + 0.01:
+                    pv = float(pivots[i])
+                    pts = [((u - pv) * c - (v - 0.0) * s + pv, (u - pv) * s + (v - 0.0) * c + 0.0) for u, v in pts]
+                if min(u for u, _ in pts) < x_wall + 0.01:
                     return False
         return True
 
