@@ -175,9 +175,12 @@ class Piece:
         if like is None or f is not like.faces or len(v) != len(like.vertices):
             if f.min() < 0 or f.max() >= len(v):
                 raise GeometryError(f"{self._what()}: a face indexes a missing vertex (corrupt mesh)")
-        for c in self.convex:
-            if c.ndim != 2 or c.shape[1] != 3 or len(c) < 4 or not np.isfinite(c).all():
+        convex = self.convex
+        for c in convex:
+            if c.ndim != 2 or c.shape[1] != 3 or len(c) < 4:
                 raise GeometryError(f"{self._what()}: a convex collision piece needs >= 4 finite points")
+        if convex and not np.isfinite(convex[0] if len(convex) == 1 else np.concatenate(convex)).all():
+            raise GeometryError(f"{self._what()}: a convex collision piece needs >= 4 finite points")
 
     def _what(self) -> str:
         return f"piece {self.name or self.material!r}"

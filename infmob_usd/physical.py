@@ -663,11 +663,15 @@ def _overlap(moving: tuple[np.ndarray, np.ndarray, list[np.ndarray]], obstacles:
     near = np.all((lo[:, None] < obstacles.hi[None]) & (obstacles.lo[None] < hi[:, None]), axis=2)
     total = 0.0
     solids: dict[int, object] = {}
+    turned: dict[int, np.ndarray] = {}  # moving hull -> its world normals moved by ``motion``
+    rt = r.T
     for h, i in zip(*np.nonzero(near)):
         if (h, i) in skip:
             continue
         w = p[starts[h]:starts[h + 1]]
-        if _separated(w, normals[h] @ r.T, 0.0, obstacles.world[i], obstacles.normals(i)):
+        if h not in turned:
+            turned[h] = normals[h] @ rt
+        if _separated(w, turned[h], 0.0, obstacles.world[i], obstacles.normals(i)):
             continue
         if h not in solids:
             solids[h] = manifold3d.Manifold.hull_points(w)
