@@ -966,11 +966,19 @@ def box_arrays(size: Sequence[float], center: Sequence[float] = (0, 0, 0)) -> tu
 def cylinder_arrays(p0: Sequence[float], p1: Sequence[float], radius: float,
                     sections: int = 24) -> tuple[np.ndarray, np.ndarray]:
     """``(vertices, faces)`` of the closed cylinder of :func:`cylinder`."""
+    v, f = _cylinder_arrays(p0, p1, radius, sections)
+    return v, f.copy()
+
+
+def _cylinder_arrays(p0, p1, radius: float, sections: int) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`cylinder_arrays` with the shared read-only faces of its section count (known closed)."""
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
     h = float(np.linalg.norm(p1 - p0))
     v, f = _unit_cylinder(int(sections))
+    if id(f) not in _CLOSED_FACES:
+        _CLOSED_FACES[id(f)] = (f, is_closed(f))  # kept alive here, so the id stays this array's
     rot = align_z((p1 - p0) / h)  # as trimesh.creation.cylinder
-    return (v * (radius, radius, h)) @ rot.T + (p0 + p1) / 2, f.copy()
+    return (v * (radius, radius, h)) @ rot.T + (p0 + p1) / 2, f
 
 
 @functools.lru_cache(maxsize=64)
@@ -1046,7 +1054,7 @@ def cylinder(p0: Sequence[float], p1: Sequence[float], radius: float, material: 
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
     if radius <= 0 or np.linalg.norm(p1 - p0) <= 0:
         raise GeometryError(f"cylinder needs radius > 0 and distinct ends, got r={radius}")
-    v, f = cylinder_arrays(p0, p1, radius, sections)
+    v, f = _cylinder_arrays(p0, p1, radius, sections)
     return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)  # a closed convex mesh is its own hull
 
 
