@@ -54,7 +54,15 @@ _TYPES = {
 _DEF = Sdf.SpecifierDef
 _UNIFORM, _VARYING = Sdf.VariabilityUniform, Sdf.VariabilityVarying
 _ORIENT_ONLY = Gf.Quatf(1.0)
-_COLLIDER = ("PhysicsCollisionAPI", "PhysicsMeshCollisionAPI", "MaterialBindingAPI")
+# a collider's physics (physics.usda, under <root>/<link>/collisions): as Sdf writes the prim at depth 3
+_COLLIDER = """            over "hull_{i:03d}" (
+                prepend apiSchemas = ["PhysicsCollisionAPI", "PhysicsMeshCollisionAPI", "MaterialBindingAPI"]
+            )
+            {{
+                rel material:binding:physics = <{material}>
+                uniform token physics:approximation = "convexHull"
+            }}
+"""
 
 
 def axis_quat(axis: np.ndarray) -> Gf.Quatf:
@@ -224,12 +232,17 @@ class _Spec:
         self.head = f'{specifier} {type_name} "{name}"' if type_name else f'{specifier} "{name}"'
         self.schemas = schemas
         self.props: list[tuple[str, list]] = []
-        self.children: list[_Spec] = []
+        self.children: list[_Spec | str] = []
 
     def child(self, specifier: str, type_name: str, name: str, schemas: tuple[str, ...] = ()) -> _Spec:
         spec = _Spec(specifier, type_name, name, schemas)
         self.children.append(spec)
         return spec
+
+    def child_text(self, text: str) -> None:
+        """A child prim already written out, indented for its depth, without float values: the many
+        colliders that differ only in name and material, one ``str.format`` each instead of a spec."""
+        self.children.append(text)
 
     def attr(self, type_name: str, name: str, value=None, uniform: bool = False) -> None:
         """``value``: a float, a tuple of floats, an int or bool, or text as written (``'"force"'``)."""
@@ -269,7 +282,10 @@ class _Spec:
         for i, spec in enumerate(self.children):
             if i or self.props:
                 out.append("\n")
-            spec.write(out, inner)
+            if isinstance(spec, str):
+                out.append(spec)
+            else:
+                spec.write(out, inner)
         out.append(f"{indent}}}\n")
 
 
@@ -477,10 +493,8 @@ def _physics(obj, hulls) -> str:
             prim.rel("physics:filteredPairs", f"{rp}/{filtered[link.name]}")
         if hulls[link.name]:
             cp = prim.child("over", "", "collisions")
-            for i, hull in enumerate(hulls[link.name]):
-                col = cp.child("over", "", f"hull_{i:03d}", _COLLIDER)
-                col.attr("token", "physics:approximation", '"convexHull"', uniform=True)
-                col.rel("material:binding:physics", contact[hull[5]])
+            for i, hull in enumerate(hulls[link.name]):  # collision APIs, convexHull, its physics material
+                cp.child_text(_COLLIDER.format(i=i, material=contact[hull[5]]))
     joints = root.child("def", "Scope", "Joints")
     joints.child("def", "PhysicsFixedJoint", "root_joint").rel("physics:body1", f"{rp}/{obj.links[0].name}")
     for j in obj.joints:
