@@ -12,11 +12,11 @@ Links are sibling Xforms under the root with rigid world transforms; a joint's
 ``physics:axis`` is always ``X``, the real direction carried by ``localRot0`` and
 ``localRot1`` (identical, because every link frame is world-aligned at rest).
 
-The geometry, contents and interface layers are authored directly as Sdf specs (no
+The geometry and interface layers are authored directly as Sdf specs (no
 ``Usd.Stage``, which recomposes on every edit), and the per-corner normals and UVs of every
 visual mesh of the object are computed in one vectorised pass: together ~5x faster than
-authoring through the stage API, with the same specs and values. The materials and physics
-layers (many small prims, no arrays) are written as text in Sdf's own form (:class:`_Spec`),
+authoring through the stage API, with the same specs and values. The contents, materials and
+physics layers (metadata, many small prims, no arrays) are written as text in Sdf's own form (:class:`_Spec`),
 byte for byte what Sdf saves of the same specs, in a tenth of the time.
 """
 
@@ -54,6 +54,19 @@ _TYPES = {
 _DEF = Sdf.SpecifierDef
 _UNIFORM, _VARYING = Sdf.VariabilityUniform, Sdf.VariabilityVarying
 _ORIENT_ONLY = Gf.Quatf(1.0)
+# payload/contents.usda: the stage metadata and the sublayers (SUBLAYERS), as Sdf saves them
+_CONTENTS = """#usda 1.0
+(
+    defaultPrim = "{name}"
+    kilogramsPerUnit = 1
+    metersPerUnit = 1
+    subLayers = [
+""" + ",\n".join(f"        @./{n}@" for n in SUBLAYERS) + """
+    ]
+    upAxis = "Z"
+)
+
+"""
 # a collider's physics (physics.usda, under <root>/<link>/collisions): as Sdf writes the prim at depth 3
 _COLLIDER = """            over "hull_{i:03d}" (
                 prepend apiSchemas = ["PhysicsCollisionAPI", "PhysicsMeshCollisionAPI", "MaterialBindingAPI"]
@@ -312,18 +325,15 @@ def write_usd(obj, folder: Path) -> Path:
     payload = folder / PAYLOAD
     payload.mkdir()
     geometry = Sdf.Layer.CreateNew(str(payload / "geometry.usdc"))
-    contents = Sdf.Layer.CreateNew(str(payload / "contents.usda"))
     visuals = _visual_meshes(obj)
     hulls = _hulls(obj)
     _templates()
     with Sdf.ChangeBlock():
-        contents.subLayerPaths = [f"./{n}" for n in SUBLAYERS]
-        _stage_metadata(contents, name)
         _geometry(geometry, obj, visuals, hulls)
     write_file(payload / "physics.usda", _physics(obj, hulls))
     write_file(payload / "materials.usda", _materials(obj, visuals))
+    write_file(payload / "contents.usda", _CONTENTS.format(name=name))
     geometry.Save()
-    contents.Save()
     return _write_interface(obj, folder, _bounds(obj, visuals))
 
 

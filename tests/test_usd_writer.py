@@ -84,14 +84,14 @@ def test_texture_readers_only_for_maps_written(objects, tmp_path):
 
 
 def test_text_layers_are_what_sdf_writes(objects, tmp_path):
-    """materials.usda and physics.usda are written as text, not through Sdf: Sdf reads each back with
+    """contents.usda, materials.usda and physics.usda are written as text, not through Sdf: Sdf reads each back with
     the specs meant (bindings, colliders, joints) and saves it byte for byte as written (its own form:
     property order, float32 digits, indents)."""
     for i, obj in enumerate(objects):
         folder = tmp_path / str(i)
         folder.mkdir()
         write_usd(obj, folder)
-        for name in ("materials.usda", "physics.usda"):
+        for name in ("contents.usda", "materials.usda", "physics.usda"):
             path = folder / "payload" / name
             layer = Sdf.Layer.FindOrOpen(str(path))
             assert layer.ExportToString() == path.read_text(), (obj.name, name)
