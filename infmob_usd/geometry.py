@@ -578,7 +578,10 @@ def grain_frame(vertices: np.ndarray) -> np.ndarray:
     v = np.asarray(vertices, float)
     if len(v) > 4096:  # the principal axes of a large mesh are those of a spread-out sample
         v = v[:: len(v) // 2048]
-    ext = v.max(0) - v.min(0)
+    if len(v) >= 256:  # column by column: a strided axis-0 reduction is many times slower
+        ext = np.array([v[:, k].max() - v[:, k].min() for k in range(3)])
+    else:
+        ext = v.max(0) - v.min(0)
     c = v - v.mean(0)
     cov = c.T @ c / max(len(v), 1)
     if abs(cov[0, 1]) + abs(cov[0, 2]) + abs(cov[1, 2]) <= 1e-9 * (cov[0, 0] + cov[1, 1] + cov[2, 2]):
@@ -609,7 +612,8 @@ def grain_frame(vertices: np.ndarray) -> np.ndarray:
     thin /= math.sqrt(float(thin @ thin))
     frame = np.empty((3, 3))
     frame[:, 0], frame[:, 2] = long, thin
-    frame[:, 1] = cross_rows(thin, long)
+    (t0, t1, t2), (l0, l1, l2) = thin.tolist(), long.tolist()  # cross_rows(thin, long) in floats: same bits
+    frame[:, 1] = (t1 * l2 - t2 * l1, t2 * l0 - t0 * l2, t0 * l1 - t1 * l0)
     return frame
 
 

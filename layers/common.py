@@ -102,17 +102,22 @@ def collision_placements(link) -> list[tuple]:
     :meth:`~infmob_usd.geometry.Piece.hull_instances`) reuses that hull's mesh (``mesh index``)
     placed by ``position`` and ``rotation``: one file per band instead of one per wedge.
     """
-    out = []
-    base = 0
+    hulls, instances, first = [], [], []  # every hull of the link, its instance hint, its piece's first hull
     for piece in link.pieces:
-        hulls, instances = piece.hulls(), piece.hull_instances()
-        for k, ((v, f), inst) in enumerate(zip(hulls, instances)):
-            if inst is None or instances[inst[0]] is not None:
-                c = (v.min(0) + v.max(0)) / 2
-                out.append((base + k, c, None, v - c, f))
-            else:
-                j, rot, t = inst
-                pv = hulls[j][0]
-                out.append((base + j, rot @ ((pv.min(0) + pv.max(0)) / 2) + t, rot, None, None))
-        base += len(hulls)
+        first += [len(hulls)] * len(piece.hulls())
+        hulls += piece.hulls()
+        instances += piece.hull_instances()
+    if not hulls:
+        return []
+    sizes = np.array([len(v) for v, _ in hulls])
+    starts = np.cumsum(sizes) - sizes
+    v_all = np.concatenate([v for v, _ in hulls])
+    centre = (np.minimum.reduceat(v_all, starts) + np.maximum.reduceat(v_all, starts)) / 2  # of the bounds
+    out = []
+    for k, ((v, f), inst, base) in enumerate(zip(hulls, instances, first)):
+        if inst is None or instances[base + inst[0]] is not None:
+            out.append((k, centre[k], None, v - centre[k], f))
+        else:
+            j, rot, t = inst
+            out.append((base + j, rot @ centre[base + j] + t, rot, None, None))
     return out

@@ -8,9 +8,13 @@ where Vulkan runs) replaces it with a rendered picture of the same size.
 
 from __future__ import annotations
 
+from collections import deque
+from itertools import repeat
 from pathlib import Path
 
 import numpy as np
+
+from infmob_usd.geometry import _norm, cross_rows
 
 from .common import visual_meshes, write_file
 
@@ -55,30 +59,34 @@ def rasterise(verts: np.ndarray, faces: np.ndarray, colours: np.ndarray, size: i
     px = size * SUPERSAMPLE
     bg = tuple(int(round(c * 255)) for c in _srgb(BACKGROUND))
     img = np.empty((px, px, 3), np.uint8)
-    img[:] = bg
+    for channel, value in enumerate(bg):  # one channel at a time: ~10x a broadcast of the tuple
+        img[..., channel] = value
     if len(faces):
         d = VIEW / np.linalg.norm(VIEW)
         right = np.cross([0.0, 0.0, 1.0], d)
         right /= np.linalg.norm(right)
         up = np.cross(d, right)
         cam = verts @ np.stack([right, up, d], 1)  # (n, 3): screen x, y, depth (larger = nearer)
-        lo, hi = cam[:, :2].min(0), cam[:, :2].max(0)
+        sx, sy = cam[:, 0], cam[:, 1]
+        lo, hi = np.array([sx.min(), sy.min()]), np.array([sx.max(), sy.max()])
         scale = FILL * px / max(float((hi - lo).max()), 1e-9)
         xy = (cam[:, :2] - (lo + hi) / 2) * scale + px / 2
         xy[:, 1] = px - xy[:, 1]  # image rows grow downwards
-        n = np.cross(verts[faces[:, 1]] - verts[faces[:, 0]], verts[faces[:, 2]] - verts[faces[:, 0]])
-        n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-30)
-        shade = 0.3 + 0.7 * np.abs(n @ (LIGHT / np.linalg.norm(LIGHT)))
-        rgb = np.round(_srgb(colours * shade[:, None]) * 255).astype(np.uint8)
         t = xy[faces]
         # back faces (clockwise on screen: rows grow downwards) are hidden by the closed meshes' front faces
         front = ((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
                  - (t[:, 1, 1] - t[:, 0, 1]) * (t[:, 2, 0] - t[:, 0, 0])) < 0
         idx = np.flatnonzero(front)
         order = idx[np.argsort(cam[faces[idx], 2].mean(1), kind="stable")]  # far first (by mean depth)
-        pts = np.round(xy[faces[order]] * 16).astype(np.int32)  # 4 fractional bits
-        for tri, c in zip(pts, rgb[order].tolist()):
-            cv2.fillConvexPoly(img, tri, c, cv2.LINE_8, 4)
+        fo = faces[order]
+        # shading of the faces drawn only
+        n = cross_rows(verts[fo[:, 1]] - verts[fo[:, 0]], verts[fo[:, 2]] - verts[fo[:, 0]])
+        n /= np.maximum(_norm(n), 1e-30)[:, None]
+        shade = 0.3 + 0.7 * np.abs(n @ (LIGHT / np.linalg.norm(LIGHT)))
+        rgb = np.round(_srgb(colours[order] * shade[:, None]) * 255).astype(np.uint8)
+        pts = np.round(t[order] * 16).astype(np.int32)  # 4 fractional bits
+        # one C call per triangle, driven by map (no Python loop body)
+        deque(map(cv2.fillConvexPoly, repeat(img), pts, rgb.tolist(), repeat(cv2.LINE_8), repeat(4)), maxlen=0)
     return cv2.resize(img, (size, size), interpolation=cv2.INTER_AREA)
 
 

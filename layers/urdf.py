@@ -47,32 +47,186 @@ def _rows(prefix: str, fmt: str, a: np.ndarray) -> str:
     return (f"{prefix} {fmt}\n" * len(a)) % tuple(a.ravel().tolist())
 
 
+# Line layouts of an OBJ: literal text and column numbers of the row, and the decimals of the columns
+# (None: whole numbers >= 0)
+_V = (("v ", 0, " ", 1, " ", 2, "\n"), 6)
+_VT = (("vt ", 0, " ", 1, "\n"), 6)
+_VN = (("vn ", 0, " ", 1, " ", 2, "\n"), 5)
+_F3 = (("f ", 0, " ", 1, " ", 2, "\n"), None)
+_F9 = (("f ", 0, "/", 1, "/", 2, " ", 3, "/", 4, "/", 5, " ", 6, "/", 7, "/", 8, "\n"), None)
+_FT = (("f ", 0, "/", 0, "/", 0, " ", 1, "/", 1, "/", 1, " ", 2, "/", 2, "/", 2, "\n"), None)  # an index per corner
+_VECTOR_MIN = 256  # fewer numbers than this: one %-format is faster than the vectorised formatter
+
+
+def _numbers(x: np.ndarray, decimals: int | None):
+    """The decimal form of each number of ``x`` (n,) as printf's ``%.{decimals}f`` (or ``%d``) writes it:
+    ``(magnitude digits m (n,) int, negative (n,) bool or None, integer digits of the widest)``, where the
+    text is ``-`` if negative, then ``m`` with a point before its last ``decimals`` digits.
+
+    ``m`` is ``|x| * 10**decimals`` rounded half to even: exactly printf's rounding of the binary value
+    wherever the scaled float lies farther than two units in its last place from a half (then no
+    rounding error of the scaling can cross the half); the few that do not are rounded by Python's own
+    ``%``-format. ``None`` when the values are too large, or not finite: then the caller %-formats."""
+    if decimals is None:
+        m = np.asarray(x, np.int64)
+        if len(m) and int(m.min()) < 0:
+            return None
+        neg = None
+    else:
+        q = x * 10.0 ** decimals
+        if not np.isfinite(q).all() or (len(q) and float(np.abs(q).max()) >= 2.0 ** 52):
+            return None
+        m = np.abs(np.rint(q)).astype(np.int64)
+        near = np.abs(q - np.floor(q) - 0.5) <= 2 * np.spacing(np.abs(q))
+        for i in np.flatnonzero(near).tolist():
+            m[i] = int(f"{abs(float(x[i])):.{decimals}f}".replace(".", ""))
+        neg = np.signbit(x)
+    top = int(m.max()) if len(m) else 0
+    if top < 2**31:
+        m = m.astype(np.int32)  # faster divisions
+    return m, neg, len(str(top // 10 ** (decimals or 0)))
+
+
+def _format(a: np.ndarray, layout: tuple) -> tuple[bytes, np.ndarray] | None:
+    """The lines of ``layout`` (:data:`_V` ...) for every row of ``a``, as printf writes them, in one
+    vectorised pass: the characters of all lines in a (width, rows) array with a mask of those kept
+    (a number's unused leading places, a plus sign), gathered row by row. Returns the text and each
+    line's length, or ``None`` where :func:`_numbers` declines."""
+    items, decimals = layout
+    n = len(a)
+    cols = []
+    for j in range(a.shape[1]):
+        num = _numbers(a[:, j], decimals)
+        if num is None:
+            return None
+        cols.append(num)
+    frac = 0 if decimals is None else decimals
+    width = [(1 + k + 1 + frac) if decimals is not None else k for _, _, k in cols]
+    W = sum(len(it) if isinstance(it, str) else width[it] for it in items)
+    chars = np.empty((W, n), np.uint8)
+    keep = np.ones((W, n), bool)
+    pos, placed = 0, {}
+    for it in items:
+        if isinstance(it, str):
+            for ch in it.encode():
+                chars[pos] = ch
+                pos += 1
+            continue
+        w = width[it]
+        if it in placed:  # the same number again
+            p0 = placed[it]
+            chars[pos:pos + w], keep[pos:pos + w] = chars[p0:p0 + w], keep[p0:p0 + w]
+            pos += w
+            continue
+        placed[it] = pos
+        m, neg, k = cols[it]
+        if decimals is not None:
+            chars[pos] = 45  # "-"
+            keep[pos] = neg
+            unit = 10 ** decimals
+            whole = m // unit
+            rest = m - whole * unit
+            for col in range(pos + w - 1, pos + w - 1 - decimals, -1):
+                nxt = rest // 10
+                np.add(rest - nxt * 10, 48, out=chars[col], casting="unsafe")
+                rest = nxt
+            chars[pos + 1 + k] = 46  # "."
+            lo = pos + 1
+        else:
+            whole, lo = m, pos
+        for col in range(lo + k - 1, lo - 1, -1):
+            nxt = whole // 10
+            np.add(whole - nxt * 10, 48, out=chars[col], casting="unsafe")
+            if col < lo + k - 1:
+                np.greater(whole, 0, out=keep[col])  # no leading zeros
+            whole = nxt
+        pos += w
+    return chars.T[keep.T].tobytes(), keep.sum(0)
+
+
+def _printf(a: np.ndarray, layout: tuple) -> str:
+    """The lines of ``layout`` for every row of ``a`` by one %-format (what :func:`_format` gives)."""
+    items, decimals = layout
+    number = "%d" if decimals is None else f"%.{decimals}f"
+    line = "".join(it.replace("%", "%%") if isinstance(it, str) else number for it in items)
+    cols = [it for it in items if not isinstance(it, str)]
+    return (line * len(a)) % tuple(a[:, cols].ravel().tolist())
+
+
+class _Text:
+    """The text of many OBJ files, its number lines formatted together: one vectorised pass per line
+    layout for all files (:func:`_format`), not one %-format per block of lines of each file."""
+
+    def __init__(self):
+        self.files: list[list] = []
+        self.blocks: dict[tuple, list[np.ndarray]] = {}
+
+    def file(self) -> list:
+        self.files.append([])
+        return self.files[-1]
+
+    def lines(self, parts: list, layout: tuple, a: np.ndarray) -> None:
+        if len(a):
+            block = self.blocks.setdefault(layout, [])
+            parts.append((layout, len(block)))
+            block.append(a)
+
+    def render(self) -> list[bytes]:
+        text: dict[tuple, list[bytes]] = {}
+        for layout, arrays in self.blocks.items():
+            a = np.concatenate(arrays) if len(arrays) > 1 else arrays[0]
+            done = _format(a, layout) if a.size >= _VECTOR_MIN else None
+            if done is None:
+                text[layout] = [_printf(b, layout).encode() for b in arrays]
+                continue
+            blob, lengths = done
+            ends = np.cumsum([len(b) for b in arrays])
+            cut = np.concatenate([[0], np.cumsum(lengths)[ends - 1]]).tolist()
+            text[layout] = [blob[cut[i]:cut[i + 1]] for i in range(len(arrays))]
+        return [b"".join(p.encode() if isinstance(p, str) else text[p[0]][p[1]] for p in parts)
+                for parts in self.files]
+
+
+def _unique_inverse(key: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(key, return_inverse=True)`` of a 1-D array, plus where one copy of each value is:
+    ``(sorted unique values, inverse, an index of each)`` (any copy: the caller reads equal rows)."""
+    perm = key.argsort()
+    sorted_ = key[perm]
+    new = np.empty(len(key), bool)
+    new[:1] = True
+    np.not_equal(sorted_[1:], sorted_[:-1], out=new[1:])
+    inverse = np.empty(len(key), np.intp)
+    inverse[perm] = np.cumsum(new) - 1
+    return sorted_[new], inverse, perm[new]
+
+
 def _unique_rows(a: np.ndarray, decimals: int) -> tuple[np.ndarray, np.ndarray]:
-    """Rows of ``a`` rounded to ``decimals`` and deduplicated, and each row's index among them."""
+    """Rows of ``a`` rounded to ``decimals`` and deduplicated (in lexicographic order), and each
+    row's index among them."""
     q = np.rint(a * 10.0**decimals).astype(np.int64)
-    lo, span = q.min(0), q.max(0) - q.min(0) + 1
-    bits = [int(s).bit_length() for s in span]
-    if sum(bits) <= 62:  # pack each row into one integer: a 1-D sort instead of a row sort
-        key = np.zeros(len(q), np.int64)
-        for col, b in zip((q - lo).T, bits):
-            key = (key << b) | col
-        _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
-        uniq = q[first]
+    if not len(q):
+        return q / 10.0**decimals, np.zeros(0, np.intp)
+    flat = q.ravel()
+    lo = int(flat.min())  # one shift for every column (a contiguous reduction: no per-column min)
+    b = int(flat.max() - lo + 1).bit_length()
+    if q.shape[1] * b <= 62:  # pack each row into one integer, in the rows' order: a 1-D sort
+        cols = (q - lo).T
+        key = cols[0].copy()
+        for col in cols[1:]:
+            key <<= b
+            key |= col
+        _, inverse, one = _unique_inverse(key)
+        uniq = q[one]
     else:
         uniq, inverse = np.unique(q, axis=0, return_inverse=True)
     return uniq / 10.0**decimals, inverse.reshape(-1)
 
 
-def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None, uvs=None,
-              mtl: str | None = None, material: str | None = None) -> None:
-    """Write an OBJ; ``normals``/``uvs`` are per face corner ``(m, 3, 3)`` / ``(m, 3, 2)``.
-
-    Corner normals and UVs are rounded to the precision written and shared between
-    corners that agree, so a smooth surface lists each normal once.  Where nearly every
-    vertex has one UV and one normal (smooth surfaces), the lists run in step and faces
-    read ``f i/i/i ...``.
-    """
-    parts = ["# infmob-usd\n"]
+def _obj(text: _Text, vertices: np.ndarray, faces: np.ndarray, normals=None, uvs=None,
+         mtl: str | None = None, material: str | None = None) -> None:
+    """Lay out one OBJ file in ``text`` (see :func:`write_obj`)."""
+    parts = text.file()
+    parts.append("# infmob-usd\n")
     if mtl:
         parts.append(f"mtllib {mtl}\n")
     vertices = np.asarray(vertices, float)
@@ -85,31 +239,41 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None,
             # a smooth surface: one (position, uv, normal) triple per vertex, almost; then list the
             # triples in step so a face reads "f i/i/i j/j/j k/k/k", one number per corner to format
             key = (vi << 42) | (ti << 21) | ni
-            triples, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+            triples, inverse, corner = _unique_inverse(key)
             if len(triples) <= 1.25 * len(vertices):
-                corner = np.arange(len(key))[first]
-                parts.append(_rows("v", "%.6f %.6f %.6f", vertices[vi[corner]]))
-                parts.append(_rows("vt", "%.6f %.6f", vt[ti[corner]]))
-                parts.append(_rows("vn", "%.5f %.5f %.5f", vn[ni[corner]]))
+                text.lines(parts, _V, vertices[vi[corner]])
+                text.lines(parts, _VT, vt[ti[corner]])
+                text.lines(parts, _VN, vn[ni[corner]])
                 if material:
                     parts.append(f"usemtl {material}\n")
-                token = [f"{i}/{i}/{i}" for i in range(1, len(triples) + 1)]
-                parts.append(("f %s %s %s\n" * len(f1)) % tuple([token[i] for i in inverse.reshape(-1).tolist()]))
-                write_file(path, "".join(parts))
+                text.lines(parts, _FT, inverse.reshape(-1, 3) + 1)
                 return
-        parts.append(_rows("v", "%.6f %.6f %.6f", vertices))
-        parts.append(_rows("vt", "%.6f %.6f", vt))
-        parts.append(_rows("vn", "%.5f %.5f %.5f", vn))
+        text.lines(parts, _V, vertices)
+        text.lines(parts, _VT, vt)
+        text.lines(parts, _VN, vn)
         if material:
             parts.append(f"usemtl {material}\n")
-        corners = np.stack([f1.reshape(-1), ti + 1, ni + 1], 1).reshape(-1, 9)
-        parts.append(_rows("f", "%d/%d/%d %d/%d/%d %d/%d/%d", corners))
+        text.lines(parts, _F9, np.stack([f1.reshape(-1), ti + 1, ni + 1], 1).reshape(-1, 9))
     else:
-        parts.append(_rows("v", "%.6f %.6f %.6f", vertices))
+        text.lines(parts, _V, vertices)
         if material:
             parts.append(f"usemtl {material}\n")
-        parts.append(_rows("f", "%d %d %d", f1))
-    write_file(path, "".join(parts))
+        text.lines(parts, _F3, f1)
+
+
+def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None, uvs=None,
+              mtl: str | None = None, material: str | None = None) -> None:
+    """Write an OBJ; ``normals``/``uvs`` are per face corner ``(m, 3, 3)`` / ``(m, 3, 2)``.
+
+    Corner normals and UVs are rounded to the precision written and shared between
+    corners that agree, so a smooth surface lists each normal once.  Where nearly every
+    vertex has one UV and one normal (smooth surfaces), the lists run in step and faces
+    read ``f i/i/i ...``. (:func:`write_meshes` lays out all the OBJ files of an object
+    first and formats their numbers together.)
+    """
+    text = _Text()
+    _obj(text, vertices, faces, normals, uvs, mtl, material)
+    write_file(path, text.render()[0])
 
 
 _MTL_MAPS = {"basecolor": "map_Kd", "roughness": "map_Pr", "metallic": "map_Pm", "normal": "norm"}
@@ -161,13 +325,15 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
     for slot, look in obj.materials.items():
         write_file(meshes / f"{slot}.mtl", _mtl(slot, look, obj.textures.get(slot, {})))
     visuals = visual_meshes(obj)
+    text, names = _Text(), []  # every OBJ laid out first, their numbers formatted together
     table = {}
     for link in obj.links:
         vis = []
         for vname, slot, _role, v, f, n, uv in visuals[link.name]:
             fname = f"{link.name}__{vname}.obj"
             m = obj.materials[slot].wear.uv_matrix()  # this object's placement of the maps, baked in
-            write_obj(meshes / fname, v, f, n, uv @ m[:, :2].T + m[:, 2], mtl=f"{slot}.mtl", material=slot)
+            _obj(text, v, f, n, uv @ m[:, :2].T + m[:, 2], mtl=f"{slot}.mtl", material=slot)
+            names.append(fname)
             vis.append((vname, slot, fname))
         col = []
         same_shape: dict[bytes, str] = {}  # identical centred hulls (a keypad's buttons) share a file
@@ -177,10 +343,13 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
                 key = np.round(hv, 9).tobytes() + np.asarray(hf, np.int64).tobytes()
                 if key not in same_shape:
                     same_shape[key] = f"{link.name}__collision_{mesh:03d}.obj"
-                    write_obj(meshes / same_shape[key], hv, hf)
+                    _obj(text, hv, hf)
+                    names.append(same_shape[key])
                 file_of[mesh] = same_shape[key]
             col.append((file_of[mesh], pos, rot))  # an instance's prototype comes before it
         table[link.name] = (vis, col)
+    for fname, data in zip(names, text.render()):
+        write_file(meshes / fname, data)
     obj._mesh_files = (folder, table)
     return table
 

@@ -171,3 +171,28 @@ def test_unwritable_or_file_output_is_a_clear_error(tmp_path):
     f.write_text("x")
     with pytest.raises(OutputError, match="is a file"):
         infmob_usd.save(zoo(), f)
+
+
+def test_obj_numbers_are_printfs():
+    """The OBJ writer formats all the numbers of an object's meshes at once (vectorised); the text is
+    exactly what printf's %.6f / %.5f / %d write, ties, signed zeros, wide and tiny values included."""
+    from infmob_usd.layers.urdf import _F9, _FT, _V, _VN, _VT, _format, _printf, _Text
+
+    rng = np.random.default_rng(7)
+    tricky = np.array([0.0078125, -0.0, -1e-9, 5e-7, -5e-7, 1.5e-6, 2.5e-6, 123.4567895, -99.9999995,
+                       0.1234565, 1e4, -1e5, 0.5, -0.5, 9.9999995, 1e-300])
+    floats = np.concatenate([tricky, rng.normal(size=3000) * 0.4,
+                             rng.integers(-10**7, 10**7, 3000) / 2.0 ** rng.integers(0, 14, 3000),
+                             rng.integers(-10**8, 10**8, 3000) / 1e6])
+    ints = np.concatenate([[1, 9, 10, 99, 100, 999, 1000, 2**31 + 5], rng.integers(1, 70000, 3000)])
+    cases = [(_V, floats[: len(floats) // 3 * 3].reshape(-1, 3)), (_VT, floats.reshape(-1, 2)),
+             (_VN, floats[: len(floats) // 3 * 3].reshape(-1, 3)), (_F9, ints[: len(ints) // 9 * 9].reshape(-1, 9)),
+             (_FT, ints[: len(ints) // 3 * 3].reshape(-1, 3))]
+    text = _Text()
+    for layout, a in cases:
+        parts = text.file()
+        text.lines(parts, layout, a[:7])  # several blocks of one layout: split back per file
+        text.lines(parts, layout, a[7:])
+    for (layout, a), got in zip(cases, text.render()):
+        assert _format(a, layout) is not None  # the vectorised path, not the %-format fallback
+        assert got.decode() == _printf(a, layout)

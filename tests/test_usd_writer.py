@@ -81,3 +81,30 @@ def test_texture_readers_only_for_maps_written(objects, tmp_path):
         for tex in ("roughness", "metallic"):
             assert not stage.GetPrimAtPath(root.AppendPath(f"Looks/{slot}/{tex}Texture"))
         assert stage.GetPrimAtPath(root.AppendPath(f"Looks/{slot}/basecolorTexture"))
+
+
+def test_text_layers_are_what_sdf_writes(objects, tmp_path):
+    """contents.usda, materials.usda and physics.usda are written as text, not through Sdf: Sdf reads each back with
+    the specs meant (bindings, colliders, joints) and saves it byte for byte as written (its own form:
+    property order, float32 digits, indents)."""
+    for i, obj in enumerate(objects):
+        folder = tmp_path / str(i)
+        folder.mkdir()
+        write_usd(obj, folder)
+        for name in ("contents.usda", "materials.usda", "physics.usda"):
+            path = folder / "payload" / name
+            layer = Sdf.Layer.FindOrOpen(str(path))
+            assert layer.ExportToString() == path.read_text(), (obj.name, name)
+        stage = Usd.Stage.Open(str(folder / f"{obj.name}.usda"))
+        for link in obj.links:
+            body = stage.GetPrimAtPath(f"/{obj.name}/{link.name}")
+            assert body.GetAttribute("physics:mass").Get() == pytest.approx(link.mass, rel=1e-6)
+            hulls, visuals = body.GetChild("collisions"), body.GetChild("visuals")
+            assert bool(hulls) == bool(link.pieces) == bool(visuals)
+            for hull in hulls.GetChildren() if hulls else ():
+                assert hull.GetRelationship("material:binding:physics").GetTargets()
+            for vis in visuals.GetChildren() if visuals else ():
+                assert UsdShade.MaterialBindingAPI(vis).GetDirectBinding().GetMaterial()
+        for j in obj.joints:
+            joint = stage.GetPrimAtPath(f"/{obj.name}/Joints/{j.name}")
+            assert joint.GetRelationship("physics:body1").GetTargets() == [Sdf.Path(f"/{obj.name}/{j.child}")]
