@@ -544,7 +544,7 @@ def _glass(profile: np.ndarray, center: tuple[float, float, float]) -> g.Piece:
 
 def _ring(outer, thickness: float, slot: str, center=(0.0, 0.0, 0.0)) -> g.Piece:
     """A small tube wall (socket, collar, the lower pole): 8 wide wedges collide, not 16 slivers."""
-    return g.shell(outer, thickness, slot, center=center, convex_sectors=8)
+    return g.shell(outer, thickness, slot, center=center, sections=32, convex_sectors=8)
 
 
 def _cap(r_cap: float, h_cap: float, slot: str, center: tuple[float, float, float]) -> list[g.Piece]:

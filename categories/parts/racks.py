@@ -268,7 +268,6 @@ def cabinet_drawer(x0: float, x1: float, y0: float, y1: float, z0: float, z1: fl
 
 # -- dish racks and plates -----------------------------------------------------------------------------
 SEAT_GAP = 0.004  # a plate's lowest point above the support surface at rest
-PLATE_SECTIONS = 64
 PLATE_SLIDE = 0.1  # how far a plate may slide along its slot, either way (the plastic tray's walls clear it)
 
 
@@ -299,7 +298,7 @@ def plate(radius: float, height: float, wall: float, foot_r: float, material: st
     under = [(r, mid(r) - t / 2) for r in np.linspace(rf + 0.3 * wf, Rc, 24)]
     rim = [(Rc + t / 2 * np.cos(x), c1 + t / 2 * np.sin(x)) for x in np.linspace(-np.pi / 2, np.pi / 2, 9)[1:-1]]
     top = [(r, mid(r) + t / 2) for r in np.linspace(Rc, 0.0, 28)]
-    fine = g.revolve(foot + under + rim + top, material, sections=PLATE_SECTIONS)
+    fine = g.revolve(g.simplify_profile(foot + under + rim + top), material)  # sections and points from tolerances
     rh = rw + 0.5 * (Rc - rw)
     # two thick frustums (foot ring to mid-cavetto, on to the rim): the six 2-3 mm bands of the profile made
     # PhysX report a plate sliding along its slot 16-18 mm deep in a prong cap 5 mm away (plate_rack seed 32)
@@ -311,7 +310,8 @@ def plate(radius: float, height: float, wall: float, foot_r: float, material: st
 
 def dowel(x: float, y: float, z_lo: float, z_hi: float, r: float, material: str) -> list[g.Piece]:
     """A prong: a cylinder with a domed top."""
-    return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, 16), g.sphere([x, y, z_hi - r], r, material)]
+    return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, None),
+            g.sphere([x, y, z_hi - r], r, material, subdivisions=None)]
 
 
 BATTEN_W = 0.024  # a wooden rack's cross battens
