@@ -107,10 +107,13 @@ def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece
 
 
 def perforations(face: float, out: float, u: float, z0: float, z1: float) -> g.Piece:
-    """Two columns of small slots on an upright's front or back face (decoration, no collision)."""
+    """Two columns of small slots on an upright's front or back face (decoration, no collision): each a
+    flat pyramid (6 triangles, not a box's 12) whose 8 x 22 mm base stands 0.3 mm proud of the face and
+    whose apex is hidden in the upright."""
     zs = np.arange(z0, z1, 0.05)
-    offsets = np.array([[face + out * 0.0005, dy, z] for z in zs for dy in (-0.25 * u, 0.25 * u)])
-    verts, faces = g.instances(*g.box_arrays([0.0015, 0.008, 0.022]), offsets)
+    offsets = np.array([[face, dy, z] for z in zs for dy in (-0.25 * u, 0.25 * u)])
+    slot = np.array([[out * 0.0003, y, z] for y in (-0.004, 0.004) for z in (-0.011, 0.011)] + [[-out * 0.001, 0, 0]])
+    verts, faces = g.instances(*g.hull_arrays(slot), offsets)
     return g.Piece(verts, faces, "holes", [], "perforation")
 
 
