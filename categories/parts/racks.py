@@ -367,15 +367,16 @@ def wire_rack(fences, xs, b, rw, hp, base_h) -> tuple[list[g.Piece], float]:
     top = zs + hp - rw  # axis of the arch's top bar
     pieces = []
     for y in (-b, b):
-        pieces.append(g.cylinder([xa, y, zr], [xb, y, zr], rw, "frame", 12))
+        pieces.append(g.cylinder([xa, y, zr], [xb, y, zr], rw, "frame", None))  # wire: sections_for(rw)
         for x in (xa + 0.012, xb - 0.012):
-            pieces.append(g.cylinder([x, y, cap - 0.001], [x, y, zr], rw, "frame", 12))
-            pieces.append(g.cylinder([x, y, 0.0], [x, y, cap], 0.0055, "feet", 16))
+            pieces.append(g.cylinder([x, y, cap - 0.001], [x, y, zr], rw, "frame", None))
+            pieces.append(g.cylinder([x, y, 0.0], [x, y, cap], 0.0055, "feet", None))
     for x in fences:
-        pieces.append(g.cylinder([x, -b - 0.01, zr - rw], [x, b + 0.01, zr - rw], rw, "frame", 12))
+        pieces.append(g.cylinder([x, -b - 0.01, zr - rw], [x, b + 0.01, zr - rw], rw, "frame", None))
         for y in (-b, b):
-            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", 12), g.sphere([x, y, top], rw, "prong")]
-        pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", 12))
+            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", None),
+                       g.sphere([x, y, top], rw, "prong", subdivisions=None)]
+        pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", None))
     return pieces, zs
 
 
