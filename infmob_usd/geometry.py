@@ -49,11 +49,12 @@ BAND_TOL = 0.0005
 collinear bands into one."""
 
 
-def sections_for(radius: float, tol: float = CHORD_TOL, lo: int = 8, hi: int = 64) -> int:
+def sections_for(radius: float, tol: float = CHORD_TOL, lo: int = 12, hi: int = 64) -> int:
     """The fewest sections round ``radius`` whose facets stay within ``tol`` of the circle (sagitta
     ``r (1 - cos(pi / n)) <= tol``), rounded up to a multiple of 4 (so quarter turns fall on a
-    section) and clamped to ``[lo, hi]``: 8 round a 2 mm wire, 12 round a 1 cm knob, 24 round a
-    3.5 cm bottle, 36 round a 10 cm vase, 64 from a 30 cm table top on."""
+    section) and clamped to ``[lo, hi]``: 12 round a wire or a 1 cm knob (fewer would turn more than
+    :data:`CREASE_DEG` from face to face and be drawn flat-shaded), 24 round a 3.5 cm bottle, 36 round
+    a 10 cm vase, 64 from a 30 cm table top on."""
     radius = float(radius)
     if radius <= tol:
         return int(lo)
@@ -969,7 +970,7 @@ def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections
     bow handle, a hairpin leg. Each ring is square to the path's mean tangent at its point (rings turned
     with the path by parallel transport, so the rod never twists); the ends are capped flat. Each segment
     between two rings is one convex collision piece (a short, possibly slanted, cylinder). ``sections``
-    round the rod: by default :func:`sections_for` its radius (8 to 24)."""
+    round the rod: by default :func:`sections_for` its radius (12 to 24)."""
     pts = np.asarray(path, float)
     if pts.ndim != 2 or pts.shape[1] != 3 or len(pts) < 2 or not np.isfinite(pts).all() or radius <= 0:
         raise GeometryError(f"tube needs a (k>=2, 3) finite path and radius > 0, got {pts.shape}, r={radius}")
@@ -1023,22 +1024,17 @@ def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections
     return Piece(verts, faces, material, convex, name, _owned=True)
 
 
-def sphere(center: Sequence[float], radius: float, material: str, name: str = "",
-           subdivisions: int | None = 2) -> Piece:
-    """A solid sphere: an icosphere subdivided ``subdivisions`` times (None: the fewest, 1 to 3, whose
-    facets stay within :data:`CHORD_TOL` of the sphere: 1 up to a radius of 8 mm, 2 up to 3 cm)."""
-    if subdivisions is None:
-        # an icosphere's longest edge spans about 36 / 2**(s - 1) degrees after s subdivisions
-        subdivisions = next((s for s in (1, 2) if radius * (1 - math.cos(math.radians(18 / 2 ** (s - 1))))
-                             <= CHORD_TOL), 3)
-    v, f = _unit_icosphere(subdivisions)
+def sphere(center: Sequence[float], radius: float, material: str, name: str = "") -> Piece:
+    """A solid sphere (icosphere, subdivided twice: once would leave 36 degrees from face to face, more
+    than :data:`CREASE_DEG`, and be drawn faceted)."""
+    v, f = _unit_icosphere()
     v = v * float(radius) + np.asarray(center, float)
     return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)
 
 
 @functools.cache
-def _unit_icosphere(subdivisions: int = 2) -> tuple[np.ndarray, np.ndarray]:
-    mesh = trimesh.creation.icosphere(subdivisions=subdivisions, radius=1.0)
+def _unit_icosphere() -> tuple[np.ndarray, np.ndarray]:
+    mesh = trimesh.creation.icosphere(subdivisions=2, radius=1.0)
     v, f = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
     v.flags.writeable = False
     f.flags.writeable = False

@@ -133,11 +133,12 @@ def test_declared_hulls_skip_qhull_and_travel_with_transforms():
 def test_sections_for_keeps_the_sagitta_within_the_chord_tolerance_with_the_fewest_multiple_of_4():
     for r in (0.002, 0.01, 0.035, 0.1, 0.3, 1.0):
         n = g.sections_for(r)
-        assert n % 4 == 0 and 8 <= n <= 64
-        if 8 < n < 64:
+        assert n % 4 == 0 and 12 <= n <= 64
+        if 12 < n < 64:
             assert r * (1 - math.cos(math.pi / n)) <= g.CHORD_TOL + 1e-12
             assert r * (1 - math.cos(math.pi / (n - 4))) > g.CHORD_TOL  # four fewer would not do
-    assert [g.sections_for(r) for r in (0.002, 0.01, 0.035, 0.1, 1.0)] == [8, 12, 24, 36, 64]
+    assert [g.sections_for(r) for r in (0.002, 0.01, 0.035, 0.1, 1.0)] == [12, 12, 24, 36, 64]
+    assert 360 / g.sections_for(0.0) < g.CREASE_DEG  # never so few that the normals split: flat shading
     # the default of revolve and shell: a small knob gets few sections, a wide bowl many
     knob = g.revolve([(0, 0), (0.01, 0), (0.01, 0.01), (0, 0.01)], "m")
     bowl = g.shell([(0.15, 0.0), (0.16, 0.05)], 0.003, "m")
@@ -170,8 +171,3 @@ def test_shell_merges_collinear_collision_bands_and_stays_hollow():
     inside = np.vstack(straight.convex)
     assert np.hypot(inside[:, 0], inside[:, 1]).min() > 0.04  # no hull reaches the axis: a hollow wall
 
-
-def test_sphere_subdivisions_from_the_chord_tolerance():
-    assert len(g.sphere((0, 0, 0), 0.004, "m", subdivisions=None).faces) == 80
-    assert len(g.sphere((0, 0, 0), 0.02, "m", subdivisions=None).faces) == 320
-    assert len(g.sphere((0, 0, 0), 0.004, "m").faces) == 320  # the default is unchanged

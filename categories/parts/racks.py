@@ -314,7 +314,7 @@ def plate(radius: float, height: float, wall: float, foot_r: float, material: st
 def dowel(x: float, y: float, z_lo: float, z_hi: float, r: float, material: str) -> list[g.Piece]:
     """A prong: a cylinder with a domed top."""
     return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, None),
-            g.sphere([x, y, z_hi - r], r, material, subdivisions=None)]
+            g.sphere([x, y, z_hi - r], r, material)]
 
 
 BATTEN_W = 0.024  # a wooden rack's cross battens
@@ -374,8 +374,7 @@ def wire_rack(fences, xs, b, rw, hp, base_h) -> tuple[list[g.Piece], float]:
     for x in fences:
         pieces.append(g.cylinder([x, -b - 0.01, zr - rw], [x, b + 0.01, zr - rw], rw, "frame", None))
         for y in (-b, b):
-            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", None),
-                       g.sphere([x, y, top], rw, "prong", subdivisions=None)]
+            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", None), g.sphere([x, y, top], rw, "prong")]
         pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", None))
     return pieces, zs
 
