@@ -35,6 +35,66 @@ its maps at this scale: ``infmob_usd.materials.synth.TILE_METRES``)."""
 CREASE_DEG = 35.0
 """Edges sharper than this get split normals."""
 
+CHORD_TOL = 0.0004
+"""Metres a round surface's facets may fall inside the true circle (the sagitta of one section):
+:func:`sections_for` picks the fewest sections round a radius that keep to it. Normals are smooth,
+so a silhouette reads round at this tolerance (0.4 mm: under a pixel of a 512 px picture of a
+30 cm object)."""
+
+PROFILE_TOL = 0.0002
+"""Metres a simplified profile curve may stray from the curve it thins (:func:`simplify_profile`)."""
+
+BAND_TOL = 0.0005
+"""Metres a shell's collision band may stray from its profile where :func:`shell` merges nearly
+collinear bands into one."""
+
+
+def sections_for(radius: float, tol: float = CHORD_TOL, lo: int = 12, hi: int = 64) -> int:
+    """The fewest sections round ``radius`` whose facets stay within ``tol`` of the circle (sagitta
+    ``r (1 - cos(pi / n)) <= tol``), rounded up to a multiple of 4 (so quarter turns fall on a
+    section) and clamped to ``[lo, hi]``: 12 round a wire or a 1 cm knob (fewer would turn more than
+    :data:`CREASE_DEG` from face to face and be drawn flat-shaded), 24 round a 3.5 cm bottle, 36 round
+    a 10 cm vase, 64 from a 30 cm table top on."""
+    radius = float(radius)
+    if radius <= tol:
+        return int(lo)
+    n = math.pi / math.acos(1.0 - tol / radius)
+    return int(min(hi, max(lo, 4 * math.ceil(n / 4 - 1e-9))))
+
+
+def simplify_profile(points, tol: float = PROFILE_TOL, max_turn: float = 20.0) -> np.ndarray:
+    """The fewest of ``(p, 2)`` polyline points that keep the curve within ``tol`` (Douglas-Peucker)
+    and turn at most ``max_turn`` degrees over any one kept segment (so a curve that was smooth
+    still gets smooth normals, :data:`CREASE_DEG`). The first and last points are kept."""
+    pts = np.asarray(points, float)
+    if len(pts) < 3:
+        return pts.copy()
+    d = np.diff(pts, axis=0)
+    heading = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    turn = np.r_[0.0, np.cumsum(np.abs(np.diff(heading)))]  # turn[k]: total turning before segment k
+    limit = math.radians(max_turn)
+    keep = np.zeros(len(pts), bool)
+    keep[[0, -1]] = True
+    stack = [(0, len(pts) - 1)]
+    while stack:
+        i, j = stack.pop()
+        if j - i < 2:
+            continue
+        a, b = pts[i], pts[j]
+        ab = b - a
+        L = float(np.hypot(*ab))
+        mid = pts[i + 1:j]
+        if L < 1e-12:
+            dist = np.hypot(*(mid - a).T)
+        else:
+            dist = np.abs(ab[0] * (mid[:, 1] - a[1]) - ab[1] * (mid[:, 0] - a[0])) / L
+        k = int(np.argmax(dist))
+        if dist[k] > tol or turn[j - 1] - turn[i] > limit:
+            m = i + 1 + k if dist[k] > tol else (i + j) // 2
+            keep[m] = True
+            stack += [(i, m), (m, j)]
+    return pts[keep]
+
 
 def cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row-wise cross product of ``(n, 3)`` arrays: ``np.cross`` without its per-call overhead
@@ -1053,21 +1113,24 @@ def panel(lo: Sequence[float], hi: Sequence[float], material: str, normal_axis: 
 
 
 def cylinder(p0: Sequence[float], p1: Sequence[float], radius: float, material: str,
-             sections: int = 24, name: str = "") -> Piece:
-    """A solid cylinder from point ``p0`` to ``p1``."""
+             sections: int | None = 24, name: str = "") -> Piece:
+    """A solid cylinder from point ``p0`` to ``p1``; ``sections=None``: :func:`sections_for` its radius."""
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
     if radius <= 0 or np.linalg.norm(p1 - p0) <= 0:
         raise GeometryError(f"cylinder needs radius > 0 and distinct ends, got r={radius}")
+    if sections is None:
+        sections = sections_for(radius)
     v, f = _cylinder_arrays(p0, p1, radius, sections)
     return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)  # a closed convex mesh is its own hull
 
 
-def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections: int = 12,
+def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections: int | None = None,
          name: str = "") -> Piece:
     """A solid round rod of ``radius`` swept along the polyline ``path`` (``(k >= 2, 3)``): a bent wire, a
     bow handle, a hairpin leg. Each ring is square to the path's mean tangent at its point (rings turned
     with the path by parallel transport, so the rod never twists); the ends are capped flat. Each segment
-    between two rings is one convex collision piece (a short, possibly slanted, cylinder)."""
+    between two rings is one convex collision piece (a short, possibly slanted, cylinder). ``sections``
+    round the rod: by default :func:`sections_for` its radius (12 to 24)."""
     pts = np.asarray(path, float)
     if pts.ndim != 2 or pts.shape[1] != 3 or len(pts) < 2 or not np.isfinite(pts).all() or radius <= 0:
         raise GeometryError(f"tube needs a (k>=2, 3) finite path and radius > 0, got {pts.shape}, r={radius}")
@@ -1076,6 +1139,8 @@ def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections
     if (length < 1e-9).any():
         raise GeometryError("tube path has two equal consecutive points")
     seg = seg / length[:, None]
+    if sections is None:
+        sections = sections_for(radius, hi=24)
     tangent = np.vstack([seg[:1], seg[:-1] + seg[1:], seg[-1:]])
     tangent /= np.maximum(np.linalg.norm(tangent, axis=1, keepdims=True), 1e-12)
     # a first normal across the first tangent, then carried along (parallel transport)
@@ -1120,7 +1185,8 @@ def tube(path: Sequence[Sequence[float]], radius: float, material: str, sections
 
 
 def sphere(center: Sequence[float], radius: float, material: str, name: str = "") -> Piece:
-    """A solid sphere (icosphere, subdivided twice)."""
+    """A solid sphere (icosphere, subdivided twice: once would leave 36 degrees from face to face, more
+    than :data:`CREASE_DEG`, and be drawn faceted)."""
     v, f = _unit_icosphere()
     v = v * float(radius) + np.asarray(center, float)
     return Piece(v, f, material, [v], name, hulls=[(v, f)], _owned=True)
@@ -1136,16 +1202,19 @@ def _unit_icosphere() -> tuple[np.ndarray, np.ndarray]:
 
 
 def revolve(profile: Sequence[tuple[float, float]], material: str, center: Sequence[float] = (0, 0, 0),
-            sections: int = 32, name: str = "") -> Piece:
+            sections: int | None = None, name: str = "") -> Piece:
     """A solid of revolution about +Z through ``center``.
 
     ``profile`` is ``(p, 2)`` of ``(radius, z)`` points from the bottom centre
     (radius 0) up the outside to the top centre (radius 0). Each band between
-    consecutive profile points is one convex frustum for collisions.
+    consecutive profile points is one convex frustum for collisions. ``sections`` round
+    the axis: by default :func:`sections_for` the largest radius.
     """
     prof = np.asarray(profile, float)
     if prof.ndim != 2 or prof.shape[1] != 2 or len(prof) < 3 or (prof[:, 0] < 0).any():
         raise GeometryError("revolve profile must be (p>=3, 2) of (radius >= 0, z)")
+    if sections is None:
+        sections = sections_for(float(prof[:, 0].max()))
     verts, faces = revolve_arrays(prof, sections)
     verts = verts + np.asarray(center, float)
     th = np.linspace(0, 2 * np.pi, 16, endpoint=False)
@@ -1178,14 +1247,17 @@ def _outward(pts: np.ndarray, faces: np.ndarray) -> np.ndarray:
 
 
 def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
-          center: Sequence[float] = (0, 0, 0), sections: int = 32, convex_sectors: int | None = None,
+          center: Sequence[float] = (0, 0, 0), sections: int | None = None, convex_sectors: int | None = None,
           name: str = "") -> Piece:
     """A thin wall of revolution (lamp shade, bowl, pot wall), open at both ends.
 
     ``outer`` is ``(p, 2)`` of ``(radius, z)`` points of the outside surface,
     bottom to top; the inside is the same profile moved ``thickness`` inward.
+    ``sections`` round the axis: by default :func:`sections_for` the largest radius.
     Collisions are ``convex_sectors`` wedges per band, so the inside stays hollow; by
     default one wedge per ~3 cm of circumference (8 to 32), so small rings get no slivers.
+    Consecutive bands whose profile is straight to within :data:`BAND_TOL` collide as one
+    band (:func:`collision_bands`).
     """
     outer = np.asarray(outer, float)
     if outer.ndim != 2 or len(outer) < 2 or (outer[:, 0] - thickness <= 0).any():
@@ -1194,10 +1266,12 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
     closed = np.vstack([outer, inner[::-1], outer[:1]])
     # a closed outline gives a closed (watertight) wall
     c = np.asarray(center, float)
-    verts, faces = revolve_arrays(closed, sections)
+    verts, faces = revolve_arrays(closed, sections_for(float(outer[:, 0].max())) if sections is None else sections)
     verts = verts + c
     if convex_sectors is None:
         convex_sectors = int(np.clip(np.ceil(2 * np.pi * outer[:, 0].max() / 0.03), 8, 32))
+    outer = collision_bands(outer)
+    inner = outer - [thickness, 0]
     angles = np.linspace(0, 2 * np.pi, convex_sectors + 1)
     th = np.linspace(angles[:-1], angles[1:], 4, axis=1)  # (sectors, 4)
     cos, sin = np.cos(th)[:, None, :], np.sin(th)[:, None, :]
@@ -1210,6 +1284,27 @@ def shell(outer: Sequence[tuple[float, float]], thickness: float, material: str,
         convex += list(pts)
     return Piece(verts, faces, material, convex, name, bands=_turned_copies(convex, convex_sectors, angles[:-1], c),
                  _owned=True)
+
+
+def collision_bands(profile, tol: float = BAND_TOL) -> np.ndarray:
+    """The points of a ``(p, 2)`` ``(radius, z)`` wall profile that bound its collision bands: a point
+    whose neighbours' chord passes within ``tol`` of it is dropped (the bands on either side collide
+    as one), so a straight wall sampled at many points collides as one band, a curve keeps a band per
+    turn. The ends are always kept."""
+    pts = np.asarray(profile, float)
+    if len(pts) < 3:
+        return pts
+    keep = [0]
+    for i in range(1, len(pts) - 1):
+        a, b = pts[keep[-1]], pts[i + 1]
+        ab = b - a
+        span = pts[keep[-1] + 1:i + 1]  # every point the merged band would skip
+        L = float(np.hypot(*ab))
+        dist = np.abs(ab[0] * (span[:, 1] - a[1]) - ab[1] * (span[:, 0] - a[0])) / max(L, 1e-12)
+        if dist.max() > tol:
+            keep.append(i)
+    keep.append(len(pts) - 1)
+    return pts[keep]
 
 
 def wedge_points(outer, inner, sectors: int, phase: float = 0.0) -> np.ndarray:
@@ -1245,9 +1340,10 @@ def _turned_copies(convex: list, count: int, turns: np.ndarray, point: np.ndarra
     return out
 
 
-def disc(center: Sequence[float], radius: float, thickness: float, material: str, sections: int = 32,
+def disc(center: Sequence[float], radius: float, thickness: float, material: str, sections: int | None = 32,
          name: str = "") -> Piece:
-    """A flat cylinder lying in the XY plane, ``center`` at its middle."""
+    """A flat cylinder lying in the XY plane, ``center`` at its middle (``sections=None``: :func:`sections_for`
+    its radius)."""
     c = np.asarray(center, float)
     return cylinder(c - [0, 0, thickness / 2], c + [0, 0, thickness / 2], radius, material, sections, name)
 

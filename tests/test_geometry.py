@@ -1,3 +1,5 @@
+import math
+
 import numpy as np
 import pytest
 import trimesh
@@ -123,3 +125,49 @@ def test_declared_hulls_skip_qhull_and_travel_with_transforms():
     (mv, mf), = moved.hulls()
     assert np.array_equal(mf, f) and np.allclose(mv, v @ m[:3, :3].T + m[:3, 3])
     assert trimesh.Trimesh(mv, mf).is_watertight and trimesh.Trimesh(mv, mf).volume > 0
+
+
+# -- tolerances: sections round an axis, profile points, collision bands ---------------------------
+
+
+def test_sections_for_keeps_the_sagitta_within_the_chord_tolerance_with_the_fewest_multiple_of_4():
+    for r in (0.002, 0.01, 0.035, 0.1, 0.3, 1.0):
+        n = g.sections_for(r)
+        assert n % 4 == 0 and 12 <= n <= 64
+        if 12 < n < 64:
+            assert r * (1 - math.cos(math.pi / n)) <= g.CHORD_TOL + 1e-12
+            assert r * (1 - math.cos(math.pi / (n - 4))) > g.CHORD_TOL  # four fewer would not do
+    assert [g.sections_for(r) for r in (0.002, 0.01, 0.035, 0.1, 1.0)] == [12, 12, 24, 36, 64]
+    assert 360 / g.sections_for(0.0) < g.CREASE_DEG  # never so few that the normals split: flat shading
+    # the default of revolve and shell: a small knob gets few sections, a wide bowl many
+    knob = g.revolve([(0, 0), (0.01, 0), (0.01, 0.01), (0, 0.01)], "m")
+    bowl = g.shell([(0.15, 0.0), (0.16, 0.05)], 0.003, "m")
+    assert len(knob.faces) == 2 * 12 * 3 - 2 * 12 and len(bowl.vertices) == 4 * g.sections_for(0.16)
+
+
+def test_simplify_profile_keeps_the_curve_within_tolerance_and_turns_gently():
+    t = np.linspace(-math.pi / 2, 0, 400)
+    arc = np.c_[0.05 * np.cos(t), 0.05 * np.sin(t)]  # a 5 cm quarter circle, then straight on up
+    line = np.c_[np.full(100, 0.05), np.linspace(0.0, 0.25, 100)]
+    pts = np.vstack([arc, line[1:]])
+    out = g.simplify_profile(pts)
+    assert np.allclose(out[0], pts[0]) and np.allclose(out[-1], pts[-1]) and len(out) < 30
+    # every original point within PROFILE_TOL of the thinned polyline
+    seg_a, seg_b = out[:-1], out[1:]
+    d = seg_b - seg_a
+    w = np.clip(np.einsum("ijk,jk->ij", pts[:, None] - seg_a[None], d) / np.einsum("jk,jk->j", d, d), 0, 1)
+    near = np.linalg.norm(pts[:, None] - (seg_a[None] + w[..., None] * d[None]), axis=2).min(1)
+    assert near.max() <= g.PROFILE_TOL + 1e-12
+    heading = np.degrees(np.arctan2(*np.diff(out, axis=0).T[::-1]))
+    assert np.abs(np.diff(heading)).max() <= 20.0 + 1e-9  # smooth normals where the curve was smooth
+
+
+def test_shell_merges_collinear_collision_bands_and_stays_hollow():
+    zs = np.linspace(0.0, 0.2, 9)
+    straight = g.shell(np.c_[np.full(9, 0.05), zs], 0.003, "m", convex_sectors=12)
+    assert len(straight.convex) == 12  # eight collinear bands collide as one
+    bent = g.shell([(0.05, 0.0), (0.05, 0.1), (0.03, 0.2)], 0.003, "m", convex_sectors=12)
+    assert len(bent.convex) == 24
+    inside = np.vstack(straight.convex)
+    assert np.hypot(inside[:, 0], inside[:, 1]).min() > 0.04  # no hull reaches the axis: a hollow wall
+

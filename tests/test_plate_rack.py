@@ -160,7 +160,7 @@ def test_plates_are_upright_dishes_of_the_given_radius(seed):
         size = piece.bounds[1] - piece.bounds[0]
         assert size[1] == pytest.approx(2 * R, rel=0.01) and size[2] == pytest.approx(2 * R, rel=0.01)
         assert size[0] < 0.25 * R  # on edge: thin along X
-        assert len(piece.vertices) > 1000  # a smooth profile of revolution
+        assert len(piece.vertices) > 400  # a smooth profile of revolution (thinned to the chord tolerances)
         # a real dish: thinner than its height (hollow on top), ceramic mass of a plate
         vol = piece.volume()
         assert vol < 0.5 * math.pi * R * R * size[0]

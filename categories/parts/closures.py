@@ -19,7 +19,7 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
 
 from . import closure_sizes as C
-from .vessel import SECTIONS, UP, Profile, _at, _closure, _piece, _plug_lid, _supports, lid_gap
+from .vessel import UP, Profile, _at, _closure, _piece, _plug_lid, _supports, lid_gap
 
 # ---------------------------------------------------------------------------
 # vase
@@ -32,7 +32,7 @@ def stand_foot(body: Profile, slot: str) -> Assembly:
     r_top = body.base_radius - 0.2 * body.thickness
     top = -f["gap"]
     width = min(f["width"], f["width_ratio"] * r_top)
-    ring = g.shell([(r_top + f["flare"], top - f["height"]), (r_top, top)], width, slot, sections=SECTIONS)
+    ring = g.shell([(r_top + f["flare"], top - f["height"]), (r_top, top)], width, slot)
     return Assembly.single("stand", [ring], {"mount": IDENTITY}, _supports(r_top + f["flare"], top - f["height"]))
 
 
@@ -57,10 +57,9 @@ def liner(mouth: Profile, slot: str, reach: float) -> tuple[Assembly, float]:
     t = min(L["wall"], 0.3 * r_out)
     z_top = H + gap
     tube = Profile.through([(r_out, z_bot), (r_out, 0.5 * (z_bot + z_top)), (r_out, z_top)], t, (24, 3))
-    floor = g.disc((0, 0, z_bot + t / 2), r_out - 0.2 * t, t, slot, SECTIONS)
+    floor = g.disc((0, 0, z_bot + t / 2), r_out - 0.2 * t, t, slot, None)
     r_fl = max(mouth.top_radius + L["flange"], r_out + L["flange"])
-    flange = g.shell([(r_fl, z_top), (r_fl, z_top + L["flange_t"])], r_fl - r_out + 0.5 * t, slot,
-                     sections=SECTIONS)
+    flange = g.shell([(r_fl, z_top), (r_fl, z_top + L["flange_t"])], r_fl - r_out + 0.5 * t, slot)
     a = _closure("liner", [tube.wall(slot), floor, flange], H, z_top + L["flange_t"])
     return a, min(H - z_bot, L["max_lift"])
 
@@ -147,7 +146,7 @@ def neck_ring_and_hinge(neck: Profile, slot: str, lever: bool) -> tuple[list[g.P
     r_lid = n + k["overhang"]
     z_ring = H - k["ring_below"]
     r_ring = neck.outer_radius(z_ring - w, z_ring + w) + w + 0.0003
-    ring = g.shell([(r_ring + w, z_ring - w), (r_ring + w, z_ring + w)], 2 * w, slot, sections=SECTIONS,
+    ring = g.shell([(r_ring + w, z_ring - w), (r_ring + w, z_ring + w)], 2 * w, slot,
                    convex_sectors=16)
     gap = lid_gap(k["glass"])
     z_h = H + gap + k["glass"] / 2
@@ -177,14 +176,13 @@ def clip_lid(neck: Profile, slot: str, gasket_slot: str, wire_slot: str, hinge: 
     dome = k["dome"] * t if knob <= 0 else 0.0
     prof = [(0.0, zb), (r_lid, zb), (r_lid, zt - 0.3 * t), (0.92 * r_lid, zt), (0.5 * r_lid, zt + 0.8 * dome),
             (0.0, zt + dome)]
-    plate = g.revolve(prof, slot, sections=SECTIONS)
+    plate = g.revolve(prof, slot)
     a = np.linspace(0, 2 * np.pi, 20, endpoint=False)
     hull = np.vstack([np.c_[r_lid * np.cos(a), r_lid * np.sin(a), np.full(20, z)] for z in (zb, zt - 0.3 * t)]
                      + [np.c_[0.92 * r_lid * np.cos(a), 0.92 * r_lid * np.sin(a), np.full(20, zt)]])
     pieces = [_piece(plate, convex=[hull])]
     gw, gh = k["gasket"]
-    gasket = g.shell([(n + 0.6 * gw, zb - 0.0002), (n + 0.6 * gw, zb + 0.25 * gh)], gw, gasket_slot,
-                     sections=SECTIONS)
+    gasket = g.shell([(n + 0.6 * gw, zb - 0.0002), (n + 0.6 * gw, zb + 0.25 * gh)], gw, gasket_slot)
     pieces.append(_piece(gasket, convex=[]))
     # the lid's knuckle on the hinge line, and the tab joining it to the lid's back edge
     o = hinge.origin
@@ -262,11 +260,10 @@ def swing_top(neck: Profile, slot: str, washer_slot: str, wire_slot: str) -> tup
     zb, h, dome = H + gap, k["height"], k["dome"]
     prof = [(0.0, zb), (r_cap, zb), (r_cap, zb + 0.55 * h), (0.85 * r_cap, zb + h), (0.45 * r_cap, zb + h + 0.8 * dome),
             (0.0, zb + h + dome)]
-    cap = g.revolve(prof, slot, sections=SECTIONS)
+    cap = g.revolve(prof, slot)
     # hollow-cast porcelain (Grolsch stoppers weigh ~10-15 g with wire and washer): 3 mm walls
     pieces = [_piece(cap, sheet=C.SWING_TOP["porcelain"], convex=[_round_hull(prof[1:-1] + [(0.0, zb + h + dome)])])]
-    washer = g.shell([(r_cap - 0.0004, zb - 0.0004), (r_cap - 0.0004, zb + 0.001)], k["washer"], washer_slot,
-                     sections=SECTIONS)
+    washer = g.shell([(r_cap - 0.0004, zb - 0.0004), (r_cap - 0.0004, zb + 0.001)], k["washer"], washer_slot)
     pieces.append(_piece(washer, convex=[]))
     z_r = H - k["ring_below"]
     r_ring = neck.outer_radius(z_r - 2 * w, z_r + 2 * w) + w + 0.0003
@@ -283,7 +280,7 @@ def swing_top(neck: Profile, slot: str, washer_slot: str, wire_slot: str) -> tup
             pieces.append(_piece(_wire(a, b, wire_slot, w), convex=[]))
         pieces.append(_piece(g.cylinder((0.0, s * r_cap * 0.97, z_p), (0.0, s * (r_cap + 1.5 * w), z_p), 1.5 * w,
                                         wire_slot, 10), convex=[]))
-    fittings = [g.shell([(r_ring + w, z_r - w), (r_ring + w, z_r + w)], 2 * w, wire_slot, sections=SECTIONS,
+    fittings = [g.shell([(r_ring + w, z_r - w), (r_ring + w, z_r + w)], 2 * w, wire_slot,
                         convex_sectors=16),
                 g.cylinder((x_c, -0.3 * r_ring, z_r), (x_c, 0.3 * r_ring, z_r), 1.8 * w, wire_slot, 12)]
     frames = {"swing": Frame.at((x_c, 0.0, z_r), z=(0, -1, 0), x=(1, 0, 0)),
@@ -356,15 +353,15 @@ def steamer_tier(pot, height: float, slot: str, rim_slot: str, handle_slot: str,
     d = k["skirt"] if skirt is None else float(skirt)
     r_s = float(pot.radius_at(pot.rim_top - d - 0.002)) - pot.wall - k["room"]
     bead = max(0.0015, 0.8 * (pot.rim_outer - pot.rim_inner - pot.wall) / 2)
-    wall = g.shell([(r_top, 0.0), (r_top, height - bead)], t, slot, sections=SECTIONS)
-    skirt = g.shell([(r_s, -d), (r_s, t)], t, slot, sections=SECTIONS)
-    shoulder = g.shell([(r_top, 0.0), (r_top, t)], r_top - r_s + t, slot, sections=SECTIONS)
-    floor = g.disc((0, 0, -d + t / 2), r_s - 0.5 * t, t, slot, SECTIONS)
+    wall = g.shell([(r_top, 0.0), (r_top, height - bead)], t, slot)
+    skirt = g.shell([(r_s, -d), (r_s, t)], t, slot)
+    shoulder = g.shell([(r_top, 0.0), (r_top, t)], r_top - r_s + t, slot)
+    floor = g.disc((0, 0, -d + t / 2), r_s - 0.5 * t, t, slot, None)
     cx, cz = r_top - t + bead, height - bead
     th = np.linspace(0.0, math.pi, 13)
     outer = np.c_[cx + bead * np.sin(th), cz - bead * np.cos(th)]
     box = g.shell([(cx + bead, cz - bead), (cx + bead, cz + bead)], 2 * bead, rim_slot, sections=8)
-    rim = g.shell(outer, bead, rim_slot, sections=SECTIONS).with_collision_of(box)
+    rim = g.shell(outer, bead, rim_slot).with_collision_of(box)
     hl, hr, hs = k["handle"]
     pieces = [wall, skirt, shoulder, floor, rim]
     for s in (1, -1):

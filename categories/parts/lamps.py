@@ -369,7 +369,7 @@ def _base(bp: Blueprint, p: dict, q: dict) -> None:
         a = 0.9 * R
         piece = g.box_between((-a, -a, 0), (a, a, t), "base", bevel=min(0.004, t / 4))
     elif shape == "round":
-        piece = g.revolve([(0, 0), (R, 0), (R, 0.6 * t), (R - 0.4 * t, t), (0, t)], "base", sections=48)
+        piece = g.revolve([(0, 0), (R, 0), (R, 0.6 * t), (R - 0.4 * t, t), (0, t)], "base")
     else:
         rim, z_rim, z_b = 0.3 * R, 0.5 * t, q["z_b"]
         r_top = q["r_lo"] + 0.009
@@ -377,7 +377,7 @@ def _base(bp: Blueprint, p: dict, q: dict) -> None:
         for f in np.linspace(0, math.pi / 2, 7)[1:]:
             prof.append((r_top + (R - rim - r_top) * math.cos(f), z_rim + (z_b - z_rim) * math.sin(f)))
         prof.append((0, z_b))
-        piece = g.revolve(prof, "base", sections=48)
+        piece = g.revolve(prof, "base")
     bp.add("base", "base", [piece, _weight(shape, R, t, prof if shape == "domed" else None)])
 
 
@@ -440,7 +440,7 @@ def _weight(shape: str, R: float, t: float, prof: list | None = None) -> g.Piece
     else:  # under the dome: its profile pulled inward and down
         z0 = 0.06 * t
         inner = [(0.95 * r, z0 + 0.9 * (z - z0)) for r, z in prof[3:-1]]
-        w = g.revolve([(0, z0), (0.95 * prof[2][0], z0), *inner, (0, inner[-1][1])], "weight", sections=48)
+        w = g.revolve([(0, z0), (0.95 * prof[2][0], z0), *inner, (0, inner[-1][1])], "weight")
     return w.replace(convex=[])
 
 
@@ -537,8 +537,8 @@ def _bulb_profile(r_g: float, r_neck: float) -> tuple[np.ndarray, float]:
 
 def _glass(profile: np.ndarray, center: tuple[float, float, float]) -> g.Piece:
     """A bulb's glass: a thin wall (so it weighs what glass does), colliding as one solid hull."""
-    solid = g.revolve(profile, "bulb", center=center, sections=24)
-    wall = g.shell(profile[profile[:, 0] > 0.001], 0.0008, "bulb", center=center, sections=24)
+    solid = g.revolve(profile, "bulb", center=center)
+    wall = g.shell(profile[profile[:, 0] > 0.001], 0.0008, "bulb", center=center)
     return g.Piece(wall.vertices, wall.faces, "bulb", [np.vstack(solid.convex)])
 
 
@@ -551,8 +551,8 @@ def _cap(r_cap: float, h_cap: float, slot: str, center: tuple[float, float, floa
     """A pressed-metal cap over a shade's top ring: a thin dome, colliding as a solid one."""
     r_top = max(0.55 * r_cap, 0.012)
     prof = [(r_cap, 0.0), (r_cap, 0.004), (r_top, h_cap)]
-    solid = g.revolve([(0, 0), *prof, (0, h_cap)], slot, center=center, sections=40)
-    wall = g.shell(prof, 0.0015, slot, center=center, sections=40)
+    solid = g.revolve([(0, 0), *prof, (0, h_cap)], slot, center=center)
+    wall = g.shell(prof, 0.0015, slot, center=center)
     top = g.disc((center[0], center[1], center[2] + h_cap - 0.001), r_top, 0.002, slot, 40)
     return [wall.with_collision_of(solid), top]
 
@@ -604,7 +604,7 @@ def _upright_head(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
     bp.add("head", "head", head)
     bp.join(J.continuous("upper_pole", "head", (0, 0, z_top), (0, 0, 1), role="swivel"))
 
-    shade = [g.shell(prof, th, "shade", center=(0, 0, z0), sections=48)]
+    shade = [g.shell(prof, th, "shade", center=(0, 0, z0))]
     if shape == "dome":  # a finial closes the top hole
         z1 = z0 + prof[-1, 1]
         shade.append(g.disc((0, 0, z1 + 0.003), prof[-1, 0] + 0.004, 0.006, "fitting"))
@@ -723,7 +723,7 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
     else:
         bp.join(J.revolute(parent, "head", (x, y, E[2]), (0, -1, 0), -tilt, tilt, role="swivel"))
 
-    bp.add("shade", "shade", [g.shell(prof, hd["th"], "shade", center=(x, y, z_cb - hs), sections=48)])
+    bp.add("shade", "shade", [g.shell(prof, hd["th"], "shade", center=(x, y, z_cb - hs))])
     bp.join(J.fixed("head", "shade"))
 
     if p["has_bulb"]:

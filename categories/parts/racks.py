@@ -107,10 +107,13 @@ def upright_frame(depth: float, u: float, top: float, slot: str) -> list[g.Piece
 
 
 def perforations(face: float, out: float, u: float, z0: float, z1: float) -> g.Piece:
-    """Two columns of small slots on an upright's front or back face (decoration, no collision)."""
+    """Two columns of small slots on an upright's front or back face (decoration, no collision): each a
+    flat pyramid (6 triangles, not a box's 12) whose 8 x 22 mm base stands 0.3 mm proud of the face and
+    whose apex is hidden in the upright."""
     zs = np.arange(z0, z1, 0.05)
-    offsets = np.array([[face + out * 0.0005, dy, z] for z in zs for dy in (-0.25 * u, 0.25 * u)])
-    verts, faces = g.instances(*g.box_arrays([0.0015, 0.008, 0.022]), offsets)
+    offsets = np.array([[face, dy, z] for z in zs for dy in (-0.25 * u, 0.25 * u)])
+    slot = np.array([[out * 0.0003, y, z] for y in (-0.004, 0.004) for z in (-0.011, 0.011)] + [[-out * 0.001, 0, 0]])
+    verts, faces = g.instances(*g.hull_arrays(slot), offsets)
     return g.Piece(verts, faces, "holes", [], "perforation")
 
 
@@ -268,7 +271,6 @@ def cabinet_drawer(x0: float, x1: float, y0: float, y1: float, z0: float, z1: fl
 
 # -- dish racks and plates -----------------------------------------------------------------------------
 SEAT_GAP = 0.004  # a plate's lowest point above the support surface at rest
-PLATE_SECTIONS = 64
 PLATE_SLIDE = 0.1  # how far a plate may slide along its slot, either way (the plastic tray's walls clear it)
 
 
@@ -299,7 +301,7 @@ def plate(radius: float, height: float, wall: float, foot_r: float, material: st
     under = [(r, mid(r) - t / 2) for r in np.linspace(rf + 0.3 * wf, Rc, 24)]
     rim = [(Rc + t / 2 * np.cos(x), c1 + t / 2 * np.sin(x)) for x in np.linspace(-np.pi / 2, np.pi / 2, 9)[1:-1]]
     top = [(r, mid(r) + t / 2) for r in np.linspace(Rc, 0.0, 28)]
-    fine = g.revolve(foot + under + rim + top, material, sections=PLATE_SECTIONS)
+    fine = g.revolve(g.simplify_profile(foot + under + rim + top), material)  # sections and points from tolerances
     rh = rw + 0.5 * (Rc - rw)
     # two thick frustums (foot ring to mid-cavetto, on to the rim): the six 2-3 mm bands of the profile made
     # PhysX report a plate sliding along its slot 16-18 mm deep in a prong cap 5 mm away (plate_rack seed 32)
@@ -311,7 +313,8 @@ def plate(radius: float, height: float, wall: float, foot_r: float, material: st
 
 def dowel(x: float, y: float, z_lo: float, z_hi: float, r: float, material: str) -> list[g.Piece]:
     """A prong: a cylinder with a domed top."""
-    return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, 16), g.sphere([x, y, z_hi - r], r, material)]
+    return [g.cylinder([x, y, z_lo], [x, y, z_hi - r], r, material, None),
+            g.sphere([x, y, z_hi - r], r, material)]
 
 
 BATTEN_W = 0.024  # a wooden rack's cross battens
@@ -364,15 +367,15 @@ def wire_rack(fences, xs, b, rw, hp, base_h) -> tuple[list[g.Piece], float]:
     top = zs + hp - rw  # axis of the arch's top bar
     pieces = []
     for y in (-b, b):
-        pieces.append(g.cylinder([xa, y, zr], [xb, y, zr], rw, "frame", 12))
+        pieces.append(g.cylinder([xa, y, zr], [xb, y, zr], rw, "frame", None))  # wire: sections_for(rw)
         for x in (xa + 0.012, xb - 0.012):
-            pieces.append(g.cylinder([x, y, cap - 0.001], [x, y, zr], rw, "frame", 12))
-            pieces.append(g.cylinder([x, y, 0.0], [x, y, cap], 0.0055, "feet", 16))
+            pieces.append(g.cylinder([x, y, cap - 0.001], [x, y, zr], rw, "frame", None))
+            pieces.append(g.cylinder([x, y, 0.0], [x, y, cap], 0.0055, "feet", None))
     for x in fences:
-        pieces.append(g.cylinder([x, -b - 0.01, zr - rw], [x, b + 0.01, zr - rw], rw, "frame", 12))
+        pieces.append(g.cylinder([x, -b - 0.01, zr - rw], [x, b + 0.01, zr - rw], rw, "frame", None))
         for y in (-b, b):
-            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", 12), g.sphere([x, y, top], rw, "prong")]
-        pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", 12))
+            pieces += [g.cylinder([x, y, zr], [x, y, top], rw, "prong", None), g.sphere([x, y, top], rw, "prong")]
+        pieces.append(g.cylinder([x, -b, top], [x, b, top], rw, "prong", None))
     return pieces, zs
 
 

@@ -159,7 +159,7 @@ def star_base(n_legs: int, radius: float, c: Caster, r_lift: float, leg_style: s
     floor = z_h0 + 0.01
     sheet = 0.003 if metal else 0.0
     pieces = [
-        g.shell([(hub_r, z_h0), (hub_r, z_h1)], hub_r - bore, "base", sections=48).replace(sheet=sheet),
+        g.shell([(hub_r, z_h0), (hub_r, z_h1)], hub_r - bore, "base").replace(sheet=sheet),
         g.disc([0, 0, (z_h0 + floor) / 2], bore + 0.002, floor - z_h0, "base", 32).replace(sheet=sheet),
     ]
     x_in, x_out = hub_r - 0.006, radius + 0.022
@@ -192,8 +192,8 @@ def disc_base(radius: float, bore: float, metal: bool) -> Base:
         prof.append((radius - f * (radius - bore - 0.03), 0.006 + t * (1 - (1 - f) ** 2)))
     top = 0.006 + t
     prof.append((0.0, top))
-    disc = g.revolve(prof, "base", sections=64)  # a cast disc: solid on purpose (a heavy, stable foot)
-    boss = g.shell([(bore + 0.02, top - 0.004), (bore + 0.014, top + 0.03)], 0.014, "base", sections=48)
+    disc = g.revolve(prof, "base")  # a cast disc: solid on purpose (a heavy, stable foot)
+    boss = g.shell([(bore + 0.02, top - 0.004), (bore + 0.014, top + 0.03)], 0.014, "base")
     felt = g.disc([0, 0, 0.0015], radius - 0.03, 0.003, "pad", 48)
     felt = g.Piece(felt.vertices, felt.faces, "pad", [])
     return Base(Assembly.single("base", [disc, boss, felt], {"socket": Frame.at((0, 0, top))}), top, top + 0.03,
@@ -203,8 +203,8 @@ def disc_base(radius: float, bore: float, metal: bool) -> Base:
 def column(base_top: float, top: float, bore: float) -> list[g.Piece]:
     """A bar stool's column sleeve from the hub to ``top`` with a trim collar."""
     col_r = bore + 0.006
-    return [g.shell([(col_r, base_top - 0.006), (col_r, top)], col_r - bore, "base", sections=48),
-            g.shell([(col_r + 0.002, top - 0.012), (col_r + 0.002, top)], 0.008, "base", sections=48)]
+    return [g.shell([(col_r, base_top - 0.006), (col_r, top)], col_r - bore, "base"),
+            g.shell([(col_r + 0.002, top - 0.012), (col_r + 0.002, top)], 0.008, "base")]
 
 
 RING_MIN = 0.22  # a foot ring lower than this is a trip hazard, not a rest
@@ -231,7 +231,7 @@ def foot_ring(z: float, radius: float, bore: float) -> list[g.Piece]:
         d = spoke.x
         pieces.append(g.cylinder(d * (col_r - 0.002) + [0, 0, z], d * (radius - 0.004) + [0, 0, z], 0.006,
                                  "ring", 12))
-    pieces.append(g.shell([(col_r + 0.008, z - 0.018), (col_r + 0.008, z + 0.018)], 0.008, "ring", sections=40))
+    pieces.append(g.shell([(col_r + 0.008, z - 0.018), (col_r + 0.008, z + 0.018)], 0.008, "ring"))
     return pieces
 
 
@@ -265,7 +265,7 @@ def gas_lift(floor: float, top: float, r_lift: float, travel: float) -> Lift:
         raise GeometryError(f"gas lift: only {travel * 1000:.0f} mm of stroke fit between the socket and the"
                             " seat; raise the seat or lower the base")
     rod_top = z0 + travel + 0.03
-    tube = [g.shell([(r_lift, z0), (r_lift, top - cap + 0.001)], wall, "lift", sections=48),
+    tube = [g.shell([(r_lift, z0), (r_lift, top - cap + 0.001)], wall, "lift"),
             g.disc([0, 0, top - cap / 2], r_lift, cap, "lift", 48)]
     rod = g.cylinder([0, 0, floor - 0.002], [0, 0, rod_top], 0.35 * r_lift, "lift", 20)
     return Lift((rod,), Assembly.single("lift", tube, {"slide": Frame.at((0, 0, z0)),
@@ -300,7 +300,7 @@ def swivel_seat(top: float, width: float, depth: float, thick: float, shape: str
     z_mech0 = z_pan0 - hm
     lift_top = z_mech0 - GAP
     collar_r = r_lift + GAP + 0.006
-    pieces = [g.shell([(collar_r, lift_top - 0.03), (collar_r, z_mech0 + 0.002)], 0.006, "mech", sections=48)]
+    pieces = [g.shell([(collar_r, lift_top - 0.03), (collar_r, z_mech0 + 0.002)], 0.006, "mech")]
     if shape == "round":
         rad = width / 2
         pieces.append(g.disc([xc, 0, z_mech0 + hm / 2], min(0.12, 0.6 * rad), hm, "mech", 40))
@@ -311,7 +311,7 @@ def swivel_seat(top: float, width: float, depth: float, thick: float, shape: str
             a = -math.pi / 2 + math.pi * k / 8
             prof.append((rad - e + e * math.cos(a), z_pan0 + pan_t + thick / 2 + (thick / 2) * math.sin(a)))
         prof.append((0.0, top))
-        pieces.append(g.revolve(prof, "seat", center=(xc, 0, 0), sections=56))
+        pieces.append(g.revolve(prof, "seat", center=(xc, 0, 0)))
         x0, x1 = xc - rad, xc + rad
         reach = 0.7 * width / 2
     else:

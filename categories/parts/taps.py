@@ -77,7 +77,7 @@ def column(xy, z0: float, z1: float, r: float, flare: float = 1.25, dome: bool =
     h = z1 - z0
     prof = [(0, 0), (flare * r, 0), (flare * r, min(0.004, 0.1 * h)), (r, min(0.012, 0.3 * h))]
     prof += [(r, h - 0.5 * r), (0.7 * r, h - 0.1 * r), (0, h)] if dome else [(r, h - 0.002), (r - 0.002, h), (0, h)]
-    return g.revolve(prof, "metal", center=(xy[0], xy[1], z0), sections=40)
+    return g.revolve(prof, "metal", center=(xy[0], xy[1], z0))
 
 
 HUB = 0.55  # a lever's pivot hub radius as a fraction of its cartridge cap's (hub length 1.6x the cap radius)
@@ -87,7 +87,7 @@ def lever_cap(xy, z0: float, r_cap: float) -> g.Piece:
     """The cartridge housing on top of a column (fixed to the column): a short dome with a slot for the
     lever's hub (the ceramic cartridge of a single-lever mixer, e.g. Grohe Eurosmart: 35-46 mm)."""
     return g.revolve([(0, 0), (r_cap, 0), (r_cap, 0.7 * CAP_H), (0.8 * r_cap, CAP_H), (0, CAP_H)], "metal",
-                     center=(xy[0], xy[1], z0), sections=40)
+                     center=(xy[0], xy[1], z0))
 
 
 def lever(xy, z0: float, r_cap: float, arm: float) -> tuple[list[g.Piece], Frame]:
@@ -123,7 +123,7 @@ def valve_handle(xy, z0: float, reach: float, kind: str, slot: str) -> list[g.Pi
     """A hub with four spokes (cross) or one arm forward (lever), and a hot/cold button."""
     x, y = xy
     pieces = [g.revolve([(0, 0), (HUB_R, 0), (HUB_R, 0.018), (0.8 * HUB_R, HUB_H), (0, HUB_H)], "metal",
-                        center=(x, y, z0), sections=32)]
+                        center=(x, y, z0))]
     zs = z0 + 0.014
     if kind == "cross":
         for spoke in polar(Frame.at((x, y, zs)).turned("z", math.pi / 4), 4, 0.0):
@@ -204,7 +204,7 @@ def collar_spout(shape: str, reach: float, r: float, rb: float, z_cm: float, hc:
     """A ring around a column of radius ``rb`` (radial gap ``GAP``) and a tube leaving it forward."""
     wall = 0.004
     r_in = rb + GAP
-    collar = g.shell([(r_in + wall, z_cm - hc / 2), (r_in + wall, z_cm + hc / 2)], wall, "metal", sections=40)
+    collar = g.shell([(r_in + wall, z_cm - hc / 2), (r_in + wall, z_cm + hc / 2)], wall, "metal")
     x0 = r_in + 0.5 * wall
     room = z_cm - deck - 0.05  # the outlet stays 5 cm above the deck
     if shape == "curved":
@@ -233,8 +233,8 @@ def pullout_spout(reach: float, r: float, z0: float, height: float, z_low: float
     pts += _line([R, 0, top], [x_dock, 0, top], 6)[1:]
     travel = min(travel, x_dock - R - 0.03)
     x1 = x_dock + GAP
-    head = [g.revolve([(0, 0), (0.75 * rh, 0), (rh, 0.012), (rh, 0.06), (0.8 * rh, 0.07), (0, 0.07)], "metal",
-                      sections=32).transformed(Frame.at((x1, 0, top), z=(1, 0, 0)).matrix),
+    head = [g.revolve([(0, 0), (0.75 * rh, 0), (rh, 0.012), (rh, 0.06), (0.8 * rh, 0.07), (0, 0.07)], "metal")
+            .transformed(Frame.at((x1, 0, top), z=(1, 0, 0)).matrix),
             g.cylinder([x1 + 0.066, 0, top], [x1 + 0.0705, 0, top], 0.65 * rh, "aerator", 24),
             # the hose inside the arm: seen when the head is out, no collision (the arm's hulls are solid)
             g.cylinder([x1 - travel - 0.01, 0, top], [x1, 0, top], max(r - TUBE - 0.0015, 0.002), "seal", 12
@@ -267,7 +267,7 @@ def deck(width: float, depth: float, shape: str, bridge: bool) -> list[g.Piece]:
     """The deck plate (round, an obround bridge, or a bevelled rectangle) and its rubber gasket."""
     if shape == "round" and not bridge:
         r = width / 2
-        return [g.revolve([(0, 0), (r, 0), (r, 0.6 * DECK_T), (r - 0.004, DECK_T), (0, DECK_T)], "metal", sections=48),
+        return [g.revolve([(0, 0), (r, 0), (r, 0.6 * DECK_T), (r - 0.004, DECK_T), (0, DECK_T)], "metal"),
                 g.disc([0, 0, -0.001], width / 2 - 0.004, 0.002, "seal")]
     if shape == "round":
         th = np.linspace(0, 2 * np.pi, 32, endpoint=False)

@@ -43,7 +43,6 @@ from infmob_usd.frames import IDENTITY, Frame
 
 from . import vessel_sizes as S
 
-SECTIONS = 64  # visual sections of every surface of revolution
 UP = (0.0, 0.0, 1.0)
 
 
@@ -73,9 +72,11 @@ def spline_profile(ctrl, n: int = 64, coarse: int = 10, min_band: float = 0.007
     The curve is a shape-preserving (PCHIP) spline of radius and height against the
     chord length of the control polygon, so it never overshoots (a flat run stays flat,
     heights stay increasing). Returns ``(fine, coarse)``: ``n`` evenly spaced samples plus
-    every control point (the visual surface), and ``coarse`` bands evenly spaced along the
-    curve, none shorter than ``min_band``, each raised just enough that its chord is
-    nowhere inside the fine curve (the convex collision bands: no thin slivers, which
+    every control point thinned to :data:`~infmob_usd.geometry.PROFILE_TOL`
+    (:func:`~infmob_usd.geometry.simplify_profile`: the visual surface), and ``coarse`` bands
+    evenly spaced along the curve, none shorter than ``min_band``, bands in a nearly straight
+    run merged (:func:`~infmob_usd.geometry.collision_bands`), each raised just enough that its
+    chord is nowhere inside the fine curve (the convex collision bands: no thin slivers, which
     upset PhysX contact generation, and small features such as threads are enveloped).
     """
     c = np.asarray(ctrl, float)
@@ -88,11 +89,19 @@ def spline_profile(ctrl, n: int = 64, coarse: int = 10, min_band: float = 0.007
         ts = np.unique(np.round(ts, 12))
         return np.c_[fr(ts), fz(ts)]
 
-    fine = at(np.r_[np.linspace(0, t[-1], n), t])
+    fine = g.simplify_profile(at(np.r_[np.linspace(0, t[-1], n), t]))
     k = int(max(1, min(coarse, t[-1] // min_band)))
-    col = at(np.linspace(0, t[-1], k + 1))
     dense = at(np.linspace(0, t[-1], 40 * k + 1))
-    for i in range(k):
+    dense[:, 0] = np.maximum(dense[:, 0], np.interp(dense[:, 1], fine[:, 1], fine[:, 0]))  # the thinned chords too
+    col = _lifted(at(np.linspace(0, t[-1], k + 1)), dense)
+    return fine, _lifted(g.collision_bands(col), dense)
+
+
+def _lifted(col: np.ndarray, dense: np.ndarray) -> np.ndarray:
+    """Collision band ends ``col`` with each band moved out just enough that its chord is nowhere
+    inside the ``dense`` curve."""
+    col = col.copy()
+    for i in range(len(col) - 1):
         z0, z1 = col[i, 1], col[i + 1, 1]
         inside = dense[(dense[:, 1] >= z0) & (dense[:, 1] <= z1)]
         if z1 - z0 < 1e-9 or not len(inside):
@@ -101,7 +110,7 @@ def spline_profile(ctrl, n: int = 64, coarse: int = 10, min_band: float = 0.007
         lift = max(0.0, float((inside[:, 0] - chord).max()))
         col[i, 0] += lift
         col[i + 1, 0] += lift
-    return fine, col
+    return col
 
 
 def sectors_for(radius: float, arc: float = 0.025, lo: int = 10, hi: int = 32) -> int:
@@ -176,7 +185,7 @@ class Profile:
 
     def wall(self, slot: str, sheet: float = 0.0, name: str = "") -> g.Piece:
         """The thin wall: visual mesh from ``fine``, flat-faced convex wedges from ``coarse``."""
-        vis = g.shell(self.fine, self.thickness, slot, sections=SECTIONS, convex_sectors=1, name=name)
+        vis = g.shell(self.fine, self.thickness, slot, convex_sectors=1, name=name)
         return _piece(vis, sheet=sheet).with_wedges(self.coarse, self.coarse - [self.thickness, 0], self.sectors)
 
 
@@ -186,7 +195,7 @@ def lid_gap(height: float) -> float:
 
 
 def sleeve(outer, thickness: float, material: str, r_in: float, sectors: int = 24,
-           collision_thickness: float = 0.003, sections: int = SECTIONS, name: str = "",
+           collision_thickness: float = 0.003, sections: int | None = None, name: str = "",
            collide: bool = True, sheet: float = 0.0) -> g.Piece:
     """A thin round sleeve (cap skirt, label band) around something of radius up to ``r_in``.
 
@@ -248,7 +257,7 @@ def _polygon_plate(R: float, sides: int, r_hole: float, z0: float, z1: float, sl
     prism = trimesh.creation.cylinder(radius=R * k, height=z1 - z0, sections=sides)
     prism.vertices = _turned_z(prism.vertices, math.pi / sides)
     prism.apply_translation((0, 0, (z0 + z1) / 2))
-    hole = trimesh.creation.cylinder(radius=r_hole, height=(z1 - z0) + 0.01, sections=SECTIONS)
+    hole = trimesh.creation.cylinder(radius=r_hole, height=(z1 - z0) + 0.01, sections=g.sections_for(r_hole))
     hole.apply_translation((0, 0, (z0 + z1) / 2))
     mesh = g.subtract(prism, [hole])
     convex = []
@@ -298,7 +307,7 @@ def vase_body(shape, height: float, radius: float, wall: float, jitter, slot: st
         ctrl[:2] = [(max(r, stand * widest * (1.0 + 0.03 * i)), z) for i, (r, z) in enumerate(ctrl[:2])]
     prof = Profile.through(ctrl, wall, S.VASE_SPLINE, r_min=r_min)
     tb = S.BOTTOM_RATIO * wall
-    bottom = _piece(g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, SECTIONS), sheet=sheet)
+    bottom = _piece(g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, None), sheet=sheet)
     return _body([prof.wall(slot, sheet), bottom], prof.height, prof.base_radius), prof
 
 
@@ -307,8 +316,7 @@ def foot_ring(body: Profile, slot: str) -> Assembly:
     f = S.FOOT
     radius = body.base_radius - f["inset"] * body.thickness
     top = -f["gap"]
-    ring = g.shell([(radius, top - f["height"]), (radius, top)], min(f["width"], f["width_ratio"] * radius), slot,
-                   sections=SECTIONS)
+    ring = g.shell([(radius, top - f["height"]), (radius, top)], min(f["width"], f["width_ratio"] * radius), slot)
     return Assembly.single("stand", [ring], {"mount": IDENTITY}, _supports(radius, top - f["height"]))
 
 
@@ -336,13 +344,13 @@ def bottle_body(prof: Profile, punt: float, slot: str, finish: str) -> Assembly:
     t = prof.thickness
     rb = prof.base_radius - S.BOTTLE_BOTTOM["inset"] * t
     tb = S.BOTTLE_BOTTOM["thickness"] * t
-    flat = g.disc((0, 0, tb / 2), rb, tb, slot, SECTIONS)
+    flat = g.disc((0, 0, tb / 2), rb, tb, slot, None)
     bottom = flat
     if punt > 0:
         hp = max(punt, 2 * tb)
         prof_pts = [*[(f * rb, u * hp) for f, u in S.PUNT], (rb, 0.0), (rb, tb),
                     *[(f * rb, tb + u * hp) for f, u in S.PUNT_TOP], (0.0, hp + tb)]
-        bottom = g.revolve(prof_pts, slot, sections=SECTIONS).with_collision_of(flat)
+        bottom = g.revolve(prof_pts, slot).with_collision_of(flat)
     return _body([prof.wall(slot), bottom], prof.height, prof.base_radius, neck_top=_finish_bottom(prof, finish))
 
 
@@ -374,7 +382,7 @@ def round_jar_body(height: float, radius: float, wall: float, neck_ratio: float,
     prof = Profile.through(ctrl + threaded_neck(n, z_neck, height, threads), wall, S.JAR_SPLINE,
                            sectors=sectors_for(radius, 0.02, 12))
     tb = S.BOTTOM_RATIO * wall
-    bottom = g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, SECTIONS)
+    bottom = g.disc((0, 0, tb / 2), prof.base_radius - 0.3 * wall, tb, slot, None)
     return _body([prof.wall(slot), bottom], height, prof.base_radius, neck_top=z_neck), prof
 
 
@@ -417,7 +425,7 @@ def _plug_pieces(z_seat, r_flange, t_flange, r_plug, plug_depth, dome, r_knob, s
     top = z_top + 1.9 * r_knob
     # a solid plug (PhysX contact generation is more reliable on chunky hulls than on thin wedges)
     plug = [[0.0, z_seat - plug_depth], [r_plug, z_seat - plug_depth], [r_plug, zb]]
-    vis = _piece(g.revolve(np.vstack([plug, cap, [0.0, top]]), slot, sections=SECTIONS), sheet=sheet)
+    vis = _piece(g.revolve(np.vstack([plug, cap, [0.0, top]]), slot), sheet=sheet)
     return [vis.with_collision_of(g.revolve(np.vstack([plug, cap_col, [0.0, top]]), slot, sections=8))], top
 
 
@@ -459,7 +467,7 @@ def _top_hull(r_plate: float, z0: float, z1: float, r_button: float, z2: float, 
 
 
 def _sleeve_cap(neck: Profile, z_lo: float, skirt: float, top_t: float, overhang: float, slot: str,
-                sheet: float, flare=None, flutes: int = SECTIONS, button: tuple[float, float] | None = None,
+                sheet: float, flare=None, flutes: int | None = None, button: tuple[float, float] | None = None,
                 gap: float | None = None) -> tuple[list[g.Piece], float, float]:
     """A skirt around a neck from ``z_lo`` up (drawn, no collision: see :func:`sleeve`) under a top
     plate a small gap above the lip. Returns the pieces, the skirt's outer radius and the plate top."""
@@ -474,7 +482,7 @@ def _sleeve_cap(neck: Profile, z_lo: float, skirt: float, top_t: float, overhang
     pieces = [sleeve(prof, skirt, slot, r_in, sectors=32 if button else 24, sections=flutes, collide=False,
                      sheet=sheet)]
     r_top = r_out + overhang
-    top = g.disc((0, 0, z_top + top_t / 2), r_top, top_t, slot, SECTIONS)
+    top = g.disc((0, 0, z_top + top_t / 2), r_top, top_t, slot, None)
     if button is None:
         pieces.append(_piece(top, sheet=sheet))
         return pieces, r_out, z_top + top_t
@@ -486,7 +494,7 @@ def _sleeve_cap(neck: Profile, z_lo: float, skirt: float, top_t: float, overhang
     # whole rim, a robust face contact.
     ratio, bh = button
     zb = z_top + top_t + bh
-    btn = g.disc((0, 0, z_top + top_t + bh / 2 - 0.00005), ratio * r_in, bh, slot, SECTIONS)
+    btn = g.disc((0, 0, z_top + top_t + bh / 2 - 0.00005), ratio * r_in, bh, slot, None)
     pieces += [_piece(top, sheet=sheet, convex=[_top_hull(r_top, z_top, z_top + top_t, ratio * r_in, zb - 0.00005)]),
                _piece(btn, sheet=sheet, convex=[])]
     return pieces, r_out, zb
@@ -517,7 +525,7 @@ def capsule(neck: Profile, champagne: bool, slot: str, cork_slot: str) -> Assemb
     pieces, r_out, top = _sleeve_cap(neck, z_lo, c["skirt"], c["top"], c["overhang"], slot, c["sheet"])
     if champagne:  # the mushroom cork head under the foil: one hull
         rc = r_out + S.MUSHROOM["grow"]
-        head = g.revolve([(f * rc, top + dz) for f, dz in S.MUSHROOM["profile"]], cork_slot, sections=SECTIONS)
+        head = g.revolve([(f * rc, top + dz) for f, dz in S.MUSHROOM["profile"]], cork_slot)
         pieces.append(_piece(head, convex=[np.vstack(head.convex)]))
         top += S.MUSHROOM["profile"][-1][1]
     return _closure("cap", pieces, H, top)
@@ -540,7 +548,7 @@ def hinged_lid(radius: float, thickness: float, hinge_offset: float, slot: str, 
     """A flat round lid hinged at its back edge (a swing-top or kettle lid): ``main`` is the hinge
     knuckle's carrier, ``lid`` turns 0..~110 degrees about the ``hinge`` anchor (y axis along the
     hinge line, at -X) and rests closed on its seat at the origin."""
-    plate = g.disc((0, 0, thickness / 2), radius, thickness, slot, SECTIONS)
+    plate = g.disc((0, 0, thickness / 2), radius, thickness, slot, None)
     pieces = [plate]
     if knob > 0:
         pieces += g.knob_handle((radius * 0.75, 0, thickness), UP, slot, radius=knob, depth=1.6 * knob)
@@ -643,21 +651,21 @@ def cookware_body(r_top: float, depth: float, corner: float, flare: float, wall:
     r0, a = float(fine[0, 0]), float(arc[0, 0])
     prof = np.vstack([[0.0, 0.0], [a, 0.0], arc[1:], [r0, bottom], [r0 - wall, bottom], [0.0, bottom]])
     prof = prof[np.r_[True, np.linalg.norm(np.diff(prof, axis=0), axis=1) > 1e-7]]
-    base = g.revolve(prof, slot, sections=SECTIONS)
+    base = g.revolve(g.simplify_profile(prof), slot)
     ang = np.linspace(0.0, 2 * np.pi, 32, endpoint=False)
     ring = np.c_[np.cos(ang), np.sin(ang)]
     puck = np.vstack([np.c_[ring * a, np.zeros(32)], np.c_[ring * r0, np.full(32, bottom)]])
     base = _piece(base, convex=[puck])  # one convex puck
-    body_wall = g.shell(fine, wall, slot, sections=SECTIONS).with_collision_of(g.shell(coarse, wall, slot, sections=8))
+    body_wall = g.shell(fine, wall, slot).with_collision_of(g.shell(coarse, wall, slot, sections=8))
     cx, cz = r_top - wall + bead, z_wall_top
     th = np.linspace(0.0, math.pi, 13)
     outer = np.c_[cx + bead * np.sin(th), cz - bead * np.cos(th)]
     box = g.shell([(cx + bead, cz - bead), (cx + bead, cz + bead)], 2 * bead, rim_slot, sections=8)
-    rim = g.shell(outer, bead, rim_slot, sections=SECTIONS).with_collision_of(box)
+    rim = g.shell(outer, bead, rim_slot).with_collision_of(box)
     pieces = [base, body_wall, rim]
     info = Cookware(fine, depth, cx + bead, r_top - wall, cz - bead, bottom, r0 - wall, wall)
     if coating:
-        pieces.append(g.disc((0, 0, bottom + 0.0003), info.floor_radius - 0.001, 0.0006, coating, SECTIONS))
+        pieces.append(g.disc((0, 0, bottom + 0.0003), info.floor_radius - 0.001, 0.0006, coating, None))
     return _body(pieces, depth, a, seat=depth + S.LID_GAP), info
 
 
@@ -693,7 +701,7 @@ def dome_lid(pot: Cookware, rise: float, thickness: float, slot: str, band_slot:
     r_l, t = d.radius, thickness
     rs = np.linspace(0.0, r_l, 24)
     prof = np.vstack([np.c_[rs, d.under(rs)], np.c_[rs[::-1], d.under(rs[::-1]) + t]])
-    mesh = g.revolve(prof, slot, sections=SECTIONS)
+    mesh = g.revolve(g.simplify_profile(prof), slot)
     # one convex cap from a coarse sample (PhysX keeps at most 255 hull vertices)
     ang = np.linspace(0.0, 2 * np.pi, 24, endpoint=False)
     cap = [(0.0, 0.0, float(d.under(0.0)) + t)]
@@ -703,7 +711,7 @@ def dome_lid(pot: Cookware, rise: float, thickness: float, slot: str, band_slot:
     cap += [(r_l * math.cos(a), r_l * math.sin(a), t) for a in ang]
     b = S.LID_BAND
     band = g.shell([(r_l + b["out"], 0.0), (r_l + b["out"], t + b["height"])], b["thickness"], band_slot,
-                   sections=SECTIONS, convex_sectors=b["sectors"])
+                   convex_sectors=b["sectors"])
     lid = Assembly.single("lid", [_piece(mesh, convex=[np.array(cap)]), band],
                           {"seat": IDENTITY, "top": _at(rise + t)})
     return lid, d
