@@ -81,7 +81,8 @@ PARAMS = (
     Float("pad_width", "arm pad width (Y)", "m", 0.055, 0.08),
     Choice("base_finish", "base material", choices=("chrome", "brushed_metal", "plastic"),
            weights=(0.45, 0.25, 0.3)),
-    Choice("lift_finish", "gas lift tube material", choices=("chrome", "plastic"), weights=(0.7, 0.3)),
+    Choice("lift_finish", "gas lift cylinder: chromed or black-coated steel", choices=("chrome", "black"),
+           weights=(0.7, 0.3)),
     Choice("seat_finish", "seat upholstery", choices=("fabric", "plastic"), weights=(0.6, 0.4)),
     Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=(0.6, 0.4)),
 )

@@ -95,7 +95,8 @@ PARAMS = (
     Float("pad_turn", "arm pad turn about Z, each way", "rad", 0.1, 0.3),
     Choice("base_finish", "star base material", choices=("plastic", "chrome", "brushed_metal"),
            weights=(0.55, 0.25, 0.2)),
-    Choice("lift_finish", "gas lift tube material", choices=("chrome", "plastic"), weights=(0.6, 0.4)),
+    Choice("lift_finish", "gas lift cylinder: chromed or black-coated steel", choices=("chrome", "black"),
+           weights=(0.6, 0.4)),
     Choice("seat_finish", "seat and back upholstery", choices=("fabric", "plastic"), weights=(0.75, 0.25)),
     Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=(0.6, 0.4)),
 )

@@ -294,3 +294,17 @@ def test_lumbar_pad_clear_of_a_cushion_back():
     """The sliding lumbar pad stands in front of the cushion (seed 4 of the sweep had it 165 cm^3 inside)."""
     _, bp = make(4, design="task", back_style="cushion", has_lumbar=True)
     assert overlap(bp.parts["lumbar"], np.eye(4), bp.parts["back"], np.eye(4)) < TOL
+
+
+def test_gas_lift_is_steel_whatever_its_finish():
+    """A black gas lift is a coated steel cylinder, not a plastic tube: it weighs what the chrome one
+    does (a real class 3/4 lift: 1-2 kg with its rod), so light chairs stay over the table's 8 kg."""
+    import infmob_usd
+
+    masses = {}
+    for finish in ("chrome", "black"):
+        obj = infmob_usd.generate("office_chair", seed=7031, texture_size=16, lift_finish=finish)
+        masses[finish] = obj.link("lift").mass
+        assert obj.materials["lift"].family == ("chrome" if finish == "chrome" else "enamel")
+    assert masses["black"] == pytest.approx(masses["chrome"], rel=1e-9)
+    assert 0.3 < masses["black"] < 2.0

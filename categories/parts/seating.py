@@ -36,7 +36,7 @@ stability; four-leg bases are rare and banned in some markets, six on heavy-duty
 _PLASTIC = {"plastic": BLACK}
 CHAIR_MATERIALS = {
     "base": ("base_finish", _PLASTIC), "caster": BLACK, "wheel": ("wheel_finish", _PLASTIC),
-    "lift": ("lift_finish", _PLASTIC), "mech": "painted:black|charcoal", "pan": BLACK,
+    "lift": ("lift_finish", {"black": "enamel:black"}), "mech": "painted:black|charcoal", "pan": BLACK,
     "seat": ("seat_finish", {"plastic": "plastic:black|dark_grey|white|red|blue"}), "frame": BLACK,
     "mesh": "fabric:charcoal|grey|navy", "pad": BLACK, "handle": BLACK, "ring": "chrome",
 }
@@ -265,9 +265,11 @@ def gas_lift(floor: float, top: float, r_lift: float, travel: float) -> Lift:
         raise GeometryError(f"gas lift: only {travel * 1000:.0f} mm of stroke fit between the socket and the"
                             " seat; raise the seat or lower the base")
     rod_top = z0 + travel + 0.03
+    # steel, chromed or black-coated: the tube is massed as the family's sheet-steel wall, the piston
+    # rod solid (wall 0), so a lift weighs about what real ones do (class 3/4 cylinders 1-2 kg in all)
     tube = [g.shell([(r_lift, z0), (r_lift, top - cap + 0.001)], wall, "lift"),
             g.disc([0, 0, top - cap / 2], r_lift, cap, "lift", 48)]
-    rod = g.cylinder([0, 0, floor - 0.002], [0, 0, rod_top], 0.35 * r_lift, "lift", 20)
+    rod = g.cylinder([0, 0, floor - 0.002], [0, 0, rod_top], 0.35 * r_lift, "lift", 20).replace(wall=0.0)
     return Lift((rod,), Assembly.single("lift", tube, {"slide": Frame.at((0, 0, z0)),
                                                        "top": Frame.at((0, 0, top))}), travel)
 
