@@ -141,7 +141,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     if missing:
         raise ModelError(f"material slots {missing} are used by pieces but have no family in the blueprint")
     families = {slot: FAMILIES[split_spec(bp.materials[slot])[0]] for slot in used}
-    densities = {slot: f.density for slot, f in families.items()}
+    densities = {slot: bp.densities.get(slot, f.density) for slot, f in families.items()}
     walls = {slot: f.wall for slot, f in families.items()}
     links, joints = build(bp, densities, walls)
     links, joints = physical.rest_on_stops(links, joints, densities, walls)

@@ -36,6 +36,9 @@ class Blueprint:
 
     category: str
     materials: dict[str, str] = field(default_factory=dict)  # slot -> family
+    # slot -> kg/m^3 where the slot's material is not the family's usual one (its look stays the
+    # family's): a painted window frame is painted softwood, not the MDF the ``painted`` family weighs
+    densities: dict[str, float] = field(default_factory=dict)
     parts: dict[str, Part] = field(default_factory=dict)
     joints: list[JointSpec] = field(default_factory=list)
     # m: where the core puts the lowest point at rest. 0 for what stands on the floor; a wall-mounted

@@ -355,3 +355,15 @@ def test_fuzz_draw_51_turns_its_sash_open_in_sapien(tmp_path):
     obj = infmob_usd.generate("window", seed=784298, texture_size=16, **draw)
     res = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach"])}
     assert res["reach"].ok, res["reach"].detail
+
+
+def test_painted_joinery_weighs_as_softwood():
+    """A painted frame is painted softwood (windows.SOFTWOOD), not the MDF the painted family weighs:
+    the same frame in the wood family (650 kg/m^3) weighs 150 kg/m^3 more of its solid volume."""
+    import infmob_usd
+
+    links = {f: infmob_usd.generate("window", seed=7049, texture_size=16, frame_finish=f).link("frame")
+             for f in ("painted", "wood")}
+    volume = sum(pc.volume() for pc in links["painted"].pieces if pc.material == "frame")
+    assert volume > 0.01
+    assert links["wood"].mass - links["painted"].mass == pytest.approx((650.0 - windows.SOFTWOOD) * volume, rel=1e-6)

@@ -56,6 +56,10 @@ two stiles, whose turns jammed at 0.8 rad."""
 JAMB_MAX = 0.12  # the jambs' and head's face width: at most this share of the frame's width and height
 MULLION_MAX = 0.1  # a mullion: at most this share of the opening
 MOST_SASHES = 4  # the automatic sash count: at most four
+SOFTWOOD = 500.0
+"""kg/m^3 of a painted frame, sash or shutter: painted joinery is softwood (pine, spruce, fir) or
+engineered laminated pine, 400-550 kg/m^3 at 12 % moisture (USDA Wood Handbook FPL-GTR-282, 2021,
+ch. 5 tables of specific gravity), not the MDF (~750) the ``painted`` family weighs as."""
 SILL_DRIP = 0.012  # an exterior sill's drip edge: 12 mm square under its outer edge
 # an espagnolette lever's free spindle: 1.5 mm off the rose's face (the spindle was sunk 2 mm into it), 5.5 mm
 SPINDLE = (0.0035, 0.0055)
