@@ -157,6 +157,8 @@ def _parser() -> argparse.ArgumentParser:
     b.add_argument("--count", type=int, default=10, help="objects per category; default 10")
     b.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="workers for the parallel run")
     b.add_argument("--texture-size", type=int, default=512, metavar="PX")
+    b.add_argument("--cold", action="store_true",
+                   help="every timed object starts from an empty texture cache (no library, no throughput runs)")
     b.add_argument("--json", action="store_true", help="print JSON instead of a table")
     return ap
 
@@ -549,7 +551,7 @@ def cmd_bench(args) -> int:
     check_texture_size(args.texture_size)
     if args.count < 1 or args.workers < 1:
         return _fail("--count and --workers must be at least 1")
-    res = run_bench(categories, args.count, args.texture_size, args.workers)
+    res = run_bench(categories, args.count, args.texture_size, args.workers, cold=args.cold)
     print(json.dumps(res, indent=2) if args.json else format_bench(res))
     return 0
 

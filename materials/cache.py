@@ -158,6 +158,14 @@ def _remember(key: tuple, maps: dict[str, bytes]) -> None:
             _memory_bytes -= sum(map(len, old.values()))
 
 
+def forget() -> None:
+    """Drop the maps held in memory: the next use of a look reads the disk cache or makes it."""
+    global _memory_bytes
+    with _lock:
+        _memory.clear()
+        _memory_bytes = 0
+
+
 def make_maps(look: Look, size: int) -> dict[str, bytes]:
     """Synthesize and encode the maps of ``look`` without any cache."""
     return {name: encode_png(img) for name, img in synthesize(look, size).items()}

@@ -371,3 +371,21 @@ def test_every_family_has_contact_properties():
     from infmob_usd.materials.families import CONTACT
 
     assert set(FAMILIES) == set(CONTACT)
+
+
+def test_cold_bench_makes_every_object_its_maps_from_an_empty_cache(tmp_path, monkeypatch):
+    """`infmob bench --cold`: each timed object starts with nothing cached (disk or memory), so each
+    makes every map it uses into its own fresh folder, and the report prints without throughput runs."""
+    from infmob_usd.api import generate
+    from infmob_usd.materials import cache as lib
+    from infmob_usd.validate.bench import _stage_times, format_bench, run_bench
+
+    monkeypatch.setenv("INFMOB_USD_CACHE", str(tmp_path / "warm"))
+    used = [len(generate("door", seed=seed, texture_size=16).textures) for seed in range(2)]
+    _stage_times(["door"], 2, 16, tmp_path, cold=True)  # leaves the variable at the last cold folder
+    for seed in range(2):
+        made = list((tmp_path / "cold" / f"door_{seed}").rglob("*.png"))
+        assert len(made) == used[seed] * len(lib.TEXTURE_MAPS)
+    res = run_bench(["door"], 1, 16, 1, cold=True)
+    assert res["texture_library"] is None and res["objects_per_s_1_worker"] is None
+    assert "cold cache" in format_bench(res)

@@ -14,6 +14,11 @@ objects/s and parallel efficiency = rate(N) / (N * rate(1)); both pools are warm
 (every worker has imported everything and made one object of each category), so the figures are
 steady-state throughput, as in a long dataset run. Peak memory is the
 maximum resident set size of a worker process (``ru_maxrss`` of the children).
+
+With ``cold=True`` (``infmob bench --cold``) no library is built and every timed object starts
+from an empty cache, on disk and in memory: the ``textures`` stage then synthesizes and encodes
+every map the object uses (what the first object of a new look costs); the throughput runs are
+skipped.
 """
 
 from __future__ import annotations
@@ -29,8 +34,9 @@ from pathlib import Path
 STAGES = ("sampling", "geometry", "textures", "textures_io", "usd", "urdf", "mjcf", "metadata", "total")
 
 
-def _stage_times(categories, count, texture_size, tmp: Path) -> dict[str, dict[str, float]]:
+def _stage_times(categories, count, texture_size, tmp: Path, cold: bool = False) -> dict[str, dict[str, float]]:
     from infmob_usd.api import generate, save
+    from infmob_usd.materials.cache import forget
 
     per: dict[str, dict[str, list[float]]] = {}
     for c in categories:  # warm-up: imports, caches
@@ -39,6 +45,9 @@ def _stage_times(categories, count, texture_size, tmp: Path) -> dict[str, dict[s
     for c in categories:
         rows = per.setdefault(c, {s: [] for s in STAGES})
         for seed in range(count):
+            if cold:  # an empty cache folder (read through the variable at each use) and memory
+                os.environ["INFMOB_USD_CACHE"] = str(tmp / "cold" / f"{c}_{seed}")
+                forget()
             t0 = time.perf_counter()
             obj = generate(c, seed=seed, texture_size=texture_size)
             save(obj, tmp / "serial")
@@ -81,16 +90,18 @@ def _library(texture_size: int, workers: int) -> dict:
             "seconds_per_look_per_core": dt * workers / res["looks"], "megabytes": res["megabytes"]}
 
 
-def run_bench(categories, count: int = 10, texture_size: int = 512, workers: int = 2) -> dict:
+def run_bench(categories, count: int = 10, texture_size: int = 512, workers: int = 2, cold: bool = False) -> dict:
     tmp = Path(tempfile.mkdtemp(prefix="infmob-bench-"))
     saved = os.environ.get("INFMOB_USD_CACHE")
     os.environ["INFMOB_USD_CACHE"] = str(tmp / "cache")  # inherited by every worker started below
+    rate1 = rate_n = None
     try:
-        library = _library(texture_size, workers)
-        stages = _stage_times(categories, count, texture_size, tmp)
+        library = None if cold else _library(texture_size, workers)
+        stages = _stage_times(categories, count, texture_size, tmp, cold)
         rss = stages.pop("_rss_mb")
-        rate1 = _throughput(categories, count, texture_size, 1, tmp)
-        rate_n = _throughput(categories, count, texture_size, workers, tmp) if workers > 1 else rate1
+        if not cold:
+            rate1 = _throughput(categories, count, texture_size, 1, tmp)
+            rate_n = _throughput(categories, count, texture_size, workers, tmp) if workers > 1 else rate1
         peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
         self_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     finally:
@@ -103,13 +114,14 @@ def run_bench(categories, count: int = 10, texture_size: int = 512, workers: int
     return {
         "count_per_category": count,
         "texture_size": texture_size,
+        "cold_cache": cold,
         "workers": workers,
         "texture_library": library,
         "median_seconds": stages,
         "median_of_category_medians": overall,
         "objects_per_s_1_worker": rate1,
         f"objects_per_s_{workers}_workers": rate_n,
-        "parallel_efficiency": rate_n / (workers * rate1),
+        "parallel_efficiency": None if cold else rate_n / (workers * rate1),
         "peak_rss_mb_worker": peak_mb,
         "peak_rss_mb_main": self_mb,
         "rss_mb_main_after_warmup": rss["after_warmup"],
@@ -120,23 +132,33 @@ def run_bench(categories, count: int = 10, texture_size: int = 512, workers: int
 def format_bench(res: dict) -> str:
     head = f"{'category':<20}" + "".join(f"{s:>12}" for s in STAGES)
     lib = res["texture_library"]
-    lines = [f"texture library (once per dataset and texture size, then reused): {lib['looks']} looks in"
-             f" {lib['seconds']:.1f} s with {lib['workers']} workers = {lib['seconds_per_look_per_core']:.3f} s per"
-             f" look per core, {lib['megabytes']:.0f} MB; over a 10,000-object dataset"
-             f" {lib['seconds'] * lib['workers'] / 10_000:.4f} s per object per core", "",
-             f"median seconds per object per core (texture {res['texture_size']} px,"
-             f" {res['count_per_category']} objects per category)", head, "-" * len(head)]
+    if lib is None:
+        lines = ["cold texture cache: no library; every timed object starts from an empty cache (disk and"
+                 " memory), so `textures` makes all of its maps", ""]
+    else:
+        lines = [f"texture library (once per dataset and texture size, then reused): {lib['looks']} looks in"
+                 f" {lib['seconds']:.1f} s with {lib['workers']} workers = {lib['seconds_per_look_per_core']:.3f} s"
+                 f" per look per core, {lib['megabytes']:.0f} MB; over a 10,000-object dataset"
+                 f" {lib['seconds'] * lib['workers'] / 10_000:.4f} s per object per core", ""]
+    lines += [f"median seconds per object per core (texture {res['texture_size']} px,"
+              f" {res['count_per_category']} objects per category{', cold cache' if lib is None else ''})",
+              head, "-" * len(head)]
     for c, row in res["median_seconds"].items():
         lines.append(f"{c:<20}" + "".join(f"{row[s]:>12.4f}" for s in STAGES))
     lines.append("-" * len(head))
     lines.append(f"{'median':<20}" + "".join(f"{res['median_of_category_medians'][s]:>12.4f}" for s in STAGES))
     w = res["workers"]
+    lines.append("")
+    if res["objects_per_s_1_worker"] is None:  # cold: no pool ran
+        lines.append(f"peak memory: main {res['peak_rss_mb_main']:.0f} MB")
+    else:
+        lines += [
+            f"objects/s, 1 worker:   {res['objects_per_s_1_worker']:.2f}",
+            f"objects/s, {w} workers:  {res[f'objects_per_s_{w}_workers']:.2f}",
+            f"parallel efficiency:   {100 * res['parallel_efficiency']:.0f}%",
+            f"peak memory: worker {res['peak_rss_mb_worker']:.0f} MB, main {res['peak_rss_mb_main']:.0f} MB",
+        ]
     lines += [
-        "",
-        f"objects/s, 1 worker:   {res['objects_per_s_1_worker']:.2f}",
-        f"objects/s, {w} workers:  {res[f'objects_per_s_{w}_workers']:.2f}",
-        f"parallel efficiency:   {100 * res['parallel_efficiency']:.0f}%",
-        f"peak memory: worker {res['peak_rss_mb_worker']:.0f} MB, main {res['peak_rss_mb_main']:.0f} MB",
         f"main process peak RSS after warm-up {res['rss_mb_main_after_warmup']:.0f} MB, after all"
         f" {len(res['median_seconds']) * res['count_per_category']} objects {res['rss_mb_main_after_all']:.0f} MB"
         " (flat = no growth with object count)",
