@@ -139,6 +139,10 @@ def nest_size(p: dict) -> dict:
 
 class TableLayout(Layout):
     def cocktail_table(self, node):
+        p = self.p
+        # a thick painted top is a lightweight board; a nest's small tables keep solid MDF tops
+        if p["top_finish"] == "painted" and p["top_thickness"] > C["hollow_top_from"] and p["support"] != "nesting":
+            self.bp.densities["top"] = C["hollow_top_density"]
         carried = self.grow(node.one(node.choice))
         self.grow(node.one("top"), **carried)
 

@@ -190,3 +190,19 @@ def test_designs_move_without_collisions(over):
     rest_pc = rest_overlaps(bp)
     for q in all_states(bp):
         assert_clear(bp, bp.poses(q), rest_pc, q)
+
+
+def test_a_thick_painted_top_is_a_lightweight_board():
+    """A painted top over 30 mm weighs as a honeycomb board (350 kg/m^3), not solid MDF: the same top
+    in wood (650 kg/m^3) weighs 300 kg/m^3 more of its volume; a thin painted top stays MDF (750)."""
+    import infmob_usd
+    from infmob_usd.categories.parts.furniture_sizes import COCKTAIL
+
+    def top(**kw):
+        return infmob_usd.generate("cocktail_table", seed=8047, texture_size=16, support="drawers", **kw).link("top")
+
+    for thickness, painted in ((0.04, COCKTAIL["hollow_top_density"]), (0.022, 750.0)):
+        links = {f: top(top_finish=f, top_thickness=thickness) for f in ("painted", "wood")}
+        volume = sum(pc.volume() for pc in links["painted"].pieces if pc.material == "top")
+        assert volume > 0.01
+        assert links["wood"].mass - links["painted"].mass == pytest.approx((650.0 - painted) * volume, rel=1e-6)

@@ -34,6 +34,10 @@ COCKTAIL = {
     "drawer_depth": 0.45,  # coffee-table drawers run 0.3-0.45 m deep
     "drawer_reach": (0.45, 0.85),  # a drawer's depth as a fraction of the box: back to back, or one side
     "drawer_wall": 0.01,
+    # a painted top thicker than 30 mm is a lightweight board (board-on-frame / honeycomb core between thin
+    # faces), not solid MDF: IKEA LACK (50 mm board-on-frame, paper honeycomb; 90 x 55 cm table ~7 kg),
+    # Egger Eurolight and similar honeycomb boards 200-350 kg/m3 (vs MDF ~750); the upper figure is used
+    "hollow_top_from": 0.03, "hollow_top_density": 350.0,
     "drawer_pull": 0.75,  # a drawer pulls out this fraction of its depth
     "metal_drawer_sheet": 0.001,  # m: steel drawers are 0.8-1.2 mm folded sheet (as the dining table's)
     # handles: a knob (at most 15 mm radius, 25 mm proud) on a front under 30 cm, else a bar up to 14 cm
