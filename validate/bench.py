@@ -152,12 +152,11 @@ def format_bench(res: dict) -> str:
     if res["objects_per_s_1_worker"] is None:  # cold: no pool ran
         lines.append(f"peak memory: main {res['peak_rss_mb_main']:.0f} MB")
     else:
-        lines += [
-            f"objects/s, 1 worker:   {res['objects_per_s_1_worker']:.2f}",
-            f"objects/s, {w} workers:  {res[f'objects_per_s_{w}_workers']:.2f}",
-            f"parallel efficiency:   {100 * res['parallel_efficiency']:.0f}%",
-            f"peak memory: worker {res['peak_rss_mb_worker']:.0f} MB, main {res['peak_rss_mb_main']:.0f} MB",
-        ]
+        lines.append(f"objects/s, 1 worker:   {res['objects_per_s_1_worker']:.2f}")
+        if w > 1:
+            lines += [f"objects/s, {w} workers:  {res[f'objects_per_s_{w}_workers']:.2f}",
+                      f"parallel efficiency:   {100 * res['parallel_efficiency']:.0f}%"]
+        lines.append(f"peak memory: worker {res['peak_rss_mb_worker']:.0f} MB, main {res['peak_rss_mb_main']:.0f} MB")
     lines += [
         f"main process peak RSS after warm-up {res['rss_mb_main_after_warmup']:.0f} MB, after all"
         f" {len(res['median_seconds']) * res['count_per_category']} objects {res['rss_mb_main_after_all']:.0f} MB"
