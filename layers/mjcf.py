@@ -27,20 +27,10 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 
 from .common import write_file
-from .urdf import MESHES, write_meshes
+from .urdf import MESHES, _f, _v, write_meshes  # numbers as the URDF writes them
 
 TEXTURE_ROLES = {"basecolor": "rgb", "normal": "normal", "roughness": "roughness", "metallic": "metallic"}
 """Our texture maps and the MuJoCo material ``<layer role>`` each becomes."""
-
-
-def _f(x: float) -> str:
-    """``x`` to 9 significant digits, ``0`` for minus zero (``-0.0 + 0.0`` is ``0.0``; any other value is unchanged)."""
-    return "%.9g" % (float(x) + 0.0)
-
-
-def _v(a) -> str:
-    """The numbers of ``a`` as :func:`_f` writes them, space-separated."""
-    return " ".join(["%.9g" % (x + 0.0) for x in (a.tolist() if isinstance(a, np.ndarray) else a)])
 
 
 def _quat(rot: np.ndarray) -> np.ndarray:
