@@ -148,6 +148,19 @@ def _templates() -> Sdf.Layer:
     return _TEMPLATES
 
 
+def _from_template(templates: Sdf.Layer, template: Sdf.Path, layer: Sdf.Layer, path: Sdf.Path) -> Sdf.PrimSpec:
+    """A copy of prim ``template`` of :func:`_templates` at ``path`` of ``layer``."""
+    _copy_spec(templates, template, layer, path)
+    return layer.GetPrimAtPath(path)
+
+
+def _primvar(mesh: Sdf.PrimSpec, name: str, type_name, value, interpolation: str) -> None:
+    """A varying attribute ``name`` of ``mesh`` with its ``interpolation`` (normals, UVs)."""
+    spec = _new_attr(mesh, name, type_name, _VARYING, False)
+    spec.default = value
+    spec.SetInfo("interpolation", interpolation)
+
+
 def _minmax(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per-column min and max of ``(n, 3)`` ``v`` (column by column on large arrays: ~20x faster)."""
     if len(v) < 512:
@@ -349,16 +362,10 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
             vp = _prim(lp, "visuals", _DEF, "Scope")
             vpath = vp.path
             for vname, _slot, role, verts, lo, hi, faces, normals, uvs in visuals[link.name]:
-                path = vpath.AppendChild(vname)
-                _copy_spec(templates, _VISUAL, layer, path)  # subdivisionScheme
-                mesh = layer.GetPrimAtPath(path)
+                mesh = _from_template(templates, _VISUAL, layer, vpath.AppendChild(vname))  # subdivisionScheme
                 _mesh(mesh, verts, np.array([lo, hi], np.float32), faces.astype(np.int32), counts)
-                spec = _new_attr(mesh, "normals", _NORMALS, _VARYING, False)
-                spec.default = _vec3f(normals)
-                spec.SetInfo("interpolation", "faceVarying")
-                spec = _new_attr(mesh, "primvars:st", _TEXCOORDS, _VARYING, False)
-                spec.default = _vec2f(uvs)
-                spec.SetInfo("interpolation", "faceVarying")
+                _primvar(mesh, "normals", _NORMALS, _vec3f(normals), "faceVarying")
+                _primvar(mesh, "primvars:st", _TEXCOORDS, _vec2f(uvs), "faceVarying")
                 if role:
                     mesh.SetInfo("apiSchemas", Sdf.TokenListOp.Create(prependedItems=["SemanticsLabelsAPI:class"]))
                     _label(mesh, role)
@@ -366,13 +373,10 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
             cp = _prim(lp, "collisions", _DEF, "Scope")
             cpath = cp.path
             for i, (centre, hv, extent, hf, hn, _slot) in enumerate(hulls[link.name]):
-                path = cpath.AppendChild(f"hull_{i:03d}")
-                _copy_spec(templates, _HULL, layer, path)  # subdivisionScheme, purpose, visibility, xformOpOrder
-                col = layer.GetPrimAtPath(path)
+                # subdivisionScheme, purpose, visibility, xformOpOrder
+                col = _from_template(templates, _HULL, layer, cpath.AppendChild(f"hull_{i:03d}"))
                 _mesh(col, hv, extent, hf, counts)
-                spec = _new_attr(col, "normals", _NORMALS, _VARYING, False)
-                spec.default = _vec3f(hn)
-                spec.SetInfo("interpolation", "uniform")
+                _primvar(col, "normals", _NORMALS, _vec3f(hn), "uniform")
                 _new_attr(col, "xformOp:translate", _DOUBLE3, _VARYING, False).default = Gf.Vec3d(*centre.tolist())
 
 
