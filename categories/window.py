@@ -193,7 +193,7 @@ class WindowLayout(Layout):
         p = self.p
         W, H, fd = p["width"], p["height"], p["frame_depth"]
         for slot in ("frame", "shutter"):  # painted joinery is softwood
-            if p.get(f"{slot}_finish") == "painted":
+            if p[f"{slot}_finish"] == "painted":
                 self.bp.densities[slot] = P.SOFTWOOD
         z0 = p["sill_thickness"] if node.one("sill") else 0.0
         fw = jamb_width(p)

@@ -981,12 +981,12 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
                     exact[n] = poses[n].tobytes()
             seen = met.get((pair, exact[pair[0]], exact[pair[1]], d))
             if seen is None:
-                todo.append(pair)
+                todo.append((pair, d))
             elif seen:
                 out.add(pair)
         if not todo:
             return out
-        names = sorted({n for pair in todo for n in pair})
+        names = sorted({n for pair, _ in todo for n in pair})
         obstacles = _Obstacles(names, hulls, poses, cache)
         index = {n: k for k, n in enumerate(names)}
         starts = np.cumsum([0] + [len(hulls[n]) for n in names]).tolist()
@@ -996,9 +996,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         link_lo = np.minimum.reduceat(lo, starts[:-1], axis=0)
         link_hi = np.maximum.reduceat(hi, starts[:-1], axis=0)
         link_near = _boxes_meet(link_lo[:, None], link_hi[None] + CLEARANCE, link_lo[None], link_hi[:, None] + CLEARANCE)
-        for pair in todo:
+        for pair, d in todo:
             ka, kb = index[pair[0]], index[pair[1]]  # ka < kb: the hulls of pair[0] come first
-            d = margin if not isinstance(margin, dict) else margin[pair]
             hit = False
             if link_near[ka, kb]:
                 a0, a1, b0, b1 = starts[ka], starts[ka + 1], starts[kb], starts[kb + 1]
