@@ -13,12 +13,12 @@ COUNT  ?= 3
 sysdeps:
 	@bash .ci/sysdeps.sh
 
-$(STAMP): pyproject.toml | sysdeps
+$(STAMP): pyproject.toml constraints.txt | sysdeps
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
 	# torch first, pinned: mani-skill then finds it satisfied (another torch pulls gigabytes of CUDA)
 	$(BIN)/pip install -q torch==2.13.0
-	$(BIN)/pip install -q -e ".[sim,dev,ray,simready]"
+	$(BIN)/pip install -q -c constraints.txt -e ".[sim,dev,ray,simready]"
 	touch $(STAMP)
 
 demo: $(STAMP)
