@@ -21,7 +21,7 @@ from .blueprint import Blueprint
 from .errors import ModelError
 from .geometry import Piece, _measure_closed
 from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, wall_of
-from .physical import dynamics
+from .physical.passive import dynamics
 from .rotation import motion
 
 

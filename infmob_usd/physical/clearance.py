@@ -1,0 +1,270 @@
+"""Joint limits from clearance: each joint's sweep alone, then every joint at once."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from ..blueprint import descendants
+from .hulls import CLEARANCE, _boxes_meet, _hits, _Obstacles, _solid_hulls
+from .sweep import _Moving, _parent_limit, _sweep_limit
+
+ALL_FRACTIONS = (0.5, 1.0)
+"""The combined states the validators sample: every joint at once at 50 % and 100 % of its
+range (continuous joints at f pi), prerequisites fully open."""
+
+
+class _Clearance:
+    """What the passes of :func:`clearance_limits` share: the solid hulls, the movable joints and
+    their current limits, the subtree each moves, the ``requires_open`` gates, and caches of
+    posed links, scenes and pair contacts (the search revisits states)."""
+
+    def __init__(self, obj):
+        self.obj = obj
+        self.hulls = _solid_hulls(obj)
+        self.movable = [j for j in obj.joints if j.movable]
+        self.limits = {j.name: (float(j.lower), float(j.upper)) for j in self.movable}
+        groups: dict[str, list] = {}
+        for j in self.movable:
+            groups.setdefault(j.group, []).append(j)
+        self.gates = {j.name: [g.name for g in groups.get(j.requires_open, [])]
+                      for j in self.movable if j.requires_open}
+        self.gate_of_someone = {name for names in self.gates.values() for name in names}
+        self.by_name = {link.name: link for link in obj.links}
+        self.into = {j.child: j for j in obj.joints}
+        self.subtree = {j.name: descendants(obj.joints, j.child) for j in self.movable}
+        self.by_joint = {j.name: j for j in self.movable}
+        self.cache: dict = {}
+        self.scenes: dict = {}
+        self.posed: dict = {}
+        self.hull_counts = [len(hs) for hs in self.hulls.values()]
+        self.hull_world: dict = {}  # (hull, exact pose) -> world points
+        # link pair at exact poses, margin -> whether they meet: the search revisits states in which
+        # most links have not moved (a result depends on the two links' posed hulls alone; an exact
+        # repeat reads the same cached points, normals and solids as the first time)
+        self.met: dict[tuple, bool] = {}
+
+    def poses_at(self, q):
+        """``obj.poses(q)``, computed once per state (the search revisits states; callers only read)."""
+        key = tuple((k, float(v).hex()) for k, v in sorted(q.items()))
+        if key not in self.posed:
+            self.posed[key] = self.obj.poses(q)
+        return self.posed[key]
+
+    def real_parent(self, j):
+        p = j.parent
+        while self.by_name[p].dummy:
+            p = self.into[p].parent
+        return p
+
+    def scene(self, q):
+        """Every link posed at ``q``, and all their hulls as obstacles (shared by the joints that
+        sweep in this state)."""
+        key = tuple(sorted(q.items()))
+        if key not in self.scenes:
+            poses = self.poses_at(q)
+            self.scenes[key] = (poses, _Obstacles(list(self.hulls), self.hulls, poses, self.cache))
+        return self.scenes[key]
+
+    def sweep(self, j, q) -> None:
+        """Shorten each side of ``j``'s range to what it sweeps from 0 with the other joints at
+        ``q`` (which leaves ``j`` at 0): :func:`_sweep_limit` against every link but its parent,
+        :func:`_parent_limit` against the parent."""
+        from ..errors import ModelError
+
+        hulls, limits = self.hulls, self.limits
+        moving = [h for n in sorted(self.subtree[j.name]) for h in hulls.get(n, [])]
+        if not moving:
+            return
+        parent = self.real_parent(j)
+        poses, obstacles = self.scene(q)
+        if limits[j.name] == (0.0, 0.0):
+            return
+        # per obstacle hull (the links' hulls in ``hulls`` order): not moved by j, not its parent
+        allowed = np.repeat([n not in self.subtree[j.name] and n != parent for n in hulls], self.hull_counts)
+        below = _Obstacles([parent] if parent in hulls else [], hulls, poses, self.cache)
+        moving = _Moving(j, moving, poses, self.hull_world)  # shared by both sides
+        for side in (1, 0):
+            limit = limits[j.name][side]
+            if limit == 0:
+                continue
+            value, hit = _sweep_limit(moving, limit, obstacles, allowed)
+            value, hit = min((value, hit), _parent_limit(moving, value, below), key=lambda t: abs(t[0]))
+            if value != limit:
+                if abs(value) < 1e-6:
+                    raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without meeting"
+                                     f" {hit!r} (parent {parent!r}); leave a gap between them")
+                lo, hi = limits[j.name]
+                limits[j.name] = (lo, value) if side == 1 else (value, hi)
+
+    def sweep_alone(self) -> None:
+        """Step 1: each joint alone, swept from rest (its gates open), in tree order."""
+        for j in self.movable:
+            if j.type in ("revolute", "prismatic"):
+                self.sweep(j, {g: self.limits[g][1] for g in self.gates.get(j.name, [])})
+
+    def pairs(self) -> dict[tuple[str, str], list]:
+        """Link pairs that some joint moves apart from each other (not parent and child): the
+        joints between them."""
+        solid = list(self.hulls)
+        chain = {frozenset((self.real_parent(j), j.child)) for j in self.movable if not self.by_name[j.child].dummy}
+        path = {}
+        for i, a in enumerate(solid):
+            for b in solid[i + 1:]:
+                between = [j for j in self.movable if (a in self.subtree[j.name]) != (b in self.subtree[j.name])]
+                if between and frozenset((a, b)) not in chain:
+                    path[tuple(sorted((a, b)))] = between
+        return path
+
+    def _meet(self, obstacles: _Obstacles, ka: int, kb: int, starts: list, d: float) -> bool:
+        """Whether the hulls of links ``ka`` and ``kb`` (their hulls' rows ``starts[k]`` on in
+        ``obstacles``), one grown by ``d``, overlap."""
+        lo, hi = obstacles.lo, obstacles.hi
+        a0, a1, b0, b1 = starts[ka], starts[ka + 1], starts[kb], starts[kb + 1]
+        near = _boxes_meet(lo[a0:a1, None], hi[None, b0:b1] + CLEARANCE, lo[None, b0:b1], hi[a0:a1, None] + CLEARANCE)
+        for u, v in zip(*np.nonzero(near)):
+            # the exact hull of the first link's hull is the one obstacles.solid(a0 + u) keeps
+            if _hits(obstacles.world[a0 + u], obstacles.normals(a0 + u), d, obstacles, b0 + v,
+                     self.cache, ("solid", 0.0) + obstacles.keys[a0 + u]):
+                return True
+        return False
+
+    def contacts(self, poses, pairs, margin=0.0) -> set:
+        """Link pairs among ``pairs`` whose hulls, one grown by ``margin`` (a number, or a dict
+        pair -> margin), overlap at ``poses``."""
+        out = set()
+        todo = []
+        exact = {}  # link -> its exact pose's bytes
+        for pair in sorted(tuple(sorted(p)) for p in pairs):
+            d = margin if not isinstance(margin, dict) else margin[pair]
+            for n in pair:
+                if n not in exact:
+                    exact[n] = poses[n].tobytes()
+            seen = self.met.get((pair, exact[pair[0]], exact[pair[1]], d))
+            if seen is None:
+                todo.append((pair, d))
+            elif seen:
+                out.add(pair)
+        if not todo:
+            return out
+        names = sorted({n for pair, _ in todo for n in pair})
+        obstacles = _Obstacles(names, self.hulls, poses, self.cache)
+        index = {n: k for k, n in enumerate(names)}
+        starts = np.cumsum([0] + [len(self.hulls[n]) for n in names]).tolist()
+        # link boxes first: hull boxes of two links whose boxes are not near are not near
+        # either (the same comparisons, monotone), so only near link pairs compare hull boxes
+        link_lo = np.minimum.reduceat(obstacles.lo, starts[:-1], axis=0)
+        link_hi = np.maximum.reduceat(obstacles.hi, starts[:-1], axis=0)
+        link_near = _boxes_meet(link_lo[:, None], link_hi[None] + CLEARANCE, link_lo[None],
+                                link_hi[:, None] + CLEARANCE)
+        for pair, d in todo:
+            ka, kb = index[pair[0]], index[pair[1]]  # ka < kb: the hulls of pair[0] come first
+            hit = bool(link_near[ka, kb]) and self._meet(obstacles, ka, kb, starts, d)
+            self.met[pair, exact[pair[0]], exact[pair[1]], d] = hit
+            if hit:
+                out.add(pair)
+        return out
+
+    def state(self, f, scale=None):
+        """Link poses with every joint at ``f`` of its range (the joints ``scale[0]`` with limits
+        scaled by ``scale[1]``), gates of moved joints fully open."""
+        limits = self.limits
+        lim = dict(limits)
+        if scale is not None:
+            lim.update({name: (lo * scale[1], hi * scale[1]) for name, (lo, hi) in limits.items()
+                        if name in scale[0]})
+        q = {j.name: (f * math.pi if j.type == "continuous" else lim[j.name][0] + f * (lim[j.name][1]
+             - lim[j.name][0])) for j in self.movable}
+        for name in [n for n in q if q[n] != 0.0]:
+            for g in self.gates.get(name, []):
+                q[g] = lim[g][1]
+        return self.poses_at(q)
+
+    def _separate(self, f, a, b, path, margins) -> bool:
+        """Scale the limits of the joints between links ``a`` and ``b`` (:func:`clearance_limits`,
+        step 2) by the largest factor that separates them in state ``f``; False if none can be
+        scaled."""
+        from ..errors import ModelError
+
+        names = {j.name for j in path[(a, b)] if j.type != "continuous" and j.name not in self.gate_of_someone}
+        turns = {n for n in names if self.by_joint[n].type == "revolute"}
+        names = turns or names  # a hinge stops before a slide gives up travel
+        if not names:
+            return False
+        good, bad = 0.0, 1.0
+        for _ in range(8):
+            mid = 0.5 * (good + bad)
+            if (a, b) in self.contacts(self.state(f, (names, mid)), {(a, b)}, margins[(a, b)]):
+                bad = mid
+            else:
+                good = mid
+        if good < 1e-6:
+            raise ModelError(f"links {a!r} and {b!r} meet whenever their joints move together")
+        for name in sorted(names):
+            lo, hi = self.limits[name]
+            self.limits[name] = (lo * good, hi * good)
+        return True
+
+    def together(self, path) -> None:
+        """Step 2: every joint at once, in the states :data:`ALL_FRACTIONS`."""
+        # pairs apart by the clearance at rest keep it; closer ones keep apart; overlapping ones are
+        # left out (not a joint's doing)
+        rest = self.poses_at({})
+        touching = self.contacts(rest, set(path))
+        checked = set(path) - touching
+        near_rest = self.contacts(rest, checked, CLEARANCE)  # (only the pairs checked need a margin)
+        margins = {pair: 0.0 if pair in near_rest else CLEARANCE for pair in checked}
+        for _ in range(8):
+            changed = False
+            for f in ALL_FRACTIONS:
+                for a, b in sorted(self.contacts(self.state(f), checked, margins)):
+                    if self._separate(f, a, b, path, margins):
+                        changed = True
+                        break  # the state changed: look again
+            if not changed:
+                break
+
+
+def clearance_limits(obj) -> dict[str, tuple[float, float]]:
+    """Joint limits shortened so no moving part meets a link it may not touch.
+
+    1. *Each joint alone* (in tree order, parents first): each side of the range of every
+       revolute and prismatic joint (compound chains DoF by DoF) is swept from rest with the
+       other joints at rest. The collision hulls of the subtree it moves, swept (hull of two
+       consecutive poses; turns sampled so arcs bulge at most :data:`SWEEP_SAGITTA` past the
+       chords), keep :data:`CLEARANCE` from every hull of every link but its parent, and its
+       overlap with the parent grows by at most :data:`PARENT_GROWTH` over rest at quarters of
+       the range (a door may not swing into its own carcass; a polygonal pin may turn in its
+       polygonal bore). A hull pair that already overlaps, or is
+       closer than the clearance, at rest keeps only what it has (it is not this joint's
+       doing). A joint that ``requires_open`` a part sweeps with that part fully open. The limit
+       becomes the last contact-free value, bisected (14 steps) within the first sample
+       interval that meets something.
+    2. *Joints together*: in the states :data:`ALL_FRACTIONS` (every joint at 50 % and 100 % of
+       its range, as the validators sample them), two links that may touch neither by design
+       (welded, or parent and child) nor at rest must keep the clearance (or, if closer at rest,
+       must not overlap); where they do not, the limits of
+       the movable joints between them (not those others require open; only the revolute ones
+       if there are any: a door stops before a drawer gives up travel) are scaled by the same
+       factor, the largest that separates them (bisection to 0.4 %), until no state changes.
+
+    Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep
+    theirs: see :func:`limit_to_ground`).
+    """
+    c = _Clearance(obj)
+    c.sweep_alone()
+    path = c.pairs()
+    if path:
+        c.together(path)
+    return c.limits
+
+
+def limit_to_clearance(obj):
+    """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` (the object and
+    its joints are not modified; unchanged joints are shared)."""
+    limits = clearance_limits(obj)
+    joints = [replace(j, lower=limits[j.name][0], upper=limits[j.name][1])
+              if j.name in limits and limits[j.name] != (j.lower, j.upper) else j for j in obj.joints]
+    return replace(obj, joints=joints)
