@@ -68,24 +68,26 @@ class _Clearance:
             self.scenes[key] = (poses, _Obstacles(list(self.hulls), self.hulls, poses, self.cache))
         return self.scenes[key]
 
-    def sweep(self, j, q) -> None:
-        """Shorten each side of ``j``'s range to what it sweeps from 0 with the other joints at
-        ``q`` (which leaves ``j`` at 0): :func:`_sweep_limit` against every link but its parent,
-        :func:`_parent_limit` against the parent."""
-        from ..errors import ModelError
-
+    def blocks(self, j, q, only: set | None = None) -> list[tuple[int, float, str]]:
+        """Where each side of ``j``'s range stops when swept from 0 with the other joints at ``q``
+        (which leaves ``j`` at 0): :func:`_sweep_limit` against every link but its parent (only
+        the links ``only`` if given), :func:`_parent_limit` against the parent (unless ``only``
+        is given). ``[(side, value, link hit)]`` for each side (1 upper, 0 lower) that stops
+        short of its limit."""
         hulls, limits = self.hulls, self.limits
         moving = [h for n in sorted(self.subtree[j.name]) for h in hulls.get(n, [])]
         if not moving:
-            return
+            return []
         parent = self.real_parent(j)
         poses, obstacles = self.scene(q)
         if limits[j.name] == (0.0, 0.0):
-            return
+            return []
         # per obstacle hull (the links' hulls in ``hulls`` order): not moved by j, not its parent
-        allowed = np.repeat([n not in self.subtree[j.name] and n != parent for n in hulls], self.hull_counts)
-        below = _Obstacles([parent] if parent in hulls else [], hulls, poses, self.cache)
+        allowed = np.repeat([n not in self.subtree[j.name] and n != parent and (only is None or n in only)
+                             for n in hulls], self.hull_counts)
+        below = _Obstacles([parent] if parent in hulls and only is None else [], hulls, poses, self.cache)
         moving = _Moving(j, moving, poses, self.hull_world)  # shared by both sides
+        out = []
         for side in (1, 0):
             limit = limits[j.name][side]
             if limit == 0:
@@ -93,11 +95,23 @@ class _Clearance:
             value, hit = _sweep_limit(moving, limit, obstacles, allowed)
             value, hit = min((value, hit), _parent_limit(moving, value, below), key=lambda t: abs(t[0]))
             if value != limit:
-                if abs(value) < 1e-6:
-                    raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without meeting"
-                                     f" {hit!r} (parent {parent!r}); leave a gap between them")
-                lo, hi = limits[j.name]
-                limits[j.name] = (lo, value) if side == 1 else (value, hi)
+                out.append((side, value, hit))
+        return out
+
+    def shorten(self, j, side: int, value: float, hit: str) -> None:
+        from ..errors import ModelError
+
+        if abs(value) < 1e-6:
+            raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without meeting"
+                             f" {hit!r} (parent {self.real_parent(j)!r}); leave a gap between them")
+        lo, hi = self.limits[j.name]
+        self.limits[j.name] = (lo, value) if side == 1 else (value, hi)
+
+    def sweep(self, j, q) -> None:
+        """Shorten each side of ``j``'s range to what it sweeps from 0 with the other joints at
+        ``q`` (:meth:`blocks`)."""
+        for side, value, hit in self.blocks(j, q):
+            self.shorten(j, side, value, hit)
 
     def sweep_alone(self) -> None:
         """Step 1: each joint alone, swept from rest (its gates open), in tree order."""
