@@ -60,6 +60,9 @@ class Joint:
     group: str  # the child part of the declared joint; a compound chain shares it
     requires_open: str | None = None  # group that must be fully open before this joint moves
     armature: float = 0.0  # kg or kg m^2 added to the joint's inertia (set by effort.assign_drives)
+    # groups that must be closed (at rest) before this joint moves: a part whose sweep from the
+    # all-open state would meet them while they are open (set by physical.limit_to_clearance)
+    requires_closed: tuple[str, ...] = ()
 
     @property
     def movable(self) -> bool:

@@ -6,8 +6,10 @@
   rest stop (picking the side of a two-sided range, or adding a counterweight heel) (:mod:`.stops`).
 * :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent (:mod:`.gaps`).
 * :func:`limit_to_ground` shortens limits so nothing goes below the ground (:mod:`.ground`).
-* :func:`limit_to_clearance` shortens limits so moving parts never meet what they may not touch
-  (:mod:`.clearance`, on the sweeps of :mod:`.sweep` and the hull tests of :mod:`.hulls`).
+* :func:`limit_to_clearance` shortens limits so moving parts never meet what they may not touch,
+  from rest and from the all-open state, and orders parts that cannot pass each other open
+  (``requires_closed``) (:mod:`.clearance`, on the sweeps of :mod:`.sweep` and the hull tests
+  of :mod:`.hulls`).
 * :data:`DYNAMICS` gives passive joint dynamics per joint role, so doors stay
   where they are left and knobs do not spin freely (:mod:`.passive`).
 """

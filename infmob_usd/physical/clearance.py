@@ -11,6 +11,11 @@ from ..blueprint import descendants
 from .hulls import CLEARANCE, _boxes_meet, _hits, _Obstacles, _solid_hulls
 from .sweep import _Moving, _parent_limit, _sweep_limit
 
+KEEP = 0.75
+"""The least share of its range a part keeps when it gives way to another part's sweep from the
+all-open state (:func:`clearance_limits`, step 3); below it the two are ordered instead
+(``requires_closed``)."""
+
 ALL_FRACTIONS = (0.5, 1.0)
 """The combined states the validators sample: every joint at once at 50 % and 100 % of its
 range (continuous joints at f pi), prerequisites fully open."""
@@ -26,9 +31,12 @@ class _Clearance:
         self.hulls = _solid_hulls(obj)
         self.movable = [j for j in obj.joints if j.movable]
         self.limits = {j.name: (float(j.lower), float(j.upper)) for j in self.movable}
-        groups: dict[str, list] = {}
+        self.groups = groups = {}
         for j in self.movable:
             groups.setdefault(j.group, []).append(j)
+        # joint -> the parts (groups) that must be closed before it moves (step 3)
+        self.closed: dict[str, set[str]] = {j.name: set(getattr(j, "requires_closed", ()))
+                                            for j in self.movable}
         self.gates = {j.name: [g.name for g in groups.get(j.requires_open, [])]
                       for j in self.movable if j.requires_open}
         self.gate_of_someone = {name for names in self.gates.values() for name in names}
@@ -68,28 +76,37 @@ class _Clearance:
             self.scenes[key] = (poses, _Obstacles(list(self.hulls), self.hulls, poses, self.cache))
         return self.scenes[key]
 
+    def _setup(self, j, q, only: set | None):
+        """What a sweep of ``j`` from its value in ``q`` (default 0) needs: the hulls it moves, the
+        obstacles, which of them it may not enter (every link but its parent, only the links
+        ``only`` if given) and its parent (none if ``only`` is given); None if it moves nothing."""
+        hulls = self.hulls
+        moving = [h for n in sorted(self.subtree[j.name]) for h in hulls.get(n, [])]
+        if not moving:
+            return None
+        parent = self.real_parent(j)
+        poses, obstacles = self.scene(q)
+        if self.limits[j.name] == (0.0, 0.0):
+            return None
+        # per obstacle hull (the links' hulls in ``hulls`` order): not moved by j, not its parent
+        allowed = np.repeat([n not in self.subtree[j.name] and n != parent and (only is None or n in only)
+                             for n in hulls], self.hull_counts)
+        below = _Obstacles([parent] if parent in hulls and only is None else [], hulls, poses, self.cache)
+        return _Moving(j, moving, poses, self.hull_world), obstacles, allowed, below
+
     def blocks(self, j, q, only: set | None = None) -> list[tuple[int, float, str]]:
         """Where each side of ``j``'s range stops when swept from 0 with the other joints at ``q``
         (which leaves ``j`` at 0): :func:`_sweep_limit` against every link but its parent (only
         the links ``only`` if given), :func:`_parent_limit` against the parent (unless ``only``
         is given). ``[(side, value, link hit)]`` for each side (1 upper, 0 lower) that stops
         short of its limit."""
-        hulls, limits = self.hulls, self.limits
-        moving = [h for n in sorted(self.subtree[j.name]) for h in hulls.get(n, [])]
-        if not moving:
+        setup = self._setup(j, q, only)
+        if setup is None:
             return []
-        parent = self.real_parent(j)
-        poses, obstacles = self.scene(q)
-        if limits[j.name] == (0.0, 0.0):
-            return []
-        # per obstacle hull (the links' hulls in ``hulls`` order): not moved by j, not its parent
-        allowed = np.repeat([n not in self.subtree[j.name] and n != parent and (only is None or n in only)
-                             for n in hulls], self.hull_counts)
-        below = _Obstacles([parent] if parent in hulls and only is None else [], hulls, poses, self.cache)
-        moving = _Moving(j, moving, poses, self.hull_world)  # shared by both sides
+        moving, obstacles, allowed, below = setup  # the moving hulls shared by both sides
         out = []
         for side in (1, 0):
-            limit = limits[j.name][side]
+            limit = self.limits[j.name][side]
             if limit == 0:
                 continue
             value, hit = _sweep_limit(moving, limit, obstacles, allowed)
@@ -97,6 +114,20 @@ class _Clearance:
             if value != limit:
                 out.append((side, value, hit))
         return out
+
+    def closing(self, j, q, only: set | None = None) -> tuple[float, str] | None:
+        """Where ``j`` stops when driven from its value in ``q`` to its lower limit, the other
+        joints at ``q`` (as :meth:`blocks`, the sweep starting there): ``(value, link hit)``, or
+        None if it gets there."""
+        start = q.get(j.name, 0.0)
+        travel = self.limits[j.name][0] - start
+        setup = self._setup(j, q, only) if travel != 0 else None
+        if setup is None:
+            return None
+        moving, obstacles, allowed, below = setup
+        value, hit = _sweep_limit(moving, travel, obstacles, allowed)
+        value, hit = min((value, hit), _parent_limit(moving, value, below), key=lambda t: abs(t[0]))
+        return (start + value, hit) if value != travel else None
 
     def shorten(self, j, side: int, value: float, hit: str) -> None:
         from ..errors import ModelError
@@ -241,6 +272,106 @@ class _Clearance:
                 break
 
 
+    # -- step 3: each joint closed from the all-open state
+
+    def held_closed(self, j) -> set[str]:
+        """Joints at rest while ``j`` moves from the all-open state: the other DoFs of its own
+        part (a compound joint's modes are tried one at a time, as a tilt-and-turn sash works),
+        those of the parts ``j`` ``requires_closed``, and those that ``requires_open`` a part
+        held closed (recursively)."""
+        names = {g.name for group in sorted(self.closed[j.name] | {j.group}) for g in self.groups.get(group, [])}
+        names.discard(j.name)
+        while True:
+            more = {n for n, gates in self.gates.items() if n not in names and names.intersection(gates)}
+            if not more:
+                return names
+            names |= more
+
+    def open_state(self, j) -> dict[str, float]:
+        """Every limited joint at its upper (open) limit, :meth:`held_closed` at 0."""
+        rest = self.held_closed(j)
+        return {n: self.limits[n][1] for n, k in self.by_joint.items() if k.type != "continuous" and n not in rest}
+
+    def blocker(self, j, hit: str, q: dict[str, float]):
+        """The open joint (not one that moves ``j``) whose subtree holds link ``hit``, the one
+        nearest to it; None if no open joint put it there."""
+        found = [k for k in self.movable if k is not j and q.get(k.name, 0.0) != 0.0
+                 and hit in self.subtree[k.name] and j.child not in self.subtree[k.name]]
+        return min(found, key=lambda k: len(self.subtree[k.name])) if found else None
+
+    def spare(self, j, k, q: dict[str, float]) -> float:
+        """The largest share of ``k``'s upper limit (bisected, 8 steps) at which ``j`` closes from
+        ``q`` clear of ``k``'s subtree."""
+        only = self.subtree[k.name]
+        if self.closing(j, {**q, k.name: 0.0}, only):
+            return 0.0
+        good, bad = 0.0, 1.0
+        for _ in range(8):
+            mid = 0.5 * (good + bad)
+            if self.closing(j, {**q, k.name: mid * self.limits[k.name][1]}, only):
+                bad = mid
+            else:
+                good = mid
+        return good
+
+    def own_share(self, j, q: dict[str, float]) -> float:
+        """The largest share of ``j``'s upper limit from which it closes with the others at ``q``:
+        the first contact of its opening sweep from rest, if it then closes from there; else 0."""
+        lo, hi = self.limits[j.name]
+        if hi <= 0:
+            return 0.0
+        found = [value for side, value, _ in self.blocks(j, {**q, j.name: 0.0}) if side == 1]
+        if not found or found[0] < 1e-6:
+            return 0.0
+        self.limits[j.name] = (lo, found[0])
+        try:
+            clear = self.closing(j, {**q, j.name: found[0]}) is None
+        finally:
+            self.limits[j.name] = (lo, hi)
+        return found[0] / hi if clear else 0.0
+
+    def give_way(self, j, value: float, hit: str, q: dict[str, float]) -> None:
+        """Make ``j``'s closing from the all-open state ``q``, stopped at ``value`` by link
+        ``hit``, pass: a part inside ``j`` (it ``requires_open`` ``j``) is closed first
+        (``requires_closed``); otherwise the blocking joint's upper limit or ``j``'s own is
+        shortened, whichever keeps the larger share of its range, if that share is at least
+        :data:`KEEP`; otherwise ``j`` ``requires_closed`` the blocking part. Where no open joint
+        put ``hit`` there, ``j``'s upper limit is shortened."""
+        k = self.blocker(j, hit, q)
+        if k is not None and k.requires_open == j.group:
+            self.closed[j.name].add(k.group)
+            return
+        own = self.own_share(j, q)
+        other = self.spare(j, k, q) if k is not None else 0.0
+        if k is not None and max(own, other) < KEEP:
+            self.closed[j.name].add(k.group)
+        elif k is not None and other >= own:
+            lo, hi = self.limits[k.name]
+            self.limits[k.name] = (lo, hi * other)
+        else:
+            self.shorten(j, 1, own * self.limits[j.name][1], hit)
+
+    def from_open(self) -> bool:
+        """Step 3: each joint closed from its :meth:`open_state`, made to pass by
+        :meth:`give_way`; whether any limit or relation changed."""
+        changed = False
+        for j in self.movable:
+            if j.type not in ("revolute", "prismatic"):
+                continue
+            for attempt in range(32):
+                q = self.open_state(j)
+                found = self.closing(j, q)
+                if not found:
+                    break
+                k = self.blocker(j, found[1], q)
+                if attempt < 16 or k is None:
+                    self.give_way(j, *found, q)
+                else:  # (never seen) an order that does not settle: the parts in the way close first
+                    self.closed[j.name].add(k.group)
+                changed = True
+        return changed
+
+
 def clearance_limits(obj) -> dict[str, tuple[float, float]]:
     """Joint limits shortened so no moving part meets a link it may not touch.
 
@@ -263,22 +394,50 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        the movable joints between them (not those others require open; only the revolute ones
        if there are any: a door stops before a drawer gives up travel) are scaled by the same
        factor, the largest that separates them (bisection to 0.4 %), until no state changes.
+    3. *Each joint from the all-open state*: each joint is swept from its upper limit to its
+       lower one with every other limited joint at its upper (open) limit, except the other
+       DoFs of its own part, the parts it ``requires_closed`` and the parts that
+       ``requires_open`` those, which are at rest: a robot that opened every part can close
+       any one and open it again. Where the sweep is stopped by a part that an
+       open joint moved there (:meth:`_Clearance.give_way`): a part that ``requires_open`` the
+       moving one (a rack in a door) must be closed first (``requires_closed``); otherwise
+       whichever of the blocking joint's upper limit and the moving joint's own limit keeps the
+       larger share of its range (at least :data:`KEEP`) is shortened (a wall-cabinet door that
+       opens past 90 degrees in front of its neighbour's swing stops before it); otherwise the
+       moving joint ``requires_closed`` the blocking part. Steps 2 and 3 repeat (up to 4
+       rounds) while step 3 changes something.
 
     Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep
-    theirs: see :func:`limit_to_ground`).
+    theirs: see :func:`limit_to_ground`); :func:`limit_to_clearance` also sets each joint's
+    ``requires_closed``.
     """
+    return _clearance(obj).limits
+
+
+def _clearance(obj) -> _Clearance:
+    """The three steps of :func:`clearance_limits` run on ``obj``; steps 2 and 3 again (up to 4
+    rounds) while step 3 changes something."""
     c = _Clearance(obj)
     c.sweep_alone()
     path = c.pairs()
-    if path:
-        c.together(path)
-    return c.limits
+    for _ in range(4):
+        if path:
+            c.together(path)
+        if not c.from_open():
+            break
+    return c
 
 
 def limit_to_clearance(obj):
-    """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` (the object and
-    its joints are not modified; unchanged joints are shared)."""
-    limits = clearance_limits(obj)
-    joints = [replace(j, lower=limits[j.name][0], upper=limits[j.name][1])
-              if j.name in limits and limits[j.name] != (j.lower, j.upper) else j for j in obj.joints]
+    """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` and the
+    ``requires_closed`` parts its step 3 found (the object and its joints are not modified;
+    unchanged joints are shared)."""
+    c = _clearance(obj)
+    joints = []
+    for j in obj.joints:
+        if j.name in c.limits:
+            closed = tuple(sorted(c.closed[j.name]))
+            if c.limits[j.name] != (j.lower, j.upper) or closed != tuple(j.requires_closed):
+                j = replace(j, lower=c.limits[j.name][0], upper=c.limits[j.name][1], requires_closed=closed)
+        joints.append(j)
     return replace(obj, joints=joints)
