@@ -186,7 +186,7 @@ def convex_pieces(vertices: np.ndarray, faces: np.ndarray, seed: int = 0) -> lis
     for v, _f in parts:
         v = np.asarray(v, float)
         if len(v) > MAX_HULL:
-            from .geometry import _farthest_points
+            from .hulls import _farthest_points
             v = _farthest_points(v, MAX_HULL)
         if len(v) >= 4:
             out.append(v)
@@ -353,7 +353,7 @@ class LibPart:
         return frozenset(self.supports)
 
     def piece(self, material: str, name: str = ""):
-        from .geometry import Piece
+        from .piece import Piece
 
         return Piece(self.vertices, self.faces, material, self.convex, name, hulls=self.hulls)
 
@@ -470,7 +470,7 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
             raise _err(folder / d["convex"], f"piece {i} must be 4..{MAX_HULL} finite points",
                        "re-import the part")
         convex.append(a @ rot.T * k)
-    from .geometry import hull_arrays
+    from .hulls import hull_arrays
 
     hulls = tuple(hull_arrays(c) for c in convex)
     return LibPart(label, pid, d["source"], d["licence"], v, f, tuple(convex), hulls, supports, scale, hints,
