@@ -1,4 +1,6 @@
 import math
+import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -246,3 +248,18 @@ def test_revolve_arrays_hands_out_its_own_faces():
     inward = prof[::-1].copy()  # the same outline walked the other way: faces still outward
     v3, f3 = g.revolve_arrays(inward, 16)
     assert measures.mass_properties(v3, f3)[0] > 0
+
+
+def test_the_authoring_api_names_what_categories_use():
+    """``infmob_usd.geometry`` is the vocabulary categories build with: every ``g.<name>`` a category, a
+    part library or a worked example uses is in its ``__all__``, and every name there exists."""
+    root = Path(__file__).resolve().parents[1]
+    used = set()
+    for path in [*(root / "categories").rglob("*.py"), *(root / "docs" / "examples").glob("*.py")]:
+        text = path.read_text()
+        if "import geometry as g" in text:
+            used |= set(re.findall(r"\bg\.([A-Za-z_]\w*)", text))
+    assert used, "the scan found no category using the geometry API"
+    unlisted = sorted(used - set(g.__all__))
+    assert not unlisted, f"categories use names the geometry API does not list: {unlisted}"
+    assert all(hasattr(g, name) for name in g.__all__), [n for n in g.__all__ if not hasattr(g, n)]
