@@ -8,7 +8,7 @@ import numpy as np
 
 from ..blueprint import Blueprint, descendants
 from ..errors import ModelError
-from ..geometry import hull_arrays
+from ..hulls import hull_arrays
 from ..joints import Dof
 from ..rotation import axis_angle
 

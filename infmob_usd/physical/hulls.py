@@ -8,7 +8,7 @@ from functools import cached_property
 
 import numpy as np
 
-from ..geometry import triangle_cross
+from ..triangles import triangle_cross
 
 CLEARANCE = 1e-3
 """m; a moving subtree stops this far from what it may not touch (where it starts farther)."""

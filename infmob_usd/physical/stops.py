@@ -64,8 +64,8 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
 
     Returns new ``(links, joints)`` lists; links and joints not changed are the same objects.
     """
-    from ..geometry import box_between
     from ..mass import inertial
+    from ..primitives import box_between
 
     links, joints = list(links), list(joints)
     index = {link.name: i for i, link in enumerate(links)}
