@@ -330,17 +330,18 @@ class _Clearance:
             self.limits[j.name] = (lo, hi)
         return found[0] / hi if clear else 0.0
 
-    def give_way(self, j, value: float, hit: str, q: dict[str, float]) -> None:
+    def give_way(self, j, value: float, hit: str, q: dict[str, float]) -> bool:
         """Make ``j``'s closing from the all-open state ``q``, stopped at ``value`` by link
         ``hit``, pass: a part inside ``j`` (it ``requires_open`` ``j``) is closed first
         (``requires_closed``); otherwise the blocking joint's upper limit or ``j``'s own is
         shortened, whichever keeps the larger share of its range, if that share is at least
         :data:`KEEP`; otherwise ``j`` ``requires_closed`` the blocking part. Where no open joint
-        put ``hit`` there, ``j``'s upper limit is shortened."""
+        put ``hit`` there, ``j``'s upper limit is shortened if that helps. Returns whether
+        anything changed (False: nothing in the core's reach resolves it)."""
         k = self.blocker(j, hit, q)
         if k is not None and k.requires_open == j.group:
             self.closed[j.name].add(k.group)
-            return
+            return True
         own = self.own_share(j, q)
         other = self.spare(j, k, q) if k is not None else 0.0
         if k is not None and max(own, other) < KEEP:
@@ -348,8 +349,11 @@ class _Clearance:
         elif k is not None and other >= own:
             lo, hi = self.limits[k.name]
             self.limits[k.name] = (lo, hi * other)
-        else:
+        elif own > 0:
             self.shorten(j, 1, own * self.limits[j.name][1], hit)
+        else:
+            return False
+        return True
 
     def from_open(self) -> bool:
         """Step 3: each joint closed from its :meth:`open_state`, made to pass by
@@ -365,7 +369,8 @@ class _Clearance:
                     break
                 k = self.blocker(j, found[1], q)
                 if attempt < 16 or k is None:
-                    self.give_way(j, *found, q)
+                    if not self.give_way(j, *found, q):
+                        break  # left as it is: the validators' reach reports it
                 else:  # (never seen) an order that does not settle: the parts in the way close first
                     self.closed[j.name].add(k.group)
                 changed = True
