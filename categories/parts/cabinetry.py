@@ -45,9 +45,8 @@ CORNER_BLIND = 0.05  # a corner unit's blind panel reaches this far past the uni
 CORNER_LEG = 0.06  # legs under the corner box, this far in from its edges
 LIFT_HANDLE = 0.04  # handles of tilt-out fronts and flaps this far from the free edge
 
-# Handles: 128-320 mm bar pulls (hole centres), 30 mm knobs 25 mm proud, edge pulls as long as asked.
-BAR_HANDLE = (0.128, 0.32)
-KNOB = (0.015, 0.025)
+# Handles (hardware.handle): 128-320 mm bar pulls, 30 mm knobs 25 mm proud, edge pulls as long as asked.
+BAR_HANDLE = hardware.BAR_SPAN
 HANDLE_REACH = 0.03  # a door's handle keeps this far (beyond half its length) from the door's ends
 HANDLE_IN = 0.05  # on a slab front a handle is 50 mm from the edge (framed: on the stile or rail)
 DOOR_HANDLE = (0.8, 0.9, 0.45)  # handle height / door height: on doors under 0.9 m, on taller doors
@@ -273,21 +272,9 @@ def angle(deg: float) -> float:
 
 
 # -- kitchen cabinet assemblies -----------------------------------------------------------------
-def handle(style: str, length: float, slot: str = "handle"):
-    """A cabinet handle of ``style`` (``bar``: a 128-320 mm pull; ``knob``: a 30 mm knob; else an edge
-    pull of ``length``), mounted by its ``mount`` support point."""
-    if style == "bar":
-        return hardware.bar_handle(min(max(length, BAR_HANDLE[0]), BAR_HANDLE[1]), slot)
-    if style == "knob":
-        return hardware.knob_handle(*KNOB, slot)
-    return hardware.edge_pull(length, slot)
-
-
 def handle_on(style: str, length: float, at, across=(0, 1, 0)) -> list[g.Piece]:
-    """The pieces of a handle of ``style`` mounted on a front face at point ``at`` (the face's normal
-    +X), its length along ``across``."""
-    h = handle(style, length).attached("mount", to=Frame.at(at, z=(1, 0, 0), x=across))
-    return list(h.parts[h.root].pieces)
+    """The pieces of a :func:`~.hardware.handle` of ``style`` on a front face at point ``at``."""
+    return hardware.on_face(hardware.handle(style, length), at, across)
 
 
 def drawer(xs, ys, fys, fz, bz, t: float, ft: float, style: str, handle_style) -> tuple[list[g.Piece], tuple]:
