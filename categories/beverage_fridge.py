@@ -39,7 +39,7 @@ def rack_count(p, rng) -> int:
 
 def cavity_height(p: dict) -> float:
     """Height of the cooled cavity (floor liner to ceiling liner)."""
-    return size(p, p["design"])[2] - 2 * p["wall"] - 2 * A.LINER - p["feet_height"] - p["kick_height"]
+    return A.size(p, p["design"], FR.SIZES)[2] - 2 * p["wall"] - 2 * A.LINER - p["feet_height"] - p["kick_height"]
 
 
 def freezer_height(p: dict) -> float:
@@ -56,12 +56,6 @@ def right_rack_count(p, rng) -> int:
     """right_rack_count, 1 fewer (a dual-zone cooler's right zone, set apart from the left one: wine in one
     zone, cans in the other, e.g. Whynter BWB-3388FDS, Kalamera KRC-150BV)"""
     return max(1, p["right_rack_count"] - 1)
-
-
-def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): wine coolers and dual-zone coolers are undercounter height, 0.82-0.87 m; a
-    dual-zone cooler with two doors is at least 0.6 m wide (:data:`~.parts.appliance_sizes.FRIDGE`)."""
-    return FR.size(p["width"], p["depth"], p["height"], design)
 
 
 GRAMMAR = Grammar("beverage_fridge", {
@@ -150,7 +144,7 @@ class FridgeLayout(Layout):
         p = self.p
         design = node.choice
         style = node.one(design)
-        W, D, H = size(p, design)
+        W, D, H = A.size(p, design, FR.SIZES)
         ctrl = node.one("control_panel")
         body = FR.body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["kick_height"],
                        p["control_height"] if ctrl else None, design == "dual_zone")
@@ -277,7 +271,7 @@ class FridgeLayout(Layout):
         p = self.p
         kids = node.of("rack")
         # the racks keep clear of the open door's hinge-side edge
-        fit = FR.rack_levels(len(kids), cav, hole, xs, size(p, p["design"])[0], p["door_thickness"], margin)
+        fit = FR.rack_levels(len(kids), cav, hole, xs, A.size(p, p["design"], FR.SIZES)[0], p["door_thickness"], margin)
         for k, (kid, (rails, zb)) in enumerate(zip(kids, fit["levels"], strict=True)):
             for rail in rails:
                 self.extend("body", [rail])

@@ -44,12 +44,6 @@ def trays(p, rng) -> int:
     return int(rack_count(p, rng) >= 3)
 
 
-def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): a compact counter-top model and a double dish drawer have their own sizes
-    (:data:`~.parts.appliance_sizes.DISHWASHER`); a freestanding model carries a worktop on its top."""
-    return DW.size(p["width"], p["depth"], p["height"], design)
-
-
 GRAMMAR = Grammar("dishwasher", {
     "dishwasher": Node(label="body", one_of={"freestanding": 0.35, "integrated": 0.25, "compact": 0.2,
                                              "dish_drawer": 0.2}, choice="design"),
@@ -131,7 +125,7 @@ class DishwasherLayout(A.PanelNodes):
         p = self.p
         design = node.choice
         style = node.one(design)
-        W, D, H = size(p, design)
+        W, D, H = A.size(p, design, DW.SIZES)
         if design == "dish_drawer":
             body, geo = DW.drawer_cabinet(W, D, H, p["door_thickness"], p["feet_height"], p["kick_height"],
                                           p["body_finish"])

@@ -34,12 +34,6 @@ def dials(p, rng) -> int:
     return 1 if p["has_buttons"] else 1 + int(rng.integers(0, 2))
 
 
-def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height) of a design: counter-top models use the parameters; an over-the-range model
-    is 30 in wide, a drawer microwave 24 or 30 in (:data:`~.parts.appliance_sizes.MICROWAVE`)."""
-    return MW.size(p["width"], p["depth"], p["height"], design)
-
-
 KEYPAD_ROWS = 6
 """Counter-top keypads are grids of three columns: a 10-key number pad (four rows: 1-9, then 0 between
 two function keys) under one or two rows of function keys, e.g. Panasonic NN-SN686S, GE JES1657SRSS,
@@ -53,7 +47,7 @@ def key_rows(p: dict) -> int:
     rows, design = p["button_rows"], p["design"]
     if rows <= MW.ROWS_ALWAYS_FIT or design == "drawer_model":
         return min(rows, MW.STRIP_ROWS)
-    W, _, H = size(p, design)
+    W, _, H = A.size(p, design, MW.SIZES)
     release = p["door_opener"] == "release_button" and design in ("turntable", "flatbed")
     return MW.keypad_rows(rows, H, p["feet_height"], design == "over_the_range", p["panel_fraction"] * W,
                           dials(p, None) if p["has_knob"] else 0, release, p["knob_radius"], p["button_height"])
@@ -138,7 +132,7 @@ class MicrowaveLayout(A.PanelNodes):
         p = self.p
         design = node.choice
         style = node.one(design)
-        W, D, H = size(p, design)
+        W, D, H = A.size(p, design, MW.SIZES)
         if design == "drawer_model":
             return self._drawer_model(node, style, W, D, H)
         body = MW.countertop(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["panel_fraction"],

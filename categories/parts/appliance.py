@@ -28,6 +28,15 @@ CLEAR = 0.0025  # clearance of buttons and dial stems in their panel holes
 BEHIND = 0.008  # buttons and stems reach this far behind the fascia's face
 
 
+def size(p, design: str, rules) -> tuple[float, float, float]:
+    """(width, depth, height) of an appliance of ``design``: the parameters' ``width``, ``depth`` and
+    ``height``, reshaped by the family's rule for that design where it has one (``rules``: design ->
+    ``f(W, D, H)``, e.g. :data:`~.microwaves.SIZES`: an over-the-range microwave is 30 in wide)."""
+    W, D, H = p["width"], p["depth"], p["height"]
+    rule = rules.get(design)
+    return rule(W, D, H) if rule else (W, D, H)
+
+
 def inner_sheet(family: str) -> float:
     """The sheet (m) an inner frame of material ``family`` is massed with to weigh :data:`INNER_KG_M2`."""
     return INNER_KG_M2 / FAMILIES[family].density

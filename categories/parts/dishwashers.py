@@ -25,18 +25,21 @@ RACK_FRONT = DW["racks"]["front"]  # kept free at a rack's front
 MIN_BASKET_LIFT = DW["baskets"]["min_lift"]  # a basket that cannot lift this far stays fixed in its rack
 
 
-def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
-    """(width, depth, height) of a design from the parameters: a compact counter-top model and a double
-    dish drawer take the sizes of :data:`DISHWASHER` (mapped from the parameters' ranges)."""
-    if design == "compact":
-        c = DW["compact"]
-        return tuple(lo + span * (v - p_lo) / p_span for v, (lo, span, p_lo, p_span) in
-                     zip((W, D, H), (c["width"], c["depth"], c["height"]), strict=True))
-    if design == "dish_drawer":
-        d = DW["dish_drawer"]
-        w = d["width"]
-        return (w if W < w else w + (W - w)), min(D, d["depth"]), min(max(H, d["height"][0]), d["height"][1])
-    return W, D, H
+def _compact(W: float, D: float, H: float) -> tuple[float, float, float]:
+    c = DW["compact"]
+    return tuple(lo + span * (v - p_lo) / p_span for v, (lo, span, p_lo, p_span) in
+                 zip((W, D, H), (c["width"], c["depth"], c["height"]), strict=True))
+
+
+def _dish_drawer(W: float, D: float, H: float) -> tuple[float, float, float]:
+    d = DW["dish_drawer"]
+    w = d["width"]
+    return (w if W < w else w + (W - w)), min(D, d["depth"]), min(max(H, d["height"][0]), d["height"][1])
+
+
+SIZES = {"compact": _compact, "dish_drawer": _dish_drawer}
+"""Designs whose size is not the parameters' (:func:`~.appliance.size`): a compact counter-top model and a
+double dish drawer take the sizes of :data:`DISHWASHER` (mapped from the parameters' ranges)."""
 
 
 def painted_steel(pieces: list[g.Piece], finish: str) -> list[g.Piece]:

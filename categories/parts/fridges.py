@@ -28,15 +28,15 @@ WIRE_PITCH = F["wire_pitch"]  # a wire rack's cradle pitch is drawn in this rang
 BIN_LIFT = F["bin"]["lift"]  # a door bin lifts this far off its hooks
 
 
-def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): wine and dual-zone coolers are undercounter height, a dual-zone cooler with
-    two doors has a least width (:data:`FRIDGE`)."""
-    if design in ("wine", "dual_zone"):
-        lo, span, p_lo, p_span = F["undercounter_height"]
-        H = lo + span * (H - p_lo) / p_span
-    if design == "dual_zone":
-        W = max(W, F["dual_zone_width"])
-    return W, D, H
+def _undercounter(H: float) -> float:
+    lo, span, p_lo, p_span = F["undercounter_height"]
+    return lo + span * (H - p_lo) / p_span
+
+
+SIZES = {"wine": lambda W, D, H: (W, D, _undercounter(H)),
+         "dual_zone": lambda W, D, H: (max(W, F["dual_zone_width"]), D, _undercounter(H))}
+"""Designs whose size is not the parameters' (:func:`~.appliance.size`): wine and dual-zone coolers are
+undercounter height, a dual-zone cooler with two doors has a least width (:data:`FRIDGE`)."""
 
 
 def freezer_height(height: float, cavity: float) -> float:

@@ -25,18 +25,21 @@ ROWS_ALWAYS_FIT = 3  # key rows a column panel always holds (shrinking the keys)
 STRIP_ROWS = 4  # key rows a drawer model's strip takes (two rows of up to six keys)
 
 
-def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
-    """(width, depth, height) of a design from the parameters' width, depth and height: counter-top
-    models use them; an over-the-range and a drawer model take the sizes of :data:`MICROWAVE`."""
-    if design == "over_the_range":
-        otr = M["over_the_range"]
-        return otr["width"], min(max(D, otr["depth"][0]), otr["depth"][1]), \
-            min(max(H + otr["taller"], otr["height"][0]), otr["height"][1])
-    if design == "drawer_model":
-        dr = M["drawer_model"]
-        return (dr["widths"][0] if W < dr["narrow_below"] else dr["widths"][1]), \
-            dr["depth"][0] + dr["depth"][1] * (D - dr["param_depth"][0]) / dr["param_depth"][1], dr["height"]
-    return W, D, H
+def _over_the_range(W: float, D: float, H: float) -> tuple[float, float, float]:
+    otr = M["over_the_range"]
+    return otr["width"], min(max(D, otr["depth"][0]), otr["depth"][1]), \
+        min(max(H + otr["taller"], otr["height"][0]), otr["height"][1])
+
+
+def _drawer_model(W: float, D: float, H: float) -> tuple[float, float, float]:
+    dr = M["drawer_model"]
+    return (dr["widths"][0] if W < dr["narrow_below"] else dr["widths"][1]), \
+        dr["depth"][0] + dr["depth"][1] * (D - dr["param_depth"][0]) / dr["param_depth"][1], dr["height"]
+
+
+SIZES = {"over_the_range": _over_the_range, "drawer_model": _drawer_model}
+"""Designs whose size is not the parameters' (:func:`~.appliance.size`): an over-the-range and a drawer
+model take the sizes of :data:`MICROWAVE`; counter-top models use the parameters."""
 
 
 def steel_sheet(family: str) -> float:
