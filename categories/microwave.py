@@ -247,7 +247,7 @@ class MicrowaveLayout(A.PanelNodes):
                  MW.fascia(xs, ys, zs, panel.holes, skin, inner, A.inner_sheet(MATERIALS[inner])) + panel.decor)
         self.fix("body", "control_panel")
         if buttons:
-            self.grow(buttons, made=[b for b in panel.buttons if b[-1] is None])
+            self.grow(buttons, made=[b for b in panel.buttons if not b.release])
         if release:
             self.grow(release, made=panel.buttons[-1])
         if knob:
@@ -260,9 +260,8 @@ class MicrowaveLayout(A.PanelNodes):
             self.grow(kid, made=d)
 
     def dial(self, node, made):
-        name, pieces, at = made
-        self.add(name, "knob", pieces)
-        self.spin("control_panel", name, at, role="knob")
+        self.add(made.name, "knob", made.pieces)
+        self.spin("control_panel", made.name, made.at, role="knob")
 
 
 CATEGORY = Category("microwave", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, MicrowaveLayout, MATERIALS,

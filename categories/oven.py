@@ -257,12 +257,11 @@ class OvenLayout(A.PanelNodes):
             self.grow(kid, made=m)
 
     def knob(self, node, made):
-        name, pieces, at = made
-        self.add(name, "knob", pieces)
+        self.add(made.name, "knob", made.pieces)
         if self.p["knob_motion"] == "continuous":
-            self.spin("control_panel", name, at, role="knob")
+            self.spin("control_panel", made.name, made.at, role="knob")
         else:
-            self.hinge("control_panel", name, at, upper=OV.KNOB_TURN, lower=-OV.KNOB_TURN, role="knob")
+            self.hinge("control_panel", made.name, made.at, upper=OV.KNOB_TURN, lower=-OV.KNOB_TURN, role="knob")
 
 
 CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS,

@@ -183,14 +183,27 @@ def dial(x_face: float, y: float, z: float, r: float, stem: float, style: str) -
     return pieces
 
 
+@dataclass(frozen=True)
+class Control:
+    """A moving control a panel layout made: its part ``name``, its ``pieces``, the frame it moves on
+    (a button's press frame, z into the panel; a dial's axis) and a button's ``travel``; ``release``
+    marks a door-release button (grown by its own grammar node)."""
+
+    name: str
+    pieces: tuple
+    at: Frame
+    travel: float = 0.0
+    release: bool = False
+
+
 @dataclass
 class Panel:
     """A control panel laid out top-down: what it shows, its holes, and what moves in them."""
 
     holes: list = field(default_factory=list)  # (y0, z0, y1, z1)
     decor: list = field(default_factory=list)  # pieces fixed on the fascia
-    buttons: list = field(default_factory=list)  # (name, piece, press frame, travel)
-    dials: list = field(default_factory=list)  # (name, pieces, axis frame)
+    buttons: list[Control] = field(default_factory=list)
+    dials: list[Control] = field(default_factory=list)
 
 
 def hole_around(y: float, z: float, half) -> tuple[float, float, float, float]:
@@ -612,14 +625,15 @@ def panel_housing(xs, ys, zs, holes, wall: float = 0.004) -> list[g.Piece]:
 
 class PanelNodes(Layout):
     """The push-button nodes of a control panel, shared by the appliances: a ``buttons`` node grows each
-    ``button`` child with one made ``(name, piece, press frame, travel, ...)``; the button slides into the
-    ``control_panel`` part along the frame's z."""
+    ``button`` child with one made :class:`Control`; the button slides along its frame's z into
+    ``parent`` (default :attr:`panel_part`)."""
 
-    def buttons(self, node, made):
+    panel_part = "control_panel"
+
+    def buttons(self, node, made, parent: str | None = None):
         for kid, m in zip(node.of("button"), made, strict=True):
-            self.grow(kid, made=m)
+            self.grow(kid, made=m, parent=parent)
 
-    def button(self, node, made):
-        name, piece, at, travel = made[:4]
-        self.add(name, "button", [piece])
-        self.slide("control_panel", name, at, upper=travel, role="button")
+    def button(self, node, made: Control, parent: str | None = None):
+        self.add(made.name, "button", made.pieces)
+        self.slide(parent or self.panel_part, made.name, made.at, upper=made.travel, role="button")

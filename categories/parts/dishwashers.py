@@ -203,8 +203,8 @@ def handle_frame(box, band: float, ctrl: bool, integrated: bool) -> Frame:
 
 def control_panel(xf, ys, zs, handle: bool, n: int, button_size: float) -> tuple[list[g.Piece], list]:
     """A fascia on the top of the door front: a display on the left, ``n`` push buttons on the right
-    (above the handle strip); returns the fascia with its display and the buttons ``(name, piece, press
-    frame, travel)``."""
+    (above the handle strip); returns the fascia with its display and the buttons
+    (:class:`~.appliance.Control`)."""
     c = DW["control"]
     (y0, y1), (za, zb) = ys, zs
     xp, W = xf + DW["fascia"], y1 - y0
@@ -224,7 +224,8 @@ def control_panel(xf, ys, zs, handle: bool, n: int, button_size: float) -> tuple
             piece = g.box_between([xp - A.BEHIND, y - half[0], zc - half[1]],
                                   [xp + proud, y + half[0], zc + half[1]], "button",
                                   bevel=c["bevel"] * min(bh, 2 * half[0]))
-            panel.buttons.append((f"button_{k}", piece, Frame.at((xp + proud, y, zc), z=(-1, 0, 0)), bh / 8))
+            at = Frame.at((xp + proud, y, zc), z=(-1, 0, 0))
+            panel.buttons.append(A.Control(f"button_{k}", (piece,), at, bh / 8))
     fascia = g.panel([xf, y0 + c["inset"], za], [xp, y1 - c["inset"], zb], "panel", "x", holes=panel.holes)
     return [fascia, *panel.decor], panel.buttons
 

@@ -316,7 +316,8 @@ def column_panel(xp, ys, zs, n_keys, n_dials, release: bool, knob_radius, button
         proud = K["release_proud"]
         piece = g.box_between([xp - A.BEHIND, yc - half[0], zr - half[1]], [xp + proud, yc + half[0], zr + half[1]],
                               "button", bevel=0.003)
-        panel.buttons.append(("door_release", piece, Frame.at((xp + proud, yc, zr), z=(-1, 0, 0)), rh / 8, True))
+        panel.buttons.append(A.Control("door_release", (piece,), Frame.at((xp + proud, yc, zr), z=(-1, 0, 0)), rh / 8,
+                                       release=True))
     if n_dials:
         span = (z - z_floor) / n_dials
         for k in range(n_dials):
@@ -326,7 +327,7 @@ def column_panel(xp, ys, zs, n_keys, n_dials, release: bool, knob_radius, button
             stem = max(K["stem"], K["stem_share"] * r_k)
             panel.holes.append(A.hole_around(yc, zk, (stem, stem)))
             axis = Frame.at((xp, yc, zk), z=(1, 0, 0))
-            panel.dials.append((f"knob_{k}", A.dial(xp, yc, zk, r_k, stem, style), axis))
+            panel.dials.append(A.Control(f"knob_{k}", tuple(A.dial(xp, yc, zk, r_k, stem, style)), axis))
     return panel
 
 
@@ -348,8 +349,8 @@ def _button_grid(panel, xp, yc, pw, z, bh, gap, n_keys, shape):
                 half = (rad, rad)
             panel.holes.append(A.hole_around(y, zb, half))
             piece = A.push_button(xp, y, zb, half, shape, proud)
-            panel.buttons.append((f"button_{r}_{c}", piece, Frame.at((xp + proud, y, zb), z=(-1, 0, 0)),
-                                  half[1] / 4, None))
+            panel.buttons.append(A.Control(f"button_{r}_{c}", (piece,), Frame.at((xp + proud, y, zb), z=(-1, 0, 0)),
+                                           half[1] / 4))
         z -= K["row_pitch"] * bh + gap
     return z
 
@@ -382,8 +383,8 @@ def strip_panel(xp, ys, zs, n_keys, n_dials, knob_radius, button_height, shape, 
             r, c = divmod(k, ncol)
             yk, zk = y + half[0] + c * pitch_y, zc + (0.5 * (nrow - 1) - r) * pitch_z
             panel.holes.append(A.hole_around(yk, zk, half))
-            panel.buttons.append((f"button_{r}_{c}", A.push_button(xp, yk, zk, half, shape, proud),
-                                  Frame.at((xp + proud, yk, zk), z=(-1, 0, 0)), half[1] / 4, None))
+            panel.buttons.append(A.Control(f"button_{r}_{c}", (A.push_button(xp, yk, zk, half, shape, proud),),
+                                           Frame.at((xp + proud, yk, zk), z=(-1, 0, 0)), half[1] / 4))
         y += ncol * pitch_y + S["keys_gap"]
     if keypad:
         panel.decor.append(g.box_between([xp - 0.001, y, zc - half_h], [xp + 0.001, y + S["membrane"], zc + half_h],
@@ -394,7 +395,8 @@ def strip_panel(xp, ys, zs, n_keys, n_dials, knob_radius, button_height, shape, 
         stem = max(K["stem"], K["stem_share"] * r_k)
         style = _dial_style(rng)
         panel.holes.append(A.hole_around(yk, zc, (stem, stem)))
-        panel.dials.append((f"knob_{k}", A.dial(xp, yk, zc, r_k, stem, style), Frame.at((xp, yk, zc), z=(1, 0, 0))))
+        panel.dials.append(A.Control(f"knob_{k}", tuple(A.dial(xp, yk, zc, r_k, stem, style)),
+                                     Frame.at((xp, yk, zc), z=(1, 0, 0))))
     return panel
 
 

@@ -270,7 +270,7 @@ def control_panel(xs, ys, zs, n_k: int, n_b: int, knob_radius: float, knob_style
         panel.holes.append(A.hole_around(y, zm, (stem, stem)))
         pieces, reach = A.cooker_knob(xp, y, zm, r, stem, knob_style)
         front = max(front, xp + reach)
-        panel.dials.append((f"knob_{i}", pieces, Frame.at((xp, y, zm), z=(1, 0, 0))))
+        panel.dials.append(A.Control(f"knob_{i}", tuple(pieces), Frame.at((xp, y, zm), z=(1, 0, 0))))
     if n_b:
         b = O["buttons"]
         yc = ya + k["margin"] + left * pitch + centre_w / 2
@@ -288,6 +288,6 @@ def control_panel(xs, ys, zs, n_k: int, n_b: int, knob_radius: float, knob_style
             piece = g.box_between([xp - A.BEHIND, y - half[0], zbt - half[1]],
                                   [xp + press + b["proud"], y + half[0], zbt + half[1]], "button", bevel=0.0015)
             at = Frame.at((xp + press + b["proud"], y, zbt), z=(-1, 0, 0))
-            panel.buttons.append((f"button_{j}", piece, at, press))
+            panel.buttons.append(A.Control(f"button_{j}", (piece,), at, press))
         front = max(front, xp + press + b["proud"])
     return A.panel_housing(xs, ys, zs, panel.holes) + panel.decor, panel, front
