@@ -74,6 +74,16 @@ MICROWAVE = {
                     "keys_gap": 0.01, "keys_margin": 0.02, "knob_share": 0.4, "membrane": 0.12, "rect_half": 0.9},
 }
 
+# The microwave's parameter ranges (min, max): the counter-top sizes above; casings modelled 3-6 mm (massed as
+# sheet); doors 30-45 mm thick; dials 32-56 mm across, push keys 12-20 mm tall, rubber feet 6-15 mm (the
+# spec sheets and owner's manuals named above and with MICROWAVE_KEYS); the rest are ratios of the body.
+MICROWAVE_RANGES = {
+    "width": (0.44, 0.62), "depth": (0.32, 0.46), "height": (0.25, 0.36), "panel_fraction": (0.2, 0.4),
+    "wall": (0.003, 0.006), "door_thickness": (0.03, 0.045), "window_margin": (0.025, 0.055),
+    "plate_fraction": (0.8, 0.95), "rack_height": (0.03, 0.09), "button_height": (0.012, 0.02),
+    "knob_radius": (0.016, 0.028), "handle_length": (0.45, 0.8), "feet_height": (0.006, 0.015),
+}
+
 # A microwave's keypad column (Panasonic NN-SN686S, GE JES1657SRSS, Toshiba ML-EM34P owner's manuals:
 # 3-6 rows of three keys; GE JES1072, Panasonic NN-ST66: two wide keys at the bottom): items top-down
 # with 20 mm free above and below, 6-14 mm between them (at least 8 mm to fit), shrunk together by 5 %

@@ -71,6 +71,49 @@ class Body:
         """The fascia's back (the bezel plane) and front face."""
         return self.outer[1:3]
 
+    @property
+    def hinge(self) -> Frame:
+        """The door's hinge: on its front face at the left edge, about -Z (it swings out and to the left)."""
+        return Frame.at((self.x_front, self.door_ys[0], self.zs[0]), z=(0, 0, -1))
+
+    @property
+    def handle_at(self) -> Frame:
+        """The door's free edge at mid height on its front face (z out of it, x up): where a handle goes."""
+        zs = self.zs
+        return Frame.at((self.x_front, self.door_ys[1], (zs[0] + zs[1]) / 2), z=(1, 0, 0), x=(0, 0, 1))
+
+    @property
+    def door_height(self) -> float:
+        return self.zs[1] - self.zs[0]
+
+    @property
+    def strip(self) -> bool:
+        """Whether the control panel is a drawer model's wide strip (else a column beside the door)."""
+        ys, zs = self.panel_ys, self.panel_zs
+        return ys[1] - ys[0] > 2 * (zs[1] - zs[0])
+
+
+def dial_count(knob_count: int, has_buttons: bool, rng) -> int:
+    """``knob_count``; auto: 1 beside a keypad, without one 1 or 2 (drawn): a timer dial alone (Sharp
+    R-21LVF) or timer and power dials (most manual counter-top models)."""
+    if knob_count:
+        return knob_count
+    return 1 if has_buttons else 1 + int(rng.integers(0, 2))
+
+
+def key_count(rows: int, bottom_keys: int) -> int:
+    """Push keys: three a row, the bottom row three keys or two wide ones (Stop/Cancel and Start under the
+    number pad, as on GE JES1072 and Panasonic NN-ST66 keypads)."""
+    return 3 * rows - (3 - bottom_keys)
+
+
+def turntable(cavity, fraction: float) -> tuple[g.Piece, list[g.Piece], Frame, dict]:
+    """The turntable on the cavity floor: the spindle (fixed to the body), the tray on its roller ring,
+    its spin axis, and where a rack stands on it (:func:`rack_on_plate`)."""
+    c, radius = plate_fit(cavity, fraction)
+    cz0 = cavity[4]
+    return A.spindle(c, cz0), A.turntable(c, cz0, radius), Frame.at((*c, cz0)), rack_on_plate(cavity, c, radius)
+
 
 def countertop(W, D, H, wall, door_thickness, feet, panel_fraction, vent: bool) -> Body:
     """A counter-top (or over-the-range, ``vent``) body: the door on the left, the fascia on the right,
