@@ -234,6 +234,17 @@ FRIDGE = {
     "divider": {"glass": 0.003, "trim": 0.008, "trim_x": (0.03, 0.01)},
 }
 
+# The oven's parameter ranges (min, max): ranges and built-in ovens 0.5-0.9 m wide, 0.55-0.7 m deep,
+# 0.85-0.98 m to the cooktop or top (the spec sheets named with OVEN below); doors 40-60 mm; 32-52 mm knobs; the rest
+# are ratios of the body or travels the layout checks.
+OVEN_RANGES = {
+    "width": (0.5, 0.9), "depth": (0.55, 0.7), "height": (0.85, 0.98), "panel_fraction": (0.2, 0.4),
+    "door_thickness": (0.04, 0.06), "window_margin": (0.05, 0.09), "handle_length": (0.6, 0.9),
+    "plinth_height": (0.03, 0.07), "drawer_height": (0.1, 0.16), "drawer_travel": (0.55, 0.75),
+    "rack_travel": (0.5, 0.75), "knob_radius": (0.016, 0.026), "grate_play": (0.015, 0.04),
+    "grate_lift": (0.06, 0.12), "lower_height": (0.34, 0.4), "warming_height": (0.13, 0.18),
+}
+
 # -- oven -------------------------------------------------------------------------------------------
 # 30 in ranges 0.76 x 0.64-0.71 x 0.91-0.94 m, warming drawers 0.13-0.18 m high (GE JB735, Frigidaire
 # FGEF3036 spec sheets); double wall ovens 1.24-1.31 m high (GE JKD5000, Bosch HBL8651UC installation

@@ -58,6 +58,52 @@ class Stack:
     panel: tuple
     lower: dict | None
 
+    @property
+    def panel_box(self) -> dict:
+        """The control panel's ``xs``, ``ys`` (the door's width) and ``zs``."""
+        return dict(xs=self.panel[0], ys=self.door[2:4], zs=self.panel[1])
+
+
+def door_hinge(box) -> Frame:
+    """A door's hinge: on its front face at the bottom edge, about +Y (the top falls forward, +X)."""
+    _, x1, _, _, z0, _ = box
+    return Frame.at((x1, 0.0, z0), z=(0, 1, 0))
+
+
+def rack_slide(xs, zc: float, fraction: float) -> tuple[Frame, float]:
+    """A rack's slide: out of the cavity along +X from its front wire, ``fraction`` of its depth."""
+    return Frame.at((xs[1], 0.0, zc), z=(1, 0, 0)), fraction * (xs[1] - xs[0])
+
+
+GRATE_AXES = ((0, 0, 1), (1, 0, 0), (0, 1, 0))
+"""A loose grate's motion: it lifts off its feet (z), then has play forward (x) and sideways (y)."""
+THREE_GRATES_FROM = 0.7  # m: 24 in ranges carry two grates, 30 in and wider three (GE JB735, Frigidaire FGEF3036)
+
+
+def grate_count(width: float) -> int:
+    return 2 if width < THREE_GRATES_FROM else 3
+
+
+def burners_per_grate(n: int) -> list[int]:
+    """Burners under each of ``n`` grates: two, one under the middle of three."""
+    return [1 if (n == 3 and k == 1) else 2 for k in range(n)]
+
+
+def knob_count(style: str, burners: int, rng) -> int:
+    """One knob per burner + 1 on a range (+ 1 for a warming drawer; at most 8), 2-3 on a built-in oven,
+    4-5 on a double wall oven (a mode and a temperature knob per oven)."""
+    drawn = 2 + int(rng.integers(0, 2))
+    if style in ("range", "warming"):
+        drawn = min(8, burners + 1 + (style == "warming"))
+    elif style == "double_wall":
+        drawn = 4 + int(rng.integers(0, 2))
+    return drawn
+
+
+def free_level(rng, racks: int) -> int:
+    """The rail level left free among ``racks`` + 1 (drawn)."""
+    return int(rng.integers(0, racks + 1))
+
 
 def stack(W, D, height, door_thickness, design: str, panel_fraction, plinth, drawer_height, warming_height,
           lower_height) -> Stack:
