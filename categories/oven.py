@@ -210,7 +210,7 @@ class OvenLayout(A.PanelNodes):
     def door(self, node, box, name="door"):
         p = self.p
         self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"], p["body_finish"]))
-        self.hinge("body", name, OV.door_hinge(box), upper=DOOR_OPENS)
+        self.hinge("body", name, A.drop_hinge(box), upper=DOOR_OPENS)
 
     def racks(self, node, cav, prefix="", door="door"):
         kids = node.of("rack")
@@ -224,7 +224,7 @@ class OvenLayout(A.PanelNodes):
     def rack(self, node, k, xs, ys, zc, prefix="", door="door"):
         name = self.add(f"{prefix}rack_{k}", "rack", A.oven_rack(xs, ys, zc))
         # behind the door: the rack slides out only once the door lies open
-        at, travel = OV.rack_slide(xs, zc, self.p["rack_travel"])
+        at, travel = A.rack_slide(xs, zc, self.p["rack_travel"])
         self.slide("body", name, at, upper=travel, requires_open=door)
 
     def control_panel(self, node, xs, ys, zs):

@@ -37,6 +37,27 @@ def size(p, design: str, rules) -> tuple[float, float, float]:
     return rule(W, D, H) if rule else (W, D, H)
 
 
+def drop_hinge(box) -> Frame:
+    """A drop-down door's hinge (an oven's, a dishwasher's): on the front face of its ``box`` (x0, x1, y0,
+    y1, z0, z1) at the bottom edge, about +Y: the top falls forward (+X)."""
+    _, x1, _, _, z0, _ = box
+    return Frame.at((x1, 0.0, z0), z=(0, 1, 0))
+
+
+def rack_slide(xs, z: float, fraction: float) -> tuple[Frame, float]:
+    """A rack's slide out of a cavity along +X from its front (``xs``: back, front) at height ``z``, and its
+    travel: ``fraction`` of its depth."""
+    return Frame.at((xs[1], 0.0, z), z=(1, 0, 0)), fraction * (xs[1] - xs[0])
+
+
+QUARTER_TURN = math.pi / 2  # a fold-down tine row or cup shelf: upright to flat
+
+
+def fold_line(y: float, z: float, sign: int = 1) -> Frame:
+    """The hinge line of a fold-down row in a rack: along ``sign`` X through ``(y, z)``."""
+    return Frame.at((0.0, y, z), z=(sign, 0, 0))
+
+
 def inner_sheet(family: str) -> float:
     """The sheet (m) an inner frame of material ``family`` is massed with to weigh :data:`INNER_KG_M2`."""
     return INNER_KG_M2 / FAMILIES[family].density

@@ -178,6 +178,16 @@ DISHWASHER = {
                 "front_gap": 0.012, "min_lift": 0.01},
 }
 
+# The dishwasher's parameter ranges (min, max): built-in and compact models 0.44-0.66 m wide, 0.52-0.66 m
+# deep, 0.76-0.92 m tall (the spec sheets named with DISHWASHER above); the rest are parts of the body, wire
+# pitches and travels the layout checks.
+DISHWASHER_RANGES = {
+    "width": (0.44, 0.66), "depth": (0.52, 0.66), "height": (0.76, 0.92), "wall": (0.018, 0.03),
+    "door_thickness": (0.045, 0.07), "kick_height": (0.08, 0.14), "feet_height": (0.01, 0.025),
+    "rack_travel": (0.6, 0.8), "wire_pitch": (0.045, 0.07), "basket_lift": (0.03, 0.06),
+    "handle_length": (0.35, 0.7), "control_height": (0.06, 0.1), "button_size": (0.012, 0.02),
+}
+
 # -- beverage fridge ------------------------------------------------------------------------------------
 # Glass-door beverage coolers 0.45-0.7 m wide, 0.5-0.9 m tall (Newair, Whynter, Danby, Kalamera ranges);
 # insulated walls of 0.8 mm sheet round a moulded liner (``appliance.insulated_cabinet``).

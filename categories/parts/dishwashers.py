@@ -277,6 +277,20 @@ def tines_beside_shelves(ry: float, w: float) -> float:
     return ry - w - DW["cup_shelf"]["tines_in"]
 
 
+def rack_count(design: str, asked: int) -> int:
+    """Sliding racks: as asked; a compact counter-top model has room for one."""
+    return 1 if design == "compact" else asked
+
+
+TRAY_FROM = 3  # racks: from three up the top one is a cutlery tray (Bosch 500/800, Miele G 7000 third racks)
+
+
+def rack_kinds(n: int) -> tuple[int, int]:
+    """Of ``n`` racks (a lower rack first): how many upper racks and cutlery trays (on top of three or more)."""
+    tray = int(n >= TRAY_FROM)
+    return max(0, n - 1 - tray), tray
+
+
 def cup_shelf(k: int, xs, ry, z, w) -> tuple[list[g.Piece], float, int]:
     """Cup shelf ``k``: the first on the left side wall, the second on the right; returns its pieces, its
     hinge line's y and the side's sign (each swings down inwards to level)."""

@@ -64,17 +64,6 @@ class Stack:
         return dict(xs=self.panel[0], ys=self.door[2:4], zs=self.panel[1])
 
 
-def door_hinge(box) -> Frame:
-    """A door's hinge: on its front face at the bottom edge, about +Y (the top falls forward, +X)."""
-    _, x1, _, _, z0, _ = box
-    return Frame.at((x1, 0.0, z0), z=(0, 1, 0))
-
-
-def rack_slide(xs, zc: float, fraction: float) -> tuple[Frame, float]:
-    """A rack's slide: out of the cavity along +X from its front wire, ``fraction`` of its depth."""
-    return Frame.at((xs[1], 0.0, zc), z=(1, 0, 0)), fraction * (xs[1] - xs[0])
-
-
 GRATE_AXES = ((0, 0, 1), (1, 0, 0), (0, 1, 0))
 """A loose grate's motion: it lifts off its feet (z), then has play forward (x) and sideways (y)."""
 THREE_GRATES_FROM = 0.7  # m: 24 in ranges carry two grates, 30 in and wider three (GE JB735, Frigidaire FGEF3036)
