@@ -44,10 +44,17 @@ def drop_hinge(box) -> Frame:
     return Frame.at((x1, 0.0, z0), z=(0, 1, 0))
 
 
-def rack_slide(xs, z: float, fraction: float) -> tuple[Frame, float]:
-    """A rack's slide out of a cavity along +X from its front (``xs``: back, front) at height ``z``, and its
-    travel: ``fraction`` of its depth."""
-    return Frame.at((xs[1], 0.0, z), z=(1, 0, 0)), fraction * (xs[1] - xs[0])
+def rack_slide(xs, z: float, fraction: float, y: float = 0.0) -> tuple[Frame, float]:
+    """A rack's slide out of a cavity along +X from its front (``xs``: back, front) at height ``z`` (and
+    ``y``), and its travel: ``fraction`` of its depth."""
+    return Frame.at((xs[1], y, z), z=(1, 0, 0)), fraction * (xs[1] - xs[0])
+
+
+def side_hinge(box, left: bool) -> Frame:
+    """A side-hinged door's hinge: on the front face of its ``box`` (x0, x1, y0, y1, z0, z1) at the left
+    (or right) bottom corner, about -Z (+Z): the free edge swings out (+X)."""
+    _, x1, y0, y1, z0, _ = box
+    return Frame.at((x1, y0 if left else y1, z0), z=(0, 0, -1 if left else 1))
 
 
 QUARTER_TURN = math.pi / 2  # a fold-down tine row or cup shelf: upright to flat

@@ -255,6 +255,16 @@ OVEN_RANGES = {
     "grate_lift": (0.06, 0.12), "lower_height": (0.34, 0.4), "warming_height": (0.13, 0.18),
 }
 
+# The beverage fridge's parameter ranges (min, max): glass-door coolers, undercounter fridges and wine
+# coolers 0.45-0.7 m wide, 0.5-0.68 m deep, 0.5-0.9 m tall (the spec sheets named with FRIDGE above); walls
+# 35-55 mm of foam; the rest are parts of the body and travels the layout checks.
+FRIDGE_RANGES = {
+    "width": (0.45, 0.7), "depth": (0.5, 0.68), "height": (0.5, 0.9), "wall": (0.035, 0.055),
+    "door_thickness": (0.03, 0.045), "kick_height": (0.05, 0.1), "feet_height": (0.008, 0.02),
+    "control_height": (0.035, 0.06), "handle_length": (0.35, 0.75), "rack_travel": (0.6, 0.85),
+    "divider_height": (0.35, 0.65), "freezer_height": (0.09, 0.14),
+}
+
 # -- oven -------------------------------------------------------------------------------------------
 # 30 in ranges 0.76 x 0.64-0.71 x 0.91-0.94 m, warming drawers 0.13-0.18 m high (GE JB735, Frigidaire
 # FGEF3036 spec sheets); double wall ovens 1.24-1.31 m high (GE JKD5000, Bosch HBL8651UC installation

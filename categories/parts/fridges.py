@@ -77,6 +77,29 @@ class Body:
     box: tuple
     xs: tuple
 
+    @property
+    def margin(self) -> float:
+        """The door frame beside the glass: what racks keep clear of the open door's edge."""
+        return self.hole[0] - self.box[2]
+
+
+FLAP_OPENS = math.pi / 2  # a freezer flap swings up a quarter turn
+
+
+def cavity_height(H: float, wall: float, feet: float, kick: float) -> float:
+    """Height of the cooled cavity (floor liner to ceiling liner) of a cabinet ``H`` tall."""
+    return H - 2 * wall - 2 * A.LINER - feet - kick
+
+
+def rack_count(design: str, asked: int) -> int:
+    """``asked`` racks, plus the design's :data:`RACK_EXTRA`, at least one."""
+    return max(1, asked + RACK_EXTRA.get(design, 0))
+
+
+def zone_racks(asked: int) -> int:
+    """A dual-zone cooler's right zone: one rack fewer than asked, at least one."""
+    return max(1, asked - 1)
+
 
 def body(W, D, H, wall, door_thickness, feet, kick, control_height: float | None, dual_zone: bool) -> Body:
     """The insulated cabinet (:func:`.appliance.insulated_cabinet`), the compressor, a dual-zone cooler's
