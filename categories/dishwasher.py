@@ -127,14 +127,12 @@ class DishwasherLayout(A.PanelNodes):
         style = node.one(design)
         W, D, H = A.size(p, design, DW.SIZES)
         if design == "dish_drawer":
-            body, geo = DW.drawer_cabinet(W, D, H, p["door_thickness"], p["feet_height"], p["kick_height"],
-                                          p["body_finish"])
+            body, geo = DW.drawer_cabinet(W, D, H, p["door_thickness"], p["feet_height"], p["kick_height"])
             self.add("body", "body", body)
             return self.grow(style, **geo)
         door = style.one("door")
         tub = DW.tub_body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["kick_height"], design,
-                          p["control_height"], bool(door.one("control_panel")), bool(door.one("handle")),
-                          p["body_finish"])
+                          p["control_height"], bool(door.one("control_panel")), bool(door.one("handle")))
         self.add("body", "body", tub.pieces)
         self.grow(style, door=tub.door, racks=tub.racks)
 
@@ -268,5 +266,7 @@ class DishwasherLayout(A.PanelNodes):
             self.fix(rack, name)
 
 
+SUBSTRATES = {"body": ("body_finish", {"painted": A.STEEL})}  # a painted cabinet is painted steel sheet
+
 CATEGORY = Category("dishwasher", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DishwasherLayout, MATERIALS,
-                    palette=appliance)  # finishes real dishwashers are sold in
+                    substrates=SUBSTRATES, palette=appliance)  # finishes real dishwashers are sold in

@@ -124,7 +124,6 @@ class OvenLayout(A.PanelNodes):
 
     def oven(self, node):
         p = self.p
-        finish = p["body_finish"]
         design = node.choice
         style = node.one(design)
         st = OV.stack(p["width"], p["depth"], p["height"], p["door_thickness"], design, p["panel_fraction"],
@@ -132,7 +131,7 @@ class OvenLayout(A.PanelNodes):
         rng_style, double = design in ("range", "warming"), st.lower is not None
         H = st.H
         pieces, cav = OV.section((*st.xs, *st.ys), st.zs, st.z_dtop, H - OV.T, H - OV.T if rng_style else H,
-                                 p["door_thickness"], finish, keep_base=not double)
+                                 p["door_thickness"], keep_base=not double)
         self._body(pieces)
         if double:
             self.grow(style, **st.lower)
@@ -142,19 +141,18 @@ class OvenLayout(A.PanelNodes):
         elif design == "warming":
             self.grow(style.one("warming_drawer"), **bay)
         elif not double:  # a fixed drawer front with a trim line
-            self.extend("body", OV.fixed_drawer_front(st, finish))
+            self.extend("body", OV.fixed_drawer_front(st))
         self.grow(node.one("door"), box=st.door)
         self.grow(node.one("racks"), cav=cav)
         front = self.grow(node.one("control_panel"), **st.panel_box)
         if not double:
             self.grow(style, xs=st.xs, ys=st.ys, z_dtop=st.z_dtop + st.gap_top, front=front, H=H)
         else:
-            self.extend("body", OV.top_cover(st.xs, st.ys, H, finish))
+            self.extend("body", OV.top_cover(st.xs, st.ys, H))
 
     def double_wall(self, node, xs, ys, zs, H):
         """The lower oven of a double wall oven: its casing, door and racks (the upper oven is the usual one)."""
-        pieces, cav, door = OV.lower_section(dict(xs=xs, ys=ys, zs=zs), self.p["door_thickness"],
-                                             self.p["body_finish"])
+        pieces, cav, door = OV.lower_section(dict(xs=xs, ys=ys, zs=zs), self.p["door_thickness"])
         self._body(pieces)
         self.grow(node.one("lower_door"), box=door)
         self.grow(node.one("lower_racks"), cav=cav)
@@ -166,7 +164,7 @@ class OvenLayout(A.PanelNodes):
         self.racks(node, cav, prefix="lower_", door="lower_door")
 
     def range(self, node, xs, ys, z_dtop, front, H):
-        plate, vent, area = OV.range_top(xs, ys, z_dtop, front, H, self.p["body_finish"])
+        plate, vent, area = OV.range_top(xs, ys, z_dtop, front, H)
         self.extend("body", plate)
         self.extend("body", vent)
         self.grow(node.one("cooktop"), **area, H=H)
@@ -174,7 +172,7 @@ class OvenLayout(A.PanelNodes):
     warming = range
 
     def wall(self, node, xs, ys, z_dtop, front, H):
-        self.extend("body", OV.top_cover(xs, ys, H, self.p["body_finish"]))
+        self.extend("body", OV.top_cover(xs, ys, H))
 
     def cooktop(self, node, xs, ys, H):
         """Burners in columns; with grates, one over each column."""
@@ -200,7 +198,7 @@ class OvenLayout(A.PanelNodes):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
         warming drawer: an enamel tray, a bar handle like the door's and a marking strip."""
         p = self.p
-        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"], p["body_finish"])
+        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"])
         self.add("drawer", "drawer", pieces)
         self.slide("body", "drawer", at, upper=p["drawer_travel"] * depth)
 
@@ -209,7 +207,7 @@ class OvenLayout(A.PanelNodes):
 
     def door(self, node, box, name="door"):
         p = self.p
-        self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"], p["body_finish"]))
+        self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"]))
         self.hinge("body", name, A.drop_hinge(box), upper=DOOR_OPENS)
 
     def racks(self, node, cav, prefix="", door="door"):
@@ -254,5 +252,11 @@ class OvenLayout(A.PanelNodes):
             self.hinge("control_panel", made.name, made.at, upper=OV.KNOB_TURN, lower=-OV.KNOB_TURN, role="knob")
 
 
+PAINTED_STEEL = ("body_finish", {"painted": A.STEEL})
+SUBSTRATES = {"body": PAINTED_STEEL, "door": PAINTED_STEEL, "door_inner": A.STEEL, "plinth": A.STEEL}
+"""A painted casing, door and drawer, the door's inner frame and the plinth are painted steel sheet (the painted
+family weighs as board): a painted wall oven weighs what an enamelled one does."""
+
 CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS,
+                    substrates=SUBSTRATES,
                     palette=appliance)  # finishes real ovens are sold in

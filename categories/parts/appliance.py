@@ -17,6 +17,7 @@ from infmob_usd.frames import Frame, polar
 from infmob_usd.grammar import Layout
 from infmob_usd.materials import FAMILIES
 
+STEEL = 7850.0  # kg/m^3: what a painted casing, door or drawer of sheet really is (see Category.substrates)
 LINER = 0.002  # cavity liner wall
 BEZEL = 0.006  # front bezel thickness
 SKIN = 0.003  # outer skin of a door or fascia; a dark inner frame behind it

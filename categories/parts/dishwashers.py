@@ -42,15 +42,6 @@ SIZES = {"compact": _compact, "dish_drawer": _dish_drawer}
 double dish drawer take the sizes of :data:`DISHWASHER` (mapped from the parameters' ranges)."""
 
 
-def painted_steel(pieces: list[g.Piece], finish: str) -> list[g.Piece]:
-    """A painted cabinet is painted steel sheet, but the painted family is massed as board (750 kg/m^3):
-    its sheet pieces count 7850 / 750 times thicker (a painted compact model weighed 10 kg)."""
-    if finish != "painted":
-        return pieces
-    return [pc.replace(sheet=pc.sheet * 7850.0 / 750.0) if pc.sheet > 0 and pc.material == "body" else pc
-            for pc in pieces]
-
-
 def pump(xb0: float, xb1: float, zf: float, zh: float) -> g.Piece:
     """The wash pump with its motor and the sump in the base under the tub (hidden, no collision): a steel
     can in the ``tub`` slot (stainless, 7850 kg/m^3) whose wall makes it ``DISHWASHER["pump_kg"]``."""
@@ -69,7 +60,7 @@ class Tub:
 
 
 def tub_body(W, D, H, wall, door_thickness, feet, kick, design: str, control_height: float, ctrl: bool,
-             handle: bool, finish: str) -> Tub:
+             handle: bool) -> Tub:
     """The tub cabinet (:func:`.appliance.tub_cabinet`) with the pump (and a freestanding model's worktop);
     the door hinges at the kick's top; its top band carries the control panel and the handle, and the racks
     stay below the band and the ceiling nozzle, above the flat door's inner face and the spray arm."""
@@ -87,7 +78,7 @@ def tub_body(W, D, H, wall, door_thickness, feet, kick, design: str, control_hei
     band = b["base"] + (control_height if ctrl else 0.0) + (b["handle_strip"] if ctrl and handle else 0.0)
     if handle and not ctrl:
         band = b["handle_only"]
-    body = painted_steel(A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf), finish) + [pump(xb0, xb1, zf, zh)]
+    body = A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + [pump(xb0, xb1, zf, zh)]
     if design == "freestanding":  # a worktop over the cabinet, behind the door
         body.append(g.box_between([xb0, y0, H], [xb1, y1, H + DW["worktop"]], "worktop", bevel=0.004))
     r = DW["rack_room"]
@@ -96,7 +87,7 @@ def tub_body(W, D, H, wall, door_thickness, feet, kick, design: str, control_hei
     return Tub(body, dict(box=(xf - ft, xf, y0, y1, zh, zt), band=band), dict(cav=cav, z=(bottom, top)))
 
 
-def drawer_cabinet(W, D, H, door_thickness, feet, kick, finish: str) -> tuple[list[g.Piece], dict]:
+def drawer_cabinet(W, D, H, door_thickness, feet, kick) -> tuple[list[g.Piece], dict]:
     """A double dish drawer's cabinet with two bays; returns its pieces and where the drawers go."""
     ft = door_thickness
     y0, y1 = -W / 2, W / 2
@@ -120,7 +111,7 @@ def drawer_cabinet(W, D, H, door_thickness, feet, kick, finish: str) -> tuple[li
     (fx0, fx1), fy, fr = DW["feet"]
     body += [g.cylinder([x, y, 0.0], [x, y, zf], fr, "feet", 16) for x in (xb0 + fx0, xb1 - fx1)
              for y in (y0 + fy, y1 - fy)]
-    return painted_steel(body, finish), dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
+    return body, dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
 
 
 def drawer_boxes(k: int, xs, ys, zs) -> dict:
