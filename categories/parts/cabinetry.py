@@ -45,6 +45,59 @@ CORNER_BLIND = 0.05  # a corner unit's blind panel reaches this far past the uni
 CORNER_LEG = 0.06  # legs under the corner box, this far in from its edges
 LIFT_HANDLE = 0.04  # handles of tilt-out fronts and flaps this far from the free edge
 
+# The kitchen cabinet's parameter ranges (min, max), metres unless marked:
+RANGES = {
+    "width": (1.2, 4.8),  # a kitchen wall's run: 2-10 cabinets of 40-60 cm
+    # EN 1116 / IKEA METOD: base cabinets 60 cm deep incl. front, worktop at 85-92 cm
+    "base_depth": (0.55, 0.62), "base_height": (0.85, 0.92),
+    "tall_height": (1.95, 2.25),  # IKEA METOD high cabinets 200 / 220 cm + 8-10 cm legs
+    "wall_depth": (0.3, 0.35), "wall_height": (0.6, 0.9),  # wall cabinets 30-35 cm deep (IKEA METOD 37 cm with door)
+    "column_width": (0.4, 0.6),  # IKEA METOD 40 / 60 cm high-cabinet widths
+    "corner_size": (0.84, 0.92),  # corner base 88 x 88 cm (IKEA METOD), lazy-susan bases 33-36 in
+    "sink_width": (0.8, 1.0),  # sink bases 80 / 90 / 100 cm (IKEA METOD), 30-36 in
+    "kitchen_width": (2.4, 4.8),  # a kitchen wall of 4-8 base cabinets (IKEA METOD 40/60/80 cm units)
+    "wall_gap": (0.45, 0.6),  # worktop to wall-cabinet bottom: IKEA kitchen planner 50-60 cm; NKBA minimum 15 in
+    "board": (0.016, 0.019), "front_thickness": (0.016, 0.022),
+    "worktop_thickness": (0.02, 0.04),  # laminate 28-40 mm, stone 20-30 mm
+    "plinth_height": (0.08, 0.14),  # IKEA METOD legs 8 cm; US toe kicks 3.5-4.5 in
+    "drawer_travel": (0.6, 0.9),  # ratio: full-extension runners 0.9
+    "door_angle": (math.pi / 2, 0.65 * math.pi),  # rad: Blum CLIP top hinges 95, 107, 110, 155 degrees
+}
+
+
+def centred(size: float) -> tuple[float, float]:
+    """The span ``size`` wide centred on 0 (a run's ys, a carcass's xs)."""
+    return (-size / 2, size / 2)
+
+
+def inset(span, by: float) -> tuple[float, float]:
+    """``span`` shrunk by ``by`` at both ends (inside the boards, or a front's reveal)."""
+    return (span[0] + by, span[1] - by)
+
+
+def pull_frame(x: float, ys, z: float) -> Frame:
+    """A drawer's slide: out of the carcass along +X from its front ``x``, mid-width, at height ``z``."""
+    return Frame.at((x, sum(ys) / 2, z), z=(1, 0, 0))
+
+
+def leaf_pair(fys) -> list[tuple[float, float, str]]:
+    """Two leaves splitting the front span ``fys`` with a reveal between them, hinged at the outer edges."""
+    mid = sum(fys) / 2
+    return [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
+
+
+def front_span(c: int, n: int, ys, run, t: float) -> tuple[float, float]:
+    """The front of column ``c`` of ``n`` over ``ys`` in a run over ``run`` (dividers ``t`` thick): half a
+    reveal off a divider's middle, a reveal in from the run's ends."""
+    (ya, yb), (W0, W1) = ys, run
+    return (ya - t / 2 + GAP / 2 if c > 0 else W0 + GAP, yb + t / 2 - GAP / 2 if c < n - 1 else W1 - GAP)
+
+
+def divider(xs, y: float, zs, t: float) -> g.Piece:
+    """A divider board between two columns, to the right of ``y``, set back half a board from the back."""
+    return g.box_between([xs[0] + t * 0.5, y, zs[0] + t], [xs[1], y + t, zs[1] - t], "body")
+
+
 # Handles (hardware.handle): 128-320 mm bar pulls, 30 mm knobs 25 mm proud, edge pulls as long as asked.
 BAR_HANDLE = hardware.BAR_SPAN
 HANDLE_REACH = 0.03  # a door's handle keeps this far (beyond half its length) from the door's ends
