@@ -176,8 +176,9 @@ class CabinetLayout(Layout):
                  "corner": p["corner_size"] + len(design.of("column")) * p["column_width"],
                  "sink_base": p["sink_width"] + len(design.of("column")) * p["column_width"]}[kind]
         first = {"corner": p["corner_size"], "sink_base": p["sink_width"], "kitchen": p["sink_width"]}.get(kind, W)
-        xs = (D / 2 - p["corner_size"], D / 2) if kind == "corner" else cab.centred(D)
-        self.add("carcass", "body", cab.carcass(xs, (-W / 2, -W / 2 + first), (z0, z1), p["board"], "body",
+        xs = cab.front_part(cab.centred(D), p["corner_size"]) if kind == "corner" else cab.centred(D)
+        ys, _ = cab.split(cab.centred(W), first)
+        self.add("carcass", "body", cab.carcass(xs, ys, (z0, z1), p["board"], "body",
                                                 top=kind not in ("sink_base", "kitchen")))
         self.grow(design, W=W, D=D, zs=(z0, z1))
 
@@ -223,40 +224,38 @@ class CabinetLayout(Layout):
 
     def corner(self, node, W, D, zs):
         p = self.p
-        z0, z1 = zs
         C = p["corner_size"]
         cols = node.of("column")
-        y0 = -W / 2
+        ys, xs = cab.centred(W), cab.centred(D)
+        corner_ys, run_ys = cab.split(ys, C)
+        corner_xs = cab.front_part(xs, C)
         # the corner box (the root's) reaches further back than the run beside it; all fronts are flush
-        self._run(cols, (y0 + C, W / 2), cab.centred(D), (z0, z1))
-        self.grow(node.one("corner_unit"), ys=(y0, y0 + C), xs=(D / 2 - C, D / 2), zs=(z0, z1))
-        self.grow(node.one("stand"), ys=(y0, W / 2), xs=cab.centred(D), z0=z0)
-        self.extend("carcass", cab.corner_legs(D / 2 - C, (y0, y0 + C), z0))
-        self.grow(node.one("worktop"), ys=(y0, W / 2), xs=cab.centred(D), hole=None, corner=(y0 + C, D / 2 - C))
+        self._run(cols, run_ys, xs, zs)
+        self.grow(node.one("corner_unit"), ys=corner_ys, xs=corner_xs, zs=zs)
+        self.grow(node.one("stand"), ys=ys, xs=xs, z0=zs[0])
+        self.extend("carcass", cab.corner_legs(corner_xs[0], corner_ys, zs[0]))
+        self.grow(node.one("worktop"), ys=ys, xs=xs, hole=None, corner=(run_ys[0], corner_xs[0]))
 
     def sink_base(self, node, W, D, zs):
         cols = node.of("column")
-        y0 = -W / 2
-        ys = (y0, y0 + self.p["sink_width"])
+        ys, run_ys = cab.split(cab.centred(W), self.p["sink_width"])
         if cols:
-            self._run(cols, (ys[1], W / 2), cab.centred(D), zs)
+            self._run(cols, run_ys, cab.centred(D), zs)
         hole = self.sink_unit(node, ys, D, zs, beside=bool(cols))
-        self._stand_and_top(node, (y0, W / 2), D, zs[0], top_hole=hole)
+        self._stand_and_top(node, cab.centred(W), D, zs[0], top_hole=hole)
 
     def sink_unit(self, node, ys, D, zs, beside):
         """The sink, its tilt-out false front and two doors in the box over ``ys`` (a run of columns
         ``beside`` it on its right); returns the worktop's cut-out."""
         p = self.p
-        z0, z1 = zs
-        t = p["board"]
-        hole = cab.sink_hole(cab.centred(D), ys)
+        xs = cab.centred(D)
+        hole = cab.sink_hole(xs, ys)
         self.grow(node.one("sink"), hole=hole, z_top=p["base_height"])
-        fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if beside else ys[1] - GAP)
-        fz1 = z1 - GAP
-        self.grow(node.one("tilt_front"), fys=fy, fzs=(fz1 - cab.SINK_FRONT, fz1), xs=cab.centred(D))
+        fy, tilt_zs, door_zs = cab.sink_fronts(ys, zs, p["board"], beside)
+        self.grow(node.one("tilt_front"), fys=fy, fzs=tilt_zs, xs=xs)
         doors = node.of("sink_door")
         for k, (kid, leaf) in enumerate(zip(doors, cab.leaf_pair(fy))):
-            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - cab.SINK_FRONT - GAP), x1=D / 2)
+            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=door_zs, x1=xs[1])
         return hole
 
     def wall_run(self, node, W, D, zs):
@@ -268,27 +267,28 @@ class CabinetLayout(Layout):
         """Base columns under a worktop, a splashback, a wall cabinet over each base column, and maybe
         a tall unit at the +Y end (the wall cabinets' tops then line up with its top)."""
         p = self.p
-        y0, yk = -W / 2, -W / 2 + p["kitchen_width"]
+        xs = cab.centred(D)
+        counter, tall_ys = cab.split(cab.centred(W), p["kitchen_width"])
         base, wall, talls = node.of("column"), node.of("wall_column"), node.of("tall")
-        ys = (y0, y0 + p["sink_width"])  # the sink base at the -Y end (the root's box)
-        self._run(base, (ys[1], yk), cab.centred(D), zs)
+        ys, base_ys = cab.split(counter, p["sink_width"])  # the sink base at the -Y end (the root's box)
+        self._run(base, base_ys, xs, zs)
         hole = self.grow(node.one("sink_unit"), ys=ys, D=D, zs=zs, beside=True)
         if talls:
-            self._run(talls, (yk, W / 2), cab.centred(D), (zs[0], p["tall_height"]), first=len(base),
-                      side="right")
+            self._run(talls, tall_ys, xs, (zs[0], p["tall_height"]), first=len(base), side="right")
         bottom = p["base_height"] + p["wall_gap"]
         top = p["tall_height"] if talls else bottom + p["wall_height"]
         top = max(top, bottom + cab.WALL_MIN)
-        self._run(wall, (y0, yk), (-D / 2, -D / 2 + p["wall_depth"]), (bottom, top),
-                  first=len(base) + len(talls))
-        self.grow(node.one("splashback"), ys=(y0, yk), x=-D / 2, zs=(p["base_height"], bottom))
-        self.grow(node.one("stand"), ys=(y0, W / 2), xs=cab.centred(D), z0=zs[0])
+        wall_xs, _ = cab.split(xs, p["wall_depth"])
+        self._run(wall, counter, wall_xs, (bottom, top), first=len(base) + len(talls))
+        self.grow(node.one("splashback"), ys=counter, x=xs[0], zs=(p["base_height"], bottom))
+        self.grow(node.one("stand"), ys=cab.centred(W), xs=xs, z0=zs[0])
         # the worktop overhangs 5 mm at a free end; it butts against a tall unit's side
-        self.grow(node.one("worktop"), ys=(y0, yk - cab.TOP_END if talls else yk), xs=cab.centred(D), hole=hole)
+        y0, yk = counter
+        self.grow(node.one("worktop"), ys=(y0, yk - cab.TOP_END if talls else yk), xs=xs, hole=hole)
 
     def splashback(self, node, ys, x, zs):
         """A panel on the wall between the worktop and the wall cabinets: it carries them."""
-        self.extend("carcass", [g.box_between([x, ys[0], zs[0]], [x + cab.SPLASH, ys[1], zs[1]], "body")])
+        self.extend("carcass", [cab.splashback(x, ys, zs)])
 
     # -- stands, worktops, rails ---------------------------------------------------------------------
     def stand(self, node, **where):
@@ -322,9 +322,7 @@ class CabinetLayout(Layout):
     wall_column = tall = column
 
     def open(self, node, c, side, ys, fys, zs, fzs, xs):
-        k = 1 + int(self.rng.integers(1, 3))
-        self.extend("carcass", [panels.shelf(xs, ys, zs[0] + (zs[1] - zs[0]) * i / k, self.p["board"], "body")
-                                for i in range(1, k)])
+        self.extend("carcass", cab.open_shelves(xs, ys, zs, self.p["board"], self.rng))
 
     wall_open = open
 
@@ -356,7 +354,7 @@ class CabinetLayout(Layout):
     def doors(self, node, c, side, ys, fys, zs, fzs, xs, shelf=True):
         t = self.p["board"]
         if shelf:
-            self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, t, "body")])
+            self.extend("carcass", [cab.mid_shelf(xs, ys, zs, t)])
         kids = node.of("door") or node.of("wall_door")
         if len(kids) == 2:  # double doors, hinged at both outer edges
             spec = cab.leaf_pair(fys)
@@ -499,7 +497,7 @@ class CabinetLayout(Layout):
         """A lift-up flap hinged at its top edge (Blum AVENTOS HK): the bottom swings out and up."""
         p = self.p
         pieces, hinge = cab.flap(xs, fys, fzs, p["front_thickness"], p["front_style"], self._handles())
-        self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, p["board"], "body")])
+        self.extend("carcass", [cab.mid_shelf(xs, ys, zs, p["board"])])
         name = self.add(f"flap_{c}", "door", pieces)
         self.hinge("carcass", name, hinge, upper=cab.FLAP)
 

@@ -75,6 +75,42 @@ def inset(span, by: float) -> tuple[float, float]:
     return (span[0] + by, span[1] - by)
 
 
+def split(span, first: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """``span`` cut ``first`` from its start: the first part and the rest (a corner or sink box and the run
+    beside it)."""
+    cut = span[0] + first
+    return (span[0], cut), (cut, span[1])
+
+
+def front_part(xs, depth: float) -> tuple[float, float]:
+    """The front ``depth`` of ``xs`` (a box flush with the fronts, less deep than the span)."""
+    return (xs[1] - depth, xs[1])
+
+
+def mid_shelf(xs, ys, zs, t: float) -> g.Piece:
+    """A shelf board half way up a compartment."""
+    return panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, t, "body")
+
+
+def open_shelves(xs, ys, zs, t: float, rng) -> list[g.Piece]:
+    """An open column's 1-2 shelves (drawn), evenly spaced."""
+    k = 1 + int(rng.integers(1, 3))
+    return [panels.shelf(xs, ys, zs[0] + (zs[1] - zs[0]) * i / k, t, "body") for i in range(1, k)]
+
+
+def splashback(x: float, ys, zs) -> g.Piece:
+    """A panel on the wall between the worktop and the wall cabinets (it carries them)."""
+    return g.box_between([x, ys[0], zs[0]], [x + SPLASH, ys[1], zs[1]], "body")
+
+
+def sink_fronts(ys, zs, t: float, beside: bool) -> tuple[tuple, tuple, tuple]:
+    """A sink box's front span (narrowed to half a divider where a run is ``beside`` it), its tilt-out
+    false front's z span at the top and its doors' z span below."""
+    fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if beside else ys[1] - GAP)
+    fz1 = zs[1] - GAP
+    return fy, (fz1 - SINK_FRONT, fz1), (zs[0] + GAP, fz1 - SINK_FRONT - GAP)
+
+
 def pull_frame(x: float, ys, z: float) -> Frame:
     """A drawer's slide: out of the carcass along +X from its front ``x``, mid-width, at height ``z``."""
     return Frame.at((x, sum(ys) / 2, z), z=(1, 0, 0))
