@@ -32,7 +32,6 @@ from __future__ import annotations
 
 import math
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame, cells
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -40,7 +39,6 @@ from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import cabinetry as cab
-from .parts import panels
 from .parts.cabinetry import GAP
 from .parts.cabinetry import RANGES as R
 
@@ -406,15 +404,10 @@ class CabinetLayout(Layout):
                    requires_open=gate)
 
     def drawer_door(self, node, c, side, ys, fys, zs, fzs, xs):
-        fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
-        s = 1 - cab.TOP_DRAWER
-        top_f = (fzs[0] + s * fh, fzs[1])
-        top_i = (zs[0] + s * ih, zs[1])
-        self.extend("carcass", [g.box_between([xs[0] + self.p["board"] / 2, ys[0], top_i[0] - self.p["board"]],
-                                              [xs[1], ys[1], top_i[0]], "body")])
+        board, top_i, top_f, door_zs, door_fzs = cab.drawer_over_doors(xs, ys, zs, fzs, self.p["board"])
+        self.extend("carcass", [board])
         self._drawer_stack(node.of("drawer"), (1.0,), c, ys, fys, top_i, top_f, xs)
-        self.doors(node, c, side, ys, fys, (zs[0], top_i[0] - self.p["board"]), (fzs[0], top_f[0] - GAP / 2), xs,
-                   shelf=False)
+        self.doors(node, c, side, ys, fys, door_zs, door_fzs, xs, shelf=False)
 
     # -- tall cabinets -------------------------------------------------------------------------------
     def pullout(self, node, c, side, ys, fys, zs, fzs, xs):
@@ -435,17 +428,12 @@ class CabinetLayout(Layout):
 
     def tall_doors(self, node, c, side, ys, fys, zs, fzs, xs):
         """An upper door with shelves behind it over a lower door with pull-outs behind it."""
-        p = self.p
-        t = p["board"]
-        split = zs[0] + cab.TALL_SPLIT * (zs[1] - zs[0])
-        self.extend("carcass", [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")]
-                    + [panels.shelf(xs, ys, split + (zs[1] - split) * i / cab.TALL_SHELVES, t, "body")
-                       for i in range(1, cab.TALL_SHELVES)])
-        fsplit = split - t / 2
-        self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=(fys[0], fys[1], side),
-                  fzs=(fsplit + GAP / 2, fzs[1]), x1=xs[1])
-        self.grow(node.one("lower_door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side),
-                  fzs=(fzs[0], fsplit - GAP / 2), x1=xs[1], c=c, ys=ys, zs=(zs[0], split - t), xs=xs)
+        boards, upper_fzs, lower_fzs, lower_zs = cab.tall_split(xs, ys, zs, fzs, self.p["board"])
+        self.extend("carcass", boards)
+        leaf = (*fys, side)
+        self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=leaf, fzs=upper_fzs, x1=xs[1])
+        self.grow(node.one("lower_door"), name=f"door_{c}_0", leaf=leaf, fzs=lower_fzs, x1=xs[1], c=c, ys=ys,
+                  zs=lower_zs, xs=xs)
 
     def upper_door(self, node, name, leaf, fzs, x1):
         self._door(name, leaf, fzs, x1, glazed=True, handle_at=fzs[0] + cab.TALL_HANDLE)
@@ -459,18 +447,10 @@ class CabinetLayout(Layout):
         """The corner box's front: a blind panel and a door hinged at the run's side, opening on
         the carousel."""
         p = self.p
-        t = p["board"]
-        D = xs[1] - xs[0]
-        mid = (ys[0] + ys[1]) / 2 - cab.CORNER_BLIND
-        fz = (zs[0] + GAP, zs[1] - GAP)
-        x = xs[1]
-        # the blind part of the front: a fixed panel in the carcass
-        self.extend("carcass", cab.front(x + GAP, x + GAP + p["front_thickness"], (ys[0] + GAP, mid - GAP / 2), fz,
-                                         p["front_style"], "front")[0])
-        name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, x,
-                          handle_at=None, gate=True)
-        self.grow(node.one("carousel"), gate=name, centre=(x - D / 2, (ys[0] + ys[1]) / 2),
-                  radius=min(D, ys[1] - ys[0]) / 2 - t - cab.CAROUSEL_CLEAR, zs=(zs[0] + t, zs[1] - t))
+        blind, leaf, fz, carousel = cab.corner_front(xs, ys, zs, p["board"], p["front_thickness"], p["front_style"])
+        self.extend("carcass", blind)  # the blind part of the front: a fixed panel in the carcass
+        name = self._door("door_corner", leaf, fz, xs[1], handle_at=None, gate=True)
+        self.grow(node.one("carousel"), gate=name, **carousel)
 
     def carousel(self, node, gate, centre, radius, zs):
         """A lazy susan: a pole with 2-3 trays turning on a bearing (continuous)."""

@@ -111,6 +111,42 @@ def sink_fronts(ys, zs, t: float, beside: bool) -> tuple[tuple, tuple, tuple]:
     return fy, (fz1 - SINK_FRONT, fz1), (zs[0] + GAP, fz1 - SINK_FRONT - GAP)
 
 
+def corner_front(xs, ys, zs, t: float, ft: float, style: str) -> tuple[list[g.Piece], tuple, tuple, dict]:
+    """A corner box's front: the blind panel's pieces (fixed in the carcass, reaching :data:`CORNER_BLIND`
+    past the middle), the door's leaf (hinged on the run's side), the fronts' z span and where the
+    carousel behind it turns (``centre``, ``radius``, ``zs``)."""
+    D = xs[1] - xs[0]
+    mid = (ys[0] + ys[1]) / 2 - CORNER_BLIND
+    fz = (zs[0] + GAP, zs[1] - GAP)
+    x = xs[1]
+    blind = front(x + GAP, x + GAP + ft, (ys[0] + GAP, mid - GAP / 2), fz, style, "front")[0]
+    leaf = (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right")
+    carousel = dict(centre=(x - D / 2, (ys[0] + ys[1]) / 2), radius=min(D, ys[1] - ys[0]) / 2 - t - CAROUSEL_CLEAR,
+                    zs=(zs[0] + t, zs[1] - t))
+    return blind, leaf, fz, carousel
+
+
+def tall_split(xs, ys, zs, fzs, t: float) -> tuple[list[g.Piece], tuple, tuple, tuple]:
+    """A tall cabinet's fixed shelf at :data:`TALL_SPLIT` with :data:`TALL_SHELVES` spaces over it: the
+    boards, the upper door's and the lower door's z spans and the compartment under the split."""
+    split = zs[0] + TALL_SPLIT * (zs[1] - zs[0])
+    boards = [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")] + \
+        [panels.shelf(xs, ys, split + (zs[1] - split) * i / TALL_SHELVES, t, "body") for i in range(1, TALL_SHELVES)]
+    fsplit = split - t / 2
+    return boards, (fsplit + GAP / 2, fzs[1]), (fzs[0], fsplit - GAP / 2), (zs[0], split - t)
+
+
+def drawer_over_doors(xs, ys, zs, fzs, t: float) -> tuple[g.Piece, tuple, tuple, tuple, tuple]:
+    """A top drawer (:data:`TOP_DRAWER` of the column) over doors: the board between them, the drawer's
+    inner and front z spans, the doors' compartment and front z spans."""
+    fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
+    s = 1 - TOP_DRAWER
+    top_f = (fzs[0] + s * fh, fzs[1])
+    top_i = (zs[0] + s * ih, zs[1])
+    board = g.box_between([xs[0] + t / 2, ys[0], top_i[0] - t], [xs[1], ys[1], top_i[0]], "body")
+    return board, top_i, top_f, (zs[0], top_i[0] - t), (fzs[0], top_f[0] - GAP / 2)
+
+
 def pull_frame(x: float, ys, z: float) -> Frame:
     """A drawer's slide: out of the carcass along +X from its front ``x``, mid-width, at height ``z``."""
     return Frame.at((x, sum(ys) / 2, z), z=(1, 0, 0))
