@@ -131,7 +131,8 @@ PARAMS = (
     Float("base_height", "floor to worktop top", "m", 0.85, 0.92),
     # IKEA METOD high cabinets 200 / 220 cm + 8-10 cm legs
     Float("tall_height", "tall (larder) cabinet height", "m", 1.95, 2.25),
-    # wall cabinets 30-35 cm deep (issue 13; IKEA METOD 37 cm incl. door), 60-100 cm high
+    # wall cabinets 30-35 cm deep (shallower than the base run, so a head clears them; IKEA METOD 37 cm incl.
+    # door), 60-100 cm high
     Float("wall_depth", "wall cabinet depth (X)", "m", 0.3, 0.35),
     Float("wall_height", "wall cabinet height", "m", 0.6, 0.9),
     # IKEA METOD 40 / 60 cm high-cabinet widths

@@ -137,7 +137,7 @@ def test_sports_cap_spout_pulls_up():
 
 
 def test_caps_fit_their_necks():
-    # issue 13: a cap is no wider than its finish plus skirt (a crown 32 mm on a 26 mm finish)
+    # a cap wider than its finish plus skirt does not sit on its neck (a crown is 32 mm on a 26 mm finish)
     for cap in ("crown", "screw"):
         _, bp = make(4, cap=cap, profile="beer" if cap == "crown" else "soda")
         wall = bp.parts["body"].pieces[0].vertices

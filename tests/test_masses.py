@@ -20,7 +20,7 @@ def test_the_table_has_a_sourced_range_for_every_category():
         assert 0 < r.lo < r.hi
     for r in table.values():
         assert len(r.source) > 20, f"{r.category}/{r.part}: name the product or page"
-    # the issue's examples hold as rows
+    # the heavy parts that were found wrong hold as rows
     assert range_for("door", "leaf", table).hi <= 45 and range_for("door", "leaf", table).lo >= 10
     assert range_for("microwave", "knob", table).hi <= 0.1
     assert range_for("oven", "button", table).hi <= 0.03
@@ -148,7 +148,7 @@ def test_a_part_thinner_than_two_walls_stays_solid():
 
 
 def test_real_heavy_offenders_are_fixed():
-    """The issue's examples: toilets 87-107 kg, door leaves 48 kg median, 0.46 kg flush buttons."""
+    """Parts once far too heavy: toilets 87-107 kg, door leaves 48 kg median, 0.46 kg flush buttons."""
     toilet = infmob_usd.generate("toilet", seed=1, texture_size=16)
     assert 20 < sum(lk.mass for lk in toilet.links) < 55
     button = [lk for lk in toilet.links if lk.label == "button"]

@@ -231,7 +231,7 @@ def test_star_bases_have_five_legs_rarely_four_or_six():
     assert legs({"leg_count": 4}, rng) == 4
 
 
-# -- designs (issue 14) ----------------------------------------------------------------------
+# -- designs: the parts each one adds --------------------------------------------------------
 
 
 DESIGN_PARTS = {"task": {"back"}, "executive": {"back", "headrest"}, "mesh_chair": {"back", "lumbar"},

@@ -1,4 +1,4 @@
-"""Part libraries (issue 12): a messy PartNet-Mobility-style source imported, the built-in parts exported,
+"""Part libraries: a messy PartNet-Mobility-style source imported, the built-in parts exported,
 objects generated with every retrieved part and validated in simulation, bad input refused."""
 
 from __future__ import annotations

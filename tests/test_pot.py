@@ -187,7 +187,8 @@ def test_designs_vary():
 
 
 def test_steamer_tiers_one_or_two_and_light():
-    """Tiers vary 1..2 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size (issue 14: they were 2-4 kg)."""
+    """Tiers vary 1..2 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size
+    (at the pot's clad wall they would weigh 2-4 kg)."""
     from infmob_usd.mass import inertial
 
     counts = set()

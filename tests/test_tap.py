@@ -232,7 +232,7 @@ def test_each_design_is_forced_and_moves(design):
 
 def test_lever_never_leaves_its_cartridge():
     """The lever turns about the cartridge pin through its hub: at full lift the hub is where it was
-    (issue 13: levers used to lift straight off the body, tap 7004-7006)."""
+    (a lever turned about a pin elsewhere lifts straight off the body: tap seeds 7004-7006 did)."""
     for seed in range(6):
         p, bp = make(seed, design="deck", handles="single_lever")
         j = by_child(bp, "lever")

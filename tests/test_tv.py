@@ -323,7 +323,7 @@ def test_a_wall_mounted_tv_hangs_with_its_centre_at_eye_height(width, aspect, bo
 
 @pytest.mark.sim
 def test_a_large_tv_on_a_wall_arm_swings_freely_in_sapien(tmp_path):
-    """Fuzz #2471: a 2.1 m 4:3 screen on a two-link arm stood on the floor and dragged on it (the arm
+    """A 2.1 m 4:3 screen on a two-link arm must hang clear of the floor: standing on it, it dragged (the arm
     stopped at 77-81 % of its swing in SAPIEN); hung, every joint reaches both ends."""
     pytest.importorskip("sapien")
     import infmob_usd

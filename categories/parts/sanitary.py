@@ -155,7 +155,7 @@ def on_face(x: float, z: float) -> Frame:
     return Frame.at((x, 0.0, z), z=(1, 0, 0), x=(0, 0, -1))
 
 
-# -- the other designs: one-piece, back-to-wall, wall-hung (issue 14) ---------------------------------------
+# -- the other designs: one-piece, back-to-wall, wall-hung --------------------------------------------------
 # Sizes: one-piece WCs carry a low cistern 0.17-0.25 m above the rim on a skirted (concealed-trap) base
 # (TOTO Ultramax, Kohler Santa Rosa); back-to-wall pans stand against a furniture unit 0.8-0.85 m high,
 # 0.2-0.3 m deep (Roca, Ideal Standard Tesi); wall-hung pans are 0.52-0.56 m long, their seat at 0.40-0.43
