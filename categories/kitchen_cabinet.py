@@ -79,7 +79,8 @@ def moves(tree) -> bool:
 BASE_COLUMN = {"drawers": 0.32, "doors": 0.2, "door_drawers": 0.2, "drawer_door": 0.2, "open": 0.08}
 GRAMMAR = Grammar("kitchen_cabinet", {
     "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.2, "kitchen": 0.45, "larder": 0.1,
-                                                  "corner": 0.09, "sink_base": 0.08, "wall_run": 0.08}, choice="design"),
+                                                  "corner": 0.09, "sink_base": 0.08, "wall_run": 0.08},
+                            choice="design"),
     "base_run": Node(required=("stand", "worktop"), repeat={"column": columns}),
     # a kitchen wall: base columns, and a wall cabinet over each (IKEA METOD planning: wall cabinets line
     # up with the base cabinets under them), sometimes a tall unit at the end
@@ -205,7 +206,7 @@ class CabinetLayout(Layout):
         (beside a corner unit every leaf hinges on its right, away from the corner door: both open 90
         degrees to the same divider)."""
         t = self.p["board"]
-        (W0, W1), D = ys, xs[1] - xs[0]
+        W0, W1 = ys
         if box:
             self._box(ys, xs, zs)
         spans = cells(W0 + t, W1 - t, len(cols), gap=t)
@@ -234,7 +235,7 @@ class CabinetLayout(Layout):
     def corner(self, node, W, D, zs):
         p = self.p
         z0, z1 = zs
-        C, t = p["corner_size"], p["board"]
+        C = p["corner_size"]
         cols = node.of("column")
         y0 = -W / 2
         # the corner box (the root's) reaches further back than the run beside it; all fronts are flush

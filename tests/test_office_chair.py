@@ -15,7 +15,8 @@ from collide import overlap
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(4)
-LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest", "headrest", "lumbar", "foot_ring", "knob"}
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest", "headrest", "lumbar", "foot_ring",
+          "knob"}
 PLAIN = dict(has_seat_slider=False, has_tension_knob=False, has_lumbar=False, has_headrest=False, arm_style="arm_4d")
 TOL = 1e-7  # m^3, as the validator
 

@@ -110,4 +110,5 @@ def check_mass(folder: Path, table: dict | None = None) -> CheckResult:
         more = f" (+{len(problems) - 4} more)" if len(problems) > 4 else ""
         return CheckResult("mass", False, "; ".join(problems[:4]) + more)
     parts = ", ".join(f"{lab} {kg:.3g}" for lab, kg in sorted(heaviest.items()))
-    return CheckResult("mass", True, f"total {total:.3g} kg" + (f"; heaviest moving parts (kg): {parts}" if parts else ""))
+    heavy = f"; heaviest moving parts (kg): {parts}" if parts else ""
+    return CheckResult("mass", True, f"total {total:.3g} kg" + heavy)

@@ -98,9 +98,10 @@ SPORTS = {"spout": 0.0055, "spout_h": 0.012, "pull": 0.006, "ring": 0.0015}
 POT_DESIGNS = {"plain": 0.45, "steamer": 0.35, "pressure": 0.2}  # steamer sets sell in 1-3 tier variants
 # Tiers 1..2 (steamer sets are also sold with three tiers, but a chain of three stacked slides
 # sags 1.1 mm at rest in MuJoCo, past the 1 mm rest check: effort.py's armature takes the joint's
-# free inertia as its load, while a middle tier's stop carries the tiers and lid above it). A tier is pressed from thinner sheet than the pot's clad
-# wall: 0.6-0.8 mm 18/10 steel, a tier of 20-28 cm weighing 0.4-1.0 kg (WMF, Fissler, Cuisinart
-# steamer inserts); "sheet" is that gauge (at the clad 2-3 mm wall a tier would weigh 2-4 kg).
+# free inertia as its load, while a middle tier's stop carries the tiers and lid above it).
+# A tier is pressed from thinner sheet than the pot's clad wall: 0.6-0.8 mm 18/10 steel, a tier of 20-28 cm
+# weighing 0.4-1.0 kg (WMF, Fissler, Cuisinart steamer inserts); "sheet" is that gauge (at the clad 2-3 mm
+# wall a tier would weigh 2-4 kg).
 STEAMER = {"tiers": (1, 2), "height": (0.45, 0.7), "skirt": 0.015, "room": 0.004, "gap": 0.0025, "lift": 0.12,
            "handle": (0.05, 0.004, 0.014), "sheet": 0.0008}
 # A pasta pot's straining insert (Cuisinart 77-412, All-Clad and WMF pasta pots: a deep steel

@@ -236,13 +236,14 @@ def flush_plate(x_face: float, z: float) -> tuple[list[g.Piece], list[tuple[str,
     and the two keys (small flush at -y, large at +y), each in its opening with ``CLEAR`` around it."""
     w, h, t, kg = PLATE["width"], PLATE["height"], PLATE["thickness"], PLATE["key_gap"]
     ki = 0.022  # the plate's rim around the keys
-    holes = [(-w / 2 + ki, z - h / 2 + ki, -kg / 2, z + h / 2 - ki), (kg / 2, z - h / 2 + ki, w / 2 - ki, z + h / 2 - ki)]
+    holes = [(-w / 2 + ki, z - h / 2 + ki, -kg / 2, z + h / 2 - ki),
+             (kg / 2, z - h / 2 + ki, w / 2 - ki, z + h / 2 - ki)]
     plate = [g.panel([x_face, -w / 2, z - h / 2], [x_face + t, w / 2, z + h / 2], "chrome", "x", holes=holes)]
     keys = []
     xf = x_face + t
     for side, (y0, z0, y1, z1) in zip(("small", "large"), holes):
-        keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR], [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR],
-                                          "chrome", bevel=0.0015)]))
+        keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR],
+                                          [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR], "chrome", bevel=0.0015)]))
     return plate, keys
 
 
