@@ -93,6 +93,15 @@ def test_an_unknown_moving_part_and_a_light_total_fail(sample, tmp_path):
     assert not res.ok and "outside 100-200 kg" in res.detail
 
 
+def test_a_category_without_a_row_fails_and_names_the_row_to_add(sample):
+    """A new category is not waved through: with no whole-object row its objects fail the check, and
+    the message says which row to add."""
+    table = {key: r for key, r in load_table().items() if key != ("jar", "*")}
+    res = check_mass(sample["jar"], table)
+    assert not res.ok
+    assert f"no range for category 'jar' in {TABLE.name}" in res.detail and "jar,*,MIN_KG,MAX_KG,SOURCE" in res.detail
+
+
 def test_the_cli_runs_the_check_with_mass(sample, tmp_path, capsys):
     from infmob_usd.cli import main
 
