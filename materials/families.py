@@ -34,7 +34,7 @@ __all__ = [
 ]
 
 LOOKS_PER_VARIANT = 16
-"""Looks per palette variant of a family in the look library (1072 looks over all families)."""
+"""Looks per palette variant of a family in the look library (``len(library())`` looks over all families)."""
 
 Range = tuple[float, float]
 
