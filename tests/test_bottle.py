@@ -12,14 +12,14 @@ from infmob_usd.categories import bottle
 from infmob_usd.categories.parts.vessel_sizes import CAP_MATERIALS
 from infmob_usd.errors import ParameterError
 
+from helpers import maker
 from zoo import by_child, make_bp
 
 SEEDS = range(6)
 
 
-def make(seed, **overrides):
-    """``closure_draw=0`` unless a test asks: cap=auto then takes the profile's classic closure."""
-    return make_bp(bottle, "bottle", seed, **{"closure_draw": 0.0, **overrides})
+# ``closure_draw=0`` unless a test asks: cap=auto then takes the profile's classic closure
+make = maker("bottle", closure_draw=0.0)
 
 
 @pytest.mark.parametrize("seed", SEEDS)

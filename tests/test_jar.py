@@ -9,14 +9,14 @@ from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, 
 from infmob_usd.categories import jar
 from infmob_usd.errors import ParameterError
 
+from helpers import maker
 from zoo import make_bp
 
 SEEDS = range(6)
 
 
-def make(seed, **overrides):
-    """The screw-lid design (mason jar) unless a test asks for another closure."""
-    return make_bp(jar, "jar", seed, **{"closure": "screw", **overrides})
+# the screw-lid design (mason jar) unless a test asks for another closure
+make = maker("jar", closure="screw")
 
 
 @pytest.mark.parametrize("seed", SEEDS)

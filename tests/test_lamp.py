@@ -16,14 +16,13 @@ from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES, split_spec
 
 from collide import overlap
-from zoo import make_bp
+from helpers import maker
 
 SEEDS = range(10)
 LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch", "screw"}
 
 
-def make(seed: int, **overrides):
-    return make_bp(lamp, "lamp", seed, **overrides)
+make = maker("lamp")
 
 
 def desk_top(p) -> float:
