@@ -44,7 +44,13 @@ def labelled_states(bp) -> list[tuple[str, dict]]:
             out += [(f"{j.child}@{f:.0%}", {(j.child, i): _at(d, f) for i, d in enumerate(j.dofs)}) for f in (0, 1)]
         for i, d in enumerate(j.dofs):
             out += [(f"{j.child}.{i}@{q:.3g}", {(j.child, i): q}) for q in _ends(d)]
-    return out
+    seen, unique = set(), []
+    for label, q in out:  # a DoF at 0 is where rest puts it: the same pose is checked once
+        key = frozenset((k, v) for k, v in q.items() if v != 0.0)
+        if key not in seen:
+            seen.add(key)
+            unique.append((label, q))
+    return unique
 
 
 def states(bp) -> list[dict]:
