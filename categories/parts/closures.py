@@ -1,6 +1,6 @@
-"""Vessel designs added for variety (issue 14): vase feet, stoppers and liners; clip-top, hinged and
-stopper jar lids; swing-top, pump and sports bottle closures; steamer inserts and pressure-cooker
-lids for pots; folding and detachable pan handles.
+"""Vessel designs beyond the plain one, so a category is more than one product: vase feet, stoppers and
+liners; clip-top, hinged and stopper jar lids; swing-top, pump and sports bottle closures; steamer
+inserts and pressure-cooker lids for pots; folding and detachable pan handles.
 
 Like :mod:`.vessel`, every builder returns an :class:`~infmob_usd.assembly.Assembly` in its own
 local frame, Z up along the vessel's axis; closures have their ``seat`` anchor at the origin (attach
