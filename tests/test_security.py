@@ -1,0 +1,220 @@
+"""Security and reliability: an untrusted dataset or hostile input never makes infmob read, copy, serve
+or write anything outside what it was given; every failure is one line.
+
+One test (or a few) per class of probe: the gallery serves and copies only what it should (1-3),
+``validate`` fails files that point out of their folder (4), output paths are never followed (5),
+worker counts are bounded (6), a killed worker does not abort a batch (7), sizes are bounded up
+front and SIGTERM honoured (9), one-line errors everywhere else (10).
+"""
+
+from __future__ import annotations
+
+import http.client
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+import infmob_usd
+from infmob_usd.batch import Job, run_batch
+from infmob_usd.cli import main
+from infmob_usd.errors import InfmobError
+from infmob_usd.validate.gallery import build_gallery, make_server
+
+CAT = "tv"
+NAME = f"{CAT}_000000"
+QUIET = {"render": False, "log": lambda *a, **k: None}
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+@pytest.fixture(scope="module")
+def obj_dir(tmp_path_factory) -> Path:
+    """One finished object at 16 px: DIR/tv/tv_000000."""
+    root = tmp_path_factory.mktemp("sec_obj")
+    infmob_usd.save(infmob_usd.generate(CAT, seed=0, texture_size=16), root / CAT)
+    return root / CAT / NAME
+
+
+def _dataset(obj_dir: Path, where: Path) -> Path:
+    """A fresh DIR holding a copy of the object."""
+    shutil.copytree(obj_dir, where / "ds" / CAT / NAME)
+    return where / "ds"
+
+
+def _secret(tmp_path: Path) -> Path:
+    secret = tmp_path / "private" / "secret.txt"
+    secret.parent.mkdir(parents=True, exist_ok=True)
+    secret.write_text("TOP-SECRET-CONTENT\n")
+    return secret
+
+
+def _site_text(site: Path) -> str:
+    return "".join(p.read_text(errors="replace") for p in site.rglob("*") if p.is_file())
+
+
+# --- 1 + 3: the server serves the site and the shown object folders only ----------------------------
+
+class _Served:
+    """The gallery server in a thread, stopped (bounded) on exit."""
+
+    def __init__(self, res):
+        self.httpd, self.url = make_server(res["index"], res["site"], res["folders"], 0)
+        self.port = self.httpd.server_address[1]
+        self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
+
+    def __enter__(self):
+        self.thread.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.httpd.shutdown()
+        self.httpd.server_close()
+        self.thread.join(timeout=10)
+
+    def get(self, path: str, host: str | None = None) -> tuple[int, bytes]:
+        conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=10)
+        try:
+            conn.putrequest("GET", path, skip_host=True)
+            conn.putheader("Host", host if host is not None else f"127.0.0.1:{self.port}")
+            conn.endheaders()
+            r = conn.getresponse()
+            return r.status, r.read()
+        finally:
+            conn.close()
+
+
+def _url_path(url: str) -> str:
+    return "/" + url.split("/", 3)[3]
+
+
+def test_server_serves_only_the_site_and_the_objects_shown(obj_dir, tmp_path):
+    ds = _dataset(obj_dir, tmp_path / "a")
+    secret = _secret(tmp_path)  # beside DIR and SITE, under their common parent
+    (ds / CAT / NAME / "preview.png").write_bytes((obj_dir / "textures").glob("*.png").__next__().read_bytes())
+    os.symlink(secret, ds / CAT / NAME / "leak.txt")  # a link inside DIR to a file outside it
+    os.symlink(secret.parent, ds / CAT / NAME / "leakdir")
+    res = build_gallery(ds, tmp_path / "b" / "site", **QUIET)
+    with _Served(res) as s:
+        index = _url_path(s.url)
+        assert s.get(index)[0] == 200 and b"<html" in s.get(index)[1].lower()
+        top = index[: index.index("/b/site/")]  # URLs are paths below the common parent of DIR and SITE
+        thumb = f"{top}/a/ds/{CAT}/{NAME}/preview.png"
+        assert s.get(thumb)[0] == 200  # a shown object's thumbnail
+        assert s.get(f"{top}/b/site/data/index.js")[0] == 200
+        for path in (f"{top}/private/secret.txt", f"{top}/", f"{top}/a/", f"{top}/a/ds/{CAT}/",
+                     f"{top}/b/site/data/", f"{top}/a/ds/{CAT}/{NAME}/leak.txt",
+                     f"{top}/a/ds/{CAT}/{NAME}/leakdir/secret.txt", f"{top}/../../../etc/passwd",
+                     "/etc/passwd", "/"):
+            status, body = s.get(path)
+            assert status == 404, (path, status)
+            assert b"TOP-SECRET" not in body and b"Directory listing" not in body, path
+        for host in ("evil.example.com", "evil.example.com:80", f"attacker.test:{s.port}", "",
+                     "127.0.0.1:1", "10.0.0.1"):
+            assert s.get(index, host=host)[0] == 421, host  # DNS rebinding: a foreign Host is refused
+        for host in (f"localhost:{s.port}", "127.0.0.1", "localhost"):
+            assert s.get(index, host=host)[0] == 200, host
+
+
+def test_serve_from_the_command_line_stops_on_sigterm(obj_dir, tmp_path):
+    ds = _dataset(obj_dir, tmp_path)
+    secret = _secret(tmp_path)
+    proc = subprocess.Popen([sys.executable, "-m", "infmob_usd.cli", "gallery", str(ds), "--out",
+                             str(tmp_path / "site"), "--no-render", "--serve", "--port", "0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        line = proc.stdout.readline() + proc.stdout.readline()
+        m = re.search(r"serving http://127\.0\.0\.1:(\d+)(/\S+)", line)
+        assert m, line
+        port, index = int(m.group(1)), m.group(2)
+        top = index[: index.index("/site/")]
+        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+        conn.request("GET", f"{top}/private/{secret.name}")
+        assert conn.getresponse().status == 404
+        conn.close()
+        proc.send_signal(signal.SIGTERM)
+        assert proc.wait(timeout=15) != 0
+        assert "Traceback" not in proc.stderr.read()
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait(timeout=10)
+
+
+def test_gallery_help_says_it_binds_loopback_only(capsys):
+    with pytest.raises(SystemExit):
+        main(["gallery", "--help"])
+    assert "127.0.0.1 only" in " ".join(capsys.readouterr().out.split())
+
+
+# --- 2: a gallery never copies a file from outside an object folder ----------------------------------
+
+def _point_urdf_at(folder: Path, target: str) -> None:
+    urdf = folder / f"{NAME}.urdf"
+    text = urdf.read_text()
+    first = re.search(r'filename="([^"]+)"', text).group(1)
+    urdf.write_text(text.replace(f'filename="{first}"', f'filename="{target}"'))
+
+
+@pytest.mark.parametrize("how", ["absolute", "dotdot", "package", "mtl_map", "mtllib", "link"])
+def test_gallery_refuses_files_outside_the_object_folder(obj_dir, tmp_path, capsys, how):
+    ds = _dataset(obj_dir, tmp_path)
+    folder = ds / CAT / NAME
+    secret = _secret(tmp_path)
+    fake_obj = secret.with_name("mesh.obj")
+    fake_obj.write_text("# TOP-SECRET-CONTENT\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    rel = os.path.relpath(fake_obj, folder)
+    if how == "absolute":
+        _point_urdf_at(folder, str(fake_obj))
+    elif how in ("dotdot", "package"):
+        _point_urdf_at(folder, ("package://" if how == "package" else "") + rel)
+    elif how == "link":
+        mesh = sorted((folder / "meshes").glob("*.obj"))[0]
+        mesh.unlink()
+        os.symlink(fake_obj, mesh)
+    else:
+        mtl = sorted((folder / "meshes").glob("*.mtl"))[0]
+        text = mtl.read_text()
+        if how == "mtl_map":
+            secret.write_bytes(b"\x89PNG\r\n\x1a\nTOP-SECRET-CONTENT")
+            mtl.write_text(re.sub(r"(map_Kd\s+)\S+", lambda m: m.group(1) + os.path.relpath(secret, mtl.parent),
+                                  text))
+            assert "map_Kd" in text
+        else:
+            fake_mtl = secret.with_name("evil.mtl")
+            fake_mtl.write_text("newmtl TOP-SECRET-CONTENT\nKd 1 0 0\n")
+            obj = sorted((folder / "meshes").glob("*.obj"))[0]
+            obj.write_text(re.sub(r"(?m)^mtllib .*$", f"mtllib {os.path.relpath(fake_mtl, obj.parent)}",
+                                  obj.read_text()))
+    site = tmp_path / "site"
+    (ds / "other").mkdir()
+    shutil.copytree(obj_dir, ds / "other" / NAME)  # a clean object: the gallery is still made
+    code, out, err = run(capsys, "gallery", ds, "--out", site, "--no-render")
+    assert code == 1, err
+    skipped = [line for line in err.splitlines() if line.startswith("gallery: skipped")]
+    assert len(skipped) == 1 and str(folder) in skipped[0] and "refused" in skipped[0], err
+    assert "TOP-SECRET" not in _site_text(site)
+    assert "Traceback" not in err
+
+
+def test_gallery_skips_object_folders_linked_from_outside(obj_dir, tmp_path, capsys):
+    ds = _dataset(obj_dir, tmp_path)
+    elsewhere = tmp_path / "elsewhere" / "private_obj"
+    shutil.copytree(obj_dir, elsewhere)
+    (elsewhere / "metadata.json").write_text(
+        (elsewhere / "metadata.json").read_text().replace(f'"name": "{NAME}"', '"name": "TOP-SECRET-NAME"'))
+    os.symlink(elsewhere, ds / "linked")
+    res = build_gallery(ds, tmp_path / "site", **QUIET)
+    assert res["objects"] == 1 and "TOP-SECRET" not in _site_text(res["site"])
