@@ -218,3 +218,86 @@ def test_gallery_skips_object_folders_linked_from_outside(obj_dir, tmp_path, cap
     os.symlink(elsewhere, ds / "linked")
     res = build_gallery(ds, tmp_path / "site", **QUIET)
     assert res["objects"] == 1 and "TOP-SECRET" not in _site_text(res["site"])
+
+
+# --- 4: validate's `files` check fails references out of the folder and non-finite vertices ---------
+
+def _first_mesh(folder: Path) -> Path:
+    return sorted((folder / "meshes").glob("*.obj"))[0]
+
+
+def _etc_passwd(folder: Path, tmp_path: Path) -> None:
+    _point_urdf_at(folder, "../../../../../../../../../../etc/passwd")
+
+
+def _mesh_link(folder: Path, tmp_path: Path) -> None:
+    mesh = _first_mesh(folder)
+    outside = tmp_path / "outside.obj"
+    shutil.copyfile(mesh, outside)  # the same mesh, so only the link itself is wrong
+    mesh.unlink()
+    os.symlink(outside, mesh)
+
+
+def _nan_vertex(folder: Path, tmp_path: Path) -> None:
+    mesh = _first_mesh(folder)
+    mesh.write_text(re.sub(r"(?m)^v [^\n]*", "v nan 0 0", mesh.read_text(), count=1))
+
+
+def _inf_vertex(folder: Path, tmp_path: Path) -> None:
+    mesh = _first_mesh(folder)
+    mesh.write_text(re.sub(r"(?m)^v [^\n]*", "v 0 1e999 0", mesh.read_text(), count=1))
+
+
+@pytest.mark.parametrize("damage", [_etc_passwd, _mesh_link, _nan_vertex, _inf_vertex],
+                         ids=lambda f: f.__name__.strip("_"))
+def test_validate_files_check_fails_paths_out_of_the_folder(obj_dir, tmp_path, capsys, damage):
+    folder = tmp_path / NAME
+    shutil.copytree(obj_dir, folder)
+    damage(folder, tmp_path)
+    code, out, _ = run(capsys, "validate", "--usd-only", "--no-mass", folder)
+    assert code == 1, out
+    line = next(x for x in out.splitlines() if x.startswith(("ok ", "FAIL ")))
+    assert line.startswith("FAIL") and re.search(r"files: [^\]]*(outside|absolute|NaN)", line), line
+
+
+def test_validate_passes_the_clean_object(obj_dir, capsys):
+    code, out, _ = run(capsys, "validate", "--usd-only", "--no-mass", obj_dir)
+    assert code == 0, out
+
+
+# --- 10: texture maps of another size than the object's texture_size ----------------------------------
+
+def _png(px: int) -> bytes:
+    import cv2
+    import numpy as np
+
+    return cv2.imencode(".png", np.full((px, px, 3), 128, np.uint8))[1].tobytes()
+
+
+def test_validate_fails_maps_of_another_size_than_texture_size(obj_dir, tmp_path, capsys):
+    folder = tmp_path / NAME
+    shutil.copytree(obj_dir, folder)
+    for p in sorted((folder / "textures").glob("*.png"))[:2]:
+        p.write_bytes(_png(64))  # decodes, square: only its size against metadata's texture_size is wrong
+    code, out, _ = run(capsys, "validate", "--usd-only", "--no-mass", folder)
+    assert code == 1 and re.search(r"textures: [^\]]*64x64", out), out
+
+
+def test_a_cache_entry_of_another_size_is_a_miss(tmp_path, monkeypatch):
+    from infmob_usd.materials import cache
+
+    monkeypatch.setenv("INFMOB_USD_CACHE", str(tmp_path / "cache"))
+    cache.forget()
+    obj = infmob_usd.generate(CAT, seed=0, texture_size=16)
+    hashes = sorted((tmp_path / "cache").rglob("*.sha256.json"))
+    assert hashes
+    for h in hashes:  # every entry replaced by 64 px maps, together with its hash file
+        digests = {}
+        for png in sorted(h.parent.glob(h.name.replace(".sha256.json", "_*.png"))):
+            png.write_bytes(_png(64))
+            digests[png.stem.rsplit("_", 1)[1]] = cache.hashlib.sha256(png.read_bytes()).hexdigest()
+        h.write_text(json.dumps(digests))
+    cache.forget()
+    again = infmob_usd.generate(CAT, seed=0, texture_size=16)
+    cache.forget()
+    assert again.textures == obj.textures
