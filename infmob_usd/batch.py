@@ -15,8 +15,9 @@ cluster) and keeps ``DIR/manifest.jsonl``, one row per finished object. A run:
 * writes each object under a temporary name carrying the run's id
   (``.NAME.infmob-PID-TOKEN-XXXX.tmp``) and, at start, removes only such names left by
   runs that are no longer alive: nothing else in ``DIR`` is ever deleted;
-* never follows a symbolic link inside ``DIR`` (category folders, the manifest, ``errors/``
-  and the lock are refused if they are links), so nothing outside ``DIR`` is written;
+* never follows a symbolic link: ``DIR`` itself, category folders (checked at every object, so
+  one swapped for a link mid-run is caught), the manifest, ``errors/`` and the lock are refused
+  if they are links, so nothing outside ``DIR`` is written;
 * records a failing object's traceback in ``DIR/errors/`` without stopping the batch;
 * on ``KeyboardInterrupt`` or ``SystemExit`` (the CLI turns ``SIGTERM`` into one) terminates
   its pool's workers before returning; pool workers also die with a killed parent (Linux).
@@ -400,6 +401,9 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
     Returned rows omit the per-file digests (they are in the manifest).
     """
     out = Path(out)
+    if _is_link(out):
+        raise OutputError(f"output folder {str(out)!r} is a symbolic link; infmob never writes through a link:"
+                          f" give the real folder or another --out (nothing was written)")
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as e:
@@ -421,16 +425,12 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
 
 def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, total, log, rows, manifest_fd,
                 run_id) -> list[dict]:
-    checked: set[str] = set()
-
     def todo():
         for job in jobs:
-            if job.category not in checked:
-                cat = out / job.category
-                if _is_link(cat):
-                    raise OutputError(f"{cat} is a symbolic link; infmob writes only inside --out and never"
-                                      f" through a link: remove it or choose another --out")
-                checked.add(job.category)
+            cat = out / job.category
+            if _is_link(cat) or _is_link(out):  # at every object: a folder swapped for a link mid-run too
+                raise OutputError(f"{cat} is a symbolic link; infmob writes only inside --out and never"
+                                  f" through a link: remove it or choose another --out")
             row = rows.get((job.category, job.seed))
             if not overwrite and row is not None:
                 why = damage(job.folder(out), row)

@@ -535,6 +535,8 @@ class Entry:
 
 
 def _fresh_out(out: Path) -> None:
+    if os.path.islink(out):
+        raise _err(out, "is a symbolic link", "give a new real folder with --out (nothing was written)")
     if out.exists() and (not out.is_dir() or any(out.iterdir())):
         raise _err(out, "exists and is not empty", "give a new folder with --out (nothing was written)")
     if not out.parent.is_dir():

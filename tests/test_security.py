@@ -301,3 +301,57 @@ def test_a_cache_entry_of_another_size_is_a_miss(tmp_path, monkeypatch):
     again = infmob_usd.generate(CAT, seed=0, texture_size=16)
     cache.forget()
     assert again.textures == obj.textures
+
+
+# --- 5: output paths are never followed --------------------------------------------------------------
+
+def _linked_out(tmp_path: Path) -> tuple[Path, Path]:
+    target = tmp_path / "target"
+    target.mkdir()
+    dead = target / f".{NAME}.infmob-999999999-0123abcd-x1y2.tmp"  # a dead run's temp folder in the target
+    dead.mkdir()
+    link = tmp_path / "link"
+    os.symlink(target, link)
+    return link, target
+
+
+@pytest.mark.parametrize("argv", [
+    ["generate", CAT, "--texture-size", "16", "--workers", "1", "--out", "{link}"],
+    ["generate", CAT, "--texture-size", "16", "--workers", "1", "--out", "{link}/"],
+    ["validate", CAT, "--sweep", "1", "--texture-size", "16", "--usd-only", "--out", "{link}"],
+    ["fuzz", "1", "--categories", CAT, "--usd-only", "--workers", "1", "--out", "{link}"],
+    ["gallery", "{obj}", "--no-render", "--out", "{link}"],
+    ["parts", "export-builtin", "{link}"],
+], ids=["generate", "generate_slash", "validate_sweep", "fuzz", "gallery", "parts_export"])
+def test_out_that_is_a_link_is_a_one_line_error_and_writes_nothing(obj_dir, tmp_path, capsys, argv):
+    link, target = _linked_out(tmp_path)
+    before = sorted(target.rglob("*"))
+    code, out, err = run(capsys, *[a.format(link=link, obj=obj_dir.parent) for a in argv])
+    assert code == 2, (out, err)
+    assert len(err.strip().splitlines()) == 1 and "symbolic link" in err, err
+    assert sorted(target.rglob("*")) == before  # nothing written, the dead run's folder not removed
+
+
+def test_a_category_folder_swapped_for_a_link_mid_run_sends_nothing_outside(tmp_path):
+    out, elsewhere = tmp_path / "out", tmp_path / "elsewhere"
+    elsewhere.mkdir()
+
+    def swap(row):
+        if not (out / CAT).is_symlink():
+            os.rename(out / CAT, tmp_path / "moved")
+            os.symlink(elsewhere, out / CAT)
+
+    with pytest.raises(InfmobError, match="symbolic link"):
+        run_batch([Job(CAT, s, (), 16) for s in range(3)], out, on_row=swap)
+    assert list(elsewhere.iterdir()) == []
+    assert [p.name for p in (tmp_path / "moved").iterdir()] == [NAME]
+
+
+def test_api_save_refuses_a_link(tmp_path):
+    obj = infmob_usd.generate(CAT, seed=0, texture_size=16)
+    target = tmp_path / "target"
+    target.mkdir()
+    os.symlink(target, tmp_path / "link")
+    with pytest.raises(InfmobError, match="symbolic link"):
+        infmob_usd.save(obj, tmp_path / "link")
+    assert list(target.iterdir()) == []
