@@ -463,6 +463,8 @@ def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, t
                 record(make_one(job, str(out), run_id))
         else:
             own = pool is None
+            if own and total:  # no more processes than jobs: each worker is forked up front
+                workers = max(1, min(workers, total))
             pool = pool or ProcessPoolExecutor(max_workers=workers, initializer=_die_with_parent)
             try:
                 pending = set()

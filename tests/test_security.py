@@ -355,3 +355,27 @@ def test_api_save_refuses_a_link(tmp_path):
     with pytest.raises(InfmobError, match="symbolic link"):
         infmob_usd.save(obj, tmp_path / "link")
     assert list(target.iterdir()) == []
+
+
+# --- 6: --workers bounded ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("argv", [
+    ["generate", CAT, "--workers", "100000", "--out", "{tmp}/o"],
+    ["generate", CAT, "--workers", "0", "--out", "{tmp}/o"],
+    ["validate", "{tmp}", "--workers", "100000"],
+    ["fuzz", "3", "--workers", "100000"],
+    ["textures", "--workers", "100000"],
+    ["bench", "--workers", "100000"],
+], ids=["generate", "generate_0", "validate", "fuzz", "textures", "bench"])
+def test_absurd_worker_counts_are_one_line_errors(tmp_path, capsys, argv):
+    t0 = time.monotonic()
+    code, out, err = run(capsys, *[a.format(tmp=tmp_path) for a in argv])
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "--workers must be 1..1024" in err, err
+    assert time.monotonic() - t0 < 10 and not (tmp_path / "o").exists()
+
+
+def test_workers_are_capped_at_the_number_of_objects(tmp_path, capsys):
+    code, out, err = run(capsys, "generate", CAT, "--texture-size", "16", "--workers", "64", "--out", tmp_path)
+    assert code == 0, err
+    assert "--workers 64 capped at 1, the number of objects" in err
+    assert (tmp_path / CAT / NAME / "metadata.json").is_file()
