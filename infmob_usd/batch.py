@@ -29,6 +29,7 @@ import datetime
 import errno
 import fcntl
 import hashlib
+import itertools
 import json
 import os
 import shutil
@@ -39,6 +40,7 @@ import time
 import traceback
 from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -462,32 +464,64 @@ def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, t
             for job in todo():
                 record(make_one(job, str(out), run_id))
         else:
-            own = pool is None
-            if own and total:  # no more processes than jobs: each worker is forked up front
-                workers = max(1, min(workers, total))
-            pool = pool or ProcessPoolExecutor(max_workers=workers, initializer=_die_with_parent)
-            try:
-                pending = set()
-                it = todo()
-                for job in it:  # keep at most 2 jobs per worker in flight: memory stays flat
-                    pending.add(pool.submit(make_one, job, str(out), run_id))
-                    if len(pending) >= 2 * workers:
-                        break
-                while pending:
-                    done, pending = wait(pending, return_when=FIRST_COMPLETED)
-                    for fut in done:
-                        record(fut.result())
-                        nxt = next(it, None)
-                        if nxt is not None:
-                            pending.add(pool.submit(make_one, nxt, str(out), run_id))
-            except BaseException:
-                _stop_pool(pool)
-                raise
-            if own:
-                pool.shutdown(wait=True)
+            _run_pool(todo(), str(out), workers, pool, total, run_id, record, log)
     finally:
         progress.close()
     return results
+
+
+def _lost_row(job: Job) -> dict:
+    return {"category": job.category, "seed": job.seed, "overrides": dict(job.overrides), "traceback": None,
+            "error": "lost: a worker process died while generating it (killed, e.g. by the out-of-memory killer);"
+                     " run the same command again to redo it (finished objects are kept)"}
+
+
+def _run_pool(it, out: str, workers: int, pool, total, run_id: str, record, log) -> None:
+    """Map :func:`make_one` over the jobs of ``it`` on a process pool, at most 2 jobs per worker in flight
+    (memory stays flat). A worker killed from outside (SIGKILL, the OOM killer) breaks the pool: the
+    objects in flight are reported lost (error rows, so a rerun redoes them), and a fresh pool goes on."""
+    own = pool is None
+    if own and total:  # no more processes than jobs: each worker is forked up front
+        workers = max(1, min(workers, total))
+    carry: list[Job] = []
+    while True:
+        pool = pool or ProcessPoolExecutor(max_workers=workers, initializer=_die_with_parent)
+        pending: dict = {}
+        broken = False
+        try:
+            for job in itertools.chain(carry, it):
+                pending[pool.submit(make_one, job, out, run_id)] = job
+                if len(pending) >= 2 * workers:
+                    break
+            carry = []
+            while pending:
+                done, _ = wait(pending, return_when=FIRST_COMPLETED)
+                if any(isinstance(f.exception(), BrokenProcessPool) for f in done):
+                    done, _ = wait(pending)  # every job in flight fails with it, at once
+                    broken = True
+                for fut in done:
+                    job = pending.pop(fut)
+                    record(_lost_row(job) if isinstance(fut.exception(), BrokenProcessPool) else fut.result())
+                    nxt = None if broken else next(it, None)
+                    if nxt is not None:
+                        try:
+                            pending[pool.submit(make_one, nxt, out, run_id)] = nxt
+                        except BrokenProcessPool:
+                            carry.append(nxt)  # never started: the fresh pool runs it
+                if broken:
+                    break
+        except BaseException:
+            _stop_pool(pool)
+            raise
+        if not broken and not carry:
+            if own:
+                pool.shutdown(wait=True)
+            return
+        _stop_pool(pool)
+        if log:
+            log("a worker process died (killed from outside, e.g. by the out-of-memory killer): the objects it"
+                " was making are reported lost; going on with a fresh pool of workers")
+        pool, own = None, True
 
 
 def _run_ray(todo: Iterable[Job], out: str, address: str | None, record: Callable[[dict], None],

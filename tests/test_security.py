@@ -379,3 +379,33 @@ def test_workers_are_capped_at_the_number_of_objects(tmp_path, capsys):
     assert code == 0, err
     assert "--workers 64 capped at 1, the number of objects" in err
     assert (tmp_path / CAT / NAME / "metadata.json").is_file()
+
+
+# --- 7: a killed pool worker does not abort the batch ------------------------------------------------
+
+def test_a_killed_worker_loses_its_objects_not_the_batch(tmp_path):
+    from concurrent.futures import ProcessPoolExecutor
+
+    from infmob_usd.batch import _die_with_parent
+
+    jobs = [Job(CAT, s, (), 16) for s in range(6)]
+    pool = ProcessPoolExecutor(max_workers=2, initializer=_die_with_parent)
+    killed, notes = [], []
+
+    def kill_one(row):  # as the out-of-memory killer does, after the first object
+        if not killed:
+            pid = next(iter(pool._processes))
+            os.kill(pid, signal.SIGKILL)
+            killed.append(pid)
+
+    try:
+        rows = run_batch(jobs, tmp_path, workers=2, pool=pool, on_row=kill_one, log=notes.append)
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+    assert killed and len(rows) == 6 and sorted(r["seed"] for r in rows) == list(range(6))
+    lost = [r for r in rows if "error" in r]
+    assert lost and all(r["error"].startswith("lost: a worker process died") for r in lost), lost
+    assert any("fresh pool" in n for n in notes), notes
+    again = run_batch(jobs, tmp_path, workers=1)  # resume: only the lost objects are made
+    assert sorted(r["seed"] for r in again) == sorted(r["seed"] for r in lost)
+    assert all("error" not in r for r in again)
