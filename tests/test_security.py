@@ -409,3 +409,80 @@ def test_a_killed_worker_loses_its_objects_not_the_batch(tmp_path):
     again = run_batch(jobs, tmp_path, workers=1)  # resume: only the lost objects are made
     assert sorted(r["seed"] for r in again) == sorted(r["seed"] for r in lost)
     assert all("error" not in r for r in again)
+
+
+# --- 9: sizes bounded up front; 10: part-library paths stay inside the library ------------------------
+
+def test_gallery_refuses_a_huge_urdf_at_once(obj_dir, tmp_path, capsys):
+    ds = _dataset(obj_dir, tmp_path)
+    urdf = ds / CAT / NAME / f"{NAME}.urdf"
+    text = urdf.read_text()
+    with open(urdf, "w") as f:  # a 20 MB comment: expat 2.5 re-scans a huge token per 64 kB chunk
+        f.write(text.replace("<robot", "<!-- " + "x" * (20 << 20) + " -->\n<robot", 1))
+    (ds / "other").mkdir()
+    shutil.copytree(obj_dir, ds / "other" / NAME)
+    t0 = time.monotonic()
+    code, out, err = run(capsys, "gallery", ds, "--out", tmp_path / "site", "--no-render")
+    assert time.monotonic() - t0 < 20
+    assert code == 1 and re.search(r"gallery: skipped .*URDF \S+ is 20 MB, over the 16 MB", err), err
+
+
+@pytest.fixture(scope="module")
+def builtin_lib(tmp_path_factory) -> Path:
+    from infmob_usd.parts_tools import export_builtin
+
+    return export_builtin(tmp_path_factory.mktemp("lib") / "lib")
+
+
+def _lib_copy(builtin_lib: Path, tmp_path: Path) -> Path:
+    lib = tmp_path / "lib"
+    shutil.copytree(builtin_lib, lib)
+    return lib
+
+
+def test_parts_import_refuses_a_huge_mesh_before_reading_it(tmp_path, capsys):
+    src = tmp_path / "src"
+    src.mkdir()
+    with open(src / "big.obj", "wb") as f:  # 10 M faces are > 300 MB of OBJ: a sparse file of that size
+        f.truncate(300 << 20)
+    (src / "labels.csv").write_text("file,label\nbig.obj,knob\n")
+    t0 = time.monotonic()
+    code, out, err = run(capsys, "parts", "import", src, "--out", tmp_path / "lib")
+    assert time.monotonic() - t0 < 10
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "300 MB, over the 100 MB" in err, err
+    assert not (tmp_path / "lib").exists()
+
+
+def test_a_library_with_a_flat_collision_piece_is_refused(builtin_lib, tmp_path, capsys):
+    from infmob_usd.partlib import PartLibraryError, load_library
+
+    lib = _lib_copy(builtin_lib, tmp_path)
+    convex = sorted(lib.rglob("convex.json"))[0]
+    d = json.loads(convex.read_text())
+    d["pieces"][0] = [[x, y, 0.0] for x, y, _ in d["pieces"][0]]  # all on one plane: zero volume
+    convex.write_text(json.dumps(d))
+    with pytest.raises(PartLibraryError, match="encloses no volume"):
+        load_library(lib)
+    code, _, err = run(capsys, "generate", "cocktail_table", "--parts", lib, "--out", tmp_path / "o")
+    assert code == 2 and "encloses no volume" in err and not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("how", ["absolute", "dotdot", "link"])
+def test_a_library_index_pointing_outside_is_refused(builtin_lib, tmp_path, how):
+    from infmob_usd.partlib import PartLibraryError, load_library
+
+    lib = _lib_copy(builtin_lib, tmp_path)
+    other = _lib_copy(builtin_lib, tmp_path / "elsewhere")
+    index = json.loads((lib / "index.json").read_text())
+    entry = index["parts"][0]
+    outside = other / entry["path"]
+    if how == "absolute":
+        entry["path"] = str(outside)
+    elif how == "dotdot":
+        entry["path"] = os.path.relpath(outside, lib)
+    else:
+        shutil.rmtree(lib / entry["path"])
+        os.symlink(outside, lib / entry["path"])
+    (lib / "index.json").write_text(json.dumps(index))
+    with pytest.raises(PartLibraryError, match="outside the library"):
+        load_library(lib)
