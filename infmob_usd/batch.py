@@ -206,6 +206,27 @@ def _write_error(out: Path, job: Job) -> str:
     return os.path.relpath(path, out)
 
 
+FULL_BYTES = 1 << 20
+"""Below this much free space an object that failed to write failed for want of it (OpenUSD's writers
+report a full disk as a failed save, not as ``ENOSPC``)."""
+
+
+def disk_full(exc: BaseException, out) -> bool:
+    """Whether ``exc`` (raised writing into ``out``) means the disk or the user's quota is full."""
+    if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
+        return True
+    try:
+        st = os.statvfs(out)
+    except OSError:
+        return False
+    return st.f_bavail * st.f_frsize < FULL_BYTES
+
+
+def _disk_full_error(out, what: str) -> OutputError:
+    return OutputError(f"disk full writing {what} in {str(out)!r} (no space left on device): free some space and run"
+                       f" the same command again (finished objects are kept, nothing half-written is left)")
+
+
 def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
     """Generate and save one object; return its manifest row (or an error row).
 
@@ -222,6 +243,9 @@ def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
         folder = write_object(obj, Path(out) / job.category, formats=job.formats, run_id=run_id)
         files = file_digests(folder)
     except Exception as exc:  # one bad object must not stop the batch
+        if disk_full(exc, out):  # ... but a full disk stops it (every object after it would fail alike)
+            return {"category": job.category, "seed": job.seed, "overrides": dict(job.overrides),
+                    "error": f"{type(exc).__name__}: {' '.join(str(exc).split())}", "disk_full": True}
         try:
             tb = _write_error(Path(out), job)
         except OSError:
@@ -422,7 +446,13 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
         finally:
             _PARENT_FDS.discard(manifest_fd)
             os.close(manifest_fd)
-            _rewrite_manifest(out, rows, run_id)
+            try:
+                _rewrite_manifest(out, rows, run_id)
+            except OSError as e:  # a full disk: the appended manifest stays valid; the next run sorts it
+                if not disk_full(e, out):
+                    raise
+                if log:
+                    log(f"the manifest of {out} was left unsorted (disk full); the next run sorts it")
 
 
 def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, total, log, rows, manifest_fd,
@@ -447,10 +477,17 @@ def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, t
     results: list[dict] = []
 
     def record(row: dict) -> None:
+        if row.get("disk_full"):
+            raise _disk_full_error(out, f"{row['category']} seed {row['seed']}")
         if "error" not in row:
+            try:
+                os.write(manifest_fd, (json.dumps(row, sort_keys=True) + "\n").encode())
+                os.fsync(manifest_fd)
+            except OSError as e:
+                if disk_full(e, out):
+                    raise _disk_full_error(out, "the manifest") from None
+                raise OutputError(f"cannot append to {out / MANIFEST} ({e.strerror}); choose another --out") from None
             rows[_key(row)] = row
-            os.write(manifest_fd, (json.dumps(row, sort_keys=True) + "\n").encode())
-            os.fsync(manifest_fd)
         results.append({k: v for k, v in row.items() if k != "files"})
         progress.update()
         if on_row:

@@ -486,3 +486,52 @@ def test_a_library_index_pointing_outside_is_refused(builtin_lib, tmp_path, how)
     (lib / "index.json").write_text(json.dumps(index))
     with pytest.raises(PartLibraryError, match="outside the library"):
         load_library(lib)
+
+
+# --- 10: one-line errors instead of tracebacks --------------------------------------------------------
+
+class _FullDisk:
+    """``os`` as layers/common.py sees it, with a disk that fills after ``room`` more writes."""
+
+    def __init__(self, room: int):
+        self.room = room
+
+    def __getattr__(self, name):
+        return getattr(os, name)
+
+    def write(self, fd, data):
+        self.room -= 1
+        if self.room < 0:
+            raise OSError(28, "No space left on device")
+        return os.write(fd, data)
+
+
+def test_a_full_disk_stops_generate_with_one_line(tmp_path, capsys, monkeypatch):
+    from infmob_usd.layers import common
+
+    run(capsys, "generate", CAT, "--texture-size", "16", "--workers", "1", "--out", tmp_path)  # seed 0 is done
+    monkeypatch.setattr(common, "os", _FullDisk(room=40))  # the disk fills halfway through the next object
+    code, out, err = run(capsys, "generate", CAT, "--texture-size", "16", "--count", "4", "--workers", "1",
+                         "--out", tmp_path)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "disk full" in err, err
+    assert sorted(p.name for p in (tmp_path / CAT).iterdir()) == [NAME]  # no half-written folder left
+    monkeypatch.undo()
+    code, out, err = run(capsys, "generate", CAT, "--texture-size", "16", "--count", "2", "--workers", "1",
+                         "--out", tmp_path)
+    assert code == 0 and len(out.splitlines()) == 1, (out, err)  # resumes: only seed 1 made
+
+
+@pytest.mark.skipif(os.geteuid() != 0 or not shutil.which("mount"), reason="mounting a small tmpfs needs root")
+def test_a_really_full_disk_stops_generate_with_one_line(tmp_path):
+    mnt = tmp_path / "small"
+    mnt.mkdir()
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(mnt)], capture_output=True).returncode:
+        pytest.skip("mount not permitted here")
+    try:
+        p = subprocess.run([sys.executable, "-m", "infmob_usd.cli", "generate", CAT, "--texture-size", "16",
+                            "--count", "4", "--workers", "2", "--out", str(mnt / "o")],
+                           capture_output=True, text=True, timeout=300)
+        assert p.returncode == 2 and "disk full" in p.stderr and "Traceback" not in p.stderr, p.stderr
+        assert not [x for x in (mnt / "o").rglob("*") if ".tmp" in x.name or ".old" in x.name]
+    finally:
+        subprocess.run(["umount", str(mnt)], check=False)
