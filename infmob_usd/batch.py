@@ -48,7 +48,7 @@ from typing import Any
 from tqdm import tqdm
 
 from ._version import __version__
-from .errors import OutputError
+from .errors import InfmobError, OutputError
 from .runs import TEMP_NAME as _TEMP
 from .runs import new_run_id, temp_prefix
 
@@ -561,14 +561,75 @@ def _run_pool(it, out: str, workers: int, pool, total, run_id: str, record, log)
         pool, own = None, True
 
 
-def _run_ray(todo: Iterable[Job], out: str, address: str | None, record: Callable[[dict], None],
-             run_id: str) -> None:
+RAY_CONNECT_SECONDS = 5.0
+_H2_PREFACE = b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n" + b"\x00\x00\x00\x04\x00\x00\x00\x00\x00"  # + empty SETTINGS
+
+
+def check_ray_address(address: str | None, timeout: float = RAY_CONNECT_SECONDS) -> None:
+    """Fail within ``timeout`` seconds, with one line, when ``address`` (``HOST:PORT`` or
+    ``ray://HOST:PORT``) does not answer: ``ray.init`` itself retries for minutes. ``None``, ``auto``
+    and ``local`` (a cluster Ray finds or starts itself) are left to Ray."""
+    if not address or address in ("auto", "local"):
+        return
+    hostport = address.split("://", 1)[-1].rstrip("/")
+    host, _, port = hostport.rpartition(":")
+    if not host or not port.isdigit() or not 0 < int(port) < 65536:
+        raise InfmobError(f"--address {address!r} is not HOST:PORT (or ray://HOST:PORT); give the Ray head's"
+                          f" address, e.g. 10.0.0.5:6379")
+    try:
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout) as conn:
+            # Ray's GCS (and Ray Client) speak gRPC, i.e. HTTP/2: after the client preface the server
+            # sends its SETTINGS frame (type 4) at once. Anything else would make ray.init hang.
+            conn.sendall(_H2_PREFACE)
+            head = b""
+            while len(head) < 9:
+                chunk = conn.recv(9 - len(head))
+                if not chunk:
+                    break
+                head += chunk
+    except OSError as e:
+        why = "no answer" if isinstance(e, TimeoutError) else (e.strerror or str(e))
+        raise InfmobError(f"cannot reach the Ray cluster at {address} ({why} within {timeout:.0f} s); start it"
+                          f" (ray start --head) or fix --address") from None
+    if len(head) < 9 or head[3] != 4:
+        raise InfmobError(f"{address} answers, but not as a Ray cluster (no gRPC/HTTP2 handshake); give the"
+                          f" Ray head's address (ray start --head prints it)")
+
+
+def connect_ray(address: str | None, quiet: bool = False):
+    """``ray``, connected to the cluster at ``address`` (started locally for ``None``): one line and
+    seconds when it cannot be reached or does not speak Ray, not a 20-s retry loop and a traceback.
+    ``quiet``: Ray's own log lines while connecting (a retry warning per second) are dropped."""
+    check_ray_address(address)
+    if address and address not in ("auto", "local"):  # read when ray is imported: 3 retries of 1 s
+        os.environ.setdefault("RAY_NUM_REDIS_GET_RETRIES", "3")
     try:
         import ray
     except ImportError:
-        raise RuntimeError("the ray backend needs Ray: pip install -e '.[ray]'") from None
-    if not ray.is_initialized():
+        raise InfmobError("the ray backend needs Ray: pip install -e '.[ray]'") from None
+    if ray.is_initialized():
+        return ray
+    saved = os.dup(2) if quiet else None
+    try:
+        if quiet:
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, 2)
+            os.close(null)
         ray.init(address=address, ignore_reinit_error=True, log_to_driver=False)
+    except Exception as e:  # noqa: BLE001 - ConnectionError, RuntimeError, RpcError ... all the same to us
+        first = next((line for line in str(e).splitlines() if line.strip()), type(e).__name__)
+        raise InfmobError(f"cannot connect to the Ray cluster at {address or 'a new local cluster'}"
+                          f" ({first[:160]}); check --address (ray status on the head node)") from None
+    finally:
+        if saved is not None:
+            os.dup2(saved, 2)
+            os.close(saved)
+    return ray
+
+
+def _run_ray(todo: Iterable[Job], out: str, address: str | None, record: Callable[[dict], None],
+             run_id: str) -> None:
+    ray = connect_ray(address)
     remote = ray.remote(make_one)
     window = max(2 * int(ray.cluster_resources().get("CPU", 1)), 2)
     it = iter(todo)

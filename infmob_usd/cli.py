@@ -275,6 +275,10 @@ def cmd_generate(args) -> int:
     workers = _workers(args.workers, len(categories) * args.count)
     if args.address and args.backend != "ray":
         return _fail("--address is only used with --backend ray; add --backend ray or drop --address")
+    if args.backend == "ray":
+        from .batch import check_ray_address
+
+        check_ray_address(args.address)  # seconds, not the 20 s ray.init retries for
     parts, share = None, 0.5
     if args.parts_share is not None and args.parts is None:
         return _fail("--parts-share needs --parts LIB")
@@ -284,6 +288,10 @@ def cmd_generate(args) -> int:
 
         share = check_share(args.parts_share if args.parts_share is not None else 0.5)
         parts = str(Path(load_library(args.parts).root).resolve())  # a bad library fails before anything is written
+    if args.backend == "ray":
+        from .batch import connect_ray
+
+        connect_ray(args.address, quiet=True)  # before anything is written
     out = _out_dir(args.out)
     items = tuple(sorted(overrides.items()))
     jobs = (Job(c, seed, items, args.texture_size, formats, parts, share)
@@ -633,8 +641,14 @@ COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "v
 def main(argv: list[str] | None = None) -> int:
     import signal
 
+    if argv is None:  # the command line, not a test calling main()
+        for stream in (sys.stdout, sys.stderr):  # an ASCII terminal (LC_ALL=C, PYTHONIOENCODING=ascii) or a
+            try:  # folder name that is not UTF-8 prints escaped, never as a UnicodeEncodeError
+                stream.reconfigure(errors="backslashreplace")
+            except (AttributeError, ValueError):
+                pass
     args = _parser().parse_args(argv)
-    if argv is None:  # the command line, not a test calling main(): SIGTERM stops like Ctrl-C
+    if argv is None:  # SIGTERM stops like Ctrl-C
         signal.signal(signal.SIGTERM, _on_sigterm)
     try:
         return COMMANDS[args.command](args)

@@ -71,6 +71,11 @@ def check_output_dir(out: Path) -> Path:
     symbolic link (checked at every object written: a folder swapped for a link while a run goes on
     must not send the rest of the run elsewhere)."""
     out = Path(out)
+    try:
+        str(out).encode("utf-8")
+    except UnicodeEncodeError:  # OpenUSD takes paths as UTF-8 and fails on every object
+        raise OutputError(f"output folder {os.fsencode(out).decode('utf-8', 'backslashreplace')} is not valid"
+                          f" UTF-8; OpenUSD cannot write there: give a folder whose name is UTF-8") from None
     if os.path.islink(out):
         raise OutputError(f"output folder {str(out)!r} is a symbolic link; infmob never writes through a link:"
                           f" give the real folder or another --out (nothing was written)")

@@ -535,3 +535,105 @@ def test_a_really_full_disk_stops_generate_with_one_line(tmp_path):
         assert not [x for x in (mnt / "o").rglob("*") if ".tmp" in x.name or ".old" in x.name]
     finally:
         subprocess.run(["umount", str(mnt)], check=False)
+
+
+def _cli(*argv, env=None, timeout=120) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "infmob_usd.cli", *map(os.fsdecode, argv)], capture_output=True,
+                          timeout=timeout, env={**os.environ, **(env or {})})
+
+
+def test_non_utf8_folders_and_an_ascii_terminal_are_one_line_or_escaped(obj_dir, tmp_path):
+    bad = Path(os.fsdecode(os.fsencode(str(tmp_path)) + b"/\xff\xfe"))
+    p = _cli("generate", CAT, "--texture-size", "16", "--workers", "1", "--out", bad)
+    err = p.stderr.decode()
+    assert p.returncode == 2 and len(err.strip().splitlines()) == 1 and "not valid UTF-8" in err, err
+    assert not bad.exists()
+    shutil.copytree(obj_dir, bad / CAT / NAME)  # a dataset someone else named
+    for env in ({"PYTHONIOENCODING": "ascii"}, {"LC_ALL": "C", "LANG": "C"}):
+        p = _cli("validate", "--usd-only", "--no-mass", bad, env=env)
+        out, err = p.stdout.decode(), p.stderr.decode()
+        assert p.returncode == 1 and "Traceback" not in err, (env, err)
+        assert re.search(r"FAIL .*usd_open: the folder's path is not valid UTF-8", out), (env, out)
+    p = _cli("gallery", "--no-render", "--out", tmp_path / "site", bad, env={"PYTHONIOENCODING": "ascii"})
+    assert p.returncode == 0 and "Traceback" not in p.stderr.decode(), p.stderr
+    with pytest.raises(InfmobError, match="not valid UTF-8"):
+        infmob_usd.save(infmob_usd.generate(CAT, seed=0, texture_size=16), bad / "api")
+
+
+def test_ascii_stdout_prints_non_ascii_text_escaped(tmp_path):
+    folder = tmp_path / "café"  # a UTF-8 name on a terminal that cannot show it
+    p = _cli("generate", CAT, "--texture-size", "16", "--workers", "1", "--out", folder,
+             env={"PYTHONIOENCODING": "ascii"})
+    assert p.returncode == 0 and b"caf\\xe9" in p.stdout and b"Traceback" not in p.stderr, p.stderr
+
+
+API_MISUSE = [
+    (lambda obj, d: infmob_usd.save("not an object", d), "needs an object made by generate"),
+    (lambda obj, d: infmob_usd.save(None, d), "needs an object made by generate"),
+    (lambda obj, d: infmob_usd.save(obj, 5), "folder must be a folder path"),
+    (lambda obj, d: infmob_usd.save(obj, None), "folder must be a folder path"),
+    (lambda obj, d: infmob_usd.save(obj, d, formats=5), "formats must be"),
+    (lambda obj, d: infmob_usd.save(obj, d, formats=[1]), "formats must be"),
+    (lambda obj, d: infmob_usd.generate(CAT, texture_size=16, parts=5), "parts must be a folder path"),
+    (lambda obj, d: infmob_usd.generate(CAT, texture_size=16, parts_share="x"), "parts share must be a number"),
+    (lambda obj, d: infmob_usd.generate(CAT, texture_size=16, parts_share=2), r"parts share must be .* got 2"),
+    (lambda obj, d: infmob_usd.generate(CAT, texture_size=16, parts_share=-0.1), "parts share must be"),
+    (lambda obj, d: infmob_usd.generate(CAT, seed="a", texture_size=16), "seed must be an integer"),
+    (lambda obj, d: infmob_usd.generate(CAT, texture_size="16"), "texture size must be"),
+    (lambda obj, d: infmob_usd.generate(123), "unknown category"),
+]
+
+
+@pytest.mark.parametrize("call, message", API_MISUSE, ids=[m for _, m in API_MISUSE])
+def test_api_misuse_raises_typed_errors(obj_dir, tmp_path, call, message):
+    obj = infmob_usd.generate(CAT, seed=0, texture_size=16)
+    with pytest.raises(InfmobError, match=message) as info:
+        call(obj, tmp_path / "o")
+    assert isinstance(info.value, (TypeError, ValueError, KeyError)), type(info.value)
+    assert not (tmp_path / "o").exists()
+
+
+def test_parts_share_without_a_library_is_a_no_op(tmp_path):
+    a = infmob_usd.save(infmob_usd.generate(CAT, seed=0, texture_size=16), tmp_path / "a", "urdf")
+    b = infmob_usd.save(infmob_usd.generate(CAT, seed=0, texture_size=16, parts_share=1.0), tmp_path / "b", "urdf")
+    assert (a / f"{NAME}.urdf").read_bytes() == (b / f"{NAME}.urdf").read_bytes()
+
+
+def test_an_unreachable_ray_address_fails_in_seconds(tmp_path, capsys):
+    t0 = time.monotonic()
+    code, _, err = run(capsys, "generate", CAT, "--backend", "ray", "--address", "127.0.0.1:1", "--out", tmp_path / "o")
+    assert time.monotonic() - t0 < 10
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "cannot reach the Ray cluster" in err, err
+    assert not (tmp_path / "o").exists()
+    code, _, err = run(capsys, "generate", CAT, "--backend", "ray", "--address", "nonsense", "--out", tmp_path / "o")
+    assert code == 2 and "HOST:PORT" in err
+
+
+def test_a_ray_address_that_is_not_ray_fails_in_seconds(tmp_path):
+    pytest.importorskip("ray")
+    import socket
+
+    srv = socket.create_server(("127.0.0.1", 0))  # accepts, then says nothing Ray understands
+    port = srv.getsockname()[1]
+    stop = threading.Event()
+
+    def serve():
+        srv.settimeout(0.2)
+        while not stop.is_set():
+            try:
+                srv.accept()[0].close()
+            except OSError:
+                pass
+
+    threading.Thread(target=serve, daemon=True).start()
+    try:
+        t0 = time.monotonic()
+        p = _cli("generate", CAT, "--backend", "ray", "--address", f"127.0.0.1:{port}", "--out", tmp_path / "o",
+                 timeout=60)
+        err = p.stderr.decode()
+        assert time.monotonic() - t0 < 30
+        assert p.returncode == 2 and len(err.strip().splitlines()) == 1 and "Ray cluster" in err, err
+        assert not (tmp_path / "o").exists()
+    finally:
+        stop.set()
+        srv.close()

@@ -29,6 +29,7 @@ import hashlib
 import http.server
 import json
 import os
+import posixpath
 import re
 import stat
 import sys
@@ -128,7 +129,7 @@ def _thumbnail_in(folder: Path) -> Path | None:
 
 
 def _key(folder: Path) -> str:
-    return hashlib.sha1(os.path.realpath(folder).encode()).hexdigest()[:16]
+    return hashlib.sha1(os.fsencode(os.path.realpath(folder))).hexdigest()[:16]
 
 
 # --------------------------------------------------------------------------------------------- one object
@@ -387,7 +388,7 @@ def _real_folder(path: Path, what: str) -> Path:
 
 def _url(relpath: str) -> str:
     """A relative file path as a relative URL (``#``, ``?``, spaces ... escaped)."""
-    return urllib.parse.quote(relpath.replace(os.sep, "/"))
+    return urllib.parse.quote(relpath.replace(os.sep, "/"), errors="surrogateescape")  # a non-UTF-8 name: its bytes
 
 
 def site_paths(out: str | Path | None, root: Path) -> tuple[Path, Path]:
@@ -576,6 +577,14 @@ class _GalleryHandler(http.server.SimpleHTTPRequestHandler):
         host = (self.headers.get("Host") or "").strip().lower()
         name, _, port = host.rpartition(":") if host.count(":") == 1 else (host, "", "")
         return name in LOOPBACK_NAMES and port in ("", str(self.server.server_address[1]))
+
+    def translate_path(self, path):
+        """As http.server's, but %XX escapes decode to the file name's own bytes (a non-UTF-8 name too)."""
+        path = path.split("?", 1)[0].split("#", 1)[0]
+        trailing = path.rstrip().endswith("/")
+        words = [w for w in posixpath.normpath(urllib.parse.unquote(path, errors="surrogateescape")).split("/")
+                 if w and w not in (os.curdir, os.pardir)]
+        return os.path.join(self.directory, *words) + ("/" if trailing else "")
 
     def send_head(self):
         if not self._host_ok():

@@ -303,6 +303,11 @@ def check_usd(folder: Path) -> list[CheckResult]:
     except (OSError, ValueError) as e:
         return [CheckResult("metadata", False, f"metadata.json unreadable: {e}")]
     usd_path, urdf_path = object_files(folder, meta)
+    try:
+        str(usd_path.resolve()).encode("utf-8")
+    except UnicodeEncodeError:
+        return [CheckResult("usd_open", False, "the folder's path is not valid UTF-8 and OpenUSD opens only UTF-8"
+                            " paths: rename the folder")]
     if not usd_path.is_file():
         return [CheckResult("usd_open", False, f"{usd_path.name} is missing")]
     try:
