@@ -27,7 +27,7 @@ import infmob_usd
 from infmob_usd.batch import Job, run_batch
 from infmob_usd.cli import main
 from infmob_usd.errors import InfmobError
-from infmob_usd.validate.gallery import build_gallery, make_server
+from infmob_usd.validate.gallery import build_gallery
 
 CAT = "tv"
 NAME = f"{CAT}_000000"
@@ -71,6 +71,8 @@ class _Served:
     """The gallery server in a thread, stopped (bounded) on exit."""
 
     def __init__(self, res):
+        from infmob_usd.validate.gallery import make_server
+
         self.httpd, self.url = make_server(res["index"], res["site"], res["folders"], 0)
         self.port = self.httpd.server_address[1]
         self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
