@@ -771,6 +771,46 @@ def _mobility_parts(obj: Path, units: str, up: str) -> tuple[list, list[str]]:
     return out, rejected
 
 
+def _labelled_meshes(src: Path, csv_path: Path, units: str, up: str, licence: str) -> list[tuple]:
+    """The meshes a ``labels.csv`` lists (``(label, id, source, licence, v, f, where, overrides)``): each
+    line checked (a file inside ``src``, a known label, units and axes), its mesh read and oriented."""
+    found = []
+    try:
+        rows = list(csv.DictReader(csv_path.read_text().splitlines()))
+    except (OSError, UnicodeDecodeError, csv.Error) as e:
+        raise _err(csv_path, f"unreadable CSV ({e})", "write it as UTF-8 with a header line") from None
+    if not rows or "file" not in rows[0] or "label" not in rows[0]:
+        raise _err(csv_path, "needs a header with columns file,label", "add them (units,up,front optional)")
+    for n, row in enumerate(rows, 2):
+        path = src / (row.get("file") or "")
+        if row.get("file") and (os.path.isabs(row["file"]) or
+                                not _within(os.path.realpath(path), os.path.realpath(src))):
+            raise _err(csv_path, f"line {n}: {row['file']!r} is outside {src}", "copy the mesh into the folder")
+        if not row.get("file") or not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES:
+            raise _err(csv_path, f"line {n}: {row.get('file')!r} is not a mesh file in {src}",
+                       f"fix the line (meshes: {', '.join(MESH_SUFFIXES)})")
+        label = row["label"]
+        if label not in LABELS:
+            raise _err(csv_path, f"line {n}: unknown label {label!r}", f"use one of {sorted(LABELS)}")
+        u = row.get("units") or units
+        if u not in UNITS:
+            raise _err(csv_path, f"line {n}: units must be one of {list(UNITS)}, got {u!r}", "fix the line")
+        ov = {}
+        for key in ("up", "front"):
+            if row.get(key):
+                if row[key] not in AXES:
+                    raise _err(csv_path, f"line {n}: {key} must be one of {list(AXES)}", "fix the line")
+                ov[key] = row[key]
+        m = read_mesh(path)
+        v = np.asarray(m.vertices, float) * UNITS[u]
+        if not ov:
+            src_up = up if up[0] in "+-" else "+" + up
+            v = v @ axis_matrix(src_up, "+x" if src_up[1] != "x" else "+y").T
+        found.append((label, _safe_id(path.stem), row.get("source") or path.name,
+                      row.get("licence") or licence or "unknown", v, np.asarray(m.faces), str(path), ov))
+    return found
+
+
 def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", labels_csv=None,
                  log=print) -> tuple[Path, list[str]]:
     """Import a source into a new library ``out``; returns ``(out, rejected lines)``.
@@ -801,39 +841,7 @@ def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", l
             found += [(lb, pid, source, licence or "PartNet-Mobility terms of use", v, f, where, {})
                       for lb, pid, source, v, f, where in got]
     elif csv_path.is_file():
-        try:
-            rows = list(csv.DictReader(csv_path.read_text().splitlines()))
-        except (OSError, UnicodeDecodeError, csv.Error) as e:
-            raise _err(csv_path, f"unreadable CSV ({e})", "write it as UTF-8 with a header line") from None
-        if not rows or "file" not in rows[0] or "label" not in rows[0]:
-            raise _err(csv_path, "needs a header with columns file,label", "add them (units,up,front optional)")
-        for n, row in enumerate(rows, 2):
-            path = src / (row.get("file") or "")
-            if row.get("file") and (os.path.isabs(row["file"]) or
-                                    not _within(os.path.realpath(path), os.path.realpath(src))):
-                raise _err(csv_path, f"line {n}: {row['file']!r} is outside {src}", "copy the mesh into the folder")
-            if not row.get("file") or not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES:
-                raise _err(csv_path, f"line {n}: {row.get('file')!r} is not a mesh file in {src}",
-                           f"fix the line (meshes: {', '.join(MESH_SUFFIXES)})")
-            label = row["label"]
-            if label not in LABELS:
-                raise _err(csv_path, f"line {n}: unknown label {label!r}", f"use one of {sorted(LABELS)}")
-            u = row.get("units") or units
-            if u not in UNITS:
-                raise _err(csv_path, f"line {n}: units must be one of {list(UNITS)}, got {u!r}", "fix the line")
-            ov = {}
-            for key in ("up", "front"):
-                if row.get(key):
-                    if row[key] not in AXES:
-                        raise _err(csv_path, f"line {n}: {key} must be one of {list(AXES)}", "fix the line")
-                    ov[key] = row[key]
-            m = read_mesh(path)
-            v = np.asarray(m.vertices, float) * UNITS[u]
-            if not ov:
-                src_up = up if up[0] in "+-" else "+" + up
-                v = v @ axis_matrix(src_up, "+x" if src_up[1] != "x" else "+y").T
-            found.append((label, _safe_id(path.stem), row.get("source") or path.name,
-                          row.get("licence") or licence or "unknown", v, np.asarray(m.faces), str(path), ov))
+        found = _labelled_meshes(src, csv_path, units, up, licence)
     else:
         raise _err(src, "holds neither PartNet-Mobility objects (mobility.urdf) nor labels.csv",
                    "give such a folder, or --labels CSV")
