@@ -15,7 +15,7 @@ import numpy as np
 from infmob_usd import geometry as g
 
 BEAM_D = 0.05  # beam depth (x)
-BRACKET_H = 0.03  # stop bracket height
+BRACKET_H = 0.03  # height of the brackets a level's beam connectors rest on
 DECK_T = {"wire": 0.03, "steel": 0.03, "wood": 0.018}  # deck thickness on the beams
 UPRIGHT_SHEET = 0.002  # upright steel
 BRACE_SHEET = 0.0015
@@ -24,10 +24,9 @@ CARTON = 0.004  # corrugated board
 
 
 # -- the storage rack's layout (``categories/storage_rack.py`` reads these) ----------------------------
-GAP = 0.005  # level <-> uprights and stop brackets
+GAP = 0.005  # level <-> uprights
 SIDE = 0.03  # goods keep this far from the uprights
-ABOVE_TOP = 0.06  # uprights reach this far above the highest raised level
-HEADROOM = 0.02  # between raised goods or brackets and the level above
+ABOVE_TOP = 0.06  # uprights reach this far above the highest level
 GOODS_LIFT = 0.001  # goods stand this far above the deck
 SHELF_U = 0.04  # boltless shelving / bin rack upright (38-40 mm angle posts)
 SHELF_BEAM = 0.04  # and its beams
