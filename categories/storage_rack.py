@@ -138,7 +138,10 @@ PARAMS = (
     Float("bin_spacing", "bin rack: spacing between levels", "m", 0.18, 0.24),
     # 72-84 in bin shelving units carry up to 8 shelves of 5 in bins (Akro-Mils AWS / Edsal bin units)
     Int("bin_levels", "bin rack: levels", "", 4, 8),
-    Float("tote_travel", "how far a tote or bin slides out, as a fraction of its depth", "", 0.5, 0.8),
+    # a tote or bin slides on the deck until its middle reaches the deck's front edge, then it is lifted off (slid
+    # further it would tip: nothing holds it up); it stands centred on the deck, so at most half its depth
+    Float("tote_travel", "how far a tote or bin slides out, as a fraction of its depth (half: its middle at the "
+          "deck's front edge)", "", 0.3, 0.5),
 )
 
 MATERIALS = {

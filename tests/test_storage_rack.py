@@ -216,3 +216,18 @@ def test_drawer_cabinets_on_pallet_levels():
         for s in ({}, every, {**every, **{m: 1.0 for m in levels_}}, *({d: 1.0} for d in drawers)):
             assert contacts(bp, s) == [], (seed, s)
     assert found >= 2
+
+
+@pytest.mark.parametrize("design", ["shelving", "bin_rack"])
+def test_totes_and_bins_stay_on_their_deck(design):
+    """Slid fully out, a tote or bin still has its middle over its level's deck (further it would tip off: it is
+    lifted off from there, not slid through the air)."""
+    for seed in range(6):
+        _, bp = make(seed, design=design)
+        for n, part in bp.parts.items():
+            if part.label not in ("box", "bin"):
+                continue
+            j = by_child(bp, n)
+            x = np.vstack([pc.vertices for pc in part.pieces])[:, 0]
+            deck_front = max(pc.bounds[1, 0] for pc in bp.parts[j.parent].pieces)
+            assert (x.min() + x.max()) / 2 + j.dofs[0].upper <= deck_front + 1e-9, (seed, n)

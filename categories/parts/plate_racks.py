@@ -29,7 +29,7 @@ END = 0.03  # rack length beyond the first and last fence
 PAD = 0.006  # rubber pad height under a wood or plastic rack
 WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
 SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
-CADDY_LIFT = 0.2  # a caddy lifts clear of its board
+FREE = 0.005  # a lift-off part is lifted this far past the point where it comes free of what locates it
 TIER_GAP = 0.02  # between a lower plate lifted fully and the upper tier's lowest wire
 TRAY_OUT = 0.8  # the drip tray slides out by this fraction of its length
 TRAY_END_WALL = 0.004  # a plastic tray's end wall (the spout hangs on it)
@@ -261,11 +261,13 @@ def rack_body(size: RackSize, plate_size: PlateSize, plate_piece: g.Piece, caddi
     f = _fences(size, plate_piece)
     pieces, zs = _style(size, f, plate_size.radius)
     board, side = side_board(pieces, f.ends, plate_size.radius, caddies, cups, size.style == "wire")
+    on_board = _board_anchors(board, caddies, cups)
     pieces.append(side)
+    pieces += [pc for k in range(caddies) for pc in caddy_pocket().placed(on_board[f"caddy_{k}"]).pieces]
     if size.feet:
         pieces += pads(pieces, f.ends)
     zc = zs + SEAT_GAP + plate_size.radius  # plate centre: its lowest point SEAT_GAP above the support
-    anchors = {**_slot_anchors(size, f, zc), **_board_anchors(board, caddies, cups),
+    anchors = {**_slot_anchors(size, f, zc), **on_board,
                "tier": Frame.at((0.0, 0.0, zc + plate_size.radius + LIFT + TIER_GAP)),
                "spout": Frame.at((f.ends[1] + TRAY_END_WALL + SPOUT_OFF, 0.0, f.z0 + SPOUT_ABOVE)),
                "drip_tray": Frame.at((f.ends[1] + RACK_TRAY["front"], 0.0, 0.0)),
@@ -360,7 +362,11 @@ CADDY = dict(x=0.11, y=0.13, h=0.14, wall=0.003)
 # a 300 ml mug: 80-85 mm across, 95 mm high, 4 mm stoneware wall (catalogue sizes)
 MUG = dict(r=0.041, h=0.095, wall=0.004)
 PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail
-CUP_LIFT = PEG["h"] + 0.025  # a mug lifts off its peg
+CUP_LIFT = PEG["h"] + FREE  # a mug or tumbler is free once its rim clears the peg's top
+# a drainer board's moulded caddy pocket (simplehuman, Joseph Joseph drainer trays: 10-20 mm deep): a 15 mm lip,
+# 3 mm thick, 2 mm clear of the caddy's base all round; the caddy is free once its base clears the lip
+POCKET = dict(h=0.015, wall=0.003, clear=0.002)
+CADDY_LIFT = POCKET["h"] + FREE
 CUP_PITCH = 0.11  # centre to centre along a row of cups (a mug and its handle: 82 + 22 mm)
 
 
@@ -392,6 +398,17 @@ def caddy(slot: str, metal: str) -> Assembly:
             pieces.append(g.box_between([xc - 0.0075, yc - 0.002, z + w], [xc + 0.0075, yc + 0.002, top], metal,
                                         bevel=0.001))
     return _standing("basket", pieces)
+
+
+def caddy_pocket(slot: str = "frame") -> Assembly:
+    """The lip of a caddy's pocket on the board, around its base (origin: the middle of the pocket's floor)."""
+    c, w = POCKET["clear"], POCKET["wall"]
+    x, y = CADDY["x"] / 2 + c, CADDY["y"] / 2 + c
+    lips = [g.box_between([-x - w, -y - w, -0.001], [x + w, -y, POCKET["h"]], slot),
+            g.box_between([-x - w, y, -0.001], [x + w, y + w, POCKET["h"]], slot),
+            g.box_between([-x - w, -y, -0.001], [-x, y, POCKET["h"]], slot),
+            g.box_between([x, -y, -0.001], [x + w, y, POCKET["h"]], slot)]
+    return Assembly.single("rack", lips, {"mount": Frame.at()})
 
 
 def cup_peg(slot: str) -> Assembly:
