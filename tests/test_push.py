@@ -114,7 +114,7 @@ def test_the_push_measure_sees_an_effort_not_the_rest_sag(folders):
 
 
 def test_efforts_follow_the_mass_not_a_role_table():
-    """The microwave of issue 11: 20 N on a 5 g button drove it 8.6 cm past 1.6 mm of travel."""
+    """A role table's 20 N on a microwave's 5 g button drove it 8.6 cm past its 1.6 mm of travel."""
     obj = infmob_usd.generate("microwave", seed=7001, texture_size=16, has_buttons=True)
     buttons = [j for j in obj.movable_joints if j.role == "button"]
     door = next(j for j in obj.movable_joints if j.role == "hinge")
