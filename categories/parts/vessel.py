@@ -42,6 +42,7 @@ from infmob_usd.assembly import Assembly, Placed
 from infmob_usd.frames import IDENTITY, Frame
 
 from . import vessel_sizes as S
+from .lids import seat_joint  # noqa: F401  (the lid family's joint, used as V.seat_joint)
 
 UP = (0.0, 0.0, 1.0)
 
@@ -561,15 +562,6 @@ def hinged_lid(radius: float, thickness: float, hinge_offset: float, slot: str, 
     return Assembly(both.parts, (J.revolute("main", "lid", tuple(hinge.origin), tuple(hinge.z), 0.0,
                                             math.radians(110), role="lid"),),
                     {"seat": IDENTITY, "hinge": hinge, "top": _at(thickness)}, {})
-
-
-def seat_joint(parent: str, closure: Placed, lift: float, turns: bool = True) -> J.JointSpec:
-    """A closure on its seat: lifts ``0..lift`` along the seat's z (its lower stop: gravity holds it
-    down), turning freely about it unless ``turns`` is false."""
-    s = closure.anchor("seat")
-    if turns:
-        return J.continuous_prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), (0.0, lift), role="lid")
-    return J.prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), 0.0, lift, role="lid")
 
 
 def spin_joint(parent: str, part: Placed) -> J.JointSpec:
