@@ -15,8 +15,9 @@ from infmob_usd.assembly import Placed
 
 def seat_joint(parent: str, closure: Placed, lift: float, turns: bool = True) -> J.JointSpec:
     """A closure on its seat: lifts ``0..lift`` along the seat's z (its lower stop: gravity holds it
-    down), turning freely about it unless ``turns`` is false."""
+    down), turning freely about it unless ``turns`` is false. Its role is ``lift_off``: the core caps the
+    lift at a hand's (:data:`infmob_usd.lift_off.LIFT_OFF`)."""
     s = closure.anchor("seat")
     if turns:
-        return J.continuous_prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), (0.0, lift), role="lid")
-    return J.prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), 0.0, lift, role="lid")
+        return J.continuous_prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), (0.0, lift), role="lift_off")
+    return J.prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), 0.0, lift, role="lift_off")
