@@ -126,8 +126,11 @@ class TVLayout(Layout):
         L_k = S.fork_width(style == "two_legs", W, p["leg_spread"])
         self.grow(node.one("connector"), pivot=f["pivot"], r_k=f["r_k"], xs2=(f["x_bk"], f["xhb"]), L_k=L_k,
                   vesa=S.vesa_width(hw, L_k), hump=(hh, zh0, zh1))
+        # the stand keeps the set standing upright, tilted back and raised (displays.TIP_ANGLE)
+        span = S.stable_span(f["centre"], f["pivot"], p["tilt"] if stand.one("tilt") else 0.0,
+                             p["slide"] if adjust else 0.0)
         geo = dict(pivot=f["pivot"], r_k=f["r_k"], L_k=L_k, W=W, xf=xf, xs=xs, x_bk=f["x_bk"], base_t=f["base_t"],
-                   zs=(zs0, zs1), hump=(hw, zh0, zh1), sleeve_h=f["sleeve_h"], camera=bool(camera))
+                   zs=(zs0, zs1), hump=(hw, zh0, zh1), sleeve_h=f["sleeve_h"], camera=bool(camera), span=span)
         parent, tilt = self.grow(stand, **geo)
         self.grow(stand.one("tilt") or stand.one("rigid"), parent=parent, pivot=f["pivot"], upper=tilt)
         self.fix("connector", "screen")
@@ -169,10 +172,10 @@ class TVLayout(Layout):
         self.add("connector", "connector", rest)
         self.barrel = barrel
 
-    def single_post(self, node, pivot, r_k, L_k, W, xf, x_bk, base_t, zs, sleeve_h, **_):
+    def single_post(self, node, pivot, r_k, L_k, W, xf, x_bk, base_t, zs, sleeve_h, span, **_):
         p = self.p
         x_p, z_p = pivot
-        pieces = [S.pedestal_base(p["base_shape"], p["base_width"], p["base_depth"], W, base_t, x_p, xf)]
+        pieces = [S.pedestal_base(p["base_shape"], p["base_width"], p["base_depth"], W, base_t, x_p, xf, span)]
         adj = node.one("height_adjust")
         if adj is None:  # the neck swivels on a bearing disc on the base (swivel pedestal stands)
             disc, post, axis = S.swivel_neck(x_p, z_p, r_k, L_k, W, x_bk, base_t)
@@ -192,8 +195,8 @@ class TVLayout(Layout):
                                        (0, 0, 1), (0.0, p["slide"])))
         return "post", p["tilt"]
 
-    def two_legs(self, node, pivot, r_k, L_k, xf, x_bk, base_t, **_):
-        self.add("stand", "stand", S.two_legs(*pivot, r_k, L_k, xf, x_bk, base_t, self.p["base_depth"]))
+    def two_legs(self, node, pivot, r_k, L_k, xf, x_bk, base_t, span, **_):
+        self.add("stand", "stand", S.two_legs(*pivot, r_k, L_k, xf, x_bk, base_t, self.p["base_depth"], span))
         return "stand", self.p["tilt"]
 
     def wall_mount(self, node, pivot, r_k, L_k, W, xs, x_bk, zs, hump, camera, **_):
