@@ -9,12 +9,45 @@ arms reach 0.15-0.45 m (manufacturers' spec sheets: Samsung, LG, Sony; VESA MIS-
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from infmob_usd import geometry as g
 
 GAP = 0.004  # clearance between moving parts and their neighbours
+
+
+@dataclass(frozen=True)
+class Ranges:
+    """Ranges of a TV's parameters (lo, hi), m, rad or a fraction. Flat-panel TVs 24-95 in (0.6-2.1 m wide),
+    20-40 mm panels with 5-20 mm bezels and a 15-50 mm electronics box on 40-75 % x 35-60 % of the back;
+    pedestal plates 30-55 % of the width and 18-32 cm deep, feet 50-80 % of the width apart, 3-12 cm under
+    the screen; tilt brackets 7.5-22.5 degrees, height-adjustable posts 4-14 cm, swivels 15-45 degrees;
+    wall arms of 0-3 links reaching 0.15-0.45 m; curved panels 3000R-4200R; 1-7 keys (manufacturers' spec
+    sheets and owner's manuals: Samsung, LG, Sony; VESA MIS-D/E/F; Sanus, Vogel's arms)."""
+
+    width: tuple[float, float] = (0.6, 2.1)
+    depth: tuple[float, float] = (0.02, 0.04)
+    bezel: tuple[float, float] = (0.005, 0.02)
+    back_depth: tuple[float, float] = (0.015, 0.05)
+    back_width: tuple[float, float] = (0.4, 0.75)
+    back_height: tuple[float, float] = (0.35, 0.6)
+    clearance: tuple[float, float] = (0.03, 0.12)
+    base_width: tuple[float, float] = (0.3, 0.55)
+    base_depth: tuple[float, float] = (0.18, 0.32)
+    leg_spread: tuple[float, float] = (0.5, 0.8)
+    tilt: tuple[float, float] = (math.pi / 24, math.pi / 8)
+    slide: tuple[float, float] = (0.04, 0.14)
+    swivel: tuple[float, float] = (math.pi / 12, math.pi / 4)
+    arm_links: tuple[int, int] = (0, 3)
+    curve_radius: tuple[float, float] = (3.0, 4.2)
+    arm_length: tuple[float, float] = (0.15, 0.45)
+    button_count: tuple[int, int] = (1, 7)
+
+
+
+RANGES = Ranges()
 CLEAR = 0.0015  # clearance of a button in its hole
 BEZEL_T = 0.008  # bezel thickness (x)
 RIM = 0.010  # side rim thickness (y) when side buttons go through it
