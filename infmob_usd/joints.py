@@ -34,7 +34,7 @@ KINDS: dict[str, tuple[str, ...]] = {
 }
 """Each kind and the simple DoF chain it expands to, parent side first."""
 
-ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "telescope", "wheel", "lid",
+ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "telescope", "wheel", "lid", "lift_off",
          "plate", "grate", "default")
 """Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``)."""
 
