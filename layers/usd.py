@@ -12,6 +12,13 @@ Links are sibling Xforms under the root with rigid world transforms; a joint's
 ``physics:axis`` is always ``X``, the real direction carried by ``localRot0`` and
 ``localRot1`` (identical, because every link frame is world-aligned at rest).
 
+A joint's return spring (:mod:`infmob_usd.springs`) is its ``PhysicsDriveAPI`` drive: ``stiffness`` and
+``targetPosition`` at the spring's zero (beyond the rest stop: a preload), with the joint's damping.
+PhysX articulation joints have no separate spring (``PhysxJointAPI`` has none); a force drive of
+stiffness ``k`` towards ``q_ref`` is the spring ``-k (q - q_ref)``, and every UsdPhysics reader
+(PhysX, Isaac Sim, Newton's ``target_ke`` / ``target_q``) reads it. A joint without a spring keeps
+stiffness 0 (the drive is its damping only). Coupled joints: :func:`_mimic`.
+
 The geometry and interface layers are authored directly as Sdf specs (no
 ``Usd.Stage``, which recomposes on every edit), and the per-corner normals and UVs of every
 visual mesh of the object are computed in one vectorised pass: together ~5x faster than
@@ -491,6 +498,29 @@ def _quat(q) -> tuple[float, float, float, float]:
     return (q.GetReal(), *q.GetImaginary())
 
 
+def _newton_joint(uj, j, per_unit: float) -> None:
+    """What Newton's USD importer reads of a joint beyond UsdPhysics (its default resolver reads only the
+    ``newton:`` namespace, not ``physxJointAxis:*``): armature (kg or kg m^2), Coulomb friction (N or
+    N m) and the velocity limit (m/s or deg/s), as ``newton:armature``, ``newton:friction`` and
+    ``newton:velocityLimit`` (Newton 1.8, ``newton/_src/usd/schemas.py``, ``SchemaResolverNewton``)."""
+    uj.attr("float", "newton:armature", float(j.armature))
+    uj.attr("float", "newton:friction", float(j.friction))
+    uj.attr("float", "newton:velocityLimit", float(j.velocity / per_unit))
+
+
+def _mimic(uj, j, leader: str) -> None:
+    """A coupled joint as PhysX's mimic joint (``PhysxMimicJointAPI:rotX``, physx-usd-schemas 25.11: the
+    instance PhysX's parser probes on revolute and prismatic joints, whose axis is X here). PhysX's
+    relation is ``q + gearing * q_leader + offset = 0``, so gearing is ``-ratio`` and offset ``-offset``,
+    both in joint coordinates (rad, m), as Newton 1.8 reads them (``coef1 = -gearing``, ``coef0 =
+    -offset``, unconverted). PhysX itself enforces mimic joints on rotations only."""
+    m = "physxMimicJoint:rotX:"
+    uj.rel(m + "referenceJoint", leader)
+    uj.attr("token", m + "referenceJointAxis", '"rotX"', uniform=True)
+    uj.attr("float", m + "gearing", float(-j.mimic[1]))
+    uj.attr("float", m + "offset", float(-j.mimic[2]))
+
+
 def _physics(obj, hulls) -> str:
     """``physics.usda``: articulation root, rigid bodies with mass, colliders bound to physics materials,
     joints with drives, joint state, PhysX joint-axis limits and friction, and contact filters across
@@ -527,8 +557,9 @@ def _physics(obj, hulls) -> str:
         else:
             drive = "linear" if j.type == "prismatic" else "angular"
             kind = "PhysicsPrismaticJoint" if j.type == "prismatic" else "PhysicsRevoluteJoint"
+            mimic = ("PhysxMimicJointAPI:rotX",) if j.mimic is not None else ()
             uj = joints.child("def", kind, j.name, (f"PhysicsDriveAPI:{drive}", f"PhysicsJointStateAPI:{drive}",
-                                                    f"PhysxJointAxisAPI:{drive}"))
+                                                    f"PhysxJointAxisAPI:{drive}") + mimic)
             # USD angles are degrees: limits, angular velocity and angular damping (per degree; URDF's per radian)
             per_unit = 1.0 if j.type == "prismatic" else math.pi / 180
             if j.type == "prismatic":
@@ -541,7 +572,10 @@ def _physics(obj, hulls) -> str:
             rot = _quat(axis_quat(j.axis))
             dp = f"drive:{drive}:physics:"
             uj.attr("token", dp + "type", '"force"', uniform=True)
-            uj.attr("float", dp + "stiffness", 0.0)
+            # a return spring is the drive: its stiffness pulling towards the spring's zero (module docstring)
+            uj.attr("float", dp + "stiffness", float(j.stiffness * per_unit))
+            if j.stiffness > 0:
+                uj.attr("float", dp + "targetPosition", float(j.spring_ref / per_unit))
             uj.attr("float", dp + "damping", float(j.damping * per_unit))
             uj.attr("float", dp + "maxForce", float(j.effort))  # the effort limit (N or N*m)
             # the written pose is joint coordinate 0, at rest
@@ -555,6 +589,9 @@ def _physics(obj, hulls) -> str:
             armature = getattr(j, "armature", None)
             if armature is not None:
                 uj.attr("float", ax + "armature", float(armature))
+            _newton_joint(uj, j, per_unit)
+            if j.mimic is not None:
+                _mimic(uj, j, f"{rp}/Joints/{j.mimic[0]}")
         uj.rel("physics:body0", f"{rp}/{j.parent}")
         uj.rel("physics:body1", f"{rp}/{j.child}")
         local0 = np.asarray(origins[j.child]) - np.asarray(origins[j.parent])
