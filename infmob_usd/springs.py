@@ -4,20 +4,25 @@
 plunger, a self-closing hinge, a pedal-driven lid) gets a linear spring that brings it back to rest
 (its lower limit) when let go. The spring is sized from what it moves and a real return time:
 
-* ``m_eff``: the inertia the joint meets (:func:`infmob_usd.effort.free_inertias`; kg or kg m^2);
+* ``m_eff``: the inertia the joint meets (:func:`infmob_usd.effort.free_inertias`; kg or kg m^2) plus
+  the armature the MJCF gives it (:mod:`infmob_usd.effort`);
 * the spring's zero lies :data:`PRELOAD` of the range *beyond* the rest stop (``spring_ref =
   lower - PRELOAD * span``), so at rest the spring still presses the part onto its stop, as a real
-  preloaded spring does; further where that would not hold it there against gravity with twice the
-  gravity pulls it off its stop (``a_gravity``, :func:`infmob_usd.effort.gravity_at_rest`);
-* the natural frequency ``w = RETURN_UT / T`` (:data:`RETURN_UT`) with ``T`` the role's return time; ``stiffness =
+  preloaded spring does; further where gravity pulls the part off its stop, until the spring holds it
+  with :data:`GRAVITY_HOLD` times that pull (:func:`infmob_usd.effort.gravity_at_rest`);
+* the natural frequency ``w = RETURN_UT / T`` with ``T`` the role's return time; ``stiffness =
   m_eff w^2``, and damping critical (``2 m_eff w``) or what :data:`~infmob_usd.effort.DAMPING_RATE_MAX`
   allows. Critically damped, released from its far stop (``1 + PRELOAD`` ranges from the spring's
   zero), the part is back on its rest stop after ``u`` natural periods with ``(1 + u) e^-u =
-  PRELOAD / (1 + PRELOAD)``: ``u`` = 2.99 for a preload of 0.25, and :data:`RETURN_UT` leaves a margin;
-* it arrives at its stop at ``0.19 span w`` (the critically damped speed there), a gentle landing that
-  soft stops (MuJoCo's) keep within 5 % of the range;
+  PRELOAD / (1 + PRELOAD)``: ``u`` = 2.99 for a preload of 0.25; :data:`RETURN_UT` (4) leaves a margin;
+* it arrives at its stop at about ``0.1 span w``, a gentle landing that the MJCF's stiff limits keep
+  within 5 % of the range;
 * the joint's Coulomb friction is at most :data:`FRICTION_SHARE` of what the spring has left at rest
   after gravity, or the part would stick where it was released.
+
+A spring is sized on the mass and a return time, not on the force of the real part's spring: a real
+5 g appliance button pushes back with 1-3 N and returns in a few milliseconds, a spring simulators
+at a 2-4 ms step cannot land on its stop; ours returns in the role's time with ~0.01 N.
 
 Writers: MJCF ``stiffness`` + ``springref`` on the joint; USD the joint's drive (stiffness and
 ``targetPosition`` = the spring's zero, :mod:`infmob_usd.layers.usd`); URDF has no spring, so

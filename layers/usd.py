@@ -17,7 +17,9 @@ A joint's return spring (:mod:`infmob_usd.springs`) is its ``PhysicsDriveAPI`` d
 PhysX articulation joints have no separate spring (``PhysxJointAPI`` has none); a force drive of
 stiffness ``k`` towards ``q_ref`` is the spring ``-k (q - q_ref)``, and every UsdPhysics reader
 (PhysX, Isaac Sim, Newton's ``target_ke`` / ``target_q``) reads it. A joint without a spring keeps
-stiffness 0 (the drive is its damping only). Coupled joints: :func:`_mimic`.
+stiffness 0 (the drive is its damping only). The drive's ``maxForce`` is the joint's effort, plus, on
+a spring, the spring's force at the far stop (PhysX caps the whole drive force, spring included).
+Coupled joints: :func:`_mimic`.
 
 The geometry and interface layers are authored directly as Sdf specs (no
 ``Usd.Stage``, which recomposes on every edit), and the per-corner normals and UVs of every
@@ -577,7 +579,8 @@ def _physics(obj, hulls) -> str:
             if j.stiffness > 0:
                 uj.attr("float", dp + "targetPosition", float(j.spring_ref / per_unit))
             uj.attr("float", dp + "damping", float(j.damping * per_unit))
-            uj.attr("float", dp + "maxForce", float(j.effort))  # the effort limit (N or N*m)
+            # the effort limit (N or N*m); a spring's drive also carries the spring, at most at the far stop
+            uj.attr("float", dp + "maxForce", float(j.effort + j.stiffness * (j.upper - j.spring_ref)))
             # the written pose is joint coordinate 0, at rest
             uj.attr("float", f"state:{drive}:physics:position", 0.0)
             uj.attr("float", f"state:{drive}:physics:velocity", 0.0)

@@ -17,7 +17,7 @@ pytest.importorskip("newton")
 pytest.importorskip("newton_usd_schemas")
 pytestmark = pytest.mark.sim
 
-from infmob_usd.validate.newton_sim import SOLVERS, moved, rest_motion  # noqa: E402
+from infmob_usd.validate.newton_sim import SOLVERS, moved, rest_motion, spring_targets  # noqa: E402
 
 SEEDS = range(int(os.environ.get("INFMOB_NEWTON_SEEDS", "1")))
 
@@ -42,13 +42,16 @@ def folders(tmp_path_factory):
 
 def test_newton_reads_armature_velocity_and_springs(folders):
     """``newton:armature`` / ``newton:velocityLimit`` and the spring's drive reach Newton's model (before
-    they were written it read armature 0 and its default velocity limit)."""
+    they were written it read armature 0 and its default velocity limit); the spring's target needs the
+    loader recipe (:func:`spring_targets`)."""
     import newton
 
     folder, obj = folders("microwave", 0)
     b = newton.ModelBuilder()
     b.add_usd(str(folder / f"{folder.name}.usda"))
     model = b.finalize(device="cpu")
+    native = model.joint_target_q.numpy().copy()
+    assert spring_targets(model, folder / f"{folder.name}.usda") == sum(j.stiffness > 0 for j in obj.movable_joints)
     labels = [str(x).rsplit("/", 1)[-1] for x in model.joint_label]
     starts = model.joint_qd_start.numpy()
     armature, velocity = model.joint_armature.numpy(), model.joint_velocity_limit.numpy()
@@ -62,6 +65,8 @@ def test_newton_reads_armature_velocity_and_springs(folders):
         if j.stiffness > 0:
             assert ke[k] == pytest.approx(j.stiffness, rel=1e-4), j.name
             assert target[k] == pytest.approx(j.spring_ref, rel=1e-4, abs=1e-9), j.name
+            # what Newton's builder makes of a target beyond the rest stop, without the recipe
+            assert native[k] == pytest.approx(0.5 * (j.lower + j.upper), rel=1e-4), j.name
         checked += 1
     assert checked and any(j.stiffness > 0 for j in obj.movable_joints)
 

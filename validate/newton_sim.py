@@ -9,7 +9,9 @@ limits, armature and drives, as SAPIEN's and MuJoCo's rest checks are.
 What Newton 1.8 reads of our joints (``newton/_src/usd``): limits and drives from UsdPhysics (drive
 stiffness / damping / target as ``target_ke`` / ``target_kd`` / ``target_q``, a return spring included),
 ``newton:armature``, ``newton:friction`` and ``newton:velocityLimit`` (its default resolver reads only
-the ``newton:`` namespace, not ``physxJointAxis:*``), mimic joints from ``PhysxMimicJointAPI``.
+the ``newton:`` namespace, not ``physxJointAxis:*``), mimic joints from ``PhysxMimicJointAPI``. It moves a
+drive target outside the limits to mid-range, so a preloaded spring's target is put back
+(:func:`spring_targets`).
 Featherstone uses armature and drives; neither XPBD nor Featherstone applies joint friction
 (their documented limitations), so a part that only its joint friction holds (a lamp head, a tilted
 screen) sags there at the rate its drive damping allows.
@@ -57,6 +59,7 @@ def rest_motion(usd: str | Path, solver: str = "xpbd", duration: float = REST_TI
     builder = newton.ModelBuilder()
     builder.add_usd(str(usd))
     model = builder.finalize(device="cpu")
+    spring_targets(model, usd)
     s0, s1, control = model.state(), model.state(), model.control()
     newton.eval_fk(model, model.joint_q, model.joint_qd, s0)
     step = {"xpbd": newton.solvers.SolverXPBD, "featherstone": newton.solvers.SolverFeatherstone}[solver](model)
@@ -82,6 +85,30 @@ def rest_motion(usd: str | Path, solver: str = "xpbd", duration: float = REST_TI
             motion[name] = float(np.max(worst[starts[j]:end]))
             prismatic[name] = types[j] == int(newton.JointType.PRISMATIC)
     return motion, prismatic
+
+
+def spring_targets(model, usd: str | Path) -> int:
+    """Put back the drive targets of the USD's return springs, which Newton 1.8's builder moves to the
+    middle of the range when they lie outside the limits (``ModelBuilder.JointDofConfig``, ``target_q``
+    outside ``[limit_lower, limit_upper]``): a spring's zero lies beyond the rest stop (a preload, see
+    :mod:`infmob_usd.springs`), and at mid-range it would hold a button half pressed. The loader recipe
+    for Newton, as :func:`infmob_usd.validate.sim.apply_springs` is SAPIEN's. Returns how many were set."""
+    from pxr import Usd
+
+    stage = Usd.Stage.Open(str(usd))
+    targets = model.joint_target_q.numpy()
+    starts = model.joint_qd_start.numpy()
+    n = 0
+    for j, label in enumerate(model.joint_label):
+        prim = stage.GetPrimAtPath(str(label))
+        for drive, per in (("linear", 1.0), ("angular", math.pi / 180)):
+            stiff = prim.GetAttribute(f"drive:{drive}:physics:stiffness") if prim else None
+            target = prim.GetAttribute(f"drive:{drive}:physics:targetPosition") if prim else None
+            if stiff and target and target.HasAuthoredValue() and (stiff.Get() or 0) > 0:
+                targets[starts[j]] = target.Get() * per
+                n += 1
+    model.joint_target_q.assign(targets)
+    return n
 
 
 def moved(motion: dict[str, float], prismatic: dict[str, bool]) -> list[str]:
