@@ -19,8 +19,8 @@ import numpy as np
 
 from .errors import ModelError
 from .frames import IDENTITY, Frame
-from .geometry import Piece
 from .joints import JointSpec, moved_joint
+from .piece import Piece
 
 
 @dataclass(frozen=True)

@@ -16,8 +16,8 @@ import numpy as np
 
 from .assembly import Placed
 from .errors import ModelError
-from .geometry import Piece
 from .joints import JointSpec
+from .piece import Piece
 from .rotation import motion
 
 

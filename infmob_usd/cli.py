@@ -20,7 +20,15 @@ def _parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("params", help="print a category's parameter schema and growth rules")
     p.add_argument("category")
+    # in this order: `infmob --help` lists the commands so
+    for add in (_generate_command, _parts_command, _fuzz_command, _validate_command, _preview_command,
+                _stats_command, _gallery_command, _textures_command, _bench_command):
+        add(sub)
+    return ap
 
+
+def _generate_command(sub) -> None:
+    """Add the ``infmob generate`` subcommand and its options to ``sub``."""
     g = sub.add_parser("generate", help="generate objects: DIR/CATEGORY/CATEGORY_SSSSSS/ per seed")
     g.add_argument("category", help="a category id, a comma list of them, or `all`")
     g.add_argument("--count", type=int, default=1, help="objects per category (seeds S..S+N-1); default 1")
@@ -50,6 +58,9 @@ def _parser() -> argparse.ArgumentParser:
     g.add_argument("--parts-share", type=float, default=None, metavar="P",
                    help="with --parts: probability in [0, 1] that a retrievable part is retrieved; default 0.5")
 
+
+def _parts_command(sub) -> None:
+    """Add the ``infmob parts`` subcommand and its options to ``sub``."""
     pa = sub.add_parser("parts", help="part libraries: import meshes, export the built-in parts, check placement",
                         description="A part library holds part meshes with support points, scale policy and"
                         " convex pieces (format: README, 'Part libraries'). Generate with it:"
@@ -73,6 +84,9 @@ def _parser() -> argparse.ArgumentParser:
     pc.add_argument("--as-drawn", action="store_true",
                     help="only pairs generation would draw (the procedural box within the part's scale policy)")
 
+
+def _fuzz_command(sub) -> None:
+    """Add the ``infmob fuzz`` subcommand and its options to ``sub``."""
     fz = sub.add_parser("fuzz", help="generate N random (category, seed, overrides) objects and validate each",
                         description="Property test for long runs: N draws of a category, a seed and random valid"
                         " overrides (schema extremes included). Each draw must either be rejected up front with a"
@@ -86,6 +100,9 @@ def _parser() -> argparse.ArgumentParser:
     fz.add_argument("--usd-only", action="store_true", help="skip the SAPIEN checks (faster)")
     fz.add_argument("--out", default=None, help="keep the objects that fail in this folder (default: keep none)")
 
+
+def _validate_command(sub) -> None:
+    """Add the ``infmob validate`` subcommand and its options to ``sub``."""
     v = sub.add_parser("validate", help="check object folders: USD, URDF agreement, SAPIEN (and --sim physics)",
                        description="Validate object folders. Default: USD checks + SAPIEN (the URDF loads, every "
                        "movable joint reaches both limits). --sim adds rest under gravity, ground, "
@@ -114,6 +131,9 @@ def _parser() -> argparse.ArgumentParser:
                    help="parallel worker processes (generation with --sweep, and validation); default: all cores")
     v.add_argument("--verbose", "-v", action="store_true", help="print every check, not only failures")
 
+
+def _preview_command(sub) -> None:
+    """Add the ``infmob preview`` subcommand and its options to ``sub``."""
     pv = sub.add_parser("preview", help="render thumbnails, joint-sweep GIFs or a contact sheet (CPU, no display)",
                         description="Render each object folder at rest beside itself with its joints ~70% open"
                         " (preview.png) and a GIF sweeping each movable joint (sweep.gif); or with --sheet DIR one"
@@ -123,6 +143,9 @@ def _parser() -> argparse.ArgumentParser:
 
     _preview_arguments(pv)
 
+
+def _stats_command(sub) -> None:
+    """Add the ``infmob stats`` subcommand and its options to ``sub``."""
     st = sub.add_parser("stats", help="dataset statistics: joint counts, kinds, tree depth, tree edit distance")
     st.add_argument("folder", metavar="DIR", nargs="?", help="a folder of generated objects")
     st.add_argument("--grammar", metavar="CATEGORIES", default=None,
@@ -133,6 +156,10 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--json", action="store_true", help="print JSON instead of a table")
     st.add_argument("--max-pairs", type=int, default=2000,
                     help="at most this many (seeded, sampled) object pairs per group for mean TED; default 2000")
+
+
+def _gallery_command(sub) -> None:
+    """Add the ``infmob gallery`` subcommand and its options to ``sub``."""
     ga = sub.add_parser("gallery", help="a static HTML gallery of DIR: cards, filters, 3D viewer, joint sliders, stats",
                         description="Write a self-contained site (no internet, opens from file://) showing every"
                         " object under DIR as a card, a three.js viewer with one slider per movable joint, and"
@@ -141,6 +168,10 @@ def _parser() -> argparse.ArgumentParser:
     from .validate.gallery import add_arguments as _gallery_arguments
 
     _gallery_arguments(ga)
+
+
+def _textures_command(sub) -> None:
+    """Add the ``infmob textures`` subcommand and its options to ``sub``."""
     tx = sub.add_parser("textures", help="build the texture library cache ahead of a large run",
                         description="Every look an object can wear is one of a finite library (16 per palette"
                         " variant, 1072 in all); its PNG maps are made once and cached on disk in"
@@ -152,6 +183,10 @@ def _parser() -> argparse.ArgumentParser:
     tx.add_argument("--family", default=None, metavar="SPEC",
                     help="only this family (e.g. wood or plastic:black|white); default: all")
     tx.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="worker processes; default: all cores")
+
+
+def _bench_command(sub) -> None:
+    """Add the ``infmob bench`` subcommand and its options to ``sub``."""
     b = sub.add_parser("bench", help="benchmark: seconds per object by stage, memory, parallel efficiency")
     b.add_argument("--categories", default="all", help="comma list or `all` (default)")
     b.add_argument("--count", type=int, default=10, help="objects per category; default 10")
@@ -160,7 +195,6 @@ def _parser() -> argparse.ArgumentParser:
     b.add_argument("--cold", action="store_true",
                    help="every timed object starts from an empty texture cache (no library, no throughput runs)")
     b.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    return ap
 
 
 def _fail(message: str) -> int:

@@ -44,7 +44,7 @@ def _unit(v: V3, what: str) -> np.ndarray:
 
 def _rotation(axis: V3, angle: float) -> np.ndarray:
     """``(3, 3)`` rotation by ``angle`` about the unit ``axis`` (Rodrigues, as the kernel's)."""
-    from .geometry import axis_angle
+    from .rotation import axis_angle
 
     return axis_angle(_unit(axis, "rotation axis"), float(angle))
 

@@ -7,7 +7,7 @@ A piece is massed one of three ways (:func:`inertial`):
 * **hollow** (``Piece.wall``, else its material family's ``wall``): the closed mesh is the outside
   of a thin shell (a ceramic bowl, a steel tube or casing, a hollow-core door's skins): mass =
   density x wall x area with the shell's own centre of mass and inertia
-  (:func:`~infmob_usd.geometry.shell_properties`), unless the shell would outweigh the solid (a
+  (:func:`~infmob_usd.measures.shell_properties`), unless the shell would outweigh the solid (a
   part thinner than two walls, a wire, a thin plate) which is then massed solid;
 * **solid**: density x volume.
 """
@@ -18,7 +18,9 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from .geometry import _EYE3, Piece, _measure_closed, _solid_parts
+from .measures import _measure_closed, _solid_parts
+from .piece import Piece
+from .triangles import _EYE3
 
 DUMMY_MASS = 0.01
 """kg of a dummy link of a compound joint: light, never zero (zero means "compute it")."""

@@ -19,9 +19,10 @@ import numpy as np
 from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
-from .geometry import Piece, _measure_closed
 from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, wall_of
+from .measures import _measure_closed
 from .physical import dynamics
+from .piece import Piece
 from .rotation import motion
 
 

@@ -186,7 +186,7 @@ def convex_pieces(vertices: np.ndarray, faces: np.ndarray, seed: int = 0) -> lis
     for v, _f in parts:
         v = np.asarray(v, float)
         if len(v) > MAX_HULL:
-            from .geometry import _farthest_points
+            from .hulls import _farthest_points
             v = _farthest_points(v, MAX_HULL)
         if len(v) >= 4:
             out.append(v)
@@ -353,7 +353,7 @@ class LibPart:
         return frozenset(self.supports)
 
     def piece(self, material: str, name: str = ""):
-        from .geometry import Piece
+        from .piece import Piece
 
         return Piece(self.vertices, self.faces, material, self.convex, name, hulls=self.hulls)
 
@@ -394,6 +394,35 @@ def _vec3(value, path, name) -> np.ndarray:
     return a
 
 
+def _scale_of(value, pj: Path) -> dict[str, tuple[float, float]]:
+    """A part.json ``scale`` field: ``{axis: (lo, hi)}`` for x, y and z, ``0 < lo <= hi``."""
+    scale = {}
+    if not isinstance(value, dict):
+        raise _err(pj, "field 'scale' must map x, y, z to [lo, hi]", "fix that field")
+    for ax in "xyz":
+        r = value.get(ax)
+        if not (isinstance(r, list) and len(r) == 2 and all(isinstance(v, (int, float)) for v in r)
+                and 0 < r[0] <= r[1] and math.isfinite(r[1])):
+            raise _err(pj, f"field 'scale.{ax}' must be [lo, hi] with 0 < lo <= hi, got {r!r}", "fix that field")
+        scale[ax] = (float(r[0]), float(r[1]))
+    return scale
+
+
+def _hint_axis(hints: dict, pj: Path, rot: np.ndarray, k: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """A part.json ``joint_hints.axis`` turned by ``rot`` and scaled by ``k`` (to metres): ``(point, unit
+    direction)``, or None without one."""
+    if "axis" not in hints:
+        return None
+    ax = hints["axis"]
+    if not isinstance(ax, dict) or set(ax) != {"point", "direction"}:
+        raise _err(pj, "field 'joint_hints.axis' must be {\"point\": [x, y, z], \"direction\": [x, y, z]}",
+                   "fix that field")
+    u = rot @ _vec3(ax["direction"], pj, "joint_hints.axis.direction")
+    if np.linalg.norm(u) < 1e-9:
+        raise _err(pj, "field 'joint_hints.axis.direction' is zero", "give the axis direction")
+    return rot @ _vec3(ax["point"], pj, "joint_hints.axis.point") * k, u / np.linalg.norm(u)
+
+
 def _load_part(folder: Path, label: str, pid: str) -> LibPart:
     pj = folder / "part.json"
     d = _read_json(pj, "re-import the part (infmob parts import) or write its part.json")
@@ -428,28 +457,11 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
         raise _err(pj, f"supports {sorted(sup)} match no kind of {label!r}",
                    f"name them as one of {[sorted(s) for s in kinds]}")
     supports = {n: rot @ _vec3(v, pj, f"supports.{n}") * k for n, v in sorted(sup.items())}
-    scale = {}
-    if not isinstance(d["scale"], dict):
-        raise _err(pj, "field 'scale' must map x, y, z to [lo, hi]", "fix that field")
-    for ax in "xyz":
-        r = d["scale"].get(ax)
-        if not (isinstance(r, list) and len(r) == 2 and all(isinstance(v, (int, float)) for v in r)
-                and 0 < r[0] <= r[1] and math.isfinite(r[1])):
-            raise _err(pj, f"field 'scale.{ax}' must be [lo, hi] with 0 < lo <= hi, got {r!r}", "fix that field")
-        scale[ax] = (float(r[0]), float(r[1]))
+    scale = _scale_of(d["scale"], pj)
     hints = d.get("joint_hints", {})
     if not isinstance(hints, dict):
         raise _err(pj, "field 'joint_hints' must be an object", "fix that field")
-    axis = None
-    if "axis" in hints:
-        ax = hints["axis"]
-        if not isinstance(ax, dict) or set(ax) != {"point", "direction"}:
-            raise _err(pj, "field 'joint_hints.axis' must be {\"point\": [x, y, z], \"direction\": [x, y, z]}",
-                       "fix that field")
-        u = rot @ _vec3(ax["direction"], pj, "joint_hints.axis.direction")
-        if np.linalg.norm(u) < 1e-9:
-            raise _err(pj, "field 'joint_hints.axis.direction' is zero", "give the axis direction")
-        axis = (rot @ _vec3(ax["point"], pj, "joint_hints.axis.point") * k, u / np.linalg.norm(u))
+    axis = _hint_axis(hints, pj, rot, k)
     for name in ("mesh", "convex"):
         if not isinstance(d[name], str) or "/" in d[name] or d[name].startswith("."):
             raise _err(pj, f"field {name!r} must be a file name in the part's folder", "fix that field")
@@ -470,7 +482,7 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
             raise _err(folder / d["convex"], f"piece {i} must be 4..{MAX_HULL} finite points",
                        "re-import the part")
         convex.append(a @ rot.T * k)
-    from .geometry import hull_arrays
+    from .hulls import hull_arrays
 
     hulls = tuple(hull_arrays(c) for c in convex)
     return LibPart(label, pid, d["source"], d["licence"], v, f, tuple(convex), hulls, supports, scale, hints,

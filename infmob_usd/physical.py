@@ -23,9 +23,10 @@ import numpy as np
 
 from .blueprint import Blueprint, descendants
 from .errors import ModelError
-from .geometry import hull_arrays, triangle_cross
+from .hulls import hull_arrays
 from .joints import Dof
 from .rotation import axis_angle, axis_angles
+from .triangles import triangle_cross
 
 
 @dataclass(frozen=True)
@@ -363,8 +364,8 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
 
     Returns new ``(links, joints)`` lists; links and joints not changed are the same objects.
     """
-    from .geometry import box_between
     from .mass import inertial
+    from .primitives import box_between
 
     links, joints = list(links), list(joints)
     index = {link.name: i for i, link in enumerate(links)}

@@ -6,7 +6,7 @@ import os
 
 import numpy as np
 
-from infmob_usd.geometry import corner_attributes, grain_frame
+from infmob_usd.shading import corner_attributes, grain_frame
 
 # PartNet-Mobility joint type of each declared joint kind (semantics.txt)
 PM_JOINT_TYPE = {
@@ -61,8 +61,8 @@ def visual_meshes(obj) -> dict[str, list]:
     """Every visual mesh of ``obj`` per link: ``[(vname, slot, role, verts, faces, normals, uvs)]``.
 
     ``normals`` ``(3m, 3)`` and ``uvs`` ``(3m, 2)`` are per face corner, computed in one pass
-    over the whole object (:func:`~infmob_usd.geometry.corner_attributes`), UVs in each
-    piece's grain frame (:func:`~infmob_usd.geometry.grain_frame`).  While
+    over the whole object (:func:`~infmob_usd.shading.corner_attributes`), UVs in each
+    piece's grain frame (:func:`~infmob_usd.shading.grain_frame`).  While
     :func:`~infmob_usd.layers.write_object` runs, the result is kept on the object
     (``obj._visual_meshes``) so the USD and URDF writers share it.
     """
@@ -100,7 +100,7 @@ def collision_placements(link) -> list[tuple]:
     and placed there: PhysX's default contact generation (PCM) reports false deep contacts
     between convex meshes whose vertices lie far from their shape origin. A hull that is a
     rigidly moved copy of another hull of its piece (the wedges of a shell band,
-    :meth:`~infmob_usd.geometry.Piece.hull_instances`) reuses that hull's mesh (``mesh index``)
+    :meth:`~infmob_usd.piece.Piece.hull_instances`) reuses that hull's mesh (``mesh index``)
     placed by ``position`` and ``rotation``: one file per band instead of one per wedge.
     """
     hulls, instances, first = [], [], []  # every hull of the link, its instance hint, its piece's first hull

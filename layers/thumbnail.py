@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from infmob_usd.geometry import _norm, cross_rows
+from infmob_usd.triangles import _norm, cross_rows
 
 from .common import visual_meshes, write_file
 

@@ -41,7 +41,7 @@ MAX_SIZE = 4096
 TILE_METRES = 0.5
 """Metres of surface one texture repeat covers, for every family (one texel density:
 512 px maps give ~1 mm texels).  Family scales are per metre and are converted with it;
-the geometry kernel lays UVs at the same density (``infmob_usd.geometry.UV_TILE``)."""
+the geometry kernel lays UVs at the same density (``infmob_usd.shading.UV_TILE``)."""
 
 Component = tuple[float, float, float]
 """``(weight, sigma_u, sigma_v)``: one anisotropic Gaussian of a noise amplitude

@@ -1,11 +1,15 @@
 import math
+import re
+from pathlib import Path
 
 import numpy as np
 import pytest
 import trimesh
 
 from infmob_usd import geometry as g
+from infmob_usd import hulls, measures, profiles, shading
 from infmob_usd.errors import GeometryError
+from infmob_usd.rotation import axis_angle
 
 
 def _closed(piece):
@@ -82,7 +86,7 @@ def test_uvs_have_one_texel_density():
     big = g.box([1.0, 1.0, 1.0], [0, 0, 0], "m")
     span = lambda p: np.ptp(p.corner_uvs().reshape(-1, 2), axis=0)  # noqa: E731
     assert np.allclose(span(big) / span(small), 10)
-    assert np.allclose(span(big), 1.0 / g.UV_TILE)
+    assert np.allclose(span(big), 1.0 / shading.UV_TILE)
 
 
 def test_corner_normals_split_at_box_edges_and_smooth_on_cylinders():
@@ -120,7 +124,7 @@ def test_collision_hulls_stay_within_physx_vertex_limit():
     pts = rng.normal(size=(3000, 3))
     ball = ball.replace(convex=[pts / np.linalg.norm(pts, axis=1, keepdims=True) * 0.1])  # ~3000 hull vertices
     (v, f), = ball.hulls()
-    assert len(v) <= g.MAX_HULL_VERTICES
+    assert len(v) <= hulls.MAX_HULL_VERTICES
     assert trimesh.Trimesh(v, f).is_watertight
     assert np.ptp(v, axis=0).min() > 0.19  # still spans the sphere
 
@@ -150,7 +154,7 @@ def test_declared_hulls_skip_qhull_and_travel_with_transforms():
     (v, f), = c.hulls()
     assert np.array_equal(f, c.hulls_known[0][1])  # the declared hull, not a Qhull one
     m = np.eye(4)
-    m[:3, :3] = g.axis_angle([1, 0, 0], 0.3)
+    m[:3, :3] = axis_angle([1, 0, 0], 0.3)
     m[:3, 3] = [1, 2, 3]
     moved = c.transformed(m)
     (mv, mf), = moved.hulls()
@@ -166,10 +170,10 @@ def test_sections_for_keeps_the_sagitta_within_the_chord_tolerance_with_the_fewe
         n = g.sections_for(r)
         assert n % 4 == 0 and 12 <= n <= 64
         if 12 < n < 64:
-            assert r * (1 - math.cos(math.pi / n)) <= g.CHORD_TOL + 1e-12
-            assert r * (1 - math.cos(math.pi / (n - 4))) > g.CHORD_TOL  # four fewer would not do
+            assert r * (1 - math.cos(math.pi / n)) <= profiles.CHORD_TOL + 1e-12
+            assert r * (1 - math.cos(math.pi / (n - 4))) > profiles.CHORD_TOL  # four fewer would not do
     assert [g.sections_for(r) for r in (0.002, 0.01, 0.035, 0.1, 1.0)] == [12, 12, 24, 36, 64]
-    assert 360 / g.sections_for(0.0) < g.CREASE_DEG  # never so few that the normals split: flat shading
+    assert 360 / g.sections_for(0.0) < shading.CREASE_DEG  # never so few that the normals split: flat shading
     # the default of revolve and shell: a small knob gets few sections, a wide bowl many
     knob = g.revolve([(0, 0), (0.01, 0), (0.01, 0.01), (0, 0.01)], "m")
     bowl = g.shell([(0.15, 0.0), (0.16, 0.05)], 0.003, "m")
@@ -188,7 +192,7 @@ def test_simplify_profile_keeps_the_curve_within_tolerance_and_turns_gently():
     d = seg_b - seg_a
     w = np.clip(np.einsum("ijk,jk->ij", pts[:, None] - seg_a[None], d) / np.einsum("jk,jk->j", d, d), 0, 1)
     near = np.linalg.norm(pts[:, None] - (seg_a[None] + w[..., None] * d[None]), axis=2).min(1)
-    assert near.max() <= g.PROFILE_TOL + 1e-12
+    assert near.max() <= profiles.PROFILE_TOL + 1e-12
     heading = np.degrees(np.arctan2(*np.diff(out, axis=0).T[::-1]))
     assert np.abs(np.diff(heading)).max() <= 20.0 + 1e-9  # smooth normals where the curve was smooth
 
@@ -217,11 +221,11 @@ def test_batched_masses_and_the_qhull_runner_match_one_at_a_time_bit_for_bit():
                g.revolve([(0, 0), (0.1, 0), (0.08, 0.2), (0, 0.25)], "m", center=[0.3, 0, 0])]
     shells = [k % 3 == 0 for k in range(len(pieces))]
     batch = [fresh(p) for p in pieces]
-    g._measure_closed(list(zip(batch, shells)))
+    measures._measure_closed(list(zip(batch, shells)))
     assert sum("_solids" in p.__dict__ for p in batch) > len(batch) // 2
     for p, b, w in zip(pieces, batch, shells):
-        one = g._solid_parts(fresh(p), w)
-        got = g._solid_parts(b, w)
+        one = measures._solid_parts(fresh(p), w)
+        got = measures._solid_parts(b, w)
         for x, y in zip(one[1:], got[1:]):
             for px, py in zip(x, y):
                 for u, v in zip(px, py):
@@ -229,7 +233,7 @@ def test_batched_masses_and_the_qhull_runner_match_one_at_a_time_bit_for_bit():
     rng = np.random.default_rng(0)
     for n in (5, 24, 300):
         pts = rng.normal(size=(n, 3))
-        assert np.array_equal(g._simplices(pts), ConvexHull(pts).simplices)
+        assert np.array_equal(hulls._simplices(pts), ConvexHull(pts).simplices)
 
 
 def test_revolve_arrays_hands_out_its_own_faces():
@@ -243,4 +247,19 @@ def test_revolve_arrays_hands_out_its_own_faces():
     assert _closed(g.Piece(v2, f2, "m")).is_watertight
     inward = prof[::-1].copy()  # the same outline walked the other way: faces still outward
     v3, f3 = g.revolve_arrays(inward, 16)
-    assert g.mass_properties(v3, f3)[0] > 0
+    assert measures.mass_properties(v3, f3)[0] > 0
+
+
+def test_the_authoring_api_names_what_categories_use():
+    """``infmob_usd.geometry`` is the vocabulary categories build with: every ``g.<name>`` a category, a
+    part library or a worked example uses is in its ``__all__``, and every name there exists."""
+    root = Path(__file__).resolve().parents[1]
+    used = set()
+    for path in [*(root / "categories").rglob("*.py"), *(root / "docs" / "examples").glob("*.py")]:
+        text = path.read_text()
+        if "import geometry as g" in text:
+            used |= set(re.findall(r"\bg\.([A-Za-z_]\w*)", text))
+    assert used, "the scan found no category using the geometry API"
+    unlisted = sorted(used - set(g.__all__))
+    assert not unlisted, f"categories use names the geometry API does not list: {unlisted}"
+    assert all(hasattr(g, name) for name in g.__all__), [n for n in g.__all__ if not hasattr(g, n)]

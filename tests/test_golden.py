@@ -19,7 +19,8 @@ def test_files_match_the_golden_hashes(category):
     assert want, f"{category} has no golden hashes: run `python tests/golden/golden.py --update` and commit them"
     diff = golden.differences(want, golden.current([category]))
     assert not diff, (f"{len(diff)} files differ from tests/golden/hashes.txt (if the change is meant, run "
-                      "`python tests/golden/golden.py --update` and commit the reviewed diff):\n" + "\n".join(diff[:40]))
+                      "`python tests/golden/golden.py --update` and commit the reviewed diff):\n"
+                      + "\n".join(diff[:40]))
 
 
 def test_no_golden_hashes_for_unknown_categories():

@@ -154,7 +154,7 @@ def test_graph_sees_the_package():
     assert "infmob_usd.geometry" in top and "infmob_usd.layers.usd" in top
     assert "infmob_usd.validate.files" in top and "infmob_usd.categories.lamp" in top
     # edges are resolved through relative imports and `from pkg import module`
-    assert "infmob_usd.geometry" in top["infmob_usd.mass"]
+    assert "infmob_usd.piece" in top["infmob_usd.mass"]
     assert "infmob_usd.categories" in lazy["infmob_usd.api"]
 
 

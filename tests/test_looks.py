@@ -11,6 +11,7 @@ from pxr import Usd, UsdShade
 
 import infmob_usd
 from infmob_usd import geometry as g
+from infmob_usd import shading
 from infmob_usd.layers.common import visual_meshes
 from infmob_usd.materials import APPLIANCE, FAMILIES, library_look, sample_look, split_spec, synthesize
 from infmob_usd.materials.cache import _look_key
@@ -23,12 +24,12 @@ def _u_extent(piece: g.Piece, facing: int) -> tuple[float, float]:
     uv = piece.corner_uvs()
     n = piece.face_normals()
     sel = np.abs(n[:, facing]) > 0.9
-    span = np.ptp(uv[sel].reshape(-1, 2), axis=0) * g.UV_TILE
+    span = np.ptp(uv[sel].reshape(-1, 2), axis=0) * shading.UV_TILE
     return float(span[0]), float(span[1])
 
 
 def test_one_texel_density_for_uvs_and_textures():
-    assert TILE_METRES == g.UV_TILE
+    assert TILE_METRES == shading.UV_TILE
 
 
 def test_grain_runs_along_a_leg_a_rail_and_a_top():
@@ -42,12 +43,12 @@ def test_grain_runs_along_a_leg_a_rail_and_a_top():
     top = g.box([0.9, 1.6, 0.03], [0, 0, 0], "wood")  # grain along the long side of a top
     assert _u_extent(top, 2) == (pytest.approx(1.6), pytest.approx(0.9))
     arm = g.cylinder([0, 0, 0], [0.3, 0, 0.3], 0.01, "chrome")  # a slanted tube: U along it
-    frame = g.grain_frame(arm.vertices)
+    frame = shading.grain_frame(arm.vertices)
     np.testing.assert_allclose(frame[:, 0], [2 ** -0.5, 0, 2 ** -0.5], atol=1e-9)
 
 
 def test_a_box_long_in_x_keeps_the_world_projection():
-    np.testing.assert_array_equal(g.grain_frame(g.box([1.0, 0.5, 0.1], [0, 0, 0], "m").vertices), np.eye(3))
+    np.testing.assert_array_equal(shading.grain_frame(g.box([1.0, 0.5, 0.1], [0, 0, 0], "m").vertices), np.eye(3))
 
 
 def _gradients(img: np.ndarray) -> tuple[float, float]:

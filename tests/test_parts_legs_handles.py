@@ -9,8 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from infmob_usd import api
-from infmob_usd import geometry as g
+from infmob_usd import api, measures, triangles
 from infmob_usd.categories.parts import hardware, tables
 
 
@@ -18,7 +17,7 @@ from infmob_usd.categories.parts import hardware, tables
 def test_bow_handle_stands_on_its_feet(length):
     asm = hardware.bow_handle(length, "handle")
     (piece,) = asm.parts[asm.root].pieces
-    assert g.is_closed(piece.faces) and g.solids(piece)[0][0] > 0
+    assert triangles.is_closed(piece.faces) and measures.solids(piece)[0][0] > 0
     v = piece.vertices
     assert v[:, 2].min() == pytest.approx(0.0, abs=1e-12)  # on the face, not in it
     assert v[:, 2].max() == pytest.approx(hardware.BOW_PROJECTION, abs=1e-4)
@@ -36,7 +35,7 @@ def test_hairpin_and_tube_legs_reach_floor_and_top(radius, height):
         assert v[:, 2].min() == pytest.approx(0.0, abs=1e-9)
         assert v[:, 2].max() == pytest.approx(height, abs=1e-9)
         for p in pieces:
-            assert g.is_closed(p.faces) and g.solids(p)[0][0] > 0
+            assert triangles.is_closed(p.faces) and measures.solids(p)[0][0] > 0
     plate, rod = tables.hairpin_leg(radius, height, "metal")
     top = rod.vertices[rod.vertices[:, 2] > height - tables.HAIRPIN_PLATE - 1e-9]
     lo, hi = plate.bounds

@@ -8,6 +8,7 @@ tests run everywhere.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import json
 import math
 import sys
@@ -16,7 +17,7 @@ import numpy as np
 import pytest
 
 import infmob_usd
-from infmob_usd.validate import preview
+from infmob_usd.validate import posing, preview, render_backend, studio
 
 cv2 = pytest.importorskip("cv2")
 
@@ -40,7 +41,7 @@ def renderer():
     """Skip (with what to install) where SAPIEN cannot render here."""
     pytest.importorskip("sapien", reason="the preview renderer needs sapien (pip install sapien==3.0.3)")
     try:
-        preview._stage()
+        studio._stage()
     except preview.PreviewUnavailable as exc:
         pytest.skip(f"no renderer for previews: {exc}")
     return preview
@@ -50,9 +51,9 @@ def renderer():
 
 
 def test_rest_pose_puts_links_where_metadata_says(cabinet):
-    files = preview._read_object(cabinet)
+    files = posing._read_object(cabinet)
     meta = json.loads((cabinet / "metadata.json").read_text())
-    poses = preview._forward_kinematics(files, preview._qpos_for(files, 0.0))
+    poses = posing._forward_kinematics(files, posing._qpos_for(files, 0.0))
     for link in meta["links"]:
         pose = poses[link["name"]]
         np.testing.assert_allclose(pose[:3, 3], link["origin"], atol=1e-5, err_msg=link["name"])
@@ -60,18 +61,18 @@ def test_rest_pose_puts_links_where_metadata_says(cabinet):
 
 
 def test_joint_fraction_moves_each_joint_along_its_axis(cabinet):
-    files = preview._read_object(cabinet)
+    files = posing._read_object(cabinet)
     meta = {j["name"]: j for j in json.loads((cabinet / "metadata.json").read_text())["joints"]}
     assert files.movable, "a kitchen cabinet has doors or drawers"
-    rest = preview._forward_kinematics(files, preview._qpos_for(files, 0.0))
-    q = preview._qpos_for(files, preview.OPEN_FRACTION)
-    opened = preview._forward_kinematics(files, q)
+    rest = posing._forward_kinematics(files, posing._qpos_for(files, 0.0))
+    q = posing._qpos_for(files, posing.OPEN_FRACTION)
+    opened = posing._forward_kinematics(files, q)
     for j in files.movable:
         m = meta[j.name]
         if j.type == "continuous":
             assert q[j.name] == pytest.approx(math.pi / 2)
             continue
-        gate = any(j.name in gates for gates in preview._gates(files).values())  # a door held fully open
+        gate = any(j.name in gates for gates in posing._gates(files).values())  # a door held fully open
         if m["lower"] == 0:
             assert q[j.name] == pytest.approx((1.0 if gate else 0.7) * m["upper"])
         # 1e-6: a door held fully open for the racks behind it sits at its upper limit as written (9 digits)
@@ -93,17 +94,17 @@ def test_pictures_open_a_door_before_its_racks(tmp_path):
     folder = infmob_usd.save(infmob_usd.generate("dishwasher", seed=3, texture_size=16, rack_count=2,
                                                      design="freestanding"),
                              tmp_path)
-    files = preview._read_object(folder)
-    gates = preview._gates(files)
+    files = posing._read_object(folder)
+    gates = posing._gates(files)
     meta = {j["name"]: j for j in json.loads((folder / "metadata.json").read_text())["joints"]}
     racks = [n for n in gates if meta[n]["requires_open"] == "door"]
     assert len(racks) == 2 and all(gates[n] == ["joint_door"] for n in racks)
     door = meta["joint_door"]
-    q = preview._qpos_for(files, preview.OPEN_FRACTION)
+    q = posing._qpos_for(files, posing.OPEN_FRACTION)
     assert q["joint_door"] == pytest.approx(door["upper"])
     assert all(q[n] == pytest.approx(0.7 * meta[n]["upper"]) for n in racks)
-    assert preview._qpos_for(files, {"joint_door": 0.5})["joint_door"] == pytest.approx(0.5 * door["upper"])
-    assert preview._qpos_for(files, {racks[0]: 0.3})["joint_door"] == pytest.approx(door["upper"])
+    assert posing._qpos_for(files, {"joint_door": 0.5})["joint_door"] == pytest.approx(0.5 * door["upper"])
+    assert posing._qpos_for(files, {racks[0]: 0.3})["joint_door"] == pytest.approx(door["upper"])
     for name, qs in preview._sweep_plan(files):
         if name in racks and qs[name] != 0.0:
             assert qs["joint_door"] == pytest.approx(door["upper"]), name
@@ -111,8 +112,25 @@ def test_pictures_open_a_door_before_its_racks(tmp_path):
             assert all(qs[n] == 0.0 for n in racks)
 
 
+def test_render_backend_loads_by_path():
+    """``backend_status`` probes in a child process that loads the backend module by its file path
+    (a broken Vulkan driver can crash a process): that module must import without its package."""
+    spec = importlib.util.spec_from_file_location("_infmob_probe_test", render_backend.__file__)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    assert callable(module._selftest) and "mesa-vulkan-drivers" in module.INSTALL_HINT
+
+
+def test_backend_status_agrees_with_this_process(monkeypatch, renderer):
+    """Where this process renders, the child-process probe says so too (the gallery asks it before
+    rendering thumbnails)."""
+    monkeypatch.setattr(render_backend, "_STATE", {k: v for k, v in render_backend._STATE.items() if k != "status"})
+    ok, why = preview.backend_status()
+    assert ok, why
+
+
 def test_missing_renderer_names_what_to_install(monkeypatch, cabinet):
-    monkeypatch.setattr(preview, "_STATE", {})
+    monkeypatch.setattr(render_backend, "_STATE", {})
     monkeypatch.setitem(sys.modules, "sapien", None)  # import sapien -> ImportError
     with pytest.raises(preview.PreviewUnavailable) as err:
         preview.render_object(cabinet, size=64)
@@ -123,7 +141,7 @@ def test_missing_renderer_names_what_to_install(monkeypatch, cabinet):
 
 
 def _non_background(img: np.ndarray, tol: int = 10) -> np.ndarray:
-    return (np.abs(img.astype(int) - preview.BACKGROUND) > tol).any(-1)
+    return (np.abs(img.astype(int) - studio.BACKGROUND) > tol).any(-1)
 
 
 def test_render_object_is_a_real_picture(renderer, cabinet):
@@ -148,8 +166,8 @@ def test_render_object_is_a_real_picture(renderer, cabinet):
 
 def test_opened_picture_differs_where_the_doors_and_drawers_are(renderer, cabinet):
     with renderer.ObjectRenderer(cabinet) as r:
-        rest_q = preview._qpos_for(r.files, 0.0)
-        open_q = preview._qpos_for(r.files, preview.OPEN_FRACTION)
+        rest_q = posing._qpos_for(r.files, 0.0)
+        open_q = posing._qpos_for(r.files, posing.OPEN_FRACTION)
         cam = r.camera_for(rest_q, open_q)
         r.set_qpos(rest_q)
         a = r.render(SIZE, cam)
@@ -216,7 +234,7 @@ def test_preview_writes_png_and_sweep(renderer, cabinet, tmp_path):
     left, right = png[:128, :128], png[:128, -128:]
     assert np.abs(left.astype(int) - right.astype(int)).mean() > 3, "opened panel looks like the rest panel"
     gif = Image.open(written["sweep"])
-    plan = preview._sweep_plan(preview._read_object(cabinet))
+    plan = preview._sweep_plan(posing._read_object(cabinet))
     assert gif.n_frames == len(plan) <= preview.SWEEP_MAX_FRAMES
     assert [q for _, q in plan][0] != [q for _, q in plan][-1]
     assert gif.size == (preview.SWEEP_SIZE, preview.SWEEP_SIZE + preview._caption_height(preview.SWEEP_SIZE))

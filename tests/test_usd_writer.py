@@ -7,8 +7,8 @@ import pytest
 from pxr import Sdf, Usd, UsdShade
 
 import infmob_usd
-from infmob_usd.geometry import corner_attributes, grain_frame
 from infmob_usd.layers.usd import _bounds, _visual_meshes, write_usd
+from infmob_usd.shading import corner_attributes, grain_frame
 
 
 @pytest.fixture(scope="module")

@@ -11,7 +11,7 @@ import manifold3d
 import numpy as np
 import pytest
 
-from infmob_usd import geometry as g
+from infmob_usd import profiles
 from infmob_usd.categories import vase
 from infmob_usd.categories.parts import vessel as V
 from infmob_usd.errors import ParameterError
@@ -145,7 +145,7 @@ def test_every_profile_builds_smooth_and_hollow(profile):
     # degrees from one band to the next (so its normals are smooth, not creased)
     r = np.hypot(wall.vertices[:, 0], wall.vertices[:, 1])
     rings = len(np.unique(np.round(np.arctan2(wall.vertices[:, 1], wall.vertices[:, 0]), 9)))
-    assert r.max() * (1 - np.cos(np.pi / rings)) <= g.CHORD_TOL + 1e-9
+    assert r.max() * (1 - np.cos(np.pi / rings)) <= profiles.CHORD_TOL + 1e-9
     outer = wall.vertices[np.abs(wall.vertices[:, 1]) < 1e-12]
     outer = outer[outer[:, 0] > 0]
     zs = np.unique(outer[:, 2])
@@ -165,7 +165,7 @@ def test_spline_profile_is_smooth_and_the_coarse_one_envelopes_it():
     dense, _ = V.spline_profile(ctrl, n=800, coarse=8)
     zs = np.linspace(0, 0.25, 2000)
     dev = np.abs(np.interp(zs, fine[:, 1], fine[:, 0]) - np.interp(zs, dense[:, 1], dense[:, 0]))
-    assert dev.max() <= 2 * g.PROFILE_TOL and len(fine) < 80
+    assert dev.max() <= 2 * profiles.PROFILE_TOL and len(fine) < 80
     assert fine[:, 0].max() <= 0.08 + 1e-9  # no overshoot
     zs = np.linspace(0, 0.25, 500)
     assert np.all(np.interp(zs, coarse[:, 1], coarse[:, 0]) >= np.interp(zs, fine[:, 1], fine[:, 0]) - 1e-9)

@@ -125,78 +125,55 @@ def _parse_mtl(text: str) -> dict[str, dict]:
 _MTLLIB = re.compile(r"^mtllib\s+(.+?)\s*$", re.M)
 
 
-def object_data(folder: Path, textures: dict[str, Path]) -> dict:
-    """The viewer's data for one object folder: links with visuals, joints, OBJ text, materials.
+class _Meshes:
+    """The OBJ meshes of one object and their MTL files, each read once: ``meshes`` in first-use order
+    (``{"obj": text, "mtl": [file keys]}``), ``mtl_files`` by path, their maps named by a hash of the
+    texture bytes (``textures`` gains ``{hash: path}``)."""
 
-    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role
-    and ``requires_open`` from ``metadata.json``. Texture files are named by a hash of their bytes;
-    ``textures`` gains ``{hash: path}`` for each one.
-    """
-    meta = json.loads((folder / "metadata.json").read_text())
-    urdfs = sorted(folder.glob("*.urdf"))
-    urdf = folder / f"{meta.get('name', folder.name)}.urdf"
-    if not urdf.is_file():
-        if not urdfs:
-            raise FileNotFoundError(f"no .urdf file in {folder}")
-        urdf = urdfs[0]
-    root = ET.parse(urdf).getroot()
-    meshes: list[dict] = []
-    mesh_index: dict[str, int] = {}
-    mtl_files: dict[str, dict] = {}
-    tex_hash: dict[Path, str] = {}
+    def __init__(self, base: Path, textures: dict[str, Path]):
+        self.base, self.textures = base, textures
+        self.meshes: list[dict] = []
+        self.mesh_index: dict[str, int] = {}
+        self.mtl_files: dict[str, dict] = {}
+        self.tex_hash: dict[Path, str] = {}
 
-    def texture(mtl_dir: Path, name: str) -> str | None:
+    def texture(self, mtl_dir: Path, name: str) -> str | None:
         path = (mtl_dir / name).resolve()
-        if path not in tex_hash:
+        if path not in self.tex_hash:
             if not path.is_file():
                 return None
             h = hashlib.sha256(path.read_bytes()).hexdigest()[:24]
-            tex_hash[path] = h
-            textures.setdefault(h, path)
-        return tex_hash[path]
+            self.tex_hash[path] = h
+            self.textures.setdefault(h, path)
+        return self.tex_hash[path]
 
-    def mesh(filename: str) -> int:
+    def mesh(self, filename: str) -> int:
         if filename.startswith("package://"):
             filename = filename[len("package://"):]
-        if filename in mesh_index:
-            return mesh_index[filename]
-        path = urdf.parent / filename
+        if filename in self.mesh_index:
+            return self.mesh_index[filename]
+        path = self.base / filename
         text = path.read_text()
         libs = []
         for lib in _MTLLIB.findall(text):
             key = os.path.normpath(os.path.join(os.path.dirname(filename), lib))
-            if key not in mtl_files:
-                mpath = urdf.parent / key
+            if key not in self.mtl_files:
+                mpath = self.base / key
                 mats = _parse_mtl(mpath.read_text()) if mpath.is_file() else {}
                 for m in mats.values():
                     for k in ("map_Kd", "map_Pr", "norm", "map_Bump", "bump", "map_Pm"):
                         if k in m:
-                            m[k] = texture(mpath.parent, m[k])
-                mtl_files[key] = mats
+                            m[k] = self.texture(mpath.parent, m[k])
+                self.mtl_files[key] = mats
             libs.append(key)
-        mesh_index[filename] = len(meshes)
-        meshes.append({"obj": text, "mtl": libs})
-        return mesh_index[filename]
+        self.mesh_index[filename] = len(self.meshes)
+        self.meshes.append({"obj": text, "mtl": libs})
+        return self.mesh_index[filename]
 
-    links = []
-    for link in root.findall("link"):
-        visuals = []
-        for vis in link.findall("visual"):
-            m = vis.find("geometry/mesh")
-            if m is None or not m.get("filename"):
-                continue
-            o = vis.find("origin")
-            visuals.append({"mesh": mesh(m.get("filename")),
-                            "xyz": _floats(o.get("xyz") if o is not None else None, (0, 0, 0)),
-                            "rpy": _floats(o.get("rpy") if o is not None else None, (0, 0, 0)),
-                            "scale": _floats(m.get("scale"), (1, 1, 1))})
-        links.append({"name": link.get("name"), "visuals": visuals})
-    by_name = {j["name"]: j for j in meta.get("joints", [])}
-    label = {lk["name"]: lk for lk in meta.get("links", [])}
-    for link in links:
-        info = label.get(link["name"], {})
-        link["label"] = info.get("label", "")
-        link["dummy"] = bool(info.get("dummy", False))
+
+def _joints(root, by_name: dict[str, dict]) -> list[dict]:
+    """The viewer's joints: frame, axis and limits from the URDF ``root`` (a revolute joint without limits,
+    or a continuous one, turns +-pi), kind, group, role and ``requires_open`` from ``metadata.json``."""
     joints = []
     for j in root.findall("joint"):
         o, a, lim = j.find("origin"), j.find("axis"), j.find("limit")
@@ -215,9 +192,48 @@ def object_data(folder: Path, textures: dict[str, Path]) -> dict:
             "kind": m.get("kind", jtype), "group": m.get("group", name), "role": m.get("role", ""),
             "requires_open": m.get("requires_open"),
         })
+    return joints
+
+
+def object_data(folder: Path, textures: dict[str, Path]) -> dict:
+    """The viewer's data for one object folder: links with visuals, joints, OBJ text, materials.
+
+    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role
+    and ``requires_open`` from ``metadata.json``. Texture files are named by a hash of their bytes;
+    ``textures`` gains ``{hash: path}`` for each one.
+    """
+    meta = json.loads((folder / "metadata.json").read_text())
+    urdfs = sorted(folder.glob("*.urdf"))
+    urdf = folder / f"{meta.get('name', folder.name)}.urdf"
+    if not urdf.is_file():
+        if not urdfs:
+            raise FileNotFoundError(f"no .urdf file in {folder}")
+        urdf = urdfs[0]
+    root = ET.parse(urdf).getroot()
+    table = _Meshes(urdf.parent, textures)
+    links = []
+    for link in root.findall("link"):
+        visuals = []
+        for vis in link.findall("visual"):
+            m = vis.find("geometry/mesh")
+            if m is None or not m.get("filename"):
+                continue
+            o = vis.find("origin")
+            visuals.append({"mesh": table.mesh(m.get("filename")),
+                            "xyz": _floats(o.get("xyz") if o is not None else None, (0, 0, 0)),
+                            "rpy": _floats(o.get("rpy") if o is not None else None, (0, 0, 0)),
+                            "scale": _floats(m.get("scale"), (1, 1, 1))})
+        links.append({"name": link.get("name"), "visuals": visuals})
+    by_name = {j["name"]: j for j in meta.get("joints", [])}
+    label = {lk["name"]: lk for lk in meta.get("links", [])}
+    for link in links:
+        info = label.get(link["name"], {})
+        link["label"] = info.get("label", "")
+        link["dummy"] = bool(info.get("dummy", False))
+    joints = _joints(root, by_name)
     return {"name": meta.get("name", folder.name), "category": meta.get("category", ""), "seed": meta.get("seed"),
-            "links": links, "joints": joints, "meshes": meshes, "materials": mtl_files,
-            "textures": sorted(set(tex_hash.values()))}
+            "links": links, "joints": joints, "meshes": table.meshes, "materials": table.mtl_files,
+            "textures": sorted(set(table.tex_hash.values()))}
 
 
 def card(meta: dict) -> dict:
@@ -330,6 +346,49 @@ def site_paths(out: str | Path | None, root: Path) -> tuple[Path, Path]:
     return out / "index.html", out
 
 
+def _site_for(out, root: Path) -> tuple[Path, Path]:
+    """``(index.html, site folder)`` for ``--out`` (:func:`site_paths`), refused where a folder stands in
+    the page's place or a file in the site's."""
+    index_html, site = site_paths(out, root)
+    if index_html.exists() and index_html.is_dir():
+        raise GalleryError(f"--out {index_html} is a folder: give a folder for the site or a new .html file")
+    if site.exists() and not site.is_dir():
+        raise GalleryError(f"--out {site} is a file: give a folder for the site or an .html file")
+    return index_html, site
+
+
+def _make_writable(site: Path) -> None:
+    """Create the site folder and prove it writable before any work, else a :class:`GalleryError`."""
+    try:
+        site.mkdir(parents=True, exist_ok=True)
+        probe = site / ".write_probe"
+        probe.write_text("")
+        probe.unlink()
+    except OSError as exc:
+        raise GalleryError(f"cannot write the gallery to {site} ({exc.strerror}): give a writable --out") from None
+
+
+def _card_thumbnail(folder: Path, png: Path, rel, thumbnailer) -> tuple[str | None, bool]:
+    """``(url, half)`` of a card's picture: the object's own thumbnail (``half``: a rest | opened
+    ``preview.png``, the card shows its left half), else ``png`` if fresh or rendered now, else None."""
+    own = _thumbnail_in(folder)
+    if own is not None:
+        return _url(rel(own)), own.name == "preview.png"
+    fresh = png.is_file() and png.stat().st_mtime >= (folder / "metadata.json").stat().st_mtime
+    if fresh or thumbnailer(folder, png):
+        return _url(rel(png)), False
+    return None, False
+
+
+def _write_textures(textures: dict[str, Path], texdir: Path) -> None:
+    """One ``<hash>.js`` per texture (a base64 data URI), skipping those already written."""
+    for h, path in textures.items():
+        dest = texdir / f"{h}.js"
+        if not dest.is_file():
+            uri = "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
+            _write_js(dest, "INFMOB_GALLERY.texture", h, uri)
+
+
 def build_gallery(root: str | Path, out: str | Path | None = None, render: bool = True,
                   max_pairs: int = 2000, log=print) -> dict:
     """Write the gallery of every object under ``root``; returns timings and counts.
@@ -340,22 +399,12 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
     root = Path(root)
     if not root.is_dir():
         raise GalleryError(f"{root} is not a folder: give a folder of objects written by `infmob generate`")
-    index_html, site = site_paths(out, root)
-    if index_html.exists() and index_html.is_dir():
-        raise GalleryError(f"--out {index_html} is a folder: give a folder for the site or a new .html file")
-    if site.exists() and not site.is_dir():
-        raise GalleryError(f"--out {site} is a file: give a folder for the site or an .html file")
+    index_html, site = _site_for(out, root)
     t0 = time.perf_counter()
     folders = [f for f in find_object_folders(root) if os.path.realpath(f) != os.path.realpath(site)]
     if not folders:
         raise GalleryError(f"no object folders (with metadata.json) under {root}: run `infmob generate` first")
-    try:
-        site.mkdir(parents=True, exist_ok=True)
-        probe = site / ".write_probe"
-        probe.write_text("")
-        probe.unlink()
-    except OSError as exc:
-        raise GalleryError(f"cannot write the gallery to {site} ({exc.strerror}): give a writable --out") from None
+    _make_writable(site)
     t_find = time.perf_counter() - t0
     data, objdir, texdir, thumbdir, assets = (site / "data", site / "data" / "obj", site / "data" / "tex",
                                               site / "thumbs", site / "assets")
@@ -387,17 +436,8 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
             _write_js(path, "INFMOB_GALLERY.object", key, payload)
             t2 = time.perf_counter()
             t_read += t2 - t1
-            own = _thumbnail_in(folder)
-            thumb, half = None, False
-            if own is not None:
-                thumb, half = _url(rel(own)), own.name == "preview.png"
-            else:
-                png = thumbdir / f"{key}.png"
-                fresh = png.is_file() and png.stat().st_mtime >= (folder / "metadata.json").stat().st_mtime
-                if fresh or thumbnailer(folder, png):
-                    thumb = _url(rel(png))
+            done[key] = _card_thumbnail(folder, thumbdir / f"{key}.png", rel, thumbnailer)
             t_thumb += time.perf_counter() - t2
-            done[key] = (thumb, half)
         thumb, half = done[key]
         row = card(meta)
         row.update(key=key, path=rel(folder), thumb=thumb, half=half)
@@ -406,11 +446,7 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
     if not rows:
         raise GalleryError(f"no readable object folders under {root}: " + "; ".join(errors[:3]))
     t3 = time.perf_counter()
-    for h, path in textures.items():
-        dest = texdir / f"{h}.js"
-        if not dest.is_file():
-            uri = "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
-            _write_js(dest, "INFMOB_GALLERY.texture", h, uri)
+    _write_textures(textures, texdir)
     t_tex = time.perf_counter() - t3
     t4 = time.perf_counter()
     stats = gallery_stats(metas, max_pairs=max_pairs)

@@ -72,7 +72,7 @@ def spline_profile(ctrl, n: int = 64, coarse: int = 10, min_band: float = 0.007
     The curve is a shape-preserving (PCHIP) spline of radius and height against the
     chord length of the control polygon, so it never overshoots (a flat run stays flat,
     heights stay increasing). Returns ``(fine, coarse)``: ``n`` evenly spaced samples plus
-    every control point thinned to :data:`~infmob_usd.geometry.PROFILE_TOL`
+    every control point thinned to :data:`~infmob_usd.profiles.PROFILE_TOL`
     (:func:`~infmob_usd.geometry.simplify_profile`: the visual surface), and ``coarse`` bands
     evenly spaced along the curve, none shorter than ``min_band``, bands in a nearly straight
     run merged (:func:`~infmob_usd.geometry.collision_bands`), each raised just enough that its

@@ -4,6 +4,7 @@ A change of output is then a reviewed diff of ``hashes.txt``, not a claim in a c
 
     python tests/golden/golden.py            # compare, print the files that differ (exit 1 if any)
     python tests/golden/golden.py --update   # rewrite hashes.txt from the current code; review `git diff`
+    python tests/golden/golden.py --dump DIR # also keep the files in DIR (for tests/golden/compare.py)
 
 ``tests/test_golden.py`` runs the comparison in CI. The bytes depend on the versions of the libraries that
 write them (usd-core, OpenCV, zlib, numpy); ``make test`` installs the pinned versions in constraints.txt.
@@ -23,12 +24,14 @@ TEXTURE_SIZE = 64
 FORMATS = "usd,urdf,mjcf,glb"
 
 
-def current(categories=None, seeds=SEEDS) -> dict[tuple[str, int, str], str]:
-    """``{(category, seed, relative path): sha256}`` of every file written for each category and seed."""
+def current(categories=None, seeds=SEEDS, keep: Path | None = None) -> dict[tuple[str, int, str], str]:
+    """``{(category, seed, relative path): sha256}`` of every file written for each category and seed
+    (the files kept under ``keep`` when given)."""
     import infmob_usd
 
     out = {}
     with tempfile.TemporaryDirectory() as tmp:
+        tmp = keep or tmp
         for category in categories or infmob_usd.list_categories():
             for seed in seeds:
                 obj = infmob_usd.generate(category, seed=seed, texture_size=TEXTURE_SIZE)
@@ -69,7 +72,8 @@ def differences(want: dict, got: dict) -> list[str]:
 
 
 def main(argv: list[str]) -> int:
-    got = current()
+    keep = Path(argv[argv.index("--dump") + 1]) if "--dump" in argv else None
+    got = current(keep=keep)
     if "--update" in argv:
         write(got)
         print(f"wrote {len(got)} hashes to {HASHES}")
