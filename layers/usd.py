@@ -500,6 +500,17 @@ def _quat(q) -> tuple[float, float, float, float]:
     return (q.GetReal(), *q.GetImaginary())
 
 
+def _drive(uj, j, dp: str, per_unit: float) -> None:
+    """The joint's force drive: its damping, and its return spring as stiffness towards the spring's zero
+    (module docstring); ``maxForce`` the effort (N or N m), plus the spring's force at the far stop."""
+    uj.attr("token", dp + "type", '"force"', uniform=True)
+    uj.attr("float", dp + "stiffness", float(j.stiffness * per_unit))
+    if j.stiffness > 0:
+        uj.attr("float", dp + "targetPosition", float(j.spring_ref / per_unit))
+    uj.attr("float", dp + "damping", float(j.damping * per_unit))
+    uj.attr("float", dp + "maxForce", float(j.effort + j.stiffness * (j.upper - j.spring_ref)))
+
+
 def _newton_joint(uj, j, per_unit: float) -> None:
     """What Newton's USD importer reads of a joint beyond UsdPhysics (its default resolver reads only the
     ``newton:`` namespace, not ``physxJointAxis:*``): armature (kg or kg m^2), Coulomb friction (N or
@@ -572,15 +583,7 @@ def _physics(obj, hulls) -> str:
                 uj.attr("float", "physics:upperLimit", math.degrees(j.upper))
             uj.attr("token", "physics:axis", '"X"', uniform=True)
             rot = _quat(axis_quat(j.axis))
-            dp = f"drive:{drive}:physics:"
-            uj.attr("token", dp + "type", '"force"', uniform=True)
-            # a return spring is the drive: its stiffness pulling towards the spring's zero (module docstring)
-            uj.attr("float", dp + "stiffness", float(j.stiffness * per_unit))
-            if j.stiffness > 0:
-                uj.attr("float", dp + "targetPosition", float(j.spring_ref / per_unit))
-            uj.attr("float", dp + "damping", float(j.damping * per_unit))
-            # the effort limit (N or N*m); a spring's drive also carries the spring, at most at the far stop
-            uj.attr("float", dp + "maxForce", float(j.effort + j.stiffness * (j.upper - j.spring_ref)))
+            _drive(uj, j, f"drive:{drive}:physics:", per_unit)
             # the written pose is joint coordinate 0, at rest
             uj.attr("float", f"state:{drive}:physics:position", 0.0)
             uj.attr("float", f"state:{drive}:physics:velocity", 0.0)
