@@ -37,10 +37,12 @@ from pathlib import Path
 import numpy as np
 from pxr import Gf, Sdf, Vt
 
+from infmob_usd.effort import free_inertias
 from infmob_usd.mass import principal
 
 from .common import visual_meshes, write_file
 from .meta import simready_metadata
+from .mjcf import LIMIT_SOLREF
 
 PAYLOAD = "payload"
 SUBLAYERS = ("physics.usda", "materials.usda", "geometry.usdc")
@@ -511,14 +513,23 @@ def _drive(uj, j, dp: str, per_unit: float) -> None:
     uj.attr("float", dp + "maxForce", float(j.effort + j.stiffness * (j.upper - j.spring_ref)))
 
 
-def _newton_joint(uj, j, per_unit: float) -> None:
+def _newton_joint(uj, j, per_unit: float, inertia: float) -> None:
     """What Newton's USD importer reads of a joint beyond UsdPhysics (its default resolver reads only the
     ``newton:`` namespace, not ``physxJointAxis:*``): armature (kg or kg m^2), Coulomb friction (N or
     N m) and the velocity limit (m/s or deg/s), as ``newton:armature``, ``newton:friction`` and
-    ``newton:velocityLimit`` (Newton 1.8, ``newton/_src/usd/schemas.py``, ``SchemaResolverNewton``)."""
+    ``newton:velocityLimit`` (Newton 1.8, ``newton/_src/usd/schemas.py``, ``SchemaResolverNewton``);
+    and the limits' stiffness and damping (per degree on rotations), which Featherstone applies as a
+    spring: Newton's defaults, the same for a 64 g jar lid and a 38 kg table top, make a light part's
+    stop ring past its explicit step (NaN) and let a heavy one sag. Here they are the MJCF's limit
+    (:data:`~infmob_usd.layers.mjcf.LIMIT_SOLREF`: natural frequency ``1 / (0.95 tc)``, critically
+    damped) on the joint's ``inertia`` (what it moves, with its armature)."""
     uj.attr("float", "newton:armature", float(j.armature))
     uj.attr("float", "newton:friction", float(j.friction))
     uj.attr("float", "newton:velocityLimit", float(j.velocity / per_unit))
+    if j.type != "continuous":
+        w = 1.0 / (0.95 * LIMIT_SOLREF[0])
+        uj.attr("float", "newton:limitStiffness", float(inertia * w * w * per_unit))
+        uj.attr("float", "newton:limitDamping", float(2.0 * LIMIT_SOLREF[1] * inertia * w * per_unit))
 
 
 def _mimic(uj, j, leader: str) -> None:
@@ -543,6 +554,7 @@ def _physics(obj, hulls) -> str:
     origins = {link.name: link.origin for link in obj.links}
     contact = _physics_materials(root, obj)
     filtered = dict(_compound_pairs(obj))
+    free = free_inertias(obj)
     identity = (1.0, 0.0, 0.0, 0.0)
     for link in obj.links:
         apis = ("PhysicsRigidBodyAPI", "PhysicsMassAPI") + (("PhysicsFilteredPairsAPI",) if link.name in filtered
@@ -595,7 +607,7 @@ def _physics(obj, hulls) -> str:
             armature = getattr(j, "armature", None)
             if armature is not None:
                 uj.attr("float", ax + "armature", float(armature))
-            _newton_joint(uj, j, per_unit)
+            _newton_joint(uj, j, per_unit, free[j.name] + j.armature)
             if j.mimic is not None:
                 _mimic(uj, j, f"{rp}/Joints/{j.mimic[0]}")
         uj.rel("physics:body0", f"{rp}/{j.parent}")
