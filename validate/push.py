@@ -16,7 +16,7 @@ the effort's. Efforts come from :mod:`infmob_usd.effort`.
 Command (the sweep behind the figures in the README)::
 
     python -m infmob_usd.validate.push [--seeds N] [--engines mujoco,pybullet|none] [--mujoco-check]
-                                       [--workers N] [CATEGORY ...]
+                                       [--bullet-from-upper] [--workers N] [CATEGORY ...]
 
 prints per category how many objects passed in each engine (and the ``mujoco`` check of
 ``validate --sim`` on the MJCF with ``--mujoco-check``), the furthest a push took a joint past a
@@ -152,7 +152,8 @@ def describe(p: Push) -> str:
     return f"{p.joint} -> {p.side} ({p.effort:.3g}): {p.excess * 100:.1f} % past{rest}"
 
 
-def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool, out: str) -> dict:
+def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool, out: str,
+         bullet_from_upper: bool = False) -> dict:
     """Generate one object (URDF + MJCF, 16 px textures), push it in ``engines``, optionally run
     the ``mujoco`` check on its MJCF; a row of results."""
     import infmob_usd
@@ -165,7 +166,8 @@ def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool,
     opened = opened_by(json.loads((folder / "metadata.json").read_text()))
     row = {"category": category, "seed": seed, "name": folder.name, "mjcf_s": obj.timings["mjcf"], "fails": {}}
     for e in engines:
-        pushes = ENGINES[e](files[e], opened=opened)
+        extra = {"from_upper": True} if e == "pybullet" and bullet_from_upper else {}
+        pushes = ENGINES[e](files[e], opened=opened, **extra)
         row["fails"][e] = [describe(p) for p in failures(pushes)]
         row[e] = max([p.pushed for p in pushes] + [0.0])
         row[f"{e}_rest"] = max([p.rest for p in pushes] + [0.0])
@@ -186,6 +188,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--engines", default="mujoco,pybullet", help="push in these (comma list; `none`: no push)")
     ap.add_argument("--mujoco-check", action="store_true",
                     help="also run the mujoco check of validate --sim on the MJCF")
+    ap.add_argument("--bullet-from-upper", action="store_true",
+                    help="in PyBullet too, push towards the lower limit from the upper one (as in MuJoCo)")
     ap.add_argument("--workers", type=int, default=1)
     a = ap.parse_args(argv)
     cats = infmob_usd.list_categories() if a.categories in (["all"], []) else a.categories
@@ -198,7 +202,8 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp, ProcessPoolExecutor(max_workers=a.workers) as pool:
         for cat in cats:
-            futs = [pool.submit(_one, cat, seed, engines, a.mujoco_check, tmp) for seed in range(a.seeds)]
+            futs = [pool.submit(_one, cat, seed, engines, a.mujoco_check, tmp, a.bullet_from_upper)
+                    for seed in range(a.seeds)]
             rows = [f.result() for f in futs]
             passed = {e: sum(not r["fails"][e] for r in rows) for e in engines}
             if a.mujoco_check:
