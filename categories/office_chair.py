@@ -16,8 +16,9 @@ Four designs (``design``), each with its own structure:
 - mesh: a framed mesh back with a sliding lumbar pad, optionally the adjustable headrest;
 - drafting: a tall chair (seat 0.62-0.78 m) with a foot ring that slides up and down the column,
   an optional low back.
-Any design may have a tilt-tension knob (turning, under the seat's front), a seat slider (pan and cushion slide forward on the mechanism) and arms of one
-style: 4D (height, slide, turn, pad turn), height-only, fixed, or flip-up (turn up about a rear pivot).
+Any design may have a tilt-tension knob (turning, under the seat's front), a seat slider (pan and cushion
+slide forward on the mechanism) and arms of one style: 4D (height, slide, turn, pad turn), height-only,
+fixed, or flip-up (turn up about a rear pivot).
 Parts: ``categories/parts/seating.py`` (shared with the bar chair).
 """
 

@@ -1,12 +1,12 @@
 """Storage rack: a pallet rack with adjustable levels, boltless shelving of lidded totes, or a bin rack.
 
-Three designs (``design``). ``pallet_rack`` is described below. ``shelving``: boltless steel
-shelving (0.35-0.6 m deep, 4-6 fixed levels 0.3-0.45 m apart: Tennsco / IKEA BROR) holding a row
-of 2-5 plastic storage totes (0.28-0.45 m wide, their number drawn per level) on each level; each tote slides out along +X and a lidded tote's lid
-hinges up about its back edge once the tote is out (``requires_open``). ``bin_rack``: a
-small-parts bin rack (0.35-0.6 m deep, 4-8 levels 0.18-0.24 m apart) whose every level holds a row
-of up to 12 open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X:
-racks of bins are the large assemblies of the category.
+Three designs (``design``). ``pallet_rack`` is described below. ``shelving``: boltless steel shelving
+(0.35-0.6 m deep, 4-6 fixed levels 0.3-0.45 m apart: Tennsco / IKEA BROR) holding a row of 2-5 plastic storage
+totes (0.28-0.45 m wide, their number drawn per level) on each level; each tote slides out along +X and a
+lidded tote's lid hinges up about its back edge once the tote is out (``requires_open``). ``bin_rack``: a
+small-parts bin rack (0.35-0.6 m deep, 4-8 levels 0.18-0.24 m apart) whose every level holds a row of up to 12
+open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X: racks of bins are
+the large assemblies of the category.
 
 Pallet rack: X is depth (the front faces +X), Y is width, Z is up. Frames of two braced uprights stand at
 both ends and between bays (a rack wider than 2.2 m has two bays). Each level of each bay is a
@@ -331,4 +331,5 @@ class RackLayout(Layout):
                    upper=self.p["tote_travel"] * (xs[1] - xs[0]))
 
 
-CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS, palette=furniture)
+CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,
+                    palette=furniture)

@@ -1,4 +1,5 @@
-"""The ``infmob`` command line: list, params, generate, validate, preview, stats, gallery, bench, textures, fuzz."""
+"""The ``infmob`` command line: list, params, generate, parts, fuzz, validate, preview, stats, gallery, textures,
+bench (docs/cli.md)."""
 
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ def _parser() -> argparse.ArgumentParser:
     sub.add_parser("list", help="print every category id, one per line")
 
     p = sub.add_parser("params", help="print a category's parameter schema and growth rules")
-    p.add_argument("category")
+    p.add_argument("category", help="a category id (infmob list)")
     # in this order: `infmob --help` lists the commands so
     for add in (_generate_command, _parts_command, _fuzz_command, _validate_command, _preview_command,
                 _stats_command, _gallery_command, _textures_command, _bench_command):
@@ -63,7 +64,7 @@ def _parts_command(sub) -> None:
     """Add the ``infmob parts`` subcommand and its options to ``sub``."""
     pa = sub.add_parser("parts", help="part libraries: import meshes, export the built-in parts, check placement",
                         description="A part library holds part meshes with support points, scale policy and"
-                        " convex pieces (format: README, 'Part libraries'). Generate with it:"
+                        " convex pieces (format: docs/parts.md). Generate with it:"
                         " infmob generate CAT --parts LIB --parts-share P.")
     psub = pa.add_subparsers(dest="parts_command", required=True)
     pi = psub.add_parser("import", help="import PartNet-Mobility objects or a folder of meshes with labels.csv")
@@ -75,11 +76,11 @@ def _parts_command(sub) -> None:
     pi.add_argument("--licence", default="", help="licence to record (default: the source's terms)")
     pi.add_argument("--labels", default=None, metavar="CSV", help="labels CSV (default SRC/labels.csv)")
     pe = psub.add_parser("export-builtin", help="write the project's procedural parts as a library")
-    pe.add_argument("out", metavar="LIB")
+    pe.add_argument("out", metavar="LIB", help="the new library folder (must not exist or be empty)")
     pc = psub.add_parser("check", help="gap and penetration at the support points: bounding-box vs support placement")
-    pc.add_argument("lib", metavar="LIB")
+    pc.add_argument("lib", metavar="LIB", help="a part library folder")
     pc.add_argument("--placements", type=int, default=100, help="placements on drawn procedural parts; default 100")
-    pc.add_argument("--seed", type=int, default=0)
+    pc.add_argument("--seed", type=int, default=0, help="seed of the drawn procedural parts; default 0")
     pc.add_argument("--json", action="store_true", help="print JSON instead of a table")
     pc.add_argument("--as-drawn", action="store_true",
                     help="only pairs generation would draw (the procedural box within the part's scale policy)")
@@ -138,7 +139,7 @@ def _preview_command(sub) -> None:
                         description="Render each object folder at rest beside itself with its joints ~70% open"
                         " (preview.png) and a GIF sweeping each movable joint (sweep.gif); or with --sheet DIR one"
                         " contact sheet of every object under DIR. Needs a Vulkan device: on a CPU machine Mesa >= 25"
-                        " lavapipe (see README).")
+                        " lavapipe (see docs/cli.md, 'preview').")
     from .validate.preview import add_arguments as _preview_arguments
 
     _preview_arguments(pv)
@@ -174,7 +175,7 @@ def _textures_command(sub) -> None:
     """Add the ``infmob textures`` subcommand and its options to ``sub``."""
     tx = sub.add_parser("textures", help="build the texture library cache ahead of a large run",
                         description="Every look an object can wear is one of a finite library (16 per palette"
-                        " variant, 1072 in all); its PNG maps are made once and cached on disk in"
+                        " variant of each material family); its PNG maps are made once and cached on disk in"
                         " $INFMOB_USD_CACHE (default ~/.cache/infmob-usd; `off` disables it). Generation fills the"
                         " cache as it goes; this command fills it up front, in parallel, e.g. on a shared folder"
                         " before a cluster run.")
@@ -190,8 +191,9 @@ def _bench_command(sub) -> None:
     b = sub.add_parser("bench", help="benchmark: seconds per object by stage, memory, parallel efficiency")
     b.add_argument("--categories", default="all", help="comma list or `all` (default)")
     b.add_argument("--count", type=int, default=10, help="objects per category; default 10")
-    b.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="workers for the parallel run")
-    b.add_argument("--texture-size", type=int, default=512, metavar="PX")
+    b.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+                   help="workers for the parallel run; default: all cores")
+    b.add_argument("--texture-size", type=int, default=512, metavar="PX", help="texture edge in pixels; default 512")
     b.add_argument("--cold", action="store_true",
                    help="every timed object starts from an empty texture cache (no library, no throughput runs)")
     b.add_argument("--json", action="store_true", help="print JSON instead of a table")

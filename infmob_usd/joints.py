@@ -98,8 +98,10 @@ class JointSpec:
     dofs: tuple[Dof, ...] = ()
     role: str = "default"
     requires_open: str | None = None
-    """Name of a part whose joint must be fully open before this one can move (a rack
-    behind a door): checks and users open that part first. ``None``: moves freely."""
+    """The name of a part, the child of another declared joint, that must be fully open before this
+    joint moves (a rack behind a door names the door's part); checks and users open that part first.
+    The written joints keep the part name: it is the ``group`` of every joint in the gate's chain
+    (:attr:`.model.Joint.requires_open`). ``None``: moves freely."""
     mimic: Mimic | None = None
     """The joint whose coordinate drives this one (:class:`Mimic`); ``None``: moves on its own."""
 

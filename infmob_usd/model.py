@@ -59,7 +59,9 @@ class Joint:
     kind: str  # the declared kind this joint belongs to (may be compound)
     role: str
     group: str  # the child part of the declared joint; a compound chain shares it
-    requires_open: str | None = None  # group that must be fully open before this joint moves
+    # the part name of JointSpec.requires_open: the joints whose ``group`` is that part must be fully open
+    # before this one moves (for a declared joint, its group is its child part)
+    requires_open: str | None = None
     armature: float = 0.0  # kg or kg m^2 added to the joint's inertia (set by effort.assign_drives)
     stiffness: float = 0.0  # return spring, N/m or N m/rad (0: none; set by springs.assign_springs)
     spring_ref: float = 0.0  # where the spring's force is zero (m or rad), beyond the rest stop: a preload

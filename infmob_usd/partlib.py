@@ -427,10 +427,10 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
     pj = folder / "part.json"
     d = _read_json(pj, "re-import the part (infmob parts import) or write its part.json")
     if not isinstance(d, dict):
-        raise _err(pj, "must be a JSON object", "see the part.json fields in the README")
+        raise _err(pj, "must be a JSON object", "see the part.json fields in docs/parts.md")
     for key in ("label", "id", "source", "licence", "units", "up", "front", "supports", "scale", "mesh", "convex"):
         if key not in d:
-            raise _err(pj, f"missing field {key!r}", "add it (see the part.json fields in the README)")
+            raise _err(pj, f"missing field {key!r}", "add it (see the part.json fields in docs/parts.md)")
     if d["label"] not in LABELS:
         raise _err(pj, f"unknown label {d['label']!r}", f"use one of {sorted(LABELS)}")
     if d["label"] != label or d["id"] != pid:

@@ -719,8 +719,8 @@ def _sweep_limit(moving: _Moving, limit: float, obstacles: _Obstacles, allowed: 
     # are farther apart than the clearance (and a nanometre) on an axis cannot meet the obstacle
     # grown by it, so the exact test is left out for it
     margin = np.full(len(hs), np.nan)
-    apart = np.any((lo0[hs] - (CLEARANCE + 1e-9) > obstacles.hi[os]) | (obstacles.lo[os] - (CLEARANCE + 1e-9) > hi0[hs]),
-                   axis=1)
+    apart = np.any((lo0[hs] - (CLEARANCE + 1e-9) > obstacles.hi[os])
+                   | (obstacles.lo[os] - (CLEARANCE + 1e-9) > hi0[hs]), axis=1)
     for p in np.flatnonzero(near.any(axis=0)):
         h, o = hs[p], os[p]
         if apart[p] or not moving.hits_at_rest(h, CLEARANCE, obstacles, o):
@@ -996,7 +996,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
         # either (the same comparisons, monotone), so only near link pairs compare hull boxes
         link_lo = np.minimum.reduceat(lo, starts[:-1], axis=0)
         link_hi = np.maximum.reduceat(hi, starts[:-1], axis=0)
-        link_near = _boxes_meet(link_lo[:, None], link_hi[None] + CLEARANCE, link_lo[None], link_hi[:, None] + CLEARANCE)
+        link_near = _boxes_meet(link_lo[:, None], link_hi[None] + CLEARANCE,
+                                link_lo[None], link_hi[:, None] + CLEARANCE)
         for pair, d in todo:
             ka, kb = index[pair[0]], index[pair[1]]  # ka < kb: the hulls of pair[0] come first
             hit = False

@@ -1,6 +1,6 @@
 """The USD asset: an interface layer and a payload of physics, materials and geometry layers.
 
-Layout (see ../shared/USD.md)::
+Layout (docs/format.md describes every file of an object folder)::
 
     <name>.usda                 defaultPrim, kind=component, assetInfo, class label, payload
     payload/contents.usda       sublayers physics.usda, materials.usda, geometry.usdc

@@ -1,8 +1,8 @@
 """Encoded texture maps of library looks, made once and reused.
 
 Every look an object can wear is one of the finite library of
-:func:`~infmob_usd.materials.families.library_look` (16 per palette variant, 1168 in
-all), so the PNG maps of a look, which cost 30-45 ms to synthesize and encode at
+:func:`~infmob_usd.materials.families.library_look` (16 per palette variant,
+``len(families.library())`` in all), so the PNG maps of a look, which cost 30-45 ms to synthesize and encode at
 512 px, are made once and then reused by every object that wears the look.
 
 :func:`texture_maps` returns ``{map name: PNG bytes}`` through two caches:

@@ -4,19 +4,18 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_office_chair import _box, assert_clear, rest_overlaps, states
+from test_office_chair import _box, assert_clear, rest_overlaps
 
-from infmob_usd.categories import bar_chair as bc
 from infmob_usd.model import build as build_model
 
-from zoo import by_child, make_bp, movable
+from helpers import maker, states
+from zoo import by_child, movable
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring", "arm", "knob"}
 
 
-def make(seed, **overrides):
-    return make_bp(bc, "bar_chair", seed, **overrides)
+make = maker("bar_chair")
 
 
 @pytest.mark.parametrize("seed", SEEDS)

@@ -12,14 +12,14 @@ from infmob_usd.categories import bottle
 from infmob_usd.categories.parts.vessel_sizes import CAP_MATERIALS
 from infmob_usd.errors import ParameterError
 
+from helpers import maker
 from zoo import by_child, make_bp
 
 SEEDS = range(6)
 
 
-def make(seed, **overrides):
-    """``closure_draw=0`` unless a test asks: cap=auto then takes the profile's classic closure."""
-    return make_bp(bottle, "bottle", seed, **{"closure_draw": 0.0, **overrides})
+# ``closure_draw=0`` unless a test asks: cap=auto then takes the profile's classic closure
+make = maker("bottle", closure_draw=0.0)
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -137,7 +137,7 @@ def test_sports_cap_spout_pulls_up():
 
 
 def test_caps_fit_their_necks():
-    # issue 13: a cap is no wider than its finish plus skirt (a crown 32 mm on a 26 mm finish)
+    # a cap wider than its finish plus skirt does not sit on its neck (a crown is 32 mm on a 26 mm finish)
     for cap in ("crown", "screw"):
         _, bp = make(4, cap=cap, profile="beer" if cap == "crown" else "soda")
         wall = bp.parts["body"].pieces[0].vertices

@@ -9,14 +9,14 @@ from infmob_usd.categories import pan
 from infmob_usd.model import build as build_model
 
 from collide import overlap
+from helpers import maker
 from zoo import make_bp
 
 SEEDS = range(8)
 
 
-def make(seed, **overrides):
-    """The riveted design (a fixed handle) unless a test asks for another; no helper handle."""
-    return make_bp(pan, "pan", seed, **{"handle_style": "riveted", "has_helper": False, **overrides})
+# the riveted design (a fixed handle) unless a test asks for another; no helper handle
+make = maker("pan", handle_style="riveted", has_helper=False)
 
 
 def up(dz):
@@ -81,7 +81,9 @@ def test_lid_joint_and_clearance(seed):
     assert overlap(lid, np.eye(4), bp.parts["handle"], np.eye(4), pad=0.0015) == 0.0
 
 
-def test_overrides_drive_the_growth():
+def test_forced_lid_helper_hole_and_finishes_build_those_parts():
+    """A riveted pan grows its lid anyway; forced helper handle, hanging hole and finishes give those parts and
+    material slots (the generic contract: test_category_contract)."""
     _, bp = make(1, has_lid=False)  # the riveted design grows its lid anyway: every pan moves
     assert set(bp.parts) == {"body", "handle", "lid"} and any(j.movable for j in bp.joints)
     _, bp = make(1, has_helper=True)

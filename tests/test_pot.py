@@ -11,14 +11,14 @@ from infmob_usd.categories import pot
 from infmob_usd.model import build as build_model
 
 from collide import overlap
+from helpers import maker
 from zoo import make_bp
 
 SEEDS = range(8)
 
 
-def make(seed, **overrides):
-    """The plain design (a dome lid on the rim, no pasta insert, no steam vent) unless a test asks for another."""
-    return make_bp(pot, "pot", seed, **{"pot_design": "plain", "has_pasta": False, "has_vent": False, **overrides})
+# the plain design (a dome lid on the rim, no pasta insert, no steam vent) unless a test asks for another
+make = maker("pot", pot_design="plain", has_pasta=False, has_vent=False)
 
 
 def handle_pieces(bp):
@@ -116,7 +116,9 @@ def test_lid_is_clear_along_its_motion(seed):
             assert lowest(lid, lift(dz, turn)) > 0
 
 
-def test_overrides_drive_the_growth():
+def test_forced_handle_layouts_and_lid_handle_build_those_parts():
+    """Forced handle layouts put the handles where they belong; a forced lid handle and finish give those parts
+    (the generic contract: test_category_contract)."""
     _, bp = make(2, handle_layout="long_handle", has_helper=False)
     xs = np.vstack([pc.vertices for pc in bp.parts["handle"].pieces])
     assert xs[:, 0].min() > 0 and xs[:, 0].max() > 0.2  # one long handle toward +X
@@ -187,7 +189,8 @@ def test_designs_vary():
 
 
 def test_steamer_tiers_one_or_two_and_light():
-    """Tiers vary 1..2 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size (issue 14: they were 2-4 kg)."""
+    """Tiers vary 1..2 over seeds; a tier is pressed 0.8 mm sheet: 0.15-2 kg of steel at any size
+    (at the pot's clad wall they would weigh 2-4 kg)."""
     from infmob_usd.mass import inertial
 
     counts = set()

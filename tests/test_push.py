@@ -136,7 +136,7 @@ def test_stiff_mjcf_limits_hold_a_push_from_the_far_stop(folders):
 
 
 def test_efforts_follow_the_mass_not_a_role_table():
-    """The microwave of issue 11: 20 N on a 5 g button drove it 8.6 cm past 1.6 mm of travel."""
+    """A role table's 20 N on a microwave's 5 g button drove it 8.6 cm past its 1.6 mm of travel."""
     obj = infmob_usd.generate("microwave", seed=7001, texture_size=16, has_buttons=True)
     buttons = [j for j in obj.movable_joints if j.role == "button"]
     door = next(j for j in obj.movable_joints if j.role == "hinge")

@@ -1,4 +1,4 @@
-"""Reliability (issue 16): validate never crashes, generate never touches what it did not make,
+"""Reliability: validate never crashes, generate never touches what it did not make,
 runs survive kills and each other, every bad input is a one-line error with exit status 2."""
 
 import json

@@ -9,15 +9,15 @@ from infmob_usd.categories import storage_rack as sr
 from infmob_usd.seeding import streams
 
 from collide import overlap
-from zoo import by_child, make_bp
+from helpers import maker
+from zoo import by_child
 
 SEEDS = range(4)
 VOL = 1e-7  # m^3, the validator's contact volume
 
 
-def make(seed, **overrides):
-    """The pallet-rack design unless another is asked for."""
-    return make_bp(sr, "storage_rack", seed, **{"design": "pallet_rack", **overrides})
+# the pallet-rack design unless another is asked for
+make = maker("storage_rack", design="pallet_rack")
 
 
 def levels(bp):

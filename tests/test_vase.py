@@ -208,7 +208,7 @@ def test_each_closure_forced_moves_and_clears(closure):
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_the_vase_stands_on_a_wide_foot(seed):
-    # issue 13: the foot is at least 40 % of the widest diameter
+    # a vase tips over unless its foot is at least 40 % of its widest diameter
     _, bp = make_bp(vase, "vase", seed)
     foot = np.vstack([pc.vertices for pc in bp.parts["foot"].pieces])
     body = np.vstack([pc.vertices for pc in bp.parts["body"].pieces])

@@ -13,7 +13,7 @@ default limits; a URDF cannot stiffen them, the MJCF does:
 :func:`~infmob_usd.validate.mujoco_sim.rest_excess`): that sag is MuJoCo's, what the push adds is
 the effort's. Efforts come from :mod:`infmob_usd.effort`.
 
-Command (the sweep behind the figures in the README)::
+Command (the sweep behind the figures in docs/benchmarks.md)::
 
     python -m infmob_usd.validate.push [--seeds N] [--engines mujoco,pybullet|none] [--mujoco-check]
                                        [--bullet-from-upper] [--workers N] [CATEGORY ...]

@@ -216,7 +216,7 @@ def lever(x0: float, n: float, y: float, z: float, u: float, length: float) -> l
             g.cylinder([xg, y, z], [xg, y + u * length, z], 0.009, "handle", 20).replace(sheet=0.0012)]
 
 
-# -- latch bolt, thumb-turn, sliding (barn) door hardware (issue 14) ---------------------------------------
+# -- latch bolt, thumb-turn, sliding (barn) door hardware --------------------------------------------------
 # Sizes: tubular/mortice latches: bolt 12-14 mm throw, 16-18 mm high, 60 mm backset (EN 12209); thumb-turns
 # on a 50 mm rose with a 30-35 mm grip (EN 1906 accessories); barn-door kits: flat rail 40 x 6 mm on a header,
 # 2 hangers with 70-100 mm nylon or steel wheels, leaves overlapping the opening by 50 mm a side

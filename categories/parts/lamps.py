@@ -33,9 +33,9 @@ COLLAR_LEN = 0.022  # collar ring around a swivel pin
 BASE_PER_REACH = 0.33  # an arm lamp's base radius is at least this times its head's reach
 TRIPOD_HUB = 0.16  # a tripod's hub top (where the pole starts) above the floor
 MIN_POLE = 0.06
-"""m: the shortest pole (base top to pole top) under an upright head; a larger shade is shrunk. Fuzz (lamp,
-seed 7) draws #243, #247 and #382, 0.35 m desk lamps on a tripod hub under a 13 cm shade, left 29-43 mm of
-pole: the head's collar sat in the lower pole's. Seeds 0-599 have at least 64 mm, so none of them changes."""
+"""m: the shortest pole (base top to pole top) under an upright head; a larger shade is shrunk. Without it
+0.35 m desk lamps on a tripod hub under a 13 cm shade were left 29-43 mm of pole: the head's collar sat in
+the lower pole's. Seeds 0-599 have at least 64 mm, so none of them changes."""
 CLAMP = dict(throat=0.06, jaw=0.011, spine=0.012, back=0.035, front=0.05, screw_x=0.018, rod=0.005, pad=0.012,
              pad_t=0.004, bar=0.0045, bar_len=0.06)
 """A desk clamp (architect lamps: Anglepoise, IKEA TERTIAL with clamp): a C of cast steel whose jaws take desk tops

@@ -155,7 +155,7 @@ def on_face(x: float, z: float) -> Frame:
     return Frame.at((x, 0.0, z), z=(1, 0, 0), x=(0, 0, -1))
 
 
-# -- the other designs: one-piece, back-to-wall, wall-hung (issue 14) ---------------------------------------
+# -- the other designs: one-piece, back-to-wall, wall-hung --------------------------------------------------
 # Sizes: one-piece WCs carry a low cistern 0.17-0.25 m above the rim on a skirted (concealed-trap) base
 # (TOTO Ultramax, Kohler Santa Rosa); back-to-wall pans stand against a furniture unit 0.8-0.85 m high,
 # 0.2-0.3 m deep (Roca, Ideal Standard Tesi); wall-hung pans are 0.52-0.56 m long, their seat at 0.40-0.43
@@ -236,13 +236,14 @@ def flush_plate(x_face: float, z: float) -> tuple[list[g.Piece], list[tuple[str,
     and the two keys (small flush at -y, large at +y), each in its opening with ``CLEAR`` around it."""
     w, h, t, kg = PLATE["width"], PLATE["height"], PLATE["thickness"], PLATE["key_gap"]
     ki = 0.022  # the plate's rim around the keys
-    holes = [(-w / 2 + ki, z - h / 2 + ki, -kg / 2, z + h / 2 - ki), (kg / 2, z - h / 2 + ki, w / 2 - ki, z + h / 2 - ki)]
+    holes = [(-w / 2 + ki, z - h / 2 + ki, -kg / 2, z + h / 2 - ki),
+             (kg / 2, z - h / 2 + ki, w / 2 - ki, z + h / 2 - ki)]
     plate = [g.panel([x_face, -w / 2, z - h / 2], [x_face + t, w / 2, z + h / 2], "chrome", "x", holes=holes)]
     keys = []
     xf = x_face + t
     for side, (y0, z0, y1, z1) in zip(("small", "large"), holes):
-        keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR], [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR],
-                                          "chrome", bevel=0.0015)]))
+        keys.append((side, [g.box_between([xf - KEY_BEHIND, y0 + CLEAR, z0 + CLEAR],
+                                          [xf + KEY_PROUD, y1 - CLEAR, z1 - CLEAR], "chrome", bevel=0.0015)]))
     return plate, keys
 
 

@@ -587,7 +587,7 @@ class ChairNodes(Layout):
         return front
 
 
-# -- adjustable headrest, lumbar pad, seat slider, flip-up arms (issue 14) --------------------------------
+# -- adjustable headrest, lumbar pad, seat slider, flip-up arms -------------------------------------------
 HEADREST_TRAVEL = 0.07  # headrest height adjustment (executive and mesh chairs: 50-80 mm, e.g. Herman Miller
 #                         Aeron / Steelcase Gesture headrest kits)
 LUMBAR_TRAVEL = 0.06  # lumbar pad height adjustment (Steelcase Leap, Herman Miller Aeron PostureFit: 50-75 mm)
@@ -648,7 +648,7 @@ def tension_knob(seat: Seat, depth: float, hm: float) -> tuple[list[g.Piece], Fr
     return pieces, Frame.at((x0, 0, zc), x=(0, 0, 1), z=(1, 0, 0))
 
 
-# -- bar stools: four-leg swivel frame, height lever (issue 14) ---------------------------------------------
+# -- bar stools: four-leg swivel frame, height lever --------------------------------------------------------
 FOUR_LEG_TUBE = 0.0125  # 25 mm steel tube legs (four-leg swivel bar stools, e.g. IKEA Franklin, Flash Furniture)
 BEARING_R = 0.1  # the swivel bearing plate under the seat (a 200 mm lazy-susan plate)
 

@@ -122,7 +122,7 @@ CAP_MATERIALS = {
 # sleeve closures: where the skirt starts above the finish bottom (dz), skirt and top plate
 # thickness, how far the top plate overhangs the skirt (a crown's top is flush with its
 # crimped skirt, 32 mm across a 26 mm finish; a PCO screw cap's top is flush with its
-# knurled skirt, issue 13: caps fit their necks), sheet (crown: 0.3 mm tinplate)
+# knurled skirt: no cap is wider than its finish plus skirt), sheet (crown: 0.3 mm tinplate)
 SLEEVE_CAPS = {
     "crown": {"skirt_from": 0.0105, "skirt": 0.0012, "top": 0.0025, "overhang": 0.0004, "sheet": 0.0003},
     "screw": {"skirt_from": 0.0065, "skirt": 0.0016, "top": 0.003, "overhang": 0.0004, "sheet": 0.0},

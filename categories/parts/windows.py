@@ -410,7 +410,7 @@ def curtains(p, W, H, fd, z0, fw, x_room, single: int = 0):
     return rod, halves
 
 
-# -- tilt-and-turn, top-hung awning, double-hung (issue 14) ------------------------------------------------
+# -- tilt-and-turn, top-hung awning, double-hung -----------------------------------------------------------
 # Tilt-and-turn sashes tilt inward about their bottom rail by 10-15 degrees (a 100-150 mm gap at the top)
 # before turning on their side hinges (Roto NT, Winkhaus activPilot hardware); top-hung awnings open
 # outward 30-45 degrees on their top edge; double-hung sashes: the lower one slides up in the room-side
