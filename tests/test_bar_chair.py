@@ -160,3 +160,11 @@ def test_seat_slider_and_tension_knob(base):
         p, _ = make(6, **{**dict(base_type=base, has_back=True, back_mount="hinged", has_tension_knob=True,
                                  has_seat_tilt=False), **over})
         assert not p["has_tension_knob"], over
+
+
+@pytest.mark.parametrize("seed", [5, 7302])
+def test_flip_up_arms_turn_up_beside_the_back(seed):
+    from test_office_chair import flip_arm_stays_over_the_seat
+
+    _, bp = make(seed, has_back=True, has_arms=True, arm_style="arm_flip")
+    flip_arm_stays_over_the_seat(bp)

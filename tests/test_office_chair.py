@@ -292,3 +292,28 @@ def test_gas_lift_is_steel_whatever_its_finish():
         assert obj.materials["lift"].family == ("chrome" if finish == "chrome" else "enamel")
     assert masses["black"] == pytest.approx(masses["chrome"], rel=1e-9)
     assert 0.3 < masses["black"] < 2.0
+
+
+def flip_arm_stays_over_the_seat(bp):
+    """Through its whole range a flip-up arm's pad stays above the seat's top and no part of the arm goes
+    behind the back's panel (the mechanism turns the cap up on its post, it does not swing the arm down behind
+    the chair)."""
+    rest = bp.poses({})
+    seat_top = max(pc.bounds[1, 2] for n, part in bp.parts.items() if n.startswith("seat") for pc in part.pieces
+                   if pc.material == "seat")
+    back_rear = min(pc.bounds[0, 0] for pc in bp.parts["back"].pieces if pc.material in ("seat", "mesh"))
+    for side in ("left", "right"):
+        name = f"arm_{side}"
+        d = by_child(bp, name).dofs[0]
+        for f in np.linspace(0.0, 1.0, 7):
+            m = bp.poses({(name, 0): d.lower + f * (d.upper - d.lower)})[name] @ np.linalg.inv(rest[name])
+            pads = np.vstack([pc.vertices for pc in bp.parts[name].pieces if pc.material == "pad"])
+            every = np.vstack([pc.vertices for pc in bp.parts[name].pieces])
+            assert (pads @ m[:3, :3].T + m[:3, 3])[:, 2].min() > seat_top, (name, f)
+            assert (every @ m[:3, :3].T + m[:3, 3])[:, 0].min() > back_rear, (name, f)
+
+
+@pytest.mark.parametrize("seed", [4, 7301])
+def test_flip_up_arms_turn_up_beside_the_back(seed):
+    _, bp = make(seed, design="task", has_back=True, has_arms=True, arm_style="arm_flip")
+    flip_arm_stays_over_the_seat(bp)

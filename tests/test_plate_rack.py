@@ -360,3 +360,28 @@ def test_seed_32_plate_slides_its_whole_slot_in_sapien(tmp_path):
     folder = infmob_usd.save(infmob_usd.generate("plate_rack", seed=32, texture_size=16), tmp_path)
     res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
     assert res["reach"].ok, res["reach"].detail
+
+
+def free_lift(bp, name, near=0.01):
+    """How far ``name`` rises along +Z before it clears every piece of its parent that stands within ``near`` of
+    its footprint and above its lowest point (a peg inside a mug, the lip of a caddy's pocket)."""
+    part = np.vstack([pc.vertices for pc in bp.parts[name].pieces])
+    lo, hi = part.min(0), part.max(0)
+    lift = 0.0
+    for pc in bp.parts[by_child(bp, name).parent].pieces:
+        b = pc.bounds
+        if (b[0, :2] < hi[:2] + near).all() and (b[1, :2] > lo[:2] - near).all():
+            lift = max(lift, b[1, 2] - lo[2])
+    return lift
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_lift_off_parts_stop_once_free(seed):
+    """A mug, tumbler or caddy lifts off along +Z by what frees it (its peg, its pocket's lip) and a few
+    millimetres more, not through the air: a lift-off travel is the lift a hand gives before the part is free."""
+    _, bp = make(seed, design="station")
+    lifted = [n for n, part in bp.parts.items() if part.label in ("cup", "glass", "basket")]
+    assert lifted
+    for n in lifted:
+        free, up = free_lift(bp, n), by_child(bp, n).dofs[0].upper
+        assert free > 0.01 and free <= up <= free + 0.01, (n, free, up)
