@@ -30,6 +30,8 @@ KNOWN_FAILURES: dict[tuple[str, str, int], str] = {
     ("xpbd", "pot", 0): "the lid sinks 1.3 mm onto its seat (not diagnosed; Featherstone holds it)",
     ("xpbd", "dining_table", 0): "legs and extension leaves go NaN within 0.5 s (not diagnosed; Featherstone"
                                  " holds them)",
+    ("xpbd", "storage_rack", 0): "the drawers of the cabinets on its levels creep 2-3 mm (not diagnosed;"
+                                 " Featherstone holds them)",
 }
 
 
