@@ -153,7 +153,8 @@ class BottleLayout(Layout):
 
     def spout(self, node, cap):
         sp = self.place(CL.sports_spout(0.0, "spout").attached("base", to=cap.anchor("top")), "spout")
-        self.slide(cap.root, sp.root, sp.anchor("base"), SPORTS["pull"], role="button")
+        # friction-held, not spring-returned: a push-pull spout stays where it is put
+        self.slide(cap.root, sp.root, sp.anchor("base"), SPORTS["pull"], role="lid")
 
     def label(self, node, body, profile):
         p = self.p
