@@ -27,6 +27,7 @@ demo: $(STAMP)
 	$(BIN)/infmob preview --sheet $(OUT) --out $(OUT)/contact_sheet.png
 
 test: $(STAMP)
+	$(BIN)/ruff check .
 	$(BIN)/python -m pytest -q
 
 clean:

@@ -116,25 +116,30 @@ class StoolLayout(S.ChairNodes):
             self.grow(arm, seat=seat, y=sign * y, side=side, dims=dims)
 
     def arm(self, node, seat, y, side, dims):
-        """Fixed; sliding up its post (a height-adjustable arm); or flipping up and back about the post's rear
-        bottom edge (a flip-up arm, so the sitter can slide in sideways)."""
+        """Fixed; sliding up its post (a height-adjustable arm); or a flip-up arm (so the sitter can slide in
+        sideways): the post stays, its cap (carriage and pad) turns up about the carriage's rear end to stand upright
+        beside the back, above the seat."""
         a = S.arm(seat, self.p["seat_height"], y, dims)
         style = node.choice
-        self.extend("seat", a.bracket if style != "arm_flip" else a.bracket[:2])
-        post = self.add(f"arm_{side}", "arm", a.post)
+        self.extend("seat", a.bracket)
+        if style == "arm_flip":  # the post is the seat's; the cap on it (carriage and pad) flips up
+            self.extend("seat", a.post)
+        post = self.add(f"arm_{side}", "arm", a.slider if style == "arm_flip" else a.post)
         if style == "arm_height":
             self.slide("seat", post, a.post_slide, upper=self.p["arm_travel"], role="telescope")
         elif style == "arm_fixed":
             self.fix("seat", post)
-        else:  # flip-up: a positive turn about -y tips the arm up and back
-            pivot = a.post_slide.moved(dx=-S.ARM_POST_HALF)
-            self.hinge("seat", post, Frame.at(pivot.origin, x=(1, 0, 0), z=(0, -1, 0)), upper=S.ARM_FLIP)
+        else:  # flip-up: a positive turn about -y lifts the cap's front; it stands upright beside the back
+            self.hinge("seat", post, a.flip, upper=S.ARM_FLIP)
         self.grow(node.one(style), arm=a, post=post)
 
     def arm_fixed(self, node, arm, post):
         self.extend(post, [*arm.slider, *arm.pad])
 
-    arm_height = arm_flip = arm_fixed
+    arm_height = arm_fixed
+
+    def arm_flip(self, node, arm, post):
+        self.extend(post, arm.pad)  # the cap: the carriage is the hinged part's already
 
     def seat(self, node, lever, tilt):
         p = self.p

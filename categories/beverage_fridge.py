@@ -18,7 +18,6 @@ from __future__ import annotations
 import math
 
 from infmob_usd.category import Category
-from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
@@ -26,12 +25,13 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import appliance as A
 from .parts import fridges as FR
 from .parts import hardware
+from .parts.appliance_sizes import FRIDGE_RANGES as R
 
 
 def rack_count(p, rng) -> int:
     """rack_count; a wine cooler has 3 more (6-8 slide-out shelves), an undercounter fridge 2 fewer above its
     crispers, a dual-zone cooler 1 fewer per zone"""
-    n = max(1, p["rack_count"] + FR.RACK_EXTRA.get(p["design"], 0))
+    n = FR.rack_count(p["design"], p["rack_count"])
     if p["design"] == "undercounter":  # shelves at least 8 cm apart above the crispers, below a freezer
         n = min(n, FR.shelves_fit(shelf_room(p)))
     return n
@@ -39,7 +39,8 @@ def rack_count(p, rng) -> int:
 
 def cavity_height(p: dict) -> float:
     """Height of the cooled cavity (floor liner to ceiling liner)."""
-    return size(p, p["design"])[2] - 2 * p["wall"] - 2 * A.LINER - p["feet_height"] - p["kick_height"]
+    _, _, H = A.size(p, p["design"], FR.SIZES)
+    return FR.cavity_height(H, p["wall"], p["feet_height"], p["kick_height"])
 
 
 def freezer_height(p: dict) -> float:
@@ -55,13 +56,7 @@ def shelf_room(p: dict) -> float:
 def right_rack_count(p, rng) -> int:
     """right_rack_count, 1 fewer (a dual-zone cooler's right zone, set apart from the left one: wine in one
     zone, cans in the other, e.g. Whynter BWB-3388FDS, Kalamera KRC-150BV)"""
-    return max(1, p["right_rack_count"] - 1)
-
-
-def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): wine coolers and dual-zone coolers are undercounter height, 0.82-0.87 m; a
-    dual-zone cooler with two doors is at least 0.6 m wide (:data:`~.parts.appliance_sizes.FRIDGE`)."""
-    return FR.size(p["width"], p["depth"], p["height"], design)
+    return FR.zone_racks(p["right_rack_count"])
 
 
 GRAMMAR = Grammar("beverage_fridge", {
@@ -100,27 +95,27 @@ at its top edge that swings up (Danby DCR044A2, Midea WHS-87LB1 compact fridges)
 BR-130SB, Newair AB-1200 control panels)."""
 
 PARAMS = (
-    Float("width", "overall width (Y)", "m", 0.45, 0.7),
-    Float("depth", "overall depth incl. the door, excl. the handle (X)", "m", 0.5, 0.68),
-    Float("height", "overall height incl. the feet (Z)", "m", 0.5, 0.9),
-    Float("wall", "insulated wall thickness", "m", 0.035, 0.055),
-    Float("door_thickness", "glass door thickness (frame depth)", "m", 0.03, 0.045),
-    Float("kick_height", "height of the ventilation kick grille below the door", "m", 0.05, 0.1),
-    Float("feet_height", "levelling feet height", "m", 0.008, 0.02),
-    Float("control_height", "height of the control strip above the door", "m", 0.035, 0.06),
+    Float("width", "overall width (Y)", "m", *R["width"]),
+    Float("depth", "overall depth incl. the door, excl. the handle (X)", "m", *R["depth"]),
+    Float("height", "overall height incl. the feet (Z)", "m", *R["height"]),
+    Float("wall", "insulated wall thickness", "m", *R["wall"]),
+    Float("door_thickness", "glass door thickness (frame depth)", "m", *R["door_thickness"]),
+    Float("kick_height", "height of the ventilation kick grille below the door", "m", *R["kick_height"]),
+    Float("feet_height", "levelling feet height", "m", *R["feet_height"]),
+    Float("control_height", "height of the control strip above the door", "m", *R["control_height"]),
     Choice("hinge_side", "side of the door hinge, seen from the front", choices=("left", "right")),
-    Float("handle_length", "handle length as a fraction of the door height", "", 0.35, 0.75),
+    Float("handle_length", "handle length as a fraction of the door height", "", *R["handle_length"]),
     Int("rack_count", "sliding racks (interior = racks)", "", 3, 5),
     Choice("rack_style", "wire racks or glass shelves", choices=("wire", "glass"), weights=(0.65, 0.35)),
-    Float("rack_travel", "rack slide-out as a fraction of its own depth", "", 0.6, 0.85),
-    Float("divider_height", "divider plate height as a fraction of the cavity height", "", 0.35, 0.65),
+    Float("rack_travel", "rack slide-out as a fraction of its own depth", "", *R["rack_travel"]),
+    Float("divider_height", "divider plate height as a fraction of the cavity height", "", *R["divider_height"]),
     Int("bin_count", "door bins on an undercounter fridge's door", "", 2, 4),
     Int("crisper_count", "crisper drawers side by side at the bottom of an undercounter fridge", "", 1, 2),
     Int("right_rack_count", "racks of a dual-zone cooler's right zone (one fewer than this, as on the left)", "",
         3, 5),
     Int("key_count", "push keys on the control strip (has_control_panel)", "", 2, 5),
     Float("freezer_height", "height of an undercounter fridge's freezer compartment (has_freezer)", "m",
-          0.09, 0.14),
+          *R["freezer_height"]),
     Choice("body_finish", "cabinet material", choices=("painted", "brushed_metal"), weights=(0.6, 0.4)),
     Choice("door_finish", "door frame: match the cabinet or black plastic", choices=("match", "black")),
     Choice("trim_finish", "front trim of the racks", choices=("wood", "chrome", "plastic"), weights=(0.45, 0.35, 0.2)),
@@ -150,7 +145,7 @@ class FridgeLayout(Layout):
         p = self.p
         design = node.choice
         style = node.one(design)
-        W, D, H = size(p, design)
+        W, D, H = A.size(p, design, FR.SIZES)
         ctrl = node.one("control_panel")
         body = FR.body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["kick_height"],
                        p["control_height"] if ctrl else None, design == "dual_zone")
@@ -158,27 +153,27 @@ class FridgeLayout(Layout):
         if ctrl:
             xs, ys, zs = body.control
             self.grow(ctrl, xs=xs, ys=ys, zs=zs)
-        self.grow(style, cav=body.cav, hole=body.hole, box=body.box, xs=body.xs)
+        self.grow(style, cav=body.cav, hole=body.hole, box=body.box, xs=body.xs, margin=body.margin)
 
-    def glass_cooler(self, node, cav, hole, box, xs):
+    def glass_cooler(self, node, cav, hole, box, xs, margin):
         self.grow(node.one("door"), box=box, hole=hole)
-        self.grow(node.one(node.choice), cav=cav, hole=hole, xs=xs, margin=hole[0] - box[2])
+        self.grow(node.one(node.choice), cav=cav, hole=hole, xs=xs, margin=margin)
 
-    def wine(self, node, cav, hole, box, xs):
+    def wine(self, node, cav, hole, box, xs, margin):
         self.grow(node.one("door"), box=box, hole=hole)
-        self.grow(node.one("racks"), cav=cav, hole=hole, xs=xs, margin=hole[0] - box[2], wine=True)
+        self.grow(node.one("racks"), cav=cav, hole=hole, xs=xs, margin=margin, wine=True)
 
-    def undercounter(self, node, cav, hole, box, xs):
+    def undercounter(self, node, cav, hole, box, xs, margin):
         """A solid door with bins, 1-2 crisper drawers on the cavity floor, glass shelves above them, a freezer
         compartment at the top (optional); shelves, crispers and the freezer flap stop short of the bins on the
         closed door."""
         self.grow(node.one("solid_door"), box=box, hole=hole)
         xs = FR.behind_bins(xs)
-        ceiling = cav[5]
+        _, _, _, _, _, ceiling = cav
         if node.one("freezer"):
             ceiling = self.grow(node.one("freezer"), cav=cav, xs=xs)
-        self.grow(node.one("crispers"), cav=cav, xs=xs, zs=FR.crisper_zs(cav), margin=hole[0] - box[2])
-        self.grow(node.one("racks"), cav=FR.over_crispers(cav, ceiling), hole=hole, xs=xs, margin=hole[0] - box[2])
+        self.grow(node.one("crispers"), cav=cav, xs=xs, zs=FR.crisper_zs(cav), margin=margin)
+        self.grow(node.one("racks"), cav=FR.over_crispers(cav, ceiling), hole=hole, xs=xs, margin=margin)
 
     def freezer(self, node, cav, xs):
         """A freezer compartment across the top of the cavity: an aluminium evaporator box (its floor and sides,
@@ -187,15 +182,14 @@ class FridgeLayout(Layout):
         box, flap, at, ceiling = FR.freezer(cav, xs, freezer_height(self.p))
         self.extend("body", box)
         self.add("freezer_flap", "flap", flap)
-        self.hinge("body", "freezer_flap", at, upper=math.pi / 2, requires_open="door")
+        self.hinge("body", "freezer_flap", at, upper=FR.FLAP_OPENS, requires_open="door")
         return ceiling
 
-    def dual_zone(self, node, cav, hole, box, xs):
+    def dual_zone(self, node, cav, hole, box, xs, margin):
         """Two glass doors meeting over the mullion, each hinged on its outer side; racks in each zone."""
         left, right = FR.dual_doors(box, hole)
         self.grow(node.one("door"), **left, side="left")
         self.grow(node.one("right_door"), **right, side="right")
-        margin = hole[0] - box[2]
         left_cav, right_cav = FR.zones(cav)
         self.grow(node.one("racks"), cav=left_cav, hole=hole, xs=xs, margin=margin)
         self.grow(node.one("right_racks"), cav=right_cav, hole=hole, xs=xs, margin=margin, door="right_door",
@@ -253,11 +247,10 @@ class FridgeLayout(Layout):
         """Add a door hinged on ``side`` (default: the hinge_side parameter) and its handle; returns whether
         it hinges on the left."""
         p = self.p
-        x0, x1, y0, y1, z0, z1 = box
+        *_, z0, z1 = box
         self.add(name, "door", pieces)
         left = (side or p["hinge_side"]) == "left"
-        self.hinge("body", name, Frame.at((x1, y0 if left else y1, z0), z=(0, 0, -1 if left else 1)),
-                   upper=DOOR_OPENS)
+        self.hinge("body", name, A.side_hinge(box, left), upper=DOOR_OPENS)
         at, stile = FR.handle_anchor(box, hole, left)
         self.grow(node.one("handle"), at=at, length=p["handle_length"] * (z1 - z0), stile=stile, door=name)
         return left
@@ -277,7 +270,8 @@ class FridgeLayout(Layout):
         p = self.p
         kids = node.of("rack")
         # the racks keep clear of the open door's hinge-side edge
-        fit = FR.rack_levels(len(kids), cav, hole, xs, size(p, p["design"])[0], p["door_thickness"], margin)
+        W, _, _ = A.size(p, p["design"], FR.SIZES)
+        fit = FR.rack_levels(len(kids), cav, hole, xs, W, p["door_thickness"], margin)
         for k, (kid, (rails, zb)) in enumerate(zip(kids, fit["levels"], strict=True)):
             for rail in rails:
                 self.extend("body", [rail])
@@ -293,8 +287,8 @@ class FridgeLayout(Layout):
             label, pieces = "rack", [pc.replace(material="wood") if wine and pc.material == "trim" else pc
                                      for pc in pieces]
         name = self.add(f"{prefix}rack_{k}", label, [pc.translated((0.0, yc, 0.0)) for pc in pieces])
-        self.slide("body", name, Frame.at((xs[1], yc, zb), z=(1, 0, 0)), upper=p["rack_travel"] * (xs[1] - xs[0]),
-                   requires_open=door)
+        at, travel = A.rack_slide(xs, zb, p["rack_travel"], yc)
+        self.slide("body", name, at, upper=travel, requires_open=door)
 
     def divider(self, node, cav, hole, xs, margin):
         self.add("divider", "shelf", FR.divider(cav, self.p["divider_height"]))

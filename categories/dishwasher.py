@@ -26,28 +26,22 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import appliance as A
 from .parts import dishwashers as DW
 from .parts import hardware
+from .parts.appliance_sizes import DISHWASHER_RANGES as R
 
 
 def rack_count(p, rng) -> int:
     """rack_count; a compact counter-top model has room for one rack"""
-    return 1 if p["design"] == "compact" else p["rack_count"]
+    return DW.rack_count(p["design"], p["rack_count"])
 
 
 def upper_racks(p, rng) -> int:
     """the racks between the lower rack and a cutlery tray (on top of three or more racks)"""
-    n = rack_count(p, rng)
-    return max(0, n - 1 - (n >= 3))
+    return DW.rack_kinds(rack_count(p, rng))[0]
 
 
 def trays(p, rng) -> int:
     """a cutlery tray on top of three or more racks"""
-    return int(rack_count(p, rng) >= 3)
-
-
-def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): a compact counter-top model and a double dish drawer have their own sizes
-    (:data:`~.parts.appliance_sizes.DISHWASHER`); a freestanding model carries a worktop on its top."""
-    return DW.size(p["width"], p["depth"], p["height"], design)
+    return DW.rack_kinds(rack_count(p, rng))[1]
 
 
 GRAMMAR = Grammar("dishwasher", {
@@ -86,27 +80,27 @@ rack), Miele G 7000 ("FlexCare" fold-down spikes, cup racks), Whirlpool WDT750 (
 Fisher & Paykel DD60 DishDrawer (fold-down tines in each drawer's rack)."""
 
 PARAMS = (
-    Float("width", "overall width (Y)", "m", 0.44, 0.66),
-    Float("depth", "overall depth incl. the door, excl. the handle (X)", "m", 0.52, 0.66),
-    Float("height", "overall height incl. the feet (Z)", "m", 0.76, 0.92),
-    Float("wall", "tub wall thickness (insulation + liner)", "m", 0.018, 0.03),
-    Float("door_thickness", "door thickness", "m", 0.045, 0.07),
-    Float("kick_height", "kick plinth height under the door: the hinge height above the floor", "m", 0.08, 0.14),
-    Float("feet_height", "levelling feet height", "m", 0.01, 0.025),
+    Float("width", "overall width (Y)", "m", *R["width"]),
+    Float("depth", "overall depth incl. the door, excl. the handle (X)", "m", *R["depth"]),
+    Float("height", "overall height incl. the feet (Z)", "m", *R["height"]),
+    Float("wall", "tub wall thickness (insulation + liner)", "m", *R["wall"]),
+    Float("door_thickness", "door thickness", "m", *R["door_thickness"]),
+    Float("kick_height", "kick plinth height under the door: the hinge height above the floor", "m", *R["kick_height"]),
+    Float("feet_height", "levelling feet height", "m", *R["feet_height"]),
     Int("rack_count", "sliding racks", "", 1, 4),
-    Float("rack_travel", "rack slide-out as a fraction of its own depth", "", 0.6, 0.8),
-    Float("wire_pitch", "spacing of the rack wires", "m", 0.045, 0.07),
+    Float("rack_travel", "rack slide-out as a fraction of its own depth", "", *R["rack_travel"]),
+    Float("wire_pitch", "spacing of the rack wires", "m", *R["wire_pitch"]),
     Int("basket_count", "cutlery baskets in the lowest rack (has_baskets)", "", 1, 4),
     Int("tine_rows", "fold-down tine rows in the lower rack (and in each drawer's rack)", "", 2, 4),
     Int("upper_tine_rows", "fold-down tine rows in an upper rack", "", 0, 2),
     Int("cup_shelf_count", "flip-down cup shelves of an upper rack (has_cup_shelves): left, or both sides", "",
         1, 2),
     Float("basket_lift", "lift of a cutlery basket out of its rack (shortened to the rack above)", "m",
-          0.03, 0.06),
-    Float("handle_length", "handle length as a fraction of the width", "", 0.35, 0.7),
-    Float("control_height", "control panel height (has_control_panel)", "m", 0.06, 0.1),
+          *R["basket_lift"]),
+    Float("handle_length", "handle length as a fraction of the width", "", *R["handle_length"]),
+    Float("control_height", "control panel height (has_control_panel)", "m", *R["control_height"]),
     Int("button_count", "push buttons on the control panel (has_buttons)", "", 2, 6),
-    Float("button_size", "push button height (Z); press depth is 1/8 of it", "m", 0.012, 0.02),
+    Float("button_size", "push button height (Z); press depth is 1/8 of it", "m", *R["button_size"]),
     Choice("body_finish", "door front and cabinet finish", choices=("brushed_metal", "painted"), weights=(0.55, 0.45)),
     Choice("front_finish", "cabinet front panel of an integrated model", choices=("wood", "painted")),
     Choice("rack_finish", "rack wires: nylon coated or chrome", choices=("coated", "chrome"), weights=(0.7, 0.3)),
@@ -131,16 +125,14 @@ class DishwasherLayout(A.PanelNodes):
         p = self.p
         design = node.choice
         style = node.one(design)
-        W, D, H = size(p, design)
+        W, D, H = A.size(p, design, DW.SIZES)
         if design == "dish_drawer":
-            body, geo = DW.drawer_cabinet(W, D, H, p["door_thickness"], p["feet_height"], p["kick_height"],
-                                          p["body_finish"])
+            body, geo = DW.drawer_cabinet(W, D, H, p["door_thickness"], p["feet_height"], p["kick_height"])
             self.add("body", "body", body)
             return self.grow(style, **geo)
         door = style.one("door")
         tub = DW.tub_body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["kick_height"], design,
-                          p["control_height"], bool(door.one("control_panel")), bool(door.one("handle")),
-                          p["body_finish"])
+                          p["control_height"], bool(door.one("control_panel")), bool(door.one("handle")))
         self.add("body", "body", tub.pieces)
         self.grow(style, door=tub.door, racks=tub.racks)
 
@@ -181,15 +173,15 @@ class DishwasherLayout(A.PanelNodes):
         y, z = at
         self.add(name, "tines", pieces)
         # about +X a standing tine folds towards -Y
-        self.hinge(rack, name, Frame.at((0.0, y, z), z=(1, 0, 0)), upper=math.pi / 2)
+        self.hinge(rack, name, A.fold_line(y, z), upper=A.QUARTER_TURN)
 
     def door(self, node, box, band):
-        x0, x1, y0, y1, z0, z1 = box
+        _, x1, y0, y1, _, _ = box
         integrated = self.p["design"] == "integrated"
         ctrl = node.one("control_panel")
         front = DW.cabinet_front(box, band, bool(ctrl)) if integrated else []
         self.add("door", "door", A.layered_door(box) + front)
-        self.hinge("body", "door", Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)
+        self.hinge("body", "door", A.drop_hinge(box), upper=DOOR_OPENS)
         if ctrl:
             self.grow(ctrl, xf=x1, ys=(y0, y1), zs=DW.control_zs(box, band), handle=bool(node.one("handle")))
         if node.one("handle"):
@@ -233,8 +225,8 @@ class DishwasherLayout(A.PanelNodes):
         p = self.p
         name = self.add(f"rack_{k}", "rack", A.dish_rack(xs, cy1, za, top, p["wire_pitch"], kind,
                                                          tines=kind != "lower"))
-        self.slide("body", name, Frame.at((xs[1], 0.0, za), z=(1, 0, 0)), upper=p["rack_travel"] * (xs[1] - xs[0]),
-                   requires_open="door")
+        at, travel = A.rack_slide(xs, za, p["rack_travel"])
+        self.slide("body", name, at, upper=travel, requires_open="door")
         ry = DW.rack_half_width(cy1)
         shelves = node.one("cup_shelves") if kind == "upper" else None
         yh = None
@@ -256,7 +248,7 @@ class DishwasherLayout(A.PanelNodes):
         pieces, y, s = DW.cup_shelf(k, xs, ry, z, w)
         name = self.add(f"{rack}_cup_shelf_{k}", "shelf", pieces)
         # about -X (left) or +X (right) the top swings inwards
-        self.hinge(rack, name, Frame.at((0.0, y, z), z=(s, 0, 0)), upper=math.pi / 2)
+        self.hinge(rack, name, A.fold_line(y, z, s), upper=A.QUARTER_TURN)
 
     def baskets(self, node, rack, xs, ry, za, top):
         """Open cutlery baskets side by side at the front of the lowest rack, fixed to it."""
@@ -274,5 +266,7 @@ class DishwasherLayout(A.PanelNodes):
             self.fix(rack, name)
 
 
+SUBSTRATES = {"body": ("body_finish", {"painted": A.STEEL})}  # a painted cabinet is painted steel sheet
+
 CATEGORY = Category("dishwasher", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DishwasherLayout, MATERIALS,
-                    palette=appliance)  # finishes real dishwashers are sold in
+                    substrates=SUBSTRATES, palette=appliance)  # finishes real dishwashers are sold in

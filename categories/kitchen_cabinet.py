@@ -32,7 +32,6 @@ from __future__ import annotations
 
 import math
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category
 from infmob_usd.frames import Frame, cells
 from infmob_usd.grammar import Grammar, Layout, Node
@@ -40,8 +39,8 @@ from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Flag, Float, Int
 
 from .parts import cabinetry as cab
-from .parts import panels
 from .parts.cabinetry import GAP
+from .parts.cabinetry import RANGES as R
 
 
 def run_width(p) -> float:
@@ -78,8 +77,8 @@ def moves(tree) -> bool:
 # the columns of a base run, per instance
 BASE_COLUMN = {"drawers": 0.32, "doors": 0.2, "door_drawers": 0.2, "drawer_door": 0.2, "open": 0.08}
 GRAMMAR = Grammar("kitchen_cabinet", {
-    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.2, "kitchen": 0.45, "larder": 0.1,
-                                                  "corner": 0.09, "sink_base": 0.08, "wall_run": 0.08}, choice="design"),
+    "kitchen_cabinet": Node(label="body", one_of={"base_run": 0.2, "kitchen": 0.45, "larder": 0.1, "corner": 0.09,
+                                                  "sink_base": 0.08, "wall_run": 0.08}, choice="design"),
     "base_run": Node(required=("stand", "worktop"), repeat={"column": columns}),
     # a kitchen wall: base columns, and a wall cabinet over each (IKEA METOD planning: wall cabinets line
     # up with the base cabinets under them), sometimes a tall unit at the end
@@ -121,44 +120,35 @@ GRAMMAR = Grammar("kitchen_cabinet", {
     "wall_open": Node(),
 }, accept=moves)
 
-PARAMS = (
-    # a kitchen wall's run: 1.2-4.8 m (2-10 cabinets of 40-60 cm)
-    Float("width", "run width (Y) of a base or wall run", "m", 1.2, 4.8),
+PARAMS = (  # ranges and their sources: cabinetry.RANGES
+    Float("width", "run width (Y) of a base or wall run", "m", *R["width"]),
     Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45)); kept 0.2-1 m wide",
         "", 1, 10, auto=True),
-    # EN 1116 / IKEA METOD: base cabinets 60 cm deep incl. front, worktop at 85-92 cm
-    Float("base_depth", "base and tall carcass depth (X), front excluded", "m", 0.55, 0.62),
-    Float("base_height", "floor to worktop top", "m", 0.85, 0.92),
-    # IKEA METOD high cabinets 200 / 220 cm + 8-10 cm legs
-    Float("tall_height", "tall (larder) cabinet height", "m", 1.95, 2.25),
-    # wall cabinets 30-35 cm deep (issue 13; IKEA METOD 37 cm incl. door), 60-100 cm high
-    Float("wall_depth", "wall cabinet depth (X)", "m", 0.3, 0.35),
-    Float("wall_height", "wall cabinet height", "m", 0.6, 0.9),
-    # IKEA METOD 40 / 60 cm high-cabinet widths
-    Float("column_width", "width of a tall cabinet or of a column beside a corner or sink unit", "m", 0.4, 0.6),
-    # corner base 88 x 88 cm (IKEA METOD), lazy-susan bases 33-36 in
-    Float("corner_size", "corner unit width and depth", "m", 0.84, 0.92),
-    # sink bases 80 / 90 / 100 cm (IKEA METOD), 30-36 in
-    Float("sink_width", "sink base width", "m", 0.8, 1.0),
-    # a kitchen wall of 4-8 base cabinets (IKEA METOD 40/60/80 cm units), tall end unit excluded
-    Float("kitchen_width", "kitchen wall: width of the base columns under the worktop", "m", 2.4, 4.8),
-    # worktop to wall-cabinet bottom: 45-60 cm (IKEA kitchen planner 50-60 cm; NKBA minimum 15 in)
-    Float("wall_gap", "kitchen wall: worktop to the bottom of the wall cabinets", "m", 0.45, 0.6),
-    Float("board", "carcass board thickness", "m", 0.016, 0.019),
-    Float("front_thickness", "door and drawer-front thickness", "m", 0.016, 0.022),
-    Float("worktop_thickness", "worktop thickness (laminate 28-40 mm, stone 20-30 mm)", "m", 0.02, 0.04),
-    # IKEA METOD legs 8 cm; US toe kicks 3.5-4.5 in
-    Float("plinth_height", "leg / kick-board height", "m", 0.08, 0.14),
+    Float("base_depth", "base and tall carcass depth (X), front excluded", "m", *R["base_depth"]),
+    Float("base_height", "floor to worktop top", "m", *R["base_height"]),
+    Float("tall_height", "tall (larder) cabinet height", "m", *R["tall_height"]),
+    Float("wall_depth", "wall cabinet depth (X)", "m", *R["wall_depth"]),
+    Float("wall_height", "wall cabinet height", "m", *R["wall_height"]),
+    Float("column_width", "width of a tall cabinet or of a column beside a corner or sink unit", "m",
+          *R["column_width"]),
+    Float("corner_size", "corner unit width and depth", "m", *R["corner_size"]),
+    Float("sink_width", "sink base width", "m", *R["sink_width"]),
+    Float("kitchen_width", "kitchen wall: width of the base columns under the worktop", "m", *R["kitchen_width"]),
+    Float("wall_gap", "kitchen wall: worktop to the bottom of the wall cabinets", "m", *R["wall_gap"]),
+    Float("board", "carcass board thickness", "m", *R["board"]),
+    Float("front_thickness", "door and drawer-front thickness", "m", *R["front_thickness"]),
+    Float("worktop_thickness", "worktop thickness (laminate 28-40 mm, stone 20-30 mm)", "m", *R["worktop_thickness"]),
+    Float("plinth_height", "leg / kick-board height", "m", *R["plinth_height"]),
     Choice("front_style", "fronts: slab, shaker, raised panel, or glazed (glass in wall and upper doors)",
            choices=cab.FRONT_STYLES, weights=(0.35, 0.3, 0.15, 0.2)),
     Flag("has_handles", "fronts have handles (else push-to-open)", p=0.9),
     Choice("handle_style", "handle shape", choices=("bar", "knob", "recessed"), weights=(0.5, 0.3, 0.2)),
     Choice("body_finish", "carcass and front material", choices=("painted", "wood")),
     Choice("handle_finish", "handle material", choices=("brushed_metal", "chrome", "plastic")),
-    Float("drawer_travel", "drawer opening as a fraction of its depth (full extension runners: 0.9)", "", 0.6, 0.9),
-    # Blum CLIP top hinges: 95, 107, 110, 155 degrees
-    Float("door_angle", "hinge opening angle (a door beside another column may stop earlier)", "rad", math.pi / 2,
-          0.65 * math.pi),
+    Float("drawer_travel", "drawer opening as a fraction of its depth (full extension runners: 0.9)", "",
+          *R["drawer_travel"]),
+    Float("door_angle", "hinge opening angle (a door beside another column may stop earlier)", "rad",
+          *R["door_angle"]),
 )
 
 MATERIALS = {"body": "body_finish", "front": "body_finish", "handle": "handle_finish",
@@ -184,8 +174,9 @@ class CabinetLayout(Layout):
                  "corner": p["corner_size"] + len(design.of("column")) * p["column_width"],
                  "sink_base": p["sink_width"] + len(design.of("column")) * p["column_width"]}[kind]
         first = {"corner": p["corner_size"], "sink_base": p["sink_width"], "kitchen": p["sink_width"]}.get(kind, W)
-        xs = (D / 2 - p["corner_size"], D / 2) if kind == "corner" else (-D / 2, D / 2)
-        self.add("carcass", "body", cab.carcass(xs, (-W / 2, -W / 2 + first), (z0, z1), p["board"], "body",
+        xs = cab.front_part(cab.centred(D), p["corner_size"]) if kind == "corner" else cab.centred(D)
+        ys, _ = cab.split(cab.centred(W), first)
+        self.add("carcass", "body", cab.carcass(xs, ys, (z0, z1), p["board"], "body",
                                                 top=kind not in ("sink_base", "kitchen")))
         self.grow(design, W=W, D=D, zs=(z0, z1))
 
@@ -204,102 +195,98 @@ class CabinetLayout(Layout):
         (beside a corner unit every leaf hinges on its right, away from the corner door: both open 90
         degrees to the same divider)."""
         t = self.p["board"]
-        (W0, W1), D = ys, xs[1] - xs[0]
+        W0, W1 = ys
         if box:
             self._box(ys, xs, zs)
         spans = cells(W0 + t, W1 - t, len(cols), gap=t)
         for c, (col, (ya, yb)) in enumerate(zip(cols, spans)):
             if c < len(cols) - 1:  # divider to the right of this column
-                self.extend("carcass", [g.box_between([xs[0] + t * 0.5, yb, zs[0] + t], [xs[1], yb + t, zs[1] - t],
-                                                      "body")])
-            fy = (ya - t / 2 + GAP / 2 if c > 0 else W0 + GAP, yb + t / 2 - GAP / 2 if c < len(cols) - 1 else W1 - GAP)
+                self.extend("carcass", [cab.divider(xs, yb, zs, t)])
+            fy = cab.front_span(c, len(cols), (ya, yb), ys, t)
             hand = side or ("left" if c < len(cols) / 2 and self.p["design"] != "corner" else "right")
-            self.grow(col, c=first + c, side=hand, ys=(ya, yb), fys=fy, zs=(zs[0] + t, zs[1] - t),
-                      fzs=(zs[0] + GAP, zs[1] - GAP), xs=xs)
+            self.grow(col, c=first + c, side=hand, ys=(ya, yb), fys=fy, zs=cab.inset(zs, t), fzs=cab.inset(zs, GAP),
+                      xs=xs)
 
     def _stand_and_top(self, node, ys, D, z0, top_hole=None):
-        self.grow(node.one("stand"), ys=ys, xs=(-D / 2, D / 2), z0=z0)
+        self.grow(node.one("stand"), ys=ys, xs=cab.centred(D), z0=z0)
         if node.one("worktop"):
-            self.grow(node.one("worktop"), ys=ys, xs=(-D / 2, D / 2), hole=top_hole)
+            self.grow(node.one("worktop"), ys=ys, xs=cab.centred(D), hole=top_hole)
 
     def base_run(self, node, W, D, zs):
-        self._run(node.of("column"), (-W / 2, W / 2), (-D / 2, D / 2), zs, box=False)
-        self._stand_and_top(node, (-W / 2, W / 2), D, zs[0])
+        self._run(node.of("column"), cab.centred(W), cab.centred(D), zs, box=False)
+        self._stand_and_top(node, cab.centred(W), D, zs[0])
 
     def larder(self, node, W, D, zs):
-        self._run(node.of("tall"), (-W / 2, W / 2), (-D / 2, D / 2), zs, box=False)
-        self._stand_and_top(node, (-W / 2, W / 2), D, zs[0])
+        self._run(node.of("tall"), cab.centred(W), cab.centred(D), zs, box=False)
+        self._stand_and_top(node, cab.centred(W), D, zs[0])
 
     def corner(self, node, W, D, zs):
         p = self.p
-        z0, z1 = zs
-        C, t = p["corner_size"], p["board"]
+        C = p["corner_size"]
         cols = node.of("column")
-        y0 = -W / 2
+        ys, xs = cab.centred(W), cab.centred(D)
+        corner_ys, run_ys = cab.split(ys, C)
+        corner_xs = cab.front_part(xs, C)
         # the corner box (the root's) reaches further back than the run beside it; all fronts are flush
-        self._run(cols, (y0 + C, W / 2), (-D / 2, D / 2), (z0, z1))
-        self.grow(node.one("corner_unit"), ys=(y0, y0 + C), xs=(D / 2 - C, D / 2), zs=(z0, z1))
-        self.grow(node.one("stand"), ys=(y0, W / 2), xs=(-D / 2, D / 2), z0=z0)
-        self.extend("carcass", cab.corner_legs(D / 2 - C, (y0, y0 + C), z0))
-        self.grow(node.one("worktop"), ys=(y0, W / 2), xs=(-D / 2, D / 2), hole=None, corner=(y0 + C, D / 2 - C))
+        self._run(cols, run_ys, xs, zs)
+        self.grow(node.one("corner_unit"), ys=corner_ys, xs=corner_xs, zs=zs)
+        self.grow(node.one("stand"), ys=ys, xs=xs, z0=zs[0])
+        self.extend("carcass", cab.corner_legs(corner_xs[0], corner_ys, zs[0]))
+        self.grow(node.one("worktop"), ys=ys, xs=xs, hole=None, corner=(run_ys[0], corner_xs[0]))
 
     def sink_base(self, node, W, D, zs):
         cols = node.of("column")
-        y0 = -W / 2
-        ys = (y0, y0 + self.p["sink_width"])
+        ys, run_ys = cab.split(cab.centred(W), self.p["sink_width"])
         if cols:
-            self._run(cols, (ys[1], W / 2), (-D / 2, D / 2), zs)
+            self._run(cols, run_ys, cab.centred(D), zs)
         hole = self.sink_unit(node, ys, D, zs, beside=bool(cols))
-        self._stand_and_top(node, (y0, W / 2), D, zs[0], top_hole=hole)
+        self._stand_and_top(node, cab.centred(W), D, zs[0], top_hole=hole)
 
     def sink_unit(self, node, ys, D, zs, beside):
         """The sink, its tilt-out false front and two doors in the box over ``ys`` (a run of columns
         ``beside`` it on its right); returns the worktop's cut-out."""
         p = self.p
-        z0, z1 = zs
-        t = p["board"]
-        hole = cab.sink_hole((-D / 2, D / 2), ys)
+        xs = cab.centred(D)
+        hole = cab.sink_hole(xs, ys)
         self.grow(node.one("sink"), hole=hole, z_top=p["base_height"])
-        fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if beside else ys[1] - GAP)
-        fz1 = z1 - GAP
-        self.grow(node.one("tilt_front"), fys=fy, fzs=(fz1 - cab.SINK_FRONT, fz1), xs=(-D / 2, D / 2))
+        fy, tilt_zs, door_zs = cab.sink_fronts(ys, zs, p["board"], beside)
+        self.grow(node.one("tilt_front"), fys=fy, fzs=tilt_zs, xs=xs)
         doors = node.of("sink_door")
-        mid = sum(fy) / 2
-        spec = [(fy[0], mid - GAP / 2, "left"), (mid + GAP / 2, fy[1], "right")]
-        for k, (kid, leaf) in enumerate(zip(doors, spec)):
-            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=(z0 + GAP, fz1 - cab.SINK_FRONT - GAP), x1=D / 2)
+        for k, (kid, leaf) in enumerate(zip(doors, cab.leaf_pair(fy))):
+            self.grow(kid, name=f"door_sink_{k}", leaf=leaf, fzs=door_zs, x1=xs[1])
         return hole
 
     def wall_run(self, node, W, D, zs):
         H = zs[1]
-        self._run(node.of("wall_column"), (-W / 2, W / 2), (-D / 2, D / 2), (0.0, H), box=False)
-        self.grow(node.one("rail"), ys=(-W / 2, W / 2), xs=(-D / 2, D / 2), z=H - cab.RAIL_BELOW)
+        self._run(node.of("wall_column"), cab.centred(W), cab.centred(D), (0.0, H), box=False)
+        self.grow(node.one("rail"), ys=cab.centred(W), xs=cab.centred(D), z=H - cab.RAIL_BELOW)
 
     def kitchen(self, node, W, D, zs):
         """Base columns under a worktop, a splashback, a wall cabinet over each base column, and maybe
         a tall unit at the +Y end (the wall cabinets' tops then line up with its top)."""
         p = self.p
-        y0, yk = -W / 2, -W / 2 + p["kitchen_width"]
+        xs = cab.centred(D)
+        counter, tall_ys = cab.split(cab.centred(W), p["kitchen_width"])
         base, wall, talls = node.of("column"), node.of("wall_column"), node.of("tall")
-        ys = (y0, y0 + p["sink_width"])  # the sink base at the -Y end (the root's box)
-        self._run(base, (ys[1], yk), (-D / 2, D / 2), zs)
+        ys, base_ys = cab.split(counter, p["sink_width"])  # the sink base at the -Y end (the root's box)
+        self._run(base, base_ys, xs, zs)
         hole = self.grow(node.one("sink_unit"), ys=ys, D=D, zs=zs, beside=True)
         if talls:
-            self._run(talls, (yk, W / 2), (-D / 2, D / 2), (zs[0], p["tall_height"]), first=len(base),
-                      side="right")
+            self._run(talls, tall_ys, xs, (zs[0], p["tall_height"]), first=len(base), side="right")
         bottom = p["base_height"] + p["wall_gap"]
         top = p["tall_height"] if talls else bottom + p["wall_height"]
         top = max(top, bottom + cab.WALL_MIN)
-        self._run(wall, (y0, yk), (-D / 2, -D / 2 + p["wall_depth"]), (bottom, top),
-                  first=len(base) + len(talls))
-        self.grow(node.one("splashback"), ys=(y0, yk), x=-D / 2, zs=(p["base_height"], bottom))
-        self.grow(node.one("stand"), ys=(y0, W / 2), xs=(-D / 2, D / 2), z0=zs[0])
+        wall_xs, _ = cab.split(xs, p["wall_depth"])
+        self._run(wall, counter, wall_xs, (bottom, top), first=len(base) + len(talls))
+        self.grow(node.one("splashback"), ys=counter, x=xs[0], zs=(p["base_height"], bottom))
+        self.grow(node.one("stand"), ys=cab.centred(W), xs=xs, z0=zs[0])
         # the worktop overhangs 5 mm at a free end; it butts against a tall unit's side
-        self.grow(node.one("worktop"), ys=(y0, yk - cab.TOP_END if talls else yk), xs=(-D / 2, D / 2), hole=hole)
+        y0, yk = counter
+        self.grow(node.one("worktop"), ys=(y0, yk - cab.TOP_END if talls else yk), xs=xs, hole=hole)
 
     def splashback(self, node, ys, x, zs):
         """A panel on the wall between the worktop and the wall cabinets: it carries them."""
-        self.extend("carcass", [g.box_between([x, ys[0], zs[0]], [x + cab.SPLASH, ys[1], zs[1]], "body")])
+        self.extend("carcass", [cab.splashback(x, ys, zs)])
 
     # -- stands, worktops, rails ---------------------------------------------------------------------
     def stand(self, node, **where):
@@ -333,9 +320,7 @@ class CabinetLayout(Layout):
     wall_column = tall = column
 
     def open(self, node, c, side, ys, fys, zs, fzs, xs):
-        k = 1 + int(self.rng.integers(1, 3))
-        self.extend("carcass", [panels.shelf(xs, ys, zs[0] + (zs[1] - zs[0]) * i / k, self.p["board"], "body")
-                                for i in range(1, k)])
+        self.extend("carcass", cab.open_shelves(xs, ys, zs, self.p["board"], self.rng))
 
     wall_open = open
 
@@ -361,17 +346,16 @@ class CabinetLayout(Layout):
     def drawer(self, node, name, xs, ys, fys, fz, bz):
         pieces, box = self._drawer_pieces(xs, ys, fys, fz, bz)
         self.add(name, "drawer", pieces)
-        self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fz[0]), z=(1, 0, 0)),
-                   upper=self.p["drawer_travel"] * (box[1] - box[0]))
+        travel = self.p["drawer_travel"] * (box[1] - box[0])
+        self.slide("carcass", name, cab.pull_frame(xs[1], fys, fz[0]), upper=travel)
 
     def doors(self, node, c, side, ys, fys, zs, fzs, xs, shelf=True):
         t = self.p["board"]
         if shelf:
-            self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, t, "body")])
+            self.extend("carcass", [cab.mid_shelf(xs, ys, zs, t)])
         kids = node.of("door") or node.of("wall_door")
-        mid = sum(fys) / 2
         if len(kids) == 2:  # double doors, hinged at both outer edges
-            spec = [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
+            spec = cab.leaf_pair(fys)
         else:  # one leaf, hinged on the side facing the nearer end of the run
             spec = [(fys[0], fys[1], side)]
         for k, (kid, leaf) in enumerate(zip(kids, spec, strict=True)):
@@ -416,19 +400,14 @@ class CabinetLayout(Layout):
         p = self.p
         pieces, x0, x1 = cab.inner_drawer(xs, ys, zs, p["board"])
         self.add(name, "drawer", pieces)
-        self.slide("carcass", name, Frame.at((x1, sum(ys) / 2, zs[0]), z=(1, 0, 0)),
-                   upper=p["drawer_travel"] * (x1 - x0), requires_open=gate)
+        self.slide("carcass", name, cab.pull_frame(x1, ys, zs[0]), upper=p["drawer_travel"] * (x1 - x0),
+                   requires_open=gate)
 
     def drawer_door(self, node, c, side, ys, fys, zs, fzs, xs):
-        fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
-        s = 1 - cab.TOP_DRAWER
-        top_f = (fzs[0] + s * fh, fzs[1])
-        top_i = (zs[0] + s * ih, zs[1])
-        self.extend("carcass", [g.box_between([xs[0] + self.p["board"] / 2, ys[0], top_i[0] - self.p["board"]],
-                                              [xs[1], ys[1], top_i[0]], "body")])
+        board, top_i, top_f, door_zs, door_fzs = cab.drawer_over_doors(xs, ys, zs, fzs, self.p["board"])
+        self.extend("carcass", [board])
         self._drawer_stack(node.of("drawer"), (1.0,), c, ys, fys, top_i, top_f, xs)
-        self.doors(node, c, side, ys, fys, (zs[0], top_i[0] - self.p["board"]), (fzs[0], top_f[0] - GAP / 2), xs,
-                   shelf=False)
+        self.doors(node, c, side, ys, fys, door_zs, door_fzs, xs, shelf=False)
 
     # -- tall cabinets -------------------------------------------------------------------------------
     def pullout(self, node, c, side, ys, fys, zs, fzs, xs):
@@ -439,7 +418,7 @@ class CabinetLayout(Layout):
         pieces, travel, rows = cab.pullout(xs, ys, fys, fzs, zs, p["board"], p["front_thickness"], p["front_style"],
                                            self._handles(), len(kids))
         name = self.add(f"pullout_{c}", "pullout", pieces)
-        self.slide("carcass", name, Frame.at((xs[1], sum(fys) / 2, fzs[0]), z=(1, 0, 0)), upper=travel)
+        self.slide("carcass", name, cab.pull_frame(xs[1], fys, fzs[0]), upper=travel)
         for k, (kid, (bxs, bys, z)) in enumerate(zip(kids, rows)):
             self.grow(kid, parent=name, xs=bxs, ys=bys, z=z, k=k)
 
@@ -449,17 +428,12 @@ class CabinetLayout(Layout):
 
     def tall_doors(self, node, c, side, ys, fys, zs, fzs, xs):
         """An upper door with shelves behind it over a lower door with pull-outs behind it."""
-        p = self.p
-        t = p["board"]
-        split = zs[0] + cab.TALL_SPLIT * (zs[1] - zs[0])
-        self.extend("carcass", [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")]
-                    + [panels.shelf(xs, ys, split + (zs[1] - split) * i / cab.TALL_SHELVES, t, "body")
-                       for i in range(1, cab.TALL_SHELVES)])
-        fsplit = split - t / 2
-        self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=(fys[0], fys[1], side),
-                  fzs=(fsplit + GAP / 2, fzs[1]), x1=xs[1])
-        self.grow(node.one("lower_door"), name=f"door_{c}_0", leaf=(fys[0], fys[1], side),
-                  fzs=(fzs[0], fsplit - GAP / 2), x1=xs[1], c=c, ys=ys, zs=(zs[0], split - t), xs=xs)
+        boards, upper_fzs, lower_fzs, lower_zs = cab.tall_split(xs, ys, zs, fzs, self.p["board"])
+        self.extend("carcass", boards)
+        leaf = (*fys, side)
+        self.grow(node.one("upper_door"), name=f"door_{c}_1", leaf=leaf, fzs=upper_fzs, x1=xs[1])
+        self.grow(node.one("lower_door"), name=f"door_{c}_0", leaf=leaf, fzs=lower_fzs, x1=xs[1], c=c, ys=ys,
+                  zs=lower_zs, xs=xs)
 
     def upper_door(self, node, name, leaf, fzs, x1):
         self._door(name, leaf, fzs, x1, glazed=True, handle_at=fzs[0] + cab.TALL_HANDLE)
@@ -473,18 +447,10 @@ class CabinetLayout(Layout):
         """The corner box's front: a blind panel and a door hinged at the run's side, opening on
         the carousel."""
         p = self.p
-        t = p["board"]
-        D = xs[1] - xs[0]
-        mid = (ys[0] + ys[1]) / 2 - cab.CORNER_BLIND
-        fz = (zs[0] + GAP, zs[1] - GAP)
-        x = xs[1]
-        # the blind part of the front: a fixed panel in the carcass
-        self.extend("carcass", cab.front(x + GAP, x + GAP + p["front_thickness"], (ys[0] + GAP, mid - GAP / 2), fz,
-                                         p["front_style"], "front")[0])
-        name = self._door("door_corner", (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right"), fz, x,
-                          handle_at=None, gate=True)
-        self.grow(node.one("carousel"), gate=name, centre=(x - D / 2, (ys[0] + ys[1]) / 2),
-                  radius=min(D, ys[1] - ys[0]) / 2 - t - cab.CAROUSEL_CLEAR, zs=(zs[0] + t, zs[1] - t))
+        blind, leaf, fz, carousel = cab.corner_front(xs, ys, zs, p["board"], p["front_thickness"], p["front_style"])
+        self.extend("carcass", blind)  # the blind part of the front: a fixed panel in the carcass
+        name = self._door("door_corner", leaf, fz, xs[1], handle_at=None, gate=True)
+        self.grow(node.one("carousel"), gate=name, **carousel)
 
     def carousel(self, node, gate, centre, radius, zs):
         """A lazy susan: a pole with 2-3 trays turning on a bearing (continuous)."""
@@ -511,7 +477,7 @@ class CabinetLayout(Layout):
         """A lift-up flap hinged at its top edge (Blum AVENTOS HK): the bottom swings out and up."""
         p = self.p
         pieces, hinge = cab.flap(xs, fys, fzs, p["front_thickness"], p["front_style"], self._handles())
-        self.extend("carcass", [panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, p["board"], "body")])
+        self.extend("carcass", [cab.mid_shelf(xs, ys, zs, p["board"])])
         name = self.add(f"flap_{c}", "door", pieces)
         self.hinge("carcass", name, hinge, upper=cab.FLAP)
 

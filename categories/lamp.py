@@ -190,8 +190,8 @@ def fit_parts(p: dict) -> dict:
     """A turn-knob socket is an upright head's (a hanging head's socket is inside its shade): another lamp draws a
     push switch instead; a tripod has no base plate to carry a base switch (its switch is the socket's, or on
     the cord). A desk lamp on a tripod has a straight pole: its 16 cm hub leaves a 0.35-0.6 m lamp no room
-    for a head hanging from an arc or a chain arm (the head shrank to a 7-17 mm shade, its bulb caught in it:
-    fuzz #2009, #4077), so such a lamp gets a round base. A clamp is a desk lamp's (a floor lamp drawing one
+    for a head hanging from an arc or a chain arm (the head shrank to a 7-17 mm shade, its bulb caught in
+    it), so such a lamp gets a round base. A clamp is a desk lamp's (a floor lamp drawing one
     gets a round base); it has no base plate either, and always its screw."""
     if p["lamp_type"] == "desk" and p["base_shape"] == "tripod" and p["arm_style"] != "straight":
         p = {**p, "base_shape": "round"}

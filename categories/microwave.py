@@ -17,27 +17,18 @@ from __future__ import annotations
 import math
 
 from infmob_usd.category import Category
-from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
 from .parts import microwaves as MW
+from .parts.appliance_sizes import MICROWAVE_RANGES as R
 
 
 def dials(p, rng) -> int:
-    """knob_count, or 1 beside a keypad; without one 1 or 2 (drawn): a timer dial alone (Sharp R-21LVF) or
-    timer and power dials (most manual counter-top models)"""
-    if p["knob_count"]:
-        return p["knob_count"]
-    return 1 if p["has_buttons"] else 1 + int(rng.integers(0, 2))
-
-
-def size(p: dict, design: str) -> tuple[float, float, float]:
-    """(width, depth, height) of a design: counter-top models use the parameters; an over-the-range model
-    is 30 in wide, a drawer microwave 24 or 30 in (:data:`~.parts.appliance_sizes.MICROWAVE`)."""
-    return MW.size(p["width"], p["depth"], p["height"], design)
+    """knob_count, or 1 beside a keypad; without one 1 or 2 (drawn, :func:`~.parts.microwaves.dial_count`)"""
+    return MW.dial_count(p["knob_count"], p["has_buttons"], rng)
 
 
 KEYPAD_ROWS = 6
@@ -53,7 +44,7 @@ def key_rows(p: dict) -> int:
     rows, design = p["button_rows"], p["design"]
     if rows <= MW.ROWS_ALWAYS_FIT or design == "drawer_model":
         return min(rows, MW.STRIP_ROWS)
-    W, _, H = size(p, design)
+    W, _, H = A.size(p, design, MW.SIZES)
     release = p["door_opener"] == "release_button" and design in ("turntable", "flatbed")
     return MW.keypad_rows(rows, H, p["feet_height"], design == "over_the_range", p["panel_fraction"] * W,
                           dials(p, None) if p["has_knob"] else 0, release, p["knob_radius"], p["button_height"])
@@ -63,7 +54,7 @@ def key_count(p: dict) -> int:
     """Push keys: three a row over :func:`key_rows` rows, the bottom row three keys or two wide ones
     (``bottom_keys``: Stop/Cancel and Start as two wide keys under the number pad, as on GE JES1072 and
     Panasonic NN-ST66 keypads)"""
-    return 3 * key_rows(p) - (3 - p["bottom_keys"])
+    return MW.key_count(key_rows(p), p["bottom_keys"])
 
 
 GRAMMAR = Grammar("microwave", {
@@ -97,31 +88,31 @@ with it) or on a flatbed's ceramic floor (Panasonic NN-CT55, Sharp R-861 and GE 
 manuals: a rack for grilling and two-level cooking)."""
 
 PARAMS = (
-    Float("width", "overall width (Y)", "m", 0.44, 0.62),
-    Float("depth", "overall depth incl. the door, excl. the handle (X)", "m", 0.32, 0.46),
-    Float("height", "overall height incl. the feet (Z)", "m", 0.25, 0.36),
-    Float("panel_fraction", "control panel width as a fraction of the width", "", 0.2, 0.4),
-    Float("wall", "casing sheet thickness", "m", 0.003, 0.006),
-    Float("door_thickness", "door thickness", "m", 0.03, 0.045),
-    Float("window_margin", "door frame width around the window (hinge side, top, bottom)", "m", 0.025, 0.055),
-    Float("plate_fraction", "turntable diameter as a fraction of the largest that fits", "", 0.8, 0.95),
+    Float("width", "overall width (Y)", "m", *R["width"]),
+    Float("depth", "overall depth incl. the door, excl. the handle (X)", "m", *R["depth"]),
+    Float("height", "overall height incl. the feet (Z)", "m", *R["height"]),
+    Float("panel_fraction", "control panel width as a fraction of the width", "", *R["panel_fraction"]),
+    Float("wall", "casing sheet thickness", "m", *R["wall"]),
+    Float("door_thickness", "door thickness", "m", *R["door_thickness"]),
+    Float("window_margin", "door frame width around the window (hinge side, top, bottom)", "m", *R["window_margin"]),
+    Float("plate_fraction", "turntable diameter as a fraction of the largest that fits", "", *R["plate_fraction"]),
     Int("button_rows", "rows of three push buttons (4-6: a number pad with function keys, where it fits)", "",
         1, KEYPAD_ROWS),
     Int("bottom_keys", "keys in the keypad's bottom row: three, or two wide ones (Stop/Cancel, Start)", "", 2, 3),
     Float("rack_height", "a combination model's wire rack: height of its grid over what it stands on", "m",
-          0.03, 0.09),
-    Float("button_height", "push button height (Z); press depth is 1/8 of it", "m", 0.012, 0.02),
+          *R["rack_height"]),
+    Float("button_height", "push button height (Z); press depth is 1/8 of it", "m", *R["button_height"]),
     Choice("button_shape", "push button shape", choices=("rect", "round"), weights=(0.65, 0.35)),
     Int("knob_count", "dials; auto = 2 without push buttons, else 1", "", 1, 2, auto=True),
-    Float("knob_radius", "dial radius (capped at 0.38 x panel width)", "m", 0.016, 0.028),
-    Float("handle_length", "door handle length as a fraction of the door height", "", 0.45, 0.8),
+    Float("knob_radius", "dial radius (capped at 0.38 x panel width)", "m", *R["knob_radius"]),
+    Float("handle_length", "door handle length as a fraction of the door height", "", *R["handle_length"]),
     Choice("body_finish", "casing material", choices=("painted", "brushed_metal", "plastic"),
            weights=(0.45, 0.3, 0.25)),
     Choice("door_finish", "door frame and panel: match the casing or contrast (plastic)",
            choices=("match", "contrast")),
     Choice("interior_finish", "cavity liner material", choices=("enamel", "painted")),
     Choice("handle_finish", "door handle material", choices=("chrome", "brushed_metal", "plastic")),
-    Float("feet_height", "rubber feet height", "m", 0.006, 0.015),
+    Float("feet_height", "rubber feet height", "m", *R["feet_height"]),
 )
 
 MATERIALS = {
@@ -133,31 +124,35 @@ MATERIALS = {
 DOOR_OPENS = math.pi / 2
 
 
+def skins(p: dict) -> tuple[str, str]:
+    """The door's and fascia's skin and inner-frame slots: the casing's finish on a dark frame, or all
+    ``door`` (contrasting plastic)."""
+    return ("body", "door_inner") if p["door_finish"] == "match" else ("door", "door")
+
+
 class MicrowaveLayout(A.PanelNodes):
     def microwave(self, node):
         p = self.p
         design = node.choice
         style = node.one(design)
-        W, D, H = size(p, design)
+        W, D, H = A.size(p, design, MW.SIZES)
         if design == "drawer_model":
             return self._drawer_model(node, style, W, D, H)
         body = MW.countertop(W, D, H, p["wall"], p["door_thickness"], p["feet_height"], p["panel_fraction"],
                              vent=design == "over_the_range")
         self.add("body", "body", MW.casing(body, p["wall"], p["body_finish"], p["interior_finish"]))
         door = style.one("door") or style.one("otr_door")
-        self.grow(style, cavity=body.cavity, door=dict(ys=body.door_ys, zs=body.zs, x_front=body.x_front),
-                  box=body.outer)
-        self.grow(node.one("control_panel"), xs=body.fascia_xs, ys=body.panel_ys, zs=body.panel_zs,
-                  release=door.one("release_button"))
+        self.grow(style, cavity=body.cavity, door=body, box=body.outer)
+        self.grow(node.one("control_panel"), body=body, release=door.one("release_button"))
 
     def turntable(self, node, cavity, door, box):
         self.grow(node.one("plate"), cavity=cavity)
-        self.grow(node.one("door"), **door)
+        self.grow(node.one("door"), body=door)
 
     def flatbed(self, node, cavity, door, box):
         """No turntable: a fixed ceramic floor over the antenna (Panasonic inverter flatbed models)."""
         self.extend("body", [MW.ceramic_floor(cavity)])
-        self.grow(node.one("door"), **door)
+        self.grow(node.one("door"), body=door)
         if rack := node.one("rack"):
             self.grow(rack, parent="body", **MW.floor_rack_seat(cavity))
 
@@ -165,7 +160,7 @@ class MicrowaveLayout(A.PanelNodes):
         """A turntable, a door with a bar handle, a vent grille over the door and panel, and under the
         body two grease filters and a cooktop light (decor on the casing)."""
         self.grow(node.one("plate"), cavity=cavity)
-        self.grow(node.one("otr_door"), **door)
+        self.grow(node.one("otr_door"), body=door)
         self.extend("body", MW.vent_grille(box))
         for k, (kid, at) in enumerate(zip(node.of("filter"), MW.filter_boxes(box), strict=True)):
             self.grow(kid, k=k, box=at)
@@ -177,8 +172,8 @@ class MicrowaveLayout(A.PanelNodes):
         name = self.add(f"filter_{k}", "filter", pieces)
         self.slide("body", name, at, upper=travel)
 
-    def otr_door(self, node, ys, zs, x_front):
-        self._door(node, ys, zs, x_front, "bar")
+    def otr_door(self, node, body):
+        self._door(node, body, "bar")
 
     def drawer_model(self, node, body):
         self.grow(node.one("drawer"), body=body)
@@ -190,7 +185,7 @@ class MicrowaveLayout(A.PanelNodes):
         body = MW.drawer_body(W, D, H, p["wall"], p["door_thickness"], p["feet_height"])
         self.add("body", "body", MW.casing(body, p["wall"], p["body_finish"], p["interior_finish"]))
         self.grow(style, body=body)
-        self.grow(node.one("control_panel"), xs=body.fascia_xs, ys=body.panel_ys, zs=body.panel_zs, release=None)
+        self.grow(node.one("control_panel"), body=body, release=None)
 
     def drawer(self, node, body):
         p = self.p
@@ -199,35 +194,34 @@ class MicrowaveLayout(A.PanelNodes):
         self.slide("body", "drawer", at, upper=travel)
 
     def plate(self, node, cavity):
-        c, radius = MW.plate_fit(cavity, self.p["plate_fraction"])
-        cz0 = cavity[4]
-        self.extend("body", [A.spindle(c, cz0)])
-        self.add("plate", "plate", A.turntable(c, cz0, radius))
-        self.spin("body", "plate", Frame.at((*c, cz0)), role="turntable")
+        spindle, plate, axis, rack_seat = MW.turntable(cavity, self.p["plate_fraction"])
+        self.extend("body", [spindle])
+        self.add("plate", "plate", plate)
+        self.spin("body", "plate", axis, role="turntable")
         if rack := node.one("rack"):  # on the tray's floor, inside its rim
-            self.grow(rack, parent="plate", **MW.rack_on_plate(cavity, c, radius))
+            self.grow(rack, parent="plate", **rack_seat)
 
     def rack(self, node, parent, center, z0, radius, room):
         """A low wire rack: a square grid inscribed in ``radius`` on four legs, fixed to what it stands on."""
         self.add("rack", "rack", MW.stand_rack(center, z0, radius, room, self.p["rack_height"]))
         self.fix(parent, "rack")
 
-    def door(self, node, ys, zs, x_front):
-        self._door(node, ys, zs, x_front, node.choice)
+    def door(self, node, body):
+        self._door(node, body, node.choice)
 
-    def _door(self, node, ys, zs, x_front, opener):
+    def _door(self, node, body, opener):
         p = self.p
-        skin, inner = ("body", "door_inner") if p["door_finish"] == "match" else ("door", "door")
+        skin, inner = skins(p)
+        ys, zs = body.door_ys, body.zs
         hole = MW.door_window(ys, zs, p["window_margin"], opener)
-        self.add("door", "door", A.glazed_door(x_front, p["door_thickness"], ys, zs, hole, skin, inner,
+        self.add("door", "door", A.glazed_door(body.x_front, p["door_thickness"], ys, zs, hole, skin, inner,
                                                A.inner_sheet(MATERIALS[inner])))
-        # hinged on its front face at the left edge: about -Z it swings out (+X) and to the left
-        self.hinge("body", "door", Frame.at((x_front, ys[0], zs[0]), z=(0, 0, -1)), upper=DOOR_OPENS)
-        at = Frame.at((x_front, ys[1], (zs[0] + zs[1]) / 2), z=(1, 0, 0), x=(0, 0, 1))
+        self.hinge("body", "door", body.hinge, upper=DOOR_OPENS)
+        length = p["handle_length"] * body.door_height
         if node.kind == "otr_door":
-            self.bar(node, at=at, length=p["handle_length"] * (zs[1] - zs[0]))
+            self.bar(node, at=body.handle_at, length=length)
         elif opener != "release_button":
-            self.grow(node.one(opener), at=at, length=p["handle_length"] * (zs[1] - zs[0]))
+            self.grow(node.one(opener), at=body.handle_at, length=length)
 
     def bar(self, node, at, length):
         self.extend("door", MW.door_handle("bar", length, at))
@@ -235,25 +229,25 @@ class MicrowaveLayout(A.PanelNodes):
     def recessed(self, node, at, length):
         self.extend("door", MW.door_handle("recessed", length, at))
 
-    def control_panel(self, node, xs, ys, zs, release):
+    def control_panel(self, node, body, release):
         """A column on the fascia (display, keys, dials, door release) or, on a drawer model's wide strip,
         everything side by side."""
         p = self.p
         buttons, knob = node.one("buttons"), node.one("knob")
-        n_dials = len(knob.of("dial")) if knob else 0
-        n_keys = len(buttons.of("button")) if buttons else 0
-        if ys[1] - ys[0] > 2 * (zs[1] - zs[0]):  # a drawer microwave's control strip
+        n_dials, n_keys = len(knob.of("dial") if knob else ()), len(buttons.of("button") if buttons else ())
+        xs, ys, zs = body.fascia_xs, body.panel_ys, body.panel_zs
+        if body.strip:  # a drawer microwave's control strip
             panel = MW.strip_panel(xs[1], ys, zs, n_keys, n_dials, p["knob_radius"], p["button_height"],
                                    p["button_shape"], self.rng)
         else:
             panel = MW.column_panel(xs[1], ys, zs, n_keys, n_dials, bool(release), p["knob_radius"],
                                     p["button_height"], p["button_shape"], self.rng)
-        skin, inner = ("body", "door_inner") if p["door_finish"] == "match" else ("door", "door")
+        skin, inner = skins(p)
         self.add("control_panel", "control_panel",
                  MW.fascia(xs, ys, zs, panel.holes, skin, inner, A.inner_sheet(MATERIALS[inner])) + panel.decor)
         self.fix("body", "control_panel")
         if buttons:
-            self.grow(buttons, made=[b for b in panel.buttons if b[-1] is None])
+            self.grow(buttons, made=[b for b in panel.buttons if not b.release])
         if release:
             self.grow(release, made=panel.buttons[-1])
         if knob:
@@ -266,9 +260,8 @@ class MicrowaveLayout(A.PanelNodes):
             self.grow(kid, made=d)
 
     def dial(self, node, made):
-        name, pieces, at = made
-        self.add(name, "knob", pieces)
-        self.spin("control_panel", name, at, role="knob")
+        self.add(made.name, "knob", made.pieces)
+        self.spin("control_panel", made.name, made.at, role="knob")
 
 
 CATEGORY = Category("microwave", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, MicrowaveLayout, MATERIALS,

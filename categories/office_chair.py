@@ -16,8 +16,10 @@ Four designs (``design``), each with its own structure:
 - mesh: a framed mesh back with a sliding lumbar pad, optionally the adjustable headrest;
 - drafting: a tall chair (seat 0.62-0.78 m) with a foot ring that slides up and down the column,
   an optional low back.
-Any design may have a tilt-tension knob (turning, under the seat's front), a seat slider (pan and cushion slide forward on the mechanism) and arms of one
-style: 4D (height, slide, turn, pad turn), height-only, fixed, or flip-up (turn up about a rear pivot).
+Any design may have a tilt-tension knob (turning, under the seat's front), a seat slider (pan and cushion slide
+forward on the mechanism) and arms of one style: 4D (height, slide, turn, pad turn), height-only, fixed, or
+flip-up (the cap on the post turns up about a hinge at its carriage's rear end, to stand upright beside the
+back, above the seat).
 Parts: ``categories/parts/seating.py`` (shared with the bar chair).
 """
 
@@ -237,21 +239,25 @@ class ChairLayout(S.ChairNodes):
     def arm(self, node, seat, y, side, dims):
         a = S.arm(seat, self.p["seat_height"], y, dims)
         style = node.choice
-        self.extend("seat", a.bracket if style != "arm_flip" else a.bracket[:2])
-        post = self.add(f"arm_{side}", "arm", a.post)
+        self.extend("seat", a.bracket)
+        if style == "arm_flip":  # the post is the seat's; the cap on it (carriage and pad) flips up
+            self.extend("seat", a.post)
+        post = self.add(f"arm_{side}", "arm", a.slider if style == "arm_flip" else a.post)
         if style in ("arm_4d", "arm_height"):
             self.slide("seat", post, a.post_slide, upper=self.p["arm_travel"], role="telescope")
         elif style == "arm_fixed":
             self.fix("seat", post)
-        else:  # flip-up: a positive turn about -y tips the arm up and back
-            pivot = a.post_slide.moved(dx=-S.ARM_POST_HALF)  # its rear bottom edge: nothing dips below it
-            self.hinge("seat", post, Frame.at(pivot.origin, x=(1, 0, 0), z=(0, -1, 0)), upper=S.ARM_FLIP)
+        else:  # flip-up: a positive turn about -y lifts the cap's front; it stands upright beside the back
+            self.hinge("seat", post, a.flip, upper=S.ARM_FLIP)
         self.grow(node.one(style), arm=a, side=side, post=post, dims=dims)
 
     def arm_height(self, node, arm, side, post, dims):
         self.extend(post, [*arm.slider, *arm.pad])
 
-    arm_fixed = arm_flip = arm_height
+    arm_fixed = arm_height
+
+    def arm_flip(self, node, arm, side, post, dims):
+        self.extend(post, arm.pad)  # the cap: the carriage is the hinged part's already
 
     def arm_4d(self, node, arm, side, post, dims):
         self.grow(node.one("arm_slider"), arm=arm, side=side, post=post, dims=dims)

@@ -21,33 +21,24 @@ import math
 
 from infmob_usd import joints as J
 from infmob_usd.category import Category
-from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
 from .parts import ovens as OV
+from .parts.appliance_sizes import OVEN_RANGES as R
 
 
 def grates(p, rng) -> int:
-    """grate_count, or 2 below 0.7 m width, else 3"""
-    return p["grate_count"] or (2 if p["width"] < 0.7 else 3)
-
-
-def burners_per_grate(n: int) -> list[int]:
-    """Burners under each of ``n`` grates: two, one under the middle of three."""
-    return [1 if (n == 3 and k == 1) else 2 for k in range(n)]
+    """grate_count, or 2 below 0.7 m width, else 3 (:func:`~.parts.ovens.grate_count`)"""
+    return p["grate_count"] or OV.grate_count(p["width"])
 
 
 def knobs(p, rng) -> int:
     """knob_count, or one per burner + 1 on a range (+ 1 for a warming drawer; at most 8), 2-3 on a
     built-in oven, 4-5 on a double wall oven (a mode and a temperature knob per oven)"""
-    drawn = 2 + int(rng.integers(0, 2))
-    if p["style"] in ("range", "warming"):
-        drawn = min(8, sum(burners_per_grate(grates(p, rng))) + 1 + (p["style"] == "warming"))
-    elif p["style"] == "double_wall":
-        drawn = 4 + int(rng.integers(0, 2))
+    drawn = OV.knob_count(p["style"], sum(OV.burners_per_grate(grates(p, rng))), rng)
     return p["knob_count"] or drawn
 
 
@@ -82,29 +73,30 @@ only. Real sizes: 30 in ranges 0.76 x 0.64-0.71 x 0.91-0.94 m, warming drawers 0
 HBL8651UC installation guides)."""
 
 PARAMS = (
-    Float("width", "overall width (Y)", "m", 0.5, 0.9),
-    Float("depth", "body depth incl. the door, excl. the handle (X)", "m", 0.55, 0.7),
-    Float("height", "floor to cooktop (range) or to the top (built-in)", "m", 0.85, 0.98),
-    Float("panel_fraction", "control panel height as a fraction of the oven height above the hinge", "", 0.2, 0.4),
-    Float("door_thickness", "door thickness", "m", 0.04, 0.06),
-    Float("window_margin", "door frame width around the window", "m", 0.05, 0.09),
-    Float("handle_length", "door handle length as a fraction of the door width", "", 0.6, 0.9),
-    Float("plinth_height", "recessed kick plinth height", "m", 0.03, 0.07),
-    Float("drawer_height", "storage drawer front height", "m", 0.1, 0.16),
-    Float("drawer_travel", "drawer opening as a fraction of its depth", "", 0.55, 0.75),
+    Float("width", "overall width (Y)", "m", *R["width"]),
+    Float("depth", "body depth incl. the door, excl. the handle (X)", "m", *R["depth"]),
+    Float("height", "floor to cooktop (range) or to the top (built-in)", "m", *R["height"]),
+    Float("panel_fraction", "control panel height as a fraction of the oven height above the hinge", "",
+          *R["panel_fraction"]),
+    Float("door_thickness", "door thickness", "m", *R["door_thickness"]),
+    Float("window_margin", "door frame width around the window", "m", *R["window_margin"]),
+    Float("handle_length", "door handle length as a fraction of the door width", "", *R["handle_length"]),
+    Float("plinth_height", "recessed kick plinth height", "m", *R["plinth_height"]),
+    Float("drawer_height", "storage drawer front height", "m", *R["drawer_height"]),
+    Float("drawer_travel", "drawer opening as a fraction of its depth", "", *R["drawer_travel"]),
     Int("rack_count", "wire racks", "", 2, 4),
-    Float("rack_travel", "rack pull-out as a fraction of its depth (the door must be open)", "", 0.5, 0.75),
+    Float("rack_travel", "rack pull-out as a fraction of its depth (the door must be open)", "", *R["rack_travel"]),
     Int("knob_count", "knobs; auto = burners + 1 (range) or 2-3 (built-in)", "", 2, 8, auto=True),
-    Float("knob_radius", "knob radius (shrunk to fit the panel)", "m", 0.016, 0.026),
+    Float("knob_radius", "knob radius (shrunk to fit the panel)", "m", *R["knob_radius"]),
     Choice("knob_motion", "knobs turn freely or +-pi/4", choices=("continuous", "revolute")),
     Choice("knob_style", "knob shape", choices=("ridge", "round"), weights=(0.6, 0.4)),
     Int("button_count", "push buttons under the display", "", 2, 6),
     Int("grate_count", "cooktop grates side by side; auto = 2 below 0.7 m width, else 3", "", 2, 3, auto=True),
-    Float("grate_play", "grate play forward and sideways once lifted", "m", 0.015, 0.04),
+    Float("grate_play", "grate play forward and sideways once lifted", "m", *R["grate_play"]),
     Float("grate_lift", "grate lift off the cooktop: clear of the burner caps (20 mm) and a hand under it", "m",
-          0.06, 0.12),
-    Float("lower_height", "extra height of a double wall oven's lower oven (added to height)", "m", 0.34, 0.4),
-    Float("warming_height", "warming drawer front height (a range with a warming drawer)", "m", 0.13, 0.18),
+          *R["grate_lift"]),
+    Float("lower_height", "extra height of a double wall oven's lower oven (added to height)", "m", *R["lower_height"]),
+    Float("warming_height", "warming drawer front height (a range with a warming drawer)", "m", *R["warming_height"]),
     Choice("body_finish", "casing and door material", choices=("brushed_metal", "enamel", "painted"),
            weights=(0.5, 0.3, 0.2)),
     Choice("handle_finish", "handle material", choices=("chrome", "brushed_metal", "plastic")),
@@ -132,7 +124,6 @@ class OvenLayout(A.PanelNodes):
 
     def oven(self, node):
         p = self.p
-        finish = p["body_finish"]
         design = node.choice
         style = node.one(design)
         st = OV.stack(p["width"], p["depth"], p["height"], p["door_thickness"], design, p["panel_fraction"],
@@ -140,7 +131,7 @@ class OvenLayout(A.PanelNodes):
         rng_style, double = design in ("range", "warming"), st.lower is not None
         H = st.H
         pieces, cav = OV.section((*st.xs, *st.ys), st.zs, st.z_dtop, H - OV.T, H - OV.T if rng_style else H,
-                                 p["door_thickness"], finish, keep_base=not double)
+                                 p["door_thickness"], keep_base=not double)
         self._body(pieces)
         if double:
             self.grow(style, **st.lower)
@@ -150,19 +141,18 @@ class OvenLayout(A.PanelNodes):
         elif design == "warming":
             self.grow(style.one("warming_drawer"), **bay)
         elif not double:  # a fixed drawer front with a trim line
-            self.extend("body", OV.fixed_drawer_front(st, finish))
+            self.extend("body", OV.fixed_drawer_front(st))
         self.grow(node.one("door"), box=st.door)
         self.grow(node.one("racks"), cav=cav)
-        front = self.grow(node.one("control_panel"), xs=st.panel[0], ys=st.door[2:4], zs=st.panel[1])
+        front = self.grow(node.one("control_panel"), **st.panel_box)
         if not double:
             self.grow(style, xs=st.xs, ys=st.ys, z_dtop=st.z_dtop + st.gap_top, front=front, H=H)
         else:
-            self.extend("body", OV.top_cover(st.xs, st.ys, H, finish))
+            self.extend("body", OV.top_cover(st.xs, st.ys, H))
 
     def double_wall(self, node, xs, ys, zs, H):
         """The lower oven of a double wall oven: its casing, door and racks (the upper oven is the usual one)."""
-        pieces, cav, door = OV.lower_section(dict(xs=xs, ys=ys, zs=zs), self.p["door_thickness"],
-                                             self.p["body_finish"])
+        pieces, cav, door = OV.lower_section(dict(xs=xs, ys=ys, zs=zs), self.p["door_thickness"])
         self._body(pieces)
         self.grow(node.one("lower_door"), box=door)
         self.grow(node.one("lower_racks"), cav=cav)
@@ -174,7 +164,7 @@ class OvenLayout(A.PanelNodes):
         self.racks(node, cav, prefix="lower_", door="lower_door")
 
     def range(self, node, xs, ys, z_dtop, front, H):
-        plate, vent, area = OV.range_top(xs, ys, z_dtop, front, H, self.p["body_finish"])
+        plate, vent, area = OV.range_top(xs, ys, z_dtop, front, H)
         self.extend("body", plate)
         self.extend("body", vent)
         self.grow(node.one("cooktop"), **area, H=H)
@@ -182,11 +172,11 @@ class OvenLayout(A.PanelNodes):
     warming = range
 
     def wall(self, node, xs, ys, z_dtop, front, H):
-        self.extend("body", OV.top_cover(xs, ys, H, self.p["body_finish"]))
+        self.extend("body", OV.top_cover(xs, ys, H))
 
     def cooktop(self, node, xs, ys, H):
         """Burners in columns; with grates, one over each column."""
-        pieces, columns = OV.burner_columns(xs, ys, H, burners_per_grate(grates(self.p, None)))
+        pieces, columns = OV.burner_columns(xs, ys, H, OV.burners_per_grate(grates(self.p, None)))
         self.extend("body", pieces)
         if node.one("grates"):
             self.grow(node.one("grates"), xs=xs, columns=columns, H=H)
@@ -201,14 +191,14 @@ class OvenLayout(A.PanelNodes):
         p = self.p
         pieces, origin, side = OV.grate(xs, col, H)
         name = self.add(f"grate_{k}", "grate", pieces)
-        self.join(J.limited_floating("body", name, origin, ((0, 0, 1), (1, 0, 0), (0, 1, 0)),
+        self.join(J.limited_floating("body", name, origin, OV.GRATE_AXES,
                                      ((0.0, p["grate_lift"]), (0.0, p["grate_play"]), (-side, side))))
 
     def drawer(self, node, xs, ys, zs, warming=False):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
         warming drawer: an enamel tray, a bar handle like the door's and a marking strip."""
         p = self.p
-        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"], p["body_finish"])
+        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"])
         self.add("drawer", "drawer", pieces)
         self.slide("body", "drawer", at, upper=p["drawer_travel"] * depth)
 
@@ -217,14 +207,12 @@ class OvenLayout(A.PanelNodes):
 
     def door(self, node, box, name="door"):
         p = self.p
-        _, x1, _, _, z0, _ = box
-        self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"], p["body_finish"]))
-        # hinged on the front face at the bottom edge: about +Y the top falls forward (+X)
-        self.hinge("body", name, Frame.at((x1, 0.0, z0), z=(0, 1, 0)), upper=DOOR_OPENS)
+        self.add(name, "door", OV.door(box, p["window_margin"], p["handle_length"]))
+        self.hinge("body", name, A.drop_hinge(box), upper=DOOR_OPENS)
 
     def racks(self, node, cav, prefix="", door="door"):
         kids = node.of("rack")
-        empty = int(self.rng.integers(0, len(kids) + 1))  # one rail level stays free
+        empty = OV.free_level(self.rng, len(kids))  # one rail level stays free
         rails, slots = OV.rack_levels(cav, len(kids), empty)
         for rail in rails:
             self.extend("body", [rail])
@@ -234,8 +222,8 @@ class OvenLayout(A.PanelNodes):
     def rack(self, node, k, xs, ys, zc, prefix="", door="door"):
         name = self.add(f"{prefix}rack_{k}", "rack", A.oven_rack(xs, ys, zc))
         # behind the door: the rack slides out only once the door lies open
-        self.slide("body", name, Frame.at((xs[1], 0.0, zc), z=(1, 0, 0)), upper=self.p["rack_travel"] * (xs[1] - xs[0]),
-                   requires_open=door)
+        at, travel = A.rack_slide(xs, zc, self.p["rack_travel"])
+        self.slide("body", name, at, upper=travel, requires_open=door)
 
     def control_panel(self, node, xs, ys, zs):
         """A hollow housing; knobs left and right, display and buttons in the middle. Returns the x of
@@ -257,13 +245,18 @@ class OvenLayout(A.PanelNodes):
             self.grow(kid, made=m)
 
     def knob(self, node, made):
-        name, pieces, at = made
-        self.add(name, "knob", pieces)
+        self.add(made.name, "knob", made.pieces)
         if self.p["knob_motion"] == "continuous":
-            self.spin("control_panel", name, at, role="knob")
+            self.spin("control_panel", made.name, made.at, role="knob")
         else:
-            self.hinge("control_panel", name, at, upper=OV.KNOB_TURN, lower=-OV.KNOB_TURN, role="knob")
+            self.hinge("control_panel", made.name, made.at, upper=OV.KNOB_TURN, lower=-OV.KNOB_TURN, role="knob")
 
+
+PAINTED_STEEL = ("body_finish", {"painted": A.STEEL})
+SUBSTRATES = {"body": PAINTED_STEEL, "door": PAINTED_STEEL, "door_inner": A.STEEL, "plinth": A.STEEL}
+"""A painted casing, door and drawer, the door's inner frame and the plinth are painted steel sheet (the painted
+family weighs as board): a painted wall oven weighs what an enamelled one does."""
 
 CATEGORY = Category("oven", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, OvenLayout, MATERIALS,
+                    substrates=SUBSTRATES,
                     palette=appliance)  # finishes real ovens are sold in

@@ -7,23 +7,17 @@ rubber pads), ``plastic`` (a moulded tray with pegs) and ``wire`` (chrome rails 
 an arch at every fence). A plate stands upright in its slot, its axis along X, a few millimetres
 above the support, and hangs from the rack by a ``limited_planar`` joint in its own plane: a lift
 along +Z (gravity holds it down), a slide along Y and a turn about its own axis — moving in its
-own plane it never leaves its slot. Parts: ``categories/parts/racks.py``.
+own plane it never leaves its slot. Parts: ``categories/parts/plate_racks.py``.
 """
 
 from __future__ import annotations
 
-import math
-
-import numpy as np
-
-from infmob_usd import joints as J
 from infmob_usd.category import Category
-from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
-from .parts import racks as R
+from .parts import plate_racks as R
 
 
 def plates(p, rng) -> int:
@@ -95,132 +89,84 @@ def wire_has_legs(p: dict) -> dict:
 class RackLayout(Layout):
     def plate_rack(self, node):
         p = self.p
-        n, r = p["slot_count"], p["plate_radius"]
-        rp = p["prong_radius"] * (R.WIRE if p["style"] == "wire" else 1.0)
-        b = p["prong_spread"] * r
-        plate0 = R.plate(r, p["plate_depth"] * r, p["plate_thickness"], p["foot_fraction"] * r, "plate")
-        pts = np.vstack([plate0.vertices, *plate0.convex])
-        x_lo, x_hi = pts[:, 0].min(), pts[:, 0].max()
-        pitch = x_hi - x_lo + 2 * p["clearance"] + 2 * rp
-        fences = (np.arange(n + 1) - n / 2) * pitch
-        xs = (fences[0] - R.END, fences[-1] + R.END)
-        z0 = R.PAD if node.one("feet") else 0.0  # underside of the rack body
-        if p["style"] == "wood":
-            pieces, zs = R.wood_rack(fences, xs, b, rp, z0, p["prong_height"], p["base_height"])
-        elif p["style"] == "plastic":
-            pieces, zs = R.plastic_tray(fences, xs, b, rp, z0, p["prong_height"], p["base_height"], r)
-        else:
-            pieces, zs = R.wire_rack(fences, xs, b, rp, p["prong_height"], p["base_height"])
-        self.add("rack", "rack", pieces)
-        # the side board: beyond the reach of a plate slid sideways, at the rack's foot
         design = node.one(node.choice)
-        board, side = R.side_board(pieces, xs, r, len(design.of("caddy")), len(design.of("cup")),
-                                   p["style"] == "wire")
-        self.extend("rack", [side])
+        size, plate = R.RackSize.of(p, feet=bool(node.one("feet"))), R.PlateSize.of(p)
+        piece = R.plate(plate, "plate")
+        rack = self.place(R.rack_body(size, plate, piece, len(design.of("caddy")), len(design.of("cup"))), "rack")
         if node.one("feet"):
-            self.grow(node.one("feet"), pieces=self.bp.parts["rack"].pieces, xs=xs)
-        self.grow(design, board=board)
-        zc = zs + R.SEAT_GAP + r  # plate centre: its lowest point SEAT_GAP above the support
-        self._plates(node.of("plate"), plate0, fences, pitch, x_lo, zc, "plate")
+            self.grow(node.one("feet"))
+        self.grow(design, rack=rack)
+        self._plates(node.of("plate"), piece, rack, "plate")
         if node.one("tier"):
-            self.grow(node.one("tier"), rack=(fences, xs, b, rp, z0), top=zc + r + R.LIFT + R.TIER_GAP, plate0=plate0,
-                      pitch=pitch, x_lo=x_lo, zc=zc)
+            self.grow(node.one("tier"), tier=R.rack_tier(size, plate, piece, rack.anchor("tier")), piece=piece)
         if node.one("drip_tray"):
-            self.grow(node.one("drip_tray"), xs=xs, b=b, rp=rp)
+            self.grow(node.one("drip_tray"), tray=R.rack_drip_tray(rack.assembly, size), at=rack.anchor("drip_tray"))
         if node.one("spout"):
-            self.grow(node.one("spout"), x=xs[1] + R.TRAY_END_WALL, z=z0)
+            self.grow(node.one("spout"), at=rack.anchor("spout"))
 
-    def _plates(self, kids, plate0, fences, pitch, x_lo, zc, prefix):
-        p = self.p
-        n = p["slot_count"]
-        rp = p["prong_radius"] * (R.WIRE if p["style"] == "wire" else 1.0)
-        slots = sorted(int(i) for i in self.rng.choice(n, size=len(kids), replace=False))
+    def _plates(self, kids, piece, rack, prefix):
+        slots = sorted(int(i) for i in self.rng.choice(self.p["slot_count"], size=len(kids), replace=False))
         for kid, i in zip(kids, slots):
-            x_foot = fences[i] + rp + p["clearance"] - x_lo
-            self.grow(kid, i=i, piece=plate0.translated((x_foot, 0.0, zc)), pivot=(fences[i] + pitch / 2, 0.0, zc),
+            self.grow(kid, i=i, piece=piece, slot=rack.anchor(f"slot_{i}"), pivot=rack.anchor(f"pivot_{i}"),
                       prefix=prefix)
 
-    def tier(self, node, rack, top, plate0, pitch, x_lo, zc):
-        """The upper tier: the rack again, raised until its lowest member over the plates is at ``top`` (R.TIER_GAP
-        above a lower plate lifted fully), on four posts that rise from the lower tier; its plates in its own
-        slots. Wire: the legs (caps dropped) stand on posts over the lower legs, its cross wires are the lowest
-        members (a rail's radius under the rail axis). Wood: the rails are, and the posts are dowels from the
-        lower rails to the upper battens."""
-        fences, xs, b, rp, z0 = rack
-        p = self.p
-        if p["style"] == "wire":
-            pieces, zs = R.wire_rack(fences, xs, b, rp, p["prong_height"], p["base_height"])
-            pieces, posts, dz = R.wire_tier(pieces, zs, top, xs, b, rp)
-        else:
-            pieces, zs = R.wood_rack(fences, xs, b, rp, z0, p["prong_height"], p["base_height"])
-            dz = top - (zs - p["base_height"])
-            bw = R.BATTEN_W
-            least, share = R.TIER["dowel"]
-            posts = R.tier_posts((xs[0] + bw / 2, xs[1] - bw / 2), b, max(least, share * rp), zs, z0 + dz)
-        self.extend("rack", [pc.translated((0.0, 0.0, dz)) for pc in pieces] + posts)
-        self._plates(node.of("plate"), plate0, fences, pitch, x_lo, zc + dz, "upper_plate")
+    def tier(self, node, tier, piece):
+        """The upper tier on four posts over the first (its pieces are the rack's); its plates in its own slots."""
+        self.extend("rack", tier.pieces)
+        self._plates(node.of("plate"), piece, tier, "upper_plate")
 
-    def spout(self, node, x, z):
+    def spout(self, node, at):
         """The swivel spout at the middle of the tray's front end wall, its bottom just above the floor's
         underside; at rest it lies along the wall (pointing -Y) and swings through +X to +Y."""
-        at = (x + R.SPOUT_OFF, 0.0, z + R.SPOUT_ABOVE)
-        name = self.add("spout", "spout", R.swivel_spout(*at, "spout"))
-        self.hinge("rack", name, Frame.at(at, z=(0, 0, 1)), upper=math.pi, role="swivel")
+        spout = self.place(R.swivel_spout("spout").attached("pivot", to=at), "spout")
+        self.hinge("rack", spout.root, spout.anchor("pivot"), upper=R.SPOUT_TURN, role="swivel")
 
-    def drip_tray(self, node, xs, b, rp):
+    def drip_tray(self, node, tray, at):
         """A shallow tray between the legs, under the cross wires; it slides out along +X past the front legs."""
-        (x0, x1), pieces = R.rack_drip_tray(xs, b)
-        name = self.add("drip_tray", "tray", pieces)
-        self.slide("rack", name, Frame.at((x1, 0.0, 0.0), z=(1, 0, 0)), upper=R.TRAY_OUT * (x1 - x0))
+        placed = self.place(tray.attached("mount", to=at), "drip_tray")
+        self.slide("rack", placed.root, placed.anchor("pull"), upper=R.tray_travel(tray))
 
-    def feet(self, node, pieces, xs):
-        self.extend("rack", R.pads(pieces, xs))
+    def feet(self, node):
+        self.extend("rack", [])  # the rack's pads are its body's (built with it, before its fittings)
 
-    def plate(self, node, i, piece, pivot, prefix="plate"):
-        slot = "plate_alt" if self.p["plate_set"] == "mixed" and i % 2 else "plate"
-        name = self.add(f"{prefix}_{i}", "plate", [piece.replace(material=slot)])
-        # in its own plane: lift along +Z, slide along Y, turn about its axis (X) through its centre
-        self.join(J.limited_planar("rack", name, pivot, slide_axes=((0, 0, 1), (0, 1, 0)),
-                                   slides=((0.0, R.LIFT), (-R.PLATE_SLIDE, R.PLATE_SLIDE)), axis=(1, 0, 0),
-                                   turn=(-R.TURN, R.TURN), role="plate"))
-
+    def plate(self, node, i, piece, slot, pivot, prefix="plate"):
+        material = "plate_alt" if self.p["plate_set"] == "mixed" and i % 2 else "plate"
+        name = self.add(f"{prefix}_{i}", "plate", [piece.replace(material=material).translated(slot.origin)])
+        self.join(R.plate_joint("rack", name, pivot))
 
     # -- the side board: a cutlery caddy, mugs on pegs ---------------------------------------------------
-    def cutlery(self, node, board):
+    def cutlery(self, node, rack):
         for k, kid in enumerate(node.of("caddy")):
-            self.grow(kid, board=board, k=k)
+            self.grow(kid, rack=rack, k=k)
 
-    def cups(self, node, board, after=0.0):
+    def cups(self, node, rack):
         """Two rows of pegs along the board (its length was made for them); a mug or a tumbler upside down on
         each of them (a row may have one spare peg)."""
-        spots, z = R.cup_spots(board, len(node.of("cup")))
-        self.extend("rack", [R.cup_peg(x, y, z, "frame") for x, y in spots])
-        for k, (kid, (x, y)) in enumerate(zip(node.of("cup"), spots)):
-            self.grow(kid, k=k, at=(x, y, z + R.BOARD_STAND))
+        pegs = [R.cup_peg("frame").placed(at) for at in R.pegs(rack.assembly)]
+        self.extend("rack", [pc for peg in pegs for pc in peg.pieces])
+        for k, (kid, peg) in enumerate(zip(node.of("cup"), pegs)):
+            self.grow(kid, k=k, at=peg.anchor("seat"))
 
-    def station(self, node, board):
-        self.cutlery(node, board)
-        self.cups(node, board, after=len(node.of("caddy")) * (R.CADDY["x"] + R.CADDY_APART))
+    def station(self, node, rack):
+        self.cutlery(node, rack)
+        self.cups(node, rack)
 
-    def caddy(self, node, board, k=0):
-        (x0, x1), (y0, y1), _, z = board
-        c = R.CADDY
-        yc = (y0 + y1) / 2
-        xe = x1 - R.CADDY_END - k * (c["x"] + R.CADDY_APART)
-        pieces = R.caddy(xe - c["x"], xe, yc - c["y"] / 2, yc + c["y"] / 2, z + R.BOARD_STAND, "caddy", "cutlery")
-        name = self.add(f"caddy_{k}", "basket", pieces)
-        self.slide("rack", name, Frame.at((xe - c["x"] / 2, yc, z), z=(0, 0, 1)), upper=R.CADDY_LIFT)
+    def caddy(self, node, rack, k=0):
+        caddy = self.place(R.caddy("caddy", "cutlery").attached("mount", to=rack.anchor(f"caddy_{k}")), f"caddy_{k}")
+        self.slide("rack", caddy.root, caddy.anchor("lift"), upper=R.CADDY_LIFT)
 
     def cup(self, node, k, at):
         self.grow(node.one(node.choice), k=k, at=at)
 
+    def _lift_off(self, name, part, at):
+        placed = self.place(part.attached("rim", to=at), name)
+        self.slide("rack", placed.root, placed.anchor("lift"), upper=R.CUP_LIFT)
+
     def mug(self, node, k, at):
-        name = self.add(f"cup_{k}", "cup", R.mug(*at, "mug"))
-        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=R.CUP_LIFT)
+        self._lift_off(f"cup_{k}", R.mug("mug"), at)
 
     def glass(self, node, k, at):
-        name = self.add(f"glass_{k}", "glass", R.tumbler(*at, "glass"))
-        self.slide("rack", name, Frame.at(at, z=(0, 0, 1)), upper=R.CUP_LIFT)
+        self._lift_off(f"glass_{k}", R.tumbler("glass"), at)
 
 
 CATEGORY = Category("plate_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,

@@ -1,23 +1,24 @@
-"""Storage rack: a pallet rack with adjustable levels, boltless shelving of lidded totes, or a bin rack.
+"""Storage rack: a pallet rack of pinned levels, boltless shelving of lidded totes, or a bin rack.
 
-Three designs (``design``). ``pallet_rack`` is described below. ``shelving``: boltless steel
-shelving (0.35-0.6 m deep, 4-6 fixed levels 0.3-0.45 m apart: Tennsco / IKEA BROR) holding a row
-of 2-5 plastic storage totes (0.28-0.45 m wide, their number drawn per level) on each level; each tote slides out along +X and a lidded tote's lid
-hinges up about its back edge once the tote is out (``requires_open``). ``bin_rack``: a
-small-parts bin rack (0.35-0.6 m deep, 4-8 levels 0.18-0.24 m apart) whose every level holds a row
-of up to 12 open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X:
-racks of bins are the large assemblies of the category.
+Three designs (``design``). ``pallet_rack`` is described below. ``shelving``: boltless steel shelving
+(0.35-0.6 m deep, 4-6 fixed levels 0.3-0.45 m apart: Tennsco / IKEA BROR) holding a row of 2-5 plastic storage
+totes (0.28-0.45 m wide, their number drawn per level) on each level; each tote slides out along +X and a
+lidded tote's lid hinges up about its back edge once the tote is out (``requires_open``). ``bin_rack``: a
+small-parts bin rack (0.35-0.6 m deep, 4-8 levels 0.18-0.24 m apart) whose every level holds a row of up to 12
+open-fronted louvred bins (Akro-Mils AkroBins 105-150 mm wide), each sliding out along +X: racks of bins are
+the large assemblies of the category.
 
 Pallet rack: X is depth (the front faces +X), Y is width, Z is up. Frames of two braced uprights stand at
 both ends and between bays (a rack wider than 2.2 m has two bays). Each level of each bay is a
-pair of beams with a deck (wire mesh, steel panel or wooden board). The bottom level is fixed;
-every other level slides up along +Z, resting just above stop brackets on the uprights (its
-lower limit, where gravity holds it), by the same travel for every level, so raised together
-nothing closes up and a level raised alone never reaches the level above or its goods. Goods
+pair of beams with a deck (wire mesh, steel panel or wooden board), fixed where it is pinned: a
+level above the bottom one rests on its beam connectors' brackets on the uprights (a level is
+adjusted by unloading it and re-pinning it in other holes of the uprights, not by a joint). Goods
 (cardboard boxes, plastic crates, pallets with stacked boxes, or modular drawer cabinets: Lista /
 Stanley Vidmar pallet-rack drawer systems) are fixed on a level, inside the bay, clear of the
-uprights; a level's goods kind is drawn per level. A drawer cabinet's drawers (1-10, fronts 75-300
-mm) slide out along +X on full-extension slides. Parts: ``categories/parts/racks.py``.
+uprights; a level's goods kind is drawn per level, but the bottom level of every bay holds drawer cabinets
+(pallet-rack drawer systems stand at the floor: Lista drawers carry 75-200 kg each). A drawer cabinet's
+drawers (1-10, fronts 75-300 mm) slide out along +X on full-extension slides. Parts:
+``categories/parts/racks.py``.
 """
 
 from __future__ import annotations
@@ -67,6 +68,11 @@ def _goods_h(p) -> float:
     return p["goods_fill"] * (p["level_height"] - p["beam_height"] - R.DECK_T[p["deck"]])
 
 
+def upper_levels(p, rng) -> int:
+    """the levels above a bay's bottom one: level_count - 1"""
+    return p["level_count"] - 1
+
+
 def cabinets(p, rng) -> int:
     """drawer cabinets side by side on a level, drawn per level: from as many 45 in ones as fit (at least one) to as
     many 30 in ones as fit"""
@@ -97,7 +103,8 @@ GRAMMAR = Grammar("storage_rack", {
     "bin_bay": Node(repeat={"bin_level": "bin_levels"}),
     "bin_level": Node(label="shelf", repeat={"bin": bins}),
     "bin": Node(label="bin"),
-    "bay": Node(repeat={"level": "level_count"}),
+    "bay": Node(required=("floor_level",), repeat={"level": upper_levels}),
+    "floor_level": Node(label="shelf", required=("drawers",)),
     "level": Node(label="shelf", repeat={"goods": goods}),
     "goods": Node(one_of={"boxes": 0.3, "pallet": 0.25, "crates": 0.2, "drawers": 0.25}),
     "drawers": Node(repeat={"drawer_cabinet": cabinets}),
@@ -131,7 +138,10 @@ PARAMS = (
     Float("bin_spacing", "bin rack: spacing between levels", "m", 0.18, 0.24),
     # 72-84 in bin shelving units carry up to 8 shelves of 5 in bins (Akro-Mils AWS / Edsal bin units)
     Int("bin_levels", "bin rack: levels", "", 4, 8),
-    Float("tote_travel", "how far a tote or bin slides out, as a fraction of its depth", "", 0.5, 0.8),
+    # a tote or bin slides on the deck until its middle reaches the deck's front edge, then it is lifted off (slid
+    # further it would tip: nothing holds it up); it stands centred on the deck, so at most half its depth
+    Float("tote_travel", "how far a tote or bin slides out, as a fraction of its depth (half: its middle at the "
+          "deck's front edge)", "", 0.3, 0.5),
 )
 
 MATERIALS = {
@@ -154,9 +164,9 @@ class RackLayout(Layout):
         design = node.one(node.choice)
         n_bays = len(design.children)
         if design.kind == "pallet_rack":
-            zs, travel = self._pallet_levels()
-            ys = self._frame(n_bays, p["depth"], p["upright_size"], zs[-1] + travel + R.ABOVE_TOP, zs, brackets=True)
-            self.grow(design, ys=ys, zs=zs, travel=travel)
+            zs = self._pallet_levels()
+            ys = self._frame(n_bays, p["depth"], p["upright_size"], zs[-1] + R.ABOVE_TOP, zs, brackets=True)
+            self.grow(design, ys=ys, zs=zs)
             return
         spacing, count = ((p["shelf_spacing"], p["shelf_levels"]) if design.kind == "shelving"
                           else (p["bin_spacing"], p["bin_levels"]))
@@ -165,19 +175,13 @@ class RackLayout(Layout):
         self.grow(design, ys=ys, zs=zs, clear=spacing - R.SHELF_BEAM - R.DECK_T[self.deck()])
 
     def _pallet_levels(self):
-        """Beam tops at rest and the travel every raised level shares."""
+        """The levels' beam tops."""
         p = self.p
-        lh, n, bh = p["level_height"], p["level_count"], p["beam_height"]
-        dt = R.DECK_T[p["deck"]]
-        zs = [p["bottom_height"] + i * lh for i in range(n)]
-        clear = lh - bh - dt  # from a deck top to the beams above
-        goods_h = _goods_h(p)
-        # raised alone, a level (and its goods) stays below the level above and its stop brackets
-        travel = min(lh / 3, clear - goods_h - R.HEADROOM, clear - R.GAP - R.BRACKET_H - R.HEADROOM)
-        return zs, travel
+        return [p["bottom_height"] + i * p["level_height"] for i in range(p["level_count"])]
 
     def _frame(self, n_bays: int, D: float, u: float, top: float, zs: list, brackets: bool) -> np.ndarray:
-        """Upright frames at both ends and between bays (stop brackets under the movable levels)."""
+        """Upright frames at both ends and between bays (brackets under the beams of the levels above the
+        bottom one)."""
         p = self.p
         slot = "upright" if p["frame_finish"] == "enamel" else "galvanised"
         ys = np.linspace(-p["width"] / 2 + u / 2, p["width"] / 2 - u / 2, n_bays + 1)
@@ -189,34 +193,32 @@ class RackLayout(Layout):
             if brackets:
                 sides = tuple(s for s, inner in ((1, k < len(ys) - 1), (-1, k > 0)) if inner)
                 for z in zs[1:]:
-                    pieces += [pc.transformed(at.matrix) for pc in R.stop_brackets(D, u, z - p["beam_height"] - R.GAP,
+                    pieces += [pc.transformed(at.matrix) for pc in R.stop_brackets(D, u, z - p["beam_height"],
                                                                                    sides)]
         self.add("frame", "frame", pieces)
         return ys
 
-    def pallet_rack(self, node, ys, zs, travel):
+    def pallet_rack(self, node, ys, zs):
         p = self.p
         u = p["upright_size"]
         goods_h = _goods_h(p)
         for b, bay in enumerate(node.of("bay")):
-            self.grow(bay, b=b, span=(ys[b] + u / 2 + R.GAP, ys[b + 1] - u / 2 - R.GAP), zs=zs, travel=travel,
-                      goods_h=goods_h)
+            self.grow(bay, b=b, span=(ys[b] + u / 2 + R.GAP, ys[b + 1] - u / 2 - R.GAP), zs=zs, goods_h=goods_h)
 
-    def bay(self, node, b, span, zs, travel, goods_h):
-        for i, (lv, z) in enumerate(zip(node.of("level"), zs)):
-            self.grow(lv, name=f"level_{b}_{i}", span=span, z=z, travel=travel if i else 0.0, goods_h=goods_h)
+    def bay(self, node, b, span, zs, goods_h):
+        for i, (lv, z) in enumerate(zip(node.of("floor_level") + node.of("level"), zs, strict=True)):
+            self.grow(lv, name=f"level_{b}_{i}", span=span, z=z, goods_h=goods_h)
 
-    def level(self, node, name, span, z, travel, goods_h):
+    def level(self, node, name, span, z, goods_h):
         p = self.p
         beam = "beam" if p["frame_finish"] == "enamel" else "galvanised"
         self.add(name, "shelf", R.level(span, p["depth"], z, p["beam_height"], p["deck"], beam))
-        if travel:
-            self.slide("frame", name, Frame.at((0, sum(span) / 2, z - p["beam_height"])), upper=travel)
-        else:
-            self.fix("frame", name)
-        for g_ in node.of("goods"):
+        self.fix("frame", name)
+        for g_ in node.of("goods") + node.of("drawers"):
             self.grow(g_, level=name, span=(span[0] + R.SIDE, span[1] - R.SIDE),
                       z=z + R.DECK_T[p["deck"]] + R.GOODS_LIFT, h=goods_h)
+
+    floor_level = level
 
     def goods(self, node, **where):
         self.grow(node.one(node.choice), **where)
@@ -331,4 +333,5 @@ class RackLayout(Layout):
                    upper=self.p["tote_travel"] * (xs[1] - xs[0]))
 
 
-CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS, palette=furniture)
+CATEGORY = Category("storage_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,
+                    palette=furniture)

@@ -8,6 +8,7 @@
 from ._version import __version__
 from .api import generate, get_category, list_categories, save
 from .errors import (
+    ArgumentTypeError,
     GeometryError,
     InfmobError,
     ModelError,
@@ -18,6 +19,7 @@ from .errors import (
 from .model import ArticulatedObject
 
 __all__ = [
+    "ArgumentTypeError",
     "ArticulatedObject",
     "GeometryError",
     "InfmobError",

@@ -8,7 +8,7 @@ from typing import Any
 
 from . import physical
 from .effort import assign_drives
-from .errors import ModelError, ParameterError, UnknownCategoryError
+from .errors import ArgumentTypeError, ModelError, ParameterError, UnknownCategoryError
 from .layers import write_object
 from .model import ArticulatedObject, build
 from .seeding import streams
@@ -44,9 +44,19 @@ def check_texture_size(size: Any) -> int:
 
 
 def check_share(share: Any) -> float:
-    if isinstance(share, bool) or not isinstance(share, (int, float)) or not 0.0 <= float(share) <= 1.0:
+    if isinstance(share, bool) or not isinstance(share, (int, float)):
+        raise ArgumentTypeError(f"parts share must be a number in [0, 1], got {share!r}")
+    if not 0.0 <= float(share) <= 1.0:
         raise ParameterError(f"parts share must be a number in [0, 1], got {share!r}")
     return float(share)
+
+
+def _check_path(value: Any, what: str) -> None:
+    import os
+
+    if not isinstance(value, (str, os.PathLike)):
+        raise ArgumentTypeError(f"{what} must be a folder path (str or pathlib.Path), got {type(value).__name__}"
+                                f" {value!r:.60}")
 
 
 def generate(category: str, seed: int = 0, texture_size: int = 512, parts=None, parts_share: float = 0.5,
@@ -66,18 +76,22 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, parts=None, 
         a library mesh placed by its support points (:mod:`infmob_usd.retrieval`).
     parts_share : float
         Probability in [0, 1] that a retrievable part is retrieved (with ``parts``); default 0.5.
+        Checked always; without ``parts`` there is nothing to retrieve and it has no effect.
     **overrides
         Parameter values (see ``infmob params CATEGORY``); validated against the
         category schema.
     """
     cat = get_category(category)
     check_texture_size(texture_size)
+    share = check_share(parts_share)
     retriever = None
     if parts is not None:
-        from .partlib import load_library
+        from .partlib import Library, load_library
         from .retrieval import Retriever
 
-        retriever = Retriever(load_library(parts), check_share(parts_share), category, seed)
+        if not isinstance(parts, Library):
+            _check_path(parts, "parts")
+        retriever = Retriever(load_library(parts), share, category, seed)
     t0 = time.perf_counter()
     rng = streams(category, seed)
     params = cat.schema.sample(rng["params"], overrides)
@@ -118,8 +132,17 @@ def save(obj: ArticulatedObject, folder: str | Path, formats: str | list[str] | 
     renamed) and return that path.
 
     ``formats``: names from :data:`infmob_usd.layers.FORMATS` (``usd``, ``urdf``, ``mjcf``, ``glb``)
-    as a list or a comma string; default ``usd,urdf,mjcf``.
+    as a list or a comma string; default ``usd,urdf,mjcf``. Arguments of the wrong type raise
+    :class:`~infmob_usd.errors.ArgumentTypeError`; a ``folder`` that is a symbolic link or not UTF-8,
+    :class:`~infmob_usd.errors.OutputError`.
     """
+    if not isinstance(obj, ArticulatedObject):
+        raise ArgumentTypeError(f"save() needs an object made by generate(), got {type(obj).__name__} {obj!r:.60}")
+    _check_path(folder, "folder")
+    if formats is not None and not (isinstance(formats, str) or (
+            isinstance(formats, (list, tuple)) and all(isinstance(f, str) for f in formats))):
+        raise ArgumentTypeError(f"formats must be a comma string or a list of names (usd, urdf, mjcf, glb),"
+                                f" got {formats!r:.60}")
     return write_object(obj, Path(folder), formats)
 
 

@@ -15,8 +15,9 @@ cluster) and keeps ``DIR/manifest.jsonl``, one row per finished object. A run:
 * writes each object under a temporary name carrying the run's id
   (``.NAME.infmob-PID-TOKEN-XXXX.tmp``) and, at start, removes only such names left by
   runs that are no longer alive: nothing else in ``DIR`` is ever deleted;
-* never follows a symbolic link inside ``DIR`` (category folders, the manifest, ``errors/``
-  and the lock are refused if they are links), so nothing outside ``DIR`` is written;
+* never follows a symbolic link: ``DIR`` itself, category folders (checked at every object, so
+  one swapped for a link mid-run is caught), the manifest, ``errors/`` and the lock are refused
+  if they are links, so nothing outside ``DIR`` is written;
 * records a failing object's traceback in ``DIR/errors/`` without stopping the batch;
 * on ``KeyboardInterrupt`` or ``SystemExit`` (the CLI turns ``SIGTERM`` into one) terminates
   its pool's workers before returning; pool workers also die with a killed parent (Linux).
@@ -28,6 +29,7 @@ import datetime
 import errno
 import fcntl
 import hashlib
+import itertools
 import json
 import os
 import shutil
@@ -38,6 +40,7 @@ import time
 import traceback
 from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -45,7 +48,7 @@ from typing import Any
 from tqdm import tqdm
 
 from ._version import __version__
-from .errors import OutputError
+from .errors import InfmobError, OutputError
 from .runs import TEMP_NAME as _TEMP
 from .runs import new_run_id, temp_prefix
 
@@ -203,6 +206,27 @@ def _write_error(out: Path, job: Job) -> str:
     return os.path.relpath(path, out)
 
 
+FULL_BYTES = 1 << 20
+"""Below this much free space an object that failed to write failed for want of it (OpenUSD's writers
+report a full disk as a failed save, not as ``ENOSPC``)."""
+
+
+def disk_full(exc: BaseException, out) -> bool:
+    """Whether ``exc`` (raised writing into ``out``) means the disk or the user's quota is full."""
+    if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
+        return True
+    try:
+        st = os.statvfs(out)
+    except OSError:
+        return False
+    return st.f_bavail * st.f_frsize < FULL_BYTES
+
+
+def _disk_full_error(out, what: str) -> OutputError:
+    return OutputError(f"disk full writing {what} in {str(out)!r} (no space left on device): free some space and run"
+                       f" the same command again (finished objects are kept, nothing half-written is left)")
+
+
 def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
     """Generate and save one object; return its manifest row (or an error row).
 
@@ -219,6 +243,9 @@ def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
         folder = write_object(obj, Path(out) / job.category, formats=job.formats, run_id=run_id)
         files = file_digests(folder)
     except Exception as exc:  # one bad object must not stop the batch
+        if disk_full(exc, out):  # ... but a full disk stops it (every object after it would fail alike)
+            return {"category": job.category, "seed": job.seed, "overrides": dict(job.overrides),
+                    "error": f"{type(exc).__name__}: {' '.join(str(exc).split())}", "disk_full": True}
         try:
             tb = _write_error(Path(out), job)
         except OSError:
@@ -400,6 +427,9 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
     Returned rows omit the per-file digests (they are in the manifest).
     """
     out = Path(out)
+    if _is_link(out):
+        raise OutputError(f"output folder {str(out)!r} is a symbolic link; infmob never writes through a link:"
+                          f" give the real folder or another --out (nothing was written)")
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as e:
@@ -416,21 +446,23 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
         finally:
             _PARENT_FDS.discard(manifest_fd)
             os.close(manifest_fd)
-            _rewrite_manifest(out, rows, run_id)
+            try:
+                _rewrite_manifest(out, rows, run_id)
+            except OSError as e:  # a full disk: the appended manifest stays valid; the next run sorts it
+                if not disk_full(e, out):
+                    raise
+                if log:
+                    log(f"the manifest of {out} was left unsorted (disk full); the next run sorts it")
 
 
 def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, total, log, rows, manifest_fd,
                 run_id) -> list[dict]:
-    checked: set[str] = set()
-
     def todo():
         for job in jobs:
-            if job.category not in checked:
-                cat = out / job.category
-                if _is_link(cat):
-                    raise OutputError(f"{cat} is a symbolic link; infmob writes only inside --out and never"
-                                      f" through a link: remove it or choose another --out")
-                checked.add(job.category)
+            cat = out / job.category
+            if _is_link(cat) or _is_link(out):  # at every object: a folder swapped for a link mid-run too
+                raise OutputError(f"{cat} is a symbolic link; infmob writes only inside --out and never"
+                                  f" through a link: remove it or choose another --out")
             row = rows.get((job.category, job.seed))
             if not overwrite and row is not None:
                 why = damage(job.folder(out), row)
@@ -445,10 +477,17 @@ def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, t
     results: list[dict] = []
 
     def record(row: dict) -> None:
+        if row.get("disk_full"):
+            raise _disk_full_error(out, f"{row['category']} seed {row['seed']}")
         if "error" not in row:
+            try:
+                os.write(manifest_fd, (json.dumps(row, sort_keys=True) + "\n").encode())
+                os.fsync(manifest_fd)
+            except OSError as e:
+                if disk_full(e, out):
+                    raise _disk_full_error(out, "the manifest") from None
+                raise OutputError(f"cannot append to {out / MANIFEST} ({e.strerror}); choose another --out") from None
             rows[_key(row)] = row
-            os.write(manifest_fd, (json.dumps(row, sort_keys=True) + "\n").encode())
-            os.fsync(manifest_fd)
         results.append({k: v for k, v in row.items() if k != "files"})
         progress.update()
         if on_row:
@@ -462,40 +501,135 @@ def _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, t
             for job in todo():
                 record(make_one(job, str(out), run_id))
         else:
-            own = pool is None
-            pool = pool or ProcessPoolExecutor(max_workers=workers, initializer=_die_with_parent)
-            try:
-                pending = set()
-                it = todo()
-                for job in it:  # keep at most 2 jobs per worker in flight: memory stays flat
-                    pending.add(pool.submit(make_one, job, str(out), run_id))
-                    if len(pending) >= 2 * workers:
-                        break
-                while pending:
-                    done, pending = wait(pending, return_when=FIRST_COMPLETED)
-                    for fut in done:
-                        record(fut.result())
-                        nxt = next(it, None)
-                        if nxt is not None:
-                            pending.add(pool.submit(make_one, nxt, str(out), run_id))
-            except BaseException:
-                _stop_pool(pool)
-                raise
-            if own:
-                pool.shutdown(wait=True)
+            _run_pool(todo(), str(out), workers, pool, total, run_id, record, log)
     finally:
         progress.close()
     return results
 
 
-def _run_ray(todo: Iterable[Job], out: str, address: str | None, record: Callable[[dict], None],
-             run_id: str) -> None:
+def _lost_row(job: Job) -> dict:
+    return {"category": job.category, "seed": job.seed, "overrides": dict(job.overrides), "traceback": None,
+            "error": "lost: a worker process died while generating it (killed, e.g. by the out-of-memory killer);"
+                     " run the same command again to redo it (finished objects are kept)"}
+
+
+def _run_pool(it, out: str, workers: int, pool, total, run_id: str, record, log) -> None:
+    """Map :func:`make_one` over the jobs of ``it`` on a process pool, at most 2 jobs per worker in flight
+    (memory stays flat). A worker killed from outside (SIGKILL, the OOM killer) breaks the pool: the
+    objects in flight are reported lost (error rows, so a rerun redoes them), and a fresh pool goes on."""
+    own = pool is None
+    if own and total:  # no more processes than jobs: each worker is forked up front
+        workers = max(1, min(workers, total))
+    carry: list[Job] = []
+    while True:
+        pool = pool or ProcessPoolExecutor(max_workers=workers, initializer=_die_with_parent)
+        pending: dict = {}
+        broken = False
+        try:
+            for job in itertools.chain(carry, it):
+                pending[pool.submit(make_one, job, out, run_id)] = job
+                if len(pending) >= 2 * workers:
+                    break
+            carry = []
+            while pending:
+                done, _ = wait(pending, return_when=FIRST_COMPLETED)
+                if any(isinstance(f.exception(), BrokenProcessPool) for f in done):
+                    done, _ = wait(pending)  # every job in flight fails with it, at once
+                    broken = True
+                for fut in done:
+                    job = pending.pop(fut)
+                    record(_lost_row(job) if isinstance(fut.exception(), BrokenProcessPool) else fut.result())
+                    nxt = None if broken else next(it, None)
+                    if nxt is not None:
+                        try:
+                            pending[pool.submit(make_one, nxt, out, run_id)] = nxt
+                        except BrokenProcessPool:
+                            carry.append(nxt)  # never started: the fresh pool runs it
+                if broken:
+                    break
+        except BaseException:
+            _stop_pool(pool)
+            raise
+        if not broken and not carry:
+            if own:
+                pool.shutdown(wait=True)
+            return
+        _stop_pool(pool)
+        if log:
+            log("a worker process died (killed from outside, e.g. by the out-of-memory killer): the objects it"
+                " was making are reported lost; going on with a fresh pool of workers")
+        pool, own = None, True
+
+
+RAY_CONNECT_SECONDS = 5.0
+_H2_PREFACE = b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n" + b"\x00\x00\x00\x04\x00\x00\x00\x00\x00"  # + empty SETTINGS
+
+
+def check_ray_address(address: str | None, timeout: float = RAY_CONNECT_SECONDS) -> None:
+    """Fail within ``timeout`` seconds, with one line, when ``address`` (``HOST:PORT`` or
+    ``ray://HOST:PORT``) does not answer: ``ray.init`` itself retries for minutes. ``None``, ``auto``
+    and ``local`` (a cluster Ray finds or starts itself) are left to Ray."""
+    if not address or address in ("auto", "local"):
+        return
+    hostport = address.split("://", 1)[-1].rstrip("/")
+    host, _, port = hostport.rpartition(":")
+    if not host or not port.isdigit() or not 0 < int(port) < 65536:
+        raise InfmobError(f"--address {address!r} is not HOST:PORT (or ray://HOST:PORT); give the Ray head's"
+                          f" address, e.g. 10.0.0.5:6379")
+    try:
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout) as conn:
+            # Ray's GCS (and Ray Client) speak gRPC, i.e. HTTP/2: after the client preface the server
+            # sends its SETTINGS frame (type 4) at once. Anything else would make ray.init hang.
+            conn.sendall(_H2_PREFACE)
+            head = b""
+            while len(head) < 9:
+                chunk = conn.recv(9 - len(head))
+                if not chunk:
+                    break
+                head += chunk
+    except OSError as e:
+        why = "no answer" if isinstance(e, TimeoutError) else (e.strerror or str(e))
+        raise InfmobError(f"cannot reach the Ray cluster at {address} ({why} within {timeout:.0f} s); start it"
+                          f" (ray start --head) or fix --address") from None
+    if len(head) < 9 or head[3] != 4:
+        raise InfmobError(f"{address} answers, but not as a Ray cluster (no gRPC/HTTP2 handshake); give the"
+                          f" Ray head's address (ray start --head prints it)")
+
+
+def connect_ray(address: str | None, quiet: bool = False):
+    """``ray``, connected to the cluster at ``address`` (started locally for ``None``): one line and
+    seconds when it cannot be reached or does not speak Ray, not a 20-s retry loop and a traceback.
+    ``quiet``: Ray's own log lines while connecting (a retry warning per second) are dropped."""
+    check_ray_address(address)
+    if address and address not in ("auto", "local"):  # read when ray is imported: 3 retries of 1 s
+        os.environ.setdefault("RAY_NUM_REDIS_GET_RETRIES", "3")
     try:
         import ray
     except ImportError:
-        raise RuntimeError("the ray backend needs Ray: pip install -e '.[ray]'") from None
-    if not ray.is_initialized():
+        raise InfmobError("the ray backend needs Ray: pip install -e '.[ray]'") from None
+    if ray.is_initialized():
+        return ray
+    saved = os.dup(2) if quiet else None
+    try:
+        if quiet:
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, 2)
+            os.close(null)
         ray.init(address=address, ignore_reinit_error=True, log_to_driver=False)
+    except Exception as e:  # noqa: BLE001 - ConnectionError, RuntimeError, RpcError ... all the same to us
+        first = next((line for line in str(e).splitlines() if line.strip()), type(e).__name__)
+        raise InfmobError(f"cannot connect to the Ray cluster at {address or 'a new local cluster'}"
+                          f" ({first[:160]}); check --address (ray status on the head node)") from None
+    finally:
+        if saved is not None:
+            os.dup2(saved, 2)
+            os.close(saved)
+    return ray
+
+
+def _run_ray(todo: Iterable[Job], out: str, address: str | None, record: Callable[[dict], None],
+             run_id: str) -> None:
+    ray = connect_ray(address)
     remote = ray.remote(make_one)
     window = max(2 * int(ray.cluster_resources().get("CPU", 1)), 2)
     it = iter(todo)

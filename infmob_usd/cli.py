@@ -1,4 +1,5 @@
-"""The ``infmob`` command line: list, params, generate, validate, preview, stats, gallery, bench, textures, fuzz."""
+"""The ``infmob`` command line: list, params, generate, parts, fuzz, validate, preview, stats, gallery, textures,
+bench (docs/cli.md)."""
 
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ def _parser() -> argparse.ArgumentParser:
     sub.add_parser("list", help="print every category id, one per line")
 
     p = sub.add_parser("params", help="print a category's parameter schema and growth rules")
-    p.add_argument("category")
+    p.add_argument("category", help="a category id (infmob list)")
     # in this order: `infmob --help` lists the commands so
     for add in (_generate_command, _parts_command, _fuzz_command, _validate_command, _preview_command,
                 _stats_command, _gallery_command, _textures_command, _bench_command):
@@ -38,7 +39,7 @@ def _generate_command(sub) -> None:
                    help="override a parameter (repeatable); see `infmob params CATEGORY`")
     g.add_argument("--texture-size", type=int, default=512, metavar="PX",
                    help="texture edge in pixels, a power of two 16..4096; default 512")
-    g.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+    g.add_argument("--workers", type=int, default=None,
                    help="parallel worker processes; default: all cores")
     g.add_argument("--backend", choices=("process", "ray"), default="process",
                    help="process pool (default) or a Ray cluster (pip install -e '.[ray]')")
@@ -63,7 +64,7 @@ def _parts_command(sub) -> None:
     """Add the ``infmob parts`` subcommand and its options to ``sub``."""
     pa = sub.add_parser("parts", help="part libraries: import meshes, export the built-in parts, check placement",
                         description="A part library holds part meshes with support points, scale policy and"
-                        " convex pieces (format: README, 'Part libraries'). Generate with it:"
+                        " convex pieces (format: docs/parts.md). Generate with it:"
                         " infmob generate CAT --parts LIB --parts-share P.")
     psub = pa.add_subparsers(dest="parts_command", required=True)
     pi = psub.add_parser("import", help="import PartNet-Mobility objects or a folder of meshes with labels.csv")
@@ -75,11 +76,11 @@ def _parts_command(sub) -> None:
     pi.add_argument("--licence", default="", help="licence to record (default: the source's terms)")
     pi.add_argument("--labels", default=None, metavar="CSV", help="labels CSV (default SRC/labels.csv)")
     pe = psub.add_parser("export-builtin", help="write the project's procedural parts as a library")
-    pe.add_argument("out", metavar="LIB")
+    pe.add_argument("out", metavar="LIB", help="the new library folder (must not exist or be empty)")
     pc = psub.add_parser("check", help="gap and penetration at the support points: bounding-box vs support placement")
-    pc.add_argument("lib", metavar="LIB")
+    pc.add_argument("lib", metavar="LIB", help="a part library folder")
     pc.add_argument("--placements", type=int, default=100, help="placements on drawn procedural parts; default 100")
-    pc.add_argument("--seed", type=int, default=0)
+    pc.add_argument("--seed", type=int, default=0, help="seed of the drawn procedural parts; default 0")
     pc.add_argument("--json", action="store_true", help="print JSON instead of a table")
     pc.add_argument("--as-drawn", action="store_true",
                     help="only pairs generation would draw (the procedural box within the part's scale policy)")
@@ -94,7 +95,7 @@ def _fuzz_command(sub) -> None:
                         " every crash and invalid object with the command that reproduces it; exit 1 if any.")
     fz.add_argument("n", type=int, metavar="N", help="number of draws")
     fz.add_argument("--seed", type=int, default=0, help="seed of the draws (same seed, same draws); default 0")
-    fz.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="worker processes; default: all cores")
+    fz.add_argument("--workers", type=int, default=None, help="worker processes; default: all cores")
     fz.add_argument("--categories", default="all", help="comma list or `all` (default)")
     fz.add_argument("--texture-size", type=int, default=16, metavar="PX", help="texture edge; default 16")
     fz.add_argument("--usd-only", action="store_true", help="skip the SAPIEN checks (faster)")
@@ -128,7 +129,7 @@ def _validate_command(sub) -> None:
     v.add_argument("--out", help="with --sweep: keep the generated objects in this folder")
     v.add_argument("--texture-size", type=int, default=64, metavar="PX",
                    help="with --sweep: texture size of the generated objects; default 64")
-    v.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+    v.add_argument("--workers", type=int, default=None,
                    help="parallel worker processes (generation with --sweep, and validation); default: all cores")
     v.add_argument("--verbose", "-v", action="store_true", help="print every check, not only failures")
 
@@ -139,7 +140,7 @@ def _preview_command(sub) -> None:
                         description="Render each object folder at rest beside itself with its joints ~70% open"
                         " (preview.png) and a GIF sweeping each movable joint (sweep.gif); or with --sheet DIR one"
                         " contact sheet of every object under DIR. Needs a Vulkan device: on a CPU machine Mesa >= 25"
-                        " lavapipe (see README).")
+                        " lavapipe (see docs/cli.md, 'preview').")
     from .validate.preview import add_arguments as _preview_arguments
 
     _preview_arguments(pv)
@@ -175,7 +176,7 @@ def _textures_command(sub) -> None:
     """Add the ``infmob textures`` subcommand and its options to ``sub``."""
     tx = sub.add_parser("textures", help="build the texture library cache ahead of a large run",
                         description="Every look an object can wear is one of a finite library (16 per palette"
-                        " variant, 1072 in all); its PNG maps are made once and cached on disk in"
+                        " variant of each material family); its PNG maps are made once and cached on disk in"
                         " $INFMOB_USD_CACHE (default ~/.cache/infmob-usd; `off` disables it). Generation fills the"
                         " cache as it goes; this command fills it up front, in parallel, e.g. on a shared folder"
                         " before a cluster run.")
@@ -183,7 +184,7 @@ def _textures_command(sub) -> None:
                     help="texture edge in pixels, a power of two 16..4096; default 512")
     tx.add_argument("--family", default=None, metavar="SPEC",
                     help="only this family (e.g. wood or plastic:black|white); default: all")
-    tx.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="worker processes; default: all cores")
+    tx.add_argument("--workers", type=int, default=None, help="worker processes; default: all cores")
 
 
 def _bench_command(sub) -> None:
@@ -191,8 +192,9 @@ def _bench_command(sub) -> None:
     b = sub.add_parser("bench", help="benchmark: seconds per object by stage, memory, parallel efficiency")
     b.add_argument("--categories", default="all", help="comma list or `all` (default)")
     b.add_argument("--count", type=int, default=10, help="objects per category; default 10")
-    b.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="workers for the parallel run")
-    b.add_argument("--texture-size", type=int, default=512, metavar="PX")
+    b.add_argument("--workers", type=int, default=None,
+                   help="workers for the parallel run (1..1024); default: all cores")
+    b.add_argument("--texture-size", type=int, default=512, metavar="PX", help="texture edge in pixels; default 512")
     b.add_argument("--cold", action="store_true",
                    help="every timed object starts from an empty texture cache (no library, no throughput runs)")
     b.add_argument("--json", action="store_true", help="print JSON instead of a table")
@@ -223,6 +225,22 @@ def cmd_params(args) -> int:
 
 MAX_COUNT = 1_000_000
 """Most objects per category in one command (one folder of a million objects is already ~10 TB)."""
+
+MAX_WORKERS = 1024
+"""Most worker processes (one per core of the largest machines; more only thrash, and each is forked up front)."""
+
+
+def _workers(value: int | None, jobs: int | None = None, what: str = "objects") -> int:
+    """``--workers`` checked (1..MAX_WORKERS; default: all cores) and capped at the number of ``jobs``,
+    saying so when the user asked for more: a worker without a job is a forked process for nothing."""
+    n = value if value is not None else (os.cpu_count() or 1)
+    if not 1 <= n <= MAX_WORKERS:
+        raise InfmobError(f"--workers must be 1..{MAX_WORKERS}, got {n}")
+    if jobs is not None and n > max(jobs, 1):
+        if value is not None:
+            print(f"infmob: --workers {n} capped at {max(jobs, 1)}, the number of {what}", file=sys.stderr)
+        n = max(jobs, 1)
+    return n
 
 
 def _categories(spec: str) -> list[str]:
@@ -291,10 +309,13 @@ def cmd_generate(args) -> int:
     if args.seed < 0 or args.seed + args.count - 1 > MAX_SEED:
         got = str(args.seed) if len(str(args.seed)) <= 24 else f"a {len(str(args.seed))}-digit number"
         return _fail(f"--seed must be 0..{MAX_SEED} (and --seed + --count - 1 too), got {got}")
-    if args.workers < 1:
-        return _fail(f"--workers must be at least 1, got {args.workers}")
+    workers = _workers(args.workers, len(categories) * args.count)
     if args.address and args.backend != "ray":
         return _fail("--address is only used with --backend ray; add --backend ray or drop --address")
+    if args.backend == "ray":
+        from .batch import check_ray_address
+
+        check_ray_address(args.address)  # seconds, not the 20 s ray.init retries for
     parts, share = None, 0.5
     if args.parts_share is not None and args.parts is None:
         return _fail("--parts-share needs --parts LIB")
@@ -304,6 +325,10 @@ def cmd_generate(args) -> int:
 
         share = check_share(args.parts_share if args.parts_share is not None else 0.5)
         parts = str(Path(load_library(args.parts).root).resolve())  # a bad library fails before anything is written
+    if args.backend == "ray":
+        from .batch import connect_ray
+
+        connect_ray(args.address, quiet=True)  # before anything is written
     out = _out_dir(args.out)
     items = tuple(sorted(overrides.items()))
     jobs = (Job(c, seed, items, args.texture_size, formats, parts, share)
@@ -325,7 +350,7 @@ def cmd_generate(args) -> int:
         print(f"infmob: {message}", file=sys.stderr, flush=True)
 
     total = len(categories) * args.count
-    rows = run_batch(jobs, out, workers=args.workers, overwrite=args.overwrite, backend=args.backend,
+    rows = run_batch(jobs, out, workers=workers, overwrite=args.overwrite, backend=args.backend,
                      address=args.address, on_row=show, total=total, wait_lock=args.wait, log=log)
     skipped = total - len(rows)
     if skipped:
@@ -387,13 +412,12 @@ def cmd_fuzz(args) -> int:
 
     if args.n < 1:
         return _fail(f"N must be at least 1, got {args.n}")
-    if args.workers < 1:
-        return _fail(f"--workers must be at least 1, got {args.workers}")
+    workers = _workers(args.workers, args.n, "draws")
     if args.seed < 0:
         return _fail(f"--seed must be non-negative, got {args.seed}")
     categories = _categories(args.categories)
     out = _out_dir(args.out) if args.out else None
-    res = fuzz(args.n, seed=args.seed, workers=args.workers, categories=categories, out=out,
+    res = fuzz(args.n, seed=args.seed, workers=workers, categories=categories, out=out,
                sim=not args.usd_only, texture_size=args.texture_size, stream=sys.stdout)
     return 0 if not res["crashes"] and not res["invalid"] else 1
 
@@ -442,8 +466,7 @@ def cmd_validate(args) -> int:
 
     if args.usd_only and args.sim:
         return _fail("--usd-only and --sim contradict each other; choose one")
-    if args.workers < 1:
-        return _fail(f"--workers must be at least 1, got {args.workers}")
+    workers = _workers(args.workers)
     if args.out and args.sweep is None:
         return _fail("--out is only used with --sweep; drop it or add --sweep N")
     report_path = _writable_file(args.report, "--report") if args.report else None
@@ -465,7 +488,8 @@ def cmd_validate(args) -> int:
         else:
             out = Path(tmp := tempfile.mkdtemp(prefix="infmob-sweep-"))
         jobs = (Job(c, s, (), args.texture_size) for c in categories for s in range(args.sweep))
-        rows = run_batch(jobs, out, workers=args.workers, total=len(categories) * args.sweep)
+        rows = run_batch(jobs, out, workers=min(workers, len(categories) * args.sweep),
+                         total=len(categories) * args.sweep)
         for r in rows:
             if "error" in r:
                 print(f"FAIL {r['category']} seed {r['seed']}: generation failed: {r['error']}")
@@ -478,7 +502,7 @@ def cmd_validate(args) -> int:
             return _fail(f"no object folders (with metadata.json) under {' '.join(paths)}")
         rows = []
         n_ok = 0
-        for folder, report in _validate_all(folders, not args.usd_only, args.sim, args.workers, args.simready,
+        for folder, report in _validate_all(folders, not args.usd_only, args.sim, workers, args.simready,
                                             not args.no_mass):
             n_ok += report.ok
             status = "ok  " if report.ok else "FAIL"
@@ -584,9 +608,10 @@ def cmd_bench(args) -> int:
 
     categories = _categories(args.categories)
     check_texture_size(args.texture_size)
-    if args.count < 1 or args.workers < 1:
-        return _fail("--count and --workers must be at least 1")
-    res = run_bench(categories, args.count, args.texture_size, args.workers, cold=args.cold)
+    if args.count < 1:
+        return _fail("--count must be at least 1")
+    workers = _workers(args.workers, len(categories) * args.count)
+    res = run_bench(categories, args.count, args.texture_size, workers, cold=args.cold)
     print(json.dumps(res, indent=2) if args.json else format_bench(res))
     return 0
 
@@ -601,8 +626,7 @@ def cmd_textures(args) -> int:
     from .materials.cache import build, cache_dir
 
     check_texture_size(args.texture_size)
-    if args.workers < 1:
-        return _fail("--workers must be at least 1")
+    args.workers = _workers(args.workers)
     if args.family and split_spec(args.family)[0] not in FAMILIES:
         return _fail(f"unknown material family {args.family!r}; valid families: {', '.join(FAMILIES)}")
     if args.family:
@@ -654,8 +678,14 @@ COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "v
 def main(argv: list[str] | None = None) -> int:
     import signal
 
+    if argv is None:  # the command line, not a test calling main()
+        for stream in (sys.stdout, sys.stderr):  # an ASCII terminal (LC_ALL=C, PYTHONIOENCODING=ascii) or a
+            try:  # folder name that is not UTF-8 prints escaped, never as a UnicodeEncodeError
+                stream.reconfigure(errors="backslashreplace")
+            except (AttributeError, ValueError):
+                pass
     args = _parser().parse_args(argv)
-    if argv is None:  # the command line, not a test calling main(): SIGTERM stops like Ctrl-C
+    if argv is None:  # SIGTERM stops like Ctrl-C
         signal.signal(signal.SIGTERM, _on_sigterm)
     try:
         return COMMANDS[args.command](args)

@@ -18,6 +18,10 @@ class ParameterError(InfmobError, ValueError):
     """An override with an unknown name, a wrong type or a value out of range."""
 
 
+class ArgumentTypeError(ParameterError, TypeError):
+    """An argument of the Python API of the wrong type (a ``ParameterError`` and a ``TypeError``)."""
+
+
 class OutputError(InfmobError, OSError):
     """An output folder that cannot be written."""
 

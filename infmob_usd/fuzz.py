@@ -145,7 +145,7 @@ def fuzz(n: int, seed: int = 0, workers: int = 1, categories: list[str] | None =
     else:
         i = 0
         while i < n:
-            with ProcessPoolExecutor(max_workers=workers, initializer=_init_worker) as pool:
+            with ProcessPoolExecutor(max_workers=min(workers, n - i), initializer=_init_worker) as pool:
                 futures = [pool.submit(_run, (case, texture_size, sim, out)) for case in cases[i:]]
                 for fut in futures:
                     try:

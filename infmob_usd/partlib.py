@@ -54,6 +54,11 @@ MAX_HULL = 255  # PhysX keeps at most 255 vertices per convex mesh
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
 MESH_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl")
+# A part is a handle, knob, leg or wheel: PartNet-Mobility's come at 1k-100k faces (a few MB). A mesh
+# far over these bounds is refused before it is read: 10 M faces would take ~9 GB to load and days in
+# CoACD. Decimate it first (e.g. Blender's Decimate modifier, MeshLab's quadric edge collapse).
+MAX_MESH_BYTES = 100 << 20
+MAX_FACES = 1_000_000
 
 # label -> the support-point sets a part of that label may have (one per kind of part) and its default
 # scale policy (per-axis factor ranges about the part's own size). Bar pulls come 96-320 mm long at
@@ -83,6 +88,10 @@ class PartLibraryError(InfmobError):
     """A part library (or a source to import) that cannot be used."""
 
 
+def _within(real: str, top: str) -> bool:
+    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
 def _err(path, problem: str, fix: str) -> PartLibraryError:
     return PartLibraryError(f"{path}: {problem}; {fix}")
 
@@ -93,15 +102,46 @@ def read_mesh(path: Path):
     import trimesh
 
     try:
+        size = os.stat(path).st_size
+    except OSError as e:
+        raise _err(path, f"unreadable mesh ({e.strerror})", "check the file") from None
+    if size > MAX_MESH_BYTES:
+        raise _err(path, f"the file is {size / 2**20:.0f} MB, over the {MAX_MESH_BYTES >> 20} MB a part mesh may"
+                   f" have", f"decimate it below {MAX_FACES:,} faces first (nothing was read)")
+    try:
         loaded = trimesh.load(str(path), force="mesh", process=False)
     except Exception as e:  # noqa: BLE001 - every reader failure is the same bad input
         raise _err(path, f"unreadable mesh ({type(e).__name__}: {' '.join(str(e).split())[:120]})",
                    "re-export it as OBJ, GLB or PLY") from None
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0 or len(loaded.vertices) < 3:
         raise _err(path, "the file holds no triangles", "re-export it as a triangle mesh (OBJ, GLB or PLY)")
+    if len(loaded.faces) > MAX_FACES:
+        raise _err(path, f"{len(loaded.faces):,} faces, over the {MAX_FACES:,} a part mesh may have",
+                   "decimate it first")
     if not np.isfinite(np.asarray(loaded.vertices)).all():
         raise _err(path, "vertices contain NaN or inf", "re-export the mesh")
     return loaded
+
+
+def hull_volume(vertices: np.ndarray, faces: np.ndarray) -> float:
+    """Volume enclosed by outward faces (divergence theorem)."""
+    a, b, c = (vertices[faces[:, i]] for i in range(3))
+    return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
+
+
+def flat(points: np.ndarray) -> bool:
+    """Whether a convex piece encloses no volume (all points on a plane, a line or one point): PhysX
+    cooks no convex mesh from it, and a simulator given one collides with nothing there or crashes."""
+    from .geometry import hull_arrays
+
+    ext = float(np.ptp(points, axis=0).max()) if len(points) else 0.0
+    if ext <= 0.0:
+        return True
+    try:
+        v, f = hull_arrays(points)
+    except Exception:  # noqa: BLE001 - Qhull gives up on fully degenerate input
+        return True
+    return abs(hull_volume(v, f)) <= 1e-9 * ext**3
 
 
 def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
@@ -427,10 +467,10 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
     pj = folder / "part.json"
     d = _read_json(pj, "re-import the part (infmob parts import) or write its part.json")
     if not isinstance(d, dict):
-        raise _err(pj, "must be a JSON object", "see the part.json fields in the README")
+        raise _err(pj, "must be a JSON object", "see the part.json fields in docs/parts.md")
     for key in ("label", "id", "source", "licence", "units", "up", "front", "supports", "scale", "mesh", "convex"):
         if key not in d:
-            raise _err(pj, f"missing field {key!r}", "add it (see the part.json fields in the README)")
+            raise _err(pj, f"missing field {key!r}", "add it (see the part.json fields in docs/parts.md)")
     if d["label"] not in LABELS:
         raise _err(pj, f"unknown label {d['label']!r}", f"use one of {sorted(LABELS)}")
     if d["label"] != label or d["id"] != pid:
@@ -465,6 +505,9 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
     for name in ("mesh", "convex"):
         if not isinstance(d[name], str) or "/" in d[name] or d[name].startswith("."):
             raise _err(pj, f"field {name!r} must be a file name in the part's folder", "fix that field")
+    for name in ("mesh", "convex"):
+        if not _within(os.path.realpath(folder / d[name]), os.path.realpath(folder)):
+            raise _err(pj, f"{name} file {d[name]!r} is a symbolic link out of the part's folder", "copy the file in")
     mesh = read_mesh(folder / d["mesh"])
     v = np.asarray(mesh.vertices, float) @ rot.T * k
     f = np.asarray(mesh.faces, np.int64)
@@ -481,6 +524,9 @@ def _load_part(folder: Path, label: str, pid: str) -> LibPart:
         if a.ndim != 2 or a.shape[1] != 3 or not 4 <= len(a) <= MAX_HULL or not np.isfinite(a).all():
             raise _err(folder / d["convex"], f"piece {i} must be 4..{MAX_HULL} finite points",
                        "re-import the part")
+        if flat(a):
+            raise _err(folder / d["convex"], f"piece {i} encloses no volume (its points lie on a plane)",
+                       "re-import the part (a collision piece must be a solid)")
         convex.append(a @ rot.T * k)
     from .hulls import hull_arrays
 
@@ -516,7 +562,11 @@ def load_library(root) -> Library:
         if e["label"] not in LABELS:
             raise _err(index, f"entry {i}: unknown label {e['label']!r}", f"use one of {sorted(LABELS)}")
         folder = root / e["path"]
-        if ".." in Path(e["path"]).parts or not folder.is_dir():
+        if os.path.isabs(e["path"]) or ".." in Path(e["path"]).parts or \
+                not _within(os.path.realpath(folder), os.path.realpath(root)):
+            raise _err(index, f"entry {i}: part folder {e['path']!r} is outside the library (an absolute path,"
+                       f" .. or a symbolic link)", "give paths relative to the library, e.g. handle/h01")
+        if not folder.is_dir():
             raise _err(index, f"entry {i}: part folder {e['path']!r} missing", "re-make the index or restore it")
         parts.append(_load_part(folder, e["label"], e["id"]))
     if not parts:
@@ -547,6 +597,8 @@ class Entry:
 
 
 def _fresh_out(out: Path) -> None:
+    if os.path.islink(out):
+        raise _err(out, "is a symbolic link", "give a new real folder with --out (nothing was written)")
     if out.exists() and (not out.is_dir() or any(out.iterdir())):
         raise _err(out, "exists and is not empty", "give a new folder with --out (nothing was written)")
     if not out.parent.is_dir():
@@ -615,6 +667,7 @@ def _entry(label: str, pid: str, source: str, licence: str, v: np.ndarray, f: np
     convex = convex_pieces(v, f)
     if kind == "leg":  # a bolt or dowel above the shoulder goes into the table top: no collider there
         convex = clip_pieces(convex, float(sup["top"][2]))
+    convex = [c for c in convex if not flat(c)]  # a sliver CoACD leaves on a plane collides with nothing
     if not convex:
         raise _err(where, "CoACD found no convex piece", "check the mesh is a solid or leave it out")
     return Entry(label, pid, source, licence, v, f, sup, convex, rep.watertight, rep.report)
@@ -698,6 +751,9 @@ def _mobility_parts(obj: Path, units: str, up: str) -> tuple[list, list[str]]:
             if mesh_el is None or not mesh_el.get("filename"):
                 continue
             path = obj / mesh_el.get("filename")
+            if os.path.isabs(mesh_el.get("filename")) or not _within(os.path.realpath(path), os.path.realpath(obj)):
+                raise _err(urdf, f"link {name} names {mesh_el.get('filename')!r}, outside the object folder",
+                           "copy a PartNet-Mobility object as it was downloaded (nothing was read)")
             if not path.is_file():
                 raise _err(path, f"named by {urdf.name} link {name} but missing", "copy textured_objs/ again")
             m = read_mesh(path)
@@ -713,6 +769,46 @@ def _mobility_parts(obj: Path, units: str, up: str) -> tuple[list, list[str]]:
         out.append((label, f"{_safe_id(obj.name)}_{_safe_id(name)}", f"PartNet-Mobility {obj.name} {name}",
                     v, np.vstack(fs), f"{urdf} link {name}"))
     return out, rejected
+
+
+def _labelled_meshes(src: Path, csv_path: Path, units: str, up: str, licence: str) -> list[tuple]:
+    """The meshes a ``labels.csv`` lists (``(label, id, source, licence, v, f, where, overrides)``): each
+    line checked (a file inside ``src``, a known label, units and axes), its mesh read and oriented."""
+    found = []
+    try:
+        rows = list(csv.DictReader(csv_path.read_text().splitlines()))
+    except (OSError, UnicodeDecodeError, csv.Error) as e:
+        raise _err(csv_path, f"unreadable CSV ({e})", "write it as UTF-8 with a header line") from None
+    if not rows or "file" not in rows[0] or "label" not in rows[0]:
+        raise _err(csv_path, "needs a header with columns file,label", "add them (units,up,front optional)")
+    for n, row in enumerate(rows, 2):
+        path = src / (row.get("file") or "")
+        if row.get("file") and (os.path.isabs(row["file"]) or
+                                not _within(os.path.realpath(path), os.path.realpath(src))):
+            raise _err(csv_path, f"line {n}: {row['file']!r} is outside {src}", "copy the mesh into the folder")
+        if not row.get("file") or not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES:
+            raise _err(csv_path, f"line {n}: {row.get('file')!r} is not a mesh file in {src}",
+                       f"fix the line (meshes: {', '.join(MESH_SUFFIXES)})")
+        label = row["label"]
+        if label not in LABELS:
+            raise _err(csv_path, f"line {n}: unknown label {label!r}", f"use one of {sorted(LABELS)}")
+        u = row.get("units") or units
+        if u not in UNITS:
+            raise _err(csv_path, f"line {n}: units must be one of {list(UNITS)}, got {u!r}", "fix the line")
+        ov = {}
+        for key in ("up", "front"):
+            if row.get(key):
+                if row[key] not in AXES:
+                    raise _err(csv_path, f"line {n}: {key} must be one of {list(AXES)}", "fix the line")
+                ov[key] = row[key]
+        m = read_mesh(path)
+        v = np.asarray(m.vertices, float) * UNITS[u]
+        if not ov:
+            src_up = up if up[0] in "+-" else "+" + up
+            v = v @ axis_matrix(src_up, "+x" if src_up[1] != "x" else "+y").T
+        found.append((label, _safe_id(path.stem), row.get("source") or path.name,
+                      row.get("licence") or licence or "unknown", v, np.asarray(m.faces), str(path), ov))
+    return found
 
 
 def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", labels_csv=None,
@@ -745,36 +841,7 @@ def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", l
             found += [(lb, pid, source, licence or "PartNet-Mobility terms of use", v, f, where, {})
                       for lb, pid, source, v, f, where in got]
     elif csv_path.is_file():
-        try:
-            rows = list(csv.DictReader(csv_path.read_text().splitlines()))
-        except (OSError, UnicodeDecodeError, csv.Error) as e:
-            raise _err(csv_path, f"unreadable CSV ({e})", "write it as UTF-8 with a header line") from None
-        if not rows or "file" not in rows[0] or "label" not in rows[0]:
-            raise _err(csv_path, "needs a header with columns file,label", "add them (units,up,front optional)")
-        for n, row in enumerate(rows, 2):
-            path = src / (row.get("file") or "")
-            if not row.get("file") or not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES:
-                raise _err(csv_path, f"line {n}: {row.get('file')!r} is not a mesh file in {src}",
-                           f"fix the line (meshes: {', '.join(MESH_SUFFIXES)})")
-            label = row["label"]
-            if label not in LABELS:
-                raise _err(csv_path, f"line {n}: unknown label {label!r}", f"use one of {sorted(LABELS)}")
-            u = row.get("units") or units
-            if u not in UNITS:
-                raise _err(csv_path, f"line {n}: units must be one of {list(UNITS)}, got {u!r}", "fix the line")
-            ov = {}
-            for key in ("up", "front"):
-                if row.get(key):
-                    if row[key] not in AXES:
-                        raise _err(csv_path, f"line {n}: {key} must be one of {list(AXES)}", "fix the line")
-                    ov[key] = row[key]
-            m = read_mesh(path)
-            v = np.asarray(m.vertices, float) * UNITS[u]
-            if not ov:
-                src_up = up if up[0] in "+-" else "+" + up
-                v = v @ axis_matrix(src_up, "+x" if src_up[1] != "x" else "+y").T
-            found.append((label, _safe_id(path.stem), row.get("source") or path.name,
-                          row.get("licence") or licence or "unknown", v, np.asarray(m.faces), str(path), ov))
+        found = _labelled_meshes(src, csv_path, units, up, licence)
     else:
         raise _err(src, "holds neither PartNet-Mobility objects (mobility.urdf) nor labels.csv",
                    "give such a folder, or --labels CSV")

@@ -67,8 +67,18 @@ def parse_formats(formats: str | Iterable[str] | None) -> tuple[str, ...]:
 
 
 def check_output_dir(out: Path) -> Path:
-    """Create ``out`` if needed; raise :class:`OutputError` if it cannot hold objects."""
+    """Create ``out`` if needed; raise :class:`OutputError` if it cannot hold objects, or if it is a
+    symbolic link (checked at every object written: a folder swapped for a link while a run goes on
+    must not send the rest of the run elsewhere)."""
     out = Path(out)
+    try:
+        str(out).encode("utf-8")
+    except UnicodeEncodeError:  # OpenUSD takes paths as UTF-8 and fails on every object
+        raise OutputError(f"output folder {os.fsencode(out).decode('utf-8', 'backslashreplace')} is not valid"
+                          f" UTF-8; OpenUSD cannot write there: give a folder whose name is UTF-8") from None
+    if os.path.islink(out):
+        raise OutputError(f"output folder {str(out)!r} is a symbolic link; infmob never writes through a link:"
+                          f" give the real folder or another --out (nothing was written)")
     if out.exists() and not out.is_dir():
         raise OutputError(f"output path {str(out)!r} is a file; give a folder (--out DIR)")
     try:
@@ -125,6 +135,7 @@ def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run
             writer(obj, tmp)
             obj.timings[stage] = obj.timings.get(stage, 0.0) + time.perf_counter() - t0
         os.chmod(tmp, 0o755)
+        check_output_dir(out)  # still the folder it was, not a link put in its place meanwhile
         if final.exists():
             old = Path(tempfile.mkdtemp(prefix=prefix, suffix=".old", dir=out))
             os.replace(final, old / "x")

@@ -1,8 +1,8 @@
 """Encoded texture maps of library looks, made once and reused.
 
 Every look an object can wear is one of the finite library of
-:func:`~infmob_usd.materials.families.library_look` (16 per palette variant, 1168 in
-all), so the PNG maps of a look, which cost 30-45 ms to synthesize and encode at
+:func:`~infmob_usd.materials.families.library_look` (16 per palette variant,
+``len(families.library())`` in all), so the PNG maps of a look, which cost 30-45 ms to synthesize and encode at
 512 px, are made once and then reused by every object that wears the look.
 
 :func:`texture_maps` returns ``{map name: PNG bytes}`` through two caches:
@@ -102,11 +102,17 @@ def _digests(maps: dict[str, bytes]) -> dict[str, str]:
     return {name: hashlib.sha256(data).hexdigest() for name, data in sorted(maps.items())}
 
 
-def _read(folder: Path, key: str) -> dict[str, bytes] | None:
-    """The maps of ``key`` if every file is there and matches the SHA-256 recorded beside them.
+def _png_size(data: bytes) -> tuple[int, int]:
+    return int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+
+
+def _read(folder: Path, key: str, size: int | None = None) -> dict[str, bytes] | None:
+    """The maps of ``key`` if every file is there, ``size`` px square, and matches the SHA-256 recorded
+    beside them.
 
     A missing, torn or altered file (a flipped byte keeps the PNG header and end intact) is a
-    miss: the caller makes the maps again and overwrites the entry.
+    miss: the caller makes the maps again and overwrites the entry. So is an entry replaced together
+    with its hash file by maps of another size: the cache folder is shared, and not trusted that far.
     """
     try:
         want = json.loads((folder / f"{key}.sha256.json").read_text())
@@ -118,7 +124,7 @@ def _read(folder: Path, key: str) -> dict[str, bytes] | None:
             data = (folder / f"{key}_{name}.png").read_bytes()
         except OSError:
             return None
-        if not _whole_png(data):
+        if not _whole_png(data) or (size is not None and _png_size(data) != (size, size)):
             return None
         maps[name] = data
     if not isinstance(want, dict) or want != _digests(maps):
@@ -194,7 +200,7 @@ def _disk_maps(look: Look, size: int) -> tuple[dict[str, bytes], bool]:
     """The maps of ``look`` from the disk cache, or made now and stored there; and whether made."""
     folder = cache_dir()
     key = _look_key(look, size)
-    maps = _read(folder, key) if folder else None
+    maps = _read(folder, key, size) if folder else None
     if maps is not None:
         return maps, False
     maps = make_maps(look, size)

@@ -34,7 +34,7 @@ __all__ = [
 ]
 
 LOOKS_PER_VARIANT = 16
-"""Looks per palette variant of a family in the look library (1072 looks over all families)."""
+"""Looks per palette variant of a family in the look library (``len(library())`` looks over all families)."""
 
 Range = tuple[float, float]
 
@@ -287,7 +287,8 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="brushed_metal",
             density=7850.0,
-            wall=0.0012,  # steel tube and pressed sheet: furniture tube walls 1-1.5 mm (EN 10305-3), appliance panels 0.6-0.8 mm
+            # steel tube and pressed sheet: furniture tube walls 1-1.5 mm (EN 10305-3), appliance panels 0.6-0.8 mm
+            wall=0.0012,
             style="brushed",
             palette=(
                 ("stainless", "#C4C5C6"),
@@ -334,7 +335,8 @@ FAMILIES: dict[str, Family] = {
         Family(
             name="glass",
             density=2500.0,
-            wall=0.0035,  # container glass walls 2.5-4 mm (750 ml wine bottles, jars); panes stay solid (thinner than two walls)
+            # container glass walls 2.5-4 mm (750 ml wine bottles, jars); panes stay solid (thinner than two walls)
+            wall=0.0035,
             style="polished",
             palette=(
                 # clear glass reflects, it does not scatter: a mid-light albedo keeps a few

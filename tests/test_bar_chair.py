@@ -4,19 +4,18 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_office_chair import _box, assert_clear, rest_overlaps, states
+from test_office_chair import _box, assert_clear, rest_overlaps
 
-from infmob_usd.categories import bar_chair as bc
 from infmob_usd.model import build as build_model
 
-from zoo import by_child, make_bp, movable
+from helpers import maker, states
+from zoo import by_child, movable
 
 SEEDS = range(4)
 LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "lever", "foot_ring", "arm", "knob"}
 
 
-def make(seed, **overrides):
-    return make_bp(bc, "bar_chair", seed, **overrides)
+make = maker("bar_chair")
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -161,3 +160,11 @@ def test_seat_slider_and_tension_knob(base):
         p, _ = make(6, **{**dict(base_type=base, has_back=True, back_mount="hinged", has_tension_knob=True,
                                  has_seat_tilt=False), **over})
         assert not p["has_tension_knob"], over
+
+
+@pytest.mark.parametrize("seed", [5, 7302])
+def test_flip_up_arms_turn_up_beside_the_back(seed):
+    from test_office_chair import flip_arm_stays_over_the_seat
+
+    _, bp = make(seed, has_back=True, has_arms=True, arm_style="arm_flip")
+    flip_arm_stays_over_the_seat(bp)

@@ -7,20 +7,19 @@ import math
 import numpy as np
 import pytest
 
-from infmob_usd.categories import beverage_fridge as bf
 from infmob_usd.model import build as build_model
 
 from collide import contacts, overlap
-from zoo import by_child, make_bp, movable
+from helpers import maker
+from zoo import by_child, movable
 
 SEEDS = range(6)
 VOL = 1e-7  # m^3: the validators' contact volume
 
 
-def make(seed, **overrides):
-    """A glass-door cooler unless ``design`` says otherwise (the tests below check its glass door, racks or
-    divider; the other designs have their own tests at the end)."""
-    return make_bp(bf, "beverage_fridge", seed, **{"design": "glass_cooler", **overrides})
+# a glass-door cooler unless ``design`` says otherwise (the tests below check its glass door, racks or divider;
+# the other designs have their own tests at the end)
+make = maker("beverage_fridge", design="glass_cooler")
 
 
 def at(j, f):
@@ -181,7 +180,9 @@ def test_nothing_below_ground(seed):
 # -- overrides, growth, determinism ------------------------------------------------------
 
 
-def test_overrides_drive_the_growth():
+def test_forced_racks_divider_and_panel_build_those_parts():
+    """Forced rack counts and styles, the divider and the control panel build exactly those parts (the generic
+    override contract is test_category_contract.test_overrides_drive_the_growth)."""
     _, bp = make(1, interior="racks", rack_count=5, rack_style="glass")
     assert sorted(n for n in bp.parts if n.startswith("rack_")) == [f"rack_{k}" for k in range(5)]
     assert all(bp.parts[f"rack_{k}"].label == "shelf" for k in range(5))

@@ -3,13 +3,15 @@ up front, schema extremes give an object or a ParameterError (never a crash), ru
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 import infmob_usd
 from infmob_usd.api import assemble
 from infmob_usd.errors import ParameterError
-from infmob_usd.params import Choice, Float, Int
+from infmob_usd.params import Choice, Flag, Float, Int
 from infmob_usd.seeding import streams
 
 CATEGORIES = infmob_usd.list_categories()
@@ -81,9 +83,13 @@ def test_rules_are_printable_and_name_the_flags(name):
 
 
 def test_every_category_is_expressed_through_parts_and_the_grammar():
+    """Discovery registers every category module (no list to keep), each a Category."""
+    from infmob_usd import categories
     from infmob_usd.category import Category
 
-    assert len(CATEGORIES) == 22
+    modules = sorted(f.stem for f in Path(categories.__file__).parent.glob("*.py")
+                     if not f.stem.startswith("_") and f.stem not in categories.NOT_CATEGORIES)
+    assert CATEGORIES and CATEGORIES == modules
     assert all(isinstance(infmob_usd.get_category(n), Category) for n in CATEGORIES)
 
 
@@ -104,3 +110,82 @@ def test_grown_tree_and_parts_agree(name):
             if node.label:
                 wanted |= {node.label} if isinstance(node.label, str) else set(node.label)
         assert labels <= wanted, f"{name} seed {seed}: labels {labels - wanted} no rule builds"
+
+
+# -- overrides drive the growth ------------------------------------------------------------------------------
+GROWTH_SEEDS = range(4)
+
+
+def grown(name, seed, **overrides):
+    """``(params, tree)``: the parameters as :meth:`Category.build` leaves them (``derive``, then the grammar's
+    ``auto`` choices) and the tree it grows from the structure stream, without building geometry."""
+    cat = infmob_usd.get_category(name)
+    r = streams(name, seed)
+    p = cat.schema.sample(r["params"], overrides)
+    if cat.derive is not None:
+        p.update(cat.derive(dict(p)))
+    p.update(cat.grammar.resolve(p))
+    return p, cat.grammar.grow(p, r["structure"])
+
+
+def _line(node):
+    """The node kinds from the root to ``node`` (its path without repeat indices)."""
+    return [seg.split("[")[0] for seg in node.path.split("/")]
+
+
+def _forced(name, overrides):
+    """``(params, tree)`` per growth seed where the override is used as given; asserts an override is only ever
+    changed by the category's ``derive`` rule. A forced value no tree accepts (ModelError) or that the schema
+    refuses (ParameterError) is left out: the contract test above covers refusals."""
+    from infmob_usd.errors import ModelError
+
+    cat, out = infmob_usd.get_category(name), []
+    for seed in GROWTH_SEEDS:
+        try:
+            p, tree = grown(name, seed, **overrides)
+        except (ModelError, ParameterError):
+            continue
+        changed = {k: (v, p[k]) for k, v in overrides.items() if p[k] != v}
+        assert not changed or cat.derive is not None, f"{name} seed {seed}: overrides changed {changed} by no rule"
+        if not changed:
+            out.append((p, tree))
+    return out
+
+
+def _values(prm):
+    if isinstance(prm, Flag):
+        return (True, False)
+    if isinstance(prm, Choice):
+        return tuple(c for c in prm.choices if c != "auto")
+    if isinstance(prm, (Float, Int)):
+        return (prm.low, prm.high)
+    return ()
+
+
+@pytest.mark.parametrize("name", CATEGORIES)
+def test_overrides_drive_the_growth(name):
+    """Every parameter forced to each choice, flag value or bound is used as given (unless the category's
+    ``derive`` rule says otherwise), and the grown tree follows the grammar's parameters: a forced branch flag
+    grows (or leaves out) that branch under every node that may hold it, a forced choice is the alternative
+    every choosing node takes, a count parameter is the number of children grown. Each flag and each choice
+    alternative is honoured for at least one seed."""
+    cat = infmob_usd.get_category(name)
+    g = cat.grammar
+    for prm in cat.schema.params:
+        for value in _values(prm):
+            cases = _forced(name, {prm.name: value})
+            if isinstance(prm, (Flag, Choice)) and prm.name in {q.name for q in g.params()}:
+                assert cases, f"{name}: {prm.name}={value!r} is never used as given in seeds {list(GROWTH_SEEDS)}"
+            for p, tree in cases:
+                for node in tree.walk():
+                    rule, line = g.nodes[node.kind], _line(node)
+                    kinds = [c.kind for c in node.children]
+                    for branch in rule.optional:
+                        other = branch in (*rule.required, *rule.one_of, *rule.repeat)
+                        if line.count(branch) < g.max_nesting and not other:
+                            assert (branch in kinds) == p[f"has_{branch}"], (name, node.path, branch, p)
+                    if rule.choice and p[rule.choice] in rule.one_of and line.count(p[rule.choice]) < g.max_nesting:
+                        assert node.choice == p[rule.choice], (name, node.path, rule.choice)
+                    for child, count in rule.repeat.items():
+                        if isinstance(count, str) and line.count(child) < g.max_nesting:
+                            assert kinds.count(child) == p[count], (name, node.path, child, count)

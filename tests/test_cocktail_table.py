@@ -7,20 +7,18 @@ import math
 import numpy as np
 import pytest
 from test_office_chair import assert_clear, rest_overlaps
-from test_office_chair import states as all_states
 
-from infmob_usd.categories import cocktail_table as ct
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import by_child, make_bp
+from helpers import joint_states, maker, states
+from zoo import by_child
 
 SEEDS = range(8)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
 
 
-def make(seed, **overrides):
-    return make_bp(ct, "cocktail_table", seed, **overrides)
+make = maker("cocktail_table")
 
 
 def rotation(axis, angle):
@@ -42,16 +40,6 @@ def pose(joint, qs):
             step[:3, :3], step[:3, 3] = r, o - r @ o
         m = m @ step
     return m
-
-
-def states(joint):
-    ends = [(d.lower, d.upper) for d in joint.dofs]
-    out = []
-    for f in (0.0, 0.5, 1.0):
-        out.append([lo + f * (hi - lo) for lo, hi in ends])
-    if len(ends) == 2:
-        out += [[ends[0][1], ends[1][0]], [ends[0][0], ends[1][1]]]
-    return out
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -106,7 +94,7 @@ def test_top_never_enters_the_body_nor_the_ground(seed):
     _, bp = make(seed, support="pedestal" if seed % 2 else "legs", has_lift_top=False)
     (j,) = bp.joints
     body, top = bp.parts["body"], bp.parts["top"]
-    for qs in states(j):
+    for qs in joint_states(j):
         m = pose(j, qs)
         assert overlap(top, m, body, np.eye(4)) < TOL, qs
         pts = np.vstack([pc.vertices for pc in top.pieces]) @ m[:3, :3].T + m[:3, 3]
@@ -124,7 +112,9 @@ def test_clear_at_rest(seed):
         assert overlap(top, m, body, np.eye(4)) < TOL
 
 
-def test_overrides_drive_the_growth():
+def test_forced_lifts_legs_and_pedestal_build_those_mechanisms():
+    """Forced lift tops (straight and forward), legs with a shelf and a pedestal build those joints and parts;
+    a nest of tables is sized down (the generic contract: test_category_contract)."""
     _, bp = make(1, support="legs", has_lift_top=True, has_lift_forward=False, top_shape="square")
     j = by_child(bp, "top")
     assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((0, 0, 1))
@@ -188,7 +178,7 @@ def test_designs_move_without_collisions(over):
         assert bp.parts["lift_frame"].label == "lift"
         assert any(pc.material == "strut" for pc in bp.parts["top"].pieces)  # the rods show under the top
     rest_pc = rest_overlaps(bp)
-    for q in all_states(bp):
+    for q in states(bp):
         assert_clear(bp, bp.poses(q), rest_pc, q)
 
 

@@ -5,20 +5,19 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from infmob_usd.categories import dining_table as dt
 from infmob_usd.categories.parts.furniture_sizes import DINING
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import by_child, make_bp, movable
+from helpers import maker
+from zoo import by_child, movable
 
 SEEDS = range(6)
 TOL = 1e-7  # m^3 of overlap tolerated between two parts
 EYE = np.eye(4)
 
 
-def make(seed, **overrides):
-    return make_bp(dt, "dining_table", seed, **overrides)
+make = maker("dining_table")
 
 
 def at(moving, f):
@@ -144,7 +143,9 @@ def test_busy_table_all_mechanisms():
         assert clash(bp, at([j], 1.0)) == [], j.child
 
 
-def test_overrides_drive_the_growth():
+def test_forced_drawers_pedestal_and_top_build_those_parts():
+    """Forced drawers, pedestal and top give those parts; a table asked for nothing movable still gets apron
+    drawers (the generic contract: test_category_contract)."""
     _, bp = make(3, top_style="fixed", has_drawers=True, drawer_count=1, drawer_sides="one",
                  has_adjustable_legs=False, has_lazy_susan=False)
     assert [j.child for j in movable(bp)] == ["drawer_0"]

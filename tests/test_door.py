@@ -14,16 +14,15 @@ from infmob_usd.model import build as build_model
 from infmob_usd.physical import gravity_torque
 
 from collide import contacts, overlap
+from helpers import labelled_states, maker
 from zoo import by_child, make_bp, movable
 
 SEEDS = range(8)
 VOLUME_TOL = 1e-7  # m^3, as the physics checks
 
 
-def make(seed, **overrides):
-    """A single unlatched leaf unless the test asks for another design (the tests below were written for it)."""
-    return make_bp(mod, "door", seed, **{"design": "single", "has_latch": False, "has_thumb_turn": False,
-                                         "has_letter_plate": False, "has_viewer": False, **overrides})
+# a single unlatched leaf unless the test asks for another design (the tests below were written for it)
+make = maker("door", design="single", has_latch=False, has_thumb_turn=False, has_letter_plate=False, has_viewer=False)
 
 
 def leaf_body(bp):
@@ -124,23 +123,10 @@ def test_lever_grip_turns_down():
 # -- clearances ----------------------------------------------------------------------
 
 
-def states(bp):
-    """Labelled ``Blueprint.poses`` states (every joint here has one DoF, key ``(child, 0)``)."""
-    mov = movable(bp)
-    yield "rest", {}
-    for f in (0.5, 1.0):
-        yield f"all@{f:.0%}", {(j.child, 0): (j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower))
-                               if j.kind != "continuous" else f * math.pi for j in mov}
-    for j in mov:
-        qs = (-math.pi / 2, math.pi / 2, math.pi) if j.kind == "continuous" else (j.dofs[0].lower, j.dofs[0].upper)
-        for q in qs:
-            yield f"{j.child}@{q:.2f}", {(j.child, 0): q}
-
-
 @pytest.mark.parametrize("seed", [0, 1, 2, 3, 4, 5])
 def test_no_overlap_at_sampled_states(seed):
     _, bp = make(seed)
-    for label, q in states(bp):
+    for label, q in labelled_states(bp):
         bad = contacts(bp, q, VOLUME_TOL)
         assert not bad, f"(part, part, m^3) overlapping at {label}: {bad}"
 
@@ -223,7 +209,7 @@ def test_each_design_is_forced_and_moves(design):
         assert all(by_child(bp, w).parent == "leaf" for w in ("wheel_0", "wheel_1"))
     else:
         assert kinds["latch"] == "prismatic" and kinds["thumb_turn"] == "revolute"
-    for label, q in states(bp):
+    for label, q in labelled_states(bp):
         if design == "single" and ("leaf", 0) in q:  # the leaf moves with its latch drawn back
             q = {**q, ("latch", 0): by_child(bp, "latch").dofs[0].upper}
         bad = contacts(bp, q, VOLUME_TOL)

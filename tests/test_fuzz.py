@@ -1,4 +1,4 @@
-"""Property test (issue 16): any category x seed x valid overrides, schema extremes included,
+"""Property test: any category x seed x valid overrides, schema extremes included,
 gives a ParameterError up front or an object that passes the USD checks and SAPIEN ``reach``.
 
 Hypothesis draws the cases (derandomized: CI runs the same examples every time). Two budgets:

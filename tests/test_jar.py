@@ -9,14 +9,14 @@ from test_vase import check_cap_joint, check_common, check_hollow, check_sweep, 
 from infmob_usd.categories import jar
 from infmob_usd.errors import ParameterError
 
+from helpers import maker
 from zoo import make_bp
 
 SEEDS = range(6)
 
 
-def make(seed, **overrides):
-    """The screw-lid design (mason jar) unless a test asks for another closure."""
-    return make_bp(jar, "jar", seed, **{"closure": "screw", **overrides})
+# the screw-lid design (mason jar) unless a test asks for another closure
+make = maker("jar", closure="screw")
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -121,7 +121,8 @@ def test_clip_top_lever_clamps_the_hinged_glass_lid(sides):
     blocked = min(gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), V_) for q in (0.04, 0.08, 0.12, 0.16))
     assert blocked < 1e-6
     open_lever = hulls(bp.parts["lever"], motion(lever.dofs[0], 1.5))
-    assert min(gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), open_lever) for q in (0.04, 0.08, 0.12, 0.16, 1.0)) > 0.0
+    assert min(gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), open_lever)
+               for q in (0.04, 0.08, 0.12, 0.16, 1.0)) > 0.0
     # the lid opens upward clear of the body
     for q in (0.3, 1.0, 1.6):
         assert gap(hulls(bp.parts["lid"], motion(lid.dofs[0], q)), body) >= 0.001

@@ -16,14 +16,13 @@ from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES, split_spec
 
 from collide import overlap
-from zoo import make_bp
+from helpers import maker
 
 SEEDS = range(10)
 LABELS = {"base", "pole", "arm", "head", "shade", "bulb", "switch", "screw"}
 
 
-def make(seed: int, **overrides):
-    return make_bp(lamp, "lamp", seed, **overrides)
+make = maker("lamp")
 
 
 def desk_top(p) -> float:
@@ -417,8 +416,8 @@ def test_tripod_base_stands_on_three_feet(style, kind):
 
 @pytest.mark.parametrize("style", ["curved", "chain"])
 def test_a_desk_lamp_with_a_hanging_head_is_not_on_a_tripod(style):
-    """A tripod's 16 cm hub leaves a desk lamp no room for a head hanging from an arm: fuzz #2009 / #4077 grew
-    a 7-17 mm shade whose rim held the bulb fast. Such a lamp stands on a round base, its shade full size."""
+    """A tripod's 16 cm hub leaves a desk lamp no room for a head hanging from an arm: without this rule it
+    grew a 7-17 mm shade whose rim held the bulb fast. Such a lamp stands on a round base, its shade full size."""
     p, bp = make(35, base_shape="tripod", arm_style=style, lamp_type="desk", has_bulb=True)
     assert p["base_shape"] == "round"
     shade = np.array([pc.bounds for pc in bp.parts["shade"].pieces])
@@ -494,8 +493,8 @@ def test_clamp_lamp_screw_and_arm_reach_in_sapien(tmp_path):
                   lower_pole_fraction=0.55, desk_shade_radius=0.13)),
 ])
 def test_a_short_desk_lamp_on_a_tripod_keeps_a_pole_under_its_head(seed, over):
-    """Fuzz (lamp, seed 7) #243, #247, #382: a 0.35 m desk lamp on a 0.16 m tripod hub under a 13 cm shade had
-    29-43 mm of pole and its head's collar sat in the lower pole's. The shade shrinks until MIN_POLE is left."""
+    """A 0.35 m desk lamp on a 0.16 m tripod hub under a 13 cm shade would keep
+    29-43 mm of pole, its head's collar in the lower pole's. The shade shrinks until MIN_POLE is left."""
     p, bp = make(seed, **over)
     assert p["base_shape"] == "tripod" and p["arm_style"] == "straight"
     lo = min(pc.bounds[0, 2] for pc in bp.parts["lower_pole"].pieces)

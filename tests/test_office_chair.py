@@ -2,42 +2,24 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
 from infmob_usd.blueprint import dof_motion
-from infmob_usd.categories import office_chair as oc
 from infmob_usd.model import build as build_model
 
 from collide import overlap
-from zoo import by_child, make_bp, movable
+from helpers import maker, states
+from zoo import by_child, movable
 
 SEEDS = range(4)
-LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest", "headrest", "lumbar", "foot_ring", "knob"}
+LABELS = {"base", "caster", "wheel", "lift", "seat", "back", "arm", "armrest", "headrest", "lumbar", "foot_ring",
+          "knob"}
 PLAIN = dict(has_seat_slider=False, has_tension_knob=False, has_lumbar=False, has_headrest=False, arm_style="arm_4d")
 TOL = 1e-7  # m^3, as the validator
 
 
-def make(seed, **overrides):
-    return make_bp(oc, "office_chair", seed, **overrides)
-
-
-def states(bp):
-    """rest, all at 50 % and 100 % (continuous: pi/2, pi), each joint alone at its limits, as
-    ``Blueprint.poses`` values (every DoF of a joint at the same fraction)."""
-    def at(j, f):
-        return {(j.child, i): d.lower + f * (d.upper - d.lower) if d.type != "continuous" else f * math.pi
-                for i, d in enumerate(j.dofs)}
-    out = [{}]
-    out += [{k: v for j in movable(bp) for k, v in at(j, f).items()} for f in (0.5, 1.0)]
-    for j in movable(bp):
-        if j.kind in ("continuous",):
-            out += [{(j.child, 0): a} for a in (math.pi / 2, -math.pi / 2, math.pi)]
-        else:
-            out += [at(j, 0.0), at(j, 1.0)]
-    return out
+make = maker("office_chair")
 
 
 # -- parts, labels, materials --------------------------------------------------------------
@@ -200,7 +182,9 @@ def test_nothing_below_ground(seed):
 # -- overrides, growth, determinism ----------------------------------------------------
 
 
-def test_overrides_drive_the_growth():
+def test_forced_casters_arms_and_back_build_those_parts():
+    """Forced caster counts and styles, arms and backs give those parts; the biggest task chair has the reference
+    method's joint count (the generic contract: test_category_contract)."""
     _, bp = make(3, leg_count=5, caster_style="twin", has_arms=True, design="task", **PLAIN)
     assert sum(part.label == "caster" for part in bp.parts.values()) == 5
     assert len(movable(bp)) == 5 * 3 + 3 + 6  # the reference method's biggest chairs
@@ -231,7 +215,7 @@ def test_star_bases_have_five_legs_rarely_four_or_six():
     assert legs({"leg_count": 4}, rng) == 4
 
 
-# -- designs (issue 14) ----------------------------------------------------------------------
+# -- designs: the parts each one adds --------------------------------------------------------
 
 
 DESIGN_PARTS = {"task": {"back"}, "executive": {"back", "headrest"}, "mesh_chair": {"back", "lumbar"},
@@ -308,3 +292,28 @@ def test_gas_lift_is_steel_whatever_its_finish():
         assert obj.materials["lift"].family == ("chrome" if finish == "chrome" else "enamel")
     assert masses["black"] == pytest.approx(masses["chrome"], rel=1e-9)
     assert 0.3 < masses["black"] < 2.0
+
+
+def flip_arm_stays_over_the_seat(bp):
+    """Through its whole range a flip-up arm's pad stays above the seat's top and no part of the arm goes
+    behind the back's panel (the mechanism turns the cap up on its post, it does not swing the arm down behind
+    the chair)."""
+    rest = bp.poses({})
+    seat_top = max(pc.bounds[1, 2] for n, part in bp.parts.items() if n.startswith("seat") for pc in part.pieces
+                   if pc.material == "seat")
+    back_rear = min(pc.bounds[0, 0] for pc in bp.parts["back"].pieces if pc.material in ("seat", "mesh"))
+    for side in ("left", "right"):
+        name = f"arm_{side}"
+        d = by_child(bp, name).dofs[0]
+        for f in np.linspace(0.0, 1.0, 7):
+            m = bp.poses({(name, 0): d.lower + f * (d.upper - d.lower)})[name] @ np.linalg.inv(rest[name])
+            pads = np.vstack([pc.vertices for pc in bp.parts[name].pieces if pc.material == "pad"])
+            every = np.vstack([pc.vertices for pc in bp.parts[name].pieces])
+            assert (pads @ m[:3, :3].T + m[:3, 3])[:, 2].min() > seat_top, (name, f)
+            assert (every @ m[:3, :3].T + m[:3, 3])[:, 0].min() > back_rear, (name, f)
+
+
+@pytest.mark.parametrize("seed", [4, 7301])
+def test_flip_up_arms_turn_up_beside_the_back(seed):
+    _, bp = make(seed, design="task", has_back=True, has_arms=True, arm_style="arm_flip")
+    flip_arm_stays_over_the_seat(bp)

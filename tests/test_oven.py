@@ -14,15 +14,15 @@ from infmob_usd.materials import FAMILIES, split_spec
 from infmob_usd.seeding import streams
 
 import collide
-from zoo import by_child, make_bp, movable
+from helpers import maker
+from zoo import by_child, movable
 
 SEEDS = range(4)
 LABELS = {"body", "door", "drawer", "rack", "knob", "button", "grate", "control_panel"}
 VOL = 1e-7  # m^3, the validator's contact volume
 
 
-def make(seed, **overrides):
-    return make_bp(oven, "oven", seed, **overrides)
+make = maker("oven")
 
 
 def q_at(bp, fractions):
@@ -213,7 +213,9 @@ def test_nothing_below_ground(seed):
 # -- overrides, growth, determinism ------------------------------------------------------------
 
 
-def test_overrides_drive_the_growth():
+def test_forced_grates_knobs_buttons_drawer_and_racks_build_those_parts():
+    """Forced grates, knob and button counts, drawer and racks build exactly those parts (the generic contract:
+    test_category_contract)."""
     _, bp = make(0, style="wall")
     assert not any(part.label == "grate" for part in bp.parts.values())
     _, bp = make(0, style="range", has_grates=True, grate_count=3)

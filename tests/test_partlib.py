@@ -1,4 +1,4 @@
-"""Part libraries (issue 12): a messy PartNet-Mobility-style source imported, the built-in parts exported,
+"""Part libraries: a messy PartNet-Mobility-style source imported, the built-in parts exported,
 objects generated with every retrieved part and validated in simulation, bad input refused."""
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ RETRIEVABLE = ("bar_chair", "beverage_fridge", "cocktail_table", "dining_table",
 _N = int(os.environ.get("INFMOB_PARTS_SEEDS", "0"))
 SEEDS = {"messy": range(_N or 1), "builtin": range(_N or 1)}
 """Seeds per category in the sim test: 1 with each library, to keep the test short;
-``INFMOB_PARTS_SEEDS=5`` runs 5 of each (the check quoted in the README)."""
+``INFMOB_PARTS_SEEDS=5`` runs 5 of each (the check quoted in docs/benchmarks.md)."""
 
 
 def _mesh(asm) -> trimesh.Trimesh:

@@ -14,13 +14,13 @@ from infmob_usd.categories import plate_rack as pr
 from infmob_usd.materials import split_spec
 from infmob_usd.model import build as build_model
 
-from zoo import by_child, make_bp
+from helpers import joint_states, maker
+from zoo import by_child
 
 SEEDS = range(8)
 
 
-def make(seed, **overrides):
-    return make_bp(pr, "plate_rack", seed, **overrides)
+make = maker("plate_rack")
 
 
 def plates(bp):
@@ -98,21 +98,6 @@ def inflate(points, d):
     """The Minkowski sum with a cube of half-size ``d``: an L-inf offset of a hull."""
     offs = np.array(list(itertools.product((-d, d), repeat=3)))
     return (points[:, None, :] + offs[None]).reshape(-1, 3)
-
-
-def states(joint):
-    """Rest, each DoF alone at each limit, all at 50 % and all at 100 % (and at the lower limits)."""
-    lims = [(d.lower, d.upper) for d in joint.dofs]
-    out = [(0.0, 0.0, 0.0)]
-    for k, (lo, hi) in enumerate(lims):
-        for v in (lo, hi):
-            q = [0.0, 0.0, 0.0]
-            q[k] = v
-            out.append(tuple(q))
-    out.append(tuple(0.5 * hi for _, hi in lims))
-    out.append(tuple(hi for _, hi in lims))
-    out.append(tuple(lo for lo, _ in lims))
-    return out
 
 
 # -- parts, labels, materials ---------------------------------------------------------------
@@ -207,10 +192,10 @@ def test_plates_never_enter_prongs_base_or_each_other(seed):
     names = plates(bp)
     joints = {n: by_child(bp, n) for n in names}
     for name in names:
-        for q in states(joints[name]):
+        for q in joint_states(joints[name]):
             assert max_depth(hulls(bp.parts[name], joints[name], q), rack) < 5e-4, f"{name} at {q}"
     for a, b in zip(names, names[1:]):  # neighbouring plates, both moved together
-        for qa, qb in itertools.product(states(joints[a])[-3:], repeat=2):
+        for qa, qb in itertools.product(joint_states(joints[a], together=True), repeat=2):
             ha = hulls(bp.parts[a], joints[a], qa)
             hb = hulls(bp.parts[b], joints[b], qb)
             assert max_depth(ha, hb) < 5e-4
@@ -222,7 +207,7 @@ def test_each_style_sweeps_clear(style):
     rack = Hulls(hulls(bp.parts["rack"]))
     for name in plates(bp):
         j = by_child(bp, name)
-        for q in states(j):
+        for q in joint_states(j):
             assert max_depth(hulls(bp.parts[name], j, q), rack) < 5e-4, f"{style} {name} at {q}"
 
 
@@ -232,7 +217,7 @@ def test_nothing_below_ground_and_plates_above_the_support(seed):
     assert bp.bounds()[0, 2] == pytest.approx(0.0, abs=1e-9)
     for name in plates(bp):
         j = by_child(bp, name)
-        for q in states(j):
+        for q in joint_states(j):
             pts = np.vstack([moved(pc.vertices, j, q) for pc in bp.parts[name].pieces])
             assert pts[:, 2].min() > 0.005
 
@@ -310,7 +295,7 @@ def test_second_tier_and_drip_tray(seed, style):
     for name in lower + upper:
         j = by_child(bp, name)
         assert j.kind == "limited_planar" and j.parent == "rack"
-        for q in states(j):
+        for q in joint_states(j):
             assert max_depth(hulls(bp.parts[name], j, q), rack) < 5e-4, f"{name} at {q}"
     for name in lower:  # a lower plate lifted fully stays under the upper tier
         j = by_child(bp, name)
@@ -375,3 +360,28 @@ def test_seed_32_plate_slides_its_whole_slot_in_sapien(tmp_path):
     folder = infmob_usd.save(infmob_usd.generate("plate_rack", seed=32, texture_size=16), tmp_path)
     res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
     assert res["reach"].ok, res["reach"].detail
+
+
+def free_lift(bp, name, near=0.01):
+    """How far ``name`` rises along +Z before it clears every piece of its parent that stands within ``near`` of
+    its footprint and above its lowest point (a peg inside a mug, the lip of a caddy's pocket)."""
+    part = np.vstack([pc.vertices for pc in bp.parts[name].pieces])
+    lo, hi = part.min(0), part.max(0)
+    lift = 0.0
+    for pc in bp.parts[by_child(bp, name).parent].pieces:
+        b = pc.bounds
+        if (b[0, :2] < hi[:2] + near).all() and (b[1, :2] > lo[:2] - near).all():
+            lift = max(lift, b[1, 2] - lo[2])
+    return lift
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_lift_off_parts_stop_once_free(seed):
+    """A mug, tumbler or caddy lifts off along +Z by what frees it (its peg, its pocket's lip) and a few
+    millimetres more, not through the air: a lift-off travel is the lift a hand gives before the part is free."""
+    _, bp = make(seed, design="station")
+    lifted = [n for n, part in bp.parts.items() if part.label in ("cup", "glass", "basket")]
+    assert lifted
+    for n in lifted:
+        free, up = free_lift(bp, n), by_child(bp, n).dofs[0].upper
+        assert free > 0.01 and free <= up <= free + 0.01, (n, free, up)

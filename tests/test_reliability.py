@@ -1,4 +1,4 @@
-"""Reliability (issue 16): validate never crashes, generate never touches what it did not make,
+"""Reliability: validate never crashes, generate never touches what it did not make,
 runs survive kills and each other, every bad input is a one-line error with exit status 2."""
 
 import json
@@ -271,7 +271,7 @@ def test_a_killed_run_resumes_without_redoing_finished_objects(tmp_path, sig):
     (["generate", "kitchen_cabinet", "--set", "column_count=2.0"], "column_count"),
     (["generate", "kitchen_cabinet", "--set", "has_handles=off"], "true or false"),
     (["generate", "tv", "--out", "a\nb"], "control characters"),
-    (["validate", "--workers", "0", "."], "--workers must be at least 1"),
+    (["validate", "--workers", "0", "."], "--workers must be 1..1024"),
     (["stats", ".", "--max-pairs", "0"], "--max-pairs must be at least 1"),
     (["bench", "--categories", ""], "no category"),
     (["textures", "--family", "wood:nope"], "no variant 'nope'"),

@@ -8,21 +8,21 @@ import manifold3d
 import numpy as np
 import pytest
 
-from infmob_usd.categories import tap
 from infmob_usd.categories.parts import taps
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
 
-from zoo import by_child, make_bp, movable
+from helpers import maker
+from helpers import states as shared_states
+from zoo import by_child, movable
 
 SEEDS = range(8)
 LABELS = {"base", "spout", "lever", "handle", "spray_head", "button", "knob"}
 TOL = 1e-7  # m^3, as the validator's contact volume
 
 
-def make(seed: int, **overrides):
-    return make_bp(tap, "tap", seed, **overrides)
+make = maker("tap")
 
 
 @pytest.fixture(scope="module", params=SEEDS)
@@ -38,16 +38,9 @@ def at(d, f):
 
 
 def states(bp):
-    """rest, all joints at 50 % and 100 % (continuous: f pi), each DoF alone at its limits
-    (continuous: +-90 and 180 degrees), and the spout at eight angles with the rest at upper."""
+    """The shared sampled states (:func:`helpers.states`) and the spout at eight angles with the rest at upper."""
     js = movable(bp)
-    out = [{}]
-    for f in (0.5, 1.0):
-        out.append({(j.child, i): at(d, f) for j in js for i, d in enumerate(j.dofs)})
-    for j in js:
-        for i, d in enumerate(j.dofs):
-            qs = (math.pi / 2, -math.pi / 2, math.pi) if d.type == "continuous" else (d.lower, d.upper)
-            out += [{(j.child, i): q} for q in qs]
+    out = shared_states(bp)
     spout = by_child(bp, "spout").dofs[0]
     lo, hi = (-math.pi, math.pi) if spout.type == "continuous" else (spout.lower, spout.upper)
     for a in np.linspace(lo, hi, 8):
@@ -202,7 +195,9 @@ def test_no_contact_and_nothing_below_ground_in_any_state(tap_bp):
 
 @pytest.mark.parametrize("handles", ["single_lever", "two_handles"])
 @pytest.mark.parametrize("pipe", [True, False])
-def test_overrides_drive_the_growth(handles, pipe):
+def test_forced_handles_and_pipe_build_those_parts_and_stay_clear(handles, pipe):
+    """Forced handle styles and a separate pipe give those parts, and the tap stays clear in every state (the
+    generic contract: test_category_contract)."""
     p, bp = make(2, design="deck", handles=handles, has_separate_pipe=pipe, spout_shape="gooseneck", height=0.15)
     assert ("lever" in bp.parts) == (handles == "single_lever")
     assert ("handle_1" in bp.parts) == (handles == "two_handles")
@@ -232,7 +227,7 @@ def test_each_design_is_forced_and_moves(design):
 
 def test_lever_never_leaves_its_cartridge():
     """The lever turns about the cartridge pin through its hub: at full lift the hub is where it was
-    (issue 13: levers used to lift straight off the body, tap 7004-7006)."""
+    (a lever turned about a pin elsewhere lifts straight off the body: tap seeds 7004-7006 did)."""
     for seed in range(6):
         p, bp = make(seed, design="deck", handles="single_lever")
         j = by_child(bp, "lever")

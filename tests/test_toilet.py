@@ -10,11 +10,13 @@ import pytest
 from infmob_usd.api import generate
 from infmob_usd.blueprint import dof_motion
 from infmob_usd.categories import toilet as mod
+from infmob_usd.lift_off import LIFT_OFF
 from infmob_usd.model import build as build_model
 from infmob_usd.physical import gravity_torque
 
 from collide import contacts, overlap
-from zoo import by_child, make_bp, movable, object_limits
+from helpers import labelled_states, maker
+from zoo import by_child, movable, object_limits
 
 SEEDS = range(8)
 VOLUME_TOL = 1e-7  # m^3, as the physics checks
@@ -30,19 +32,7 @@ def has_cistern(p):
     return p["design"] in ("close_coupled", "one_piece")
 
 
-def make(seed, **overrides):
-    return make_bp(mod, "toilet", seed, **overrides)
-
-
-def states(bp):
-    """The joint states the physics checks sample (``Blueprint.poses`` keys; every joint here has one DoF)."""
-    mov = movable(bp)
-    yield "rest", {}
-    for f in (0.5, 1.0):
-        yield f"all@{f:.0%}", {(j.child, 0): j.dofs[0].lower + f * (j.dofs[0].upper - j.dofs[0].lower) for j in mov}
-    for j in mov:
-        for end in ("lower", "upper"):
-            yield f"{j.child}@{end}", {(j.child, 0): getattr(j.dofs[0], end)}
+make = maker("toilet")
 
 
 def welded(bp, a, b):
@@ -153,7 +143,9 @@ def test_lid_and_flush_joints(seed):
     lid = by_child(bp, "tank_lid")
     assert lid.kind == "prismatic" and lid.parent == "tank"
     assert lid.dofs[0].axis == pytest.approx((0, 0, 1))
-    assert (lid.dofs[0].lower, lid.dofs[0].upper) == (0.0, pytest.approx(0.2))
+    # lifted a hand's lift (the core's lift-off rule): clear of its locating lip, not through the air
+    assert (lid.dofs[0].lower, lid.dofs[0].upper) == (0.0, pytest.approx(LIFT_OFF))
+    assert lid.dofs[0].upper > mod.S.LID["lip"] and lid.role == "lift_off"
     if p["flush"] == "button":
         j = by_child(bp, "flush_button")
         assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((-1, 0, 0))
@@ -194,7 +186,7 @@ def test_lever_centre_of_mass_is_on_its_axis():
 def test_no_overlap_at_sampled_states(seed):
     _, bp = make(seed)
     bp = object_limits("toilet", seed, bp)
-    for label, q in states(bp):
+    for label, q in labelled_states(bp):
         bad = contacts(bp, q, VOLUME_TOL, skip=lambda a, b: welded(bp, a, b))
         assert not bad, f"(part, part, m^3) overlapping at {label}: {bad}"
 
@@ -244,7 +236,7 @@ def test_moving_parts_keep_a_gap_at_rest(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_nothing_below_ground(seed):
     _, bp = make(seed)
-    for label, q in states(bp):
+    for label, q in labelled_states(bp):
         pose = bp.poses(q)
         for name, part in bp.parts.items():
             pts = np.vstack([pc.vertices for pc in part.pieces])
@@ -262,7 +254,7 @@ def test_each_design_is_forced_moves_and_stays_clear(design):
     assert p["design"] == design and set(REAR[design]) <= set(bp.parts)
     assert len(movable(bp)) == 5 if has_cistern(p) else 4
     bp = object_limits("toilet", seed, bp, design=design, flush="dual")
-    for label, q in states(bp):
+    for label, q in labelled_states(bp):
         bad = contacts(bp, q, VOLUME_TOL, skip=lambda a, b: welded(bp, a, b))
         assert not bad, f"(part, part, m^3) overlapping at {label}: {bad}"
     for j in movable(bp):

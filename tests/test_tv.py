@@ -8,20 +8,19 @@ import manifold3d
 import numpy as np
 import pytest
 
-from infmob_usd.categories import tv
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES
 from infmob_usd.materials.families import split_spec
 
-from zoo import by_child, make_bp, movable
+from helpers import maker, states
+from zoo import by_child, movable
 
 SEEDS = range(8)
 LABELS = {"screen", "stand", "connector", "button", "frame", "arm", "camera"}
 TOL = 1e-7  # m^3, as the validator's contact volume
 
 
-def make(seed: int, **overrides):
-    return make_bp(tv, "tv", seed, **overrides)
+make = maker("tv")
 
 
 @pytest.fixture(scope="module", params=SEEDS)
@@ -30,18 +29,6 @@ def tv_bp(request):
 
 
 # -- kinematics and collision helpers ----------------------------------------------------
-
-
-def states(bp):
-    """rest, all joints at 50 % and 100 %, and each joint alone at its limits (per DoF)."""
-    js = movable(bp)
-    out = [{}]
-    for f in (0.5, 1.0):
-        out.append({(j.child, i): d.lower + f * (d.upper - d.lower) for j in js for i, d in enumerate(j.dofs)})
-    for j in js:
-        for i, d in enumerate(j.dofs):
-            out += [{(j.child, i): d.lower}, {(j.child, i): d.upper}]
-    return out
 
 
 def posed_hulls(bp, pose):
@@ -209,7 +196,9 @@ def test_no_contact_and_nothing_below_ground_in_any_state(tv_bp):
 # -- overrides, growth, determinism ----------------------------------------------------------
 
 
-def test_overrides_drive_the_growth():
+def test_forced_stands_arms_and_buttons_build_those_parts():
+    """Forced stand styles, arm links and buttons give those parts and joints (the generic contract:
+    test_category_contract)."""
     p, bp = make(1, stand_style="wall_mount", arm_links=2, has_buttons=True, button_count=3, button_place="side")
     assert bp.root == "wall_plate" and {"arm_0", "arm_1"} <= set(bp.parts)
     assert sum(part.label == "button" for part in bp.parts.values()) == 3
@@ -323,7 +312,7 @@ def test_a_wall_mounted_tv_hangs_with_its_centre_at_eye_height(width, aspect, bo
 
 @pytest.mark.sim
 def test_a_large_tv_on_a_wall_arm_swings_freely_in_sapien(tmp_path):
-    """Fuzz #2471: a 2.1 m 4:3 screen on a two-link arm stood on the floor and dragged on it (the arm
+    """A 2.1 m 4:3 screen on a two-link arm must hang clear of the floor: standing on it, it dragged (the arm
     stopped at 77-81 % of its swing in SAPIEN); hung, every joint reaches both ends."""
     pytest.importorskip("sapien")
     import infmob_usd
@@ -333,3 +322,39 @@ def test_a_large_tv_on_a_wall_arm_swings_freely_in_sapien(tmp_path):
                               stand_style="wall_mount", arm_links=2, has_buttons=True, button_place="bottom")
     reach = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach"])}["reach"]
     assert reach.ok, reach.detail
+
+
+def _com_margins(obj):
+    """(back, front, needed) of the whole set's centre of mass over its floor contact along x, upright and with
+    each screen tilt at its upper limit; ``needed``: its height x tan(10 degrees)."""
+    from infmob_usd.blueprint import descendants
+
+    links = {link.name: link for link in obj.links}
+    pts = np.vstack([pc.vertices + link.origin for link in obj.links for pc in link.pieces])
+    foot = pts[pts[:, 2] < pts[:, 2].min() + 0.002]
+    lo, hi = foot[:, 0].min(), foot[:, 0].max()
+    mass = sum(link.mass for link in links.values())
+    out = []
+    for j in [None] + [j for j in obj.joints if j.type == "revolute" and abs(j.axis[1]) > 0.9]:
+        com = {n: np.asarray(link.origin) + np.asarray(link.com) for n, link in links.items()}
+        if j is not None:  # turned about the tilt axis by its upper limit (Rodrigues)
+            a, t = np.asarray(j.axis, float), j.upper
+            k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+            r = np.eye(3) + math.sin(t) * k + (1 - math.cos(t)) * k @ k
+            for n in descendants(obj.joints, j.child):
+                com[n] = np.asarray(j.origin) + r @ (com[n] - np.asarray(j.origin))
+        c = sum(links[n].mass * com[n] for n in links) / mass
+        out.append((c[0] - lo, hi - c[0], c[2] * math.tan(math.radians(10))))
+    return out
+
+
+@pytest.mark.parametrize("seed", [1, 3, 4, 7301])
+def test_a_set_on_its_stand_does_not_overturn_tilted_ten_degrees(seed):
+    """IEC 62368-1 8.6.2.2: the centre of mass stays inside the stand's floor contact by its height x tan 10
+    degrees, upright and with the screen tilted back (a 2 m set on feet tipped back before: seed 7301)."""
+    from infmob_usd.api import generate
+
+    obj = generate("tv", seed=seed, texture_size=16)
+    assert obj.params["stand_style"] != "wall_mount"
+    for back, front, needed in _com_margins(obj):
+        assert back >= needed and front >= needed, (back, front, needed)

@@ -12,7 +12,8 @@ from infmob_usd.categories import window as win
 from infmob_usd.categories.parts import windows
 
 from collide import overlap
-from zoo import by_child, make_bp, movable, object_limits
+from helpers import maker, states
+from zoo import by_child, movable, object_limits
 
 SEEDS = range(8)
 LABELS = {"frame", "sash", "shutter", "curtain", "handle", "vent", "lock"}
@@ -20,17 +21,7 @@ VOLUME_TOL = 1e-7  # m^3, as the validator
 EYE = np.eye(4)
 
 
-def make(seed, **overrides):
-    return make_bp(win, "window", seed, **overrides)
-
-
-def states(bp):
-    """The validator's sampled states: rest, all at 50 % and 100 %, each joint alone at its upper limit
-    (``Blueprint.poses`` keys; every joint here has one DoF)."""
-    js = movable(bp)
-    out = [{(j.child, 0): f * j.dofs[0].upper for j in js} for f in (0.5, 1.0)]
-    out += [{(j.child, 0): j.dofs[0].upper} for j in js]
-    return out
+make = maker("window")
 
 
 def bounds(part, skip_handle=False):
@@ -228,7 +219,9 @@ def test_each_design_is_forced_moves_and_stays_clear(style):
         _pairs_clear(bp, q)
 
 
-def test_overrides_drive_the_growth():
+def test_forced_sashes_shutters_and_curtains_build_those_parts():
+    """Forced sash counts and styles, shutters and curtains give those parts and joints; curtains alone limit
+    a casement (the generic contract: test_category_contract)."""
     _, bp = make(3, sash_count=3, style="casement", has_shutters=False, has_curtains=False, has_trickle_vents=False)
     assert sorted(n for n, part in bp.parts.items() if part.label == "sash") == ["sash_0", "sash_1", "sash_2"]
     assert {j.kind for j in movable(bp)} == {"revolute"}

@@ -29,8 +29,9 @@ import hashlib
 import http.server
 import json
 import os
+import posixpath
 import re
-import shutil
+import stat
 import sys
 import time
 import urllib.parse
@@ -49,6 +50,39 @@ class GalleryError(ValueError):
     """Bad input for the gallery: the message names the problem and the fix."""
 
 
+# Bounds on what one object's files may weigh: ours are kilobytes (URDF, metadata) to tens of
+# megabytes (meshes, 4096 px maps); a file far over them is not an object of ours, and reading it
+# would take minutes (expat re-scans a huge token once per 64 kB chunk) and gigabytes.
+MAX_BYTES = {"metadata": 16 << 20, "URDF": 16 << 20, "mesh": 512 << 20, "MTL": 16 << 20, "texture": 256 << 20}
+
+
+def _within(real: str, top: str) -> bool:
+    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
+def inside(folder: Path, name: str, what: str, base: Path | None = None) -> Path:
+    """``base/name`` (``base`` defaults to ``folder``) if it lies inside the object ``folder``, links
+    resolved; a file named by an absolute path, or one that climbs out with ``..`` or through a symbolic
+    link, raises :class:`ValueError` naming it: a downloaded dataset must not make us read the user's files."""
+    if os.path.isabs(name):
+        raise ValueError(f"{what} {name!r} is an absolute path: refused (only files inside the object folder"
+                         f" are read)")
+    path = Path(base if base is not None else folder) / name
+    if not _within(os.path.realpath(path), os.path.realpath(folder)):
+        raise ValueError(f"{what} {name!r} lies outside the object folder (.. or a symbolic link): refused")
+    return path
+
+
+def read_bounded(path: Path, what: str) -> bytes:
+    """The bytes of ``path``, refused with :class:`ValueError` when over ``MAX_BYTES[what]``."""
+    limit = MAX_BYTES[what]
+    size = path.stat().st_size
+    if size > limit:
+        raise ValueError(f"{what} {path.name} is {size / 2**20:.0f} MB, over the {limit >> 20} MB an object's"
+                         f" {what} may have: refused")
+    return path.read_bytes()
+
+
 # --------------------------------------------------------------------------------------------- finding
 
 
@@ -56,13 +90,15 @@ def find_object_folders(root: str | Path) -> list[Path]:
     """Every object folder (one with ``metadata.json``) under ``root``, following symlinks, sorted.
 
     Hidden folders are skipped and an object folder is not searched further. A symlinked copy of
-    an object folder is an object of its own; a symlink back to a folder above it is not entered.
+    an object folder is an object of its own; a symlink back to a folder above it is not entered, nor
+    one to a folder outside ``root`` (nothing outside ``root`` is read or served).
     """
     root = Path(root)
     if (root / "metadata.json").is_file():
         return [root]
     found: list[Path] = []
-    stack = [(str(root), frozenset([os.path.realpath(root)]))]
+    top = os.path.realpath(root)
+    stack = [(str(root), frozenset([top]))]
     while stack:
         path, above = stack.pop()
         try:
@@ -76,22 +112,24 @@ def find_object_folders(root: str | Path) -> list[Path]:
             if e.name.startswith(".") or not e.is_dir():
                 continue
             real = os.path.realpath(e.path)
-            if real not in above:
+            if real not in above and _within(real, top):
                 stack.append((e.path, above | {real}))
     return sorted(found)
 
 
 def _thumbnail_in(folder: Path) -> Path | None:
     """The object's own picture: ``.thumbs/256x256/*.png`` or ``preview.png`` (rest | open)."""
-    thumbs = sorted((folder / ".thumbs" / "256x256").glob("*.png"))
+    real = os.path.realpath(folder)
+    thumbs = [p for p in sorted((folder / ".thumbs" / "256x256").glob("*.png"))
+              if _within(os.path.realpath(p), real)]
     if thumbs:
         return thumbs[0]
     p = folder / "preview.png"
-    return p if p.is_file() else None
+    return p if p.is_file() and _within(os.path.realpath(p), real) else None
 
 
 def _key(folder: Path) -> str:
-    return hashlib.sha1(os.path.realpath(folder).encode()).hexdigest()[:16]
+    return hashlib.sha1(os.fsencode(os.path.realpath(folder))).hexdigest()[:16]
 
 
 # --------------------------------------------------------------------------------------------- one object
@@ -128,7 +166,8 @@ _MTLLIB = re.compile(r"^mtllib\s+(.+?)\s*$", re.M)
 class _Meshes:
     """The OBJ meshes of one object and their MTL files, each read once: ``meshes`` in first-use order
     (``{"obj": text, "mtl": [file keys]}``), ``mtl_files`` by path, their maps named by a hash of the
-    texture bytes (``textures`` gains ``{hash: path}``)."""
+    texture bytes (``textures`` gains ``{hash: path}``). Only files inside the object folder ``base``
+    (:func:`inside`) and within :data:`MAX_BYTES` are read; any other raises :class:`ValueError`."""
 
     def __init__(self, base: Path, textures: dict[str, Path]):
         self.base, self.textures = base, textures
@@ -138,11 +177,11 @@ class _Meshes:
         self.tex_hash: dict[Path, str] = {}
 
     def texture(self, mtl_dir: Path, name: str) -> str | None:
-        path = (mtl_dir / name).resolve()
+        path = inside(self.base, name, "texture", mtl_dir).resolve()
         if path not in self.tex_hash:
             if not path.is_file():
                 return None
-            h = hashlib.sha256(path.read_bytes()).hexdigest()[:24]
+            h = hashlib.sha256(read_bounded(path, "texture")).hexdigest()[:24]
             self.tex_hash[path] = h
             self.textures.setdefault(h, path)
         return self.tex_hash[path]
@@ -152,14 +191,14 @@ class _Meshes:
             filename = filename[len("package://"):]
         if filename in self.mesh_index:
             return self.mesh_index[filename]
-        path = self.base / filename
-        text = path.read_text()
+        path = inside(self.base, filename, "mesh")
+        text = read_bounded(path, "mesh").decode()
         libs = []
         for lib in _MTLLIB.findall(text):
             key = os.path.normpath(os.path.join(os.path.dirname(filename), lib))
             if key not in self.mtl_files:
-                mpath = self.base / key
-                mats = _parse_mtl(mpath.read_text()) if mpath.is_file() else {}
+                mpath = inside(self.base, key, "MTL")
+                mats = _parse_mtl(read_bounded(mpath, "MTL").decode()) if mpath.is_file() else {}
                 for m in mats.values():
                     for k in ("map_Kd", "map_Pr", "norm", "map_Bump", "bump", "map_Pm"):
                         if k in m:
@@ -200,17 +239,18 @@ def object_data(folder: Path, textures: dict[str, Path]) -> dict:
 
     Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role
     and ``requires_open`` from ``metadata.json``. Texture files are named by a hash of their bytes;
-    ``textures`` gains ``{hash: path}`` for each one.
+    ``textures`` gains ``{hash: path}`` for each one. Every file is read only if it lies inside
+    ``folder`` (:func:`inside`) and within :data:`MAX_BYTES`, else :class:`ValueError` names it.
     """
-    meta = json.loads((folder / "metadata.json").read_text())
+    meta = json.loads(read_bounded(inside(folder, "metadata.json", "metadata"), "metadata"))
     urdfs = sorted(folder.glob("*.urdf"))
     urdf = folder / f"{meta.get('name', folder.name)}.urdf"
     if not urdf.is_file():
         if not urdfs:
             raise FileNotFoundError(f"no .urdf file in {folder}")
         urdf = urdfs[0]
-    root = ET.parse(urdf).getroot()
-    table = _Meshes(urdf.parent, textures)
+    root = ET.fromstring(read_bounded(inside(folder, urdf.name, "URDF"), "URDF"))
+    table = _Meshes(folder, textures)
     links = []
     for link in root.findall("link"):
         visuals = []
@@ -316,8 +356,11 @@ class _Thumbnailer:
             self.failed += 1
             self.log(f"gallery: thumbnail of {folder} failed: {exc}")
             return False
-        out_png.parent.mkdir(parents=True, exist_ok=True)
-        cv2.imwrite(str(out_png), rgb[..., ::-1])
+        ok, png = cv2.imencode(".png", rgb[..., ::-1])
+        if not ok:
+            self.failed += 1
+            return False
+        _write(out_png, png.tobytes())
         self.seconds.append(time.perf_counter() - t0)
         return True
 
@@ -325,14 +368,44 @@ class _Thumbnailer:
 # --------------------------------------------------------------------------------------------- the site
 
 
+def _write(path: Path, data: bytes) -> None:
+    """Write ``path`` through a temporary file beside it: never half-written (a kill, a full disk), and
+    a symbolic link at ``path`` is replaced, never written through."""
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_NOFOLLOW | os.O_CLOEXEC, 0o644)
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            if stat.S_ISREG(os.lstat(tmp).st_mode):
+                os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
 def _write_js(path: Path, call: str, *args) -> None:
     body = ",".join(json.dumps(a, separators=(",", ":")).replace("</", "<\\/") for a in args)
-    path.write_text(f"{call}({body});\n")
+    _write(path, f"{call}({body});\n".encode())
+
+
+def _real_folder(path: Path, what: str) -> Path:
+    """Create ``path`` (a folder of the site) unless it is a symbolic link or a file: writes never leave
+    the site through a link placed in it."""
+    if os.path.islink(path):
+        raise GalleryError(f"{what} {path} is a symbolic link; the gallery never writes through a link: remove it"
+                           f" or give another --out")
+    if path.exists() and not path.is_dir():
+        raise GalleryError(f"{what} {path} is a file: give a folder for the site or an .html file")
+    path.mkdir(parents=True, exist_ok=True)
+    return path
 
 
 def _url(relpath: str) -> str:
     """A relative file path as a relative URL (``#``, ``?``, spaces ... escaped)."""
-    return urllib.parse.quote(relpath.replace(os.sep, "/"))
+    return urllib.parse.quote(relpath.replace(os.sep, "/"), errors="surrogateescape")  # a non-UTF-8 name: its bytes
 
 
 def site_paths(out: str | Path | None, root: Path) -> tuple[Path, Path]:
@@ -354,6 +427,10 @@ def _site_for(out, root: Path) -> tuple[Path, Path]:
         raise GalleryError(f"--out {index_html} is a folder: give a folder for the site or a new .html file")
     if site.exists() and not site.is_dir():
         raise GalleryError(f"--out {site} is a file: give a folder for the site or an .html file")
+    for p in (site, index_html):
+        if os.path.islink(p):
+            raise GalleryError(f"--out {p} is a symbolic link; the gallery never writes through a link:"
+                               f" give the real folder or another --out")
     return index_html, site
 
 
@@ -361,7 +438,7 @@ def _make_writable(site: Path) -> None:
     """Create the site folder and prove it writable before any work, else a :class:`GalleryError`."""
     try:
         site.mkdir(parents=True, exist_ok=True)
-        probe = site / ".write_probe"
+        probe = site / f".write_probe.{os.getpid()}"
         probe.write_text("")
         probe.unlink()
     except OSError as exc:
@@ -385,7 +462,7 @@ def _write_textures(textures: dict[str, Path], texdir: Path) -> None:
     for h, path in textures.items():
         dest = texdir / f"{h}.js"
         if not dest.is_file():
-            uri = "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
+            uri = "data:image/png;base64," + base64.b64encode(read_bounded(path, "texture")).decode()
             _write_js(dest, "INFMOB_GALLERY.texture", h, uri)
 
 
@@ -408,20 +485,22 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
     t_find = time.perf_counter() - t0
     data, objdir, texdir, thumbdir, assets = (site / "data", site / "data" / "obj", site / "data" / "tex",
                                               site / "thumbs", site / "assets")
-    for d in (assets, objdir, texdir):
-        d.mkdir(parents=True, exist_ok=True)
+    for d in (assets, data, objdir, texdir, thumbdir):
+        _real_folder(d, "site folder")
     for name in ASSET_FILES:
-        shutil.copyfile(ASSETS / name, assets / name)
+        _write(assets / name, (ASSETS / name).read_bytes())
     base = index_html.parent
     rel = partial(os.path.relpath, start=base)
     thumbnailer = _Thumbnailer(render, log)
     textures: dict[str, Path] = {}
-    rows, metas, done, errors = [], [], {}, []
+    rows, metas, done, errors, shown = [], [], {}, [], []
     t_read = t_thumb = 0.0
     for folder in folders:
         key = _key(folder)
         try:
-            meta = json.loads((folder / "metadata.json").read_text())
+            meta = json.loads(read_bounded(inside(folder, "metadata.json", "metadata"), "metadata"))
+            if not isinstance(meta, dict):
+                raise ValueError("not a JSON object")
         except (OSError, ValueError) as exc:
             errors.append(f"{folder}: unreadable metadata.json ({exc})")
             continue
@@ -443,6 +522,7 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
         row.update(key=key, path=rel(folder), thumb=thumb, half=half)
         rows.append(row)
         metas.append(meta)
+        shown.append(folder)
     if not rows:
         raise GalleryError(f"no readable object folders under {root}: " + "; ".join(errors[:3]))
     t3 = time.perf_counter()
@@ -459,9 +539,10 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
     _write_js(data / "stats.js", "INFMOB_GALLERY.stats", stats)
     html = (ASSETS / "index.html").read_text().replace("{{PREFIX}}", prefix)
     index_html.parent.mkdir(parents=True, exist_ok=True)
-    index_html.write_text(html)
+    _write(index_html, html.encode())
     total = time.perf_counter() - t0
-    return {"index": index_html, "site": site, "objects": len(rows), "distinct": len(done), "errors": errors,
+    return {"index": index_html, "site": site, "folders": shown, "objects": len(rows), "distinct": len(done),
+            "errors": errors,
             "textures": len(textures), "rendered": len(thumbnailer.seconds), "render_seconds": thumbnailer.seconds,
             "seconds": {"find": t_find, "read": t_read, "thumbnails": t_thumb, "textures": t_tex,
                         "stats": t_stats, "total": total}}
@@ -470,20 +551,35 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
 # --------------------------------------------------------------------------------------------- serving
 
 
-def serve(index_html: Path, roots: list[Path], port: int = 8000, log=print) -> None:
-    """Serve the site with Python's http.server on 127.0.0.1 only, until Ctrl-C.
+LOOPBACK_NAMES = ("127.0.0.1", "localhost")
 
-    The served folder is the common parent of the site and ``roots`` (thumbnails are linked from
-    the object folders).
+
+def make_server(index_html: Path, site: Path, folders: list[Path], port: int = 8000):
+    """``(server, url)``: an HTTP server on 127.0.0.1 (this machine only) serving exactly the page, the
+    site folder and the object ``folders`` it shows (thumbnails are linked from them), nothing else.
+
+    URLs are paths below the common parent of those, but a request is answered only when the file
+    it names, every link resolved, lies inside one of them: no directory listings, no link out of
+    an object folder, and only ``Host: 127.0.0.1|localhost[:PORT]`` (a DNS-rebinding page elsewhere
+    names its own host and is refused).
     """
-    top = Path(os.path.commonpath([os.path.abspath(index_html.parent)] + [os.path.abspath(r) for r in roots]))
-    handler = partial(_QuietHandler, directory=str(top))
+    index_html, site = Path(os.path.abspath(index_html)), Path(os.path.abspath(site))
+    top = Path(os.path.commonpath([str(index_html.parent), str(site)] + [os.path.abspath(f) for f in folders]))
+    handler = partial(_GalleryHandler, directory=str(top))
     try:
-        httpd = http.server.ThreadingHTTPServer(("127.0.0.1", port), handler)
+        httpd = _GalleryServer(("127.0.0.1", port), handler)
     except OSError as exc:
         raise GalleryError(f"cannot listen on 127.0.0.1:{port} ({exc.strerror}): pick another --port") from None
-    url_path = os.path.relpath(os.path.abspath(index_html), top).replace(os.sep, "/")
-    log(f"serving http://127.0.0.1:{httpd.server_address[1]}/{url_path}  (Ctrl-C stops)", flush=True)
+    httpd.files = {os.path.realpath(index_html)}
+    httpd.trees = {os.path.realpath(site)} | {os.path.realpath(f) for f in folders}
+    url_path = _url(os.path.relpath(index_html, top))
+    return httpd, f"http://127.0.0.1:{httpd.server_address[1]}/{url_path}"
+
+
+def serve(index_html: Path, site: Path, folders: list[Path], port: int = 8000, log=print) -> None:
+    """Serve the site (:func:`make_server`) until Ctrl-C or SIGTERM."""
+    httpd, url = make_server(index_html, site, folders, port)
+    log(f"serving {url}  (127.0.0.1 only: this machine; Ctrl-C stops)", flush=True)
     try:
         httpd.serve_forever()
     except KeyboardInterrupt:
@@ -492,9 +588,55 @@ def serve(index_html: Path, roots: list[Path], port: int = 8000, log=print) -> N
         httpd.server_close()
 
 
-class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+class _GalleryServer(http.server.ThreadingHTTPServer):
+    daemon_threads = True
+    files: set[str] = set()
+    trees: set[str] = set()
+
+    def allows(self, real: str) -> bool:
+        if real in self.files:
+            return True
+        p = real
+        while True:  # the real path or a folder above it is a tree we serve
+            if p in self.trees:
+                return True
+            parent = os.path.dirname(p)
+            if parent == p:
+                return False
+            p = parent
+
+
+class _GalleryHandler(http.server.SimpleHTTPRequestHandler):
     def log_message(self, fmt, *args):  # one line per request is noise for a gallery
         pass
+
+    def _host_ok(self) -> bool:
+        host = (self.headers.get("Host") or "").strip().lower()
+        name, _, port = host.rpartition(":") if host.count(":") == 1 else (host, "", "")
+        return name in LOOPBACK_NAMES and port in ("", str(self.server.server_address[1]))
+
+    def translate_path(self, path):
+        """As http.server's, but %XX escapes decode to the file name's own bytes (a non-UTF-8 name too)."""
+        path = path.split("?", 1)[0].split("#", 1)[0]
+        trailing = path.rstrip().endswith("/")
+        words = [w for w in posixpath.normpath(urllib.parse.unquote(path, errors="surrogateescape")).split("/")
+                 if w and w not in (os.curdir, os.pardir)]
+        return os.path.join(self.directory, *words) + ("/" if trailing else "")
+
+    def send_head(self):
+        if not self._host_ok():
+            self.send_error(421, "Misdirected Request: this gallery answers only to 127.0.0.1 and localhost")
+            return None
+        path = self.translate_path(self.path)
+        target = os.path.join(path, "index.html") if os.path.isdir(path) else path
+        if not os.path.isfile(target) or not self.server.allows(os.path.realpath(target)):
+            self.send_error(404, "File not found")
+            return None
+        return super().send_head()
+
+    def list_directory(self, path):  # never: a folder without index.html is not part of the site
+        self.send_error(404, "File not found")
+        return None
 
 
 # --------------------------------------------------------------------------------------------- command line
@@ -506,7 +648,8 @@ def add_arguments(parser) -> None:
                         help="the site: a folder (index.html inside) or an .html file (its data in <stem>_files/"
                              " beside it); default DIR/gallery")
     parser.add_argument("--serve", action="store_true",
-                        help="then serve it with Python's http.server on 127.0.0.1 (Ctrl-C stops)")
+                        help="then serve it over HTTP on 127.0.0.1 only (this machine; no other address is bound):"
+                             " the site and the object folders it shows, nothing else (Ctrl-C stops)")
     parser.add_argument("--port", type=int, default=8000, help="with --serve: the port; default 8000 (0: any free)")
     parser.add_argument("--no-render", action="store_true",
                         help="do not render missing thumbnails (cards show a placeholder instead)")
@@ -540,7 +683,7 @@ def main(args) -> int:
     print(line + ")")
     if args.serve:
         try:
-            serve(Path(res["index"]), [Path(args.folder)], args.port)
+            serve(Path(res["index"]), Path(res["site"]), res["folders"], args.port)
         except GalleryError as exc:
             print(f"infmob: error: {exc}", file=sys.stderr)
             return 2

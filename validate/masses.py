@@ -8,9 +8,9 @@ category that has no row of its own for that label.
 :func:`check_mass` reads a written object: link masses from the URDF's ``<inertial>`` (what a
 simulator uses; from ``metadata.json`` where the folder has no URDF), labels, dummy flags and joints
 from ``metadata.json``. A moving part is a non-dummy link that is the child of a movable joint. The
-object fails when its total mass or a moving part's mass is outside its range, or when a moving
-part's label has no row (add one, with its source). A category without a whole-object row (one
-defined outside this package, e.g. by a test) passes as ``skipped``.
+object fails when its total mass or a moving part's mass is outside its range, or when the category
+has no whole-object row or a moving part's label has no row (add one, with its source): a new
+category is held to real products from its first validation, not waved through.
 """
 
 from __future__ import annotations
@@ -93,10 +93,10 @@ def check_mass(folder: Path, table: dict | None = None) -> CheckResult:
     category, total, moving = object_masses(folder)
     problems = []
     whole = range_for(category, WHOLE, table)
-    if whole is None:  # a category from outside the package (a test's, a user's): nothing to hold it to
-        return CheckResult("mass", True, f"skipped: no range for category {category!r} in {TABLE.name}"
-                                         f" (total {total:.3g} kg)")
-    if not whole.holds(total):
+    if whole is None:
+        problems.append(f"no range for category {category!r} in {TABLE.name} (total {total:.3g} kg): add a row"
+                        f" {category},*,MIN_KG,MAX_KG,SOURCE")
+    elif not whole.holds(total):
         problems.append(f"total {total:.3g} kg outside {whole.lo:g}-{whole.hi:g} kg")
     heaviest: dict[str, float] = {}
     for name, label, kg in moving:
@@ -110,4 +110,5 @@ def check_mass(folder: Path, table: dict | None = None) -> CheckResult:
         more = f" (+{len(problems) - 4} more)" if len(problems) > 4 else ""
         return CheckResult("mass", False, "; ".join(problems[:4]) + more)
     parts = ", ".join(f"{lab} {kg:.3g}" for lab, kg in sorted(heaviest.items()))
-    return CheckResult("mass", True, f"total {total:.3g} kg" + (f"; heaviest moving parts (kg): {parts}" if parts else ""))
+    heavy = f"; heaviest moving parts (kg): {parts}" if parts else ""
+    return CheckResult("mass", True, f"total {total:.3g} kg" + heavy)

@@ -52,6 +52,9 @@ SAPIEN pitfalls handled here
   parts (small inertia) and behind other joints: a 0.24 kg part on the second hinge of a
   flip_revolute chain, 0.07 N m of gravity torque, sags at the damping-limited rate whatever
   the coefficient (even 50 only slows it by ~40 %). MuJoCo's ``frictionloss`` would hold both.
+* A URDF ``<mimic>`` between two joints of one parent is built with its multiplier inverted by
+  SAPIEN 3.0.3's loader; :func:`load_sapien` builds mimics itself (:func:`_build_mimics`). Return
+  springs are not in a URDF: :func:`apply_springs` sets them from ``metadata.json``.
 * A joint axis of norm < 1e-3 silently becomes ``1 0 0``; a zero or missing mass is silently
   replaced by the mass of the collision shapes at density 1000; a missing collision mesh is
   logged and skipped. The load check compares against metadata to catch all three.
@@ -303,8 +306,53 @@ def load_sapien(urdf: str | Path, *, ground: bool = True, timestep: float = 1 / 
             f"{urdf.name}: {len(articulation_builders)} articulations and {len(actor_builders)} "
             "free bodies (want one articulation)"
         )
-    articulation = articulation_builders[0].build(fix_root_link=True)
+    builder = articulation_builders[0]
+    articulation = builder.build(fix_root_link=True, build_mimic_joints=False)
+    _build_mimics(articulation, builder.mimic_joint_records)
     return scene, articulation
+
+
+def _build_mimics(articulation, records) -> None:
+    """URDF ``<mimic>`` joints as PhysX fixed tendons, ``q = multiplier * q_leader + offset``. SAPIEN
+    3.0.3's builder does this too, but for two joints of one parent it writes the tendon with the
+    multiplier inverted (``q_leader = multiplier * q``: measured, a lid coupled at 3x its pedal turned
+    a third of the pedal's angle); its case of a joint following its parent's joint is right, and any
+    other coupling it drops without a word (raised here)."""
+    for rec in records:
+        joint = articulation.find_joint_by_name(rec.joint)
+        lead = articulation.find_joint_by_name(rec.mimic)
+        m, offset = float(rec.multiplier), float(rec.offset)
+        if joint.parent_link == lead.child_link and joint.parent_link.parent is not None:
+            links = [joint.parent_link.parent, joint.parent_link, joint.child_link]
+            coef = [0.0, -m, 1.0]
+        elif joint.parent_link == lead.parent_link:
+            links = [joint.parent_link, joint.child_link, lead.child_link]
+            coef = [0.0, 1.0, -m]
+        else:
+            raise RuntimeError(f"{rec.joint} mimics {rec.mimic}: PhysX tendons couple a joint to its parent's"
+                               " or to a sibling's only")
+        # the tendon's coefficients, and their reciprocals (PhysX's gearing of each link)
+        articulation.create_fixed_tendon(links, coef, [0.0 if c == 0 else 1.0 / c for c in coef],
+                                         rest_length=offset, stiffness=1e5)
+
+
+def apply_springs(articulation, meta: dict) -> int:
+    """Set every return spring of ``metadata.json`` (``joints[].spring``; a URDF has no element for one)
+    as its joint's drive, the way a user's loader should: stiffness and the joint's damping, target the
+    spring's zero (``reference``, beyond the rest stop). Returns how many were set."""
+    springs = {j["name"]: (j["spring"], j["damping"]) for j in meta["joints"] if "spring" in j}
+    n = 0
+    for joint in articulation.get_active_joints():
+        if joint.name in springs:
+            spring, damping = springs[joint.name]
+            joint.set_drive_property(float(spring["stiffness"]), float(damping), mode="force")
+            joint.set_drive_target(float(spring["reference"]))
+            # PhysX's joint friction is a coefficient of the wrench the joint carries (see above): on a
+            # lever holding its own weight SAPIEN's default 0.05 beats a spring sized to its mass; the
+            # file's friction is below the spring's preload by design, so none here
+            joint.set_friction(0.0)
+            n += 1
+    return n
 
 
 def load_maniskill(urdf: str | Path, *, name: str = "object"):

@@ -211,7 +211,8 @@ def blueprint_figures(bp) -> tuple[Tree, int, int, Counter]:
     from the object's files, before the core builds and writes it. A declared joint is one URDF
     joint per degree of freedom (a fixed one: one), its revolute and continuous ones turning."""
     into = {j.child: j for j in bp.joints}
-    nodes = {name: Tree(f"{into[name].kind if name in into else 'root'}:{part.label}") for name, part in bp.parts.items()}
+    nodes = {name: Tree(f"{into[name].kind if name in into else 'root'}:{part.label}")
+             for name, part in bp.parts.items()}
     for j in bp.joints:
         nodes[j.parent].children.append(nodes[j.child])
     movable = [j for j in bp.joints if j.kind != "fixed"]

@@ -107,26 +107,58 @@ def joint_frames(stage: Usd.Stage) -> CheckResult:
     return CheckResult("joint_frames", not bad, "; ".join(bad[:5]) or f"{n} joints agree (worst {worst:.1e} m)")
 
 
+def _outside(folder: Path, base: Path, ref: str) -> bool:
+    """Whether ``base/ref`` lies outside ``folder`` once ``..`` and symbolic links are resolved."""
+    return not (base / ref).resolve().is_relative_to(folder.resolve())
+
+
+def _non_finite_vertices(obj: Path) -> int:
+    """How many ``v`` coordinates of an OBJ file are NaN or infinite (``ValueError``: not numbers)."""
+    lines = re.findall(rb"(?m)^v[ \t]+([^\r\n#]*)", obj.read_bytes())
+    if not lines:
+        return 0
+    values = np.array(b" ".join(lines).decode("ascii", "replace").split(), dtype=float)
+    return int((~np.isfinite(values)).sum())
+
+
 def files_exist(folder: Path, usd_path: Path, urdf: Path | None = None, urdf_required: bool = True) -> CheckResult:
-    """Every layer, texture and mesh any file refers to exists, by a relative path."""
+    """Every layer, texture and mesh any file refers to exists inside the folder, by a relative path
+    (no absolute path, no ``..`` or symbolic link out of it), and every OBJ vertex is finite."""
     layers, assets, unresolved = UsdUtils.ComputeAllDependencies(str(usd_path))
     missing = [str(p) for p in unresolved]
     absolute = [a for a in assets if not Path(a).resolve().is_relative_to(folder.resolve())]
+    outside: list[str] = []
     urdf = urdf or object_files(folder)[1]
     refs = re.findall(r'filename="([^"]+)"', urdf.read_text()) if urdf.is_file() else []
     if not urdf.is_file() and urdf_required:
         missing.append(urdf.name)
+    objs = []
     for ref in refs:
         if Path(ref).is_absolute():
             absolute.append(ref)
+        elif _outside(folder, folder, ref):
+            outside.append(ref)
         elif not (folder / ref).is_file():
             missing.append(ref)
+        elif ref.lower().endswith(".obj"):
+            objs.append(folder / ref)
     for mtl in (folder / "meshes").glob("*.mtl"):
+        if _outside(folder, mtl.parent, mtl.name):
+            outside.append(f"meshes/{mtl.name}")
+            continue
         for line in mtl.read_text().splitlines():
             parts = line.split()
-            if parts and parts[0].startswith(("map_", "norm")) and not (mtl.parent / parts[-1]).is_file():
-                missing.append(f"{mtl.name}: {parts[-1]}")
-    problems = [f"missing {m}" for m in missing[:5]] + [f"absolute path {a}" for a in absolute[:5]]
+            if parts and parts[0].startswith(("map_", "norm")):
+                if Path(parts[-1]).is_absolute():
+                    absolute.append(f"{mtl.name}: {parts[-1]}")
+                elif _outside(folder, mtl.parent, parts[-1]):
+                    outside.append(f"{mtl.name}: {parts[-1]}")
+                elif not (mtl.parent / parts[-1]).is_file():
+                    missing.append(f"{mtl.name}: {parts[-1]}")
+    nan = [f"{p.relative_to(folder)} ({n})" for p in dict.fromkeys(objs) if (n := _non_finite_vertices(p))]
+    problems = ([f"missing {m}" for m in missing[:5]] + [f"absolute path {a}" for a in absolute[:5]]
+                + [f"outside the folder (.. or a symbolic link): {o}" for o in outside[:5]]
+                + [f"NaN or infinite vertex coordinates in {x}" for x in nan[:5]])
     return CheckResult("files", not problems, "; ".join(problems) or
                        f"{len(layers)} layers, {len(assets)} USD assets, {len(refs)} URDF meshes present")
 
@@ -163,19 +195,40 @@ def _collisions_agree(root: Usd.Prim, folder: Path) -> list[str]:
     return problems
 
 
+def _png_size(data: bytes) -> tuple[int, int] | None:
+    """``(width, height)`` from a PNG's IHDR chunk, without decoding it; ``None`` if it is no PNG."""
+    if data[:8] != b"\x89PNG\r\n\x1a\n" or data[12:16] != b"IHDR" or len(data) < 24:
+        return None
+    return int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+
+
 def textures_decode(folder: Path) -> CheckResult:
-    """Every PNG under ``textures/`` decodes to a square image (a flipped byte passes ``files``)."""
+    """Every PNG under ``textures/`` decodes to a square image (a flipped byte passes ``files``) of the
+    ``texture_size`` the metadata records (an 8192 px map slipped into a 16 px object is refused before
+    it is decoded)."""
     import cv2
 
+    try:
+        want = load_metadata(folder).get("texture_size")
+    except (OSError, ValueError, AttributeError):
+        want = None
+    want = want if isinstance(want, int) and not isinstance(want, bool) else None
     paths = sorted((folder / "textures").glob("*.png"))
-    bad = []
+    bad, sized = [], []
     for path in paths:
-        img = cv2.imdecode(np.frombuffer(path.read_bytes(), np.uint8), cv2.IMREAD_UNCHANGED)
+        data = path.read_bytes()
+        size = _png_size(data)
+        if want is not None and size is not None and size != (want, want):
+            sized.append(f"{path.name} {size[0]}x{size[1]}")
+            continue
+        img = cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_UNCHANGED)
         if img is None or img.ndim < 2 or img.shape[0] != img.shape[1] or img.shape[0] < 1:
             bad.append(path.name)
-    return CheckResult("textures", bool(paths) and not bad,
-                       f"{len(bad)} of {len(paths)} texture PNGs do not decode: {', '.join(bad[:5])}" if bad else
-                       f"{len(paths)} texture PNGs decode" if paths else "no texture PNGs in textures/")
+    problems = ([f"{len(bad)} of {len(paths)} texture PNGs do not decode: {', '.join(bad[:5])}"] if bad else []) + (
+        [f"{len(sized)} texture PNGs are not the {want} px texture_size of metadata.json: {', '.join(sized[:5])}"]
+        if sized else [])
+    return CheckResult("textures", bool(paths) and not problems, "; ".join(problems) or
+                       (f"{len(paths)} texture PNGs decode" if paths else "no texture PNGs in textures/"))
 
 
 def usd_urdf_agree(stage: Usd.Stage, folder: Path, meta: dict, urdf_path: Path | None = None) -> CheckResult:
@@ -250,6 +303,11 @@ def check_usd(folder: Path) -> list[CheckResult]:
     except (OSError, ValueError) as e:
         return [CheckResult("metadata", False, f"metadata.json unreadable: {e}")]
     usd_path, urdf_path = object_files(folder, meta)
+    try:
+        str(usd_path.resolve()).encode("utf-8")
+    except UnicodeEncodeError:
+        return [CheckResult("usd_open", False, "the folder's path is not valid UTF-8 and OpenUSD opens only UTF-8"
+                            " paths: rename the folder")]
     if not usd_path.is_file():
         return [CheckResult("usd_open", False, f"{usd_path.name} is missing")]
     try:

@@ -17,6 +17,7 @@ from infmob_usd.frames import Frame, polar
 from infmob_usd.grammar import Layout
 from infmob_usd.materials import FAMILIES
 
+STEEL = 7850.0  # kg/m^3: what a painted casing, door or drawer of sheet really is (see Category.substrates)
 LINER = 0.002  # cavity liner wall
 BEZEL = 0.006  # front bezel thickness
 SKIN = 0.003  # outer skin of a door or fascia; a dark inner frame behind it
@@ -26,6 +27,43 @@ INNER_KG_M2 = 7.0  # kg/m2 of the inner frame behind a door's or fascia's skin: 
 # (validate/mass_ranges.csv microwave,door)
 CLEAR = 0.0025  # clearance of buttons and dial stems in their panel holes
 BEHIND = 0.008  # buttons and stems reach this far behind the fascia's face
+
+
+def size(p, design: str, rules) -> tuple[float, float, float]:
+    """(width, depth, height) of an appliance of ``design``: the parameters' ``width``, ``depth`` and
+    ``height``, reshaped by the family's rule for that design where it has one (``rules``: design ->
+    ``f(W, D, H)``, e.g. :data:`~.microwaves.SIZES`: an over-the-range microwave is 30 in wide)."""
+    W, D, H = p["width"], p["depth"], p["height"]
+    rule = rules.get(design)
+    return rule(W, D, H) if rule else (W, D, H)
+
+
+def drop_hinge(box) -> Frame:
+    """A drop-down door's hinge (an oven's, a dishwasher's): on the front face of its ``box`` (x0, x1, y0,
+    y1, z0, z1) at the bottom edge, about +Y: the top falls forward (+X)."""
+    _, x1, _, _, z0, _ = box
+    return Frame.at((x1, 0.0, z0), z=(0, 1, 0))
+
+
+def rack_slide(xs, z: float, fraction: float, y: float = 0.0) -> tuple[Frame, float]:
+    """A rack's slide out of a cavity along +X from its front (``xs``: back, front) at height ``z`` (and
+    ``y``), and its travel: ``fraction`` of its depth."""
+    return Frame.at((xs[1], y, z), z=(1, 0, 0)), fraction * (xs[1] - xs[0])
+
+
+def side_hinge(box, left: bool) -> Frame:
+    """A side-hinged door's hinge: on the front face of its ``box`` (x0, x1, y0, y1, z0, z1) at the left
+    (or right) bottom corner, about -Z (+Z): the free edge swings out (+X)."""
+    _, x1, y0, y1, z0, _ = box
+    return Frame.at((x1, y0 if left else y1, z0), z=(0, 0, -1 if left else 1))
+
+
+QUARTER_TURN = math.pi / 2  # a fold-down tine row or cup shelf: upright to flat
+
+
+def fold_line(y: float, z: float, sign: int = 1) -> Frame:
+    """The hinge line of a fold-down row in a rack: along ``sign`` X through ``(y, z)``."""
+    return Frame.at((0.0, y, z), z=(sign, 0, 0))
 
 
 def inner_sheet(family: str) -> float:
@@ -174,14 +212,27 @@ def dial(x_face: float, y: float, z: float, r: float, stem: float, style: str) -
     return pieces
 
 
+@dataclass(frozen=True)
+class Control:
+    """A moving control a panel layout made: its part ``name``, its ``pieces``, the frame it moves on
+    (a button's press frame, z into the panel; a dial's axis) and a button's ``travel``; ``release``
+    marks a door-release button (grown by its own grammar node)."""
+
+    name: str
+    pieces: tuple
+    at: Frame
+    travel: float = 0.0
+    release: bool = False
+
+
 @dataclass
 class Panel:
     """A control panel laid out top-down: what it shows, its holes, and what moves in them."""
 
     holes: list = field(default_factory=list)  # (y0, z0, y1, z1)
     decor: list = field(default_factory=list)  # pieces fixed on the fascia
-    buttons: list = field(default_factory=list)  # (name, piece, press frame, travel)
-    dials: list = field(default_factory=list)  # (name, pieces, axis frame)
+    buttons: list[Control] = field(default_factory=list)
+    dials: list[Control] = field(default_factory=list)
 
 
 def hole_around(y: float, z: float, half) -> tuple[float, float, float, float]:
@@ -603,14 +654,15 @@ def panel_housing(xs, ys, zs, holes, wall: float = 0.004) -> list[g.Piece]:
 
 class PanelNodes(Layout):
     """The push-button nodes of a control panel, shared by the appliances: a ``buttons`` node grows each
-    ``button`` child with one made ``(name, piece, press frame, travel, ...)``; the button slides into the
-    ``control_panel`` part along the frame's z."""
+    ``button`` child with one made :class:`Control`; the button slides along its frame's z into
+    ``parent`` (default :attr:`panel_part`)."""
 
-    def buttons(self, node, made):
+    panel_part = "control_panel"
+
+    def buttons(self, node, made, parent: str | None = None):
         for kid, m in zip(node.of("button"), made, strict=True):
-            self.grow(kid, made=m)
+            self.grow(kid, made=m, parent=parent)
 
-    def button(self, node, made):
-        name, piece, at, travel = made[:4]
-        self.add(name, "button", [piece])
-        self.slide("control_panel", name, at, upper=travel, role="button")
+    def button(self, node, made: Control, parent: str | None = None):
+        self.add(made.name, "button", made.pieces)
+        self.slide(parent or self.panel_part, made.name, made.at, upper=made.travel, role="button")

@@ -74,6 +74,16 @@ MICROWAVE = {
                     "keys_gap": 0.01, "keys_margin": 0.02, "knob_share": 0.4, "membrane": 0.12, "rect_half": 0.9},
 }
 
+# The microwave's parameter ranges (min, max): the counter-top sizes above; casings modelled 3-6 mm (massed as
+# sheet); doors 30-45 mm thick; dials 32-56 mm across, push keys 12-20 mm tall, rubber feet 6-15 mm (the
+# spec sheets and owner's manuals named above and with MICROWAVE_KEYS); the rest are ratios of the body.
+MICROWAVE_RANGES = {
+    "width": (0.44, 0.62), "depth": (0.32, 0.46), "height": (0.25, 0.36), "panel_fraction": (0.2, 0.4),
+    "wall": (0.003, 0.006), "door_thickness": (0.03, 0.045), "window_margin": (0.025, 0.055),
+    "plate_fraction": (0.8, 0.95), "rack_height": (0.03, 0.09), "button_height": (0.012, 0.02),
+    "knob_radius": (0.016, 0.028), "handle_length": (0.45, 0.8), "feet_height": (0.006, 0.015),
+}
+
 # A microwave's keypad column (Panasonic NN-SN686S, GE JES1657SRSS, Toshiba ML-EM34P owner's manuals:
 # 3-6 rows of three keys; GE JES1072, Panasonic NN-ST66: two wide keys at the bottom): items top-down
 # with 20 mm free above and below, 6-14 mm between them (at least 8 mm to fit), shrunk together by 5 %
@@ -168,6 +178,16 @@ DISHWASHER = {
                 "front_gap": 0.012, "min_lift": 0.01},
 }
 
+# The dishwasher's parameter ranges (min, max): built-in and compact models 0.44-0.66 m wide, 0.52-0.66 m
+# deep, 0.76-0.92 m tall (the spec sheets named with DISHWASHER above); the rest are parts of the body, wire
+# pitches and travels the layout checks.
+DISHWASHER_RANGES = {
+    "width": (0.44, 0.66), "depth": (0.52, 0.66), "height": (0.76, 0.92), "wall": (0.018, 0.03),
+    "door_thickness": (0.045, 0.07), "kick_height": (0.08, 0.14), "feet_height": (0.01, 0.025),
+    "rack_travel": (0.6, 0.8), "wire_pitch": (0.045, 0.07), "basket_lift": (0.03, 0.06),
+    "handle_length": (0.35, 0.7), "control_height": (0.06, 0.1), "button_size": (0.012, 0.02),
+}
+
 # -- beverage fridge ------------------------------------------------------------------------------------
 # Glass-door beverage coolers 0.45-0.7 m wide, 0.5-0.9 m tall (Newair, Whynter, Danby, Kalamera ranges);
 # insulated walls of 0.8 mm sheet round a moulded liner (``appliance.insulated_cabinet``).
@@ -222,6 +242,27 @@ FRIDGE = {
     "wire_pitch": (0.028, 0.04),  # a wire rack's bottle cradles
     # a divider plate: 6 mm glass, a 16 mm trim from 30 mm to 10 mm behind the cavity front
     "divider": {"glass": 0.003, "trim": 0.008, "trim_x": (0.03, 0.01)},
+}
+
+# The oven's parameter ranges (min, max): ranges and built-in ovens 0.5-0.9 m wide, 0.55-0.7 m deep,
+# 0.85-0.98 m to the cooktop or top (the spec sheets named with OVEN below); doors 40-60 mm; 32-52 mm knobs; the rest
+# are ratios of the body or travels the layout checks.
+OVEN_RANGES = {
+    "width": (0.5, 0.9), "depth": (0.55, 0.7), "height": (0.85, 0.98), "panel_fraction": (0.2, 0.4),
+    "door_thickness": (0.04, 0.06), "window_margin": (0.05, 0.09), "handle_length": (0.6, 0.9),
+    "plinth_height": (0.03, 0.07), "drawer_height": (0.1, 0.16), "drawer_travel": (0.55, 0.75),
+    "rack_travel": (0.5, 0.75), "knob_radius": (0.016, 0.026), "grate_play": (0.015, 0.04),
+    "grate_lift": (0.06, 0.12), "lower_height": (0.34, 0.4), "warming_height": (0.13, 0.18),
+}
+
+# The beverage fridge's parameter ranges (min, max): glass-door coolers, undercounter fridges and wine
+# coolers 0.45-0.7 m wide, 0.5-0.68 m deep, 0.5-0.9 m tall (the spec sheets named with FRIDGE above); walls
+# 35-55 mm of foam; the rest are parts of the body and travels the layout checks.
+FRIDGE_RANGES = {
+    "width": (0.45, 0.7), "depth": (0.5, 0.68), "height": (0.5, 0.9), "wall": (0.035, 0.055),
+    "door_thickness": (0.03, 0.045), "kick_height": (0.05, 0.1), "feet_height": (0.008, 0.02),
+    "control_height": (0.035, 0.06), "handle_length": (0.35, 0.75), "rack_travel": (0.6, 0.85),
+    "divider_height": (0.35, 0.65), "freezer_height": (0.09, 0.14),
 }
 
 # -- oven -------------------------------------------------------------------------------------------

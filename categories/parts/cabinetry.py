@@ -45,9 +45,133 @@ CORNER_BLIND = 0.05  # a corner unit's blind panel reaches this far past the uni
 CORNER_LEG = 0.06  # legs under the corner box, this far in from its edges
 LIFT_HANDLE = 0.04  # handles of tilt-out fronts and flaps this far from the free edge
 
-# Handles: 128-320 mm bar pulls (hole centres), 30 mm knobs 25 mm proud, edge pulls as long as asked.
-BAR_HANDLE = (0.128, 0.32)
-KNOB = (0.015, 0.025)
+# The kitchen cabinet's parameter ranges (min, max), metres unless marked:
+RANGES = {
+    "width": (1.2, 4.8),  # a kitchen wall's run: 2-10 cabinets of 40-60 cm
+    # EN 1116 / IKEA METOD: base cabinets 60 cm deep incl. front, worktop at 85-92 cm
+    "base_depth": (0.55, 0.62), "base_height": (0.85, 0.92),
+    "tall_height": (1.95, 2.25),  # IKEA METOD high cabinets 200 / 220 cm + 8-10 cm legs
+    "wall_depth": (0.3, 0.35), "wall_height": (0.6, 0.9),  # wall cabinets 30-35 cm deep (IKEA METOD 37 cm with door)
+    "column_width": (0.4, 0.6),  # IKEA METOD 40 / 60 cm high-cabinet widths
+    "corner_size": (0.84, 0.92),  # corner base 88 x 88 cm (IKEA METOD), lazy-susan bases 33-36 in
+    "sink_width": (0.8, 1.0),  # sink bases 80 / 90 / 100 cm (IKEA METOD), 30-36 in
+    "kitchen_width": (2.4, 4.8),  # a kitchen wall of 4-8 base cabinets (IKEA METOD 40/60/80 cm units)
+    "wall_gap": (0.45, 0.6),  # worktop to wall-cabinet bottom: IKEA kitchen planner 50-60 cm; NKBA minimum 15 in
+    "board": (0.016, 0.019), "front_thickness": (0.016, 0.022),
+    "worktop_thickness": (0.02, 0.04),  # laminate 28-40 mm, stone 20-30 mm
+    "plinth_height": (0.08, 0.14),  # IKEA METOD legs 8 cm; US toe kicks 3.5-4.5 in
+    "drawer_travel": (0.6, 0.9),  # ratio: full-extension runners 0.9
+    "door_angle": (math.pi / 2, 0.65 * math.pi),  # rad: Blum CLIP top hinges 95, 107, 110, 155 degrees
+}
+
+
+def centred(size: float) -> tuple[float, float]:
+    """The span ``size`` wide centred on 0 (a run's ys, a carcass's xs)."""
+    return (-size / 2, size / 2)
+
+
+def inset(span, by: float) -> tuple[float, float]:
+    """``span`` shrunk by ``by`` at both ends (inside the boards, or a front's reveal)."""
+    return (span[0] + by, span[1] - by)
+
+
+def split(span, first: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """``span`` cut ``first`` from its start: the first part and the rest (a corner or sink box and the run
+    beside it)."""
+    cut = span[0] + first
+    return (span[0], cut), (cut, span[1])
+
+
+def front_part(xs, depth: float) -> tuple[float, float]:
+    """The front ``depth`` of ``xs`` (a box flush with the fronts, less deep than the span)."""
+    return (xs[1] - depth, xs[1])
+
+
+def mid_shelf(xs, ys, zs, t: float) -> g.Piece:
+    """A shelf board half way up a compartment."""
+    return panels.shelf(xs, ys, (zs[0] + zs[1]) / 2, t, "body")
+
+
+def open_shelves(xs, ys, zs, t: float, rng) -> list[g.Piece]:
+    """An open column's 1-2 shelves (drawn), evenly spaced."""
+    k = 1 + int(rng.integers(1, 3))
+    return [panels.shelf(xs, ys, zs[0] + (zs[1] - zs[0]) * i / k, t, "body") for i in range(1, k)]
+
+
+def splashback(x: float, ys, zs) -> g.Piece:
+    """A panel on the wall between the worktop and the wall cabinets (it carries them)."""
+    return g.box_between([x, ys[0], zs[0]], [x + SPLASH, ys[1], zs[1]], "body")
+
+
+def sink_fronts(ys, zs, t: float, beside: bool) -> tuple[tuple, tuple, tuple]:
+    """A sink box's front span (narrowed to half a divider where a run is ``beside`` it), its tilt-out
+    false front's z span at the top and its doors' z span below."""
+    fy = (ys[0] + GAP, ys[1] - t / 2 - GAP / 2 if beside else ys[1] - GAP)
+    fz1 = zs[1] - GAP
+    return fy, (fz1 - SINK_FRONT, fz1), (zs[0] + GAP, fz1 - SINK_FRONT - GAP)
+
+
+def corner_front(xs, ys, zs, t: float, ft: float, style: str) -> tuple[list[g.Piece], tuple, tuple, dict]:
+    """A corner box's front: the blind panel's pieces (fixed in the carcass, reaching :data:`CORNER_BLIND`
+    past the middle), the door's leaf (hinged on the run's side), the fronts' z span and where the
+    carousel behind it turns (``centre``, ``radius``, ``zs``)."""
+    D = xs[1] - xs[0]
+    mid = (ys[0] + ys[1]) / 2 - CORNER_BLIND
+    fz = (zs[0] + GAP, zs[1] - GAP)
+    x = xs[1]
+    blind = front(x + GAP, x + GAP + ft, (ys[0] + GAP, mid - GAP / 2), fz, style, "front")[0]
+    leaf = (mid + GAP / 2, ys[1] - t / 2 - GAP / 2, "right")
+    carousel = dict(centre=(x - D / 2, (ys[0] + ys[1]) / 2), radius=min(D, ys[1] - ys[0]) / 2 - t - CAROUSEL_CLEAR,
+                    zs=(zs[0] + t, zs[1] - t))
+    return blind, leaf, fz, carousel
+
+
+def tall_split(xs, ys, zs, fzs, t: float) -> tuple[list[g.Piece], tuple, tuple, tuple]:
+    """A tall cabinet's fixed shelf at :data:`TALL_SPLIT` with :data:`TALL_SHELVES` spaces over it: the
+    boards, the upper door's and the lower door's z spans and the compartment under the split."""
+    split = zs[0] + TALL_SPLIT * (zs[1] - zs[0])
+    boards = [g.box_between([xs[0] + t / 2, ys[0], split - t], [xs[1], ys[1], split], "body")] + \
+        [panels.shelf(xs, ys, split + (zs[1] - split) * i / TALL_SHELVES, t, "body") for i in range(1, TALL_SHELVES)]
+    fsplit = split - t / 2
+    return boards, (fsplit + GAP / 2, fzs[1]), (fzs[0], fsplit - GAP / 2), (zs[0], split - t)
+
+
+def drawer_over_doors(xs, ys, zs, fzs, t: float) -> tuple[g.Piece, tuple, tuple, tuple, tuple]:
+    """A top drawer (:data:`TOP_DRAWER` of the column) over doors: the board between them, the drawer's
+    inner and front z spans, the doors' compartment and front z spans."""
+    fh, ih = fzs[1] - fzs[0], zs[1] - zs[0]
+    s = 1 - TOP_DRAWER
+    top_f = (fzs[0] + s * fh, fzs[1])
+    top_i = (zs[0] + s * ih, zs[1])
+    board = g.box_between([xs[0] + t / 2, ys[0], top_i[0] - t], [xs[1], ys[1], top_i[0]], "body")
+    return board, top_i, top_f, (zs[0], top_i[0] - t), (fzs[0], top_f[0] - GAP / 2)
+
+
+def pull_frame(x: float, ys, z: float) -> Frame:
+    """A drawer's slide: out of the carcass along +X from its front ``x``, mid-width, at height ``z``."""
+    return Frame.at((x, sum(ys) / 2, z), z=(1, 0, 0))
+
+
+def leaf_pair(fys) -> list[tuple[float, float, str]]:
+    """Two leaves splitting the front span ``fys`` with a reveal between them, hinged at the outer edges."""
+    mid = sum(fys) / 2
+    return [(fys[0], mid - GAP / 2, "left"), (mid + GAP / 2, fys[1], "right")]
+
+
+def front_span(c: int, n: int, ys, run, t: float) -> tuple[float, float]:
+    """The front of column ``c`` of ``n`` over ``ys`` in a run over ``run`` (dividers ``t`` thick): half a
+    reveal off a divider's middle, a reveal in from the run's ends."""
+    (ya, yb), (W0, W1) = ys, run
+    return (ya - t / 2 + GAP / 2 if c > 0 else W0 + GAP, yb + t / 2 - GAP / 2 if c < n - 1 else W1 - GAP)
+
+
+def divider(xs, y: float, zs, t: float) -> g.Piece:
+    """A divider board between two columns, to the right of ``y``, set back half a board from the back."""
+    return g.box_between([xs[0] + t * 0.5, y, zs[0] + t], [xs[1], y + t, zs[1] - t], "body")
+
+
+# Handles (hardware.handle): 128-320 mm bar pulls, 30 mm knobs 25 mm proud, edge pulls as long as asked.
+BAR_HANDLE = hardware.BAR_SPAN
 HANDLE_REACH = 0.03  # a door's handle keeps this far (beyond half its length) from the door's ends
 HANDLE_IN = 0.05  # on a slab front a handle is 50 mm from the edge (framed: on the stile or rail)
 DOOR_HANDLE = (0.8, 0.9, 0.45)  # handle height / door height: on doors under 0.9 m, on taller doors
@@ -273,21 +397,9 @@ def angle(deg: float) -> float:
 
 
 # -- kitchen cabinet assemblies -----------------------------------------------------------------
-def handle(style: str, length: float, slot: str = "handle"):
-    """A cabinet handle of ``style`` (``bar``: a 128-320 mm pull; ``knob``: a 30 mm knob; else an edge
-    pull of ``length``), mounted by its ``mount`` support point."""
-    if style == "bar":
-        return hardware.bar_handle(min(max(length, BAR_HANDLE[0]), BAR_HANDLE[1]), slot)
-    if style == "knob":
-        return hardware.knob_handle(*KNOB, slot)
-    return hardware.edge_pull(length, slot)
-
-
 def handle_on(style: str, length: float, at, across=(0, 1, 0)) -> list[g.Piece]:
-    """The pieces of a handle of ``style`` mounted on a front face at point ``at`` (the face's normal
-    +X), its length along ``across``."""
-    h = handle(style, length).attached("mount", to=Frame.at(at, z=(1, 0, 0), x=across))
-    return list(h.parts[h.root].pieces)
+    """The pieces of a :func:`~.hardware.handle` of ``style`` on a front face at point ``at``."""
+    return hardware.on_face(hardware.handle(style, length), at, across)
 
 
 def drawer(xs, ys, fys, fz, bz, t: float, ft: float, style: str, handle_style) -> tuple[list[g.Piece], tuple]:

@@ -1,14 +1,14 @@
-"""Dimension tables of the vessel designs added for variety (issue 14): liners, stoppers, clip-top
-and hinged jar lids, swing-top, pump and sports closures, steamer inserts, pressure-cooker lids,
-folding and detachable pan handles. Metres (or ratios) of real products; each table names its source.
-"""
+"""Dimension tables of the vessel designs beyond the plain one, so a category is more than one product:
+liners, stoppers, clip-top and hinged jar lids, swing-top, pump and sports closures, steamer inserts,
+pressure-cooker lids, folding and detachable pan handles. Metres (or ratios) of real products; each table
+names its source."""
 
 from __future__ import annotations
 
 import math
 
 # -- vase -------------------------------------------------------------------------------------
-# A vase stands: its foot is at least 40 % of its widest diameter (issue 13; Kähler Omaggio, IKEA
+# A vase stands: its foot is at least 40 % of its widest diameter (a narrower one tips over; Kähler Omaggio, IKEA
 # Vilja and Chinese ginger jars measure 45..70 %). Foot rings of thrown stoneware are 4..8 mm tall,
 # flaring 1..2 mm outward at the table.
 VASE_STAND = 0.45  # smallest foot radius / widest radius
@@ -45,7 +45,7 @@ SPLIT_HANDLE = {"lug": 0.014, "gap": 0.002, "knee_room": 0.004, "fold": 3.1416,
 HELPER = {"length": 0.05, "radius": 0.005, "standoff": 0.022, "under_rim": 0.006, "p": 0.35}
 
 # -- jar --------------------------------------------------------------------------------------
-# Four closures (issue 14): screw lid (mason jar), clip-top (Le Parfait / Bormioli Fido: a glass
+# The four closures jars are sold with: screw lid (mason jar), clip-top (Le Parfait / Bormioli Fido: a glass
 # lid on an orange rubber gasket, hinged at the back on a neck wire, clamped by a wire lever at the
 # front), hinged lid (a storage jar with a flat lid on a back hinge and a front knob), stopper (an
 # apothecary jar's glass or wooden stopper). Wire 2..3 mm (Fido: 2.5 mm zinc-plated steel).
@@ -98,9 +98,10 @@ SPORTS = {"spout": 0.0055, "spout_h": 0.012, "pull": 0.006, "ring": 0.0015}
 POT_DESIGNS = {"plain": 0.45, "steamer": 0.35, "pressure": 0.2}  # steamer sets sell in 1-3 tier variants
 # Tiers 1..2 (steamer sets are also sold with three tiers, but a chain of three stacked slides
 # sags 1.1 mm at rest in MuJoCo, past the 1 mm rest check: effort.py's armature takes the joint's
-# free inertia as its load, while a middle tier's stop carries the tiers and lid above it). A tier is pressed from thinner sheet than the pot's clad
-# wall: 0.6-0.8 mm 18/10 steel, a tier of 20-28 cm weighing 0.4-1.0 kg (WMF, Fissler, Cuisinart
-# steamer inserts); "sheet" is that gauge (a clad 2-3 mm wall made them 2-4 kg, issue 14).
+# free inertia as its load, while a middle tier's stop carries the tiers and lid above it).
+# A tier is pressed from thinner sheet than the pot's clad wall: 0.6-0.8 mm 18/10 steel, a tier of 20-28 cm
+# weighing 0.4-1.0 kg (WMF, Fissler, Cuisinart steamer inserts); "sheet" is that gauge (at the clad 2-3 mm
+# wall a tier would weigh 2-4 kg).
 STEAMER = {"tiers": (1, 2), "height": (0.45, 0.7), "skirt": 0.015, "room": 0.004, "gap": 0.0025, "lift": 0.12,
            "handle": (0.05, 0.004, 0.014), "sheet": 0.0008}
 # A pasta pot's straining insert (Cuisinart 77-412, All-Clad and WMF pasta pots: a deep steel

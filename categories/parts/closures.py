@@ -1,6 +1,6 @@
-"""Vessel designs added for variety (issue 14): vase feet, stoppers and liners; clip-top, hinged and
-stopper jar lids; swing-top, pump and sports bottle closures; steamer inserts and pressure-cooker
-lids for pots; folding and detachable pan handles.
+"""Vessel designs beyond the plain one, so a category is more than one product: vase feet, stoppers and
+liners; clip-top, hinged and stopper jar lids; swing-top, pump and sports bottle closures; steamer
+inserts and pressure-cooker lids for pots; folding and detachable pan handles.
 
 Like :mod:`.vessel`, every builder returns an :class:`~infmob_usd.assembly.Assembly` in its own
 local frame, Z up along the vessel's axis; closures have their ``seat`` anchor at the origin (attach
@@ -19,7 +19,8 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
 
 from . import closure_sizes as C
-from .vessel import UP, Profile, _at, _closure, _piece, _plug_lid, _supports, lid_gap
+from . import hardware
+from .vessel import Profile, _at, _closure, _piece, _plug_lid, _supports, lid_gap
 
 # ---------------------------------------------------------------------------
 # vase
@@ -118,13 +119,18 @@ def release_slider(rise: Frame, rest: float, width: float, thickness: float, slo
     return Assembly.single("button", [piece], {"slide": Frame.at(c.origin, z=rise.x, x=rise.z)})
 
 
+def _bar(length: float, slot: str, standoff: float, radius: float, at: Frame) -> tuple:
+    """The pieces of a :func:`~.hardware.bar_handle` (posts 0.8 of the bar's radius) mounted at ``at``."""
+    size = hardware.HandleSize(standoff=standoff, bar_radius=radius, post_radius=0.8 * radius, inset=0.02)
+    return hardware.bar_handle(length, slot, size).placed(at).pieces
+
+
 def helper_handle(pot, slot: str) -> Assembly:
     """A short loop handle at -X below the rim (a big skillet's helper handle), in the vessel's frame."""
     h = C.HELPER
     zh = pot.rim_bottom - h["under_rim"] - h["radius"]
     r = float(pot.radius_at(zh)) - 0.6 * pot.wall
-    pieces = g.bar_handle((-r, 0.0, zh), (-1, 0, 0), (0, 1, 0), h["length"], slot, standoff=h["standoff"],
-                          radius=h["radius"])
+    pieces = _bar(h["length"], slot, h["standoff"], h["radius"], Frame.at((-r, 0.0, zh), z=(-1, 0, 0), x=(0, 1, 0)))
     return Assembly.single("handle", pieces, {"vessel": IDENTITY})
 
 
@@ -192,7 +198,7 @@ def clip_lid(neck: Profile, slot: str, gasket_slot: str, wire_slot: str, hinge: 
     pieces.append(g.box_between((o[0], -0.35 * kn, zb + 0.2 * t), (-(r_lid - 0.004), 0.35 * kn, zt - 0.2 * t),
                                 wire_slot))
     if knob > 0:
-        pieces += g.knob_handle((0.75 * r_lid, 0, zt - 0.0005), UP, slot, radius=knob, depth=1.4 * knob)
+        pieces += hardware.knob_handle(knob, 1.4 * knob, slot).placed(Frame.at((0.75 * r_lid, 0, zt - 0.0005))).pieces
     else:  # the wire yoke over the top, from the knuckle to the front where the lever's bar presses
         z_y = zt + dome + w + 0.0003
         pieces.append(_piece(_wire((o[0], 0.0, o[2]), (-0.45 * r_lid, 0.0, z_y), wire_slot), convex=[]))
@@ -365,8 +371,8 @@ def steamer_tier(pot, height: float, slot: str, rim_slot: str, handle_slot: str,
     hl, hr, hs = k["handle"]
     pieces = [wall, skirt, shoulder, floor, rim]
     for s in (1, -1):
-        pieces += g.bar_handle((0.0, s * (r_top - 0.5 * t), 0.55 * height), (0, s, 0), (1, 0, 0), hl, handle_slot,
-                               standoff=hs, radius=hr)
+        pieces += _bar(hl, handle_slot, hs, hr, Frame.at((0.0, s * (r_top - 0.5 * t), 0.55 * height), z=(0, s, 0),
+                                                         x=(1, 0, 0)))
     prof = np.array([(r_top, 0.0), (r_top, height)])
     info = Cookware(prof, height, cx + bead, r_top - t, cz - bead, -d + t, r_s - t, t)
     a = Assembly.single(label, pieces, {"seat": IDENTITY, "lid_seat": _at(height + S.LID_GAP)})

@@ -25,27 +25,21 @@ RACK_FRONT = DW["racks"]["front"]  # kept free at a rack's front
 MIN_BASKET_LIFT = DW["baskets"]["min_lift"]  # a basket that cannot lift this far stays fixed in its rack
 
 
-def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
-    """(width, depth, height) of a design from the parameters: a compact counter-top model and a double
-    dish drawer take the sizes of :data:`DISHWASHER` (mapped from the parameters' ranges)."""
-    if design == "compact":
-        c = DW["compact"]
-        return tuple(lo + span * (v - p_lo) / p_span for v, (lo, span, p_lo, p_span) in
-                     zip((W, D, H), (c["width"], c["depth"], c["height"]), strict=True))
-    if design == "dish_drawer":
-        d = DW["dish_drawer"]
-        w = d["width"]
-        return (w if W < w else w + (W - w)), min(D, d["depth"]), min(max(H, d["height"][0]), d["height"][1])
-    return W, D, H
+def _compact(W: float, D: float, H: float) -> tuple[float, float, float]:
+    c = DW["compact"]
+    return tuple(lo + span * (v - p_lo) / p_span for v, (lo, span, p_lo, p_span) in
+                 zip((W, D, H), (c["width"], c["depth"], c["height"]), strict=True))
 
 
-def painted_steel(pieces: list[g.Piece], finish: str) -> list[g.Piece]:
-    """A painted cabinet is painted steel sheet, but the painted family is massed as board (750 kg/m^3):
-    its sheet pieces count 7850 / 750 times thicker (a painted compact model weighed 10 kg)."""
-    if finish != "painted":
-        return pieces
-    return [pc.replace(sheet=pc.sheet * 7850.0 / 750.0) if pc.sheet > 0 and pc.material == "body" else pc
-            for pc in pieces]
+def _dish_drawer(W: float, D: float, H: float) -> tuple[float, float, float]:
+    d = DW["dish_drawer"]
+    w = d["width"]
+    return (w if W < w else w + (W - w)), min(D, d["depth"]), min(max(H, d["height"][0]), d["height"][1])
+
+
+SIZES = {"compact": _compact, "dish_drawer": _dish_drawer}
+"""Designs whose size is not the parameters' (:func:`~.appliance.size`): a compact counter-top model and a
+double dish drawer take the sizes of :data:`DISHWASHER` (mapped from the parameters' ranges)."""
 
 
 def pump(xb0: float, xb1: float, zf: float, zh: float) -> g.Piece:
@@ -66,7 +60,7 @@ class Tub:
 
 
 def tub_body(W, D, H, wall, door_thickness, feet, kick, design: str, control_height: float, ctrl: bool,
-             handle: bool, finish: str) -> Tub:
+             handle: bool) -> Tub:
     """The tub cabinet (:func:`.appliance.tub_cabinet`) with the pump (and a freestanding model's worktop);
     the door hinges at the kick's top; its top band carries the control panel and the handle, and the racks
     stay below the band and the ceiling nozzle, above the flat door's inner face and the spray arm."""
@@ -84,7 +78,7 @@ def tub_body(W, D, H, wall, door_thickness, feet, kick, design: str, control_hei
     band = b["base"] + (control_height if ctrl else 0.0) + (b["handle_strip"] if ctrl and handle else 0.0)
     if handle and not ctrl:
         band = b["handle_only"]
-    body = painted_steel(A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf), finish) + [pump(xb0, xb1, zf, zh)]
+    body = A.tub_cabinet((xb0, xb1, y0, y1, zf, H), cav, zh, xf) + [pump(xb0, xb1, zf, zh)]
     if design == "freestanding":  # a worktop over the cabinet, behind the door
         body.append(g.box_between([xb0, y0, H], [xb1, y1, H + DW["worktop"]], "worktop", bevel=0.004))
     r = DW["rack_room"]
@@ -93,7 +87,7 @@ def tub_body(W, D, H, wall, door_thickness, feet, kick, design: str, control_hei
     return Tub(body, dict(box=(xf - ft, xf, y0, y1, zh, zt), band=band), dict(cav=cav, z=(bottom, top)))
 
 
-def drawer_cabinet(W, D, H, door_thickness, feet, kick, finish: str) -> tuple[list[g.Piece], dict]:
+def drawer_cabinet(W, D, H, door_thickness, feet, kick) -> tuple[list[g.Piece], dict]:
     """A double dish drawer's cabinet with two bays; returns its pieces and where the drawers go."""
     ft = door_thickness
     y0, y1 = -W / 2, W / 2
@@ -117,7 +111,7 @@ def drawer_cabinet(W, D, H, door_thickness, feet, kick, finish: str) -> tuple[li
     (fx0, fx1), fy, fr = DW["feet"]
     body += [g.cylinder([x, y, 0.0], [x, y, zf], fr, "feet", 16) for x in (xb0 + fx0, xb1 - fx1)
              for y in (y0 + fy, y1 - fy)]
-    return painted_steel(body, finish), dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
+    return body, dict(xs=(xb0 + t, xb1, xf), ys=(y0, y1, t), zs=(zk, bay, t))
 
 
 def drawer_boxes(k: int, xs, ys, zs) -> dict:
@@ -200,8 +194,8 @@ def handle_frame(box, band: float, ctrl: bool, integrated: bool) -> Frame:
 
 def control_panel(xf, ys, zs, handle: bool, n: int, button_size: float) -> tuple[list[g.Piece], list]:
     """A fascia on the top of the door front: a display on the left, ``n`` push buttons on the right
-    (above the handle strip); returns the fascia with its display and the buttons ``(name, piece, press
-    frame, travel)``."""
+    (above the handle strip); returns the fascia with its display and the buttons
+    (:class:`~.appliance.Control`)."""
     c = DW["control"]
     (y0, y1), (za, zb) = ys, zs
     xp, W = xf + DW["fascia"], y1 - y0
@@ -221,7 +215,8 @@ def control_panel(xf, ys, zs, handle: bool, n: int, button_size: float) -> tuple
             piece = g.box_between([xp - A.BEHIND, y - half[0], zc - half[1]],
                                   [xp + proud, y + half[0], zc + half[1]], "button",
                                   bevel=c["bevel"] * min(bh, 2 * half[0]))
-            panel.buttons.append((f"button_{k}", piece, Frame.at((xp + proud, y, zc), z=(-1, 0, 0)), bh / 8))
+            at = Frame.at((xp + proud, y, zc), z=(-1, 0, 0))
+            panel.buttons.append(A.Control(f"button_{k}", (piece,), at, bh / 8))
     fascia = g.panel([xf, y0 + c["inset"], za], [xp, y1 - c["inset"], zb], "panel", "x", holes=panel.holes)
     return [fascia, *panel.decor], panel.buttons
 
@@ -271,6 +266,20 @@ def cup_shelf_slot(xs, ry, za, top) -> dict:
 def tines_beside_shelves(ry: float, w: float) -> float:
     """The half width the tine rows of an upper rack keep, inside its cup shelves ``w`` tall."""
     return ry - w - DW["cup_shelf"]["tines_in"]
+
+
+def rack_count(design: str, asked: int) -> int:
+    """Sliding racks: as asked; a compact counter-top model has room for one."""
+    return 1 if design == "compact" else asked
+
+
+TRAY_FROM = 3  # racks: from three up the top one is a cutlery tray (Bosch 500/800, Miele G 7000 third racks)
+
+
+def rack_kinds(n: int) -> tuple[int, int]:
+    """Of ``n`` racks (a lower rack first): how many upper racks and cutlery trays (on top of three or more)."""
+    tray = int(n >= TRAY_FROM)
+    return max(0, n - 1 - tray), tray
 
 
 def cup_shelf(k: int, xs, ry, z, w) -> tuple[list[g.Piece], float, int]:

@@ -28,15 +28,15 @@ WIRE_PITCH = F["wire_pitch"]  # a wire rack's cradle pitch is drawn in this rang
 BIN_LIFT = F["bin"]["lift"]  # a door bin lifts this far off its hooks
 
 
-def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
-    """(width, depth, height): wine and dual-zone coolers are undercounter height, a dual-zone cooler with
-    two doors has a least width (:data:`FRIDGE`)."""
-    if design in ("wine", "dual_zone"):
-        lo, span, p_lo, p_span = F["undercounter_height"]
-        H = lo + span * (H - p_lo) / p_span
-    if design == "dual_zone":
-        W = max(W, F["dual_zone_width"])
-    return W, D, H
+def _undercounter(H: float) -> float:
+    lo, span, p_lo, p_span = F["undercounter_height"]
+    return lo + span * (H - p_lo) / p_span
+
+
+SIZES = {"wine": lambda W, D, H: (W, D, _undercounter(H)),
+         "dual_zone": lambda W, D, H: (max(W, F["dual_zone_width"]), D, _undercounter(H))}
+"""Designs whose size is not the parameters' (:func:`~.appliance.size`): wine and dual-zone coolers are
+undercounter height, a dual-zone cooler with two doors has a least width (:data:`FRIDGE`)."""
 
 
 def freezer_height(height: float, cavity: float) -> float:
@@ -76,6 +76,29 @@ class Body:
     hole: tuple
     box: tuple
     xs: tuple
+
+    @property
+    def margin(self) -> float:
+        """The door frame beside the glass: what racks keep clear of the open door's edge."""
+        return self.hole[0] - self.box[2]
+
+
+FLAP_OPENS = math.pi / 2  # a freezer flap swings up a quarter turn
+
+
+def cavity_height(H: float, wall: float, feet: float, kick: float) -> float:
+    """Height of the cooled cavity (floor liner to ceiling liner) of a cabinet ``H`` tall."""
+    return H - 2 * wall - 2 * A.LINER - feet - kick
+
+
+def rack_count(design: str, asked: int) -> int:
+    """``asked`` racks, plus the design's :data:`RACK_EXTRA`, at least one."""
+    return max(1, asked + RACK_EXTRA.get(design, 0))
+
+
+def zone_racks(asked: int) -> int:
+    """A dual-zone cooler's right zone: one rack fewer than asked, at least one."""
+    return max(1, asked - 1)
 
 
 def body(W, D, H, wall, door_thickness, feet, kick, control_height: float | None, dual_zone: bool) -> Body:

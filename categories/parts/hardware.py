@@ -89,6 +89,27 @@ def bow_handle(length: float, material: str, projection: float = BOW_PROJECTION,
 HANDLES = {"bar": bar_handle, "edge": edge_pull, "bow": bow_handle}
 """Handles that run along local x, by style name: ``HANDLES[style](length, material)``."""
 
+BAR_SPAN = (0.128, 0.32)
+"""m, the bar pulls cabinet makers fit: 128 mm hole centres up to 320 mm (Häfele / Blum catalogues)."""
+KNOB = (0.015, 0.025)
+"""m, a cabinet knob's cap radius and projection: a 30 mm knob 25 mm proud."""
+
+
+def handle(style: str, length: float, material: str = "handle") -> Assembly:
+    """A furniture handle of ``style``: ``bar`` (``length`` clamped to :data:`BAR_SPAN`), ``knob``
+    (:data:`KNOB`, ``length`` unused), else an edge pull ``length`` long; anchor ``mount``, bars along x."""
+    if style == "bar":
+        return bar_handle(min(max(length, BAR_SPAN[0]), BAR_SPAN[1]), material)
+    if style == "knob":
+        return knob_handle(*KNOB, material)
+    return edge_pull(length, material)
+
+
+def on_face(part: Assembly, at, across=(0, 1, 0)) -> list[g.Piece]:
+    """The pieces of ``part`` mounted at point ``at`` of a front face (normal +X), its local x along
+    ``across``: to fuse a handle into the part that carries it."""
+    return list(part.attached("mount", to=Frame.at(at, z=(1, 0, 0), x=across)).pieces)
+
 
 def hinge_knuckle(length: float, radius: float, material: str) -> Assembly:
     """A hinge barrel along local z, centred on the origin (anchor ``"axis"``: z along the pin)."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -33,9 +33,9 @@ COLLAR_LEN = 0.022  # collar ring around a swivel pin
 BASE_PER_REACH = 0.33  # an arm lamp's base radius is at least this times its head's reach
 TRIPOD_HUB = 0.16  # a tripod's hub top (where the pole starts) above the floor
 MIN_POLE = 0.06
-"""m: the shortest pole (base top to pole top) under an upright head; a larger shade is shrunk. Fuzz (lamp,
-seed 7) draws #243, #247 and #382, 0.35 m desk lamps on a tripod hub under a 13 cm shade, left 29-43 mm of
-pole: the head's collar sat in the lower pole's. Seeds 0-599 have at least 64 mm, so none of them changes."""
+"""m: the shortest pole (base top to pole top) under an upright head; a larger shade is shrunk. Without it
+0.35 m desk lamps on a tripod hub under a 13 cm shade were left 29-43 mm of pole: the head's collar sat in
+the lower pole's. Seeds 0-599 have at least 64 mm, so none of them changes."""
 CLAMP = dict(throat=0.06, jaw=0.011, spine=0.012, back=0.035, front=0.05, screw_x=0.018, rod=0.005, pad=0.012,
              pad_t=0.004, bar=0.0045, bar_len=0.06)
 """A desk clamp (architect lamps: Anglepoise, IKEA TERTIAL with clamp): a C of cast steel whose jaws take desk tops
@@ -55,14 +55,14 @@ def blueprint(p: dict, rng: np.random.Generator) -> Blueprint:
     # everything above the pole top is rigid with it: build it once with the pole top at top0, then
     # set the pole top so the lamp is exactly H tall (the base bottom is at z = 0) and move it there
     for _ in range(20):
-        head = _head(p, q, q["top0"])
-        rise = float(head.bounds()[1, 2]) - q["top0"]
-        if q["style"] != "straight" or q["H"] - rise - q["z_b"] >= MIN_POLE:
+        head = _head(p, q, q.top0)
+        rise = float(head.bounds()[1, 2]) - q.top0
+        if q.style != "straight" or q.H - rise - q.z_b >= MIN_POLE:
             break
-        q["rs"] *= 0.92  # too big a head for so short a lamp (a 0.35 m desk lamp on a 0.16 m tripod hub)
+        q = replace(q, rs=q.rs * 0.92)  # too big a head for so short a lamp (a 0.35 m desk lamp on a 0.16 m hub)
     bp = Blueprint("lamp")
-    _stand(bp, p, q, q["H"] - rise)
-    _move_head(bp, head, q["H"] - rise - q["top0"])
+    _stand(bp, p, q, q.H - rise)
+    _move_head(bp, head, q.H - rise - q.top0)
     return bp
 
 
@@ -74,11 +74,77 @@ SEGMENTS = {"pitch": 0.6, "swivel": 0.4}
 """A chain arm's segments after the first (always a pitch) pitch or swing, with these shares."""
 
 
-def _plan(p: dict, rng: np.random.Generator) -> dict:
+@dataclass(frozen=True)
+class Draws:
+    """A lamp's random draws, made once in a fixed order (:func:`_plan`)."""
+
+    kinds: list[str]  # a chain arm's segment kinds (the first always a pitch)
+    spokes: int
+    lean: float  # first chain segment, from vertical
+    mid_angle: float  # middle pitch segment of three
+    last_angle: float  # last pitch segment, down to the head
+    riser: float  # chain shoulder / H
+    curve_end: float  # where an arc ends (0 = pointing straight down)
+    shade_drop: float  # an upright shade's bottom below its spokes / its height
+    switch_angle: float
+
+
+@dataclass(frozen=True)
+class Knuckle:
+    """Sizes of the hinges of a chain arm, from the pole radius (:func:`_knuckle`)."""
+
+    w_c: float  # width of a central hub
+    r_h: float  # hub and cheek radius
+    r_c: float  # central bar radius
+    y_tw: float  # twin bar centre line
+    r_pin: float
+    r_x: float  # half height of the block a swivel pin hangs from
+
+
+@dataclass(frozen=True)
+class ChainPlan:
+    """A chain arm: each segment's kind, angle from horizontal and length, the riser top, the forward limit of
+    each hinge and the head's reach (:func:`_chain_plan`)."""
+
+    kinds: tuple[str, ...]
+    angles: tuple[float, ...]
+    lengths: tuple[float, ...]
+    top0: float
+    forward: tuple[float, ...]
+    reach_x: float
+
+
+@dataclass(frozen=True)
+class LampPlan(Knuckle):
+    """Every size and angle of one lamp, from its parameters and its draws (:func:`_plan`): lamp type and arm
+    style, height ``H``, base radius ``R`` and the base's top ``z_b``, shade radius ``rs``, pole radii (upper,
+    lower tube, middle tube or 0), the shade's spokes and drop, the switch's angle, where an arc ends; the pole
+    top ``top0`` the head was designed on, the head's reach, an arc's radius, a chain arm's plan."""
+
+    floor: bool = False
+    style: str = "straight"
+    H: float = 0.0
+    R: float = 0.0
+    rs: float = 0.0
+    z_b: float = 0.0
+    r_up: float = 0.0
+    r_lo: float = 0.0
+    r_mid: float = 0.0
+    spokes: int = 0
+    shade_drop: float = 0.0
+    switch_angle: float = 0.0
+    curve_end: float = 0.0
+    top0: float = 0.0
+    reach_x: float = 0.0
+    arc_radius: float = 0.0
+    chain: ChainPlan | None = None
+
+
+def _plan(p: dict, rng: np.random.Generator) -> LampPlan:
     names, w = list(SEGMENTS), np.array(list(SEGMENTS.values()))
     kinds = ["pitch"] + [names[int(rng.choice(len(names), p=w / w.sum()))] for _ in range(2)]
     u = rng.uniform
-    draws = dict(
+    draws = Draws(
         kinds=kinds,
         spokes=int(rng.integers(3, 5)),
         lean=math.radians(u(10.0, 28.0)),  # first chain segment, from vertical
@@ -91,12 +157,12 @@ def _plan(p: dict, rng: np.random.Generator) -> dict:
     )
     R = p["floor_base_radius"] if p["lamp_type"] == "floor" else p["desk_base_radius"]
     q = _design(p, draws, R)
-    if q["reach_x"] * BASE_PER_REACH > R:  # an arm lamp needs a base that balances its head
-        q = _design(p, draws, q["reach_x"] * BASE_PER_REACH)
+    if q.reach_x * BASE_PER_REACH > R:  # an arm lamp needs a base that balances its head
+        q = _design(p, draws, q.reach_x * BASE_PER_REACH)
     return q
 
 
-def _design(p: dict, d: dict, R: float) -> dict:
+def _design(p: dict, d: Draws, R: float) -> LampPlan:
     """Sizes and angles of the lamp from its parameters, the draws and the base radius."""
     floor = p["lamp_type"] == "floor"
     style = p["arm_style"]
@@ -104,49 +170,48 @@ def _design(p: dict, d: dict, R: float) -> dict:
     rs = p["floor_shade_radius"] if floor else p["desk_shade_radius"]
     if style != "straight":
         rs *= 0.75
-    curve_end = d["curve_end"]
+    curve_end = d.curve_end
     r_up = p["pole_radius"]
     # a two-stage pole (floor lamps) has a middle tube between the upper pole and the lower tube
     r_mid = r_up + GAP + _tube_wall(r_up) if floor and p.get("pole_stages", 1) == 2 else 0.0
     r_lo = (r_mid or r_up) + GAP + _tube_wall(r_mid or r_up)
     t = p["base_thickness"]
     z_b = {"domed": t + 0.22 * R, "tripod": TRIPOD_HUB, "clamp": CLAMP["jaw"]}.get(p["base_shape"], t)
-    q = dict(floor=floor, style=style, H=H, R=R, rs=rs, z_b=z_b, r_up=r_up, r_lo=r_lo, r_mid=r_mid,
-             spokes=d["spokes"], shade_drop=d["shade_drop"], switch_angle=d["switch_angle"],
-             curve_end=curve_end, reach_x=0.0)
-    q.update(_knuckle(r_up))
+    q = LampPlan(floor=floor, style=style, H=H, R=R, rs=rs, z_b=z_b, r_up=r_up, r_lo=r_lo, r_mid=r_mid,
+                 spokes=d.spokes, shade_drop=d.shade_drop, switch_angle=d.switch_angle,
+                 curve_end=curve_end, **_knuckle(r_up).__dict__)
     reach = p["arm_reach"] * H
 
     if style == "straight":
-        q["top0"] = z_b + 0.7 * (H - z_b)
+        q = replace(q, top0=z_b + 0.7 * (H - z_b))
     elif style == "curved":
         tilt = None if floor else p["head_tilt"]
         for _ in range(25):
             head = _pendant(p, q, tilt)
-            rc = max(reach, q["rs"] + r_lo + 0.03) / (1.0 + math.cos(curve_end))
+            rc = max(reach, q.rs + r_lo + 0.03) / (1.0 + math.cos(curve_end))
             if tilt is not None:  # a head tilted back must stay clear of the pole
                 rc = max(rc, (_swing_back(head, tilt) + r_lo + 0.012) / (1.0 + math.cos(curve_end)))
             # the head, tilted, stays a pole slide above the base (well clear of the switch)
             top = H - rc - r_up
-            hinge = top + rc * math.sin(curve_end) - (q["r_h"] + 0.006)
+            hinge = top + rc * math.sin(curve_end) - (q.r_h + 0.006)
             slide = 0.25 * (top - z_b) * (1 - p["lower_pole_fraction"])
             if hinge - slide - _swing_down(head, tilt or 0.0) >= z_b + 0.01:
                 break
-            q["rs"] *= 0.92  # too big a head for so short a lamp
-        q.update(arc_radius=rc, top0=H - rc - r_up, reach_x=rc * (1.0 + math.cos(curve_end)))
+            q = replace(q, rs=q.rs * 0.92)  # too big a head for so short a lamp
+        q = replace(q, arc_radius=rc, top0=H - rc - r_up, reach_x=rc * (1.0 + math.cos(curve_end)))
     else:
         for _ in range(12):
-            plan = _chain_plan(p, q, d["kinds"][:p["arm_segments"]], d["lean"], d["mid_angle"],
-                               d["last_angle"], reach, z_b + max(d["riser"] * H, 0.4 if floor else 0.09))
-            if min(plan["forward"]) >= PITCH:
+            plan = _chain_plan(p, q, d.kinds[:p["arm_segments"]], d.lean, d.mid_angle,
+                               d.last_angle, reach, z_b + max(d.riser * H, 0.4 if floor else 0.09))
+            if min(plan.forward) >= PITCH:
                 break
-            q["rs"] *= 0.92  # too big a head for so short a lamp
-        q.update(plan)
+            q = replace(q, rs=q.rs * 0.92)  # too big a head for so short a lamp
+        q = replace(q, chain=plan, top0=plan.top0, reach_x=plan.reach_x)
     return q
 
 
-def _chain_plan(p: dict, q: dict, kinds: list[str], lean: float, mid: float, last: float, reach: float,
-                top0: float) -> dict:
+def _chain_plan(p: dict, q: LampPlan, kinds: list[str], lean: float, mid: float, last: float, reach: float,
+                top0: float) -> ChainPlan:
     """Segment angles and lengths of a chain arm, and the forward limit of each hinge.
 
     The last segment is long enough that its head, tilted back or swung down with
@@ -155,7 +220,7 @@ def _chain_plan(p: dict, q: dict, kinds: list[str], lean: float, mid: float, las
     the ground, the middle segment and then the lean of the first shrink; failing
     that the hinge turns less far forward (never less than pi/12).
     """
-    n, H, tilt = len(kinds), q["H"], p["head_tilt"]
+    n, H, tilt = len(kinds), q.H, p["head_tilt"]
     head = _pendant(p, q, tilt)
     back = _swing_back(head, tilt)
     swing = _swing_back(head, PITCH)  # the segment before the head turned down
@@ -167,8 +232,8 @@ def _chain_plan(p: dict, q: dict, kinds: list[str], lean: float, mid: float, las
         for k in range(1, n):
             share = 0.75 * reach / (n - 1) / math.cos(angles[k])
             if k == n - 1:
-                clear = q["r_h"] + 0.015
-                share = max(share, (back + clear) / math.cos(angles[k]), q["rs"] + 0.05,
+                clear = q.r_h + 0.015
+                share = max(share, (back + clear) / math.cos(angles[k]), q.rs + 0.05,
                             (swing + clear) / math.cos(abs(angles[k]) + PITCH))
             else:
                 share = max(share * 0.8 ** attempt, 0.06)
@@ -176,9 +241,9 @@ def _chain_plan(p: dict, q: dict, kinds: list[str], lean: float, mid: float, las
         lengths[0] = 1.0
         pivots, E = _chain_points(q, kinds, angles, lengths, top0)
         zmax = max(P[2] for P in pivots[1:] + [E]) - (top0 + math.sin(angles[0]))
-        lengths[0] = max((H - q["r_h"] - top0 - zmax) / math.sin(angles[0]), 0.1)
+        lengths[0] = max((H - q.r_h - top0 - zmax) / math.sin(angles[0]), 0.1)
         pivots, E = _chain_points(q, kinds, angles, lengths, top0)
-        if all(_lowest(P, E, head, PITCH) >= q["z_b"] + 0.01
+        if all(_lowest(P, E, head, PITCH) >= q.z_b + 0.01
                for P, kind in zip(pivots, kinds) if kind == "pitch"):
             break
         if attempt >= 4:
@@ -187,13 +252,13 @@ def _chain_plan(p: dict, q: dict, kinds: list[str], lean: float, mid: float, las
     forward = []
     for P, kind in zip(pivots, kinds):
         a = PITCH
-        while kind == "pitch" and a > math.pi / 12 and _lowest(P, E, head, a) < q["z_b"] + 0.01:
+        while kind == "pitch" and a > math.pi / 12 and _lowest(P, E, head, a) < q.z_b + 0.01:
             a -= math.radians(1)
         forward.append(a)
-    return dict(kinds=kinds, angles=angles, lengths=lengths, top0=top0, forward=forward, reach_x=float(E[0]))
+    return ChainPlan(tuple(kinds), tuple(angles), tuple(lengths), top0, tuple(forward), float(E[0]))
 
 
-def _chain_points(q: dict, kinds: list[str], angles: list[float], lengths: list[float],
+def _chain_points(q: LampPlan, kinds: list[str], angles: list[float], lengths: list[float],
                   top0: float) -> tuple[list[np.ndarray], np.ndarray]:
     """The pivot of every chain joint and the head's hinge, at rest (mirrors ``_chain_arm``)."""
     P = np.array([0.0, 0.0, top0])
@@ -204,13 +269,13 @@ def _chain_points(q: dict, kinds: list[str], angles: list[float], lengths: list[
             P = P + lengths[k] * np.array([math.cos(angles[k]), 0.0, math.sin(angles[k])])
         else:
             s = 1.0 if angles[k - 1] > math.radians(30) else -1.0
-            C = P + (0.0, 0.0, s * (q["r_x"] + GAP + COLLAR_LEN / 2))
+            C = P + (0.0, 0.0, s * (q.r_x + GAP + COLLAR_LEN / 2))
             pivots.append(C)
             P = C + (lengths[k], 0.0, 0.0)
     return pivots, P
 
 
-def _lowest(P: np.ndarray, E: np.ndarray, head: dict, turn: float) -> float:
+def _lowest(P: np.ndarray, E: np.ndarray, head: Pendant, turn: float) -> float:
     """Lowest point of a head hanging at ``E`` when a hinge at ``P`` turns it forward by ``turn``."""
     X, Z = E[0] - P[0], E[2] - P[2]
     return P[2] + Z * math.cos(turn) - X * math.sin(turn) - _swing_down(head, turn)
@@ -220,10 +285,10 @@ def _tube_wall(r_up: float) -> float:
     return max(0.0015, 0.2 * r_up)
 
 
-def _knuckle(r_up: float) -> dict:
+def _knuckle(r_up: float) -> Knuckle:
     """Sizes of the hinges of a chain arm, from the pole radius."""
     w = 2 * (r_up + 0.003)  # width of a central hub
-    return dict(
+    return Knuckle(
         w_c=w,
         r_h=r_up + 0.004,  # hub and cheek radius
         r_c=min(0.0075, w / 2 - 0.0015),  # central bar radius (up to a 15 mm tube)
@@ -238,10 +303,10 @@ ROTARY_TURN = 5.2  # a rotary dimmer knob turns about 300 degrees end to end (Lu
 ROTARY_H = 0.014  # knob height above its boss
 
 
-def _on_base_top(p: dict, q: dict, half: float) -> tuple[float, float]:
+def _on_base_top(p: dict, q: LampPlan, half: float) -> tuple[float, float]:
     """``(radius, height)`` on the base's top where a control ``half`` wide (radially) sits: near the rim of
     a square or round base, in the middle of a dome's flat rim."""
-    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+    R, t, shape = q.R, p["base_thickness"], p["base_shape"]
     if shape == "square":
         return 0.9 * R - half - 0.006, t
     if shape == "round":
@@ -249,12 +314,12 @@ def _on_base_top(p: dict, q: dict, half: float) -> tuple[float, float]:
     return 0.85 * R, 0.5 * t
 
 
-def _rotary(bp: Blueprint, p: dict, q: dict) -> None:
+def _rotary(bp: Blueprint, p: dict, q: LampPlan) -> None:
     """A rotary dimmer knob standing on the base's top (on a dome's flat rim), turning about z: a boss in the
     base, the knob 1 mm above it with a pointer rib on top. About a vertical axis it is neutral under gravity."""
-    r_k = float(np.clip(0.1 * q["R"], 0.008, 0.012))
+    r_k = float(np.clip(0.1 * q.R, 0.008, 0.012))
     rho, z = _on_base_top(p, q, r_k)
-    a = q["switch_angle"]
+    a = q.switch_angle
     c = np.array([rho * math.cos(a), rho * math.sin(a), 0.0])
     boss = g.cylinder(c + (0, 0, z - 0.001), c + (0, 0, z + 0.003), 0.45 * r_k, "switch", 20)
     knob = [g.cylinder(c + (0, 0, z + 0.004), c + (0, 0, z + 0.004 + ROTARY_H), r_k, "switch", 32),
@@ -265,7 +330,7 @@ def _rotary(bp: Blueprint, p: dict, q: dict) -> None:
     bp.join(J.revolute("base", "switch", c + (0, 0, z + 0.004), (0, 0, 1), 0.0, ROTARY_TURN, role="knob"))
 
 
-def _rocker(bp: Blueprint, p: dict, q: dict) -> None:
+def _rocker(bp: Blueprint, p: dict, q: LampPlan) -> None:
     """A rocker switch (:func:`~categories.parts.hardware.rocker_switch`) on the base's top (on a dome's
     flat rim), its long side along the base radius: the bezel is the base's, the paddle tilts about the
     tangent. Balanced on its pivot, it rests on its "off" stop."""
@@ -273,8 +338,8 @@ def _rocker(bp: Blueprint, p: dict, q: dict) -> None:
 
     half = ROCKER["length"] / 2
     rho, z = _on_base_top(p, q, half)
-    rho = max(rho, q["r_lo"] + half + 0.008)  # clear of the lower pole's tube
-    a = q["switch_angle"]
+    rho = max(rho, q.r_lo + half + 0.008)  # clear of the lower pole's tube
+    a = q.switch_angle
     rocker = rocker_switch("switch").attached(
         "mount", to=Frame.at((rho * math.cos(a), rho * math.sin(a), z), x=(math.cos(a), math.sin(a), 0.0)))
     bp.extend("base", rocker.parts["bezel"].pieces)
@@ -288,13 +353,13 @@ SOCKET_KNOB = (0.0025, 0.004, 0.0065, 0.009)  # stem radius and length, knob rad
 #                                              sockets: a 12-14 mm knurled knob on a 4-5 mm stem)
 
 
-def _socket_knob(bp: Blueprint, p: dict, q: dict, r_so: float, z: float, prof: np.ndarray, th: float,
+def _socket_knob(bp: Blueprint, p: dict, q: LampPlan, r_so: float, z: float, prof: np.ndarray, th: float,
                  z0: float) -> None:
     """The knob of a turn-knob socket (the classic table lamp switch: each turn clicks it on or off), standing
     out of the socket's side between two spokes, 1 mm off the shell, turning about its own radial axis:
     balanced on that axis, gravity leaves it where it is. A shade too narrow there keeps the knob shorter."""
     r_st, l_st, r_k, l_k = SOCKET_KNOB
-    a = math.pi / 2 + math.pi / q["spokes"]
+    a = math.pi / 2 + math.pi / q.spokes
     d = np.array([math.cos(a), math.sin(a), 0.0])
     room = float(_inner_radius(prof, th, z0, np.array([z - r_k, z, z + r_k])).min()) - r_so - 0.004
     l_k = float(np.clip(room - l_st - 0.001, 0.004, l_k))
@@ -310,15 +375,15 @@ def _socket_knob(bp: Blueprint, p: dict, q: dict, r_so: float, z: float, prof: n
 # assembly at a given pole top height
 
 
-def _stand(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
+def _stand(bp: Blueprint, p: dict, q: LampPlan, z_top: float) -> None:
     """The base, its switch and the poles, the upper pole's top at ``z_top``."""
-    z_b = q["z_b"]
+    z_b = q.z_b
     _base(bp, p, q)
     if p["has_switch"] and p.get("switch_kind") != "socket_switch":
         {"rotary_switch": _rotary, "rocker_switch": _rocker}.get(p.get("switch_kind"), _switch)(bp, p, q)
 
     # --- lower pole: a tube on the base; upper pole slides and turns in it ----
-    r_up, r_lo, r_mid = q["r_up"], q["r_lo"], q["r_mid"]
+    r_up, r_lo, r_mid = q.r_up, q.r_lo, q.r_mid
     tw = _tube_wall(r_mid or r_up)
     S = z_top - z_b
     T = p["lower_pole_fraction"] * S
@@ -352,13 +417,13 @@ def _stand(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
                                  (0, 0, 1), (0.0, slide), role="telescope"))
 
 
-def _head(p: dict, q: dict, z_top: float) -> Blueprint:
+def _head(p: dict, q: LampPlan, z_top: float) -> Blueprint:
     """What the upper pole carries (head, arm, shade, bulb), its top at ``z_top``, in a blueprint whose
     ``upper_pole`` holds a stand-in block at the pole top (the first piece) and what the arm adds to it."""
     bp = Blueprint("lamp")
-    r = q["r_up"]
+    r = q.r_up
     bp.add("upper_pole", "pole", [g.box_between((-r, -r, z_top - r), (r, r, z_top), "pole")])
-    style = q["style"]
+    style = q.style
     if style == "straight":
         _upright_head(bp, p, q, z_top)
     elif style == "curved":
@@ -381,13 +446,13 @@ def _move_head(bp: Blueprint, head: Blueprint, dz: float) -> None:
                                       for f in j.dofs)))
 
 
-def _base(bp: Blueprint, p: dict, q: dict) -> None:
-    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+def _base(bp: Blueprint, p: dict, q: LampPlan) -> None:
+    R, t, shape = q.R, p["base_thickness"], p["base_shape"]
     if shape == "tripod":
-        bp.add("base", "base", _tripod(q["r_lo"], R, q["z_b"]))
+        bp.add("base", "base", _tripod(q.r_lo, R, q.z_b))
         return
     if shape == "clamp":
-        _clamp(bp, q["r_lo"])
+        _clamp(bp, q.r_lo)
         return
     if shape == "square":
         a = 0.9 * R
@@ -395,8 +460,8 @@ def _base(bp: Blueprint, p: dict, q: dict) -> None:
     elif shape == "round":
         piece = g.revolve([(0, 0), (R, 0), (R, 0.6 * t), (R - 0.4 * t, t), (0, t)], "base")
     else:
-        rim, z_rim, z_b = 0.3 * R, 0.5 * t, q["z_b"]
-        r_top = q["r_lo"] + 0.009
+        rim, z_rim, z_b = 0.3 * R, 0.5 * t, q.z_b
+        r_top = q.r_lo + 0.009
         prof = [(0, 0), (R, 0), (R, z_rim), (R - rim, z_rim)]
         for f in np.linspace(0, math.pi / 2, 7)[1:]:
             prof.append((r_top + (R - rim - r_top) * math.cos(f), z_rim + (z_b - z_rim) * math.sin(f)))
@@ -468,14 +533,14 @@ def _weight(shape: str, R: float, t: float, prof: list | None = None) -> g.Piece
     return w.replace(convex=[])
 
 
-def _switch(bp: Blueprint, p: dict, q: dict) -> None:
+def _switch(bp: Blueprint, p: dict, q: LampPlan) -> None:
     """A push button in a small housing on the base, pressed horizontally toward the pole.
 
     The housing (part of the base) is a box open to the outside: floor, roof, two
     side walls and a back wall around a pocket; the button slides in the pocket
     along the base radius, so gravity exerts no force along its stroke.
     """
-    R, t, shape = q["R"], p["base_thickness"], p["base_shape"]
+    R, t, shape = q.R, p["base_thickness"], p["base_shape"]
     r_sw = float(np.clip(0.1 * R, 0.007, 0.012))
     hw = 0.45 * r_sw  # half width and half height of the button
     w, travel = SWITCH_WALL, SWITCH_TRAVEL
@@ -483,9 +548,9 @@ def _switch(bp: Blueprint, p: dict, q: dict) -> None:
     x_front = w + GAP + travel + ins  # housing front face from its back
     length = x_front + out
     if shape == "square":
-        edge, z, inner = 0.9 * R - 0.003, t, q["r_lo"] + 0.016
+        edge, z, inner = 0.9 * R - 0.003, t, q.r_lo + 0.016
     elif shape == "round":
-        edge, z, inner = R - 0.4 * t - 0.002, t, q["r_lo"] + 0.016
+        edge, z, inner = R - 0.4 * t - 0.002, t, q.r_lo + 0.016
     else:  # on the flat rim, its back against the dome
         edge, z, inner = R - 0.002, 0.5 * t, 0.7 * R - 0.0005
     x0 = max(edge - length, inner)
@@ -501,7 +566,7 @@ def _switch(bp: Blueprint, p: dict, q: dict) -> None:
     x_b = x0 + w + GAP + travel  # button inner end at rest (GAP from the back wall when pressed)
     button = g.box_between((x_b, -hw, zc0 + GAP), (x0 + length, hw, zc1 - GAP), "switch",
                            bevel=min(0.001, 0.2 * hw))
-    a = q["switch_angle"]
+    a = q.switch_angle
     m = np.eye(4)
     m[:3, :3] = [[math.cos(a), -math.sin(a), 0], [math.sin(a), math.cos(a), 0], [0, 0, 1]]
     bp.extend("base", [pc.transformed(m) for pc in local])
@@ -589,9 +654,9 @@ def _shade_thickness(p: dict) -> float:
 # heads
 
 
-def _upright_head(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
+def _upright_head(bp: Blueprint, p: dict, q: LampPlan, z_top: float) -> None:
     """A collar around the pole top, a cup and socket, the bulb standing up, spokes, shade."""
-    r_up, rb = q["r_up"], q["rs"]
+    r_up, rb = q.r_up, q.rs
     shape = p["shade_shape"]
     th = _shade_thickness(p)
     r_so = float(np.clip(0.15 * rb, 0.011, 0.016))
@@ -617,7 +682,7 @@ def _upright_head(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
         lo, hi = z_sb, z_sb + tip + BULB_TRAVEL + GAP
         # the shade hangs on the spokes, raised to cover the bulb where it is tall enough
         hs = prof[-1, 1]
-        z0 = min(z_sp - 0.012, max(z_sp - q["shade_drop"] * hs, z_sb + tip + 0.01 - hs))
+        z0 = min(z_sp - 0.012, max(z_sp - q.shade_drop * hs, z_sb + tip + 0.01 - hs))
         if shape == "dome" and z0 + hs < hi + 0.01:
             h *= 1.08
             prof = _shade_profile(shape, rb, h, p["shade_top_ratio"], r_top_min)
@@ -634,8 +699,8 @@ def _upright_head(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
         shade.append(g.disc((0, 0, z1 + 0.003), prof[-1, 0] + 0.004, 0.006, "fitting"))
         shade.append(g.sphere((0, 0, z1 + 0.009), 0.007, "fitting"))
     r_wall = float(_inner_radius(prof, th, z0, np.array([z_sp]))[0]) + th / 2
-    for k in range(q["spokes"]):
-        a = 2 * math.pi * k / q["spokes"] + math.pi / 2
+    for k in range(q.spokes):
+        a = 2 * math.pi * k / q.spokes + math.pi / 2
         d = np.array([math.cos(a), math.sin(a), 0.0])
         shade.append(g.cylinder(d * (r_so - 0.001) + (0, 0, z_sp), d * r_wall + (0, 0, z_sp), 0.0018,
                                 "fitting", 8))
@@ -654,13 +719,32 @@ def _upright_head(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
                                        (0.0, BULB_TRAVEL), role="lid"))
 
 
-def _pendant(p: dict, q: dict, tilt: float | None) -> dict:
+@dataclass(frozen=True, eq=False)
+class Pendant:
+    """A hanging head's sizes (:func:`_pendant`): shade wall, profile and height, socket, cap and bulb, how far
+    the cap hangs below the mount (``d_neck``) and the head's outline ``pts``."""
+
+    th: float
+    r_so: float  # socket radius
+    prof: np.ndarray  # shade profile (radius, height)
+    hs: float  # shade height
+    r_cap: float
+    h_cap: float
+    r_sc: float  # bulb screw radius
+    r_g: float  # bulb glass radius
+    bulb_prof: np.ndarray
+    tip: float
+    d_neck: float
+    pts: tuple[tuple[float, float], ...]  # (radius, depth below the mount), the bulb fully unscrewed included
+
+
+def _pendant(p: dict, q: LampPlan, tilt: float | None) -> Pendant:
     """Sizes of a hanging head (cap, socket, shade, bulb) and how far its cap hangs below the mount.
 
     ``pts`` are ``(radius, depth below the mount)`` of the head's outline, bulb
     fully unscrewed included, for reasoning about the space a turning head sweeps.
     """
-    rb, shape = q["rs"], p["shade_shape"]
+    rb, shape = q.rs, p["shade_shape"]
     th = _shade_thickness(p)
     r_so = float(np.clip(0.16 * rb, 0.010, 0.015))
     prof = _shade_profile(shape, rb, _shade_height(p, shape, rb), p["shade_top_ratio"], r_so + 0.004 + th)
@@ -677,31 +761,30 @@ def _pendant(p: dict, q: dict, tilt: float | None) -> dict:
         if r_g <= 0.012 or _fits(prof, th, -hs, lo, hi, r_g + 0.005):
             break
         r_g *= 0.95
-    outline = [(0.6 * r_cap, 0.0), (r_cap, h_cap - 0.004), (0.7 * q["r_h"], -0.005)]
+    outline = [(0.6 * r_cap, 0.0), (r_cap, h_cap - 0.004), (0.7 * q.r_h, -0.005)]
     outline += [(float(r), h_cap + hs - float(z)) for r, z in prof]
     outline += [(r_g, h_cap + SOCKET_LEN + 0.004 + tip + BULB_TRAVEL)]
     if tilt is None:
-        d_neck = q["r_x"] + GAP + COLLAR_LEN  # collar below the pin block
+        d_neck = q.r_x + GAP + COLLAR_LEN  # collar below the pin block
     else:  # a tilted head must stay under the parent's bars
-        r_par = 1.15 * q["r_h"] + GAP
+        r_par = 1.15 * q.r_h + GAP
         sa, ca = math.sin(tilt), math.cos(tilt)
-        d_neck = max(q["r_h"] + GAP + 0.008, max((r_par + r * sa) / ca - d for r, d in outline))
-    return dict(th=th, r_so=r_so, prof=prof, hs=hs, r_cap=r_cap, h_cap=h_cap, r_sc=r_sc, r_g=r_g,
-                bulb_prof=bulb_prof, tip=tip, d_neck=d_neck,
-                pts=[(r, d + d_neck) for r, d in outline])
+        d_neck = max(q.r_h + GAP + 0.008, max((r_par + r * sa) / ca - d for r, d in outline))
+    return Pendant(th, r_so, prof, hs, r_cap, h_cap, r_sc, r_g, bulb_prof, tip, d_neck,
+                   tuple((r, d + d_neck) for r, d in outline))
 
 
-def _swing_back(head: dict, tilt: float) -> float:
+def _swing_back(head: Pendant, tilt: float) -> float:
     """How far behind its hinge a head reaches when tilted back by ``tilt``."""
-    return max(r * math.cos(tilt) + d * math.sin(tilt) for r, d in head["pts"])
+    return max(r * math.cos(tilt) + d * math.sin(tilt) for r, d in head.pts)
 
 
-def _swing_down(head: dict, turn: float) -> float:
+def _swing_down(head: Pendant, turn: float) -> float:
     """How far below its mount a head reaches when turned by ``turn`` (about a horizontal axis)."""
-    return max(d * math.cos(turn) + r * math.sin(turn) for r, d in head["pts"])
+    return max(d * math.cos(turn) + r * math.sin(turn) for r, d in head.pts)
 
 
-def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: np.ndarray,
+def _hanging_head(bp: Blueprint, p: dict, q: LampPlan, parent: str, mount: str, E: np.ndarray,
                   tilt: float | None) -> None:
     """A head hanging below ``E``.
 
@@ -712,10 +795,10 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
     turns freely about Z.
     """
     hd = _pendant(p, q, tilt)
-    prof, hs, r_cap, h_cap, r_so = hd["prof"], hd["hs"], hd["r_cap"], hd["h_cap"], hd["r_so"]
+    prof, hs, r_cap, h_cap, r_so = hd.prof, hd.hs, hd.r_cap, hd.h_cap, hd.r_so
     cap_slot = "shade" if p["shade_finish"] == "painted" else "pole"
     x, y = E[0], E[1]
-    z_c = E[2] - hd["d_neck"]  # cap top
+    z_c = E[2] - hd.d_neck  # cap top
     z_cb = z_c - h_cap  # cap bottom = shade top = socket top
     # the socket: a moulded shell with a 3 mm wall, closed at the cable end (an E27 pendant socket is a
     # solid bakelite or porcelain part of 30-60 g; a 2 mm open ring left a floor arc lamp's head at 9.7 g)
@@ -723,7 +806,7 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
         _ring([(r_so, z_cb - SOCKET_LEN), (r_so, z_cb)], SOCKET_WALL, "fitting", center=(x, y, 0)),
         g.disc((x, y, z_cb - 0.001), r_so - SOCKET_WALL, 0.002, "fitting", 24),
     ]
-    w, r_h = q["w_c"], q["r_h"]
+    w, r_h = q.w_c, q.r_h
     if mount == "yoke":
         y_in, y_out = w / 2 + GAP, w / 2 + GAP + 2 * TWIN_R
         for s in (-1, 1):
@@ -736,9 +819,9 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
                                   (x + 0.7 * r_h, y_out - TWIN_R / 2, z_c + 0.003), "pole"))
     elif mount == "hub":
         head.append(g.cylinder((x, -w / 2, E[2]), (x, w / 2, E[2]), r_h, "pole"))
-        head.append(g.cylinder((x, 0, E[2]), (x, 0, z_c - 0.002), q["r_c"], "pole"))
+        head.append(g.cylinder((x, 0, E[2]), (x, 0, z_c - 0.002), q.r_c, "pole"))
     else:  # collar around the parent's pin
-        r_in = q["r_pin"] + GAP
+        r_in = q.r_pin + GAP
         head.append(_ring([(r_in + 0.002, z_c - 0.001), (r_in + 0.002, z_c + COLLAR_LEN)], 0.002, "pole",
                             center=(x, y, 0)))
     bp.add("head", "head", head)
@@ -747,15 +830,15 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
     else:
         bp.join(J.revolute(parent, "head", (x, y, E[2]), (0, -1, 0), -tilt, tilt, role="swivel"))
 
-    bp.add("shade", "shade", [g.shell(prof, hd["th"], "shade", center=(x, y, z_cb - hs))])
+    bp.add("shade", "shade", [g.shell(prof, hd.th, "shade", center=(x, y, z_cb - hs))])
     bp.join(J.fixed("head", "shade"))
 
     if p["has_bulb"]:
-        bulb_prof, tip = hd["bulb_prof"], hd["tip"]
+        bulb_prof, tip = hd.bulb_prof, hd.tip
         z_sb = z_cb - SOCKET_LEN - 0.004
         glass = np.vstack([[0.0, z_sb - tip], np.c_[bulb_prof[::-1, 0], z_sb - bulb_prof[::-1, 1]][1:],
                            [[0.0, z_sb]]])
-        pieces = [_tube((x, y, z_cb - 0.003), (x, y, z_sb - 0.0005), hd["r_sc"], 24, "bulb_cap", 0.0004),
+        pieces = [_tube((x, y, z_cb - 0.003), (x, y, z_sb - 0.0005), hd.r_sc, 24, "bulb_cap", 0.0004),
                   _glass(glass, (x, y, 0.0))]
         bp.add("bulb", "bulb", pieces)
         # it only turns: gravity would pull a hanging bulb out along a free slide (the head
@@ -767,9 +850,9 @@ def _hanging_head(bp: Blueprint, p: dict, q: dict, parent: str, mount: str, E: n
 # arms
 
 
-def _curved_arm(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
+def _curved_arm(bp: Blueprint, p: dict, q: LampPlan, z_top: float) -> None:
     """A fixed arc of tube from the pole top, bending forward and down; the head hangs at its end."""
-    rc, pe, r = q["arc_radius"], q["curve_end"], q["r_up"]
+    rc, pe, r = q.arc_radius, q.curve_end, q.r_up
     phis = np.linspace(math.pi, pe, 16)
     pts = [np.array([rc + rc * math.cos(f), 0.0, z_top + rc * math.sin(f)]) for f in phis]
     pieces = []
@@ -778,27 +861,27 @@ def _curved_arm(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
         d = (b - a) / np.linalg.norm(b - a)
         pieces.append(_tube(a - d * (ext if i else 0.0), b + d * ext, r))
     E0 = pts[-1]
-    r_x = q["r_x"]
-    if q["floor"]:
+    r_x = q.r_x
+    if q.floor:
         pieces.append(g.sphere(E0, r_x, "pole"))  # a pin hangs from the end; the head turns on it
-        pieces.append(g.cylinder(E0, E0 - (0, 0, r_x + COLLAR_LEN), q["r_pin"], "pole", 16))
+        pieces.append(g.cylinder(E0, E0 - (0, 0, r_x + COLLAR_LEN), q.r_pin, "pole", 16))
         bp.add("arm", "arm", pieces)
         bp.join(J.fixed("upper_pole", "arm"))
         _hanging_head(bp, p, q, "arm", "collar", E0, None)
     else:  # a short drop to a hub; the head tilts on it
-        E = E0 - (0, 0, q["r_h"] + 0.006)
+        E = E0 - (0, 0, q.r_h + 0.006)
         pieces.append(g.sphere(E0, r, "pole"))
         pieces.append(g.cylinder(E0, E, 0.8 * r, "pole", 16))
-        pieces.append(g.cylinder(E - (0, q["w_c"] / 2, 0), E + (0, q["w_c"] / 2, 0), q["r_h"], "pole"))
+        pieces.append(g.cylinder(E - (0, q.w_c / 2, 0), E + (0, q.w_c / 2, 0), q.r_h, "pole"))
         bp.add("arm", "arm", pieces)
         bp.join(J.fixed("upper_pole", "arm"))
         _hanging_head(bp, p, q, "arm", "yoke", E, p["head_tilt"])
 
 
-def _chain_arm(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
+def _chain_arm(bp: Blueprint, p: dict, q: LampPlan, z_top: float) -> None:
     """Segments hinged end to end; see the module docstring for the two joint kinds."""
-    w, r_h, r_c, y_tw = q["w_c"], q["r_h"], q["r_c"], q["y_tw"]
-    kinds, angles, lengths = q["kinds"], q["angles"], q["lengths"]
+    w, r_h, r_c, y_tw = q.w_c, q.r_h, q.r_c, q.y_tw
+    kinds, angles, lengths = q.chain.kinds, q.chain.angles, q.chain.lengths
     n = len(kinds)
     # the pole top is a central hub
     P = np.array([0.0, 0.0, z_top])
@@ -814,13 +897,13 @@ def _chain_arm(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
             pieces = _segment_body(q, kind, P, E)
             # +q lifts the arm, -q turns it forward and down; the core's rest_on_stops keeps the side
             # that lifts what it carries against gravity
-            lower = -q["forward"][k]
+            lower = -q.chain.forward[k]
             joint = J.revolute(parent, name, P, (0, -1, 0), lower, PITCH, role="swivel")
         else:  # swing arm on the parent's pin, horizontal
             kind = "central"
             s = 1.0 if parent_angle > math.radians(30) else -1.0
-            r_in = q["r_pin"] + GAP
-            z0 = P[2] + s * (q["r_x"] + GAP)
+            r_in = q.r_pin + GAP
+            z0 = P[2] + s * (q.r_x + GAP)
             z1 = z0 + s * COLLAR_LEN
             zc = (z0 + z1) / 2
             r_out = r_in + 0.002
@@ -839,11 +922,11 @@ def _chain_arm(bp: Blueprint, p: dict, q: dict, z_top: float) -> None:
         if nxt == "swivel":
             s = 1.0 if angles[k] > math.radians(30) else -1.0
             if kind == "twin":
-                pieces.append(g.box_between(E - (r_h, y_tw + TWIN_R, q["r_x"]), E + (r_h, y_tw + TWIN_R, q["r_x"]),
+                pieces.append(g.box_between(E - (r_h, y_tw + TWIN_R, q.r_x), E + (r_h, y_tw + TWIN_R, q.r_x),
                                             "pole"))
             else:
-                pieces.append(g.sphere(E, q["r_x"], "pole"))
-            pieces.append(g.cylinder(E, E + (0, 0, s * (q["r_x"] + COLLAR_LEN)), q["r_pin"], "pole", 16))
+                pieces.append(g.sphere(E, q.r_x, "pole"))
+            pieces.append(g.cylinder(E, E + (0, 0, s * (q.r_x + COLLAR_LEN)), q.r_pin, "pole", 16))
         bp.add(name, "arm", pieces)
         bp.join(joint)
         parent, parent_type, parent_angle, P = name, kind, angles[k], E
@@ -881,11 +964,11 @@ def _ycyl(c: np.ndarray, y0: float, y1: float, r: float) -> g.Piece:
     return g.cylinder((c[0], y0, c[2]), (c[0], y1, c[2]), r, "pole", 20)
 
 
-def _segment_body(q: dict, kind: str, P: np.ndarray, E: np.ndarray) -> list[g.Piece]:
+def _segment_body(q: LampPlan, kind: str, P: np.ndarray, E: np.ndarray) -> list[g.Piece]:
     """Bars of a pitch segment from hinge ``P`` to ``E`` with their hinge ends."""
-    w, r_h, y_tw = q["w_c"], q["r_h"], q["y_tw"]
+    w, r_h, y_tw = q.w_c, q.r_h, q.y_tw
     if kind == "central":
-        return [_ycyl(P, -w / 2, w / 2, r_h), _tube(P, E, q["r_c"]),
+        return [_ycyl(P, -w / 2, w / 2, r_h), _tube(P, E, q.r_c),
                 _ycyl(E, -w / 2, w / 2, r_h)]
     out = []
     for s in (-1, 1):

@@ -25,18 +25,21 @@ ROWS_ALWAYS_FIT = 3  # key rows a column panel always holds (shrinking the keys)
 STRIP_ROWS = 4  # key rows a drawer model's strip takes (two rows of up to six keys)
 
 
-def size(W: float, D: float, H: float, design: str) -> tuple[float, float, float]:
-    """(width, depth, height) of a design from the parameters' width, depth and height: counter-top
-    models use them; an over-the-range and a drawer model take the sizes of :data:`MICROWAVE`."""
-    if design == "over_the_range":
-        otr = M["over_the_range"]
-        return otr["width"], min(max(D, otr["depth"][0]), otr["depth"][1]), \
-            min(max(H + otr["taller"], otr["height"][0]), otr["height"][1])
-    if design == "drawer_model":
-        dr = M["drawer_model"]
-        return (dr["widths"][0] if W < dr["narrow_below"] else dr["widths"][1]), \
-            dr["depth"][0] + dr["depth"][1] * (D - dr["param_depth"][0]) / dr["param_depth"][1], dr["height"]
-    return W, D, H
+def _over_the_range(W: float, D: float, H: float) -> tuple[float, float, float]:
+    otr = M["over_the_range"]
+    return otr["width"], min(max(D, otr["depth"][0]), otr["depth"][1]), \
+        min(max(H + otr["taller"], otr["height"][0]), otr["height"][1])
+
+
+def _drawer_model(W: float, D: float, H: float) -> tuple[float, float, float]:
+    dr = M["drawer_model"]
+    return (dr["widths"][0] if W < dr["narrow_below"] else dr["widths"][1]), \
+        dr["depth"][0] + dr["depth"][1] * (D - dr["param_depth"][0]) / dr["param_depth"][1], dr["height"]
+
+
+SIZES = {"over_the_range": _over_the_range, "drawer_model": _drawer_model}
+"""Designs whose size is not the parameters' (:func:`~.appliance.size`): an over-the-range and a drawer
+model take the sizes of :data:`MICROWAVE`; counter-top models use the parameters."""
 
 
 def steel_sheet(family: str) -> float:
@@ -67,6 +70,49 @@ class Body:
     def fascia_xs(self) -> tuple[float, float]:
         """The fascia's back (the bezel plane) and front face."""
         return self.outer[1:3]
+
+    @property
+    def hinge(self) -> Frame:
+        """The door's hinge: on its front face at the left edge, about -Z (it swings out and to the left)."""
+        return Frame.at((self.x_front, self.door_ys[0], self.zs[0]), z=(0, 0, -1))
+
+    @property
+    def handle_at(self) -> Frame:
+        """The door's free edge at mid height on its front face (z out of it, x up): where a handle goes."""
+        zs = self.zs
+        return Frame.at((self.x_front, self.door_ys[1], (zs[0] + zs[1]) / 2), z=(1, 0, 0), x=(0, 0, 1))
+
+    @property
+    def door_height(self) -> float:
+        return self.zs[1] - self.zs[0]
+
+    @property
+    def strip(self) -> bool:
+        """Whether the control panel is a drawer model's wide strip (else a column beside the door)."""
+        ys, zs = self.panel_ys, self.panel_zs
+        return ys[1] - ys[0] > 2 * (zs[1] - zs[0])
+
+
+def dial_count(knob_count: int, has_buttons: bool, rng) -> int:
+    """``knob_count``; auto: 1 beside a keypad, without one 1 or 2 (drawn): a timer dial alone (Sharp
+    R-21LVF) or timer and power dials (most manual counter-top models)."""
+    if knob_count:
+        return knob_count
+    return 1 if has_buttons else 1 + int(rng.integers(0, 2))
+
+
+def key_count(rows: int, bottom_keys: int) -> int:
+    """Push keys: three a row, the bottom row three keys or two wide ones (Stop/Cancel and Start under the
+    number pad, as on GE JES1072 and Panasonic NN-ST66 keypads)."""
+    return 3 * rows - (3 - bottom_keys)
+
+
+def turntable(cavity, fraction: float) -> tuple[g.Piece, list[g.Piece], Frame, dict]:
+    """The turntable on the cavity floor: the spindle (fixed to the body), the tray on its roller ring,
+    its spin axis, and where a rack stands on it (:func:`rack_on_plate`)."""
+    c, radius = plate_fit(cavity, fraction)
+    cz0 = cavity[4]
+    return A.spindle(c, cz0), A.turntable(c, cz0, radius), Frame.at((*c, cz0)), rack_on_plate(cavity, c, radius)
 
 
 def countertop(W, D, H, wall, door_thickness, feet, panel_fraction, vent: bool) -> Body:
@@ -313,7 +359,8 @@ def column_panel(xp, ys, zs, n_keys, n_dials, release: bool, knob_radius, button
         proud = K["release_proud"]
         piece = g.box_between([xp - A.BEHIND, yc - half[0], zr - half[1]], [xp + proud, yc + half[0], zr + half[1]],
                               "button", bevel=0.003)
-        panel.buttons.append(("door_release", piece, Frame.at((xp + proud, yc, zr), z=(-1, 0, 0)), rh / 8, True))
+        panel.buttons.append(A.Control("door_release", (piece,), Frame.at((xp + proud, yc, zr), z=(-1, 0, 0)), rh / 8,
+                                       release=True))
     if n_dials:
         span = (z - z_floor) / n_dials
         for k in range(n_dials):
@@ -323,7 +370,7 @@ def column_panel(xp, ys, zs, n_keys, n_dials, release: bool, knob_radius, button
             stem = max(K["stem"], K["stem_share"] * r_k)
             panel.holes.append(A.hole_around(yc, zk, (stem, stem)))
             axis = Frame.at((xp, yc, zk), z=(1, 0, 0))
-            panel.dials.append((f"knob_{k}", A.dial(xp, yc, zk, r_k, stem, style), axis))
+            panel.dials.append(A.Control(f"knob_{k}", tuple(A.dial(xp, yc, zk, r_k, stem, style)), axis))
     return panel
 
 
@@ -345,8 +392,8 @@ def _button_grid(panel, xp, yc, pw, z, bh, gap, n_keys, shape):
                 half = (rad, rad)
             panel.holes.append(A.hole_around(y, zb, half))
             piece = A.push_button(xp, y, zb, half, shape, proud)
-            panel.buttons.append((f"button_{r}_{c}", piece, Frame.at((xp + proud, y, zb), z=(-1, 0, 0)),
-                                  half[1] / 4, None))
+            panel.buttons.append(A.Control(f"button_{r}_{c}", (piece,), Frame.at((xp + proud, y, zb), z=(-1, 0, 0)),
+                                           half[1] / 4))
         z -= K["row_pitch"] * bh + gap
     return z
 
@@ -379,8 +426,8 @@ def strip_panel(xp, ys, zs, n_keys, n_dials, knob_radius, button_height, shape, 
             r, c = divmod(k, ncol)
             yk, zk = y + half[0] + c * pitch_y, zc + (0.5 * (nrow - 1) - r) * pitch_z
             panel.holes.append(A.hole_around(yk, zk, half))
-            panel.buttons.append((f"button_{r}_{c}", A.push_button(xp, yk, zk, half, shape, proud),
-                                  Frame.at((xp + proud, yk, zk), z=(-1, 0, 0)), half[1] / 4, None))
+            panel.buttons.append(A.Control(f"button_{r}_{c}", (A.push_button(xp, yk, zk, half, shape, proud),),
+                                           Frame.at((xp + proud, yk, zk), z=(-1, 0, 0)), half[1] / 4))
         y += ncol * pitch_y + S["keys_gap"]
     if keypad:
         panel.decor.append(g.box_between([xp - 0.001, y, zc - half_h], [xp + 0.001, y + S["membrane"], zc + half_h],
@@ -391,7 +438,8 @@ def strip_panel(xp, ys, zs, n_keys, n_dials, knob_radius, button_height, shape, 
         stem = max(K["stem"], K["stem_share"] * r_k)
         style = _dial_style(rng)
         panel.holes.append(A.hole_around(yk, zc, (stem, stem)))
-        panel.dials.append((f"knob_{k}", A.dial(xp, yk, zc, r_k, stem, style), Frame.at((xp, yk, zc), z=(1, 0, 0))))
+        panel.dials.append(A.Control(f"knob_{k}", tuple(A.dial(xp, yk, zc, r_k, stem, style)),
+                                     Frame.at((xp, yk, zc), z=(1, 0, 0))))
     return panel
 
 

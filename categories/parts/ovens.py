@@ -24,19 +24,7 @@ from .appliance_sizes import OVEN as O
 
 T = A.OVEN_PANEL
 HANDLE = hardware.HandleSize(**O["handle"])
-PAINTED_STEEL = 7850.0 / 750.0
-"""Sheet of a painted door or drawer is painted steel (7850 kg/m^3) but the painted family is massed
-as board (750 kg/m^3): its sheet counts this many times thicker (a 0.8 mm steel drawer ~2-3 kg)."""
 KNOB_TURN = O["knob_turn"]  # a revolute knob turns this far either way (rad)
-
-
-def painted_steel(pieces: list[g.Piece], finish: str) -> list[g.Piece]:
-    """Painted sheet pieces weigh as painted steel (:data:`PAINTED_STEEL`): the door's inner frame
-    (``door_inner``, always painted), the plinth and, on a painted oven (``finish``), its casing-finish
-    pieces."""
-    painted = {"door_inner", "plinth"} | ({"body", "door"} if finish == "painted" else set())
-    return [pc.replace(sheet=pc.sheet * PAINTED_STEEL) if pc.sheet > 0 and pc.material in painted else pc
-            for pc in pieces]
 
 
 @dataclass(frozen=True)
@@ -57,6 +45,41 @@ class Stack:
     door: tuple
     panel: tuple
     lower: dict | None
+
+    @property
+    def panel_box(self) -> dict:
+        """The control panel's ``xs``, ``ys`` (the door's width) and ``zs``."""
+        return dict(xs=self.panel[0], ys=self.door[2:4], zs=self.panel[1])
+
+
+GRATE_AXES = ((0, 0, 1), (1, 0, 0), (0, 1, 0))
+"""A loose grate's motion: it lifts off its feet (z), then has play forward (x) and sideways (y)."""
+THREE_GRATES_FROM = 0.7  # m: 24 in ranges carry two grates, 30 in and wider three (GE JB735, Frigidaire FGEF3036)
+
+
+def grate_count(width: float) -> int:
+    return 2 if width < THREE_GRATES_FROM else 3
+
+
+def burners_per_grate(n: int) -> list[int]:
+    """Burners under each of ``n`` grates: two, one under the middle of three."""
+    return [1 if (n == 3 and k == 1) else 2 for k in range(n)]
+
+
+def knob_count(style: str, burners: int, rng) -> int:
+    """One knob per burner + 1 on a range (+ 1 for a warming drawer; at most 8), 2-3 on a built-in oven,
+    4-5 on a double wall oven (a mode and a temperature knob per oven)."""
+    drawn = 2 + int(rng.integers(0, 2))
+    if style in ("range", "warming"):
+        drawn = min(8, burners + 1 + (style == "warming"))
+    elif style == "double_wall":
+        drawn = 4 + int(rng.integers(0, 2))
+    return drawn
+
+
+def free_level(rng, racks: int) -> int:
+    """The rail level left free among ``racks`` + 1 (drawn)."""
+    return int(rng.integers(0, racks + 1))
 
 
 def stack(W, D, height, door_thickness, design: str, panel_fraction, plinth, drawer_height, warming_height,
@@ -98,7 +121,7 @@ def stack(W, D, height, door_thickness, design: str, panel_fraction, plinth, dra
     return Stack(H, (xb, xf, xd1), (y0, y1), z_pl, z_dt, zs, z_dtop, gap_top, door, panel, lower)
 
 
-def section(xs, zs, z_dtop, ztop, frame_top, door_thickness, finish: str, keep_base: bool = True
+def section(xs, zs, z_dtop, ztop, frame_top, door_thickness, keep_base: bool = True
             ) -> tuple[list[g.Piece], tuple]:
     """One oven's casing (:func:`.appliance.oven_casing`: sides, back, floor, front frame, liner) from
     ``zs[0]`` up; returns its pieces and its cavity. ``keep_base``: with the plinth and the feet (the
@@ -116,46 +139,41 @@ def section(xs, zs, z_dtop, ztop, frame_top, door_thickness, finish: str, keep_b
     # weighed ~20 kg: ranges came out at 150-185 kg against 60-75 kg real)
     pieces = [pc.replace(sheet=A.OVEN_SHEET) if pc.material in ("body", "plinth") and not pc.sheet else pc
               for pc in pieces]
-    return painted_steel(pieces, finish), cav  # a painted casing is painted steel (a painted wall oven weighed 20 kg)
+    return pieces, cav
 
 
-def lower_section(lower: dict, door_thickness, finish: str) -> tuple[list[g.Piece], tuple, tuple]:
+def lower_section(lower: dict, door_thickness) -> tuple[list[g.Piece], tuple, tuple]:
     """A double wall oven's lower oven (the upper one is the usual section): its casing pieces, cavity and
     door box."""
     xb, xf, xd1 = lower["xs"]
     y0, y1 = lower["ys"]
     z_pl, z_dt, z_h, z_top, z_mid = lower["zs"]
-    pieces, cav = section((xb, xf, xd1, y0, y1), (z_pl, z_pl, z_dt, z_h), z_top, z_mid, z_mid, door_thickness,
-                          finish)
+    pieces, cav = section((xb, xf, xd1, y0, y1), (z_pl, z_pl, z_dt, z_h), z_top, z_mid, z_mid, door_thickness)
     e = O["door_side"]
     return pieces, cav, (xd1 - door_thickness, xd1, y0 + e, y1 - e, z_h, z_top)
 
 
-def fixed_drawer_front(st: Stack, finish: str) -> list[g.Piece]:
+def fixed_drawer_front(st: Stack) -> list[g.Piece]:
     """A built-in oven's fixed drawer front under the door, with a trim line."""
     (_, xf, xd1), (y0, y1) = st.xs, st.ys
     W = y1 - y0
     (t0, t1), tw = O["trim_line"]
-    return painted_steel([g.box_between([xf - T, y0, st.z_pl], [xd1, y1, st.z_dt], "body", bevel=0.002)
-                          .replace(sheet=A.OVEN_SHEET),
-                          g.box_between([xd1, -tw * W, st.z_dt - t0], [xd1 + 0.002, tw * W, st.z_dt - t1], "trim")],
-                         finish)
+    return [g.box_between([xf - T, y0, st.z_pl], [xd1, y1, st.z_dt], "body", bevel=0.002).replace(sheet=A.OVEN_SHEET),
+            g.box_between([xd1, -tw * W, st.z_dt - t0], [xd1 + 0.002, tw * W, st.z_dt - t1], "trim")]
 
 
-def top_cover(xs, ys, H, finish: str) -> list[g.Piece]:
+def top_cover(xs, ys, H) -> list[g.Piece]:
     """A built-in oven's top panel over the casing."""
-    return painted_steel([g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body")
-                          .replace(sheet=A.OVEN_SHEET)], finish)
+    return [g.box_between([xs[0], ys[0], H - T], [xs[1] - T, ys[1], H], "body").replace(sheet=A.OVEN_SHEET)]
 
 
-def range_top(xs, ys, z_dtop, front, H, finish: str) -> tuple[list[g.Piece], list[g.Piece], dict]:
+def range_top(xs, ys, z_dtop, front, H) -> tuple[list[g.Piece], list[g.Piece], dict]:
     """A range's top: the cooktop plate and the trim strip over the door, a vent slot strip along the back
     of the cooktop (the oven vent of a real range) in front of the backguard's knobs at ``front``; returns
     both and where the cooktop's burners go."""
     xb, xf, xd1 = xs
-    plate = painted_steel([g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop").replace(sheet=A.OVEN_SHEET),
-                           g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body")
-                           .replace(sheet=A.OVEN_SHEET)], finish)  # trim strip
+    plate = [g.box_between([xb, ys[0], H - T], [xd1, ys[1], H], "cooktop").replace(sheet=A.OVEN_SHEET),
+             g.box_between([xf, ys[0], z_dtop], [xd1, ys[1], H - T], "body").replace(sheet=A.OVEN_SHEET)]  # trim
     v = O["vent"]
     (s0, s1), sw, sh = v["slot"]
     vent = [g.box_between([front + s0, y - sw, H], [front + s1, y + sw, H + sh], "trim")
@@ -192,7 +210,7 @@ def grate(xs, col, H) -> tuple[list[g.Piece], tuple, float]:
     return A.grate(xs, (ga, gb), z0, bx), ((xs[0] + xs[1]) / 2, (ga + gb) / 2, z0), side
 
 
-def drawer(xs, ys, zs, warming: bool, handle_length: float, finish: str) -> tuple[list[g.Piece], Frame, float]:
+def drawer(xs, ys, zs, warming: bool, handle_length: float) -> tuple[list[g.Piece], Frame, float]:
     """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
     warming drawer: an enamel tray, a bar handle like the door's and a marking strip. Returns its pieces,
     slide frame and depth (the travel is a share of it)."""
@@ -205,7 +223,6 @@ def drawer(xs, ys, zs, warming: bool, handle_length: float, finish: str) -> tupl
                               (tx0, y0 + T + c, y1 - T - c, z_pl + T + c, z_dt - d["tray_under"]))
     if warming:  # an enamel tray (before the painted-steel scaling: scaled, a painted oven's tray weighed 47 kg)
         pieces = [pc.replace(material="interior") if k else pc for k, pc in enumerate(pieces)]
-    pieces = painted_steel(pieces, finish)
     if warming:
         w = O["warming"]
         zc = (z_pl + z_dt) / 2 + w["handle_over"]
@@ -221,7 +238,7 @@ def drawer(xs, ys, zs, warming: bool, handle_length: float, finish: str) -> tupl
         Frame.at((xd1, 0.0, z_pl), z=(1, 0, 0)), fx0 - tx0
 
 
-def door(box, margin: float, handle_length: float, finish: str) -> list[g.Piece]:
+def door(box, margin: float, handle_length: float) -> list[g.Piece]:
     """An oven door (:func:`.appliance.oven_door`) with its window ``margin`` inside the frame (more below
     and above it) and a tube bar handle under its top."""
     x0, x1, y0, y1, z0, z1 = box
@@ -230,8 +247,7 @@ def door(box, margin: float, handle_length: float, finish: str) -> list[g.Piece]
     hole = (y0 + m, z0 + below * m, y1 - m, z1 - above * m)
     bar = hardware.bar_handle(handle_length * (y1 - y0), "handle", HANDLE).attached(
         "mount", to=Frame.at((x1, 0.0, z1 - O["handle_below"]), z=(1, 0, 0), x=(0, 1, 0)))
-    return painted_steel(A.oven_door(box, hole), finish) + [pc.replace(sheet=O["handle_tube"])
-                                                            for pc in bar.parts[bar.root].pieces]
+    return A.oven_door(box, hole) + [pc.replace(sheet=O["handle_tube"]) for pc in bar.parts[bar.root].pieces]
 
 
 def rack_levels(cav, n: int, empty: int) -> tuple[list[g.Piece], list[dict]]:
@@ -270,7 +286,7 @@ def control_panel(xs, ys, zs, n_k: int, n_b: int, knob_radius: float, knob_style
         panel.holes.append(A.hole_around(y, zm, (stem, stem)))
         pieces, reach = A.cooker_knob(xp, y, zm, r, stem, knob_style)
         front = max(front, xp + reach)
-        panel.dials.append((f"knob_{i}", pieces, Frame.at((xp, y, zm), z=(1, 0, 0))))
+        panel.dials.append(A.Control(f"knob_{i}", tuple(pieces), Frame.at((xp, y, zm), z=(1, 0, 0))))
     if n_b:
         b = O["buttons"]
         yc = ya + k["margin"] + left * pitch + centre_w / 2
@@ -288,6 +304,6 @@ def control_panel(xs, ys, zs, n_k: int, n_b: int, knob_radius: float, knob_style
             piece = g.box_between([xp - A.BEHIND, y - half[0], zbt - half[1]],
                                   [xp + press + b["proud"], y + half[0], zbt + half[1]], "button", bevel=0.0015)
             at = Frame.at((xp + press + b["proud"], y, zbt), z=(-1, 0, 0))
-            panel.buttons.append((f"button_{j}", piece, at, press))
+            panel.buttons.append(A.Control(f"button_{j}", (piece,), at, press))
         front = max(front, xp + press + b["proud"])
     return A.panel_housing(xs, ys, zs, panel.holes) + panel.decor, panel, front

@@ -423,6 +423,7 @@ ARM_OFFSET = 0.03  # pad centre ahead of the post
 ARM_POST = -0.06  # post axis behind the seat centre
 ARM_BAR = (0.022, 0.016)  # the fixed bar under the post (x, y)
 ARM_TUBE = 0.003  # hollow post wall
+ARM_CARRIAGE = 0.05  # half the carriage's length (x), centred on the post
 ARM_POST_HALF = ARM_BAR[0] / 2 + 0.003 + ARM_TUBE  # half the post's depth (x)
 
 
@@ -454,6 +455,7 @@ class Arm:
     post_slide: Frame  # z up
     carriage: Frame  # z up
     pad_pivot: Frame  # z up
+    flip: Frame  # a flip-up arm's cap hinge: the carriage's rear bottom edge, z along -y (the front lifts)
 
 
 def arm(seat: Seat, seat_top: float, y: float, dims: ArmDims) -> Arm:
@@ -487,12 +489,13 @@ def arm(seat: Seat, seat_top: float, y: float, dims: ArmDims) -> Arm:
         g.box_between([x_post - hx - 0.004, y - hy - 0.004, cap0], [x_post + hx + 0.004, y + hy + 0.004, cap1],
                       "frame", bevel=0.002),
     )
-    slider = (g.box_between([x_post - 0.05, y - 0.022, zc0], [x_post + 0.05, y + 0.022, zc1], "frame",
+    slider = (g.box_between([x_post - ARM_CARRIAGE, y - 0.022, zc0], [x_post + ARM_CARRIAGE, y + 0.022, zc1], "frame",
                             bevel=0.003),)
     pad = (g.box([dims.pad_length, dims.pad_width, pt], [x_post + ARM_OFFSET, y, z_pad0 + pt / 2], "pad",
                  bevel=min(0.012, 0.4 * pt)),)
+    knuckle = x_post - ARM_CARRIAGE  # a flip-up cap's hinge: the carriage's rear end, over the post
     return Arm(bracket, post, slider, pad, Frame.at((x_post, y, z_t0)), Frame.at((x_post, y, zc0)),
-               Frame.at((x_post + ARM_OFFSET, y, z_pad0)))
+               Frame.at((x_post + ARM_OFFSET, y, z_pad0)), Frame.at((knuckle, y, zc0), x=(1, 0, 0), z=(0, -1, 0)))
 
 
 def arm_y(seat_width: float, dims: ArmDims, back_width: float | None, back_front: float | None,
@@ -587,12 +590,14 @@ class ChairNodes(Layout):
         return front
 
 
-# -- adjustable headrest, lumbar pad, seat slider, flip-up arms (issue 14) --------------------------------
+# -- adjustable headrest, lumbar pad, seat slider, flip-up arms -------------------------------------------
 HEADREST_TRAVEL = 0.07  # headrest height adjustment (executive and mesh chairs: 50-80 mm, e.g. Herman Miller
 #                         Aeron / Steelcase Gesture headrest kits)
 LUMBAR_TRAVEL = 0.06  # lumbar pad height adjustment (Steelcase Leap, Herman Miller Aeron PostureFit: 50-75 mm)
 SEAT_SLIDE = 0.05  # seat depth adjustment (BIFMA task chairs: 50-60 mm forward)
-ARM_FLIP = 1.5  # a flip-up arm turns up about its rear pivot to stand beside the back (about 90 degrees)
+# a flip-up arm's cap (carriage and pad) turns up about its rear edge on the fixed post until it stands upright
+# beside the back, above the seat (flip-up arms of desk-sharing and drafting chairs: about 90 degrees)
+ARM_FLIP = 1.5
 
 
 def adjustable_headrest(b: Back, dims: BackDims) -> tuple[list[g.Piece], Frame, Frame]:
@@ -648,7 +653,7 @@ def tension_knob(seat: Seat, depth: float, hm: float) -> tuple[list[g.Piece], Fr
     return pieces, Frame.at((x0, 0, zc), x=(0, 0, 1), z=(1, 0, 0))
 
 
-# -- bar stools: four-leg swivel frame, height lever (issue 14) ---------------------------------------------
+# -- bar stools: four-leg swivel frame, height lever --------------------------------------------------------
 FOUR_LEG_TUBE = 0.0125  # 25 mm steel tube legs (four-leg swivel bar stools, e.g. IKEA Franklin, Flash Furniture)
 BEARING_R = 0.1  # the swivel bearing plate under the seat (a 200 mm lazy-susan plate)
 

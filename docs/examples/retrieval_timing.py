@@ -1,7 +1,7 @@
 """Seconds per object with and without retrieval (warm library cache), A/B interleaved.
 
 Usage: python docs/examples/retrieval_timing.py LIB [SEEDS] [save|nosave] [CATEGORIES]
-(README, "Part libraries: Measured"; CATEGORIES comma-separated, default the seven with handles)
+(docs/benchmarks.md, "Part libraries"; CATEGORIES comma-separated, default the seven with handles)
 """
 import statistics
 import sys

@@ -1,0 +1,211 @@
+"""Sheet casings with rounded corners and cut-outs, lift-out liners and hinge brackets.
+
+A casing is built on the ground plane, centred on the z axis, its front facing +x. Every face has an
+anchor named after it (``front``, ``back``, ``left``, ``right``, ``top``: its centre on the outer face,
+z out of it; a side face's x points up, the top's x to the front), and a point on a face is given in
+that face's own coordinates ``(u, v)`` from its centre: ``u`` along the face frame's y (to the right as
+you look at the face), ``v`` along its x. A :class:`Cutout` is a rectangle in those coordinates; the
+casing leaves it open and adds an anchor of the cut-out's name at its :attr:`Cutout.anchor` point, so a
+part that goes through the hole (a lever, a dial stem, a drawer) is attached there without the
+category computing where the hole is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.errors import ModelError
+from infmob_usd.frames import Frame
+
+
+@dataclass(frozen=True)
+class Cutout:
+    """A rectangular hole in one face of a casing: ``lo`` / ``hi`` corners in face coordinates
+    ``(u, v)`` (metres from the face centre) and the point ``anchor`` (default: the centre) where the
+    casing puts the anchor named after the cut-out (z out of the face, x along v)."""
+
+    face: str
+    lo: tuple[float, float]
+    hi: tuple[float, float]
+    anchor: tuple[float, float] | None = None
+
+    @classmethod
+    def around(cls, face: str, at: tuple[float, float], size: tuple[float, float], clearance: float = 0.0
+               ) -> Cutout:
+        """A hole of ``size`` (u, v) centred on ``at``, ``clearance`` wider all round."""
+        du, dv = size[0] / 2 + clearance, size[1] / 2 + clearance
+        return cls(face, (at[0] - du, at[1] - dv), (at[0] + du, at[1] + dv), tuple(at))
+
+    @property
+    def at(self) -> tuple[float, float]:
+        return self.anchor or ((self.lo[0] + self.hi[0]) / 2, (self.lo[1] + self.hi[1]) / 2)
+
+
+@dataclass(frozen=True)
+class CasingSize:
+    """A sheet casing: outer ``width`` (y), ``depth`` (x), ``height`` (z); the walls are modelled
+    ``wall`` thick (so the simulator sees a solid wall) and massed as ``sheet`` of the slot's material;
+    the four upright edges are rounded to ``corner`` radius."""
+
+    width: float
+    depth: float
+    height: float
+    wall: float
+    sheet: float
+    corner: float
+
+    @property
+    def clear_width(self) -> float:
+        """Width inside the casing clear of the corner posts (what a tray sliding in may take)."""
+        return self.width - 4 * self.corner
+
+    def half(self, face: str) -> tuple[float, float]:
+        """Half extents ``(u, v)`` of a face."""
+        across = self.depth if face in ("left", "right") else self.width
+        return across / 2, (self.depth if face == "top" else self.height) / 2
+
+    def on(self, face: str, fu: float, fv: float) -> tuple[float, float]:
+        """A point of ``face`` given as fractions of its half extents (-1 to 1 from its centre)."""
+        hu, hv = self.half(face)
+        return fu * hu, fv * hv
+
+    def floor_opening(self, face: str, width: float, height: float, clearance: float) -> Cutout:
+        """A side face's opening for a tray ``width`` x ``height`` on the floor plate (``clearance`` all round):
+        its anchor is where the tray's front centre goes."""
+        bottom = self.wall - self.half(face)[1]
+        du = width / 2 + clearance
+        return Cutout(face, (-du, bottom), (du, bottom + height + 2 * clearance),
+                      (0.0, bottom + clearance + height / 2))
+
+    def slots(self, face: str, length: float, width: float, gap: float, count: int = 2) -> dict[str, Cutout]:
+        """``count`` parallel slots ``length`` x ``width`` along u, ``gap`` apart, centred on the face
+        (a toaster's bread slots): cut-outs ``slot_0`` ...."""
+        pitch = width + gap
+        return {f"slot_{k}": Cutout.around(face, (0.0, (k - (count - 1) / 2) * pitch), (length, width))
+                for k in range(count)}
+
+
+def face_frames(width: float, depth: float, height: float) -> dict[str, Frame]:
+    """The outer face frames of a ``width`` x ``depth`` x ``height`` box standing on z = 0."""
+    hx, hy, hz = depth / 2, width / 2, height / 2
+    return {
+        "front": Frame.at((hx, 0, hz), z=(1, 0, 0), x=(0, 0, 1)),
+        "back": Frame.at((-hx, 0, hz), z=(-1, 0, 0), x=(0, 0, 1)),
+        "left": Frame.at((0, hy, hz), z=(0, 1, 0), x=(0, 0, 1)),
+        "right": Frame.at((0, -hy, hz), z=(0, -1, 0), x=(0, 0, 1)),
+        "top": Frame.at((0, 0, height), z=(0, 0, 1), x=(1, 0, 0)),
+    }
+
+
+def _hole(frame: Frame, c: Cutout) -> tuple[float, float, float, float]:
+    """A cut-out as a :func:`~infmob_usd.geometry.panel` hole: its rectangle in the two world axes of the
+    face (x, y, z order, the normal skipped)."""
+    a = frame.point((c.lo[1], c.lo[0], 0.0))
+    b = frame.point((c.hi[1], c.hi[0], 0.0))
+    n = int(abs(frame.z).argmax())
+    i, j = (k for k in range(3) if k != n)
+    return (min(a[i], b[i]), min(a[j], b[j]), max(a[i], b[i]), max(a[j], b[j]))
+
+
+def sheet_casing(size: CasingSize, material: str, cutouts: Mapping[str, Cutout] | None = None,
+                 label: str = "body") -> Assembly:
+    """A closed sheet box with rounded upright corners and rectangular cut-outs.
+
+    Four walls and a top and bottom plate (``wall`` thick, massed as ``size.sheet``) and four upright
+    corner posts of radius ``corner``; each :class:`Cutout` is a hole through its face (front, back,
+    left, right or top) and an anchor of its name. Anchors: the faces (see the module), ``floor`` (the
+    bottom plate's top, z up). Supports: the four corners of the footprint.
+    """
+    s, cutouts = size, dict(cutouts or {})
+    faces = face_frames(s.width, s.depth, s.height)
+    bad = sorted(k for k, c in cutouts.items() if c.face not in faces)
+    if bad:
+        raise ModelError(f"cut-outs {bad}: face must be one of {sorted(faces)}")
+    holes = {f: [_hole(faces[f], c) for c in cutouts.values() if c.face == f] for f in faces}
+    x0, x1, y0, y1, h, t, r = -s.depth / 2, s.depth / 2, -s.width / 2, s.width / 2, s.height, s.wall, s.corner
+    pieces = [
+        g.panel((x1 - t, y0 + r, 0), (x1, y1 - r, h), material, "x", holes["front"]),
+        g.panel((x0, y0 + r, 0), (x0 + t, y1 - r, h), material, "x", holes["back"]),
+        g.panel((x0 + r, y1 - t, 0), (x1 - r, y1, h), material, "y", holes["left"]),
+        g.panel((x0 + r, y0, 0), (x1 - r, y0 + t, h), material, "y", holes["right"]),
+        g.panel((x0 + r, y0 + t, h - t), (x1 - r, y1 - t, h), material, "z", holes["top"]),
+        g.box_between((x0 + r, y0 + t, 0), (x1 - r, y1 - t, t), material),
+    ]
+    for z0, z1 in ((0, t), (h - t, h)):  # the plates' ends between the corner posts
+        pieces += [g.box_between((x, y0 + r, z0), (x + r - t, y1 - r, z1), material) for x in (x0 + t, x1 - r)]
+    pieces += [g.cylinder((x, y, 0), (x, y, h), r, material, 16) for x in (x0 + r, x1 - r) for y in (y0 + r, y1 - r)]
+    pieces = [pc.replace(sheet=s.sheet) for pc in pieces]
+    anchors = {**faces, "floor": Frame.at((0, 0, t))}
+    for name, c in cutouts.items():
+        u, v = c.at
+        anchors[name] = faces[c.face] @ Frame.at((v, u, 0))
+    supports = {f"foot_{i}": (x, y, 0) for i, (x, y) in enumerate(((x0, y0), (x0, y1), (x1, y0), (x1, y1)))}
+    return Assembly.single(label, pieces, anchors, supports)
+
+
+@dataclass(frozen=True)
+class LinerSize:
+    """An open tray or liner: outer ``width`` (y), ``depth`` (x), ``height`` (z), walls ``wall`` thick
+    (massed as ``sheet``), a front plate ``lip`` taller than the walls (0: none) and ``front`` thick."""
+
+    width: float
+    depth: float
+    height: float
+    wall: float
+    sheet: float
+    lip: float = 0.0
+    front: float = 0.0
+
+
+def liner(size: LinerSize, material: str, front_material: str | None = None, label: str = "drawer") -> Assembly:
+    """A lift-out liner (a crumb tray, a drip tray, a bin): an open box on z = 0, its front face at
+    x = 0, running back to x = -depth, centred on y; with ``size.front`` > 0 a front plate ``lip`` taller
+    than the walls (a pull) in ``front_material``. Anchors: ``front`` (the front face's centre, z out of
+    it, x up: a slide along it pulls the liner out), ``seat`` (the bottom's underside centre, z up).
+    Supports: the bottom's four corners."""
+    s = size
+    x0, y0, y1, h, t = -s.depth, -s.width / 2, s.width / 2, s.height, s.wall
+    xf = -s.front
+    pieces = [
+        g.box_between((x0, y0, 0), (xf, y1, t), material),
+        g.box_between((x0, y0, t), (x0 + t, y1, h), material),
+        g.box_between((x0 + t, y0, t), (xf, y0 + t, h), material),
+        g.box_between((x0 + t, y1 - t, t), (xf, y1, h), material),
+    ]
+    hf = h + s.lip
+    if s.front > 0:
+        pieces.append(g.box_between((xf, y0, 0), (0, y1, hf), front_material or material))
+    else:
+        pieces.append(g.box_between((xf - t, y0 + t, t), (xf, y1 - t, h), material))
+    pieces = [pc.replace(sheet=s.sheet) for pc in pieces]
+    anchors = {"front": Frame.at((0, 0, hf / 2), z=(1, 0, 0), x=(0, 0, 1)), "seat": Frame.at((x0 / 2, 0, 0))}
+    supports = {f"corner_{i}": (x, y, 0) for i, (x, y) in enumerate(((x0, y0), (x0, y1), (xf, y0), (xf, y1)))}
+    return Assembly.single(label, pieces, anchors, supports)
+
+
+@dataclass(frozen=True)
+class BracketSize:
+    """A hinge bracket: a ``plate`` (length along the pin, width, thickness) screwed to a face and a
+    knuckle of ``radius`` on its edge, ``knuckle`` long."""
+
+    length: float
+    width: float
+    thickness: float
+    radius: float
+    knuckle: float
+
+
+def hinge_bracket(size: BracketSize, material: str, label: str = "hinge") -> Assembly:
+    """A hinge leaf on its mounting face (z = 0 up to ``thickness``) with a knuckle on its edge: the plate
+    runs along local y (``length``) from x = -width to x = 0, the knuckle's axis is the line x = 0,
+    z = ``radius``, along y. Anchors: ``mount`` (the plate's underside centre, z out of the face),
+    ``pin`` (on the knuckle's axis, z along it: a hinge about it turns a leaf on the other side)."""
+    s = size
+    plate = g.box_between((-s.width, -s.length / 2, 0), (0, s.length / 2, s.thickness), material)
+    knuckle = g.cylinder((0, -s.knuckle / 2, s.radius), (0, s.knuckle / 2, s.radius), s.radius, material, 16)
+    anchors = {"mount": Frame.at((-s.width / 2, 0, 0)), "pin": Frame.at((0, 0, s.radius), z=(0, 1, 0), x=(1, 0, 0))}
+    return Assembly.single(label, [plate, knuckle], anchors,
+                           {"screw_a": (-s.width / 2, -s.length / 3, 0), "screw_b": (-s.width / 2, s.length / 3, 0)})

@@ -1,0 +1,74 @@
+"""Helpers the per-category tests share: a ``make`` per category and the joint states the checks sample."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+from zoo import make_bp, movable
+
+
+def maker(name: str, **defaults):
+    """``make(seed, **overrides) -> (params, grounded blueprint)`` of category ``name``; ``defaults`` are the
+    overrides a test file was written for (its design), under whatever a test asks for; a callable default is
+    called with the seed."""
+
+    def make(seed: int, **overrides):
+        fixed = {k: v(seed) if callable(v) else v for k, v in defaults.items()}
+        return make_bp(None, name, seed, **{**fixed, **overrides})
+
+    make.__doc__ = f"``(params, blueprint)`` of {name} for ``seed``" + (f", {defaults} unless asked" if defaults
+                                                                         else "")
+    return make
+
+
+def _at(d, f: float) -> float:
+    """A DoF at fraction ``f`` of its range; a continuous one at ``f`` half turns."""
+    return f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)
+
+
+def _ends(d) -> tuple[float, ...]:
+    return (math.pi / 2, -math.pi / 2, math.pi) if d.type == "continuous" else (d.lower, d.upper)
+
+
+def labelled_states(bp) -> list[tuple[str, dict]]:
+    """``(label, Blueprint.poses values)`` of the states the validators sample, and more: rest; every DoF at
+    50 % and 100 % (a continuous one at a quarter and a half turn); each joint alone with all its DoFs at its
+    lower and at its upper limits; each DoF alone at each limit (a continuous one at +-90 and 180 degrees)."""
+    js = movable(bp)
+    out = [("rest", {})]
+    for f in (0.5, 1.0):
+        out.append((f"all@{f:.0%}", {(j.child, i): _at(d, f) for j in js for i, d in enumerate(j.dofs)}))
+    for j in js:
+        if len(j.dofs) > 1:
+            out += [(f"{j.child}@{f:.0%}", {(j.child, i): _at(d, f) for i, d in enumerate(j.dofs)}) for f in (0, 1)]
+        for i, d in enumerate(j.dofs):
+            out += [(f"{j.child}.{i}@{q:.3g}", {(j.child, i): q}) for q in _ends(d)]
+    seen, unique = set(), []
+    for label, q in out:  # a DoF at 0 is where rest puts it: the same pose is checked once
+        key = frozenset((k, v) for k, v in q.items() if v != 0.0)
+        if key not in seen:
+            seen.add(key)
+            unique.append((label, q))
+    return unique
+
+
+def states(bp) -> list[dict]:
+    """The ``Blueprint.poses`` values of :func:`labelled_states`."""
+    return [q for _, q in labelled_states(bp)]
+
+
+def joint_states(joint, together: bool = False) -> list[tuple[float, ...]]:
+    """DoF values of one joint: every DoF together at its lower limit, at 50 % of its range, at half its upper
+    limit and at its upper limit; unless ``together``, also rest (all 0), each DoF alone at each limit (the
+    others at 0) and every corner of the range (each DoF at either limit)."""
+    lims = [(d.lower, d.upper) for d in joint.dofs]
+    out = [tuple(lo + f * (hi - lo) for lo, hi in lims) for f in (0.0, 0.5)]
+    out += [tuple(0.5 * hi for _, hi in lims), tuple(hi for _, hi in lims)]
+    if together:
+        return out
+    out.append(tuple(0.0 for _ in lims))
+    for k, (lo, hi) in enumerate(lims):
+        out += [tuple(v if i == k else 0.0 for i in range(len(lims))) for v in (lo, hi)]
+    out += list(itertools.product(*lims))
+    return list(dict.fromkeys(out))
