@@ -21,7 +21,7 @@ from .blueprint import Blueprint
 from .errors import ModelError
 from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, wall_of
 from .measures import _measure_closed
-from .physical import dynamics
+from .physical.passive import dynamics
 from .piece import Piece
 from .rotation import motion
 
@@ -66,6 +66,9 @@ class Joint:
     stiffness: float = 0.0  # return spring, N/m or N m/rad (0: none; set by springs.assign_springs)
     spring_ref: float = 0.0  # where the spring's force is zero (m or rad), beyond the rest stop: a preload
     mimic: tuple[str, float, float] | None = None  # (leader joint, multiplier, offset): q = m q_leader + o
+    # groups that must be closed (at rest) before this joint moves: a part whose sweep from the
+    # all-open state would meet them while they are open (set by physical.limit_to_clearance)
+    requires_closed: tuple[str, ...] = ()
 
     @property
     def movable(self) -> bool:

@@ -161,7 +161,8 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
              "parent": j.parent, "child": j.child, "origin": j.origin, "axis": j.axis,
              "lower": j.lower, "upper": j.upper, "damping": j.damping, "friction": j.friction,
              "effort": j.effort, "velocity": j.velocity, "armature": j.armature,
-             "requires_open": j.requires_open, **_spring_and_mimic(j)}
+             "requires_open": j.requires_open, "requires_closed": list(j.requires_closed),
+             **_spring_and_mimic(j)}
             for j in obj.joints
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
