@@ -472,16 +472,22 @@ class SimContext:
             self.scene.step()
 
     def make_passive(self) -> list[float]:
-        """Drives off (stiffness 0), the URDF damping and friction (as PhysX coefficients).
+        """Drives off (stiffness 0), the URDF damping and friction (as PhysX coefficients); a joint with a
+        return spring in ``metadata.json`` keeps it, as :func:`apply_springs` sets it (a pressed button
+        or a toaster lever is held by its spring, not by friction).
 
         Call after :meth:`reset` (at rest: the friction mapping uses the rest pose). Returns
         the friction coefficients set, in joint order.
         """
+        springs = {j["name"]: j["spring"] for j in self.meta.get("joints", []) if j.get("spring")}
         coefficients = []
         for j, s in zip(self.joints, self.loaded, strict=True):
             damping, friction = self.urdf_dynamics.get(j.name, (s.damping, 0.0))
-            c = physx_friction_coefficient(j, friction, self.gravity)
-            j.set_drive_property(0.0, damping, mode="force")
+            spring = springs.get(j.name)
+            c = 0.0 if spring else physx_friction_coefficient(j, friction, self.gravity)
+            j.set_drive_property(float(spring["stiffness"]) if spring else 0.0, damping, mode="force")
+            if spring:
+                j.set_drive_target(float(spring["reference"]))
             j.set_friction(c)
             coefficients.append(c)
         return coefficients
