@@ -207,8 +207,7 @@ class Retriever:
         if pick is None:  # no library part reaches these feet within its scale policy
             _frame, bounds, _tg = part_frame(asm)
             if not any(fits_box(lib, bounds) for lib in every):
-                ext = " x ".join(f"{1000 * e:.0f}" for e in np.ptp(bounds, axis=0))
-                return self._skip(asm, f"no library part scales to its size ({ext} mm) within its scale policy")
+                return self._skip(asm, "no library part scales to its size within its scale policy")
             return self._skip(asm, "no library part reaches its support points within its scale policy")
         lib, fit = pick, found[id(pick)]
         frame = asm.anchors.get(FIT_ANCHOR)
