@@ -33,6 +33,8 @@ from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 from .parts.furniture_sizes import DINING as D
+from .parts.furniture_sizes import DINING_RANGES as R
+from .parts.furniture_sizes import DINING_SHARES as SH
 
 
 def per_side(p: dict, count: int) -> int:
@@ -85,45 +87,48 @@ GRAMMAR = Grammar("dining_table", {
 })
 
 PARAMS = (
-    Float("length", "top length (X, the long axis) with the extension closed", "m", 1.4, 2.8),
-    Float("width", "top width (Y)", "m", 0.9, 1.2),
-    Float("height", "overall height", "m", 0.7, 0.8),
-    Choice("top_shape", "shape of the top", choices=("rectangular", "oval"), weights=(0.7, 0.3)),
-    Float("top_thickness", "thickness of the top", "m", 0.025, 0.045),
-    Float("end_overhang", "overhang of a rectangular top beyond the apron at each end (X)", "m", 0.06, 0.25),
-    Float("side_overhang", "overhang of a rectangular top beyond the apron at each side (Y)", "m", 0.05, 0.12),
-    Float("apron_height", "apron height (raised to fit a leaf and drawers)", "m", 0.08, 0.14),
-    Choice("leg_style", "leg shape", choices=("tapered", "turned", "square"), weights=(0.4, 0.35, 0.25)),
-    Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", 0.05, 0.09),
+    Float("length", "top length (X, the long axis) with the extension closed", "m", *R["length"]),
+    Float("width", "top width (Y)", "m", *R["width"]),
+    Float("height", "overall height", "m", *R["height"]),
+    Choice("top_shape", "shape of the top", choices=("rectangular", "oval"), weights=SH["top_shape"]),
+    Float("top_thickness", "thickness of the top", "m", *R["top_thickness"]),
+    Float("end_overhang", "overhang of a rectangular top beyond the apron at each end (X)", "m",
+          *R["end_overhang"]),
+    Float("side_overhang", "overhang of a rectangular top beyond the apron at each side (Y)", "m",
+          *R["side_overhang"]),
+    Float("apron_height", "apron height (raised to fit a leaf and drawers)", "m", *R["apron_height"]),
+    Choice("leg_style", "leg shape", choices=("tapered", "turned", "square"), weights=SH["leg_style"]),
+    Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", *R["leg_width"]),
     Float("leaf_fraction", "a drop leaf's width as a fraction of the table width (leaves of 20-34 cm)", "",
-          0.2, 0.28),
+          *R["leaf_fraction"]),
     Int("lopers_per_leaf", "swing brackets under each drop leaf: one in the middle, or two on an apron 1.3 m or "
-        "longer", "", 1, 2),
+        "longer", "", *R["lopers_per_leaf"]),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
-          "", 0.25, 0.4),
-    Int("drawer_count", "drawers in the +Y long side (at most two under 1.9 m long)", "", 1, 3),
+          "", *R["extension_fraction"]),
+    Int("drawer_count", "drawers in the +Y long side (at most two under 1.9 m long)", "", *R["drawer_count"]),
     Int("back_drawer_count", "drawers in the -Y long side when drawer_sides is both (capped as the +Y side)", "",
-        1, 3),
+        *R["back_drawer_count"]),
     Choice("drawer_sides", "drawers in one long side (+Y), both long sides, or the ends (X)",
-           choices=("one", "both", "ends"), weights=(0.4, 0.35, 0.25)),
+           choices=("one", "both", "ends"), weights=SH["drawer_sides"]),
     # a Pembroke table has one drawer in one end (often a false front at the other); refectory tables one in each
-    Int("end_drawers", "drawers in the ends when drawer_sides is ends: one (+X) or both", "", 1, 2),
+    Int("end_drawers", "drawers in the ends when drawer_sides is ends: one (+X) or both", "", *R["end_drawers"]),
     # self-storing extension leaves: one or two stacked in the apron (e.g. Bassett, Ethan Allen, Pottery Barn
     # extension tables ship with one or two leaves), each half the opening wide
-    Int("leaf_count", "extension leaves stored in the apron, stacked", "", 1, 2),
+    Int("leaf_count", "extension leaves stored in the apron, stacked", "", *R["leaf_count"]),
     # lazy susans on dining tables: 50-70 cm turntables on a ball-bearing ring (round banquet tables, family tables)
-    Float("lazy_susan_radius", "turntable radius as a fraction of the table width (fixed top)", "", 0.22, 0.3),
-    Choice("handle_style", "drawer handle", choices=("knob", "bar", "bow"), weights=(0.45, 0.35, 0.2)),
-    Float("leg_travel", "how far an adjustable inner leg slides up", "m", 0.03, 0.1),
+    Float("lazy_susan_radius", "turntable radius as a fraction of the table width (fixed top)", "",
+          *R["lazy_susan_radius"]),
+    Choice("handle_style", "drawer handle", choices=("knob", "bar", "bow"), weights=SH["handle_style"]),
+    Float("leg_travel", "how far an adjustable inner leg slides up", "m", *R["leg_travel"]),
     # rolling kitchen / farmhouse tables on four locking plate casters (e.g. John Boos work tables, industrial
     # rolling dining tables): 50-75 mm wheels, twin-wheel or single-wheel
-    Float("wheel_radius", "caster wheel radius", "m", 0.025, 0.038),
-    Float("pedestal_radius", "pedestal column radius", "m", 0.05, 0.09),
-    Choice("top_finish", "material of the top and the leaf", choices=("wood", "painted"), weights=(0.75, 0.25)),
+    Float("wheel_radius", "caster wheel radius", "m", *R["wheel_radius"]),
+    Float("pedestal_radius", "pedestal column radius", "m", *R["pedestal_radius"]),
+    Choice("top_finish", "material of the top and the leaf", choices=("wood", "painted"), weights=SH["top_finish"]),
     Choice("frame_finish", "legs, apron, pedestal", choices=("wood", "painted", "brushed_metal"),
-           weights=(0.6, 0.25, 0.15)),
+           weights=SH["frame_finish"]),
     Choice("handle_finish", "drawer handle material", choices=("brushed_metal", "chrome", "wood")),
-    Choice("wheel_finish", "caster tyres", choices=("plastic", "rubber"), weights=(0.4, 0.6)),
+    Choice("wheel_finish", "caster tyres", choices=("plastic", "rubber"), weights=SH["wheel_finish"]),
 )
 
 MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_finish", "metal": "brushed_metal",
