@@ -37,6 +37,8 @@ from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 from .parts.furniture_sizes import COCKTAIL as C
+from .parts.furniture_sizes import COCKTAIL_RANGES as R
+from .parts.furniture_sizes import COCKTAIL_SHARES as SH
 from .parts.furniture_sizes import NEST
 
 
@@ -86,37 +88,39 @@ coffee tables: a leaf on each side, or one on a table kept against a sofa's arm)
 or two tables under the top (front, back), each maybe with a smaller one inside it."""
 
 PARAMS = (
-    Float("width", "top diameter (round) or side (square)", "m", 0.5, 1.0),
-    Float("height", "overall height at rest", "m", 0.4, 0.75),
+    Float("width", "top diameter (round) or side (square)", "m", *R["width"]),
+    Float("height", "overall height at rest", "m", *R["height"]),
     Choice("top_shape", "shape of the top", choices=("round", "square")),
-    Float("top_thickness", "thickness of the top", "m", 0.02, 0.045),
-    Float("bevel", "bevel of the top's edges, as a fraction of its thickness", "", 0.1, 0.4),
-    Int("leg_count", "legs under a round top (a square top has 4); auto = drawn 3 or 4", "", 3, 4, auto=True),
+    Float("top_thickness", "thickness of the top", "m", *R["top_thickness"]),
+    Float("bevel", "bevel of the top's edges, as a fraction of its thickness", "", *R["bevel"]),
+    Int("leg_count", "legs under a round top (a square top has 4); auto = drawn 3 or 4", "",
+        *R["leg_count"], auto=True),
     Choice("leg_style", "shape of fixed legs (hairpin and tube legs are steel, in metal_finish)",
-           choices=("turned", "tapered", "square", "hairpin", "tube"), weights=(0.28, 0.32, 0.2, 0.12, 0.08)),
-    Float("leg_radius", "leg radius (half side of a square leg) at its top", "m", 0.015, 0.03),
-    Float("leg_inset", "distance of the leg centres in from the top's edge", "m", 0.05, 0.12),
-    Float("apron_height", "height of the apron under the top", "m", 0.05, 0.11),
-    Float("shelf_height", "lower shelf height as a fraction of the height", "", 0.12, 0.3),
-    Float("lift_travel", "how far a lift-top rises", "m", 0.12, 0.25),
+           choices=("turned", "tapered", "square", "hairpin", "tube"), weights=SH["leg_style"]),
+    Float("leg_radius", "leg radius (half side of a square leg) at its top", "m", *R["leg_radius"]),
+    Float("leg_inset", "distance of the leg centres in from the top's edge", "m", *R["leg_inset"]),
+    Float("apron_height", "height of the apron under the top", "m", *R["apron_height"]),
+    Float("shelf_height", "lower shelf height as a fraction of the height", "", *R["shelf_height"]),
+    Float("lift_travel", "how far a lift-top rises", "m", *R["lift_travel"]),
     Flag("has_lift_forward", "a lift-top rises toward the front (scissor mechanism)", p=0.5),
-    Float("lift_forward_ratio", "forward (+X) over upward motion of a forward lift-top", "", 0.3, 0.8),
+    Float("lift_forward_ratio", "forward (+X) over upward motion of a forward lift-top", "", *R["lift_forward_ratio"]),
     Float("box_depth", "storage well (lift-top) or drawer apron depth (13-20 cm on lift-top tables)", "m",
-          0.13, 0.2),
-    Int("drawer_count", "drawers in the front (one under 0.7 m wide, at most two under 0.9 m)", "", 1, 3),
-    Int("back_drawer_count", "drawers in the back when drawer_sides is both (capped as the front)", "", 1, 3),
+          *R["box_depth"]),
+    Int("drawer_count", "drawers in the front (one under 0.7 m wide, at most two under 0.9 m)", "", *R["drawer_count"]),
+    Int("back_drawer_count", "drawers in the back when drawer_sides is both (capped as the front)", "",
+        *R["back_drawer_count"]),
     Choice("drawer_sides", "drawers in the front only or front and back", choices=("front", "both")),
     Float("leaf_width", "a drop leaf's width (drop-leaf coffee tables: 18-30 cm leaves; less on a low table)", "m",
-          0.15, 0.3),
+          *R["leaf_width"]),
     Float("caster_radius", "wheel radius of a storage table's casters (50-75 mm furniture casters)", "m",
-          0.025, 0.0375),
-    Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", 0.06, 0.18),
+          *R["caster_radius"]),
+    Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", *R["stand_travel"]),
     Float("stand_turn", "turn limit (+-) of a pedestal top", "rad", math.pi / 2, math.pi),
-    Float("base_radius", "pedestal base radius as a fraction of the width", "", 0.3, 0.42),
-    Float("column_radius", "pedestal inner column radius", "m", 0.025, 0.045),
-    Choice("top_finish", "material of the top", choices=("wood", "painted", "glass"), weights=(0.55, 0.25, 0.2)),
+    Float("base_radius", "pedestal base radius as a fraction of the width", "", *R["base_radius"]),
+    Float("column_radius", "pedestal inner column radius", "m", *R["column_radius"]),
+    Choice("top_finish", "material of the top", choices=("wood", "painted", "glass"), weights=SH["top_finish"]),
     Choice("frame_finish", "material of the legs and apron", choices=("wood", "painted", "brushed_metal"),
-           weights=(0.5, 0.3, 0.2)),
+           weights=SH["frame_finish"]),
     Choice("metal_finish", "sleeves, column and pedestal base", choices=("brushed_metal", "chrome", "painted")),
 )
 
