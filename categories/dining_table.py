@@ -323,17 +323,10 @@ class TableLayout(Layout):
         """A draw leaf: stored under one end of the top on runners over the apron, pulled out along X
         (a draw-leaf / refectory table, e.g. IKEA BJURSTA, Ercol draw-leaf tables; on the real table the leaf
         then rises level with the top on its tapered runners, here it stays on them)."""
-        p = self.p
-        L, W = p["length"], p["width"]
         ll = self._draw_leaf_length()
-        end, edge = D["draw_leaf_in"]
-        x0, x1 = sorted((side * (L / 2 - ll), side * (L / 2 - end)))
-        z0 = za1 + D["leaf_gap"]
-        name = "leaf_front" if side > 0 else "leaf_back"
-        self.add(name, "leaf", [g.box_between((x0, -W / 2 + edge, z0), (x1, W / 2 - edge, z0 + D["leaf_t"]), "top",
-                                              bevel=0.003)])
-        self.slide("body", name, Frame.at((side * (L / 2 - end), 0, z0), z=(side, 0, 0)),
-                   upper=ll - D["draw_leaf_keep"])
+        leaf = self.place(M.draw_leaf(self.p["length"], self.p["width"], ll, side, za1 + D["leaf_gap"], D),
+                          "leaf_front" if side > 0 else "leaf_back")
+        self.slide("body", leaf.root, leaf.anchor("slide"), upper=ll - D["draw_leaf_keep"])
 
     def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
         for side, n in zip((1, -1), node.of("leaf_side")):
@@ -355,33 +348,29 @@ class TableLayout(Layout):
         """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
         under a leaf whose apron is ``D["two_lopers"]`` long or longer when ``lopers_per_leaf`` is 2."""
         length = min(D["loper"], D["loper_apron"] * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        xs = [-La / 4, La / 4] if La >= D["two_lopers"] and self.p["lopers_per_leaf"] == 2 else [0.0]
-        for k, xc in enumerate(xs):
-            pieces, hinge = M.apron_loper(xc - length / 2, side * Wa / 2, side, za0, za1, length, "frame")
-            name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
-            self.add(name, "bracket", pieces)
-            self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
+        count = self.p["lopers_per_leaf"] if La >= D["two_lopers"] else 1
+        for k, bracket in enumerate(M.apron_lopers(La, side * Wa / 2, side, za0, za1, length, count, "frame")):
+            loper = self.place(bracket, f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else ""))
+            self.hinge("body", loper.root, loper.anchor("hinge"), upper=math.pi / 2, requires_open=leaf)
 
     def extension(self, node, x_in, La, Wa, leaf, **slot):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         travel = p["extension_fraction"] * La / 2
         for name, s in (("top_front", 1), ("top_back", -1)):
-            self.add(name, "top", [T.half_top(L, W, p["top_shape"], H - tt, H, D["split"], s, "top")])
-            self.slide("body", name, Frame.at((s * D["split"] / 2, 0, H - tt), z=(s, 0, 0)), upper=travel)
+            half = self.place(M.split_half(L, W, p["top_shape"], H - tt, H, D["split"], s, "top"), name)
+            self.slide("body", half.root, half.anchor("slide"), upper=travel)
         half = min(travel, x_in - D["leaf_store"])
         leaves = node.of("leaf")
         if len(leaves) > 1:  # two leaves, each half the opening wide, fill it side by side
             half /= 2
         for k, n in enumerate(leaves):
             z1 = leaf[1] - k * (D["leaf_t"] + D["leaf_gap"])
-            self.grow(n, k=k, lo=(-half, -Wa / 2 + D["board"], z1 - D["leaf_t"]), hi=(half, Wa / 2 - D["board"], z1))
+            self.grow(n, k=k, leaf=M.stored_leaf(half, Wa / 2 - D["board"], z1, D["leaf_t"], "top"))
 
-    def leaf(self, node, k, lo, hi):
+    def leaf(self, node, k, leaf):
         """A leaf stored on the runners in the apron, under the split (it is taken out by hand)."""
-        name = "leaf" if k == 0 else f"leaf_{k + 1}"
-        self.add(name, "leaf", [g.box_between(lo, hi, "top")])
-        self.fix("body", name)
+        self.fix("body", self.place(leaf, "leaf" if k == 0 else f"leaf_{k + 1}").root)
 
     def drawers(self, node, slots, Wa, La, sides):
         ends = self.p["drawer_sides"] == "ends"
@@ -394,15 +383,9 @@ class TableLayout(Layout):
             self.grow(d, k=k, side=s, hole=hole, at=s * (La if ends else Wa) / 2, depth=depth, ends=ends)
 
     def drawer(self, node, k, side, hole, at, depth, ends):
-        a0, z0, a1, z1 = hole
-        w, h = a1 - a0 - 2 * D["clear"], z1 - z0 - 2 * D["clear"]
-        if ends:
-            face = Frame.at((at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
-        else:
-            face = Frame.at(((a0 + a1) / 2, at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
         metal = self.p["frame_finish"] == "brushed_metal"
-        drawer = self.place(M.apron_drawer(w, h, depth, D["board"], D["drawer_wall"], face, self.p["handle_style"],
-                                           D, D["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
+        drawer = self.place(M.opening_drawer(hole, at, side, ends, depth, self.p["handle_style"], D,
+                                             D["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=D["pull"] * depth)
 
     back_drawer = drawer

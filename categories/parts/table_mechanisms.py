@@ -251,3 +251,57 @@ def bearer_frame(xb: float, yb: float, z0: float, z1: float, rails: tuple[float,
     out = [g.box_between((-xb, y0, z0), (xb, y1, z1), material) for y0, y1 in ((-yb, -yb + side), (yb - side, yb))]
     out.append(g.box_between((-cross, -yb + side, z0), (cross, yb - side, z1), material))
     return out
+
+
+# -- dining-table parts placed by anchors ---------------------------------------------------------------
+# These build in the table's frame (z = 0 the floor, X the long axis); the layout joins each by its named
+# anchor. ``sizes`` is :data:`~.furniture_sizes.DINING`.
+def opening_drawer(hole: tuple[float, float, float, float], wall_at: float, side: int, in_end: bool, depth: float,
+                   handle: str, sizes: dict, sheet: float | None = None) -> Assembly:
+    """A :func:`apron_drawer` in an apron opening ``hole`` (a0, z0, a1, z1 along its board), the board's outer
+    face at ``wall_at`` on ``side`` (+1 / -1) of the table: of an end board (``in_end``, the drawer pulls out
+    along X) or a long one (along Y); ``sizes["clear"]`` round its front. Anchor ``slide``: the front's face."""
+    a0, z0, a1, z1 = hole
+    w, h = a1 - a0 - 2 * sizes["clear"], z1 - z0 - 2 * sizes["clear"]
+    if in_end:
+        face = Frame.at((wall_at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
+    else:
+        face = Frame.at(((a0 + a1) / 2, wall_at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
+    return apron_drawer(w, h, depth, sizes["board"], sizes["drawer_wall"], face, handle, sizes, sheet)
+
+
+def draw_leaf(length: float, width: float, leaf_length: float, side: int, z0: float, sizes: dict) -> Assembly:
+    """A draw leaf ``leaf_length`` long stored from ``z0`` under the ``side`` (+1 / -1) end of a top ``length`` x
+    ``width`` (``sizes["draw_leaf_in"]`` in from its end and sides, ``sizes["leaf_t"]`` thick). Anchor ``slide``:
+    at the leaf's outer end, z pointing out along X."""
+    end, edge = sizes["draw_leaf_in"]
+    x0, x1 = sorted((side * (length / 2 - leaf_length), side * (length / 2 - end)))
+    piece = g.box_between((x0, -width / 2 + edge, z0), (x1, width / 2 - edge, z0 + sizes["leaf_t"]), "top",
+                          bevel=0.003)
+    return Assembly.single("leaf", [piece], {"slide": Frame.at((side * (length / 2 - end), 0, z0), z=(side, 0, 0))})
+
+
+def apron_lopers(apron_length: float, y_face: float, side: int, za0: float, za1: float, length: float, count: int,
+                 material: str) -> list[Assembly]:
+    """``count`` :func:`apron_loper` brackets ``length`` long in the long apron board whose face is at ``y_face``:
+    one centred, or two at a quarter of the apron (``apron_length``) from each end. Anchor ``hinge``."""
+    xs = [-apron_length / 4, apron_length / 4] if count == 2 else [0.0]
+    out = []
+    for xc in xs:
+        pieces, hinge = apron_loper(xc - length / 2, y_face, side, za0, za1, length, material)
+        out.append(Assembly.single("bracket", pieces, {"hinge": hinge}))
+    return out
+
+
+def split_half(length: float, width: float, shape: str, z0: float, z1: float, split: float, side: int,
+               material: str) -> Assembly:
+    """One half of an extending top (:func:`~.tables.half_top`) from ``z0`` to ``z1``. Anchor ``slide``: on the
+    split's ``side`` at the underside, z pointing out along X."""
+    piece = T.half_top(length, width, shape, z0, z1, split, side, material)
+    return Assembly.single("top", [piece], {"slide": Frame.at((side * split / 2, 0, z0), z=(side, 0, 0))})
+
+
+def stored_leaf(half: float, half_width: float, z1: float, thickness: float, material: str) -> Assembly:
+    """An extension leaf stored in the apron: ``2 half`` along X, ``2 half_width`` across, its top at ``z1``."""
+    return Assembly.single("leaf", [g.box_between((-half, -half_width, z1 - thickness), (half, half_width, z1),
+                                                  material)])
