@@ -161,36 +161,17 @@ class TableLayout(Layout):
         style = node.one("top_style")
         ext = style.one("extension")
         leaves = style.one("drop_leaf")
-        if p["top_shape"] == "oval":
-            La, Wa = D["oval_apron"] * L, D["oval_apron"] * W
-        else:
-            La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
-        wc = W * (1 - 2 * p["leaf_fraction"])  # a drop-leaf table's fixed centre
-        if leaves:  # the apron and the folded lopers stay inside the hanging leaves
-            Wa = min(Wa, wc - 2 * (D["leaf_gap_y"] + D["loper_room"]))
-        lw = p["leg_width"] if p["support"] == "legs" else 0.0
         draw = style.one("draw_leaf")
-        za1 = H - tt - (D["seat"] if ext else 0.0) - (2 * D["leaf_gap"] + D["leaf_t"] if draw else 0.0)
-        n_leaves = len(ext.of("leaf")) if ext else 0
-        leaf = (za1 - n_leaves * (D["leaf_gap"] + D["leaf_t"]), za1 - D["leaf_gap"])  # the stack of stored leaves
-        need = (2 * D["margin"] + D["drawer_min"] + (za1 - leaf[0] + D["leaf_room"] if ext else 0.0) if drawers
-                else D["drawer_min"])
-        za0 = za1 - max(p["apron_height"], need)
-        board = D["board"]
-        x_in = La / 2 - max(lw, board)  # free length between the legs (half)
-        ends = p["drawer_sides"] == "ends"
-        span = Wa / 2 - max(lw, board) if ends else x_in
-        z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
+        fr = T.DiningFrame.of(p, D, len(ext.of("leaf")) if ext else None, bool(leaves), bool(draw), bool(drawers))
+        La, Wa, wc, za0, za1, board = fr.La, fr.Wa, fr.wc, fr.za0, fr.za1, D["board"]
         holes = {}
         if drawers:
-            holes[1] = self._holes(span, za0, z_top, len(drawers.of("drawer")))
+            holes[1] = self._holes(fr.span, za0, fr.z_top, len(drawers.of("drawer")))
             if drawers.of("back_drawer"):
-                holes[-1] = self._holes(span, za0, z_top, len(drawers.of("back_drawer")))
+                holes[-1] = self._holes(fr.span, za0, fr.z_top, len(drawers.of("back_drawer")))
         sides = tuple(holes)
-        if ends:
-            body = M.apron_rails_ends(La, Wa, lw, za0, za1, board, "frame", holes)
-        else:
-            body = T.apron_rails(La, Wa, lw, za0, za1, board, "frame", holes)
+        rails = M.apron_rails_ends if p["drawer_sides"] == "ends" else T.apron_rails
+        body = rails(La, Wa, fr.lw, za0, za1, board, "frame", holes)
         whole, centre = D["top_bevel"]
         if leaves:
             xy = T.outline(L, W, p["top_shape"], D["outline"])
@@ -201,8 +182,8 @@ class TableLayout(Layout):
             xb, yb = L / 2 - self._draw_leaf_length() - D["leaf_gap"], Wa / 2 - board
             body += M.bearer_frame(xb, yb, za1, H - tt, D["bearer"], "frame")
         self.add("body", "body", body)
-        self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
-        self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
+        self.grow(support, La=La, Wa=Wa, lw=fr.lw, za0=za0, za1=za1)
+        self.grow(style, x_in=fr.x_in, La=La, Wa=Wa, leaf=fr.leaf, wc=wc, za0=za0, za1=za1)
         if drawers:
             self.grow(drawers, slots=[(s, h) for s in sides for h in holes[s]], Wa=Wa, La=La, sides=len(sides))
 

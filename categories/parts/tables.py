@@ -9,6 +9,7 @@ origin and rises along +z. Sizes of real tables: coffee tables 0.40-0.75 m high,
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -317,3 +318,49 @@ def pedestals(table_length: float, apron_length: float, apron_width: float, tabl
     if len(xs) == 2:  # a low stretcher between the two columns
         pieces.append(g.box_between([xs[0], -0.025, 0.18], [xs[1], 0.025, 0.23], material))
     return pieces
+
+
+# -- a dining table's frame ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class DiningFrame:
+    """Where a dining table's apron and top stand (the table's frame, metres), from its parameters and
+    :data:`~.furniture_sizes.DINING`: the apron ``La`` x ``Wa`` from ``za0`` up to ``za1`` (the top's underside,
+    or the halves' / draw leaves' seat), legs ``lw`` wide (0 on a pedestal), a drop-leaf table's fixed centre
+    ``wc`` wide, the stored extension leaves' stack ``leaf`` (bottom, top), ``x_in`` free between the legs
+    along X (half), ``span`` free along the drawer board (half) and ``z_top`` the drawer openings' top."""
+
+    La: float
+    Wa: float
+    wc: float
+    lw: float
+    za0: float
+    za1: float
+    leaf: tuple[float, float]
+    x_in: float
+    span: float
+    z_top: float
+
+    @classmethod
+    def of(cls, p: dict, sizes: dict, stored_leaves: int | None, drop: bool, draw: bool, drawers: bool
+           ) -> DiningFrame:
+        """``stored_leaves``: an extending top's leaf count (None: it does not extend); ``drop``, ``draw``: a
+        drop-leaf or draw-leaf top; ``drawers``: the apron has drawers (it is raised to fit them)."""
+        D, ext = sizes, stored_leaves is not None
+        L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
+        if p["top_shape"] == "oval":
+            La, Wa = D["oval_apron"] * L, D["oval_apron"] * W
+        else:
+            La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
+        wc = W * (1 - 2 * p["leaf_fraction"])
+        if drop:  # the apron and the folded lopers stay inside the hanging leaves
+            Wa = min(Wa, wc - 2 * (D["leaf_gap_y"] + D["loper_room"]))
+        lw = p["leg_width"] if p["support"] == "legs" else 0.0
+        za1 = H - tt - (D["seat"] if ext else 0.0) - (2 * D["leaf_gap"] + D["leaf_t"] if draw else 0.0)
+        leaf = (za1 - (stored_leaves or 0) * (D["leaf_gap"] + D["leaf_t"]), za1 - D["leaf_gap"])
+        need = (2 * D["margin"] + D["drawer_min"] + (za1 - leaf[0] + D["leaf_room"] if ext else 0.0) if drawers
+                else D["drawer_min"])
+        za0 = za1 - max(p["apron_height"], need)
+        x_in = La / 2 - max(lw, D["board"])
+        span = Wa / 2 - max(lw, D["board"]) if p["drawer_sides"] == "ends" else x_in
+        z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
+        return cls(La, Wa, wc, lw, za0, za1, leaf, x_in, span, z_top)
