@@ -189,10 +189,7 @@ class TableLayout(Layout):
 
     def _holes(self, x_in, z0, z1, n):
         """``n`` drawer openings spread evenly along a board with ``x_in`` free each side of its centre."""
-        ends = self.p["drawer_sides"] == "ends"
-        dw = min(D["drawer_width"], 2 * x_in / n - D["drawer_stile"][0 if ends else 1])
-        xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
-        return [(x - dw / 2, z0 + D["margin"], x + dw / 2, z1) for x in xs]
+        return M.dining_openings(x_in, z0, z1, n, self.p["drawer_sides"] == "ends", D)
 
     def legs(self, node, La, Wa, lw, za0, za1):
         p = self.p

@@ -305,3 +305,13 @@ def stored_leaf(half: float, half_width: float, z1: float, thickness: float, mat
     """An extension leaf stored in the apron: ``2 half`` along X, ``2 half_width`` across, its top at ``z1``."""
     return Assembly.single("leaf", [g.box_between((-half, -half_width, z1 - thickness), (half, half_width, z1),
                                                   material)])
+
+
+def dining_openings(x_in: float, z0: float, z1: float, n: int, in_end: bool, sizes: dict
+                    ) -> list[tuple[float, float, float, float]]:
+    """``n`` drawer openings (a0, z0, a1, z1) spread evenly along an apron board with ``x_in`` free each side of
+    its centre: at most ``sizes["drawer_width"]`` wide, ``sizes["drawer_stile"]`` (end board, long board) kept
+    between them, ``sizes["margin"]`` of board under them, up to ``z1``."""
+    dw = min(sizes["drawer_width"], 2 * x_in / n - sizes["drawer_stile"][0 if in_end else 1])
+    xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
+    return [(x - dw / 2, z0 + sizes["margin"], x + dw / 2, z1) for x in xs]
