@@ -265,13 +265,12 @@ class TableLayout(Layout):
         frames = T.corner_frames(2 * half, 2 * half, lw / 2)
         casters = node.one("casters")
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
-        over, plate, past = C["caster_plate"]
+        over, plate, _ = C["caster_plate"]
         z_leg = c.stem_top + over + plate if c else 0.0  # legs on a caster's top plate
         style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
         legs = [pc for f in frames for pc in self._leg(style, lw / 2, za1 - z_leg).mounted(f.moved(dz=z_leg)).pieces]
         if c:
-            legs += [g.box_between(f.point((-lw / 2 - past, -lw / 2 - past, c.stem_top + over)),
-                                   f.point((lw / 2 + past, lw / 2 + past, z_leg)), "metal") for f in frames]
+            legs += M.caster_plates(frames, lw, c.stem_top, z_leg, C)
         self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", holes) + legs)
         if node.one("shelf"):
             self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
@@ -289,13 +288,9 @@ class TableLayout(Layout):
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
     def drawer(self, node, k, side, hole, x, depth):
-        y0, z0, y1, z1 = hole
-        w, h = y1 - y0 - 2 * C["drawer_clear"], z1 - z0 - 2 * C["drawer_clear"]
-        face = Frame.at((x, (y0 + y1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
         metal = self.p["frame_finish"] == "brushed_metal"
-        drawer = self.place(M.apron_drawer(w, h, depth, T.BOARD, C["drawer_wall"], face,
-                                           "knob" if w < C["knob_under"] else "bar", C,
-                                           C["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
+        drawer = self.place(M.opening_drawer(hole, x, side, True, depth, None, C,
+                                             C["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=C["drawer_pull"] * depth)
 
     back_drawer = drawer

@@ -28,6 +28,8 @@ COCKTAIL = {
     # of it behind the centre (Wayfair / IKEA lift-top mechanisms sit under the back of the top)
     "well_floor": 0.012, "round_struts": 0.7, "struts_back": 0.2,
     "drawer_clear": 0.003,  # drawer fronts in their openings
+    "clear": 0.003,  # the same, under the name the shared drawer builder reads
+    "board": 0.018,  # apron board (tables.BOARD)
     "drawer_margin": 0.015,  # apron board above and below the openings
     "drawer_stile": 0.024,  # apron between neighbouring drawer openings
     "drawer_wide": 0.6,  # drawers are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)

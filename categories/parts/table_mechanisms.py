@@ -257,12 +257,15 @@ def bearer_frame(xb: float, yb: float, z0: float, z1: float, rails: tuple[float,
 # These build in the table's frame (z = 0 the floor, X the long axis); the layout joins each by its named
 # anchor. ``sizes`` is :data:`~.furniture_sizes.DINING`.
 def opening_drawer(hole: tuple[float, float, float, float], wall_at: float, side: int, in_end: bool, depth: float,
-                   handle: str, sizes: dict, sheet: float | None = None) -> Assembly:
+                   handle: str | None, sizes: dict, sheet: float | None = None) -> Assembly:
     """A :func:`apron_drawer` in an apron opening ``hole`` (a0, z0, a1, z1 along its board), the board's outer
     face at ``wall_at`` on ``side`` (+1 / -1) of the table: of an end board (``in_end``, the drawer pulls out
-    along X) or a long one (along Y); ``sizes["clear"]`` round its front. Anchor ``slide``: the front's face."""
+    along X) or a long one (along Y); ``sizes["clear"]`` round its front; ``handle`` None: a knob on a front
+    narrower than ``sizes["knob_under"]``, else a bar. Anchor ``slide``: the front's face."""
     a0, z0, a1, z1 = hole
     w, h = a1 - a0 - 2 * sizes["clear"], z1 - z0 - 2 * sizes["clear"]
+    if handle is None:  # a knob on a narrow front, else a bar
+        handle = "knob" if w < sizes["knob_under"] else "bar"
     if in_end:
         face = Frame.at((wall_at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
     else:
@@ -315,3 +318,12 @@ def dining_openings(x_in: float, z0: float, z1: float, n: int, in_end: bool, siz
     dw = min(sizes["drawer_width"], 2 * x_in / n - sizes["drawer_stile"][0 if in_end else 1])
     xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
     return [(x - dw / 2, z0 + sizes["margin"], x + dw / 2, z1) for x in xs]
+
+
+def caster_plates(frames: list, leg_w: float, stem_top: float, z_leg: float, sizes: dict) -> list[g.Piece]:
+    """The casters' top plates under square legs ``leg_w`` wide standing at ``frames``: from
+    ``sizes["caster_plate"][0]`` over the caster's stem top ``stem_top`` up to the leg's foot ``z_leg``,
+    ``sizes["caster_plate"][2]`` past the leg each side."""
+    over, _, past = sizes["caster_plate"]
+    return [g.box_between(f.point((-leg_w / 2 - past, -leg_w / 2 - past, stem_top + over)),
+                          f.point((leg_w / 2 + past, leg_w / 2 + past, z_leg)), "metal") for f in frames]
