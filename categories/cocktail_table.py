@@ -243,18 +243,10 @@ class TableLayout(Layout):
     # -- storage table with drawers --------------------------------------------------------------
     def drawers(self, node):
         p = self.p
-        W, H, tt = p["width"], p["height"], p["top_thickness"]
-        lw = 2 * p["leg_radius"] + C["square_leg"]  # square legs a little stouter than the rails
-        inset = min(p["leg_inset"], C["inset_max"] * W)
         leaves = node.one("drop_leaves")
-        if leaves:  # the side boards and the folded lopers stay inside the hanging leaves
-            inset = max(inset, lw / 2 + C["loper_room"])
-        half = W / 2 - inset + lw / 2
-        za1 = H - tt
-        za0 = za1 - p["box_depth"]
         front, back = node.of("drawer"), node.of("back_drawer")
-        sides = (1, -1) if back else (1,)
-        span = 2 * (half - lw)
+        box = T.StorageFrame.of(p, C, bool(leaves), bool(back))
+        lw, inset, half, za0, za1, span = box.lw, box.inset, box.half, box.za0, box.za1, box.span
 
         def openings(per):  # one bay per drawer, the drawer centred in it
             return M.drawer_openings(span, per, za0, za1, C["drawer_margin"], C["drawer_stile"], C["drawer_wide"])
@@ -274,15 +266,13 @@ class TableLayout(Layout):
         self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", holes) + legs)
         if node.one("shelf"):
             self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
-                      z=max(min(p["shelf_height"] * H, za0 - C["shelf_low"][0]), z_leg + C["shelf_low"][1]),
+                      z=max(min(p["shelf_height"] * p["height"], za0 - C["shelf_low"][0]), z_leg + C["shelf_low"][1]),
                       shape="square")
         if casters:
             self.grow(casters, frames=frames, caster=c)
-        both, one = C["drawer_reach"]
-        depth = min(C["drawer_depth"], (2 * half - 2 * T.BOARD) * (both if len(sides) == 2 else one))
         slots = [(1, h) for h in holes[1]] + [(-1, h) for h in holes.get(-1, [])]
         for k, (d, (side, hole)) in enumerate(zip(front + back, slots, strict=True)):
-            self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=depth)
+            self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=box.depth)
         if leaves:
             self.grow(leaves, half=half, za0=za0, za1=za1, z_low=z_leg)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}

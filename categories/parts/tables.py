@@ -364,3 +364,32 @@ class DiningFrame:
         span = Wa / 2 - max(lw, D["board"]) if p["drawer_sides"] == "ends" else x_in
         z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
         return cls(La, Wa, wc, lw, za0, za1, leaf, x_in, span, z_top)
+
+
+@dataclass(frozen=True)
+class StorageFrame:
+    """A storage coffee table's box (the table's frame, metres), from its parameters and
+    :data:`~.furniture_sizes.COCKTAIL`: square legs ``lw`` wide (a little stouter than the rails) ``inset`` in
+    (further in under drop leaves: the folded lopers lie inside them), the box ``2 half`` square from ``za0`` up
+    to the top's underside ``za1``, ``span`` of drawer board between the legs, drawers ``depth`` deep."""
+
+    lw: float
+    inset: float
+    half: float
+    za0: float
+    za1: float
+    span: float
+    depth: float
+
+    @classmethod
+    def of(cls, p: dict, sizes: dict, leaves: bool, back_to_back: bool) -> StorageFrame:
+        C = sizes
+        lw = 2 * p["leg_radius"] + C["square_leg"]
+        inset = min(p["leg_inset"], C["inset_max"] * p["width"])
+        if leaves:
+            inset = max(inset, lw / 2 + C["loper_room"])
+        half = p["width"] / 2 - inset + lw / 2
+        za1 = p["height"] - p["top_thickness"]
+        both, one = C["drawer_reach"]
+        depth = min(C["drawer_depth"], (2 * half - 2 * BOARD) * (both if back_to_back else one))
+        return cls(lw, inset, half, za1 - p["box_depth"], za1, 2 * (half - lw), depth)
