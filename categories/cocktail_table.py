@@ -339,26 +339,19 @@ class TableLayout(Layout):
         frame, span = M.nest_frame(W, H - tt, NEST, "frame")
         self.add("body", "body", frame)
         kids = node.of("nested")
+        top_t = NEST["top"].get(p["top_finish"], NEST["top_board"])
+        size = M.NestedSize.first(span, W, H - tt, len(kids), top_t, NEST)
         for k, n in enumerate(kids):
-            side = 1 if k == 0 else -1
-            depth = NEST["depth"][0 if len(kids) == 1 else 1] * W
-            x0 = -depth / 2 if len(kids) == 1 else NEST["x0"]
-            self.grow(n, name=f"nested_{k}", parent="body", side=side, width=span - NEST["side_clear"], depth=depth,
-                      x0=x0, height=H - tt - NEST["gap"], top_t=NEST["top"].get(p["top_finish"], NEST["top_board"]))
+            self.grow(n, name=f"nested_{k}", parent="body", side=1 if k == 0 else -1, size=size)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
-    def nested(self, node, name, parent, side, width, depth, x0, height, top_t):
+    def nested(self, node, name, parent, side, size):
         """One table of the nest, sliding out along ``side`` * x; its own nested table inside it."""
-        pieces, span = M.nesting_table(width, depth, height, top_t, NEST["leg"], x0, "top", "frame")
-        if side < 0:
-            pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
-        self.add(name, "table", pieces)
-        self.slide(parent, name, Frame.at((side * (x0 + depth), 0, height / 2), z=(side, 0, 0)),
-                   upper=NEST["travel"] * depth, role="slide")
+        made, inner = M.nested_table(size, side, NEST)
+        table = self.place(made, name)
+        self.slide(parent, table.root, table.anchor("slide"), upper=NEST["travel"] * size.depth, role="slide")
         if node.one("inner"):
-            deeper, out = NEST["inner"]
-            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, width=span - NEST["side_clear"],
-                      depth=deeper * depth, x0=x0 + out * depth, height=height - top_t - NEST["gap"], top_t=top_t)
+            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, size=inner)
 
     inner = nested
 

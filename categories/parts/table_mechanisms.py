@@ -11,6 +11,7 @@ legs or swing-out brackets (Gateleg and Pembroke tables, IKEA Norden / Gamlared)
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -327,3 +328,43 @@ def caster_plates(frames: list, leg_w: float, stem_top: float, z_leg: float, siz
     over, _, past = sizes["caster_plate"]
     return [g.box_between(f.point((-leg_w / 2 - past, -leg_w / 2 - past, stem_top + over)),
                           f.point((leg_w / 2 + past, leg_w / 2 + past, z_leg)), "metal") for f in frames]
+
+
+# -- a nest of tables ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class NestedSize:
+    """One table of a nest (:func:`nesting_table`'s sizes, metres): ``width`` across (y), ``depth`` along x
+    from ``x0``, ``height`` to its top's upper face, tops ``top_t`` thick. ``sizes`` is
+    :data:`~.furniture_sizes.NEST`."""
+
+    width: float
+    depth: float
+    x0: float
+    height: float
+    top_t: float
+
+    @classmethod
+    def first(cls, span: float, table_width: float, z_under: float, count: int, top_t: float, sizes: dict
+              ) -> NestedSize:
+        """A table nested in the outer frame (``span`` between its legs, under a top ``table_width`` across
+        whose underside is at ``z_under``): one of ``count`` (1: centred, 2: each from ``sizes["x0"]``)."""
+        depth = sizes["depth"][0 if count == 1 else 1] * table_width
+        x0 = -depth / 2 if count == 1 else sizes["x0"]
+        return cls(span - sizes["side_clear"], depth, x0, z_under - sizes["gap"], top_t)
+
+    def inner(self, span: float, sizes: dict) -> NestedSize:
+        """The table nested in this one (``span`` between this one's legs)."""
+        deeper, out = sizes["inner"]
+        return NestedSize(span - sizes["side_clear"], deeper * self.depth, self.x0 + out * self.depth,
+                          self.height - self.top_t - sizes["gap"], self.top_t)
+
+
+def nested_table(size: NestedSize, side: int, sizes: dict) -> tuple[Assembly, NestedSize]:
+    """A :func:`nesting_table` of ``size`` sliding out along ``side`` (+1 / -1) * x (mirrored for -1); anchor
+    ``slide`` at its outer end, half way up, z pointing out. Returns it and the size of a table nested in it."""
+    pieces, span = nesting_table(size.width, size.depth, size.height, size.top_t, sizes["leg"], size.x0, "top",
+                                 "frame")
+    if side < 0:
+        pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
+    slide = Frame.at((side * (size.x0 + size.depth), 0, size.height / 2), z=(side, 0, 0))
+    return Assembly.single("table", pieces, {"slide": slide}), size.inner(span, sizes)
