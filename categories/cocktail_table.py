@@ -159,40 +159,34 @@ class TableLayout(Layout):
 
     def legs(self, node):
         p = self.p
-        W, H, tt, shape = p["width"], p["height"], p["top_thickness"], p["top_shape"]
+        W, shape = p["width"], p["top_shape"]
         few, most = C["leg_counts"]
         n = most if shape == "square" else (p["leg_count"] or int(self.rng.integers(few, most + 1)))
-        inset = min(p["leg_inset"], C["inset_max"] * W)
-        frames = T.leg_frames(W, shape, inset, n)
         lift = node.one("lift_top")
-        rl = p["leg_radius"]
-        za1 = H - tt - (C["seat"] if lift else 0.0)
-        za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
+        fr = T.LegFrame.of(p, C, bool(lift))
+        inset, za0, za1, rl = fr.inset, fr.za0, fr.za1, p["leg_radius"]
+        frames = T.leg_frames(W, shape, inset, n)
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
             body = apron + [pc for f in frames for pc in self._leg(p["leg_style"], rl, za1).mounted(f).pieces]
             self.add("body", "body", body)
             if node.one("shelf"):
-                self.grow(node.one("shelf"), inset=inset, r_leg=C["shelf_leg"] * rl,
-                          z=min(p["shelf_height"] * H, za0 - C["shelf_under_well"]))
+                self.grow(node.one("shelf"), inset=inset, r_leg=C["shelf_leg"] * rl, z=fr.shelf_z)
             fwd = p["lift_forward_ratio"] if p["has_lift_forward"] else 0.0
             return self.grow(lift, inset=inset, z=za0, fwd=fwd)
         # telescopic: sleeves stay, the top lifts with its apron and posts
-        rp = C["post"] * rl
-        ro = rp + T.CLEAR + T.WALL
-        zs1 = C["sleeve_top"] * za0
-        travel = min(p["stand_travel"], zs1 - C["sleeve_room"])
-        zp0 = zs1 - travel - C["post_in"]  # post bottom at rest
+        ro = fr.sleeve_r
         self.add("body", "body", [pc.transformed(f.matrix) for f in frames
-                                  for pc in T.round_sleeve(ro, zs1, "metal", "foot")])
+                                  for pc in T.round_sleeve(ro, fr.sleeve_top, "metal", "foot")])
         if node.one("shelf"):
-            self.grow(node.one("shelf"), inset=inset, r_leg=ro, z=min(p["shelf_height"] * H, zs1 - C["shelf_under"]))
+            self.grow(node.one("shelf"), inset=inset, r_leg=ro, z=fr.shelf_z)
         else:
             self.extend("body", T.stretchers(frames, C["stretcher_z"], ro, "metal", square=shape == "square"))
-        posts = [g.cylinder(f.point((0, 0, zp0)), f.point((0, 0, za1)), rp, "metal", 32) for f in frames]
-        at = Frame.at((0, 0, zs1))
+        posts = [g.cylinder(f.point((0, 0, fr.post_bottom)), f.point((0, 0, za1)), fr.post_r, "metal", 32)
+                 for f in frames]
+        at = Frame.at((0, 0, fr.sleeve_top))
         return {"pieces": apron + posts,
-                "joint": J.prismatic("body", "top", at.origin, at.z, 0.0, travel, role="telescope")}
+                "joint": J.prismatic("body", "top", at.origin, at.z, 0.0, fr.travel, role="telescope")}
 
     def lift_top(self, node, inset, z, fwd):
         """The storage well's floor and the lift: two two-stage struts on the floor, their middle

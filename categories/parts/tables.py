@@ -393,3 +393,35 @@ class StorageFrame:
         both, one = C["drawer_reach"]
         depth = min(C["drawer_depth"], (2 * half - 2 * BOARD) * (both if back_to_back else one))
         return cls(lw, inset, half, za1 - p["box_depth"], za1, 2 * (half - lw), depth)
+
+
+@dataclass(frozen=True)
+class LegFrame:
+    """A coffee table on legs (the table's frame, metres), from its parameters and
+    :data:`~.furniture_sizes.COCKTAIL`: legs ``inset`` in, the apron from ``za0`` to ``za1`` (a lift-top's well
+    is ``box_depth`` deep, its top resting ``seat`` above the rim), a lower shelf at ``shelf_z``; a telescopic
+    stand's posts (``post_r``) slide ``travel`` in sleeves (``sleeve_r``) up to ``sleeve_top``, a post's foot at
+    ``post_bottom`` at rest."""
+
+    inset: float
+    za0: float
+    za1: float
+    shelf_z: float
+    post_r: float
+    sleeve_r: float
+    sleeve_top: float
+    travel: float
+    post_bottom: float
+
+    @classmethod
+    def of(cls, p: dict, sizes: dict, lift: bool) -> LegFrame:
+        C, H = sizes, p["height"]
+        inset = min(p["leg_inset"], C["inset_max"] * p["width"])
+        za1 = H - p["top_thickness"] - (C["seat"] if lift else 0.0)
+        za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
+        rp = C["post"] * p["leg_radius"]
+        ro = rp + CLEAR + WALL
+        zs1 = C["sleeve_top"] * za0
+        travel = min(p["stand_travel"], zs1 - C["sleeve_room"])
+        shelf = min(p["shelf_height"] * H, za0 - C["shelf_under_well"] if lift else zs1 - C["shelf_under"])
+        return cls(inset, za0, za1, shelf, rp, ro, zs1, travel, zs1 - travel - C["post_in"])
