@@ -45,7 +45,7 @@ from .parts.furniture_sizes import NEST
 def per_side(p: dict, count: int) -> int:
     """A side's drawer count, capped by the table's width: one under 0.7 m, two under 0.9 m, else up to three
     (the cap keeps every drawer front at least ~0.25 m wide, as on IKEA HEMNES / LIATORP storage tables)."""
-    return min(count, 1 if p["width"] < 0.7 else 2 if p["width"] < 0.9 else 3)
+    return min(count, next(n for under, n in C["drawers_per_side"] if p["width"] < under))
 
 
 def drawer_count(p, rng) -> int:
@@ -194,15 +194,10 @@ class TableLayout(Layout):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
         self.extend("body", [T.apron_bottom(W, p["top_shape"], inset, p["leg_radius"], z, "frame")])
-        z_floor = z + C["well_floor"]
-        half = (W / 2 - inset) * (C["round_struts"] if p["top_shape"] == "round" else 1.0) - T.BOARD
-        u = np.array([fwd, 0.0, 1.0])
-        x = -C["struts_back"] * half - 0.5 * fwd * (H - tt - z_floor)  # tilted struts lean forward across the centre
-        ys = (0.5 * half, -0.5 * half)
-        sleeves, middle, rods, t1, t2 = M.lift_struts(ys, x, z_floor, H - tt, u, p["lift_travel"], "strut")
+        (sleeves, middle, rods, t1, t2), at = M.well_struts(W, p["top_shape"], inset, z + C["well_floor"], H - tt, fwd,
+                                                            p["lift_travel"], C)
         self.extend("body", sleeves)
         self.add("lift_frame", "lift", middle)
-        at = Frame.at((0, 0, H - tt), z=u)
         self.join(J.prismatic("body", "lift_frame", at.origin, at.z, 0.0, t1, role="slide"))
         return {"pieces": rods, "label": "lid",
                 "joint": J.prismatic("lift_frame", "top", at.origin, at.z, 0.0, t2, role="slide")}

@@ -7,6 +7,8 @@ builders they call live in :mod:`.tables` and :mod:`.table_mechanisms`.
 
 from __future__ import annotations
 
+import math
+
 # -- cocktail table -------------------------------------------------------------------------------
 COCKTAIL = {
     "seat": 0.003,  # a lift-top rests this far above the apron rim
@@ -32,6 +34,9 @@ COCKTAIL = {
     "board": 0.018,  # apron board (tables.BOARD)
     "drawer_margin": 0.015,  # apron board above and below the openings
     "drawer_stile": 0.024,  # apron between neighbouring drawer openings
+    # drawers a side by the top's width: one under 0.7 m, two under 0.9 m, else up to three (every front at least
+    # ~0.25 m wide, as on IKEA HEMNES / LIATORP storage tables)
+    "drawers_per_side": ((0.7, 1), (0.9, 2), (math.inf, 3)),
     "drawer_wide": 0.6,  # drawers are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)
     "drawer_depth": 0.45,  # coffee-table drawers run 0.3-0.45 m deep
     "drawer_reach": (0.45, 0.85),  # a drawer's depth as a fraction of the box: back to back, or one side
@@ -138,7 +143,7 @@ DINING_RANGES = {
     "leaf_count": (1, 2), "lazy_susan_radius": (0.22, 0.3), "leg_travel": (0.03, 0.1),
     "wheel_radius": (0.025, 0.038), "pedestal_radius": (0.05, 0.09),
 }
-# Shares of the choices: tops, legs, drawer sides and finishes as the retailers' ranges above carry them.
+# How often each choice is drawn: the generator's mix over the kinds the retailers above sell (not market data).
 DINING_SHARES = {
     "top_shape": (0.7, 0.3), "leg_style": (0.4, 0.35, 0.25), "drawer_sides": (0.4, 0.35, 0.25),
     "handle_style": (0.45, 0.35, 0.2), "top_finish": (0.75, 0.25), "frame_finish": (0.6, 0.25, 0.15),

@@ -368,3 +368,17 @@ def nested_table(size: NestedSize, side: int, sizes: dict) -> tuple[Assembly, Ne
         pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
     slide = Frame.at((side * (size.x0 + size.depth), 0, size.height / 2), z=(side, 0, 0))
     return Assembly.single("table", pieces, {"slide": slide}), size.inner(span, sizes)
+
+
+def well_struts(width: float, shape: str, inset: float, z_floor: float, z_under: float, fwd: float, travel: float,
+                sizes: dict) -> tuple[tuple, Frame]:
+    """A lift-top's two :func:`lift_struts` on its well's floor ``z_floor`` under a top ``width`` across (legs
+    ``inset`` in) whose underside is at ``z_under``: ``sizes["round_struts"]`` of a round top's half width apart,
+    ``sizes["struts_back"]`` of it behind the centre, leaning ``fwd`` forward per unit up (tilted struts lean
+    forward across the centre). Returns :func:`lift_struts`' parts and the lift frame (z the lift's direction,
+    at the top's underside)."""
+    half = (width / 2 - inset) * (sizes["round_struts"] if shape == "round" else 1.0) - T.BOARD
+    u = np.array([fwd, 0.0, 1.0])
+    x = -sizes["struts_back"] * half - 0.5 * fwd * (z_under - z_floor)
+    made = lift_struts((0.5 * half, -0.5 * half), x, z_floor, z_under, u, travel, "strut")
+    return made, Frame.at((0, 0, z_under), z=u)
