@@ -40,7 +40,7 @@ from .parts.furniture_sizes import DINING_SHARES as SH
 def per_side(p: dict, count: int) -> int:
     """A long side's drawer count: up to three on a table 1.9 m or longer (farmhouse and refectory tables carry
     2-3 apron drawers a side), else up to two."""
-    return min(count, 3 if p["length"] >= 1.9 else 2)
+    return min(count, next(n for under, n in D["drawers_per_side"] if p["length"] < under))
 
 
 def drawer_count(p, rng) -> int:
@@ -338,13 +338,10 @@ class TableLayout(Layout):
         for name, s in (("top_front", 1), ("top_back", -1)):
             half = self.place(M.split_half(L, W, p["top_shape"], H - tt, H, D["split"], s, "top"), name)
             self.slide("body", half.root, half.anchor("slide"), upper=travel)
-        half = min(travel, x_in - D["leaf_store"])
         leaves = node.of("leaf")
-        if len(leaves) > 1:  # two leaves, each half the opening wide, fill it side by side
-            half /= 2
-        for k, n in enumerate(leaves):
-            z1 = leaf[1] - k * (D["leaf_t"] + D["leaf_gap"])
-            self.grow(n, k=k, leaf=M.stored_leaf(half, Wa / 2 - D["board"], z1, D["leaf_t"], "top"))
+        made = M.stored_leaves(len(leaves), min(travel, x_in - D["leaf_store"]), Wa, leaf[1], D, "top")
+        for k, (n, stored) in enumerate(zip(leaves, made, strict=True)):
+            self.grow(n, k=k, leaf=stored)
 
     def leaf(self, node, k, leaf):
         """A leaf stored on the runners in the apron, under the split (it is taken out by hand)."""

@@ -107,6 +107,9 @@ DINING = {
     "margin": 0.012,  # apron board above and below a drawer opening
     "drawer_min": 0.06,  # the lowest drawer opening worth having
     "drawer_width": 0.5,  # the widest drawer
+    # drawers in a long side: up to two, three on a table 1.9 m or longer (farmhouse and refectory tables carry
+    # 2-3 apron drawers a side)
+    "drawers_per_side": ((1.9, 2), (math.inf, 3)),
     "drawer_stile": (0.05, 0.1),  # apron kept between drawer openings: in an end board, in a long board
     "drawer_reach": (0.45, 0.8),  # a drawer's depth as a fraction of the apron: back to back, or one side
     "leaf_room": 0.006,  # drawers stay this far under the stored leaves

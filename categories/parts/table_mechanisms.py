@@ -382,3 +382,13 @@ def well_struts(width: float, shape: str, inset: float, z_floor: float, z_under:
     x = -sizes["struts_back"] * half - 0.5 * fwd * (z_under - z_floor)
     made = lift_struts((0.5 * half, -0.5 * half), x, z_floor, z_under, u, travel, "strut")
     return made, Frame.at((0, 0, z_under), z=u)
+
+
+def stored_leaves(count: int, opening: float, apron_width: float, z_top: float, sizes: dict, material: str
+                  ) -> list[Assembly]:
+    """``count`` :func:`stored_leaf` leaves stacked in an extending table's apron (``apron_width`` across,
+    ``sizes["board"]`` boards) from ``z_top`` down, ``sizes["leaf_gap"]`` apart: one ``2 opening`` long, or
+    two each half that (they fill the opening side by side when laid in)."""
+    half = opening / 2 if count > 1 else opening
+    return [stored_leaf(half, apron_width / 2 - sizes["board"], z_top - k * (sizes["leaf_t"] + sizes["leaf_gap"]),
+                        sizes["leaf_t"], material) for k in range(count)]
