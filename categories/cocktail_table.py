@@ -235,7 +235,7 @@ class TableLayout(Layout):
         leaves = node.one("drop_leaves")
         front, back = node.of("drawer"), node.of("back_drawer")
         box = T.StorageFrame.of(p, C, bool(leaves), bool(back))
-        lw, inset, half, za0, za1, span = box.lw, box.inset, box.half, box.za0, box.za1, box.span
+        lw, half, za0, za1, span = box.lw, box.half, box.za0, box.za1, box.span
 
         def openings(per):  # one bay per drawer, the drawer centred in it
             return M.drawer_openings(span, per, za0, za1, C["drawer_margin"], C["drawer_stile"], C["drawer_wide"])
@@ -243,7 +243,7 @@ class TableLayout(Layout):
         holes = {1: openings(len(front))}
         if back:
             holes[-1] = openings(len(back))
-        frames = T.corner_frames(2 * half, 2 * half, lw / 2)
+        frames = box.corners()
         casters = node.one("casters")
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
         over, plate, _ = C["caster_plate"]
@@ -254,9 +254,7 @@ class TableLayout(Layout):
             legs += M.caster_plates(frames, lw, c.stem_top, z_leg, C)
         self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", holes) + legs)
         if node.one("shelf"):
-            self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
-                      z=max(min(p["shelf_height"] * p["height"], za0 - C["shelf_low"][0]), z_leg + C["shelf_low"][1]),
-                      shape="square")
+            self.grow(node.one("shelf"), **box.shelf(p, z_leg, C), shape="square")
         if casters:
             self.grow(casters, frames=frames, caster=c)
         slots = [(1, h) for h in holes[1]] + [(-1, h) for h in holes.get(-1, [])]

@@ -394,6 +394,17 @@ class StorageFrame:
         depth = min(C["drawer_depth"], (2 * half - 2 * BOARD) * (both if back_to_back else one))
         return cls(lw, inset, half, za1 - p["box_depth"], za1, 2 * (half - lw), depth)
 
+    def corners(self) -> list[Frame]:
+        """Where the four legs stand (at the box's corners)."""
+        return corner_frames(2 * self.half, 2 * self.half, self.lw / 2)
+
+    def shelf(self, p: dict, z_leg: float, sizes: dict) -> dict:
+        """A low shelf between the legs (standing from ``z_leg``): its inset, leg radius and height (between
+        ``sizes["shelf_low"]`` under the apron and over the caster plates), as :func:`shelf` takes them."""
+        under, over = sizes["shelf_low"]
+        return {"inset": self.inset - self.lw / 2 + BOARD, "r_leg": self.lw / 2,
+                "z": max(min(p["shelf_height"] * p["height"], self.za0 - under), z_leg + over)}
+
 
 @dataclass(frozen=True)
 class LegFrame:
