@@ -183,7 +183,7 @@ class TableLayout(Layout):
             body += M.bearer_frame(xb, yb, za1, H - tt, D["bearer"], "frame")
         self.add("body", "body", body)
         self.grow(support, La=La, Wa=Wa, lw=fr.lw, za0=za0, za1=za1)
-        self.grow(style, x_in=fr.x_in, La=La, Wa=Wa, leaf=fr.leaf, wc=wc, za0=za0, za1=za1)
+        self.grow(style, x_in=fr.x_in, La=La, Wa=Wa, leaf=fr.leaf, wc=wc, za0=za0, za1=za1, fr=fr)
         if drawers:
             self.grow(drawers, slots=[(s, h) for s in sides for h in holes[s]], Wa=Wa, La=La, sides=len(sides))
 
@@ -306,28 +306,28 @@ class TableLayout(Layout):
                           "leaf_front" if side > 0 else "leaf_back")
         self.slide("body", leaf.root, leaf.anchor("slide"), upper=ll - D["draw_leaf_keep"])
 
-    def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
+    def drop_leaf(self, node, fr, **slot):
         for side, n in zip((1, -1), node.of("leaf_side")):
-            self.grow(n, side=side, wc=wc, za0=za0, za1=za1, Wa=Wa, La=La)
+            self.grow(n, side=side, fr=fr)
 
-    def leaf_side(self, node, side, wc, za0, za1, Wa, La):
+    def leaf_side(self, node, side, fr):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         name = "leaf_left" if side > 0 else "leaf_right"
-        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], D["outline"]), side, wc / 2 + D["leaf_gap_y"],
+        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], D["outline"]), side, fr.wc / 2 + D["leaf_gap_y"],
                                    H - tt, H, "top")
         self.add(name, "leaf", [piece])
         self.hinge("body", name, hinge, upper=math.pi / 2)
         if node.one("loper"):
-            self.grow(node.one("loper"), side=side, leaf=name, Wa=Wa, La=La, za0=za0, za1=za1,
-                      reach=wc / 2 + D["loper_reach"] * (W - wc) / 2)
+            self.grow(node.one("loper"), side=side, leaf=name, fr=fr)
 
-    def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
+    def loper(self, node, side, leaf, fr):
         """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
         under a leaf whose apron is ``D["two_lopers"]`` long or longer when ``lopers_per_leaf`` is 2."""
-        length = min(D["loper"], D["loper_apron"] * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        count = self.p["lopers_per_leaf"] if La >= D["two_lopers"] else 1
-        for k, bracket in enumerate(M.apron_lopers(La, side * Wa / 2, side, za0, za1, length, count, "frame")):
+        count = self.p["lopers_per_leaf"] if fr.La >= D["two_lopers"] else 1
+        lopers = M.apron_lopers(fr.La, side * fr.Wa / 2, side, fr.za0, fr.za1, fr.loper_length(self.p["width"], D),
+                                count, "frame")
+        for k, bracket in enumerate(lopers):
             loper = self.place(bracket, f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else ""))
             self.hinge("body", loper.root, loper.anchor("hinge"), upper=math.pi / 2, requires_open=leaf)
 

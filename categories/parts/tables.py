@@ -365,6 +365,13 @@ class DiningFrame:
         z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
         return cls(La, Wa, wc, lw, za0, za1, leaf, x_in, span, z_top)
 
+    def loper_length(self, width: float, sizes: dict) -> float:
+        """A drop-leaf table's swing-out bracket: at most ``sizes["loper"]`` and ``sizes["loper_apron"]`` of the
+        apron long, and swung out it ends ``sizes["loper_reach"]`` of the way out under a leaf of a top
+        ``width`` wide."""
+        reach = self.wc / 2 + sizes["loper_reach"] * (width - self.wc) / 2
+        return min(sizes["loper"], sizes["loper_apron"] * self.La, reach - self.Wa / 2)
+
 
 @dataclass(frozen=True)
 class StorageFrame:
