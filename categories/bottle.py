@@ -26,10 +26,9 @@ The closure (``cap``; ``auto``, the default, draws one the profile usually wears
 * ``pump``: a collar that unscrews like a screw cap and an up-lock actuator head with a
   nozzle on it that turns and rises 12 mm (continuous_prismatic, child of the collar);
 * ``sports``: a screw cap with a push-pull spout that rises 6 mm (prismatic, child of
-  the cap). The label is a thin band around the
-straight part of the body, a separate part that turns about Z (its centre of mass is on
-the axis) with clearance from the glass. Walls, finishes and closures live in
-:mod:`.parts.vessel`.
+  the cap). The label is a thin paper band glued around the
+straight part of the body: pieces of the body (a label does not turn on a real bottle).
+Walls, finishes and closures live in :mod:`.parts.vessel`.
 """
 
 from __future__ import annotations
@@ -77,7 +76,7 @@ GRAMMAR = Grammar("bottle", {
     "head": Node(label="head", doc="the pump's actuator head: turns to unlock, rises"),
     "sports": Node(label="cap", required=("spout",), doc="a screw cap with a push-pull spout"),
     "spout": Node(label="spout", doc="the push-pull spout: rises to open"),
-    "label": Node(label="label", doc="a paper band that turns about the axis"),
+    "label": Node(label="body", doc="a paper label glued round the body (pieces of the body)"),
 })
 
 PARAMS = (
@@ -154,14 +153,14 @@ class BottleLayout(Layout):
 
     def spout(self, node, cap):
         sp = self.place(CL.sports_spout(0.0, "spout").attached("base", to=cap.anchor("top")), "spout")
-        self.slide(cap.root, sp.root, sp.anchor("base"), SPORTS["pull"], role="button")
+        # friction-held, not spring-returned: a push-pull spout stays where it is put
+        self.slide(cap.root, sp.root, sp.anchor("base"), SPORTS["pull"], role="lid")
 
     def label(self, node, body, profile):
         p = self.p
         zone = tuple(z * p["height"] for z in KINDS[p["profile"]][5])
         band = V.label_band(profile, zone, p["label_fill"], p["label_offset"], "label")
-        band = self.place(band.attached("vessel", to=body.anchor("base")), "label")
-        self.join(V.spin_joint(body.root, band))
+        self.extend(body.root, band.attached("vessel", to=body.anchor("base")).pieces)  # glued: the body's
 
 
 CATEGORY = Category("bottle", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, BottleLayout, materials={

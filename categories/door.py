@@ -31,6 +31,8 @@ from infmob_usd.params import Choice, Float, Int
 from .parts import doors as P
 from .parts import hardware
 
+R = P.RANGES  # the parameters' ranges (sourced in doors.Ranges)
+
 GRAMMAR = Grammar("door", {
     "door": Node(label="frame", optional={"threshold": 0.5},
                  one_of={"single": 0.45, "double": 0.22, "sliding": 0.15, "dutch": 0.18}, choice="design"),
@@ -71,24 +73,24 @@ plate), the top half a fixed knob and, often, a deadbolt's thumb-turn (Simpson, 
 lockset in the bottom half, a deadbolt in the top)."""
 
 PARAMS = (
-    Float("leaf_width", "leaf width (Y)", "m", 0.8, 1.0),
-    Float("leaf_height", "leaf height (Z)", "m", 2.0, 2.1),
-    Float("leaf_thickness", "leaf thickness (X)", "m", 0.04, 0.06),
-    Float("frame_depth", "jamb depth (X), about the wall thickness", "m", 0.1, 0.16),
-    Float("jamb_width", "jamb and head board thickness", "m", 0.025, 0.05),
-    Float("casing_width", "architrave width", "m", 0.05, 0.09),
+    Float("leaf_width", "leaf width (Y)", "m", *R.leaf_width),
+    Float("leaf_height", "leaf height (Z)", "m", *R.leaf_height),
+    Float("leaf_thickness", "leaf thickness (X)", "m", *R.leaf_thickness),
+    Float("frame_depth", "jamb depth (X), about the wall thickness", "m", *R.frame_depth),
+    Float("jamb_width", "jamb and head board thickness", "m", *R.jamb_width),
+    Float("casing_width", "architrave width", "m", *R.casing_width),
     Choice("hinge_side", "jamb the leaf hangs on, seen from the front (+X)", choices=("left", "right")),
     Choice("leaf_style", "leaf face", choices=("flat", "recessed", "raised"), weights=(0.3, 0.35, 0.35)),
-    Int("panel_count", "panels of a panelled leaf (2, 3, 5: one column; 4, 6: two)", "", 2, 6),
+    Int("panel_count", "panels of a panelled leaf (2, 3, 5: one column; 4, 6: two)", "", *R.panel_count),
     Choice("glazing", "glass lites", choices=("none", "top", "full"), weights=(0.55, 0.3, 0.15)),
-    Float("stile_width", "width of the leaf's stiles and top rail", "m", 0.1, 0.14),
-    Float("handle_height", "handle axis above the floor", "m", 0.95, 1.05),
-    Float("lever_length", "lever grip length", "m", 0.1, 0.14),
-    Float("knob_radius", "knob radius", "m", 0.025, 0.032),
-    Float("pull_length", "bar pull length", "m", 0.25, 0.45),
+    Float("stile_width", "width of the leaf's stiles and top rail", "m", *R.stile_width),
+    Float("handle_height", "handle axis above the floor", "m", *R.handle_height),
+    Float("lever_length", "lever grip length", "m", *R.lever_length),
+    Float("knob_radius", "knob radius", "m", *R.knob_radius),
+    Float("pull_length", "bar pull length", "m", *R.pull_length),
     Float("pair_fraction", "each leaf of a double door as a fraction of leaf_width (0.6-0.75 m leaves)", "",
-          0.68, 0.75),
-    Float("wheel_radius", "barn-door hanger wheel radius", "m", 0.03, 0.045),
+          *R.pair_fraction),
+    Float("wheel_radius", "barn-door hanger wheel radius", "m", *R.wheel_radius),
     Choice("leaf_finish", "leaf material", choices=("wood", "painted")),
     Choice("frame_finish", "frame material: the leaf's or painted white", choices=("match", "white"),
            weights=(0.6, 0.4)),

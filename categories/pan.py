@@ -141,7 +141,8 @@ class PanLayout(Layout):
 
     def detachable(self, node, body, pan):
         h = self._split(node, body, pan)
-        self.slide(body.root, h.root, h.anchor("pull"), SPLIT_HANDLE["pull"])
+        # pulled off its lug: a lift-off (the core caps the pull at a hand's)
+        self.slide(body.root, h.root, h.anchor("pull"), SPLIT_HANDLE["pull"], role="lift_off")
         self.grow(node.one("release"), handle=h)
 
     def release(self, node, handle):

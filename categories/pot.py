@@ -144,7 +144,7 @@ class PotLayout(Layout):
         b = self.place(b.attached("seat", to=body.anchor("lid_seat")), "pasta")
         s = b.anchor("seat")
         self.join(J.prismatic(body.root, b.root, tuple(s.origin), tuple(s.z), 0.0, skirt + PASTA["clear"],
-                              role="lid"))
+                              role="lift_off"))
         return b, info
 
     def steamer(self, node, body, pot):
@@ -158,7 +158,7 @@ class PotLayout(Layout):
         t, info = CL.steamer_tier(pot, p["tier_height"] * p["radius"], "body", "rim", slots["handle"])
         t = self.place(t.attached("seat", to=below.anchor("lid_seat")), name)
         s = t.anchor("seat")
-        self.join(J.prismatic(below.root, t.root, tuple(s.origin), tuple(s.z), 0.0, STEAMER["lift"], role="lid"))
+        self.join(J.prismatic(below.root, t.root, tuple(s.origin), tuple(s.z), 0.0, STEAMER["lift"], role="lift_off"))
         return t, info
 
     def pressure(self, node, body, pot):
@@ -168,7 +168,7 @@ class PotLayout(Layout):
         lid = self.place(lid.attached("seat", to=body.anchor("lid_seat")), "lid")
         s = lid.anchor("seat")
         self.join(J.revolute_prismatic(body.root, lid.root, tuple(s.origin), tuple(s.z), (0.0, PRESSURE["turn"]),
-                                         tuple(s.z), (0.0, LIFT), role="lid"))
+                                         tuple(s.z), (0.0, LIFT), role="lift_off"))
         loop = V.lid_loop(dome, p["knob_radius"], slots["knob"])
         self.extend(lid.root, loop.attached("base", to=lid.anchor("top")).pieces)
         self.grow(node.one("valve"), lid=lid, dome=dome)

@@ -14,14 +14,14 @@ sweeps over stays below its outlet. Optional real extra: a bath-shower wall mixe
 
 from __future__ import annotations
 
-import math
-
 from infmob_usd import joints as J
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float
 
 from .parts import taps as T
+
+R = T.RANGES  # the parameters' ranges (sourced in taps.Ranges)
 
 GRAMMAR = Grammar("tap", {
     "tap": Node(label="base", required=("spout",), one_of={"deck": 0.4, "bridge": 0.2, "pull_out": 0.25, "wall": 0.15},
@@ -44,22 +44,22 @@ kitchen mixer (side lever; the spray head slides out of the spout on its hose an
 (a bar on two S-unions, the lever on top, the spout swivelling under it)."""
 
 PARAMS = (
-    Float("height", "height of the tap (top of the spout or of the lever cap)", "m", 0.15, 0.4),
-    Float("base_width", "deck plate width (Y); at least what its columns need", "m", 0.06, 0.25),
+    Float("height", "height of the tap (top of the spout or of the lever cap)", "m", *R.height),
+    Float("base_width", "deck plate width (Y); at least what its columns need", "m", *R.base_width),
     Choice("base_shape", "deck plate outline", choices=("round", "rect")),
-    Float("body_radius", "radius of the main column", "m", 0.016, 0.028),
+    Float("body_radius", "radius of the main column", "m", *R.body_radius),
     Choice("spout_shape", "spout form (a gooseneck needs a separate pipe: on a collar it is curved)",
            choices=("gooseneck", "curved", "straight"), weights=(0.35, 0.4, 0.25)),
-    Float("spout_reach", "horizontal reach of the spout outlet from its axis", "m", 0.1, 0.24),
-    Float("spout_radius", "spout tube radius", "m", 0.007, 0.012),
+    Float("spout_reach", "horizontal reach of the spout outlet from its axis", "m", *R.spout_reach),
+    Float("spout_radius", "spout tube radius", "m", *R.spout_radius),
     Choice("spout_joint", "spout swivel: free (continuous) or limited (revolute)", choices=("continuous", "revolute")),
-    Float("spout_swivel", "swivel range (+-) of a limited spout", "rad", math.pi / 6, 3 * math.pi / 4),
-    Float("lever_length", "lever arm length beyond its cap", "m", 0.04, 0.12),
-    Float("lever_tilt", "lever lift range", "rad", math.pi / 9, math.pi / 5),
-    Float("handle_spread", "distance of each valve handle or side mixer from the middle (Y)", "m", 0.05, 0.1),
+    Float("spout_swivel", "swivel range (+-) of a limited spout", "rad", *R.spout_swivel),
+    Float("lever_length", "lever arm length beyond its cap", "m", *R.lever_length),
+    Float("lever_tilt", "lever lift range", "rad", *R.lever_tilt),
+    Float("handle_spread", "distance of each valve handle or side mixer from the middle (Y)", "m", *R.handle_spread),
     Choice("handle_kind", "valve handle form", choices=("cross", "lever")),
-    Float("head_travel", "how far a pull-out spray head slides out on its hose", "m", 0.12, 0.2),
-    Float("wall_length", "length of a wall mixer's body (Y)", "m", 0.15, 0.22),
+    Float("head_travel", "how far a pull-out spray head slides out on its hose", "m", *R.head_travel),
+    Float("wall_length", "length of a wall mixer's body (Y)", "m", *R.wall_length),
     Choice("finish", "tap finish", choices=("chrome", "brushed_metal", "matte_black"), weights=(0.5, 0.3, 0.2)),
 )
 

@@ -19,8 +19,6 @@ Parts: ``categories/parts/displays.py`` (screen, stand and wall-mount builders, 
 
 from __future__ import annotations
 
-import math
-
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.category import Category
@@ -29,6 +27,8 @@ from infmob_usd.grammar import Grammar, Layout, Node
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import displays as S
+
+R = S.RANGES  # the parameters' ranges (sourced in displays.Ranges)
 
 MOVES = {"tilt", "single_post", "arm", "button", "camera"}
 
@@ -60,27 +60,27 @@ to the stand: most TVs on feet, and pedestals that only swivel, e.g. Samsung and
 stand; a wall mount always tilts. ``camera``: a pop-up camera behind the top edge (``displays.CAMERA``)."""
 
 PARAMS = (
-    Float("width", "screen width incl. the bezel (Y)", "m", 0.6, 2.1),
+    Float("width", "screen width incl. the bezel (Y)", "m", *R.width),
     Choice("aspect", "screen aspect ratio", choices=("16:9", "4:3"), weights=(0.85, 0.15)),
-    Float("depth", "thickness of the screen panel (X)", "m", 0.02, 0.04),
-    Float("bezel", "bezel width on the sides and top", "m", 0.005, 0.02),
-    Float("back_depth", "extra depth of the electronics box on the back", "m", 0.015, 0.05),
-    Float("back_width", "electronics box width as a fraction of the screen width", "", 0.4, 0.75),
-    Float("back_height", "electronics box height as a fraction of the screen height", "", 0.35, 0.6),
-    Float("clearance", "gap between the stand's base (or feet) and the screen bottom", "m", 0.03, 0.12),
-    Float("base_width", "pedestal base width as a fraction of the screen width (>= 0.25 m)", "", 0.3, 0.55),
-    Float("base_depth", "pedestal base or foot depth (X)", "m", 0.18, 0.32),
+    Float("depth", "thickness of the screen panel (X)", "m", *R.depth),
+    Float("bezel", "bezel width on the sides and top", "m", *R.bezel),
+    Float("back_depth", "extra depth of the electronics box on the back", "m", *R.back_depth),
+    Float("back_width", "electronics box width as a fraction of the screen width", "", *R.back_width),
+    Float("back_height", "electronics box height as a fraction of the screen height", "", *R.back_height),
+    Float("clearance", "gap between the stand's base (or feet) and the screen bottom", "m", *R.clearance),
+    Float("base_width", "pedestal base width as a fraction of the screen width (>= 0.25 m)", "", *R.base_width),
+    Float("base_depth", "pedestal base or foot depth (X)", "m", *R.base_depth),
     Choice("base_shape", "pedestal base plate shape", choices=("rect", "round"), weights=(0.6, 0.4)),
-    Float("leg_spread", "distance between the two legs as a fraction of the screen width", "", 0.5, 0.8),
-    Float("tilt", "tilt range: the screen top tilts back 0..tilt", "rad", math.pi / 24, math.pi / 8),
-    Float("slide", "travel of a height-adjustable post", "m", 0.04, 0.14),
-    Float("swivel", "swivel range (+-) of a height-adjustable post", "rad", math.pi / 12, math.pi / 4),
+    Float("leg_spread", "distance between the two legs as a fraction of the screen width", "", *R.leg_spread),
+    Float("tilt", "tilt range: the screen top tilts back 0..tilt", "rad", *R.tilt),
+    Float("slide", "travel of a height-adjustable post", "m", *R.slide),
+    Float("swivel", "swivel range (+-) of a height-adjustable post", "rad", *R.swivel),
     Int("arm_links", "links of a wall-mount arm (0: a tilting mount, 1: a swivel bracket, 2-3: an articulating"
-        " arm)", "", 0, 3),
-    Float("curve_radius", "radius of a curved screen (Samsung / LG curved TVs: 3000R-4200R)", "m", 3.0, 4.2),
-    Float("arm_length", "wall-mount arm reach from the wall plate to the tilt pivot", "m", 0.15, 0.45),
+        " arm)", "", *R.arm_links),
+    Float("curve_radius", "radius of a curved screen (Samsung / LG curved TVs: 3000R-4200R)", "m", *R.curve_radius),
+    Float("arm_length", "wall-mount arm reach from the wall plate to the tilt pivot", "m", *R.arm_length),
     Int("button_count", "push keys on the screen: 1 (a power key) to 7 (power, input, menu, volume +/-, channel"
-        " +/-), as on LED TVs' side or bottom key rows (Samsung UN*EH / LG *LB owner's manuals)", "", 1, 7),
+        " +/-), as on LED TVs' side or bottom key rows (Samsung UN*EH / LG *LB owner's manuals)", "", *R.button_count),
     Choice("button_place", "where the buttons are", choices=("side", "bottom")),
     Choice("bezel_finish", "bezel material", choices=("black", "grey", "silver"), weights=(0.6, 0.2, 0.2)),
     Choice("stand_finish", "stand material", choices=("metal", "black", "chrome"), weights=(0.4, 0.4, 0.2)),
@@ -126,8 +126,11 @@ class TVLayout(Layout):
         L_k = S.fork_width(style == "two_legs", W, p["leg_spread"])
         self.grow(node.one("connector"), pivot=f["pivot"], r_k=f["r_k"], xs2=(f["x_bk"], f["xhb"]), L_k=L_k,
                   vesa=S.vesa_width(hw, L_k), hump=(hh, zh0, zh1))
+        # the stand keeps the set standing upright, tilted back and raised (displays.TIP_ANGLE)
+        span = S.stable_span(f["centre"], f["pivot"], p["tilt"] if stand.one("tilt") else 0.0,
+                             p["slide"] if adjust else 0.0)
         geo = dict(pivot=f["pivot"], r_k=f["r_k"], L_k=L_k, W=W, xf=xf, xs=xs, x_bk=f["x_bk"], base_t=f["base_t"],
-                   zs=(zs0, zs1), hump=(hw, zh0, zh1), sleeve_h=f["sleeve_h"], camera=bool(camera))
+                   zs=(zs0, zs1), hump=(hw, zh0, zh1), sleeve_h=f["sleeve_h"], camera=bool(camera), span=span)
         parent, tilt = self.grow(stand, **geo)
         self.grow(stand.one("tilt") or stand.one("rigid"), parent=parent, pivot=f["pivot"], upper=tilt)
         self.fix("connector", "screen")
@@ -169,10 +172,10 @@ class TVLayout(Layout):
         self.add("connector", "connector", rest)
         self.barrel = barrel
 
-    def single_post(self, node, pivot, r_k, L_k, W, xf, x_bk, base_t, zs, sleeve_h, **_):
+    def single_post(self, node, pivot, r_k, L_k, W, xf, x_bk, base_t, zs, sleeve_h, span, **_):
         p = self.p
         x_p, z_p = pivot
-        pieces = [S.pedestal_base(p["base_shape"], p["base_width"], p["base_depth"], W, base_t, x_p, xf)]
+        pieces = [S.pedestal_base(p["base_shape"], p["base_width"], p["base_depth"], W, base_t, x_p, xf, span)]
         adj = node.one("height_adjust")
         if adj is None:  # the neck swivels on a bearing disc on the base (swivel pedestal stands)
             disc, post, axis = S.swivel_neck(x_p, z_p, r_k, L_k, W, x_bk, base_t)
@@ -192,8 +195,8 @@ class TVLayout(Layout):
                                        (0, 0, 1), (0.0, p["slide"])))
         return "post", p["tilt"]
 
-    def two_legs(self, node, pivot, r_k, L_k, xf, x_bk, base_t, **_):
-        self.add("stand", "stand", S.two_legs(*pivot, r_k, L_k, xf, x_bk, base_t, self.p["base_depth"]))
+    def two_legs(self, node, pivot, r_k, L_k, xf, x_bk, base_t, span, **_):
+        self.add("stand", "stand", S.two_legs(*pivot, r_k, L_k, xf, x_bk, base_t, self.p["base_depth"], span))
         return "stand", self.p["tilt"]
 
     def wall_mount(self, node, pivot, r_k, L_k, W, xs, x_bk, zs, hump, camera, **_):

@@ -50,6 +50,8 @@ from infmob_usd.params import Choice, Float, Int
 
 from .parts import windows as P
 
+R = P.RANGES  # the parameters' ranges (sourced in windows.Ranges)
+
 
 def jamb_width(p) -> float:
     """The jambs' and head's face width: ``frame_width``, at most 12 % of the frame's width and height."""
@@ -109,45 +111,45 @@ Trickle vents sit on the head's room face, one over each sash (one over a double
 window's lower sash may carry cam sash locks on its meeting rail, their levers turning about the vertical."""
 
 PARAMS = (
-    Float("width", "overall frame width (Y)", "m", 0.6, 2.5),
-    Float("height", "overall frame height, excl. the sill (Z)", "m", 0.6, 2.5),
+    Float("width", "overall frame width (Y)", "m", *R.width),
+    Float("height", "overall frame height, excl. the sill (Z)", "m", *R.height),
     Int("sash_count", "sashes; auto = round(opening width / sash_width), 1..4; lowered to the most of >= 0.25 m "
         "that fit", "", 1, 4, auto=True),
-    Float("sash_width", "target sash width for the automatic sash count", "m", 0.4, 0.85),
-    Float("frame_depth", "frame depth (X)", "m", 0.07, 0.14),
-    Float("frame_width", "face width of jambs and head (the bottom rail is 1.25x)", "m", 0.04, 0.09),
-    Float("mullion_width", "face width of mullions and the transom bar", "m", 0.04, 0.08),
-    Float("stile_width", "face width of a sash frame", "m", 0.035, 0.07),
+    Float("sash_width", "target sash width for the automatic sash count", "m", *R.sash_width),
+    Float("frame_depth", "frame depth (X)", "m", *R.frame_depth),
+    Float("frame_width", "face width of jambs and head (the bottom rail is 1.25x)", "m", *R.frame_width),
+    Float("mullion_width", "face width of mullions and the transom bar", "m", *R.mullion_width),
+    Float("stile_width", "face width of a sash frame", "m", *R.stile_width),
     Choice("frame_finish", "frame and sash material", choices=("painted", "wood", "plastic"),
            weights=(0.4, 0.3, 0.3)),
     Choice("glazing", "plain panes or panes divided by glazing bars", choices=("plain", "bars"),
            weights=(0.65, 0.35)),
-    Int("bar_rows", "pane rows of a sash with glazing bars", "", 2, 4),
-    Int("bar_cols", "pane columns of a sash with glazing bars", "", 1, 2),
+    Int("bar_rows", "pane rows of a sash with glazing bars", "", *R.bar_rows),
+    Int("bar_cols", "pane columns of a sash with glazing bars", "", *R.bar_cols),
     Choice("meeting", "where two casements' free edges meet: a mullion or a French pair",
            choices=("mullion", "french")),
     Choice("handle_style", "casement handle", choices=("lever", "knob"), weights=(0.7, 0.3)),
     Choice("handle_finish", "handle material", choices=("chrome", "brushed_metal", "plastic")),
     Float("transom_fraction", "height of the transom light as a fraction of the opening", "",
-          0.18, 0.3),
-    Float("sill_depth", "exterior sill projection beyond the frame (X)", "m", 0.03, 0.1),
-    Float("sill_thickness", "exterior sill thickness", "m", 0.025, 0.05),
+          *R.transom_fraction),
+    Float("sill_depth", "exterior sill projection beyond the frame (X)", "m", *R.sill_depth),
+    Float("sill_thickness", "exterior sill thickness", "m", *R.sill_thickness),
     Choice("shutter_style", "shutter leaves", choices=("louvred", "panelled", "boarded"), weights=(0.45, 0.3, 0.25)),
     Choice("shutter_finish", "shutter material", choices=("painted", "wood"), weights=(0.7, 0.3)),
-    Float("shutter_thickness", "shutter leaf thickness", "m", 0.025, 0.04),
+    Float("shutter_thickness", "shutter leaf thickness", "m", *R.shutter_thickness),
     Float("shutter_leaf_width", "widest single shutter leaf; a wider side folds in two leaves", "m",
-          0.55, 0.8),
+          *R.shutter_leaf_width),
     Float("shutter_angle", "how far a shutter opens (it stops short of the wall plane)", "rad",
-          1.25, 1.5),
+          *R.shutter_angle),
     Float("curtain_offset", "clearance from the sash handles to the curtains (casements: + half a sash width)",
-          "m", 0.06, 0.2),
-    Float("curtain_rise", "height of the curtain rod above the frame", "m", 0.05, 0.2),
+          "m", *R.curtain_offset),
+    Float("curtain_rise", "height of the curtain rod above the frame", "m", *R.curtain_rise),
     Float("curtain_overhang", "rod and closed curtains reach past each side of the frame", "m",
-          0.05, 0.25),
-    Float("curtain_drop", "curtain length as a fraction of the rod height", "", 0.6, 0.98),
+          *R.curtain_overhang),
+    Float("curtain_drop", "curtain length as a fraction of the rod height", "", *R.curtain_drop),
     Choice("curtain_panels", "a pair of curtains drawn apart, or one panel drawn to one side",
            choices=("pair", "single"), weights=(0.65, 0.35)),
-    Float("curtain_open", "how far a curtain half slides, as a fraction of its width", "", 0.45, 0.75),
+    Float("curtain_open", "how far a curtain half slides, as a fraction of its width", "", *R.curtain_open),
     Choice("rod_finish", "curtain rod material", choices=("brushed_metal", "wood", "chrome")),
 )
 

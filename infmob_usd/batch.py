@@ -165,13 +165,18 @@ def clean_partial(out: Path) -> list[Path]:
     are neither followed nor removed, names of any other form are left alone, and entries of a
     process still alive (an API ``save`` running beside us) are kept. Call with the lock held.
     """
-    out = Path(out)
+    return _remove_temporaries(Path(out), lambda m: not _pid_alive(int(m["pid"])))
+
+
+def _remove_temporaries(out: Path, ours) -> list[Path]:
+    """Remove the temporary entries directly in ``out`` or its category folders whose name match ``ours``
+    accepts (links neither followed nor removed)."""
     removed = []
     places = [out] + [d for d in sorted(out.iterdir()) if _real_dir(d) and not d.name.startswith(".")]
     for place in places:
         for entry in sorted(place.iterdir()):
             m = _TEMP.match(entry.name)
-            if not m or _pid_alive(int(m["pid"])):
+            if not m or not ours(m):
                 continue
             st = os.lstat(entry)
             if stat.S_ISDIR(st.st_mode):
@@ -443,6 +448,12 @@ def run_batch(jobs: Iterable[Job], out: str | Path, workers: int = 1, overwrite:
         try:
             return _run_locked(jobs, out, workers, overwrite, backend, address, on_row, pool, total, log,
                                rows, manifest_fd, run_id)
+        except BaseException:
+            # the workers are stopped by now: the folders they were writing are this run's, half-written
+            pid, token = run_id.split("-")
+            _remove_temporaries(out, lambda m: m["pid"] == pid and m["token"] == token
+                                and m.string.endswith(".tmp"))
+            raise
         finally:
             _PARENT_FDS.discard(manifest_fd)
             os.close(manifest_fd)

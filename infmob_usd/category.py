@@ -20,6 +20,7 @@ from types import MappingProxyType, ModuleType
 
 import numpy as np
 
+from . import lift_off
 from .blueprint import Blueprint
 from .errors import ModelError
 from .grammar import Grammar, Layout
@@ -128,7 +129,7 @@ class Category:
         bp = Blueprint(self.id, materials=self.resolve_materials(params), densities=self.resolve_substrates(params))
         layout = self.layout(bp, params, geometry, self.grammar)
         layout.run(tree)
-        return bp
+        return lift_off.capped(bp)  # a lift-off travel is a hand's lift (the core's rule)
 
 
 def of_module(category_id: str, module: ModuleType) -> Category:

@@ -106,7 +106,8 @@ def _validate_command(sub) -> None:
     """Add the ``infmob validate`` subcommand and its options to ``sub``."""
     v = sub.add_parser("validate", help="check object folders: USD, URDF agreement, SAPIEN (and --sim physics)",
                        description="Validate object folders. Default: USD checks + SAPIEN (the URDF loads, every "
-                       "movable joint reaches both limits). --sim adds rest under gravity, ground, "
+                       "movable joint reaches both limits, from rest and from the all-open state). --sim adds "
+                       "rest under gravity, ground, "
                        "self-collision, parent/child intersection, ManiSkill loading and the MJCF in MuJoCo "
                        "(rest, each joint pushed with its effort, contacts at rest). Checks of a format the "
                        "folder lacks are reported as skipped.")

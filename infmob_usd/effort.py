@@ -44,6 +44,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .blueprint import descendants
+from .springs import SPRINGS, couple_limits, spring
 
 G = 9.81
 """m/s^2, standard gravity."""
@@ -73,6 +74,13 @@ SAG_SHARE = 0.01
 (whose soft stop is as stiff as the inertia the joint meets: a light link in a chain that carries a
 heavy head sags ~10 % of its range). Armature raises that inertia where needed; only the MJCF
 carries armature (URDF has no place for it)."""
+
+MJ_STEP = 0.002
+"""s: MuJoCo's default time step, the one the MJCF keeps."""
+
+STEP_SHARE = 0.02
+"""Fraction of its range a joint may travel in one :data:`MJ_STEP` when it arrives at a stop driven by
+gravity and its effort from the other stop (:func:`drive`'s armature)."""
 
 DAMPING_RATE_MAX = 60.0
 """1/s: a joint's damping is at most this times ``m_eff``. Simulators that apply joint damping
@@ -105,7 +113,8 @@ ROLES: dict[str, Role] = {
     "swivel": Role(1.0, 30.0, 0.5, "lamp heads, arms, tilting screens: positioned by hand"),
     "telescope": Role(1.0, 60.0, 0.3, "sliding poles and lifts: raised against their weight"),
     "wheel": Role(0.5, 20.0, 2.0, "wheels and casters: rolled, not pushed"),
-    "lid": Role(1.0, 20.0, 0.5, "lift-off and screw lids, caps: lifted or turned by hand"),
+    "lid": Role(1.0, 20.0, 0.5, "hinged and screw lids, caps: lifted or turned by hand"),
+    "lift_off": Role(1.0, 20.0, 0.5, "lift-off lids, stoppers, liners: lifted off their seat by hand"),
     "plate": Role(1.0, 20.0, 0.3, "plates in a rack: lifted out by hand"),
     "grate": Role(1.0, 40.0, 0.3, "oven grates: slid by hand"),
     "default": Role(1.0, 40.0, 0.5, "anything else moved by hand"),
@@ -250,24 +259,59 @@ def drive(obj, j, free: float | None = None) -> Drive:
     floor = EFFORT_FLOOR * G / arm
     effort = m_eff * max(a, floor)
     armature = ARMATURE_SHARE * m_eff
-    if j.type != "continuous" and a_gravity > 0:
+    if j.type != "continuous" and a_gravity > 0 and j.stiffness == 0:  # a spring's preload holds its part
         # the stop holding the subtree's weight sags by C_SOFT * load / (m_eff + armature); the load is the
         # whole subtree's weight, also where a free joint lets part of it go (a lift-top's frame carries
         # the top resting on its own stop, a steamer tier the tiers above it)
         load = mass * a_gravity if j.type == "prismatic" else a_gravity * m_eff
         armature = max(armature, C_SOFT * load / (SAG_SHARE * (j.upper - j.lower)) - m_eff)
+    if j.type != "continuous":
+        # MuJoCo's limit acts from the step after the joint crosses it: a part arriving at v goes v * dt
+        # past before anything holds it (a 12 g chair lever falling 0.24 rad at 10 rad/s: 8 % of its
+        # range in one 2 ms step). Armature slows what gravity and the push give it (no damping counted)
+        span = j.upper - j.lower
+        load = (mass * a_gravity if j.type == "prismatic" else a_gravity * m_eff) + effort
+        if j.stiffness > 0:  # a return spring holds the weight on its preload and lands the part softly by design
+            load = effort
+        if damping <= 0 or load / damping > STEP_SHARE * span / MJ_STEP:  # faster than that where damping allows
+            armature = max(armature, 2.0 * MJ_STEP**2 * load / (STEP_SHARE**2 * span) - m_eff)
     return Drive(float(effort), float(velocity), float(armature), float(damping), m_eff, arm,
                  a_gravity, a_stop)
 
 
+def gravity_at_rest(obj, j) -> float:
+    """The force (N, slides) or torque (N m, rotations) gravity puts on joint ``j`` at rest, towards its
+    upper limit (negative: it presses the part onto its rest stop)."""
+    m, c, _ = _subtree(obj, j)
+    axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
+    weight = np.array([0.0, 0.0, -G]) * m[:, None]
+    if j.type == "prismatic":
+        return float(weight.sum(0) @ axis)
+    return float(np.cross(c - np.asarray(j.origin, float), weight).sum(0) @ axis)
+
+
 def assign_drives(obj):
     """A copy of ``obj`` with ``effort``, ``velocity``, ``armature`` (and a capped ``damping``) on every
-    movable joint (limits final); ``obj`` is not modified."""
+    movable joint (limits final), a return spring on every joint of a spring-returned role (its
+    damping and friction the spring's, :mod:`infmob_usd.springs`), and every coupled joint's limits the
+    image of its leader's; ``obj`` is not modified."""
+    obj = replace(obj, joints=couple_limits(obj.joints))
     joints = []
     free = free_inertias(obj)
     for j in obj.joints:
         if j.movable:
             d = drive(obj, j, free[j.name])
+            role_friction = j.friction
+            # the spring is sized on the inertia with the armature, and the armature on the spring's force:
+            # three rounds settle both (deterministic; the armature changes by < 1 % in the third)
+            for _ in range(3 if j.type != "continuous" and j.role in SPRINGS else 0):
+                s = spring(j.role, j.lower, j.upper, d.m_eff + d.armature,
+                           max(gravity_at_rest(obj, j), 0.0) / (d.m_eff + d.armature), role_friction,
+                           DAMPING_RATE_MAX * d.m_eff)
+                # the spring's damping and friction, then the drive again: the stop budget uses them
+                j = replace(j, damping=s.damping, friction=_round(s.friction), stiffness=_round(s.stiffness),
+                            spring_ref=_round(s.reference))
+                d = drive(obj, j, free[j.name])
             j = replace(j, effort=_round(d.effort), velocity=_round(d.velocity), armature=_round(d.armature),
                         damping=_round(d.damping))
         joints.append(j)

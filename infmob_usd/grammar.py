@@ -24,7 +24,7 @@ that the grammar did not grow.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -360,6 +360,19 @@ class Layout:
 
     def fix(self, parent: str, child: str) -> None:
         self.bp.join(J.fixed(parent, child))
+
+    def couple(self, follower: str, leader: str, ratio: float = 1.0, offset: float = 0.0) -> None:
+        """Make the joint that moves part ``follower`` follow the joint that moves part ``leader``:
+        ``q_follower = ratio * q_leader + offset`` (a pedal lifting a lid: one DoF for a hand or a
+        foot, two bodies moving). Both joints are revolute or prismatic and declared already; the core
+        keeps the follower's limits the image of the leader's (:func:`infmob_usd.springs.couple_limits`)."""
+        specs = [i for i, s in enumerate(self.bp.joints) if s.child == follower]
+        if not specs:
+            raise ModelError(f"couple: no joint moves part {follower!r}; declare it before coupling it")
+        if not any(s.child == leader for s in self.bp.joints):
+            raise ModelError(f"couple: no joint moves part {leader!r}; declare it before coupling to it")
+        i = specs[0]
+        self.bp.joints[i] = replace(self.bp.joints[i], mimic=J.Mimic(leader, float(ratio), float(offset)))
 
     # -- the run ---------------------------------------------------------------------------------------
     def run(self, tree: Grown) -> None:

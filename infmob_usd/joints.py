@@ -35,8 +35,26 @@ KINDS: dict[str, tuple[str, ...]] = {
 """Each kind and the simple DoF chain it expands to, parent side first."""
 
 ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "telescope", "wheel", "lid",
-         "plate", "grate", "default")
-"""Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``)."""
+         "lift_off", "plate", "grate", "lever", "plunger", "self_closing", "pedal_lid", "default")
+"""Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``) and, for
+the spring-returned roles (button, lever, plunger, self-closing hinge, pedal-driven lid), its return
+spring (:data:`infmob_usd.springs.SPRINGS`)."""
+
+
+@dataclass(frozen=True)
+class Mimic:
+    """A coupled joint: this joint's coordinate is ``ratio * leader + offset`` (a pedal lifting a lid,
+    a toaster lever and its carriage). ``leader`` is the child part of the leading joint; both joints
+    are single-DoF (revolute or prismatic)."""
+
+    leader: str
+    ratio: float = 1.0
+    offset: float = 0.0
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.ratio) and math.isfinite(self.offset)) or self.ratio == 0.0:
+            raise ModelError(f"coupling to {self.leader!r}: ratio must be a finite non-zero number and offset"
+                             f" finite, got ratio {self.ratio!r}, offset {self.offset!r}")
 
 
 @dataclass(frozen=True)
@@ -84,6 +102,8 @@ class JointSpec:
     joint moves (a rack behind a door names the door's part); checks and users open that part first.
     The written joints keep the part name: it is the ``group`` of every joint in the gate's chain
     (:attr:`.model.Joint.requires_open`). ``None``: moves freely."""
+    mimic: Mimic | None = None
+    """The joint whose coordinate drives this one (:class:`Mimic`); ``None``: moves on its own."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -95,6 +115,9 @@ class JointSpec:
         if self.role not in ROLES:
             raise ModelError(f"joint {self.parent}->{self.child}: unknown role {self.role!r};"
                              f" valid roles: {', '.join(ROLES)}")
+        if self.mimic is not None and self.kind not in ("revolute", "prismatic"):
+            raise ModelError(f"{self.kind} joint {self.parent}->{self.child} cannot follow another joint:"
+                             " only a revolute or prismatic joint can be coupled")
 
     @property
     def movable(self) -> bool:

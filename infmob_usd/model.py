@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -21,7 +21,7 @@ from .blueprint import Blueprint
 from .errors import ModelError
 from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, wall_of
 from .measures import _measure_closed
-from .physical import dynamics
+from .physical.passive import dynamics
 from .piece import Piece
 from .rotation import motion
 
@@ -63,6 +63,12 @@ class Joint:
     # before this one moves (for a declared joint, its group is its child part)
     requires_open: str | None = None
     armature: float = 0.0  # kg or kg m^2 added to the joint's inertia (set by effort.assign_drives)
+    stiffness: float = 0.0  # return spring, N/m or N m/rad (0: none; set by springs.assign_springs)
+    spring_ref: float = 0.0  # where the spring's force is zero (m or rad), beyond the rest stop: a preload
+    mimic: tuple[str, float, float] | None = None  # (leader joint, multiplier, offset): q = m q_leader + o
+    # groups that must be closed (at rest) before this joint moves: a part whose sweep from the
+    # all-open state would meet them while they are open (set by physical.limit_to_clearance)
+    requires_closed: tuple[str, ...] = ()
 
     @property
     def movable(self) -> bool:
@@ -149,6 +155,27 @@ def _translation(t) -> np.ndarray:
     return m
 
 
+def _resolve_mimics(joints: list[Joint]) -> list[Joint]:
+    """Each coupled joint's leader, a part name as declared, becomes the name of the joint that moves it
+    (a single revolute or prismatic joint, not itself coupled: chains of followers are not written)."""
+    by_part = {}
+    for j in joints:
+        by_part.setdefault(j.group, []).append(j)
+    out = []
+    for j in joints:
+        if j.mimic is not None:
+            part, ratio, offset = j.mimic
+            lead = by_part.get(part, [])
+            if len(lead) != 1 or lead[0].type not in ("revolute", "prismatic") or lead[0].mimic is not None:
+                raise ModelError(f"{j.name} follows part {part!r}, whose joint is not one uncoupled revolute or"
+                                 " prismatic joint; couple to a part moved by a simple hinge or slide")
+            if lead[0] is j:
+                raise ModelError(f"{j.name} cannot follow itself")
+            j = replace(j, mimic=(lead[0].name, ratio, offset))
+        out.append(j)
+    return out
+
+
 def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | None = None
           ) -> tuple[list[Link], list[Joint]]:
     """Place frames and expand compound joints. ``densities``: slot -> kg/m^3; ``walls``: slot ->
@@ -204,9 +231,12 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
                     joints.append(Joint(jname, dof.type, chain_parent, child, origin,
                                         np.asarray(dof.axis, float), float(dof.lower), float(dof.upper),
                                         dyn.damping, dyn.friction, dyn.effort, dyn.velocity,
-                                        spec.kind, spec.role, part.name, spec.requires_open))
+                                        spec.kind, spec.role, part.name, spec.requires_open,
+                                        mimic=None if spec.mimic is None else
+                                        (spec.mimic.leader, spec.mimic.ratio, spec.mimic.offset)))
                     chain_parent = child
             queue.append(part.name)
+    joints = _resolve_mimics(joints)
     reached = {link.name for link in links if not link.dummy}
     missing = set(bp.parts) - reached
     if missing:

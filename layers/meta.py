@@ -161,13 +161,27 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
              "parent": j.parent, "child": j.child, "origin": j.origin, "axis": j.axis,
              "lower": j.lower, "upper": j.upper, "damping": j.damping, "friction": j.friction,
              "effort": j.effort, "velocity": j.velocity, "armature": j.armature,
-             "requires_open": j.requires_open}
+             "requires_open": j.requires_open, "requires_closed": list(j.requires_closed),
+             **_spring_and_mimic(j)}
             for j in obj.joints
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
         "files": {**files, "semantics": "./semantics.txt"},
         **({"retrieved_parts": obj.retrieved} if getattr(obj, "retrieved", None) else {}),
     }))
+
+
+def _spring_and_mimic(j) -> dict:
+    """``spring``: a return spring (N/m or N m/rad about ``reference``, m or rad; the joint's ``damping``
+    goes with it), which a URDF cannot carry: in SAPIEN set it as the joint's drive,
+    ``set_drive_property(stiffness, damping)`` and ``set_drive_target(reference)``. ``mimic``: the joint
+    follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``)."""
+    out = {}
+    if j.stiffness > 0:
+        out["spring"] = {"stiffness": j.stiffness, "reference": j.spring_ref}
+    if j.mimic is not None:
+        out["mimic"] = {"joint": j.mimic[0], "multiplier": j.mimic[1], "offset": j.mimic[2]}
+    return out
 
 
 def _rest_bounds(obj) -> np.ndarray:

@@ -5,7 +5,9 @@
   base is welded to the world, or free (``free_base=True``: a ``<freejoint>``);
 * **joints** ``hinge`` / ``slide`` at the body origin with ``range`` (continuous: unlimited),
   ``damping``, ``frictionloss``, ``armature`` and ``actuatorfrcrange`` = +-effort (what MuJoCo's
-  URDF reader makes of ``<limit effort>``);
+  URDF reader makes of ``<limit effort>``), ``solreflimit`` (:data:`LIMIT_SOLREF`), and a return
+  spring as ``stiffness`` + ``springref`` (:mod:`infmob_usd.springs`);
+* **coupled joints** as ``<equality><joint joint1 joint2 polycoef>``;
 * **visual geoms** (class ``visual``: no contacts, no mass, group 2) from the URDF's OBJ meshes, with
   one MuJoCo ``<material>`` per slot whose ``<layer>`` s are our PNG maps (base colour, normal,
   roughness; metallic and roughness also as constants);
@@ -52,6 +54,48 @@ def _quat(rot: np.ndarray) -> np.ndarray:
         q[1 + m] = (r[m, i] + r[i, m]) / (4 * v)
     q /= np.linalg.norm(q)
     return -q if q[0] < 0 else q
+
+
+LIMIT_SOLREF = (0.004, 1.0)
+"""MuJoCo ``solreflimit`` (time constant s, damping ratio) of every limited joint. MuJoCo's default
+(0.02 s) lets a part pushed across its range with its own effort arrive at its stop and go 7-23 % of
+the range past it for a moment (chair lifts, lids, caps, buttons pushed from their far stop); past a
+stop the overshoot grows with the time constant (measured: 3.8 % at 4 ms, 8.2 % at 8 ms for the
+worst, a 0.78 mN pump head), and 4 ms is the stiffest MuJoCo's default 2 ms step keeps (it raises
+any time constant below two steps to two steps). The efforts (:mod:`infmob_usd.effort`) are sized on
+the default's softness, so every joint's stop budget needs it: one value, not one per joint."""
+
+
+def _limit_softness(joint) -> str:
+    """``solreflimit`` of ``joint`` (:data:`LIMIT_SOLREF`); none for continuous joints."""
+    if joint.type == "continuous":
+        return ""
+    return f' solreflimit="{_f(LIMIT_SOLREF[0])} {_f(LIMIT_SOLREF[1])}"'
+
+
+def _joint(joint) -> str:
+    """The ``<joint>`` element of a movable joint: range (none for continuous), damping, friction,
+    armature, effort, its return spring (``stiffness`` about ``springref``) and limit softness."""
+    kind = "slide" if joint.type == "prismatic" else "hinge"
+    lim = ' limited="false"' if joint.type == "continuous" else f' range="{_f(joint.lower)} {_f(joint.upper)}"'
+    spring = (f' stiffness="{_f(joint.stiffness)}" springref="{_f(joint.spring_ref)}"'
+              if joint.stiffness > 0 else "")
+    return (f'<joint name="{joint.name}" type="{kind}" axis="{_v(joint.axis)}"{lim}'
+            f' damping="{_f(joint.damping)}" frictionloss="{_f(joint.friction)}"'
+            f' armature="{_f(joint.armature)}" actuatorfrcrange="{_f(-joint.effort)} {_f(joint.effort)}"'
+            f'{spring}{_limit_softness(joint)}/>')
+
+
+def _equality(obj) -> list[str]:
+    """``<equality>`` lines for the coupled joints: ``joint1 = polycoef(joint2)`` = offset + ratio * leader,
+    as stiff as the limits (MuJoCo's default lets a lid lag its pedal by 8 % under its own weight)."""
+    coupled = [j for j in obj.joints if j.mimic is not None]
+    if not coupled:
+        return []
+    return ["  <equality>", *(f'    <joint name="mimic_{j.name}" joint1="{j.name}" joint2="{j.mimic[0]}"'
+                               f' polycoef="{_f(j.mimic[2])} {_f(j.mimic[1])} 0 0 0"'
+                               f' solref="{_f(LIMIT_SOLREF[0])} {_f(LIMIT_SOLREF[1])}"/>' for j in coupled),
+            "  </equality>"]
 
 
 def _real_parent(obj, name: str) -> str:
@@ -110,12 +154,7 @@ def write_mjcf(obj, folder: Path, free_base: bool = False) -> Path:
         if joint is None and free_base:
             out.append(f'{pad}  <freejoint name="root"/>')
         elif joint is not None and joint.movable:
-            kind = "slide" if joint.type == "prismatic" else "hinge"
-            lim = (' limited="false"' if joint.type == "continuous"
-                   else f' range="{_f(joint.lower)} {_f(joint.upper)}"')
-            out.append(f'{pad}  <joint name="{joint.name}" type="{kind}" axis="{_v(joint.axis)}"{lim}'
-                       f' damping="{_f(joint.damping)}" frictionloss="{_f(joint.friction)}"'
-                       f' armature="{_f(joint.armature)}" actuatorfrcrange="{_f(-joint.effort)} {_f(joint.effort)}"/>')
+            out.append(f"{pad}  {_joint(joint)}")
         I = link.inertia
         out.append(f'{pad}  <inertial pos="{_v(link.com)}" mass="{_f(link.mass)}" fullinertia="'
                    f'{_v((I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]))}"/>')
@@ -139,6 +178,7 @@ def write_mjcf(obj, folder: Path, free_base: bool = False) -> Path:
         out.append("  <contact>")
         out += [f'    <exclude body1="{a}" body2="{b}"/>' for a, b in pairs]
         out.append("  </contact>")
+    out += _equality(obj)
     out.append("</mujoco>\n")
     path = folder / f"{obj.name}.xml"
     write_file(path, "\n".join(out))

@@ -10,7 +10,8 @@
   OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~30 collision files, not ~180),
   and identical hulls of a link (a keypad's buttons) share one file;
 * ``<inertial>`` with the full tensor about the centre of mass;
-* ``<limit>`` with effort and velocity, ``<dynamics damping friction>``;
+* ``<limit>`` with effort and velocity, ``<dynamics damping friction>``; ``<mimic>`` on a coupled joint
+  (a return spring has no URDF element: ``metadata.json`` carries it, :mod:`infmob_usd.springs`);
 * a ``<mujoco><compiler strippath="false" discardvisual="false"/></mujoco>`` hint, so MuJoCo finds
   the meshes (3.x strips folders from mesh paths by default) and keeps the visual meshes.
 
@@ -472,6 +473,8 @@ def write_urdf(obj, folder: Path) -> Path:
             lim = "" if j.type == "continuous" else f'lower="{_f(j.lower)}" upper="{_f(j.upper)}" '
             out.append(f'    <limit {lim}effort="{_f(j.effort)}" velocity="{_f(j.velocity)}"/>')
             out.append(f'    <dynamics damping="{_f(j.damping)}" friction="{_f(j.friction)}"/>')
+            if j.mimic is not None:
+                out.append(f'    <mimic joint="{j.mimic[0]}" multiplier="{_f(j.mimic[1])}" offset="{_f(j.mimic[2])}"/>')
         out.append("  </joint>")
     out.append("</robot>\n")
     path = folder / f"{obj.name}.urdf"

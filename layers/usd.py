@@ -12,6 +12,15 @@ Links are sibling Xforms under the root with rigid world transforms; a joint's
 ``physics:axis`` is always ``X``, the real direction carried by ``localRot0`` and
 ``localRot1`` (identical, because every link frame is world-aligned at rest).
 
+A joint's return spring (:mod:`infmob_usd.springs`) is its ``PhysicsDriveAPI`` drive: ``stiffness`` and
+``targetPosition`` at the spring's zero (beyond the rest stop: a preload), with the joint's damping.
+PhysX articulation joints have no separate spring (``PhysxJointAPI`` has none); a force drive of
+stiffness ``k`` towards ``q_ref`` is the spring ``-k (q - q_ref)``, and every UsdPhysics reader
+(PhysX, Isaac Sim, Newton's ``target_ke`` / ``target_q``) reads it. A joint without a spring keeps
+stiffness 0 (the drive is its damping only). The drive's ``maxForce`` is the joint's effort, plus, on
+a spring, the spring's force at the far stop (PhysX caps the whole drive force, spring included).
+Coupled joints: :func:`_mimic`.
+
 The geometry and interface layers are authored directly as Sdf specs (no
 ``Usd.Stage``, which recomposes on every edit), and the per-corner normals and UVs of every
 visual mesh of the object are computed in one vectorised pass: together ~5x faster than
@@ -28,10 +37,12 @@ from pathlib import Path
 import numpy as np
 from pxr import Gf, Sdf, Vt
 
+from infmob_usd.effort import free_inertias
 from infmob_usd.mass import principal
 
 from .common import visual_meshes, write_file
 from .meta import simready_metadata
+from .mjcf import LIMIT_SOLREF
 
 PAYLOAD = "payload"
 SUBLAYERS = ("physics.usda", "materials.usda", "geometry.usdc")
@@ -491,6 +502,49 @@ def _quat(q) -> tuple[float, float, float, float]:
     return (q.GetReal(), *q.GetImaginary())
 
 
+def _drive(uj, j, dp: str, per_unit: float) -> None:
+    """The joint's force drive: its damping, and its return spring as stiffness towards the spring's zero
+    (module docstring); ``maxForce`` the effort (N or N m), plus the spring's force at the far stop."""
+    uj.attr("token", dp + "type", '"force"', uniform=True)
+    uj.attr("float", dp + "stiffness", float(j.stiffness * per_unit))
+    if j.stiffness > 0:
+        uj.attr("float", dp + "targetPosition", float(j.spring_ref / per_unit))
+    uj.attr("float", dp + "damping", float(j.damping * per_unit))
+    uj.attr("float", dp + "maxForce", float(j.effort + j.stiffness * (j.upper - j.spring_ref)))
+
+
+def _newton_joint(uj, j, per_unit: float, inertia: float) -> None:
+    """What Newton's USD importer reads of a joint beyond UsdPhysics (its default resolver reads only the
+    ``newton:`` namespace, not ``physxJointAxis:*``): armature (kg or kg m^2), Coulomb friction (N or
+    N m) and the velocity limit (m/s or deg/s), as ``newton:armature``, ``newton:friction`` and
+    ``newton:velocityLimit`` (Newton 1.8, ``newton/_src/usd/schemas.py``, ``SchemaResolverNewton``);
+    and the limits' stiffness and damping (per degree on rotations), which Featherstone applies as a
+    spring: Newton's defaults, the same for a 64 g jar lid and a 38 kg table top, make a light part's
+    stop ring past its explicit step (NaN) and let a heavy one sag. Here they are the MJCF's limit
+    (:data:`~infmob_usd.layers.mjcf.LIMIT_SOLREF`: natural frequency ``1 / (0.95 tc)``, critically
+    damped) on the joint's ``inertia`` (what it moves, with its armature)."""
+    uj.attr("float", "newton:armature", float(j.armature))
+    uj.attr("float", "newton:friction", float(j.friction))
+    uj.attr("float", "newton:velocityLimit", float(j.velocity / per_unit))
+    if j.type != "continuous":
+        w = 1.0 / (0.95 * LIMIT_SOLREF[0])
+        uj.attr("float", "newton:limitStiffness", float(inertia * w * w * per_unit))
+        uj.attr("float", "newton:limitDamping", float(2.0 * LIMIT_SOLREF[1] * inertia * w * per_unit))
+
+
+def _mimic(uj, j, leader: str) -> None:
+    """A coupled joint as PhysX's mimic joint (``PhysxMimicJointAPI:rotX``, physx-usd-schemas 25.11: the
+    instance PhysX's parser probes on revolute and prismatic joints, whose axis is X here). PhysX's
+    relation is ``q + gearing * q_leader + offset = 0``, so gearing is ``-ratio`` and offset ``-offset``,
+    both in joint coordinates (rad, m), as Newton 1.8 reads them (``coef1 = -gearing``, ``coef0 =
+    -offset``, unconverted). PhysX itself enforces mimic joints on rotations only."""
+    m = "physxMimicJoint:rotX:"
+    uj.rel(m + "referenceJoint", leader)
+    uj.attr("token", m + "referenceJointAxis", '"rotX"', uniform=True)
+    uj.attr("float", m + "gearing", float(-j.mimic[1]))
+    uj.attr("float", m + "offset", float(-j.mimic[2]))
+
+
 def _physics(obj, hulls) -> str:
     """``physics.usda``: articulation root, rigid bodies with mass, colliders bound to physics materials,
     joints with drives, joint state, PhysX joint-axis limits and friction, and contact filters across
@@ -500,6 +554,7 @@ def _physics(obj, hulls) -> str:
     origins = {link.name: link.origin for link in obj.links}
     contact = _physics_materials(root, obj)
     filtered = dict(_compound_pairs(obj))
+    free = free_inertias(obj)
     identity = (1.0, 0.0, 0.0, 0.0)
     for link in obj.links:
         apis = ("PhysicsRigidBodyAPI", "PhysicsMassAPI") + (("PhysicsFilteredPairsAPI",) if link.name in filtered
@@ -527,8 +582,9 @@ def _physics(obj, hulls) -> str:
         else:
             drive = "linear" if j.type == "prismatic" else "angular"
             kind = "PhysicsPrismaticJoint" if j.type == "prismatic" else "PhysicsRevoluteJoint"
+            mimic = ("PhysxMimicJointAPI:rotX",) if j.mimic is not None else ()
             uj = joints.child("def", kind, j.name, (f"PhysicsDriveAPI:{drive}", f"PhysicsJointStateAPI:{drive}",
-                                                    f"PhysxJointAxisAPI:{drive}"))
+                                                    f"PhysxJointAxisAPI:{drive}") + mimic)
             # USD angles are degrees: limits, angular velocity and angular damping (per degree; URDF's per radian)
             per_unit = 1.0 if j.type == "prismatic" else math.pi / 180
             if j.type == "prismatic":
@@ -539,11 +595,7 @@ def _physics(obj, hulls) -> str:
                 uj.attr("float", "physics:upperLimit", math.degrees(j.upper))
             uj.attr("token", "physics:axis", '"X"', uniform=True)
             rot = _quat(axis_quat(j.axis))
-            dp = f"drive:{drive}:physics:"
-            uj.attr("token", dp + "type", '"force"', uniform=True)
-            uj.attr("float", dp + "stiffness", 0.0)
-            uj.attr("float", dp + "damping", float(j.damping * per_unit))
-            uj.attr("float", dp + "maxForce", float(j.effort))  # the effort limit (N or N*m)
+            _drive(uj, j, f"drive:{drive}:physics:", per_unit)
             # the written pose is joint coordinate 0, at rest
             uj.attr("float", f"state:{drive}:physics:position", 0.0)
             uj.attr("float", f"state:{drive}:physics:velocity", 0.0)
@@ -555,6 +607,9 @@ def _physics(obj, hulls) -> str:
             armature = getattr(j, "armature", None)
             if armature is not None:
                 uj.attr("float", ax + "armature", float(armature))
+            _newton_joint(uj, j, per_unit, free[j.name] + j.armature)
+            if j.mimic is not None:
+                _mimic(uj, j, f"{rp}/Joints/{j.mimic[0]}")
         uj.rel("physics:body0", f"{rp}/{j.parent}")
         uj.rel("physics:body1", f"{rp}/{j.child}")
         local0 = np.asarray(origins[j.child]) - np.asarray(origins[j.parent])

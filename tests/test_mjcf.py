@@ -123,7 +123,8 @@ def test_the_mujoco_check_passes_on_every_joint_kind(written):
 
 
 def test_an_effort_far_above_the_weight_drives_through_the_stop(written, tmp_path):
-    """The old role table: 20 N on a light part. MuJoCo's soft stop gives way; the check says so."""
+    """Ten times the old role table (20 N) on a light part: even the MJCF's stiff stop gives way (200 N
+    no longer does); the check says so."""
     obj, folder = written
     bad = tmp_path / folder.name
     import shutil
@@ -131,11 +132,11 @@ def test_an_effort_far_above_the_weight_drives_through_the_stop(written, tmp_pat
     shutil.copytree(folder, bad)
     xml = bad / f"{folder.name}.xml"
     text = xml.read_text()
-    text = re.sub(r'(<joint name="joint_pris_part"[^>]*actuatorfrcrange=")[^"]*"', r'\g<1>-200 200"', text)
+    text = re.sub(r'(<joint name="joint_pris_part"[^>]*actuatorfrcrange=")[^"]*"', r'\g<1>-2000 2000"', text)
     xml.write_text(text)
     (result,) = check_mujoco(bad)
     assert not result.ok
-    assert re.search(r"push joint_pris_part -> upper with 200: [\d.]+ % of its range past its limit", result.detail)
+    assert re.search(r"push joint_pris_part -> upper with 2e\+03: [\d.]+ % of its range past its limit", result.detail)
 
 
 def test_a_link_pushed_into_another_fails_contacts(written, tmp_path):

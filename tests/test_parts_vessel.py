@@ -51,7 +51,7 @@ def test_seat_joint_lifts_along_the_seat_and_turns_about_it():
     b = bp.place(body.placed(Frame.at((0.1, 0.2, 0.0))), "body")
     cap = bp.place(V.stopper(prof, "cork").attached("seat", to=b.anchor("lid_seat")), "cap")
     j = V.seat_joint(b.root, cap, 0.01)
-    assert j.kind == "continuous_prismatic" and j.role == "lid"
+    assert j.kind == "continuous_prismatic" and j.role == "lift_off"
     assert all(np.allclose(d.origin, (0.1, 0.2, 0.3)) and np.allclose(d.axis, (0, 0, 1)) for d in j.dofs)
     assert j.dofs[0].lower == 0.0 and j.dofs[0].upper == pytest.approx(0.01)
     assert V.seat_joint(b.root, cap, 0.01, turns=False).kind == "prismatic"

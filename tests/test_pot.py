@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from infmob_usd.categories import pot
+from infmob_usd.lift_off import LIFT_OFF
 from infmob_usd.model import build as build_model
 
 from collide import overlap
@@ -93,7 +94,7 @@ def test_size_and_hollow(seed):
 def test_lid_joint(seed):
     _, bp = make(seed)
     (j,) = [j for j in bp.joints if j.movable]
-    assert j.kind == "continuous_prismatic" and (j.parent, j.child) == ("body", "lid") and j.role == "lid"
+    assert j.kind == "continuous_prismatic" and (j.parent, j.child) == ("body", "lid") and j.role == "lift_off"
     slide, turn = j.dofs
     assert slide.axis == pytest.approx((0, 0, 1)) and turn.axis == pytest.approx((0, 0, 1))
     assert (slide.lower, slide.upper) == (0.0, pytest.approx(0.03))
@@ -218,7 +219,7 @@ def test_steam_vent_turns_on_the_lid(seed):
 
 
 @pytest.mark.parametrize("seed", range(3))
-def test_pasta_insert_hangs_in_the_pot_and_lifts_out_with_the_lid_on_it(seed):
+def test_pasta_insert_hangs_in_the_pot_and_lifts_with_the_lid_on_it(seed):
     p, bp = make(seed, has_pasta=True)
     j = next(j for j in bp.joints if j.child == "pasta")
     assert (j.parent, j.kind) == ("body", "prismatic") and bp.parts["pasta"].label == "basket"
@@ -227,6 +228,6 @@ def test_pasta_insert_hangs_in_the_pot_and_lifts_out_with_the_lid_on_it(seed):
     depth = lowest(basket)
     rim = max(pc.bounds[1, 2] for pc in body.pieces if pc.name != "handle")
     assert rim - depth > 0.5 * min(p["pasta_reach"] * p["depth_ratio"] * p["radius"], 0.2)  # it reaches down
-    assert j.dofs[0].upper > rim - depth  # and lifts out past the rim
+    assert j.dofs[0].upper == pytest.approx(LIFT_OFF) and j.role == "lift_off"  # and lifts a hand's lift
     assert overlap(basket, np.eye(4), body, np.eye(4), pad=0.001) == 0.0
     assert next(j for j in bp.joints if j.child == "lid").parent == "pasta"

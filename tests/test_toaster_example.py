@@ -62,7 +62,9 @@ def test_same_slot_and_substrate_follow_the_finish():
 
 
 @pytest.mark.sim
-def test_toaster_validates_except_the_springless_lever(tmp_path):
+def test_toaster_validates_with_its_spring_held_lever(tmp_path):
+    """Every check passes, rest included: the lever's return spring (role ``lever``) holds it at its top
+    stop in SAPIEN and MuJoCo, where without one gravity pulls it 18-80 mm down its slot."""
     pytest.importorskip("sapien")
     from infmob_usd.api import assemble
     from infmob_usd.validate import validate_object
@@ -70,8 +72,4 @@ def test_toaster_validates_except_the_springless_lever(tmp_path):
     cat, p, r, bp = build(3)
     obj = assemble(bp, 3, r["materials"], 16, p, {})
     result = validate_object(infmob_usd.save(obj, tmp_path), sim=True, physics=True)
-    # without a return spring (not in the core yet) gravity pulls the lever off its top stop
-    failed = {c.name: c.detail for c in result.checks if not c.ok}
-    assert set(failed) <= {"rest", "mujoco"}, failed
-    assert all("joint_lever" in d and "dial" not in d.split("largest")[0] and "tray" not in d
-               for d in failed.values()), failed
+    assert result.ok, {c.name: c.detail for c in result.checks if not c.ok}

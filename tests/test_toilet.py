@@ -9,6 +9,8 @@ import pytest
 
 from infmob_usd.api import generate
 from infmob_usd.blueprint import dof_motion
+from infmob_usd.categories import toilet as mod
+from infmob_usd.lift_off import LIFT_OFF
 from infmob_usd.model import build as build_model
 from infmob_usd.physical import gravity_torque
 
@@ -141,7 +143,9 @@ def test_lid_and_flush_joints(seed):
     lid = by_child(bp, "tank_lid")
     assert lid.kind == "prismatic" and lid.parent == "tank"
     assert lid.dofs[0].axis == pytest.approx((0, 0, 1))
-    assert (lid.dofs[0].lower, lid.dofs[0].upper) == (0.0, pytest.approx(0.2))
+    # lifted a hand's lift (the core's lift-off rule): clear of its locating lip, not through the air
+    assert (lid.dofs[0].lower, lid.dofs[0].upper) == (0.0, pytest.approx(LIFT_OFF))
+    assert lid.dofs[0].upper > mod.S.LID["lip"] and lid.role == "lift_off"
     if p["flush"] == "button":
         j = by_child(bp, "flush_button")
         assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((-1, 0, 0))

@@ -322,3 +322,39 @@ def test_a_large_tv_on_a_wall_arm_swings_freely_in_sapien(tmp_path):
                               stand_style="wall_mount", arm_links=2, has_buttons=True, button_place="bottom")
     reach = {c.name: c for c in check_sapien(infmob_usd.save(obj, tmp_path), checks=["reach"])}["reach"]
     assert reach.ok, reach.detail
+
+
+def _com_margins(obj):
+    """(back, front, needed) of the whole set's centre of mass over its floor contact along x, upright and with
+    each screen tilt at its upper limit; ``needed``: its height x tan(10 degrees)."""
+    from infmob_usd.blueprint import descendants
+
+    links = {link.name: link for link in obj.links}
+    pts = np.vstack([pc.vertices + link.origin for link in obj.links for pc in link.pieces])
+    foot = pts[pts[:, 2] < pts[:, 2].min() + 0.002]
+    lo, hi = foot[:, 0].min(), foot[:, 0].max()
+    mass = sum(link.mass for link in links.values())
+    out = []
+    for j in [None] + [j for j in obj.joints if j.type == "revolute" and abs(j.axis[1]) > 0.9]:
+        com = {n: np.asarray(link.origin) + np.asarray(link.com) for n, link in links.items()}
+        if j is not None:  # turned about the tilt axis by its upper limit (Rodrigues)
+            a, t = np.asarray(j.axis, float), j.upper
+            k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+            r = np.eye(3) + math.sin(t) * k + (1 - math.cos(t)) * k @ k
+            for n in descendants(obj.joints, j.child):
+                com[n] = np.asarray(j.origin) + r @ (com[n] - np.asarray(j.origin))
+        c = sum(links[n].mass * com[n] for n in links) / mass
+        out.append((c[0] - lo, hi - c[0], c[2] * math.tan(math.radians(10))))
+    return out
+
+
+@pytest.mark.parametrize("seed", [1, 3, 4, 7301])
+def test_a_set_on_its_stand_does_not_overturn_tilted_ten_degrees(seed):
+    """IEC 62368-1 8.6.2.2: the centre of mass stays inside the stand's floor contact by its height x tan 10
+    degrees, upright and with the screen tilted back (a 2 m set on feet tipped back before: seed 7301)."""
+    from infmob_usd.api import generate
+
+    obj = generate("tv", seed=seed, texture_size=16)
+    assert obj.params["stand_style"] != "wall_mount"
+    for back, front, needed in _com_margins(obj):
+        assert back >= needed and front >= needed, (back, front, needed)

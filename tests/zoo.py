@@ -78,3 +78,35 @@ def object_limits(name, seed, bp, **overrides):
                                           axis=tuple(final[j.child].axis)),))
                  if j.movable and len(j.dofs) == 1 and j.child in final else j for j in bp.joints]
     return bp
+
+
+def spring_blueprint() -> Blueprint:
+    """One joint of every spring-returned role on a fixed base (a push button, a pen-style plunger
+    pressed down, a lever whose weight pulls it off its stop, a self-closing door) and a pedal whose
+    lid follows it (``Layout.couple``: the lid turns three times the pedal's angle)."""
+    from types import SimpleNamespace
+
+    from infmob_usd.grammar import Layout
+
+    bp = Blueprint("spring_zoo", materials={"body": "painted", "part": "plastic"})
+    bp.add("base", "body", [g.box_between([-0.1, -1.0, 0.0], [0.1, 1.0, 0.05], "body")])
+    lay = Layout(bp, {}, np.random.default_rng(0), None)
+    at = lambda o, z: SimpleNamespace(origin=o, z=z)  # noqa: E731  (a frame: origin and axis)
+    bp.add("button", "part", [g.box([0.02, 0.02, 0.02], [0.0, -0.8, 0.3], "part")])
+    lay.slide("base", "button", at((0.0, -0.8, 0.3), (-1, 0, 0)), upper=0.004, role="button")
+    bp.add("plunger", "part", [g.box([0.01, 0.01, 0.04], [0.0, -0.5, 0.3], "part")])
+    lay.slide("base", "plunger", at((0.0, -0.5, 0.3), (0, 0, -1)), upper=0.006, role="plunger")
+    bp.add("lever", "part", [g.box([0.08, 0.01, 0.01], [0.04, -0.2, 0.3], "part")])
+    lay.hinge("base", "lever", at((0.0, -0.2, 0.3), (0, 1, 0)), upper=0.5, role="lever")
+    bp.add("door", "part", [g.box([0.01, 0.3, 0.3], [0.0, 0.25, 0.3], "part")])
+    lay.hinge("base", "door", at((0.0, 0.1, 0.3), (0, 0, 1)), upper=1.2, role="self_closing")
+    bp.add("pedal", "part", [g.box([0.06, 0.04, 0.01], [0.03, 0.7, 0.3], "part")])
+    lay.hinge("base", "pedal", at((0.0, 0.7, 0.3), (0, -1, 0)), upper=0.4, role="hinge")
+    bp.add("lid", "part", [g.box([0.15, 0.1, 0.01], [0.0, 0.85, 0.45], "part")])
+    lay.hinge("base", "lid", at((-0.075, 0.85, 0.45), (0, -1, 0)), upper=1.2, role="pedal_lid")
+    lay.couple("lid", "pedal", ratio=3.0)
+    return bp
+
+
+def spring_zoo(seed: int = 0, texture_size: int = 16):
+    return assemble(spring_blueprint(), seed, np.random.default_rng(seed), texture_size)

@@ -7,7 +7,8 @@
 * always (unless ``mass=False``): ``mass``, the total and every moving part's mass within the
   ranges of real products in ``mass_ranges.csv`` (:mod:`.masses`);
 * with ``sim`` (default): SAPIEN physics on CPU (:mod:`.sim`): the URDF loads
-  (``sapien_load``) and every movable joint driven alone reaches both limits (``reach``);
+  (``sapien_load``) and every movable joint driven alone reaches both limits, from rest and from
+  the all-open state (``reach``);
 * with ``simready``: NVIDIA's validators (:mod:`.simready`): SimReady Robotics-Prop 4.0.0, the
   articulation and driven-joint features of Robot-Body 3.0.0, omniverse-asset-validator's defaults;
 * with ``physics``: the plausibility checks of ``infmob validate --sim``: passive

@@ -1,20 +1,22 @@
 """The push test: every movable joint pushed with its own URDF effort goes at most 5 % of its range past where it rests.
 
-Each movable joint of an object's URDF, alone, is pushed with its ``<limit effort>`` towards each
-of its limits for one second (gravity on, fixed base, the URDF's damping and friction), in
-MuJoCo (:func:`~infmob_usd.validate.mujoco_sim.push_joints`, which reads the URDF itself) and in
-PyBullet (:func:`push_bullet`); every limited joint must stay within 5 % of its range past where it
-rests, left alone for as long (:attr:`~infmob_usd.validate.mujoco_sim.Push.pushed`), and rest
-within its limits + 5 % of its range or 1 mm / 1 degree (:attr:`~.mujoco_sim.Push.rest_ok`).
-Where a stop carries weight, MuJoCo's soft limit lets the part sit past it whatever pushes it
-(0.37-0.6 mm on a vertical slide, MuJoCo's defaults; a URDF cannot stiffen them:
+Each movable joint of an object, alone, is pushed with its effort (URDF ``<limit effort>``, MJCF
+``actuatorfrcrange``) for one second each way (gravity on, fixed base, the file's damping, friction and
+springs): in MuJoCo on the MJCF (:func:`~infmob_usd.validate.mujoco_sim.push_joints`) from rest
+towards its upper limit and from its upper limit back into its rest stop, in PyBullet on the URDF
+(:func:`push_bullet`) towards each limit from rest; at every step of every push each limited joint
+must stay within 5 % of its range past where it rests, left alone for as long (the peak:
+:attr:`~infmob_usd.validate.mujoco_sim.Push.pushed`), and rest within its limits + 5 % of its range
+or 1 mm / 1 degree (:attr:`~.mujoco_sim.Push.rest_ok`). Where a stop carries weight, MuJoCo's soft
+limit lets the part sit past it whatever pushes it (0.37-0.6 mm on a vertical slide with MuJoCo's
+default limits; a URDF cannot stiffen them, the MJCF does:
 :func:`~infmob_usd.validate.mujoco_sim.rest_excess`): that sag is MuJoCo's, what the push adds is
 the effort's. Efforts come from :mod:`infmob_usd.effort`.
 
 Command (the sweep behind the figures in docs/benchmarks.md)::
 
     python -m infmob_usd.validate.push [--seeds N] [--engines mujoco,pybullet|none] [--mujoco-check]
-                                       [--workers N] [CATEGORY ...]
+                                       [--bullet-from-upper] [--workers N] [CATEGORY ...]
 
 prints per category how many objects passed in each engine (and the ``mujoco`` check of
 ``validate --sim`` on the MJCF with ``--mujoco-check``), the furthest a push took a joint past a
@@ -25,6 +27,7 @@ seconds the MJCF writer adds per object.
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import sys
 import tempfile
@@ -34,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .mujoco_sim import PUSH_TIME, PUSH_TOL, Push, _past, _push, load_model, push_joints
+from .mujoco_sim import PUSH_TIME, PUSH_TOL, Push, _past, _push, load_model, opened_by, push_joints
 
 
 def _urdf_efforts(urdf: Path) -> dict[str, float]:
@@ -46,8 +49,16 @@ def _urdf_efforts(urdf: Path) -> dict[str, float]:
     return out
 
 
-def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240) -> list[Push]:
-    """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode).
+def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240,
+                opened: dict[str, list[str]] | None = None, from_upper: bool = False) -> list[Push]:
+    """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode) towards
+    each limit from rest, judged on the peak over each push; ``from_upper``: the push towards the
+    lower limit starts from the upper one (``opened``: as
+    :func:`~infmob_usd.validate.mujoco_sim.push_joints`).
+
+    Not by default: Bullet holds a limit from the step after it is crossed, so a part falling onto its
+    rest stop goes ``v dt`` past it (1/240 s: a 3 g bottle cap falling 16 mm, 9 % of its travel), and a
+    URDF has no armature to slow it (the MJCF has, :mod:`infmob_usd.effort`).
 
     The base is fixed; PyBullet's default velocity motors are switched off so a joint is free
     but for its URDF damping; the effort is applied as a joint torque / force every step.
@@ -75,12 +86,19 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
         state = pb.saveState(physicsClientId=cid)
         steps = int(round(duration / timestep))
 
+        index = {name[k]: k for k in moving}
+
         def run(i: int | None, force: float) -> np.ndarray:
-            """From rest, joint ``i`` (None: none) pushed with ``force`` for ``duration``: the furthest
-            each limited joint went past its lower and upper limit (``(2, n)``, fractions of its range)."""
+            """From rest (pushed down: from its upper limit), joint ``i`` (None: none) pushed with ``force``
+            for ``duration``: the furthest each limited joint went past its lower and upper limit
+            (``(2, n)``, fractions of its range)."""
             pb.restoreState(stateId=state, physicsClientId=cid)
+            start = {}
+            if from_upper and i is not None and force < 0 and i in limited:
+                start = {k: info[k][9] for k in [i, *(index[n] for n in (opened or {}).get(name[i], [])
+                                                     if n in index)] if k in limited}
             for k in moving:
-                pb.resetJointState(body, k, 0.0, 0.0, physicsClientId=cid)
+                pb.resetJointState(body, k, start.get(k, 0.0), 0.0, physicsClientId=cid)
             pb.setJointMotorControlArray(body, moving, pb.VELOCITY_CONTROL, forces=[0.0] * len(moving),
                                          physicsClientId=cid)
             worst = np.full((2, len(limited)), -np.inf)
@@ -113,9 +131,10 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
         pb.disconnect(physicsClientId=cid)
 
 
-def push_mujoco(urdf: str | Path, duration: float = PUSH_TIME) -> list[Push]:
-    """:func:`~infmob_usd.validate.mujoco_sim.push_joints` on the URDF as MuJoCo reads it."""
-    return push_joints(load_model(urdf), duration)
+def push_mujoco(path: str | Path, duration: float = PUSH_TIME, opened: dict[str, list[str]] | None = None
+                ) -> list[Push]:
+    """:func:`~infmob_usd.validate.mujoco_sim.push_joints` on an MJCF (or a URDF as MuJoCo reads it)."""
+    return push_joints(load_model(path), duration, opened=opened)
 
 
 ENGINES = {"mujoco": push_mujoco, "pybullet": push_bullet}
@@ -133,7 +152,8 @@ def describe(p: Push) -> str:
     return f"{p.joint} -> {p.side} ({p.effort:.3g}): {p.excess * 100:.1f} % past{rest}"
 
 
-def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool, out: str) -> dict:
+def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool, out: str,
+         bullet_from_upper: bool = False) -> dict:
     """Generate one object (URDF + MJCF, 16 px textures), push it in ``engines``, optionally run
     the ``mujoco`` check on its MJCF; a row of results."""
     import infmob_usd
@@ -142,10 +162,12 @@ def _one(category: str, seed: int, engines: tuple[str, ...], mujoco_check: bool,
 
     obj = infmob_usd.generate(category, seed=seed, texture_size=16)
     folder = infmob_usd.save(obj, Path(out) / category, formats="urdf,mjcf")
-    urdf = folder / f"{folder.name}.urdf"
+    files = {"mujoco": folder / f"{folder.name}.xml", "pybullet": folder / f"{folder.name}.urdf"}
+    opened = opened_by(json.loads((folder / "metadata.json").read_text()))
     row = {"category": category, "seed": seed, "name": folder.name, "mjcf_s": obj.timings["mjcf"], "fails": {}}
     for e in engines:
-        pushes = ENGINES[e](urdf)
+        extra = {"from_upper": True} if e == "pybullet" and bullet_from_upper else {}
+        pushes = ENGINES[e](files[e], opened=opened, **extra)
         row["fails"][e] = [describe(p) for p in failures(pushes)]
         row[e] = max([p.pushed for p in pushes] + [0.0])
         row[f"{e}_rest"] = max([p.rest for p in pushes] + [0.0])
@@ -166,6 +188,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--engines", default="mujoco,pybullet", help="push in these (comma list; `none`: no push)")
     ap.add_argument("--mujoco-check", action="store_true",
                     help="also run the mujoco check of validate --sim on the MJCF")
+    ap.add_argument("--bullet-from-upper", action="store_true",
+                    help="in PyBullet too, push towards the lower limit from the upper one (as in MuJoCo)")
     ap.add_argument("--workers", type=int, default=1)
     a = ap.parse_args(argv)
     cats = infmob_usd.list_categories() if a.categories in (["all"], []) else a.categories
@@ -178,7 +202,8 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp, ProcessPoolExecutor(max_workers=a.workers) as pool:
         for cat in cats:
-            futs = [pool.submit(_one, cat, seed, engines, a.mujoco_check, tmp) for seed in range(a.seeds)]
+            futs = [pool.submit(_one, cat, seed, engines, a.mujoco_check, tmp, a.bullet_from_upper)
+                    for seed in range(a.seeds)]
             rows = [f.result() for f in futs]
             passed = {e: sum(not r["fails"][e] for r in rows) for e in engines}
             if a.mujoco_check:

@@ -113,8 +113,8 @@ class ControlFace(Layout):
     def place_lever(self, parent: str, name: str, spec: Lever, at: Frame, material: str) -> str:
         """A :class:`Lever` resting at ``at`` (the top of its slot), sliding down ``spec.travel``."""
         placed = self.place(spec.build(material).attached("mount", to=at), name)
-        # a slide's friction (physical.DYNAMICS, 1 N) holds a 10-30 g lever up against gravity
-        self.slide(parent, placed.root, placed.anchor("slide"), upper=spec.travel)
+        # a return spring holds it at its top stop and brings it back up when let go (role "lever")
+        self.slide(parent, placed.root, placed.anchor("slide"), upper=spec.travel, role="lever")
         return placed.root
 
 

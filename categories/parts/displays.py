@@ -9,12 +9,45 @@ arms reach 0.15-0.45 m (manufacturers' spec sheets: Samsung, LG, Sony; VESA MIS-
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from infmob_usd import geometry as g
 
 GAP = 0.004  # clearance between moving parts and their neighbours
+
+
+@dataclass(frozen=True)
+class Ranges:
+    """Ranges of a TV's parameters (lo, hi), m, rad or a fraction. Flat-panel TVs 24-95 in (0.6-2.1 m wide),
+    20-40 mm panels with 5-20 mm bezels and a 15-50 mm electronics box on 40-75 % x 35-60 % of the back;
+    pedestal plates 30-55 % of the width and 18-32 cm deep, feet 50-80 % of the width apart, 3-12 cm under
+    the screen; tilt brackets 7.5-22.5 degrees, height-adjustable posts 4-14 cm, swivels 15-45 degrees;
+    wall arms of 0-3 links reaching 0.15-0.45 m; curved panels 3000R-4200R; 1-7 keys (manufacturers' spec
+    sheets and owner's manuals: Samsung, LG, Sony; VESA MIS-D/E/F; Sanus, Vogel's arms)."""
+
+    width: tuple[float, float] = (0.6, 2.1)
+    depth: tuple[float, float] = (0.02, 0.04)
+    bezel: tuple[float, float] = (0.005, 0.02)
+    back_depth: tuple[float, float] = (0.015, 0.05)
+    back_width: tuple[float, float] = (0.4, 0.75)
+    back_height: tuple[float, float] = (0.35, 0.6)
+    clearance: tuple[float, float] = (0.03, 0.12)
+    base_width: tuple[float, float] = (0.3, 0.55)
+    base_depth: tuple[float, float] = (0.18, 0.32)
+    leg_spread: tuple[float, float] = (0.5, 0.8)
+    tilt: tuple[float, float] = (math.pi / 24, math.pi / 8)
+    slide: tuple[float, float] = (0.04, 0.14)
+    swivel: tuple[float, float] = (math.pi / 12, math.pi / 4)
+    arm_links: tuple[int, int] = (0, 3)
+    curve_radius: tuple[float, float] = (3.0, 4.2)
+    arm_length: tuple[float, float] = (0.15, 0.45)
+    button_count: tuple[int, int] = (1, 7)
+
+
+
+RANGES = Ranges()
 CLEAR = 0.0015  # clearance of a button in its hole
 BEZEL_T = 0.008  # bezel thickness (x)
 RIM = 0.010  # side rim thickness (y) when side buttons go through it
@@ -130,12 +163,30 @@ def sleeve(x_p: float, r_in: float, base_t: float, height: float, wall: float = 
             g.disc([x_p, 0, base_t + 0.002], r_in + wall, 0.004, "stand")]
 
 
-def two_legs(x_p: float, z_p: float, r_k: float, L_k: float, xf: float, x_bk: float, base_t: float, depth: float
-             ) -> list[g.Piece]:
-    """Two feet under the screen with uprights behind it, a low crossbar, rests under the barrel."""
+TIP_ANGLE = math.radians(10)
+"""A TV on its stand must not overturn tilted 10 degrees from upright in any direction (IEC 62368-1 clause
+8.6.2.2, as IEC 60065 clause 19.1 before it): its centre of mass stays inside the floor contact by its
+height x tan(10 degrees)."""
+
+
+def stable_span(centre, pivot, tilt: float, rise: float = 0.0) -> tuple[float, float]:
+    """The x span (back, front) a stand's floor contact must cover (:data:`TIP_ANGLE`): the centre of mass
+    taken at the screen's ``centre`` (x, z; the panel outweighs its stand), upright and tilted back by
+    ``tilt`` about ``pivot`` (x, z), raised by ``rise`` (a height-adjustable post's travel)."""
+    (x_c, z_c), (x_p, z_p) = centre, pivot
+    c, s = math.cos(tilt), math.sin(tilt)  # about -y: the top goes back
+    x_t, z_t = x_p + (x_c - x_p) * c - (z_c - z_p) * s, z_p + (x_c - x_p) * s + (z_c - z_p) * c
+    k = math.tan(TIP_ANGLE)
+    return min(x_c - k * (z_c + rise), x_t - k * (z_t + rise)), max(x_c + k * (z_c + rise), x_t + k * (z_t + rise))
+
+
+def two_legs(x_p: float, z_p: float, r_k: float, L_k: float, xf: float, x_bk: float, base_t: float, depth: float,
+             span: tuple[float, float]) -> list[g.Piece]:
+    """Two feet under the screen with uprights behind it, a low crossbar, rests under the barrel; the feet
+    reach at least ``depth`` and over the ``span`` that keeps the set standing (:func:`stable_span`)."""
     y_leg = L_k / 2 + GAP + LEG_W / 2
     ux = min(1.3 * r_k, x_bk - GAP - x_p - 0.002)
-    x0, x1 = min(x_p - 0.04, xf - depth), xf + 0.03
+    x0, x1 = min(x_p - 0.04, xf - depth, span[0]), max(xf + 0.03, span[1])
     pieces = []
     for s in (-1, 1):
         y = s * y_leg
@@ -376,7 +427,7 @@ def screen_frame(W: float, D: float, aspect: str, wall: bool, adjust: bool, clea
     m = TV["pivot_in_box"]
     z_p = min(max((zh0 + zh1) / 2 if not wall else zs0 + 0.5 * H, zh0 + m), zh1 - m)
     return dict(H=H, base_t=base_t, sleeve_h=sleeve_h, zs=(zs0, zs1), xf=xf, xs=xs, xhb=xhb, x_bk=x_bk,
-                hump=(hw, hh, zh0, zh1), r_k=r_k, pivot=(x_p, z_p))
+                hump=(hw, hh, zh0, zh1), r_k=r_k, pivot=(x_p, z_p), centre=((xf + xs) / 2, (zs0 + zs1) / 2))
 
 
 def curved_keys(layout: list, hump_w: float) -> tuple[list, float]:
@@ -409,13 +460,20 @@ def camera_slide(xs: float, zs1: float):
 
 
 def pedestal_base(shape: str, base_width: float, base_depth: float, W: float, base_t: float, x_p: float,
-                  xf: float) -> g.Piece:
+                  xf: float, span: tuple[float, float]) -> g.Piece:
     """A pedestal's base plate (:func:`base_plate`): at least 25 cm wide, shallower under a small screen,
-    centred a little in front of the pivot."""
+    centred a little in front of the pivot, and over the ``span`` that keeps the set standing
+    (:func:`stable_span`)."""
     d = TV["pedestal"]
     bw = max(d["min_width"], base_width * W)
     bd = base_depth * min(1.0, d["depth"][0] + d["depth"][1] * W)
     xc = min(x_p + d["ahead"] * bd * 0.5, (x_p + xf) / 2 + d["ahead_max"])
+    if shape == "round":  # a disc of radius max(bw, bd) / 2 centred 0.3 radii in front of the post
+        r = max(max(bw, bd) / 2, (x_p - span[0]) / 0.7, (span[1] - x_p) / 1.3)
+        bw, bd = max(bw, 2 * r), max(bd, 2 * r)
+    elif xc - bd / 2 > span[0] or xc + bd / 2 < span[1]:
+        lo, hi = min(xc - bd / 2, span[0]), max(xc + bd / 2, span[1])
+        xc, bd = (lo + hi) / 2, hi - lo
     return base_plate(shape, bw, bd, base_t, x_p, xc)
 
 

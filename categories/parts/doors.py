@@ -9,6 +9,7 @@ wall; architraves 50-90 mm; handles at 0.95-1.05 m with a 60 mm backset (BS EN 1
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -17,6 +18,34 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY
 
 from .hardware import HandleSize
+
+
+@dataclass(frozen=True)
+class Ranges:
+    """Ranges of a door's parameters (lo, hi), m, a count or a fraction. Leaves 0.8-1.0 x 2.0-2.1 m and
+    40-60 mm thick, 100-140 mm stiles and rails, 2-6 panels; jambs 25-50 mm on walls 100-160 mm thick,
+    architraves 50-90 mm; handles at 0.95-1.05 m, levers 100-140 mm, knobs 50-64 mm across, bar pulls
+    250-450 mm (BS EN 1906, DIN 18101; ironmongers' catalogues); each leaf of a French pair 68-75 % of a
+    single leaf (0.6-0.75 m); barn-door hanger wheels 60-90 mm across (sliding-door hardware catalogues)."""
+
+    leaf_width: tuple[float, float] = (0.8, 1.0)
+    leaf_height: tuple[float, float] = (2.0, 2.1)
+    leaf_thickness: tuple[float, float] = (0.04, 0.06)
+    frame_depth: tuple[float, float] = (0.1, 0.16)
+    jamb_width: tuple[float, float] = (0.025, 0.05)
+    casing_width: tuple[float, float] = (0.05, 0.09)
+    panel_count: tuple[int, int] = (2, 6)
+    stile_width: tuple[float, float] = (0.1, 0.14)
+    handle_height: tuple[float, float] = (0.95, 1.05)
+    lever_length: tuple[float, float] = (0.1, 0.14)
+    knob_radius: tuple[float, float] = (0.025, 0.032)
+    pull_length: tuple[float, float] = (0.25, 0.45)
+    pair_fraction: tuple[float, float] = (0.68, 0.75)
+    wheel_radius: tuple[float, float] = (0.03, 0.045)
+
+
+
+RANGES = Ranges()
 
 CASING_T = 0.016  # architrave thickness
 STOP = (0.012, 0.014)  # door stop: protrusion into the opening, depth

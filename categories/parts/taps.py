@@ -9,11 +9,36 @@ tubes 14-24 mm across, lever arms 4-12 cm (manufacturers' dimension sheets: Groh
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame, polar
+
+
+@dataclass(frozen=True)
+class Ranges:
+    """Ranges of a tap's parameters (lo, hi), m or rad. Kitchen and basin mixers 15-40 cm tall on 6-25 cm deck
+    plates (a bridge or widespread set the widest), bodies 32-56 mm across, spout tubes 14-24 mm across
+    reaching 10-24 cm and swivelling 30-135 degrees each way, lever arms 4-12 cm lifting 20-36 degrees, valve
+    handles or a side mixer 5-10 cm off the middle, pull-out heads 12-20 cm on their hose, wall mixers' bodies 15-22
+    cm long (manufacturers' dimension sheets: Grohe, Hansgrohe)."""
+
+    height: tuple[float, float] = (0.15, 0.4)
+    base_width: tuple[float, float] = (0.06, 0.25)
+    body_radius: tuple[float, float] = (0.016, 0.028)
+    spout_reach: tuple[float, float] = (0.1, 0.24)
+    spout_radius: tuple[float, float] = (0.007, 0.012)
+    spout_swivel: tuple[float, float] = (math.pi / 6, 3 * math.pi / 4)
+    lever_length: tuple[float, float] = (0.04, 0.12)
+    lever_tilt: tuple[float, float] = (math.pi / 9, math.pi / 5)
+    handle_spread: tuple[float, float] = (0.05, 0.1)
+    head_travel: tuple[float, float] = (0.12, 0.2)
+    wall_length: tuple[float, float] = (0.15, 0.22)
+
+
+RANGES = Ranges()
 
 GAP = 0.003  # clearance around every moving part
 DECK_T = 0.01  # deck plate thickness

@@ -15,7 +15,7 @@ frame, Z up along the vessel's axis:
   body's ``lid_seat``; :func:`seat_joint` then joins them (lift along the seat's z,
   turning about it for round closures);
 * fittings: :func:`foot_ring` (``mount`` under a base), :func:`label_band`
-  (``axis``), :func:`lid_knob` / :func:`lid_loop` (``base`` on a lid's ``top``),
+  (``vessel``: glued on the body, pieces of it), :func:`lid_knob` / :func:`lid_loop` (``base`` on a lid's ``top``),
   :func:`side_handles` / :func:`long_handle` (``vessel``: they are built to fit
   one wall, in its frame) with :func:`handle_tip` / :func:`hanging_ring` at the
   handle's ``end``.
@@ -38,10 +38,11 @@ from scipy.interpolate import PchipInterpolator
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
-from infmob_usd.assembly import Assembly, Placed
+from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
 
 from . import vessel_sizes as S
+from .lids import seat_joint  # noqa: F401  (the lid family's joint, used as V.seat_joint)
 
 UP = (0.0, 0.0, 1.0)
 
@@ -563,30 +564,16 @@ def hinged_lid(radius: float, thickness: float, hinge_offset: float, slot: str, 
                     {"seat": IDENTITY, "hinge": hinge, "top": _at(thickness)}, {})
 
 
-def seat_joint(parent: str, closure: Placed, lift: float, turns: bool = True) -> J.JointSpec:
-    """A closure on its seat: lifts ``0..lift`` along the seat's z (its lower stop: gravity holds it
-    down), turning freely about it unless ``turns`` is false."""
-    s = closure.anchor("seat")
-    if turns:
-        return J.continuous_prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), (0.0, lift), role="lid")
-    return J.prismatic(parent, closure.root, tuple(s.origin), tuple(s.z), 0.0, lift, role="lid")
-
-
-def spin_joint(parent: str, part: Placed) -> J.JointSpec:
-    """A part that turns freely about its ``axis`` anchor's z (a label band round a bottle)."""
-    a = part.anchor("axis")
-    return J.continuous(parent, part.root, tuple(a.origin), tuple(a.z), role="knob")
-
-
 def label_band(prof: Profile, zone: tuple[float, float], fill: float, offset: float, slot: str) -> Assembly:
     """A paper label round a bottle's straight part: ``fill`` of the ``zone`` (z0, z1) tall, at
-    ``offset`` (0 bottom, 1 top) within it, with clearance from the glass. Built in the bottle's
-    frame (anchor ``vessel``); ``axis`` at its centre."""
+    ``offset`` (0 bottom, 1 top) within it, glued on the glass (a glue film off its widest radius there):
+    pieces of the body, not a part that turns. Built in the bottle's frame (anchor ``vessel``); ``axis``
+    at its centre."""
     L = S.LABEL
     z0, z1 = zone
     h = fill * (z1 - z0)
     zl = z0 + offset * (z1 - z0 - h)
-    r_in = prof.outer_radius(zl - 0.001, zl + h + 0.001) + max(L["gap"][0], L["gap"][1] * h)
+    r_in = prof.outer_radius(zl - 0.001, zl + h + 0.001) + L["glue"]
     t = L["thickness"]
     band = sleeve([(r_in + t, zl), (r_in + t, zl + h)], t, slot, r_in, sectors=L["sectors"],
                   collision_thickness=L["collision"], sheet=L["paper"])

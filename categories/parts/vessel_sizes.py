@@ -142,7 +142,8 @@ BOTTLE_BOTTOM = {"thickness": 1.8, "inset": 0.3}  # x wall
 PUNT = [(0.0, 1.0), (0.35, 0.8), (0.6, 0.45), (0.78, 0.12), (0.86, 0.0)]  # the outside (under) face
 PUNT_TOP = [(0.8, 0.12), (0.62, 0.45), (0.36, 0.8)]  # the inside face, above the bottom's thickness
 # paper label band: 0.8 mm visual wall, 2 mm collision ring, 0.2 mm paper; clearance 2.5 % of its height
-LABEL = {"thickness": 0.0008, "collision": 0.002, "paper": 0.0002, "gap": (0.0015, 0.025), "sectors": 16}
+# a bottle label: printed paper (0.2 mm of steel-equivalent sheet) glued on the glass, 0.2 mm of glue film
+LABEL = {"thickness": 0.0008, "collision": 0.002, "paper": 0.0002, "glue": 0.0002, "sectors": 16}
 
 # -- jar --------------------------------------------------------------------------------------
 # Mason / storage jars 10..25 cm tall, 3..8 cm body radius; 70 mm (regular) and 86 mm (wide)

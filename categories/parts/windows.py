@@ -9,6 +9,7 @@ deep, 40-90 mm faces; sashes 0.4-0.85 m wide; 6 mm float glass; shutters 25-40 m
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import trimesh
@@ -22,6 +23,41 @@ LIP = 0.012  # glazing stop / track lip overlap into the opening
 TRACK_GAP = 0.016  # sliding: back sash front face to front sash back face
 DIVIDER = 0.006  # sliding: track divider width (X)
 PULL = 0.007  # sliding: finger pull depth on a back-track sash (fits in TRACK_GAP)
+
+
+@dataclass(frozen=True)
+class Ranges:
+    """Ranges of a window's parameters (lo, hi), m, rad, a count or a fraction. Frames 0.6-2.5 m, 70-140 mm
+    deep with 40-90 mm faces, mullions 40-80 mm, sashes 0.4-0.85 m wide with 35-70 mm stiles, 2-4 x 1-2
+    glazing bars, transoms 18-30 % of the height, sills 30-100 mm deep and 25-50 mm thick (manufacturers'
+    catalogues; BS 644, EN 14351-1); shutters 25-40 mm thick, leaves 0.55-0.8 m, opening 72-86 degrees;
+    curtains 60-200 mm clear of the sash handles on rods 50-200 mm above the frame and 50-250 mm past it, 60-98 %
+    of the drop and 45-75 % gathered when open (curtain and shutter makers' fitting guides)."""
+
+    width: tuple[float, float] = (0.6, 2.5)
+    height: tuple[float, float] = (0.6, 2.5)
+    sash_width: tuple[float, float] = (0.4, 0.85)
+    frame_depth: tuple[float, float] = (0.07, 0.14)
+    frame_width: tuple[float, float] = (0.04, 0.09)
+    mullion_width: tuple[float, float] = (0.04, 0.08)
+    stile_width: tuple[float, float] = (0.035, 0.07)
+    bar_rows: tuple[int, int] = (2, 4)
+    bar_cols: tuple[int, int] = (1, 2)
+    transom_fraction: tuple[float, float] = (0.18, 0.3)
+    sill_depth: tuple[float, float] = (0.03, 0.1)
+    sill_thickness: tuple[float, float] = (0.025, 0.05)
+    shutter_thickness: tuple[float, float] = (0.025, 0.04)
+    shutter_leaf_width: tuple[float, float] = (0.55, 0.8)
+    shutter_angle: tuple[float, float] = (1.25, 1.5)
+    curtain_offset: tuple[float, float] = (0.06, 0.2)
+    curtain_rise: tuple[float, float] = (0.05, 0.2)
+    curtain_overhang: tuple[float, float] = (0.05, 0.25)
+    curtain_drop: tuple[float, float] = (0.6, 0.98)
+    curtain_open: tuple[float, float] = (0.45, 0.75)
+
+
+
+RANGES = Ranges()
 
 
 
@@ -444,7 +480,10 @@ def tilt_turn(frame, light, p, dims, transom, middle):
             lower[2, 3] = pivot[2] * (1 - lower[2, 2])
             pieces = [pc.transformed(lower) for pc in pieces]
         # turn first, then tilt about the sash's own bottom rail: tilted and turned at once (the validators
-        # sample every joint at its maximum) the bottom rail keeps its height above the floor
+        # sample every joint at its maximum) the bottom rail keeps its height above the floor. A real
+        # tilt-and-turn handle selects one mode: the turn and the tilt exclude each other. The core has no
+        # relation for "these two cannot be open together" between the DoFs of one joint yet (a declared
+        # requires_closed would say it); until it has, both DoFs are free and the model allows both at once.
         out.append((name, pieces, J.flip_revolute("frame", name, d.origin, d.axis, (d.lower, d.upper), pivot,
                                                   (0, 1, 0), (0.0, TILT), role="hinge")))
     return out, x_room

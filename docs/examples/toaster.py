@@ -6,7 +6,8 @@ and says what goes where, never a coordinate. Dropped into ``categories/`` as ``
 a category (discovery registers it); the tests build it from here.
 
 The lever rests at the top of its slot and slides down (a prismatic joint, its rest the lower limit);
-on a real toaster a spring holds it up and it drives the bread carriage inside.
+its return spring (role ``lever``) holds it up; on a real toaster it also drives the bread carriage inside
+(a coupled joint, ``Layout.couple``, once the carriage is a part).
 """
 
 from __future__ import annotations

@@ -1,0 +1,30 @@
+"""Physical plausibility passes applied once, for every category.
+
+* :func:`rest_on_ground` moves the object so its lowest point at rest is z = 0 (or its ``elevation``)
+  (:mod:`.ground`).
+* :func:`rest_on_stops` makes every passive hinge neutral under gravity or pressed onto its
+  rest stop (picking the side of a two-sided range, or adding a counterweight heel) (:mod:`.stops`).
+* :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent (:mod:`.gaps`).
+* :func:`limit_to_ground` shortens limits so nothing goes below the ground (:mod:`.ground`).
+* :func:`limit_to_clearance` shortens limits so moving parts never meet what they may not touch,
+  from rest and from the all-open state, and orders parts that cannot pass each other open
+  (``requires_closed``) (:mod:`.clearance`, on the sweeps of :mod:`.sweep` and the hull tests
+  of :mod:`.hulls`).
+* :data:`DYNAMICS` gives passive joint dynamics per joint role, so doors stay
+  where they are left and knobs do not spin freely (:mod:`.passive`).
+"""
+
+from .clearance import ALL_FRACTIONS, clearance_limits, limit_to_clearance
+from .gaps import ensure_gaps, gap_size
+from .ground import GROUND_TOL, limit_to_ground, rest_on_ground
+from .hulls import CLEARANCE, CONTACT_VOLUME
+from .passive import DYNAMICS, Dynamics, dynamics
+from .stops import BALANCED, GRAVITY, HEEL_SECTION, gravity_torque, rest_on_stops
+from .sweep import PARENT_GROWTH, SWEEP_SAGITTA
+
+__all__ = [
+    "ALL_FRACTIONS", "BALANCED", "CLEARANCE", "CONTACT_VOLUME", "DYNAMICS", "Dynamics", "GRAVITY",
+    "GROUND_TOL", "HEEL_SECTION", "PARENT_GROWTH", "SWEEP_SAGITTA", "clearance_limits", "dynamics",
+    "ensure_gaps", "gap_size", "gravity_torque", "limit_to_clearance", "limit_to_ground", "rest_on_ground",
+    "rest_on_stops",
+]

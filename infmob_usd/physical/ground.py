@@ -1,0 +1,110 @@
+"""The ground: the object rests on z = 0 (or its elevation), and no joint takes a part below it."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from ..blueprint import Blueprint, descendants
+from ..errors import ModelError
+from ..hulls import hull_arrays
+from ..joints import Dof
+from ..rotation import axis_angle
+
+
+def rest_on_ground(bp: Blueprint) -> Blueprint:
+    """A copy of ``bp`` translated (parts and joints) so its lowest point at rest sits at z = 0, or at
+    ``bp.elevation`` for a wall-mounted object."""
+    dz = float(bp.elevation) - float(bp.bounds()[0, 2])
+    if abs(dz) < 1e-12:
+        return bp
+    offset = np.array([0.0, 0.0, dz])
+    parts = {name: replace(part, pieces=[p.translated(offset) for p in part.pieces])
+             for name, part in bp.parts.items()}
+    joints = [
+        replace(j, dofs=tuple(
+            Dof(d.type, tuple(np.asarray(d.origin) + offset), d.axis, d.lower, d.upper) for d in j.dofs
+        ))
+        for j in bp.joints
+    ]
+    return replace(bp, parts=parts, joints=joints)
+
+
+
+GROUND_TOL = 5e-4
+"""m; a part may dip this far below z = 0 at a joint state (validators allow 1 mm)."""
+
+
+def _extreme_points(links, only: set | None = None) -> dict[str, np.ndarray]:
+    """Per link (of ``only`` if given), the vertices of the convex hull of all its collision hulls
+    (in the link frame).
+
+    The lowest point of a rigidly moved link is one of them, and there are far fewer of them
+    than hull vertices.
+    """
+    out = {}
+    for link in links:
+        if only is not None and link.name not in only:
+            continue
+        pts = [v for p in link.pieces for v, _ in p.hulls()]
+        if pts:
+            pts = np.vstack(pts)
+            out[link.name] = hull_arrays(pts)[0] if len(pts) > 64 else pts
+    return out
+
+
+def limit_to_ground(links, joints) -> list:
+    """New joints whose limits keep every part above the ground at any single joint's limit.
+
+    For each limited joint alone, the state at each limit is checked; if the moved
+    subtree dips below ``-GROUND_TOL``, that limit is moved towards rest by
+    bisection until it clears. A continuous joint that goes below the ground
+    cannot be limited: that raises :class:`~infmob_usd.errors.ModelError` (the
+    category must raise its base). The joints given are not changed; joints whose
+    limits stand are returned as they are.
+    """
+    # only links that some joint moves are ever tested (the root's hull, often the largest, is not)
+    moved_by = {j.name: descendants(joints, j.child) for j in joints if j.movable}
+    extreme = _extreme_points(links, set().union(*moved_by.values()))
+    origin = {link.name: np.asarray(link.origin, float) for link in links}
+    out = []
+    for j in joints:
+        out.append(j)
+        if not j.movable:
+            continue
+        moved = moved_by[j.name]
+        # one joint moves from rest, so its subtree moves rigidly: world points at rest, about the pivot
+        pts = [extreme[n] + origin[n] for n in moved if n in extreme]
+        if not pts:
+            continue
+        rel = np.vstack(pts) - origin[j.child]
+        pivot_z, axis = float(origin[j.child][2]), np.asarray(j.axis, float)
+
+        def lowest(value: float, j=j, rel=rel, pivot_z=pivot_z, axis=axis) -> float:
+            if j.type == "prismatic":
+                return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
+            return pivot_z + float((rel @ axis_angle(axis, value)[2]).min())
+
+        if j.type == "continuous":
+            for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
+                if lowest(a) < -GROUND_TOL:
+                    raise ModelError(f"continuous joint {j.name} turns {j.child!r} through the ground;"
+                                     " raise it or make it a limited revolute joint")
+            continue
+        for end in ("upper", "lower"):
+            limit = getattr(j, end)
+            if limit == 0 or lowest(limit) >= -GROUND_TOL:
+                continue
+            good, bad = 0.0, limit
+            for _ in range(30):
+                mid = 0.5 * (good + bad)
+                if lowest(mid) >= -GROUND_TOL:
+                    good = mid
+                else:
+                    bad = mid
+            if abs(good) < 1e-6:
+                raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without hitting the ground")
+            out[-1] = replace(out[-1], **{end: good})
+    return out
+

@@ -1,0 +1,98 @@
+"""Newton (CPU) reads what the USD says of our joints, and holds every object at rest.
+
+Skipped where newton is not installed (``pip install -e .[newton]``; its CPU kernels compile once,
+minutes, then warp caches them). ``INFMOB_NEWTON_SEEDS=5`` widens the rest sweep (default: seed 0).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+
+import pytest
+
+import infmob_usd
+
+pytest.importorskip("newton")
+pytest.importorskip("newton_usd_schemas")
+pytestmark = pytest.mark.sim
+
+from infmob_usd.validate.newton_sim import SOLVERS, moved, rest_motion, spring_targets  # noqa: E402
+
+SEEDS = range(int(os.environ.get("INFMOB_NEWTON_SEEDS", "1")))
+
+# (solver, category, seed) -> why it moves. Neither XPBD nor Featherstone applies joint friction (Newton
+# 1.8's documented limitations): a part that only its friction holds sags at its drive damping's rate.
+FRICTION = "held by its joint friction alone, which XPBD does not apply (Newton 1.8's documented limitation)"
+KNOWN_FAILURES: dict[tuple[str, str, int], str] = {
+    ("xpbd", "lamp", 0): "the lamp head (7.9 deg) and arm (1.8 deg) are " + FRICTION,
+    ("xpbd", "tv", 0): "the screen's tilt connector (1.5 deg) is " + FRICTION,
+    ("xpbd", "pot", 0): "the lid sinks 1.3 mm onto its seat (not diagnosed; Featherstone holds it)",
+    ("xpbd", "dining_table", 0): "legs and extension leaves go NaN within 0.5 s (not diagnosed; Featherstone"
+                                 " holds them)",
+    ("xpbd", "storage_rack", 0): "the drawers of the cabinets on its levels creep 2-3 mm (not diagnosed;"
+                                 " Featherstone holds them)",
+}
+
+
+@pytest.fixture(scope="module")
+def folders(tmp_path_factory):
+    out = tmp_path_factory.mktemp("newton")
+    cache = {}
+
+    def get(category, seed):
+        if (category, seed) not in cache:
+            obj = infmob_usd.generate(category, seed=seed, texture_size=16)
+            cache[category, seed] = (infmob_usd.save(obj, out / category, formats="usd"), obj)
+        return cache[category, seed]
+
+    return get
+
+
+def test_newton_reads_armature_velocity_and_springs(folders):
+    """``newton:armature`` / ``newton:velocityLimit`` and the spring's drive reach Newton's model (before
+    they were written it read armature 0 and its default velocity limit); the spring's target needs the
+    loader recipe (:func:`spring_targets`)."""
+    import newton
+
+    folder, obj = folders("microwave", 0)
+    b = newton.ModelBuilder()
+    b.add_usd(str(folder / f"{folder.name}.usda"))
+    model = b.finalize(device="cpu")
+    native = model.joint_target_q.numpy().copy()
+    assert spring_targets(model, folder / f"{folder.name}.usda") == sum(j.stiffness > 0 for j in obj.movable_joints)
+    labels = [str(x).rsplit("/", 1)[-1] for x in model.joint_label]
+    starts = model.joint_qd_start.numpy()
+    armature, velocity = model.joint_armature.numpy(), model.joint_velocity_limit.numpy()
+    ke, target = model.joint_target_ke.numpy(), model.joint_target_q.numpy()
+    checked = 0
+    for j in obj.movable_joints:
+        k = starts[labels.index(j.name)]
+        assert armature[k] == pytest.approx(j.armature, rel=1e-5), j.name
+        if j.type != "continuous":
+            assert velocity[k] == pytest.approx(j.velocity, rel=1e-4), j.name
+        if j.stiffness > 0:
+            assert ke[k] == pytest.approx(j.stiffness, rel=1e-4), j.name
+            assert target[k] == pytest.approx(j.spring_ref, rel=1e-4, abs=1e-9), j.name
+            # what Newton's builder makes of a target beyond the rest stop, without the recipe
+            assert native[k] == pytest.approx(0.5 * (j.lower + j.upper), rel=1e-4), j.name
+        checked += 1
+    assert checked and any(j.stiffness > 0 for j in obj.movable_joints)
+
+
+def _cases():
+    for solver in SOLVERS:
+        for c in infmob_usd.list_categories():
+            for s in SEEDS:
+                reason = KNOWN_FAILURES.get((solver, c, s))
+                marks = [pytest.mark.xfail(strict=True, raises=AssertionError, reason=reason)] if reason else []
+                yield pytest.param(solver, c, s, id=f"{solver}-{c}-{s}", marks=marks)
+
+
+@pytest.mark.parametrize("solver,category,seed", list(_cases()))
+def test_newton_rest(folders, solver, category, seed):
+    folder, obj = folders(category, seed)
+    motion, prismatic = rest_motion(folder / f"{folder.name}.usda", solver)
+    assert set(motion) == {j.name for j in obj.movable_joints}  # continuous joints: revolute without limits
+    assert not any(math.isnan(m) for m in motion.values()), motion
+    assert not moved(motion, prismatic), moved(motion, prismatic)

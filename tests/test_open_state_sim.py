@@ -1,0 +1,71 @@
+"""In SAPIEN, every part of a kitchen closes and opens again from the all-open state (a robot that opened
+everything and now closes one part), not only from rest: seeds 0-2, where wall-cabinet doors, racks in
+doors and a flap used to stop on a neighbour left open."""
+
+from __future__ import annotations
+
+import pytest
+
+pytest.importorskip("sapien")
+
+import infmob_usd  # noqa: E402
+from infmob_usd.physical import clearance  # noqa: E402
+from infmob_usd.validate import sim  # noqa: E402
+
+pytestmark = pytest.mark.sim
+
+
+def _reach(folder):
+    return {c.name: c for c in sim.check_sapien(folder, checks=["reach"])}["reach"]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_every_kitchen_part_closes_and_reopens_from_the_all_open_state(seed, tmp_path):
+    folder = infmob_usd.save(infmob_usd.generate("kitchen_cabinet", seed, texture_size=16), tmp_path)
+    reach = _reach(folder)
+    assert reach.ok, reach.detail
+    assert "from rest and from all open" in reach.detail
+
+
+def test_reach_fails_a_kitchen_whose_parts_only_move_from_rest(tmp_path, monkeypatch):
+    def rest_only(obj):  # the clearance pass without its all-open step
+        c = clearance._Clearance(obj)
+        c.sweep_alone()
+        path = c.pairs()
+        if path:
+            c.together(path)
+        return c
+
+    monkeypatch.setattr(clearance, "_clearance", rest_only)
+    folder = infmob_usd.save(infmob_usd.generate("kitchen_cabinet", 0, texture_size=16), tmp_path)
+    reach = _reach(folder)
+    assert not reach.ok
+    # a wall-cabinet door stops on its open neighbour, about 0.3 rad short of closed
+    assert "joint_door_5_0 -> lower from all open 0: stopped at 0.3" in reach.detail, reach.detail
+
+
+# `infmob fuzz 300 --seed 12345`, draws 14 and 137: both miss a target from rest, not from the all-open
+# state; recorded as strict xfails until fixed (a fix turns them into failures to remove here)
+FUZZ_12345 = {
+    "kitchen_door_stalls_on_its_twin_leaf": (
+        ("kitchen_cabinet", 863838, dict(base_depth=0.55, sink_width=0.9481771266264848, front_thickness=0.022,
+                                         handle_style="knob", design="corner", stand_style="plinth")),
+        "closing, a double door's leaf stalls 0.09 rad from closed on its twin leaf (PhysX contact at the "
+        "meeting stiles; the core's hulls keep 1 mm along the path)"),
+    "pot_lid_on_a_pasta_insert": (
+        ("pot", 257514, dict(radius=0.18, bead=0.0026711065058312067, lid_thickness=0.002154414011149703,
+                             handle_angle=0.4, handle_thickness=0.01, side_handle_reach=0.019595804473540698,
+                             knob_radius=0.021904456923979625, tier_height=0.5460914116466911,
+                             pasta_collar=0.2215147139716876, body_finish="brushed_metal", has_pasta=True)),
+        "the lid lifts off a pasta insert that lifts on the same axis: driving the lid moves the held insert "
+        "3.5 cm and the lid is at 90 % of its 3 cm after 2 s (no contact; the two drives in series)"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(FUZZ_12345))
+def test_fuzz_12345_draws_reach_every_target(name, tmp_path, request):
+    (category, seed, overrides), reason = FUZZ_12345[name]
+    request.applymarker(pytest.mark.xfail(reason=reason, strict=True))
+    folder = infmob_usd.save(infmob_usd.generate(category, seed, texture_size=16, **overrides), tmp_path)
+    reach = _reach(folder)
+    assert reach.ok, reach.detail
