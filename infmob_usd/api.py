@@ -110,6 +110,8 @@ def generate(category: str, seed: int = 0, texture_size: int = 512, parts=None, 
     obj = assemble(bp, seed, rng["materials"], texture_size, params, cat.schema.validate(overrides))
     if retriever is not None:
         obj.retrieved = list(retriever.records)
+        # share 0 keeps the procedural object byte for byte, metadata included
+        obj.retrieval = retriever.summary() if share > 0 else None
     obj.timings = {"sampling": t1 - t0, "geometry": t2 - t1 + obj.timings["geometry"],
                    "textures": obj.timings["textures"]}
     return obj

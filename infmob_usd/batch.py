@@ -269,7 +269,7 @@ def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
         "simple_movable_joints": len(movable),
         "joint_kinds": kinds,
         "formats": list(job.formats),
-        **({"parts": job.parts, "parts_share": job.parts_share} if job.parts else {}),
+        **({"parts": job.parts, "parts_share": job.parts_share, "retrieval": obj.retrieval} if job.parts else {}),
         "seconds": {k: round(v, 4) for k, v in obj.timings.items()} | {"total": round(time.perf_counter() - t0, 4)},
         "version": __version__,
         "files": files,

@@ -71,7 +71,9 @@ def _parts_command(sub) -> None:
     pi.add_argument("src", metavar="SRC", help="a PartNet-Mobility object folder, a folder of them, or a folder of"
                     " OBJ/GLB/PLY files with labels.csv (columns file,label[,units,up,front,source,licence])")
     pi.add_argument("--out", required=True, metavar="LIB", help="the new library folder (must not exist or be empty)")
-    pi.add_argument("--units", default="m", choices=("m", "cm", "mm"), help="unit of the meshes; default m")
+    pi.add_argument("--units", default=None, choices=("m", "cm", "mm"),
+                    help="unit of the meshes; default: inferred from plausible sizes of their labels' parts"
+                    " (refused when ambiguous)")
     pi.add_argument("--up", default="y", help="the meshes' up axis (PartNet-Mobility: y, the default)")
     pi.add_argument("--licence", default="", help="licence to record (default: the source's terms)")
     pi.add_argument("--labels", default=None, metavar="CSV", help="labels CSV (default SRC/labels.csv)")
@@ -356,8 +358,26 @@ def cmd_generate(args) -> int:
     if skipped:
         print(f"infmob: {skipped} object(s) already complete in {out}, skipped (--overwrite to redo)",
               file=sys.stderr)
+    if parts is not None:
+        said = retrieval_line(rows) if share > 0 else "no library part drawn (--parts-share 0)"
+        print(f"infmob: {said}", file=sys.stderr)
     failed = sum(1 for r in rows if "error" in r)
     return 1 if failed else 0
+
+
+def retrieval_line(rows: list[dict]) -> str:
+    """One line over a run's rows: library parts used of the retrievable ones, and why the others were not."""
+    used = total = 0
+    why: dict[str, int] = {}
+    for r in rows:
+        s = r.get("retrieval") or {}
+        used, total = used + s.get("used", 0), total + s.get("retrievable", 0)
+        for k, n in s.get("skipped", {}).items():
+            why[k] = why.get(k, 0) + n
+    text = f"library parts used for {used} of {total} retrievable parts"
+    if why:
+        text += "; skipped: " + "; ".join(f"{n} {k}" for k, n in sorted(why.items(), key=lambda kv: (-kv[1], kv[0])))
+    return text
 
 
 def cmd_parts(args) -> int:

@@ -90,6 +90,7 @@ class ArticulatedObject:
     texture_size: int = 512
     timings: dict[str, float] = field(default_factory=dict)  # seconds per stage; never written to files
     retrieved: list[dict] = field(default_factory=list)  # library parts placed (infmob_usd.retrieval)
+    retrieval: dict | None = None  # with a library: parts used and why others were not (Retriever.summary)
 
     @property
     def name(self) -> str:

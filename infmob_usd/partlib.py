@@ -80,6 +80,20 @@ LABELS: dict[str, dict] = {
 """Part frames: ``handle``/``knob``: z out of the mounted surface, supports on z = 0, x along a bar;
 ``leg``: z from ``foot`` (the origin) to ``top``, both on the z axis; ``wheel``: z along the axle, the
 wheel centred on the origin, ``axle_a``/``axle_b`` the axle's ends on the hub faces."""
+PLAUSIBLE_M: dict[str, tuple[float, float]] = {
+    # cabinet knobs 20-40 mm (a round knob is also a "handle") to appliance bar handles up to ~1 m
+    # (tall fridge doors); bar pulls 96-320 mm (Häfele "Furniture handles")
+    "handle": (0.02, 1.0),
+    # lid knobs 17-40 mm, hob knobs 35-45 mm, door knobs 50-65 mm across (EN 1906), up to 0.1 m
+    "knob": (0.01, 0.1),
+    # sofa and cabinet feet from 50 mm, dining legs 0.7-0.78 m, bar-table legs to ~1.1 m
+    "leg": (0.05, 1.2),
+    # chair casters 50 mm (EN 12529), furniture casters 40-76 mm, trolley wheels to ~0.2 m
+    "wheel": (0.02, 0.3),
+}
+"""label -> plausible largest extent (m) of a part's mesh: how ``import_parts`` infers a source's unit
+when ``--units`` is not given. Every lower bound times 100 exceeds its upper bound, so a mesh is never
+plausible both in metres and in centimetres (or millimetres); only cm/mm can be ambiguous."""
 SHARED = {frozenset({"stem"}): ("handle", "knob")}
 """Support kinds whose parts serve several labels: a round knob is a cabinet handle or a door knob."""
 
@@ -771,9 +785,12 @@ def _mobility_parts(obj: Path, units: str, up: str) -> tuple[list, list[str]]:
     return out, rejected
 
 
-def _labelled_meshes(src: Path, csv_path: Path, units: str, up: str, licence: str) -> list[tuple]:
+def _labelled_meshes(src: Path, csv_path: Path, units: str | None, up: str, licence: str,
+                     free: list[int] | None = None) -> list[tuple]:
     """The meshes a ``labels.csv`` lists (``(label, id, source, licence, v, f, where, overrides)``): each
-    line checked (a file inside ``src``, a known label, units and axes), its mesh read and oriented."""
+    line checked (a file inside ``src``, a known label, units and axes), its mesh read and oriented.
+    With ``units`` None a line without a ``units`` column is read as metres and its index appended to
+    ``free`` (its unit is inferred later)."""
     found = []
     try:
         rows = list(csv.DictReader(csv_path.read_text().splitlines()))
@@ -793,6 +810,9 @@ def _labelled_meshes(src: Path, csv_path: Path, units: str, up: str, licence: st
         if label not in LABELS:
             raise _err(csv_path, f"line {n}: unknown label {label!r}", f"use one of {sorted(LABELS)}")
         u = row.get("units") or units
+        if u is None and free is not None:
+            free.append(len(found))
+            u = "m"
         if u not in UNITS:
             raise _err(csv_path, f"line {n}: units must be one of {list(UNITS)}, got {u!r}", "fix the line")
         ov = {}
@@ -811,18 +831,40 @@ def _labelled_meshes(src: Path, csv_path: Path, units: str, up: str, licence: st
     return found
 
 
-def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", labels_csv=None,
+def infer_units(found: list[tuple], free: list[int], log=print) -> float:
+    """The factor to metres of the meshes ``found[i]`` (read as metres) for ``i`` in ``free``: 1 when
+    every one has a plausible size in metres (:data:`PLAUSIBLE_M`), else the one unit in which every one
+    is plausible (said in one line through ``log``); refused when no unit or both cm and mm fit."""
+    if not free:
+        return 1.0
+    sizes = [(found[i][0], float(np.ptp(found[i][4], axis=0).max())) for i in free]
+    fits = [u for u, k in UNITS.items()
+            if all(PLAUSIBLE_M[lb][0] <= size * k <= PLAUSIBLE_M[lb][1] for lb, size in sizes)]
+    if "m" in fits:
+        return 1.0
+    shown = ", ".join(f"{lb} {size:.4g}" for lb, size in sizes[:4]) + (" ..." if len(sizes) > 4 else "")
+    if len(fits) != 1:
+        why = f"fit both {' and '.join(fits)}" if fits else "fit no single unit"
+        raise PartLibraryError(f"cannot tell the unit of the meshes: their sizes ({shown}) {why} for part"
+                               " sizes of their labels: give --units m|cm|mm (nothing was written)")
+    log(f"infmob: meshes read as {fits[0]} (sizes {shown} are implausible in metres for their labels);"
+        f" scaled by {UNITS[fits[0]]:g} (give --units to override)")
+    return UNITS[fits[0]]
+
+
+def import_parts(src, out, units: str | None = None, up: str = "y", licence: str = "", labels_csv=None,
                  log=print) -> tuple[Path, list[str]]:
     """Import a source into a new library ``out``; returns ``(out, rejected lines)``.
 
     ``src``: a PartNet-Mobility object folder (``mobility.urdf``, ``textured_objs/``, ``result.json``,
     ``semantics.txt``), a folder of them, or a folder of OBJ/GLB/PLY files with ``labels.csv``
     (columns ``file,label`` and optionally ``units,up,front,source,licence``). ``units``/``up``: of
-    PartNet-Mobility meshes (its objects are Y-up). A mesh that cannot be used is rejected with a
+    PartNet-Mobility meshes (its objects are Y-up); ``units`` None: inferred from the meshes' sizes
+    (:func:`infer_units`). A mesh that cannot be used is rejected with a
     line saying why; a source that cannot be read stops the import with nothing written.
     """
     src, out = Path(src), Path(out)
-    if units not in UNITS:
+    if units is not None and units not in UNITS:
         raise PartLibraryError(f"--units must be one of {list(UNITS)}, got {units!r}")
     if up.lstrip("+-") not in ("x", "y", "z"):
         raise PartLibraryError(f"--up must be x, y or z (optionally signed), got {up!r}")
@@ -831,20 +873,27 @@ def import_parts(src, out, units: str = "m", up: str = "y", licence: str = "", l
     _fresh_out(out)
     found = []  # (label, id, source, licence, v, f, where, overrides)
     rejected: list[str] = []
+    free: list[int] = []  # indices into found whose unit is inferred
     csv_path = Path(labels_csv) if labels_csv else src / "labels.csv"
     objects = [src] if (src / "mobility.urdf").exists() else \
         sorted(d for d in src.iterdir() if d.is_dir() and (d / "mobility.urdf").exists())
     if objects:
         for obj in objects:
-            got, rej = _mobility_parts(obj, units, up)
+            got, rej = _mobility_parts(obj, units or "m", up)
             rejected += rej
+            if units is None:
+                free += range(len(found), len(found) + len(got))
             found += [(lb, pid, source, licence or "PartNet-Mobility terms of use", v, f, where, {})
                       for lb, pid, source, v, f, where in got]
     elif csv_path.is_file():
-        found = _labelled_meshes(src, csv_path, units, up, licence)
+        found = _labelled_meshes(src, csv_path, units, up, licence, free)
     else:
         raise _err(src, "holds neither PartNet-Mobility objects (mobility.urdf) nor labels.csv",
                    "give such a folder, or --labels CSV")
+    k = infer_units(found, free, log)
+    if k != 1.0:
+        scaled = set(free)
+        found = [(*t[:4], t[4] * k, *t[5:]) if i in scaled else t for i, t in enumerate(found)]
     entries, seen = [], set()
     for label, pid, source, lic, v, f, where, ov in found:
         while (label, pid) in seen:

@@ -168,7 +168,19 @@ class Retriever:
         ss = np.random.SeedSequence((int(seed), category_id(category), PARTS_STREAM))
         self.rng = np.random.default_rng(ss)
         self.records: list[dict] = []
+        self.skipped: dict[str, int] = {}  # "label: reason" -> procedural parts left in place for it
         self.choice: dict = {}
+
+    def summary(self) -> dict:
+        """``{"retrievable", "used", "skipped": {"label: reason": count}}`` of the parts seen so far: every
+        attached part of a label retrieval knows, used or left procedural, and why."""
+        return {"retrievable": len(self.records) + sum(self.skipped.values()), "used": len(self.records),
+                "skipped": dict(sorted(self.skipped.items()))}
+
+    def _skip(self, asm, reason: str):
+        key = f"{asm.parts[asm.root].label}: {reason}"
+        self.skipped[key] = self.skipped.get(key, 0) + 1
+        return type(asm)(asm.parts, asm.joints, asm.anchors, asm.supports, retrieved="-")
 
     def swap(self, asm):
         """``asm`` (in its local frame) with its part replaced by a library part, or ``asm`` itself."""
@@ -181,17 +193,22 @@ class Retriever:
         kind = frozenset(asm.supports)
         every = self.library.candidates(part.label, kind)
         if not every:
-            return asm
+            if part.label not in LABELS:
+                return asm
+            return self._skip(asm, f"the library has no part with supports {', '.join(sorted(kind))}")
         key = (part.label, tuple(sorted(kind)))
         if key not in self.choice:  # object-wide: the handles of one cabinet match
             self.choice[key] = (float(self.rng.random()) < self.share, self.rng.permutation(len(every)))
         use, order = self.choice[key]
         if not use:
-            return Assembly(asm.parts, asm.joints, asm.anchors, asm.supports, retrieved="-")
+            return self._skip(asm, "not drawn (--parts-share)")
         found = {id(lib): fit for lib, fit in candidates(self.library, asm)}
         pick = next((every[j] for j in order if id(every[j]) in found), None)
         if pick is None:  # no library part reaches these feet within its scale policy
-            return Assembly(asm.parts, asm.joints, asm.anchors, asm.supports, retrieved="-")
+            _frame, bounds, _tg = part_frame(asm)
+            if not any(fits_box(lib, bounds) for lib in every):
+                return self._skip(asm, "no library part scales to its size within its scale policy")
+            return self._skip(asm, "no library part reaches its support points within its scale policy")
         lib, fit = pick, found[id(pick)]
         frame = asm.anchors.get(FIT_ANCHOR)
         matrix = fit.matrix if frame is None else frame.matrix @ fit.matrix

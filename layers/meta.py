@@ -168,6 +168,7 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
         "files": {**files, "semantics": "./semantics.txt"},
         **({"retrieved_parts": obj.retrieved} if getattr(obj, "retrieved", None) else {}),
+        **({"retrieval": obj.retrieval} if getattr(obj, "retrieval", None) is not None else {}),
     }))
 
 

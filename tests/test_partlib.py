@@ -124,7 +124,8 @@ def build_messy(root: Path) -> Path:
 def libs(tmp_path_factory):
     root = tmp_path_factory.mktemp("partlib")
     lines = []
-    messy, rejected = import_parts(build_messy(root), root / "messy", units="cm", up="y", log=lines.append)
+    # no units given: the centimetre source is recognised by its part sizes (test_units_inferred_or_refused)
+    messy, rejected = import_parts(build_messy(root), root / "messy", up="y", log=lines.append)
     builtin = root / "builtin"
     assert main(["parts", "export-builtin", str(builtin)]) == 0
     return {"messy": messy, "rejected": rejected, "log": lines, "builtin": builtin, "root": root}
@@ -307,6 +308,68 @@ def test_bad_input(libs, tmp_path, capsys):
     (csvsrc / "labels.csv").write_text("file,label\na.obj,teapot\n")
     err = _one_line_exit_2(["parts", "import", str(csvsrc), "--out", str(target)], capsys, target)
     assert "labels.csv" in err and "unknown label 'teapot'" in err
+
+
+def test_units_inferred_or_refused(libs, tmp_path, capsys):
+    # the PartNet-Mobility-style source in centimetres, imported without --units: every mesh is
+    # implausible in metres (a 19.2-unit pull, a 70-unit leg) and plausible only in cm; scaled, said once
+    said = [line for line in libs["log"] if "read as cm" in line]
+    assert len(said) == 1 and "\n" not in said[0] and "--units" in said[0], libs["log"]
+    lib = load_library(libs["messy"])
+    assert max(np.ptp(p.vertices, axis=0).max() for p in lib.parts) < 0.75
+    src = tmp_path / "csv"
+    src.mkdir()
+    target = tmp_path / "lib"
+
+    def source(size: float, label: str = "handle"):
+        trimesh.creation.box((size, size / 8, size / 8)).export(src / "a.obj")
+        (src / "labels.csv").write_text(f"file,label\na.obj,{label}\n")
+
+    # a 30-unit handle: 0.3 m in cm, 0.03 m in mm, both plausible: refused, naming --units, nothing written
+    source(30.0)
+    err = _one_line_exit_2(["parts", "import", str(src), "--out", str(target)], capsys, target)
+    assert "--units" in err and "cm and mm" in err
+    source(5000.0)  # 5 m, 50 m or 5 km: no unit makes it a handle
+    err = _one_line_exit_2(["parts", "import", str(src), "--out", str(target)], capsys, target)
+    assert "--units" in err and "no single unit" in err
+    # a 12-unit handle is centimetres; a 0.12 one metres (unchanged, nothing said)
+    for size, unit in ((12.0, "cm"), (0.12, "m")):
+        source(size)
+        shutil.rmtree(target, ignore_errors=True)
+        assert main(["parts", "import", str(src), "--out", str(target), "--up", "z"]) == 0
+        err = capsys.readouterr().err
+        assert ("read as cm" in err) == (unit == "cm"), err
+        assert abs(np.ptp(load_library(target).parts[0].vertices, axis=0).max() - 0.12) < 1e-6
+    # --units given: taken as said, nothing inferred
+    source(30.0)
+    shutil.rmtree(target)
+    assert main(["parts", "import", str(src), "--out", str(target), "--up", "z", "--units", "mm"]) == 0
+    assert abs(np.ptp(load_library(target).parts[0].vertices, axis=0).max() - 0.03) < 1e-6
+
+
+def test_generate_says_why_parts_were_skipped(libs, tmp_path, capsys):
+    # a library whose parts are all 1000x too small (its part.json say mm for metre meshes): no part fits
+    # any object; generate says so on stderr and in metadata.json instead of silently using none
+    lib = tmp_path / "tiny"
+    shutil.copytree(libs["messy"], lib)
+    for pj in lib.glob("*/*/part.json"):
+        pj.write_text(json.dumps({**json.loads(pj.read_text()), "units": "mm"}))
+    out = tmp_path / "o"
+    assert main(["generate", "dishwasher", "--seed", "1", "--out", str(out), "--parts", str(lib),
+                 "--parts-share", "1", "--texture-size", "16", "--formats", "urdf"]) == 0
+    err = capsys.readouterr().err
+    line = next(x for x in err.splitlines() if "library parts used" in x)
+    assert "used for 0 of " in line and "0 of 0" not in line and "scales to its size" in line, line
+    meta = json.loads(next(out.glob("*/*/metadata.json")).read_text())
+    assert "retrieved_parts" not in meta and meta["retrieval"]["used"] == 0
+    assert meta["retrieval"]["retrievable"] == sum(meta["retrieval"]["skipped"].values()) > 0
+    # the library as imported: parts used, counted, the rest explained
+    out2 = tmp_path / "o2"
+    assert main(["generate", "dishwasher", "--seed", "1", "--out", str(out2), "--parts", str(libs["messy"]),
+                 "--parts-share", "1", "--texture-size", "16", "--formats", "urdf"]) == 0
+    meta = json.loads(next(out2.glob("*/*/metadata.json")).read_text())
+    assert meta["retrieval"]["used"] == len(meta["retrieved_parts"]) > 0
+    assert f"used for {meta['retrieval']['used']} of {meta['retrieval']['retrievable']}" in capsys.readouterr().err
 
 
 def test_import_mesh_folder_with_csv(tmp_path, capsys):
