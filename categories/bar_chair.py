@@ -18,15 +18,15 @@ Parts: ``categories/parts/seating.py`` (shared with the office chair).
 
 from __future__ import annotations
 
-import math
-
 from infmob_usd.category import Category
-from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
+from .parts.seating_sizes import BAR_CHAIR_MECHANISM as M
+from .parts.seating_sizes import BAR_CHAIR_RANGES as R
+from .parts.seating_sizes import BAR_CHAIR_SHARES as W
 
 GRAMMAR = Grammar("bar_chair", {
     "bar_chair": Node(required=("seat",), one_of={"wheeled": 0.5, "disc": 0.36, "four_leg": 0.14},
@@ -52,47 +52,40 @@ GRAMMAR = Grammar("bar_chair", {
 })
 
 PARAMS = (
-    Float("seat_height", "seat top above the floor at rest (lift down)", "m", 0.6, 0.85),
-    Float("seat_width", "seat width, or diameter of a round seat", "m", 0.34, 0.46),
-    Float("seat_depth", "square seat depth (X)", "m", 0.32, 0.42),
-    Float("seat_thickness", "seat cushion thickness", "m", 0.035, 0.08),
-    Choice("seat_shape", "seat outline", choices=("round", "square"), weights=(0.55, 0.45)),
-    Int("leg_count", "legs of a wheeled base; auto = drawn, 5 on nearly every base", "", 4, 6, auto=True),
+    Float("seat_height", "seat top above the floor at rest (lift down)", "m", *R["seat_height"]),
+    Float("seat_width", "seat width, or diameter of a round seat", "m", *R["seat_width"]),
+    Float("seat_depth", "square seat depth (X)", "m", *R["seat_depth"]),
+    Float("seat_thickness", "seat cushion thickness", "m", *R["seat_thickness"]),
+    Choice("seat_shape", "seat outline", choices=("round", "square"), weights=W["seat_shape"]),
+    Int("leg_count", "legs of a wheeled base; auto = drawn, 5 on nearly every base", "", *R["leg_count"], auto=True),
     Float("base_radius", "caster axes (wheeled), disc radius or leg feet (four-leg) from the centre", "m",
-          0.22, 0.3),
-    Choice("leg_style", "leg shape", choices=("tapered", "straight"), weights=(0.65, 0.35)),
-    Float("wheel_radius", "wheel radius", "m", 0.022, 0.03),
-    Float("lift_radius", "gas lift tube radius", "m", 0.022, 0.028),
-    Float("lift_travel", "gas lift stroke", "m", 0.07, 0.12),
-    Float("exposed_lift", "lift tube visible between the column and the seat at rest", "m", 0.05, 0.15),
-    Float("ring_drop", "foot ring below the seat top", "m", 0.35, 0.5),
-    Float("ring_radius", "foot ring radius", "m", 0.17, 0.23),
-    Float("back_height", "backrest height", "m", 0.14, 0.3),
-    Float("back_width", "backrest width as a fraction of the seat width", "", 0.6, 0.9),
-    Float("back_thickness", "backrest thickness", "m", 0.03, 0.05),
-    Float("back_gap", "backrest bottom above the seat top", "m", 0.06, 0.14),
+          *R["base_radius"]),
+    Choice("leg_style", "leg shape", choices=("tapered", "straight"), weights=W["leg_style"]),
+    Float("wheel_radius", "wheel radius", "m", *R["wheel_radius"]),
+    Float("lift_radius", "gas lift tube radius", "m", *R["lift_radius"]),
+    Float("lift_travel", "gas lift stroke", "m", *R["lift_travel"]),
+    Float("exposed_lift", "lift tube visible between the column and the seat at rest", "m", *R["exposed_lift"]),
+    Float("ring_drop", "foot ring below the seat top", "m", *R["ring_drop"]),
+    Float("ring_radius", "foot ring radius", "m", *R["ring_radius"]),
+    Float("back_height", "backrest height", "m", *R["back_height"]),
+    Float("back_width", "backrest width as a fraction of the seat width", "", *R["back_width"]),
+    Float("back_thickness", "backrest thickness", "m", *R["back_thickness"]),
+    Float("back_gap", "backrest bottom above the seat top", "m", *R["back_gap"]),
     Choice("back_mount", "the back is fixed or reclines", choices=("fixed", "hinged")),
-    Float("recline", "back recline range (hinged back)", "rad", 0.15, 0.3),
+    Float("recline", "back recline range (hinged back)", "rad", *R["recline"]),
     # arms of drafting chairs and bar stools with backs (Boss B1615/B16245 drafting stools: fixed or height-
     # adjustable loop arms; Flash Furniture drafting chairs: flip-up arms): pads 22-26 cm above the seat
-    Float("arm_height", "arm pad top above the seat top", "m", 0.18, 0.25),
-    Float("arm_travel", "height-adjustable arms: travel", "m", 0.04, 0.07),
-    Float("pad_length", "arm pad length (X)", "m", 0.2, 0.26),
-    Float("pad_width", "arm pad width (Y)", "m", 0.055, 0.08),
+    Float("arm_height", "arm pad top above the seat top", "m", *R["arm_height"]),
+    Float("arm_travel", "height-adjustable arms: travel", "m", *R["arm_travel"]),
+    Float("pad_length", "arm pad length (X)", "m", *R["pad_length"]),
+    Float("pad_width", "arm pad width (Y)", "m", *R["pad_width"]),
     Choice("base_finish", "base material", choices=("chrome", "brushed_metal", "plastic"),
-           weights=(0.45, 0.25, 0.3)),
+           weights=W["base_finish"]),
     Choice("lift_finish", "gas lift cylinder: chromed or black-coated steel", choices=("chrome", "black"),
-           weights=(0.7, 0.3)),
-    Choice("seat_finish", "seat upholstery", choices=("fabric", "plastic"), weights=(0.6, 0.4)),
-    Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=(0.6, 0.4)),
+           weights=W["lift_finish"]),
+    Choice("seat_finish", "seat upholstery", choices=("fabric", "plastic"), weights=W["seat_finish"]),
+    Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=W["wheel_finish"]),
 )
-
-MECHANISM = 0.035  # swivel plate height under the seat pan
-RING_ABOVE_HUB = 0.07  # the lowest a foot ring sits above the hub
-
-
-RING_TRAVEL = 0.1  # a drafting stool's foot ring slides this far up its column at most (Boss, Lorell stools)
-
 
 class StoolLayout(S.ChairNodes):
     def bar_chair(self, node):
@@ -112,7 +105,7 @@ class StoolLayout(S.ChairNodes):
         p = self.p
         dims = S.ArmDims(p["pad_length"], p["pad_width"], p["arm_height"], 0.0, 0.0, 0.0)
         y = S.arm_y(p["seat_width"], dims, p["back_width"] * p["seat_width"], back_front, seat)
-        for arm, (side, sign) in zip(node.of("arm"), (("left", 1), ("right", -1)), strict=True):
+        for arm, (side, sign) in zip(node.of("arm"), S.SIDES, strict=True):
             self.grow(arm, seat=seat, y=sign * y, side=side, dims=dims)
 
     def arm(self, node, seat, y, side, dims):
@@ -143,12 +136,12 @@ class StoolLayout(S.ChairNodes):
 
     def seat(self, node, lever, tilt):
         p = self.p
-        depth = p["seat_depth"] if p["seat_shape"] == "square" else p["seat_width"]
+        depth = S.square_depth(p["seat_shape"], p["seat_width"], p["seat_depth"])
         seat = S.swivel_seat(p["seat_height"], p["seat_width"], depth, p["seat_thickness"], p["seat_shape"], 0.0,
-                             p["lift_radius"], MECHANISM)
+                             p["lift_radius"], M.height)
         pieces = seat.assembly.parts[seat.assembly.root].pieces
         if lever:  # the lever is its own part (grown under the lift)
-            pieces = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())[0]
+            pieces = S.height_lever(seat, M.height, self._lever_reach(), self._mech_y())[0]
         slider = node.one("seat_slider")
         if tilt or slider:  # the pan and cushion are their own part (grown under the lift, or the slider)
             pieces = [pc for pc in pieces if pc.material not in ("seat", "pan")]
@@ -163,21 +156,19 @@ class StoolLayout(S.ChairNodes):
         """The pan and cushion slide forward on rails of the mechanism (seat depth adjustment of drafting chairs,
         e.g. Steelcase Leap / Herman Miller Aeron stools, Boss B16xx drafting stools' seat slider)."""
         self.add("seat_pan", "seat", S.split_seat(seat)[1])
-        self.slide("seat", "seat_pan", Frame.at((seat.xc, 0, seat.z_pan0), z=(1, 0, 0)), upper=S.SEAT_SLIDE)
+        self.slide("seat", "seat_pan", S.seat_slide_axis(seat), upper=S.SEAT_SLIDE)
 
     def tension_knob(self, node, seat):
         """The tilt-tension knob at the front of the mechanism (drafting stools whose back reclines)."""
         p = self.p
-        r_mech = min(0.12, 0.6 * p["seat_width"] / 2)  # a round seat's mechanism, as its tilt pivot
-        depth = p["seat_depth"] if p["seat_shape"] == "square" else 2 * r_mech / 0.55
-        pieces, axis = S.tension_knob(seat, depth, MECHANISM)
+        depth = S.knob_depth(p["seat_shape"], p["seat_width"], p["seat_depth"])
+        pieces, axis = S.tension_knob(seat, depth, M.height)
         self.add("tension_knob", "knob", pieces)
         self.spin("seat", "tension_knob", axis, role="knob")
 
     def _lever_reach(self):
         """The paddle's y, under the seat's edge (as on the office chair's seat)."""
-        w = self.p["seat_width"]
-        return 0.7 * w / 2 if self.p["seat_shape"] == "round" else w / 2 - 0.03
+        return S.lever_reach(self.p["seat_shape"], self.p["seat_width"])
 
     def _mech_y(self):
         p = self.p
@@ -187,7 +178,7 @@ class StoolLayout(S.ChairNodes):
         """The pan and cushion tilt forward about the mechanism's front edge (a saddle / sit-stand stool)."""
         p = self.p
         self.add("seat_pan", "seat", S.split_seat(seat)[1])
-        depth = p["seat_depth"] if p["seat_shape"] == "square" else p["seat_width"]
+        depth = S.square_depth(p["seat_shape"], p["seat_width"], p["seat_depth"])
         self.hinge("seat", "seat_pan", S.tilt_pivot(seat, p["seat_shape"], p["seat_width"], depth),
                    upper=S.SEAT_TILT)
 
@@ -205,17 +196,14 @@ class StoolLayout(S.ChairNodes):
 
     def four_leg(self, node, seat):
         p = self.p
-        bearing = seat.lift_top - 0.03 - S.GAP
-        z_ring = max(p["seat_height"] - p["ring_drop"], S.RING_MIN)
-        z_ring = min(z_ring, bearing - 0.14)
-        self.add("base", "base", S.four_leg_frame(bearing, 0.85 * p["base_radius"] * math.sqrt(2), z_ring))
+        self.add("base", "base", S.four_leg_stool(seat.lift_top, p["seat_height"], p["ring_drop"], p["base_radius"]))
         self.spin("base", "seat", seat.assembly.anchor("swivel"), role="swivel")
 
     def _lift(self, node, base, seat):
         self.grow(node.one("lift"), base=base, seat=seat)
 
     def lever(self, node, seat):
-        _, pieces, pivot, upper = S.height_lever(seat, MECHANISM, self._lever_reach(), self._mech_y())
+        _, pieces, pivot, upper = S.height_lever(seat, M.height, self._lever_reach(), self._mech_y())
         self.add("lever", "lever", pieces)
         self.hinge("seat", "lever", pivot, upper=upper, role="button")
 
@@ -228,7 +216,7 @@ class StoolLayout(S.ChairNodes):
 
     def _column(self, node, base, seat, ring):
         p = self.p
-        z_ring = max(p["seat_height"] - p["ring_drop"], base.top + RING_ABOVE_HUB, S.RING_MIN)
+        z_ring = max(p["seat_height"] - p["ring_drop"], base.top + M.ring_above_hub, S.RING_MIN)
         top = seat.lift_top - S.COLUMN_BELOW_LIFT - p["exposed_lift"]
         if ring:
             top, z_ring = S.ring_column(top, z_ring, seat.lift_top)
@@ -242,10 +230,9 @@ class StoolLayout(S.ChairNodes):
 
     def ring_slide(self, node, z, bore, top):
         """A drafting stool's foot ring: clamped on the column, it slides up and down it."""
-        z = min(z, top - 0.05)
-        self.add("foot_ring", "foot_ring", S.foot_ring(z, self.p["ring_radius"], bore + 0.002))
-        self.slide("base", "foot_ring", Frame.at((0, 0, z)), upper=max(0.0, min(RING_TRAVEL, top - 0.03 - z)),
-                   role="slide")
+        ring = S.stool_ring(z, top, self.p["ring_radius"], bore, M.ring_travel)
+        self.add("foot_ring", "foot_ring", ring.ring)
+        self.slide("base", "foot_ring", ring.at, upper=ring.travel, role="slide")
 
 
 def arms_need_a_back(p: dict) -> dict:

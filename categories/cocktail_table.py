@@ -37,13 +37,15 @@ from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 from .parts.furniture_sizes import COCKTAIL as C
+from .parts.furniture_sizes import COCKTAIL_RANGES as R
+from .parts.furniture_sizes import COCKTAIL_SHARES as SH
 from .parts.furniture_sizes import NEST
 
 
 def per_side(p: dict, count: int) -> int:
     """A side's drawer count, capped by the table's width: one under 0.7 m, two under 0.9 m, else up to three
     (the cap keeps every drawer front at least ~0.25 m wide, as on IKEA HEMNES / LIATORP storage tables)."""
-    return min(count, 1 if p["width"] < 0.7 else 2 if p["width"] < 0.9 else 3)
+    return min(count, next(n for under, n in C["drawers_per_side"] if p["width"] < under))
 
 
 def drawer_count(p, rng) -> int:
@@ -86,37 +88,39 @@ coffee tables: a leaf on each side, or one on a table kept against a sofa's arm)
 or two tables under the top (front, back), each maybe with a smaller one inside it."""
 
 PARAMS = (
-    Float("width", "top diameter (round) or side (square)", "m", 0.5, 1.0),
-    Float("height", "overall height at rest", "m", 0.4, 0.75),
+    Float("width", "top diameter (round) or side (square)", "m", *R["width"]),
+    Float("height", "overall height at rest", "m", *R["height"]),
     Choice("top_shape", "shape of the top", choices=("round", "square")),
-    Float("top_thickness", "thickness of the top", "m", 0.02, 0.045),
-    Float("bevel", "bevel of the top's edges, as a fraction of its thickness", "", 0.1, 0.4),
-    Int("leg_count", "legs under a round top (a square top has 4); auto = drawn 3 or 4", "", 3, 4, auto=True),
+    Float("top_thickness", "thickness of the top", "m", *R["top_thickness"]),
+    Float("bevel", "bevel of the top's edges, as a fraction of its thickness", "", *R["bevel"]),
+    Int("leg_count", "legs under a round top (a square top has 4); auto = drawn 3 or 4", "",
+        *R["leg_count"], auto=True),
     Choice("leg_style", "shape of fixed legs (hairpin and tube legs are steel, in metal_finish)",
-           choices=("turned", "tapered", "square", "hairpin", "tube"), weights=(0.28, 0.32, 0.2, 0.12, 0.08)),
-    Float("leg_radius", "leg radius (half side of a square leg) at its top", "m", 0.015, 0.03),
-    Float("leg_inset", "distance of the leg centres in from the top's edge", "m", 0.05, 0.12),
-    Float("apron_height", "height of the apron under the top", "m", 0.05, 0.11),
-    Float("shelf_height", "lower shelf height as a fraction of the height", "", 0.12, 0.3),
-    Float("lift_travel", "how far a lift-top rises", "m", 0.12, 0.25),
+           choices=("turned", "tapered", "square", "hairpin", "tube"), weights=SH["leg_style"]),
+    Float("leg_radius", "leg radius (half side of a square leg) at its top", "m", *R["leg_radius"]),
+    Float("leg_inset", "distance of the leg centres in from the top's edge", "m", *R["leg_inset"]),
+    Float("apron_height", "height of the apron under the top", "m", *R["apron_height"]),
+    Float("shelf_height", "lower shelf height as a fraction of the height", "", *R["shelf_height"]),
+    Float("lift_travel", "how far a lift-top rises", "m", *R["lift_travel"]),
     Flag("has_lift_forward", "a lift-top rises toward the front (scissor mechanism)", p=0.5),
-    Float("lift_forward_ratio", "forward (+X) over upward motion of a forward lift-top", "", 0.3, 0.8),
+    Float("lift_forward_ratio", "forward (+X) over upward motion of a forward lift-top", "", *R["lift_forward_ratio"]),
     Float("box_depth", "storage well (lift-top) or drawer apron depth (13-20 cm on lift-top tables)", "m",
-          0.13, 0.2),
-    Int("drawer_count", "drawers in the front (one under 0.7 m wide, at most two under 0.9 m)", "", 1, 3),
-    Int("back_drawer_count", "drawers in the back when drawer_sides is both (capped as the front)", "", 1, 3),
+          *R["box_depth"]),
+    Int("drawer_count", "drawers in the front (one under 0.7 m wide, at most two under 0.9 m)", "", *R["drawer_count"]),
+    Int("back_drawer_count", "drawers in the back when drawer_sides is both (capped as the front)", "",
+        *R["back_drawer_count"]),
     Choice("drawer_sides", "drawers in the front only or front and back", choices=("front", "both")),
     Float("leaf_width", "a drop leaf's width (drop-leaf coffee tables: 18-30 cm leaves; less on a low table)", "m",
-          0.15, 0.3),
+          *R["leaf_width"]),
     Float("caster_radius", "wheel radius of a storage table's casters (50-75 mm furniture casters)", "m",
-          0.025, 0.0375),
-    Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", 0.06, 0.18),
+          *R["caster_radius"]),
+    Float("stand_travel", "how far telescopic legs or a pedestal column extend", "m", *R["stand_travel"]),
     Float("stand_turn", "turn limit (+-) of a pedestal top", "rad", math.pi / 2, math.pi),
-    Float("base_radius", "pedestal base radius as a fraction of the width", "", 0.3, 0.42),
-    Float("column_radius", "pedestal inner column radius", "m", 0.025, 0.045),
-    Choice("top_finish", "material of the top", choices=("wood", "painted", "glass"), weights=(0.55, 0.25, 0.2)),
+    Float("base_radius", "pedestal base radius as a fraction of the width", "", *R["base_radius"]),
+    Float("column_radius", "pedestal inner column radius", "m", *R["column_radius"]),
+    Choice("top_finish", "material of the top", choices=("wood", "painted", "glass"), weights=SH["top_finish"]),
     Choice("frame_finish", "material of the legs and apron", choices=("wood", "painted", "brushed_metal"),
-           weights=(0.5, 0.3, 0.2)),
+           weights=SH["frame_finish"]),
     Choice("metal_finish", "sleeves, column and pedestal base", choices=("brushed_metal", "chrome", "painted")),
 )
 
@@ -155,40 +159,34 @@ class TableLayout(Layout):
 
     def legs(self, node):
         p = self.p
-        W, H, tt, shape = p["width"], p["height"], p["top_thickness"], p["top_shape"]
+        W, shape = p["width"], p["top_shape"]
         few, most = C["leg_counts"]
         n = most if shape == "square" else (p["leg_count"] or int(self.rng.integers(few, most + 1)))
-        inset = min(p["leg_inset"], C["inset_max"] * W)
-        frames = T.leg_frames(W, shape, inset, n)
         lift = node.one("lift_top")
-        rl = p["leg_radius"]
-        za1 = H - tt - (C["seat"] if lift else 0.0)
-        za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
+        fr = T.LegFrame.of(p, C, bool(lift))
+        inset, za0, za1, rl = fr.inset, fr.za0, fr.za1, p["leg_radius"]
+        frames = T.leg_frames(W, shape, inset, n)
         apron = T.apron(W, shape, inset, rl, za0, za1, "frame")
         if lift:
             body = apron + [pc for f in frames for pc in self._leg(p["leg_style"], rl, za1).mounted(f).pieces]
             self.add("body", "body", body)
             if node.one("shelf"):
-                self.grow(node.one("shelf"), inset=inset, r_leg=C["shelf_leg"] * rl,
-                          z=min(p["shelf_height"] * H, za0 - C["shelf_under_well"]))
+                self.grow(node.one("shelf"), inset=inset, r_leg=C["shelf_leg"] * rl, z=fr.shelf_z)
             fwd = p["lift_forward_ratio"] if p["has_lift_forward"] else 0.0
             return self.grow(lift, inset=inset, z=za0, fwd=fwd)
         # telescopic: sleeves stay, the top lifts with its apron and posts
-        rp = C["post"] * rl
-        ro = rp + T.CLEAR + T.WALL
-        zs1 = C["sleeve_top"] * za0
-        travel = min(p["stand_travel"], zs1 - C["sleeve_room"])
-        zp0 = zs1 - travel - C["post_in"]  # post bottom at rest
+        ro = fr.sleeve_r
         self.add("body", "body", [pc.transformed(f.matrix) for f in frames
-                                  for pc in T.round_sleeve(ro, zs1, "metal", "foot")])
+                                  for pc in T.round_sleeve(ro, fr.sleeve_top, "metal", "foot")])
         if node.one("shelf"):
-            self.grow(node.one("shelf"), inset=inset, r_leg=ro, z=min(p["shelf_height"] * H, zs1 - C["shelf_under"]))
+            self.grow(node.one("shelf"), inset=inset, r_leg=ro, z=fr.shelf_z)
         else:
             self.extend("body", T.stretchers(frames, C["stretcher_z"], ro, "metal", square=shape == "square"))
-        posts = [g.cylinder(f.point((0, 0, zp0)), f.point((0, 0, za1)), rp, "metal", 32) for f in frames]
-        at = Frame.at((0, 0, zs1))
+        posts = [g.cylinder(f.point((0, 0, fr.post_bottom)), f.point((0, 0, za1)), fr.post_r, "metal", 32)
+                 for f in frames]
+        at = Frame.at((0, 0, fr.sleeve_top))
         return {"pieces": apron + posts,
-                "joint": J.prismatic("body", "top", at.origin, at.z, 0.0, travel, role="telescope")}
+                "joint": J.prismatic("body", "top", at.origin, at.z, 0.0, fr.travel, role="telescope")}
 
     def lift_top(self, node, inset, z, fwd):
         """The storage well's floor and the lift: two two-stage struts on the floor, their middle
@@ -196,15 +194,10 @@ class TableLayout(Layout):
         p = self.p
         W, H, tt = p["width"], p["height"], p["top_thickness"]
         self.extend("body", [T.apron_bottom(W, p["top_shape"], inset, p["leg_radius"], z, "frame")])
-        z_floor = z + C["well_floor"]
-        half = (W / 2 - inset) * (C["round_struts"] if p["top_shape"] == "round" else 1.0) - T.BOARD
-        u = np.array([fwd, 0.0, 1.0])
-        x = -C["struts_back"] * half - 0.5 * fwd * (H - tt - z_floor)  # tilted struts lean forward across the centre
-        ys = (0.5 * half, -0.5 * half)
-        sleeves, middle, rods, t1, t2 = M.lift_struts(ys, x, z_floor, H - tt, u, p["lift_travel"], "strut")
+        (sleeves, middle, rods, t1, t2), at = M.well_struts(W, p["top_shape"], inset, z + C["well_floor"], H - tt, fwd,
+                                                            p["lift_travel"], C)
         self.extend("body", sleeves)
         self.add("lift_frame", "lift", middle)
-        at = Frame.at((0, 0, H - tt), z=u)
         self.join(J.prismatic("body", "lift_frame", at.origin, at.z, 0.0, t1, role="slide"))
         return {"pieces": rods, "label": "lid",
                 "joint": J.prismatic("lift_frame", "top", at.origin, at.z, 0.0, t2, role="slide")}
@@ -239,18 +232,10 @@ class TableLayout(Layout):
     # -- storage table with drawers --------------------------------------------------------------
     def drawers(self, node):
         p = self.p
-        W, H, tt = p["width"], p["height"], p["top_thickness"]
-        lw = 2 * p["leg_radius"] + C["square_leg"]  # square legs a little stouter than the rails
-        inset = min(p["leg_inset"], C["inset_max"] * W)
         leaves = node.one("drop_leaves")
-        if leaves:  # the side boards and the folded lopers stay inside the hanging leaves
-            inset = max(inset, lw / 2 + C["loper_room"])
-        half = W / 2 - inset + lw / 2
-        za1 = H - tt
-        za0 = za1 - p["box_depth"]
         front, back = node.of("drawer"), node.of("back_drawer")
-        sides = (1, -1) if back else (1,)
-        span = 2 * (half - lw)
+        box = T.StorageFrame.of(p, C, bool(leaves), bool(back))
+        lw, half, za0, za1, span = box.lw, box.half, box.za0, box.za1, box.span
 
         def openings(per):  # one bay per drawer, the drawer centred in it
             return M.drawer_openings(span, per, za0, za1, C["drawer_margin"], C["drawer_stile"], C["drawer_wide"])
@@ -258,40 +243,31 @@ class TableLayout(Layout):
         holes = {1: openings(len(front))}
         if back:
             holes[-1] = openings(len(back))
-        frames = T.corner_frames(2 * half, 2 * half, lw / 2)
+        frames = box.corners()
         casters = node.one("casters")
         c = S.caster(p["caster_style"], p["caster_radius"]) if casters else None
-        over, plate, past = C["caster_plate"]
+        over, plate, _ = C["caster_plate"]
         z_leg = c.stem_top + over + plate if c else 0.0  # legs on a caster's top plate
         style = "square" if p["leg_style"] == "turned" or c else p["leg_style"]
         legs = [pc for f in frames for pc in self._leg(style, lw / 2, za1 - z_leg).mounted(f.moved(dz=z_leg)).pieces]
         if c:
-            legs += [g.box_between(f.point((-lw / 2 - past, -lw / 2 - past, c.stem_top + over)),
-                                   f.point((lw / 2 + past, lw / 2 + past, z_leg)), "metal") for f in frames]
+            legs += M.caster_plates(frames, lw, c.stem_top, z_leg, C)
         self.add("body", "body", M.drawer_apron(half, lw, za0, za1, T.BOARD, "frame", holes) + legs)
         if node.one("shelf"):
-            self.grow(node.one("shelf"), inset=inset - lw / 2 + T.BOARD, r_leg=lw / 2,
-                      z=max(min(p["shelf_height"] * H, za0 - C["shelf_low"][0]), z_leg + C["shelf_low"][1]),
-                      shape="square")
+            self.grow(node.one("shelf"), **box.shelf(p, z_leg, C), shape="square")
         if casters:
             self.grow(casters, frames=frames, caster=c)
-        both, one = C["drawer_reach"]
-        depth = min(C["drawer_depth"], (2 * half - 2 * T.BOARD) * (both if len(sides) == 2 else one))
         slots = [(1, h) for h in holes[1]] + [(-1, h) for h in holes.get(-1, [])]
         for k, (d, (side, hole)) in enumerate(zip(front + back, slots, strict=True)):
-            self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=depth)
+            self.grow(d, k=k, side=side, hole=hole, x=side * half, depth=box.depth)
         if leaves:
             self.grow(leaves, half=half, za0=za0, za1=za1, z_low=z_leg)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
     def drawer(self, node, k, side, hole, x, depth):
-        y0, z0, y1, z1 = hole
-        w, h = y1 - y0 - 2 * C["drawer_clear"], z1 - z0 - 2 * C["drawer_clear"]
-        face = Frame.at((x, (y0 + y1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
         metal = self.p["frame_finish"] == "brushed_metal"
-        drawer = self.place(M.apron_drawer(w, h, depth, T.BOARD, C["drawer_wall"], face,
-                                           "knob" if w < C["knob_under"] else "bar", C,
-                                           C["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
+        drawer = self.place(M.opening_drawer(hole, x, side, True, depth, None, C,
+                                             C["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=C["drawer_pull"] * depth)
 
     back_drawer = drawer
@@ -350,26 +326,19 @@ class TableLayout(Layout):
         frame, span = M.nest_frame(W, H - tt, NEST, "frame")
         self.add("body", "body", frame)
         kids = node.of("nested")
+        top_t = NEST["top"].get(p["top_finish"], NEST["top_board"])
+        size = M.NestedSize.first(span, W, H - tt, len(kids), top_t, NEST)
         for k, n in enumerate(kids):
-            side = 1 if k == 0 else -1
-            depth = NEST["depth"][0 if len(kids) == 1 else 1] * W
-            x0 = -depth / 2 if len(kids) == 1 else NEST["x0"]
-            self.grow(n, name=f"nested_{k}", parent="body", side=side, width=span - NEST["side_clear"], depth=depth,
-                      x0=x0, height=H - tt - NEST["gap"], top_t=NEST["top"].get(p["top_finish"], NEST["top_board"]))
+            self.grow(n, name=f"nested_{k}", parent="body", side=1 if k == 0 else -1, size=size)
         return {"pieces": [], "joint": J.fixed("body", "top"), "shape": "square"}
 
-    def nested(self, node, name, parent, side, width, depth, x0, height, top_t):
+    def nested(self, node, name, parent, side, size):
         """One table of the nest, sliding out along ``side`` * x; its own nested table inside it."""
-        pieces, span = M.nesting_table(width, depth, height, top_t, NEST["leg"], x0, "top", "frame")
-        if side < 0:
-            pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
-        self.add(name, "table", pieces)
-        self.slide(parent, name, Frame.at((side * (x0 + depth), 0, height / 2), z=(side, 0, 0)),
-                   upper=NEST["travel"] * depth, role="slide")
+        made, inner = M.nested_table(size, side, NEST)
+        table = self.place(made, name)
+        self.slide(parent, table.root, table.anchor("slide"), upper=NEST["travel"] * size.depth, role="slide")
         if node.one("inner"):
-            deeper, out = NEST["inner"]
-            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, width=span - NEST["side_clear"],
-                      depth=deeper * depth, x0=x0 + out * depth, height=height - top_t - NEST["gap"], top_t=top_t)
+            self.grow(node.one("inner"), name=f"{name}_inner", parent=name, side=side, size=inner)
 
     inner = nested
 

@@ -33,12 +33,14 @@ from .parts import seating as S
 from .parts import table_mechanisms as M
 from .parts import tables as T
 from .parts.furniture_sizes import DINING as D
+from .parts.furniture_sizes import DINING_RANGES as R
+from .parts.furniture_sizes import DINING_SHARES as SH
 
 
 def per_side(p: dict, count: int) -> int:
     """A long side's drawer count: up to three on a table 1.9 m or longer (farmhouse and refectory tables carry
     2-3 apron drawers a side), else up to two."""
-    return min(count, 3 if p["length"] >= 1.9 else 2)
+    return min(count, next(n for under, n in D["drawers_per_side"] if p["length"] < under))
 
 
 def drawer_count(p, rng) -> int:
@@ -85,45 +87,48 @@ GRAMMAR = Grammar("dining_table", {
 })
 
 PARAMS = (
-    Float("length", "top length (X, the long axis) with the extension closed", "m", 1.4, 2.8),
-    Float("width", "top width (Y)", "m", 0.9, 1.2),
-    Float("height", "overall height", "m", 0.7, 0.8),
-    Choice("top_shape", "shape of the top", choices=("rectangular", "oval"), weights=(0.7, 0.3)),
-    Float("top_thickness", "thickness of the top", "m", 0.025, 0.045),
-    Float("end_overhang", "overhang of a rectangular top beyond the apron at each end (X)", "m", 0.06, 0.25),
-    Float("side_overhang", "overhang of a rectangular top beyond the apron at each side (Y)", "m", 0.05, 0.12),
-    Float("apron_height", "apron height (raised to fit a leaf and drawers)", "m", 0.08, 0.14),
-    Choice("leg_style", "leg shape", choices=("tapered", "turned", "square"), weights=(0.4, 0.35, 0.25)),
-    Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", 0.05, 0.09),
+    Float("length", "top length (X, the long axis) with the extension closed", "m", *R["length"]),
+    Float("width", "top width (Y)", "m", *R["width"]),
+    Float("height", "overall height", "m", *R["height"]),
+    Choice("top_shape", "shape of the top", choices=("rectangular", "oval"), weights=SH["top_shape"]),
+    Float("top_thickness", "thickness of the top", "m", *R["top_thickness"]),
+    Float("end_overhang", "overhang of a rectangular top beyond the apron at each end (X)", "m",
+          *R["end_overhang"]),
+    Float("side_overhang", "overhang of a rectangular top beyond the apron at each side (Y)", "m",
+          *R["side_overhang"]),
+    Float("apron_height", "apron height (raised to fit a leaf and drawers)", "m", *R["apron_height"]),
+    Choice("leg_style", "leg shape", choices=("tapered", "turned", "square"), weights=SH["leg_style"]),
+    Float("leg_width", "leg side (square and tapered) or diameter (turned) at the top", "m", *R["leg_width"]),
     Float("leaf_fraction", "a drop leaf's width as a fraction of the table width (leaves of 20-34 cm)", "",
-          0.2, 0.28),
+          *R["leaf_fraction"]),
     Int("lopers_per_leaf", "swing brackets under each drop leaf: one in the middle, or two on an apron 1.3 m or "
-        "longer", "", 1, 2),
+        "longer", "", *R["lopers_per_leaf"]),
     Float("extension_fraction", "how far each half slides out, as a fraction of the apron's half length",
-          "", 0.25, 0.4),
-    Int("drawer_count", "drawers in the +Y long side (at most two under 1.9 m long)", "", 1, 3),
+          "", *R["extension_fraction"]),
+    Int("drawer_count", "drawers in the +Y long side (at most two under 1.9 m long)", "", *R["drawer_count"]),
     Int("back_drawer_count", "drawers in the -Y long side when drawer_sides is both (capped as the +Y side)", "",
-        1, 3),
+        *R["back_drawer_count"]),
     Choice("drawer_sides", "drawers in one long side (+Y), both long sides, or the ends (X)",
-           choices=("one", "both", "ends"), weights=(0.4, 0.35, 0.25)),
+           choices=("one", "both", "ends"), weights=SH["drawer_sides"]),
     # a Pembroke table has one drawer in one end (often a false front at the other); refectory tables one in each
-    Int("end_drawers", "drawers in the ends when drawer_sides is ends: one (+X) or both", "", 1, 2),
+    Int("end_drawers", "drawers in the ends when drawer_sides is ends: one (+X) or both", "", *R["end_drawers"]),
     # self-storing extension leaves: one or two stacked in the apron (e.g. Bassett, Ethan Allen, Pottery Barn
     # extension tables ship with one or two leaves), each half the opening wide
-    Int("leaf_count", "extension leaves stored in the apron, stacked", "", 1, 2),
+    Int("leaf_count", "extension leaves stored in the apron, stacked", "", *R["leaf_count"]),
     # lazy susans on dining tables: 50-70 cm turntables on a ball-bearing ring (round banquet tables, family tables)
-    Float("lazy_susan_radius", "turntable radius as a fraction of the table width (fixed top)", "", 0.22, 0.3),
-    Choice("handle_style", "drawer handle", choices=("knob", "bar", "bow"), weights=(0.45, 0.35, 0.2)),
-    Float("leg_travel", "how far an adjustable inner leg slides up", "m", 0.03, 0.1),
+    Float("lazy_susan_radius", "turntable radius as a fraction of the table width (fixed top)", "",
+          *R["lazy_susan_radius"]),
+    Choice("handle_style", "drawer handle", choices=("knob", "bar", "bow"), weights=SH["handle_style"]),
+    Float("leg_travel", "how far an adjustable inner leg slides up", "m", *R["leg_travel"]),
     # rolling kitchen / farmhouse tables on four locking plate casters (e.g. John Boos work tables, industrial
     # rolling dining tables): 50-75 mm wheels, twin-wheel or single-wheel
-    Float("wheel_radius", "caster wheel radius", "m", 0.025, 0.038),
-    Float("pedestal_radius", "pedestal column radius", "m", 0.05, 0.09),
-    Choice("top_finish", "material of the top and the leaf", choices=("wood", "painted"), weights=(0.75, 0.25)),
+    Float("wheel_radius", "caster wheel radius", "m", *R["wheel_radius"]),
+    Float("pedestal_radius", "pedestal column radius", "m", *R["pedestal_radius"]),
+    Choice("top_finish", "material of the top and the leaf", choices=("wood", "painted"), weights=SH["top_finish"]),
     Choice("frame_finish", "legs, apron, pedestal", choices=("wood", "painted", "brushed_metal"),
-           weights=(0.6, 0.25, 0.15)),
+           weights=SH["frame_finish"]),
     Choice("handle_finish", "drawer handle material", choices=("brushed_metal", "chrome", "wood")),
-    Choice("wheel_finish", "caster tyres", choices=("plastic", "rubber"), weights=(0.4, 0.6)),
+    Choice("wheel_finish", "caster tyres", choices=("plastic", "rubber"), weights=SH["wheel_finish"]),
 )
 
 MATERIALS = {"top": "top_finish", "frame": "frame_finish", "handle": "handle_finish", "metal": "brushed_metal",
@@ -156,36 +161,17 @@ class TableLayout(Layout):
         style = node.one("top_style")
         ext = style.one("extension")
         leaves = style.one("drop_leaf")
-        if p["top_shape"] == "oval":
-            La, Wa = D["oval_apron"] * L, D["oval_apron"] * W
-        else:
-            La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
-        wc = W * (1 - 2 * p["leaf_fraction"])  # a drop-leaf table's fixed centre
-        if leaves:  # the apron and the folded lopers stay inside the hanging leaves
-            Wa = min(Wa, wc - 2 * (D["leaf_gap_y"] + D["loper_room"]))
-        lw = p["leg_width"] if p["support"] == "legs" else 0.0
         draw = style.one("draw_leaf")
-        za1 = H - tt - (D["seat"] if ext else 0.0) - (2 * D["leaf_gap"] + D["leaf_t"] if draw else 0.0)
-        n_leaves = len(ext.of("leaf")) if ext else 0
-        leaf = (za1 - n_leaves * (D["leaf_gap"] + D["leaf_t"]), za1 - D["leaf_gap"])  # the stack of stored leaves
-        need = (2 * D["margin"] + D["drawer_min"] + (za1 - leaf[0] + D["leaf_room"] if ext else 0.0) if drawers
-                else D["drawer_min"])
-        za0 = za1 - max(p["apron_height"], need)
-        board = D["board"]
-        x_in = La / 2 - max(lw, board)  # free length between the legs (half)
-        ends = p["drawer_sides"] == "ends"
-        span = Wa / 2 - max(lw, board) if ends else x_in
-        z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
+        fr = T.DiningFrame.of(p, D, len(ext.of("leaf")) if ext else None, bool(leaves), bool(draw), bool(drawers))
+        La, Wa, wc, za0, za1, board = fr.La, fr.Wa, fr.wc, fr.za0, fr.za1, D["board"]
         holes = {}
         if drawers:
-            holes[1] = self._holes(span, za0, z_top, len(drawers.of("drawer")))
+            holes[1] = self._holes(fr.span, za0, fr.z_top, len(drawers.of("drawer")))
             if drawers.of("back_drawer"):
-                holes[-1] = self._holes(span, za0, z_top, len(drawers.of("back_drawer")))
+                holes[-1] = self._holes(fr.span, za0, fr.z_top, len(drawers.of("back_drawer")))
         sides = tuple(holes)
-        if ends:
-            body = M.apron_rails_ends(La, Wa, lw, za0, za1, board, "frame", holes)
-        else:
-            body = T.apron_rails(La, Wa, lw, za0, za1, board, "frame", holes)
+        rails = M.apron_rails_ends if p["drawer_sides"] == "ends" else T.apron_rails
+        body = rails(La, Wa, fr.lw, za0, za1, board, "frame", holes)
         whole, centre = D["top_bevel"]
         if leaves:
             xy = T.outline(L, W, p["top_shape"], D["outline"])
@@ -196,17 +182,14 @@ class TableLayout(Layout):
             xb, yb = L / 2 - self._draw_leaf_length() - D["leaf_gap"], Wa / 2 - board
             body += M.bearer_frame(xb, yb, za1, H - tt, D["bearer"], "frame")
         self.add("body", "body", body)
-        self.grow(support, La=La, Wa=Wa, lw=lw, za0=za0, za1=za1)
-        self.grow(style, x_in=x_in, La=La, Wa=Wa, leaf=leaf, wc=wc, za0=za0, za1=za1)
+        self.grow(support, La=La, Wa=Wa, lw=fr.lw, za0=za0, za1=za1)
+        self.grow(style, x_in=fr.x_in, La=La, Wa=Wa, leaf=fr.leaf, wc=wc, za0=za0, za1=za1, fr=fr)
         if drawers:
             self.grow(drawers, slots=[(s, h) for s in sides for h in holes[s]], Wa=Wa, La=La, sides=len(sides))
 
     def _holes(self, x_in, z0, z1, n):
         """``n`` drawer openings spread evenly along a board with ``x_in`` free each side of its centre."""
-        ends = self.p["drawer_sides"] == "ends"
-        dw = min(D["drawer_width"], 2 * x_in / n - D["drawer_stile"][0 if ends else 1])
-        xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
-        return [(x - dw / 2, z0 + D["margin"], x + dw / 2, z1) for x in xs]
+        return M.dining_openings(x_in, z0, z1, n, self.p["drawer_sides"] == "ends", D)
 
     def legs(self, node, La, Wa, lw, za0, za1):
         p = self.p
@@ -318,65 +301,51 @@ class TableLayout(Layout):
         """A draw leaf: stored under one end of the top on runners over the apron, pulled out along X
         (a draw-leaf / refectory table, e.g. IKEA BJURSTA, Ercol draw-leaf tables; on the real table the leaf
         then rises level with the top on its tapered runners, here it stays on them)."""
-        p = self.p
-        L, W = p["length"], p["width"]
         ll = self._draw_leaf_length()
-        end, edge = D["draw_leaf_in"]
-        x0, x1 = sorted((side * (L / 2 - ll), side * (L / 2 - end)))
-        z0 = za1 + D["leaf_gap"]
-        name = "leaf_front" if side > 0 else "leaf_back"
-        self.add(name, "leaf", [g.box_between((x0, -W / 2 + edge, z0), (x1, W / 2 - edge, z0 + D["leaf_t"]), "top",
-                                              bevel=0.003)])
-        self.slide("body", name, Frame.at((side * (L / 2 - end), 0, z0), z=(side, 0, 0)),
-                   upper=ll - D["draw_leaf_keep"])
+        leaf = self.place(M.draw_leaf(self.p["length"], self.p["width"], ll, side, za1 + D["leaf_gap"], D),
+                          "leaf_front" if side > 0 else "leaf_back")
+        self.slide("body", leaf.root, leaf.anchor("slide"), upper=ll - D["draw_leaf_keep"])
 
-    def drop_leaf(self, node, wc, za0, za1, Wa, La, **slot):
+    def drop_leaf(self, node, fr, **slot):
         for side, n in zip((1, -1), node.of("leaf_side")):
-            self.grow(n, side=side, wc=wc, za0=za0, za1=za1, Wa=Wa, La=La)
+            self.grow(n, side=side, fr=fr)
 
-    def leaf_side(self, node, side, wc, za0, za1, Wa, La):
+    def leaf_side(self, node, side, fr):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         name = "leaf_left" if side > 0 else "leaf_right"
-        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], D["outline"]), side, wc / 2 + D["leaf_gap_y"],
+        piece, hinge = M.drop_leaf(T.outline(L, W, p["top_shape"], D["outline"]), side, fr.wc / 2 + D["leaf_gap_y"],
                                    H - tt, H, "top")
         self.add(name, "leaf", [piece])
         self.hinge("body", name, hinge, upper=math.pi / 2)
         if node.one("loper"):
-            self.grow(node.one("loper"), side=side, leaf=name, Wa=Wa, La=La, za0=za0, za1=za1,
-                      reach=wc / 2 + D["loper_reach"] * (W - wc) / 2)
+            self.grow(node.one("loper"), side=side, leaf=name, fr=fr)
 
-    def loper(self, node, side, leaf, Wa, La, za0, za1, reach):
+    def loper(self, node, side, leaf, fr):
         """One swing-out bracket under the middle of the leaf, or two (at a quarter of the apron from each end)
         under a leaf whose apron is ``D["two_lopers"]`` long or longer when ``lopers_per_leaf`` is 2."""
-        length = min(D["loper"], D["loper_apron"] * La, reach - Wa / 2)  # swung out, it ends under the leaf
-        xs = [-La / 4, La / 4] if La >= D["two_lopers"] and self.p["lopers_per_leaf"] == 2 else [0.0]
-        for k, xc in enumerate(xs):
-            pieces, hinge = M.apron_loper(xc - length / 2, side * Wa / 2, side, za0, za1, length, "frame")
-            name = f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else "")
-            self.add(name, "bracket", pieces)
-            self.hinge("body", name, hinge, upper=math.pi / 2, requires_open=leaf)
+        count = self.p["lopers_per_leaf"] if fr.La >= D["two_lopers"] else 1
+        lopers = M.apron_lopers(fr.La, side * fr.Wa / 2, side, fr.za0, fr.za1, fr.loper_length(self.p["width"], D),
+                                count, "frame")
+        for k, bracket in enumerate(lopers):
+            loper = self.place(bracket, f"loper_{'left' if side > 0 else 'right'}" + (f"_{k + 1}" if k else ""))
+            self.hinge("body", loper.root, loper.anchor("hinge"), upper=math.pi / 2, requires_open=leaf)
 
     def extension(self, node, x_in, La, Wa, leaf, **slot):
         p = self.p
         L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
         travel = p["extension_fraction"] * La / 2
         for name, s in (("top_front", 1), ("top_back", -1)):
-            self.add(name, "top", [T.half_top(L, W, p["top_shape"], H - tt, H, D["split"], s, "top")])
-            self.slide("body", name, Frame.at((s * D["split"] / 2, 0, H - tt), z=(s, 0, 0)), upper=travel)
-        half = min(travel, x_in - D["leaf_store"])
+            half = self.place(M.split_half(L, W, p["top_shape"], H - tt, H, D["split"], s, "top"), name)
+            self.slide("body", half.root, half.anchor("slide"), upper=travel)
         leaves = node.of("leaf")
-        if len(leaves) > 1:  # two leaves, each half the opening wide, fill it side by side
-            half /= 2
-        for k, n in enumerate(leaves):
-            z1 = leaf[1] - k * (D["leaf_t"] + D["leaf_gap"])
-            self.grow(n, k=k, lo=(-half, -Wa / 2 + D["board"], z1 - D["leaf_t"]), hi=(half, Wa / 2 - D["board"], z1))
+        made = M.stored_leaves(len(leaves), min(travel, x_in - D["leaf_store"]), Wa, leaf[1], D, "top")
+        for k, (n, stored) in enumerate(zip(leaves, made, strict=True)):
+            self.grow(n, k=k, leaf=stored)
 
-    def leaf(self, node, k, lo, hi):
+    def leaf(self, node, k, leaf):
         """A leaf stored on the runners in the apron, under the split (it is taken out by hand)."""
-        name = "leaf" if k == 0 else f"leaf_{k + 1}"
-        self.add(name, "leaf", [g.box_between(lo, hi, "top")])
-        self.fix("body", name)
+        self.fix("body", self.place(leaf, "leaf" if k == 0 else f"leaf_{k + 1}").root)
 
     def drawers(self, node, slots, Wa, La, sides):
         ends = self.p["drawer_sides"] == "ends"
@@ -389,15 +358,9 @@ class TableLayout(Layout):
             self.grow(d, k=k, side=s, hole=hole, at=s * (La if ends else Wa) / 2, depth=depth, ends=ends)
 
     def drawer(self, node, k, side, hole, at, depth, ends):
-        a0, z0, a1, z1 = hole
-        w, h = a1 - a0 - 2 * D["clear"], z1 - z0 - 2 * D["clear"]
-        if ends:
-            face = Frame.at((at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
-        else:
-            face = Frame.at(((a0 + a1) / 2, at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
         metal = self.p["frame_finish"] == "brushed_metal"
-        drawer = self.place(M.apron_drawer(w, h, depth, D["board"], D["drawer_wall"], face, self.p["handle_style"],
-                                           D, D["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
+        drawer = self.place(M.opening_drawer(hole, at, side, ends, depth, self.p["handle_style"], D,
+                                             D["metal_drawer_sheet"] if metal else None), f"drawer_{k}")
         self.slide("body", drawer.root, drawer.anchor("slide"), upper=D["pull"] * depth)
 
     back_drawer = drawer

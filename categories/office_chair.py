@@ -27,12 +27,15 @@ from __future__ import annotations
 
 from infmob_usd import joints as J
 from infmob_usd.category import Category
-from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import seating as S
+from .parts.seating_sizes import EXEC_BACK, EXEC_THICK
+from .parts.seating_sizes import OFFICE_CHAIR_MECHANISM as M
+from .parts.seating_sizes import OFFICE_CHAIR_RANGES as R
+from .parts.seating_sizes import OFFICE_CHAIR_SHARES as W
 
 GRAMMAR = Grammar("office_chair", {
     "office_chair": Node(required=("base", "lift", "seat"), optional={"arms": 0.75},
@@ -70,49 +73,43 @@ GRAMMAR = Grammar("office_chair", {
 a niche; arm styles: 4D arms on most mid-range task chairs, flip-up arms on desk-sharing chairs."""
 
 PARAMS = (
-    Float("seat_height", "seat top above the floor at rest (lift down)", "m", 0.4, 0.55),
-    Float("seat_width", "seat width (Y)", "m", 0.4, 0.6),
-    Float("seat_depth", "seat depth (X)", "m", 0.4, 0.52),
-    Float("seat_thickness", "seat cushion thickness", "m", 0.05, 0.1),
-    Int("leg_count", "legs of the star base; auto = drawn, 5 on nearly every chair", "", 4, 6, auto=True),
-    Float("base_radius", "caster swivel axes from the centre (raised for many legs)", "m", 0.27, 0.35),
-    Choice("leg_style", "leg shape", choices=("tapered", "straight"), weights=(0.65, 0.35)),
-    Float("wheel_radius", "wheel radius", "m", 0.024, 0.034),
-    Float("lift_radius", "gas lift tube radius", "m", 0.022, 0.028),
-    Float("lift_travel", "gas lift stroke (capped where the column is short)", "m", 0.06, 0.1),
-    Float("back_height", "backrest height (an executive back: 0.62-0.75 m)", "m", 0.3, 0.55),
+    Float("seat_height", "seat top above the floor at rest (lift down)", "m", *R["seat_height"]),
+    Float("seat_width", "seat width (Y)", "m", *R["seat_width"]),
+    Float("seat_depth", "seat depth (X)", "m", *R["seat_depth"]),
+    Float("seat_thickness", "seat cushion thickness", "m", *R["seat_thickness"]),
+    Int("leg_count", "legs of the star base; auto = drawn, 5 on nearly every chair", "", *R["leg_count"], auto=True),
+    Float("base_radius", "caster swivel axes from the centre (raised for many legs)", "m", *R["base_radius"]),
+    Choice("leg_style", "leg shape", choices=("tapered", "straight"), weights=W["leg_style"]),
+    Float("wheel_radius", "wheel radius", "m", *R["wheel_radius"]),
+    Float("lift_radius", "gas lift tube radius", "m", *R["lift_radius"]),
+    Float("lift_travel", "gas lift stroke (capped where the column is short)", "m", *R["lift_travel"]),
+    Float("back_height", "backrest height (an executive back: 0.62-0.75 m)", "m", *R["back_height"]),
     Float("draft_seat_height", "seat top of a drafting chair at rest (BIFMA counter-height task chairs)", "m",
-          0.62, 0.78),
-    Float("ring_radius", "drafting chair foot ring radius (0.40-0.50 m rings)", "m", 0.2, 0.25),
-    Float("back_width", "backrest width as a fraction of the seat width", "", 0.75, 0.95),
-    Float("back_thickness", "backrest thickness", "m", 0.04, 0.075),
-    Float("back_gap", "backrest bottom above the seat top", "m", 0.04, 0.1),
-    Float("recline", "back recline range", "rad", 0.25, 0.45),
-    Float("arm_height", "arm pad top above the seat top", "m", 0.17, 0.25),
-    Float("arm_travel", "arm height adjustment", "m", 0.04, 0.08),
-    Float("pad_length", "arm pad length (X)", "m", 0.2, 0.27),
-    Float("pad_width", "arm pad width (Y)", "m", 0.06, 0.09),
-    Float("arm_slide", "arm pad slide along X, each way", "m", 0.02, 0.04),
-    Float("arm_turn", "arm carriage turn about Z, each way", "rad", 0.1, 0.3),
-    Float("pad_turn", "arm pad turn about Z, each way", "rad", 0.1, 0.3),
+          *R["draft_seat_height"]),
+    Float("ring_radius", "drafting chair foot ring radius (0.40-0.50 m rings)", "m", *R["ring_radius"]),
+    Float("back_width", "backrest width as a fraction of the seat width", "", *R["back_width"]),
+    Float("back_thickness", "backrest thickness", "m", *R["back_thickness"]),
+    Float("back_gap", "backrest bottom above the seat top", "m", *R["back_gap"]),
+    Float("recline", "back recline range", "rad", *R["recline"]),
+    Float("arm_height", "arm pad top above the seat top", "m", *R["arm_height"]),
+    Float("arm_travel", "arm height adjustment", "m", *R["arm_travel"]),
+    Float("pad_length", "arm pad length (X)", "m", *R["pad_length"]),
+    Float("pad_width", "arm pad width (Y)", "m", *R["pad_width"]),
+    Float("arm_slide", "arm pad slide along X, each way", "m", *R["arm_slide"]),
+    Float("arm_turn", "arm carriage turn about Z, each way", "rad", *R["arm_turn"]),
+    Float("pad_turn", "arm pad turn about Z, each way", "rad", *R["pad_turn"]),
     Choice("base_finish", "star base material", choices=("plastic", "chrome", "brushed_metal"),
-           weights=(0.55, 0.25, 0.2)),
+           weights=W["base_finish"]),
     Choice("lift_finish", "gas lift cylinder: chromed or black-coated steel", choices=("chrome", "black"),
-           weights=(0.6, 0.4)),
-    Choice("seat_finish", "seat and back upholstery", choices=("fabric", "plastic"), weights=(0.75, 0.25)),
-    Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=(0.6, 0.4)),
+           weights=W["lift_finish"]),
+    Choice("seat_finish", "seat and back upholstery", choices=("fabric", "plastic"), weights=W["seat_finish"]),
+    Choice("wheel_finish", "wheel tyres", choices=("plastic", "rubber"), weights=W["wheel_finish"]),
 )
+
 
 def drafting_height(p: dict) -> dict:
     """A drafting chair's seat is ``draft_seat_height`` high."""
     return {**p, "seat_height": p["draft_seat_height"]} if p["design"] == "drafting" else p
-
-
-EXEC_BACK = (0.62, 0.75)  # executive high backs: 0.62-0.75 m (Herman Miller Embody/Eames executive, Steelcase)
-EXEC_THICK = 0.09
-RING_TRAVEL = 0.12  # drafting chair foot ring height adjustment (Boss, Lorell drafting stools: about 0.1-0.15 m)
-MECHANISM = 0.04  # height of the tilt mechanism under the seat pan
-SEAT_AHEAD = 0.02  # the seat sits a little forward of the column
 
 
 class ChairLayout(S.ChairNodes):
@@ -129,9 +126,9 @@ class ChairLayout(S.ChairNodes):
 
     def seat(self, node, base):
         p = self.p
-        thick = S.seat_thickness(p["seat_height"], p["seat_thickness"], base.top, MECHANISM)
-        seat = S.swivel_seat(p["seat_height"], p["seat_width"], p["seat_depth"], thick, "square", SEAT_AHEAD,
-                             p["lift_radius"], MECHANISM)
+        thick = S.seat_thickness(p["seat_height"], p["seat_thickness"], base.top, M.height)
+        seat = S.swivel_seat(p["seat_height"], p["seat_width"], p["seat_depth"], thick, "square", M.seat_ahead,
+                             p["lift_radius"], M.height)
         if node.one("seat_slider"):
             stay, moving = S.split_seat(seat)
             self.add("seat", "seat", stay)
@@ -143,14 +140,14 @@ class ChairLayout(S.ChairNodes):
         return seat
 
     def tension_knob(self, node, seat):
-        pieces, axis = S.tension_knob(seat, self.p["seat_depth"], MECHANISM)
+        pieces, axis = S.tension_knob(seat, self.p["seat_depth"], M.height)
         self.add("tension_knob", "knob", pieces)
         self.spin("seat", "tension_knob", axis, role="knob")
 
     def seat_slider(self, node, seat, pieces):
         """The pan and cushion slide forward on rails of the mechanism (seat depth adjustment)."""
         self.add("seat_pan", "seat", pieces)
-        self.slide("seat", "seat_pan", Frame.at((seat.xc, 0, seat.z_pan0), z=(1, 0, 0)), upper=S.SEAT_SLIDE)
+        self.slide("seat", "seat_pan", S.seat_slide_axis(seat), upper=S.SEAT_SLIDE)
 
     # -- designs: each returns the back's front x (None: no back) -----------------------------------
     def task(self, node, seat, base):
@@ -171,8 +168,7 @@ class ChairLayout(S.ChairNodes):
 
     def high_back(self, node, seat):
         p = self.p
-        lo, hi = EXEC_BACK
-        dims = S.BackDims(lo + (hi - lo) * (p["back_height"] - 0.3) / 0.25, p["back_width"] * p["seat_width"],
+        dims = S.BackDims(S.executive_back(p["back_height"], *EXEC_BACK), p["back_width"] * p["seat_width"],
                           max(p["back_thickness"], EXEC_THICK), p["back_gap"])
         return self._styled_back(node, seat, dims, "cushion")
 
@@ -209,23 +205,21 @@ class ChairLayout(S.ChairNodes):
         self.extend("back", S.headrest_sleeve(frame))
         self.add("headrest", "headrest", pieces)
         self.slide("back", "headrest", slide, upper=S.HEADREST_TRAVEL)  # gravity holds it at its lowest
-        return frame.x_spine + 0.06
+        return S.headrest_reach(frame)
 
     def lumbar(self, node, frame, dims, front):
         pieces, at = S.lumbar_pad(frame, dims, front)
         self.add("lumbar", "lumbar", pieces)
-        self.slide("back", "lumbar", at, upper=min(S.LUMBAR_TRAVEL, 0.3 * dims.height))
-        return front + S.GAP + 0.018
+        travel, reach = S.lumbar_slide(dims, front)
+        self.slide("back", "lumbar", at, upper=travel)
+        return reach
 
     def foot_ring(self, node, seat, base):
         """A chrome foot ring clamped on a column sleeve; it slides up and down the sleeve."""
-        p = self.p
-        top = seat.lift_top - S.COLUMN_BELOW_LIFT - 0.04
-        self.extend("base", S.column(base.top, top, base.bore))
-        z = max(base.top + 0.08, S.RING_MIN)
-        travel = min(RING_TRAVEL, top - 0.03 - z)
-        self.add("foot_ring", "foot_ring", S.foot_ring(z, p["ring_radius"], base.bore + 0.002))
-        self.slide("base", "foot_ring", Frame.at((0, 0, z)), upper=travel, role="slide")
+        ring = S.drafting_ring(seat, base, self.p["ring_radius"], M.ring_travel)
+        self.extend("base", ring.column)
+        self.add("foot_ring", "foot_ring", ring.ring)
+        self.slide("base", "foot_ring", ring.at, upper=ring.travel, role="slide")
 
     # -- arms ---------------------------------------------------------------------------------------
     def arms(self, node, seat, back_front):
@@ -233,7 +227,7 @@ class ChairLayout(S.ChairNodes):
         dims = S.ArmDims(p["pad_length"], p["pad_width"], p["arm_height"], p["arm_slide"], p["arm_turn"],
                          p["pad_turn"])
         y = S.arm_y(p["seat_width"], dims, p["back_width"] * p["seat_width"], back_front, seat)
-        for arm, (side, sign) in zip(node.of("arm"), (("left", 1), ("right", -1))):
+        for arm, (side, sign) in zip(node.of("arm"), S.SIDES):
             self.grow(arm, seat=seat, y=sign * y, side=side, dims=dims)
 
     def arm(self, node, seat, y, side, dims):

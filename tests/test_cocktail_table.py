@@ -196,3 +196,23 @@ def test_a_thick_painted_top_is_a_lightweight_board():
         volume = sum(pc.volume() for pc in links["painted"].pieces if pc.material == "top")
         assert volume > 0.01
         assert links["wood"].mass - links["painted"].mass == pytest.approx((650.0 - painted) * volume, rel=1e-6)
+
+
+def test_ranges_and_parts_on_the_contract():
+    """The schema's ranges are the sourced table's; a nest's table is an Assembly whose ``slide`` anchor sits at
+    its outer end pointing out, the table nested in it is smaller in every way, and the sizes are frozen."""
+    import dataclasses
+
+    from infmob_usd.categories.cocktail_table import PARAMS
+    from infmob_usd.categories.parts import table_mechanisms as TM
+    from infmob_usd.categories.parts.furniture_sizes import COCKTAIL_RANGES, NEST
+
+    bounds = {q.name: (q.low, q.high) for q in PARAMS if hasattr(q, "low")}
+    assert {k: bounds[k] for k in COCKTAIL_RANGES} == COCKTAIL_RANGES
+    size = TM.NestedSize.first(0.5, 0.6, 0.45, 2, 0.018, NEST)
+    table, inner = TM.nested_table(size, -1, NEST)
+    slide = table.anchor("slide")
+    assert slide.z[0] == pytest.approx(-1) and slide.origin[0] == pytest.approx(table.bounds()[0, 0])
+    assert inner.width < size.width and inner.depth < size.depth and inner.height < size.height
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        size.width = 1.0  # type: ignore[misc]

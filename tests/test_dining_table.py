@@ -310,3 +310,31 @@ def test_pedestal_glides(length, count):
     low = min(pc.bounds[0, 2] for pc in bp.parts["body"].pieces)
     assert low == pytest.approx(0.015, abs=1e-6)
     assert clash(bp, at([], 0.0)) == []
+
+
+def test_ranges_and_parts_on_the_contract():
+    """The schema's ranges are the sourced table's; the mechanisms are Assemblies joined by named anchors: a
+    draw leaf's ``slide`` anchor sits at its outer end pointing out, a drawer's ``slide`` anchor on its
+    opening's centre, and the apron frame is a frozen size dataclass."""
+    import dataclasses
+
+    from infmob_usd.categories.dining_table import PARAMS
+    from infmob_usd.categories.parts import table_mechanisms as TM
+    from infmob_usd.categories.parts import tables as TT
+    from infmob_usd.categories.parts.furniture_sizes import DINING_RANGES
+
+    bounds = {q.name: (q.low, q.high) for q in PARAMS if hasattr(q, "low")}
+    assert {k: bounds[k] for k in DINING_RANGES} == DINING_RANGES
+    leaf = TM.draw_leaf(2.0, 1.0, 0.45, -1, 0.7, DINING)
+    slide = leaf.anchor("slide")
+    assert slide.origin[0] == pytest.approx(-(1.0 - DINING["draw_leaf_in"][0])) and slide.z[0] == pytest.approx(-1)
+    assert leaf.bounds()[0, 0] == pytest.approx(slide.origin[0]) and leaf.bounds()[1, 0] == pytest.approx(-0.55)
+    drawer = TM.opening_drawer((-0.2, 0.6, 0.2, 0.7), 0.45, 1, False, 0.4, "knob", DINING)
+    assert drawer.anchor("slide").origin == pytest.approx((0.0, 0.45, 0.65))
+    p = {"length": 2.0, "width": 1.0, "height": 0.75, "top_thickness": 0.03, "top_shape": "rectangular",
+         "end_overhang": 0.1, "side_overhang": 0.08, "leaf_fraction": 0.25, "leg_width": 0.07, "support": "legs",
+         "apron_height": 0.1, "drawer_sides": "one"}
+    fr = TT.DiningFrame.of(p, DINING, None, False, False, True)
+    assert (fr.La, fr.Wa) == pytest.approx((1.8, 0.84)) and fr.za1 == pytest.approx(0.72)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        fr.La = 1.0  # type: ignore[misc]

@@ -317,3 +317,31 @@ def flip_arm_stays_over_the_seat(bp):
 def test_flip_up_arms_turn_up_beside_the_back(seed):
     _, bp = make(seed, design="task", has_back=True, has_arms=True, arm_style="arm_flip")
     flip_arm_stays_over_the_seat(bp)
+
+
+@pytest.mark.parametrize("name", ["office_chair", "bar_chair"])
+def test_ranges_and_shares_come_from_the_sourced_table(name):
+    """Both chairs draw what parts/seating_sizes.py lists: every numeric range and choice share of PARAMS."""
+    import importlib
+
+    from infmob_usd.categories.parts import seating_sizes as SS
+
+    mod = importlib.import_module(f"infmob_usd.categories.{name}")
+    ranges = {p.name: (p.low, p.high) for p in mod.PARAMS if hasattr(p, "low")}
+    shares = {p.name: tuple(p.weights) for p in mod.PARAMS if getattr(p, "weights", None)}
+    assert ranges == getattr(SS, f"{name.upper()}_RANGES")
+    assert shares == getattr(SS, f"{name.upper()}_SHARES")
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_drafting_foot_ring_slides_only_along_its_sleeve(seed):
+    """A drafting chair's foot ring rests above the hub and tops out 30 mm short of its column sleeve's top."""
+    from infmob_usd.categories.parts import seating as S
+
+    _, bp = make(seed, design="drafting")
+    ring = bp.parts["foot_ring"]
+    z_lo = min(float(pc.bounds[0, 2]) for pc in ring.pieces)
+    column_top = max(float(pc.bounds[1, 2]) for pc in bp.parts["base"].pieces)
+    (dof,) = by_child(bp, "foot_ring").dofs
+    assert z_lo >= S.RING_MIN - 0.02
+    assert 0 < dof.upper and z_lo + dof.upper < column_top

@@ -231,3 +231,31 @@ def test_totes_and_bins_stay_on_their_deck(design):
             x = np.vstack([pc.vertices for pc in part.pieces])[:, 0]
             deck_front = max(pc.bounds[1, 0] for pc in bp.parts[j.parent].pieces)
             assert (x.min() + x.max()) / 2 + j.dofs[0].upper <= deck_front + 1e-9, (seed, n)
+
+
+@pytest.mark.parametrize("count", [1, 2, 3])
+def test_cabinet_and_drawer_slots_tile_without_overlap(count):
+    """Cabinets side by side stay inside the bay with a gap between them; a cabinet's drawers stack inside it,
+    each above the last with a gap, and none reaches the cabinet's top panel."""
+    from infmob_usd.categories.parts import racks as R
+
+    span = (-1.2, 1.2)
+    slots = R.cabinet_slots(span, count, 1.0)
+    assert slots.xs[0] < slots.xs[1] <= 0.5
+    assert span[0] <= slots.ys[0][0] and slots.ys[-1][1] <= span[1]
+    for (_a0, a1), (b0, _b1) in zip(slots.ys, slots.ys[1:]):
+        assert a1 + R.CAB_GAP <= b0 + 1e-12
+    z, h = 0.1, 0.6
+    xs, ys, zss = R.drawer_slots(slots.xs, slots.ys[0], z, h, 4)
+    assert slots.xs[0] < xs[0] < xs[1] < slots.xs[1] and slots.ys[0][0] < ys[0] < ys[1] < slots.ys[0][1]
+    assert len(zss) == 4 and zss[0][0] > z and zss[-1][1] < z + h - R.CAB_PANEL
+    for (a0, a1), (b0, b1) in zip(zss, zss[1:]):
+        assert a0 < a1 < b0 < b1
+
+
+def test_grammar_shares_and_ranges_come_from_the_sourced_table():
+    """The category draws what parts/rack_sizes.py lists: every numeric range of PARAMS is the table's."""
+    from infmob_usd.categories.parts.rack_sizes import STORAGE_RACK_RANGES
+
+    ranges = {p.name: (p.low, p.high) for p in sr.PARAMS if hasattr(p, "low")}
+    assert ranges == STORAGE_RACK_RANGES

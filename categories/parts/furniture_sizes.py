@@ -7,6 +7,8 @@ builders they call live in :mod:`.tables` and :mod:`.table_mechanisms`.
 
 from __future__ import annotations
 
+import math
+
 # -- cocktail table -------------------------------------------------------------------------------
 COCKTAIL = {
     "seat": 0.003,  # a lift-top rests this far above the apron rim
@@ -28,8 +30,13 @@ COCKTAIL = {
     # of it behind the centre (Wayfair / IKEA lift-top mechanisms sit under the back of the top)
     "well_floor": 0.012, "round_struts": 0.7, "struts_back": 0.2,
     "drawer_clear": 0.003,  # drawer fronts in their openings
+    "clear": 0.003,  # the same, under the name the shared drawer builder reads
+    "board": 0.018,  # apron board (tables.BOARD)
     "drawer_margin": 0.015,  # apron board above and below the openings
     "drawer_stile": 0.024,  # apron between neighbouring drawer openings
+    # drawers a side by the top's width: one under 0.7 m, two under 0.9 m, else up to three (every front at least
+    # ~0.25 m wide, as on IKEA HEMNES / LIATORP storage tables)
+    "drawers_per_side": ((0.7, 1), (0.9, 2), (math.inf, 3)),
     "drawer_wide": 0.6,  # drawers are at most ~0.6 m wide (IKEA HEMNES / LIATORP coffee-table drawers 0.4-0.6 m)
     "drawer_depth": 0.45,  # coffee-table drawers run 0.3-0.45 m deep
     "drawer_reach": (0.45, 0.85),  # a drawer's depth as a fraction of the box: back to back, or one side
@@ -100,6 +107,9 @@ DINING = {
     "margin": 0.012,  # apron board above and below a drawer opening
     "drawer_min": 0.06,  # the lowest drawer opening worth having
     "drawer_width": 0.5,  # the widest drawer
+    # drawers in a long side: up to two, three on a table 1.9 m or longer (farmhouse and refectory tables carry
+    # 2-3 apron drawers a side)
+    "drawers_per_side": ((1.9, 2), (math.inf, 3)),
     "drawer_stile": (0.05, 0.1),  # apron kept between drawer openings: in an end board, in a long board
     "drawer_reach": (0.45, 0.8),  # a drawer's depth as a fraction of the apron: back to back, or one side
     "leaf_room": 0.006,  # drawers stay this far under the stored leaves
@@ -119,4 +129,43 @@ DINING = {
     "draw_leaf": 0.5, "draw_leaf_share": 3, "draw_leaf_in": (0.005, 0.01), "draw_leaf_keep": 0.03,
     "bearer": (0.06, 0.04),
     "leaf_store": 0.01,  # stored extension leaves keep this far from the legs
+}
+
+# -- parameter ranges ----------------------------------------------------------------------------------
+# Dining tables (metres unless a ratio): 0.70-0.80 m high, 0.9-1.2 m wide, 1.4-2.8 m long (4-10 seats),
+# 25-45 mm tops, 8-14 cm aprons, 5-9 cm legs (furniture retailers' catalogues, BS EN 12521 / EN 1730 test
+# sizes); drop leaves of 20-34 cm (Pembroke / drop-leaf tables); extension tables open 50-80 % of the apron's
+# half length per side (Bassett, Ethan Allen, Pottery Barn extension tables); 50-70 cm lazy susans on a
+# ball-bearing ring; 50-75 mm plate-caster wheels (John Boos work tables, industrial rolling tables);
+# adjustable legs 3-10 cm of travel (telescopic table-leg hardware listings); 10-18 cm pedestal columns.
+DINING_RANGES = {
+    "length": (1.4, 2.8), "width": (0.9, 1.2), "height": (0.7, 0.8), "top_thickness": (0.025, 0.045),
+    "end_overhang": (0.06, 0.25), "side_overhang": (0.05, 0.12), "apron_height": (0.08, 0.14),
+    "leg_width": (0.05, 0.09), "leaf_fraction": (0.2, 0.28), "lopers_per_leaf": (1, 2),
+    "extension_fraction": (0.25, 0.4), "drawer_count": (1, 3), "back_drawer_count": (1, 3), "end_drawers": (1, 2),
+    "leaf_count": (1, 2), "lazy_susan_radius": (0.22, 0.3), "leg_travel": (0.03, 0.1),
+    "wheel_radius": (0.025, 0.038), "pedestal_radius": (0.05, 0.09),
+}
+# How often each choice is drawn: the generator's mix over the kinds the retailers above sell (not market data).
+DINING_SHARES = {
+    "top_shape": (0.7, 0.3), "leg_style": (0.4, 0.35, 0.25), "drawer_sides": (0.4, 0.35, 0.25),
+    "handle_style": (0.45, 0.35, 0.2), "top_finish": (0.75, 0.25), "frame_finish": (0.6, 0.25, 0.15),
+    "wheel_finish": (0.4, 0.6),
+}
+
+# Coffee (cocktail) tables: 0.40-0.75 m high, 0.5-1.0 m across, 20-45 mm tops, 15-30 mm legs 5-12 cm in from
+# the edge, 5-11 cm aprons (retailers' catalogues); lift-tops rise 12-25 cm, 30-80 % as far forward on a
+# scissor mechanism, over a 13-20 cm well (Wayfair / IKEA lift-top mechanisms); drop-leaf coffee tables
+# 15-30 cm leaves; 50-75 mm furniture casters; telescopic legs and gas-lift pedestals 6-18 cm of travel,
+# a pedestal's base 30-42 % of the top, a 25-45 mm inner column (adjustable pedestal coffee tables).
+COCKTAIL_RANGES = {
+    "width": (0.5, 1.0), "height": (0.4, 0.75), "top_thickness": (0.02, 0.045), "bevel": (0.1, 0.4),
+    "leg_count": (3, 4), "leg_radius": (0.015, 0.03), "leg_inset": (0.05, 0.12), "apron_height": (0.05, 0.11),
+    "shelf_height": (0.12, 0.3), "lift_travel": (0.12, 0.25), "lift_forward_ratio": (0.3, 0.8),
+    "box_depth": (0.13, 0.2), "drawer_count": (1, 3), "back_drawer_count": (1, 3), "leaf_width": (0.15, 0.3),
+    "caster_radius": (0.025, 0.0375), "stand_travel": (0.06, 0.18), "base_radius": (0.3, 0.42),
+    "column_radius": (0.025, 0.045),
+}
+COCKTAIL_SHARES = {
+    "leg_style": (0.28, 0.32, 0.2, 0.12, 0.08), "top_finish": (0.55, 0.25, 0.2), "frame_finish": (0.5, 0.3, 0.2),
 }

@@ -9,10 +9,12 @@ pallet racking and boltless shelving: 60-100 mm uprights, 60-140 mm beams, 0.6-1
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from infmob_usd import geometry as g
+from infmob_usd.frames import Frame
 
 BEAM_D = 0.05  # beam depth (x)
 BRACKET_H = 0.03  # height of the brackets a level's beam connectors rest on
@@ -334,3 +336,123 @@ def tote_label(x_front: float, y: float, z_rim: float) -> g.Piece:
     x = x_front - TOTE_RIM + TOTE_WALL
     return g.box_between([x, y - c["half_w"], z_rim - c["z"][0]], [x + c["t"], y + c["half_w"], z_rim - c["z"][1]],
                          "label")
+
+
+# -- layout helpers of the storage rack: counts, spans and slots in the rack's frame ------------------------
+def bay_span(width: float, u: float, n_bays: int) -> float:
+    """The clear width of one bay between its uprights (section ``u``), less the gap at each side."""
+    return (width - u) / n_bays - u - 2 * GAP
+
+
+def upright_ys(width: float, u: float, n_bays: int) -> np.ndarray:
+    """The y of every upright frame: both ends and between bays."""
+    return np.linspace(-width / 2 + u / 2, width / 2 - u / 2, n_bays + 1)
+
+
+def bay_spans(ys, u: float) -> list[tuple[float, float]]:
+    """Each bay's clear (y0, y1) between the uprights at ``ys``."""
+    return [(ys[b] + u / 2 + GAP, ys[b + 1] - u / 2 - GAP) for b in range(len(ys) - 1)]
+
+
+def bracket_sides(k: int, n_frames: int) -> tuple[int, ...]:
+    """The sides (+1: +y, -1: -y) of frame ``k`` of ``n_frames`` that face a bay, where stop brackets go."""
+    return tuple(s for s, inner in ((1, k < n_frames - 1), (-1, k > 0)) if inner)
+
+
+def goods_height(fill: float, level_height: float, beam_height: float, deck: str) -> float:
+    """Goods height on a pallet-rack level: ``fill`` of the clear height between a deck and the beams above."""
+    return fill * (level_height - beam_height - DECK_T[deck])
+
+
+def goods_span(span: tuple[float, float]) -> tuple[float, float]:
+    """Where goods stand on a level: clear of the uprights by :data:`SIDE`."""
+    return span[0] + SIDE, span[1] - SIDE
+
+
+def on_deck(z: float, deck: str) -> float:
+    """The z goods stand at on a level whose beam top is at ``z``."""
+    return z + DECK_T[deck] + GOODS_LIFT
+
+
+def tote_count(span: float, rng: np.random.Generator) -> int:
+    """Totes across a level: as many as fit at :data:`TOTE_W` wide each, at least 2, at most :data:`MAX_TOTES`."""
+    lo = max(2, int(span // TOTE_W[1]))
+    return int(rng.integers(lo, max(lo, min(MAX_TOTES, int(span // TOTE_W[0]))) + 1))
+
+
+def bin_count(span: float, bin_width: float) -> int:
+    """Bins across a level: as many ``bin_width`` bins as fit, 2 to :data:`MAX_BINS`."""
+    return max(2, min(MAX_BINS, int(span // (bin_width + BIN_GAP))))
+
+
+def cabinet_count(span: float, rng: np.random.Generator) -> int:
+    """Drawer cabinets side by side on a bay of clear width ``span``: from as many 45 in ones as fit (at least
+    one) to as many 30 in ones as fit."""
+    width = span - 2 * SIDE
+    lo = max(1, int(width // (DRAWER_CAB["widths"][-1] + CAB_GAP)))
+    return int(rng.integers(lo, max(lo, int(width // (DRAWER_CAB["widths"][1] + CAB_GAP))) + 1))
+
+
+def drawer_count(goods_h: float, rng: np.random.Generator) -> int:
+    """Drawers of a cabinet ``goods_h`` high: fronts of :data:`DRAWER_FRONTS` filling it."""
+    inner = goods_h - 2 * CAB_PANEL
+    tallest, lowest, most = DRAWER_FRONTS
+    lo = max(1, math.ceil(inner / tallest))
+    return int(rng.integers(lo, max(lo, min(most, int(inner // lowest))) + 1))
+
+
+def drawn_goods(kind: str, depth: float, ys: tuple[float, float], z: float, h: float, rng: np.random.Generator
+                ) -> list[g.Piece]:
+    """One item of goods centred in depth, ``GOODS_FILL_MIN``-100 % of ``h`` high (drawn)."""
+    hk = h * float(rng.uniform(GOODS_FILL_MIN, 1.0))
+    return GOODS[kind](-depth / 2, depth / 2, ys[0], ys[1], z, hk)
+
+
+@dataclass(frozen=True)
+class CabinetSlots:
+    """Drawer cabinets side by side on a level: their x extent and each one's y extent."""
+
+    xs: tuple[float, float]
+    ys: list
+
+
+def cabinet_slots(span: tuple[float, float], count: int, depth: float) -> CabinetSlots:
+    """``count`` cabinets of the widest stock width that fits their pitch, fronts :data:`CAB_BACK` behind the
+    front beam of a level ``depth`` deep."""
+    width = span[1] - span[0]
+    pitch = width / count
+    w = next((cw for cw in reversed(DRAWER_CAB["widths"]) if cw + CAB_GAP <= pitch), pitch - CAB_GAP)
+    x1 = depth / 2 - CAB_BACK[0]
+    xs = (x1 - min(DRAWER_CAB["depth"], depth - CAB_BACK[1]), x1)
+    centres = [span[0] + (k + 0.5) * pitch for k in range(count)]
+    return CabinetSlots(xs, [(yc - w / 2, yc + w / 2) for yc in centres])
+
+
+def drawer_slots(xs, ys, z: float, h: float, count: int) -> tuple[tuple, tuple, list]:
+    """The drawers of a cabinet at ``xs`` x ``ys`` from ``z`` up ``h``: their x and y extents and each one's z's."""
+    x0, x1 = xs[0] + CAB_PANEL + CAB_DRAWER[0], xs[1] - CAB_DRAWER[1]
+    y0, y1 = ys[0] + CAB_PANEL + DRAWER_GAP, ys[1] - CAB_PANEL - DRAWER_GAP
+    z0, z1 = z + CAB_PANEL + DRAWER_GAP, z + h - CAB_PANEL - DRAWER_GAP
+    pitch = (z1 - z0) / count
+    return (x0, x1), (y0, y1), [(z0 + k * pitch, z0 + k * pitch + pitch - DRAWER_GAP) for k in range(count)]
+
+
+def slide_out(xs, ys, z: float) -> Frame:
+    """The slide of a drawer, tote or bin: along +x from its front bottom edge's middle."""
+    return Frame.at((xs[1], sum(ys) / 2, z), z=(1, 0, 0))
+
+
+def pull_out(xs, fraction: float) -> float:
+    """How far a box ``xs`` deep slides out: ``fraction`` of its depth."""
+    return fraction * (xs[1] - xs[0])
+
+
+def lid_hinge(xs, ys, z: float) -> Frame:
+    """A tote lid's hinge at its back edge, axis -y: a positive turn lifts the front edge."""
+    return Frame.at((xs[0], sum(ys) / 2, z), z=(0, -1, 0))
+
+
+def lid_room(levels, z: float, h: float) -> float | None:
+    """Room above a tote ``h`` high standing on a level at ``z``, under the next level up (None: the top level)."""
+    above = [lv for lv in levels if lv > z + 1e-9]
+    return min(above) - z - h if above else None

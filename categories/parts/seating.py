@@ -725,3 +725,86 @@ def tilt_pivot(seat: Seat, shape: str, width: float, depth: float) -> Frame:
     positive turn dips the front and lifts the back clear of the mechanism."""
     reach = min(0.12, 0.6 * width / 2) if shape == "round" else min(0.24, 0.55 * depth) / 2
     return Frame.at((seat.xc + reach, 0, seat.z_pan0), x=(1, 0, 0), z=(0, 1, 0))
+
+
+# -- layout helpers shared by the office chair and the bar chair -------------------------------------------
+SIDES = (("left", 1), ("right", -1))  # the two arms: name and the sign of their y
+
+
+def seat_slide_axis(seat: Seat) -> Frame:
+    """A seat slider's axis: along +x at the mechanism's top, under the seat's centre."""
+    return Frame.at((seat.xc, 0, seat.z_pan0), z=(1, 0, 0))
+
+
+def square_depth(shape: str, width: float, depth: float) -> float:
+    """The seat's depth: ``depth`` for a square seat, its diameter ``width`` for a round one."""
+    return depth if shape == "square" else width
+
+
+def lever_reach(shape: str, width: float) -> float:
+    """The height lever paddle's y: under a round seat at 70 % of its radius, 30 mm in from a square one's edge."""
+    return 0.7 * width / 2 if shape == "round" else width / 2 - 0.03
+
+
+def knob_depth(shape: str, width: float, depth: float) -> float:
+    """The depth that places a tension knob at the mechanism's front: a round seat's mechanism is a
+    disc of up to 0.12 m radius (its tilt pivot), a square seat's scales with its depth."""
+    r_mech = min(0.12, 0.6 * width / 2)
+    return depth if shape == "square" else 2 * r_mech / 0.55
+
+
+HEADREST_REACH = 0.06  # an adjustable headrest's pad front ahead of the back's spine
+LUMBAR_PAD = 0.018  # a lumbar pad's thickness
+LUMBAR_SHARE = 0.3  # a lumbar pad slides over at most this share of the back's height
+
+
+def headrest_reach(b: Back) -> float:
+    """The front x of an adjustable headrest (:func:`adjustable_headrest`)."""
+    return b.x_spine + HEADREST_REACH
+
+
+def lumbar_slide(dims: BackDims, front: float) -> tuple[float, float]:
+    """A lumbar pad's travel up the back and its front x (:func:`lumbar_pad`)."""
+    return min(LUMBAR_TRAVEL, LUMBAR_SHARE * dims.height), front + GAP + LUMBAR_PAD
+
+
+def executive_back(back_height: float, lo: float, hi: float) -> float:
+    """An executive high back's height: ``back_height`` (0.3-0.55 m, a task back's range) mapped onto lo-hi."""
+    return lo + (hi - lo) * (back_height - 0.3) / 0.25
+
+
+@dataclass(frozen=True)
+class SlidingRing:
+    """A foot ring clamped on the column: the column's pieces, the ring's, its slide frame and travel."""
+
+    column: list
+    ring: list
+    at: Frame
+    travel: float
+
+
+def drafting_ring(seat: Seat, base: Base, radius: float, travel: float) -> SlidingRing:
+    """A drafting chair's column sleeve, 40 mm below the lift's top, and the foot ring on it: 80 mm above the
+    hub at rest (no lower than :data:`RING_MIN`), sliding up by ``travel`` at most, 30 mm short of the top."""
+    top = seat.lift_top - COLUMN_BELOW_LIFT - 0.04
+    z = max(base.top + 0.08, RING_MIN)
+    return SlidingRing(column(base.top, top, base.bore), foot_ring(z, radius, base.bore + 0.002),
+                       Frame.at((0, 0, z)), min(travel, top - 0.03 - z))
+
+
+def stool_ring(z: float, top: float, radius: float, bore: float, travel: float) -> SlidingRing:
+    """A drafting stool's sliding foot ring at ``z`` (at least 50 mm under the column's ``top``), sliding up by
+    ``travel`` at most, 30 mm short of the top."""
+    z = min(z, top - 0.05)
+    return SlidingRing([], foot_ring(z, radius, bore + 0.002), Frame.at((0, 0, z)),
+                       max(0.0, min(travel, top - 0.03 - z)))
+
+
+def four_leg_stool(lift_top: float, seat_height: float, ring_drop: float, base_radius: float) -> list[g.Piece]:
+    """A four-leg swivel stool's frame (:func:`four_leg_frame`) under a seat whose lift top is ``lift_top``: its
+    bearing 30 mm below it, feet on the diagonals at 85 % of ``base_radius``, the foot rail ``ring_drop`` below
+    the seat top (no lower than :data:`RING_MIN`, at least 0.14 m under the bearing)."""
+    bearing = lift_top - 0.03 - GAP
+    z_ring = max(seat_height - ring_drop, RING_MIN)
+    z_ring = min(z_ring, bearing - 0.14)
+    return four_leg_frame(bearing, 0.85 * base_radius * math.sqrt(2), z_ring)

@@ -11,6 +11,7 @@ legs or swing-out brackets (Gateleg and Pembroke tables, IKEA Norden / Gamlared)
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -251,3 +252,143 @@ def bearer_frame(xb: float, yb: float, z0: float, z1: float, rails: tuple[float,
     out = [g.box_between((-xb, y0, z0), (xb, y1, z1), material) for y0, y1 in ((-yb, -yb + side), (yb - side, yb))]
     out.append(g.box_between((-cross, -yb + side, z0), (cross, yb - side, z1), material))
     return out
+
+
+# -- dining-table parts placed by anchors ---------------------------------------------------------------
+# These build in the table's frame (z = 0 the floor, X the long axis); the layout joins each by its named
+# anchor. ``sizes`` is :data:`~.furniture_sizes.DINING`.
+def opening_drawer(hole: tuple[float, float, float, float], wall_at: float, side: int, in_end: bool, depth: float,
+                   handle: str | None, sizes: dict, sheet: float | None = None) -> Assembly:
+    """A :func:`apron_drawer` in an apron opening ``hole`` (a0, z0, a1, z1 along its board), the board's outer
+    face at ``wall_at`` on ``side`` (+1 / -1) of the table: of an end board (``in_end``, the drawer pulls out
+    along X) or a long one (along Y); ``sizes["clear"]`` round its front; ``handle`` None: a knob on a front
+    narrower than ``sizes["knob_under"]``, else a bar. Anchor ``slide``: the front's face."""
+    a0, z0, a1, z1 = hole
+    w, h = a1 - a0 - 2 * sizes["clear"], z1 - z0 - 2 * sizes["clear"]
+    if handle is None:  # a knob on a narrow front, else a bar
+        handle = "knob" if w < sizes["knob_under"] else "bar"
+    if in_end:
+        face = Frame.at((wall_at, (a0 + a1) / 2, (z0 + z1) / 2), z=(side, 0, 0), x=(0, 0, 1))
+    else:
+        face = Frame.at(((a0 + a1) / 2, wall_at, (z0 + z1) / 2), z=(0, side, 0), x=(0, 0, 1))
+    return apron_drawer(w, h, depth, sizes["board"], sizes["drawer_wall"], face, handle, sizes, sheet)
+
+
+def draw_leaf(length: float, width: float, leaf_length: float, side: int, z0: float, sizes: dict) -> Assembly:
+    """A draw leaf ``leaf_length`` long stored from ``z0`` under the ``side`` (+1 / -1) end of a top ``length`` x
+    ``width`` (``sizes["draw_leaf_in"]`` in from its end and sides, ``sizes["leaf_t"]`` thick). Anchor ``slide``:
+    at the leaf's outer end, z pointing out along X."""
+    end, edge = sizes["draw_leaf_in"]
+    x0, x1 = sorted((side * (length / 2 - leaf_length), side * (length / 2 - end)))
+    piece = g.box_between((x0, -width / 2 + edge, z0), (x1, width / 2 - edge, z0 + sizes["leaf_t"]), "top",
+                          bevel=0.003)
+    return Assembly.single("leaf", [piece], {"slide": Frame.at((side * (length / 2 - end), 0, z0), z=(side, 0, 0))})
+
+
+def apron_lopers(apron_length: float, y_face: float, side: int, za0: float, za1: float, length: float, count: int,
+                 material: str) -> list[Assembly]:
+    """``count`` :func:`apron_loper` brackets ``length`` long in the long apron board whose face is at ``y_face``:
+    one centred, or two at a quarter of the apron (``apron_length``) from each end. Anchor ``hinge``."""
+    xs = [-apron_length / 4, apron_length / 4] if count == 2 else [0.0]
+    out = []
+    for xc in xs:
+        pieces, hinge = apron_loper(xc - length / 2, y_face, side, za0, za1, length, material)
+        out.append(Assembly.single("bracket", pieces, {"hinge": hinge}))
+    return out
+
+
+def split_half(length: float, width: float, shape: str, z0: float, z1: float, split: float, side: int,
+               material: str) -> Assembly:
+    """One half of an extending top (:func:`~.tables.half_top`) from ``z0`` to ``z1``. Anchor ``slide``: on the
+    split's ``side`` at the underside, z pointing out along X."""
+    piece = T.half_top(length, width, shape, z0, z1, split, side, material)
+    return Assembly.single("top", [piece], {"slide": Frame.at((side * split / 2, 0, z0), z=(side, 0, 0))})
+
+
+def stored_leaf(half: float, half_width: float, z1: float, thickness: float, material: str) -> Assembly:
+    """An extension leaf stored in the apron: ``2 half`` along X, ``2 half_width`` across, its top at ``z1``."""
+    return Assembly.single("leaf", [g.box_between((-half, -half_width, z1 - thickness), (half, half_width, z1),
+                                                  material)])
+
+
+def dining_openings(x_in: float, z0: float, z1: float, n: int, in_end: bool, sizes: dict
+                    ) -> list[tuple[float, float, float, float]]:
+    """``n`` drawer openings (a0, z0, a1, z1) spread evenly along an apron board with ``x_in`` free each side of
+    its centre: at most ``sizes["drawer_width"]`` wide, ``sizes["drawer_stile"]`` (end board, long board) kept
+    between them, ``sizes["margin"]`` of board under them, up to ``z1``."""
+    dw = min(sizes["drawer_width"], 2 * x_in / n - sizes["drawer_stile"][0 if in_end else 1])
+    xs = [-x_in + (k + 0.5) * 2 * x_in / n for k in range(n)]
+    return [(x - dw / 2, z0 + sizes["margin"], x + dw / 2, z1) for x in xs]
+
+
+def caster_plates(frames: list, leg_w: float, stem_top: float, z_leg: float, sizes: dict) -> list[g.Piece]:
+    """The casters' top plates under square legs ``leg_w`` wide standing at ``frames``: from
+    ``sizes["caster_plate"][0]`` over the caster's stem top ``stem_top`` up to the leg's foot ``z_leg``,
+    ``sizes["caster_plate"][2]`` past the leg each side."""
+    over, _, past = sizes["caster_plate"]
+    return [g.box_between(f.point((-leg_w / 2 - past, -leg_w / 2 - past, stem_top + over)),
+                          f.point((leg_w / 2 + past, leg_w / 2 + past, z_leg)), "metal") for f in frames]
+
+
+# -- a nest of tables ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class NestedSize:
+    """One table of a nest (:func:`nesting_table`'s sizes, metres): ``width`` across (y), ``depth`` along x
+    from ``x0``, ``height`` to its top's upper face, tops ``top_t`` thick. ``sizes`` is
+    :data:`~.furniture_sizes.NEST`."""
+
+    width: float
+    depth: float
+    x0: float
+    height: float
+    top_t: float
+
+    @classmethod
+    def first(cls, span: float, table_width: float, z_under: float, count: int, top_t: float, sizes: dict
+              ) -> NestedSize:
+        """A table nested in the outer frame (``span`` between its legs, under a top ``table_width`` across
+        whose underside is at ``z_under``): one of ``count`` (1: centred, 2: each from ``sizes["x0"]``)."""
+        depth = sizes["depth"][0 if count == 1 else 1] * table_width
+        x0 = -depth / 2 if count == 1 else sizes["x0"]
+        return cls(span - sizes["side_clear"], depth, x0, z_under - sizes["gap"], top_t)
+
+    def inner(self, span: float, sizes: dict) -> NestedSize:
+        """The table nested in this one (``span`` between this one's legs)."""
+        deeper, out = sizes["inner"]
+        return NestedSize(span - sizes["side_clear"], deeper * self.depth, self.x0 + out * self.depth,
+                          self.height - self.top_t - sizes["gap"], self.top_t)
+
+
+def nested_table(size: NestedSize, side: int, sizes: dict) -> tuple[Assembly, NestedSize]:
+    """A :func:`nesting_table` of ``size`` sliding out along ``side`` (+1 / -1) * x (mirrored for -1); anchor
+    ``slide`` at its outer end, half way up, z pointing out. Returns it and the size of a table nested in it."""
+    pieces, span = nesting_table(size.width, size.depth, size.height, size.top_t, sizes["leg"], size.x0, "top",
+                                 "frame")
+    if side < 0:
+        pieces = [pc.transformed(Frame.at((0, 0, 0), x=(-1, 0, 0), y=(0, -1, 0)).matrix) for pc in pieces]
+    slide = Frame.at((side * (size.x0 + size.depth), 0, size.height / 2), z=(side, 0, 0))
+    return Assembly.single("table", pieces, {"slide": slide}), size.inner(span, sizes)
+
+
+def well_struts(width: float, shape: str, inset: float, z_floor: float, z_under: float, fwd: float, travel: float,
+                sizes: dict) -> tuple[tuple, Frame]:
+    """A lift-top's two :func:`lift_struts` on its well's floor ``z_floor`` under a top ``width`` across (legs
+    ``inset`` in) whose underside is at ``z_under``: ``sizes["round_struts"]`` of a round top's half width apart,
+    ``sizes["struts_back"]`` of it behind the centre, leaning ``fwd`` forward per unit up (tilted struts lean
+    forward across the centre). Returns :func:`lift_struts`' parts and the lift frame (z the lift's direction,
+    at the top's underside)."""
+    half = (width / 2 - inset) * (sizes["round_struts"] if shape == "round" else 1.0) - T.BOARD
+    u = np.array([fwd, 0.0, 1.0])
+    x = -sizes["struts_back"] * half - 0.5 * fwd * (z_under - z_floor)
+    made = lift_struts((0.5 * half, -0.5 * half), x, z_floor, z_under, u, travel, "strut")
+    return made, Frame.at((0, 0, z_under), z=u)
+
+
+def stored_leaves(count: int, opening: float, apron_width: float, z_top: float, sizes: dict, material: str
+                  ) -> list[Assembly]:
+    """``count`` :func:`stored_leaf` leaves stacked in an extending table's apron (``apron_width`` across,
+    ``sizes["board"]`` boards) from ``z_top`` down, ``sizes["leaf_gap"]`` apart: one ``2 opening`` long, or
+    two each half that (they fill the opening side by side when laid in)."""
+    half = opening / 2 if count > 1 else opening
+    return [stored_leaf(half, apron_width / 2 - sizes["board"], z_top - k * (sizes["leaf_t"] + sizes["leaf_gap"]),
+                        sizes["leaf_t"], material) for k in range(count)]

@@ -9,6 +9,7 @@ origin and rises along +z. Sizes of real tables: coffee tables 0.40-0.75 m high,
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -317,3 +318,128 @@ def pedestals(table_length: float, apron_length: float, apron_width: float, tabl
     if len(xs) == 2:  # a low stretcher between the two columns
         pieces.append(g.box_between([xs[0], -0.025, 0.18], [xs[1], 0.025, 0.23], material))
     return pieces
+
+
+# -- a dining table's frame ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class DiningFrame:
+    """Where a dining table's apron and top stand (the table's frame, metres), from its parameters and
+    :data:`~.furniture_sizes.DINING`: the apron ``La`` x ``Wa`` from ``za0`` up to ``za1`` (the top's underside,
+    or the halves' / draw leaves' seat), legs ``lw`` wide (0 on a pedestal), a drop-leaf table's fixed centre
+    ``wc`` wide, the stored extension leaves' stack ``leaf`` (bottom, top), ``x_in`` free between the legs
+    along X (half), ``span`` free along the drawer board (half) and ``z_top`` the drawer openings' top."""
+
+    La: float
+    Wa: float
+    wc: float
+    lw: float
+    za0: float
+    za1: float
+    leaf: tuple[float, float]
+    x_in: float
+    span: float
+    z_top: float
+
+    @classmethod
+    def of(cls, p: dict, sizes: dict, stored_leaves: int | None, drop: bool, draw: bool, drawers: bool
+           ) -> DiningFrame:
+        """``stored_leaves``: an extending top's leaf count (None: it does not extend); ``drop``, ``draw``: a
+        drop-leaf or draw-leaf top; ``drawers``: the apron has drawers (it is raised to fit them)."""
+        D, ext = sizes, stored_leaves is not None
+        L, W, H, tt = p["length"], p["width"], p["height"], p["top_thickness"]
+        if p["top_shape"] == "oval":
+            La, Wa = D["oval_apron"] * L, D["oval_apron"] * W
+        else:
+            La, Wa = L - 2 * p["end_overhang"], W - 2 * p["side_overhang"]
+        wc = W * (1 - 2 * p["leaf_fraction"])
+        if drop:  # the apron and the folded lopers stay inside the hanging leaves
+            Wa = min(Wa, wc - 2 * (D["leaf_gap_y"] + D["loper_room"]))
+        lw = p["leg_width"] if p["support"] == "legs" else 0.0
+        za1 = H - tt - (D["seat"] if ext else 0.0) - (2 * D["leaf_gap"] + D["leaf_t"] if draw else 0.0)
+        leaf = (za1 - (stored_leaves or 0) * (D["leaf_gap"] + D["leaf_t"]), za1 - D["leaf_gap"])
+        need = (2 * D["margin"] + D["drawer_min"] + (za1 - leaf[0] + D["leaf_room"] if ext else 0.0) if drawers
+                else D["drawer_min"])
+        za0 = za1 - max(p["apron_height"], need)
+        x_in = La / 2 - max(lw, D["board"])
+        span = Wa / 2 - max(lw, D["board"]) if p["drawer_sides"] == "ends" else x_in
+        z_top = (leaf[0] - D["leaf_room"]) if ext else za1 - D["margin"]
+        return cls(La, Wa, wc, lw, za0, za1, leaf, x_in, span, z_top)
+
+    def loper_length(self, width: float, sizes: dict) -> float:
+        """A drop-leaf table's swing-out bracket: at most ``sizes["loper"]`` and ``sizes["loper_apron"]`` of the
+        apron long, and swung out it ends ``sizes["loper_reach"]`` of the way out under a leaf of a top
+        ``width`` wide."""
+        reach = self.wc / 2 + sizes["loper_reach"] * (width - self.wc) / 2
+        return min(sizes["loper"], sizes["loper_apron"] * self.La, reach - self.Wa / 2)
+
+
+@dataclass(frozen=True)
+class StorageFrame:
+    """A storage coffee table's box (the table's frame, metres), from its parameters and
+    :data:`~.furniture_sizes.COCKTAIL`: square legs ``lw`` wide (a little stouter than the rails) ``inset`` in
+    (further in under drop leaves: the folded lopers lie inside them), the box ``2 half`` square from ``za0`` up
+    to the top's underside ``za1``, ``span`` of drawer board between the legs, drawers ``depth`` deep."""
+
+    lw: float
+    inset: float
+    half: float
+    za0: float
+    za1: float
+    span: float
+    depth: float
+
+    @classmethod
+    def of(cls, p: dict, sizes: dict, leaves: bool, back_to_back: bool) -> StorageFrame:
+        C = sizes
+        lw = 2 * p["leg_radius"] + C["square_leg"]
+        inset = min(p["leg_inset"], C["inset_max"] * p["width"])
+        if leaves:
+            inset = max(inset, lw / 2 + C["loper_room"])
+        half = p["width"] / 2 - inset + lw / 2
+        za1 = p["height"] - p["top_thickness"]
+        both, one = C["drawer_reach"]
+        depth = min(C["drawer_depth"], (2 * half - 2 * BOARD) * (both if back_to_back else one))
+        return cls(lw, inset, half, za1 - p["box_depth"], za1, 2 * (half - lw), depth)
+
+    def corners(self) -> list[Frame]:
+        """Where the four legs stand (at the box's corners)."""
+        return corner_frames(2 * self.half, 2 * self.half, self.lw / 2)
+
+    def shelf(self, p: dict, z_leg: float, sizes: dict) -> dict:
+        """A low shelf between the legs (standing from ``z_leg``): its inset, leg radius and height (between
+        ``sizes["shelf_low"]`` under the apron and over the caster plates), as :func:`shelf` takes them."""
+        under, over = sizes["shelf_low"]
+        return {"inset": self.inset - self.lw / 2 + BOARD, "r_leg": self.lw / 2,
+                "z": max(min(p["shelf_height"] * p["height"], self.za0 - under), z_leg + over)}
+
+
+@dataclass(frozen=True)
+class LegFrame:
+    """A coffee table on legs (the table's frame, metres), from its parameters and
+    :data:`~.furniture_sizes.COCKTAIL`: legs ``inset`` in, the apron from ``za0`` to ``za1`` (a lift-top's well
+    is ``box_depth`` deep, its top resting ``seat`` above the rim), a lower shelf at ``shelf_z``; a telescopic
+    stand's posts (``post_r``) slide ``travel`` in sleeves (``sleeve_r``) up to ``sleeve_top``, a post's foot at
+    ``post_bottom`` at rest."""
+
+    inset: float
+    za0: float
+    za1: float
+    shelf_z: float
+    post_r: float
+    sleeve_r: float
+    sleeve_top: float
+    travel: float
+    post_bottom: float
+
+    @classmethod
+    def of(cls, p: dict, sizes: dict, lift: bool) -> LegFrame:
+        C, H = sizes, p["height"]
+        inset = min(p["leg_inset"], C["inset_max"] * p["width"])
+        za1 = H - p["top_thickness"] - (C["seat"] if lift else 0.0)
+        za0 = za1 - (p["box_depth"] if lift else p["apron_height"])
+        rp = C["post"] * p["leg_radius"]
+        ro = rp + CLEAR + WALL
+        zs1 = C["sleeve_top"] * za0
+        travel = min(p["stand_travel"], zs1 - C["sleeve_room"])
+        shelf = min(p["shelf_height"] * H, za0 - C["shelf_under_well"] if lift else zs1 - C["shelf_under"])
+        return cls(inset, za0, za1, shelf, rp, ro, zs1, travel, zs1 - travel - C["post_in"])
