@@ -124,10 +124,27 @@ class _Clearance:
         setup = self._setup(j, q, only) if travel != 0 else None
         if setup is None:
             return None
+        hit = self.start_hit(j, q, only)
+        if hit:
+            return start, hit
         moving, obstacles, allowed, below = setup
         value, hit = _sweep_limit(moving, travel, obstacles, allowed)
         value, hit = min((value, hit), _parent_limit(moving, value, below), key=lambda t: abs(t[0]))
         return (start + value, hit) if value != travel else None
+
+    def start_hit(self, j, q, only: set | None = None) -> str:
+        """A link (not its parent; among ``only`` if given) that the subtree ``j`` moves overlaps
+        at ``q`` although the two are apart at rest; "" if none. The sweeps leave out hull pairs
+        that overlap where they start, so a closing sweep that starts inside a part open next
+        to it (a sash tilted into its open neighbour) would pass unseen."""
+        moved = self.subtree[j.name]
+        parent = self.real_parent(j)
+        pairs = {tuple(sorted((a, b))) for a in moved if a in self.hulls for b in self.hulls
+                 if b not in moved and b != parent and (only is None or b in only)}
+        if not pairs:
+            return ""
+        met = self.contacts(self.poses_at(q), pairs) - self.contacts(self.poses_at({}), pairs)
+        return min((b if a in moved else a) for a, b in met) if met else ""
 
     def shorten(self, j, side: int, value: float, hit: str) -> None:
         from ..errors import ModelError
@@ -403,7 +420,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        lower one with every other limited joint at its upper (open) limit, except the other
        DoFs of its own part, the parts it ``requires_closed`` and the parts that
        ``requires_open`` those, which are at rest: a robot that opened every part can close
-       any one and open it again. Where the sweep is stopped by a part that an
+       any one and open it again. A start overlapping a link the moving part is apart from at rest
+       stops the sweep where it starts (:meth:`_Clearance.start_hit`). Where the sweep is stopped by a part that an
        open joint moved there (:meth:`_Clearance.give_way`): a part that ``requires_open`` the
        moving one (a rack in a door) must be closed first (``requires_closed``); otherwise
        whichever of the blocking joint's upper limit and the moving joint's own limit keeps the
