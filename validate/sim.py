@@ -578,6 +578,12 @@ def _movable(meta: dict) -> list[dict]:
 
 def _load_problems(ctx: SimContext) -> list[str]:
     """Everything in the loaded articulation that disagrees with metadata.json and the URDF."""
+    sim_joints = {j.name: j for j in ctx.articulation.joints if j.name}
+    return _structure_problems(ctx, sim_joints) + _joint_problems(ctx, sim_joints)
+
+
+def _structure_problems(ctx: SimContext, sim_joints: dict) -> list[str]:
+    """Links, joint names, masses and collision shapes of the loaded articulation against the files."""
     from .files import parse_urdf
 
     meta, art = ctx.meta, ctx.articulation
@@ -593,7 +599,6 @@ def _load_problems(ctx: SimContext) -> list[str]:
                         f"missing {missing}, unexpected {extra}")
 
     # joints: every joint by name and type, movable ones in the active list
-    sim_joints = {j.name: j for j in art.joints if j.name}
     want_movable = [j["name"] for j in _movable(meta)]
     got_movable = [j.name for j in ctx.joints]
     if sorted(want_movable) != sorted(got_movable):
@@ -629,8 +634,13 @@ def _load_problems(ctx: SimContext) -> list[str]:
                                 "(SAPIEN silently uses 1 0 0)")
     except Exception as exc:  # the URDF already loaded in SAPIEN: report, do not crash
         problems.append(f"URDF re-parse failed: {exc!r}")
+    return problems
 
-    # joint types, limits, frames at rest (links are world-aligned at rest: axis world = local)
+
+def _joint_problems(ctx: SimContext, sim_joints: dict) -> list[str]:
+    """Joint types, limits and frames at rest (links are world-aligned at rest: axis world = local)."""
+    meta, art = ctx.meta, ctx.articulation
+    problems: list[str] = []
     ctx.articulation.set_qpos(np.zeros(art.dof, dtype=np.float32))
     for j in meta["joints"]:
         sj = sim_joints.get(j["name"])
