@@ -344,15 +344,19 @@ def apply_springs(articulation, meta: dict) -> int:
     n = 0
     for joint in articulation.get_active_joints():
         if joint.name in springs:
-            spring, damping = springs[joint.name]
-            joint.set_drive_property(float(spring["stiffness"]), float(damping), mode="force")
-            joint.set_drive_target(float(spring["reference"]))
-            # PhysX's joint friction is a coefficient of the wrench the joint carries (see above): on a
-            # lever holding its own weight SAPIEN's default 0.05 beats a spring sized to its mass; the
-            # file's friction is below the spring's preload by design, so none here
-            joint.set_friction(0.0)
+            _drive_spring(joint, *springs[joint.name])
             n += 1
     return n
+
+
+def _drive_spring(joint, spring: dict, damping: float) -> None:
+    """One return spring (``metadata.json`` ``joints[].spring``) as the joint's drive, friction off."""
+    joint.set_drive_property(float(spring["stiffness"]), float(damping), mode="force")
+    joint.set_drive_target(float(spring["reference"]))
+    # PhysX's joint friction is a coefficient of the wrench the joint carries (see above): on a
+    # lever holding its own weight SAPIEN's default 0.05 beats a spring sized to its mass; the
+    # file's friction is below the spring's preload by design, so none here
+    joint.set_friction(0.0)
 
 
 def load_maniskill(urdf: str | Path, *, name: str = "object"):
@@ -483,11 +487,12 @@ class SimContext:
         coefficients = []
         for j, s in zip(self.joints, self.loaded, strict=True):
             damping, friction = self.urdf_dynamics.get(j.name, (s.damping, 0.0))
-            spring = springs.get(j.name)
-            c = 0.0 if spring else physx_friction_coefficient(j, friction, self.gravity)
-            j.set_drive_property(float(spring["stiffness"]) if spring else 0.0, damping, mode="force")
-            if spring:
-                j.set_drive_target(float(spring["reference"]))
+            if j.name in springs:
+                _drive_spring(j, springs[j.name], damping)
+                coefficients.append(0.0)
+                continue
+            c = physx_friction_coefficient(j, friction, self.gravity)
+            j.set_drive_property(0.0, damping, mode="force")
             j.set_friction(c)
             coefficients.append(c)
         return coefficients
