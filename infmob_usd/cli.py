@@ -290,8 +290,13 @@ def _overrides(categories: list[str], assignments: list[str]) -> dict:
     return overrides
 
 
+class Terminated(SystemExit):
+    """SIGTERM in the command line: unwinds like Ctrl-C (every ``finally`` removes our temporary files and
+    stops our workers), then :func:`main` prints one line and exits 143."""
+
+
 def _on_sigterm(signum, frame):
-    raise SystemExit(128 + signum)
+    raise Terminated(128 + signum)
 
 
 def cmd_generate(args) -> int:
@@ -508,8 +513,13 @@ def cmd_validate(args) -> int:
         else:
             out = Path(tmp := tempfile.mkdtemp(prefix="infmob-sweep-"))
         jobs = (Job(c, s, (), args.texture_size) for c in categories for s in range(args.sweep))
-        rows = run_batch(jobs, out, workers=min(workers, len(categories) * args.sweep),
-                         total=len(categories) * args.sweep)
+        try:
+            rows = run_batch(jobs, out, workers=min(workers, len(categories) * args.sweep),
+                             total=len(categories) * args.sweep)
+        except BaseException:  # SIGTERM, Ctrl-C, a full disk: the temporary folder goes too
+            if tmp:
+                shutil.rmtree(tmp, ignore_errors=True)
+            raise
         for r in rows:
             if "error" in r:
                 print(f"FAIL {r['category']} seed {r['seed']}: generation failed: {r['error']}")
@@ -711,6 +721,11 @@ def main(argv: list[str] | None = None) -> int:
         return COMMANDS[args.command](args)
     except InfmobError as e:
         return _fail(str(e))
+    except Terminated as e:
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)  # a second SIGTERM cannot interrupt the message
+        print(f"infmob: stopped by SIGTERM ({args.command}): nothing half-written was left; run it again to"
+              f" {'resume' if args.command == 'generate' else 'redo it'}", file=sys.stderr)
+        return e.code
     except KeyboardInterrupt:
         return 130
 

@@ -66,8 +66,10 @@ def reproduce(case: Case) -> str:
     return f"infmob generate {category} --seed {seed} --texture-size 16 {sets}".rstrip()
 
 
-def check_case(case: Case, texture_size: int = 16, sim: bool = True, keep: Path | None = None) -> dict:
-    """Run one case. Returns ``{"outcome": "valid" | "rejected" | "crash" | "invalid", "detail", ...}``."""
+def check_case(case: Case, texture_size: int = 16, sim: bool = True, keep: Path | None = None,
+               tmp_root: Path | None = None) -> dict:
+    """Run one case (its object in a temporary folder, inside ``tmp_root`` if given). Returns
+    ``{"outcome": "valid" | "rejected" | "crash" | "invalid", "detail", ...}``."""
     from .api import generate, get_category, save
     from .validate import validate_object
 
@@ -77,7 +79,7 @@ def check_case(case: Case, texture_size: int = 16, sim: bool = True, keep: Path 
         get_category(category).schema.validate(overrides)
     except ParameterError as e:
         return {"outcome": "rejected", "detail": str(e), "seconds": time.perf_counter() - t0}
-    tmp = Path(tempfile.mkdtemp(prefix="infmob-fuzz-"))
+    tmp = Path(tempfile.mkdtemp(prefix="infmob-fuzz-", dir=tmp_root))
     try:
         try:
             obj = generate(category, seed=seed, texture_size=texture_size, **overrides)
@@ -100,14 +102,44 @@ def check_case(case: Case, texture_size: int = 16, sim: bool = True, keep: Path 
 
 
 def _run(args) -> dict:
-    case, texture_size, sim, keep = args
-    return check_case(case, texture_size, sim, keep)
+    case, texture_size, sim, keep, tmp_root = args
+    return check_case(case, texture_size, sim, keep, tmp_root)
 
 
 def _init_worker() -> None:
     from .batch import _die_with_parent
 
     _die_with_parent()
+
+
+def _in_pools(cases: list[Case], workers: int, settings: tuple, note) -> None:
+    """Every case on a pool of ``workers``; a worker that dies counts its case as a crash and a fresh pool
+    goes on. The workers' temporary folders are made inside one of this process, removed at the end, and
+    on SIGTERM or Ctrl-C the workers are stopped at once (the queued cases are not run)."""
+    from .batch import _stop_pool
+
+    run_tmp = Path(tempfile.mkdtemp(prefix="infmob-fuzz-run-"))
+    i, n = 0, len(cases)
+    try:
+        while i < n:
+            pool = ProcessPoolExecutor(max_workers=min(workers, n - i), initializer=_init_worker)
+            try:
+                futures = [pool.submit(_run, (case, *settings, run_tmp)) for case in cases[i:]]
+                for fut in futures:
+                    try:
+                        res = fut.result()
+                    except Exception as e:  # noqa: BLE001 - BrokenProcessPool: a worker died
+                        note(i, cases[i], {"outcome": "crash", "detail": f"worker died: {type(e).__name__}: {e}"})
+                        i += 1
+                        break
+                    note(i, cases[i], res)
+                    i += 1
+            except BaseException:
+                _stop_pool(pool)
+                raise
+            pool.shutdown(wait=True)
+    finally:
+        shutil.rmtree(run_tmp, ignore_errors=True)
 
 
 def fuzz(n: int, seed: int = 0, workers: int = 1, categories: list[str] | None = None, out: Path | None = None,
@@ -143,19 +175,7 @@ def fuzz(n: int, seed: int = 0, workers: int = 1, categories: list[str] | None =
         for i, case in enumerate(cases):
             note(i, case, check_case(case, texture_size, sim, out))
     else:
-        i = 0
-        while i < n:
-            with ProcessPoolExecutor(max_workers=min(workers, n - i), initializer=_init_worker) as pool:
-                futures = [pool.submit(_run, (case, texture_size, sim, out)) for case in cases[i:]]
-                for fut in futures:
-                    try:
-                        res = fut.result()
-                    except Exception as e:  # noqa: BLE001 - BrokenProcessPool: a worker died
-                        note(i, cases[i], {"outcome": "crash", "detail": f"worker died: {type(e).__name__}: {e}"})
-                        i += 1
-                        break
-                    note(i, cases[i], res)
-                    i += 1
+        _in_pools(cases, workers, (texture_size, sim, out), note)
     seconds = time.perf_counter() - t0
     res = {"draws": n, "valid": counts["valid"], "rejected": counts["rejected"], "crashes": counts["crash"],
            "invalid": counts["invalid"], "seconds": round(seconds, 1), "failures": failures}

@@ -25,12 +25,14 @@ shows a placeholder.
 from __future__ import annotations
 
 import base64
+import contextlib
 import hashlib
 import http.server
 import json
 import os
 import posixpath
 import re
+import shutil
 import stat
 import sys
 import time
@@ -481,7 +483,48 @@ def build_gallery(root: str | Path, out: str | Path | None = None, render: bool 
     folders = [f for f in find_object_folders(root) if os.path.realpath(f) != os.path.realpath(site)]
     if not folders:
         raise GalleryError(f"no object folders (with metadata.json) under {root}: run `infmob generate` first")
+    before, had_index = _site_entries(site), os.path.lexists(index_html)
     _make_writable(site)
+    try:
+        return _build(root, folders, index_html, site, render, max_pairs, log, t0)
+    except BaseException:  # SIGTERM, Ctrl-C, a full disk: no half-built site is left
+        _remove_new(site, before)
+        if not had_index and os.path.lexists(index_html) and not os.path.isdir(index_html):
+            index_html.unlink(missing_ok=True)
+        raise
+
+
+def _site_entries(site: Path) -> set[str] | None:
+    """The paths under ``site`` before a build; None when the site does not exist yet."""
+    if not os.path.lexists(site):
+        return None
+    found: set[str] = set()
+    for top, dirs, files in os.walk(site):  # links are not followed
+        found.update(os.path.join(top, n) for n in dirs + files)
+    return found
+
+
+def _remove_new(site: Path, before: set[str] | None) -> None:
+    """Remove what an interrupted build added under ``site``: the whole site if it created it, else only the
+    new entries (the user's files and an older site's files stay)."""
+    if before is None:
+        shutil.rmtree(site, ignore_errors=True)
+        return
+    for top, dirs, files in os.walk(site, topdown=False):
+        for n in files + dirs:
+            p = os.path.join(top, n)
+            if p in before:
+                continue
+            if os.path.isdir(p) and not os.path.islink(p):
+                shutil.rmtree(p, ignore_errors=True)
+            else:
+                with contextlib.suppress(OSError):
+                    os.unlink(p)
+
+
+def _build(root: Path, folders: list[Path], index_html: Path, site: Path, render: bool, max_pairs: int, log,
+           t0: float) -> dict:
+    """:func:`build_gallery` once the site folder is known writable."""
     t_find = time.perf_counter() - t0
     data, objdir, texdir, thumbdir, assets = (site / "data", site / "data" / "obj", site / "data" / "tex",
                                               site / "thumbs", site / "assets")
