@@ -15,7 +15,7 @@
 """
 
 from .clearance import ALL_FRACTIONS, clearance_limits, limit_to_clearance
-from .gaps import ensure_gaps, gap_size
+from .gaps import MIN_HULL_WIDTH, ensure_gaps, gap_size, thicken_hulls
 from .ground import GROUND_TOL, limit_to_ground, rest_on_ground
 from .hulls import CLEARANCE, CONTACT_VOLUME
 from .passive import DYNAMICS, Dynamics, dynamics
@@ -26,5 +26,5 @@ __all__ = [
     "ALL_FRACTIONS", "BALANCED", "CLEARANCE", "CONTACT_VOLUME", "DYNAMICS", "Dynamics", "GRAVITY",
     "GROUND_TOL", "HEEL_SECTION", "PARENT_GROWTH", "SWEEP_SAGITTA", "clearance_limits", "dynamics",
     "ensure_gaps", "gap_size", "gravity_torque", "limit_to_clearance", "limit_to_ground", "rest_on_ground",
-    "rest_on_stops",
+    "rest_on_stops", "MIN_HULL_WIDTH", "thicken_hulls",
 ]

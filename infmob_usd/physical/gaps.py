@@ -150,3 +150,50 @@ def ensure_gaps(links, joints) -> list:
         if pieces is not None:
             new_pieces[child.name] = pieces
     return [replace(link, pieces=new_pieces[link.name]) if link.name in new_pieces else link for link in links]
+
+
+MIN_HULL_WIDTH = 1.5e-3
+"""m; the thinnest a collision hull may be. PhysX merges hull faces closer than its cooking plane
+tolerance (``PxCookingParams::planeTolerance``, 0.0007 m at unit scale): a thinner hull (a 0.3 mm sheet
+of a pasta insert's wall) cooks into a degenerate one that reports centimetres of penetration against
+a shape it does not touch, and the part is thrown off its seat at rest. Twice the tolerance, with margin."""
+
+
+def _thickened(c: np.ndarray, hull: tuple) -> tuple | None:
+    """Convex piece ``c`` and its hull mesh stretched about their mid-plane across their thinnest
+    direction (a face normal) to :data:`MIN_HULL_WIDTH`, again while another direction is thinner (a
+    curved sheet); None if already as wide."""
+    hull_v, hull_f = hull
+    changed = False
+    for _ in range(4):
+        normals = _face_normals(hull_v, hull_f)
+        if not len(normals):
+            break
+        proj = c @ normals.T
+        widths = proj.max(0) - proj.min(0)
+        k = int(np.argmin(widths))
+        width = float(widths[k])
+        if width >= MIN_HULL_WIDTH - 1e-12 or width <= 1e-9:  # a flat piece is refused elsewhere
+            break
+        n = normals[k]
+        mid = (proj[:, k].max() + proj[:, k].min()) / 2
+        # an affine stretch keeps a hull's faces and their outward order
+        c, hull_v = (p + np.outer((p @ n) - mid, n) * (MIN_HULL_WIDTH / width - 1.0) for p in (c, hull_v))
+        changed = True
+    return (c, hull_v, hull_f) if changed else None
+
+
+def thicken_hulls(links) -> list:
+    """New links whose collision hulls are each at least :data:`MIN_HULL_WIDTH` thick (visual meshes
+    unchanged); links with nothing thickened are returned as they are."""
+    out = []
+    for link in links:
+        pieces, changed = list(link.pieces), False
+        for n, piece in enumerate(link.pieces):
+            grown = {k: t for k, (c, h) in enumerate(zip(piece.convex, piece.hulls(), strict=True))
+                     if (t := _thickened(c, h)) is not None}
+            if grown:
+                pieces[n] = piece.with_convex(grown)
+                changed = True
+        out.append(replace(link, pieces=pieces) if changed else link)
+    return out
