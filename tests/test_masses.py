@@ -182,3 +182,18 @@ def test_sweep_mass_failures_are_fixed():
     for seed in (45, 47):
         lamp = infmob_usd.generate("lamp", seed=seed, texture_size=16)
         assert next(lk.mass for lk in lamp.links if lk.name == "head") > 1.2 * head.lo, seed
+
+
+@pytest.mark.parametrize("category, seed, end", [("plate_rack", 0, "high"), ("window", 1, "high")])
+def test_schema_extremes_of_real_products_pass_the_mass_check(category, seed, end, tmp_path):
+    """Every numeric parameter at one end of its range (as `infmob fuzz` draws them): a real product's mass.
+    The fullest plate rack (31.5 kg by the row's own figures) and the largest shuttered window (two 47 kg
+    full-height wood shutters) were outside their rows."""
+    from infmob_usd.api import get_category
+    from infmob_usd.params import Float, Int
+
+    overrides = {p.name: getattr(p, end) for p in get_category(category).schema.params
+                 if isinstance(p, (Float, Int))}
+    folder = infmob_usd.save(infmob_usd.generate(category, seed, texture_size=16, **overrides), tmp_path)
+    mass = {c.name: c for c in validate_object(folder, sim=False, mass=True).checks}["mass"]
+    assert mass.ok, mass.detail
