@@ -1,0 +1,271 @@
+"""The scene engine: a scene kind's grown tree is built by its layout, which makes objects and places them.
+
+A :class:`SceneLayout` subclass (one per scene kind, in ``categories/rooms/``) has one method per node kind
+of its grammar, as an object's layout does. It makes objects with :meth:`SceneLayout.make` (each a real
+generated object, measured once: its bounds at rest, the box each of its joints sweeps open, its support
+regions) and places them with :meth:`~SceneLayout.against` (back to a wall, front into the room),
+:meth:`~SceneLayout.at` (anywhere on the floor), :meth:`~SceneLayout.hang` (on a wall, above the floor) and
+:meth:`~SceneLayout.set_on` (on a support region of a placed object). Every placement is checked against
+what is already placed (rest boxes do not overlap; each joint's open box stays inside the room and clear of
+the others' rest boxes), so a layout tries alternatives and keeps what fits: what does not fit is dropped,
+never forced.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..grammar import Grown
+from ..supports import Region, support_regions
+from .room import Opening, Room, Wall, boxes_overlap, moved_box, pose_matrix
+
+WALL_GAP = 0.005  # m between an object's back and the wall (out of plumb walls: installers leave 3-10 mm)
+RUN_GAP = 0.003  # m between neighbours in a run (cabinet fitters' 2-3 mm joint)
+
+
+@dataclass
+class Made:
+    """One distinct generated object and what placement needs of it (object frame at rest)."""
+
+    key: str  # folder under objects/: unique per (category, seed, overrides)
+    category: str
+    seed: int
+    overrides: dict[str, Any]
+    obj: Any  # ArticulatedObject
+    lo: np.ndarray
+    hi: np.ndarray
+    swept: list[tuple[str, np.ndarray, np.ndarray]]  # (joint group, lo, hi): the whole object, that group open
+    regions: list[Region]
+
+    @property
+    def size(self) -> np.ndarray:
+        return self.hi - self.lo
+
+
+@dataclass
+class Placed:
+    id: str
+    made: Made
+    pose: np.ndarray  # (4, 4) object frame in the room frame
+    fixed: bool  # the root is fixed (furniture, hung units) or free (items set down)
+    on: str  # "floor", "wall:<name>", "<placed id>:<link>"
+    lo: np.ndarray = field(default=None)  # room-frame AABB at rest
+    hi: np.ndarray = field(default=None)
+
+    def __post_init__(self) -> None:
+        self.lo, self.hi = moved_box(self.made.lo, self.made.hi, self.pose)
+
+    def swept_boxes(self) -> list[tuple[str, np.ndarray, np.ndarray]]:
+        return [(g, *moved_box(lo, hi, self.pose)) for g, lo, hi in self.made.swept]
+
+    def region_in_room(self, region: Region) -> tuple[np.ndarray, np.ndarray]:
+        lo, hi = moved_box((*region.lo, region.z), (*region.hi, region.z), self.pose)
+        return lo, hi
+
+
+def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
+    lo, hi = obj.bounds()
+    local = {link.name: (np.array([p.bounds[0] for p in link.pieces]).min(0),
+                         np.array([p.bounds[1] for p in link.pieces]).max(0)) for link in obj.links if link.pieces}
+    groups: dict[str, dict[str, float]] = {}
+    for j in obj.movable_joints:
+        if math.isfinite(j.upper) and j.type != "continuous":
+            groups.setdefault(j.group, {})[j.name] = j.upper
+    swept = []
+    for group, q in sorted(groups.items()):
+        poses = obj.poses(q)
+        pts = np.vstack([moved_box(a, b, poses[name])[0:2] for name, (a, b) in local.items()])
+        swept.append((group, pts.min(0), pts.max(0)))
+    return lo, hi, swept
+
+
+class SceneLayout:
+    """Base of a scene kind's layout: object making and placing; the kind adds one method per node kind."""
+
+    def __init__(self, kind: str, params: dict, rng: np.random.Generator, objects_rng: np.random.Generator,
+                 texture_size: int) -> None:
+        self.kind, self.p, self.rng, self.objects_rng = kind, params, rng, objects_rng
+        self.texture_size = texture_size
+        self.room: Room | None = None
+        self.placed: list[Placed] = []
+        self._made: dict[tuple, Made] = {}
+        self._keys: set[str] = set()
+        self._built: list[str] = []
+
+    # -- the tree ---------------------------------------------------------------------------------------------
+    def run(self, tree: Grown) -> None:
+        self.grow(tree)
+
+    def grow(self, node: Grown, **slot: Any) -> Any:
+        self._built.append(node.path)
+        return getattr(self, node.kind)(node, **slot)
+
+    # -- objects ----------------------------------------------------------------------------------------------
+    def seed(self) -> int:
+        """A fresh object seed from the scene's objects stream (what :meth:`make` uses by default)."""
+        return int(self.objects_rng.integers(0, 10**9))
+
+    def make(self, category: str, seed: int | None = None, **overrides: Any) -> Made:
+        """Generate (once) the object ``category`` / ``seed`` / ``overrides`` and measure it. Objects that
+        must match (the cabinets of one kitchen) share a seed: the seed draws materials, so their
+        fronts and worktops are the same; their overrides make them different units."""
+        from ..api import generate
+
+        seed = self.seed() if seed is None else int(seed)
+        key = (category, seed, tuple(sorted(overrides.items())))
+        if key not in self._made:
+            obj = generate(category, seed, texture_size=self.texture_size, **overrides)
+            name, n = obj.name, 1
+            while name in self._keys:
+                n += 1
+                name = f"{obj.name}_v{n}"
+            self._keys.add(name)
+            lo, hi, swept = _measure(obj)
+            self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, support_regions(obj))
+        return self._made[key]
+
+    # -- placing ----------------------------------------------------------------------------------------------
+    def _id(self, made: Made) -> str:
+        n = sum(1 for p in self.placed if p.made.category == made.category)
+        return f"{made.category}_{n}"
+
+    def fits(self, cand: Placed, ignore: tuple[str, ...] = ()) -> bool:
+        """Whether ``cand`` can stand where it is: inside the room, its rest box clear of every placed
+        object's (but the ones it stands on), every joint's open box inside the room and clear of the
+        others' rest boxes, and theirs clear of its rest box."""
+        r, tol = self.room, 1e-3
+        if r is not None and (np.any(cand.lo[:2] < -tol) or cand.hi[0] > r.depth + tol or cand.hi[1] > r.width + tol
+                              or cand.hi[2] > r.height + tol):
+            return False
+        for other in self.placed:
+            if other.id in ignore:
+                continue
+            if boxes_overlap(cand.lo, cand.hi, other.lo, other.hi):
+                return False
+        return self._swing_clear(cand, ignore)
+
+    def _swing_clear(self, cand: Placed, ignore: tuple[str, ...], room: bool = True) -> bool:
+        r = self.room if room else None
+        for _, lo, hi in cand.swept_boxes():
+            if r is not None and (np.any(lo[:2] < -1e-3) or hi[0] > r.depth + 1e-3 or hi[1] > r.width + 1e-3):
+                return False
+            if any(boxes_overlap(lo, hi, o.lo, o.hi) for o in self.placed if o.id not in ignore):
+                return False
+        for other in self.placed:
+            if other.id in ignore or other.on.startswith(cand.id + ":"):
+                continue
+            for _, lo, hi in other.swept_boxes():
+                if boxes_overlap(lo, hi, cand.lo, cand.hi):
+                    return False
+        return True
+
+    def keep(self, cand: Placed, ignore: tuple[str, ...] = ()) -> Placed | None:
+        """Place ``cand`` if it :meth:`fits`; ``None`` (nothing placed) if it does not."""
+        if not self.fits(cand, ignore):
+            return None
+        self.placed.append(cand)
+        return cand
+
+    def against(self, made: Made, wall: Wall, s: float, z: float = 0.0, fixed: bool = True,
+                gap: float = WALL_GAP, check: bool = True) -> Placed | None:
+        """``made`` with its back to ``wall`` (``gap`` off it), its own Y from ``s`` along the wall, ``z`` up."""
+        position = wall.origin + wall.inward * (gap - made.lo[0]) + wall.along * (s - made.lo[1])
+        position = position + np.array([0.0, 0.0, z - made.lo[2]])
+        cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), fixed,
+                      "floor" if z <= 0 else f"wall:{wall.name}")
+        return self.keep(cand) if check else cand
+
+    def at(self, made: Made, xy, yaw: float, fixed: bool = True) -> Placed | None:
+        """``made`` standing on the floor with its frame's origin over ``xy`` (room frame), turned ``yaw``."""
+        cand = Placed(self._id(made), made, pose_matrix((xy[0], xy[1], -made.lo[2]), yaw), fixed, "floor")
+        return self.keep(cand)
+
+    def set_on(self, made: Made, host: Placed, rng: np.random.Generator, tries: int = 12,
+               prefer=None) -> Placed | None:
+        """``made`` set down (free) on a support region of ``host`` where it fits: the region big enough
+        for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits."""
+        size = made.size
+        regions = [g for g in host.made.regions if (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
+                   and (g.clear is None or g.clear > size[2] + 0.01)]
+        if prefer is not None:
+            regions = sorted(regions, key=prefer)
+        for region in regions[:3]:
+            for _ in range(tries):
+                u = rng.uniform(0, 1, 2)
+                lx = region.lo[0] - made.lo[0] + u[0] * (region.hi[0] - region.lo[0] - size[0])
+                ly = region.lo[1] - made.lo[1] + u[1] * (region.hi[1] - region.lo[1] - size[1])
+                local = np.array([lx, ly, region.z - made.lo[2] + 0.0005])
+                position = host.pose[:3, :3] @ local + host.pose[:3, 3]
+                yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
+                cand = Placed(self._id(made), made, pose_matrix(position, yaw), False, f"{host.id}:{region.link}")
+                if self.keep(cand, ignore=(host.id,)) is not None:
+                    return cand
+        return None
+
+
+class RoomLayout(SceneLayout):
+    """Helpers every room kind uses: runs of units along walls, openings filled by doors and windows, items
+    set down on what is placed, each trying alternatives and keeping what fits."""
+
+    FILLERS = (0.0, 0.025, 0.05, 0.075, 0.1)  # m: filler strips a fitter adds so a door clears its neighbour
+
+    def run_along(self, modules: list[Made], wall: Wall, start: float = 0.0, end: float | None = None,
+                  z: float = 0.0) -> list[tuple[Placed, float]]:
+        """Place ``modules`` side by side along ``wall`` from ``start`` (each after the last, with a filler
+        where a door would hit its neighbour); a module that fits nowhere before ``end`` is left out.
+        Returns ``(placed, s)`` of each placed module (``s`` along the wall)."""
+        end = wall.length if end is None else end
+        out, s = [], start
+        for made in modules:
+            shifts = [*self.FILLERS, *np.arange(0.15, 0.61, 0.05)]  # a filler, else a gap up to 0.6 m
+            for filler in shifts:
+                if s + filler + made.size[1] > end + 1e-9:
+                    break
+                got = self.against(made, wall, s + filler, z=z)
+                if got is not None:
+                    out.append((got, s + filler))
+                    s += filler + made.size[1] + RUN_GAP
+                    break
+        return out
+
+    @staticmethod
+    def run_length(modules: list[Made]) -> float:
+        return sum(m.size[1] for m in modules) + RUN_GAP * max(len(modules) - 1, 0)
+
+    def embed(self, made: Made, wall: Wall, z: float = 0.0, rng: np.random.Generator | None = None,
+              margin: float = 0.1) -> Placed | None:
+        """``made`` (a door, a window) set into ``wall`` at a free spot: its frame centred in the wall's
+        thickness, ``z`` above the floor; the wall gets an opening its size. ``None`` if the wall has no
+        spot where its swing clears everything placed."""
+        root = made.obj.links[0]
+        r_lo = np.array([p.bounds[0] for p in root.pieces]).min(0) + root.origin
+        r_hi = np.array([p.bounds[1] for p in root.pieces]).max(0) + root.origin
+        depth = -(r_lo[0] + r_hi[0]) / 2 - self.room.wall_thickness / 2  # frame centre at mid-wall
+        spots = np.arange(margin, wall.length - made.size[1] - margin, 0.05)
+        if rng is not None:
+            spots = rng.permutation(spots)
+        lift = np.array([0.0, 0.0, z - made.lo[2]])
+        for s in spots:
+            position = wall.origin + wall.inward * depth + wall.along * (s - made.lo[1]) + lift
+            cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), True, f"wall:{wall.name}")
+            if any(boxes_overlap(cand.lo, cand.hi, o.lo, o.hi) for o in self.placed) \
+                    or not self._swing_clear(cand, (), room=False):
+                continue
+            self.placed.append(cand)
+            s0, z0 = float(s - made.lo[1]), float(z - made.lo[2])
+            self.room.openings.append(Opening(wall.name, s0 + float(r_lo[1]), s0 + float(r_hi[1]),
+                                              z0 + float(r_lo[2]), z0 + float(r_hi[2]), cand.id))
+            return cand
+        return None
+
+    def scatter(self, made: Made, hosts: list[Placed], rng: np.random.Generator, prefer=None) -> Placed | None:
+        """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it."""
+        for k in rng.permutation(len(hosts)):
+            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer)
+            if got is not None:
+                return got
+        return None
