@@ -25,6 +25,7 @@ from .room import Opening, Room, Wall, boxes_overlap, moved_box, pose_matrix
 
 WALL_GAP = 0.005  # m between an object's back and the wall (out of plumb walls: installers leave 3-10 mm)
 RUN_GAP = 0.003  # m between neighbours in a run (cabinet fitters' 2-3 mm joint)
+SET_DOWN = 0.0001  # m: an item is set this far above its support (a drop from higher makes its loose parts rattle)
 
 
 @dataclass
@@ -55,6 +56,7 @@ class Placed:
     on: str  # "floor", "wall:<name>", "<placed id>:<link>"
     lo: np.ndarray = field(default=None)  # room-frame AABB at rest
     hi: np.ndarray = field(default=None)
+    wall: str | None = None  # the wall its back is to (placed by ``against``)
 
     def __post_init__(self) -> None:
         self.lo, self.hi = moved_box(self.made.lo, self.made.hi, self.pose)
@@ -171,12 +173,15 @@ class SceneLayout:
         return cand
 
     def against(self, made: Made, wall: Wall, s: float, z: float = 0.0, fixed: bool = True,
-                gap: float = WALL_GAP, check: bool = True) -> Placed | None:
-        """``made`` with its back to ``wall`` (``gap`` off it), its own Y from ``s`` along the wall, ``z`` up."""
-        position = wall.origin + wall.inward * (gap - made.lo[0]) + wall.along * (s - made.lo[1])
-        position = position + np.array([0.0, 0.0, z - made.lo[2]])
-        cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), fixed,
-                      "floor" if z <= 0 else f"wall:{wall.name}")
+                gap: float = WALL_GAP, check: bool = True, turn: float = 0.0) -> Placed | None:
+        """``made`` with its back to ``wall`` (``gap`` off it), its own Y from ``s`` along the wall, ``z`` up.
+        ``turn``: an extra yaw (a multiple of 90 degrees) before it is set against the wall (a desk or a
+        table stands with its long side to the wall: ``turn`` 90 degrees puts its side there)."""
+        lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))
+        position = wall.origin + wall.inward * (gap - lo[0]) + wall.along * (s - lo[1])
+        position = position + np.array([0.0, 0.0, z - lo[2]])
+        cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw + turn), fixed,
+                      "floor" if z <= 0 else f"wall:{wall.name}", wall=wall.name)
         return self.keep(cand) if check else cand
 
     def at(self, made: Made, xy, yaw: float, fixed: bool = True) -> Placed | None:
@@ -185,7 +190,7 @@ class SceneLayout:
         return self.keep(cand)
 
     def set_on(self, made: Made, host: Placed, rng: np.random.Generator, tries: int = 12,
-               prefer=None) -> Placed | None:
+               prefer=None, fixed: bool = False) -> Placed | None:
         """``made`` set down (free) on a support region of ``host`` where it fits: the region big enough
         for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits."""
         size = made.size
@@ -198,10 +203,10 @@ class SceneLayout:
                 u = rng.uniform(0, 1, 2)
                 lx = region.lo[0] - made.lo[0] + u[0] * (region.hi[0] - region.lo[0] - size[0])
                 ly = region.lo[1] - made.lo[1] + u[1] * (region.hi[1] - region.lo[1] - size[1])
-                local = np.array([lx, ly, region.z - made.lo[2] + 0.0005])
+                local = np.array([lx, ly, region.z - made.lo[2] + SET_DOWN])
                 position = host.pose[:3, :3] @ local + host.pose[:3, 3]
                 yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
-                cand = Placed(self._id(made), made, pose_matrix(position, yaw), False, f"{host.id}:{region.link}")
+                cand = Placed(self._id(made), made, pose_matrix(position, yaw), fixed, f"{host.id}:{region.link}")
                 if self.keep(cand, ignore=(host.id,)) is not None:
                     return cand
         return None
@@ -229,6 +234,23 @@ class RoomLayout(SceneLayout):
                 if got is not None:
                     out.append((got, s + filler))
                     s += filler + made.size[1] + RUN_GAP
+                    break
+        return out
+
+    def run_back(self, modules: list[Made], wall: Wall, end: float, start: float = 0.0,
+                 z: float = 0.0) -> list[tuple[Placed, float]]:
+        """As :meth:`run_along`, but from ``end`` back towards ``start`` (a run that grows out of a corner:
+        its first module stands at the corner)."""
+        out, e = [], end
+        for made in modules:
+            for filler in [*self.FILLERS, *np.arange(0.15, 0.61, 0.05)]:
+                s = e - filler - made.size[1]
+                if s < start - 1e-9:
+                    break
+                got = self.against(made, wall, s, z=z)
+                if got is not None:
+                    out.append((got, s))
+                    e = s - RUN_GAP
                     break
         return out
 
@@ -262,10 +284,42 @@ class RoomLayout(SceneLayout):
             return cand
         return None
 
-    def scatter(self, made: Made, hosts: list[Placed], rng: np.random.Generator, prefer=None) -> Placed | None:
+    def scatter(self, made: Made, hosts: list[Placed], rng: np.random.Generator, prefer=None,
+                fixed: bool = False) -> Placed | None:
         """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it."""
         for k in rng.permutation(len(hosts)):
-            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer)
+            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer, fixed=fixed)
             if got is not None:
                 return got
         return None
+
+    def on_wall(self, made: Made, walls, rng: np.random.Generator, z: float = 0.0, step: float = 0.1,
+                fixed: bool = True, turn: float = 0.0) -> Placed | None:
+        """``made`` with its back to the first of ``walls`` that has a free spot for it (spots drawn);
+        ``turn`` as in :meth:`against`."""
+        width = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))[1][1] - \
+            moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))[0][1]
+        for gap in (WALL_GAP, 0.05, 0.1):  # furniture may stand a little off the wall (a skirting, a lid's swing)
+            for name in walls:
+                wall = self.room.wall(name)
+                for s in rng.permutation(np.arange(0.05, wall.length - width - 0.05, step)):
+                    got = self.against(made, wall, float(s), z=z, fixed=fixed, turn=turn, gap=gap)
+                    if got is not None:
+                        return got
+        return None
+
+    def on_floor(self, made: Made, rng: np.random.Generator, yaws=(0.0,), tries: int = 40, margin: float = 0.3,
+                 fixed: bool = True) -> Placed | None:
+        """``made`` standing free of the walls (``margin`` off them) at a drawn spot and turn."""
+        r = self.room
+        for _ in range(tries):
+            yaw = float(yaws[int(rng.integers(len(yaws)))])
+            xy = rng.uniform([margin, margin], [r.depth - margin, r.width - margin])
+            got = self.at(made, xy, yaw, fixed=fixed)
+            if got is not None:
+                return got
+        return None
+
+    def room_of(self, width: float, depth: float, height: float, wall: float) -> Room:
+        self.room = Room(round(width, 4), round(depth, 4), round(height, 4), wall)
+        return self.room
