@@ -127,7 +127,8 @@ def _rest(scene, contexts, duration: float = 2.0) -> tuple[list[str], str]:
         for oid, ctx in contexts.items():
             q = np.asarray(ctx.articulation.qpos, float)
             worst[oid] = np.maximum(worst[oid], np.abs(q - ctx.rest_qpos))
-            moved[oid] = max(moved[oid], float(np.linalg.norm(np.array(ctx.articulation.get_root_pose().p) - start[oid])))
+            root = np.array(ctx.articulation.get_root_pose().p)
+            moved[oid] = max(moved[oid], float(np.linalg.norm(root - start[oid])))
     problems = []
     for oid, ctx in contexts.items():
         for joint, d in zip(ctx.joints, worst[oid], strict=True):

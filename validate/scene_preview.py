@@ -29,7 +29,7 @@ def _pose(o: dict) -> np.ndarray:
 class _SceneOnStage:
     def __init__(self, folder: Path, rec: dict, fraction: float):
         stage = self.stage = _stage()
-        sapien = self.sapien = stage.sapien
+        self.sapien = stage.sapien
         if stage.owner is not None:
             stage.owner.close()
         self.entities, textures, files = [], {}, {}

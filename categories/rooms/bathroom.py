@@ -1,6 +1,7 @@
 """Bathroom: a toilet, a vanity unit with its basin and tap, a shelf, a door and a window, bottles on the shelf.
 
-The vanity is a kitchen_cabinet sink base at vanity height (0.85-0.9 m, "comfort height"; BS 6465-2 / NKBA bath guidelines give
+The vanity is a kitchen_cabinet sink base at vanity height (0.85-0.9 m, "comfort height"; BS 6465-2 / NKBA bath
+guidelines give
 0.76-0.86 m); the toilet keeps its clear floor space in front (NKBA bath guideline: 30 x 48 in, 0.76 x 1.22 m).
 """
 
@@ -58,7 +59,8 @@ class BathroomLayout(RoomLayout):
                     return
 
     def shelf(self, node):
-        rack = self.make("storage_rack", design="shelving", width=1.5, shelf_levels=4, shelf_depth=0.35, has_goods=False,
+        rack = self.make("storage_rack", design="shelving", width=1.5, shelf_levels=4, shelf_depth=0.35,
+                         has_goods=False,
                          shelf_spacing=round(float(self.rng.uniform(0.3, 0.4)), 3))
         got = self.on_wall(rack, self.rng.permutation(["north", "east", "south", "west"]), self.rng)
         if got is not None:

@@ -43,13 +43,16 @@ class DiningRoomLayout(RoomLayout):
     def table(self, node):
         table = self.make("dining_table")
         r = self.room
-        yaw = YAWS[int(self.rng.integers(2))] if abs(r.width - r.depth) < 0.3 else (0.0 if r.width > r.depth else 1.5708)
+        # its long axis (X) along the room's longer side
+        yaw = YAWS[int(self.rng.integers(2))] if abs(r.width - r.depth) < 0.3 else (YAWS[1] if r.width > r.depth else 0.0)
         # a dining table keeps a walkway round it (NKBA 36 in behind a seated diner)
-        self.table_at = self.at(table, (r.depth / 2, r.width / 2), yaw) or self.on_floor(table, self.rng, YAWS, margin=WALKWAY)
+        self.table_at = self.at(table, (r.depth / 2, r.width / 2), yaw) or self.on_floor(table, self.rng, YAWS,
+                                                                                         margin=WALKWAY)
 
     def sideboard(self, node):
         unit = self.make("kitchen_cabinet", design="base_run", width=round(float(self.rng.uniform(1.2, 1.8)), 3),
-                         base_height=round(float(self.rng.uniform(0.85, 0.9)), 3), stand_style="legs", door_angle=1.5708)
+                         base_height=round(float(self.rng.uniform(0.85, 0.9)), 3), stand_style="legs",
+                         door_angle=1.5708)
         self.sideboard_at = self.on_wall(unit, self.rng.permutation(["north", "east", "west", "south"]), self.rng)
 
     def tv(self, node):
