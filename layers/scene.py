@@ -44,6 +44,7 @@ def scene_record(s, folders: dict[str, str]) -> dict:
                         "category": p.made.category, "seed": p.made.seed,
                         "overrides": {k: v for k, v in sorted(p.made.overrides.items())},
                         "position": _r(p.pose[:3, 3]), "yaw": round(yaw, 6) + 0.0, "fixed": p.fixed, "on": p.on,
+                        "wall": p.wall,
                         "bounds": [_r(p.lo), _r(p.hi)]})
     return {"name": s.name, "kind": s.kind, "seed": s.seed, "version": __version__, "texture_size": s.texture_size,
             "parameters": {k: (round(v, 9) if isinstance(v, float) else v) for k, v in s.params.items()},

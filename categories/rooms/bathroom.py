@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
-from infmob_usd.scenes import SceneKind
+from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 
 from ._common import CEILING, WALL, door_in, window_in

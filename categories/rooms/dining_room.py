@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
-from infmob_usd.scenes import SceneKind
+from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 
 from ._common import CEILING, WALKWAY, WALL, YAWS, door_in, window_in
@@ -44,7 +44,8 @@ class DiningRoomLayout(RoomLayout):
         table = self.make("dining_table")
         r = self.room
         # its long axis (X) along the room's longer side
-        yaw = YAWS[int(self.rng.integers(2))] if abs(r.width - r.depth) < 0.3 else (YAWS[1] if r.width > r.depth else 0.0)
+        longer = YAWS[1] if r.width > r.depth else 0.0
+        yaw = YAWS[int(self.rng.integers(2))] if abs(r.width - r.depth) < 0.3 else longer
         # a dining table keeps a walkway round it (NKBA 36 in behind a seated diner)
         self.table_at = self.at(table, (r.depth / 2, r.width / 2), yaw) or self.on_floor(table, self.rng, YAWS,
                                                                                          margin=WALKWAY)
@@ -58,8 +59,7 @@ class DiningRoomLayout(RoomLayout):
     def tv(self, node):
         host = getattr(self, "sideboard_at", None)
         if host is not None:
-            self.set_on(self.make("tv", design="pedestal") if "design" in _params("tv") else self.make("tv"),
-                        host, self.rng, prefer=lambda g: -g.z)
+            self.set_on(self.make("tv"), host, self.rng, prefer=lambda g: -g.z)
 
     def lamp(self, node):
         lamp = self.make("lamp")
@@ -75,12 +75,6 @@ class DiningRoomLayout(RoomLayout):
         hosts = [h for h in (getattr(self, "table_at", None), getattr(self, "sideboard_at", None)) if h is not None]
         made = self.make(str(self.rng.choice(["bottle", "jar", "vase", "pot"])))
         self.scatter(made, hosts[:1] if self.rng.uniform() < 0.7 else hosts, self.rng, prefer=lambda g: -g.z)
-
-
-def _params(category: str) -> list[str]:
-    from infmob_usd.api import get_category
-
-    return get_category(category).schema.names
 
 
 KIND = SceneKind("dining_room", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, DiningRoomLayout)

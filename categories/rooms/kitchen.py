@@ -13,7 +13,7 @@ import math
 
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
-from infmob_usd.scenes import SceneKind
+from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 
 # NKBA Kitchen Planning Guidelines (2021): work aisle >= 42 in (1.07 m) for one cook, 48 in (1.22 m) for two;

@@ -10,7 +10,7 @@ import math
 
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
-from infmob_usd.scenes import SceneKind
+from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 
 from ._common import CEILING, WALL, YAWS, door_in, window_in

@@ -18,23 +18,9 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..grammar import Grammar
-from ..params import Schema
+from .kind import SceneKind
 from .layout import Made, Placed, SceneLayout
 from .room import Room
-
-
-@dataclass(frozen=True)
-class SceneKind:
-    name: str
-    doc: str
-    params: tuple
-    grammar: Grammar
-    layout: type
-
-    @property
-    def schema(self) -> Schema:
-        return Schema(tuple(self.params) + tuple(self.grammar.params()))
 
 
 @dataclass
@@ -89,14 +75,15 @@ def scene(kind: str, seed: int = 0, texture_size: int = 256, **overrides: Any) -
     ``texture_size``: edge of every object's texture maps (power of two, 16..4096; a room holds dozens
     of objects, so the default is smaller than an object's). ``overrides``: the kind's parameters
     (``infmob scene KIND --params``)."""
-    from ..api import check_texture_size
+    from ..api import check_texture_size, generate
 
     k = get_kind(kind)
     check_texture_size(texture_size)
     rng = scene_streams(kind, seed)
     params = k.schema.sample(rng["params"], overrides)
     tree = k.grammar.grow(params, rng["structure"])
-    layout: SceneLayout = k.layout(kind, k.grammar.resolve(params), rng["placement"], rng["objects"], texture_size)
+    layout: SceneLayout = k.layout(kind, k.grammar.resolve(params), rng["placement"], rng["objects"], texture_size,
+                                   generate)
     layout.run(tree)
     return Scene(kind, int(seed), params, k.schema.validate(overrides), layout.room, layout.placed, texture_size)
 

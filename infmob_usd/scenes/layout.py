@@ -89,9 +89,10 @@ class SceneLayout:
     """Base of a scene kind's layout: object making and placing; the kind adds one method per node kind."""
 
     def __init__(self, kind: str, params: dict, rng: np.random.Generator, objects_rng: np.random.Generator,
-                 texture_size: int) -> None:
+                 texture_size: int, generate) -> None:
+        """``generate``: ``(category, seed, texture_size=..., **overrides) -> ArticulatedObject`` (the API's)."""
         self.kind, self.p, self.rng, self.objects_rng = kind, params, rng, objects_rng
-        self.texture_size = texture_size
+        self.texture_size, self._generate = texture_size, generate
         self.room: Room | None = None
         self.placed: list[Placed] = []
         self._made: dict[tuple, Made] = {}
@@ -115,12 +116,10 @@ class SceneLayout:
         """Generate (once) the object ``category`` / ``seed`` / ``overrides`` and measure it. Objects that
         must match (the cabinets of one kitchen) share a seed: the seed draws materials, so their
         fronts and worktops are the same; their overrides make them different units."""
-        from ..api import generate
-
         seed = self.seed() if seed is None else int(seed)
         key = (category, seed, tuple(sorted(overrides.items())))
         if key not in self._made:
-            obj = generate(category, seed, texture_size=self.texture_size, **overrides)
+            obj = self._generate(category, seed, texture_size=self.texture_size, **overrides)
             name, n = obj.name, 1
             while name in self._keys:
                 n += 1
@@ -260,27 +259,41 @@ class RoomLayout(SceneLayout):
 
     def embed(self, made: Made, wall: Wall, z: float = 0.0, rng: np.random.Generator | None = None,
               margin: float = 0.1) -> Placed | None:
-        """``made`` (a door, a window) set into ``wall`` at a free spot: its frame centred in the wall's
-        thickness, ``z`` above the floor; the wall gets an opening its size. ``None`` if the wall has no
-        spot where its swing clears everything placed."""
-        root = made.obj.links[0]
-        r_lo = np.array([p.bounds[0] for p in root.pieces]).min(0) + root.origin
-        r_hi = np.array([p.bounds[1] for p in root.pieces]).max(0) + root.origin
-        depth = -(r_lo[0] + r_hi[0]) / 2 - self.room.wall_thickness / 2  # frame centre at mid-wall
+        """``made`` (a door, a window) set into ``wall`` at a free spot, ``z`` above the floor (lowered if its
+        head would come within 0.1 m of the ceiling); the wall gets an opening its size. ``None`` if the
+        wall has no spot where its swing clears everything placed.
+
+        A wall-set object is built round its own ``x = 0`` plane: the pieces that cross it (the frame, a
+        leaf in it) give the opening, centred in the wall's thickness; a part reaching past the opening
+        (a curtain rail, a barn door's leaf, a sill) stands in front of the wall, moving the object into
+        the room as far as that needs."""
+        boxes = [(p.bounds[0] + link.origin, p.bounds[1] + link.origin) for link in made.obj.links for p in link.pieces]
+        crossing = [(lo, hi) for lo, hi in boxes if lo[0] <= 1e-3 and hi[0] >= -1e-3]
+        if not crossing:
+            return None
+        o_lo, o_hi = np.min([b[0] for b in crossing], 0), np.max([b[1] for b in crossing], 0)
+        depth = -self.room.wall_thickness / 2
+        for lo, hi in boxes:
+            if (np.any(lo[1:] < o_lo[1:] - 1e-3) or np.any(hi[1:] > o_hi[1:] + 1e-3)) and (lo[0] + hi[0]) > 0:
+                depth = max(depth, 0.001 - float(lo[0]))
+        z = min(z, self.room.height - 0.1 - float(o_hi[2] - made.lo[2]))
+        if z < 0:
+            return None
         spots = np.arange(margin, wall.length - made.size[1] - margin, 0.05)
         if rng is not None:
             spots = rng.permutation(spots)
         lift = np.array([0.0, 0.0, z - made.lo[2]])
         for s in spots:
             position = wall.origin + wall.inward * depth + wall.along * (s - made.lo[1]) + lift
-            cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), True, f"wall:{wall.name}")
+            cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), True, f"wall:{wall.name}",
+                          wall=wall.name)
             if any(boxes_overlap(cand.lo, cand.hi, o.lo, o.hi) for o in self.placed) \
                     or not self._swing_clear(cand, (), room=False):
                 continue
             self.placed.append(cand)
             s0, z0 = float(s - made.lo[1]), float(z - made.lo[2])
-            self.room.openings.append(Opening(wall.name, s0 + float(r_lo[1]), s0 + float(r_hi[1]),
-                                              z0 + float(r_lo[2]), z0 + float(r_hi[2]), cand.id))
+            self.room.openings.append(Opening(wall.name, s0 + float(o_lo[1]), s0 + float(o_hi[1]),
+                                              z0 + float(o_lo[2]), z0 + float(o_hi[2]), cand.id))
             return cand
         return None
 
