@@ -18,7 +18,6 @@ from .posing import _forward_kinematics, _qpos_for, _read_object
 from .renderer import _wear_material
 from .studio import _look_at_matrix, _stage
 
-
 CORNERS = {("south", "east"): (1, 1), ("south", "west"): (1, 0), ("north", "east"): (0, 1), ("north", "west"): (0, 0)}
 
 
