@@ -63,8 +63,8 @@ def _top(points: np.ndarray) -> tuple[float, np.ndarray, np.ndarray] | None:
     lo, hi = top.min(0), top.max(0)
     if np.any(hi - lo < MIN_SIDE):
         return None
-    area = _polygon_area(top)
-    ratio = area / float(np.prod(hi - lo))
+    on_edges = np.all((np.abs(top - lo) < 1e-6) | (np.abs(top - hi) < 1e-6), axis=1)
+    ratio = 1.0 if on_edges.all() else _polygon_area(top) / float(np.prod(hi - lo))  # a box's top: its corners
     if ratio < 0.98:  # not a rectangle (a disc, a hexagon): the centred rectangle of the same area
         mid, half = (lo + hi) / 2, (hi - lo) / 2 * np.sqrt(max(ratio, 0.0)) * np.sqrt(0.5) * np.sqrt(2 / np.pi) * 2
         lo, hi = mid - half, mid + half
@@ -82,24 +82,25 @@ def _polygon_area(points: np.ndarray) -> float:
         return 0.0
 
 
-def _clear_above(z: float, lo: np.ndarray, hi: np.ndarray, hulls, skip: tuple[int, ...]) -> tuple[float | None, bool]:
-    """Free height over the rectangle, and whether a hull rises through too much of it."""
-    ceiling, area = None, float(np.prod(hi - lo))
-    for k, (_, pts) in enumerate(hulls):
-        if k in skip:
-            continue
-        h_lo, h_hi = pts.min(0), pts.max(0)
-        overlap = np.minimum(hi, h_hi[:2]) - np.maximum(lo, h_lo[:2])
-        if np.any(overlap <= 1e-4):
-            continue
-        if h_lo[2] >= z - 1e-3 and h_lo[2] < z + RESTING:  # standing on it: occupies part of it
-            if overlap[0] * overlap[1] > BLOCKING * area:
-                return None, True
-        elif h_lo[2] >= z - 1e-3:
-            ceiling = h_lo[2] if ceiling is None else min(ceiling, h_lo[2])
-        elif h_hi[2] > z + 1e-3 and overlap[0] * overlap[1] > BLOCKING * area:
-            return None, True
-    return (None if ceiling is None else float(ceiling - z)), False
+def _clear_above(z: float, lo: np.ndarray, hi: np.ndarray, boxes: tuple[np.ndarray, np.ndarray],
+                 skip: tuple[int, ...]) -> tuple[float | None, bool]:
+    """Free height over the rectangle, and whether a hull stands on or rises through too much of it
+    (``boxes``: every hull's ``(lo, hi)`` as two ``(n, 3)`` arrays)."""
+    h_lo, h_hi = boxes
+    overlap = np.minimum(hi, h_hi[:, :2]) - np.maximum(lo, h_lo[:, :2])
+    near = np.all(overlap > 1e-4, axis=1)
+    near[list(skip)] = False
+    if not near.any():
+        return None, False
+    area, share = float(np.prod(hi - lo)), overlap[:, 0] * overlap[:, 1]
+    bottom, top = h_lo[:, 2], h_hi[:, 2]
+    above = near & (bottom >= z - 1e-3)
+    resting = above & (bottom < z + RESTING)  # standing on it: occupies part of it
+    through = near & (bottom < z - 1e-3) & (top > z + 1e-3)
+    if np.any(share[resting | through] > BLOCKING * area):
+        return None, True
+    ceiling = bottom[above & ~resting]
+    return (float(ceiling.min() - z) if ceiling.size else None), False
 
 
 def _bars(hulls) -> list[tuple[str, np.ndarray, list[int]]]:
@@ -123,6 +124,8 @@ def support_regions(obj) -> list[Region]:
     """Every support region of ``obj`` (an :class:`~infmob_usd.model.ArticulatedObject`) at rest,
     highest first, then by position (a stable order)."""
     hulls = _hulls(obj)
+    boxes = (np.array([p.min(0) for _, p in hulls]).reshape(-1, 3),
+             np.array([p.max(0) for _, p in hulls]).reshape(-1, 3))
     out = []
     candidates = [(link, pts, (k,)) for k, (link, pts) in enumerate(hulls)] + _bars(hulls)
     for link, pts, own in candidates:
@@ -130,7 +133,7 @@ def support_regions(obj) -> list[Region]:
         if top is None:
             continue
         z, lo, hi = top
-        clear, blocked = _clear_above(z, lo, hi, hulls, own)
+        clear, blocked = _clear_above(z, lo, hi, boxes, own)
         if blocked or (clear is not None and clear < MIN_CLEAR):
             continue
         out.append(Region(link, z, (float(lo[0]), float(lo[1])), (float(hi[0]), float(hi[1])), clear))

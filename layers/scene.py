@@ -6,8 +6,9 @@
   (``objects/<key>/<name>/<name>.usda``) with its pose; an object standing free (an item set down) has its
   fixed ``root_joint`` disabled, so it rests on what carries it. An object placed twice is written once and
   referenced twice (the same layers: USD loads them once).
-* ``scene.json``: the room, and per object its folder, category, seed, overrides, pose, fixed or free and
-  what it stands on (the ``on`` field: ``floor``, ``wall:<name>`` or ``<id>:<link>``).
+* ``scene.json``: the room, and per object its folder, category, seed, overrides, pose, fixed or free,
+  what it stands on (the ``on`` field: ``floor``, ``wall:<name>`` or ``<id>:<link>``) and its support regions
+  (:mod:`infmob_usd.supports`, the object's frame at rest).
 * ``scene.xml``: MuJoCo, one model attaching every object's MJCF (``<attach>``, prefix ``<id>/``), the room
   as static boxes; a free object's root is a free joint.
 """
@@ -45,7 +46,8 @@ def scene_record(s, folders: dict[str, str]) -> dict:
                         "overrides": {k: v for k, v in sorted(p.made.overrides.items())},
                         "position": _r(p.pose[:3, 3]), "yaw": round(yaw, 6) + 0.0, "fixed": p.fixed, "on": p.on,
                         "wall": p.wall,
-                        "bounds": [_r(p.lo), _r(p.hi)]})
+                        "bounds": [_r(p.lo), _r(p.hi)],
+                        "supports": [g.as_dict() for g in p.made.regions]})
     return {"name": s.name, "kind": s.kind, "seed": s.seed, "version": __version__, "texture_size": s.texture_size,
             "parameters": {k: (round(v, 9) if isinstance(v, float) else v) for k, v in s.params.items()},
             "overrides": s.overrides,
