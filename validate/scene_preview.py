@@ -109,7 +109,8 @@ def render_scene(folder, width: int = 1024, height: int = 768, fraction: float =
         r = rec["room"]
         d, w, h = r["depth"], r["width"], r["height"]
         stage = on.stage
-        stage.configure(np.array([0.0, 0.0, 0.0]), np.array([d, w, h]))
+        # the studio's ground under the room's floor slab, not in its top face (they would z-fight)
+        stage.configure(np.array([0.0, 0.0, -r["wall_thickness"] - 0.01]), np.array([d, w, h]))
         target = np.array([d * 0.45, w * 0.45, 0.5])
         if view == "top":
             eye = np.array([d / 2 + 0.01, w / 2, max(d, w) * 1.6])
