@@ -43,9 +43,11 @@ class _SceneOnStage:
         if stage.owner is not None:
             stage.owner.close()
         self.entities, textures, files = [], {}, {}
-        for o in rec["objects"]:
-            if o.get("wall") in hidden:
-                continue  # against a cut-away wall: it would stand in the air
+        gone: set[str] = set()
+        for o in rec["objects"]:  # hosts come before what stands on them
+            if o.get("wall") in hidden or o["on"].split(":")[0] in gone:
+                gone.add(o["id"])
+                continue  # against a cut-away wall, or on something that is: it would stand in the air
             if o["folder"] not in files:
                 files[o["folder"]] = _read_object(folder / o["folder"])
             f = files[o["folder"]]

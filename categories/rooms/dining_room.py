@@ -62,7 +62,7 @@ class DiningRoomLayout(RoomLayout):
             self.set_on(self.make("tv"), host, self.rng, prefer=lambda g: -g.z)
 
     def lamp(self, node):
-        lamp = self.make("lamp")
+        lamp = self.make("lamp", lamp_type="floor")
         self.on_floor(lamp, self.rng, YAWS, margin=0.25)
 
     def door(self, node):

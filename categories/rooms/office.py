@@ -77,20 +77,25 @@ class OfficeLayout(RoomLayout):
     def screen(self, node):
         if self.desk_at is not None:
             self.set_on(self.make("tv", width=round(float(self.rng.uniform(0.6, 0.8)), 3)), self.desk_at, self.rng,
-                        prefer=lambda g: -g.area)
+                        prefer=lambda g: -g.area, yaw=self._facing())  # the screen faces the one sitting there
 
     def desk_lamp(self, node):
         if self.desk_at is not None:
-            self.set_on(self.make("lamp"), self.desk_at, self.rng, prefer=lambda g: -g.area)
+            lamp = self.make("lamp", lamp_type="desk", base_shape=str(self.rng.choice(["round", "square", "domed"])))
+            self.set_on(lamp, self.desk_at, self.rng, prefer=lambda g: -g.area, yaw=self._facing())
 
     def floor_lamp(self, node):
-        self.on_floor(self.make("lamp"), self.rng, YAWS, margin=0.25)
+        self.on_floor(self.make("lamp", lamp_type="floor"), self.rng, YAWS, margin=0.25)
 
     def door(self, node):
         door_in(self)
 
     def window(self, node):
         window_in(self)
+
+    def _facing(self) -> float | None:
+        """The yaw that turns an item on the desk to face the room (the desk's wall's inward normal)."""
+        return self.room.wall(self.desk_at.wall).yaw if self.desk_at is not None and self.desk_at.wall else None
 
     def desk_item(self, node):
         if self.desk_at is not None:

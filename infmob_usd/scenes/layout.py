@@ -189,10 +189,14 @@ class SceneLayout:
         return self.keep(cand)
 
     def set_on(self, made: Made, host: Placed, rng: np.random.Generator, tries: int = 12,
-               prefer=None, fixed: bool = False) -> Placed | None:
+               prefer=None, fixed: bool = False, yaw: float | None = None) -> Placed | None:
         """``made`` set down (free) on a support region of ``host`` where it fits: the region big enough
-        for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits."""
-        size = made.size
+        for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits.
+        ``yaw``: which way its front faces (default: as the host's); a multiple of 90 degrees from the host's."""
+        host_yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
+        turn = 0.0 if yaw is None else yaw - host_yaw
+        lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))  # its box in the host's axes
+        size = hi - lo
         regions = [g for g in host.made.regions if (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
                    and (g.clear is None or g.clear > size[2] + 0.01)]
         if prefer is not None:
@@ -200,12 +204,12 @@ class SceneLayout:
         for region in regions[:3]:
             for _ in range(tries):
                 u = rng.uniform(0, 1, 2)
-                lx = region.lo[0] - made.lo[0] + u[0] * (region.hi[0] - region.lo[0] - size[0])
-                ly = region.lo[1] - made.lo[1] + u[1] * (region.hi[1] - region.lo[1] - size[1])
-                local = np.array([lx, ly, region.z - made.lo[2] + SET_DOWN])
+                lx = region.lo[0] - lo[0] + u[0] * (region.hi[0] - region.lo[0] - size[0])
+                ly = region.lo[1] - lo[1] + u[1] * (region.hi[1] - region.lo[1] - size[1])
+                local = np.array([lx, ly, region.z - lo[2] + SET_DOWN])
                 position = host.pose[:3, :3] @ local + host.pose[:3, 3]
-                yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
-                cand = Placed(self._id(made), made, pose_matrix(position, yaw), fixed, f"{host.id}:{region.link}")
+                cand = Placed(self._id(made), made, pose_matrix(position, host_yaw + turn), fixed,
+                              f"{host.id}:{region.link}")
                 if self.keep(cand, ignore=(host.id,)) is not None:
                     return cand
         return None
