@@ -15,12 +15,13 @@ Parts: ``categories/parts/refrigerators.py`` (layout), ``fridges.py`` and ``appl
 
 from __future__ import annotations
 
-from infmob_usd.category import Category, Same
-from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.category import Category
+from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float, Int
 
 from .parts import appliance as A
+from .parts import controls
 from .parts import fridges as FR
 from .parts import refrigerators as RF
 
@@ -37,18 +38,24 @@ GRAMMAR = Grammar("refrigerator", {
     # most common, bottom freezer the European norm (Bosch, Liebherr 60 cm combis)
     "refrigerator": Node(label="body", one_of={"top_freezer": 0.3, "bottom_freezer": 0.25, "french_door": 0.25,
                                                "side_by_side": 0.2}, choice="design"),
-    "top_freezer": Node(required=("door", "freezer_door", "shelves", "crispers", "freezer_shelves")),
-    "bottom_freezer": Node(required=("door", "shelves", "crispers", "freezer_drawer")),
+    # a deli drawer over the crispers on about half of the models with one fridge door (Whirlpool WRT318FZDW,
+    # LG LRFVS3006S have one; Bosch KGN36 has none)
+    "top_freezer": Node(required=("door", "freezer_door", "shelves", "crispers", "freezer_shelves"),
+                        optional={"deli_drawer": 0.5}),
+    "bottom_freezer": Node(required=("door", "shelves", "crispers", "freezer_drawers"), optional={"deli_drawer": 0.5}),
     # dispensers: most side-by-sides and many French-door models (GE GSS25, Samsung RF28 / RS27 ranges)
-    "french_door": Node(required=("door", "right_door", "fixed_shelves", "crispers", "freezer_drawer"),
+    "french_door": Node(required=("door", "right_door", "fixed_shelves", "crispers", "freezer_drawers"),
                         optional={"dispenser": 0.5}),
     "side_by_side": Node(required=("door", "freezer_door", "shelves", "crispers", "freezer_shelves"),
-                         optional={"dispenser": 0.5}),
+                         optional={"dispenser": 0.5, "deli_drawer": 0.5}, repeat={"freezer_basket": "basket_count"}),
+    "freezer_basket": Node(label="basket"),
     "door": Node(label="door", repeat={"door_bin": "bin_count"}),
     "right_door": Node(label="door", repeat={"door_bin": "bin_count"}),
     "freezer_door": Node(label="door", repeat={"door_bin": "bin_count"}),
     "door_bin": Node(),
+    "freezer_drawers": Node(repeat={"freezer_drawer": "freezer_drawer_count"}),
     "freezer_drawer": Node(label="drawer"),
+    "deli_drawer": Node(label="drawer"),
     "shelves": Node(repeat={"shelf": "shelf_count"}),
     "fixed_shelves": Node(repeat={"fixed_shelf": "shelf_count"}),
     "shelf": Node(label="shelf"), "fixed_shelf": Node(label="shelf"),
@@ -56,7 +63,8 @@ GRAMMAR = Grammar("refrigerator", {
     "freezer_shelf": Node(label="rack"),
     "crispers": Node(repeat={"crisper": crisper_count}),
     "crisper": Node(label="drawer"),
-    "dispenser": Node(required=("paddle",)),
+    "dispenser": Node(required=("paddle",), repeat={"key": "key_count"}),
+    "key": Node(label="button"),
     "paddle": Node(label="lever"),
 })
 """Designs (``design``): ``top_freezer`` (a freezer door over the fridge door, both hinged on
@@ -66,7 +74,7 @@ each door); ``side_by_side`` (freezer left, fridge right, full-height doors). A 
 recess in the left fridge door (French door) or the freezer door (side-by-side) with a sprung paddle."""
 
 PARAMS = (
-    Float("width", "overall width (Y)", "m", *R["width"]),
+    Float("width", "overall width (Y); a side-by-side maps it onto 0.83-0.91 m", "m", *R["width"]),
     Float("depth", "overall depth incl. the doors, excl. the handles (X)", "m", *R["depth"]),
     Float("height", "overall height incl. the feet (Z)", "m", *R["height"]),
     Float("wall", "insulated wall thickness", "m", *R["wall"]),
@@ -79,11 +87,18 @@ PARAMS = (
     Choice("hinge_side", "hinge side of a single fridge door (and a top freezer's door), seen from the front",
            choices=("left", "right")),
     Float("handle_length", "door handle length as a fraction of its door's height", "", *R["handle_length"]),
-    Int("shelf_count", "glass shelves in the fresh-food zone, over the crispers", "", 2, 4),
+    Int("shelf_count", "glass shelves in the fresh-food zone, over the crispers", "", 2, 5),
     Float("shelf_travel", "a slide-out shelf's travel as a fraction of its depth", "", *R["shelf_travel"]),
     Int("crisper_count", "crisper drawers side by side (a French-door fridge: one per door)", "", 1, 2),
     Int("freezer_shelf_count", "wire shelves in a freezer zone behind a door", "", 1, 3),
+    # one pull-out freezer drawer (Whirlpool WRB322, Samsung RF28R7351SR) or two stacked (LG LMXS28596S
+    # four-door, GE Profile PFE28 lower drawers)
+    Int("freezer_drawer_count", "stacked freezer drawers (bottom freezer, French door)", "", 1, 2),
     Int("bin_count", "door bins on each door's liner", "", 2, 4),
+    # selector keys over a dispenser: ice / water (GE GSS25), + light and lock (Samsung RF28R7351SR)
+    Int("key_count", "selector keys over the dispenser (has_dispenser)", "", 2, 4),
+    # GE GSS25GSHSS: 2 freezer baskets under the shelves; Samsung RS27T5200: 1; some none (Frigidaire FFSS2615)
+    Int("basket_count", "slide-out baskets at the bottom of a side-by-side's freezer", "", 0, 2),
     Float("drawer_travel", "a freezer drawer's travel as a fraction of its basket's depth", "", *R["drawer_travel"]),
     Choice("body_finish", "cabinet and door skin", choices=("painted", "brushed_metal"), weights=(0.45, 0.55)),
     Choice("handle_finish", "door handle material", choices=("brushed_metal", "chrome", "plastic"),
@@ -95,22 +110,24 @@ MATERIALS = {
     "handle": ("handle_finish", {"plastic": "plastic:black|dark_grey"}), "trim": "plastic:white|light_grey|dark_grey",
     "wire": "chrome", "grille": "plastic:black|dark_grey", "feet": "rubber", "gasket": "rubber",
     "bin": "plastic:white|light_grey", "display": "plastic:black|dark_grey", "paddle": "plastic:black|dark_grey",
+    "button": "plastic:black|dark_grey|light_grey",
 }
 SUBSTRATES = {"body": ("body_finish", {"painted": A.STEEL})}  # a painted cabinet is painted steel sheet
 
 
 def frame_family(p: dict) -> dict:
-    """The door skins are the cabinet's finish (massed as steel sheet by :func:`.fridges.solid_door`)."""
+    """The door skins are the cabinet's finish, in its slot (:func:`.parts.refrigerators.skinned`)."""
     return {**p, "frame_family": p["body_finish"]}
 
 
-class RefrigeratorLayout(Layout):
+class RefrigeratorLayout(controls.ControlFace):
     def refrigerator(self, node):
         p = self.p
         design = node.choice
         share = p["freezer_width"] if design == "side_by_side" else p["freezer_share"]
-        cab = RF.cabinet(design, p["width"], p["depth"], p["height"], p["wall"], p["door_thickness"],
-                         p["feet_height"], p["kick_height"], share)
+        cab = RF.cabinet(design, *A.size(p, design, RF.SIZES), p["wall"], p["door_thickness"], p["feet_height"],
+                         p["kick_height"], share)
+        self.width = cab.width
         self.add("body", "body", cab.pieces)
         self.grow(node.one(design), cab=cab)
 
@@ -124,7 +141,7 @@ class RefrigeratorLayout(Layout):
     def bottom_freezer(self, node, cab):
         self.grow(node.one("door"), door=RF.handed(cab.doors["door"], self.p["hinge_side"] == "left"))
         self._fresh(node, cab.fridge, "door")
-        self.grow(node.one("freezer_drawer"), front=cab.drawer, zone=cab.freezer)
+        self.grow(node.one("freezer_drawers"), front=cab.drawer, zone=cab.freezer)
 
     def french_door(self, node, cab):
         dispenser = node.one("dispenser")
@@ -133,25 +150,43 @@ class RefrigeratorLayout(Layout):
         fit = self._levels(cab.fridge, len(node.one("fixed_shelves").of("fixed_shelf")))
         self.grow(node.one("fixed_shelves"), zone=cab.fridge, fit=fit)
         self.grow(node.one("crispers"), zone=cab.fridge, fit=fit, doors=("door", "right_door"))
-        self.grow(node.one("freezer_drawer"), front=cab.drawer, zone=cab.freezer)
+        self.grow(node.one("freezer_drawers"), front=cab.drawer, zone=cab.freezer)
 
     def side_by_side(self, node, cab):
         self.grow(node.one("door"), door=cab.doors["door"])
         self.grow(node.one("freezer_door"), door=cab.doors["freezer_door"], dispenser=node.one("dispenser"))
         self._fresh(node, cab.fridge, "door")
-        self.grow(node.one("freezer_shelves"), zone=cab.freezer, door="freezer_door")
+        baskets = node.of("freezer_basket")
+        self.grow(node.one("freezer_shelves"), zone=cab.freezer, door="freezer_door", baskets=len(baskets))
+        for k, kid in enumerate(baskets):
+            self.grow(kid, k=k, zone=cab.freezer)
+
+    def freezer_basket(self, node, k, zone):
+        """A slide-out freezer basket (moulded bin with a front), only with the freezer door open."""
+        fit = self._levels(zone, 1, over_crispers=False)
+        pieces, at, travel = FR.crisper(zone.xs, (fit["yc"] - fit["ry"], fit["yc"] + fit["ry"]),
+                                        RF.basket_zs(zone.cav, k))
+        name = self.add(f"freezer_basket_{k}", "basket",
+                        [pc.replace(material="bin") if pc.material == "glass" else pc for pc in pieces])
+        self.slide("body", name, at, upper=travel, requires_open="freezer_door")
 
     def _fresh(self, node, zone, door):
-        """Slide-out shelves over the crispers of the fresh-food zone behind ``door``."""
-        fit = self._levels(zone, len(node.one("shelves").of("shelf")))
+        """Slide-out shelves over the crispers (and a deli drawer) of the fresh-food zone behind ``door``."""
+        deli = node.one("deli_drawer")
+        fit = self._levels(zone, len(node.one("shelves").of("shelf")), deli=bool(deli))
         self.grow(node.one("shelves"), zone=zone, fit=fit, door=door)
         self.grow(node.one("crispers"), zone=zone, fit=fit, doors=(door,))
+        if deli:
+            self.grow(deli, zone=zone, fit=fit, door=door)
 
-    def _levels(self, zone, n, over_crispers=True):
-        """Shelf levels with their ledge rails (:func:`.fridges.rack_levels`) over the crispers."""
+    def _levels(self, zone, n, over_crispers=True, deli=False):
+        """Shelf levels with their ledge rails (:func:`.fridges.rack_levels`) over the crispers (and the deli
+        drawer)."""
         cav = FR.over_crispers(zone.cav, zone.cav[5]) if over_crispers else zone.cav
+        if deli:
+            cav = (*cav[:4], RF.deli_zs(zone.cav)[1] + FR.F["crisper"]["over"], cav[5])
         hole = (*cav[2:5], cav[5] + FR.F["racks"]["under_glass"])
-        return FR.rack_levels(n, cav, hole, zone.xs, self.p["width"], self.p["door_thickness"], zone.margin)
+        return FR.rack_levels(n, cav, hole, zone.xs, self.width, self.p["door_thickness"], zone.margin)
 
     # -- doors ----------------------------------------------------------------------------------------------
     def door(self, node, door, dispenser=None):
@@ -166,10 +201,8 @@ class RefrigeratorLayout(Layout):
     def _door(self, node, door, name, dispenser):
         """An insulated door hinged on its outer side, its bar handle on the free edge, its bins."""
         p = self.p
-        if dispenser:
-            pieces, paddle, at, push = RF.dispenser_door(door, p["frame_family"])
-        else:
-            pieces = FR.solid_door(door.box, p["frame_family"])
+        made = RF.dispenser_door(door, p["frame_family"], len(dispenser.of("key"))) if dispenser else None
+        pieces = made.pieces if made else RF.skinned(FR.solid_door(door.box, p["frame_family"]))
         self.add(name, "door", pieces)
         self.hinge("body", name, door.hinge, upper=RF.DOOR_OPENS)
         self.extend(name, RF.bar(*RF.handle_at(door.box, door.left, p["handle_length"])))
@@ -177,23 +210,40 @@ class RefrigeratorLayout(Layout):
         for kid, pieces in zip(kids, RF.bins(door, len(kids)), strict=True):
             self.grow(kid, door=name, pieces=pieces)
         if dispenser:
-            self.grow(dispenser, door=name, paddle=paddle, at=at, push=push)
+            self.grow(dispenser, door=name, made=made)
 
     def door_bin(self, node, door, pieces):
         """A door bin moulded into the door's liner: static, part of the door."""
         self.extend(door, pieces)
 
-    def dispenser(self, node, door, paddle, at, push):
-        self.grow(node.one("paddle"), door=door, pieces=paddle, at=at, push=push)
+    def dispenser(self, node, door, made):
+        self.grow(node.one("paddle"), door=door, pieces=made.paddle, at=made.hinge, push=made.push)
+        for k, (kid, at) in enumerate(zip(node.of("key"), made.keys, strict=True)):
+            self.grow(kid, k=k, door=door, at=at)
+
+    def key(self, node, k, door, at):
+        self.place_button(door, f"key_{k}", RF.KEY, at)
 
     def paddle(self, node, door, pieces, at, push):
         self.add("paddle", "lever", pieces)
         self.hinge(door, "paddle", at, upper=push, role="lever")
 
-    def freezer_drawer(self, node, front, zone):
+    def freezer_drawers(self, node, front, zone):
+        kids = node.of("freezer_drawer")
+        for k, (kid, (box, part)) in enumerate(zip(kids, RF.stacked(front, zone, len(kids)), strict=True)):
+            self.grow(kid, k=k, front=box, zone=part)
+
+    def freezer_drawer(self, node, k, front, zone):
+        """A freezer drawer: an insulated front with a bar handle carrying its basket, pulled out along +X."""
         pieces, at, travel = RF.freezer_drawer(front, zone, self.p["frame_family"], self.p["drawer_travel"])
-        self.add("freezer_drawer", "drawer", pieces + RF.bar(*RF.drawer_handle_at(front)))
-        self.slide("body", "freezer_drawer", at, upper=travel)
+        name = self.add(f"freezer_drawer_{k}", "drawer", pieces + RF.bar(*RF.drawer_handle_at(front)))
+        self.slide("body", name, at, upper=travel)
+
+    def deli_drawer(self, node, zone, fit, door):
+        """A shallow deli drawer across the zone over the crispers, pulled out only with its door open."""
+        pieces, at, travel = FR.crisper(zone.xs, (fit["yc"] - fit["ry"], fit["yc"] + fit["ry"]), RF.deli_zs(zone.cav))
+        self.add("deli_drawer", "drawer", pieces)
+        self.slide("body", "deli_drawer", at, upper=travel, requires_open=door)
 
     # -- shelves and drawers -----------------------------------------------------------------------------
     def shelves(self, node, zone, fit, door):
@@ -219,8 +269,9 @@ class RefrigeratorLayout(Layout):
     def _glass(self, xs, zb, fit):
         return [pc.translated((0.0, fit["yc"], 0.0)) for pc in A.glass_shelf(xs, fit["ry"], zb, fit["hr"])]
 
-    def freezer_shelves(self, node, zone, door):
+    def freezer_shelves(self, node, zone, door, baskets=0):
         kids = node.of("freezer_shelf")
+        zone = RF.Zone(RF.over_baskets(zone.cav, baskets), zone.xs, zone.margin)
         fit = self._levels(zone, len(kids), over_crispers=False)
         for k, (kid, (rails, zb)) in enumerate(zip(kids, fit["levels"], strict=True)):
             self.extend("body", rails)
@@ -248,5 +299,5 @@ class RefrigeratorLayout(Layout):
 
 
 CATEGORY = Category("refrigerator", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RefrigeratorLayout,
-                    {**MATERIALS, "frame": Same("body")}, substrates=SUBSTRATES, derive=frame_family,
+                    MATERIALS, substrates=SUBSTRATES, derive=frame_family,
                     palette=appliance)

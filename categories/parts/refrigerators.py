@@ -24,8 +24,8 @@ from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
 
 from . import appliance as A
+from . import controls, hardware
 from . import fridges as FR
-from . import hardware
 from .appliance_sizes import FRIDGE as F
 
 FULL = {
@@ -48,6 +48,9 @@ FULL = {
     "handle_length": (0.35, 0.6),  # door handle as a share of its door's height
     "shelf_travel": (0.3, 0.5),  # a slide-out shelf pulls out this share of its depth (Whirlpool SpillGuard)
     "drawer_travel": (0.6, 0.75),  # a freezer drawer opens this share of its basket's depth
+    # a deli / snack drawer over the crispers 80-100 mm tall (Whirlpool WRT318FZDW, LG LRFVS3006S "Glide
+    # N' Serve"); the shelves start over it
+    "deli": 0.09,
     "mullion": 0.05,  # insulated mullion between fresh-food and freezer zones
     "door_opens": math.radians(120),  # a full-size fridge door stops at 120-130 deg (installation guides)
     # tubular door handles of stainless fridges: ~25 mm bar standing 50 mm off the door on 20 mm posts
@@ -64,12 +67,25 @@ FULL = {
     # top, pushed in 8-9 deg by a glass and sprung back; a drip grille 12 mm tall on the recess floor
     "dispenser": {"width": 0.2, "height": 0.3, "depth": 0.03, "z": 1.05, "paddle": (0.045, 0.1, 0.005),
                   "pivot": (0.004, 0.03), "push": math.radians(8.5), "tray": 0.012, "tray_in": 0.002,
-                  "back": 0.003, "hinge_r": 0.004},
+                  "back": 0.003, "hinge_r": 0.004, "keys_over": 0.03},
     # hermetic compressors of full-size fridges weigh 8-11 kg (Embraco EMT/VEMY, Secop NLE data sheets)
     "compressor_kg": 9.0,
 }
 
 BAR = hardware.HandleSize(**FULL["bar"])
+SIDE_BY_SIDE_WIDTH = (0.83, 0.91)
+"""Side-by-side models are 33-36 in wide (GE GSS23 33 in, GE GSS25 / Samsung RS27T5200 35.75-36 in spec
+sheets): a narrower freezer door would hold no bins."""
+
+
+def _side_by_side(W, D, H):
+    lo, hi = SIDE_BY_SIDE_WIDTH
+    w0, w1 = FULL["width"]
+    return lo + (hi - lo) * (W - w0) / (w1 - w0), D, H
+
+
+SIZES = {"side_by_side": _side_by_side}
+"""Designs whose width is not the parameter's (:func:`~.appliance.size`)."""
 DOOR_OPENS = FULL["door_opens"]
 
 
@@ -103,6 +119,7 @@ class Cabinet:
     front box (None: a freezer door)."""
 
     pieces: list
+    width: float
     fridge: Zone
     freezer: Zone
     doors: dict = field(default_factory=dict)
@@ -137,7 +154,7 @@ def cabinet(design: str, W, D, H, wall, ft, feet, kick, share: float) -> Cabinet
         fz, fr = (*cav[:3], ys - m / 2, *cav[4:]), (*cav[:2], ys + m / 2, *cav[3:])
         doors = {"freezer_door": Door((x0, xf, y0, ys - gc / 2, zk + gap, H), True, (fz[2], fz[4], fz[3], fz[5])),
                  "door": Door((x0, xf, ys + gc / 2, y1, zk + gap, H), False, (fr[2], fr[4], fr[3], fr[5]))}
-        return Cabinet(pieces, _zone(fr, xb1, y1), _zone(fz, xb1, y0), doors)
+        return Cabinet(pieces, W, _zone(fr, xb1, y1), _zone(fz, xb1, y0), doors)
     top = design == "top_freezer"
     zs = cav[5] - share * (cav[5] - cav[4]) if top else cav[4] + share * (cav[5] - cav[4])
     pieces.append(_mullion([cav[0], cav[2], zs - m / 2], [xb1, cav[3], zs + m / 2]))
@@ -154,7 +171,7 @@ def cabinet(design: str, W, D, H, wall, ft, feet, kick, share: float) -> Cabinet
         doors = {"door": Door(fdoor, True, opening)}
     if top:
         doors["freezer_door"] = Door(zdoor, True, (fz[2], fz[4], fz[3], fz[5]))
-    return Cabinet(pieces, _zone(fr, xb1, y0), _zone(fz, xb1, y0), doors, None if top else zdoor)
+    return Cabinet(pieces, W, _zone(fr, xb1, y0), _zone(fz, xb1, y0), doors, None if top else zdoor)
 
 
 def _meeting_gap(ft: float, width: float) -> float:
@@ -192,21 +209,38 @@ def bar(at: Frame, length: float) -> list[g.Piece]:
     return list(h.parts[h.root].pieces)
 
 
+def skinned(pieces) -> list[g.Piece]:
+    """A door's or drawer front's pieces with the steel skin (:func:`.fridges.solid_door`'s ``frame`` pan) in
+    the cabinet's own ``body`` slot, so doors and cabinet are one finish, massed as steel sheet."""
+    return [pc.replace(material="body", sheet=A.FRIDGE_SHEET) if pc.material == "frame" else pc for pc in pieces]
+
+
 def bins(door: Door, n: int) -> list[list[g.Piece]]:
     """The pieces of ``n`` door bins moulded into a door's inner liner (static), clear of the opening as it
     swings (:func:`.fridges.door_bins`)."""
     return [FR.door_bin(s["xs"], s["ys"], s["zs"])[0] for s in FR.door_bins(n, door.box, door.opening, door.left)]
 
 
+def stacked(front, zone: Zone, n: int) -> list[tuple[tuple, Zone]]:
+    """``n`` freezer drawers stacked in the freezer zone, the top one first: each one's front box (the
+    freezer front split with a gap between) and the slice of the zone its basket takes."""
+    gap = F["gap"]
+    x0, x1, y0, y1, z0, z1 = front
+    cav = zone.cav
+    fh, ch = (z1 - z0 + gap) / n, (cav[5] - cav[4]) / n
+    return [((x0, x1, y0, y1, z1 - (k + 1) * fh + gap, z1 - k * fh),
+             Zone((*cav[:4], cav[5] - (k + 1) * ch, cav[5] - k * ch), zone.xs, zone.margin)) for k in range(n)]
+
+
 def freezer_drawer(front, zone: Zone, frame_family: str, travel: float) -> tuple[list[g.Piece], Frame, float]:
-    """A freezer drawer: an insulated front (:func:`.fridges.solid_door`) carrying an open basket in the
-    freezer zone; its pieces, slide frame (+X) and travel (``travel`` of the basket's depth)."""
+    """A freezer drawer: an insulated front (:func:`.fridges.solid_door`) carrying an open basket in its
+    slice of the freezer zone; its pieces, slide frame (+X) and travel (``travel`` of the basket's depth)."""
     b = FULL["basket"]
     cx0, _, cy0, cy1, cz0, cz1 = zone.cav
     xa, xb = cx0 + b["back"], front[0] - F["gap"]
     basket = A.open_bin((xa, xb), (cy0 + b["side"], cy1 - b["side"]), cz0 + b["floor"],
                         cz1 - b["under"] - cz0 - b["floor"], "bin", t=b["wall"])
-    pieces = FR.solid_door(front, frame_family) + basket
+    pieces = skinned(FR.solid_door(front, frame_family)) + basket
     return pieces, Frame.at((front[1], 0.0, front[4]), z=(1, 0, 0)), travel * (xb - xa)
 
 
@@ -217,16 +251,52 @@ def crisper_ys(n: int, yc: float, ry: float) -> list[tuple[float, float]]:
     return [(yc - ry + k * (w + s), yc - ry + k * (w + s) + w) for k in range(n)]
 
 
+def deli_zs(cav) -> tuple[float, float]:
+    """A deli drawer's bottom and top: a shallow drawer over the crispers (:data:`FULL` ``deli``)."""
+    z = FR.crisper_zs(cav)[1] + F["crisper"]["over"]
+    return z, z + FULL["deli"]
+
+
+def basket_zs(cav, k: int) -> tuple[float, float]:
+    """The ``k``-th freezer basket from the floor of a side-by-side's freezer zone: crisper-sized
+    (:data:`.appliance_sizes.FRIDGE` ``crisper``), stacked."""
+    z0, z1 = FR.crisper_zs(cav)
+    up = k * (F["crisper"]["height"] + F["crisper"]["over"])
+    return z0 + up, z1 + up
+
+
+def over_baskets(cav, n: int) -> tuple:
+    """The freezer zone the shelves share over ``n`` baskets."""
+    return (*cav[:4], cav[4] + n * (F["crisper"]["height"] + F["crisper"]["over"]), cav[5])
+
+
 def split_crispers(yc: float, ry: float) -> list[tuple[float, float]]:
     """A French-door fridge's two crispers, one behind each door (each opens with its own door)."""
     s = F["crisper"]["side"]
     return [(yc - ry, -s / 2), (s / 2, yc + ry)]
 
 
-def dispenser_door(door: Door, frame_family: str) -> tuple[list[g.Piece], list[g.Piece], Frame, float]:
+KEY = controls.Button(half=(0.012, 0.008), shape="rect", proud=0.003, travel=0.002)
+"""A dispenser's selector key (ice / water / light / lock: Samsung RF28R7351SR, GE GSS25 dispensers): a
+24 x 16 mm key pressing in 2 mm."""
+
+
+@dataclass(frozen=True)
+class Dispenser:
+    """A dispenser door's pieces, its paddle's pieces, hinge and push angle, and the anchors of its keys."""
+
+    pieces: list
+    paddle: list
+    hinge: Frame
+    push: float
+    keys: list
+
+
+def dispenser_door(door: Door, frame_family: str, keys: int) -> Dispenser:
     """A door with a water/ice dispenser: its pan cut by a recess (:data:`FULL` ``dispenser``) with a dark back
-    and a drip grille, centred across the door clear of its handle stile; the paddle hung under the recess
-    top; its hinge (about +Y: the paddle's foot swings in, -X) and push angle."""
+    and a drip grille, centred across the door clear of its handle stile, a row of ``keys`` selector keys over
+    it (each in its own hole); the paddle hung under the recess top, its hinge (about +Y: the paddle's foot
+    swings in, -X) and push angle."""
     d = FULL["dispenser"]
     x0, x1, y0, y1, z0, z1 = door.box
     st = FULL["stile"]
@@ -237,11 +307,17 @@ def dispenser_door(door: Door, frame_family: str) -> tuple[list[g.Piece], list[g
     pan = pieces[0]
     xp = x1 - FR.F["solid_door"]["pan"] * (x1 - x0)
     xr = x1 - d["depth"]
-    pieces[0] = g.panel([xp, y0, z0], [x1, y1, z1], "frame", "x", holes=[(ya, za, yb, zb)]).replace(sheet=pan.sheet)
+    zk = zb + d["keys_over"]
+    ks = [(ya + (k + 0.5) * d["width"] / keys, zk) for k in range(keys)]
+    cuts = [KEY.cutout("front", at) for at in ks]
+    holes = [(ya, za, yb, zb)] + [(c.lo[0], c.lo[1], c.hi[0], c.hi[1]) for c in cuts]
+    pieces[0] = g.panel([xp, y0, z0], [x1, y1, z1], "frame", "x", holes=holes).replace(sheet=pan.sheet)
+    pieces = skinned(pieces)
     pieces += [g.box_between([xr - d["back"], ya, za], [xr, yb, zb], "display"),
                g.box_between([xr, ya, za], [x1 - d["tray_in"], yb, za + d["tray"]], "grille")]
     (hw, ph, pt), (fx, down) = d["paddle"], d["pivot"]
     xa, zp = x1 - fx, zb - down
     paddle = [g.box_between([xa - pt, yc - hw, zp - ph], [xa, yc + hw, zp], "paddle", bevel=0.0015),
               g.cylinder([xa - pt / 2, yc - hw, zp], [xa - pt / 2, yc + hw, zp], d["hinge_r"], "paddle", 12)]
-    return pieces, paddle, Frame.at((xa - pt / 2, yc, zp), z=(0, 1, 0)), d["push"]
+    return Dispenser(pieces, paddle, Frame.at((xa - pt / 2, yc, zp), z=(0, 1, 0)), d["push"],
+                     [Frame.at((x1, y, z), z=(1, 0, 0), x=(0, 0, 1)) for y, z in ks])
