@@ -56,6 +56,8 @@ def _clean(x):
 WIKIDATA: dict[str, tuple[str, str]] = {
     "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
     "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
+    "stovetop": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
+                              " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
