@@ -104,6 +104,11 @@ class JointSpec:
     (:attr:`.model.Joint.requires_open`). ``None``: moves freely."""
     mimic: Mimic | None = None
     """The joint whose coordinate drives this one (:class:`Mimic`); ``None``: moves on its own."""
+    exclusive: bool = False
+    """A compound joint whose DoFs are alternative modes: each moves only while the others are at rest
+    (a tilt-and-turn sash's handle selects tilt or turn). Each written joint of the chain lists the
+    others as its ``excludes`` (:attr:`.model.Joint.excludes`); an open state opens the first mode,
+    parent side first (:func:`one_mode`)."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -118,6 +123,9 @@ class JointSpec:
         if self.mimic is not None and self.kind not in ("revolute", "prismatic"):
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} cannot follow another joint:"
                              " only a revolute or prismatic joint can be coupled")
+        if self.exclusive and len(self.dofs) < 2:
+            raise ModelError(f"{self.kind} joint {self.parent}->{self.child} has one DoF: only the modes of a"
+                             " compound joint can exclude each other")
 
     @property
     def movable(self) -> bool:
@@ -191,7 +199,28 @@ def limited_floating(parent: str, child: str, origin: V3, axes: tuple[V3, V3, V3
 
 def flip_revolute(parent: str, child: str, pivot0: V3, axis0: V3, turn0: tuple[float, float],
                   pivot1: V3, axis1: V3, turn1: tuple[float, float], role: str = "hinge",
-        requires_open: str | None = None) -> JointSpec:
-    """Two hinge lines in series (a towel ring, a folding lid)."""
+        requires_open: str | None = None, exclusive: bool = False) -> JointSpec:
+    """Two hinge lines in series (a towel ring, a folding lid); ``exclusive``: one at a time (a
+    tilt-and-turn sash turns or tilts, never both: :attr:`JointSpec.exclusive`)."""
     return JointSpec("flip_revolute", parent, child, (
-        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role, requires_open)
+        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role, requires_open,
+        exclusive=exclusive)
+
+
+def one_mode(q: dict[str, float], order: Sequence[str], excludes: dict[str, Sequence[str]],
+             rest: dict[str, float] | None = None) -> dict[str, float]:
+    """``q`` (joint name -> value) with the alternative modes of an exclusive joint
+    (:attr:`JointSpec.exclusive`) opened one at a time: walking ``order`` (parent side first), every
+    joint that an earlier joint off its rest value excludes is put back at rest (``rest``, default 0).
+    An open state of a tilt-and-turn sash is turned, not tilted and turned."""
+    rest = rest or {}
+    out = dict(q)
+    shut: set[str] = set()
+    for name in order:
+        if name in shut or out.get(name, rest.get(name, 0.0)) == rest.get(name, 0.0):
+            continue
+        for other in excludes.get(name, ()):
+            if other in out:
+                out[other] = rest.get(other, 0.0)
+            shut.add(other)
+    return out
