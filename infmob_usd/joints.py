@@ -109,6 +109,11 @@ class JointSpec:
     (a tilt-and-turn sash's handle selects tilt or turn). Each written joint of the chain lists the
     others as its ``excludes`` (:attr:`.model.Joint.excludes`); an open state opens the first mode,
     parent side first (:func:`one_mode`)."""
+    engagement: float | None = None
+    """A lift-off joint (role ``lift_off``): how far its seat guides the part (m: a peg's height for a mug
+    hung on it, a pocket's lip for a caddy standing in it); it is free, and its slides end, that far plus
+    :data:`~infmob_usd.lift_off.FREE` up (:func:`infmob_usd.lift_off.capped_joint`). ``None``: a hand's
+    lift, :data:`~infmob_usd.lift_off.LIFT_OFF`."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -123,6 +128,9 @@ class JointSpec:
         if self.mimic is not None and self.kind not in ("revolute", "prismatic"):
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} cannot follow another joint:"
                              " only a revolute or prismatic joint can be coupled")
+        if self.engagement is not None and (self.role != "lift_off" or not 0.0 < self.engagement < math.inf):
+            raise ModelError(f"joint {self.parent}->{self.child}: an engagement depth (got {self.engagement!r})"
+                             " is a positive length, declared on a role lift_off joint only")
         if self.exclusive and len(self.dofs) < 2:
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} has one DoF: only the modes of a"
                              " compound joint can exclude each other")
@@ -158,8 +166,10 @@ def continuous(parent: str, child: str, pivot: V3, axis: V3, role: str = "knob",
 
 def prismatic(parent: str, child: str, origin: V3, axis: V3, lower: float, upper: float,
               role: str = "slide",
-        requires_open: str | None = None) -> JointSpec:
-    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role, requires_open)
+        requires_open: str | None = None, engagement: float | None = None) -> JointSpec:
+    """A slide; ``engagement``: a lift-off part's seat depth (:attr:`JointSpec.engagement`)."""
+    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role, requires_open,
+                     engagement=engagement)
 
 
 def revolute_prismatic(parent: str, child: str, pivot: V3, axis: V3, turn: tuple[float, float],
