@@ -370,7 +370,7 @@ def test_tilt_and_turn_modes_exclude_each_other(tmp_path):
 
     import infmob_usd
     from infmob_usd.physical.clearance import _clearance
-    from infmob_usd.validate import physics, posing
+    from infmob_usd.validate import gallery, physics, posing
 
     obj = infmob_usd.generate("window", seed=1, texture_size=16, style="tilt_turn")
     folder = infmob_usd.save(obj, tmp_path)
@@ -386,6 +386,8 @@ def test_tilt_and_turn_modes_exclude_each_other(tmp_path):
         modes = [q[f"joint_{s}_0"], q[f"joint_{s}_1"]]
         assert sum(v != 0.0 for v in modes) == 1 and modes[0] > 0, (s, modes)
     assert posing._qpos_for(files, {tilt: 1.0})[tilt] == pytest.approx(meta[tilt]["upper"])
+    viewer = {j["name"]: j for j in gallery.object_data(folder, {})["joints"]}  # the gallery's Open all reads it
+    assert viewer[turn]["excludes"] == [tilt] and viewer[tilt]["excludes"] == [turn]
     model = physics.load_model(folder)
     for state in physics.sampled_states(model)[1:3]:  # all@50 %, all@100 %
         assert all(state.q[f"joint_{s}_1"] == 0.0 for s in sashes), state.label

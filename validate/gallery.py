@@ -238,8 +238,8 @@ def _joints(root, by_name: dict[str, dict]) -> list[dict]:
 def object_data(folder: Path, textures: dict[str, Path]) -> dict:
     """The viewer's data for one object folder: links with visuals, joints, OBJ text, materials.
 
-    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role
-    and ``requires_open`` from ``metadata.json``. Texture files are named by a hash of their bytes;
+    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role,
+    ``requires_open`` and ``excludes`` from ``metadata.json``. Texture files are named by a hash of their bytes;
     ``textures`` gains ``{hash: path}`` for each one. Every file is read only if it lies inside
     ``folder`` (:func:`inside`) and within :data:`MAX_BYTES`, else :class:`ValueError` names it.
     """
