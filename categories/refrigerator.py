@@ -26,6 +26,7 @@ from .parts import fridges as FR
 from .parts import refrigerators as RF
 
 R = RF.FULL
+C = RF.COUNTS
 
 
 def crisper_count(p, rng) -> int:
@@ -87,18 +88,19 @@ PARAMS = (
     Choice("hinge_side", "hinge side of a single fridge door (and a top freezer's door), seen from the front",
            choices=("left", "right")),
     Float("handle_length", "door handle length as a fraction of its door's height", "", *R["handle_length"]),
-    Int("shelf_count", "glass shelves in the fresh-food zone, over the crispers", "", 2, 5),
+    Int("shelf_count", "glass shelves in the fresh-food zone, over the crispers", "", *C["shelf_count"]),
     Float("shelf_travel", "a slide-out shelf's travel as a fraction of its depth", "", *R["shelf_travel"]),
-    Int("crisper_count", "crisper drawers side by side (a French-door fridge: one per door)", "", 1, 2),
-    Int("freezer_shelf_count", "wire shelves in a freezer zone behind a door", "", 1, 3),
+    Int("crisper_count", "crisper drawers side by side (a French-door fridge: one per door)", "", *C["crisper_count"]),
+    Int("freezer_shelf_count", "wire shelves in a freezer zone behind a door", "", *C["freezer_shelf_count"]),
     # one pull-out freezer drawer (Whirlpool WRB322, Samsung RF28R7351SR) or two stacked (LG LMXS28596S
     # four-door, GE Profile PFE28 lower drawers)
-    Int("freezer_drawer_count", "stacked freezer drawers (bottom freezer, French door)", "", 1, 2),
-    Int("bin_count", "door bins on each door's liner", "", 2, 4),
+    Int("freezer_drawer_count", "stacked freezer drawers (bottom freezer, French door)", "",
+        *C["freezer_drawer_count"]),
+    Int("bin_count", "door bins on each door's liner", "", *C["bin_count"]),
     # selector keys over a dispenser: ice / water (GE GSS25), + light and lock (Samsung RF28R7351SR)
-    Int("key_count", "selector keys over the dispenser (has_dispenser)", "", 2, 4),
+    Int("key_count", "selector keys over the dispenser (has_dispenser)", "", *C["key_count"]),
     # GE GSS25GSHSS: 2 freezer baskets under the shelves; Samsung RS27T5200: 1; some none (Frigidaire FFSS2615)
-    Int("basket_count", "slide-out baskets at the bottom of a side-by-side's freezer", "", 0, 2),
+    Int("basket_count", "slide-out baskets at the bottom of a side-by-side's freezer", "", *C["basket_count"]),
     Float("drawer_travel", "a freezer drawer's travel as a fraction of its basket's depth", "", *R["drawer_travel"]),
     Choice("body_finish", "cabinet and door skin", choices=("painted", "brushed_metal"), weights=(0.45, 0.55)),
     Choice("handle_finish", "door handle material", choices=("brushed_metal", "chrome", "plastic"),

@@ -72,6 +72,16 @@ FULL = {
     "compressor_kg": 9.0,
 }
 
+COUNTS = {
+    # 2-5 fresh-food shelves and 1-2 crispers (Whirlpool WRT318FZDW: 2 shelves + 2 crispers; Samsung RF28R7351SR:
+    # 4 shelves; Bosch KGN36: 4 shelves + 1 crisper); 1-3 freezer wire shelves (top freezers 1, side-by-sides
+    # 3-5 over their baskets); 2-4 door bins per door; side-by-side freezer baskets 0-2 (GE GSS25GSHSS 2,
+    # Samsung RS27T5200 1, Frigidaire FFSS2615 none); dispenser selector keys 2-4 (GE GSS25: ice / water;
+    # Samsung RF28R7351SR: + light and lock); stacked freezer drawers 1-2 (Whirlpool WRB322 one, LG
+    # LMXS28596S four-door two)
+    "shelf_count": (2, 5), "crisper_count": (1, 2), "freezer_shelf_count": (1, 3), "freezer_drawer_count": (1, 2),
+    "bin_count": (2, 4), "key_count": (2, 4), "basket_count": (0, 2),
+}
 BAR = hardware.HandleSize(**FULL["bar"])
 SIDE_BY_SIDE_WIDTH = (0.83, 0.91)
 """Side-by-side models are 33-36 in wide (GE GSS23 33 in, GE GSS25 / Samsung RS27T5200 35.75-36 in spec
