@@ -37,12 +37,14 @@ PARAMS = (
 
 GRAMMAR = Grammar("kitchen", {
     "kitchen": Node(required=("runs", "door"), optional={"window": 0.7, "wall_units": 0.85, "microwave": 0.8,
-                                                          "plate_rack": 0.4, "wine_cooler": 0.35},
+                                                          "plate_rack": 0.4, "wine_cooler": 0.35,
+                                                          "refrigerator": 0.85},
                     repeat={"bottle": (0, 4), "jar": (0, 3), "cookware": (1, 2)}),
     "runs": Node(one_of={"single_wall": 0.2, "galley": 0.15, "l_shape": 0.2, "u_shape": 0.15, "island": 0.15,
                          "peninsula": 0.15}, choice="layout"),
     **{k: Node() for k in ("single_wall", "galley", "l_shape", "u_shape", "island", "peninsula", "door", "window",
-                           "wall_units", "microwave", "plate_rack", "wine_cooler", "bottle", "jar", "cookware")},
+                           "wall_units", "microwave", "plate_rack", "wine_cooler", "refrigerator", "bottle", "jar",
+                           "cookware")},
 })
 
 
@@ -53,11 +55,14 @@ class KitchenLayout(RoomLayout):
         self.h = p["worktop_height"]
         self.worktops, self.runs = [], {}
         wine = node.one("wine_cooler") is not None
+        # a full-size fridge at the end of the sink run, where the category exists
+        self.fridge = node.one("refrigerator") is not None and "refrigerator" in self.categories()
         layout = node.one("runs").children[0].kind
         self._built.append(node.one("runs").path)
         self.grow(node.one("runs").children[0], wine=wine)
-        if wine:
-            self._built.append(node.one("wine_cooler").path)
+        for kind in ("wine_cooler", "refrigerator"):
+            if node.one(kind) is not None:
+                self._built.append(node.one(kind).path)
         for kind in ("wall_units", "door", "window", "microwave", "plate_rack"):
             if node.one(kind) is not None:
                 self.grow(node.one(kind))
@@ -82,6 +87,8 @@ class KitchenLayout(RoomLayout):
         units = [self.cabinet("sink_base"), self.under_counter("dishwasher", design="integrated")]
         if wine:
             units.append(self.under_counter("beverage_fridge"))
+        if self.fridge:
+            units.append(self.make("refrigerator"))
         return units
 
     def cook_side(self) -> list:

@@ -75,7 +75,7 @@ def scene(kind: str, seed: int = 0, texture_size: int = 256, **overrides: Any) -
     ``texture_size``: edge of every object's texture maps (power of two, 16..4096; a room holds dozens
     of objects, so the default is smaller than an object's). ``overrides``: the kind's parameters
     (``infmob scene KIND --params``)."""
-    from ..api import check_texture_size, generate
+    from ..api import check_texture_size, generate, list_categories
 
     k = get_kind(kind)
     check_texture_size(texture_size)
@@ -83,7 +83,7 @@ def scene(kind: str, seed: int = 0, texture_size: int = 256, **overrides: Any) -
     params = k.schema.sample(rng["params"], overrides)
     tree = k.grammar.grow(params, rng["structure"])
     layout: SceneLayout = k.layout(kind, k.grammar.resolve(params), rng["placement"], rng["objects"], texture_size,
-                                   generate)
+                                   generate, tuple(list_categories()))
     layout.run(tree)
     return Scene(kind, int(seed), params, k.schema.validate(overrides), layout.room, layout.placed, texture_size)
 

@@ -89,10 +89,11 @@ class SceneLayout:
     """Base of a scene kind's layout: object making and placing; the kind adds one method per node kind."""
 
     def __init__(self, kind: str, params: dict, rng: np.random.Generator, objects_rng: np.random.Generator,
-                 texture_size: int, generate) -> None:
-        """``generate``: ``(category, seed, texture_size=..., **overrides) -> ArticulatedObject`` (the API's)."""
+                 texture_size: int, generate, categories: tuple[str, ...] = ()) -> None:
+        """``generate``: ``(category, seed, texture_size=..., **overrides) -> ArticulatedObject`` (the API's);
+        ``categories``: the category ids that exist."""
         self.kind, self.p, self.rng, self.objects_rng = kind, params, rng, objects_rng
-        self.texture_size, self._generate = texture_size, generate
+        self.texture_size, self._generate, self._categories = texture_size, generate, tuple(categories)
         self.room: Room | None = None
         self.placed: list[Placed] = []
         self._made: dict[tuple, Made] = {}
@@ -108,6 +109,10 @@ class SceneLayout:
         return getattr(self, node.kind)(node, **slot)
 
     # -- objects ----------------------------------------------------------------------------------------------
+    def categories(self) -> tuple[str, ...]:
+        """The category ids that exist (a kind uses a category only once it does)."""
+        return self._categories
+
     def seed(self) -> int:
         """A fresh object seed from the scene's objects stream (what :meth:`make` uses by default)."""
         return int(self.objects_rng.integers(0, 10**9))
