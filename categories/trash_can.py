@@ -2,7 +2,7 @@
 
 Designs (``design``): a pedal bin (step can) lifts its lid by a foot pedal: the pedal is the one joint a foot
 drives and the lid follows it (``Layout.couple``: URDF ``<mimic>``, MJCF ``<equality>``, USD
-``PhysxMimicJointAPI``), the lid falling shut when the pedal is let go (role ``pedal_lid``). A sensor can's lid
+``PhysxMimicJointAPI``), the lid falling shut under its weight when the pedal is let go. A sensor can's lid
 has its own motorised hinge (the infrared window on its front). A swing-top bin is a closed body with a flap
 hung in its front that swings either way. An open bin (an office basket, a kitchen caddy) has no lid.
 Pedal, sensor and open bins may hold a lift-out inner bucket (role ``lift_off``; behind a lid it needs the
@@ -39,7 +39,8 @@ wire bail folds down over its rim."""
 PARAMS = (
     Float("width", "outer width (Y); a round bin's diameter", "m", *B.RANGES.width),
     Float("depth_ratio", "a square bin's depth (X) as a fraction of its width", "", *B.RANGES.depth_ratio),
-    Float("aspect", "height of the body's walls (Z, the lid excluded) as a multiple of its width", "",
+    Float("aspect", "height of the body's walls (Z, the lid excluded) as a multiple of its width (at most"
+                    " 0.72 m)", "",
           *B.RANGES.aspect),
     Float("flap_height", "height of a swing-top bin's flap", "m", *B.RANGES.flap_height),
     Choice("shape", "round or square body (a swing-top bin is square)", choices=("round", "square")),
@@ -60,7 +61,7 @@ class TrashCanLayout(Layout):
         design = node.choice
         shape = "square" if design == "swing_bin" else p["shape"]
         size = B.BinSize(shape, p["width"], p["width"] * (1.0 if shape == "round" else p["depth_ratio"]),
-                         p["width"] * p["aspect"])
+                         min(p["width"] * p["aspect"], B.TALLEST))
         self.sheet = SHEET[p["finish"]]
         if design == "swing_bin":
             body = self.place(B.swing_body(size, p["flap_height"], "body", self.sheet), "body")
@@ -92,9 +93,9 @@ class TrashCanLayout(Layout):
     def lid(self, node, body, size, sensor):
         hinge = body.anchor("hinge")
         self.place(B.lid(size, "body", "trim", self.sheet, sensor).attached("hinge", to=hinge), "lid")
-        # a pedal bin's lid falls shut when its pedal is let go; a sensor can's is held by its motor
-        role = "lid" if sensor else "pedal_lid"
-        self.hinge("body", "lid", hinge, upper=B.LID_OPENS, role=role)
+        # a pedal bin's lid falls shut under its own weight when the pedal is let go, carrying the pedal back up
+        # (no return spring: an angular spring's drive target beyond the rest stop fails SimReady's DJ.001)
+        self.hinge("body", "lid", hinge, upper=B.LID_OPENS, role="lid")
 
     def pedal(self, node, body):
         at = body.anchor("pedal")

@@ -37,6 +37,7 @@ class Ranges:
 # ~39 x 34 x 65 cm; Curver / Addis swing bins 25-50 L ~26-36 cm wide, 60-72 cm tall; sensor cans
 # (simplehuman, EKO) 30-58 L ~30-40 cm wide, 65-72 cm tall; open office baskets ~28 cm wide, 30-35 cm tall:
 # height / width 1.15 (a basket, a 5 L pedal bin 1.4) to 2.3 (a 30 L slim pedal bin).
+TALLEST = 0.72  # m, the tallest household bins' walls (simplehuman 58 L, sensor cans 65-72 cm)
 RANGES = Ranges(width=(0.21, 0.38), depth_ratio=(0.75, 1.0), aspect=(1.15, 2.3), flap_height=(0.10, 0.16))
 
 WALL = 0.004  # m, a bin wall as the simulator sees it (massed as the family's sheet or moulded wall)
@@ -155,14 +156,13 @@ def lid(s: BinSize, material: str, trim: str, sheet: float, sensor: str | None =
         r = hx + OVERHANG
         prof = [(0.0, 0.0), (r, 0.0), (r, 0.6 * LID_T), (0.85 * r, LID_T), (0.0, 1.1 * LID_T)]
         pieces = [g.revolve(prof, material, center=(cx, 0, z0)).replace(sheet=sheet)]
-        front = cx + 0.8 * r
+        front, top = cx + 0.55 * r, z0 + 1.04 * LID_T  # on the dome, where its profile is 1.03-1.05 LID_T
     else:
         pieces = [g.box_between((0, -hy - OVERHANG, z0), (2 * cx, hy + OVERHANG, z0 + LID_T), material,
                                 bevel=0.004).replace(sheet=sheet)]
-        front = 2 * cx - 0.03
+        front, top = 2 * cx - 0.03, z0 + LID_T
     pieces.append(g.cylinder((0, -0.28 * hy, 0), (0, 0.28 * hy, 0), 0.6 * KNUCKLE, trim, 12))
     if sensor:
-        top = z0 + (0.55 if s.shape == "round" else 1.0) * LID_T
         L, W = SENSOR["length"], SENSOR["width"]
         pieces.append(g.box_between((front - W, -L / 2, top - 0.004), (front, L / 2, top + SENSOR["proud"]), sensor))
     return Assembly.single("lid", pieces, {"hinge": hinge})
