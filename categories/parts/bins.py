@@ -140,8 +140,10 @@ def body(s: BinSize, material: str, trim: str, lid: bool, pedal: bool, sheet: fl
             y0, y1 = sorted((side * w, side * (w + 0.01)))
             pieces.append(g.box_between((o[0] - 0.012, y0, o[2] - 0.012), (o[0] + 0.012, y1, z0), trim))
         r = BASE["foot"]
-        pieces += [g.cylinder((fx * (hx - 2 * r), fy * (hy - 2 * r), 0), (fx * (hx - 2 * r), fy * (hy - 2 * r), z0), r,
-                              trim, None) for fx in (-1, 1) for fy in (-1, 1)]
+        k = math.sqrt(0.5) if s.shape == "round" else 1.0  # on the diagonals, inside a round footprint
+        fx0, fy0 = k * (hx - 2 * r), k * (hy - 2 * r)
+        pieces += [g.cylinder((fx * fx0, fy * fy0, 0), (fx * fx0, fy * fy0, z0), r, trim, None)
+                   for fx in (-1, 1) for fy in (-1, 1)]
     supports = {f"foot_{i}": (x, y, 0) for i, (x, y) in enumerate(((-hx, -hy), (-hx, hy), (hx, -hy), (hx, hy)))}
     return Assembly.single("body", pieces, a, supports)
 
