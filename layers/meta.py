@@ -79,6 +79,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                        " 04334820-n 'stopcock')"),
     "pot": ("Q15711817", "http://www.wikidata.org/entity/Q15711817 'stock pot' (WN 04146060-n 'saucepan' and"
                          " 04331435-n 'stockpot'; no verified item for cooking pot itself)"),
+    "safe": ("Q187956", "http://www.wikidata.org/entity/Q187956 (OEWN 03099154-n 'container', wikidata: Q187956;"
+                        " no verified item for safe: OEWN's 04132122-n 'safe' has none, its chain strongbox > box >"
+                        " container has this nearest one)"),
     "storage_rack": ("Q45242859", "http://www.wikidata.org/entity/Q45242859 'shelf' (WN 04197095-n; no"
                                   " verified item for shelving unit or pallet rack, which are built of shelves)"),
     "plate_rack": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU;"
