@@ -85,7 +85,8 @@ class SafeLayout(controls.ControlFace):
             cuts["dial"] = S.DIAL.cutout("front", self._at(DIAL_AT))
         else:
             cuts.update(S.keypad_cutouts(self._at(KEYPAD_AT)))
-        made = S.door(w, h, self.build, "body", cuts)  # the door is painted as the body.attached(self.side, to=body.anchor(self.side))
+        # the door is painted as the body
+        made = S.door(w, h, self.build, "body", cuts).attached(self.side, to=body.anchor(self.side))
         door = self.place(made, "door")
         self.hinge(body.root, door.root, body.anchor(self.side), upper=self.build.opens)
         self.grow(node.one("handle"), door=door)
