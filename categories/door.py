@@ -228,8 +228,9 @@ class DoorLayout(Layout):
         zk = zs[0] + P.DUTCH_KNOB
         pieces = P.leaf(xs, ys, zs, zs[0], p["leaf_style"], p["glazing"], p["stile_width"], 1, wall=P.EXTERIOR_WALL)
         for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
-            pieces += [P.rose(face, n, y, zk)] + g.knob_handle((face + n * P.ROSE[1], y, zk), (n, 0, 0), "handle",
-                                                               radius=p["knob_radius"], depth=P.DUTCH_KNOB_DEPTH)
+            knob = hardware.knob_handle(p["knob_radius"], P.DUTCH_KNOB_DEPTH, "handle")
+            pieces += [P.rose(face, n, y, zk)] + list(knob.placed(Frame.at((face + n * P.ROSE[1], y, zk),
+                                                                           z=(n, 0, 0))).pieces)
         self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
         self.hinge("frame", "leaf_2", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=P.OPENS)
         if node.one("deadbolt"):
