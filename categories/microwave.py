@@ -162,15 +162,15 @@ class MicrowaveLayout(A.PanelNodes):
         self.grow(node.one("plate"), cavity=cavity)
         self.grow(node.one("otr_door"), body=door)
         self.extend("body", MW.vent_grille(box))
-        for k, (kid, at) in enumerate(zip(node.of("filter"), MW.filter_boxes(box), strict=True)):
-            self.grow(kid, k=k, box=at)
+        spec, places = MW.grease_filters(door)
+        for k, (kid, at) in enumerate(zip(node.of("filter"), places, strict=True)):
+            self.grow(kid, k=k, spec=spec, at=at)
 
-    def filter(self, node, k, box):
+    def filter(self, node, k, spec, at):
         """A grease filter in the body's bottom: it slides 25 mm back in its track before it drops out
         (GE JVM7195, Whirlpool WMH31017 owner's manuals: "slide the filter to the rear, pull down")."""
-        pieces, at, travel = MW.grease_filter(box)
-        name = self.add(f"filter_{k}", "filter", pieces)
-        self.slide("body", name, at, upper=travel)
+        placed = self.place(spec.build().attached("front", to=at), f"filter_{k}")
+        self.slide("body", placed.root, placed.anchor("slide"), upper=spec.travel)
 
     def otr_door(self, node, body):
         self._door(node, body, "bar")

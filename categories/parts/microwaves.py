@@ -12,7 +12,8 @@ import math
 from dataclasses import dataclass
 
 from infmob_usd import geometry as g
-from infmob_usd.frames import Frame
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import IDENTITY, Frame
 from infmob_usd.materials import FAMILIES
 
 from . import appliance as A
@@ -230,25 +231,36 @@ def vent_grille(outer) -> list[g.Piece]:
     return grille
 
 
-def filter_boxes(outer) -> list[tuple]:
-    """The two grease filters' boxes (x0, x1, y0, y1, z of the body's bottom), left and right."""
-    xb, xf, xd1, y0, y1, zc0, zc1 = outer
-    f = M["filters"]
-    w = f["width"] * (y1 - y0)
-    return [(xb + f["from_back"], xf - f["from_front"], yc - w / 2, yc + w / 2, zc0)
-            for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
+@dataclass(frozen=True)
+class GreaseFilter:
+    """An over-the-range model's grease filter in the body's bottom (``MICROWAVE["filters"]``): a mesh
+    frame ``length`` (x) by ``width`` (y), a finger tab ``tab`` under its front edge; it slides ``travel``
+    back in its track before it drops out."""
+
+    length: float
+    width: float
+    tab: float
+    travel: float
+
+    def build(self) -> Assembly:
+        """In its own frame: the origin at the middle of its front edge on the body's bottom (anchor
+        ``front``, x out of the front); anchor ``slide`` 2 mm under it, z back along its track."""
+        f, x0, half = M["filters"], -self.length, self.width / 2
+        frame = [g.box_between([x0, -half, -0.0045], [0.0, half, -0.002], "filter").replace(sheet=f["sheet"]),
+                 g.box_between([-0.012, -0.02, -self.tab], [-0.004, 0.02, -0.0044], "filter")]
+        return Assembly.single("filter", frame, {"front": IDENTITY, "slide": Frame.at((0.0, 0.0, -0.002),
+                                                                                      z=(-1, 0, 0))})
 
 
-def grease_filter(box) -> tuple[list[g.Piece], Frame, float]:
-    """A grease filter in the body's bottom and its finger tab: pieces, the slide frame, its travel (it
-    slides back in its track before it drops out)."""
-    x0, x1, ya, yb, zc0 = box
+def grease_filters(body: Body) -> tuple[GreaseFilter, list[Frame]]:
+    """The grease filter's size and where the two go (their ``front`` anchors, left and right): from
+    ``from_back`` behind the bezel to ``from_front`` behind it, at +-``at`` of the width."""
+    xb, xf, _, y0, y1, zc0, _ = body.outer
     f = M["filters"]
-    tab = min(f["tab"], zc0 - 0.0015)  # a finger tab under its front edge, clear of the ground
-    frame = [g.box_between([x0, ya, zc0 - 0.0045], [x1, yb, zc0 - 0.002], "filter").replace(sheet=f["sheet"]),
-             g.box_between([x1 - 0.012, (ya + yb) / 2 - 0.02, zc0 - tab], [x1 - 0.004, (ya + yb) / 2 + 0.02,
-                                                                          zc0 - 0.0044], "filter")]
-    return frame, Frame.at((x1, (ya + yb) / 2, zc0 - 0.002), z=(-1, 0, 0)), f["travel"]
+    # the finger tab stays clear of the ground
+    spec = GreaseFilter(xf - f["from_front"] - xb - f["from_back"], f["width"] * (y1 - y0),
+                        min(f["tab"], zc0 - 0.0015), f["travel"])
+    return spec, [Frame.at((xf - f["from_front"], yc, zc0)) for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
 
 
 def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float
