@@ -189,9 +189,9 @@ class MicrowaveLayout(A.PanelNodes):
 
     def drawer(self, node, body):
         p = self.p
-        pieces, at, travel = MW.drawer(body, p["body_finish"], p["interior_finish"], p["handle_length"])
-        self.add("drawer", "drawer", pieces)
-        self.slide("body", "drawer", at, upper=travel)
+        drawer = MW.drawer(body, p["body_finish"], p["interior_finish"], p["handle_length"])
+        placed = self.place(drawer.part.attached("front", to=drawer.at), "drawer")
+        self.slide("body", placed.root, placed.anchor("slide"), upper=drawer.travel)
 
     def plate(self, node, cavity):
         spindle, plate, axis, rack_seat = MW.turntable(cavity, self.p["plate_fraction"])
@@ -224,10 +224,10 @@ class MicrowaveLayout(A.PanelNodes):
             self.grow(node.one(opener), at=body.handle_at, length=length)
 
     def bar(self, node, at, length):
-        self.extend("door", MW.door_handle("bar", length, at))
+        self.extend("door", MW.door_handle("bar", length).attached("edge", to=at).pieces)
 
     def recessed(self, node, at, length):
-        self.extend("door", MW.door_handle("recessed", length, at))
+        self.extend("door", MW.door_handle("recessed", length).attached("edge", to=at).pieces)
 
     def control_panel(self, node, body, release):
         """A column on the fascia (display, keys, dials, door release) or, on a drawer model's wide strip,

@@ -263,29 +263,40 @@ def grease_filters(body: Body) -> tuple[GreaseFilter, list[Frame]]:
     return spec, [Frame.at((xf - f["from_front"], yc, zc0)) for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
 
 
-def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float
-           ) -> tuple[list[g.Piece], Frame, float]:
+@dataclass(frozen=True)
+class Drawer:
+    """A drawer model's drawer: ``part`` in its own frame (anchor ``front``: the bottom middle of its
+    front face, x out of it; ``slide``: there, z out along its track), ``at`` where ``front`` goes on
+    the body, and the ``travel`` it slides out."""
+
+    part: Assembly
+    at: Frame
+    travel: float
+
+
+def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float) -> Drawer:
     """A drawer model's drawer: a front with a window and an edge pull, an open tray inside the cavity
-    liner; returns its pieces, slide frame and travel."""
-    xb, xf, xd1, y0, y1, _, _ = body.outer
-    cx0, cx1, cy0, cy1, cz0, cz1 = body.cavity
+    liner (``MICROWAVE["drawer"]``)."""
+    _, xf, xd1, _, _, _, _ = body.outer
+    cx0, _, cy0, cy1, cz0, cz1 = body.cavity
     (z0, z1), (y0, y1) = body.zs, body.door_ys
     d = M["drawer"]
     c = d["in_liner"]  # the tray inside the cavity liner
-    tray = (cx0 + d["tray_back"], cy0 + c, cy1 - c, cz0 + c, cz1 - c)
-    pieces = A.storage_drawer((xf + d["front_gap"], xd1, y0, y1, z0, z1), tray, wall=d["wall"])
+    tray = (cx0 + d["tray_back"] - xd1, cy0 + c, cy1 - c, cz0 + c - z0, cz1 - c - z0)
+    pieces = A.storage_drawer((xf + d["front_gap"] - xd1, 0.0, y0, y1, 0.0, z1 - z0), tray, wall=d["wall"])
     pieces = [pieces[0].replace(material="body")] + [pc.replace(material="interior") for pc in pieces[1:]]
     # front and tray are 0.6 mm steel sheet like the casing and liner, under any finish (a painted family is
     # massed as board: painted drawers weighed 0.9 kg; 0.8 mm enamelled ones 7.9 kg)
     sheets = {"body": steel_sheet(body_finish), "interior": steel_sheet(interior_finish)}
     pieces = [pc.replace(sheet=sheets[pc.material]) for pc in pieces]
     pull = hardware.edge_pull(handle_length * (y1 - y0), "handle", **M["edge_pull"]).attached(
-        "mount", to=Frame.at((xd1, 0.0, z1 - d["pull_below"]), z=(1, 0, 0), x=(0, 1, 0)))
+        "mount", to=Frame.at((0.0, 0.0, z1 - z0 - d["pull_below"]), z=(1, 0, 0), x=(0, 1, 0)))
     s, m = d["window"]
-    hole = (y0 + s * (y1 - y0), z0 + m, y1 - s * (y1 - y0), z1 - m)
-    window = g.box_between([xd1, hole[0], hole[1]], [xd1 + 0.001, hole[2], hole[3]], "glass")
-    return pieces + [window] + list(pull.parts[pull.root].pieces), Frame.at((xd1, 0.0, z0), z=(1, 0, 0)), \
-        d["travel"] * (xf - tray[0])
+    hole = (y0 + s * (y1 - y0), m, y1 - s * (y1 - y0), z1 - z0 - m)
+    window = g.box_between([0.0, hole[0], hole[1]], [0.001, hole[2], hole[3]], "glass")
+    part = Assembly.single("drawer", pieces + [window] + list(pull.pieces),
+                           {"front": IDENTITY, "slide": Frame.at((0.0, 0.0, 0.0), z=(1, 0, 0))})
+    return Drawer(part, Frame.at((xd1, 0.0, z0)), d["travel"] * (xf - (cx0 + d["tray_back"])))
 
 
 def door_window(ys, zs, margin: float, opener: str) -> tuple[float, float, float, float]:
@@ -295,14 +306,14 @@ def door_window(ys, zs, margin: float, opener: str) -> tuple[float, float, float
     return (ys[0] + margin, zs[0] + M["bottom_margin"] * margin, ys[1] - m_free, zs[1] - margin)
 
 
-def door_handle(kind: str, length: float, at: Frame) -> list[g.Piece]:
-    """A door's ``bar`` pull or ``recessed`` edge pull on the handle anchor ``at`` (the free edge)."""
+def door_handle(kind: str, length: float) -> Assembly:
+    """A door's ``bar`` pull or ``recessed`` edge pull, along local x; besides ``mount`` its anchor
+    ``edge`` is the door's free edge, ``bar_in`` / ``pull_in`` beside the mounts (:attr:`Body.handle_at`)."""
     if kind == "bar":
-        handle = hardware.bar_handle(length, "handle", hardware.HandleSize(**M["pull"])).attached(
-            "mount", to=at.moved(dy=M["bar_in"]))
-    else:
-        handle = hardware.edge_pull(length, "handle", **M["edge_pull"]).attached("mount", to=at.moved(dy=M["pull_in"]))
-    return list(handle.parts[handle.root].pieces)
+        handle = hardware.bar_handle(length, "handle", hardware.HandleSize(**M["pull"]))
+        return handle.with_anchors(edge=Frame.at((0.0, -M["bar_in"], 0.0)))
+    handle = hardware.edge_pull(length, "handle", **M["edge_pull"])
+    return handle.with_anchors(edge=Frame.at((0.0, -M["pull_in"], 0.0)))
 
 
 def _dial_style(rng) -> str:
