@@ -154,7 +154,7 @@ class MicrowaveLayout(A.PanelNodes):
         self.extend("body", [MW.ceramic_floor(cavity)])
         self.grow(node.one("door"), body=door)
         if rack := node.one("rack"):
-            self.grow(rack, parent="body", **MW.floor_rack_seat(cavity))
+            self.grow(rack, parent="body", seat=MW.floor_rack_seat(cavity))
 
     def over_the_range(self, node, cavity, door, box):
         """A turntable, a door with a bar handle, a vent grille over the door and panel, and under the
@@ -194,17 +194,18 @@ class MicrowaveLayout(A.PanelNodes):
         self.slide("body", placed.root, placed.anchor("slide"), upper=drawer.travel)
 
     def plate(self, node, cavity):
-        spindle, plate, axis, rack_seat = MW.turntable(cavity, self.p["plate_fraction"])
-        self.extend("body", [spindle])
-        self.add("plate", "plate", plate)
-        self.spin("body", "plate", axis, role="turntable")
+        turntable = MW.turntable(cavity, self.p["plate_fraction"])
+        self.extend("body", [turntable.spindle])
+        plate = self.place(turntable.plate, "plate")
+        self.spin("body", plate.root, plate.anchor("axis"), role="turntable")
         if rack := node.one("rack"):  # on the tray's floor, inside its rim
-            self.grow(rack, parent="plate", **rack_seat)
+            self.grow(rack, parent=plate.root, seat=turntable.rack)
 
-    def rack(self, node, parent, center, z0, radius, room):
-        """A low wire rack: a square grid inscribed in ``radius`` on four legs, fixed to what it stands on."""
-        self.add("rack", "rack", MW.stand_rack(center, z0, radius, room, self.p["rack_height"]))
-        self.fix(parent, "rack")
+    def rack(self, node, parent, seat):
+        """A low wire rack: a square grid inscribed in the seat's radius on four legs, fixed to what it
+        stands on."""
+        rack = self.place(MW.stand_rack(seat, self.p["rack_height"]), "rack")
+        self.fix(parent, rack.root)
 
     def door(self, node, body):
         self._door(node, body, node.choice)

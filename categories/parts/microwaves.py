@@ -108,12 +108,40 @@ def key_count(rows: int, bottom_keys: int) -> int:
     return 3 * rows - (3 - bottom_keys)
 
 
-def turntable(cavity, fraction: float) -> tuple[g.Piece, list[g.Piece], Frame, dict]:
-    """The turntable on the cavity floor: the spindle (fixed to the body), the tray on its roller ring,
-    its spin axis, and where a rack stands on it (:func:`rack_on_plate`)."""
+@dataclass(frozen=True)
+class RackSeat:
+    """Where a low wire rack stands: its ``center`` (x, y) on a floor at height ``z0``, the ``radius`` it
+    fits in and the free ``room`` over that floor."""
+
+    center: tuple[float, float]
+    z0: float
+    radius: float
+    room: float
+
+    @property
+    def at(self) -> Frame:
+        """The middle of the floor it stands on."""
+        return Frame.at((*self.center, self.z0))
+
+
+@dataclass(frozen=True)
+class Turntable:
+    """A turntable on the cavity floor: the ``spindle`` (fixed to the body) and the ``plate`` (the tray on
+    its roller ring, anchor ``axis``: z up its spin axis through the floor), and ``rack``, where a rack
+    stands on the tray. Both are built in the body's frame: a tray built round its own axis and moved
+    there welds its vertices in another order in the GLB."""
+
+    spindle: g.Piece
+    plate: Assembly
+    rack: RackSeat
+
+
+def turntable(cavity, fraction: float) -> Turntable:
+    """The turntable of ``fraction`` of the largest tray that fits the cavity floor (:func:`plate_fit`)."""
     c, radius = plate_fit(cavity, fraction)
     cz0 = cavity[4]
-    return A.spindle(c, cz0), A.turntable(c, cz0, radius), Frame.at((*c, cz0)), rack_on_plate(cavity, c, radius)
+    plate = Assembly.single("plate", A.turntable(c, cz0, radius), {"axis": Frame.at((*c, cz0))})
+    return Turntable(A.spindle(c, cz0), plate, rack_on_plate(cavity, c, radius))
 
 
 def countertop(W, D, H, wall, door_thickness, feet, panel_fraction, vent: bool) -> Body:
@@ -184,12 +212,11 @@ def ceramic_floor(cavity) -> g.Piece:
     return g.box_between([cx0 + i, cy0 + i, cz0], [cx1 - i, cy1 - i, cz0 + t], "plate", bevel=0.002)
 
 
-def floor_rack_seat(cavity) -> dict:
-    """Where a flatbed's wire rack stands: centre, floor height, inscribed radius, free height."""
+def floor_rack_seat(cavity) -> RackSeat:
+    """Where a flatbed's wire rack stands: on its ceramic floor, inside the cavity's inscribed circle."""
     cx0, cx1, cy0, cy1, cz0, _ = cavity
     r = min(cx1 - cx0, cy1 - cy0) / 2 - M["rack_clear"]
-    return dict(center=((cx0 + cx1) / 2, (cy0 + cy1) / 2), z0=cz0 + M["floor"], radius=r,
-                room=cavity[5] - cz0 - M["floor"])
+    return RackSeat(((cx0 + cx1) / 2, (cy0 + cy1) / 2), cz0 + M["floor"], r, cavity[5] - cz0 - M["floor"])
 
 
 def plate_fit(cavity, fraction: float) -> tuple[tuple[float, float], float]:
@@ -201,16 +228,19 @@ def plate_fit(cavity, fraction: float) -> tuple[tuple[float, float], float]:
     return c, fraction * (r_fit - max(lo, share * r_fit))
 
 
-def rack_on_plate(cavity, center, radius) -> dict:
+def rack_on_plate(cavity, center, radius) -> RackSeat:
     """Where a turntable's wire rack stands: on the tray's floor, inside its rim."""
     cz0 = cavity[4]
-    return dict(center=center, z0=cz0 + A.TRAY_TOP, radius=radius - M["rim_room"], room=cavity[5] - cz0 - A.TRAY_TOP)
+    return RackSeat(center, cz0 + A.TRAY_TOP, radius - M["rim_room"], cavity[5] - cz0 - A.TRAY_TOP)
 
 
-def stand_rack(center, z0, radius, room, height) -> list[g.Piece]:
-    """A low wire rack: a square grid inscribed in ``radius`` on four legs, at most its share of ``room``."""
-    h = min(height, M["rack_room"] * room)
-    return A.stand_rack(center, z0, radius / math.sqrt(2), h)
+def stand_rack(seat: RackSeat, height: float) -> Assembly:
+    """A low wire rack standing on ``seat``: a square grid inscribed in its radius on four legs, at most its
+    share of the room; anchor ``floor`` under its middle (:attr:`RackSeat.at`). Built where it stands: built
+    round its own origin and moved, its wires' collision pieces merge differently (last-bit rounding)."""
+    h = min(height, M["rack_room"] * seat.room)
+    return Assembly.single("rack", A.stand_rack(seat.center, seat.z0, seat.radius / math.sqrt(2), h),
+                           {"floor": seat.at})
 
 
 def vent_grille(outer) -> list[g.Piece]:
