@@ -189,9 +189,7 @@ class MicrowaveLayout(A.PanelNodes):
 
     def drawer(self, node, body):
         p = self.p
-        drawer = MW.drawer(body, p["body_finish"], p["interior_finish"], p["handle_length"])
-        placed = self.place(drawer.part.attached("front", to=drawer.at), "drawer")
-        self.slide("body", placed.root, placed.anchor("slide"), upper=drawer.travel)
+        MW.drawer(body, p["body_finish"], p["interior_finish"], p["handle_length"]).place(self, "drawer")
 
     def plate(self, node, cavity):
         turntable = MW.turntable(cavity, self.p["plate_fraction"])

@@ -293,18 +293,7 @@ def grease_filters(body: Body) -> tuple[GreaseFilter, list[Frame]]:
     return spec, [Frame.at((xf - f["from_front"], yc, zc0)) for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
 
 
-@dataclass(frozen=True)
-class Drawer:
-    """A drawer model's drawer: ``part`` in its own frame (anchor ``front``: the bottom middle of its
-    front face, x out of it; ``slide``: there, z out along its track), ``at`` where ``front`` goes on
-    the body, and the ``travel`` it slides out."""
-
-    part: Assembly
-    at: Frame
-    travel: float
-
-
-def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float) -> Drawer:
+def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float) -> A.Drawer:
     """A drawer model's drawer: a front with a window and an edge pull, an open tray inside the cavity
     liner (``MICROWAVE["drawer"]``)."""
     _, xf, xd1, _, _, _, _ = body.outer
@@ -324,9 +313,8 @@ def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: fl
     s, m = d["window"]
     hole = (y0 + s * (y1 - y0), m, y1 - s * (y1 - y0), z1 - z0 - m)
     window = g.box_between([0.0, hole[0], hole[1]], [0.001, hole[2], hole[3]], "glass")
-    part = Assembly.single("drawer", pieces + [window] + list(pull.pieces),
-                           {"front": IDENTITY, "slide": Frame.at((0.0, 0.0, 0.0), z=(1, 0, 0))})
-    return Drawer(part, Frame.at((xd1, 0.0, z0)), d["travel"] * (xf - (cx0 + d["tray_back"])))
+    part = Assembly.single("drawer", pieces + [window] + list(pull.pieces), A.DRAWER_ANCHORS)
+    return A.Drawer(part, Frame.at((xd1, 0.0, z0)), d["travel"] * (xf - (cx0 + d["tray_back"])))
 
 
 def door_window(ys, zs, margin: float, opener: str) -> tuple[float, float, float, float]:
