@@ -223,10 +223,11 @@ class Drawer:
     at: Frame
     travel: float
 
-    def place(self, layout: Layout, name: str, parent: str = "body") -> str:
-        """Add it to ``layout`` as part ``name`` sliding out of ``parent``; returns the part's name."""
+    def place(self, layout: Layout, name: str, parent: str = "body", requires_open: str | None = None) -> str:
+        """Add it to ``layout`` as part ``name`` sliding out of ``parent`` (only with ``requires_open``
+        open, if given); returns the part's name."""
         placed = layout.place(self.part.attached("front", to=self.at), name)
-        layout.slide(parent, placed.root, placed.anchor("slide"), upper=self.travel)
+        layout.slide(parent, placed.root, placed.anchor("slide"), upper=self.travel, requires_open=requires_open)
         return placed.root
 
 
