@@ -122,52 +122,28 @@ class DoorLayout(Layout):
     def door(self, node):
         p = self.p
         design = node.choice
-        W, H, T = p["leaf_width"], p["leaf_height"], p["leaf_thickness"]
-        Dj = p["frame_depth"]
         left = p["hinge_side"] == "left"
-        th = P.THRESHOLD if node.one("threshold") else 0.0
-        z0 = th + P.FLOOR_GAP
-        if design == "double":
-            Wl = p["pair_fraction"] * W
-            gap_mid = P.GAP + T * T / Wl  # both back corners swing out at the meeting stiles
-            oy0, oy1 = -Wl - gap_mid / 2 - P.GAP, Wl + gap_mid / 2 + P.GAP
-            leaves = [((-Wl - gap_mid / 2, -gap_mid / 2), "left"), ((gap_mid / 2, Wl + gap_mid / 2), "right")]
-            shift = 0.0
-        elif design == "sliding":  # the leaf covers the opening and its architraves
-            trim = p["casing_width"] + P.REVEAL + P.BARN["trim_past"]
-            oy0, oy1 = -W / 2 + trim, W / 2 - trim
-            shift, H_open = 0.0, H - trim - P.FLOOR_GAP
-        else:
-            gap_lock = P.GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
-            oy0 = -W / 2 - (P.GAP if left else gap_lock)
-            oy1 = W / 2 + (gap_lock if left else P.GAP)
-            shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
-        head = z0 + (H_open if design == "sliding" else H) + P.GAP
-        frame = P.frame(Dj / 2, Dj, (oy0 + shift, oy1 + shift), head, p["jamb_width"], p["casing_width"], 0.0,
-                        Dj / 2 - T - P.GAP)
+        op = P.opening(design, p["leaf_width"], p["leaf_height"], p["leaf_thickness"], p["frame_depth"], left,
+                       bool(node.one("threshold")), p["pair_fraction"], p["casing_width"])
+        frame = P.frame(op.x_front, p["frame_depth"], op.opening, op.head, p["jamb_width"], p["casing_width"], 0.0,
+                        op.stop_x)
         latch = None
         if design == "single" and node.one("single").one("latch"):
-            y_lock, out = ((W / 2 + shift), 1.0) if left else ((-W / 2 + shift), -1.0)
-            latch = P.latch_bolt((Dj / 2 - T, Dj / 2), y_lock, out, p["handle_height"])
+            latch = P.latch_bolt(op.xs, op.lock_y, op.lock_out, p["handle_height"])
             k = 1 if left else 0  # the lock-side jamb
             frame[k] = P.mortise(frame[k], *latch[2])
-            jamb_face = (oy1 if left else oy0) + shift
-            frame.append(P.strike_plate(Dj / 2 - T / 2, jamb_face, out, p["handle_height"]))
+            frame.append(P.strike_plate(op.strike_x, op.jamb_face, op.lock_out, p["handle_height"]))
         self.add("frame", "frame", frame)
-        if th:
-            self.grow(node.one("threshold"), ys=(oy0 + shift, oy1 + shift))
-        zs = (z0, z0 + H)
+        if node.one("threshold"):
+            self.grow(node.one("threshold"), ys=op.opening)
         if design == "single":
-            self.grow(node.one("single"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs,
-                      latch=latch)
+            self.grow(node.one("single"), xs=op.xs, ys=op.ys, zs=op.zs, latch=latch)
         elif design == "dutch":
-            self.grow(node.one("dutch"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs)
+            self.grow(node.one("dutch"), xs=op.xs, ys=op.ys, zs=op.zs)
         elif design == "double":
-            self.grow(node.one("double"), xs=(Dj / 2 - T, Dj / 2), leaves=leaves, zs=zs)
+            self.grow(node.one("double"), xs=op.xs, leaves=op.leaves, zs=op.zs)
         else:
-            x0 = Dj / 2 + P.CASING_T + P.HEADER + P.SLIDE_GAP
-            self.grow(node.one("sliding"), xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(P.FLOOR_GAP, P.FLOOR_GAP + H),
-                      travel=(oy1 - oy0) + P.BARN["travel_past"])
+            self.grow(node.one("sliding"), xs=op.xs, ys=op.ys, zs=op.zs, travel=op.travel)
 
     def threshold(self, node, ys):
         """The threshold (a separate sill strip screwed to the floor between the jambs)."""

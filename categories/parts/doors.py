@@ -94,6 +94,64 @@ DUTCH_CLEAR = (0.015, 0.06)  # a Dutch door's cut clears a bar pull's end by 15 
 DUTCH_KNOB_DEPTH = 0.05  # the top half's fixed knobs stand 5 cm off its faces
 
 
+@dataclass(frozen=True)
+class Opening:
+    """Where a door's frame and leaves go (the frame's depth centred on x = 0, fronts at +x): the frame's
+    ``x_front`` and ``stop_x`` (the stops behind the leaf), the ``opening`` between the jambs (y0, y1), the
+    ``head``; a hinged leaf's ``xs`` / ``ys`` / ``zs`` (a double door's two leaves: ``leaves``, (ys, side)
+    each); a sliding leaf's box and ``travel``; the lock side's ``lock_y`` (the leaf's lock edge),
+    ``lock_out`` (+-1, out of that edge), ``jamb_face`` and ``strike_x`` (the strike plate's middle)."""
+
+    x_front: float
+    stop_x: float
+    opening: tuple[float, float]
+    head: float
+    xs: tuple[float, float]
+    ys: tuple[float, float]
+    zs: tuple[float, float]
+    leaves: tuple = ()
+    travel: float = 0.0
+    lock_y: float = 0.0
+    lock_out: float = 1.0
+    jamb_face: float = 0.0
+    strike_x: float = 0.0
+
+
+def opening(design: str, width: float, height: float, thickness: float, depth: float, left: bool,
+            threshold: bool, pair_fraction: float = 0.5, casing: float = 0.0) -> Opening:
+    """The :class:`Opening` of a ``design`` door: ``width`` x ``height`` x ``thickness`` leaf (a double
+    door: two of ``pair_fraction`` of the width), a frame ``depth`` deep, hinged on the ``left`` or right,
+    over a threshold or not; a sliding (barn) leaf covers the opening and its ``casing`` architraves."""
+    W, H, T, Dj = width, height, thickness, depth
+    z0 = (THRESHOLD if threshold else 0.0) + FLOOR_GAP
+    leaves = ()
+    if design == "double":
+        Wl = pair_fraction * W
+        gap_mid = GAP + T * T / Wl  # both back corners swing out at the meeting stiles
+        oy0, oy1 = -Wl - gap_mid / 2 - GAP, Wl + gap_mid / 2 + GAP
+        leaves = (((-Wl - gap_mid / 2, -gap_mid / 2), "left"), ((gap_mid / 2, Wl + gap_mid / 2), "right"))
+        shift = 0.0
+    elif design == "sliding":  # the leaf covers the opening and its architraves
+        trim = casing + REVEAL + BARN["trim_past"]
+        oy0, oy1 = -W / 2 + trim, W / 2 - trim
+        shift, H_open = 0.0, H - trim - FLOOR_GAP
+    else:
+        gap_lock = GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
+        oy0 = -W / 2 - (GAP if left else gap_lock)
+        oy1 = W / 2 + (gap_lock if left else GAP)
+        shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
+    head = z0 + (H_open if design == "sliding" else H) + GAP
+    common = dict(x_front=Dj / 2, stop_x=Dj / 2 - T - GAP, opening=(oy0 + shift, oy1 + shift), head=head)
+    if design == "sliding":
+        x0 = Dj / 2 + CASING_T + HEADER + SLIDE_GAP
+        return Opening(**common, xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(FLOOR_GAP, FLOOR_GAP + H),
+                       travel=(oy1 - oy0) + BARN["travel_past"])
+    y_lock, out = ((W / 2 + shift), 1.0) if left else ((-W / 2 + shift), -1.0)
+    return Opening(**common, xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=(z0, z0 + H),
+                   leaves=leaves, lock_y=y_lock, lock_out=out, jamb_face=(oy1 if left else oy0) + shift,
+                   strike_x=Dj / 2 - T / 2)
+
+
 def frame(x_front: float, depth: float, opening, head: float, jamb: float, casing: float, threshold: float,
           stop_x: float) -> list[g.Piece]:
     """Two jambs and a head around the ``opening`` (y0, y1) up to ``head``, stops behind the leaf at
