@@ -269,35 +269,25 @@ class DoorLayout(Layout):
 
     def slider(self, node, xs, ys, zs, travel):
         p = self.p
-        d = -1.0 if p["hinge_side"] == "left" else 1.0  # it slides toward the hinge side's wall
-        r = p["wheel_radius"]
-        barn = P.BARN
-        z_ax = zs[1] + barn["axle_above"] + r  # wheel axles above the leaf's top
-        z_rail = z_ax - r - P.RAIL_CLEAR
-        x_wall = xs[0] - P.SLIDE_GAP - P.HEADER  # the architraves' front face
-        x_w = x_wall + barn["wheel_out"]  # over the rail
-        lo, hi = (ys[0] + d * travel, ys[1]) if d < 0 else (ys[0], ys[1] + travel)
-        self.extend("frame", P.barn_track(x_wall, lo - barn["track_past"], hi + barn["track_past"], z_rail))
+        # it slides toward the hinge side's wall
+        hang = P.hanging(xs, ys, zs, travel, p["wheel_radius"], p["hinge_side"] == "left")
+        self.extend("frame", P.barn_track(hang.x_wall, *hang.track, hang.z_rail))
         pieces = P.leaf(xs, ys, zs, p["handle_height"], p["leaf_style"], p["glazing"], p["stile_width"],
                         p["panel_count"])
-        yh = [ys[0] + barn["strap_in"], ys[1] - barn["strap_in"]]
-        for y in yh:
-            pieces += P.hanger_strap(xs[1], x_w, y, zs[1] - barn["strap_below"], z_ax)
+        for y in hang.straps:
+            pieces += P.hanger_strap(xs[1], hang.x_wheel, y, zs[1] - P.BARN["strap_below"], hang.z_axle)
         # a bar pull on the front face near the trailing edge, a flush pull on the back
-        y_pull = (ys[1] - barn["pull_in"]) if d < 0 else (ys[0] + barn["pull_in"])
-        at = Frame.at((xs[1], y_pull, p["handle_height"]), z=(1, 0, 0), x=(0, 0, 1))
-        bar = hardware.bar_handle(p["pull_length"], "handle", P.PULL).attached("mount", to=at)
-        pieces += list(bar.parts[bar.root].pieces)
-        pieces.append(P.flush_pull(xs[0], y_pull, p["handle_height"]))
+        at = Frame.at((xs[1], hang.y_pull, p["handle_height"]), z=(1, 0, 0), x=(0, 0, 1))
+        pieces += hardware.bar_handle(p["pull_length"], "handle", P.PULL).attached("mount", to=at).pieces
+        pieces.append(P.flush_pull(xs[0], hang.y_pull, p["handle_height"]))
         self.add("leaf", "leaf", pieces)
-        self.slide("frame", "leaf", Frame.at((xs[1], ys[1] if d > 0 else ys[0], zs[0]), z=(0, d, 0)), upper=travel,
-                   role="slide")
-        for k, (kid, y) in enumerate(zip(node.of("roller"), yh, strict=True)):
-            self.grow(kid, k=k, at=(x_w, y, z_ax), r=r)
+        self.slide("frame", "leaf", hang.slide, upper=travel, role="slide")
+        for k, (kid, y) in enumerate(zip(node.of("roller"), hang.straps, strict=True)):
+            self.grow(kid, k=k, at=(hang.x_wheel, y, hang.z_axle), r=p["wheel_radius"])
         if node.one("kick_plate"):
             self.grow(node.one("kick_plate"), xs=xs, ys=ys, zs=zs, leaf="leaf")
         if node.one("guide"):
-            self.grow(node.one("guide"), xs=xs, x_wall=x_wall, ys=ys, d=d)
+            self.grow(node.one("guide"), xs=xs, x_wall=hang.x_wall, ys=ys, d=hang.d)
 
     def guide(self, node, xs, x_wall, ys, d):
         """What keeps the leaf's bottom edge off the wall: a floor guide it runs in, at the opening's edge on the

@@ -15,7 +15,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
-from infmob_usd.frames import IDENTITY
+from infmob_usd.frames import IDENTITY, Frame
 
 from .hardware import HandleSize
 
@@ -392,6 +392,38 @@ def thumb_rose(face: float, n: float, y: float, z: float, key: bool) -> list[g.P
     if not key:
         return [rose]
     return [rose, g.cylinder([face + n * ROSE[1], y, z], [face + n * (ROSE[1] + 0.004), y, z], 0.012, "hinge", 24)]
+
+
+@dataclass(frozen=True)
+class Hanging:
+    """How a barn door's leaf (``xs``, ``ys``, ``zs``) hangs and slides (:data:`BARN`): toward ``d`` (-1:
+    -y, the left wall); wheel axles at ``z_axle`` over the rail ``x_wheel`` out from the architraves' front
+    face ``x_wall``; the rail at ``z_rail`` from ``track[0]`` to ``track[1]``; hanger straps at ``straps``
+    (y); the pulls at ``y_pull`` on the trailing stile; ``slide``: the joint frame (z along the travel)."""
+
+    d: float
+    z_axle: float
+    z_rail: float
+    x_wall: float
+    x_wheel: float
+    track: tuple[float, float]
+    straps: tuple[float, float]
+    y_pull: float
+    slide: Frame
+
+
+def hanging(xs, ys, zs, travel: float, wheel_radius: float, toward_left: bool) -> Hanging:
+    """The :class:`Hanging` of a barn door leaf sliding ``travel`` toward the left wall or the right."""
+    d = -1.0 if toward_left else 1.0
+    r = wheel_radius
+    z_ax = zs[1] + BARN["axle_above"] + r  # wheel axles above the leaf's top
+    x_wall = xs[0] - SLIDE_GAP - HEADER  # the architraves' front face
+    lo, hi = (ys[0] + d * travel, ys[1]) if d < 0 else (ys[0], ys[1] + travel)
+    return Hanging(d, z_ax, z_ax - r - RAIL_CLEAR, x_wall, x_wall + BARN["wheel_out"],
+                   (lo - BARN["track_past"], hi + BARN["track_past"]),
+                   (ys[0] + BARN["strap_in"], ys[1] - BARN["strap_in"]),
+                   (ys[1] - BARN["pull_in"]) if d < 0 else (ys[0] + BARN["pull_in"]),
+                   Frame.at((xs[1], ys[1] if d > 0 else ys[0], zs[0]), z=(0, d, 0)))
 
 
 def barn_track(x_face: float, y0: float, y1: float, z: float) -> list[g.Piece]:
