@@ -17,8 +17,6 @@ balances them with a counterweight heel) or a fixed bar pull. Parts: ``categorie
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -198,31 +196,32 @@ class DoorLayout(Layout):
     def top_leaf(self, node, xs, ys, zs):
         """A Dutch door's top half: a fixed knob on each face by its lock edge, a deadbolt's thumb-turn above."""
         p = self.p
-        left = p["hinge_side"] == "left"
-        y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
-        y = y_lock - (1.0 if left else -1.0) * P.BACKSET
+        edge = P.edges(xs, ys, zs, p["hinge_side"] == "left")
+        y = edge.handle_y
         zk = zs[0] + P.DUTCH_KNOB
         pieces = P.leaf(xs, ys, zs, zs[0], p["leaf_style"], p["glazing"], p["stile_width"], 1, wall=P.EXTERIOR_WALL)
         for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
             knob = hardware.knob_handle(p["knob_radius"], P.DUTCH_KNOB_DEPTH, "handle")
             pieces += [P.rose(face, n, y, zk)] + list(knob.placed(Frame.at((face + n * P.ROSE[1], y, zk),
                                                                            z=(n, 0, 0))).pieces)
-        self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
-        self.hinge("frame", "leaf_2", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=P.OPENS)
+        self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], edge.hinge_y, *zs))
+        self.hinge("frame", "leaf_2", edge.hinge, upper=P.OPENS)
         if node.one("deadbolt"):
             self.grow(node.one("deadbolt"), xs=xs, y=y, z=zk + P.THUMB["above"])
 
     def deadbolt(self, node, xs, y, z):
-        self.extend("leaf_2", P.thumb_rose(xs[0], -1.0, y, z, key=False) + P.thumb_rose(xs[1], 1.0, y, z, key=True))
-        start = xs[0] - P.ROSE[1] - P.GAP
-        self.add("deadbolt", "knob", P.thumb_turn(start, -1.0, y, z))
-        self.hinge("leaf_2", "deadbolt", Frame.at((start, y, z), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
+        self._thumb_turn("leaf_2", "deadbolt", xs, y, z)
+
+    def _thumb_turn(self, leaf, name, xs, y, z):
+        """A thumb turn on the leaf's back face, turning a quarter turn, its roses on both faces."""
+        made = P.thumb_turn_set(xs, y, z)
+        self.extend(leaf, made.roses)
+        placed = self.place(made.turn, name)
+        self.hinge(leaf, placed.root, placed.anchor("axis"), upper=P.THUMB_TURNS, role="knob")
 
     def leaf(self, node, xs, ys, zs, side, name, latch, dutch=False):
         p = self.p
-        left = side == "left"
-        y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
-        inward = 1.0 if left else -1.0  # from the hinge edge across the leaf
+        edge = P.edges(xs, ys, zs, side == "left")
         zk = p["handle_height"]
         if dutch:  # a Dutch door's bottom half: solid-core, one unglazed panel
             pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], "none", p["stile_width"], 1, wall=P.EXTERIOR_WALL)
@@ -230,11 +229,11 @@ class DoorLayout(Layout):
             pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], p["glazing"], p["stile_width"], p["panel_count"])
         if latch:
             pieces[0] = P.mortise(pieces[0], *latch[1])
-        self.add(name, "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
-        line = Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1))
+        self.add(name, "leaf", pieces + P.knuckles(xs[1], edge.hinge_y, *zs))
+        line = edge.hinge
         if not latch:
             self.hinge("frame", name, line, upper=P.OPENS)
-        where = dict(xs=xs, y=y_lock - inward * P.BACKSET, z=zk, inward=inward, leaf=name)
+        where = dict(xs=xs, y=edge.handle_y, z=zk, inward=edge.inward, leaf=name)
         self.grow(node.one(node.choice), **where)
         if node.one("thumb_turn"):
             self.grow(node.one("thumb_turn"), **where)
@@ -259,10 +258,7 @@ class DoorLayout(Layout):
         zt = z + P.THUMB["above"]
         if self.p["handle"] == "pull":  # above the bar pull's top post
             zt = z + max(P.THUMB["above"], self.p["pull_length"] / 2 + P.THUMB["rose"] + P.THUMB["over_pull"])
-        self.extend(leaf, P.thumb_rose(xs[0], -1.0, y, zt, key=False) + P.thumb_rose(xs[1], 1.0, y, zt, key=True))
-        start = xs[0] - P.ROSE[1] - P.GAP
-        name = self.add(f"thumb_turn{leaf[4:]}", "knob", P.thumb_turn(start, -1.0, y, zt))
-        self.hinge(leaf, name, Frame.at((start, y, zt), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
+        self._thumb_turn(leaf, f"thumb_turn{leaf[4:]}", xs, y, zt)
 
     def sliding(self, node, xs, ys, zs, travel):
         self.grow(node.one("slider"), xs=xs, ys=ys, zs=zs, travel=travel)

@@ -313,6 +313,7 @@ BOLT = dict(throw=0.013, height=0.018, thickness=0.016, inside=0.025, slack=0.00
 """A latch bolt: throw beyond the lock edge, height, thickness (x), length inside the leaf at rest, slack (how
 far past its throw the handle draws it)."""
 THUMB = dict(rose=0.025, grip=0.034, grip_w=0.009, grip_d=0.016, above=0.16, over_pull=0.02)
+THUMB_TURNS = math.pi / 2  # a thumb turn throws its bolt in a quarter turn
 """Thumb-turn: rose radius, grip length and width and projection, height above the handle axis, and its rose's
 clearance over a bar pull's end."""
 
@@ -374,6 +375,44 @@ def strike_plate(x_mid: float, y_face: float, into: float, z: float) -> g.Piece:
                     holes=[(x_mid - BOLT["thickness"] / 2 - 0.0015, z - BOLT["height"] / 2 - 0.0015,
                             x_mid + BOLT["thickness"] / 2 + 0.0015, z + BOLT["height"] / 2 + 0.0015)])
     return plate.replace(convex=[])
+
+
+@dataclass(frozen=True)
+class Edges:
+    """A hinged leaf's edges: ``hinge_y`` and ``lock_y``, ``inward`` (+-1, from the hinge edge across the
+    leaf), the handle's ``handle_y`` (:data:`BACKSET` in from the lock edge) and the ``hinge`` line (on
+    the front face at the bottom; z down for a leaf hinged on the left, so both open the same way)."""
+
+    hinge_y: float
+    lock_y: float
+    inward: float
+    handle_y: float
+    hinge: Frame
+
+
+def edges(xs, ys, zs, left: bool) -> Edges:
+    """The :class:`Edges` of a leaf (``xs``, ``ys``, ``zs``) hinged on the ``left`` or right."""
+    y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
+    inward = 1.0 if left else -1.0
+    return Edges(y_hinge, y_lock, inward, y_lock - inward * BACKSET,
+                 Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)))
+
+
+@dataclass(frozen=True)
+class ThumbTurnSet:
+    """A deadbolt's thumb turn (anchor ``axis``: z along its spindle, out of the back face) and the roses
+    on both faces of the leaf (a key cylinder's on the front)."""
+
+    roses: list
+    turn: Assembly
+
+
+def thumb_turn_set(xs, y: float, z: float) -> ThumbTurnSet:
+    """The :class:`ThumbTurnSet` at (``y``, ``z``) on a leaf ``xs`` thick."""
+    start = xs[0] - ROSE[1] - GAP
+    roses = thumb_rose(xs[0], -1.0, y, z, key=False) + thumb_rose(xs[1], 1.0, y, z, key=True)
+    return ThumbTurnSet(roses, Assembly.single("knob", thumb_turn(start, -1.0, y, z),
+                                               {"axis": Frame.at((start, y, z), z=(-1, 0, 0))}))
 
 
 def thumb_turn(x0: float, n: float, y: float, z: float) -> list[g.Piece]:
