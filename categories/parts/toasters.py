@@ -90,8 +90,9 @@ def crumb_tray(size: CasingSize) -> LinerSize:
 
 
 def group_sides(groups: int) -> tuple[int, ...]:
-    """Which end of the front each control group takes: one on the right, two on both ends."""
-    return (1,) if groups == 1 else (-1, 1)
+    """Which end of the front each control group takes: one on the right (u = -y, so -1 is the right end as
+    one faces the front), two on both ends."""
+    return (-1,) if groups == 1 else (-1, 1)
 
 
 def cutouts(design: str, size: CasingSize, slot_width: float, groups: list[tuple[bool, int]]) -> dict[str, Cutout]:
