@@ -21,7 +21,8 @@ from .parts import kettles as K
 PARAMS = (
     Float("girth", "where the body's radius lies in its design's range (0 smallest, 1 largest)", "", 0.0, 1.0),
     Float("tallness", "where the body's height lies in its design's range (0 lowest, 1 tallest)", "", 0.0, 1.0),
-    Choice("finish", "body finish", choices=("brushed_metal", "chrome", "painted", "plastic")),
+    Choice("finish", "body finish (a stovetop kettle is metal: plastic there is brushed_metal)",
+           choices=("brushed_metal", "chrome", "painted", "plastic")),
 )
 
 GRAMMAR = Grammar("kettle", {
