@@ -199,9 +199,7 @@ class OvenLayout(A.PanelNodes):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
         warming drawer: an enamel tray, a bar handle like the door's and a marking strip."""
         p = self.p
-        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"])
-        self.add("drawer", "drawer", pieces)
-        self.slide("body", "drawer", at, upper=p["drawer_travel"] * depth)
+        OV.drawer(xs, ys, zs, warming, p["handle_length"], p["drawer_travel"]).place(self, "drawer")
 
     def warming_drawer(self, node, xs, ys, zs):
         self.drawer(node, xs, ys, zs, warming=True)

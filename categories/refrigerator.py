@@ -166,8 +166,8 @@ class RefrigeratorLayout(controls.ControlFace):
     def freezer_basket(self, node, k, zone):
         """A slide-out freezer basket (moulded bin with a front), only with the freezer door open."""
         fit = self._levels(zone, 1, over_crispers=False)
-        pieces, at, travel = FR.crisper(zone.xs, (fit["yc"] - fit["ry"], fit["yc"] + fit["ry"]),
-                                        RF.basket_zs(zone.cav, k))
+        pieces, at, travel = _drawer(FR.crisper(zone.xs, (fit["yc"] - fit["ry"], fit["yc"] + fit["ry"]),
+                                                RF.basket_zs(zone.cav, k)))
         name = self.add(f"freezer_basket_{k}", "basket",
                         [pc.replace(material="bin") if pc.material == "glass" else pc for pc in pieces])
         self.slide("body", name, at, upper=travel, requires_open="freezer_door")
@@ -243,7 +243,8 @@ class RefrigeratorLayout(controls.ControlFace):
 
     def deli_drawer(self, node, zone, fit, door):
         """A shallow deli drawer across the zone over the crispers, pulled out only with its door open."""
-        pieces, at, travel = FR.crisper(zone.xs, (fit["yc"] - fit["ry"], fit["yc"] + fit["ry"]), RF.deli_zs(zone.cav))
+        pieces, at, travel = _drawer(FR.crisper(zone.xs, (fit["yc"] - fit["ry"], fit["yc"] + fit["ry"]),
+                                                RF.deli_zs(zone.cav)))
         self.add("deli_drawer", "drawer", pieces)
         self.slide("body", "deli_drawer", at, upper=travel, requires_open=door)
 
@@ -295,9 +296,16 @@ class RefrigeratorLayout(controls.ControlFace):
 
     def crisper(self, node, k, xs, ys, zs, door):
         """A crisper drawer: a clear bin with a front, pulled out along +X only with its door open."""
-        pieces, at, travel = FR.crisper(xs, ys, zs)
+        pieces, at, travel = _drawer(FR.crisper(xs, ys, zs))
         name = self.add(f"crisper_{k}", "drawer", pieces)
         self.slide("body", name, at, upper=travel, requires_open=door)
+
+
+def _drawer(drawer):
+    """A crisper-shaped drawer (:class:`.appliance.Drawer`) as its placed pieces, the frame it slides on and its
+    travel: a freezer basket and a deli drawer reuse the crisper's shape under another label or material."""
+    placed = drawer.part.attached("front", to=drawer.at)
+    return list(placed.pieces), placed.anchor("slide"), drawer.travel
 
 
 CATEGORY = Category("refrigerator", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RefrigeratorLayout,

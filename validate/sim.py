@@ -834,6 +834,8 @@ def _drive_batch(ctx: SimContext, batch: list[int], plan: _Plan,
     start_q = plan.start_q(ctx, batch)
     if not np.array_equal(start_q, np.asarray(ctx.rest_qpos, dtype=np.float32)):
         ctx.hold(start_q)
+    for k in _coupled_to(ctx, batch):  # a pedal's lid follows its tendon, not a drive holding it
+        ctx.joints[k].set_drive_property(0.0, 0.0, mode="acceleration")
     failed: dict[int, list[str]] = {}
     plans = {}
     for i in batch:
@@ -847,6 +849,15 @@ def _drive_batch(ctx: SimContext, batch: list[int], plan: _Plan,
         joint.set_max_velocity(float(DRIVE_SPEED * span))
         plans[i] = (targets, tol)
     return failed, _drive_phases(ctx, batch, plans, start_q, failed, max_steps)
+
+
+def _coupled_to(ctx: SimContext, batch: list[int]) -> set[int]:
+    """Indices of the joints outside ``batch`` coupled to a joint of it (``metadata.json`` ``mimic``: its
+    followers, its leader and the leader's other followers): they move with it, so no drive holds them."""
+    names = [j.name for j in ctx.joints]
+    lead = {j["name"]: j["mimic"]["joint"] for j in ctx.meta.get("joints", []) if j.get("mimic")}
+    groups = [{n, *[f for f, m in lead.items() if m == n]} for n in {lead.get(names[i], names[i]) for i in batch}]
+    return {names.index(n) for g in groups for n in g if n in names} - set(batch)
 
 
 def _drive_phases(ctx: SimContext, batch: list[int], plans: dict, start_q: np.ndarray,

@@ -462,11 +462,22 @@ def _clearance(obj) -> _Clearance:
     return c
 
 
+def _share_coupled(joints, closed: dict[str, set[str]]) -> None:
+    """A coupled joint and its leader move together (one hand or foot drives both): what either must have
+    closed first, both must (a pedal whose lid would meet an open part needs that part closed as the lid does)."""
+    for j in joints:
+        lead = j.mimic[0] if getattr(j, "mimic", None) else None
+        if lead in closed and j.name in closed:
+            both = closed[lead] | closed[j.name]
+            closed[lead], closed[j.name] = set(both), set(both)
+
+
 def limit_to_clearance(obj):
     """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` and the
     ``requires_closed`` parts its step 3 found (the object and its joints are not modified;
     unchanged joints are shared)."""
     c = _clearance(obj)
+    _share_coupled(obj.joints, c.closed)
     joints = []
     for j in obj.joints:
         if j.name in c.limits:
