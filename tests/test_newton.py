@@ -72,8 +72,8 @@ def test_newton_reads_armature_velocity_and_springs(folders):
                                                    for s in SEEDS])
 def test_newton_rest(folders, solver, category, seed):
     """Every joint stays within 1 mm / 1 degree of rest for 0.5 s, no NaN, with either solver (XPBD with the
-    loader recipe of :func:`~infmob_usd.validate.newton_sim.load` and its iterations: with Newton's defaults a
-    dining table went NaN and a pot lid sank 1.3 mm through its stop)."""
+    loader recipe of :func:`~infmob_usd.validate.newton_sim.load`, iterations and relaxation: with Newton's
+    defaults a dining table went NaN and a pot lid sank 1.3 mm through its stop)."""
     folder, obj = folders(category, seed)
     motion, prismatic = rest_motion(folder / f"{folder.name}.usda", solver)
     assert set(motion) == {j.name for j in obj.movable_joints}  # continuous joints: revolute without limits
