@@ -209,10 +209,11 @@ class FridgeLayout(Layout):
             self.grow(kid, k=k, **slot)
 
     def door_bin(self, node, k, xs, ys, zs):
-        """A door bin: an open moulded tray hooked on the door liner; it lifts straight up off its hooks."""
+        """A door bin: an open moulded tray hooked on the door liner; it lifts straight up off its hooks (a
+        lift-off part, which the core stops at a hand's lift)."""
         pieces, at = FR.door_bin(xs, ys, zs)
         name = self.add(f"door_bin_{k}", "bin", pieces)
-        self.slide("door", name, at, upper=FR.BIN_LIFT)
+        self.slide("door", name, at, upper=FR.BIN_LIFT, role="lift_off")
 
     def crispers(self, node, cav, xs, zs, margin):
         p = self.p

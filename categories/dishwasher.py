@@ -258,10 +258,11 @@ class DishwasherLayout(A.PanelNodes):
             self.grow(kid, k=k, rack=rack, pieces=pieces, at=at, lift=lift)
 
     def basket(self, node, k, rack, pieces, at, lift):
-        """A cutlery basket stands in its rack and lifts straight up out of it (below the rack above)."""
+        """A cutlery basket stands in its rack and lifts straight up out of it (below the rack above): a
+        lift-off part, which the core stops at a hand's lift."""
         name = self.add(f"basket_{k}", "basket", pieces)
         if lift > DW.MIN_BASKET_LIFT:
-            self.slide(rack, name, Frame.at(at), upper=lift)
+            self.slide(rack, name, Frame.at(at), upper=lift, role="lift_off")
         else:
             self.fix(rack, name)
 

@@ -56,6 +56,9 @@ def _clean(x):
 WIKIDATA: dict[str, tuple[str, str]] = {
     "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
     "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
+    "stovetop": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
+                              " verified item for stove, hob or cooktop)"),
+    "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
     "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
@@ -176,8 +179,12 @@ def _spring_and_mimic(j) -> dict:
     """``spring``: a return spring (N/m or N m/rad about ``reference``, m or rad; the joint's ``damping``
     goes with it), which a URDF cannot carry: in SAPIEN set it as the joint's drive,
     ``set_drive_property(stiffness, damping)`` and ``set_drive_target(reference)``. ``mimic``: the joint
-    follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``)."""
+    follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``). ``excludes``: the
+    joints of the same part that must be at rest while this one is off rest (and it while they are), the
+    alternative modes of one fitting (a tilt-and-turn sash tilts or turns)."""
     out = {}
+    if j.excludes:
+        out["excludes"] = list(j.excludes)
     if j.stiffness > 0:
         out["spring"] = {"stiffness": j.stiffness, "reference": j.spring_ref}
     if j.mimic is not None:

@@ -479,13 +479,10 @@ def tilt_turn(frame, light, p, dims, transom, middle):
             lower[2, 2] = (h - short) / h
             lower[2, 3] = pivot[2] * (1 - lower[2, 2])
             pieces = [pc.transformed(lower) for pc in pieces]
-        # turn first, then tilt about the sash's own bottom rail: tilted and turned at once (the validators
-        # sample every joint at its maximum) the bottom rail keeps its height above the floor. A real
-        # tilt-and-turn handle selects one mode: the turn and the tilt exclude each other. The core has no
-        # relation for "these two cannot be open together" between the DoFs of one joint yet (a declared
-        # requires_closed would say it); until it has, both DoFs are free and the model allows both at once.
+        # turn first, then tilt about the sash's own bottom rail. A real tilt-and-turn handle selects one
+        # mode (the gear locks the other hinge): the turn and the tilt exclude each other (exclusive)
         out.append((name, pieces, J.flip_revolute("frame", name, d.origin, d.axis, (d.lower, d.upper), pivot,
-                                                  (0, 1, 0), (0.0, TILT), role="hinge")))
+                                                  (0, 1, 0), (0.0, TILT), role="hinge", exclusive=True)))
     return out, x_room
 
 
