@@ -13,7 +13,7 @@ import pkgutil
 
 from infmob_usd.category import of_module
 
-NOT_CATEGORIES = frozenset({"parts"})
+NOT_CATEGORIES = frozenset({"parts", "rooms"})
 
 
 def _discover() -> dict:

@@ -179,11 +179,11 @@ class FridgeLayout(Layout):
         """A freezer compartment across the top of the cavity: an aluminium evaporator box (its floor and sides,
         fixed) and a flap over its front, hinged on its top back edge, that swings up out of the way (only with
         the door open). Returns the height below which the shelves stay."""
-        box, flap, at, ceiling = FR.freezer(cav, xs, freezer_height(self.p))
-        self.extend("body", box)
-        self.add("freezer_flap", "flap", flap)
-        self.hinge("body", "freezer_flap", at, upper=FR.FLAP_OPENS, requires_open="door")
-        return ceiling
+        freezer = FR.freezer(cav, xs, freezer_height(self.p))
+        self.extend("body", freezer.evaporator)
+        flap = self.place(freezer.flap.attached("hinge", to=freezer.at), "freezer_flap")
+        self.hinge("body", flap.root, flap.anchor("hinge"), upper=FR.FLAP_OPENS, requires_open="door")
+        return freezer.ceiling
 
     def dual_zone(self, node, cav, hole, box, xs, margin):
         """Two glass doors meeting over the mullion, each hinged on its outer side; racks in each zone."""
@@ -209,10 +209,11 @@ class FridgeLayout(Layout):
             self.grow(kid, k=k, **slot)
 
     def door_bin(self, node, k, xs, ys, zs):
-        """A door bin: an open moulded tray hooked on the door liner; it lifts straight up off its hooks."""
+        """A door bin: an open moulded tray hooked on the door liner; it lifts straight up off its hooks (a
+        lift-off part, which the core stops at a hand's lift)."""
         pieces, at = FR.door_bin(xs, ys, zs)
         name = self.add(f"door_bin_{k}", "bin", pieces)
-        self.slide("door", name, at, upper=FR.BIN_LIFT)
+        self.slide("door", name, at, upper=FR.BIN_LIFT, role="lift_off")
 
     def crispers(self, node, cav, xs, zs, margin):
         p = self.p
@@ -223,9 +224,7 @@ class FridgeLayout(Layout):
 
     def crisper(self, node, k, xs, ys, zs):
         """A crisper drawer: a clear open bin with a front and a finger pull, sliding out along +X."""
-        pieces, at, travel = FR.crisper(xs, ys, zs)
-        name = self.add(f"crisper_{k}", "drawer", pieces)
-        self.slide("body", name, at, upper=travel, requires_open="door")
+        FR.crisper(xs, ys, zs).place(self, f"crisper_{k}", requires_open="door")
 
     def control_panel(self, node, xs, ys, zs):
         """The control strip over the door (part of the body) and its push keys, pressing in along -X."""

@@ -149,16 +149,16 @@ class DishwasherLayout(A.PanelNodes):
 
     def drawer(self, node, k, front, tub):
         name = f"drawer_{k}"
-        pieces, at, travel, rack = DW.drawer(front, tub, self.p["handle_length"])
-        self.add(name, "drawer", pieces)
-        self.slide("body", name, at, upper=travel)
-        self.grow(node.one("drawer_rack"), drawer=name, **rack)
+        made = DW.drawer(front, tub, self.p["handle_length"])
+        made.drawer.place(self, name)
+        self.grow(node.one("drawer_rack"), drawer=name, slot=made.rack)
 
-    def drawer_rack(self, node, drawer, xs, cy1, za, top):
-        name = self.add(f"{drawer}_rack", "rack", A.dish_rack(xs, cy1, za, top, self.p["wire_pitch"], "lower",
-                                                               tines=False))
+    def drawer_rack(self, node, drawer, slot):
+        """A dish drawer's lower rack (without tines of its own: fold-down tine rows), fixed in its tub."""
+        rack = A.dish_rack(slot.xs, slot.cy1, slot.za, slot.top, self.p["wire_pitch"], "lower", tines=False)
+        name = self.add(f"{drawer}_rack", "rack", rack)
         self.fix(drawer, name)
-        self._tines(node, name, xs, DW.rack_half_width(cy1), za, top, DW.RACK_FRONT)
+        self._tines(node, name, slot.xs, DW.rack_half_width(slot.cy1), slot.za, slot.top, DW.RACK_FRONT)
 
     def _tines(self, node, rack, xs, ry, za, top, front, yh=None):
         """The fold-down tine rows of a rack (:func:`~.parts.dishwashers.tine_rows`)."""
@@ -258,10 +258,11 @@ class DishwasherLayout(A.PanelNodes):
             self.grow(kid, k=k, rack=rack, pieces=pieces, at=at, lift=lift)
 
     def basket(self, node, k, rack, pieces, at, lift):
-        """A cutlery basket stands in its rack and lifts straight up out of it (below the rack above)."""
+        """A cutlery basket stands in its rack and lifts straight up out of it (below the rack above): a
+        lift-off part, which the core stops at a hand's lift."""
         name = self.add(f"basket_{k}", "basket", pieces)
         if lift > DW.MIN_BASKET_LIFT:
-            self.slide(rack, name, Frame.at(at), upper=lift)
+            self.slide(rack, name, Frame.at(at), upper=lift, role="lift_off")
         else:
             self.fix(rack, name)
 

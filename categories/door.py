@@ -17,8 +17,6 @@ balances them with a counterweight heel) or a fixed bar pull. Parts: ``categorie
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from infmob_usd import geometry as g
@@ -122,52 +120,28 @@ class DoorLayout(Layout):
     def door(self, node):
         p = self.p
         design = node.choice
-        W, H, T = p["leaf_width"], p["leaf_height"], p["leaf_thickness"]
-        Dj = p["frame_depth"]
         left = p["hinge_side"] == "left"
-        th = P.THRESHOLD if node.one("threshold") else 0.0
-        z0 = th + P.FLOOR_GAP
-        if design == "double":
-            Wl = p["pair_fraction"] * W
-            gap_mid = P.GAP + T * T / Wl  # both back corners swing out at the meeting stiles
-            oy0, oy1 = -Wl - gap_mid / 2 - P.GAP, Wl + gap_mid / 2 + P.GAP
-            leaves = [((-Wl - gap_mid / 2, -gap_mid / 2), "left"), ((gap_mid / 2, Wl + gap_mid / 2), "right")]
-            shift = 0.0
-        elif design == "sliding":  # the leaf covers the opening and its architraves
-            trim = p["casing_width"] + P.REVEAL + P.BARN["trim_past"]
-            oy0, oy1 = -W / 2 + trim, W / 2 - trim
-            shift, H_open = 0.0, H - trim - P.FLOOR_GAP
-        else:
-            gap_lock = P.GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
-            oy0 = -W / 2 - (P.GAP if left else gap_lock)
-            oy1 = W / 2 + (gap_lock if left else P.GAP)
-            shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
-        head = z0 + (H_open if design == "sliding" else H) + P.GAP
-        frame = P.frame(Dj / 2, Dj, (oy0 + shift, oy1 + shift), head, p["jamb_width"], p["casing_width"], 0.0,
-                        Dj / 2 - T - P.GAP)
+        op = P.opening(design, p["leaf_width"], p["leaf_height"], p["leaf_thickness"], p["frame_depth"], left,
+                       bool(node.one("threshold")), p["pair_fraction"], p["casing_width"])
+        frame = P.frame(op.x_front, p["frame_depth"], op.opening, op.head, p["jamb_width"], p["casing_width"], 0.0,
+                        op.stop_x)
         latch = None
         if design == "single" and node.one("single").one("latch"):
-            y_lock, out = ((W / 2 + shift), 1.0) if left else ((-W / 2 + shift), -1.0)
-            latch = P.latch_bolt((Dj / 2 - T, Dj / 2), y_lock, out, p["handle_height"])
+            latch = P.latch_bolt(op.xs, op.lock_y, op.lock_out, p["handle_height"])
             k = 1 if left else 0  # the lock-side jamb
             frame[k] = P.mortise(frame[k], *latch[2])
-            jamb_face = (oy1 if left else oy0) + shift
-            frame.append(P.strike_plate(Dj / 2 - T / 2, jamb_face, out, p["handle_height"]))
+            frame.append(P.strike_plate(op.strike_x, op.jamb_face, op.lock_out, p["handle_height"]))
         self.add("frame", "frame", frame)
-        if th:
-            self.grow(node.one("threshold"), ys=(oy0 + shift, oy1 + shift))
-        zs = (z0, z0 + H)
+        if node.one("threshold"):
+            self.grow(node.one("threshold"), ys=op.opening)
         if design == "single":
-            self.grow(node.one("single"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs,
-                      latch=latch)
+            self.grow(node.one("single"), xs=op.xs, ys=op.ys, zs=op.zs, latch=latch)
         elif design == "dutch":
-            self.grow(node.one("dutch"), xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=zs)
+            self.grow(node.one("dutch"), xs=op.xs, ys=op.ys, zs=op.zs)
         elif design == "double":
-            self.grow(node.one("double"), xs=(Dj / 2 - T, Dj / 2), leaves=leaves, zs=zs)
+            self.grow(node.one("double"), xs=op.xs, leaves=op.leaves, zs=op.zs)
         else:
-            x0 = Dj / 2 + P.CASING_T + P.HEADER + P.SLIDE_GAP
-            self.grow(node.one("sliding"), xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(P.FLOOR_GAP, P.FLOOR_GAP + H),
-                      travel=(oy1 - oy0) + P.BARN["travel_past"])
+            self.grow(node.one("sliding"), xs=op.xs, ys=op.ys, zs=op.zs, travel=op.travel)
 
     def threshold(self, node, ys):
         """The threshold (a separate sill strip screwed to the floor between the jambs)."""
@@ -222,30 +196,32 @@ class DoorLayout(Layout):
     def top_leaf(self, node, xs, ys, zs):
         """A Dutch door's top half: a fixed knob on each face by its lock edge, a deadbolt's thumb-turn above."""
         p = self.p
-        left = p["hinge_side"] == "left"
-        y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
-        y = y_lock - (1.0 if left else -1.0) * P.BACKSET
+        edge = P.edges(xs, ys, zs, p["hinge_side"] == "left")
+        y = edge.handle_y
         zk = zs[0] + P.DUTCH_KNOB
         pieces = P.leaf(xs, ys, zs, zs[0], p["leaf_style"], p["glazing"], p["stile_width"], 1, wall=P.EXTERIOR_WALL)
         for n, face in ((1.0, xs[1]), (-1.0, xs[0])):
-            pieces += [P.rose(face, n, y, zk)] + g.knob_handle((face + n * P.ROSE[1], y, zk), (n, 0, 0), "handle",
-                                                               radius=p["knob_radius"], depth=P.DUTCH_KNOB_DEPTH)
-        self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
-        self.hinge("frame", "leaf_2", Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)), upper=P.OPENS)
+            knob = hardware.knob_handle(p["knob_radius"], P.DUTCH_KNOB_DEPTH, "handle")
+            pieces += [P.rose(face, n, y, zk)] + list(knob.placed(Frame.at((face + n * P.ROSE[1], y, zk),
+                                                                           z=(n, 0, 0))).pieces)
+        self.add("leaf_2", "leaf", pieces + P.knuckles(xs[1], edge.hinge_y, *zs))
+        self.hinge("frame", "leaf_2", edge.hinge, upper=P.OPENS)
         if node.one("deadbolt"):
             self.grow(node.one("deadbolt"), xs=xs, y=y, z=zk + P.THUMB["above"])
 
     def deadbolt(self, node, xs, y, z):
-        self.extend("leaf_2", P.thumb_rose(xs[0], -1.0, y, z, key=False) + P.thumb_rose(xs[1], 1.0, y, z, key=True))
-        start = xs[0] - P.ROSE[1] - P.GAP
-        self.add("deadbolt", "knob", P.thumb_turn(start, -1.0, y, z))
-        self.hinge("leaf_2", "deadbolt", Frame.at((start, y, z), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
+        self._thumb_turn("leaf_2", "deadbolt", xs, y, z)
+
+    def _thumb_turn(self, leaf, name, xs, y, z):
+        """A thumb turn on the leaf's back face, turning a quarter turn, its roses on both faces."""
+        made = P.thumb_turn_set(xs, y, z)
+        self.extend(leaf, made.roses)
+        placed = self.place(made.turn, name)
+        self.hinge(leaf, placed.root, placed.anchor("axis"), upper=P.THUMB_TURNS, role="knob")
 
     def leaf(self, node, xs, ys, zs, side, name, latch, dutch=False):
         p = self.p
-        left = side == "left"
-        y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
-        inward = 1.0 if left else -1.0  # from the hinge edge across the leaf
+        edge = P.edges(xs, ys, zs, side == "left")
         zk = p["handle_height"]
         if dutch:  # a Dutch door's bottom half: solid-core, one unglazed panel
             pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], "none", p["stile_width"], 1, wall=P.EXTERIOR_WALL)
@@ -253,11 +229,11 @@ class DoorLayout(Layout):
             pieces = P.leaf(xs, ys, zs, zk, p["leaf_style"], p["glazing"], p["stile_width"], p["panel_count"])
         if latch:
             pieces[0] = P.mortise(pieces[0], *latch[1])
-        self.add(name, "leaf", pieces + P.knuckles(xs[1], y_hinge, *zs))
-        line = Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1))
+        self.add(name, "leaf", pieces + P.knuckles(xs[1], edge.hinge_y, *zs))
+        line = edge.hinge
         if not latch:
             self.hinge("frame", name, line, upper=P.OPENS)
-        where = dict(xs=xs, y=y_lock - inward * P.BACKSET, z=zk, inward=inward, leaf=name)
+        where = dict(xs=xs, y=edge.handle_y, z=zk, inward=edge.inward, leaf=name)
         self.grow(node.one(node.choice), **where)
         if node.one("thumb_turn"):
             self.grow(node.one("thumb_turn"), **where)
@@ -282,45 +258,32 @@ class DoorLayout(Layout):
         zt = z + P.THUMB["above"]
         if self.p["handle"] == "pull":  # above the bar pull's top post
             zt = z + max(P.THUMB["above"], self.p["pull_length"] / 2 + P.THUMB["rose"] + P.THUMB["over_pull"])
-        self.extend(leaf, P.thumb_rose(xs[0], -1.0, y, zt, key=False) + P.thumb_rose(xs[1], 1.0, y, zt, key=True))
-        start = xs[0] - P.ROSE[1] - P.GAP
-        name = self.add(f"thumb_turn{leaf[4:]}", "knob", P.thumb_turn(start, -1.0, y, zt))
-        self.hinge(leaf, name, Frame.at((start, y, zt), z=(-1, 0, 0)), upper=math.pi / 2, role="knob")
+        self._thumb_turn(leaf, f"thumb_turn{leaf[4:]}", xs, y, zt)
 
     def sliding(self, node, xs, ys, zs, travel):
         self.grow(node.one("slider"), xs=xs, ys=ys, zs=zs, travel=travel)
 
     def slider(self, node, xs, ys, zs, travel):
         p = self.p
-        d = -1.0 if p["hinge_side"] == "left" else 1.0  # it slides toward the hinge side's wall
-        r = p["wheel_radius"]
-        barn = P.BARN
-        z_ax = zs[1] + barn["axle_above"] + r  # wheel axles above the leaf's top
-        z_rail = z_ax - r - P.RAIL_CLEAR
-        x_wall = xs[0] - P.SLIDE_GAP - P.HEADER  # the architraves' front face
-        x_w = x_wall + barn["wheel_out"]  # over the rail
-        lo, hi = (ys[0] + d * travel, ys[1]) if d < 0 else (ys[0], ys[1] + travel)
-        self.extend("frame", P.barn_track(x_wall, lo - barn["track_past"], hi + barn["track_past"], z_rail))
+        # it slides toward the hinge side's wall
+        hang = P.hanging(xs, ys, zs, travel, p["wheel_radius"], p["hinge_side"] == "left")
+        self.extend("frame", P.barn_track(hang.x_wall, *hang.track, hang.z_rail))
         pieces = P.leaf(xs, ys, zs, p["handle_height"], p["leaf_style"], p["glazing"], p["stile_width"],
                         p["panel_count"])
-        yh = [ys[0] + barn["strap_in"], ys[1] - barn["strap_in"]]
-        for y in yh:
-            pieces += P.hanger_strap(xs[1], x_w, y, zs[1] - barn["strap_below"], z_ax)
+        for y in hang.straps:
+            pieces += P.hanger_strap(xs[1], hang.x_wheel, y, zs[1] - P.BARN["strap_below"], hang.z_axle)
         # a bar pull on the front face near the trailing edge, a flush pull on the back
-        y_pull = (ys[1] - barn["pull_in"]) if d < 0 else (ys[0] + barn["pull_in"])
-        at = Frame.at((xs[1], y_pull, p["handle_height"]), z=(1, 0, 0), x=(0, 0, 1))
-        bar = hardware.bar_handle(p["pull_length"], "handle", P.PULL).attached("mount", to=at)
-        pieces += list(bar.parts[bar.root].pieces)
-        pieces.append(P.flush_pull(xs[0], y_pull, p["handle_height"]))
+        at = Frame.at((xs[1], hang.y_pull, p["handle_height"]), z=(1, 0, 0), x=(0, 0, 1))
+        pieces += hardware.bar_handle(p["pull_length"], "handle", P.PULL).attached("mount", to=at).pieces
+        pieces.append(P.flush_pull(xs[0], hang.y_pull, p["handle_height"]))
         self.add("leaf", "leaf", pieces)
-        self.slide("frame", "leaf", Frame.at((xs[1], ys[1] if d > 0 else ys[0], zs[0]), z=(0, d, 0)), upper=travel,
-                   role="slide")
-        for k, (kid, y) in enumerate(zip(node.of("roller"), yh, strict=True)):
-            self.grow(kid, k=k, at=(x_w, y, z_ax), r=r)
+        self.slide("frame", "leaf", hang.slide, upper=travel, role="slide")
+        for k, (kid, y) in enumerate(zip(node.of("roller"), hang.straps, strict=True)):
+            self.grow(kid, k=k, at=(hang.x_wheel, y, hang.z_axle), r=p["wheel_radius"])
         if node.one("kick_plate"):
             self.grow(node.one("kick_plate"), xs=xs, ys=ys, zs=zs, leaf="leaf")
         if node.one("guide"):
-            self.grow(node.one("guide"), xs=xs, x_wall=x_wall, ys=ys, d=d)
+            self.grow(node.one("guide"), xs=xs, x_wall=hang.x_wall, ys=ys, d=hang.d)
 
     def guide(self, node, xs, x_wall, ys, d):
         """What keeps the leaf's bottom edge off the wall: a floor guide it runs in, at the opening's edge on the

@@ -154,7 +154,7 @@ class MicrowaveLayout(A.PanelNodes):
         self.extend("body", [MW.ceramic_floor(cavity)])
         self.grow(node.one("door"), body=door)
         if rack := node.one("rack"):
-            self.grow(rack, parent="body", **MW.floor_rack_seat(cavity))
+            self.grow(rack, parent="body", seat=MW.floor_rack_seat(cavity))
 
     def over_the_range(self, node, cavity, door, box):
         """A turntable, a door with a bar handle, a vent grille over the door and panel, and under the
@@ -162,15 +162,15 @@ class MicrowaveLayout(A.PanelNodes):
         self.grow(node.one("plate"), cavity=cavity)
         self.grow(node.one("otr_door"), body=door)
         self.extend("body", MW.vent_grille(box))
-        for k, (kid, at) in enumerate(zip(node.of("filter"), MW.filter_boxes(box), strict=True)):
-            self.grow(kid, k=k, box=at)
+        spec, places = MW.grease_filters(door)
+        for k, (kid, at) in enumerate(zip(node.of("filter"), places, strict=True)):
+            self.grow(kid, k=k, spec=spec, at=at)
 
-    def filter(self, node, k, box):
+    def filter(self, node, k, spec, at):
         """A grease filter in the body's bottom: it slides 25 mm back in its track before it drops out
         (GE JVM7195, Whirlpool WMH31017 owner's manuals: "slide the filter to the rear, pull down")."""
-        pieces, at, travel = MW.grease_filter(box)
-        name = self.add(f"filter_{k}", "filter", pieces)
-        self.slide("body", name, at, upper=travel)
+        placed = self.place(spec.build().attached("front", to=at), f"filter_{k}")
+        self.slide("body", placed.root, placed.anchor("slide"), upper=spec.travel)
 
     def otr_door(self, node, body):
         self._door(node, body, "bar")
@@ -189,22 +189,21 @@ class MicrowaveLayout(A.PanelNodes):
 
     def drawer(self, node, body):
         p = self.p
-        pieces, at, travel = MW.drawer(body, p["body_finish"], p["interior_finish"], p["handle_length"])
-        self.add("drawer", "drawer", pieces)
-        self.slide("body", "drawer", at, upper=travel)
+        MW.drawer(body, p["body_finish"], p["interior_finish"], p["handle_length"]).place(self, "drawer")
 
     def plate(self, node, cavity):
-        spindle, plate, axis, rack_seat = MW.turntable(cavity, self.p["plate_fraction"])
-        self.extend("body", [spindle])
-        self.add("plate", "plate", plate)
-        self.spin("body", "plate", axis, role="turntable")
+        turntable = MW.turntable(cavity, self.p["plate_fraction"])
+        self.extend("body", [turntable.spindle])
+        plate = self.place(turntable.plate, "plate")
+        self.spin("body", plate.root, plate.anchor("axis"), role="turntable")
         if rack := node.one("rack"):  # on the tray's floor, inside its rim
-            self.grow(rack, parent="plate", **rack_seat)
+            self.grow(rack, parent=plate.root, seat=turntable.rack)
 
-    def rack(self, node, parent, center, z0, radius, room):
-        """A low wire rack: a square grid inscribed in ``radius`` on four legs, fixed to what it stands on."""
-        self.add("rack", "rack", MW.stand_rack(center, z0, radius, room, self.p["rack_height"]))
-        self.fix(parent, "rack")
+    def rack(self, node, parent, seat):
+        """A low wire rack: a square grid inscribed in the seat's radius on four legs, fixed to what it
+        stands on."""
+        rack = self.place(MW.stand_rack(seat, self.p["rack_height"]), "rack")
+        self.fix(parent, rack.root)
 
     def door(self, node, body):
         self._door(node, body, node.choice)
@@ -224,10 +223,10 @@ class MicrowaveLayout(A.PanelNodes):
             self.grow(node.one(opener), at=body.handle_at, length=length)
 
     def bar(self, node, at, length):
-        self.extend("door", MW.door_handle("bar", length, at))
+        self.extend("door", MW.door_handle("bar", length).attached("edge", to=at).pieces)
 
     def recessed(self, node, at, length):
-        self.extend("door", MW.door_handle("recessed", length, at))
+        self.extend("door", MW.door_handle("recessed", length).attached("edge", to=at).pieces)
 
     def control_panel(self, node, body, release):
         """A column on the fascia (display, keys, dials, door release) or, on a drawer model's wide strip,

@@ -93,7 +93,7 @@ PARAMS = (
     Int("button_count", "push buttons under the display", "", 2, 6),
     Int("grate_count", "cooktop grates side by side; auto = 2 below 0.7 m width, else 3", "", 2, 3, auto=True),
     Float("grate_play", "grate play forward and sideways once lifted", "m", *R["grate_play"]),
-    Float("grate_lift", "grate lift off the cooktop: clear of the burner caps (20 mm) and a hand under it", "m",
+    Float("grate_lift", "grate lift off the cooktop as declared (the core stops a lift-off part at a hand's lift)", "m",
           *R["grate_lift"]),
     Float("lower_height", "extra height of a double wall oven's lower oven (added to height)", "m", *R["lower_height"]),
     Float("warming_height", "warming drawer front height (a range with a warming drawer)", "m", *R["warming_height"]),
@@ -186,21 +186,20 @@ class OvenLayout(A.PanelNodes):
             self.grow(kid, k=k, xs=xs, col=col, H=H)
 
     def grate(self, node, k, xs, col, H):
-        """A loose cast grate: it lifts straight off its feet (clear of the burner caps), then has a little
-        play forward and sideways (a lift first, then free; not a slide across the cooktop)."""
+        """A loose cast grate: it lifts straight off its feet, then has a little play forward and sideways (a
+        lift first, then free; not a slide across the cooktop). Its bars stand on 30 mm feet over the 20 mm
+        burner caps, so a hand's lift frees it: role ``lift_off``, the core stops it there."""
         p = self.p
         pieces, origin, side = OV.grate(xs, col, H)
         name = self.add(f"grate_{k}", "grate", pieces)
         self.join(J.limited_floating("body", name, origin, OV.GRATE_AXES,
-                                     ((0.0, p["grate_lift"]), (0.0, p["grate_play"]), (-side, side))))
+                                     ((0.0, p["grate_lift"]), (0.0, p["grate_play"]), (-side, side)), role="lift_off"))
 
     def drawer(self, node, xs, ys, zs, warming=False):
         """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
         warming drawer: an enamel tray, a bar handle like the door's and a marking strip."""
         p = self.p
-        pieces, at, depth = OV.drawer(xs, ys, zs, warming, p["handle_length"])
-        self.add("drawer", "drawer", pieces)
-        self.slide("body", "drawer", at, upper=p["drawer_travel"] * depth)
+        OV.drawer(xs, ys, zs, warming, p["handle_length"], p["drawer_travel"]).place(self, "drawer")
 
     def warming_drawer(self, node, xs, ys, zs):
         self.drawer(node, xs, ys, zs, warming=True)

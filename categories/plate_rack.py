@@ -153,20 +153,21 @@ class RackLayout(Layout):
 
     def caddy(self, node, rack, k=0):
         caddy = self.place(R.caddy("caddy", "cutlery").attached("mount", to=rack.anchor(f"caddy_{k}")), f"caddy_{k}")
-        self.slide("rack", caddy.root, caddy.anchor("lift"), upper=R.CADDY_LIFT)
+        self.lift("rack", caddy.root, caddy.anchor("lift"), engagement=R.POCKET["h"])
 
     def cup(self, node, k, at):
         self.grow(node.one(node.choice), k=k, at=at)
 
-    def _lift_off(self, name, part, at):
+    def _on_peg(self, name, part, at):
+        """A mug or tumbler upside down on its peg, lifted off it (role lift_off, the peg's height engaged)."""
         placed = self.place(part.attached("rim", to=at), name)
-        self.slide("rack", placed.root, placed.anchor("lift"), upper=R.CUP_LIFT)
+        self.lift("rack", placed.root, placed.anchor("lift"), engagement=R.PEG["h"])
 
     def mug(self, node, k, at):
-        self._lift_off(f"cup_{k}", R.mug("mug"), at)
+        self._on_peg(f"cup_{k}", R.mug("mug"), at)
 
     def glass(self, node, k, at):
-        self._lift_off(f"glass_{k}", R.tumbler("glass"), at)
+        self._on_peg(f"glass_{k}", R.tumbler("glass"), at)
 
 
 CATEGORY = Category("plate_rack", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, RackLayout, MATERIALS,

@@ -1,7 +1,8 @@
 """Window: casement, sliding, tilt-and-turn, top-hung awning or double-hung sashes in a frame.
 
 Designs (``style``) beyond the two below: ``tilt_turn`` (casements whose side hinge rides on a tilt
-hinge along the bottom rail: flip_revolute, the tilt pressed closed by gravity), ``awning`` (top-hung
+hinge along the bottom rail: flip_revolute, the tilt pressed closed by gravity, the two modes exclusive:
+the handle selects tilt or turn), ``awning`` (top-hung
 sashes opening outward about a pivot in front of their centre of mass), ``double_hung`` (the lower sash
 slides up, the upper one tilts in; a passive down-sliding upper sash would drop without its spring
 balance). Optional shutters and curtains as before.

@@ -3,6 +3,7 @@
 >>> import infmob_usd
 >>> obj = infmob_usd.generate("kitchen_cabinet", seed=3)
 >>> folder = infmob_usd.save(obj, "out")        # out/kitchen_cabinet_000003/
+>>> room = infmob_usd.save_scene(infmob_usd.scene("kitchen", seed=3), "out")  # out/kitchen_000003/scene.usda
 """
 
 from ._version import __version__
@@ -17,6 +18,11 @@ from .errors import (
     UnknownCategoryError,
 )
 from .model import ArticulatedObject
+from .scenes import load_sapien as _load_sapien_scene
+from .scenes import save_scene
+from .scenes import scene as scene
+
+scene.load_sapien = _load_sapien_scene  # infmob_usd.scene(kind, seed) makes one; .load_sapien(folder) loads it
 
 __all__ = [
     "ArgumentTypeError",
@@ -32,4 +38,6 @@ __all__ = [
     "get_category",
     "list_categories",
     "save",
+    "save_scene",
+    "scene",
 ]

@@ -1,4 +1,4 @@
-"""The ``infmob`` command line: list, params, generate, parts, fuzz, validate, preview, stats, gallery, textures,
+"""The ``infmob`` command line: list, params, generate, scene, parts, fuzz, validate, preview, stats, gallery, textures,
 bench (docs/cli.md)."""
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("params", help="print a category's parameter schema and growth rules")
     p.add_argument("category", help="a category id (infmob list)")
     # in this order: `infmob --help` lists the commands so
-    for add in (_generate_command, _parts_command, _fuzz_command, _validate_command, _preview_command,
+    for add in (_generate_command, _scene_command, _parts_command, _fuzz_command, _validate_command, _preview_command,
                 _stats_command, _gallery_command, _textures_command, _bench_command):
         add(sub)
     return ap
@@ -58,6 +58,27 @@ def _generate_command(sub) -> None:
                    help="a part library (infmob parts import / export-builtin): retrievable parts may be its meshes")
     g.add_argument("--parts-share", type=float, default=None, metavar="P",
                    help="with --parts: probability in [0, 1] that a retrievable part is retrieved; default 0.5")
+
+
+def _scene_command(sub) -> None:
+    """Add the ``infmob scene`` subcommand and its options to ``sub``."""
+    from .scenes import kinds
+
+    sc = sub.add_parser("scene", help="compose rooms of generated objects: DIR/KIND_SSSSSS/scene.usda per seed",
+                        description="Compose a room (kitchen, ...) of generated articulated objects as one USD stage"
+                        " (scene.usda referencing each object's folder), scene.json and a MuJoCo scene.xml.")
+    sc.add_argument("kind", help=f"a scene kind: {', '.join(kinds())}")
+    sc.add_argument("--seed", type=int, default=0, help="first seed S; default 0")
+    sc.add_argument("--count", type=int, default=1, help="scenes (seeds S..S+N-1); default 1")
+    sc.add_argument("--out", default="infmob_out", help="output folder DIR; default ./infmob_out")
+    sc.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="override a scene parameter (repeatable); see --params")
+    sc.add_argument("--texture-size", type=int, default=256, metavar="PX",
+                    help="texture edge of every object, a power of two 16..4096; default 256")
+    sc.add_argument("--workers", type=int, default=None, help="scenes made in parallel; default: all cores")
+    sc.add_argument("--params", action="store_true", help="print the kind's parameters and growth rules, and exit")
+    sc.add_argument("--preview", action="store_true",
+                    help="also render preview.png (at rest) and preview_open.png (every joint open) in each scene")
 
 
 def _parts_command(sub) -> None:
@@ -385,6 +406,53 @@ def retrieval_line(rows: list[dict]) -> str:
     return text
 
 
+def _make_scene(job) -> str:
+    from .scenes import save_scene, scene
+
+    kind, seed, overrides, texture_size, out, preview = job
+    folder = save_scene(scene(kind, seed, texture_size=texture_size, **overrides), out)
+    if preview:
+        import cv2
+
+        from .validate.scene_preview import render_scene
+
+        for fraction, name in ((0.0, "preview.png"), (1.0, "preview_open.png")):
+            cv2.imwrite(str(folder / name), render_scene(folder, fraction=fraction)[..., ::-1])
+    return str(folder)
+
+
+def cmd_scene(args) -> int:
+    from concurrent.futures import ProcessPoolExecutor
+
+    from .api import check_texture_size
+    from .params import parse_assignment
+    from .scenes import get_kind
+    from .seeding import MAX_SEED
+
+    kind = get_kind(args.kind)
+    if args.params:
+        print(f"{kind.name}: {kind.doc}\n\n{kind.schema.table()}\n\ngrowth rules:\n{kind.grammar.table()}")
+        return 0
+    overrides = kind.schema.validate(dict(parse_assignment(s) for s in args.set))
+    check_texture_size(args.texture_size)
+    if args.count < 1 or args.count > MAX_COUNT:
+        return _fail(f"--count must be 1..{MAX_COUNT}, got {args.count}")
+    if args.seed < 0 or args.seed + args.count - 1 > MAX_SEED:
+        return _fail(f"--seed must be 0..{MAX_SEED} (and --seed + --count - 1 too), got {args.seed}")
+    workers = _workers(args.workers, args.count, "scenes")
+    out = _out_dir(args.out)
+    jobs = [(args.kind, s, overrides, args.texture_size, out, args.preview)
+            for s in range(args.seed, args.seed + args.count)]
+    if workers == 1:
+        for job in jobs:
+            print(_make_scene(job), flush=True)
+        return 0
+    with ProcessPoolExecutor(workers) as pool:
+        for folder in pool.map(_make_scene, jobs):
+            print(folder, flush=True)
+    return 0
+
+
 def cmd_parts(args) -> int:
     from . import partlib, parts_tools
 
@@ -552,10 +620,35 @@ def cmd_validate(args) -> int:
         print(summary_table(rows))
         if report_path:
             _write_file(report_path, json.dumps(report_json(rows), indent=2) + "\n")
-        return 0 if n_ok == len(folders) else 1
+        scenes_ok, scenes = _validate_scenes(paths, args) if not args.usd_only else (0, 0)
+        return 0 if n_ok == len(folders) and scenes_ok == scenes else 1
     finally:
         if tmp:
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _validate_scenes(paths, args) -> tuple[int, int]:
+    """The scene checks (:mod:`infmob_usd.validate.scene`) of every scene folder (with ``scene.json``)
+    among ``paths``; with ``--sim`` also every fixed object's joints driven in the room. Returns
+    ``(passed, scenes)``."""
+    found = sorted({q.parent for p in map(Path, paths) for q in
+                    ([p / "scene.json"] if (p / "scene.json").is_file() else p.rglob("scene.json"))})
+    if not found:
+        return 0, 0
+    from .validate.scene import check_scene
+
+    n_ok = 0
+    for folder in found:
+        checks = check_scene(folder, reach=args.sim)
+        ok = all(c.ok for c in checks)
+        n_ok += ok
+        fails = "; ".join(f"{c.name}: {c.detail}" for c in checks if not c.ok)
+        print(f"{'ok  ' if ok else 'FAIL'} scene {folder}" + (f"  [{fails}]" if fails else ""), flush=True)
+        if args.verbose:
+            for c in checks:
+                print(f"      {'ok  ' if c.ok else 'FAIL'} {c.name}: {c.detail}")
+    print(f"{n_ok}/{len(found)} scenes passed every check")
+    return n_ok, len(found)
 
 
 def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False, mass: bool = True):
@@ -702,7 +795,7 @@ def cmd_gallery(args) -> int:
 
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
             "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures,
-            "gallery": cmd_gallery, "fuzz": cmd_fuzz, "parts": cmd_parts}
+            "gallery": cmd_gallery, "fuzz": cmd_fuzz, "parts": cmd_parts, "scene": cmd_scene}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -728,6 +821,12 @@ def main(argv: list[str] | None = None) -> int:
         return e.code
     except KeyboardInterrupt:
         return 130
+    except BrokenPipeError:  # `infmob params x | head`: the reader left; say nothing more
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        except OSError:
+            pass
+        return 0
 
 
 if __name__ == "__main__":

@@ -23,10 +23,6 @@ the tests import directly:
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
-import numpy as np
-
 from .booleans import subtract
 from .hulls import convex_hull, hull_arrays
 from .piece import Piece, from_trimesh
@@ -54,49 +50,5 @@ __all__ = [
     "box_arrays", "cylinder_arrays", "revolve_arrays", "instances",
     "sections_for", "simplify_profile", "collision_bands", "wedge_points",
     "convex_hull", "hull_arrays", "subtract", "rotation_between",
-    "bar_handle", "knob_handle", "pull_handle",
 ]
 
-
-# ---------------------------------------------------------------------------
-# handles: built on a face with outward normal ``normal`` (unit axis vector)
-
-
-def bar_handle(anchor: Sequence[float], normal: Sequence[float], along: Sequence[float], length: float,
-               material: str, standoff: float = 0.03, radius: float = 0.006) -> list[Piece]:
-    """A bar pull: two posts out of the face and a bar between them.
-
-    ``anchor`` is the centre of the handle on the face; ``along`` the bar direction.
-    """
-    anchor, n, d = (np.asarray(x, float) for x in (anchor, normal, along))
-    half = d * length / 2
-    inset = d * min(0.02, length * 0.15)
-    pieces = []
-    for end in (anchor - half + inset, anchor + half - inset):
-        pieces.append(cylinder(end, end + n * standoff, radius * 0.8, material, 12, name="handle"))
-    bar_c = anchor + n * (standoff + radius)
-    pieces.append(cylinder(bar_c - half, bar_c + half, radius, material, 16, name="handle"))
-    return pieces
-
-
-def knob_handle(anchor: Sequence[float], normal: Sequence[float], material: str, radius: float = 0.015,
-                depth: float = 0.025) -> list[Piece]:
-    """A round knob: a stem and a wider cap."""
-    anchor, n = np.asarray(anchor, float), np.asarray(normal, float)
-    stem = cylinder(anchor, anchor + n * depth * 0.6, radius * 0.45, material, 16, name="handle")
-    cap = cylinder(anchor + n * depth * 0.55, anchor + n * depth, radius, material, 24, name="handle")
-    return [stem, cap]
-
-
-def pull_handle(anchor: Sequence[float], normal: Sequence[float], along: Sequence[float], length: float,
-                material: str, depth: float = 0.018, lip: float = 0.012) -> list[Piece]:
-    """A low-profile edge pull (the "recessed" style): a flat lip standing off the face."""
-    anchor, n, d = (np.asarray(x, float) for x in (anchor, normal, along))
-    side = np.cross(n, d)
-    corners = []
-    for s in (-1, 1):
-        for t in (0, 1):
-            for w in (-1, 1):
-                corners.append(anchor + d * s * length / 2 + n * depth * t + side * w * lip / 2)
-    mesh = convex_hull(np.array(corners))
-    return [from_trimesh(mesh, material, name="handle")]

@@ -30,6 +30,7 @@ from typing import Any
 import numpy as np
 
 from . import joints as J
+from . import lift_off
 from .errors import ModelError
 from .params import Choice, Flag
 
@@ -353,6 +354,13 @@ class Layout:
               requires_open: str | None = None) -> None:
         """A prismatic joint along ``at.z``."""
         self.bp.join(J.prismatic(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+
+    def lift(self, parent: str, child: str, at, engagement: float | None = None) -> None:
+        """A lift-off part lifted along ``at.z`` (role ``lift_off``): free, and its joint's end, once lifted
+        past its seat's ``engagement`` (m) by :data:`~infmob_usd.lift_off.FREE`; without one, a hand's lift
+        (:data:`~infmob_usd.lift_off.LIFT_OFF`: :func:`~infmob_usd.lift_off.lift`)."""
+        self.bp.join(J.prismatic(parent, child, at.origin, at.z, 0.0, lift_off.lift(engagement), "lift_off",
+                                 engagement=engagement))
 
     def spin(self, parent: str, child: str, at, role: str = "knob", requires_open: str | None = None) -> None:
         """A continuous joint about ``at.z``."""

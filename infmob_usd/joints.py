@@ -104,6 +104,16 @@ class JointSpec:
     (:attr:`.model.Joint.requires_open`). ``None``: moves freely."""
     mimic: Mimic | None = None
     """The joint whose coordinate drives this one (:class:`Mimic`); ``None``: moves on its own."""
+    exclusive: bool = False
+    """A compound joint whose DoFs are alternative modes: each moves only while the others are at rest
+    (a tilt-and-turn sash's handle selects tilt or turn). Each written joint of the chain lists the
+    others as its ``excludes`` (:attr:`.model.Joint.excludes`); an open state opens the first mode,
+    parent side first (:func:`one_mode`)."""
+    engagement: float | None = None
+    """A lift-off joint (role ``lift_off``): how far its seat guides the part (m: a peg's height for a mug
+    hung on it, a pocket's lip for a caddy standing in it); it is free, and its slides end, that far plus
+    :data:`~infmob_usd.lift_off.FREE` up (:func:`infmob_usd.lift_off.capped_joint`). ``None``: a hand's
+    lift, :data:`~infmob_usd.lift_off.LIFT_OFF`."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -118,6 +128,12 @@ class JointSpec:
         if self.mimic is not None and self.kind not in ("revolute", "prismatic"):
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} cannot follow another joint:"
                              " only a revolute or prismatic joint can be coupled")
+        if self.engagement is not None and (self.role != "lift_off" or not 0.0 < self.engagement < math.inf):
+            raise ModelError(f"joint {self.parent}->{self.child}: an engagement depth (got {self.engagement!r})"
+                             " is a positive length, declared on a role lift_off joint only")
+        if self.exclusive and len(self.dofs) < 2:
+            raise ModelError(f"{self.kind} joint {self.parent}->{self.child} has one DoF: only the modes of a"
+                             " compound joint can exclude each other")
 
     @property
     def movable(self) -> bool:
@@ -150,8 +166,10 @@ def continuous(parent: str, child: str, pivot: V3, axis: V3, role: str = "knob",
 
 def prismatic(parent: str, child: str, origin: V3, axis: V3, lower: float, upper: float,
               role: str = "slide",
-        requires_open: str | None = None) -> JointSpec:
-    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role, requires_open)
+        requires_open: str | None = None, engagement: float | None = None) -> JointSpec:
+    """A slide; ``engagement``: a lift-off part's seat depth (:attr:`JointSpec.engagement`)."""
+    return JointSpec("prismatic", parent, child, (Dof("prismatic", origin, axis, lower, upper),), role, requires_open,
+                     engagement=engagement)
 
 
 def revolute_prismatic(parent: str, child: str, pivot: V3, axis: V3, turn: tuple[float, float],
@@ -191,7 +209,28 @@ def limited_floating(parent: str, child: str, origin: V3, axes: tuple[V3, V3, V3
 
 def flip_revolute(parent: str, child: str, pivot0: V3, axis0: V3, turn0: tuple[float, float],
                   pivot1: V3, axis1: V3, turn1: tuple[float, float], role: str = "hinge",
-        requires_open: str | None = None) -> JointSpec:
-    """Two hinge lines in series (a towel ring, a folding lid)."""
+        requires_open: str | None = None, exclusive: bool = False) -> JointSpec:
+    """Two hinge lines in series (a towel ring, a folding lid); ``exclusive``: one at a time (a
+    tilt-and-turn sash turns or tilts, never both: :attr:`JointSpec.exclusive`)."""
     return JointSpec("flip_revolute", parent, child, (
-        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role, requires_open)
+        Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role, requires_open,
+        exclusive=exclusive)
+
+
+def one_mode(q: dict[str, float], order: Sequence[str], excludes: dict[str, Sequence[str]],
+             rest: dict[str, float] | None = None) -> dict[str, float]:
+    """``q`` (joint name -> value) with the alternative modes of an exclusive joint
+    (:attr:`JointSpec.exclusive`) opened one at a time: walking ``order`` (parent side first), every
+    joint that an earlier joint off its rest value excludes is put back at rest (``rest``, default 0).
+    An open state of a tilt-and-turn sash is turned, not tilted and turned."""
+    rest = rest or {}
+    out = dict(q)
+    shut: set[str] = set()
+    for name in order:
+        if name in shut or out.get(name, rest.get(name, 0.0)) == rest.get(name, 0.0):
+            continue
+        for other in excludes.get(name, ()):
+            if other in out:
+                out[other] = rest.get(other, 0.0)
+            shut.add(other)
+    return out

@@ -3,9 +3,11 @@ liner, a cistern lid, a pull-off pan handle, a mug on a peg, a bin on its hooks)
 
 A joint models such a part only while its seat still guides it: the travel of a lift-off slide is the
 lift a hand gives before the part is free, not a slide through the air. A category declares the joint
-with role ``lift_off`` and the most its mechanism allows; :func:`capped` shortens every slide of such a
-joint to :data:`LIFT_OFF`, and :meth:`~infmob_usd.category.Category.build` applies it to each blueprint,
-so every category inherits the rule.
+with role ``lift_off`` and the most its mechanism allows, and where it knows it, how deep the part
+engages its seat (:attr:`~infmob_usd.joints.JointSpec.engagement`: a mug on a 55 mm peg); :func:`capped`
+shortens every slide of such a joint to :func:`lift` (the engagement and :data:`FREE`, or
+:data:`LIFT_OFF`), and :meth:`~infmob_usd.category.Category.build` applies it to each blueprint, so every
+category inherits the rule.
 """
 
 from __future__ import annotations
@@ -21,12 +23,23 @@ LIFT_OFF = 0.03
 15 mm, a pot lid's flange and a stopper's plug 10-15 mm, a pan handle's clamp on its 14 mm lug); 30 mm
 clears the deepest with 1 cm to spare, where the part is free in the hand and a joint no longer models it."""
 
+FREE = 0.005
+"""m: a part with a known seat depth is lifted this far past it: free of what locates it, and no further."""
+
+
+def lift(engagement: float | None = None) -> float:
+    """The travel of a lift-off slide: ``engagement`` (m, how far the seat guides the part) and :data:`FREE`,
+    or :data:`LIFT_OFF` when the seat's depth is not known."""
+    return LIFT_OFF if engagement is None else engagement + FREE
+
 
 def capped_joint(spec: JointSpec) -> JointSpec:
-    """``spec`` with each slide of a lift-off joint at most :data:`LIFT_OFF` long (itself if none is longer)."""
-    if spec.role != ROLE or not any(d.type == "prismatic" and d.upper > LIFT_OFF for d in spec.dofs):
+    """``spec`` with each slide of a lift-off joint at most :func:`lift` of its engagement long (itself if
+    none is longer)."""
+    cap = lift(spec.engagement)
+    if spec.role != ROLE or not any(d.type == "prismatic" and d.upper > cap for d in spec.dofs):
         return spec
-    return replace(spec, dofs=tuple(replace(d, upper=LIFT_OFF) if d.type == "prismatic" and d.upper > LIFT_OFF
+    return replace(spec, dofs=tuple(replace(d, upper=cap) if d.type == "prismatic" and d.upper > cap
                                     else d for d in spec.dofs))
 
 

@@ -69,6 +69,9 @@ class Joint:
     # groups that must be closed (at rest) before this joint moves: a part whose sweep from the
     # all-open state would meet them while they are open (set by physical.limit_to_clearance)
     requires_closed: tuple[str, ...] = ()
+    # joints of the same part that must be at rest while this one is off rest, and it while they are:
+    # the alternative modes of an exclusive compound joint (JointSpec.exclusive; a tilt-and-turn sash)
+    excludes: tuple[str, ...] = ()
 
     @property
     def movable(self) -> bool:
@@ -218,6 +221,7 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
             else:
                 chain_parent = parent
                 n = len(spec.dofs)
+                names = [f"joint_{part.name}"] if n == 1 else [f"joint_{part.name}_{i}" for i in range(n)]
                 for i, dof in enumerate(spec.dofs):
                     last = i == n - 1
                     child = part.name if last else f"{part.name}_dummy{i}"
@@ -228,13 +232,13 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
                         make_link(child, part.label, origin, part.pieces)
                     else:
                         make_link(child, "dummy", origin, [], dummy=True)
-                    jname = f"joint_{part.name}" if n == 1 else f"joint_{part.name}_{i}"
-                    joints.append(Joint(jname, dof.type, chain_parent, child, origin,
+                    joints.append(Joint(names[i], dof.type, chain_parent, child, origin,
                                         np.asarray(dof.axis, float), float(dof.lower), float(dof.upper),
                                         dyn.damping, dyn.friction, dyn.effort, dyn.velocity,
                                         spec.kind, spec.role, part.name, spec.requires_open,
                                         mimic=None if spec.mimic is None else
-                                        (spec.mimic.leader, spec.mimic.ratio, spec.mimic.offset)))
+                                        (spec.mimic.leader, spec.mimic.ratio, spec.mimic.offset),
+                                        excludes=tuple(names[:i] + names[i + 1:]) if spec.exclusive else ()))
                     chain_parent = child
             queue.append(part.name)
     joints = _resolve_mimics(joints)

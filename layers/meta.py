@@ -56,7 +56,15 @@ def _clean(x):
 WIKIDATA: dict[str, tuple[str, str]] = {
     "microwave": ("Q127956", "http://www.wikidata.org/entity/Q127956 'microwave oven' (COCO)"),
     "beverage_fridge": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
+    "stovetop": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
+                              " verified item for stove, hob or cooktop)"),
+    "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
+    "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"
+                               " toaster oven)"),
+    "kettle": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                           " verified item for kettle)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
     "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
     "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
@@ -79,10 +87,16 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                        " 04334820-n 'stopcock')"),
     "pot": ("Q15711817", "http://www.wikidata.org/entity/Q15711817 'stock pot' (WN 04146060-n 'saucepan' and"
                          " 04331435-n 'stockpot'; no verified item for cooking pot itself)"),
+    "safe": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item for"
+                        " safe: OEWN's 04132122-n 'safe' has none, its chain strongbox > box > container has this"
+                        " nearest one)"),
     "storage_rack": ("Q45242859", "http://www.wikidata.org/entity/Q45242859 'shelf' (WN 04197095-n; no"
                                   " verified item for shelving unit or pallet rack, which are built of shelves)"),
     "plate_rack": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU;"
                                " no verified item for dish rack or plate rack)"),
+    "trash_can": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified"
+                             " item for trash can: OEWN's 02750182-n 'ashcan, trash can, wastebin' has none, its"
+                             " chain bin > container has this nearest one)"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
@@ -176,8 +190,12 @@ def _spring_and_mimic(j) -> dict:
     """``spring``: a return spring (N/m or N m/rad about ``reference``, m or rad; the joint's ``damping``
     goes with it), which a URDF cannot carry: in SAPIEN set it as the joint's drive,
     ``set_drive_property(stiffness, damping)`` and ``set_drive_target(reference)``. ``mimic``: the joint
-    follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``)."""
+    follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``). ``excludes``: the
+    joints of the same part that must be at rest while this one is off rest (and it while they are), the
+    alternative modes of one fitting (a tilt-and-turn sash tilts or turns)."""
     out = {}
+    if j.excludes:
+        out["excludes"] = list(j.excludes)
     if j.stiffness > 0:
         out["spring"] = {"stiffness": j.stiffness, "reference": j.spring_ref}
     if j.mimic is not None:

@@ -236,3 +236,23 @@ def test_browser_over_serve(browser, dataset, site):
     finally:
         proc.terminate()
         proc.wait(timeout=30)
+
+
+def test_browser_a_tilt_and_turn_sash_opens_one_mode(browser, tmp_path):
+    """The viewer honours ``excludes``: Open all turns a tilt-and-turn sash without tilting it, and
+    dragging its tilt slider puts the turn back to rest (one mode at a time, as its handle selects)."""
+    ds = tmp_path / "ds"
+    infmob_usd.save(infmob_usd.generate("window", seed=1, texture_size=16, style="tilt_turn"), ds)
+    site = build_gallery(ds, render=False, log=lambda *a, **k: None)
+    page, problems = _page(browser, site["index"].as_uri())
+    _open(page, "window_000001")
+    page.click("#btn-open")
+    page.wait_for_function("!INFMOB_GALLERY.viewer.anim", polling=250)
+    grab = "Object.fromEntries(INFMOB_GALLERY.viewer.joints.map(j => [j.name, j.q]))"
+    q = page.evaluate(grab)
+    assert q["joint_sash_0_0"] > 0.5 and q["joint_sash_0_1"] == 0.0, q
+    tilt = page.locator("#sliders input[data-joint=joint_sash_0_1]")
+    tilt.evaluate("(e) => { e.value = e.max; e.dispatchEvent(new Event('input')); }")
+    q = page.evaluate(grab)
+    assert q["joint_sash_0_1"] > 0.1 and q["joint_sash_0_0"] == 0.0, q
+    assert not problems, problems

@@ -110,14 +110,6 @@ def test_corrupt_meshes_are_rejected_with_a_clear_error():
         g.box([0, 1, 1], [0, 0, 0], "m")
 
 
-def test_handles_are_named_handle():
-    for pieces in (g.bar_handle([0, 0, 0], [1, 0, 0], [0, 1, 0], 0.2, "h"),
-                   g.knob_handle([0, 0, 0], [1, 0, 0], "h"),
-                   g.pull_handle([0, 0, 0], [1, 0, 0], [0, 1, 0], 0.2, "h")):
-        assert all(p.name == "handle" for p in pieces)
-        assert min(p.bounds[0, 0] for p in pieces) >= -1e-9  # stands off the face, never inside it
-
-
 def test_collision_hulls_stay_within_physx_vertex_limit():
     ball = g.sphere([0, 0, 0], 0.1, "m")
     rng = np.random.default_rng(0)

@@ -174,12 +174,13 @@ def test_no_import_cycle():
 TOP = {"infmob_usd", "infmob_usd.__main__", "infmob_usd.api", "infmob_usd.cli", "infmob_usd.batch",
        "infmob_usd.fuzz", "infmob_usd.parts_tools"}
 """The entry points: they wire the rooms together (generate, save, the command line, the fuzzer, the
-part-library tools that export and measure the categories' own parts)."""
+part-library tools that export and measure the categories' own parts); so does the scene composer's
+package (``infmob_usd.scenes``: it makes objects, writes and checks scenes; its modules are core)."""
 
 
 def room(module: str) -> str:
     """The room of a module (ARCHITECTURE.md): top, core, categories, materials, layers, validate."""
-    if module in TOP:
+    if module in TOP or module == "infmob_usd.scenes":
         return "top"
     for name in ("categories", "materials", "layers", "validate"):
         if module == f"infmob_usd.{name}" or module.startswith(f"infmob_usd.{name}."):

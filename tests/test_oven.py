@@ -9,6 +9,7 @@ import pytest
 
 from infmob_usd.categories import oven
 from infmob_usd.categories.parts.appliance import OVEN_RACK_R
+from infmob_usd.lift_off import LIFT_OFF
 from infmob_usd.mass import inertial
 from infmob_usd.materials import FAMILIES, split_spec
 from infmob_usd.seeding import streams
@@ -132,10 +133,11 @@ def test_joint_kinds_axes_and_limits(seed):
             assert 0.0 == j.dofs[0].lower < j.dofs[0].upper <= 0.006
         elif part.label == "grate":
             assert j.kind == "limited_floating"
-            # lifts off first (clear of the burner caps), then only a little play: no slide across the cooktop
-            assert [dd.axis for dd in j.dofs] == [(0, 0, 1), (1, 0, 0), (0, 1, 0)]
-            assert (j.dofs[0].lower, j.dofs[0].upper) == (0.0, pytest.approx(p["grate_lift"]))
-            assert j.dofs[0].upper >= 0.06 > 0.04 >= j.dofs[1].upper
+            # lifts off first, then only a little play: no slide across the cooktop; a lift-off part stops at
+            # a hand's lift (its bars stand clear of the burner caps on their feet)
+            assert [dd.axis for dd in j.dofs] == [(0, 0, 1), (1, 0, 0), (0, 1, 0)] and j.role == "lift_off"
+            assert (j.dofs[0].lower, j.dofs[0].upper) == (0.0, pytest.approx(min(p["grate_lift"], LIFT_OFF)))
+            assert j.dofs[0].upper <= LIFT_OFF and 0.04 >= j.dofs[1].upper
             assert max(abs(j.dofs[2].lower), j.dofs[2].upper) <= 0.006
         elif part.label == "drawer":
             assert j.kind == "prismatic" and j.dofs[0].axis == pytest.approx((1, 0, 0))

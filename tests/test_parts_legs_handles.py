@@ -11,6 +11,7 @@ import pytest
 
 from infmob_usd import api, measures, triangles
 from infmob_usd.categories.parts import hardware, tables
+from infmob_usd.frames import Frame
 
 
 @pytest.mark.parametrize("length", [0.096, 0.128, 0.16])
@@ -26,6 +27,16 @@ def test_bow_handle_stands_on_its_feet(length):
         near = v[np.linalg.norm(v[:, :2] - foot[:2], axis=1) <= hardware.BOW_WIRE + 1e-9]
         assert len(near) and near[:, 2].min() == pytest.approx(0.0, abs=1e-12)  # the wire's end sits on its hole
     assert abs(asm.supports["mount_b"][0] - asm.supports["mount_a"][0]) == pytest.approx(length)
+
+
+def test_handles_are_named_handle_and_stand_off_their_face():
+    # the one handle family, mounted on a front face (normal +X) with its bar across (+Y)
+    face = Frame.at((0.3, 0.1, 0.5), z=(1, 0, 0), x=(0, 1, 0))
+    for part in (hardware.bar_handle(0.2, "h"), hardware.knob_handle(0.015, 0.025, "h"),
+                 hardware.edge_pull(0.2, "h"), hardware.bow_handle(0.128, "h")):
+        pieces = part.attached("mount", to=face).pieces
+        assert pieces and all(p.name == "handle" for p in pieces)
+        assert min(p.bounds[0, 0] for p in pieces) == pytest.approx(0.3, abs=1e-9)  # on the face, not in it
 
 
 @pytest.mark.parametrize("radius,height", [(0.015, 0.3), (0.03, 0.45), (0.02, 0.7)])

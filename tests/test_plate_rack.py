@@ -11,6 +11,7 @@ from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 
 from infmob_usd.categories import plate_rack as pr
+from infmob_usd.lift_off import lift
 from infmob_usd.materials import split_spec
 from infmob_usd.model import build as build_model
 
@@ -269,7 +270,9 @@ def test_each_design_has_its_side_board_mechanisms(design):
             j = by_child(bp, n)
             d = j.dofs[0]
             assert j.kind == "prismatic" and j.parent == "rack" and d.axis == pytest.approx((0, 0, 1))
-            assert d.upper >= (pr.R.CUP_LIFT if n in mugs else pr.R.CADDY_LIFT) - 1e-9
+            # lift-off parts (the core's rule): free once lifted past the peg or the pocket's lip, no further
+            seat = pr.R.PEG["h"] if n in mugs else pr.R.POCKET["h"]
+            assert j.role == "lift_off" and j.engagement == seat and d.upper == pytest.approx(lift(seat))
             ys = np.vstack([pc.vertices for pc in bp.parts[n].pieces])[:, 1]
             assert ys.min() > p["plate_radius"] + pr.R.PLATE_SLIDE  # beyond a plate slid sideways
         for i, a in enumerate(mugs):  # mugs stand apart

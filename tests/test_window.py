@@ -360,3 +360,50 @@ def test_painted_joinery_weighs_as_softwood():
     volume = sum(pc.volume() for pc in links["painted"].pieces if pc.material == "frame")
     assert volume > 0.01
     assert links["wood"].mass - links["painted"].mass == pytest.approx((650.0 - windows.SOFTWOOD) * volume, rel=1e-6)
+
+
+def test_tilt_and_turn_modes_exclude_each_other(tmp_path):
+    """A tilt-and-turn handle selects one mode: the metadata names the two joints as excluding each other,
+    the opened picture, the validators' all-open states and the clearance pass open the turn only, and the
+    tilt is swept from the all-open state with the turn at rest (so neither is cut short by the other)."""
+    import json
+
+    import infmob_usd
+    from infmob_usd.physical.clearance import _clearance
+    from infmob_usd.validate import gallery, physics, posing
+
+    obj = infmob_usd.generate("window", seed=1, texture_size=16, style="tilt_turn")
+    folder = infmob_usd.save(obj, tmp_path)
+    meta = {j["name"]: j for j in json.loads((folder / "metadata.json").read_text())["joints"]}
+    turn, tilt = "joint_sash_0_0", "joint_sash_0_1"
+    assert meta[turn]["excludes"] == [tilt] and meta[tilt]["excludes"] == [turn]
+    assert all(not m.get("excludes") for m in meta.values() if m["kind"] != "flip_revolute")
+    files = posing._read_object(folder)
+    q = posing._qpos_for(files, posing.OPEN_FRACTION)
+    sashes = sorted({m["group"] for m in meta.values() if m.get("excludes")})
+    assert len(sashes) >= 1
+    for s in sashes:
+        modes = [q[f"joint_{s}_0"], q[f"joint_{s}_1"]]
+        assert sum(v != 0.0 for v in modes) == 1 and modes[0] > 0, (s, modes)
+    assert posing._qpos_for(files, {tilt: 1.0})[tilt] == pytest.approx(meta[tilt]["upper"])
+    viewer = {j["name"]: j for j in gallery.object_data(folder, {})["joints"]}  # the gallery's Open all reads it
+    assert viewer[turn]["excludes"] == [tilt] and viewer[tilt]["excludes"] == [turn]
+    model = physics.load_model(folder)
+    for state in physics.sampled_states(model)[1:3]:  # all@50 %, all@100 %
+        assert all(state.q[f"joint_{s}_1"] == 0.0 for s in sashes), state.label
+    c = _clearance(obj)
+    assert c.open_state(c.by_joint[tilt])[tilt] > 0 and turn not in c.open_state(c.by_joint[tilt])
+    assert c.open_state(c.by_joint["joint_sash_1_0"]).get("joint_sash_1_1", 0.0) == 0.0
+    # the declared tilt (12 degrees) is kept whole: it is never swept with a turned sash beside it
+    assert meta[tilt]["upper"] == pytest.approx(windows.TILT)
+
+
+def test_only_a_compound_joint_has_exclusive_modes():
+    from infmob_usd import joints as J
+    from infmob_usd.errors import ModelError
+
+    with pytest.raises(ModelError, match="one DoF"):
+        J.JointSpec("revolute", "a", "b", (J.Dof("revolute", (0, 0, 0), (0, 0, 1), 0.0, 1.0),), exclusive=True)
+    assert J.one_mode({"t": 1.0, "u": 0.5, "v": 0.2}, ["t", "u", "v"], {"t": ["u"], "u": ["t"]}) == \
+        {"t": 1.0, "u": 0.0, "v": 0.2}
+    assert J.one_mode({"t": 0.0, "u": 0.5}, ["t", "u"], {"t": ["u"], "u": ["t"]}) == {"t": 0.0, "u": 0.5}

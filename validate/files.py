@@ -179,6 +179,12 @@ def object_files(folder: Path, meta: dict | None = None) -> tuple[Path, Path]:
     return folder / f"{stem}.usda", folder / f"{stem}.urdf"
 
 
+def mode_excludes(meta: dict) -> dict[str, list[str]]:
+    """Joint name -> the joints it ``excludes`` (``metadata.json``): the other modes of one fitting, at rest
+    while it is off rest (a tilt-and-turn sash tilts or turns); read with :func:`infmob_usd.joints.one_mode`."""
+    return {j["name"]: list(j["excludes"]) for j in meta.get("joints", []) if j.get("excludes")}
+
+
 def load_metadata(folder: Path) -> dict:
     return json.loads((folder / "metadata.json").read_text())
 

@@ -214,7 +214,8 @@ class _Meshes:
 
 def _joints(root, by_name: dict[str, dict]) -> list[dict]:
     """The viewer's joints: frame, axis and limits from the URDF ``root`` (a revolute joint without limits,
-    or a continuous one, turns +-pi), kind, group, role and ``requires_open`` from ``metadata.json``."""
+    or a continuous one, turns +-pi), kind, group, role, ``requires_open`` and ``excludes`` from
+    ``metadata.json``."""
     joints = []
     for j in root.findall("joint"):
         o, a, lim = j.find("origin"), j.find("axis"), j.find("limit")
@@ -231,7 +232,7 @@ def _joints(root, by_name: dict[str, dict]) -> list[dict]:
             "axis": _floats(a.get("xyz") if a is not None else None, (1, 0, 0)),
             "lower": min(lower, upper), "upper": max(lower, upper),
             "kind": m.get("kind", jtype), "group": m.get("group", name), "role": m.get("role", ""),
-            "requires_open": m.get("requires_open"),
+            "requires_open": m.get("requires_open"), "excludes": m.get("excludes", []),
         })
     return joints
 
@@ -239,8 +240,8 @@ def _joints(root, by_name: dict[str, dict]) -> list[dict]:
 def object_data(folder: Path, textures: dict[str, Path]) -> dict:
     """The viewer's data for one object folder: links with visuals, joints, OBJ text, materials.
 
-    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role
-    and ``requires_open`` from ``metadata.json``. Texture files are named by a hash of their bytes;
+    Joint frames, axes and limits come from the URDF (what simulators load); kind, group, role,
+    ``requires_open`` and ``excludes`` from ``metadata.json``. Texture files are named by a hash of their bytes;
     ``textures`` gains ``{hash: path}`` for each one. Every file is read only if it lies inside
     ``folder`` (:func:`inside`) and within :data:`MAX_BYTES`, else :class:`ValueError` names it.
     """

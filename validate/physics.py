@@ -58,7 +58,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .files import UrdfJoint, forward_kinematics, parse_urdf
+from infmob_usd.joints import one_mode
+
+from .files import UrdfJoint, forward_kinematics, mode_excludes, parse_urdf
 from .result import CheckResult
 
 __all__ = [
@@ -199,10 +201,12 @@ class Model:
     """Links (with collision hulls) and joints of one URDF, with forward kinematics."""
 
     def __init__(self, name: str, links: dict[str, LinkGeometry], joints: list[KJoint],
-                 requires: dict[str, list[str]] | None = None):
+                 requires: dict[str, list[str]] | None = None, excludes: dict[str, list[str]] | None = None):
         self.name = name
         # joint -> joints that must be at their upper limit before it moves (metadata requires_open)
         self.requires = requires or {}
+        # joint -> the other modes of its fitting, at rest while it is off rest (metadata excludes)
+        self.excludes = excludes or {}
         self.links = links
         self.joints = {j.name: j for j in joints}
         self.parent_joint = {j.child: j for j in joints}
@@ -247,7 +251,11 @@ class Model:
         return {j.name: j.rest for j in self.movable}
 
     def opened(self, q: Mapping[str, float]) -> dict[str, float]:
-        """``q`` with every prerequisite of a moved joint fully open (a door before its rack)."""
+        """``q`` with the modes a moved joint ``excludes`` at rest, the first in tree order winning (a
+        tilt-and-turn sash turned, not also tilted), and every prerequisite of a moved joint fully open (a
+        door before its rack)."""
+        if self.excludes:
+            q = one_mode(q, [j.name for j in self.movable], self.excludes, {j.name: j.rest for j in self.movable})
         out = dict(q)
         for name, value in q.items():
             if value != self.joints[name].rest:
@@ -331,7 +339,7 @@ def load_model(folder_or_urdf: str | Path) -> Model:
             groups.setdefault(j["group"], []).append(j["name"])
     requires = {j["name"]: groups.get(j["requires_open"], []) for j in meta.get("joints", [])
                 if j.get("requires_open")}
-    return Model(urdf.name or path.stem, links, joints, requires)
+    return Model(urdf.name or path.stem, links, joints, requires, mode_excludes(meta))
 
 
 # --------------------------------------------------------------------------- sampled states

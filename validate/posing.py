@@ -1,8 +1,9 @@
 """An object folder read as the pictures need it, and the joint configurations they show.
 
 Reads the URDF (links' visual meshes and origins, joints with limits: a revolute joint without
-any is +-pi) and ``metadata.json`` (which joints ``requires_open`` another part), and turns a
-joint fraction (0 = rest, 1 = fully open) into joint values, doors held open for what they gate.
+any is +-pi) and ``metadata.json`` (which joints ``requires_open`` another part, which modes
+``excludes`` each other), and turns a joint fraction (0 = rest, 1 = fully open) into joint values,
+doors held open for what they gate, one mode of a tilt-and-turn sash open.
 """
 
 from __future__ import annotations
@@ -14,7 +15,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .files import UrdfJoint, forward_kinematics, parse_urdf
+from infmob_usd.joints import one_mode
+
+from .files import UrdfJoint, forward_kinematics, mode_excludes, parse_urdf
 
 OPEN_FRACTION = 0.7  # "opened" preview: each joint at 70 % of its range
 CONTINUOUS_OPEN = math.pi / 2  # continuous joints: a quarter turn in the opened preview
@@ -151,12 +154,25 @@ def _open_gates(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, float]:
     return out
 
 
+def _one_mode(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, float]:
+    """``qpos`` with the modes a joint ``excludes`` (``metadata.json``) at rest while it is off rest, the
+    first mode in joint order winning (:func:`infmob_usd.joints.one_mode`): an opened tilt-and-turn sash is
+    turned, never tilted and turned at once."""
+    excludes = mode_excludes(obj.metadata)
+    if not excludes:
+        return qpos
+    return one_mode(qpos, [j.name for j in obj.movable], excludes, {j.name: j.rest() for j in obj.movable})
+
+
 def _qpos_for(obj: _ObjectFiles, joint_fraction) -> dict[str, float]:
-    """``joint_fraction``: one number for every movable joint, or ``{joint name: fraction}``. A joint that
-    ``requires_open`` a part moves only with that part fully open (:func:`_open_gates`)."""
+    """``joint_fraction``: one number for every movable joint, or ``{joint name: fraction}``. Of the modes
+    that exclude each other, only the first opens (:func:`_one_mode`); a joint that ``requires_open`` a part
+    moves only with that part fully open (:func:`_open_gates`)."""
     if isinstance(joint_fraction, dict):
         unknown = set(joint_fraction) - {j.name for j in obj.movable}
         if unknown:
             raise KeyError(f"no movable joint named {sorted(unknown)} in {obj.name}")
-        return _open_gates(obj, {j.name: j.at_fraction(float(joint_fraction.get(j.name, 0.0))) for j in obj.movable})
-    return _open_gates(obj, {j.name: j.at_fraction(float(joint_fraction)) for j in obj.movable})
+        q = {j.name: j.at_fraction(float(joint_fraction.get(j.name, 0.0))) for j in obj.movable}
+    else:
+        q = {j.name: j.at_fraction(float(joint_fraction)) for j in obj.movable}
+    return _open_gates(obj, _one_mode(obj, q))

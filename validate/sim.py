@@ -82,6 +82,9 @@ from typing import Any
 
 import numpy as np
 
+from infmob_usd.joints import one_mode
+
+from .files import mode_excludes
 from .result import CheckResult
 
 __all__ = [
@@ -786,6 +789,7 @@ class _Plan:
     start: str  # "rest" | "open"
     opened: dict[str, list[str]]  # joint -> joints held at their upper limit while it moves
     closed: dict[str, list[str]] = field(default_factory=dict)  # joint -> joints held at rest
+    excludes: dict[str, list[str]] = field(default_factory=dict)  # joint -> the other modes of its fitting
 
     def start_q(self, ctx: SimContext, batch: list[int]) -> np.ndarray:
         names = [j.name for j in ctx.joints]
@@ -795,6 +799,11 @@ class _Plan:
                 hi = float(joint.get_limit()[0][1])
                 if np.isfinite(hi):
                     q[k] = hi
+            # one mode of each exclusive fitting open, a driven joint's own first (one_mode)
+            rest = {n: float(ctx.rest_qpos[k]) for k, n in enumerate(names)}
+            order = [names[i] for i in batch] + [n for k, n in enumerate(names) if k not in batch]
+            one = one_mode({n: float(q[k]) for k, n in enumerate(names)}, order, self.excludes, rest)
+            q = np.array([one[n] for n in names], dtype=np.float32)
         for i in batch:
             for req in self.opened.get(names[i], []):  # open the door before pulling its rack
                 k = names.index(req)
@@ -825,6 +834,8 @@ def _drive_batch(ctx: SimContext, batch: list[int], plan: _Plan,
     start_q = plan.start_q(ctx, batch)
     if not np.array_equal(start_q, np.asarray(ctx.rest_qpos, dtype=np.float32)):
         ctx.hold(start_q)
+    for k in _coupled_to(ctx, batch):  # a pedal's lid follows its tendon, not a drive holding it
+        ctx.joints[k].set_drive_property(0.0, 0.0, mode="acceleration")
     failed: dict[int, list[str]] = {}
     plans = {}
     for i in batch:
@@ -838,6 +849,15 @@ def _drive_batch(ctx: SimContext, batch: list[int], plan: _Plan,
         joint.set_max_velocity(float(DRIVE_SPEED * span))
         plans[i] = (targets, tol)
     return failed, _drive_phases(ctx, batch, plans, start_q, failed, max_steps)
+
+
+def _coupled_to(ctx: SimContext, batch: list[int]) -> set[int]:
+    """Indices of the joints outside ``batch`` coupled to a joint of it (``metadata.json`` ``mimic``: its
+    followers, its leader and the leader's other followers): they move with it, so no drive holds them."""
+    names = [j.name for j in ctx.joints]
+    lead = {j["name"]: j["mimic"]["joint"] for j in ctx.meta.get("joints", []) if j.get("mimic")}
+    groups = [{n, *[f for f, m in lead.items() if m == n]} for n in {lead.get(names[i], names[i]) for i in batch}]
+    return {names.index(n) for g in groups for n in g if n in names} - set(batch)
 
 
 def _drive_phases(ctx: SimContext, batch: list[int], plans: dict, start_q: np.ndarray,
@@ -886,7 +906,7 @@ def _reach_plans(meta: dict) -> list[_Plan]:
 
     A joint that ``requires_open`` a part moves with that part's joints at their upper limits.
     From the all-open state, a joint moves with the other DoFs of its own part at rest (a
-    compound joint's modes one at a time, as a tilt-and-turn sash works) and, if it
+    compound joint's modes one at a time, as a tilt-and-turn sash works; the joints it ``excludes``) and, if it
     ``requires_closed`` parts, with their joints at rest, and so do the joints that
     ``requires_open`` a part held at rest (recursively: a rack cannot stay out of a closed
     door)."""
@@ -897,14 +917,14 @@ def _reach_plans(meta: dict) -> list[_Plan]:
     closed = {}
     for j in _movable(meta):
         names = {n for g in [j["group"], *(j.get("requires_closed") or [])] for n in groups.get(g, [])
-                 if n != j["name"]}
+                 if n != j["name"]} | set(j.get("excludes") or [])
         while True:
             more = {n for n, gates in opened.items() if n not in names and names.intersection(gates)}
             if not more:
                 break
             names |= more
         closed[j["name"]] = sorted(names)
-    return [_Plan("rest", opened), _Plan("open", opened, closed)]
+    return [_Plan("rest", opened), _Plan("open", opened, closed, mode_excludes(meta))]
 
 
 def _reach_runs(ctx: SimContext, plan: _Plan, max_steps: int) -> tuple[dict[int, list[str]], tuple[float, str], int]:
@@ -948,8 +968,9 @@ def reach_check(ctx: SimContext) -> CheckResult:
 
     From rest: upper first, then the whole traverse to lower; a joint that ``requires_open``
     another part (metadata) is driven with that part's joints held fully open. From the
-    all-open state (every limited joint at its upper limit, continuous joints at rest; a robot
-    that opened everything and now closes one part): lower first, then back to upper; the
+    all-open state (every limited joint at its upper limit, continuous joints at rest, of the
+    modes that ``excludes`` each other the driven joint's or else the first; a robot that opened
+    everything and now closes one part): lower first, then back to upper; the
     other DoFs of a compound joint, and the parts a joint ``requires_closed`` (metadata), are
     held at rest (:func:`_reach_plans`).
 

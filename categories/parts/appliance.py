@@ -13,6 +13,7 @@ import math
 from dataclasses import dataclass, field
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame, polar
 from infmob_usd.grammar import Layout
 from infmob_usd.materials import FAMILIES
@@ -210,6 +211,28 @@ def dial(x_face: float, y: float, z: float, r: float, stem: float, style: str) -
                    g.box_between([x0 + depth - 0.0005, y - 0.0015, z + 0.35 * r], [x0 + depth + 0.001, y + 0.0015,
                                                                                    z + 0.7 * r], "trim")]
     return pieces
+
+
+@dataclass(frozen=True)
+class Drawer:
+    """A drawer that slides out along +X: ``part`` in its own frame (anchor ``front``: the bottom middle of
+    its front face, x out of it; ``slide``: there, z along its track), ``at`` where ``front`` goes on the
+    body, and the ``travel`` it slides out."""
+
+    part: Assembly
+    at: Frame
+    travel: float
+
+    def place(self, layout: Layout, name: str, parent: str = "body", requires_open: str | None = None) -> str:
+        """Add it to ``layout`` as part ``name`` sliding out of ``parent`` (only with ``requires_open``
+        open, if given); returns the part's name."""
+        placed = layout.place(self.part.attached("front", to=self.at), name)
+        layout.slide(parent, placed.root, placed.anchor("slide"), upper=self.travel, requires_open=requires_open)
+        return placed.root
+
+
+DRAWER_ANCHORS = {"front": Frame.at((0.0, 0.0, 0.0)), "slide": Frame.at((0.0, 0.0, 0.0), z=(1, 0, 0))}
+"""A :class:`Drawer` part's anchors in its own frame."""
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 
 from . import appliance as A
@@ -124,9 +125,29 @@ def drawer_boxes(k: int, xs, ys, zs) -> dict:
                      za + d["tub_floor"], za + bay - d["tub_top"]))
 
 
-def drawer(front, tub, handle_length: float) -> tuple[list[g.Piece], Frame, float, dict]:
-    """A dish drawer: a front skin on a core, an open stainless tub, a bar handle; returns its pieces, the
-    slide frame, its travel and where its rack goes (``xs``, ``cy1``, ``za``, ``top``)."""
+@dataclass(frozen=True)
+class RackSlot:
+    """Where a dish drawer's rack goes (in the body at rest): its ``xs``, the tub's inner side ``cy1``,
+    its floor ``za`` and the ``top`` it stays under."""
+
+    xs: tuple[float, float]
+    cy1: float
+    za: float
+    top: float
+
+
+@dataclass(frozen=True)
+class DishDrawer:
+    """A dish drawer (:class:`~.appliance.Drawer`) and where its rack goes."""
+
+    drawer: A.Drawer
+    rack: RackSlot
+
+
+def drawer(front, tub, handle_length: float) -> DishDrawer:
+    """A dish drawer: a front skin on a core, an open stainless tub, a bar handle. Built where it stands
+    in the body (its anchors there): built in its own frame and moved, the bar handle's normals round
+    differently and its mesh files change."""
     x0, x1, y0, y1, z0, z1 = front
     tx0, tx1, ty0, ty1, tz0, tz1 = tub
     d = DW["drawer"]
@@ -135,11 +156,13 @@ def drawer(front, tub, handle_length: float) -> tuple[list[g.Piece], Frame, floa
               g.box_between([x0, y0, z0], [x1 - s, y1, z1], "door_inner").replace(sheet=d["core"]),
               *[pc.replace(sheet=A.DISHWASHER_SHEET) for pc in A.open_bin((tx0, tx1), (ty0, ty1), tz0, tz1 - tz0,
                                                                             "tub", t=d["tub_wall"])]]
-    h = hardware.bar_handle(handle_length * (y1 - y0), "handle", BAR).attached(
+    bar = hardware.bar_handle(handle_length * (y1 - y0), "handle", BAR).attached(
         "mount", to=Frame.at((x1, 0.0, z1 - d["handle_below"]), z=(1, 0, 0), x=(0, 1, 0)))
     r = d["rack"]
-    return pieces + list(h.parts[h.root].pieces), Frame.at((x1, 0.0, z0), z=(1, 0, 0)), d["travel"] * (tx1 - tx0), \
-        dict(xs=(tx0 + r["ends"], tx1 - r["ends"]), cy1=ty1 - r["side"], za=tz0 + r["floor"], top=tz1 - r["top"])
+    front_at = Frame.at((x1, 0.0, z0))
+    part = Assembly.single("drawer", pieces + list(bar.pieces), {k: front_at @ a for k, a in A.DRAWER_ANCHORS.items()})
+    return DishDrawer(A.Drawer(part, front_at, d["travel"] * (tx1 - tx0)),
+                      RackSlot((tx0 + r["ends"], tx1 - r["ends"]), ty1 - r["side"], tz0 + r["floor"], tz1 - r["top"]))
 
 
 def tine_rows(n: int, xs, ry, za, top, front, yh=None) -> list[tuple[list[g.Piece], float, float]]:

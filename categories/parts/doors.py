@@ -15,7 +15,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
-from infmob_usd.frames import IDENTITY
+from infmob_usd.frames import IDENTITY, Frame
 
 from .hardware import HandleSize
 
@@ -92,6 +92,64 @@ RAIL_CLEAR = 0.0015  # hanger wheels ride this far above the rail (they never to
 KICK_OFF, KICK_ABOVE = 0.0005, 0.01
 DUTCH_CLEAR = (0.015, 0.06)  # a Dutch door's cut clears a bar pull's end by 15 mm, the handle's top by 6 cm
 DUTCH_KNOB_DEPTH = 0.05  # the top half's fixed knobs stand 5 cm off its faces
+
+
+@dataclass(frozen=True)
+class Opening:
+    """Where a door's frame and leaves go (the frame's depth centred on x = 0, fronts at +x): the frame's
+    ``x_front`` and ``stop_x`` (the stops behind the leaf), the ``opening`` between the jambs (y0, y1), the
+    ``head``; a hinged leaf's ``xs`` / ``ys`` / ``zs`` (a double door's two leaves: ``leaves``, (ys, side)
+    each); a sliding leaf's box and ``travel``; the lock side's ``lock_y`` (the leaf's lock edge),
+    ``lock_out`` (+-1, out of that edge), ``jamb_face`` and ``strike_x`` (the strike plate's middle)."""
+
+    x_front: float
+    stop_x: float
+    opening: tuple[float, float]
+    head: float
+    xs: tuple[float, float]
+    ys: tuple[float, float]
+    zs: tuple[float, float]
+    leaves: tuple = ()
+    travel: float = 0.0
+    lock_y: float = 0.0
+    lock_out: float = 1.0
+    jamb_face: float = 0.0
+    strike_x: float = 0.0
+
+
+def opening(design: str, width: float, height: float, thickness: float, depth: float, left: bool,
+            threshold: bool, pair_fraction: float = 0.5, casing: float = 0.0) -> Opening:
+    """The :class:`Opening` of a ``design`` door: ``width`` x ``height`` x ``thickness`` leaf (a double
+    door: two of ``pair_fraction`` of the width), a frame ``depth`` deep, hinged on the ``left`` or right,
+    over a threshold or not; a sliding (barn) leaf covers the opening and its ``casing`` architraves."""
+    W, H, T, Dj = width, height, thickness, depth
+    z0 = (THRESHOLD if threshold else 0.0) + FLOOR_GAP
+    leaves = ()
+    if design == "double":
+        Wl = pair_fraction * W
+        gap_mid = GAP + T * T / Wl  # both back corners swing out at the meeting stiles
+        oy0, oy1 = -Wl - gap_mid / 2 - GAP, Wl + gap_mid / 2 + GAP
+        leaves = (((-Wl - gap_mid / 2, -gap_mid / 2), "left"), ((gap_mid / 2, Wl + gap_mid / 2), "right"))
+        shift = 0.0
+    elif design == "sliding":  # the leaf covers the opening and its architraves
+        trim = casing + REVEAL + BARN["trim_past"]
+        oy0, oy1 = -W / 2 + trim, W / 2 - trim
+        shift, H_open = 0.0, H - trim - FLOOR_GAP
+    else:
+        gap_lock = GAP + T * T / W  # the back corner of the leaf swings out by ~T^2 / (2 W)
+        oy0 = -W / 2 - (GAP if left else gap_lock)
+        oy1 = W / 2 + (gap_lock if left else GAP)
+        shift = -(oy0 + oy1) / 2  # the opening centred on y = 0
+    head = z0 + (H_open if design == "sliding" else H) + GAP
+    common = dict(x_front=Dj / 2, stop_x=Dj / 2 - T - GAP, opening=(oy0 + shift, oy1 + shift), head=head)
+    if design == "sliding":
+        x0 = Dj / 2 + CASING_T + HEADER + SLIDE_GAP
+        return Opening(**common, xs=(x0, x0 + T), ys=(-W / 2, W / 2), zs=(FLOOR_GAP, FLOOR_GAP + H),
+                       travel=(oy1 - oy0) + BARN["travel_past"])
+    y_lock, out = ((W / 2 + shift), 1.0) if left else ((-W / 2 + shift), -1.0)
+    return Opening(**common, xs=(Dj / 2 - T, Dj / 2), ys=(-W / 2 + shift, W / 2 + shift), zs=(z0, z0 + H),
+                   leaves=leaves, lock_y=y_lock, lock_out=out, jamb_face=(oy1 if left else oy0) + shift,
+                   strike_x=Dj / 2 - T / 2)
 
 
 def frame(x_front: float, depth: float, opening, head: float, jamb: float, casing: float, threshold: float,
@@ -255,6 +313,7 @@ BOLT = dict(throw=0.013, height=0.018, thickness=0.016, inside=0.025, slack=0.00
 """A latch bolt: throw beyond the lock edge, height, thickness (x), length inside the leaf at rest, slack (how
 far past its throw the handle draws it)."""
 THUMB = dict(rose=0.025, grip=0.034, grip_w=0.009, grip_d=0.016, above=0.16, over_pull=0.02)
+THUMB_TURNS = math.pi / 2  # a thumb turn throws its bolt in a quarter turn
 """Thumb-turn: rose radius, grip length and width and projection, height above the handle axis, and its rose's
 clearance over a bar pull's end."""
 
@@ -318,6 +377,44 @@ def strike_plate(x_mid: float, y_face: float, into: float, z: float) -> g.Piece:
     return plate.replace(convex=[])
 
 
+@dataclass(frozen=True)
+class Edges:
+    """A hinged leaf's edges: ``hinge_y`` and ``lock_y``, ``inward`` (+-1, from the hinge edge across the
+    leaf), the handle's ``handle_y`` (:data:`BACKSET` in from the lock edge) and the ``hinge`` line (on
+    the front face at the bottom; z down for a leaf hinged on the left, so both open the same way)."""
+
+    hinge_y: float
+    lock_y: float
+    inward: float
+    handle_y: float
+    hinge: Frame
+
+
+def edges(xs, ys, zs, left: bool) -> Edges:
+    """The :class:`Edges` of a leaf (``xs``, ``ys``, ``zs``) hinged on the ``left`` or right."""
+    y_hinge, y_lock = (ys[0], ys[1]) if left else (ys[1], ys[0])
+    inward = 1.0 if left else -1.0
+    return Edges(y_hinge, y_lock, inward, y_lock - inward * BACKSET,
+                 Frame.at((xs[1], y_hinge, zs[0]), z=(0, 0, -1 if left else 1)))
+
+
+@dataclass(frozen=True)
+class ThumbTurnSet:
+    """A deadbolt's thumb turn (anchor ``axis``: z along its spindle, out of the back face) and the roses
+    on both faces of the leaf (a key cylinder's on the front)."""
+
+    roses: list
+    turn: Assembly
+
+
+def thumb_turn_set(xs, y: float, z: float) -> ThumbTurnSet:
+    """The :class:`ThumbTurnSet` at (``y``, ``z``) on a leaf ``xs`` thick."""
+    start = xs[0] - ROSE[1] - GAP
+    roses = thumb_rose(xs[0], -1.0, y, z, key=False) + thumb_rose(xs[1], 1.0, y, z, key=True)
+    return ThumbTurnSet(roses, Assembly.single("knob", thumb_turn(start, -1.0, y, z),
+                                               {"axis": Frame.at((start, y, z), z=(-1, 0, 0))}))
+
+
 def thumb_turn(x0: float, n: float, y: float, z: float) -> list[g.Piece]:
     """A thumb-turn grip out of the face at ``x0`` along ``n`` (a spindle and a flat oblong grip, vertical at
     rest), turning about x through ``(x0, y, z)``."""
@@ -334,6 +431,38 @@ def thumb_rose(face: float, n: float, y: float, z: float, key: bool) -> list[g.P
     if not key:
         return [rose]
     return [rose, g.cylinder([face + n * ROSE[1], y, z], [face + n * (ROSE[1] + 0.004), y, z], 0.012, "hinge", 24)]
+
+
+@dataclass(frozen=True)
+class Hanging:
+    """How a barn door's leaf (``xs``, ``ys``, ``zs``) hangs and slides (:data:`BARN`): toward ``d`` (-1:
+    -y, the left wall); wheel axles at ``z_axle`` over the rail ``x_wheel`` out from the architraves' front
+    face ``x_wall``; the rail at ``z_rail`` from ``track[0]`` to ``track[1]``; hanger straps at ``straps``
+    (y); the pulls at ``y_pull`` on the trailing stile; ``slide``: the joint frame (z along the travel)."""
+
+    d: float
+    z_axle: float
+    z_rail: float
+    x_wall: float
+    x_wheel: float
+    track: tuple[float, float]
+    straps: tuple[float, float]
+    y_pull: float
+    slide: Frame
+
+
+def hanging(xs, ys, zs, travel: float, wheel_radius: float, toward_left: bool) -> Hanging:
+    """The :class:`Hanging` of a barn door leaf sliding ``travel`` toward the left wall or the right."""
+    d = -1.0 if toward_left else 1.0
+    r = wheel_radius
+    z_ax = zs[1] + BARN["axle_above"] + r  # wheel axles above the leaf's top
+    x_wall = xs[0] - SLIDE_GAP - HEADER  # the architraves' front face
+    lo, hi = (ys[0] + d * travel, ys[1]) if d < 0 else (ys[0], ys[1] + travel)
+    return Hanging(d, z_ax, z_ax - r - RAIL_CLEAR, x_wall, x_wall + BARN["wheel_out"],
+                   (lo - BARN["track_past"], hi + BARN["track_past"]),
+                   (ys[0] + BARN["strap_in"], ys[1] - BARN["strap_in"]),
+                   (ys[1] - BARN["pull_in"]) if d < 0 else (ys[0] + BARN["pull_in"]),
+                   Frame.at((xs[1], ys[1] if d > 0 else ys[0], zs[0]), z=(0, d, 0)))
 
 
 def barn_track(x_face: float, y0: float, y1: float, z: float) -> list[g.Piece]:

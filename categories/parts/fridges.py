@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 from infmob_usd.materials.families import FAMILIES, split_spec
 
@@ -141,11 +142,22 @@ def over_crispers(cav, ceiling: float) -> tuple:
     return (*cav[:4], cav[4] + F["crisper"]["height"] + F["crisper"]["over"], ceiling)
 
 
-def freezer(cav, xs, fh: float) -> tuple[list[g.Piece], list[g.Piece], Frame, float]:
+@dataclass(frozen=True)
+class Freezer:
+    """A freezer compartment: the ``evaporator`` box's pieces (fixed to the body), the ``flap`` in its own
+    frame (anchor ``hinge``: its top back edge, z along -Y), ``at`` where that hinge goes, and the
+    ``ceiling`` below which the shelves stay."""
+
+    evaporator: list
+    flap: Assembly
+    at: Frame
+    ceiling: float
+
+
+def freezer(cav, xs, fh: float) -> Freezer:
     """A freezer compartment ``fh`` tall across the top of the cavity: an aluminium evaporator box (its floor
     and sides, fixed to the body), a flap over its front with a finger lip, hinged on its top back edge (about
-    -Y the bottom edge swings forward and up; the pivot is behind the flap's centre of mass). Returns the box,
-    the flap, the hinge frame and the height below which the shelves stay."""
+    -Y the bottom edge swings forward and up; the pivot is behind the flap's centre of mass)."""
     cx0, _, cy0, cy1, _, cz1 = cav
     f = F["freezer"]
     xf, t = xs[1], f["flap"]  # the flap's front face, its thickness
@@ -156,9 +168,12 @@ def freezer(cav, xs, fh: float) -> tuple[list[g.Piece], list[g.Piece], Frame, fl
              for y0 in (cy0, cy1 - s)]]
     (la, lb), lw, ld = f["lip"]
     fi = f["flap_in"]
-    flap = [g.box_between([xf - t, cy0 + fi, z0 + 0.002], [xf, cy1 - fi, cz1 - f["top"]], "bin", bevel=0.002),
-            g.box_between([xf, -lw, z0 + la], [xf + ld, lw, z0 + lb], "bin", bevel=0.002)]  # finger lip
-    return box, flap, Frame.at((xf - t, 0.0, cz1 - f["top"]), z=(0, -1, 0)), z0 - f["under"]
+    zh = cz1 - f["top"]  # the hinge line, the flap's own origin
+    flap = [g.box_between([0.0, cy0 + fi, z0 + 0.002 - zh], [t, cy1 - fi, 0.0], "bin", bevel=0.002),
+            g.box_between([t, -lw, z0 + la - zh], [t + ld, lw, z0 + lb - zh], "bin", bevel=0.002)]  # finger lip
+    hinge = Frame.at((0.0, 0.0, 0.0), z=(0, -1, 0))
+    return Freezer(box, Assembly.single("flap", flap, {"hinge": hinge}),
+                   Frame.at((xf - t, 0.0, zh), z=(0, -1, 0)), z0 - f["under"])
 
 
 def dual_doors(box, hole) -> tuple[dict, dict]:
@@ -228,14 +243,18 @@ def crisper_ys(n: int, cav, width: float, door_thickness: float, margin: float) 
     return [(-ry + k * (w + c["side"]), -ry + k * (w + c["side"]) + w) for k in range(n)]
 
 
-def crisper(xs, ys, zs) -> tuple[list[g.Piece], Frame, float]:
-    """A crisper drawer: a clear open bin with a front and a finger pull; pieces, slide frame, travel."""
+def crisper(xs, ys, zs) -> A.Drawer:
+    """A crisper drawer: a clear open bin with a front and a finger pull, built in its own frame (the
+    origin at the bottom middle of its front face)."""
     x0, x1 = xs
     c = F["crisper"]
     f, top = c["front"], c["under_top"]
-    pieces = A.open_bin((x0, x1 - f), ys, zs[0], zs[1] - zs[0] - top, "glass", t=c["wall"])
-    pieces.append(g.box_between([x1 - f, ys[0], zs[0]], [x1, ys[1], zs[1] - top], "trim", bevel=0.002))
-    return pieces, Frame.at((x1, (ys[0] + ys[1]) / 2, zs[0]), z=(1, 0, 0)), c["travel"] * (x1 - x0)
+    yc, h = (ys[0] + ys[1]) / 2, zs[1] - zs[0] - top
+    ya, yb = ys[0] - yc, ys[1] - yc
+    pieces = A.open_bin((x0 - x1, -f), (ya, yb), 0.0, h, "glass", t=c["wall"])
+    pieces.append(g.box_between([-f, ya, 0.0], [0.0, yb, h], "trim", bevel=0.002))
+    return A.Drawer(Assembly.single("drawer", pieces, A.DRAWER_ANCHORS), Frame.at((x1, yc, zs[0])),
+                    c["travel"] * (x1 - x0))
 
 
 def handle_anchor(box, hole, left: bool) -> tuple[Frame, float]:

@@ -12,7 +12,8 @@ import math
 from dataclasses import dataclass
 
 from infmob_usd import geometry as g
-from infmob_usd.frames import Frame
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import IDENTITY, Frame
 from infmob_usd.materials import FAMILIES
 
 from . import appliance as A
@@ -107,12 +108,40 @@ def key_count(rows: int, bottom_keys: int) -> int:
     return 3 * rows - (3 - bottom_keys)
 
 
-def turntable(cavity, fraction: float) -> tuple[g.Piece, list[g.Piece], Frame, dict]:
-    """The turntable on the cavity floor: the spindle (fixed to the body), the tray on its roller ring,
-    its spin axis, and where a rack stands on it (:func:`rack_on_plate`)."""
+@dataclass(frozen=True)
+class RackSeat:
+    """Where a low wire rack stands: its ``center`` (x, y) on a floor at height ``z0``, the ``radius`` it
+    fits in and the free ``room`` over that floor."""
+
+    center: tuple[float, float]
+    z0: float
+    radius: float
+    room: float
+
+    @property
+    def at(self) -> Frame:
+        """The middle of the floor it stands on."""
+        return Frame.at((*self.center, self.z0))
+
+
+@dataclass(frozen=True)
+class Turntable:
+    """A turntable on the cavity floor: the ``spindle`` (fixed to the body) and the ``plate`` (the tray on
+    its roller ring, anchor ``axis``: z up its spin axis through the floor), and ``rack``, where a rack
+    stands on the tray. Both are built in the body's frame: a tray built round its own axis and moved
+    there welds its vertices in another order in the GLB."""
+
+    spindle: g.Piece
+    plate: Assembly
+    rack: RackSeat
+
+
+def turntable(cavity, fraction: float) -> Turntable:
+    """The turntable of ``fraction`` of the largest tray that fits the cavity floor (:func:`plate_fit`)."""
     c, radius = plate_fit(cavity, fraction)
     cz0 = cavity[4]
-    return A.spindle(c, cz0), A.turntable(c, cz0, radius), Frame.at((*c, cz0)), rack_on_plate(cavity, c, radius)
+    plate = Assembly.single("plate", A.turntable(c, cz0, radius), {"axis": Frame.at((*c, cz0))})
+    return Turntable(A.spindle(c, cz0), plate, rack_on_plate(cavity, c, radius))
 
 
 def countertop(W, D, H, wall, door_thickness, feet, panel_fraction, vent: bool) -> Body:
@@ -183,12 +212,11 @@ def ceramic_floor(cavity) -> g.Piece:
     return g.box_between([cx0 + i, cy0 + i, cz0], [cx1 - i, cy1 - i, cz0 + t], "plate", bevel=0.002)
 
 
-def floor_rack_seat(cavity) -> dict:
-    """Where a flatbed's wire rack stands: centre, floor height, inscribed radius, free height."""
+def floor_rack_seat(cavity) -> RackSeat:
+    """Where a flatbed's wire rack stands: on its ceramic floor, inside the cavity's inscribed circle."""
     cx0, cx1, cy0, cy1, cz0, _ = cavity
     r = min(cx1 - cx0, cy1 - cy0) / 2 - M["rack_clear"]
-    return dict(center=((cx0 + cx1) / 2, (cy0 + cy1) / 2), z0=cz0 + M["floor"], radius=r,
-                room=cavity[5] - cz0 - M["floor"])
+    return RackSeat(((cx0 + cx1) / 2, (cy0 + cy1) / 2), cz0 + M["floor"], r, cavity[5] - cz0 - M["floor"])
 
 
 def plate_fit(cavity, fraction: float) -> tuple[tuple[float, float], float]:
@@ -200,16 +228,19 @@ def plate_fit(cavity, fraction: float) -> tuple[tuple[float, float], float]:
     return c, fraction * (r_fit - max(lo, share * r_fit))
 
 
-def rack_on_plate(cavity, center, radius) -> dict:
+def rack_on_plate(cavity, center, radius) -> RackSeat:
     """Where a turntable's wire rack stands: on the tray's floor, inside its rim."""
     cz0 = cavity[4]
-    return dict(center=center, z0=cz0 + A.TRAY_TOP, radius=radius - M["rim_room"], room=cavity[5] - cz0 - A.TRAY_TOP)
+    return RackSeat(center, cz0 + A.TRAY_TOP, radius - M["rim_room"], cavity[5] - cz0 - A.TRAY_TOP)
 
 
-def stand_rack(center, z0, radius, room, height) -> list[g.Piece]:
-    """A low wire rack: a square grid inscribed in ``radius`` on four legs, at most its share of ``room``."""
-    h = min(height, M["rack_room"] * room)
-    return A.stand_rack(center, z0, radius / math.sqrt(2), h)
+def stand_rack(seat: RackSeat, height: float) -> Assembly:
+    """A low wire rack standing on ``seat``: a square grid inscribed in its radius on four legs, at most its
+    share of the room; anchor ``floor`` under its middle (:attr:`RackSeat.at`). Built where it stands: built
+    round its own origin and moved, its wires' collision pieces merge differently (last-bit rounding)."""
+    h = min(height, M["rack_room"] * seat.room)
+    return Assembly.single("rack", A.stand_rack(seat.center, seat.z0, seat.radius / math.sqrt(2), h),
+                           {"floor": seat.at})
 
 
 def vent_grille(outer) -> list[g.Piece]:
@@ -230,50 +261,60 @@ def vent_grille(outer) -> list[g.Piece]:
     return grille
 
 
-def filter_boxes(outer) -> list[tuple]:
-    """The two grease filters' boxes (x0, x1, y0, y1, z of the body's bottom), left and right."""
-    xb, xf, xd1, y0, y1, zc0, zc1 = outer
+@dataclass(frozen=True)
+class GreaseFilter:
+    """An over-the-range model's grease filter in the body's bottom (``MICROWAVE["filters"]``): a mesh
+    frame ``length`` (x) by ``width`` (y), a finger tab ``tab`` under its front edge; it slides ``travel``
+    back in its track before it drops out."""
+
+    length: float
+    width: float
+    tab: float
+    travel: float
+
+    def build(self) -> Assembly:
+        """In its own frame: the origin at the middle of its front edge on the body's bottom (anchor
+        ``front``, x out of the front); anchor ``slide`` 2 mm under it, z back along its track."""
+        f, x0, half = M["filters"], -self.length, self.width / 2
+        frame = [g.box_between([x0, -half, -0.0045], [0.0, half, -0.002], "filter").replace(sheet=f["sheet"]),
+                 g.box_between([-0.012, -0.02, -self.tab], [-0.004, 0.02, -0.0044], "filter")]
+        return Assembly.single("filter", frame, {"front": IDENTITY, "slide": Frame.at((0.0, 0.0, -0.002),
+                                                                                      z=(-1, 0, 0))})
+
+
+def grease_filters(body: Body) -> tuple[GreaseFilter, list[Frame]]:
+    """The grease filter's size and where the two go (their ``front`` anchors, left and right): from
+    ``from_back`` behind the bezel to ``from_front`` behind it, at +-``at`` of the width."""
+    xb, xf, _, y0, y1, zc0, _ = body.outer
     f = M["filters"]
-    w = f["width"] * (y1 - y0)
-    return [(xb + f["from_back"], xf - f["from_front"], yc - w / 2, yc + w / 2, zc0)
-            for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
+    # the finger tab stays clear of the ground
+    spec = GreaseFilter(xf - f["from_front"] - xb - f["from_back"], f["width"] * (y1 - y0),
+                        min(f["tab"], zc0 - 0.0015), f["travel"])
+    return spec, [Frame.at((xf - f["from_front"], yc, zc0)) for yc in (-f["at"] * (y1 - y0), f["at"] * (y1 - y0))]
 
 
-def grease_filter(box) -> tuple[list[g.Piece], Frame, float]:
-    """A grease filter in the body's bottom and its finger tab: pieces, the slide frame, its travel (it
-    slides back in its track before it drops out)."""
-    x0, x1, ya, yb, zc0 = box
-    f = M["filters"]
-    tab = min(f["tab"], zc0 - 0.0015)  # a finger tab under its front edge, clear of the ground
-    frame = [g.box_between([x0, ya, zc0 - 0.0045], [x1, yb, zc0 - 0.002], "filter").replace(sheet=f["sheet"]),
-             g.box_between([x1 - 0.012, (ya + yb) / 2 - 0.02, zc0 - tab], [x1 - 0.004, (ya + yb) / 2 + 0.02,
-                                                                          zc0 - 0.0044], "filter")]
-    return frame, Frame.at((x1, (ya + yb) / 2, zc0 - 0.002), z=(-1, 0, 0)), f["travel"]
-
-
-def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float
-           ) -> tuple[list[g.Piece], Frame, float]:
+def drawer(body: Body, body_finish: str, interior_finish: str, handle_length: float) -> A.Drawer:
     """A drawer model's drawer: a front with a window and an edge pull, an open tray inside the cavity
-    liner; returns its pieces, slide frame and travel."""
-    xb, xf, xd1, y0, y1, _, _ = body.outer
-    cx0, cx1, cy0, cy1, cz0, cz1 = body.cavity
+    liner (``MICROWAVE["drawer"]``)."""
+    _, xf, xd1, _, _, _, _ = body.outer
+    cx0, _, cy0, cy1, cz0, cz1 = body.cavity
     (z0, z1), (y0, y1) = body.zs, body.door_ys
     d = M["drawer"]
     c = d["in_liner"]  # the tray inside the cavity liner
-    tray = (cx0 + d["tray_back"], cy0 + c, cy1 - c, cz0 + c, cz1 - c)
-    pieces = A.storage_drawer((xf + d["front_gap"], xd1, y0, y1, z0, z1), tray, wall=d["wall"])
+    tray = (cx0 + d["tray_back"] - xd1, cy0 + c, cy1 - c, cz0 + c - z0, cz1 - c - z0)
+    pieces = A.storage_drawer((xf + d["front_gap"] - xd1, 0.0, y0, y1, 0.0, z1 - z0), tray, wall=d["wall"])
     pieces = [pieces[0].replace(material="body")] + [pc.replace(material="interior") for pc in pieces[1:]]
     # front and tray are 0.6 mm steel sheet like the casing and liner, under any finish (a painted family is
     # massed as board: painted drawers weighed 0.9 kg; 0.8 mm enamelled ones 7.9 kg)
     sheets = {"body": steel_sheet(body_finish), "interior": steel_sheet(interior_finish)}
     pieces = [pc.replace(sheet=sheets[pc.material]) for pc in pieces]
     pull = hardware.edge_pull(handle_length * (y1 - y0), "handle", **M["edge_pull"]).attached(
-        "mount", to=Frame.at((xd1, 0.0, z1 - d["pull_below"]), z=(1, 0, 0), x=(0, 1, 0)))
+        "mount", to=Frame.at((0.0, 0.0, z1 - z0 - d["pull_below"]), z=(1, 0, 0), x=(0, 1, 0)))
     s, m = d["window"]
-    hole = (y0 + s * (y1 - y0), z0 + m, y1 - s * (y1 - y0), z1 - m)
-    window = g.box_between([xd1, hole[0], hole[1]], [xd1 + 0.001, hole[2], hole[3]], "glass")
-    return pieces + [window] + list(pull.parts[pull.root].pieces), Frame.at((xd1, 0.0, z0), z=(1, 0, 0)), \
-        d["travel"] * (xf - tray[0])
+    hole = (y0 + s * (y1 - y0), m, y1 - s * (y1 - y0), z1 - z0 - m)
+    window = g.box_between([0.0, hole[0], hole[1]], [0.001, hole[2], hole[3]], "glass")
+    part = Assembly.single("drawer", pieces + [window] + list(pull.pieces), A.DRAWER_ANCHORS)
+    return A.Drawer(part, Frame.at((xd1, 0.0, z0)), d["travel"] * (xf - (cx0 + d["tray_back"])))
 
 
 def door_window(ys, zs, margin: float, opener: str) -> tuple[float, float, float, float]:
@@ -283,14 +324,14 @@ def door_window(ys, zs, margin: float, opener: str) -> tuple[float, float, float
     return (ys[0] + margin, zs[0] + M["bottom_margin"] * margin, ys[1] - m_free, zs[1] - margin)
 
 
-def door_handle(kind: str, length: float, at: Frame) -> list[g.Piece]:
-    """A door's ``bar`` pull or ``recessed`` edge pull on the handle anchor ``at`` (the free edge)."""
+def door_handle(kind: str, length: float) -> Assembly:
+    """A door's ``bar`` pull or ``recessed`` edge pull, along local x; besides ``mount`` its anchor
+    ``edge`` is the door's free edge, ``bar_in`` / ``pull_in`` beside the mounts (:attr:`Body.handle_at`)."""
     if kind == "bar":
-        handle = hardware.bar_handle(length, "handle", hardware.HandleSize(**M["pull"])).attached(
-            "mount", to=at.moved(dy=M["bar_in"]))
-    else:
-        handle = hardware.edge_pull(length, "handle", **M["edge_pull"]).attached("mount", to=at.moved(dy=M["pull_in"]))
-    return list(handle.parts[handle.root].pieces)
+        handle = hardware.bar_handle(length, "handle", hardware.HandleSize(**M["pull"]))
+        return handle.with_anchors(edge=Frame.at((0.0, -M["bar_in"], 0.0)))
+    handle = hardware.edge_pull(length, "handle", **M["edge_pull"])
+    return handle.with_anchors(edge=Frame.at((0.0, -M["pull_in"], 0.0)))
 
 
 def _dial_style(rng) -> str:

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 
 from . import appliance as A
@@ -210,32 +211,33 @@ def grate(xs, col, H) -> tuple[list[g.Piece], tuple, float]:
     return A.grate(xs, (ga, gb), z0, bx), ((xs[0] + xs[1]) / 2, (ga + gb) / 2, z0), side
 
 
-def drawer(xs, ys, zs, warming: bool, handle_length: float) -> tuple[list[g.Piece], Frame, float]:
+def drawer(xs, ys, zs, warming: bool, handle_length: float, travel: float) -> A.Drawer:
     """A storage drawer in the bay under the oven: a front and an open tray behind it, an edge pull. A
-    warming drawer: an enamel tray, a bar handle like the door's and a marking strip. Returns its pieces,
-    slide frame and depth (the travel is a share of it)."""
+    warming drawer: an enamel tray, a bar handle like the door's and a marking strip. It slides out
+    ``travel`` of its depth. Built in its own frame: the origin at the bottom middle of the bay's front."""
     (xb, xf, xd1), (y0, y1), (z_pl, z_dt) = xs, ys, zs
     d = O["drawer"]
     c = d["in_bay"]
-    fx0, tx0 = xf + d["front_gap"], xb + T + d["tray_back"]
-    e = O["door_side"]
-    pieces = A.storage_drawer((fx0, xd1, y0 + e, y1 - e, z_pl + d["over_plinth"], z_dt),
-                              (tx0, y0 + T + c, y1 - T - c, z_pl + T + c, z_dt - d["tray_under"]))
+    fx0, tx0 = xf + d["front_gap"] - xd1, xb + T + d["tray_back"] - xd1
+    e, top = O["door_side"], z_dt - z_pl
+    pieces = A.storage_drawer((fx0, 0.0, y0 + e, y1 - e, d["over_plinth"], top),
+                              (tx0, y0 + T + c, y1 - T - c, T + c, top - d["tray_under"]))
     if warming:  # an enamel tray (before the painted-steel scaling: scaled, a painted oven's tray weighed 47 kg)
         pieces = [pc.replace(material="interior") if k else pc for k, pc in enumerate(pieces)]
     if warming:
         w = O["warming"]
-        zc = (z_pl + z_dt) / 2 + w["handle_over"]
+        zc = top / 2 + w["handle_over"]
         pull = hardware.bar_handle(handle_length * (y1 - y0), "handle", hardware.HandleSize(**w["handle"])).attached(
-            "mount", to=Frame.at((xd1, 0.0, zc), z=(1, 0, 0), x=(0, 1, 0)))
+            "mount", to=Frame.at((0.0, 0.0, zc), z=(1, 0, 0), x=(0, 1, 0)))
         (m0, m1), mw = w["mark"]
-        pieces.append(g.box_between([xd1, -mw, z_pl + m0], [xd1 + 0.0008, mw, z_pl + m1], "display"))
+        pieces.append(g.box_between([0.0, -mw, m0], [0.0008, mw, m1], "display"))
     else:
         depth, lip, share, below = d["pull"]
         pull = hardware.edge_pull(share * (y1 - y0), "handle", depth=depth, lip=lip).attached(
-            "mount", to=Frame.at((xd1, 0.0, z_dt - below), z=(1, 0, 0), x=(0, 1, 0)))
-    return pieces + [pc.replace(sheet=O["handle_tube"]) if warming else pc for pc in pull.parts[pull.root].pieces], \
-        Frame.at((xd1, 0.0, z_pl), z=(1, 0, 0)), fx0 - tx0
+            "mount", to=Frame.at((0.0, 0.0, top - below), z=(1, 0, 0), x=(0, 1, 0)))
+    pieces += [pc.replace(sheet=O["handle_tube"]) if warming else pc for pc in pull.pieces]
+    return A.Drawer(Assembly.single("drawer", pieces, A.DRAWER_ANCHORS), Frame.at((xd1, 0.0, z_pl)),
+                    travel * (xf + d["front_gap"] - (xb + T + d["tray_back"])))
 
 
 def door(box, margin: float, handle_length: float) -> list[g.Piece]:

@@ -29,7 +29,6 @@ END = 0.03  # rack length beyond the first and last fence
 PAD = 0.006  # rubber pad height under a wood or plastic rack
 WIRE = 0.6  # a wire rack's wire radius as a fraction of prong_radius
 SIDE_GAP = 0.015  # the side board starts this far beyond a plate slid fully sideways
-FREE = 0.005  # a lift-off part is lifted this far past the point where it comes free of what locates it
 TIER_GAP = 0.02  # between a lower plate lifted fully and the upper tier's lowest wire
 TRAY_OUT = 0.8  # the drip tray slides out by this fraction of its length
 TRAY_END_WALL = 0.004  # a plastic tray's end wall (the spout hangs on it)
@@ -361,12 +360,11 @@ def pegs(body: Assembly) -> list[Frame]:
 CADDY = dict(x=0.11, y=0.13, h=0.14, wall=0.003)
 # a 300 ml mug: 80-85 mm across, 95 mm high, 4 mm stoneware wall (catalogue sizes)
 MUG = dict(r=0.041, h=0.095, wall=0.004)
-PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail
-CUP_LIFT = PEG["h"] + FREE  # a mug or tumbler is free once its rim clears the peg's top
+PEG = dict(r=0.008, h=0.055)  # the cup pegs of a drainer's cup rail: a mug or tumbler is free once its rim
+#                               clears the peg's top (its engagement, infmob_usd.lift_off)
 # a drainer board's moulded caddy pocket (simplehuman, Joseph Joseph drainer trays: 10-20 mm deep): a 15 mm lip,
 # 3 mm thick, 2 mm clear of the caddy's base all round; the caddy is free once its base clears the lip
 POCKET = dict(h=0.015, wall=0.003, clear=0.002)
-CADDY_LIFT = POCKET["h"] + FREE
 CUP_PITCH = 0.11  # centre to centre along a row of cups (a mug and its handle: 82 + 22 mm)
 
 

@@ -41,10 +41,9 @@ from infmob_usd import joints as J
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
 
+from . import hardware
 from . import vessel_sizes as S
 from .lids import seat_joint  # noqa: F401  (the lid family's joint, used as V.seat_joint)
-
-UP = (0.0, 0.0, 1.0)
 
 
 def _piece(pc: g.Piece, sheet: float | None = None, convex=None, name: str | None = None) -> g.Piece:
@@ -552,7 +551,7 @@ def hinged_lid(radius: float, thickness: float, hinge_offset: float, slot: str, 
     plate = g.disc((0, 0, thickness / 2), radius, thickness, slot, None)
     pieces = [plate]
     if knob > 0:
-        pieces += g.knob_handle((radius * 0.75, 0, thickness), UP, slot, radius=knob, depth=1.6 * knob)
+        pieces += hardware.knob_handle(knob, 1.6 * knob, slot).placed(Frame.at((radius * 0.75, 0, thickness))).pieces
     hinge = Frame.at((-radius - hinge_offset, 0.0, thickness / 2), z=(0, -1, 0), x=(1, 0, 0))
     knuckle = g.cylinder(hinge.point((0, 0, -radius / 3)), hinge.point((0, 0, radius / 3)),
                          thickness / 2, slot, 16)
@@ -706,8 +705,8 @@ def dome_lid(pot: Cookware, rise: float, thickness: float, slot: str, band_slot:
 
 def lid_knob(radius: float, slot: str) -> Assembly:
     """A round knob (stem and cap) standing on ``base``, sunk 1 mm into what carries it."""
-    pieces = g.knob_handle((0, 0, -0.001), UP, slot, radius=radius, depth=max(0.02, 1.2 * radius))
-    return Assembly.single("handle", pieces, {"base": IDENTITY}, {"stem": (0, 0, -0.001)})
+    knob = hardware.knob_handle(radius, max(0.02, 1.2 * radius), slot).placed(Frame.at((0, 0, -0.001)))
+    return Assembly.single("handle", knob.pieces, {"base": IDENTITY}, {"stem": (0, 0, -0.001)})
 
 
 def lid_loop(dome: Dome, knob_radius: float, slot: str) -> Assembly:
@@ -737,8 +736,9 @@ def side_handles(pot: Cookware, length: float, radius: float, reach: float, slot
     for s, side in ((1, "left"), (-1, "right")):
         mount = Frame.at((0.0, s * yin, zh), x=(0, s, 0))
         anchors[f"mount_{side}"] = mount
-        pieces += g.bar_handle(mount.origin, mount.x, (1, 0, 0), length, slot, standoff=(r - yin) + reach,
-                               radius=radius)
+        size = hardware.HandleSize(standoff=(r - yin) + reach, bar_radius=radius, post_radius=0.8 * radius,
+                                   inset=h["inset"][0])
+        pieces += hardware.bar_handle(length, slot, size).placed(Frame.at(mount.origin, z=mount.x, x=(1, 0, 0))).pieces
     return Assembly.single("handle", pieces, anchors)
 
 

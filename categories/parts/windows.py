@@ -16,6 +16,9 @@ import trimesh
 
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
+from infmob_usd.frames import Frame
+
+from . import hardware
 
 CLR = 0.004  # m: clearance around every moving part
 GLASS = 0.006  # glass pane thickness
@@ -99,6 +102,12 @@ ch. 5 tables of specific gravity), not the MDF (~750) the ``painted`` family wei
 SILL_DRIP = 0.012  # an exterior sill's drip edge: 12 mm square under its outer edge
 # an espagnolette lever's free spindle: 1.5 mm off the rose's face (the spindle was sunk 2 mm into it), 5.5 mm
 SPINDLE = (0.0035, 0.0055)
+KNOB = (0.016, 0.035)  # m: a sash knob's cap radius and projection (32 mm knob, 35 mm proud)
+
+
+def _knob(at: Frame) -> list[g.Piece]:
+    """A sash knob (:func:`~.hardware.knob_handle`) standing on the sash face at ``at`` (z out of it)."""
+    return list(hardware.knob_handle(*KNOB, "handle").placed(at).pieces)
 
 
 def sash(y0, y1, z0, z1, x0, x1, sw, p) -> list[g.Piece]:
@@ -199,7 +208,7 @@ def casement(frame, light, p, dims, transom, middle):
         if p["handle_style"] == "lever":
             pieces += lever(xs1, y_free, zh)
         else:
-            pieces += g.knob_handle((xs1, y_free, zh), (1, 0, 0), "handle", radius=0.016, depth=0.035)
+            pieces += _knob(Frame.at((xs1, y_free, zh), z=(1, 0, 0)))
         y_hinge = a if side == "left" else b
         for zk in (zb + 0.12 * (zt - zb), zt - 0.12 * (zt - zb)):  # hinge knuckles (no collision)
             knuckle = g.cylinder([xs1 + 0.0045, y_hinge, zk - 0.03], [xs1 + 0.0045, y_hinge, zk + 0.03], 0.0045,
@@ -292,8 +301,8 @@ def sliding(frame, light, p, dims, transom, middle):
         y_pull = y0 + sw_i / 2 if d > 0 else y0 + s - sw_i / 2  # on the trailing stile
         depth = PULL if track == "back" else 0.02
         length = min(0.14, 0.25 * (zt - zb))
-        pieces += g.pull_handle((x1, y_pull, zb + 0.5 * (zt - zb)), (1, 0, 0), (0, 0, 1), length, "handle",
-                                depth=depth, lip=min(0.012, 0.6 * sw_i))
+        pull = hardware.edge_pull(length, "handle", depth=depth, lip=min(0.012, 0.6 * sw_i))
+        pieces += pull.placed(Frame.at((x1, y_pull, zb + 0.5 * (zt - zb)), z=(1, 0, 0), x=(0, 0, 1))).pieces
         spec = J.prismatic("frame", f"sash_{i}", (0.5 * (x0 + x1), y0 + s / 2, 0.5 * (zb + zt)), (0, d, 0),
                            0.0, max(travel, 0.01), role="slide")
         sashes.append((f"sash_{i}", pieces, spec))
@@ -479,13 +488,10 @@ def tilt_turn(frame, light, p, dims, transom, middle):
             lower[2, 2] = (h - short) / h
             lower[2, 3] = pivot[2] * (1 - lower[2, 2])
             pieces = [pc.transformed(lower) for pc in pieces]
-        # turn first, then tilt about the sash's own bottom rail: tilted and turned at once (the validators
-        # sample every joint at its maximum) the bottom rail keeps its height above the floor. A real
-        # tilt-and-turn handle selects one mode: the turn and the tilt exclude each other. The core has no
-        # relation for "these two cannot be open together" between the DoFs of one joint yet (a declared
-        # requires_closed would say it); until it has, both DoFs are free and the model allows both at once.
+        # turn first, then tilt about the sash's own bottom rail. A real tilt-and-turn handle selects one
+        # mode (the gear locks the other hinge): the turn and the tilt exclude each other (exclusive)
         out.append((name, pieces, J.flip_revolute("frame", name, d.origin, d.axis, (d.lower, d.upper), pivot,
-                                                  (0, 1, 0), (0.0, TILT), role="hinge")))
+                                                  (0, 1, 0), (0.0, TILT), role="hinge", exclusive=True)))
     return out, x_room
 
 
@@ -513,7 +519,7 @@ def awning(frame, light, p, dims, transom, middle):
         pieces = sash(ya, yb, zb, zt, xs0, xs1, p["stile_width"], p)
         sw = min(p["stile_width"], 0.22 * (yb - ya), 0.22 * (zt - zb))
         zk = zb + max(sw / 2, LIP + 0.022)  # the handle clears the stop lip below it
-        pieces += g.knob_handle((xs1, (ya + yb) / 2, zk), (1, 0, 0), "handle", radius=0.016, depth=0.035)
+        pieces += _knob(Frame.at((xs1, (ya + yb) / 2, zk), z=(1, 0, 0)))
         spec = J.revolute("frame", f"sash_{i}", (x_piv, (ya + yb) / 2, zt), (0, 1, 0), 0.0, AWNING_OPENS,
                           role="hinge")
         sashes.append((f"sash_{i}", pieces, spec))
@@ -543,8 +549,8 @@ def double_hung(frame, light, p, dims, transom, middle):
     ya, yb = yi0 + CLR, yi1 - CLR
     lower = sash(ya, yb, zb, zm + ov / 2, *xf, sw, p)
     sw_l = min(sw, 0.22 * (yb - ya), 0.22 * (zm + ov / 2 - zb))
-    lower += g.pull_handle((xf[1], (ya + yb) / 2, zb + sw_l / 2), (1, 0, 0), (0, 1, 0), min(0.12, 0.3 * (yb - ya)),
-                           "handle", depth=0.02, lip=min(0.012, 0.6 * sw_l))
+    pull = hardware.edge_pull(min(0.12, 0.3 * (yb - ya)), "handle", depth=0.02, lip=min(0.012, 0.6 * sw_l))
+    lower += pull.placed(Frame.at((xf[1], (ya + yb) / 2, zb + sw_l / 2), z=(1, 0, 0), x=(0, 1, 0))).pieces
     upper = sash(ya, yb, zm - ov / 2, zt, *xb, sw, p)
     sw_u = min(sw, 0.22 * (yb - ya), 0.22 * (zt - zm + ov / 2))
     for y in (ya + sw_u / 2, yb - sw_u / 2):  # the tilt latches at the ends of its top rail

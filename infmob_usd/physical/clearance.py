@@ -8,6 +8,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..blueprint import descendants
+from ..joints import one_mode
 from .hulls import CLEARANCE, _boxes_meet, _hits, _Obstacles, _solid_hulls
 from .sweep import _Moving, _parent_limit, _sweep_limit
 
@@ -40,6 +41,9 @@ class _Clearance:
         self.gates = {j.name: [g.name for g in groups.get(j.requires_open, [])]
                       for j in self.movable if j.requires_open}
         self.gate_of_someone = {name for names in self.gates.values() for name in names}
+        # joint -> the other modes of its part that are at rest while it is open (JointSpec.exclusive)
+        self.excludes = {j.name: tuple(getattr(j, "excludes", ())) for j in self.movable}
+        self.order = [j.name for j in self.movable]
         self.by_name = {link.name: link for link in obj.links}
         self.into = {j.child: j for j in obj.joints}
         self.subtree = {j.name: descendants(obj.joints, j.child) for j in self.movable}
@@ -231,7 +235,8 @@ class _Clearance:
 
     def state(self, f, scale=None):
         """Link poses with every joint at ``f`` of its range (the joints ``scale[0]`` with limits
-        scaled by ``scale[1]``), gates of moved joints fully open."""
+        scaled by ``scale[1]``), an exclusive joint's first mode only (:func:`~..joints.one_mode`:
+        a tilt-and-turn sash is never tilted and turned at once), gates of moved joints fully open."""
         limits = self.limits
         lim = dict(limits)
         if scale is not None:
@@ -239,6 +244,7 @@ class _Clearance:
                         if name in scale[0]})
         q = {j.name: (f * math.pi if j.type == "continuous" else lim[j.name][0] + f * (lim[j.name][1]
              - lim[j.name][0])) for j in self.movable}
+        q = one_mode(q, self.order, self.excludes)
         for name in [n for n in q if q[n] != 0.0]:
             for g in self.gates.get(name, []):
                 q[g] = lim[g][1]
@@ -297,6 +303,7 @@ class _Clearance:
         those of the parts ``j`` ``requires_closed``, and those that ``requires_open`` a part
         held closed (recursively)."""
         names = {g.name for group in sorted(self.closed[j.name] | {j.group}) for g in self.groups.get(group, [])}
+        names |= set(self.excludes[j.name])
         names.discard(j.name)
         while True:
             more = {n for n, gates in self.gates.items() if n not in names and names.intersection(gates)}
@@ -305,9 +312,11 @@ class _Clearance:
             names |= more
 
     def open_state(self, j) -> dict[str, float]:
-        """Every limited joint at its upper (open) limit, :meth:`held_closed` at 0."""
+        """Every limited joint at its upper (open) limit, :meth:`held_closed` at 0, an exclusive
+        joint's first mode only (:func:`~..joints.one_mode`)."""
         rest = self.held_closed(j)
-        return {n: self.limits[n][1] for n, k in self.by_joint.items() if k.type != "continuous" and n not in rest}
+        q = {n: self.limits[n][1] for n, k in self.by_joint.items() if k.type != "continuous" and n not in rest}
+        return one_mode(q, self.order, self.excludes)
 
     def blocker(self, j, hit: str, q: dict[str, float]):
         """The open joint (not one that moves ``j``) whose subtree holds link ``hit``, the one
@@ -410,7 +419,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        becomes the last contact-free value, bisected (14 steps) within the first sample
        interval that meets something.
     2. *Joints together*: in the states :data:`ALL_FRACTIONS` (every joint at 50 % and 100 % of
-       its range, as the validators sample them), two links that may touch neither by design
+       its range, as the validators sample them; of an exclusive joint's modes, the first: a
+       tilt-and-turn sash turned, its tilt swept in step 3), two links that may touch neither by design
        (welded, or parent and child) nor at rest must keep the clearance (or, if closer at rest,
        must not overlap); where they do not, the limits of
        the movable joints between them (not those others require open; only the revolute ones
@@ -419,7 +429,8 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
     3. *Each joint from the all-open state*: each joint is swept from its upper limit to its
        lower one with every other limited joint at its upper (open) limit, except the other
        DoFs of its own part, the parts it ``requires_closed`` and the parts that
-       ``requires_open`` those, which are at rest: a robot that opened every part can close
+       ``requires_open`` those, which are at rest (and of another part's exclusive modes, the
+       first open): a robot that opened every part can close
        any one and open it again. A start overlapping a link the moving part is apart from at rest
        stops the sweep where it starts (:meth:`_Clearance.start_hit`). Where the sweep is stopped by a part that an
        open joint moved there (:meth:`_Clearance.give_way`): a part that ``requires_open`` the
@@ -451,11 +462,22 @@ def _clearance(obj) -> _Clearance:
     return c
 
 
+def _share_coupled(joints, closed: dict[str, set[str]]) -> None:
+    """A coupled joint and its leader move together (one hand or foot drives both): what either must have
+    closed first, both must (a pedal whose lid would meet an open part needs that part closed as the lid does)."""
+    for j in joints:
+        lead = j.mimic[0] if getattr(j, "mimic", None) else None
+        if lead in closed and j.name in closed:
+            both = closed[lead] | closed[j.name]
+            closed[lead], closed[j.name] = set(both), set(both)
+
+
 def limit_to_clearance(obj):
     """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` and the
     ``requires_closed`` parts its step 3 found (the object and its joints are not modified;
     unchanged joints are shared)."""
     c = _clearance(obj)
+    _share_coupled(obj.joints, c.closed)
     joints = []
     for j in obj.joints:
         if j.name in c.limits:

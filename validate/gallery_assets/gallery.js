@@ -477,6 +477,8 @@
       const j = this.byName[name];
       j.q = Math.min(Math.max(q, j.lower), j.upper);
       this.apply(j);
+      // the other modes of its fitting (excludes: a tilt-and-turn sash tilts or turns) go back to rest
+      if (j.q !== restOf(j)) for (const n of j.excludes || []) { const k = this.byName[n]; if (k) { k.q = restOf(k); this.apply(k); } }
       // a joint behind a closed door goes back to rest, as it would in the object
       for (const k of this.joints) if (k.gate.length && !this.isOpen(k) && k.q !== restOf(k)) { k.q = restOf(k); this.apply(k); }
       this.request();
@@ -538,8 +540,12 @@
 
     openAll(ms) {
       // doors first (the joints others require open), then everything else
-      const first = {}, then = {};
-      for (const j of this.joints) (this.gates.has(j.name) ? first : then)[j.name] = openOf(j);
+      // of the modes that exclude each other, the first opens (a tilt-and-turn sash turns)
+      const first = {}, then = {}, shut = new Set();
+      for (const j of this.joints) {
+        (this.gates.has(j.name) ? first : then)[j.name] = shut.has(j.name) ? restOf(j) : openOf(j);
+        if (!shut.has(j.name)) for (const n of j.excludes || []) shut.add(n);
+      }
       return this.animateTo([first, then], ms);
     }
 

@@ -1,0 +1,188 @@
+"""Hob (cooktop) parts: a built-in hob's top plate over its housing or a counter-top cooker's casing, its
+cooking zones (gas burners under cast grates, electric coils on drip pans, induction zones printed on
+glass) and the anchors of its controls.
+
+A hob is built on the ground plane, centred on the z axis, its front facing +X (world-aligned, like
+:mod:`.appliance`). :func:`hob_body` returns an :class:`~infmob_usd.assembly.Assembly` whose anchors are
+the controls' places (``knob_<k>``: z out of the face the knob stands on, x "up" on that face; ``key_<k>``
+on the front fascia) and the grates' seats (``grate_<k>``: z up, where a grate lifts off). Burners reuse the
+range's (:func:`.ovens.burner_columns`, :func:`.ovens.grate`), so a hob's gas zones are a range's.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import Frame
+
+from . import appliance as A
+from . import controls
+from . import ovens as OV
+
+HOB = {
+    # built-in hobs: 30 cm domino (2 zones) to 90 cm / 36 in (5-6 zones), 0.49-0.53 m deep; a 4-8 mm top
+    # (ceramic glass or enamelled / stainless steel) over a housing 45-100 mm deep (Bosch PGH6B5B90, Bosch
+    # PIE631FB1E, Frigidaire FFGC3026S, GE JP3030DJBB installation sheets)
+    "built_in": {"width": (0.3, 0.9), "depth": (0.49, 0.53), "housing": (0.045, 0.1), "inset": 0.025,
+                 "five": 0.75},
+    # counter-top cookers: 2 zones, 0.5-0.6 m wide, 0.3-0.36 m deep, 0.06-0.11 m tall (Cuisinart CB-60 coil,
+    # Duxtop 9600LS induction, Ramblewood GDC2-LN gas spec sheets); a front fascia carries the controls
+    "counter": {"width": (0.5, 0.6), "depth": (0.3, 0.36), "height": (0.06, 0.11), "feet": 0.008,
+                "room": 0.014},
+    "plate": {"gas": 0.004, "coil": 0.004, "induction": 0.006},  # top plate thickness
+    "sheet": 0.0008,  # a steel top's sheet (0.6-1 mm stainless or enamelled); a glass-ceramic top is solid
+    "strip": 0.075,  # a built-in hob's control strip along its front edge (knobs on top)
+    "margin": 0.03,  # zones keep this far inside the plate's edges
+    # electric zones: 145-210 mm coils / induction zones (GE WB30M1, WB30M2 coils; Bosch PIE631 zones)
+    "zone": {"radius": 0.105, "side": 0.012, "small": 0.75},
+    "coil": {"wire": 0.0045, "turns": 3.0, "points": 14, "pan": 0.012, "over": 0.004},
+    "ring": 0.0008,  # an induction zone's printed ring (proud of the glass, massless in effect)
+    # knobs: gas valve knobs 38-45 mm turning ~270 deg from off (push-to-turn); infinite switches 300 deg
+    "knob": {"radius": 0.02, "stem": 0.004, "gas": math.radians(270), "electric": math.radians(300)},
+    # touch keys on a counter cooker's fascia (Duxtop 9600LS: power, function, -, +, timer)
+    "key": controls.Button(half=(0.011, 0.007), shape="rect", proud=0.003, travel=0.002),
+}
+KNOB = controls.Dial(radius=HOB["knob"]["radius"], stem=HOB["knob"]["stem"], style="ridge",
+                     turns=HOB["knob"]["gas"])
+COIL_KNOB = controls.Dial(radius=HOB["knob"]["radius"], stem=HOB["knob"]["stem"], style="round",
+                          turns=HOB["knob"]["electric"])
+
+
+def columns(n: int, W: float) -> list[int]:
+    """Zones per column, left to right, for ``n`` zones (2: side by side, or front and back on a narrow
+    domino; 3: two and a wok; 5: a wok between two pairs; 4 and 6: pairs), as on Bosch / Frigidaire 2-6
+    burner hobs."""
+    if n == 2 and W < HOB["built_in"]["five"] / 2:
+        return [2]
+    return {1: [1], 2: [1, 1], 3: [2, 1], 4: [2, 2], 5: [2, 1, 2], 6: [2, 2, 2]}[n]
+
+
+def zones(xs, ys, n: int) -> list[tuple[float, float, float]]:
+    """Electric zones (x, y, radius) in :func:`columns` over the area ``xs`` x ``ys``."""
+    z = HOB["zone"]
+    per = columns(n, ys[1] - ys[0] + 2 * HOB["margin"])
+    gw = (ys[1] - ys[0]) / len(per)
+    out = []
+    for k, m in enumerate(per):
+        r = min(gw / 2 - z["side"], (xs[1] - xs[0]) / m / 2 - z["side"], z["radius"])
+        for j in range(m):
+            small = (j + k) % 2 == 1
+            out.append((xs[0] + (xs[1] - xs[0]) * (j + 0.5) / m, ys[0] + (k + 0.5) * gw, r * (z["small"] if small
+                                                                                             else 1.0)))
+    return out
+
+
+def coil(x: float, y: float, z: float, r: float) -> list[g.Piece]:
+    """An electric coil element on its chrome drip pan: a flat spiral of sheathed wire (drawn, no collision:
+    the pan under it carries what stands on it) and the pan."""
+    c = HOB["coil"]
+    w = c["wire"]
+    t = np.linspace(0.0, 1.0, int(c["turns"] * c["points"]) + 1)
+    rr = 0.25 * r + t * (0.95 * r - 0.25 * r)
+    ang = 2 * math.pi * c["turns"] * t
+    zc = z + c["over"] + w
+    path = np.stack([x + rr * np.cos(ang), y + rr * np.sin(ang), np.full_like(t, zc)], axis=1)
+    return [g.disc([x, y, z + c["pan"] / 4], r + 0.01, c["pan"] / 2, "trim", None),
+            g.tube(path, w, "burner").replace(convex=())]
+
+
+def induction_ring(x: float, y: float, z: float, r: float) -> list[g.Piece]:
+    """An induction zone printed on the glass: a thin flat ring centred on the zone."""
+    t = HOB["ring"]
+    return [g.shell([(r, z), (r, z + t)], 0.003, "display", center=(x, y, 0.0))]
+
+
+def size(mount: str, n: int, W: float, D: float, H: float) -> tuple[float, float, float]:
+    """A hob's (width, depth, height): a built-in two-zone hob is a 30 cm domino, five or six zones need
+    at least 75 cm (Bosch PCR9A5B90, Frigidaire FFGC3626S); a counter cooker's own ranges mapped from the
+    parameters' (``W``, ``D`` over the built-in ranges, ``H`` over the housing range)."""
+    b, c = HOB["built_in"], HOB["counter"]
+    if mount == "counter":
+        return tuple(lo + (hi - lo) * (v - vlo) / (vhi - vlo) for v, (vlo, vhi), (lo, hi) in
+                     ((W, b["width"], c["width"]), (D, b["depth"], c["depth"]), (H, b["housing"], c["height"])))
+    if n == 2:
+        return b["width"][0], D, H
+    return (max(W, b["five"]) if n >= 5 else W), D, H
+
+
+def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int) -> tuple[Assembly, list, list]:
+    """A hob of ``design`` (gas, coil, induction) and ``mount`` (built_in, counter) ``W`` x ``D``, ``H`` tall,
+    with ``n`` zones. Returns its body assembly (anchors ``knob_<k>`` per zone, ``grate_<k>`` per gas column;
+    the fascia's ``keys`` anchor row for a counter cooker), the gas columns (for :func:`grate`) and the
+    cooking height."""
+    plate_t = HOB["plate"][design]
+    x0, x1, y0, y1 = -D / 2, D / 2, -W / 2, W / 2
+    zt = H - plate_t  # plate's underside
+    m = HOB["margin"]
+    pieces, anchors = [], {}
+    top_knobs = mount == "built_in"
+    strip = HOB["strip"] if top_knobs else 0.0
+    area_x, area_y = (x0 + m, x1 - m - strip), (y0 + m, y1 - m)
+    holes = []
+    if mount == "built_in":  # the housing stops short of the knob strip: the valves' stems reach under it
+        ins = HOB["built_in"]["inset"]
+        pieces.append(g.box_between([x0 + ins, y0 + ins, 0.0], [x1 - max(ins, strip), y1 - ins, zt], "housing")
+                      .replace(sheet=A.OVEN_SHEET))
+    else:  # a hollow behind the fascia (the controls' stems), closed at the sides
+        ft, room = HOB["counter"]["feet"], HOB["counter"]["room"]
+        xr = x1 - 0.004 - room
+        pieces += [g.box_between([x0, y0, ft], [xr, y1, zt], "housing").replace(sheet=A.OVEN_SHEET)]
+        pieces += [g.box_between([xr, y, ft], [x1 - 0.004, y + 0.004, zt], "housing").replace(sheet=A.OVEN_SHEET)
+                   for y in (y0, y1 - 0.004)]
+        pieces += [g.cylinder([x, y, 0.0], [x, y, ft], 0.01, "feet", 16) for x in (x0 + 0.03, x1 - 0.03)
+                   for y in (y0 + 0.03, y1 - 0.03)]
+    spots = np.linspace(y0 + W / (2 * n), y1 - W / (2 * n), n) if n > 1 else [0.0]
+    if top_knobs:
+        xk = x1 - strip / 2
+        for k, y in enumerate(spots):
+            anchors[f"knob_{k}"] = Frame.at((xk, float(y), H), z=(0, 0, 1), x=(1, 0, 0))
+            holes.append(_hole_xy(xk, float(y), KNOB.stem))
+    top = g.panel([x0, y0, zt], [x1, y1, H], "top", "z", holes=holes)
+    pieces.append(top if design == "induction" else top.replace(sheet=HOB["sheet"]))
+    cols = []
+    if design == "gas":
+        burners, cols = OV.burner_columns(area_x, area_y, H, columns(n, W))
+        pieces += burners
+    else:
+        for x, y, r in zones(area_x, area_y, n):
+            pieces += coil(x, y, H, r) if design == "coil" else induction_ring(x, y, H, r)
+    return Assembly.single("body", pieces, anchors), cols, (area_x, zt)
+
+
+def _hole_xy(x: float, y: float, r: float) -> tuple[float, float, float, float]:
+    c = A.CLEAR + r
+    return (x - c, y - c, x + c, y + c)
+
+
+def fascia(W: float, D: float, H: float, n_knobs: int, n_keys: int, plate_t: float) -> tuple[list, dict]:
+    """A counter cooker's front fascia (the housing's front face, 4 mm thick) with holes for ``n_knobs``
+    knob stems or ``n_keys`` touch keys in a row; its pieces and the controls' anchors (z +X, x up)."""
+    x1, ft = D / 2, HOB["counter"]["feet"]
+    zc = (ft + H - plate_t) / 2
+    anchors, holes = {}, []
+    n = n_knobs or n_keys
+    ys = np.linspace(-W / 2 + W / (2 * n), W / 2 - W / (2 * n), n) if n > 1 else [0.0]
+    key = HOB["key"]
+    for k, y in enumerate(ys):
+        y = float(y)
+        if n_knobs:
+            anchors[f"knob_{k}"] = Frame.at((x1, y, zc), z=(1, 0, 0), x=(0, 0, 1))
+            holes.append((y - KNOB.stem - A.CLEAR, zc - KNOB.stem - A.CLEAR, y + KNOB.stem + A.CLEAR,
+                          zc + KNOB.stem + A.CLEAR))
+        else:
+            anchors[f"key_{k}"] = Frame.at((x1, y, zc), z=(1, 0, 0), x=(0, 0, 1))
+            c = key.cutout("front", (y, zc))
+            holes.append((c.lo[0], c.lo[1], c.hi[0], c.hi[1]))
+    return [g.panel([x1 - 0.004, -W / 2, ft], [x1, W / 2, H - plate_t], "housing", "x", holes=holes)
+            .replace(sheet=A.OVEN_SHEET)], anchors
+
+
+def grate(xs, col, H) -> tuple[list[g.Piece], Frame]:
+    """A loose cast grate over a burner column (:func:`.ovens.grate`) and its lift frame (z up)."""
+    pieces, origin, _ = OV.grate(xs, col, H)
+    return pieces, Frame.at(origin, z=(0, 0, 1))
+LIFT = 0.03  # a grate is lifted ~30 mm off its feet before it is free (the core caps lift-offs there)

@@ -1,0 +1,134 @@
+"""Safes: a thick steel body open at the front, its heavy door (a hollow steel box with the lock's holes),
+a three-spoke bolt handle and an inner drawer.
+
+The body stands on z = 0 centred on the z axis, its opening facing +x. Its anchors ``hinge_neg`` / ``hinge_pos``
+are the door's hinge line at the front corner on the -y / +y side (z the axis a positive turn opens the door
+about), ``drawer`` the front centre of the inner drawer's place under the ceiling (z out of the opening). The
+door (:func:`door`) is a :func:`~.casing.sheet_casing` whose front face carries the lock's cut-outs, with the same
+two hinge anchors; a category attaches the door's hinge anchor to the body's and places the controls on the
+door's cut-out anchors (:class:`~.controls.ControlFace`).
+
+Sizes per design are data (:data:`SIZES`, :data:`BUILD`), each figure beside the products it is read from.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import Frame
+
+from . import appliance as A
+from .casing import CasingSize, Cutout, LinerSize, liner, sheet_casing
+from .controls import MOUNT, Button, Dial
+
+# Outer sizes (width Y, depth X, height Z; metres): home safes SentrySafe SFW082 37 x 41 x 44 cm to SFW205
+# 47 x 49 x 61 cm, Honeywell 2087 / Yale 35-55 cm; hotel in-room safes (Elsafe, SAFEMARK, Onity) 40-45 x 30-38
+# x 19-25 cm; gun cabinets Stack-On GCB-8 (21.5 x 9.5 x 55 in: 55 x 24 x 140 cm), 5-14 gun cabinets 30-55 cm
+# wide, 22-40 cm deep, 1.30-1.50 m tall.
+SIZES = {"home_safe": ((0.35, 0.55), (0.30, 0.50), (0.30, 0.60)),
+         "hotel_safe": ((0.38, 0.45), (0.30, 0.38), (0.19, 0.25)),
+         "gun_cabinet": ((0.30, 0.55), (0.22, 0.40), (1.30, 1.50))}
+
+
+@dataclass(frozen=True)
+class Build:
+    """How a design is built: body ``wall`` and door ``thick``-ness as the simulator sees them (m), the body massed
+    as ``sheet`` m of steel, each of the door's two skins as ``door_sheet``; the door's mechanical maximum
+    ``opens`` (rad)."""
+
+    wall: float
+    thick: float
+    sheet: float
+    door_sheet: float
+    opens: float
+
+
+# Fire-rated home safes: 2-4 cm walls of steel skin round a gypsum/concrete fill and 6-8 cm doors, 35-60 kg
+# (SentrySafe SFW123 ~39 kg): massed as ~6 mm of steel. Hotel safes: 2-3 mm body, a 6-8 mm door plate on a
+# 3 cm door, 9-15 kg. Gun cabinets: 14-16 gauge (1.5-1.9 mm) steel, a 3 cm door of one folded sheet and a thin
+# liner, 25-45 kg. Doors open 100-180 degrees on their external or concealed hinges.
+BUILD = {"home_safe": Build(0.03, 0.065, 0.006, 0.005, math.radians(120)),
+         "hotel_safe": Build(0.006, 0.03, 0.003, 0.0035, math.radians(110)),
+         "gun_cabinet": Build(0.004, 0.03, 0.0019, 0.0011, math.radians(120))}
+
+# Locks (SentrySafe, Sargent & Greenleaf, Elsafe listings): a 6-7 cm combination dial on a 6 mm spindle; a
+# 12-key pad of ~10 x 8 mm keys pressing 2 mm on a 22 x 17 mm pitch; a three-spoke bolt handle ~10-14 cm
+# across, turning a quarter turn to draw the bolts.
+DIAL = Dial(radius=0.032, stem=0.006, style="round", turns=None)
+KEY = Button(half=(0.0055, 0.0045), shape="rect", proud=0.003, travel=0.002)
+KEY_PITCH = (0.022, 0.017)
+KEY_GRID = (3, 4)  # columns, rows
+HANDLE = dict(hub=0.014, spoke=0.006, reach=0.055, knob=0.01, proud=0.02, stem=0.007)
+HANDLE_TURN = math.pi / 2
+# An inner drawer under the ceiling (home safes, gun cabinets' top locker): 6-8 cm deep box of 1 mm steel.
+DRAWER = dict(height=0.06, clearance=0.006, share=0.7, wall=0.003, sheet=0.001, front=0.006, pull=0.8)
+
+
+def body(width: float, depth: float, height: float, b: Build, material: str) -> Assembly:
+    """The open-front steel body (five walls ``b.wall`` thick). Anchors: ``hinge_neg``, ``hinge_pos``, ``drawer``
+    (see the module), ``floor``."""
+    hx, hy, t = depth / 2, width / 2, b.wall
+    pieces = [g.box_between((-hx, -hy, 0), (-hx + t, hy, height), material),
+              g.box_between((-hx + t, -hy, 0), (hx, -hy + t, height), material),
+              g.box_between((-hx + t, hy - t, 0), (hx, hy, height), material),
+              g.box_between((-hx + t, -hy + t, 0), (hx, hy - t, t), material),
+              g.box_between((-hx + t, -hy + t, height - t), (hx, hy - t, height), material)]
+    pieces = [pc.replace(sheet=b.sheet) for pc in pieces]
+    z_drawer = height - t - DRAWER["clearance"] - DRAWER["height"] / 2
+    anchors = {"hinge_neg": Frame.at((hx, -hy, 0), x=(1, 0, 0), z=(0, 0, -1)),
+               "hinge_pos": Frame.at((hx, hy, 0), x=(1, 0, 0), z=(0, 0, 1)),
+               "drawer": Frame.at((hx - DRAWER["clearance"], 0, z_drawer), z=(1, 0, 0), x=(0, 0, 1)),
+               "floor": Frame.at((0, 0, t))}
+    supports = {f"foot_{i}": (x, y, 0) for i, (x, y) in enumerate(((-hx, -hy), (-hx, hy), (hx, -hy), (hx, hy)))}
+    return Assembly.single("body", pieces, anchors, supports)
+
+
+def keypad_cutouts(at: tuple[float, float]) -> dict[str, Cutout]:
+    """The 12 keys' holes on the door's front, a grid centred on ``at`` (face coordinates): ``key_0`` ..."""
+    (cols, rows), (pu, pv) = KEY_GRID, KEY_PITCH
+    return {f"key_{r * cols + c}": KEY.cutout("front", (at[0] + (c - (cols - 1) / 2) * pu,
+                                                        at[1] - (r - (rows - 1) / 2) * pv))
+            for r in range(rows) for c in range(cols)}
+
+
+def handle_cutout(at: tuple[float, float]) -> Cutout:
+    s = HANDLE["stem"]
+    return Cutout.around("front", at, (2 * s, 2 * s), A.CLEAR)
+
+
+def door(width: float, height: float, b: Build, material: str, cutouts: dict[str, Cutout]) -> Assembly:
+    """The door: a hollow steel box ``b.thick`` deep covering the body's front, its lock's ``cutouts`` in its front
+    face (anchors of their names). Anchors ``hinge_neg`` / ``hinge_pos`` (as the body's)."""
+    size = CasingSize(width, b.thick, height, min(0.004, b.thick / 4), b.door_sheet, 0.005)
+    made = sheet_casing(size, material, cutouts, label="door")
+    t2, w2 = b.thick / 2, width / 2
+    anchors = {**made.anchors, "hinge_neg": Frame.at((-t2, -w2, 0), x=(1, 0, 0), z=(0, 0, -1)),
+               "hinge_pos": Frame.at((-t2, w2, 0), x=(1, 0, 0), z=(0, 0, 1))}
+    return Assembly(made.parts, anchors=anchors, supports=made.supports)
+
+
+def spoke_handle(material: str) -> Assembly:
+    """A three-spoke bolt handle on a stem through the door (control convention: face at x = 0, reaching +x);
+    its spokes 120 degrees apart balance it about its axis. Anchors ``mount`` and ``axis``."""
+    h = HANDLE
+    x1 = h["proud"]
+    pieces = [g.cylinder((-A.BEHIND, 0, 0), (0.003, 0, 0), h["stem"], material, 12),
+              g.cylinder((0.003, 0, 0), (x1, 0, 0), h["hub"], material, None)]
+    for k in range(3):
+        a = math.pi / 2 + 2 * math.pi * k / 3
+        tip = (x1 - h["spoke"], h["reach"] * math.cos(a), h["reach"] * math.sin(a))
+        pieces += [g.cylinder((x1 - h["spoke"], 0, 0), tip, h["spoke"] / 2, material, 12),
+                   g.sphere(tip, h["knob"], material)]
+    return Assembly.single("handle", pieces, {"mount": MOUNT, "axis": MOUNT})
+
+
+def drawer(inner_width: float, inner_depth: float, material: str) -> Assembly:
+    """The inner drawer for a body ``inner_width`` x ``inner_depth`` inside: anchor ``front`` (as the body's
+    ``drawer``)."""
+    d = DRAWER
+    size = LinerSize(inner_width - 2 * d["clearance"], d["share"] * inner_depth, d["height"], d["wall"], d["sheet"],
+                     0.0, d["front"])
+    return liner(size, material, label="drawer")

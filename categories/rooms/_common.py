@@ -1,0 +1,29 @@
+"""Room facts every scene kind shares, with their sources."""
+
+from __future__ import annotations
+
+import math
+
+# residential ceilings: 8-9 ft (2.44-2.74 m; 2.4 m the UK/EU minimum of most building codes)
+CEILING = (2.4, 2.7)
+WALL = 0.12  # m: a 100 mm stud partition with 12.5 mm plasterboard each side
+SILL = (0.85, 1.0)  # m: a window's sill above the floor in living rooms (guarding rules ask >= 0.8-0.9 m)
+# ADA / NKBA clear floor space: 30 x 48 in (0.76 x 1.22 m) in front of a fixture; 36 in (0.91 m) walkways
+WALKWAY = 0.91
+YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # furniture stands square to the walls
+
+
+def door_in(layout, walls=("south", "east", "west", "north")) -> None:
+    """A door set into the first wall (in a drawn order) where it and its swing fit."""
+    door = layout.make("door")
+    for wall in layout.rng.permutation(list(walls)):
+        if layout.embed(door, layout.room.wall(str(wall)), rng=layout.rng) is not None:
+            return
+
+
+def window_in(layout, walls=("north", "east", "south", "west"), sill=SILL) -> None:
+    window = layout.make("window", height=round(float(layout.rng.uniform(0.9, 1.3)), 3))
+    z = float(layout.rng.uniform(*sill))
+    for wall in layout.rng.permutation(list(walls)):
+        if layout.embed(window, layout.room.wall(str(wall)), z=z, rng=layout.rng) is not None:
+            return

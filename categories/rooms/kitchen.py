@@ -1,0 +1,232 @@
+"""Kitchen: cabinet runs with a sink, a dishwasher and a range, wall units, a door and a window, things on the worktops.
+
+Six layouts (NKBA and scene_synthesizer's set): a single wall, a galley (two facing runs), an L, a U, a run with
+an island and a run with a peninsula (counter stools at the island's and the peninsula's back). Every cabinet
+of one kitchen is the same kitchen_cabinet seed (so the same fronts, worktop and handles) with its own design
+and width; the range's cooktop and the worktops are at one height; the dishwasher and a wine cooler fit under
+the worktop. Objects of categories that exist join in (a refrigerator once it is a category).
+"""
+
+from __future__ import annotations
+
+import math
+
+from infmob_usd.grammar import Grammar, Node
+from infmob_usd.params import Float
+from infmob_usd.scenes.kind import SceneKind
+from infmob_usd.scenes.layout import RoomLayout
+
+# NKBA Kitchen Planning Guidelines (2021): work aisle >= 42 in (1.07 m) for one cook, 48 in (1.22 m) for two;
+# 36 in (0.91 m) behind a seated diner where no one passes, 44 in (1.12 m) where one walks behind.
+AISLE = (1.07, 1.3)
+SEATING_CLEAR = 0.91
+# residential ceilings: 8-9 ft (2.44-2.74 m; 2.4 m the UK/EU minimum of most building codes)
+CEILING = (2.4, 2.7)
+WALL = 0.12  # m: a 100 mm stud partition with 12.5 mm plasterboard each side
+# counter stools for a 36 in counter: seat 24-26 in (0.61-0.66 m) (BIFMA / retailers' counter-height stools)
+STOOL_SEAT = (0.61, 0.66)
+DOOR_ANGLE = math.pi / 2  # cabinet hinges in a fitted run: 90-110 degrees; 90 keeps a door clear of its neighbour
+SILL = (0.95, 1.1)  # m: a kitchen window's sill above the floor, over worktop height
+
+PARAMS = (
+    Float("worktop_height", "floor to worktop top (and to the range's cooktop)", "m", 0.86, 0.92),
+    Float("aisle", "work aisle between facing runs, and in front of a run (NKBA: >= 1.07 m)", "m", *AISLE),
+    Float("ceiling", "floor to ceiling", "m", *CEILING),
+    Float("run_width", "width of a plain cabinet run (between appliances)", "m", 1.2, 1.8),
+)
+
+GRAMMAR = Grammar("kitchen", {
+    "kitchen": Node(required=("runs", "door"), optional={"window": 0.7, "wall_units": 0.85, "microwave": 0.8,
+                                                          "plate_rack": 0.4, "wine_cooler": 0.35,
+                                                          "refrigerator": 0.85},
+                    repeat={"bottle": (0, 4), "jar": (0, 3), "cookware": (1, 2)}),
+    "runs": Node(one_of={"single_wall": 0.2, "galley": 0.15, "l_shape": 0.2, "u_shape": 0.15, "island": 0.15,
+                         "peninsula": 0.15}, choice="layout"),
+    **{k: Node() for k in ("single_wall", "galley", "l_shape", "u_shape", "island", "peninsula", "door", "window",
+                           "wall_units", "microwave", "plate_rack", "wine_cooler", "refrigerator", "bottle", "jar",
+                           "cookware")},
+})
+
+
+class KitchenLayout(RoomLayout):
+    def kitchen(self, node):
+        p = self.p
+        self.cabinet_seed = self.seed()
+        self.h = p["worktop_height"]
+        self.worktops, self.runs = [], {}
+        wine = node.one("wine_cooler") is not None
+        # a full-size fridge at the end of the sink run, where the category exists
+        self.fridge = node.one("refrigerator") is not None and "refrigerator" in self.categories()
+        layout = node.one("runs").children[0].kind
+        self._built.append(node.one("runs").path)
+        self.grow(node.one("runs").children[0], wine=wine)
+        for kind in ("wine_cooler", "refrigerator"):
+            if node.one(kind) is not None:
+                self._built.append(node.one(kind).path)
+        for kind in ("wall_units", "door", "window", "microwave", "plate_rack"):
+            if node.one(kind) is not None:
+                self.grow(node.one(kind))
+        for kind in ("cookware", "bottle", "jar"):
+            for child in node.of(kind):
+                self.grow(child)
+        self.layout_name = layout
+
+    # -- units -------------------------------------------------------------------------------------------------
+    def cabinet(self, design: str, **kw):
+        return self.make("kitchen_cabinet", self.cabinet_seed, design=design, base_height=self.h,
+                         stand_style="plinth", door_angle=DOOR_ANGLE, **kw)
+
+    def base(self, width: float | None = None):
+        return self.cabinet("base_run", width=round(width or float(self.rng.uniform(1.2, self.p["run_width"])), 3))
+
+    def under_counter(self, category: str, **kw):
+        worktop = self.cabinet("base_run", width=1.2).obj.params["worktop_thickness"]
+        return self.make(category, height=round(self.h - worktop - 0.004, 4), **kw)
+
+    def sink_side(self, wine: bool) -> list:
+        units = [self.cabinet("sink_base"), self.under_counter("dishwasher", design="integrated")]
+        if wine:
+            units.append(self.under_counter("beverage_fridge"))
+        if self.fridge:
+            units.append(self.make("refrigerator"))
+        return units
+
+    def cook_side(self) -> list:
+        return [self.base(), self.make("oven", height=self.h), self.base()]
+
+    def _depth(self, modules) -> float:
+        return max(m.size[0] for m in modules) + 0.005
+
+    def _room(self, width: float, depth: float):
+        from infmob_usd.scenes.room import Room
+
+        self.room = Room(round(width, 4), round(depth, 4), self.p["ceiling"], WALL)
+
+    def _runs(self, placed):
+        for pl, _ in placed:
+            if pl.made.category == "kitchen_cabinet" or pl.made.category == "oven":
+                self.worktops.append(pl)
+        return placed
+
+    # -- layouts -----------------------------------------------------------------------------------------------
+    def single_wall(self, node, wine):
+        a = self.cook_side() + self.sink_side(wine) + [self.base()]
+        self._room(self.run_length(a) + 0.5 + float(self.rng.uniform(0, 0.8)),
+                   self._depth(a) + self.p["aisle"] + float(self.rng.uniform(0.8, 1.6)))
+        self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
+
+    def galley(self, node, wine):
+        a, b = self.cook_side(), self.sink_side(wine) + [self.base()]
+        self._room(max(self.run_length(a), self.run_length(b)) + 0.5 + float(self.rng.uniform(0.3, 1.2)),
+                   self._depth(a) + self.p["aisle"] + self._depth(b))
+        self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
+        self.runs["south"] = self._runs(self.run_along(b, self.room.wall("south"), start=0.25))
+
+    def l_shape(self, node, wine):
+        a, b = [self.base()] + self.sink_side(wine) + [self.base()], self.cook_side()
+        da = self._depth(a)
+        self._room(self.run_length(a) + 0.3 + float(self.rng.uniform(0.3, 1.0)),
+                   da + 0.05 + self.run_length(b) + 0.3 + float(self.rng.uniform(0.6, 1.4)))
+        self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
+        west = self.room.wall("west")
+        self.runs["west"] = self._runs(self.run_back(b[::-1], west, end=west.length - da - 0.05))
+
+    def u_shape(self, node, wine):
+        a, b, c = [self.base()] + self.sink_side(wine) + [self.base()], self.cook_side(), [self.base()]
+        da, db, dc = self._depth(a), self._depth(b), self._depth(c)
+        width = max(self.run_length(a) + 0.3, db + dc + self.p["aisle"] + 0.1)
+        side = max(self.run_length(b), self.run_length(c)) + 0.3
+        self._room(width, da + 0.05 + side + float(self.rng.uniform(0.5, 1.2)))
+        north = self.room.wall("north")
+        self.runs["north"] = self._runs(self.run_along(a, north, start=(width - self.run_length(a)) / 2))
+        west, east = self.room.wall("west"), self.room.wall("east")
+        self.runs["west"] = self._runs(self.run_back(b[::-1], west, end=west.length - da - 0.05))
+        self.runs["east"] = self._runs(self.run_along(c, east, start=da + 0.05))
+
+    def island(self, node, wine):
+        a, isle = self.cook_side() + self.sink_side(wine), self.base()
+        da, di = self._depth(a), isle.size[0]
+        self._room(self.run_length(a) + 0.5 + float(self.rng.uniform(0.2, 0.8)),
+                   da + self.p["aisle"] + di + SEATING_CLEAR + 0.4)
+        self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
+        x = da + self.p["aisle"] - isle.lo[0] * 0 + isle.hi[0]  # the island's front faces the run (yaw 180)
+        y = self.room.width / 2
+        got = self.at(isle, (x, y), math.pi)
+        if got is not None:
+            self.worktops.append(got)
+            self.stools(got, along=(0.0, 1.0), facing=math.pi)
+
+    def peninsula(self, node, wine):
+        a, pen = self.cook_side() + self.sink_side(wine), self.base()
+        da, dp = self._depth(a), pen.size[0]
+        self._room(self.run_length(a) + 2.0 + dp + SEATING_CLEAR, da + 0.05 + pen.size[1] + self.p["aisle"] + 0.3)
+        self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
+        end = max((pl.hi[1] for pl, _ in self.runs["north"]), default=0.0)
+        y_back = end + 0.05 + dp
+        self.room.width = round(y_back + SEATING_CLEAR + 0.5, 4)
+        # its back to the seating side (+Y), its front into the kitchen (-Y): yaw -90 degrees
+        x, y = da + 0.05 - pen.lo[1], y_back + pen.lo[0]
+        got = self.at(pen, (x, y), -math.pi / 2)
+        if got is not None:
+            self.worktops.append(got)
+            self.stools(got, along=(1.0, 0.0), facing=-math.pi / 2)
+
+    def stools(self, counter, along, facing):
+        """Counter stools along the back of ``counter``, facing it, one per 0.6 m (NKBA: 24 in per seat)."""
+        stool = self.make("bar_chair", seat_height=round(float(self.rng.uniform(*STOOL_SEAT)), 3))
+        n = int((counter.hi - counter.lo)[0 if along[0] else 1] // 0.6)
+        back = counter.pose[:3, :3] @ [-1.0, 0.0, 0.0]  # the counter's back direction
+        centre = (counter.lo + counter.hi) / 2
+        reach = (counter.hi - counter.lo)[1 if along[0] else 0] / 2 + stool.size[0] / 2 + 0.05
+        for k in range(n):
+            off = (k + 0.5 - n / 2) * 0.6
+            xy = centre[:2] + back[:2] * reach + [along[0] * off, along[1] * off]
+            self.at(stool, xy, facing, )
+
+    # -- everything else -----------------------------------------------------------------------------------------
+    def wall_units(self, node):
+        gap = self.cabinet("base_run", width=1.2).obj.params["wall_gap"]
+        for wall, run in self.runs.items():
+            for placed, s in run:
+                if placed.made.category == "kitchen_cabinet" and placed.made.size[1] >= 1.25:
+                    unit = self.cabinet("wall_run", width=round(float(placed.made.size[1]) - 0.05, 3))
+                    self.against(unit, self.room.wall(wall), s + 0.025, z=float(placed.hi[2]) + gap)
+
+    def door(self, node):
+        for wall in ("south", "east", "west", "north"):
+            if self.embed(self.make("door"), self.room.wall(wall), rng=self.rng) is not None:
+                return
+
+    def window(self, node):
+        window = self.make("window", height=round(float(self.rng.uniform(0.9, 1.2)), 3))
+        z = float(self.rng.uniform(*SILL))
+        for wall in self.rng.permutation(["east", "south", "west", "north"]):
+            if self.embed(window, self.room.wall(str(wall)), z=z, rng=self.rng) is not None:
+                return
+
+    def _on_worktop(self, made, fixed: bool = False):
+        return self.scatter(made, [w for w in self.worktops if w.made.category == "kitchen_cabinet"], self.rng,
+                            prefer=lambda g: -g.z, fixed=fixed)
+
+    def microwave(self, node):
+        self._on_worktop(self.make("microwave"))
+
+    def plate_rack(self, node):
+        # fixed where it stands: its plates lean in their slots held by joint friction, which PhysX's
+        # coefficient model gives only a fixed base (on a free rack they tip 1.4 degrees at rest)
+        self._on_worktop(self.make("plate_rack"), fixed=True)
+
+    def bottle(self, node):
+        self._on_worktop(self.make("bottle"))
+
+    def jar(self, node):
+        self._on_worktop(self.make("jar"))
+
+    def cookware(self, node):
+        ranges = [w for w in self.worktops if w.made.category == "oven"]
+        made = self.make(str(self.rng.choice(["pot", "pan"])))
+        if ranges:
+            self.scatter(made, ranges, self.rng, prefer=lambda g: -g.z)
+
+
+KIND = SceneKind("kitchen", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, KitchenLayout)

@@ -1,0 +1,347 @@
+"""The scene engine: a scene kind's grown tree is built by its layout, which makes objects and places them.
+
+A :class:`SceneLayout` subclass (one per scene kind, in ``categories/rooms/``) has one method per node kind
+of its grammar, as an object's layout does. It makes objects with :meth:`SceneLayout.make` (each a real
+generated object, measured once: its bounds at rest, the box each of its joints sweeps open, its support
+regions) and places them with :meth:`~SceneLayout.against` (back to a wall, front into the room),
+:meth:`~SceneLayout.at` (anywhere on the floor), :meth:`~SceneLayout.hang` (on a wall, above the floor) and
+:meth:`~SceneLayout.set_on` (on a support region of a placed object). Every placement is checked against
+what is already placed (rest boxes do not overlap; each joint's open box stays inside the room and clear of
+the others' rest boxes), so a layout tries alternatives and keeps what fits: what does not fit is dropped,
+never forced.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..grammar import Grown
+from ..supports import Region, support_regions
+from .room import Opening, Room, Wall, boxes_overlap, moved_box, pose_matrix
+
+WALL_GAP = 0.005  # m between an object's back and the wall (out of plumb walls: installers leave 3-10 mm)
+RUN_GAP = 0.003  # m between neighbours in a run (cabinet fitters' 2-3 mm joint)
+SET_DOWN = 0.0001  # m: an item is set this far above its support (a drop from higher makes its loose parts rattle)
+
+
+@dataclass
+class Made:
+    """One distinct generated object and what placement needs of it (object frame at rest)."""
+
+    key: str  # folder under objects/: unique per (category, seed, overrides)
+    category: str
+    seed: int
+    overrides: dict[str, Any]
+    obj: Any  # ArticulatedObject
+    lo: np.ndarray
+    hi: np.ndarray
+    swept: list[tuple[str, np.ndarray, np.ndarray]]  # (joint group, lo, hi): the whole object, that group open
+    regions: list[Region]
+
+    @property
+    def size(self) -> np.ndarray:
+        return self.hi - self.lo
+
+
+@dataclass
+class Placed:
+    id: str
+    made: Made
+    pose: np.ndarray  # (4, 4) object frame in the room frame
+    fixed: bool  # the root is fixed (furniture, hung units) or free (items set down)
+    on: str  # "floor", "wall:<name>", "<placed id>:<link>"
+    lo: np.ndarray = field(default=None)  # room-frame AABB at rest
+    hi: np.ndarray = field(default=None)
+    wall: str | None = None  # the wall its back is to (placed by ``against``)
+
+    def __post_init__(self) -> None:
+        self.lo, self.hi = moved_box(self.made.lo, self.made.hi, self.pose)
+
+    def swept_boxes(self) -> list[tuple[str, np.ndarray, np.ndarray]]:
+        return [(g, *moved_box(lo, hi, self.pose)) for g, lo, hi in self.made.swept]
+
+    def region_in_room(self, region: Region) -> tuple[np.ndarray, np.ndarray]:
+        lo, hi = moved_box((*region.lo, region.z), (*region.hi, region.z), self.pose)
+        return lo, hi
+
+
+def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
+    lo, hi = obj.bounds()
+    local = {link.name: (np.array([p.bounds[0] for p in link.pieces]).min(0),
+                         np.array([p.bounds[1] for p in link.pieces]).max(0)) for link in obj.links if link.pieces}
+    groups: dict[str, dict[str, float]] = {}
+    for j in obj.movable_joints:
+        if math.isfinite(j.upper) and j.type != "continuous":
+            groups.setdefault(j.group, {})[j.name] = j.upper
+    swept = []
+    for group, q in sorted(groups.items()):
+        poses = obj.poses(q)
+        pts = np.vstack([moved_box(a, b, poses[name])[0:2] for name, (a, b) in local.items()])
+        swept.append((group, pts.min(0), pts.max(0)))
+    return lo, hi, swept
+
+
+class SceneLayout:
+    """Base of a scene kind's layout: object making and placing; the kind adds one method per node kind."""
+
+    def __init__(self, kind: str, params: dict, rng: np.random.Generator, objects_rng: np.random.Generator,
+                 texture_size: int, generate, categories: tuple[str, ...] = ()) -> None:
+        """``generate``: ``(category, seed, texture_size=..., **overrides) -> ArticulatedObject`` (the API's);
+        ``categories``: the category ids that exist."""
+        self.kind, self.p, self.rng, self.objects_rng = kind, params, rng, objects_rng
+        self.texture_size, self._generate, self._categories = texture_size, generate, tuple(categories)
+        self.room: Room | None = None
+        self.placed: list[Placed] = []
+        self._made: dict[tuple, Made] = {}
+        self._keys: set[str] = set()
+        self._built: list[str] = []
+
+    # -- the tree ---------------------------------------------------------------------------------------------
+    def run(self, tree: Grown) -> None:
+        self.grow(tree)
+
+    def grow(self, node: Grown, **slot: Any) -> Any:
+        self._built.append(node.path)
+        return getattr(self, node.kind)(node, **slot)
+
+    # -- objects ----------------------------------------------------------------------------------------------
+    def categories(self) -> tuple[str, ...]:
+        """The category ids that exist (a kind uses a category only once it does)."""
+        return self._categories
+
+    def seed(self) -> int:
+        """A fresh object seed from the scene's objects stream (what :meth:`make` uses by default)."""
+        return int(self.objects_rng.integers(0, 10**9))
+
+    def make(self, category: str, seed: int | None = None, **overrides: Any) -> Made:
+        """Generate (once) the object ``category`` / ``seed`` / ``overrides`` and measure it. Objects that
+        must match (the cabinets of one kitchen) share a seed: the seed draws materials, so their
+        fronts and worktops are the same; their overrides make them different units."""
+        seed = self.seed() if seed is None else int(seed)
+        key = (category, seed, tuple(sorted(overrides.items())))
+        if key not in self._made:
+            obj = self._generate(category, seed, texture_size=self.texture_size, **overrides)
+            name, n = obj.name, 1
+            while name in self._keys:
+                n += 1
+                name = f"{obj.name}_v{n}"
+            self._keys.add(name)
+            lo, hi, swept = _measure(obj)
+            self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, support_regions(obj))
+        return self._made[key]
+
+    # -- placing ----------------------------------------------------------------------------------------------
+    def _id(self, made: Made) -> str:
+        n = sum(1 for p in self.placed if p.made.category == made.category)
+        return f"{made.category}_{n}"
+
+    def fits(self, cand: Placed, ignore: tuple[str, ...] = ()) -> bool:
+        """Whether ``cand`` can stand where it is: inside the room, its rest box clear of every placed
+        object's (but the ones it stands on), every joint's open box inside the room and clear of the
+        others' rest boxes, and theirs clear of its rest box."""
+        r, tol = self.room, 1e-3
+        if r is not None and (np.any(cand.lo[:2] < -tol) or cand.hi[0] > r.depth + tol or cand.hi[1] > r.width + tol
+                              or cand.hi[2] > r.height + tol):
+            return False
+        for other in self.placed:
+            if other.id in ignore:
+                continue
+            if boxes_overlap(cand.lo, cand.hi, other.lo, other.hi):
+                return False
+        return self._swing_clear(cand, ignore)
+
+    def _swing_clear(self, cand: Placed, ignore: tuple[str, ...], room: bool = True) -> bool:
+        r = self.room if room else None
+        for _, lo, hi in cand.swept_boxes():
+            if r is not None and (np.any(lo[:2] < -1e-3) or hi[0] > r.depth + 1e-3 or hi[1] > r.width + 1e-3):
+                return False
+            if any(boxes_overlap(lo, hi, o.lo, o.hi) for o in self.placed if o.id not in ignore):
+                return False
+        for other in self.placed:
+            if other.id in ignore or other.on.startswith(cand.id + ":"):
+                continue
+            for _, lo, hi in other.swept_boxes():
+                if boxes_overlap(lo, hi, cand.lo, cand.hi):
+                    return False
+        return True
+
+    def keep(self, cand: Placed, ignore: tuple[str, ...] = ()) -> Placed | None:
+        """Place ``cand`` if it :meth:`fits`; ``None`` (nothing placed) if it does not."""
+        if not self.fits(cand, ignore):
+            return None
+        self.placed.append(cand)
+        return cand
+
+    def against(self, made: Made, wall: Wall, s: float, z: float = 0.0, fixed: bool = True,
+                gap: float = WALL_GAP, check: bool = True, turn: float = 0.0) -> Placed | None:
+        """``made`` with its back to ``wall`` (``gap`` off it), its own Y from ``s`` along the wall, ``z`` up.
+        ``turn``: an extra yaw (a multiple of 90 degrees) before it is set against the wall (a desk or a
+        table stands with its long side to the wall: ``turn`` 90 degrees puts its side there)."""
+        lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))
+        position = wall.origin + wall.inward * (gap - lo[0]) + wall.along * (s - lo[1])
+        position = position + np.array([0.0, 0.0, z - lo[2]])
+        cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw + turn), fixed,
+                      "floor" if z <= 0 else f"wall:{wall.name}", wall=wall.name)
+        return self.keep(cand) if check else cand
+
+    def at(self, made: Made, xy, yaw: float, fixed: bool = True) -> Placed | None:
+        """``made`` standing on the floor with its frame's origin over ``xy`` (room frame), turned ``yaw``."""
+        cand = Placed(self._id(made), made, pose_matrix((xy[0], xy[1], -made.lo[2]), yaw), fixed, "floor")
+        return self.keep(cand)
+
+    def set_on(self, made: Made, host: Placed, rng: np.random.Generator, tries: int = 12,
+               prefer=None, fixed: bool = False, yaw: float | None = None) -> Placed | None:
+        """``made`` set down (free) on a support region of ``host`` where it fits: the region big enough
+        for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits.
+        ``yaw``: which way its front faces (default: as the host's); a multiple of 90 degrees from the host's."""
+        host_yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
+        turn = 0.0 if yaw is None else yaw - host_yaw
+        lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))  # its box in the host's axes
+        size = hi - lo
+        regions = [g for g in host.made.regions if (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
+                   and (g.clear is None or g.clear > size[2] + 0.01)]
+        if prefer is not None:
+            regions = sorted(regions, key=prefer)
+        for region in regions[:3]:
+            for _ in range(tries):
+                u = rng.uniform(0, 1, 2)
+                lx = region.lo[0] - lo[0] + u[0] * (region.hi[0] - region.lo[0] - size[0])
+                ly = region.lo[1] - lo[1] + u[1] * (region.hi[1] - region.lo[1] - size[1])
+                local = np.array([lx, ly, region.z - lo[2] + SET_DOWN])
+                position = host.pose[:3, :3] @ local + host.pose[:3, 3]
+                cand = Placed(self._id(made), made, pose_matrix(position, host_yaw + turn), fixed,
+                              f"{host.id}:{region.link}")
+                if self.keep(cand, ignore=(host.id,)) is not None:
+                    return cand
+        return None
+
+
+class RoomLayout(SceneLayout):
+    """Helpers every room kind uses: runs of units along walls, openings filled by doors and windows, items
+    set down on what is placed, each trying alternatives and keeping what fits."""
+
+    FILLERS = (0.0, 0.025, 0.05, 0.075, 0.1)  # m: filler strips a fitter adds so a door clears its neighbour
+
+    def run_along(self, modules: list[Made], wall: Wall, start: float = 0.0, end: float | None = None,
+                  z: float = 0.0) -> list[tuple[Placed, float]]:
+        """Place ``modules`` side by side along ``wall`` from ``start`` (each after the last, with a filler
+        where a door would hit its neighbour); a module that fits nowhere before ``end`` is left out.
+        Returns ``(placed, s)`` of each placed module (``s`` along the wall)."""
+        end = wall.length if end is None else end
+        out, s = [], start
+        for made in modules:
+            shifts = [*self.FILLERS, *np.arange(0.15, 0.61, 0.05)]  # a filler, else a gap up to 0.6 m
+            for filler in shifts:
+                if s + filler + made.size[1] > end + 1e-9:
+                    break
+                got = self.against(made, wall, s + filler, z=z)
+                if got is not None:
+                    out.append((got, s + filler))
+                    s += filler + made.size[1] + RUN_GAP
+                    break
+        return out
+
+    def run_back(self, modules: list[Made], wall: Wall, end: float, start: float = 0.0,
+                 z: float = 0.0) -> list[tuple[Placed, float]]:
+        """As :meth:`run_along`, but from ``end`` back towards ``start`` (a run that grows out of a corner:
+        its first module stands at the corner)."""
+        out, e = [], end
+        for made in modules:
+            for filler in [*self.FILLERS, *np.arange(0.15, 0.61, 0.05)]:
+                s = e - filler - made.size[1]
+                if s < start - 1e-9:
+                    break
+                got = self.against(made, wall, s, z=z)
+                if got is not None:
+                    out.append((got, s))
+                    e = s - RUN_GAP
+                    break
+        return out
+
+    @staticmethod
+    def run_length(modules: list[Made]) -> float:
+        return sum(m.size[1] for m in modules) + RUN_GAP * max(len(modules) - 1, 0)
+
+    def embed(self, made: Made, wall: Wall, z: float = 0.0, rng: np.random.Generator | None = None,
+              margin: float = 0.1) -> Placed | None:
+        """``made`` (a door, a window) set into ``wall`` at a free spot, ``z`` above the floor (lowered if its
+        head would come within 0.1 m of the ceiling); the wall gets an opening its size. ``None`` if the
+        wall has no spot where its swing clears everything placed.
+
+        A wall-set object is built round its own ``x = 0`` plane: the pieces that cross it (the frame, a
+        leaf in it) give the opening, centred in the wall's thickness; a part reaching past the opening
+        (a curtain rail, a barn door's leaf, a sill) stands in front of the wall, moving the object into
+        the room as far as that needs."""
+        boxes = [(p.bounds[0] + link.origin, p.bounds[1] + link.origin) for link in made.obj.links for p in link.pieces]
+        crossing = [(lo, hi) for lo, hi in boxes if lo[0] <= 1e-3 and hi[0] >= -1e-3]
+        if not crossing:
+            return None
+        o_lo, o_hi = np.min([b[0] for b in crossing], 0), np.max([b[1] for b in crossing], 0)
+        depth = -self.room.wall_thickness / 2
+        for lo, hi in boxes:
+            if (np.any(lo[1:] < o_lo[1:] - 1e-3) or np.any(hi[1:] > o_hi[1:] + 1e-3)) and (lo[0] + hi[0]) > 0:
+                depth = max(depth, 0.001 - float(lo[0]))
+        z = min(z, self.room.height - 0.1 - float(o_hi[2] - made.lo[2]))
+        if z < 0:
+            return None
+        spots = np.arange(margin, wall.length - made.size[1] - margin, 0.05)
+        if rng is not None:
+            spots = rng.permutation(spots)
+        lift = np.array([0.0, 0.0, z - made.lo[2]])
+        for s in spots:
+            position = wall.origin + wall.inward * depth + wall.along * (s - made.lo[1]) + lift
+            cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), True, f"wall:{wall.name}",
+                          wall=wall.name)
+            if any(boxes_overlap(cand.lo, cand.hi, o.lo, o.hi) for o in self.placed) \
+                    or not self._swing_clear(cand, (), room=False):
+                continue
+            self.placed.append(cand)
+            s0, z0 = float(s - made.lo[1]), float(z - made.lo[2])
+            self.room.openings.append(Opening(wall.name, s0 + float(o_lo[1]), s0 + float(o_hi[1]),
+                                              z0 + float(o_lo[2]), z0 + float(o_hi[2]), cand.id))
+            return cand
+        return None
+
+    def scatter(self, made: Made, hosts: list[Placed], rng: np.random.Generator, prefer=None,
+                fixed: bool = False) -> Placed | None:
+        """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it."""
+        for k in rng.permutation(len(hosts)):
+            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer, fixed=fixed)
+            if got is not None:
+                return got
+        return None
+
+    def on_wall(self, made: Made, walls, rng: np.random.Generator, z: float = 0.0, step: float = 0.1,
+                fixed: bool = True, turn: float = 0.0) -> Placed | None:
+        """``made`` with its back to the first of ``walls`` that has a free spot for it (spots drawn);
+        ``turn`` as in :meth:`against`."""
+        width = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))[1][1] - \
+            moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))[0][1]
+        for gap in (WALL_GAP, 0.05, 0.1):  # furniture may stand a little off the wall (a skirting, a lid's swing)
+            for name in walls:
+                wall = self.room.wall(name)
+                for s in rng.permutation(np.arange(0.05, wall.length - width - 0.05, step)):
+                    got = self.against(made, wall, float(s), z=z, fixed=fixed, turn=turn, gap=gap)
+                    if got is not None:
+                        return got
+        return None
+
+    def on_floor(self, made: Made, rng: np.random.Generator, yaws=(0.0,), tries: int = 40, margin: float = 0.3,
+                 fixed: bool = True) -> Placed | None:
+        """``made`` standing free of the walls (``margin`` off them) at a drawn spot and turn."""
+        r = self.room
+        for _ in range(tries):
+            yaw = float(yaws[int(rng.integers(len(yaws)))])
+            xy = rng.uniform([margin, margin], [r.depth - margin, r.width - margin])
+            got = self.at(made, xy, yaw, fixed=fixed)
+            if got is not None:
+                return got
+        return None
+
+    def room_of(self, width: float, depth: float, height: float, wall: float) -> Room:
+        self.room = Room(round(width, 4), round(depth, 4), round(height, 4), wall)
+        return self.room

@@ -1,0 +1,170 @@
+"""Writing a scene: every distinct object once under ``objects/``, and three views of the room.
+
+* ``scene.usda``: the root layer. ``/Scene/physicsScene`` (the one ``PhysicsScene``), ``/Scene/Room`` (floor,
+  ceiling and walls as static box colliders, split around the openings doors and windows fill) and
+  ``/Scene/Objects/<id>``: each placed object an ``Xform`` that references its own object stage
+  (``objects/<key>/<name>/<name>.usda``) with its pose; an object standing free (an item set down) has its
+  fixed ``root_joint`` disabled, so it rests on what carries it. An object placed twice is written once and
+  referenced twice (the same layers: USD loads them once).
+* ``scene.json``: the room, and per object its folder, category, seed, overrides, pose, fixed or free,
+  what it stands on (the ``on`` field: ``floor``, ``wall:<name>`` or ``<id>:<link>``) and its support regions
+  (:mod:`infmob_usd.supports`, the object's frame at rest).
+* ``scene.xml``: MuJoCo, one model attaching every object's MJCF (``<attach>``, prefix ``<id>/``), the room
+  as static boxes; a free object's root is a free joint.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from . import check_output_dir, write_object
+
+SCENE_FILES = ("scene.usda", "scene.json", "scene.xml")
+
+
+def _r(x, n: int = 6):
+    return [round(float(v), n) + 0.0 for v in np.ravel(x)]
+
+
+def scene_record(s, folders: dict[str, str]) -> dict:
+    """What ``scene.json`` holds (``folders``: object key -> folder relative to the scene folder)."""
+    from infmob_usd._version import __version__
+
+    room = s.room
+    objects = []
+    for p in s.placed:
+        yaw = math.degrees(math.atan2(p.pose[1, 0], p.pose[0, 0]))
+        objects.append({"id": p.id, "folder": folders[p.made.key], "name": p.made.obj.name,
+                        "category": p.made.category, "seed": p.made.seed,
+                        "overrides": {k: v for k, v in sorted(p.made.overrides.items())},
+                        "position": _r(p.pose[:3, 3]), "yaw": round(yaw, 6) + 0.0, "fixed": p.fixed, "on": p.on,
+                        "wall": p.wall,
+                        "bounds": [_r(p.lo), _r(p.hi)],
+                        "supports": [g.as_dict() for g in p.made.regions]})
+    return {"name": s.name, "kind": s.kind, "seed": s.seed, "version": __version__, "texture_size": s.texture_size,
+            "parameters": {k: (round(v, 9) if isinstance(v, float) else v) for k, v in s.params.items()},
+            "overrides": s.overrides,
+            "room": {"width": room.width, "depth": room.depth, "height": room.height,
+                     "wall_thickness": room.wall_thickness,
+                     "openings": [{"wall": o.wall, "start": round(o.start, 6), "end": round(o.end, 6),
+                                   "bottom": round(o.bottom, 6), "top": round(o.top, 6), "filled_by": o.what}
+                                  for o in room.openings],
+                     "boxes": [{"name": n, "min": _r(lo), "max": _r(hi)} for n, lo, hi in room.wall_boxes()]},
+            "objects": objects}
+
+
+def _root_joint_paths(usda: Path) -> list[str]:
+    """Paths (below the default prim) of the fixed joints that tie an object's root to the world."""
+    from pxr import Usd, UsdPhysics
+
+    stage = Usd.Stage.Open(str(usda))
+    root = stage.GetDefaultPrim().GetPath()
+    out = []
+    for prim in stage.Traverse():
+        if prim.IsA(UsdPhysics.FixedJoint) and not UsdPhysics.Joint(prim).GetBody0Rel().GetTargets():
+            out.append(str(prim.GetPath().MakeRelativePath(root)))
+    return sorted(out)
+
+
+def write_usd(s, rec: dict, folder: Path) -> None:
+    from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics
+
+    stage = Usd.Stage.CreateNew(str(folder / "scene.usda"))
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
+    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+    UsdPhysics.SetStageKilogramsPerUnit(stage, 1.0)
+    top = UsdGeom.Xform.Define(stage, "/Scene")
+    stage.SetDefaultPrim(top.GetPrim())
+    physics = UsdPhysics.Scene.Define(stage, "/Scene/physicsScene")
+    physics.CreateGravityDirectionAttr(Gf.Vec3f(0, 0, -1))
+    physics.CreateGravityMagnitudeAttr(9.81)
+    UsdGeom.Scope.Define(stage, "/Scene/Room")
+    for box in rec["room"]["boxes"]:
+        lo, hi = np.array(box["min"]), np.array(box["max"])
+        cube = UsdGeom.Cube.Define(stage, f"/Scene/Room/{box['name']}")
+        cube.CreateSizeAttr(1.0)
+        cube.AddTranslateOp().Set(Gf.Vec3d(*_r((lo + hi) / 2)))
+        cube.AddScaleOp().Set(Gf.Vec3f(*_r(hi - lo)))
+        cube.CreateDisplayColorAttr([Gf.Vec3f(0.85, 0.84, 0.8)])
+        UsdPhysics.CollisionAPI.Apply(cube.GetPrim())
+    UsdGeom.Scope.Define(stage, "/Scene/Objects")
+    free_joints: dict[str, list[str]] = {}
+    for o in rec["objects"]:
+        xf = UsdGeom.Xform.Define(stage, f"/Scene/Objects/{o['id']}")
+        usda = f"./{o['folder']}/{o['name']}.usda"
+        xf.GetPrim().GetReferences().AddReference(usda)
+        xf.AddTranslateOp().Set(Gf.Vec3d(*o["position"]))
+        xf.AddRotateZOp().Set(float(o["yaw"]))
+        if not o["fixed"]:
+            if o["folder"] not in free_joints:
+                free_joints[o["folder"]] = _root_joint_paths(folder / o["folder"] / f"{o['name']}.usda")
+            for rel in free_joints[o["folder"]]:
+                over = stage.OverridePrim(xf.GetPath().AppendPath(Sdf.Path(rel)))
+                over.CreateAttribute("physics:jointEnabled", Sdf.ValueTypeNames.Bool).Set(False)
+    stage.GetRootLayer().Save()
+
+
+def write_mjcf(rec: dict, folder: Path) -> None:
+    lines = [f'<mujoco model="{rec["name"]}">', '  <compiler angle="radian" autolimits="true"/>',
+             '  <option timestep="0.002"/>', "  <asset>"]
+    models = {}
+    for o in rec["objects"]:
+        if o["folder"] not in models:
+            models[o["folder"]] = f"m{len(models)}"
+            lines.append(f'    <model name="{models[o["folder"]]}" file="{o["folder"]}/{o["name"]}.xml"/>')
+    lines += ["  </asset>", "  <worldbody>", '    <light pos="0 0 3" dir="0 0 -1" directional="true"/>']
+    for box in rec["room"]["boxes"]:
+        lo, hi = np.array(box["min"]), np.array(box["max"])
+        c, h = _r((lo + hi) / 2), _r((hi - lo) / 2)
+        lines.append(f'    <geom name="room/{box["name"]}" type="box" pos="{" ".join(map(str, c))}"'
+                     f' size="{" ".join(map(str, h))}" rgba="0.85 0.84 0.8 1"/>')
+    for o in rec["objects"]:
+        pos, yaw = " ".join(map(str, o["position"])), round(math.radians(o["yaw"]), 9)
+        attach = f'<attach model="{models[o["folder"]]}" prefix="{o["id"]}/"/>'
+        if o["fixed"]:
+            lines.append(f'    <frame name="{o["id"]}" pos="{pos}" euler="0 0 {yaw}">{attach}</frame>')
+        else:
+            lines.append(f'    <body name="{o["id"]}" pos="{pos}" euler="0 0 {yaw}"><freejoint name="{o["id"]}/free"/>'
+                         f'{attach}</body>')
+    lines += ["  </worldbody>", "</mujoco>", ""]
+    (folder / "scene.xml").write_text("\n".join(lines))
+
+
+def write_scene(s, out) -> Path:
+    """Write scene ``s`` into ``out/<name>/`` (atomically: built in a temporary folder beside it, then renamed)."""
+    from infmob_usd.runs import new_run_id, temp_prefix
+
+    out = check_output_dir(Path(out))
+    final = out / s.name
+    tmp = Path(tempfile.mkdtemp(prefix=temp_prefix(s.name, new_run_id()), suffix=".tmp", dir=out))
+    try:
+        folders = {}
+        for made in s.objects:
+            where = tmp / "objects" / made.key
+            where.mkdir(parents=True)
+            write_object(made.obj, where, None)
+            folders[made.key] = f"objects/{made.key}/{made.obj.name}"
+        rec = scene_record(s, folders)
+        (tmp / "scene.json").write_text(json.dumps(rec, indent=1, sort_keys=False) + "\n")
+        write_usd(s, rec, tmp)
+        write_mjcf(rec, tmp)
+        os.chmod(tmp, 0o755)
+        check_output_dir(out)
+        if final.exists():
+            old = Path(tempfile.mkdtemp(prefix=temp_prefix(s.name, new_run_id()), suffix=".old", dir=out))
+            os.replace(final, old / "x")
+            os.replace(tmp, final)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            os.replace(tmp, final)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return final

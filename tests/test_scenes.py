@@ -1,0 +1,186 @@
+"""Scenes: rooms of generated objects (``infmob scene``), their files, and the scene checks."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import infmob_usd
+from infmob_usd.scenes import get_kind, kinds, save_scene, scene
+from infmob_usd.scenes.room import boxes_overlap
+from infmob_usd.supports import support_regions
+
+KITCHEN_LAYOUTS = ("single_wall", "galley", "l_shape", "u_shape", "island", "peninsula")
+
+
+def _inside(s) -> list[str]:
+    """Objects standing outside the room (walls excepted: doors and windows sit in them)."""
+    r, out = s.room, []
+    for p in s.placed:
+        if p.on.startswith("wall:") and p.made.category in ("door", "window"):
+            continue
+        if np.any(p.lo[:2] < -1e-3) or p.hi[0] > r.depth + 1e-3 or p.hi[1] > r.width + 1e-3 or p.hi[2] > r.height:
+            out.append(p.id)
+    return out
+
+
+def _overlapping(s) -> list[tuple[str, str]]:
+    """Pairs of objects whose rest boxes overlap, but an item and what it stands on."""
+    out = []
+    for i, a in enumerate(s.placed):
+        for b in s.placed[i + 1:]:
+            if a.on.startswith(b.id + ":") or b.on.startswith(a.id + ":"):
+                continue
+            if boxes_overlap(a.lo, a.hi, b.lo, b.hi):
+                out.append((a.id, b.id))
+    return out
+
+
+@pytest.mark.parametrize("layout", KITCHEN_LAYOUTS)
+def test_each_kitchen_layout_has_its_units_in_the_room(layout):
+    s = scene("kitchen", 3, texture_size=16, layout=layout)
+    cats = [p.made.category for p in s.placed]
+    assert s.params["layout"] == layout
+    for needed in ("kitchen_cabinet", "oven", "dishwasher", "door"):
+        assert needed in cats, (layout, cats)
+    assert any(p.made.overrides.get("design") == "sink_base" for p in s.placed), layout
+    assert not _inside(s), _inside(s)
+    assert not _overlapping(s), _overlapping(s)
+    # one kitchen, one set of cabinets: every cabinet is the same seed (the same fronts and worktop)
+    assert len({p.made.seed for p in s.placed if p.made.category == "kitchen_cabinet"}) == 1
+    # the range's cooktop and the worktops at one height
+    tops = {round(float(p.made.obj.params["base_height"]), 6) for p in s.placed if p.made.category == "kitchen_cabinet"
+            and p.made.overrides.get("design") != "wall_run"}
+    assert tops == {round(s.params["worktop_height"], 6)} or tops == {round(s.params["worktop_height"], 3)}
+
+
+def test_facing_runs_keep_the_work_aisle():
+    s = scene("kitchen", 5, texture_size=16, layout="galley")
+    north = [p for p in s.placed if p.wall == "north" and p.on == "floor"]
+    south = [p for p in s.placed if p.wall == "south" and p.on == "floor"]
+    assert north and south
+    aisle = min(p.lo[0] for p in south) - max(p.hi[0] for p in north)
+    assert aisle >= 1.07 - 1e-6, aisle  # NKBA's one-cook work aisle
+
+
+@pytest.mark.parametrize("kind", ["dining_room", "office", "bathroom"])
+def test_other_rooms_place_their_furniture(kind):
+    need = {"dining_room": "dining_table", "office": "office_chair", "bathroom": "toilet"}[kind]
+    for seed in range(3):
+        s = scene(kind, seed, texture_size=16)
+        assert need in [p.made.category for p in s.placed], (kind, seed)
+        assert not _inside(s) and not _overlapping(s), (kind, seed, _inside(s), _overlapping(s))
+
+
+def test_items_stand_on_a_support_region_of_their_host():
+    s = scene("kitchen", 1, texture_size=16)
+    items = [p for p in s.placed if not p.fixed]
+    assert items
+    by_id = {p.id: p for p in s.placed}
+    for item in items:
+        host_id, link = item.on.split(":")
+        host = by_id[host_id]
+        tops = [host.region_in_room(g)[0][2] for g in host.made.regions if g.link == link]
+        assert any(abs(item.lo[2] - z) < 1e-3 for z in tops), (item.id, item.lo[2], tops)
+
+
+def _digests(folder: Path) -> dict[str, str]:
+    return {str(p.relative_to(folder)): hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in sorted(folder.rglob("*")) if p.is_file() and ".thumbs" not in p.parts}
+
+
+def test_same_kind_seed_and_overrides_give_the_same_files(tmp_path):
+    a = save_scene(scene("bathroom", 4, texture_size=16), tmp_path / "a")
+    b = save_scene(scene("bathroom", 4, texture_size=16), tmp_path / "b")
+    assert _digests(a) == _digests(b)
+    assert _digests(a) != _digests(save_scene(scene("bathroom", 5, texture_size=16), tmp_path / "c"))
+
+
+def test_scene_files_reference_each_object_once(tmp_path):
+    from pxr import Usd, UsdPhysics
+
+    folder = save_scene(scene("kitchen", 2, texture_size=16), tmp_path)
+    rec = json.loads((folder / "scene.json").read_text())
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    assert len([p for p in stage.Traverse() if p.IsA(UsdPhysics.Scene)]) == 1
+    roots = [p for p in stage.Traverse() if p.HasAPI(UsdPhysics.ArticulationRootAPI)]
+    assert len(roots) == len(rec["objects"])
+    written = sorted(p.parent.name for p in (folder / "objects").glob("*/*/metadata.json"))
+    assert len(written) == len({o["folder"] for o in rec["objects"]})
+    # a free item's tie to the world is switched off in the scene; a fixed unit's is not
+    for o in rec["objects"]:
+        prim = stage.GetPrimAtPath(f"/Scene/Objects/{o['id']}")
+        joints = [p for p in Usd.PrimRange(prim) if p.IsA(UsdPhysics.FixedJoint)
+                  and not UsdPhysics.Joint(p).GetBody0Rel().GetTargets()]
+        assert joints, o["id"]
+        enabled = [UsdPhysics.Joint(j).GetJointEnabledAttr().Get() for j in joints]
+        assert all(enabled) == o["fixed"], (o["id"], enabled)
+
+
+def test_a_bathroom_loads_rests_and_every_joint_opens_in_the_room(tmp_path):
+    from infmob_usd.validate.scene import check_scene
+
+    folder = save_scene(scene("bathroom", 1, texture_size=16), tmp_path)
+    results = check_scene(folder, reach=True)
+    assert [r.name for r in results] == ["scene_load", "scene_overlap", "scene_rest", "scene_reach"]
+    assert all(r.ok for r in results), [(r.name, r.detail) for r in results if not r.ok]
+
+
+def test_the_overlap_check_finds_a_unit_pushed_into_the_wall(tmp_path):
+    """Move a kitchen unit so its back is in the wall: the overlap check names it and the room."""
+    folder = save_scene(scene("kitchen", 2, texture_size=16, layout="single_wall"), tmp_path)
+    rec = json.loads((folder / "scene.json").read_text())
+    unit = next(o for o in rec["objects"] if o["category"] == "kitchen_cabinet")
+    unit["position"][0] -= 0.05  # 5 cm into the north wall
+    from infmob_usd.validate.scene import _overlaps, load_sapien_scene
+
+    sim, contexts = load_sapien_scene(folder, rec)
+    found = _overlaps(sim, contexts)
+    assert any(unit["id"] in f and "room" in f for f in found), found
+
+
+def test_support_regions_find_worktops_and_shelves():
+    cab = infmob_usd.generate("kitchen_cabinet", 5, texture_size=16, design="base_run", base_height=0.9)
+    regions = support_regions(cab)
+    assert abs(regions[0].z - 0.9) < 0.005 and regions[0].clear is None  # the worktop, open above
+    rack = infmob_usd.generate("storage_rack", 3, texture_size=16, design="shelving", shelf_levels=5)
+    shelves = {round(g.z, 3) for g in support_regions(rack) if g.clear is not None}
+    assert len(shelves) >= 3, shelves
+
+
+def test_every_kind_documents_its_parameters():
+    for name, kind in kinds().items():
+        assert kind.schema.names, name
+        assert get_kind(name) is kind
+
+
+def test_cli_scene_writes_a_scene_and_refuses_a_bad_parameter(tmp_path):
+    run = [sys.executable, "-m", "infmob_usd", "scene", "bathroom", "--seed", "2", "--texture-size", "16",
+           "--out", str(tmp_path)]
+    ok = subprocess.run(run, capture_output=True, text=True, timeout=600)
+    assert ok.returncode == 0, ok.stderr
+    assert (tmp_path / "bathroom_000002" / "scene.usda").is_file()
+    bad = subprocess.run(run + ["--set", "width=9"], capture_output=True, text=True, timeout=120)
+    assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1, bad.stderr
+    assert "width" in bad.stderr
+    unknown = subprocess.run([sys.executable, "-m", "infmob_usd", "scene", "garage"], capture_output=True, text=True)
+    assert unknown.returncode == 2 and "kitchen" in unknown.stderr, unknown.stderr
+
+
+def test_the_recipes_of_docs_scenes_run(tmp_path):
+    """docs/scenes.md's three loading recipes (USD, SAPIEN, MuJoCo), each on a real scene."""
+    import re
+
+    folder = save_scene(scene("kitchen", 3, texture_size=16), tmp_path)
+    text = (Path(__file__).resolve().parents[1] / "docs" / "scenes.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text.split("## Using a scene", 1)[1], re.S)
+    assert len(blocks) == 3
+    for code in blocks:
+        code = code.replace("DIR/kitchen_000003", str(folder))
+        exec(compile(code, "docs/scenes.md", "exec"), {})

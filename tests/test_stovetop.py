@@ -1,0 +1,38 @@
+"""The stovetop category: a knob per zone, gas grates that lift off their seats, touch keys on a counter
+cooker's fascia, and a counter cooker's two zones."""
+
+from __future__ import annotations
+
+import pytest
+
+from helpers import maker
+from zoo import movable
+
+make = maker("stovetop")
+
+
+@pytest.mark.parametrize("n", (2, 4, 6))
+def test_gas_hob_has_a_knob_per_burner_and_grates_that_lift_off(n):
+    p, bp = make(1, design="gas", mount="built_in", zone_count=n)
+    knobs = [j for j in movable(bp) if j.child.startswith("knob_")]
+    assert len(knobs) == n and all(j.role == "knob" and j.dofs[0].type == "revolute" for j in knobs)
+    # knobs on a built-in hob stand on its top: they turn about the vertical
+    assert all(abs(abs(j.dofs[0].axis[2]) - 1.0) < 1e-9 for j in knobs)
+    grates = [j for j in movable(bp) if j.child.startswith("grate_")]
+    assert grates and all(j.role == "lift_off" and j.dofs[0].type == "prismatic" for j in grates)
+    assert all(j.dofs[0].axis[2] > 0.99 and 0.0 < j.dofs[0].upper <= 0.03 + 1e-9 for j in grates)
+
+
+def test_induction_touch_keys_make_a_counter_cooker_with_keys_on_its_fascia():
+    p, bp = make(2, design="induction", induction_controls="keys", mount="built_in", key_count=4)
+    assert p["mount"] == "counter"
+    keys = [j for j in movable(bp) if j.child.startswith("key_")]
+    assert len(keys) == 4 and all(j.role == "button" and j.dofs[0].axis[0] < -0.99 for j in keys)
+    assert not any(j.child.startswith("knob_") for j in movable(bp))
+
+
+@pytest.mark.parametrize("design", ("gas", "coil", "induction"))
+def test_a_counter_cooker_has_at_most_two_zones_and_knobs_on_its_front(design):
+    _, bp = make(3, design=design, mount="counter", zone_count=5, induction_controls="knobs")
+    knobs = [j for j in movable(bp) if j.child.startswith("knob_")]
+    assert len(knobs) == 2 and all(j.dofs[0].axis[0] > 0.99 for j in knobs)

@@ -1,0 +1,38 @@
+"""Toaster oven: what a user relies on beyond the contract tests: the racks slide out only with the door open,
+the door drops forward about its bottom edge, the knobs sit in the control column to the right of the door."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from tests.helpers import maker
+
+make = maker("toaster_oven")
+
+
+@pytest.mark.parametrize("design", ["compact", "six_slice", "air_fry"])
+def test_racks_require_the_door_and_the_door_drops_forward(design):
+    for seed in range(3):
+        p, bp = make(seed, design=design)
+        joints = {j.child: j for j in bp.joints}
+        racks = [j for j in bp.joints if j.child.startswith("rack_")]
+        assert racks, "every toaster oven has a rack"
+        for rack in racks:
+            assert rack.kind == "prismatic" and rack.requires_open == "door"
+            assert np.allclose(rack.dofs[0].axis, (1, 0, 0)) and rack.dofs[0].upper > 0.05  # out of the front
+        door = joints["door"]
+        assert door.kind == "revolute" and abs(door.dofs[0].axis[1]) == 1  # about the bottom edge, along Y
+        door_lo = np.array([pc.bounds for pc in bp.parts["door"].pieces])[:, 0].min(0)
+        assert door.dofs[0].origin[2] == pytest.approx(door_lo[2], abs=0.002)  # the hinge is at the bottom
+
+
+def test_controls_are_right_of_the_door():
+    for seed in range(6):
+        _, bp = make(seed)
+        door_hi = np.array([pc.bounds for pc in bp.parts["door"].pieces])[:, 1].max(0)
+        knobs = [name for name in bp.parts if name.startswith("knob_")]
+        assert 2 <= len(knobs) <= 3
+        for name in knobs:
+            lo = np.array([pc.bounds for pc in bp.parts[name].pieces])[:, 0].min(0)
+            assert lo[1] > door_hi[1]  # +Y: the right-hand side as one faces the front

@@ -1,0 +1,134 @@
+"""Pictures of a scene folder: the room seen from above one corner, at rest or with every joint open.
+
+Each object is put on the preview stage from its own URDF meshes (as :mod:`.renderer` does for one object),
+posed by its joints (no physics) and placed by ``scene.json``; the floor and the two walls away from the
+camera are drawn (a cut-away: the near walls would hide the room), and what stands against the near walls
+is left out.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .posing import _forward_kinematics, _qpos_for, _read_object
+from .renderer import _wear_material
+from .studio import _look_at_matrix, _stage
+
+CORNERS = {("south", "east"): (1, 1), ("south", "west"): (1, 0), ("north", "east"): (0, 1), ("north", "west"): (0, 0)}
+
+
+def _corner(rec: dict) -> tuple[tuple[str, str], tuple[int, int]]:
+    """The corner to look from: the one whose two walls (cut away in the picture) hold the fewest objects."""
+    count = {w: sum(1 for o in rec["objects"] if o.get("wall") == w) for w in ("north", "east", "south", "west")}
+    walls = min(CORNERS, key=lambda ws: (count[ws[0]] + count[ws[1]], list(CORNERS).index(ws)))
+    return walls, CORNERS[walls]
+
+
+def _pose(o: dict) -> np.ndarray:
+    m = np.eye(4)
+    c, s = math.cos(math.radians(o["yaw"])), math.sin(math.radians(o["yaw"]))
+    m[:3, :3] = [[c, -s, 0], [s, c, 0], [0, 0, 1]]
+    m[:3, 3] = o["position"]
+    return m
+
+
+class _SceneOnStage:
+    def __init__(self, folder: Path, rec: dict, fraction: float, hidden: tuple[str, str]):
+        stage = self.stage = _stage()
+        self.sapien = stage.sapien
+        if stage.owner is not None:
+            stage.owner.close()
+        self.entities, textures, files = [], {}, {}
+        gone: set[str] = set()
+        for o in rec["objects"]:  # hosts come before what stands on them
+            if o.get("wall") in hidden or o["on"].split(":")[0] in gone:
+                gone.add(o["id"])
+                continue  # against a cut-away wall, or on something that is: it would stand in the air
+            if o["folder"] not in files:
+                files[o["folder"]] = _read_object(folder / o["folder"])
+            f = files[o["folder"]]
+            poses = _forward_kinematics(f, _qpos_for(f, fraction))
+            place = _pose(o)
+            for name, visuals in f.links.items():
+                if visuals:
+                    self._add(visuals, place @ poses[name], textures)
+        self._room(rec["room"], hidden)
+        stage.owner = self
+
+    def _add(self, visuals, pose, textures):
+        sapien = self.sapien
+        body = sapien.render.RenderBodyComponent()
+        for vis in visuals:
+            shape = sapien.render.RenderShapeTriangleMesh(str(vis.mesh), list(vis.scale), None)
+            _wear_material(sapien, shape, vis.mesh, textures)
+            shape.local_pose = sapien.Pose(vis.origin)
+            body.attach(shape)
+        ent = sapien.Entity()
+        ent.add_component(body)
+        ent.set_pose(sapien.Pose(pose))
+        self.stage.scene.add_entity(ent)
+        self.entities.append(ent)
+
+    def _room(self, room: dict, hidden: tuple[str, str]):
+        sapien = self.sapien
+        wall = sapien.render.RenderMaterial(base_color=[0.86, 0.85, 0.82, 1], roughness=0.9)
+        floor = sapien.render.RenderMaterial(base_color=[0.55, 0.45, 0.35, 1], roughness=0.7)
+        for box in room["boxes"]:
+            if box["name"].startswith((*(f"wall_{w}" for w in hidden), "ceiling")):
+                continue  # the walls between the camera and the room
+            lo, hi = np.array(box["min"]), np.array(box["max"])
+            body = sapien.render.RenderBodyComponent()
+            shape = sapien.render.RenderShapeBox(((hi - lo) / 2).tolist(), floor if box["name"] == "floor" else wall)
+            body.attach(shape)
+            ent = sapien.Entity()
+            ent.add_component(body)
+            ent.set_pose(sapien.Pose(((lo + hi) / 2).tolist()))
+            self.stage.scene.add_entity(ent)
+            self.entities.append(ent)
+
+    def close(self):
+        if self.stage.owner is self:
+            for ent in self.entities:
+                self.stage.scene.remove_entity(ent)
+            self.stage.owner = None
+        self.entities.clear()
+
+
+def render_scene(folder, width: int = 1024, height: int = 768, fraction: float = 0.0, view: str = "corner"
+                 ) -> np.ndarray:
+    """An RGB picture (``height`` x ``width`` x 3, uint8) of the scene folder with each joint at
+    ``fraction`` of its range (0 rest, 1 open); ``view`` ``corner`` (from above the corner whose two walls
+    hold the fewest objects: those walls and what stands against them are left out) or ``top``."""
+    folder = Path(folder)
+    rec = json.loads((folder / "scene.json").read_text())
+    hidden, (cx, cy) = _corner(rec)
+    on = _SceneOnStage(folder, rec, fraction, hidden)
+    try:
+        r = rec["room"]
+        d, w, h = r["depth"], r["width"], r["height"]
+        stage = on.stage
+        # the studio's ground under the room's floor slab, not in its top face (they would z-fight)
+        stage.configure(np.array([0.0, 0.0, -r["wall_thickness"] - 0.01]), np.array([d, w, h]))
+        target = np.array([d * 0.45, w * 0.45, 0.5])
+        if view == "top":
+            eye = np.array([d / 2 + 0.01, w / 2, max(d, w) * 1.6])
+            target = np.array([d / 2, w / 2, 0.0])
+        else:
+            ex = d * 1.25 + 1.0 if cx else -d * 0.25 - 1.0
+            ey = w * 1.15 + 1.0 if cy else -w * 0.15 - 1.0
+            eye = np.array([ex, ey, h * 1.5 + 0.6])
+            target = np.array([d * (0.45 if cx else 0.55), w * (0.45 if cy else 0.55), 0.5])
+        cam = stage.camera(width, height)
+        cam.set_fovy(math.radians(50), True)
+        cam.near, cam.far = 0.05, 100.0
+        cam.entity.set_pose(on.sapien.Pose(_look_at_matrix(eye, target)))
+        stage.scene.update_render()
+        cam.take_picture()
+        rgb = cam.get_picture("Color")[..., :3]
+        return np.clip(rgb * 255 + 0.5, 0, 255).astype(np.uint8)
+    finally:
+        on.close()
