@@ -19,6 +19,7 @@ import numpy as np
 FLAT = 0.002  # m: points this close below a hull's top count as its top face
 MIN_SIDE = 0.05  # m: a region narrower than a small cup's foot (5 cm) carries nothing
 MIN_CLEAR = 0.03  # m: a region with less room above it carries nothing
+BAR_GAP = 0.06  # m: no point farther than this from a bar: a pot (a 12 cm base or more) bridges it (range grates)
 RESTING = 0.005  # m: a hull whose bottom is this close above a region stands on it (a turntable, a tray)
 BLOCKING = 0.2  # a hull that rises through more than this share of a region's area disqualifies it
 
@@ -116,8 +117,20 @@ def _bars(hulls) -> list[tuple[str, np.ndarray, list[int]]]:
         if len(ks) >= 3:
             z = max(float(hulls[k][1][:, 2].max()) for k in ks)
             tops = [_top_points(hulls[k][1])[1] for k in ks]
-            out.append((link, np.vstack([np.c_[t, np.full(len(t), z)] for t in tops]), ks))
+            if _spans(tops):
+                out.append((link, np.vstack([np.c_[t, np.full(len(t), z)] for t in tops]), ks))
     return out
+
+
+def _spans(tops: list[np.ndarray]) -> bool:
+    """Whether bars cover their bounding rectangle closely enough to carry a foot anywhere in it: no point of
+    it farther than :data:`BAR_GAP` from a bar (a grate's bars; not a sink's rim round its bowl)."""
+    boxes = np.array([(t.min(0), t.max(0)) for t in tops])  # (n, 2, 2)
+    lo, hi = boxes[:, 0].min(0), boxes[:, 1].max(0)
+    u = np.linspace(0.05, 0.95, 9)
+    grid = lo + (hi - lo) * np.stack(np.meshgrid(u, u), -1).reshape(-1, 1, 2)  # (81, 1, 2)
+    outside = np.maximum(boxes[None, :, 0] - grid, 0) + np.maximum(grid - boxes[None, :, 1], 0)
+    return bool(np.linalg.norm(outside, axis=2).min(1).max() <= BAR_GAP)
 
 
 def support_regions(obj) -> list[Region]:

@@ -2,8 +2,8 @@
 
 Each object is put on the preview stage from its own URDF meshes (as :mod:`.renderer` does for one object),
 posed by its joints (no physics) and placed by ``scene.json``; the floor and the two walls away from the
-camera are drawn (a cut-away: the near walls would hide the room), and what stands against the near walls
-is left out.
+camera are drawn (a cut-away: the near walls would hide the room); what is hung on or set into the near
+walls is left out (it would float), what stands on the floor against them stays.
 """
 
 from __future__ import annotations
@@ -45,9 +45,9 @@ class _SceneOnStage:
         self.entities, textures, files = [], {}, {}
         gone: set[str] = set()
         for o in rec["objects"]:  # hosts come before what stands on them
-            if o.get("wall") in hidden or o["on"].split(":")[0] in gone:
+            if (o.get("wall") in hidden and o["on"] != "floor") or o["on"].split(":")[0] in gone:
                 gone.add(o["id"])
-                continue  # against a cut-away wall, or on something that is: it would stand in the air
+                continue  # hung on or set into a cut-away wall, or on something that is: it would float
             if o["folder"] not in files:
                 files[o["folder"]] = _read_object(folder / o["folder"])
             f = files[o["folder"]]
@@ -102,7 +102,7 @@ def render_scene(folder, width: int = 1024, height: int = 768, fraction: float =
                  ) -> np.ndarray:
     """An RGB picture (``height`` x ``width`` x 3, uint8) of the scene folder with each joint at
     ``fraction`` of its range (0 rest, 1 open); ``view`` ``corner`` (from above the corner whose two walls
-    hold the fewest objects: those walls and what stands against them are left out) or ``top``."""
+    hold the fewest objects: those walls and what hangs on them are left out) or ``top``."""
     folder = Path(folder)
     rec = json.loads((folder / "scene.json").read_text())
     hidden, (cx, cy) = _corner(rec)

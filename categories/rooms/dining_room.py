@@ -59,7 +59,8 @@ class DiningRoomLayout(RoomLayout):
     def tv(self, node):
         host = getattr(self, "sideboard_at", None)
         if host is not None:
-            self.set_on(self.make("tv"), host, self.rng, prefer=lambda g: -g.z)
+            tv = self.make("tv", stand_style=str(self.rng.choice(["single_post", "two_legs"])))  # it stands
+            self.set_on(tv, host, self.rng, prefer=lambda g: -g.z)
 
     def lamp(self, node):
         lamp = self.make("lamp", lamp_type="floor")

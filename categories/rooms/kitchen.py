@@ -189,8 +189,13 @@ class KitchenLayout(RoomLayout):
         for wall, run in self.runs.items():
             for placed, s in run:
                 if placed.made.category == "kitchen_cabinet" and placed.made.size[1] >= 1.25:
-                    unit = self.cabinet("wall_run", width=round(float(placed.made.size[1]) - 0.05, 3))
-                    self.against(unit, self.room.wall(wall), s + 0.025, z=float(placed.hi[2]) + gap)
+                    width = round(float(placed.made.size[1]) - 0.05, 3)
+                    # as tall as the ceiling lets its doors (a lift-up flap swings above it) open: else shorter
+                    for height in (None, 0.75, 0.6):
+                        unit = self.cabinet("wall_run", width=width, **({} if height is None else
+                                                                        {"wall_height": height}))
+                        if self.against(unit, self.room.wall(wall), s + 0.025, z=float(placed.hi[2]) + gap):
+                            break
 
     def door(self, node):
         for wall in ("south", "east", "west", "north"):

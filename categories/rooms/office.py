@@ -76,7 +76,9 @@ class OfficeLayout(RoomLayout):
 
     def screen(self, node):
         if self.desk_at is not None:
-            self.set_on(self.make("tv", width=round(float(self.rng.uniform(0.6, 0.8)), 3)), self.desk_at, self.rng,
+            screen = self.make("tv", width=round(float(self.rng.uniform(0.6, 0.8)), 3),
+                               stand_style=str(self.rng.choice(["single_post", "two_legs"])))  # not a wall arm
+            self.set_on(screen, self.desk_at, self.rng,
                         prefer=lambda g: -g.area, yaw=self._facing())  # the screen faces the one sitting there
 
     def desk_lamp(self, node):

@@ -25,6 +25,7 @@ from .room import Opening, Room, Wall, boxes_overlap, moved_box, pose_matrix
 
 WALL_GAP = 0.005  # m between an object's back and the wall (out of plumb walls: installers leave 3-10 mm)
 RUN_GAP = 0.003  # m between neighbours in a run (cabinet fitters' 2-3 mm joint)
+SWEEP_STEP = math.radians(15)  # rad between the poses a turning part's swept box is taken at
 SET_DOWN = 0.0001  # m: an item is set this far above its support (a drop from higher makes its loose parts rattle)
 
 
@@ -73,16 +74,31 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
     lo, hi = obj.bounds()
     local = {link.name: (np.array([p.bounds[0] for p in link.pieces]).min(0),
                          np.array([p.bounds[1] for p in link.pieces]).max(0)) for link in obj.links if link.pieces}
-    groups: dict[str, dict[str, float]] = {}
+    groups: dict[str, list] = {}
     for j in obj.movable_joints:
         if math.isfinite(j.upper) and j.type != "continuous":
-            groups.setdefault(j.group, {})[j.name] = j.upper
+            groups.setdefault(j.group, []).append(j)
     swept = []
-    for group, q in sorted(groups.items()):
-        poses = obj.poses(q)
-        pts = np.vstack([moved_box(a, b, poses[name])[0:2] for name, (a, b) in local.items()])
+    for group, joints in sorted(groups.items()):
+        # a turning part reaches furthest part-way (a flap door swinging up passes over its hinge): sample the
+        # range every SWEEP_STEP; a slide is furthest at its end
+        turns = any(j.type == "revolute" for j in joints)
+        n = max(2, int(math.ceil(max(j.upper - j.lower for j in joints) / SWEEP_STEP)) + 1) if turns else 2
+        pts = []
+        for f in np.linspace(0.0, 1.0, n)[1:]:
+            poses = obj.poses({j.name: j.lower + f * (j.upper - j.lower) for j in joints})
+            pts += [moved_box(a, b, poses[name])[0:2] for name, (a, b) in local.items()]
+        pts = np.vstack(pts)
         swept.append((group, pts.min(0), pts.max(0)))
     return lo, hi, swept
+
+
+def _steady_links(obj) -> set[str]:
+    """Links something may be set down on: the body, and parts that rest on a seat by their own weight
+    (a range's grate, a lid: role ``lift_off``); not a drawer, a door or a turntable, which move under a load."""
+    moving = {j.child: j.role for j in obj.joints if j.movable}
+    steady = {link.name for link in obj.links if link.name not in moving}
+    return steady | {child for child, role in moving.items() if role == "lift_off"}
 
 
 class SceneLayout:
@@ -157,7 +173,8 @@ class SceneLayout:
     def _swing_clear(self, cand: Placed, ignore: tuple[str, ...], room: bool = True) -> bool:
         r = self.room if room else None
         for _, lo, hi in cand.swept_boxes():
-            if r is not None and (np.any(lo[:2] < -1e-3) or hi[0] > r.depth + 1e-3 or hi[1] > r.width + 1e-3):
+            if r is not None and (np.any(lo[:2] < -1e-3) or hi[0] > r.depth + 1e-3 or hi[1] > r.width + 1e-3
+                                  or hi[2] > r.height + 1e-3):
                 return False
             if any(boxes_overlap(lo, hi, o.lo, o.hi) for o in self.placed if o.id not in ignore):
                 return False
@@ -202,7 +219,9 @@ class SceneLayout:
         turn = 0.0 if yaw is None else yaw - host_yaw
         lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))  # its box in the host's axes
         size = hi - lo
-        regions = [g for g in host.made.regions if (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
+        steady = _steady_links(host.made.obj)
+        regions = [g for g in host.made.regions if g.link in steady
+                   and (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
                    and (g.clear is None or g.clear > size[2] + 0.01)]
         if prefer is not None:
             regions = sorted(regions, key=prefer)
