@@ -228,10 +228,12 @@ class KitchenLayout(RoomLayout):
         self._on_worktop(self.make("jar"))
 
     def cookware(self, node):
-        ranges = [w for w in self.worktops if w.made.category == "oven"]
+        """A pot or a pan on the range's cooktop where it has a steady one (an electric top), else beside it on
+        the worktop (gas grates lift off: a loaded grate is not what the range's checks found)."""
         made = self.make(str(self.rng.choice(["pot", "pan"])))
-        if ranges:
-            self.scatter(made, ranges, self.rng, prefer=lambda g: -g.z)
+        ranges = [w for w in self.worktops if w.made.category == "oven"]
+        if not (ranges and self.scatter(made, ranges, self.rng, prefer=lambda g: -g.z)):
+            self._on_worktop(made)
 
 
 KIND = SceneKind("kitchen", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, KitchenLayout)

@@ -94,11 +94,11 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
 
 
 def _steady_links(obj) -> set[str]:
-    """Links something may be set down on: the body, and parts that rest on a seat by their own weight
-    (a range's grate, a lid: role ``lift_off``); not a drawer, a door or a turntable, which move under a load."""
-    moving = {j.child: j.role for j in obj.joints if j.movable}
-    steady = {link.name for link in obj.links if link.name not in moving}
-    return steady | {child for child, role in moving.items() if role == "lift_off"}
+    """Links something may be set down on: those no joint moves (the body, a fixed sink). Not a drawer, a door
+    or a turntable, which move under a load, nor a lift-off part (a range's grate): loaded, it no longer
+    lifts off or rests as the object's checks found it (a pan on a grate pushes it 2 mm along its play)."""
+    moving = {j.child for j in obj.joints if j.movable}
+    return {link.name for link in obj.links if link.name not in moving}
 
 
 class SceneLayout:
