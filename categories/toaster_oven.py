@@ -31,7 +31,8 @@ def _count(what: str):
 
 
 PARAMS = (
-    Float("size", "where the oven lies in its design's size range (0 smallest, 1 largest)", "", 0.0, 1.0),
+    Float("size", "where the oven's footprint lies in its design's size range (0 smallest, 1 largest)", "", 0.0, 1.0),
+    Float("tall", "where the oven's height lies in its design's height range (0 lowest, 1 tallest)", "", 0.0, 1.0),
     Float("corner", "radius of the casing's upright corners", "m", 0.004, 0.015),
     Choice("finish", "casing finish", choices=("brushed_metal", "painted")),
     Choice("handle_finish", "door handle material", choices=("chrome", "brushed_metal", "plastic")),
@@ -62,7 +63,7 @@ SUBSTRATES = {"body": ("finish", {"painted": 7850.0})}  # a painted casing is pa
 class ToasterOvenLayout(controls.ControlFace):
     def toaster_oven(self, node):
         p, design = self.p, node.choice
-        o = TO.oven(design, p["size"], p["corner"])
+        o = TO.oven(design, p["size"], p["corner"], p["tall"])
         racks, panel = node.one(design).of("rack"), node.one("panel")
         cuts = TO.cutouts(o, len(panel.of("knob")), len(panel.of("key")))
         body = self.place(TO.casing(o, len(racks), cuts), "body")

@@ -36,9 +36,11 @@ class Design:
     knobs: tuple[int, int]
     keys: tuple[int, int]
 
-    def at(self, t: float) -> tuple[float, float, float]:
-        """(width, depth, height) at ``t`` of its size range (0: the smallest, 1: the largest)."""
-        return tuple(lo + t * (hi - lo) for lo, hi in (self.width, self.depth, self.height))
+    def at(self, t: float, tall: float | None = None) -> tuple[float, float, float]:
+        """(width, depth, height) at ``t`` of its size range (0: the smallest, 1: the largest); the height at
+        ``tall`` of its range where given (models of one footprint differ in height)."""
+        h = t if tall is None else tall
+        return tuple(lo + f * (hi - lo) for (lo, hi), f in zip((self.width, self.depth, self.height), (t, t, h)))
 
 
 # Retail spec listings (manufacturer pages, inches converted, approximate): a 4-slice toaster oven is 14-16 in
@@ -88,9 +90,10 @@ class Oven:
     panel_y: float
 
 
-def oven(design: str, t: float, corner: float) -> Oven:
-    """The layout of a ``design`` toaster oven at ``t`` of its size range with upright edges of ``corner``."""
-    W, D, H = DESIGNS[design].at(t)
+def oven(design: str, t: float, corner: float, tall: float | None = None) -> Oven:
+    """The layout of a ``design`` toaster oven at ``t`` of its size range (its height at ``tall`` of its range,
+    if given) with upright edges of ``corner``."""
+    W, D, H = DESIGNS[design].at(t, tall)
     depth, height = D - DOOR["thickness"] - DOOR["gap"], H - FEET[1]
     size = CasingSize(W, depth, height, WALL, SHEET, corner)
     x0, x1, yp = -depth / 2 + WALL, depth / 2 - WALL, W / 2 - PANEL  # the control column on the right (+Y)
