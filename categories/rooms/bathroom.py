@@ -59,7 +59,7 @@ class BathroomLayout(RoomLayout):
                     return
 
     def shelf(self, node):
-        rack = self.make("storage_rack", design="shelving", width=1.5, shelf_levels=4, shelf_depth=0.35,
+        rack = self.make("storage_rack", design="shelving", width=1.5, shelf_levels=4,
                          has_goods=False,
                          shelf_spacing=round(float(self.rng.uniform(0.3, 0.4)), 3))
         got = self.on_wall(rack, self.rng.permutation(["north", "east", "south", "west"]), self.rng)
