@@ -62,7 +62,7 @@ class OfficeLayout(RoomLayout):
         centre = (d.lo + d.hi) / 2
         half = abs(front[0]) * (d.hi - d.lo)[0] / 2 + abs(front[1]) * (d.hi - d.lo)[1] / 2
         yaw = math.atan2(-front[1], -front[0])
-        for extra in (0.35, 0.5, 0.7, 0.9):
+        for extra in (0.1, 0.2, 0.35, 0.5, 0.7, 0.9):  # as close as its arms and recline let it
             xy = centre[:2] + front[:2] * (half + chair.size[0] / 2 + extra)
             if self.at(chair, xy, yaw) is not None:
                 return
