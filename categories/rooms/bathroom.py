@@ -25,7 +25,7 @@ PARAMS = (
 )
 
 GRAMMAR = Grammar("bathroom", {
-    "bathroom": Node(required=("toilet", "vanity", "door"), optional={"shelf": 0.7, "window": 0.7},
+    "bathroom": Node(required=("toilet", "vanity", "door"), optional={"shelf": 0.3, "window": 0.7},
                      repeat={"toiletry": (1, 5)}),
     **{k: Node() for k in ("toilet", "vanity", "door", "shelf", "window", "toiletry")},
 })
@@ -36,7 +36,7 @@ class BathroomLayout(RoomLayout):
         p = self.p
         self.room_of(p["width"], p["depth"], p["ceiling"], WALL)
         self.hosts = []
-        for kind in ("toilet", "vanity", "shelf", "door", "window"):
+        for kind in ("vanity", "toilet", "shelf", "door", "window"):  # the largest unit first
             if node.one(kind) is not None:
                 self.grow(node.one(kind))
         for child in node.of("toiletry"):
@@ -49,7 +49,7 @@ class BathroomLayout(RoomLayout):
     def vanity(self, node):
         # a sink base grows 1-5 columns beside its sink: the fitter picks a unit that fits the room
         height = round(float(self.rng.uniform(*VANITY_HEIGHT)), 3)
-        for _ in range(6):
+        for _ in range(12):
             vanity = self.make("kitchen_cabinet", design="sink_base", base_height=height, sink_width=0.8,
                                stand_style="plinth", door_angle=1.5708)
             if vanity.size[1] <= VANITY_WIDTH:

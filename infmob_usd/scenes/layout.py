@@ -288,7 +288,7 @@ class RoomLayout(SceneLayout):
     def embed(self, made: Made, wall: Wall, z: float = 0.0, rng: np.random.Generator | None = None,
               margin: float = 0.1) -> Placed | None:
         """``made`` (a door, a window) set into ``wall`` at a free spot, ``z`` above the floor (lowered if its
-        head would come within 0.1 m of the ceiling); the wall gets an opening its size. ``None`` if the
+        top would come within 0.05 m of the ceiling); the wall gets an opening its size. ``None`` if the
         wall has no spot where its swing clears everything placed.
 
         A wall-set object is built round its own ``x = 0`` plane: the pieces that cross it (the frame, a
@@ -304,7 +304,8 @@ class RoomLayout(SceneLayout):
         for lo, hi in boxes:
             if (np.any(lo[1:] < o_lo[1:] - 1e-3) or np.any(hi[1:] > o_hi[1:] + 1e-3)) and (lo[0] + hi[0]) > 0:
                 depth = max(depth, 0.001 - float(lo[0]))
-        z = min(z, self.room.height - 0.1 - float(o_hi[2] - made.lo[2]))
+        # its head (and what it carries above the opening: a curtain rail) 0.05 m under the ceiling at most
+        z = min(z, self.room.height - 0.05 - float(made.hi[2] - made.lo[2]))
         if z < 0:
             return None
         spots = np.arange(margin, wall.length - made.size[1] - margin, 0.05)
