@@ -101,6 +101,21 @@ def write_textures(obj, folder: Path) -> None:
             write_file(tex / f"{slot}_{name}.png", data)
 
 
+def publish(tmp: Path, final: Path, prefix: str) -> None:
+    """Put the finished temporary folder ``tmp`` in place as ``final`` (replacing what is there, which is moved
+    aside under ``prefix`` and removed), after checking that ``final``'s parent is still the real folder it was,
+    not a link put in its place meanwhile."""
+    os.chmod(tmp, 0o755)
+    check_output_dir(final.parent)
+    if final.exists():
+        old = Path(tempfile.mkdtemp(prefix=prefix, suffix=".old", dir=final.parent))
+        os.replace(final, old / "x")
+        os.replace(tmp, final)
+        shutil.rmtree(old, ignore_errors=True)
+    else:
+        os.replace(tmp, final)
+
+
 def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run_id: str | None = None) -> Path:
     """Write ``obj`` to ``out/<name>/`` in ``formats`` (default :data:`DEFAULT_FORMATS`) and return
     that folder (replaced if it exists).
@@ -134,15 +149,7 @@ def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run
             t0 = time.perf_counter()
             writer(obj, tmp)
             obj.timings[stage] = obj.timings.get(stage, 0.0) + time.perf_counter() - t0
-        os.chmod(tmp, 0o755)
-        check_output_dir(out)  # still the folder it was, not a link put in its place meanwhile
-        if final.exists():
-            old = Path(tempfile.mkdtemp(prefix=prefix, suffix=".old", dir=out))
-            os.replace(final, old / "x")
-            os.replace(tmp, final)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            os.replace(tmp, final)
+        publish(tmp, final, prefix)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise

@@ -17,14 +17,13 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import shutil
 import tempfile
 from pathlib import Path
 
 import numpy as np
 
-from . import check_output_dir, write_object
+from . import check_output_dir, publish, write_object
 
 SCENE_FILES = ("scene.usda", "scene.json", "scene.xml")
 
@@ -143,7 +142,8 @@ def write_scene(s, out) -> Path:
 
     out = check_output_dir(Path(out))
     final = out / s.name
-    tmp = Path(tempfile.mkdtemp(prefix=temp_prefix(s.name, new_run_id()), suffix=".tmp", dir=out))
+    prefix = temp_prefix(s.name, new_run_id())
+    tmp = Path(tempfile.mkdtemp(prefix=prefix, suffix=".tmp", dir=out))
     try:
         folders = {}
         for made in s.objects:
@@ -155,15 +155,7 @@ def write_scene(s, out) -> Path:
         (tmp / "scene.json").write_text(json.dumps(rec, indent=1, sort_keys=False) + "\n")
         write_usd(s, rec, tmp)
         write_mjcf(rec, tmp)
-        os.chmod(tmp, 0o755)
-        check_output_dir(out)
-        if final.exists():
-            old = Path(tempfile.mkdtemp(prefix=temp_prefix(s.name, new_run_id()), suffix=".old", dir=out))
-            os.replace(final, old / "x")
-            os.replace(tmp, final)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            os.replace(tmp, final)
+        publish(tmp, final, prefix)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
