@@ -79,8 +79,13 @@ class KitchenLayout(RoomLayout):
     def base(self, width: float | None = None):
         return self.cabinet("base_run", width=round(width or float(self.rng.uniform(1.2, self.p["run_width"])), 3))
 
+    def cabinet_params(self) -> dict:
+        """The parameters every cabinet of this kitchen shares (one seed: worktop, wall gap, fronts), read off
+        one made already, never a unit made only to be read."""
+        return next(m for m in self._made.values() if m.category == "kitchen_cabinet").obj.params
+
     def under_counter(self, category: str, **kw):
-        worktop = self.cabinet("base_run", width=1.2).obj.params["worktop_thickness"]
+        worktop = self.cabinet_params()["worktop_thickness"]
         return self.make(category, height=round(self.h - worktop - 0.004, 4), **kw)
 
     def sink_side(self, wine: bool) -> list:
@@ -185,7 +190,7 @@ class KitchenLayout(RoomLayout):
 
     # -- everything else -----------------------------------------------------------------------------------------
     def wall_units(self, node):
-        gap = self.cabinet("base_run", width=1.2).obj.params["wall_gap"]
+        gap = self.cabinet_params()["wall_gap"]
         for wall, run in self.runs.items():
             for placed, s in run:
                 if placed.made.category == "kitchen_cabinet" and placed.made.size[1] >= 1.25:

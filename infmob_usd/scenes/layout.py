@@ -339,8 +339,8 @@ class RoomLayout(SceneLayout):
                 fixed: bool = True, turn: float = 0.0) -> Placed | None:
         """``made`` with its back to the first of ``walls`` that has a free spot for it (spots drawn);
         ``turn`` as in :meth:`against`."""
-        width = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))[1][1] - \
-            moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))[0][1]
+        lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))
+        width = hi[1] - lo[1]
         for gap in (WALL_GAP, 0.05, 0.1):  # furniture may stand a little off the wall (a skirting, a lid's swing)
             for name in walls:
                 wall = self.room.wall(name)
