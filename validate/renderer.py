@@ -107,6 +107,19 @@ def _wear_material(sapien, shape, obj_path: Path, made: dict) -> None:
             mat.roughness_texture = made[key]
 
 
+def render_body(sapien, visuals, textures: dict):
+    """A render body of one link's visual meshes (materials worn as :func:`_wear_material` does, ``textures``
+    its cache) and its shapes, in ``visuals``' order."""
+    body, shapes = sapien.render.RenderBodyComponent(), []
+    for vis in visuals:
+        shape = sapien.render.RenderShapeTriangleMesh(str(vis.mesh), list(vis.scale), None)
+        _wear_material(sapien, shape, vis.mesh, textures)
+        shape.local_pose = sapien.Pose(vis.origin)
+        body.attach(shape)
+        shapes.append(shape)
+    return body, shapes
+
+
 class ObjectRenderer:
     """One object folder placed on the (shared) stage; pictures at any joint configuration.
 
@@ -129,13 +142,9 @@ class ObjectRenderer:
         for name, visuals in self.files.links.items():
             if not visuals:
                 continue
-            body = sapien.render.RenderBodyComponent()
+            body, shapes = render_body(sapien, visuals, self._textures)
             corners, verts_link = [], []
-            for vis in visuals:
-                shape = sapien.render.RenderShapeTriangleMesh(str(vis.mesh), list(vis.scale), None)
-                _wear_material(sapien, shape, vis.mesh, self._textures)
-                shape.local_pose = sapien.Pose(vis.origin)
-                body.attach(shape)
+            for vis, shape in zip(visuals, shapes, strict=True):
                 verts = np.concatenate([p.get_vertices() for p in shape.parts]) * np.asarray(vis.scale)
                 lo, hi = verts.min(0), verts.max(0)
                 box = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])

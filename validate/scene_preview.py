@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .posing import _forward_kinematics, _qpos_for, _read_object
-from .renderer import _wear_material
+from .renderer import render_body
 from .studio import _look_at_matrix, _stage
 
 CORNERS = {("south", "east"): (1, 1), ("south", "west"): (1, 0), ("north", "east"): (0, 1), ("north", "west"): (0, 0)}
@@ -61,12 +61,7 @@ class _SceneOnStage:
 
     def _add(self, visuals, pose, textures):
         sapien = self.sapien
-        body = sapien.render.RenderBodyComponent()
-        for vis in visuals:
-            shape = sapien.render.RenderShapeTriangleMesh(str(vis.mesh), list(vis.scale), None)
-            _wear_material(sapien, shape, vis.mesh, textures)
-            shape.local_pose = sapien.Pose(vis.origin)
-            body.attach(shape)
+        body, _ = render_body(sapien, visuals, textures)
         ent = sapien.Entity()
         ent.add_component(body)
         ent.set_pose(sapien.Pose(pose))
