@@ -320,6 +320,20 @@ def _on_sigterm(signum, frame):
     raise Terminated(128 + signum)
 
 
+def _unraisable(hook):
+    """A ``sys.unraisablehook`` that does not let SIGTERM be lost: a signal landing in code whose exceptions
+    Python only reports (an ``os.fork`` callback such as logging's lock release, a ``__del__``) is sent again
+    a moment later from a thread, so it is raised where it can unwind; anything else goes to ``hook``."""
+    import threading
+
+    def on_unraisable(unraisable):
+        if isinstance(unraisable.exc_value, Terminated):
+            threading.Timer(0.05, os.kill, (os.getpid(), unraisable.exc_value.code - 128)).start()
+        else:
+            hook(unraisable)
+    return on_unraisable
+
+
 def cmd_generate(args) -> int:
     from .api import check_texture_size
     from .batch import Job, run_batch
@@ -810,6 +824,7 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     if argv is None:  # SIGTERM stops like Ctrl-C
         signal.signal(signal.SIGTERM, _on_sigterm)
+        sys.unraisablehook = _unraisable(sys.unraisablehook)
     try:
         return COMMANDS[args.command](args)
     except InfmobError as e:

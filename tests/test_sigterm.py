@@ -166,3 +166,25 @@ def test_bench_stops_on_sigterm_and_removes_its_temporary_folder(tmp_path):
         lambda: any(tmpdir.glob("infmob-bench-*/*")))
     time.sleep(1.0)
     assert _ours_left(tmpdir) == []
+
+
+def test_sigterm_inside_a_fork_callback_still_stops_the_command(tmp_path):
+    """A SIGTERM that lands in an ``os.fork`` callback (logging releases its lock there whenever a worker
+    pool forks) raises where Python only reports the exception; the command must still stop with 143."""
+    script = tmp_path / "fork_signal.py"
+    script.write_text(
+        "import os, signal, sys, time\n"
+        "from infmob_usd import cli\n"
+        "signal.signal(signal.SIGTERM, cli._on_sigterm)\n"
+        "sys.unraisablehook = cli._unraisable(sys.unraisablehook)\n"
+        "os.register_at_fork(after_in_parent=lambda: [signal.raise_signal(signal.SIGTERM), sum(range(99))])\n"
+        "try:\n"
+        "    if os.fork() == 0:\n"
+        "        os._exit(0)\n"
+        "    time.sleep(5)\n"
+        "    sys.exit(0)\n"
+        "except cli.Terminated as e:\n"
+        "    sys.exit(e.code)\n")
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 128 + signal.SIGTERM, done.stderr[-2000:]
+    assert "Traceback" not in done.stderr, done.stderr[-2000:]
