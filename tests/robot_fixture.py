@@ -1,21 +1,23 @@
 """Test-only annotations (schema ``infmob-annotations/1``, /work/ANNOTATIONS.md) computed from a written object
 folder, so that the robot check can be exercised before the build writes ``annotations.json`` itself.
 
-Covers the simple case only: a door or drawer whose joint hangs off the root link and whose handle is a
-visual mesh ``meshes/<link>__handle_handle.obj`` (the handle's vertices are in the link frame). The grasp is
-the middle of the handle's front face, approached along -X (fronts face +X), fingers closing across the
-handle's thinner side; the path is the grasp point moved by the joint (other joints at rest).
+Covers the simple case only: a movable link with a handle drawn as its own visual mesh,
+``meshes/<link>__handle_handle.obj`` or ``meshes/<link>__pull.obj`` (vertices in the link frame: the writer
+puts visuals at the link origin). The grasp is the middle of the handle's face towards where the handle first
+moves when the joint opens, approached against that motion along the nearest world axis, the fingers closing
+across the handle's thinner other side; the path is the grasp point moved by the joint in SAPIEN with every
+other joint at rest.
 """
 
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 
 import numpy as np
 
 FRACTIONS = [i / 10 for i in range(11)]
+HANDLE_MESHES = ("{link}__handle_handle.obj", "{link}__pull.obj")
 
 
 def _obj_vertices(path: Path) -> np.ndarray:
@@ -23,56 +25,89 @@ def _obj_vertices(path: Path) -> np.ndarray:
                      if line.startswith("v ")])
 
 
-def _rotate(p: np.ndarray, origin: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
-    """``p`` turned by ``angle`` about the line through ``origin`` along unit ``axis`` (Rodrigues)."""
-    v = p - origin
-    c, s = math.cos(angle), math.sin(angle)
-    return origin + v * c + np.cross(axis, v) * s + axis * float(axis @ v) * (1 - c)
+def _handle(folder: Path, link: str) -> np.ndarray | None:
+    for pattern in HANDLE_MESHES:
+        mesh = folder / "meshes" / pattern.format(link=link)
+        if mesh.is_file():
+            return _obj_vertices(mesh)
+    return None
 
 
-def _target(folder: Path, joint: dict, groups: dict[str, str]) -> dict | None:
-    link = joint["child"]
-    mesh = folder / "meshes" / f"{link}__handle_handle.obj"
-    if joint["type"] not in ("revolute", "prismatic") or not mesh.is_file():
-        return None
-    v = _obj_vertices(mesh)
-    lo, hi = v.min(0), v.max(0)
-    size, center = hi - lo, (hi + lo) / 2
-    position = np.array([hi[0], center[1], center[2]])  # the front face's middle (link frame)
-    closing = [0.0, 1.0, 0.0] if size[1] <= size[2] else [0.0, 0.0, 1.0]
-    width = float(min(size[1], size[2]))
-    origin, axis = np.array(joint["origin"], float), np.array(joint["axis"], float)
-    at_rest = origin + position  # the link frame is the joint frame, unrotated at rest (root parent)
+def _matrix(pose) -> np.ndarray:
+    return np.asarray(pose.to_transformation_matrix(), float)
+
+
+def _path(art, qi: int, rest: np.ndarray, link, position: np.ndarray, opened: float) -> list[list[float]]:
+    """The link-frame point ``position`` in the root frame at joint fractions 0, 0.1 ... 1."""
+    out = []
+    for f in FRACTIONS:
+        q = rest.copy()
+        q[qi] = rest[qi] + f * (opened - rest[qi])
+        art.set_qpos(q.astype(np.float32))
+        root = _matrix(art.root.entity_pose)
+        p = np.linalg.inv(root) @ _matrix(link.entity_pose) @ np.array([*position, 1.0])
+        out.append(p[:3].tolist())
+    art.set_qpos(rest.astype(np.float32))
+    return out
+
+
+def _target(art, ctx, qi: int, joint: dict, vertices: np.ndarray, groups: dict[str, str]) -> dict:
+    link = art.find_link_by_name(joint["child"])
+    pose = _matrix(link.entity_pose)
+    inv = np.linalg.inv(pose)
     opened = float(joint["upper"])
-    if joint["type"] == "revolute":
-        path = [_rotate(at_rest, origin, axis, f * opened) for f in FRACTIONS]
-        part, action = "hinge_door", "pull"
-    else:
-        path = [at_rest + axis * f * opened for f in FRACTIONS]
-        part, action = "slider_drawer", "pull"
+    centre = (vertices.min(0) + vertices.max(0)) / 2
+    start = _path(art, qi, ctx.rest_qpos, link, centre, opened)[:2]
+    pull = np.asarray(start[1]) - np.asarray(start[0])  # where the handle goes first (root frame = world here)
+    k = int(np.argmax(np.abs(pull)))  # handles are axis-aligned at rest: the world axis nearest the pull
+    sign = float(np.sign(pull[k]))
+    world = (pose[:3, :3] @ vertices.T).T + pose[:3, 3]
+    lo, hi = world.min(0), world.max(0)
+    grasp_world = (lo + hi) / 2
+    grasp_world[k] = hi[k] if sign > 0 else lo[k]  # the handle's face towards the person pulling
+    approach_world = np.zeros(3)
+    approach_world[k] = -sign
+    across = [a for a in range(3) if a != k]
+    closing_world = np.zeros(3)
+    thin = min(across, key=lambda a: hi[a] - lo[a])
+    closing_world[thin] = 1.0
+    position = (inv @ np.array([*grasp_world, 1.0]))[:3]
+    vlo, vhi = vertices.min(0), vertices.max(0)
+    revolute = joint["type"] == "revolute"
     needs = joint.get("requires_open")
     return {
-        "joint": joint["name"], "joint_type": joint["type"], "link": link, "part_class": part,
-        "handle_class": "line_fixed_handle",
-        "box": {"center": center.tolist(), "size": size.tolist(), "quat_wxyz": [1.0, 0.0, 0.0, 0.0]},
-        "grasps": [{"position": position.tolist(), "approach": [-1.0, 0.0, 0.0], "closing": closing,
-                    "width": width}],
-        "action": action, "rest": float(joint["lower"]), "open": opened,
+        "joint": joint["name"], "joint_type": joint["type"], "link": joint["child"],
+        "part_class": "hinge_door" if revolute else "slider_drawer", "handle_class": "line_fixed_handle",
+        "box": {"center": ((vlo + vhi) / 2).tolist(), "size": (vhi - vlo).tolist(), "quat_wxyz": [1.0, 0, 0, 0]},
+        "grasps": [{"position": position.tolist(), "approach": (inv[:3, :3] @ approach_world).tolist(),
+                    "closing": (inv[:3, :3] @ closing_world).tolist(), "width": float(hi[thin] - lo[thin])}],
+        "action": "pull", "rest": float(ctx.rest_qpos[qi]), "open": opened,
         "open_threshold": 0.9, "closed_threshold": 0.05,
-        "path": [p.tolist() for p in path],
+        "path": _path(art, qi, ctx.rest_qpos, link, position, opened),
         "requires_open": [groups[g] for g in ([needs] if isinstance(needs, str) else needs or []) if g in groups],
     }
 
 
 def write_annotations(folder: str | Path) -> list[dict]:
-    """Write ``annotations.json`` into ``folder`` for every handled door and drawer hung off the root link;
-    returns the targets."""
+    """Write ``annotations.json`` into ``folder`` for every door or drawer (a revolute ``hinge`` or prismatic
+    ``slide`` joint, not a lever or a folding handle) whose link has a handle mesh; returns the targets."""
+    from infmob_usd.validate.sim import _context, _find_urdf, _read_meta, load_sapien
+
     folder = Path(folder)
-    meta = json.loads((folder / "metadata.json").read_text())
-    root = meta["links"][0]["name"]
-    groups = {j["child"]: j["name"] for j in meta["joints"]}
-    targets = [t for j in meta["joints"] if j["parent"] == root
-               for t in [_target(folder, j, groups)] if t is not None]
+    meta = _read_meta(folder)
+    urdf = _find_urdf(folder, meta)
+    scene, art = load_sapien(urdf)
+    ctx = _context(folder, meta, urdf, scene, art)
+    names = [j.name for j in ctx.joints]
+    groups = {j.get("group", j["child"]): j["name"] for j in meta["joints"]}
+    art.set_qpos(ctx.rest_qpos.astype(np.float32))
+    targets = []
+    for joint in meta["joints"]:
+        vertices = _handle(folder, joint["child"])
+        operated = (joint.get("role") in ("hinge", "slide") and "lever" not in joint["name"]
+                    and joint["child"] != "handle")
+        if operated and joint["type"] in ("revolute", "prismatic") and vertices is not None and joint["name"] in names:
+            targets.append(_target(art, ctx, names.index(joint["name"]), joint, vertices, groups))
     doc = {"format": "infmob-annotations/1",
            "units": "metres, radians for revolute/continuous joints, metres for prismatic; Z up, fronts face +X",
            "targets": targets}

@@ -32,6 +32,8 @@ from __future__ import annotations
 
 import json
 import math
+import re
+import statistics
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,9 +42,10 @@ import numpy as np
 
 from .result import CheckResult
 
-__all__ = ["Attempt", "Gripper", "check_robot", "read_annotations", "run_target"]
+__all__ = ["Attempt", "Gripper", "check_robot", "read_annotations", "robot_table", "run_target"]
 
 FORMAT = "infmob-annotations/1"
+ALL, JOINTS = "all", "all joints"
 TCP_OFFSET = 0.1034  # m, panda_hand -> panda_hand_tcp (the middle of the finger pads), from the URDF
 FINGER_OPEN = 0.04  # m per finger, the Panda hand's stroke (0.08 m between the fingers)
 PREGRASP = 0.10  # m back from the grasp along the approach where the hand appears
@@ -503,3 +506,52 @@ def check_robot(folder: str | Path) -> list[CheckResult]:
         results.append(CheckResult("robot", a.ok, f"{a.joint} ({a.part}): {a.describe()}"
                                                   f" [{time.perf_counter() - t0:.2f} s]"))
     return results
+
+
+# --------------------------------------------------------------------------- summary
+
+_DETAIL = re.compile(r"^(?P<joint>\S+) \((?P<part>[^)]*)\): (?P<what>[^;]*)")
+
+
+def robot_table(rows) -> str:
+    """The robot check's summary: joints opened / attempted per part class (rows) and category (columns),
+    the median wall seconds per joint, and the count of each failure reason. ``rows`` as for
+    :func:`~.report.summary_table`; skipped objects (no annotations) are left out."""
+    from .report import seconds
+
+    cells: dict[tuple[str, str], list[int]] = {}
+    times: dict[str, list[float]] = {}
+    reasons: dict[str, int] = {}
+    categories: list[str] = []
+    for row in rows:
+        category, results = row[0], row[1]
+        for r in results:
+            m = _DETAIL.match(r.detail or "") if r.name == "robot" else None
+            if not m:
+                continue
+            categories += [] if category in categories else [category]
+            for key in ((m["part"], category), (m["part"], ALL), (JOINTS, category), (JOINTS, ALL)):
+                c = cells.setdefault(key, [0, 0])
+                c[0] += bool(r.ok)
+                c[1] += 1
+            s = seconds(r)
+            for key in (category, ALL):
+                times.setdefault(key, []).extend([] if s is None else [s])
+            if not r.ok:
+                reason = m["what"].split(" (")[0]
+                reasons[reason] = reasons.get(reason, 0) + 1
+    if not categories:
+        return "robot: no annotated joints"
+    columns = [*categories, ALL]
+    parts = sorted({p for p, _c in cells if p != JOINTS})
+    table = [["robot: joints opened", *columns]]
+    for part in [*parts, JOINTS]:
+        table.append([part, *(f"{cells[(part, c)][0]}/{cells[(part, c)][1]}" if (part, c) in cells else "-"
+                              for c in columns)])
+    table.append(["seconds per joint", *(f"{statistics.median(times[c]):.2f}" if times.get(c) else "-"
+                                         for c in columns)])
+    widths = [max(len(r[i]) for r in table) for i in range(len(columns) + 1)]
+    lines = ["  ".join(cell.ljust(w) for cell, w in zip(r, widths)).rstrip() for r in table]
+    if reasons:
+        lines.append("failures: " + "; ".join(f"{n} {why}" for why, n in sorted(reasons.items(), key=lambda x: -x[1])))
+    return "\n".join(lines)
