@@ -19,8 +19,9 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
 
 Success: the joint passes ``rest + open_threshold * (open - rest)`` while both fingers still touch the
 operated link. A failure names why: ``approach blocked by LINK``, ``missed handle`` (the fingers closed on
-nothing, or on another link), ``slipped``, ``blocked by LINK`` (the moving part presses on another link or
-its own root), ``too stiff`` (the arm pulls with its full force and the joint does not follow), ``stalled``.
+nothing, or on another link), ``slipped``, ``blocked by LINK`` (the moving part presses on another link),
+``gripper blocked by LINK``, ``held at its joint limit`` (the path pushes the joint against a stop),
+``too stiff`` (the arm pulls with its full force and the joint does not follow), ``stalled``.
 
 The scene has no floor (an appliance stands on a counter, and the hand may pass below the counter's edge;
 a part swinging into the floor is the ``reach`` check's finding). The gripper's fingers carry ManiSkill's
