@@ -157,6 +157,23 @@ def find_objects(paths) -> list[Path]:
     return found
 
 
+def find_scenes(paths) -> list[Path]:
+    """Scene folders (with ``scene.json``) among ``paths``: each path is a scene folder or a folder of them."""
+    found: set[Path] = set()
+    for p in map(Path, paths):
+        if (p / "scene.json").is_file():
+            found.add(p)
+        elif p.is_dir():
+            found |= {q.parent for q in p.rglob("scene.json")
+                      if not any(part.startswith(".") for part in q.relative_to(p).parts)}
+    return sorted(found)
+
+
+def outside_scenes(objects: list[Path], scenes: list[Path]) -> list[Path]:
+    """``objects`` that are not inside one of ``scenes`` (a scene's own objects are shown as the scene)."""
+    return [o for o in objects if not any(s in o.parents for s in scenes)]
+
+
 def object_files(folder: Path, meta: dict | None = None) -> tuple[Path, Path]:
     """``(usd, urdf)`` of an object folder, found by its files, not by the folder's name.
 

@@ -127,3 +127,20 @@ def render_scene(folder, width: int = 1024, height: int = 768, fraction: float =
         return np.clip(rgb * 255 + 0.5, 0, 255).astype(np.uint8)
     finally:
         on.close()
+
+
+def scene_previews(folder, out=None, width: int = 1024, height: int = 768) -> dict[str, Path]:
+    """Write ``preview.png`` (at rest) and ``preview_open.png`` (every joint fully open) of the scene folder
+    into ``out`` (default: the scene folder); returns ``{name: path}``."""
+    import cv2
+
+    folder = Path(folder)
+    out = Path(out) if out is not None else folder
+    out.mkdir(parents=True, exist_ok=True)
+    written = {}
+    for fraction, name in ((0.0, "preview.png"), (1.0, "preview_open.png")):
+        path = out / name
+        if not cv2.imwrite(str(path), render_scene(folder, width, height, fraction=fraction)[..., ::-1]):
+            raise OSError(f"cannot write {path}")
+        written[name] = path
+    return written
