@@ -4,9 +4,9 @@ folder, so that the robot check can be exercised before the build writes ``annot
 Covers the simple case only: a movable link with a handle drawn as its own visual mesh,
 ``meshes/<link>__handle_handle.obj`` or ``meshes/<link>__pull.obj`` (vertices in the link frame: the writer
 puts visuals at the link origin). The grasp is the middle of the handle's face towards where the handle first
-moves when the joint opens, approached against that motion along the nearest world axis, the fingers closing
-across the handle's thinner other side; the path is the grasp point moved by the joint in SAPIEN with every
-other joint at rest.
+moves when the joint opens (a sliding door or sash: its front, +X), approached against that motion along the
+nearest world axis, the fingers closing across the handle's thinner other side; the path is the grasp point
+moved by the joint in SAPIEN with every other joint at rest.
 """
 
 from __future__ import annotations
@@ -59,6 +59,8 @@ def _target(art, ctx, qi: int, joint: dict, vertices: np.ndarray, groups: dict[s
     centre = (vertices.min(0) + vertices.max(0)) / 2
     start = _path(art, qi, ctx.rest_qpos, link, centre, opened)[:2]
     pull = np.asarray(start[1]) - np.asarray(start[0])  # where the handle goes first (root frame = world here)
+    if joint["type"] == "prismatic" and "drawer" not in link.name:
+        pull = np.array([1.0, 0.0, 0.0])  # a sliding door or sash: its handle is taken from the front
     k = int(np.argmax(np.abs(pull)))  # handles are axis-aligned at rest: the world axis nearest the pull
     sign = float(np.sign(pull[k]))
     world = (pose[:3, :3] @ vertices.T).T + pose[:3, 3]

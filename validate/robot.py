@@ -10,6 +10,8 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    six virtual joints carry the hand, two prismatic fingers) appears :data:`PREGRASP` back from the first
    grasp frame, fingers open, and moves along ``approach`` to the grasp (and up to :data:`INSET` further,
    towards the middle of the handle's box);
+   (when the hand cannot get there or closes on nothing, the next annotated grasp is tried, and each grasp
+   also turned a quarter about its approach where the handle's box fits between the fingers that way);
 3. the fingers close along ``closing`` with the Panda hand's continuous grip force (:data:`GRIP_FORCE`);
 4. the hand follows ``path`` (the grasp point over the joint's range) through a compliant controller:
    PhysX drives on the six virtual joints with a stiffness, damping and a force / torque limit
@@ -156,8 +158,15 @@ class Path3:
         return self.points[i] + t * (self.points[i + 1] - self.points[i])
 
     def tangent(self, s: float) -> np.ndarray:
-        i, _ = self._segment(s)
-        return _unit(self.points[i + 1] - self.points[i])
+        """The direction at ``s``, blended between the chords on either side of each chord's middle (the
+        true tangent there for an arc), so that a turning hand turns smoothly and not in 11 steps."""
+        i, t = self._segment(s)
+        here = _unit(self.points[i + 1] - self.points[i])
+        other = i - 1 if t < 0.5 else i + 1
+        if not 0 <= other < len(self.lengths) or self.lengths[other] < 1e-9:
+            return here
+        w = abs(t - 0.5)
+        return _unit((1 - w) * here + w * _unit(self.points[other + 1] - self.points[other]))
 
     def nearest(self, p) -> float:
         """Arc length of the path's point nearest to ``p``."""
@@ -359,10 +368,39 @@ class _Run:
                        reason, self.time)
 
 
-def _grasp_frames(run: _Run) -> tuple[np.ndarray, np.ndarray, float]:
-    """The TCP pose at the grasp (world, moved up to :data:`INSET` towards the handle box's middle), the
+def _quat_matrix(q) -> np.ndarray:
+    w, x, y, z = _unit(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def box_extent(box, direction) -> float | None:
+    """The length of an annotation's oriented box along a link-frame direction (``None``: no box)."""
+    if not isinstance(box, dict) or "size" not in box:
+        return None
+    r = _quat_matrix(box.get("quat_wxyz") or [1.0, 0.0, 0.0, 0.0])
+    return float(np.abs(r.T @ _unit(direction)) @ np.asarray(box["size"], float))
+
+
+def grasp_candidates(target: dict) -> list[dict]:
+    """The annotated grasps in order, each followed by itself turned a quarter about its approach when the
+    handle's box fits between the open fingers that way (a knob or a short pull under a worktop, where the
+    hand's 0.2 m across the fingers does not fit the annotated way)."""
+    out = []
+    for g in target["grasps"]:
+        out.append(g)
+        turned = np.cross(_unit(g["approach"]), _unit(g["closing"]))
+        extent = box_extent(target.get("box"), turned)
+        if extent is not None and extent <= 2 * FINGER_OPEN - 0.005:
+            out.append({**g, "closing": turned.tolist(), "width": extent})
+    return out
+
+
+def _grasp_frames(run: _Run, g: dict) -> tuple[np.ndarray, np.ndarray, float]:
+    """The TCP pose at grasp ``g`` (world, moved up to :data:`INSET` towards the handle box's middle), the
     pre-grasp pose, and the finger opening (per finger) to approach with."""
-    target, g = run.target, run.target["grasps"][0]
+    target = run.target
     link = _matrix(run.link.entity_pose)
     rot = link[:3, :3]
     approach = _unit(rot @ np.asarray(g["approach"], float))
@@ -429,12 +467,7 @@ def _pull(run: _Run, grasp: np.ndarray) -> Attempt:
     path = Path3(pts)
     if path.length < 0.005:
         return run.fail("not attempted: the path is shorter than 5 mm (turning in place is not supported)")
-    h = min(0.02, path.length / 20)
-
-    def tangent(s: float) -> np.ndarray:
-        return _unit(path.at(min(s + h, path.length)) - path.at(max(s - h, 0.0)))
-
-    t0, offset = tangent(0.0), grasp[:3, 3] - path.at(0.0)
+    t0, offset = path.tangent(0.0), grasp[:3, 3] - path.at(0.0)
     threshold = float(run.target["open_threshold"])
     goal, best, best_time, lost = 0.0, 0.0, run.time, 0.0
     end = run.time + path.length / SPEED + EXTRA_TIME
@@ -442,7 +475,7 @@ def _pull(run: _Run, grasp: np.ndarray) -> Attempt:
     while run.time < end:
         here = path.nearest(run.gripper.tcp()[:3, 3])
         goal = min(path.length, goal + SPEED * run.dt, here + LEAD)
-        turn = rotation_between(t0, tangent(goal))
+        turn = rotation_between(t0, path.tangent(here))  # the part turns as far as the hand has come
         run.gripper.move(_pose(turn @ grasp[:3, :3], path.at(goal) + turn @ offset))
         run.step()
         step += 1
@@ -475,14 +508,17 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
         if name in names:
             i = names.index(name)
             q[i] = (opened or {}).get(name, ctx.loaded[i].upper)
-    ctx.reset(q)
-    ctx.make_passive()
-    run = _Run(ctx, gripper, target)
-    grasp, pre, opening = _grasp_frames(run)
-    why = _approach(run, grasp, pre, opening)
-    if why:
-        return run.fail(why)
-    return _pull(run, grasp)
+    first = None
+    for g in grasp_candidates(target):  # the next grasp only when this one could not be taken
+        ctx.reset(q)
+        ctx.make_passive()
+        run = _Run(ctx, gripper, target)
+        grasp, pre, opening = _grasp_frames(run, g)
+        why = _approach(run, grasp, pre, opening)
+        if not why:
+            return _pull(run, grasp)
+        first = first or run.fail(why)
+    return first
 
 
 def check_robot(folder: str | Path) -> list[CheckResult]:
