@@ -90,9 +90,50 @@ def _target(art, ctx, qi: int, joint: dict, vertices: np.ndarray, groups: dict[s
     }
 
 
-def write_annotations(folder: str | Path) -> list[dict]:
+def _link_vertices(folder: Path, link: str) -> np.ndarray | None:
+    """Every visual mesh vertex of ``link`` (link frame)."""
+    meshes = [m for m in sorted((folder / "meshes").glob(f"{link}__*.obj")) if "__collision" not in m.name]
+    return np.concatenate([_obj_vertices(m) for m in meshes]) if meshes else None
+
+
+def _small_part(art, ctx, qi: int, joint: dict, vertices: np.ndarray) -> dict:
+    """A button (pressed along its motion, with the closed fingers' tips on its outer face) or a knob (held on
+    its axis by its sides, turned in place: its path is a point)."""
+    link = art.find_link_by_name(joint["child"])
+    pose = _matrix(link.entity_pose)
+    inv = np.linalg.inv(pose)
+    sim_joint = ctx.joints[qi]
+    axis = _matrix(sim_joint.get_global_pose())[:3, 0]  # PhysX: the joint axis is its frame's x (world)
+    pivot = _matrix(sim_joint.get_global_pose())[:3, 3]
+    world = (pose[:3, :3] @ vertices.T).T + pose[:3, 3]
+    lo, hi = world.min(0), world.max(0)
+    button = joint["type"] == "prismatic"
+    out = -axis if button else axis * np.sign(float(np.mean((world - pivot) @ axis)) or 1.0)  # away from the body
+    face = (lo + hi) / 2 if button else pivot + axis * float(np.dot((lo + hi) / 2 - pivot, axis))
+    face = face + out * (float(np.max((world - face) @ out)))  # on the outer face, on the centre line
+    k = int(np.argmax(np.abs(out)))
+    across = [a for a in range(3) if a != k]
+    thin = min(across, key=lambda a: hi[a] - lo[a])
+    closing = np.eye(3)[thin]
+    position = (inv @ np.array([*face, 1.0]))[:3]
+    opened = float(joint["upper"]) if joint["type"] != "continuous" else float(np.pi / 2)
+    vlo, vhi = vertices.min(0), vertices.max(0)
+    return {
+        "joint": joint["name"], "joint_type": joint["type"], "link": joint["child"],
+        "part_class": "slider_button" if button else "hinge_knob", "handle_class": None,
+        "box": {"center": ((vlo + vhi) / 2).tolist(), "size": (vhi - vlo).tolist(), "quat_wxyz": [1.0, 0, 0, 0]},
+        "grasps": [{"position": position.tolist(), "approach": (inv[:3, :3] @ -out).tolist(),
+                    "closing": (inv[:3, :3] @ closing).tolist(), "width": float(hi[thin] - lo[thin])}],
+        "action": "press" if button else "turn", "rest": float(ctx.rest_qpos[qi]), "open": opened,
+        "open_threshold": 0.9, "closed_threshold": 0.05,
+        "path": _path(art, qi, ctx.rest_qpos, link, position, opened), "requires_open": [],
+    }
+
+
+def write_annotations(folder: str | Path, small_parts: bool = False) -> list[dict]:
     """Write ``annotations.json`` into ``folder`` for every door or drawer (a revolute ``hinge`` or prismatic
-    ``slide`` joint, not a lever or a folding handle) whose link has a handle mesh; returns the targets."""
+    ``slide`` joint, not a lever or a folding handle) whose link has a handle mesh, and with ``small_parts``
+    every ``button`` and ``knob`` joint hung off the root link; returns the targets."""
     from infmob_usd.validate.sim import _context, _find_urdf, _read_meta, load_sapien
 
     folder = Path(folder)
@@ -110,6 +151,11 @@ def write_annotations(folder: str | Path) -> list[dict]:
                     and joint["child"] != "handle")
         if operated and joint["type"] in ("revolute", "prismatic") and vertices is not None and joint["name"] in names:
             targets.append(_target(art, ctx, names.index(joint["name"]), joint, vertices, groups))
+        small = joint.get("role") in ("button", "knob") and joint["parent"] == meta["links"][0]["name"]
+        if small_parts and small and joint["name"] in names and joint["type"] != "fixed":
+            vertices = _link_vertices(folder, joint["child"])
+            if vertices is not None:
+                targets.append(_small_part(art, ctx, names.index(joint["name"]), joint, vertices))
     doc = {"format": "infmob-annotations/1",
            "units": "metres, radians for revolute/continuous joints, metres for prismatic; Z up, fronts face +X",
            "targets": targets}

@@ -10,20 +10,23 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    six virtual joints carry the hand, two prismatic fingers) appears :data:`PREGRASP` back from the first
    grasp frame, fingers open, and moves along ``approach`` to the grasp (and up to :data:`INSET` further,
    towards the middle of the handle's box);
-   (when the hand cannot get there or closes on nothing, the next annotated grasp is tried, and each grasp
-   also turned a quarter about its approach where the handle's box fits between the fingers that way);
-3. the fingers close along ``closing`` with the Panda hand's continuous grip force (:data:`GRIP_FORCE`);
+3. the fingers close along ``closing`` with the Panda hand's continuous grip force (:data:`GRIP_FORCE`).
+   When the hand cannot get to a grasp or closes on nothing, the next annotated grasp is tried, each also
+   turned a quarter about its approach where the handle's box fits between the fingers that way. A
+   ``press`` or ``push`` is done with the closed fingers' tips on the first grasp, without a grasp;
 4. the hand follows ``path`` (the grasp point over the joint's range) through a compliant controller:
    PhysX drives on the six virtual joints with a stiffness, damping and a force / torque limit
    (:data:`ARM_FORCE`, :data:`ARM_TORQUE`: what a Panda arm exerts at its hand), their target moving along
    the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is; the hand turns
-   as the path's tangent turns (a door's handle turns with the door).
+   as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
+   on its axis) is turned in place about the joint's axis, read from the loaded URDF.
 
 Success: the joint passes ``rest + open_threshold * (open - rest)`` while both fingers still touch the
-operated link. A failure names why: ``approach blocked by LINK``, ``missed handle`` (the fingers closed on
-nothing, or on another link), ``slipped``, ``blocked by LINK`` (the moving part presses on another link),
-``gripper blocked by LINK``, ``held at its joint limit`` (the path pushes the joint against a stop),
-``too stiff`` (the arm pulls with its full force and the joint does not follow), ``stalled``.
+operated link (a press or push: the joint passing is enough). A failure names why: ``approach blocked by
+LINK``, ``missed handle`` (the fingers closed on nothing, or on another link), ``slipped``, ``blocked by
+LINK`` (the moving part presses on another link), ``gripper blocked by LINK``, ``held at its joint limit``
+(the path pushes the joint against a stop), ``too stiff`` (the arm pulls with its full force and the joint
+does not follow), ``stalled``.
 
 The scene has no floor (an appliance stands on a counter, and the hand may pass below the counter's edge;
 a part swinging into the floor is the ``reach`` check's finding). The gripper's fingers carry ManiSkill's
@@ -69,6 +72,11 @@ ROT_STIFFNESS = 60.0  # N m/rad
 ROT_DAMPING = 1.5  # N m s/rad
 SPEED = 0.25  # m/s along the path
 LEAD = 0.05  # m the path target may run ahead of the hand's own place on the path
+MIN_PATH = 0.0005  # m: a shorter path is a point (turned in place, if the joint turns)
+TURN_SPEED = 1.5  # rad/s turning in place
+TURN_LEAD = 0.35  # rad the turn may run ahead of the hand
+PRESS_ACTIONS = ("press", "push")  # pressed with the closed fingers' tips, no grasp
+FINGERTIP = 0.0095  # m from the TCP to the tips of the closed fingers (panda_v2_gripper.urdf)
 STALL_TIME = 1.0  # s without 2 mm of progress along the path ends an attempt
 SLIP_TIME = 0.25  # s without both fingers on the part before it counts as slipped
 EXTRA_TIME = 2.0  # s allowed beyond the path length / SPEED
@@ -251,8 +259,14 @@ class Gripper:
         self.grip(opening)
 
     def move(self, tcp: np.ndarray) -> None:
-        """Drive the TCP towards pose ``tcp`` (4x4, world) through the compliant virtual joints."""
-        for j, v in zip(self.virtual, self._joint_values(tcp), strict=True):
+        """Drive the TCP towards pose ``tcp`` (4x4, world) through the compliant virtual joints (each angle
+        taken within half a turn of where its joint is, so that a knob turned past 180 degrees goes on)."""
+        values = self._joint_values(tcp)
+        q = np.asarray(self.art.qpos, float)
+        for i, j in enumerate(self.virtual[3:], start=3):
+            now = q[self.index[j.name]]
+            values[i] = now + (values[i] - now + math.pi) % (2 * math.pi) - math.pi
+        for j, v in zip(self.virtual, values, strict=True):
             j.set_drive_target(float(v))
 
     def grip(self, opening: float) -> None:
@@ -411,13 +425,17 @@ def _grasp_frames(run: _Run, g: dict) -> tuple[np.ndarray, np.ndarray, float]:
         centre = (link @ np.array([*map(float, box["center"]), 1.0]))[:3]
         inset = min(INSET, max(0.0, float(np.dot(centre - position, approach))))
     hand = hand_rotation(approach, rot @ np.asarray(g["closing"], float))
+    pre = _pose(hand, position - approach * PREGRASP)
+    if target.get("action") in PRESS_ACTIONS:  # the closed fingers' tips on the surface
+        return _pose(hand, position - approach * FINGERTIP), pre, 0.0
     width = float(g.get("width") or 2 * FINGER_OPEN)
     opening = min(FINGER_OPEN, width / 2 + 0.01)
-    return _pose(hand, position + approach * inset), _pose(hand, position - approach * PREGRASP), opening
+    return _pose(hand, position + approach * inset), pre, opening
 
 
-def _approach(run: _Run, grasp: np.ndarray, pre: np.ndarray, opening: float) -> str:
-    """Move from the pre-grasp to the grasp and close the fingers; returns why it failed, or ""."""
+def _approach(run: _Run, grasp: np.ndarray, pre: np.ndarray, opening: float, grip: bool = True) -> str:
+    """Move from the pre-grasp to the grasp and (with ``grip``) close the fingers; returns why it failed,
+    or ""."""
     g = run.gripper
     g.place(pre, opening)
     n = max(1, int(round(APPROACH_TIME / run.dt)))
@@ -431,6 +449,8 @@ def _approach(run: _Run, grasp: np.ndarray, pre: np.ndarray, opening: float) -> 
     if miss > 0.01:
         on = run.gripper_on(run.contacts())
         return f"approach blocked by {', '.join(on) or 'the operated part'} ({miss * 1000:.0f} mm short)"
+    if not grip:
+        return ""
     g.grip(0.0)
     run.step(int(round(CLOSE_TIME / run.dt)))
     pairs = run.contacts()
@@ -460,31 +480,97 @@ def _diagnose(run: _Run, pairs) -> str:
     return "stalled (the hand stopped on the path with no contact and little force)"
 
 
-def _pull(run: _Run, grasp: np.ndarray) -> Attempt:
-    """Follow the annotated path with the compliant hand until the joint passes its open threshold."""
+class PathMotion:
+    """Along the annotated path (the grasp point over the range): progress is arc length (m); the hand turns
+    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
+   on its axis) is turned in place about the joint's axis, read from the loaded URDF."""
+
+    speed, lead = SPEED, LEAD
+
+    def __init__(self, path: Path3, grasp: np.ndarray):
+        self.path, self.grasp = path, grasp
+        self.length = path.length
+        self.eps = min(0.002, path.length / 20)  # progress that is not a stall (a button travels ~2 mm)
+        self.t0, self.offset = path.tangent(0.0), grasp[:3, 3] - path.at(0.0)
+
+    def progress(self, tcp: np.ndarray) -> float:
+        return self.path.nearest(tcp[:3, 3])
+
+    def pose(self, here: float, goal: float) -> np.ndarray:
+        turn = rotation_between(self.t0, self.path.tangent(here))  # the part turns as far as the hand has come
+        return _pose(turn @ self.grasp[:3, :3], self.path.at(goal) + turn @ self.offset)
+
+
+def _about(axis: np.ndarray, angle: float) -> np.ndarray:
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+class TurnMotion:
+    """Turning in place about the joint's axis (a knob grasped on its axis, whose path is a point): progress
+    is the hand's angle about the axis (rad), unwrapped past half a turn."""
+
+    speed, lead, eps = TURN_SPEED, TURN_LEAD, 0.02  # rad
+
+    def __init__(self, pivot: np.ndarray, axis: np.ndarray, angle: float, grasp: np.ndarray):
+        self.pivot, self.axis, self.grasp = pivot, _unit(axis) * (1 if angle >= 0 else -1), grasp
+        self.length = abs(angle)
+        k = int(np.argmin(np.abs(grasp[:3, :3].T @ self.axis)))  # the hand's axis most across the turn axis
+        self.k = k
+        self.ref, self.angle = self._across(grasp), 0.0
+
+    def _across(self, tcp: np.ndarray) -> np.ndarray:
+        v = tcp[:3, self.k]
+        return _unit(v - self.axis * float(v @ self.axis))
+
+    def progress(self, tcp: np.ndarray) -> float:
+        u = self._across(tcp)
+        a = math.atan2(float(np.cross(self.ref, u) @ self.axis), float(self.ref @ u))
+        self.angle += (a - self.angle + math.pi) % (2 * math.pi) - math.pi  # unwrapped
+        return self.angle
+
+    def pose(self, here: float, goal: float) -> np.ndarray:
+        r = _about(self.axis, goal)
+        return _pose(r @ self.grasp[:3, :3], self.pivot + r @ (self.grasp[:3, 3] - self.pivot))
+
+
+def _motion(run: _Run, grasp: np.ndarray):
+    """How the hand moves the part: along the annotated path, or turning in place about the joint's axis
+    when the path is a point (a knob held on its axis)."""
     root = _matrix(run.art.root.entity_pose)
-    pts = [(root @ np.array([*map(float, p), 1.0]))[:3] for p in run.target["path"]]
-    path = Path3(pts)
-    if path.length < 0.005:
-        return run.fail("not attempted: the path is shorter than 5 mm (turning in place is not supported)")
-    t0, offset = path.tangent(0.0), grasp[:3, 3] - path.at(0.0)
+    path = Path3([(root @ np.array([*map(float, p), 1.0]))[:3] for p in run.target["path"]])
+    if path.length >= MIN_PATH:
+        return PathMotion(path, grasp)
+    joint = run.ctx.joints[run.qi]
+    if joint.type not in ("revolute", "revolute_unwrapped"):
+        return None
+    frame = _matrix(joint.get_global_pose())  # PhysX: the joint's axis is its frame's x
+    return TurnMotion(frame[:3, 3], frame[:3, 0], run.open - run.rest, grasp)
+
+
+def _follow(run: _Run, grasp: np.ndarray, grip: bool) -> Attempt:
+    """Move the part with the compliant hand until the joint passes its open threshold; with ``grip`` the
+    fingers must keep hold of it (a press or a push needs no hold)."""
+    motion = _motion(run, grasp)
+    if motion is None:
+        return run.fail(f"not attempted: the path is shorter than {MIN_PATH * 1000:g} mm and the joint does not"
+                        " turn")
     threshold = float(run.target["open_threshold"])
     goal, best, best_time, lost = 0.0, 0.0, run.time, 0.0
-    end = run.time + path.length / SPEED + EXTRA_TIME
+    end = run.time + motion.length / motion.speed + EXTRA_TIME
     step = 0
     while run.time < end:
-        here = path.nearest(run.gripper.tcp()[:3, 3])
-        goal = min(path.length, goal + SPEED * run.dt, here + LEAD)
-        turn = rotation_between(t0, path.tangent(here))  # the part turns as far as the hand has come
-        run.gripper.move(_pose(turn @ grasp[:3, :3], path.at(goal) + turn @ offset))
+        here = motion.progress(run.gripper.tcp())
+        goal = min(motion.length, goal + motion.speed * run.dt, here + motion.lead)
+        run.gripper.move(motion.pose(here, goal))
         run.step()
         step += 1
-        if here > best + 0.002:
+        if here > best + motion.eps:
             best, best_time = here, run.time
         if step % CONTACT_EVERY:
             continue
         pairs = run.contacts()
-        held = run.held(pairs)
+        held = run.held(pairs) or not grip
         lost = 0.0 if held else lost + CONTACT_EVERY * run.dt
         if held and run.fraction() >= threshold:
             return Attempt(run.target["joint"], str(run.target.get("part_class")), True, run.fraction(), "",
@@ -509,14 +595,15 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
             i = names.index(name)
             q[i] = (opened or {}).get(name, ctx.loaded[i].upper)
     first = None
-    for g in grasp_candidates(target):  # the next grasp only when this one could not be taken
+    grip = target.get("action") not in PRESS_ACTIONS
+    for g in grasp_candidates(target) if grip else target["grasps"]:  # the next only when one cannot be taken
         ctx.reset(q)
         ctx.make_passive()
         run = _Run(ctx, gripper, target)
         grasp, pre, opening = _grasp_frames(run, g)
-        why = _approach(run, grasp, pre, opening)
+        why = _approach(run, grasp, pre, opening, grip)
         if not why:
-            return _pull(run, grasp)
+            return _follow(run, grasp, grip)
         first = first or run.fail(why)
     return first
 
