@@ -57,6 +57,22 @@ def test_the_gripper_opens_a_drawer_and_a_door(cabinet):
     assert "(slider_drawer): opened" in results[0].detail and "(hinge_door): opened" in results[1].detail
 
 
+def test_the_gripper_presses_a_button_and_turns_a_dial(tmp_path):
+    folder = Path(infmob_usd.save(infmob_usd.generate("toaster", 0, texture_size=16), tmp_path))
+    targets = write_annotations(folder, small_parts=True)
+    keep = [next(t for t in targets if t["action"] == a) for a in ("press", "turn")]
+    _write(folder, keep)
+    results = robot.check_robot(folder)
+    assert all(r.ok for r in results), [r.detail for r in results]
+    assert "(slider_button): opened" in results[0].detail and "(hinge_knob): opened" in results[1].detail
+    # the fingers pressed on the body beside the button: the button stays out, and the report says why
+    g = keep[0]["grasps"][0]
+    g["position"] = (np.asarray(g["position"]) + 0.05 * np.asarray(g["closing"])).tolist()
+    _write(folder, keep[:1])
+    [r] = robot.check_robot(folder)
+    assert not r.ok and "blocked by" in r.detail, r.detail
+
+
 def test_a_grasp_beside_the_handle_misses(cabinet, tmp_path):
     def beside(targets):
         t = targets[0]
