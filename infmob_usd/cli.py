@@ -571,10 +571,9 @@ def cmd_validate(args) -> int:
     from .validate.files import load_metadata
     from .validate.report import report_json, summary_table
 
-    if args.usd_only and args.sim:
-        return _fail("--usd-only and --sim contradict each other; choose one")
-    if args.usd_only and args.robot:
-        return _fail("--usd-only and --robot contradict each other; choose one")
+    for flag in ("sim", "robot"):
+        if args.usd_only and getattr(args, flag):
+            return _fail(f"--usd-only and --{flag} contradict each other; choose one")
     workers = _workers(args.workers)
     if args.out and args.sweep is None:
         return _fail("--out is only used with --sweep; drop it or add --sweep N")
@@ -633,11 +632,7 @@ def cmd_validate(args) -> int:
             # temporary folder being gone), so that copies of one object stay apart
             rows.append((category, report.checks, str(folder.relative_to(out)) if tmp else str(folder)))
         print(f"\n{n_ok}/{len(folders)} objects passed every check\n")
-        print(summary_table(rows))
-        if args.robot:
-            from .validate.robot import robot_table
-
-            print("\n" + robot_table(rows))
+        print(summary_table(rows) + (f"\n\n{_robot_table(rows)}" if args.robot else ""))
         if report_path:
             _write_file(report_path, json.dumps(report_json(rows), indent=2) + "\n")
         scenes_ok, scenes = _validate_scenes(paths, args) if not args.usd_only else (0, 0)
@@ -645,6 +640,12 @@ def cmd_validate(args) -> int:
     finally:
         if tmp:
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _robot_table(rows) -> str:
+    from .validate.robot import robot_table
+
+    return robot_table(rows)
 
 
 def _validate_scenes(paths, args) -> tuple[int, int]:
