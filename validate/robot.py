@@ -17,7 +17,8 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
 4. the hand follows ``path`` (the grasp point over the joint's range) through a compliant controller:
    PhysX drives on the six virtual joints with a stiffness, damping and a force / torque limit
    (:data:`ARM_FORCE`, :data:`ARM_TORQUE`: what a Panda arm exerts at its hand), their target moving along
-   the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is; the hand turns
+   the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is (up to ``LEAD``
+   past the path's end: a compliant hand lags its target by force / stiffness); the hand turns
    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
    on its axis) is turned in place about the joint's axis, read from the loaded URDF.
 
@@ -162,6 +163,10 @@ class Path3:
         return i, (s - self.cum[i]) / max(self.lengths[i], 1e-12)
 
     def at(self, s: float) -> np.ndarray:
+        """The point at arc length ``s``; past the end, on the last chord's line (a compliant hand's target
+        runs past the end so that the hand itself gets there against the part's resistance)."""
+        if s > self.length:
+            return self.points[-1] + (s - self.length) * _unit(self.points[-1] - self.points[-2])
         i, t = self._segment(s)
         return self.points[i] + t * (self.points[i + 1] - self.points[i])
 
@@ -561,7 +566,7 @@ def _follow(run: _Run, grasp: np.ndarray, grip: bool) -> Attempt:
     step = 0
     while run.time < end:
         here = motion.progress(run.gripper.tcp())
-        goal = min(motion.length, goal + motion.speed * run.dt, here + motion.lead)
+        goal = min(motion.length + motion.lead, goal + motion.speed * run.dt, here + motion.lead)
         run.gripper.move(motion.pose(here, goal))
         run.step()
         step += 1
