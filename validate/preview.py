@@ -305,7 +305,13 @@ def main(args) -> int:
             from .scene_preview import scene_previews
 
             side = args.size or 1024
-            written = scene_previews(folder, Path(args.out) / folder.name if args.out else None, side, side * 3 // 4)
+            try:
+                written = scene_previews(folder, Path(args.out) / folder.name if args.out else None, side,
+                                         side * 3 // 4)
+            except (ValueError, KeyError, TypeError) as exc:  # a scene.json from elsewhere
+                print(f"infmob: error: scene {folder}: {exc}; preview only scenes written by `infmob scene`",
+                      file=sys.stderr)
+                return 2
             print("  ".join(str(p) for p in written.values()))
         return 0
     except PreviewUnavailable as exc:

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .files import scene_refusals
 from .posing import _forward_kinematics, _qpos_for, _read_object
 from .renderer import render_body
 from .studio import _look_at_matrix, _stage
@@ -100,6 +101,9 @@ def render_scene(folder, width: int = 1024, height: int = 768, fraction: float =
     hold the fewest objects: those walls and what hangs on them are left out) or ``top``."""
     folder = Path(folder)
     rec = json.loads((folder / "scene.json").read_text())
+    refused = scene_refusals(folder, rec)
+    if refused:
+        raise ValueError(f"{folder}: {refused[0]}")
     hidden, (cx, cy) = _corner(rec)
     on = _SceneOnStage(folder, rec, fraction, hidden)
     try:
