@@ -312,7 +312,7 @@ class Attempt:
     sim_time: float  # simulated seconds
 
     def describe(self) -> str:
-        state = f"reached {self.reached:.0%} of its range in {self.sim_time:.1f} s simulated"
+        state = f"reached {round(self.reached, 2) + 0.0:.0%} of its range in {self.sim_time:.1f} s simulated"
         return f"opened, {state}" if self.ok else f"{self.reason}; {state}"
 
 
