@@ -61,9 +61,9 @@ PREGRASP = 0.10  # m back from the grasp along the approach where the hand appea
 INSET = 0.01  # m the hand may go past the grasp point towards the middle of the handle box
 APPROACH_TIME = 0.6  # s
 CLOSE_TIME = 0.4  # s
-# Franka Emika Panda datasheet: continuous grip force 70 N; the arm's payload 3 kg and the wrist's
-# joint torque limit 12 N m bound what the hand exerts; 40 N is a moderate push/pull of a Panda in
-# contact-rich tasks (ManiSkill's OpenCabinet pulls with a similar force)
+# Franka Emika Panda datasheet: continuous grip force 70 N, payload 3 kg, wrist joints 12 N m. The arm's
+# force and torque at the hand are chosen (no datasheet value): a firm pull of 40 N per axis, 6 N m, half
+# the wrist's limit, so that a part needing more than a person's easy pull fails as "too stiff"
 GRIP_FORCE = 70.0  # N per finger drive
 ARM_FORCE = 40.0  # N per translational axis
 ARM_TORQUE = 6.0  # N m per rotational axis
