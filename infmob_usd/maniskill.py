@@ -138,6 +138,9 @@ class OpenInfmobEnv(BaseEnv):
         if num_envs != 1:
             raise ValueError(f"num_envs={num_envs}: the infmob tasks run one environment (sim_backend='cpu')")
         self.folder = Path(folder) if folder is not None else object_folder(category, object_seed, cache_dir)
+        if not (self.folder / "metadata.json").is_file():
+            raise FileNotFoundError(f"{self.folder}: not an object folder (no metadata.json); give a folder"
+                                    " written by infmob generate")
         self.meta = _read_meta(self.folder)
         self.urdf = _find_urdf(self.folder, self.meta)
         targets = read_annotations(self.folder)
