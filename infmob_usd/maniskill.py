@@ -79,7 +79,8 @@ __all__ = ["CloseInfmobEnv", "OpenInfmobEnv", "ScriptedGripper", "object_folder"
 OBJECT = "infmob"  # the articulation's name in the ManiSkill scene
 STILL_SPEED, STILL_SPIN = 0.1, 1.0  # m/s, rad/s: ManiSkill's "link is static" for success
 CLOSED = -0.01  # m per finger: ManiSkill closes the fingers past touching (a thin part still gets force)
-PANDA_STANDOFF = 0.75  # m in front of the object's front face where the Panda arm's base stands
+PANDA_STANDOFF = 0.6  # m back from the grasp where the Panda arm's base stands (outside a door's swing)
+PANDA_BELOW = 0.3  # m the Panda arm's base stands below the grasp (the arm reaches about 0.85 m)
 
 
 def object_folder(category: str, seed: int = 0, cache_dir: str | Path | None = None) -> Path:
@@ -290,10 +291,22 @@ class OpenInfmobEnv(BaseEnv):
         position = position + approach * _depth(self.target, g)
         return _pose(rot, position), min(0.04, float(g.get("width") or 0.08) / 2 + 0.01)
 
+    def panda_base(self) -> np.ndarray:
+        """Where the Panda arm's base stands (4x4, world): :data:`PANDA_STANDOFF` back from the first grasp
+        against its approach (level), facing it, :data:`PANDA_BELOW` below it (a base with a lift column;
+        on the ground at the lowest)."""
+        tcp, _opening = self.grasp_pose()
+        back = -tcp[:3, 2].copy()
+        back[2] = 0.0
+        back = _unit(back) if np.linalg.norm(back) > 0.3 else np.array([1.0, 0.0, 0.0])  # approached from above
+        xy = tcp[:2, 3] + back[:2] * PANDA_STANDOFF
+        yaw = math.atan2(-back[1], -back[0])
+        rot = np.array([[math.cos(yaw), -math.sin(yaw), 0], [math.sin(yaw), math.cos(yaw), 0], [0, 0, 1]])
+        return _pose(rot, [xy[0], xy[1], max(0.0, float(tcp[2, 3]) - PANDA_BELOW)])
+
     def _place_robot(self) -> None:
         if self.robot_uids == "panda":
-            x = float(self._bounds[1][0]) + PANDA_STANDOFF
-            self.agent.robot.set_pose(sapien.Pose([x, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]))  # facing -X
+            self.agent.robot.set_pose(_sapien_pose(self.panda_base()))
             self.agent.reset(torch.tensor(self.agent.keyframes["rest"].qpos[None], dtype=torch.float32))
             return
         tcp, _opening = self.grasp_pose()
@@ -423,14 +436,17 @@ class ScriptedGripper:
             return self._action(t, self.opening)
         if self.step_count <= n + k:
             return self._action(self.grasp, CLOSED)
-        tcp = _pose_matrix(self.env.agent.tcp.pose)
+        return self._action(self.follow(_pose_matrix(self.env.agent.tcp.pose), dt), CLOSED)
+
+    def follow(self, tcp: np.ndarray, dt: float) -> np.ndarray:
+        """The next TCP target (4x4, world) on the annotated path from the TCP now at ``tcp``, ``dt`` later."""
         if self.turn is not None:
-            return self._action(self._turned(tcp, dt), CLOSED)
+            return self._turned(tcp, dt)
         here = self.path.nearest(tcp[:3, 3])
         self.goal = min(self.path.length + self.lead, self.goal + self.speed * dt, here + self.lead)
         turn = rotation_between(self.path.tangent(0.0), self.path.tangent(here))
         offset = self.grasp[:3, 3] - self.path.at(0.0)
-        return self._action(_pose(turn @ self.grasp[:3, :3], self.path.at(self.goal) + turn @ offset), CLOSED)
+        return _pose(turn @ self.grasp[:3, :3], self.path.at(self.goal) + turn @ offset)
 
     def _turned(self, tcp: np.ndarray, dt: float) -> np.ndarray:
         pivot, axis, length = self.turn
