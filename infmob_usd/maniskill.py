@@ -444,9 +444,14 @@ class ScriptedGripper:
             return self._turned(tcp, dt)
         here = self.path.nearest(tcp[:3, 3])
         self.goal = min(self.path.length + self.lead, self.goal + self.speed * dt, here + self.lead)
+        return self.path_pose(here, self.goal)
+
+    def path_pose(self, here: float, goal: float | None = None) -> np.ndarray:
+        """The TCP pose (4x4, world) at arc length ``goal`` (default ``here``) of the path, the hand turned as
+        the path's tangent has turned at ``here``."""
         turn = rotation_between(self.path.tangent(0.0), self.path.tangent(here))
         offset = self.grasp[:3, 3] - self.path.at(0.0)
-        return _pose(turn @ self.grasp[:3, :3], self.path.at(self.goal) + turn @ offset)
+        return _pose(turn @ self.grasp[:3, :3], self.path.at(here if goal is None else goal) + turn @ offset)
 
     def _turned(self, tcp: np.ndarray, dt: float) -> np.ndarray:
         pivot, axis, length = self.turn

@@ -1,0 +1,209 @@
+"""A Panda arm opens generated objects: inverse kinematics to the annotated grasp, then along the grasp's path.
+
+Each object is the articulation of the ``OpenInfmob-v1`` ManiSkill task (:mod:`infmob_usd.maniskill`) with
+``robot_uids="panda"``: ManiSkill's Panda arm on a base that stands 0.6 m in front of the grasp, 0.3 m below it
+(a lift column; on the ground at the lowest). Per object:
+
+1. the arm moves in joint space from its rest pose to 0.1 m back from the first annotated grasp (the joint
+   values from SAPIEN's Pinocchio inverse kinematics, which ManiSkill's end-effector controllers use);
+2. the hand moves straight onto the grasp and the fingers close;
+3. the hand follows the annotated path (the grasp point over the joint's range, the hand turning with the
+   path's tangent: :meth:`infmob_usd.maniskill.ScriptedGripper.follow`), a few centimetres ahead of where
+   the hand is, with the arm's joint PD controller (ManiSkill's ``pd_joint_pos``) as the compliance.
+
+No motion planner: mplib 0.1.1 (the version mani-skill 3.0.1 requires) crashes on loading any URDF with
+numpy 2 (a segmentation fault in ``mplib.pymp.ArticulatedModel``), so the arm goes where the pre-grasp is
+reached in a straight joint-space line; the base placement keeps the arm out of the object.
+
+Success is the task's own: the joint past 90 % of its range with the part still. The object's annotations are
+its ``annotations.json``; a folder without one gets the test fixture's (tests/robot_fixture.py: doors and
+drawers with handle meshes). Run from the repository root::
+
+    .venv/bin/python docs/examples/arm_open.py                    # the five objects, a GIF in docs/arm_open.gif
+    .venv/bin/python docs/examples/arm_open.py --no-gif microwave:1:joint_door
+
+The GIF is rendered on the CPU through SAPIEN's Vulkan renderer (Mesa lavapipe, see docs/cli.md 'preview').
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import gymnasium as gym
+import numpy as np
+import sapien
+
+from infmob_usd import maniskill
+
+ROOT = Path(__file__).resolve().parents[2]
+# category:seed:joint - a base-cabinet drawer and door, a microwave, a dishwasher, a refrigerator door
+OBJECTS = ("kitchen_cabinet:1:joint_drawer_0_1", "kitchen_cabinet:1:joint_door_2_0", "microwave:0:joint_door",
+           "dishwasher:0:joint_door", "refrigerator:0:joint_door")
+OPEN, CLOSED = 1.0, -1.0  # the Panda gripper controller's normalized finger targets
+FOLLOW_STEPS = 120  # control steps (6 s) allowed along the path
+
+
+def _annotated(category: str, seed: int, cache: Path) -> Path:
+    folder = maniskill.object_folder(category, seed, cache)
+    if not (folder / "annotations.json").is_file():  # until the build writes them
+        sys.path.insert(0, str(ROOT / "tests"))
+        from robot_fixture import write_annotations
+
+        write_annotations(folder)
+    return folder
+
+
+class Arm:
+    """The Panda of one episode: inverse kinematics, stepping (with frames kept for the GIF)."""
+
+    def __init__(self, env, frames: list | None, every: int = 3):
+        self.env, self.u = env, env.unwrapped
+        self.frames, self.every, self.steps = frames, every, 0
+        robot = self.u.agent.robot
+        self.model = robot._objs[0].create_pinocchio_model()
+        names = [link.name for link in robot.get_links()]
+        self.tcp_index = names.index("panda_hand_tcp")
+        self.mask = np.array([1] * 7 + [0] * (robot.dof[0].item() - 7), dtype=np.int32)
+        self.base = maniskill._pose_matrix(robot.pose)
+        self.limits = robot.get_qlimits().cpu().numpy()[0]
+        self.rest = np.asarray(self.u.agent.keyframes["rest"].qpos, float)
+        rng = np.random.default_rng(0)
+        # starts over the arm's usual shapes (shoulder, elbow, wrist pitch; hand rolled either way)
+        self.grid = [np.array([0.0, a, 0.0, b, 0.0, c, d, 0.04, 0.04]) for a in (-0.3, 0.3, 0.8)
+                     for b in (-2.5, -2.0, -1.5) for c in (0.5, 1.0, 1.5, 2.0, 2.5) for d in (0.785, -2.356)]
+        self.grid += [np.concatenate([rng.uniform(self.limits[:7, 0], self.limits[:7, 1]), [0.04, 0.04]])
+                      for _ in range(60)]
+        self.info = {}
+
+    def qpos(self) -> np.ndarray:
+        return self.u.agent.robot.get_qpos().cpu().numpy()[0]
+
+    def step(self, arm_q: np.ndarray, grip: float) -> dict:
+        _obs, _r, _term, _trunc, self.info = self.env.step(np.hstack([arm_q[:7], grip]).astype(np.float32))
+        self.steps += 1
+        if self.frames is not None and self.steps % self.every == 0:
+            self.frames.append(np.asarray(self.env.render().cpu().numpy()[0], np.uint8))
+        return self.info
+
+    def ik(self, tcp: np.ndarray, q: np.ndarray, tries: int = 1000) -> np.ndarray | None:
+        """Arm joint values within the joint limits putting the TCP at a world pose (4x4), the nearest to ``q``
+        of the solutions from ``q``, the rest pose and ``tries`` starts of :attr:`grid`; None when none is found
+        (SAPIEN's solver ignores limits: a solution outside them, after whole turns, is dropped)."""
+        goal = sapien.Pose((np.linalg.inv(self.base) @ tcp).astype(np.float32))
+        lo, hi = self.limits[:, 0], self.limits[:, 1]
+        starts = [q, *([self.rest] if tries else []), *self.grid[:tries]]
+        best = None
+        for start in starts:
+            result, ok, _err = self.model.compute_inverse_kinematics(
+                self.tcp_index, goal, initial_qpos=np.asarray(start, float), active_qmask=self.mask,
+                max_iterations=200)
+            if not ok:
+                continue
+            r = np.asarray(result)[:7]
+            r = r - 2 * np.pi * np.round((r - (lo[:7] + hi[:7]) / 2) / (2 * np.pi))  # whole turns
+            if np.all(r >= lo[:7] - 1e-4) and np.all(r <= hi[:7] + 1e-4):
+                if best is None or np.linalg.norm(r - q[:7]) < np.linalg.norm(best - q[:7]):
+                    best = r
+                if start is q:
+                    break  # the solution next to where the arm is
+        return best
+
+    def move(self, q_to: np.ndarray, steps: int, grip: float) -> None:
+        q_from = self.qpos()[:7]
+        for i in range(1, steps + 1):
+            self.step(q_from + (q_to[:7] - q_from) * i / steps, grip)
+
+
+def stand(env, policy, frames: list | None) -> Arm | None:
+    """Put the arm's base where it reaches the pre-grasp, the grasp and the path's end (a mobile base with a
+    lift choosing where to stand): in front of the grasp against its approach, the nearest first."""
+    u = env.unwrapped
+    grasp = policy.grasp
+    back = -grasp[:3, 2].copy()
+    back[2] = 0.0
+    back = back / np.linalg.norm(back) if np.linalg.norm(back) > 0.3 else np.array([1.0, 0.0, 0.0])
+    yaw = np.arctan2(-back[1], -back[0])
+    rot = np.array([[np.cos(yaw), -np.sin(yaw), 0], [np.sin(yaw), np.cos(yaw), 0], [0, 0, 1]])
+    ends = [policy.pre, grasp, policy.path_pose(policy.path.length / 2), policy.path_pose(policy.path.length)]
+    for standoff in (0.6, 0.7, 0.8, 0.5):
+        for lift in (0.45, 0.3, 0.15, 0.0):
+            base = np.eye(4)
+            base[:3, :3] = rot
+            base[:3, 3] = [*(grasp[:2, 3] + back[:2] * standoff), max(0.0, grasp[2, 3] - lift)]
+            u.agent.robot.set_pose(sapien.Pose(base.astype(np.float32)))
+            arm = Arm(env, frames)
+            if all(arm.ik(t, arm.rest) is not None for t in ends):
+                return arm
+    return None
+
+
+def open_one(env, seed: int, frames: list | None) -> tuple[bool, float, str]:
+    """Reach, grasp, follow; returns (success, joint fraction reached, what failed)."""
+    env.reset(seed=seed)
+    u = env.unwrapped
+    policy = maniskill.ScriptedGripper(env)
+    policy.reset()
+    arm = stand(env, policy, frames)
+    if arm is None:
+        return False, 0.0, "no place to stand from where the arm reaches the grasp and the path"
+    q = arm.ik(policy.pre, arm.rest)
+    if q is None:
+        return False, 0.0, "no arm pose reaches the pre-grasp"
+    arm.move(q, 30, OPEN)
+    for i in range(1, 11):  # straight onto the grasp
+        t = policy.pre.copy()
+        t[:3, 3] += (policy.grasp[:3, 3] - policy.pre[:3, 3]) * i / 10
+        q = arm.ik(t, arm.qpos())
+        if q is None:
+            return False, 0.0, "no arm pose reaches the grasp"
+        arm.step(q, OPEN)
+    for _ in range(10):
+        arm.step(q, CLOSED)
+    dt = 1.0 / u.control_freq
+    for _ in range(FOLLOW_STEPS):
+        target = policy.follow(maniskill._pose_matrix(u.agent.tcp.pose), dt)
+        found = arm.ik(target, arm.qpos())
+        q = found if found is not None else q
+        info = arm.step(q, CLOSED)
+        if bool(info["success"][0]):
+            return True, float(info["target_fraction"][0]), ""
+    return False, float(arm.info["target_fraction"][0]), "stopped short on the path"
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("objects", nargs="*", default=list(OBJECTS), help="category:seed:joint (default: five kinds)")
+    ap.add_argument("--gif", default=str(ROOT / "docs" / "arm_open.gif"), help="the GIF to write")
+    ap.add_argument("--no-gif", action="store_true", help="no rendering (physics and planning only)")
+    ap.add_argument("--cache", default=None, help="where generated objects are kept (default: the task's cache)")
+    args = ap.parse_args(argv)
+    frames: list | None = None if args.no_gif else []
+    opened = 0
+    for spec in args.objects:
+        category, seed, joint = spec.split(":")
+        folder = _annotated(category, int(seed), Path(args.cache) if args.cache else None)
+        env = gym.make("OpenInfmob-v1", folder=folder, joint=joint, robot_uids="panda", sim_backend="cpu",
+                       control_mode="pd_joint_pos", obs_mode="state", max_episode_steps=1000,
+                       render_backend="none" if args.no_gif else "cpu",
+                       render_mode=None if args.no_gif else "rgb_array")
+        t0 = time.perf_counter()
+        ok, frac, why = open_one(env, 0, frames)
+        opened += ok
+        print(f"{spec}: {'opened' if ok else 'FAILED: ' + why}, {frac:.0%} of its range"
+              f" [{time.perf_counter() - t0:.1f} s]", flush=True)
+        env.close()
+    print(f"{opened}/{len(args.objects)} opened")
+    if frames:
+        from PIL import Image
+
+        images = [Image.fromarray(f).resize((256, 256)) for f in frames]
+        images[0].save(args.gif, save_all=True, append_images=images[1:], duration=100, loop=0, optimize=True)
+        print(f"wrote {args.gif} ({len(images)} frames)")
+    return 0 if opened == len(args.objects) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
