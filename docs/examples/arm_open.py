@@ -75,7 +75,7 @@ class Arm:
         self.grid = [np.array([0.0, a, 0.0, b, 0.0, c, d, 0.04, 0.04]) for a in (-0.3, 0.3, 0.8)
                      for b in (-2.5, -2.0, -1.5) for c in (0.5, 1.0, 1.5, 2.0, 2.5) for d in (0.785, -2.356)]
         self.grid += [np.concatenate([rng.uniform(self.limits[:7, 0], self.limits[:7, 1]), [0.04, 0.04]])
-                      for _ in range(60)]
+                      for _ in range(40)]
         self.info = {}
 
     def qpos(self) -> np.ndarray:
@@ -111,6 +111,28 @@ class Arm:
                     break  # the solution next to where the arm is
         return best
 
+    def chain(self, poses: list, step: float = 0.4, starts: int = 6) -> bool:
+        """Whether one branch of solutions goes through ``poses`` (each within ``step`` rad of the last, from
+        up to ``starts`` solutions at the first); keeps the last one as :attr:`start`."""
+        tried = 0
+        for seed in [self.rest, *self.grid]:
+            first = self.ik(poses[0], np.asarray(seed, float), tries=0)
+            if first is None:
+                continue
+            tried += 1
+            q = np.concatenate([first, self.rest[7:]])
+            for pose in poses[1:]:
+                nxt = self.ik(pose, q, tries=0)
+                if nxt is None or np.max(np.abs(nxt - q[:7])) > step:
+                    break
+                q = np.concatenate([nxt, self.rest[7:]])
+            else:
+                self.start = q
+                return True
+            if tried >= starts:
+                return False
+        return False
+
     def move(self, q_to: np.ndarray, steps: int, grip: float) -> None:
         q_from = self.qpos()[:7]
         for i in range(1, steps + 1):
@@ -118,8 +140,9 @@ class Arm:
 
 
 def stand(env, policy, frames: list | None) -> Arm | None:
-    """Put the arm's base where it reaches the pre-grasp, the grasp and the path's end (a mobile base with a
-    lift choosing where to stand): in front of the grasp against its approach, the nearest first."""
+    """Put the arm's base where it reaches the pre-grasp, the grasp and the path up to the open threshold (a mobile base
+    with a lift choosing where to stand): in front of the grasp against its approach, facing the object, the
+    nearest first, then to either side (a door's handle swings aside)."""
     u = env.unwrapped
     grasp = policy.grasp
     back = -grasp[:3, 2].copy()
@@ -127,16 +150,21 @@ def stand(env, policy, frames: list | None) -> Arm | None:
     back = back / np.linalg.norm(back) if np.linalg.norm(back) > 0.3 else np.array([1.0, 0.0, 0.0])
     yaw = np.arctan2(-back[1], -back[0])
     rot = np.array([[np.cos(yaw), -np.sin(yaw), 0], [np.sin(yaw), np.cos(yaw), 0], [0, 0, 1]])
-    ends = [policy.pre, grasp, policy.path_pose(policy.path.length / 2), policy.path_pose(policy.path.length)]
-    for standoff in (0.6, 0.7, 0.8, 0.5):
-        for lift in (0.45, 0.3, 0.15, 0.0):
-            base = np.eye(4)
-            base[:3, :3] = rot
-            base[:3, 3] = [*(grasp[:2, 3] + back[:2] * standoff), max(0.0, grasp[2, 3] - lift)]
-            u.agent.robot.set_pose(sapien.Pose(base.astype(np.float32)))
-            arm = Arm(env, frames)
-            if all(arm.ik(t, arm.rest) is not None for t in ends):
-                return arm
+    # the path's points are at tenths of the range: the one at the open threshold is where success is
+    done = policy.path.cum[min(10, int(np.ceil(10 * float(u.target["open_threshold"]) - 1e-9)))]
+    # from the threshold back to the grasp, then the pre-grasp: one branch of the arm's solutions all along
+    poses = [policy.path_pose(s) for s in np.linspace(done, 0.0, 25)] + [grasp, policy.pre]
+    side = np.array([-back[1], back[0]])
+    for standoff in (0.6, 0.8, 1.0, 1.2, 0.45):
+        for aside in (0.0, 0.3, -0.3):
+            for lift in (0.45, 0.3, 0.15, 0.0, float(grasp[2, 3])):  # the last: on the ground
+                base = np.eye(4)
+                base[:3, :3] = rot
+                base[:3, 3] = [*(grasp[:2, 3] + back[:2] * standoff + side * aside), max(0.0, grasp[2, 3] - lift)]
+                u.agent.robot.set_pose(sapien.Pose(base.astype(np.float32)))
+                arm = Arm(env, frames)
+                if arm.chain(poses):
+                    return arm
     return None
 
 
@@ -149,10 +177,7 @@ def open_one(env, seed: int, frames: list | None) -> tuple[bool, float, str]:
     arm = stand(env, policy, frames)
     if arm is None:
         return False, 0.0, "no place to stand from where the arm reaches the grasp and the path"
-    q = arm.ik(policy.pre, arm.rest)
-    if q is None:
-        return False, 0.0, "no arm pose reaches the pre-grasp"
-    arm.move(q, 30, OPEN)
+    arm.move(arm.start, 30, OPEN)  # to the pre-grasp, on the branch that reaches along the path
     for i in range(1, 11):  # straight onto the grasp
         t = policy.pre.copy()
         t[:3, 3] += (policy.grasp[:3, 3] - policy.pre[:3, 3]) * i / 10
@@ -165,7 +190,7 @@ def open_one(env, seed: int, frames: list | None) -> tuple[bool, float, str]:
     dt = 1.0 / u.control_freq
     for _ in range(FOLLOW_STEPS):
         target = policy.follow(maniskill._pose_matrix(u.agent.tcp.pose), dt)
-        found = arm.ik(target, arm.qpos())
+        found = arm.ik(target, arm.qpos(), tries=0)  # only the solution next to the arm: no jump to another
         q = found if found is not None else q
         info = arm.step(q, CLOSED)
         if bool(info["success"][0]):
