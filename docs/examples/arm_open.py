@@ -35,6 +35,7 @@ from pathlib import Path
 import gymnasium as gym
 import numpy as np
 import sapien
+import torch
 
 from infmob_usd import maniskill
 
@@ -44,6 +45,8 @@ OBJECTS = ("kitchen_cabinet:1:joint_drawer_0_1", "kitchen_cabinet:1:joint_door_2
            "dishwasher:0:joint_door", "refrigerator:0:joint_door")
 OPEN, CLOSED = 1.0, -1.0  # the Panda gripper controller's normalized finger targets
 FOLLOW_STEPS = 120  # control steps (6 s) allowed along the path
+CLEAR = 0.2  # m from the base's axis that the operated part's grasp point keeps below the shoulder
+SHOULDER = 0.45  # m above the base: the Panda's link 0-2 (shoulder at 0.333 m) and a margin
 
 
 def _annotated(category: str, seed: int, cache: Path) -> Path:
@@ -139,10 +142,17 @@ class Arm:
             self.step(q_from + (q_to[:7] - q_from) * i / steps, grip)
 
 
-def stand(env, policy, frames: list | None) -> Arm | None:
+def _clear(base: np.ndarray, points: np.ndarray) -> bool:
+    """Whether the part's grasp point stays off the arm's base (a door folding down sweeps the floor in
+    front): never within :data:`CLEAR` of the base's axis below the shoulder."""
+    near = np.hypot(points[:, 0] - base[0], points[:, 1] - base[1]) < CLEAR
+    return not np.any(near & (points[:, 2] < base[2] + SHOULDER))
+
+
+def stand(env, policy, frames: list | None):
     """Put the arm's base where it reaches the pre-grasp, the grasp and the path up to the open threshold (a mobile base
     with a lift choosing where to stand): in front of the grasp against its approach, facing the object, the
-    nearest first, then to either side (a door's handle swings aside)."""
+    nearest first, then to either side (a door's handle swings aside); yields each such place in turn."""
     u = env.unwrapped
     grasp = policy.grasp
     back = -grasp[:3, 2].copy()
@@ -155,29 +165,42 @@ def stand(env, policy, frames: list | None) -> Arm | None:
     # from the threshold back to the grasp, then the pre-grasp: one branch of the arm's solutions all along
     poses = [policy.path_pose(s) for s in np.linspace(done, 0.0, 25)] + [grasp, policy.pre]
     side = np.array([-back[1], back[0]])
-    for standoff in (0.6, 0.8, 1.0, 1.2, 0.45):
+    for standoff in (0.6, 0.8, 1.0, 1.2):
         for aside in (0.0, 0.3, -0.3):
-            for lift in (0.45, 0.3, 0.15, 0.0, float(grasp[2, 3])):  # the last: on the ground
+            for lift in (0.3, 0.45, 0.15, 0.0, float(grasp[2, 3])):  # the last: on the ground
                 base = np.eye(4)
                 base[:3, :3] = rot
                 base[:3, 3] = [*(grasp[:2, 3] + back[:2] * standoff + side * aside), max(0.0, grasp[2, 3] - lift)]
+                if not _clear(base[:3, 3], policy.path.points):
+                    continue
                 u.agent.robot.set_pose(sapien.Pose(base.astype(np.float32)))
                 arm = Arm(env, frames)
                 if arm.chain(poses):
-                    return arm
-    return None
+                    yield arm
 
 
-def open_one(env, seed: int, frames: list | None) -> tuple[bool, float, str]:
-    """Reach, grasp, follow; returns (success, joint fraction reached, what failed)."""
+def open_one(env, seed: int, frames: list | None, places: int = 3) -> tuple[bool, float, str]:
+    """Reach, grasp, follow, from up to ``places`` places to stand (the next after a failure, the object
+    reset); returns (success, joint fraction reached, what failed)."""
     env.reset(seed=seed)
-    u = env.unwrapped
     policy = maniskill.ScriptedGripper(env)
     policy.reset()
-    arm = stand(env, policy, frames)
-    if arm is None:
-        return False, 0.0, "no place to stand from where the arm reaches the grasp and the path"
-    arm.move(arm.start, 30, OPEN)  # to the pre-grasp, on the branch that reaches along the path
+    result = (False, 0.0, "no place to stand from where the arm reaches the grasp and the path")
+    for i, arm in enumerate(stand(env, policy, frames)):
+        result = _attempt(env, arm, policy)
+        if result[0] or i + 1 >= places:
+            break
+        env.reset(seed=seed)
+        policy.reset()
+    return result
+
+
+def _attempt(env, arm: Arm, policy) -> tuple[bool, float, str]:
+    u = env.unwrapped
+    # the episode starts with the arm at the pre-grasp, on the branch that reaches along the path (from the
+    # rest pose the arm may be inside the object: its base stands where it reaches, not where it rests)
+    u.agent.reset(torch.tensor(np.concatenate([arm.start[:7], [0.04, 0.04]])[None], dtype=torch.float32))
+    arm.move(arm.start, 5, OPEN)
     for i in range(1, 11):  # straight onto the grasp
         t = policy.pre.copy()
         t[:3, 3] += (policy.grasp[:3, 3] - policy.pre[:3, 3]) * i / 10
@@ -190,7 +213,10 @@ def open_one(env, seed: int, frames: list | None) -> tuple[bool, float, str]:
     dt = 1.0 / u.control_freq
     for _ in range(FOLLOW_STEPS):
         target = policy.follow(maniskill._pose_matrix(u.agent.tcp.pose), dt)
-        found = arm.ik(target, arm.qpos(), tries=0)  # only the solution next to the arm: no jump to another
+        # only a solution next to the arm or to the last command: no jump to another branch
+        found = arm.ik(target, arm.qpos(), tries=0)
+        if found is None:
+            found = arm.ik(target, np.concatenate([q[:7], arm.rest[7:]]), tries=0)
         q = found if found is not None else q
         info = arm.step(q, CLOSED)
         if bool(info["success"][0]):
@@ -200,7 +226,7 @@ def open_one(env, seed: int, frames: list | None) -> tuple[bool, float, str]:
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("objects", nargs="*", default=list(OBJECTS), help="category:seed:joint (default: five kinds)")
+    ap.add_argument("objects", nargs="*", default=list(OBJECTS), help="category:seed[:joint] (default: five kinds)")
     ap.add_argument("--gif", default=str(ROOT / "docs" / "arm_open.gif"), help="the GIF to write")
     ap.add_argument("--no-gif", action="store_true", help="no rendering (physics and planning only)")
     ap.add_argument("--cache", default=None, help="where generated objects are kept (default: the task's cache)")
@@ -208,9 +234,9 @@ def main(argv=None) -> int:
     frames: list | None = None if args.no_gif else []
     opened = 0
     for spec in args.objects:
-        category, seed, joint = spec.split(":")
+        category, seed, *joint = spec.split(":")
         folder = _annotated(category, int(seed), Path(args.cache) if args.cache else None)
-        env = gym.make("OpenInfmob-v1", folder=folder, joint=joint, robot_uids="panda", sim_backend="cpu",
+        env = gym.make("OpenInfmob-v1", folder=folder, joint=joint[0] if joint else None, robot_uids="panda", sim_backend="cpu",
                        control_mode="pd_joint_pos", obs_mode="state", max_episode_steps=1000,
                        render_backend="none" if args.no_gif else "cpu",
                        render_mode=None if args.no_gif else "rgb_array")
