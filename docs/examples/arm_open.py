@@ -236,7 +236,8 @@ def main(argv=None) -> int:
     for spec in args.objects:
         category, seed, *joint = spec.split(":")
         folder = _annotated(category, int(seed), Path(args.cache) if args.cache else None)
-        env = gym.make("OpenInfmob-v1", folder=folder, joint=joint[0] if joint else None, robot_uids="panda", sim_backend="cpu",
+        env = gym.make("OpenInfmob-v1", folder=folder, joint=joint[0] if joint else None, robot_uids="panda",
+                       sim_backend="cpu",
                        control_mode="pd_joint_pos", obs_mode="state", max_episode_steps=1000,
                        render_backend="none" if args.no_gif else "cpu",
                        render_mode=None if args.no_gif else "rgb_array")
