@@ -1,4 +1,4 @@
-"""semantics.txt (PartNet-Mobility style) and metadata.json."""
+"""semantics.txt (PartNet-Mobility style), metadata.json and annotations.json."""
 
 from __future__ import annotations
 
@@ -180,7 +180,8 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
             for j in obj.joints
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
-        "files": {**files, "semantics": "./semantics.txt"},
+        "interaction": getattr(obj, "interaction", []),
+        "files": {**files, "semantics": "./semantics.txt", "annotations": "./annotations.json"},
         **({"retrieved_parts": obj.retrieved} if getattr(obj, "retrieved", None) else {}),
         **({"retrieval": obj.retrieval} if getattr(obj, "retrieval", None) is not None else {}),
     }))
@@ -225,6 +226,16 @@ def _exact_overrides(obj, meta: dict) -> dict:
     """Overrides are stored unrounded, so replaying an object's own overrides gives the same object."""
     meta["overrides"] = {str(k): v.item() if isinstance(v, np.generic) else v for k, v in obj.overrides.items()}
     return meta
+
+
+def write_annotations(obj, folder: Path) -> Path:
+    """``annotations.json``: the interaction targets of ``obj`` (:func:`infmob_usd.interaction.document`;
+    docs/format.md), the same list as metadata.json's ``interaction``."""
+    from infmob_usd.interaction import document
+
+    path = folder / "annotations.json"
+    write_file(path, json.dumps(_clean(document(getattr(obj, "interaction", []))), indent=2) + "\n")
+    return path
 
 
 def write_metadata(obj, folder: Path, files: dict[str, str] | None = None) -> Path:
