@@ -84,6 +84,9 @@ def _grasp(path, where: str, g) -> None:
         raise _fail(path, f"{where}.closing", "must be perpendicular to approach")
     _number(path, f"{where}.width", g.get("width"), 0.0, 1.0)
     _number(path, f"{where}.depth", g.get("depth"), 0.0, 1.0)
+    blocked = g.get("blocked_by", [])
+    if not isinstance(blocked, list) or not all(isinstance(n, str) and n for n in blocked):
+        raise _fail(path, f"{where}.blocked_by", "expected a list of link names")
 
 
 def _target(path, where: str, t, names: set) -> None:

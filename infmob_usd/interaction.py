@@ -94,6 +94,8 @@ def raycast(v: np.ndarray, f: np.ndarray, origin, direction) -> float | None:
 
 def _crop(v, f, point, planes):
     """The triangles of ``(v, f)`` inside every half-space ``(normal, offset)``: ``(x - point) . n >= -offset``."""
+    used, f = np.unique(f, return_inverse=True)  # only the vertices of these triangles: slicing reads them all
+    v, f = v[used], f.reshape(-1, 3)
     for n, off in planes:
         if len(f) == 0:
             break
@@ -102,11 +104,11 @@ def _crop(v, f, point, planes):
     return v, f
 
 
-def pinch(v, f, c, approach, closing) -> tuple[float, float] | None:
-    """``(width, depth)`` of the material a pinch at surface point ``c`` closes on: the part between
+def pinch(v, f, c, approach, closing) -> tuple[float, float, float] | None:
+    """``(width, depth, middle)`` of the material a pinch at surface point ``c`` closes on: the part between
     planes ``PAD`` either side along the pad's width, from ``c`` to ``REACH`` deep along ``approach``,
     taken along ``closing`` as the stretch of solid that holds ``c`` (gaps narrower than a finger joined
-    to it). ``None``: nothing there."""
+    to it; ``middle``: where its middle is from ``c`` along ``closing``). ``None``: nothing there."""
     d, k = np.asarray(approach, float), np.asarray(closing, float)
     w = np.cross(d, k)
     cv, cf = _crop(v, f, c, [(d, 1e-4), (-d, REACH), (w, PAD), (-w, PAD), (k, 0.15), (-k, 0.15)])
@@ -130,7 +132,7 @@ def pinch(v, f, c, approach, closing) -> tuple[float, float] | None:
     lo, hi = at[0]
     inside = (((tri - c) @ k >= lo - 1e-9) & ((tri - c) @ k <= hi + 1e-9)).all(1)
     deep = float(((tri[inside] - c) @ d).max()) if inside.any() else 0.0
-    return float(hi - lo), min(deep, REACH / 2)
+    return float(hi - lo), min(deep, REACH / 2), float(lo + hi) / 2
 
 
 def _perps(a: np.ndarray) -> list[np.ndarray]:
@@ -172,15 +174,22 @@ def _try(v, f, origin, d, closings) -> Grasp | None:
     if t is None:
         return None
     c = origin + t * d
-    near = _crop(v, f, c, [(e, 0.2) for e in np.vstack([np.eye(3), -np.eye(3)])])
+    tri = v[f]
+    near = (v, f[((tri.min(1) <= c + 0.2) & (tri.max(1) >= c - 0.2)).all(1)])  # what a hand there can meet
     best = None
     for k in closings:
         got = pinch(*near, c, d, k)
         if got is not None and 0.001 <= got[0] <= GRIP and (best is None or got[0] < best[0]):
-            best = (got[0], got[1], k)
+            best = (*got, k)
     if best is None:
         return None
-    return Grasp.make(c, d, best[2], best[0], best[1])
+    width, depth, middle, k = best
+    # the fingers straddle the pinched stretch: the grasp on the surface over its middle
+    mid = c + middle * k
+    t = raycast(*near, mid - 0.05 * d, d)
+    if t is not None and abs(t - 0.05) < REACH / 2:
+        c = mid - 0.05 * d + t * d
+    return Grasp.make(c, d, k, width, depth)
 
 
 def _candidates(v: np.ndarray, joint, pivot: np.ndarray):
@@ -236,15 +245,80 @@ def _sides(v: np.ndarray, a: np.ndarray):
                 yield u * (float((slab @ u).max()) + 0.05) + a * s + w * 0.5 * (wc.min() + wc.max()), -u, [w, a]
 
 
-def derived_grasps(v: np.ndarray, f: np.ndarray, joint, pivot) -> list[Grasp]:
+TRIES = 3  # fitting pinches tried for one the neighbours leave free before the first is kept anyway
+
+
+def derived_grasps(v: np.ndarray, f: np.ndarray, joint, pivot, blocked=None) -> list[Grasp]:
     """A grasp on a part that declares none, from its link's mesh ``(v, f)`` (link frame) and its joint
     (``pivot``: a point of its axis in the link frame): the first candidate (:func:`_candidates`) whose
-    pinch needs at most :data:`GRIP`."""
+    pinch needs at most :data:`GRIP` and whose fingers ``blocked(grasp)`` finds free (a list of the links in
+    their way); else the first that fits, blocked."""
+    first, fits = None, 0
     for origin, d, closings in _candidates(v, joint, np.asarray(pivot, float)):
         g = _try(v, f, np.asarray(origin, float), np.asarray(d, float), closings)
-        if g is not None:
+        if g is None:
+            continue
+        if blocked is None or not blocked(g):
             return [g]
-    return []
+        first, fits = first or g, fits + 1
+        if fits >= TRIES:
+            break
+    return [first] if first is not None else []
+
+
+class Neighbours:
+    """The other links of an object at rest, in one link's frame: which of them a grasp's fingers would meet
+    (two finger boxes ``FINGER`` thick beside the pinched width, from 4 cm before the surface to ``depth``
+    past it, a pad wide)."""
+
+    def __init__(self, obj, carrier, own: set[str]):
+        self.meshes = []
+        for link in obj.links:
+            if link.dummy or link.name in own or not link.pieces:
+                continue
+            lv, lf = _mesh(link.pieces)
+            lv = lv + (link.origin - carrier.origin)
+            tri = lv[lf]
+            self.meshes.append((link.name, lv, lf, tri.min(1), tri.max(1), lv.min(0), lv.max(0)))
+
+    def __call__(self, g: Grasp) -> list[str]:
+        p, d, k = (np.asarray(x) for x in (g.position, g.approach, g.closing))
+        w = np.cross(d, k)
+        hit = set()
+        for side in (1.0, -1.0):
+            centre = p + d * (g.depth - 0.04) / 2 + k * side * (g.width / 2 + FINGER / 2)
+            half = np.array([(g.depth + 0.04) / 2, FINGER / 2 - 1e-4, PAD])
+            axes = np.stack([d, k, w])
+            reach = np.abs(axes).T @ half
+            for name, lv, lf, tlo, thi, lo, hi in self.meshes:
+                if name in hit or (lo > centre + reach).any() or (hi < centre - reach).any():
+                    continue
+                near = ((tlo <= centre + reach) & (thi >= centre - reach)).all(1)  # triangles whose box meets it
+                if not near.any():
+                    continue
+                planes = [(s * e, h) for e, h in zip(axes, half) for s in (1.0, -1.0)]
+                if len(_crop(lv, lf[near], centre, planes)[1]):
+                    hit.add(name)
+        return sorted(hit)
+
+
+def rim_grasp(pieces, axis) -> Grasp | None:
+    """A lid's edge grasp, for the part that knows it is a lid (``categories/parts/lids.py``): its outer edge
+    pinched along ``axis`` (the way it lifts) from each side in turn, else its rim pinched across from above;
+    ``None`` if no pinch there needs at most :data:`GRIP`."""
+    v, f = _mesh(pieces)
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    for u in _perps(a):
+        for o in _rays(v, -u, a):
+            g = _try(v, f, o, -u, [a])
+            if g is not None:
+                return g
+    for u in _perps(a):
+        for o in _rays(v, -a, u)[1:]:
+            g = _try(v, f, o, -a, [u])
+            if g is not None:
+                return g
+    return None
 
 
 def part_class(joint, label: str, v: np.ndarray, pivot, handle: bool) -> str:
@@ -284,8 +358,9 @@ def grasp_rotation(g: Grasp) -> np.ndarray:
     return np.column_stack([np.cross(y, z), y, z])
 
 
-def _carried(obj, carrier) -> tuple[np.ndarray, np.ndarray, list[Grasp]]:
-    """The mesh and the declared grasps of a link and of every link fixed to it, in its frame."""
+def _carried(obj, carrier) -> tuple[np.ndarray, np.ndarray, list[Grasp], set[str]]:
+    """The mesh and the declared grasps of a link and of every link fixed to it, in its frame, and the names
+    of those links."""
     links = {link.name: link for link in obj.links}
     names, stack = [carrier.name], [carrier.name]
     while stack:
@@ -297,7 +372,8 @@ def _carried(obj, carrier) -> tuple[np.ndarray, np.ndarray, list[Grasp]]:
     pieces = [p.translated(links[n].origin - carrier.origin) if n != carrier.name else p
               for n in names for p in links[n].pieces]
     v, f = _mesh(pieces) if pieces else (np.zeros((0, 3)), np.zeros((0, 3), int))
-    return v, f, [g for p in pieces for g in p.grasps]
+    # a handle first: it is what the part is made to be taken by (a lid's knob before its rim)
+    return v, f, sorted((g for p in pieces for g in p.grasps), key=lambda g: g.handle_class is None), set(names)
 
 
 def _range(joint) -> tuple[float, float]:
@@ -329,17 +405,18 @@ def _direction(joint, g: Grasp, pivot) -> list[float]:
     return (t / np.linalg.norm(t)).tolist()
 
 
-def _grasp_json(g: Grasp) -> dict:
+def _grasp_json(g: Grasp, blocked) -> dict:
     return {"position": list(g.position), "approach": list(g.approach), "closing": list(g.closing),
-            "width": g.width, "depth": g.depth}
+            "width": g.width, "depth": g.depth, "blocked_by": blocked(g)}
 
 
 def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     """The annotation of one operated joint (the fields of ``infmob-annotations/1``, docs/format.md)."""
     carrier = obj.link(joint.group)
-    v, f, declared = _carried(obj, carrier)
+    v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
-    grasps = declared or (derived_grasps(v, f, joint, pivot) if len(f) else [])
+    blocked = Neighbours(obj, carrier, own)
+    grasps = declared or (derived_grasps(v, f, joint, pivot, blocked) if len(f) else [])
     handle = next((g for g in grasps if g.handle_class is not None), None)
     if handle is not None and handle.box is not None:
         centre, size, rot = handle.box
@@ -353,7 +430,7 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
         "part_class": part_class(joint, carrier.label, v, pivot, handle is not None) if len(v) else "hinge_knob",
         "handle_class": None if handle is None else handle.handle_class,
         "box": box,
-        "grasps": [_grasp_json(g) for g in grasps],
+        "grasps": [_grasp_json(g, blocked) for g in grasps],
         "grasp_source": "part" if declared else "geometry",
         "action": action(joint),
         "direction": _direction(joint, grasps[0], pivot) if grasps else None,

@@ -56,7 +56,7 @@ def test_every_operated_joint_has_a_panda_grasp_on_the_surface(category):
         assert set(targets) == want, f"{category} {seed}"
         for name, t in targets.items():
             assert any(g["width"] <= MAX_WIDTH for g in t["grasps"]), f"{category} {seed} {name}: no grasp"
-            v, f, _ = _carried(obj, obj.link(t["link"]))
+            v, f, _, _ = _carried(obj, obj.link(t["link"]))
             for g in t["grasps"]:
                 d = surface_distance(v, f, g["position"])
                 assert d <= 0.002, f"{category} {seed} {name}: grasp {d * 1000:.1f} mm off the surface"
@@ -120,13 +120,18 @@ def test_path_follows_the_joint_in_the_written_urdf(written):
 
 
 def test_files_agree(written):
-    """annotations.json == metadata.json "interaction"; one USD grasp Xform per grasp, at its position."""
+    """annotations.json == metadata.json "interaction"; blocked_by names links; one USD grasp Xform per grasp,
+    at its position."""
     from pxr import Usd
+
+    from infmob_usd.validate.files import parse_urdf
 
     for folder in written:
         doc = load(folder)
         meta = json.loads((folder / "metadata.json").read_text())
         assert meta["interaction"] == doc["targets"] and meta["files"]["annotations"] == "./annotations.json"
+        links = set(parse_urdf(folder / f"{folder.name}.urdf").links)
+        assert {n for t in doc["targets"] for g in t["grasps"] for n in g["blocked_by"]} <= links
         stage = Usd.Stage.Open(str(folder / f"{folder.name}.usda"))
         root = stage.GetDefaultPrim().GetPath()
         for t in doc["targets"]:
@@ -163,6 +168,7 @@ def _set(path, value):
     (_set(["format"], "infmob-annotations/9"), "format"),
     (_set(["targets", 0, "grasps", 0, "approach"], [1, 1, 0]), "unit vector"),
     (_set(["targets", 0, "grasps", 0, "width"], "wide"), "width"),
+    (_set(["targets", 0, "grasps", 0, "blocked_by"], [3]), "blocked_by"),
     (_set(["targets", 0, "part_class"], "teapot"), "part_class"),
     (_set(["targets", 0, "path"], [[0, 0, 0]]), "path"),
     (lambda d: {**d, "targets": d["targets"][:1] * 2}, "annotated twice"),
