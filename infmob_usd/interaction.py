@@ -269,7 +269,7 @@ def derived_grasps(v: np.ndarray, f: np.ndarray, joint, pivot, blocked=None) -> 
 class Neighbours:
     """The other links of an object at rest, in one link's frame: which of them a grasp's fingers would meet
     (two finger boxes ``FINGER`` thick beside the pinched width, from 4 cm before the surface to ``depth``
-    past it, a pad wide)."""
+    past it, a pad wide; for a press, the shut fingers' way in)."""
 
     def __init__(self, obj, carrier, own: set[str]):
         self.meshes = []
@@ -281,13 +281,18 @@ class Neighbours:
             tri = lv[lf]
             self.meshes.append((link.name, lv, lf, tri.min(1), tri.max(1), lv.min(0), lv.max(0)))
 
-    def __call__(self, g: Grasp) -> list[str]:
+    def __call__(self, g: Grasp, press: bool = False) -> list[str]:
+        """The links in the fingers' way; ``press``: the hand pushes with its fingers shut, so only the way
+        in to the surface counts (one box two fingers wide)."""
         p, d, k = (np.asarray(x) for x in (g.position, g.approach, g.closing))
         w = np.cross(d, k)
         hit = set()
-        for side in (1.0, -1.0):
-            centre = p + d * (g.depth - 0.04) / 2 + k * side * (g.width / 2 + FINGER / 2)
-            half = np.array([(g.depth + 0.04) / 2, FINGER / 2 - 1e-4, PAD])
+        for side in ((0.0,) if press else (1.0, -1.0)):
+            if press:
+                centre, half = p - d * 0.0205, np.array([0.0195, FINGER, PAD])
+            else:
+                centre = p + d * (g.depth - 0.04) / 2 + k * side * (g.width / 2 + FINGER / 2)
+                half = np.array([(g.depth + 0.04) / 2, FINGER / 2 - 1e-4, PAD])
             axes = np.stack([d, k, w])
             reach = np.abs(axes).T @ half
             for name, lv, lf, tlo, thi, lo, hi in self.meshes:
@@ -415,7 +420,11 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     carrier = obj.link(joint.group)
     v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
-    blocked = Neighbours(obj, carrier, own)
+    neighbours, press = Neighbours(obj, carrier, own), action(joint) == "press"
+
+    def blocked(g: Grasp) -> list[str]:
+        return neighbours(g, press)
+
     grasps = declared or (derived_grasps(v, f, joint, pivot, blocked) if len(f) else [])
     handle = next((g for g in grasps if g.handle_class is not None), None)
     if handle is not None and handle.box is not None:

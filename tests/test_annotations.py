@@ -12,7 +12,7 @@ import pytest
 from infmob_usd import api
 from infmob_usd.annotations import AnnotationError, load
 from infmob_usd.grasps import MAX_WIDTH
-from infmob_usd.interaction import _carried, operated
+from infmob_usd.interaction import _carried, _mesh, operated
 
 SEEDS = (0, 1, 2)
 
@@ -61,6 +61,11 @@ def test_every_operated_joint_has_a_panda_grasp_on_the_surface(category):
                 d = surface_distance(v, f, g["position"])
                 assert d <= 0.002, f"{category} {seed} {name}: grasp {d * 1000:.1f} mm off the surface"
                 assert abs(np.dot(g["approach"], g["closing"])) < 1e-6
+                for name in g["blocked_by"]:  # a link named in the fingers' way is really there
+                    other = obj.link(name)
+                    ov, of = _mesh(other.pieces)
+                    near = surface_distance(ov + other.origin - obj.link(t["link"]).origin, of, g["position"])
+                    assert near < 0.06, f"{category} {seed} {name} blocks {t['joint']} from {near:.3f} m"
 
 
 def test_passive_joints_are_not_targets():
