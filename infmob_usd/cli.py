@@ -426,12 +426,9 @@ def _make_scene(job) -> str:
     kind, seed, overrides, texture_size, out, preview = job
     folder = save_scene(scene(kind, seed, texture_size=texture_size, **overrides), out)
     if preview:
-        import cv2
+        from .validate.scene_preview import scene_previews
 
-        from .validate.scene_preview import render_scene
-
-        for fraction, name in ((0.0, "preview.png"), (1.0, "preview_open.png")):
-            cv2.imwrite(str(folder / name), render_scene(folder, fraction=fraction)[..., ::-1])
+        scene_previews(folder)
     return str(folder)
 
 
@@ -645,8 +642,9 @@ def _validate_scenes(paths, args) -> tuple[int, int]:
     """The scene checks (:mod:`infmob_usd.validate.scene`) of every scene folder (with ``scene.json``)
     among ``paths``; with ``--sim`` also every fixed object's joints driven in the room. Returns
     ``(passed, scenes)``."""
-    found = sorted({q.parent for p in map(Path, paths) for q in
-                    ([p / "scene.json"] if (p / "scene.json").is_file() else p.rglob("scene.json"))})
+    from .validate.files import find_scenes
+
+    found = find_scenes(paths)
     if not found:
         return 0, 0
     from .validate.scene import check_scene
