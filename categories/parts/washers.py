@@ -109,7 +109,7 @@ CUP = dict(radius=0.045, height=0.05, wall=0.003, seat=0.02)  # m: a fabric-soft
 class Machine:
     """Where a washing machine's parts go: its casing ``size``, the control ``band`` zs (front styles) or console
     box (x front, z bottom, z top), the porthole's centre height ``zc`` and door radius ``rd`` (top loader: the
-    tub's centre x and opening radius), and the lid box (x back, x front, y half) of a top loader."""
+    tub's centre x and opening radius)."""
 
     design: str
     size: CasingSize
