@@ -242,7 +242,7 @@ def drum(m: Machine, at: Frame) -> list[g.Piece]:
     back = g.cylinder((0, 0, z0 - deep - WALL), (0, 0, z0 - deep), rdrum, "drum")
     pieces.append(back.replace(sheet=DRUM["sheet"]))
     lift = 0.12 * rdrum
-    for k in range(DRUM["lifters"]):
+    for k in range(DRUM["lifters"] if m.front else 0):  # a top loader's basket has an agitator, no paddles
         turn = Frame.at((0, 0, 0)).turned("z", 2 * math.pi * k / DRUM["lifters"]).matrix
         pieces.append(g.box_between((rdrum - lift, -lift / 2, z0 - deep), (rdrum - WALL, lift / 2, z0 - WALL),
                                     "drum", bevel=0.004).transformed(turn))
