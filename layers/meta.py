@@ -65,6 +65,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                                " toaster oven)"),
     "kettle": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                            " verified item for kettle)"),
+    "coffee_machine": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                                   " verified item for coffee maker: WordNet's coffee_maker.n.01 has none in these"
+                                   " files)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
     "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
     "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
