@@ -64,7 +64,7 @@ DESIGNS = {
     "pod": Design((0.11, 0.25), (0.29, 0.34), (0.21, 0.33), 0.55, 0.36, 0.012, 0.0025),
 }
 """Shells: a drip or pod machine's 2-3 mm moulded polypropylene / ABS, an espresso machine's 0.8 mm stainless
-sheet (its weight is mostly boiler, pump and group: :data:`WORKS`)."""
+sheet (the weight of both is mostly their works: :data:`WORKS`)."""
 
 WALL = 0.004  # m, the shell's walls as the simulator sees them
 GAP = 0.002  # m, a moving part's clearance from the shell at rest
@@ -104,9 +104,12 @@ BUTTONS_MAX = 4
 # A steam / hot-water dial (Breville BES870, Gaggia Classic Pro steam knob): 30-36 mm, a quarter to half a turn.
 DIAL = controls.Dial(radius=0.016, stem=0.003, style="ridge", turns=math.radians(150))
 BUTTON_PITCH = 0.026  # m, centre to centre
-# An espresso machine's weight is its boiler or thermoblock, pump and brass group: Dedica 4.2 kg, Gaggia Classic
-# Pro 8 kg, Barista Express 10-11 kg (maker listings), the steel shell 1-2.5 kg of it: a steel core of radius
-WORKS = (0.022, 0.035)  # m, from the smallest to the largest machine
+# A machine's weight is mostly its works, not its shell: an espresso machine's boiler or thermoblock, pump and
+# brass group (Dedica 4.2 kg, Gaggia Classic Pro 8 kg, Barista Express 10-11 kg maker listings, the steel shell
+# 1-2.5 kg of it); a capsule machine's thermoblock and pump (~1.5 kg of its 2.1-4 kg: Keurig K-Mini, Nespresso
+# Essenza Mini, K-Classic listings). Drawn as a steel core in the tower of radius, from the smallest machine of the
+# design to the largest (a drip machine's heater is its warming plate, no core):
+WORKS = {"espresso": (0.022, 0.035), "pod": (0.02, 0.02), "drip": (0.0, 0.0)}  # m
 METAL_SHEET = 0.0008  # m, a painted or stainless shell (0.6-1 mm sheet) whatever the design's moulded one
 
 
@@ -160,7 +163,8 @@ class Machine:
 def machine(design: str, t: float, metal: bool = False) -> Machine:
     """The machine of ``design`` at ``t`` of its size range, its shell of ``metal`` sheet or moulded."""
     d = DESIGNS[design]
-    return Machine(design, *d.at(t), METAL_SHEET if metal else d.sheet, WORKS[0] + t * (WORKS[1] - WORKS[0]))
+    lo, hi = WORKS[design]
+    return Machine(design, *d.at(t), METAL_SHEET if metal else d.sheet, lo + t * (hi - lo))
 
 
 def _shell(lo, hi, slot: str, sheet: float) -> g.Piece:
@@ -201,6 +205,7 @@ def body(m: Machine, slot: str, trim: str, keys: int, dial: bool = False) -> lis
     if m.design == "espresso":
         r, drop = GROUP
         pieces.append(g.cylinder((m.bay, 0, m.head_bottom - drop), (m.bay, 0, m.head_bottom + 0.001), r, trim))
+    if m.works > 0:
         x = (m.tank_front + m.tower_front) / 2
         pieces.append(g.cylinder((x, 0, m.d.floor), (x, 0, 0.6 * h), m.works, "works").replace(wall=0.0))  # solid
     return pieces
