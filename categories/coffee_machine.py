@@ -6,21 +6,23 @@ a side pivot (revolute) and whose glass carafe slides off the warming plate (pri
 plinth; an ``espresso`` machine whose portafilter turns out of the group head's lugs to its stop (revolute,
 45 degrees), whose steam wand swings out on its ball joint (revolute), whose drip tray pulls out (prismatic)
 and whose water tank lifts out of its cradle at the back (prismatic, role ``lift_off``: free once clear of the
-cradle), keys and maybe a steam dial (revolute) on its head; a ``pod`` machine whose head lid lifts to load a
-capsule (revolute), with a drip tray, a lift-out tank and keys. A tank may carry a hinged fill flap
-(revolute). Keys press in against their return springs (role ``button``).
+cradle), keys (or rocker switches: revolute) and maybe a steam dial (revolute) on its head; a ``pod`` machine
+whose head lid lifts to load a capsule (revolute), with a drip tray, a lift-out tank and keys. A tank may carry
+a hinged fill flap (revolute). Keys press in against their return springs (role ``button``).
 
 X is depth (the front faces +X), Y is width, Z is up.
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float
 
-from .parts import casing, controls
+from .parts import casing, controls, hardware
 from .parts import coffee_machines as C
 
 PARAMS = (
@@ -39,7 +41,10 @@ GRAMMAR = Grammar("coffee_machine", {
     "coffee_machine": Node(label="body", one_of={"drip": 0.35, "espresso": 0.35, "pod": 0.3}, choice="design"),
     "drip": Node(required=("lid", "basket", "carafe"), repeat={"button": _keys}),
     "espresso": Node(required=("portafilter", "tray", "tank"), optional={"wand": 0.85, "dial": 0.6},
-                     repeat={"button": _keys}),
+                     one_of={"keypad": 0.65, "rockers": 0.35}, choice="controls"),
+    "keypad": Node(repeat={"button": _keys}),
+    "rockers": Node(repeat={"rocker": (1, C.ROCKERS_MAX)}),
+    "rocker": Node(label="switch"),
     "pod": Node(required=("lid", "tray", "tank"), repeat={"button": _keys}),
     "tank": Node(label="tank", optional={"flap": 0.5}),
     "flap": Node(label="lid"),
@@ -52,10 +57,10 @@ GRAMMAR = Grammar("coffee_machine", {
     "tray": Node(label="tray"),
     "button": Node(label="button"),
 })
-"""Keys per machine: 1 to as many as fit its front (``coffee_machines.keys_fit``, at most 4; a pod machine 3: power and
-cup sizes);
-a tank's fill flap is drawn object-wide (``has_flap``), the steam wand and the steam dial too (``has_wand``: some
-single-dose machines have none; ``has_dial``: others steam from a key)."""
+"""Keys per machine: 1 to as many as fit its front (``coffee_machines.keys_fit``, at most 4; a pod machine 3: power
+and cup sizes); a tank's fill flap is drawn object-wide (``has_flap``), the steam wand and the steam dial too
+(``has_wand``: some single-dose machines have none; ``has_dial``: others steam from a key); an espresso machine has
+keys or a row of 1-3 rocker switches (``controls``; power, brew, steam: Gaggia Classic Pro)."""
 
 MATERIALS = {"body": "finish", "lid": "plastic:black|dark_grey", "button": "plastic:black|dark_grey|light_grey",
              "knob": "plastic:black",
@@ -72,12 +77,18 @@ def _derive(p: dict) -> dict:
     return p
 
 
+def _keys_of(kit) -> list:
+    """The keys a machine's fittings grew (an espresso machine's in its keypad)."""
+    pad = kit.one("keypad")
+    return (pad if pad is not None else kit).of("button")
+
+
 class CoffeeLayout(controls.ControlFace):
     def coffee_machine(self, node):
         design = node.choice
         m = C.machine(design, self.p["size"], metal=self.p["finish"] != "plastic")
         kit = node.one(design)
-        self.add("body", "body", C.body(m, "body", "trim", len(kit.of("button")), kit.one("dial") is not None))
+        self.add("body", "body", C.body(m, "body", "trim", len(_keys_of(kit)), kit.one("dial") is not None))
         self.grow(node.one(design), m=m)
 
     def _fittings(self, node, m):
@@ -88,7 +99,19 @@ class CoffeeLayout(controls.ControlFace):
         for k, (key, at) in enumerate(zip(keys, C.key_anchors(m, len(keys)), strict=True)):
             self.grow(key, at=at, name=f"button_{k}")
 
-    drip = espresso = pod = _fittings
+    drip = espresso = pod = keypad = _fittings
+
+    def rockers(self, node, m):
+        for k, (rocker, at) in enumerate(zip(node.of("rocker"), C.key_anchors(m, len(node.of("rocker"))),
+                                             strict=True)):
+            self.grow(rocker, at=at, name=f"rocker_{k}")
+
+    def rocker(self, node, at, name):
+        made = hardware.rocker_switch("button").attached("mount", to=at)
+        self.extend("body", made.parts["bezel"].pieces)
+        self.add(name, "switch", made.parts["rocker"].pieces)
+        (joint,) = made.joints
+        self.join(replace(joint, parent="body", child=name))
 
     def lid(self, node, m):
         pieces, hinge = (C.reservoir_lid if m.design == "drip" else C.pod_lid)(m, "lid")

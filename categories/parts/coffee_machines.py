@@ -101,6 +101,7 @@ TRAY_PULL = 0.8  # it pulls out this share of its depth before it leaves its gui
 # 12-16 mm round or rectangular keys 3 mm proud, 2 mm travel.
 BUTTON = controls.Button(half=(0.007, 0.007), shape="round", proud=0.003, travel=0.002)
 BUTTONS_MAX = 4
+ROCKERS_MAX = 3  # power, brew, steam rockers (Gaggia Classic Pro, Rancilio Silvia)
 # A steam / hot-water dial (Breville BES870, Gaggia Classic Pro steam knob): 30-36 mm, a quarter to half a turn.
 DIAL = controls.Dial(radius=0.016, stem=0.003, style="ridge", turns=math.radians(150))
 BUTTON_PITCH = 0.026  # m, centre to centre
