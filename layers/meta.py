@@ -65,6 +65,12 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                                " toaster oven)"),
     "kettle": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                            " verified item for kettle)"),
+    "coffee_machine": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                                   " verified item for coffee maker: WordNet's coffee_maker.n.01 has none in these"
+                                   " files)"),
+    "dispenser": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item"
+                             " for soap dispenser or pump bottle: OEWN's chain dispenser > container has this nearest"
+                             " one)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
     "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
     "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
