@@ -17,7 +17,7 @@ import numpy as np
 
 from ..blueprint import descendants
 from .gaps import _eroded
-from .hulls import _separated
+from .hulls import _face_normals, _inflate, _separated
 
 MEETING_GAP = 0.003
 """m: the least gap a hinged part keeps from an independently moving neighbour over its swing (where they
@@ -35,23 +35,14 @@ def _world(c: np.ndarray, pose: np.ndarray) -> np.ndarray:
     return c @ pose[:3, :3].T + pose[:3, 3]
 
 
-def _close(a: np.ndarray, b: np.ndarray, gap: float) -> bool:
-    """Whether hulls ``a`` and ``b`` (world points) come within ``gap`` (a face plane test on the boxes first,
-    then an exact one on the grown hull)."""
+def _close(a: np.ndarray, na: np.ndarray, b: np.ndarray, nb: np.ndarray, gap: float) -> bool:
+    """Whether hulls ``a`` and ``b`` (world points, face normals ``na``, ``nb``) come within ``gap``: the boxes
+    first, then a face plane test, then an exact one on the grown hull."""
     if np.any(a.min(0) - gap > b.max(0)) or np.any(b.min(0) - gap > a.max(0)):
         return False
-    from scipy.spatial import ConvexHull, QhullError
-
-    try:
-        ha, hb = ConvexHull(a), ConvexHull(b)
-    except (QhullError, ValueError):
-        return False
-    na, nb = ha.equations[:, :3], hb.equations[:, :3]
     if _separated(a, na, gap - 1e-6, b, nb):
         return False
     import manifold3d
-
-    from .hulls import _inflate
 
     grown = manifold3d.Manifold.hull_points(_inflate(a, gap - 1e-6))
     return (grown ^ manifold3d.Manifold.hull_points(b)).volume() > 1e-12
@@ -74,34 +65,63 @@ def _angles(j) -> np.ndarray:
     return np.linspace(j.lower, top, max(2, int(np.ceil((top - j.lower) / STEP)) + 1))
 
 
-def _offenders(obj, j, child, others, angles) -> dict[tuple[int, int], list]:
-    """``{(piece, convex index): [other hull's world points at rest]}`` (``angles``: the child's sampled poses,
-    rest first): the child's hulls that come
-    within :data:`MEETING_GAP` of a neighbour's hull during the swing, though not at rest."""
+def _swing_poses(obj, j, angles) -> list[np.ndarray]:
+    """The child's world pose at each of ``angles`` of ``j``, every other joint at rest: a turn about the joint's
+    axis through its origin (world, at rest) of the child's rest pose."""
+    from ..rotation import axis_angle
+
+    rest = obj.poses({})[j.child]
+    origin = np.asarray(j.origin, float)
+    out = []
+    for a in angles:
+        m = np.eye(4)
+        m[:3, :3] = axis_angle(np.asarray(j.axis, float), float(a))
+        m[:3, 3] = origin - m[:3, :3] @ origin
+        out.append(m @ rest)
+    return out
+
+
+def _offenders(obj, child, others, angles) -> dict[tuple[int, int], list]:
+    """``{(piece, convex index): [(other hull's world points at rest, its face normals)]}`` (``angles``: the
+    child's sampled poses, rest first): the child's hulls that come within :data:`MEETING_GAP` of a
+    neighbour's hull during the swing, though not at rest."""
     rest = obj.poses({})
+    # links are world-aligned at rest: a neighbour's hull normals are its mesh's
+    theirs = [(_world(oc, rest[o]), _face_normals(*h)) for o in others for op in obj.link(o).pieces
+              for oc, h in zip(op.convex, op.hulls(), strict=True)]
+    reach = np.vstack([_world(c, pose) for p in child.pieces for c in p.convex for pose in (angles[0], angles[-1])])
+    lo_all, hi_all = reach.min(0) - child_span(child), reach.max(0) + child_span(child)
+    theirs = [(b, nb) for b, nb in theirs if not (np.any(b.min(0) > hi_all) or np.any(b.max(0) < lo_all))]
     near = {}
     for n, piece in enumerate(child.pieces):
-        for k, c in enumerate(piece.convex):
-            at_rest = _world(c, rest[child.name])
-            swept = np.vstack([_world(c, pose) for pose in angles])
+        for k, (c, h) in enumerate(zip(piece.convex, piece.hulls(), strict=True)):
+            posed = _posed(c, _face_normals(*h), angles)
+            swept = np.vstack([w for w, _ in posed])
             lo, hi = swept.min(0) - MEETING_GAP, swept.max(0) + MEETING_GAP
-            for o in others:
-                for op in obj.link(o).pieces:
-                    for oc in op.convex:
-                        b = _world(oc, rest[o])
-                        if np.any(b.min(0) > hi) or np.any(b.max(0) < lo) or _close(at_rest, b, MEETING_GAP):
-                            continue  # as close by design: not the swing's doing
-                        if any(_close(_world(c, pose), b, MEETING_GAP) for pose in angles[1:]):
-                            near.setdefault((n, k), []).append(b)
+            for b, nb in theirs:
+                if np.any(b.min(0) > hi) or np.any(b.max(0) < lo) or _close(*posed[0], b, nb, MEETING_GAP):
+                    continue  # far, or as close at rest by design: not the swing's doing
+                if any(_close(w, nw, b, nb, MEETING_GAP) for w, nw in posed[1:]):
+                    near.setdefault((n, k), []).append((b, nb))
     return near
 
 
-def _clear_after(obj, j, child, n: int, k: int, bs: list, angles, d: float) -> tuple | None:
+def child_span(child) -> float:
+    """A bound on how far a point of ``child`` moves past the box of its rest and last swing poses (an arc
+    bulges out of its chord's box by at most its radius)."""
+    pts = np.vstack([c for p in child.pieces for c in p.convex])
+    return float(np.linalg.norm(np.ptp(pts, axis=0))) + MEETING_GAP
+
+
+def _posed(c: np.ndarray, normals: np.ndarray, poses) -> list[tuple[np.ndarray, np.ndarray]]:
+    return [(_world(c, pose), normals @ pose[:3, :3].T) for pose in poses]
+
+
+def _clear_after(child, n: int, k: int, theirs: list, angles, d: float) -> tuple | None:
     piece = child.pieces[n]
     c, hv, hf = _eroded(piece.convex[k], piece.hulls()[k], d)
-    for pose in angles:
-        w = _world(c, pose)
-        if any(_close(w, b, MEETING_GAP) for b in bs):
+    for w, nw in _posed(c, _face_normals(hv, hf), angles):
+        if any(_close(w, nw, b, nb, MEETING_GAP) for b, nb in theirs):
             return None
     return c, hv, hf
 
@@ -118,15 +138,15 @@ def keep_meeting_gaps(obj):
         others = _neighbours(obj, j)
         if not others:
             continue
-        angles = [obj.poses({j.name: float(a)})[child.name] for a in _angles(j)]  # the child's pose at each
-        offenders = _offenders(obj, j, child, others, angles)
+        angles = _swing_poses(obj, j, _angles(j))  # the child's pose at each
+        offenders = _offenders(obj, child, others, angles)
         if not offenders:
             continue
         pieces = list(child.pieces)
         by_piece: dict[int, dict] = {}
         for (n, k), bs in sorted(offenders.items(), key=lambda kv: kv[0]):
             for d in ERODE:
-                got = _clear_after(obj, j, child, n, k, bs, angles, d)
+                got = _clear_after(child, n, k, bs, angles, d)
                 if got is not None:
                     by_piece.setdefault(n, {})[k] = got
                     break
