@@ -189,6 +189,7 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
         texture_size=texture_size,
         timings={"geometry": t1 - t0, "textures": t2 - t1},
     )
+    obj = physical.keep_meeting_gaps(obj)  # before the clearance pass, which sweeps the final hulls
     obj = physical.limit_to_clearance(obj)
     obj = assign_drives(obj)  # after every limit is final: the stop budget depends on the range
     obj.interaction = annotate(obj)  # after the limits: the open state and the path read them

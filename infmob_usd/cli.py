@@ -386,6 +386,8 @@ def cmd_generate(args) -> int:
                   file=sys.stderr, flush=True)
         else:
             print(out / row["folder"], flush=True)
+            for note in row.get("notes", []):
+                print(f"infmob: {row['category']} seed {row['seed']}: {note}", file=sys.stderr, flush=True)
             if args.preview:
                 from .validate.preview import preview
 

@@ -193,6 +193,7 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
         "files": {**files, "semantics": "./semantics.txt", "annotations": "./annotations.json"},
         **({"retrieved_parts": obj.retrieved} if getattr(obj, "retrieved", None) else {}),
         **({"retrieval": obj.retrieval} if getattr(obj, "retrieval", None) is not None else {}),
+        **({"notes": list(obj.notes)} if getattr(obj, "notes", None) else {}),
     }))
 
 
