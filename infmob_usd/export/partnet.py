@@ -104,38 +104,37 @@ def plan(src: Source) -> Plan:
     return p
 
 
-def _fmt(v) -> str:
-    return " ".join(f"{x:.6f}" for x in v)
+def _coords(lines: list[str], rows: list[int], skip: int) -> np.ndarray:
+    """``(n, 3)`` numbers after the keyword of ``lines[rows]``; :class:`ExportError` unless each line has 3."""
+    words = " ".join(lines[i][skip:] for i in rows).split()
+    try:
+        xyz = np.array(words, dtype=float).reshape(len(rows), 3)
+    except ValueError:
+        raise ExportError(f"malformed OBJ: a vertex line without 3 numbers (near {lines[rows[0]][:60]!r})") from None
+    if not np.all(np.isfinite(xyz)):
+        raise ExportError("malformed OBJ: a vertex that is not a finite number")
+    return xyz
 
 
 def transform_obj(text: str, m: np.ndarray, keep_materials: bool = True) -> tuple[str, np.ndarray, list[str]]:
     """An OBJ's text with vertices moved by the ``(4, 4)`` transform ``m`` (normals turned with it);
     returns ``(text, (n, 3) vertices, mtllib names)``. Other lines are kept as they are."""
-    rot, normal = m[:3, :3], np.linalg.inv(m[:3, :3]).T
-    out, verts, libs = [], [], []
-    for line in text.splitlines():
-        head = line.split(" ", 1)[0]
-        if head in ("v", "vn"):
-            try:
-                xyz = np.array([float(x) for x in line.split()[1:4]])
-            except ValueError:
-                raise ExportError(f"malformed OBJ line {line[:60]!r}") from None
-            if xyz.shape != (3,) or not np.all(np.isfinite(xyz)):
-                raise ExportError(f"malformed OBJ line {line[:60]!r}")
-            if head == "v":
-                xyz = rot @ xyz + m[:3, 3]
-                verts.append(xyz)
-            else:
-                xyz = normal @ xyz
-                xyz = xyz / max(float(np.linalg.norm(xyz)), 1e-12)
-            line = f"{head} {_fmt(xyz)}"
-        elif head in ("mtllib", "usemtl"):
-            if not keep_materials:
-                continue
-            if head == "mtllib":
-                libs += line.split()[1:]
-        out.append(line)
-    return "\n".join(out) + "\n", np.asarray(verts, float).reshape(-1, 3), libs
+    lines = text.splitlines()
+    vs = [i for i, line in enumerate(lines) if line.startswith("v ")]
+    ns = [i for i, line in enumerate(lines) if line.startswith("vn ")]
+    verts = _coords(lines, vs, 2) @ m[:3, :3].T + m[:3, 3] if vs else np.zeros((0, 3))
+    for i, row in zip(vs, verts):
+        lines[i] = f"v {row[0]:.6f} {row[1]:.6f} {row[2]:.6f}"
+    if ns:
+        normals = _coords(lines, ns, 3) @ np.linalg.inv(m[:3, :3])
+        normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
+        for i, row in zip(ns, normals):
+            lines[i] = f"vn {row[0]:.6f} {row[1]:.6f} {row[2]:.6f}"
+    libs = [w for line in lines if line.startswith("mtllib ") for w in line.split()[1:]]
+    if not keep_materials:
+        lines = [line for line in lines if not line.startswith(("mtllib ", "usemtl "))]
+        libs = []
+    return "\n".join(lines) + "\n", verts, libs
 
 
 MAP_KEYS = ("map_", "norm", "bump", "disp", "refl")
@@ -277,7 +276,8 @@ def joint_data(src: Source, p: Plan, part: str) -> tuple[str, dict]:
     pm = src.semantics[part][0]
     want = {"hinge": ("revolute", "continuous"), "slider": ("prismatic",)}.get(pm)
     movable = [j for j in p.chain[part] if j.movable]
-    pick = next((j for j in movable if want and j.type in want), None)
+    # the joint that moves the part itself (the last of an emulation chain) when it is of the right kind
+    pick = next((j for j in reversed(movable) if want and j.type in want), None)
     if pick is None:
         return pm, {}
     origin = p.offset[pick.child]
