@@ -18,7 +18,7 @@ from .errors import (
     ParameterError,
     UnknownCategoryError,
 )
-from .export import export  # the function; its modules stay importable as infmob_usd.export.*
+from .export import ExportError, export  # the function; its modules stay importable as infmob_usd.export.*
 from .model import ArticulatedObject
 from .scenes import load_sapien as _load_sapien_scene
 from .scenes import save_scene
@@ -29,6 +29,7 @@ scene.load_sapien = _load_sapien_scene  # infmob_usd.scene(kind, seed) makes one
 __all__ = [
     "ArgumentTypeError",
     "ArticulatedObject",
+    "ExportError",
     "GeometryError",
     "InfmobError",
     "ModelError",
