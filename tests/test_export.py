@@ -275,8 +275,9 @@ def test_hostile_source_is_refused_with_one_line_and_nothing_written(small_src, 
     elif attack == "meta_not_json":
         (obj / "metadata.json").write_text("{")
     else:
-        mtl = sorted((obj / "meshes").glob("*.mtl"))[0]
-        mtl.write_text("newmtl x\nmap_Kd ../../../secret.png\n")
+        (tmp_path / "secret.png").write_bytes(b"\x89PNG\r\n\x1a\n")
+        for mtl in (obj / "meshes").glob("*.mtl"):  # a texture path out of the object folder, to a real file
+            mtl.write_text("newmtl x\nmap_Kd ../../../../secret.png\n")
     out = tmp_path / "out"
     assert main(["export", "partnet-mobility", str(tmp_path / "one"), "--out", str(out), "--workers", "1"]) == 2
     err = capsys.readouterr().err.strip()
