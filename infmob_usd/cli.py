@@ -871,7 +871,7 @@ def main(argv: list[str] | None = None) -> int:
     except Terminated as e:
         signal.signal(signal.SIGTERM, signal.SIG_IGN)  # a second SIGTERM cannot interrupt the message
         print(f"infmob: stopped by SIGTERM ({args.command}): nothing half-written was left; run it again to"
-              f" {'resume' if args.command == 'generate' else 'redo it'}", file=sys.stderr)
+              f" {'resume' if args.command in ('generate', 'export') else 'redo it'}", file=sys.stderr)
         return e.code
     except KeyboardInterrupt:
         return 130

@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
-from infmob_usd.batch import OutputLock, clean_partial, progress_bar
+from infmob_usd.batch import _PARENT_FDS, OutputLock, _die_with_parent, _stop_pool, clean_partial, progress_bar
 from infmob_usd.layers import check_output_dir
 from infmob_usd.runs import new_run_id, temp_prefix
 
@@ -136,21 +136,22 @@ def _pool_map(todo, work: Callable, workers: int, record: Callable[[dict], None]
         for args in todo:
             record(work(*args))
         return
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        pending = set()
-        try:
-            for args in todo:
-                pending.add(pool.submit(work, *args))
-                if len(pending) >= 2 * workers:
-                    done, pending = wait(pending, return_when=FIRST_COMPLETED)
-                    for f in done:
-                        record(f.result())
-            for f in pending:
-                record(f.result())
-        except BaseException:
-            for f in pending:
-                f.cancel()
-            raise
+    # workers drop the run's lock and row descriptors and die with the run (as `generate`'s pool does)
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=_die_with_parent)
+    pending = set()
+    try:
+        for args in todo:
+            pending.add(pool.submit(work, *args))
+            if len(pending) >= 2 * workers:
+                done, pending = wait(pending, return_when=FIRST_COMPLETED)
+                for f in done:
+                    record(f.result())
+        for f in pending:
+            record(f.result())
+    except BaseException:
+        _stop_pool(pool)
+        raise
+    pool.shutdown()
 
 
 def _open_rows(out: Path, overwrite: bool) -> tuple[set[str], int]:
@@ -224,6 +225,7 @@ def export(fmt: str, src: str | Path, out: str | Path, *, split: str | dict | No
             break
         ids = assign_ids(out, rels, first_id)
         done, fd = _open_rows(out, overwrite)
+        _PARENT_FDS.add(fd)
         todo = [r for r in rels if r not in done]
         bar = progress_bar(len(todo))
 
@@ -236,6 +238,7 @@ def export(fmt: str, src: str | Path, out: str | Path, *, split: str | dict | No
         try:
             _pool_map(((fmt, str(src), r, ids[r], str(out), run_id) for r in todo), export_one, workers, record)
         finally:
+            _PARENT_FDS.discard(fd)
             os.close(fd)
             bar.close()
         summary = _finish(fmt, out, rels, fractions, seed, command)
