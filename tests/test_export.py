@@ -336,3 +336,32 @@ def test_resume_after_a_killed_run_redoes_only_what_is_missing(small_src, tmp_pa
     assert sorted(r["source"] for r in again) == sorted(ids) and {r["source"]: r["id"] for r in again} == ids
     assert not [p for p in out.iterdir() if p.name.startswith(".") and p.name != ".infmob.lock"]
     assert os.access(out / "DATASET.md", os.R_OK)
+
+
+@pytest.mark.sim
+def test_gapartnet_reads_annotations_json_when_the_source_has_one(tmp_path):
+    """Part and handle classes and the handle's oriented box come from annotations.json (schema v1)."""
+    pytest.importorskip("sapien")
+    from robot_fixture import write_annotations
+
+    from infmob_usd.export.partnet import MESH_FROM_WORLD
+
+    root = tmp_path / "objects"
+    folder = Path(infmob_usd.save(infmob_usd.generate("kitchen_cabinet", 3, texture_size=16, has_handles=True),
+                                  root / "kitchen_cabinet"))
+    targets = write_annotations(folder)  # writes folder/annotations.json
+    assert any(t["handle_class"] for t in targets)
+    export("gapartnet", root, tmp_path / "gap")
+    d = next(p for p in (tmp_path / "gap").iterdir() if p.name.isdigit())
+    names = json.loads((d / "meta.json").read_text())["infmob"]["links"]
+    annos = {a["link_name"]: a for a in json.loads((d / "link_annotation_gapartnet.json").read_text())}
+    model = parse_urdf(next(folder.glob("*.urdf")))
+    poses = model.poses()
+    handles = [a for a in annos.values() if a["category"] in ("line_fixed_handle", "round_fixed_handle")]
+    for t in targets:
+        assert annos[names[t["link"]]]["category"] == t["part_class"]
+        if t["handle_class"]:
+            pose = poses[t["link"]]
+            center = MESH_FROM_WORLD @ (pose[:3, :3] @ np.array(t["box"]["center"]) + pose[:3, 3])
+            match = [h for h in handles if np.allclose(np.mean(h["bbox"], axis=0), center, atol=1e-6)]
+            assert len(match) == 1 and match[0]["category"] == t["handle_class"], t["link"]

@@ -7,7 +7,6 @@ import json
 import math
 import re
 from collections import Counter, defaultdict
-from pathlib import Path
 
 from infmob_usd._version import __version__
 
@@ -161,16 +160,3 @@ def split_files(fmt: str, rows: list[dict], splits: dict[int, str], fractions: d
             out["data_split.json"] = json.dumps({k: [f"{cat[i]}/{i}" for i in v] for k, v in ids.items()},
                                                 indent=1) + "\n"
     return out
-
-
-def write_files(out: Path, files: dict[str, str]) -> None:
-    from .run import _write_atomic
-
-    for name, text in files.items():
-        path = out
-        for part in Path(name).parts[:-1]:
-            path = path / part
-            if path.is_symlink():
-                raise ExportError(f"{path} is a symbolic link; export never writes through a link: remove it")
-            path.mkdir(exist_ok=True)
-        _write_atomic(out / name, text)

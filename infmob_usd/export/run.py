@@ -168,6 +168,18 @@ def _open_rows(out: Path, overwrite: bool) -> tuple[set[str], int]:
     return done, fd
 
 
+def _write_files(out: Path, files: dict[str, str]) -> None:
+    """Write ``{relative name: text}`` under ``out``, each atomically, through no link."""
+    for name, text in files.items():
+        path = out
+        for part in Path(name).parts[:-1]:
+            path = path / part
+            if path.is_symlink():
+                raise ExportError(f"{path} is a symbolic link; export never writes through a link: remove it")
+            path.mkdir(exist_ok=True)
+        _write_atomic(out / name, text)
+
+
 def _finish(fmt: str, out: Path, rels: list[str], fractions: dict[str, float], seed: int, command: str) -> dict:
     """Splits, ManiSkill's lists and DATASET.md from the rows of the objects now in SRC."""
     from . import card
@@ -183,7 +195,7 @@ def _finish(fmt: str, out: Path, rels: list[str], fractions: dict[str, float], s
         for name, data in card.maniskill_meta(rows, splits).items():
             files[f"maniskill/partnet_mobility/meta/{name}"] = json.dumps(data, indent=1) + "\n"
     files["DATASET.md"] = card.card(fmt, rows, splits, fractions, seed, command)
-    card.write_files(out, files)
+    _write_files(out, files)
     return {"objects": len(rows), "splits": {k: sum(1 for v in splits.values() if v == k) for k in fractions}}
 
 
