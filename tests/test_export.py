@@ -350,6 +350,12 @@ def test_gapartnet_reads_annotations_json_when_the_source_has_one(tmp_path):
     folder = Path(infmob_usd.save(infmob_usd.generate("kitchen_cabinet", 3, texture_size=16, has_handles=True),
                                   root / "kitchen_cabinet"))
     targets = write_annotations(folder)  # writes folder/annotations.json
+    for t in targets:  # classes and boxes the labels and meshes alone would not give: they must be read
+        if t["handle_class"]:
+            t["handle_class"] = "round_fixed_handle"
+            t["box"]["center"] = [c + 0.01 for c in t["box"]["center"]]
+    data = json.loads((folder / "annotations.json").read_text())
+    (folder / "annotations.json").write_text(json.dumps({**data, "targets": targets}))
     assert any(t["handle_class"] for t in targets)
     export("gapartnet", root, tmp_path / "gap")
     d = next(p for p in (tmp_path / "gap").iterdir() if p.name.isdigit())
