@@ -242,6 +242,17 @@ def test_gapartnet_files(small_src, tmp_path):
         if a["is_gapart"]:
             box = np.array(a["bbox"])
             assert box.shape == (8, 3) and np.all(box[1] - box[0] > 0) is not None
+    poses = model.poses()
+    for a in annos:  # each box holds its link's meshes at rest, in the base (world, Z up) frame
+        if not a["is_gapart"]:
+            continue
+        box = np.array(a["bbox"])
+        lo, hi = box.min(0) - 1e-6, box.max(0) + 1e-6
+        for m in model.links[a["link_name"]].visuals:
+            v = np.array([[float(x) for x in line.split()[1:4]] for line in (d / m.filename).read_text().splitlines()
+                          if line.startswith("v ")])
+            w = v @ (poses[a["link_name"]] @ m.origin)[:3, :3].T + (poses[a["link_name"]] @ m.origin)[:3, 3]
+            assert np.all(w >= lo) and np.all(w <= hi), (a["link_name"], m.filename)
     sem = _semantics(d / "semantics_gapartnet.txt")
     assert set(sem) == {a["link_name"] for a in annos}
     assert "GAPart classes" in (out / "DATASET.md").read_text()
@@ -344,8 +355,6 @@ def test_gapartnet_reads_annotations_json_when_the_source_has_one(tmp_path):
     pytest.importorskip("sapien")
     from robot_fixture import write_annotations
 
-    from infmob_usd.export.partnet import MESH_FROM_WORLD
-
     root = tmp_path / "objects"
     folder = Path(infmob_usd.save(infmob_usd.generate("kitchen_cabinet", 3, texture_size=16, has_handles=True),
                                   root / "kitchen_cabinet"))
@@ -368,6 +377,6 @@ def test_gapartnet_reads_annotations_json_when_the_source_has_one(tmp_path):
         assert annos[names[t["link"]]]["category"] == t["part_class"]
         if t["handle_class"]:
             pose = poses[t["link"]]
-            center = MESH_FROM_WORLD @ (pose[:3, :3] @ np.array(t["box"]["center"]) + pose[:3, 3])
+            center = pose[:3, :3] @ np.array(t["box"]["center"]) + pose[:3, 3]  # base (world) frame
             match = [h for h in handles if np.allclose(np.mean(h["bbox"], axis=0), center, atol=1e-6)]
             assert len(match) == 1 and match[0]["category"] == t["handle_class"], t["link"]

@@ -24,7 +24,7 @@ import numpy as np
 
 from infmob_usd.validate.files import UrdfJoint, UrdfLink, write_urdf
 
-from .partnet import MESH_FROM_WORLD, Plan, Written, urdf_model
+from .partnet import WORLD_FROM_MESH, Plan, Written, urdf_model
 from .source import Source, read_text
 
 # (PartNet-Mobility joint type, our part label) -> GAPartNet class, where annotations.json is absent
@@ -57,6 +57,8 @@ def _box_corners(center, size, rot: np.ndarray) -> list[list[float]]:
 
 
 def _aabb_corners(v: np.ndarray) -> list[list[float]]:
+    """The axis-aligned box (base frame, Z up) of vertices given in the object frame."""
+    v = v @ WORLD_FROM_MESH.T
     lo, hi = v.min(0), v.max(0)
     return _box_corners((lo + hi) / 2, hi - lo, np.eye(3))
 
@@ -71,13 +73,13 @@ def _quat_matrix(q) -> np.ndarray:
 
 
 def _handle_box(p: Plan, link: str, target: dict) -> list[list[float]] | None:
-    """The annotated handle box (link frame) as 8 corners in the object frame."""
+    """The annotated handle box (link frame) as 8 corners in the base frame."""
     box = target.get("box")
     if not isinstance(box, dict):
         return None
     pose = p.poses[link]
-    rot = MESH_FROM_WORLD @ pose[:3, :3] @ _quat_matrix(box.get("quat_wxyz", (1, 0, 0, 0)))
-    center = MESH_FROM_WORLD @ (pose[:3, :3] @ np.asarray(box["center"], float) + pose[:3, 3])
+    rot = pose[:3, :3] @ _quat_matrix(box.get("quat_wxyz", (1, 0, 0, 0)))
+    center = pose[:3, :3] @ np.asarray(box["center"], float) + pose[:3, 3]
     return _box_corners(center, box["size"], rot)
 
 
