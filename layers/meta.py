@@ -79,6 +79,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "jar": ("Q1207302", "http://www.wikidata.org/entity/Q1207302 'jar' (VU)"),
     "lamp": ("Q1138737", "http://www.wikidata.org/entity/Q1138737 'lamp' (VU)"),
     "kitchen_cabinet": ("Q2741056", "http://www.wikidata.org/entity/Q2741056 'cabinet' (VU)"),
+    "washing_machine": ("Q124441", "http://www.wikidata.org/entity/Q124441 'washing machine' (public Wikidata"
+                                   " Q-id tables pairing it with that label, e.g. WASHING_MACHINE = \"Q124441\" beside"
+                                   " Q186263 'dishwasher' and Q127956 'microwave oven')"),
     "dishwasher": ("Q186263", "http://www.wikidata.org/entity/Q186263 'dishwasher' (WN 03212662-n"
                               " 'a machine for washing dishes'; IN; OEWN)"),
     "pan": ("Q127666", "http://www.wikidata.org/entity/Q127666 'frying pan' (WN 03405146-n 'frying pan,"
