@@ -18,7 +18,15 @@ from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
-from infmob_usd.batch import _PARENT_FDS, OutputLock, _die_with_parent, _stop_pool, clean_partial, progress_bar
+from infmob_usd.batch import (
+    _PARENT_FDS,
+    OutputLock,
+    _die_with_parent,
+    _remove_temporaries,
+    _stop_pool,
+    clean_partial,
+    progress_bar,
+)
 from infmob_usd.layers import check_output_dir
 from infmob_usd.runs import new_run_id, temp_prefix
 
@@ -249,6 +257,10 @@ def export(fmt: str, src: str | Path, out: str | Path, *, split: str | dict | No
         run_id = new_run_id()
         try:
             _pool_map(((fmt, str(src), r, ids[r], str(out), run_id) for r in todo), export_one, workers, record)
+        except BaseException:  # the workers are stopped: what they were writing is this run's, half-written
+            pid, token = run_id.split("-")
+            _remove_temporaries(out, lambda m: m["pid"] == pid and m["token"] == token)
+            raise
         finally:
             _PARENT_FDS.discard(fd)
             os.close(fd)
