@@ -84,6 +84,11 @@ class Family:
         denser than window glass, a frosted bulb nearly opaque).
     ior : float
         Index of refraction (written for see-through materials).
+    specular_anisotropy : float
+        Strength in [0, 1] of the anisotropic highlight of a brushed or grained finish, stretched
+        across the texture's U (the part's long axis, :attr:`anisotropy`): glTF's
+        ``KHR_materials_anisotropy`` ``anisotropyStrength`` and the MTL PBR extension's ``aniso``
+        (UsdPreviewSurface has no such input).  0: isotropic.
     wall : float
         Wall thickness in metres of this family's parts where they are hollow (a steel tube or
         casing, a ceramic bowl, a glass bottle, a moulded plastic shell): a piece without its own
@@ -107,6 +112,7 @@ class Family:
     variant_opacity: tuple[tuple[str, Range], ...] = ()
     ior: float = 1.5
     wall: float = 0.0
+    specular_anisotropy: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -317,6 +323,9 @@ FAMILIES: dict[str, Family] = {
             bump=(0.012, 0.025),
             scale=(700.0, 1100.0),  # abrasive lines 0.5-1.5 mm apart (the finest are sub-texel)
             anisotropy=(150.0, 300.0),  # lines run the length of the part, each many cm long
+            # the highlight of a brushed sheet is stretched across the lines, several times longer than
+            # wide (Filament's material guide: "brushed metals are anisotropic"); 0.6 chosen, not measured
+            specular_anisotropy=0.6,
         ),
         Family(
             name="cast_iron",
