@@ -357,12 +357,6 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, normals=None,
 _MTL_MAPS = {"basecolor": "map_Kd", "roughness": "map_Pr", "metallic": "map_Pm", "normal": "norm"}
 
 
-def _aniso(look) -> float:
-    from infmob_usd.materials import FAMILIES
-
-    return float(FAMILIES[look.family].specular_anisotropy)
-
-
 def _mtl(slot: str, look, maps) -> str:
     """MTL of one slot: constants from the look, a map line for each texture written.
 
@@ -370,8 +364,8 @@ def _mtl(slot: str, look, maps) -> str:
     which multiplies ``map_Kd`` (as the MTL format defines it; without a map it is the tinted
     colour), the roughness scale is ``map_Pr -mm 0 <scale>`` (base, gain), and the UV rotation
     and offset are baked into the OBJ ``vt`` (:func:`write_urdf`), which every reader honours.
-    ``d`` and ``Tr`` (= 1 - d) give the opacity, ``Ni`` the index of refraction; a brushed finish
-    adds the PBR extension's ``aniso`` (strength) and ``anisor`` (rotation, 0: along U).
+    ``d`` and ``Tr`` (= 1 - d) give the opacity, ``Ni`` the index of refraction.  No ``aniso`` line
+    for brushed finishes: Assimp's MTL reader (SAPIEN, URDF importers) fails on it.
     """
     tint = np.asarray(look.wear.tint, float)
     r, g, b = tint if "basecolor" in maps else tint * np.asarray(look.base_color, float)
@@ -389,9 +383,6 @@ def _mtl(slot: str, look, maps) -> str:
         from infmob_usd.materials import FAMILIES
 
         lines += [f"Tr {1.0 - look.opacity:.3f}", f"Ni {FAMILIES[look.family].ior:.3f}"]
-    aniso = _aniso(look)
-    if aniso > 0.0:  # brushed along U, the part's long axis: rotation 0
-        lines += [f"aniso {aniso:.3f}", "anisor 0.000"]
     for name, key in _MTL_MAPS.items():
         if name in maps:
             option = f"-mm 0 {rough:.4f} " if name == "roughness" else ""

@@ -87,8 +87,8 @@ class Family:
     specular_anisotropy : float
         Strength in [0, 1] of the anisotropic highlight of a brushed or grained finish, stretched
         across the texture's U (the part's long axis, :attr:`anisotropy`): glTF's
-        ``KHR_materials_anisotropy`` ``anisotropyStrength`` and the MTL PBR extension's ``aniso``
-        (UsdPreviewSurface has no such input).  0: isotropic.
+        ``KHR_materials_anisotropy`` ``anisotropyStrength`` (UsdPreviewSurface has no such input, and
+        Assimp's MTL reader fails on the MTL PBR extension's ``aniso``).  0: isotropic.
     wall : float
         Wall thickness in metres of this family's parts where they are hollow (a steel tube or
         casing, a ceramic bowl, a glass bottle, a moulded plastic shell): a piece without its own

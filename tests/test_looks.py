@@ -211,6 +211,7 @@ def test_brushed_steel_carries_its_anisotropy_along_the_part(tmp_path):
         ext = mat.get("extensions", {}).get("KHR_materials_anisotropy")
         if mat["name"] in brushed:
             assert ext == {"anisotropyStrength": pytest.approx(0.6), "anisotropyRotation": 0.0}
-            assert float(_mtl(folder, mat["name"])["aniso"]) == pytest.approx(0.6)
         else:
-            assert ext is None and "aniso" not in _mtl(folder, mat["name"])
+            assert ext is None
+    # no MTL "aniso": Assimp's MTL reader (SAPIEN, URDF importers) fails to load a mesh that has it
+    assert not any(ln.startswith("aniso") for m in folder.glob("meshes/*.mtl") for ln in m.read_text().splitlines())
