@@ -250,7 +250,7 @@ FAMILIES: dict[str, Family] = {
                 ("oak", "#AE8C67"),  # L* 61, a* 8, b* 25 (European/white oak)
                 ("walnut", "#6B5040"),  # L* 36, a* 9, b* 14 (black walnut heartwood)
                 ("birch", "#C9AD89"),  # L* 72, a* 5, b* 22
-                ("cherry", "#9B6B4D"),  # L* 49, a* 16, b* 24 (black cherry, aged)
+                ("cherry", "#92694F"),  # L* 48, a* 13, b* 21 (black cherry, aged)
                 ("maple", "#CFB28C"),  # L* 74, a* 5, b* 23 (hard maple)
                 ("teak", "#946E48"),  # L* 49, a* 10, b* 27
             ),

@@ -127,7 +127,7 @@ def _environment_map(d: Path) -> list[str]:
         v = np.where(up >= 0, sky, floor)
         v = v - 0.3 * np.exp(-((el - 2.0) / 5.0) ** 2)  # a darker band at the horizon: chrome reads as chrome
         for a0, wa in _CARDS:
-            v = np.minimum(v, 1.0 - 0.85 * _card(az, el, a0, wa))
+            v = np.minimum(v, 1.0 - 0.75 * _card(az, el, a0, wa))
         v = np.maximum(v, _softbox(az, el, -25.0, 50.0, 28.0, 20.0))  # key softbox, where the key light is
         v = np.maximum(v, 0.9 * _softbox(az, el, 130.0, 28.0, 18.0, 14.0))  # rim softbox behind the right
         img = np.clip(np.stack([v * 0.98, v, v * 1.03], -1) * 255, 0, 255).astype(np.uint8)
