@@ -104,9 +104,9 @@ PARAMS = (
 
 MATERIALS = {
     "body": "body_finish", "door": "body_finish", "door_inner": "painted:black|charcoal",
-    "interior": "enamel:black|cobalt", "glass": "glass", "rack": "chrome", "handle": "handle_finish",
+    "interior": "enamel:black|midnight|anthracite", "glass": "glass", "rack": "chrome", "handle": "handle_finish",
     "knob": "plastic:black|dark_grey|light_grey", "button": "plastic:black|dark_grey",
-    "display": "rubber:deep_black", "cooktop": "enamel:black", "grate": "enamel:black",
+    "display": "rubber:deep_black", "cooktop": "enamel:black", "grate": "cast_iron",
     "burner": "brushed_metal", "cap": "enamel:black", "trim": "chrome", "feet": "rubber",
     "plinth": "painted:black|charcoal",
 }

@@ -69,7 +69,7 @@ PARAMS = (
 
 MATERIALS = {
     "top": "top_family", "housing": "brushed_metal", "feet": "rubber", "burner": "brushed_metal",
-    "cap": "enamel:black", "grate": "enamel:black", "trim": "chrome", "display": "plastic:light_grey|dark_grey",
+    "cap": "enamel:black", "grate": "cast_iron", "trim": "chrome", "display": "plastic:light_grey|dark_grey",
     "knob": "plastic:black|dark_grey|light_grey", "button": "plastic:black|dark_grey",
 }
 TOPS = {"induction": "enamel:black", "stainless": "brushed_metal", "enamel": "enamel:white|black|graphite"}

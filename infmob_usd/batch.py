@@ -270,6 +270,7 @@ def make_one(job: Job, out: str, run_id: str | None = None) -> dict:
         "joint_kinds": kinds,
         "formats": list(job.formats),
         **({"parts": job.parts, "parts_share": job.parts_share, "retrieval": obj.retrieval} if job.parts else {}),
+        **({"notes": list(obj.notes)} if obj.notes else {}),
         "seconds": {k: round(v, 4) for k, v in obj.timings.items()} | {"total": round(time.perf_counter() - t0, 4)},
         "version": __version__,
         "files": files,

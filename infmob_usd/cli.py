@@ -1,5 +1,5 @@
 """The ``infmob`` command line: list, params, generate, scene, parts, fuzz, validate, preview, stats, gallery, textures,
-bench (docs/cli.md)."""
+bench, export (docs/cli.md)."""
 
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("category", help="a category id (infmob list)")
     # in this order: `infmob --help` lists the commands so
     for add in (_generate_command, _scene_command, _parts_command, _fuzz_command, _validate_command, _preview_command,
-                _stats_command, _gallery_command, _textures_command, _bench_command):
+                _stats_command, _gallery_command, _textures_command, _bench_command, _export_command):
         add(sub)
     return ap
 
@@ -58,6 +58,44 @@ def _generate_command(sub) -> None:
                    help="a part library (infmob parts import / export-builtin): retrievable parts may be its meshes")
     g.add_argument("--parts-share", type=float, default=None, metavar="P",
                    help="with --parts: probability in [0, 1] that a retrievable part is retrieved; default 0.5")
+
+
+def _export_command(sub) -> None:
+    """Add the ``infmob export`` subcommand and its options to ``sub``."""
+    from .export import FIRST_ID, FORMATS
+
+    ex = sub.add_parser("export", help="a folder of generated objects as a dataset: PartNet-Mobility, GAPartNet or"
+                        " CAGE layout, splits and DATASET.md",
+                        description="Export the objects under SRC (folders written by `infmob generate`) in the layout"
+                        " learning code reads (docs/export.md). Streams through a process pool; an interrupted run"
+                        " resumes; DIR/DATASET.md records counts, joint statistics, the command and the licence.")
+    ex.add_argument("format", choices=FORMATS, metavar="FORMAT", help=f"one of {', '.join(FORMATS)}")
+    ex.add_argument("src", metavar="SRC", help="a folder of generated objects (infmob generate --out SRC)")
+    ex.add_argument("--out", required=True, metavar="DIR", help="the dataset folder (not inside SRC)")
+    ex.add_argument("--split", default=None, metavar="NAME=FRAC,...",
+                    help="split per category, e.g. train=0.8,val=0.1,test=0.1 (DIR/splits.json)")
+    ex.add_argument("--seed", type=int, default=0, help="seed of the split; default 0")
+    ex.add_argument("--workers", type=int, default=None, help="worker processes; default: all cores")
+    ex.add_argument("--first-id", type=int, default=FIRST_ID,
+                    help=f"first numeric object id (ids are kept across runs); default {FIRST_ID}")
+    ex.add_argument("--overwrite", action="store_true", help="re-export objects already exported (default: resume)")
+    ex.add_argument("--wait", action="store_true",
+                    help="if another run is writing to DIR, wait for it to finish (default: fail at once)")
+
+
+def cmd_export(args) -> int:
+    from .export import export
+
+    if not 0 <= args.first_id <= 10**12:
+        return _fail(f"--first-id must be 0..10^12, got {args.first_id}")
+    command = " ".join(["infmob", *(sys.argv[1:] if sys.argv and sys.argv[0].endswith("infmob") else
+                                    ["export", args.format, args.src, "--out", args.out])])
+    res = export(args.format, args.src, args.out, split=args.split, seed=args.seed, workers=_workers(args.workers),
+                 overwrite=args.overwrite, first_id=args.first_id, command=command, wait_lock=args.wait)
+    splits = ", ".join(f"{k} {v}" for k, v in res["splits"].items())
+    print(f"{res['objects']} objects in {args.out} ({res['exported']} exported now"
+          f"{'; ' + splits if splits else ''}); see {os.path.join(args.out, 'DATASET.md')}")
+    return 0
 
 
 def _scene_command(sub) -> None:
@@ -386,6 +424,8 @@ def cmd_generate(args) -> int:
                   file=sys.stderr, flush=True)
         else:
             print(out / row["folder"], flush=True)
+            for note in row.get("notes", []):
+                print(f"infmob: {row['category']} seed {row['seed']}: {note}", file=sys.stderr, flush=True)
             if args.preview:
                 from .validate.preview import preview
 
@@ -818,7 +858,8 @@ def cmd_gallery(args) -> int:
 
 COMMANDS = {"list": cmd_list, "params": cmd_params, "generate": cmd_generate, "validate": cmd_validate,
             "preview": cmd_preview, "stats": cmd_stats, "bench": cmd_bench, "textures": cmd_textures,
-            "gallery": cmd_gallery, "fuzz": cmd_fuzz, "parts": cmd_parts, "scene": cmd_scene}
+            "gallery": cmd_gallery, "fuzz": cmd_fuzz, "parts": cmd_parts, "scene": cmd_scene,
+            "export": cmd_export}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -841,7 +882,7 @@ def main(argv: list[str] | None = None) -> int:
     except Terminated as e:
         signal.signal(signal.SIGTERM, signal.SIG_IGN)  # a second SIGTERM cannot interrupt the message
         print(f"infmob: stopped by SIGTERM ({args.command}): nothing half-written was left; run it again to"
-              f" {'resume' if args.command == 'generate' else 'redo it'}", file=sys.stderr)
+              f" {'resume' if args.command in ('generate', 'export') else 'redo it'}", file=sys.stderr)
         return e.code
     except KeyboardInterrupt:
         return 130

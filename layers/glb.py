@@ -8,7 +8,8 @@
   uv) is shared by every face that has the same one;
 * one PBR material per slot: base colour texture (sRGB), normal texture, and a
   metallic-roughness texture (glTF's layout: roughness in G, metallic in B) made from our
-  roughness map and the look's metallic; glass is ``alphaMode BLEND``;
+  roughness map and the look's metallic; glass is ``alphaMode BLEND``; a brushed finish carries
+  ``KHR_materials_anisotropy`` (strength from its family, direction along U: the part's long axis);
 * images are embedded PNGs; the container (12-byte header, a JSON and a BIN chunk, 4-byte
   aligned) is written by hand, so no glTF package is needed.
 
@@ -27,6 +28,7 @@ from .common import visual_meshes, write_file
 
 FLOAT, UINT = 5126, 5125
 ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+ANISOTROPY = "KHR_materials_anisotropy"
 Z_UP_TO_Y_UP = [-0.7071067811865476, 0.0, 0.0, 0.7071067811865476]  # x y z w: -90 degrees about X
 
 
@@ -97,7 +99,16 @@ def _material(slot: str, look, maps: dict, binary: _Bin, images: list, textures:
         mat["normalTexture"] = {"index": texture(maps["normal"])}
     if look.opacity < 1.0:
         mat["alphaMode"] = "BLEND"
+    strength = _specular_anisotropy(look)
+    if strength > 0.0:  # brushing along U, which runs along the part: rotation 0 is the UV tangent
+        mat["extensions"] = {ANISOTROPY: {"anisotropyStrength": strength, "anisotropyRotation": 0.0}}
     return mat
+
+
+def _specular_anisotropy(look) -> float:
+    from infmob_usd.materials import FAMILIES
+
+    return float(FAMILIES[look.family].specular_anisotropy)
 
 
 def _primitive(v, f, n, uv, binary: _Bin) -> dict:
@@ -154,6 +165,8 @@ def glb_bytes(obj) -> bytes:
         "bufferViews": binary.views,
         "buffers": [{"byteLength": len(binary.data)}],
     }
+    if any(ANISOTROPY in m.get("extensions", {}) for m in materials):
+        doc["extensionsUsed"] = [ANISOTROPY]
     if textures:
         doc["textures"] = textures
         doc["images"] = images

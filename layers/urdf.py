@@ -364,7 +364,8 @@ def _mtl(slot: str, look, maps) -> str:
     which multiplies ``map_Kd`` (as the MTL format defines it; without a map it is the tinted
     colour), the roughness scale is ``map_Pr -mm 0 <scale>`` (base, gain), and the UV rotation
     and offset are baked into the OBJ ``vt`` (:func:`write_urdf`), which every reader honours.
-    ``d`` and ``Tr`` (= 1 - d) give the opacity, ``Ni`` the index of refraction.
+    ``d`` and ``Tr`` (= 1 - d) give the opacity, ``Ni`` the index of refraction.  No ``aniso`` line
+    for brushed finishes: Assimp's MTL reader (SAPIEN, URDF importers) fails on it.
     """
     tint = np.asarray(look.wear.tint, float)
     r, g, b = tint if "basecolor" in maps else tint * np.asarray(look.base_color, float)

@@ -84,6 +84,11 @@ class Family:
         denser than window glass, a frosted bulb nearly opaque).
     ior : float
         Index of refraction (written for see-through materials).
+    specular_anisotropy : float
+        Strength in [0, 1] of the anisotropic highlight of a brushed or grained finish, stretched
+        across the texture's U (the part's long axis, :attr:`anisotropy`): glTF's
+        ``KHR_materials_anisotropy`` ``anisotropyStrength`` (UsdPreviewSurface has no such input, and
+        Assimp's MTL reader fails on the MTL PBR extension's ``aniso``).  0: isotropic.
     wall : float
         Wall thickness in metres of this family's parts where they are hollow (a steel tube or
         casing, a ceramic bowl, a glass bottle, a moulded plastic shell): a piece without its own
@@ -107,6 +112,7 @@ class Family:
     variant_opacity: tuple[tuple[str, Range], ...] = ()
     ior: float = 1.5
     wall: float = 0.0
+    specular_anisotropy: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -233,19 +239,27 @@ FAMILIES: dict[str, Family] = {
             name="wood",
             density=650.0,
             style="wood",
+            # Lacquered heartwood: sRGB of CIELAB (D65) targets inside the ranges spectrophotometer studies
+            # report for planed heartwood (oak: Defoirdt et al., "A colour assessment methodology for oak
+            # wood", Ann. For. Sci. 69:939, 2012, doi:10.1007/s13595-012-0214-3; 24 central European species
+            # and how oil or lacquer darkens and intensifies them: "Wood colour of central European wood
+            # species: CIELAB characterisation and colour intensification", Eur. J. Wood Prod., 2017,
+            # doi:10.1007/s00107-016-1108-0), a few L* darker for the clear finish.  Chroma C* 14-29: a
+            # finished board of C* 35-40 reads as orange paint, not wood.
             palette=(
-                ("oak", "#C49A6C"),
-                ("walnut", "#6B4A33"),
-                ("birch", "#E0C595"),
-                ("cherry", "#9E5B3A"),
-                ("maple", "#DDB883"),
-                ("teak", "#A8763E"),
+                ("oak", "#AE8C67"),  # L* 61, a* 8, b* 25 (European/white oak)
+                ("walnut", "#6B5040"),  # L* 36, a* 9, b* 14 (black walnut heartwood)
+                ("birch", "#C9AD89"),  # L* 72, a* 5, b* 22
+                ("cherry", "#92694F"),  # L* 48, a* 13, b* 21 (black cherry, aged)
+                ("maple", "#CFB28C"),  # L* 74, a* 5, b* 23 (hard maple)
+                ("teak", "#946E48"),  # L* 49, a* 10, b* 27
             ),
-            hsv_jitter=(0.015, 0.10, 0.10),
+            hsv_jitter=(0.012, 0.08, 0.08),
             roughness=(0.4, 0.65),
             metallic=0.0,
             opacity=_OPAQUE,
-            color_variation=(0.2, 0.32),
+            # ring, pore and board contrast of a finished board: latewood a few L* darker, not stripes
+            color_variation=(0.1, 0.16),
             roughness_variation=(0.04, 0.08),
             bump=(0.02, 0.04),
             # growth rings 2.5-5.5 mm wide (Wood Handbook ch. 2: 4-14 rings per inch in
@@ -290,20 +304,49 @@ FAMILIES: dict[str, Family] = {
             # steel tube and pressed sheet: furniture tube walls 1-1.5 mm (EN 10305-3), appliance panels 0.6-0.8 mm
             wall=0.0012,
             style="brushed",
+            # AISI 304 stainless, F0 (linear) 0.669/0.639/0.598 from its complex IOR (physicallybased.info,
+            # "Stainless Steel", after refractiveindex.info): sRGB #D6D1CB; appliance sheet is sold in
+            # slightly cooler and warmer casts of the same steel.
             palette=(
-                ("stainless", "#C4C5C6"),
-                ("stainless_dark", "#B3B5B8"),
-                ("stainless_warm", "#C8C6C1"),
+                ("stainless", "#D6D1CB"),
+                ("stainless_dark", "#C9C7C4"),  # a darker, coarser grit brushing
+                ("stainless_warm", "#D8D1C8"),
             ),
-            hsv_jitter=(0.01, 0.05, 0.04),
-            roughness=(0.25, 0.4),
+            hsv_jitter=(0.008, 0.05, 0.03),
+            # a No. 4 brushed finish (ASTM A480, 120-180 grit): a satin sheen whose highlight is
+            # stretched across the lines; as one isotropic roughness, 0.2-0.32
+            roughness=(0.2, 0.32),
             metallic=1.0,
             opacity=_OPAQUE,
-            color_variation=(0.03, 0.06),
-            roughness_variation=(0.05, 0.09),
-            bump=(0.03, 0.06),
-            scale=(500.0, 800.0),  # brushing streaks ~1-2 mm apart (the finest lines are sub-texel)
-            anisotropy=(80.0, 160.0),
+            color_variation=(0.008, 0.018),  # brushing lines barely change the colour, only the sheen
+            roughness_variation=(0.03, 0.06),
+            bump=(0.012, 0.025),
+            scale=(700.0, 1100.0),  # abrasive lines 0.5-1.5 mm apart (the finest are sub-texel)
+            anisotropy=(150.0, 300.0),  # lines run the length of the part, each many cm long
+            # the highlight of a brushed sheet is stretched across the lines, several times longer than
+            # wide (Filament's material guide: "brushed metals are anisotropic"); 0.6 chosen, not measured
+            specular_anisotropy=0.6,
+        ),
+        Family(
+            name="cast_iron",
+            density=7200.0,  # grey cast iron, 7.05-7.35 g/cm3 (ASTM A48 classes 20-40)
+            style="speckle",
+            # seasoned or matte-enamelled cast iron (pan bodies, hob and range grates): a near-black,
+            # semi-matte film over a sand-cast surface; physicallybased.info's "Iron" (F0 0.53/0.51/0.49)
+            # shows only where the film wears through, so the film is what is drawn
+            palette=(
+                ("seasoned", "#232120"),
+                ("matte_black", "#1B1B1C"),
+            ),
+            hsv_jitter=(0.005, 0.05, 0.08),
+            roughness=(0.5, 0.7),
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.04, 0.08),
+            roughness_variation=(0.04, 0.08),
+            bump=(0.06, 0.12),
+            scale=(500.0, 900.0),  # sand-casting grain ~1-2 mm
+            anisotropy=(1.0, 1.0),
         ),
         Family(
             name="plastic",
@@ -339,10 +382,12 @@ FAMILIES: dict[str, Family] = {
             wall=0.0035,
             style="polished",
             palette=(
-                # clear glass reflects, it does not scatter: a mid-light albedo keeps a few
-                # stacked see-through surfaces (two walls of a bottle) from turning milky
-                ("clear", "#C4D0CB"),
-                ("clear_blue", "#B9CBD3"),
+                # clear glass reflects (4 % a face, physicallybased.info "Glass (Soda-lime)": IOR 1.52,
+                # transmission 1), it does not scatter: the colour a viewer blends in at the opacity is a
+                # dark, faintly green-grey (the iron tint seen through the edge of a pane), so a pane in
+                # front of a dark room reads clear rather than as a milky film of white
+                ("clear", "#4A5552"),
+                ("clear_blue", "#46535A"),
                 ("smoked", "#2B2E33"),  # the tinted window of an oven or microwave door
                 # container glass colours: "emerald"/"Georgia green", "amber", "cobalt" of
                 # the Glass Packaging Institute's colour names, sRGB as seen in transmission
@@ -420,9 +465,11 @@ FAMILIES: dict[str, Family] = {
             wall=0.0012,  # chromed steel tube and hollow die-cast/stamped trim (lever handles, knob roses) ~1-1.5 mm
             style="polished",
             palette=(
-                ("chrome", "#DADCDE"),
-                ("chrome_cool", "#CFD3D7"),
-                ("chrome_bright", "#E6E7E8"),
+                # electroplated chromium, F0 (linear) 0.654/0.685/0.701 from its complex IOR
+                # (physicallybased.info, "Chromium"): sRGB #D3D8DA, the bluish cast of chrome
+                ("chrome", "#D3D8DA"),
+                ("chrome_cool", "#CDD4DA"),
+                ("chrome_bright", "#DADEE0"),
             ),
             hsv_jitter=(0.005, 0.05, 0.02),
             roughness=(0.02, 0.06),  # electroplated chrome: a mirror
@@ -447,6 +494,10 @@ FAMILIES: dict[str, Family] = {
                 ("cobalt", "#22458C"),
                 ("green", "#2F6B4F"),
                 ("graphite", "#404347"),
+                # oven-cavity enamels: the blue-black speckled and anthracite porcelain of range and
+                # wall-oven cavities (Whirlpool, GE, Bosch, Miele), not a saturated blue
+                ("midnight", "#272C38"),
+                ("anthracite", "#35373B"),
             ),
             hsv_jitter=(0.01, 0.05, 0.05),
             roughness=(0.15, 0.3),
@@ -541,6 +592,8 @@ CONTACT: dict[str, Contact] = {
                              f" steel ball bearing, {_RESTITUTION}"),
     "chrome": Contact(0.6, 0.3, 0.6, f"chrome-plated steel taken as steel: steel on steel (dry), {_FRICTION_HOWWHY};"
                       f" restitution: steel ball bearing, {_RESTITUTION}"),
+    "cast_iron": Contact(0.6, 0.3, 0.6, f"seasoned or enamelled cast iron taken as steel: steel on steel (dry),"
+                         f" {_FRICTION_HOWWHY}; restitution: steel ball bearing, {_RESTITUTION}"),
     "plastic": Contact(0.6, 0.45, 0.69, f"friction: ABS static 0.60-0.75 (lower bound), {_FRICTION_PLASTICS};"
                        f" {_KINETIC_RATIO}; restitution: hollow hard plastic ball, {_RESTITUTION}"),
     "glass": Contact(0.6, 0.25, 0.66, f"friction: glass on metal 0.5-0.7 / 0.2-0.3 (mid-range), {_FRICTION_GLASS};"

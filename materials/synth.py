@@ -268,11 +268,14 @@ def _wood(look: Look, size: int) -> Fields:
 
 
 def _brushed(look: Look, size: int) -> Fields:
-    """Fine and coarse streaks along U, shared by colour, roughness and normal."""
+    """Fine abrasive lines along U, shared by colour, roughness and normal.
+
+    Only line-scale detail (and a faint hint of coarser lines, a third of the line frequency):
+    bands a centimetre wide, as coarse streaks give, read as wood grain on a steel panel."""
     seed, s = look.noise_seed, look.scale * TILE_METRES
     su = s / look.anisotropy
     streaks = periodic_noise(
-        seed, "brushed.streaks", size, [(1.0, su, s), (0.8, 0.5 * su, 0.15 * s)]
+        seed, "brushed.streaks", size, [(1.0, su, s), (0.25, 0.5 * su, 0.33 * s)]
     )
     low = periodic_noise(seed, "brushed.low", size, [(1.0, 2.0, 2.0)])
     tint = 1.0 + look.color_variation * (streaks + 0.4 * low)

@@ -180,8 +180,8 @@ package (``infmob_usd.scenes``: it makes objects, writes and checks scenes; its 
 
 def room(module: str) -> str:
     """The room of a module (ARCHITECTURE.md): top, core, categories, materials, layers, validate."""
-    if module in TOP or module == "infmob_usd.scenes":
-        return "top"
+    if module in TOP or module == "infmob_usd.scenes" or module.split(".")[:2] == ["infmob_usd", "export"]:
+        return "top"  # the dataset exporter reads object folders, runs a pool and writes: an entry point
     for name in ("categories", "materials", "layers", "validate"):
         if module == f"infmob_usd.{name}" or module.startswith(f"infmob_usd.{name}."):
             return name

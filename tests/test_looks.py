@@ -193,3 +193,25 @@ def test_furniture_wears_real_paint_and_plastic_colours(category):
                 checked += 1
     if category in ("kitchen_cabinet", "lamp", "cocktail_table"):  # their paints and fittings come from it
         assert checked
+
+
+def test_brushed_steel_carries_its_anisotropy_along_the_part(tmp_path):
+    import json
+    import struct
+
+    obj = infmob_usd.generate("pot", seed=1, texture_size=16, body_finish="brushed_metal")
+    folder = infmob_usd.save(obj, tmp_path, formats="urdf,glb")
+    brushed = [s for s, look in obj.materials.items() if look.family == "brushed_metal"]
+    assert brushed
+    raw = next(folder.glob("*.glb")).read_bytes()
+    (length,) = struct.unpack_from("<I", raw, 12)
+    doc = json.loads(raw[20:20 + length])
+    assert "KHR_materials_anisotropy" in doc["extensionsUsed"]
+    for mat in doc["materials"]:
+        ext = mat.get("extensions", {}).get("KHR_materials_anisotropy")
+        if mat["name"] in brushed:
+            assert ext == {"anisotropyStrength": pytest.approx(0.6), "anisotropyRotation": 0.0}
+        else:
+            assert ext is None
+    # no MTL "aniso": Assimp's MTL reader (SAPIEN, URDF importers) fails to load a mesh that has it
+    assert not any(ln.startswith("aniso") for m in folder.glob("meshes/*.mtl") for ln in m.read_text().splitlines())

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 
 import cv2
 import numpy as np
@@ -22,7 +23,7 @@ from infmob_usd.materials import (
     synthesize,
     texture_maps,
 )
-from infmob_usd.materials.families import srgb_to_linear
+from infmob_usd.materials.families import split_spec, srgb_to_linear
 from infmob_usd.materials.synth import height_to_normal, periodic_noise
 
 REQUIRED_FAMILIES = (
@@ -389,3 +390,45 @@ def test_cold_bench_makes_every_object_its_maps_from_an_empty_cache(tmp_path, mo
     res = run_bench(["door"], 1, 16, 1, cold=True)
     assert res["texture_library"] is None and res["objects_per_s_1_worker"] is None
     assert "cold cache" in format_bench(res)
+
+
+def _lab(hex_colour: str) -> np.ndarray:
+    rgb = np.array([[[int(hex_colour[i:i + 2], 16) for i in (1, 3, 5)]]], np.float32) / 255.0
+    return cv2.cvtColor(rgb, cv2.COLOR_RGB2Lab)[0, 0]
+
+
+def test_metals_match_measured_reflectance():
+    # F0 from complex IOR (physicallybased.info): stainless 0.669/0.639/0.598, chromium 0.654/0.685/0.701
+    for family, f0 in (("brushed_metal", (0.669, 0.639, 0.598)), ("chrome", (0.654, 0.685, 0.701))):
+        for variant, _ in FAMILIES[family].palette:
+            look = library_look(family, variant, 0)
+            assert np.abs(np.asarray(look.base_color) - f0).max() < 0.09, (family, variant, look.base_color)
+
+
+def test_wood_is_not_saturated():
+    # finished hardwoods stay below C* ~30; more reads as orange paint
+    for variant, hex_colour in FAMILIES["wood"].palette:
+        _, a, b = _lab(hex_colour)
+        assert math.hypot(a, b) < 30.0, variant
+
+
+def test_brushed_steel_has_no_wood_like_bands():
+    # brushing lines are sub-millimetre and barely tint the steel: bands 1-17 cm wide across the lines
+    # (the 0.5 m tile's rows averaged along them) stay under 0.3 % of the brightness (coarse streaks,
+    # which read as wood grain on a fridge door, were 0.4-0.8 %)
+    for variant, _ in FAMILIES["brushed_metal"].palette:
+        for index in (0, 5, 10):
+            grey = synthesize(library_look("brushed_metal", variant, index), 512)["basecolor"].mean(axis=2)
+            spec = np.fft.rfft(grey.mean(axis=1))
+            spec[:3] = 0.0
+            spec[50:] = 0.0
+            assert np.fft.irfft(spec, grey.shape[0]).std() / grey.mean() < 0.003, (variant, index)
+
+
+def test_oven_cavity_enamel_is_dark():
+    from categories.oven import MATERIALS
+
+    _, variants = split_spec(MATERIALS["interior"])
+    for variant in variants:
+        lightness, a, b = _lab(dict(FAMILIES["enamel"].palette)[variant])
+        assert lightness < 35.0 and math.hypot(a, b) < 15.0, variant

@@ -47,17 +47,13 @@ def test_reach_fails_a_kitchen_whose_parts_only_move_from_rest(tmp_path, monkeyp
 # `infmob fuzz 300 --seed 12345`, draws 14 and 137: both missed a target from rest. The pot's was a
 # pasta insert thrown off its seat at rest: a 0.3 mm sheet of its collar cooked by PhysX into a degenerate
 # hull "touching" the side handle 15 mm away (fixed in the core: every collision hull is at least
-# physical.MIN_HULL_WIDTH thick). The kitchen's is still open, recorded as a strict xfail (a fix turns it
-# into a failure to remove here).
-FUZZ_12345 = {
-    "kitchen_door_stalls_on_its_twin_leaf": (
-        ("kitchen_cabinet", 863838, dict(base_depth=0.55, sink_width=0.9481771266264848, front_thickness=0.022,
-                                         handle_style="knob", design="corner", stand_style="plinth")),
-        "closing, a double door's leaf stalls 0.09 rad from closed on its twin leaf: PhysX's persistent contact"
-        " manifold reports -0.1 mm at the meeting stiles where the hulls are 2 mm apart (passes with PCM off or a"
-        " 2 mm contact offset)"),
-}
+# physical.MIN_HULL_WIDTH thick). The kitchen's was a double door's leaf stalling 0.09 rad from closed on its
+# twin: the back corner of its meeting edge passed 2 mm from the twin (3 mm apart closed), where PhysX's
+# persistent contact manifold reported -0.1 mm (fixed in the core: physical.keep_meeting_gaps).
 FUZZ_12345_FIXED = {
+    "kitchen_door_stalls_on_its_twin_leaf": (
+        "kitchen_cabinet", 863838, dict(base_depth=0.55, sink_width=0.9481771266264848, front_thickness=0.022,
+                                        handle_style="knob", design="corner", stand_style="plinth")),
     "pot_lid_on_a_pasta_insert": ("pot", 257514, dict(
         radius=0.18, bead=0.0026711065058312067, lid_thickness=0.002154414011149703, handle_angle=0.4,
         handle_thickness=0.01, side_handle_reach=0.019595804473540698, knob_radius=0.021904456923979625,
@@ -66,21 +62,27 @@ FUZZ_12345_FIXED = {
 }
 
 
-@pytest.mark.parametrize("name", sorted(FUZZ_12345))
-def test_fuzz_12345_draws_reach_every_target(name, tmp_path, request):
-    (category, seed, overrides), reason = FUZZ_12345[name]
-    request.applymarker(pytest.mark.xfail(reason=reason, strict=True))
-    folder = infmob_usd.save(infmob_usd.generate(category, seed, texture_size=16, **overrides), tmp_path)
-    reach = _reach(folder)
-    assert reach.ok, reach.detail
-
-
 @pytest.mark.parametrize("name", sorted(FUZZ_12345_FIXED))
 def test_fuzz_12345_fixed_draws_reach_every_target(name, tmp_path):
     category, seed, overrides = FUZZ_12345_FIXED[name]
     folder = infmob_usd.save(infmob_usd.generate(category, seed, texture_size=16, **overrides), tmp_path)
     reach = _reach(folder)
     assert reach.ok, reach.detail
+
+
+def test_a_leaf_swinging_shut_keeps_the_meeting_gap_from_its_twin():
+    import numpy as np
+
+    from collide import overlap
+
+    category, seed, overrides = FUZZ_12345_FIXED["kitchen_door_stalls_on_its_twin_leaf"]
+    obj = infmob_usd.generate(category, seed, texture_size=16, **overrides)
+    leaf, twin = obj.link("door_2_1"), obj.link("door_2_0")  # the twin on the leaf's -Y side
+    nearer = obj.poses({})["door_2_0"].copy()
+    nearer[1, 3] += 0.0025  # the twin moved 2.5 mm towards the leaf: the leaf must still pass it
+    for a in np.linspace(0.0, 0.15, 11):
+        pose = obj.poses({"joint_door_2_1": float(a)})["door_2_1"]
+        assert overlap(leaf, pose, twin, nearer) < 1e-10, a
 
 
 def test_no_collision_hull_is_thinner_than_physx_cooks_faithfully():

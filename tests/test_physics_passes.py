@@ -153,3 +153,31 @@ def test_a_swivel_about_z_is_neutral_and_untouched():
     joint = _joint(obj, "arm")
     assert (joint.lower, joint.upper) == (-1.0, 1.0) and np.allclose(joint.axis, (0, 0, 1))
     assert not [p for p in obj.link("arm").pieces if p.name == "counterweight"]
+
+
+def _drawer_before_a_stop(room: float):
+    """A drawer that slides out (+X) toward a fixed stop ``room`` m beyond the 1 mm clearance."""
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("body", "body", [g.box_between([-0.3, -0.3, 0.0], [0.3, 0.3, 0.02], "m")])
+    bp.add("drawer", "drawer", [g.box_between([-0.25, -0.2, 0.03], [0.3, 0.2, 0.2], "m")])
+    bp.join(J.prismatic("body", "drawer", (0.3, 0, 0.03), (1, 0, 0), 0.0, 0.3))
+    bp.add("stop", "body", [g.box_between([0.3 + CLEARANCE + room, -0.3, 0.0], [0.35, 0.3, 0.25], "m")])
+    bp.join(J.fixed("body", "stop"))
+    return bp
+
+
+def test_a_joint_the_clearance_pass_leaves_under_a_millimetre_is_fixed_and_noted(tmp_path):
+    import json
+
+    import infmob_usd
+
+    obj = _make(_drawer_before_a_stop(0.0004))
+    drawer = _joint(obj, "drawer")
+    assert drawer.type == "fixed" and not drawer.movable, (drawer.type, drawer.lower, drawer.upper)
+    assert len(obj.notes) == 1 and drawer.name in obj.notes[0] and "made fixed" in obj.notes[0]
+    meta = json.loads((infmob_usd.save(obj, tmp_path) / "metadata.json").read_text())
+    assert meta["notes"] == obj.notes
+    assert meta["counts"]["movable_joints"] == 0
+    # 3 mm of travel is a mechanism: kept, nothing noted
+    obj = _make(_drawer_before_a_stop(0.003))
+    assert _joint(obj, "drawer").upper == pytest.approx(0.003, abs=2e-4) and obj.notes == []

@@ -39,7 +39,6 @@ joints per category.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 import statistics
@@ -49,11 +48,13 @@ from pathlib import Path
 
 import numpy as np
 
+from infmob_usd.annotations import AnnotationError
+from infmob_usd.annotations import load as load_annotations
+
 from .result import CheckResult
 
-__all__ = ["Attempt", "Gripper", "check_robot", "read_annotations", "robot_table", "run_target"]
+__all__ = ["AnnotationError", "Attempt", "Gripper", "check_robot", "read_annotations", "robot_table", "run_target"]
 
-FORMAT = "infmob-annotations/1"
 ALL, JOINTS = "all", "all joints"
 TCP_OFFSET = 0.1034  # m, panda_hand -> panda_hand_tcp (the middle of the finger pads), from the URDF
 FINGER_OPEN = 0.04  # m per finger, the Panda hand's stroke (0.08 m between the fingers)
@@ -89,29 +90,12 @@ FINGERS = ["panda_finger_joint1", "panda_finger_joint2"]
 FINGER_LINKS = ("panda_leftfinger", "panda_rightfinger")
 
 
-class AnnotationError(ValueError):
-    """``annotations.json`` is not in the documented schema."""
-
-
 def read_annotations(folder: str | Path) -> list[dict] | None:
-    """The targets of ``folder/annotations.json`` (``None`` when the file is absent), each checked for the
-    fields this check reads; other fields are ignored."""
-    path = Path(folder) / "annotations.json"
-    if not path.is_file():
+    """The targets of ``folder/annotations.json`` read and checked by :func:`infmob_usd.annotations.load`
+    (``None`` when the file is absent; a file off the schema raises its one-line ``AnnotationError``)."""
+    if not (Path(folder) / "annotations.json").is_file():
         return None
-    doc = json.loads(path.read_text())
-    if not isinstance(doc, dict) or doc.get("format") != FORMAT:
-        raise AnnotationError(f"{path.name}: format is {doc.get('format') if isinstance(doc, dict) else None!r},"
-                              f" want {FORMAT!r}")
-    targets = doc.get("targets")
-    if not isinstance(targets, list):
-        raise AnnotationError(f"{path.name}: no 'targets' list")
-    for i, t in enumerate(targets):
-        missing = [k for k in ("joint", "link", "grasps", "rest", "open", "open_threshold", "path")
-                   if k not in t]
-        if missing or not t["grasps"] or len(t["path"]) < 2:
-            raise AnnotationError(f"{path.name}: target {i} ({t.get('joint')!r}) lacks {missing or 'grasps/path'}")
-    return targets
+    return load_annotations(folder)["targets"]
 
 
 # --------------------------------------------------------------------------- geometry

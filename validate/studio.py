@@ -82,6 +82,20 @@ def _softbox(az, el, a0, e0, wa, we):
     return np.clip((1.0 - r) / 0.35, 0, 1) * (el > 0)
 
 
+_CARDS = ((-55.0, 12.0), (5.0, 6.0), (100.0, 10.0))
+"""Black cards round the object: (azimuth, half-width) in degrees.  A vertical wall seen from the camera
+(azimuth 38) mirrors azimuth 2 * normal - 38, so these land left of centre, near the centre and right
+on a pot's wall, and the first one on the lower part of a screen facing +X."""
+
+
+def _card(az, el, a0, wa):
+    """1 on a black card standing round the object (azimuth a0 +- wa degrees, from under the sweep's
+    edge to 30 degrees up), soft edges."""
+    da = (az - a0 + 180.0) % 360.0 - 180.0
+    r = np.maximum(np.abs(da) / wa, np.abs(el + 20.0) / 50.0)
+    return np.clip((1.0 - r) / 0.3, 0, 1)
+
+
 def _environment_map(d: Path) -> list[str]:
     """Six cube faces of a soft studio: bright sky fading to a grey horizon, a darker floor."""
     import cv2
@@ -104,11 +118,16 @@ def _environment_map(d: Path) -> list[str]:
         up = y / norm  # sine of elevation in the world (cube y = world z)
         az = np.degrees(np.arctan2(z, x))  # world azimuth: cube z = world y
         el = np.degrees(np.arcsin(np.clip(up, -1, 1)))
+        # A product studio: a white sweep under the object, softboxes above, and black cards standing
+        # round it, as photographers light metal: a polished or brushed surface then mirrors bright sweep
+        # beside dark card (a steel pot shows vertical light and dark bands, a screen a faint gradient)
+        # instead of one even grey that makes steel read as grey plastic.
         sky = 0.58 + 0.27 * np.clip(up, 0, 1) ** 0.6
-        floor = 0.40 + 0.08 * np.clip(up + 1, 0, 1)
+        floor = 0.78 + 0.06 * np.clip(up + 1, 0, 1)
         v = np.where(up >= 0, sky, floor)
-        v = v - 0.22 * np.exp(-((el - 2.0) / 4.0) ** 2)  # a darker band at the horizon: chrome reads as chrome
-
+        v = v - 0.3 * np.exp(-((el - 2.0) / 5.0) ** 2)  # a darker band at the horizon: chrome reads as chrome
+        for a0, wa in _CARDS:
+            v = np.minimum(v, 1.0 - 0.75 * _card(az, el, a0, wa))
         v = np.maximum(v, _softbox(az, el, -25.0, 50.0, 28.0, 20.0))  # key softbox, where the key light is
         v = np.maximum(v, 0.9 * _softbox(az, el, 130.0, 28.0, 18.0, 14.0))  # rim softbox behind the right
         img = np.clip(np.stack([v * 0.98, v, v * 1.03], -1) * 255, 0, 255).astype(np.uint8)

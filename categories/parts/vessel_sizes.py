@@ -232,7 +232,7 @@ PAN = {
 }
 PAN_LIFT = 0.02
 PAN_FLAT = {"flare_reach": 0.25, "corner": 0.15}  # a frying pan, not a wok: flare and corner / radius
-PAN_FAMILY = {"steel": "brushed_metal", "cast_iron": "enamel:black", "nonstick": "enamel:black|red|cobalt|green|cream"}
+PAN_FAMILY = {"steel": "brushed_metal", "cast_iron": "cast_iron", "nonstick": "enamel:black|red|cobalt|green|cream"}
 COATING = "plastic:black|dark_grey"
 KNOB = "plastic:black|dark_grey"
 

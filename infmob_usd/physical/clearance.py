@@ -508,17 +508,71 @@ def _share_coupled(joints, closed: dict[str, set[str]]) -> None:
             closed[lead], closed[j.name] = set(both), set(both)
 
 
+MIN_TRAVEL = {"prismatic": 1e-3, "revolute": math.radians(1.0)}
+"""The least range (m, rad) a joint keeps after the clearance pass: a slide with less than 1 mm of travel or
+a hinge with less than 1 degree of swing is no mechanism a hand can work (and one the validators' 5 %
+tolerance cannot tell from a jammed one); such a joint is made fixed and the object's ``notes`` say so."""
+
+
+def _too_short(j, limits: dict[str, tuple[float, float]], declared: dict[str, tuple[float, float]]) -> str:
+    """Why joint ``j`` is made fixed (its clearance range shorter than :data:`MIN_TRAVEL` where its declared
+    range was not), "" if it keeps moving."""
+    least = MIN_TRAVEL.get(j.type)
+    if least is None or j.name not in limits:
+        return ""
+    lo, hi = limits[j.name]
+    if hi - lo >= least or declared[j.name][1] - declared[j.name][0] < least:
+        return ""
+    unit, scale = ("mm", 1000.0) if j.type == "prismatic" else ("degrees", math.degrees(1.0))
+    return (f"{j.name}: the clearance pass left {(hi - lo) * scale:.3g} {unit} of its "
+            f"{(declared[j.name][1] - declared[j.name][0]) * scale:.3g} {unit} range (less than "
+            f"{least * scale:.3g} {unit}): made fixed at rest")
+
+
+def _fix_short(joints, limits: dict[str, tuple[float, float]]) -> tuple[set[str], list[str]]:
+    """The joints to make fixed (:func:`_too_short`, and the joints coupled to one that is: a follower moves
+    only with its leader) and a note for each."""
+    declared = {j.name: (float(j.lower), float(j.upper)) for j in joints if j.movable}
+    notes = {j.name: why for j in joints if (why := _too_short(j, limits, declared))}
+    for j in joints:
+        lead = j.mimic[0] if getattr(j, "mimic", None) else None
+        if lead in notes and j.name not in notes and j.movable:
+            notes[j.name] = f"{j.name}: follows {lead}, made fixed: fixed at rest too"
+    return set(notes), [notes[j.name] for j in joints if j.name in notes]
+
+
 def limit_to_clearance(obj):
     """A copy of ``obj`` whose joints have the limits of :func:`clearance_limits` and the
     ``requires_closed`` parts its step 3 found (the object and its joints are not modified;
-    unchanged joints are shared)."""
+    unchanged joints are shared). A joint left less than :data:`MIN_TRAVEL` becomes a fixed joint at rest,
+    noted in ``obj.notes``."""
     c = _clearance(obj)
     _share_coupled(obj.joints, c.closed)
+    fixed, notes = _fix_short(obj.joints, c.limits)
     joints = []
     for j in obj.joints:
-        if j.name in c.limits:
+        if j.name in fixed:
+            j = replace(j, type="fixed", lower=0.0, upper=0.0, requires_open=None, requires_closed=(),
+                        excludes=(), mimic=None, stiffness=0.0, spring_ref=0.0)
+        elif j.name in c.limits:
             closed = tuple(sorted(c.closed[j.name]))
             if c.limits[j.name] != (j.lower, j.upper) or closed != tuple(j.requires_closed):
                 j = replace(j, lower=c.limits[j.name][0], upper=c.limits[j.name][1], requires_closed=closed)
         joints.append(j)
-    return replace(obj, joints=joints)
+    return replace(obj, joints=_forget(joints, fixed) if fixed else joints, notes=[*obj.notes, *notes])
+
+
+def _forget(joints, fixed: set[str]) -> list:
+    """``joints`` with the relations to parts that no longer move taken out: a fixed joint among another's
+    ``excludes``, a part with no movable joint left among ``requires_open`` and ``requires_closed``."""
+    moving = {j.group for j in joints if j.movable}
+    out = []
+    for j in joints:
+        if j.movable:
+            excludes = tuple(n for n in j.excludes if n not in fixed)
+            closed = tuple(g for g in j.requires_closed if g in moving)
+            opened = j.requires_open if j.requires_open in moving else None
+            if (excludes, closed, opened) != (tuple(j.excludes), tuple(j.requires_closed), j.requires_open):
+                j = replace(j, excludes=excludes, requires_closed=closed, requires_open=opened)
+        out.append(j)
+    return out
