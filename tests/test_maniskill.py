@@ -1,7 +1,7 @@
 """The ManiSkill tasks (``OpenInfmob-v1``, ``CloseInfmob-v1``): real ManiSkill 3 / SAPIEN on the CPU.
 
-The object is generated through the task's own cache (category + seed); its annotations come from
-tests/robot_fixture.py (schema infmob-annotations/1) when the build has not written ``annotations.json``.
+The object is generated through the task's own cache (category + seed), with the annotations.json the build
+writes.
 """
 
 from __future__ import annotations
@@ -15,7 +15,6 @@ pytest.importorskip("sapien")
 pytest.importorskip("mani_skill")
 
 import gymnasium as gym  # noqa: E402
-from robot_fixture import write_annotations  # noqa: E402
 
 from infmob_usd import maniskill  # noqa: E402
 
@@ -26,9 +25,7 @@ MAKE = dict(sim_backend="cpu", render_backend="none", control_mode="pd_joint_pos
 @pytest.fixture(scope="module")
 def cache(tmp_path_factory) -> Path:
     root = tmp_path_factory.mktemp("maniskill")
-    folder = maniskill.object_folder("kitchen_cabinet", 1, root)
-    if not (folder / "annotations.json").is_file():
-        write_annotations(folder)
+    maniskill.object_folder("kitchen_cabinet", 1, root)
     return root
 
 
