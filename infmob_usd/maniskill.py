@@ -56,7 +56,6 @@ from mani_skill.utils.structs import Pose
 from mani_skill.utils.structs.types import SimConfig
 
 from .validate.robot import (
-    INSET,
     PREGRASP,
     TCP_OFFSET,
     Path3,
@@ -130,20 +129,6 @@ def _unit(v) -> np.ndarray:
 
 def _sapien_pose(m: np.ndarray) -> sapien.Pose:
     return sapien.Pose(m.astype(np.float32))
-
-
-def _depth(target: dict, grasp: dict) -> float:
-    """How far past the grasp ``position`` along its approach the pads' centre closes: the annotation's
-    ``depth``; without one, up to :data:`~.validate.robot.INSET` towards the middle of the handle's box (as
-    the robot check does), so that the pads close on the handle and not on its outer edge."""
-    if "depth" in grasp:
-        return float(grasp["depth"])
-    box = target.get("box")
-    if not isinstance(box, dict) or "center" not in box:
-        return 0.0
-    inward = float(np.dot(np.asarray(box["center"], float) - np.asarray(grasp["position"], float),
-                          _unit(grasp["approach"])))
-    return min(INSET, max(0.0, inward))
 
 
 class OpenInfmobEnv(BaseEnv):
@@ -264,7 +249,7 @@ class OpenInfmobEnv(BaseEnv):
         frac = float(self.open_frac if self.open_frac is not None else t["open_threshold"])
         self.threshold = float(t.get("closed_threshold", 0.05)) if self.closing else frac
         g = t["grasps"][0]
-        self.handle_local = np.asarray(g["position"], float) + _depth(t, g) * _unit(g["approach"])
+        self.handle_local = np.asarray(g["position"], float) + float(g["depth"]) * _unit(g["approach"])
         self.obj.set_pose(Pose.create_from_pq(p=torch.tensor([[0.0, 0.0, self.base_z]])))
         q = self.rest_qpos.copy()
         for name in t.get("requires_open") or []:
@@ -280,7 +265,7 @@ class OpenInfmobEnv(BaseEnv):
 
     def grasp_pose(self, index: int = 0) -> tuple[np.ndarray, float]:
         """The TCP pose (4x4, world, now) at annotated grasp ``index`` (the pads' centre: ``position`` +
-        its ``depth`` along the approach) and the finger opening to approach with (per finger)."""
+        ``depth`` along the approach) and the finger opening to approach with (per finger)."""
         g = self.target["grasps"][index]
         link = _pose_matrix(self.target_link.pose)
         approach = _unit(link[:3, :3] @ np.asarray(g["approach"], float))
@@ -288,7 +273,7 @@ class OpenInfmobEnv(BaseEnv):
         rot = hand_rotation(approach, link[:3, :3] @ np.asarray(g["closing"], float))
         if self.target.get("action") in ("press", "push"):  # the closed fingers' tips on the surface
             return _pose(rot, position - approach * 0.0095), 0.0
-        position = position + approach * _depth(self.target, g)
+        position = position + approach * float(g["depth"])
         return _pose(rot, position), min(0.04, float(g.get("width") or 0.08) / 2 + 0.01)
 
     def panda_base(self) -> np.ndarray:
