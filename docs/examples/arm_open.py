@@ -188,8 +188,23 @@ def open_one(env, seed: int, frames: list | None, places: int = 3) -> tuple[bool
     return result
 
 
+def _aim_camera(u, arm: Arm, policy) -> None:
+    """The GIF's camera on the hand's work: from the side of the line base -> grasp, a little above."""
+    from mani_skill.utils import sapien_utils
+
+    grasp, base = policy.grasp[:3, 3], arm.base[:3, 3]
+    centre = (grasp + base) / 2
+    along = np.array([base[0] - grasp[0], base[1] - grasp[1], 0.0])
+    along /= max(float(np.linalg.norm(along)), 1e-9)
+    eye = centre + np.array([along[1], -along[0], 0.0]) * 1.5 + along * 0.5 + np.array([0.0, 0.0, 0.6])
+    camera = u.scene.human_render_cameras["render_camera"].camera
+    camera.set_local_pose(sapien_utils.look_at(eye.tolist(), centre.tolist()).sp)
+
+
 def _attempt(env, arm: Arm, policy) -> tuple[bool, float, str]:
     u = env.unwrapped
+    if arm.frames is not None:
+        _aim_camera(u, arm, policy)
     # the episode starts with the arm at the pre-grasp, on the branch that reaches along the path (from the
     # rest pose the arm may be inside the object: its base stands where it reaches, not where it rests)
     u.agent.reset(torch.tensor(np.concatenate([arm.start[:7], [0.04, 0.04]])[None], dtype=torch.float32))
