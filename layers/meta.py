@@ -65,6 +65,10 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                                " toaster oven)"),
     "kettle": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                            " verified item for kettle)"),
+    "stand_mixer": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                                " verified item for stand mixer or electric mixer)"),
+    "blender": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                            " verified item for blender)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
     "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
     "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
