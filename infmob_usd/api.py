@@ -9,6 +9,7 @@ from typing import Any
 from . import physical
 from .effort import assign_drives
 from .errors import ArgumentTypeError, ModelError, ParameterError, UnknownCategoryError
+from .interaction import annotate
 from .layers import write_object
 from .model import ArticulatedObject, build
 from .seeding import streams
@@ -190,5 +191,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     )
     obj = physical.limit_to_clearance(obj)
     obj = assign_drives(obj)  # after every limit is final: the stop budget depends on the range
+    obj.interaction = annotate(obj)  # after the limits: the open state and the path read them
     obj.timings["geometry"] += time.perf_counter() - t2
     return obj

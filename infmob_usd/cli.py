@@ -137,6 +137,9 @@ def _validate_command(sub) -> None:
     v.add_argument("paths", nargs="+", metavar="PATH",
                    help="an object folder or a folder of them (with --sweep: category ids, or `all`)")
     v.add_argument("--sim", action="store_true", help="add the physical-plausibility checks")
+    v.add_argument("--robot", action="store_true",
+                   help="add the robot check: a floating Panda gripper in SAPIEN grasps every target of the"
+                   " folder's annotations.json and opens it along its path (one result per joint; why it failed)")
     v.add_argument("--usd-only", action="store_true", help="skip every simulator check")
     v.add_argument("--no-mass", action="store_true",
                    help="skip the mass check (on by default: total and moving-part masses within the ranges of"
@@ -426,12 +429,9 @@ def _make_scene(job) -> str:
     kind, seed, overrides, texture_size, out, preview = job
     folder = save_scene(scene(kind, seed, texture_size=texture_size, **overrides), out)
     if preview:
-        import cv2
+        from .validate.scene_preview import scene_previews
 
-        from .validate.scene_preview import render_scene
-
-        for fraction, name in ((0.0, "preview.png"), (1.0, "preview_open.png")):
-            cv2.imwrite(str(folder / name), render_scene(folder, fraction=fraction)[..., ::-1])
+        scene_previews(folder)
     return str(folder)
 
 
@@ -571,8 +571,9 @@ def cmd_validate(args) -> int:
     from .validate.files import load_metadata
     from .validate.report import report_json, summary_table
 
-    if args.usd_only and args.sim:
-        return _fail("--usd-only and --sim contradict each other; choose one")
+    for flag in ("sim", "robot"):
+        if args.usd_only and getattr(args, flag):
+            return _fail(f"--usd-only and --{flag} contradict each other; choose one")
     workers = _workers(args.workers)
     if args.out and args.sweep is None:
         return _fail("--out is only used with --sweep; drop it or add --sweep N")
@@ -615,7 +616,7 @@ def cmd_validate(args) -> int:
         rows = []
         n_ok = 0
         for folder, report in _validate_all(folders, not args.usd_only, args.sim, workers, args.simready,
-                                            not args.no_mass):
+                                            not args.no_mass, args.robot):
             n_ok += report.ok
             status = "ok  " if report.ok else "FAIL"
             fails = "; ".join(f"{c.name}: {c.detail}" for c in report.failed)
@@ -631,7 +632,7 @@ def cmd_validate(args) -> int:
             # temporary folder being gone), so that copies of one object stay apart
             rows.append((category, report.checks, str(folder.relative_to(out)) if tmp else str(folder)))
         print(f"\n{n_ok}/{len(folders)} objects passed every check\n")
-        print(summary_table(rows))
+        print(summary_table(rows) + (f"\n\n{_robot_table(rows)}" if args.robot else ""))
         if report_path:
             _write_file(report_path, json.dumps(report_json(rows), indent=2) + "\n")
         scenes_ok, scenes = _validate_scenes(paths, args) if not args.usd_only else (0, 0)
@@ -641,12 +642,19 @@ def cmd_validate(args) -> int:
             shutil.rmtree(tmp, ignore_errors=True)
 
 
+def _robot_table(rows) -> str:
+    from .validate.robot import robot_table
+
+    return robot_table(rows)
+
+
 def _validate_scenes(paths, args) -> tuple[int, int]:
     """The scene checks (:mod:`infmob_usd.validate.scene`) of every scene folder (with ``scene.json``)
     among ``paths``; with ``--sim`` also every fixed object's joints driven in the room. Returns
     ``(passed, scenes)``."""
-    found = sorted({q.parent for p in map(Path, paths) for q in
-                    ([p / "scene.json"] if (p / "scene.json").is_file() else p.rglob("scene.json"))})
+    from .validate.files import find_scenes
+
+    found = find_scenes(paths)
     if not found:
         return 0, 0
     from .validate.scene import check_scene
@@ -665,7 +673,8 @@ def _validate_scenes(paths, args) -> tuple[int, int]:
     return n_ok, len(found)
 
 
-def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False, mass: bool = True):
+def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: bool = False, mass: bool = True,
+                  robot: bool = False):
     """``(folder, report)`` in folder order; a process pool when ``workers > 1``.
 
     Checks never raise (:func:`~infmob_usd.validate.result.guarded`); a worker that dies (a
@@ -678,7 +687,7 @@ def _validate_all(folders, sim: bool, physics: bool, workers: int, simready: boo
     from .validate import ObjectReport, validate_object
     from .validate.result import CheckResult, one_line
 
-    check = partial(validate_object, sim=sim, physics=physics, simready=simready, mass=mass)
+    check = partial(validate_object, sim=sim, physics=physics, simready=simready, mass=mass, robot=robot)
     if workers <= 1 or len(folders) <= 1:
         for folder in folders:
             yield folder, check(folder)

@@ -94,6 +94,8 @@ class ArticulatedObject:
     timings: dict[str, float] = field(default_factory=dict)  # seconds per stage; never written to files
     retrieved: list[dict] = field(default_factory=list)  # library parts placed (infmob_usd.retrieval)
     retrieval: dict | None = None  # with a library: parts used and why others were not (Retriever.summary)
+    # per operated joint, where and how a gripper opens it (infmob_usd.interaction.annotate)
+    interaction: list[dict] = field(default_factory=list)
 
     @property
     def name(self) -> str:

@@ -84,6 +84,9 @@ class Piece:
         shell, with the shell's centre of mass and inertia, :func:`~infmob_usd.measures.shells`), at most the solid's.
         ``None`` (default): the material family's wall (``Family.wall``, 0 for solid families);
         0: solid. A ``sheet`` > 0 takes precedence.
+    grasps : tuple of :class:`~infmob_usd.grasps.Grasp`
+        Where a gripper takes hold of this piece (a handle's bar, a dial's cap), in its coordinates;
+        they move with every transformed copy (:mod:`infmob_usd.interaction` reads them).
     hulls_known : tuple of ((v, 3) float, (f, 3) int) or None
         Per convex piece, its hull where construction knows it (outward faces over a subset
         of the points); ``None`` entries are computed by :meth:`hulls`. Given as the
@@ -97,13 +100,14 @@ class Piece:
     name: str = ""
     sheet: float = 0.0
     wall: float | None = None
+    grasps: tuple = ()
     # not init fields: dataclasses.replace(piece, convex=...) then drops hulls it would make stale
     hulls_known: tuple = field(default=(), init=False, repr=False)
     bands: tuple = field(default=(), init=False, repr=False)  # per convex piece: (_Band, turn angle) or None
 
     def __init__(self, vertices, faces, material: str, convex=(), name: str = "", sheet: float = 0.0,
                  hulls=None, bands=None, _owned: bool = False, wall: float | None = None,
-                 _checked: Piece | None = None) -> None:
+                 _checked: Piece | None = None, grasps=()) -> None:
         # _owned (internal): every array given was made for this piece alone, freeze it in place;
         # _checked (internal): a checked piece whose faces these are (a moved copy)
         put = object.__setattr__
@@ -114,6 +118,7 @@ class Piece:
         put(self, "name", name)
         put(self, "sheet", float(sheet))
         put(self, "wall", None if wall is None else float(wall))
+        put(self, "grasps", tuple(grasps))
         n = len(self.convex)
         known = [None] * n
         if isinstance(hulls, dict):
@@ -164,14 +169,15 @@ class Piece:
 
     def replace(self, **changes) -> Piece:
         """A copy with some fields changed (``vertices``, ``faces``, ``material``, ``convex``,
-        ``name``, ``sheet``, ``wall``, ``hulls``). New ``convex`` point sets drop the known hulls unless
+        ``name``, ``sheet``, ``wall``, ``grasps``, ``hulls``). New ``convex`` point sets drop the known hulls unless
         ``hulls`` is given with them."""
         if "convex" in changes:
             hulls, bands = changes.pop("hulls", None), None
         else:
             hulls, bands = changes.pop("hulls", self._hulls_so_far()), self.bands
         args = {"vertices": self.vertices, "faces": self.faces, "material": self.material,
-                "convex": self.convex, "name": self.name, "sheet": self.sheet, "wall": self.wall}
+                "convex": self.convex, "name": self.name, "sheet": self.sheet, "wall": self.wall,
+                "grasps": self.grasps}
         unknown = set(changes) - set(args)
         if unknown:
             raise TypeError(f"Piece.replace: no field {sorted(unknown)}")
@@ -227,8 +233,16 @@ class Piece:
                         # a stretch keeps the hull topology but the wedges stop being turned copies
                         r @ band.axis if rigid and band.axis is not None else None)
                 bands.append((moved[id(band)], angle))
+        grasps = tuple(gr.moved(r, t) for gr in self.grasps) if self.grasps else ()
         return self._same_faces(Piece(vertices, self.faces, self.material, convex, self.name,
-                                      self.sheet, hulls, bands, _owned=True, wall=self.wall, _checked=self))
+                                      self.sheet, hulls, bands, _owned=True, wall=self.wall, _checked=self,
+                                      grasps=grasps))
+
+    def with_grasps(self, *grasps) -> Piece:
+        """This piece carrying ``grasps`` (:class:`~infmob_usd.grasps.Grasp`, in its coordinates) too."""
+        return self._same_faces(Piece(self.vertices, self.faces, self.material, self.convex, self.name, self.sheet,
+                                      self._hulls_so_far(), self.bands, wall=self.wall, _checked=self,
+                                      grasps=self.grasps + tuple(grasps)))
 
     def translated(self, offset: Sequence[float]) -> Piece:
         t = np.empty(3)
@@ -306,7 +320,7 @@ class Piece:
         """This piece's mesh with ``other``'s collision pieces (and their known hulls): a fine
         visual surface over a coarse collision one."""
         return Piece(self.vertices, self.faces, self.material, other.convex, self.name, self.sheet,
-                     other._hulls_so_far(), other.bands, wall=self.wall)
+                     other._hulls_so_far(), other.bands, wall=self.wall, grasps=self.grasps)
 
     def with_convex(self, replaced: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]]) -> Piece:
         """A copy with convex pieces replaced: ``{k: (points, hull vertices, hull faces)}``.
@@ -318,7 +332,7 @@ class Piece:
         for k, (pts, hv, hf) in replaced.items():
             convex[k], hulls[k], bands[k] = pts, (hv, hf), None
         return Piece(self.vertices, self.faces, self.material, convex, self.name, self.sheet, hulls, bands,
-                     wall=self.wall)
+                     wall=self.wall, grasps=self.grasps)
 
     def with_wedges(self, outer, inner, sectors: int, phase: float = 0.0) -> Piece:
         """This piece's mesh with flat-faced wedge collisions of a wall of revolution about +Z.
@@ -330,7 +344,7 @@ class Piece:
         pts = list(wedge_points(outer, inner, sectors, phase).reshape(-1, 8, 3))
         turns = 2 * np.pi * np.arange(sectors) / sectors
         return Piece(self.vertices, self.faces, self.material, pts, self.name, self.sheet,
-                     bands=_turned_copies(pts, sectors, turns, np.zeros(3)), wall=self.wall)
+                     bands=_turned_copies(pts, sectors, turns, np.zeros(3)), wall=self.wall, grasps=self.grasps)
 
     def hull_instances(self) -> list[tuple[int, np.ndarray, np.ndarray] | None]:
         """Per hull of :meth:`hulls`: ``(j, R, t)`` when hull ``k`` is hull ``j`` of this piece moved

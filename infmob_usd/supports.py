@@ -50,6 +50,13 @@ def _hulls(obj) -> list[tuple[str, np.ndarray]]:
             for c in p.convex if len(c) >= 4]
 
 
+def hull_boxes(obj) -> tuple[np.ndarray, np.ndarray]:
+    """``(lo, hi)``, each ``(n, 3)``: the box of every collision hull of ``obj``, object frame at rest."""
+    hulls = _hulls(obj)
+    return (np.array([p.min(0) for _, p in hulls]).reshape(-1, 3),
+            np.array([p.max(0) for _, p in hulls]).reshape(-1, 3))
+
+
 def _top_points(points: np.ndarray) -> tuple[float, np.ndarray]:
     z = float(points[:, 2].max())
     return z, points[points[:, 2] >= z - FLAT][:, :2]
@@ -137,8 +144,7 @@ def support_regions(obj) -> list[Region]:
     """Every support region of ``obj`` (an :class:`~infmob_usd.model.ArticulatedObject`) at rest,
     highest first, then by position (a stable order)."""
     hulls = _hulls(obj)
-    boxes = (np.array([p.min(0) for _, p in hulls]).reshape(-1, 3),
-             np.array([p.max(0) for _, p in hulls]).reshape(-1, 3))
+    boxes = hull_boxes(obj)
     out = []
     candidates = [(link, pts, (k,)) for k, (link, pts) in enumerate(hulls)] + _bars(hulls)
     for link, pts, own in candidates:

@@ -7,7 +7,7 @@ when complete, so a crash never leaves a half-written asset under its real name.
 Which formats are written is a list of names from :data:`FORMATS` (default
 :data:`DEFAULT_FORMATS`); a new format is one entry there: its writer, the stage its
 seconds are counted under, and the file it writes (recorded in ``metadata.json``).
-Textures, ``semantics.txt`` and ``metadata.json`` are always written.
+Textures, ``semantics.txt``, ``metadata.json`` and ``annotations.json`` are always written.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from infmob_usd.errors import OutputError
 
 from .common import visual_meshes, write_file
 from .glb import write_glb
-from .meta import write_metadata, write_semantics
+from .meta import write_annotations, write_metadata, write_semantics
 from .mjcf import write_mjcf
 from .thumbnail import write_thumbnail
 from .urdf import write_urdf
@@ -138,7 +138,8 @@ def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run
     files = {name: "./" + FORMATS[name].file.format(name=obj.name) for name in formats}
     stages = [("textures_io", write_textures)]
     stages += [(FORMATS[name].stage, FORMATS[name].writer) for name in formats]
-    stages += [("metadata", write_semantics), ("metadata", lambda o, f: write_metadata(o, f, files))]
+    stages += [("metadata", write_semantics), ("metadata", lambda o, f: write_metadata(o, f, files)),
+               ("metadata", write_annotations)]
     if "usd" in formats:  # the SimReady thumbnail beside the USD root layer
         stages.append(("thumbnail", write_thumbnail))
     try:

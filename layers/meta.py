@@ -1,4 +1,4 @@
-"""semantics.txt (PartNet-Mobility style) and metadata.json."""
+"""semantics.txt (PartNet-Mobility style), metadata.json and annotations.json."""
 
 from __future__ import annotations
 
@@ -69,6 +69,12 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                                 " verified item for stand mixer or electric mixer)"),
     "blender": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                             " verified item for blender)"),
+    "coffee_machine": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                                   " verified item for coffee maker: WordNet's coffee_maker.n.01 has none in these"
+                                   " files)"),
+    "dispenser": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item"
+                             " for soap dispenser or pump bottle: OEWN's chain dispenser > container has this nearest"
+                             " one)"),
     "toilet": ("Q7857", "http://www.wikidata.org/entity/Q7857 'toilet', sanitation fixture (COCO)"),
     "door": ("Q36794", "http://www.wikidata.org/entity/Q36794 'door' (COCO)"),
     "window": ("Q35473", "http://www.wikidata.org/entity/Q35473 'window' (COCO)"),
@@ -83,6 +89,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "jar": ("Q1207302", "http://www.wikidata.org/entity/Q1207302 'jar' (VU)"),
     "lamp": ("Q1138737", "http://www.wikidata.org/entity/Q1138737 'lamp' (VU)"),
     "kitchen_cabinet": ("Q2741056", "http://www.wikidata.org/entity/Q2741056 'cabinet' (VU)"),
+    "washing_machine": ("Q124441", "http://www.wikidata.org/entity/Q124441 'washing machine' (public Wikidata"
+                                   " Q-id tables pairing it with that label, e.g. WASHING_MACHINE = \"Q124441\" beside"
+                                   " Q186263 'dishwasher' and Q127956 'microwave oven')"),
     "dishwasher": ("Q186263", "http://www.wikidata.org/entity/Q186263 'dishwasher' (WN 03212662-n"
                               " 'a machine for washing dishes'; IN; OEWN)"),
     "pan": ("Q127666", "http://www.wikidata.org/entity/Q127666 'frying pan' (WN 03405146-n 'frying pan,"
@@ -184,7 +193,8 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
             for j in obj.joints
         ],
         "materials": {slot: look.to_dict() for slot, look in obj.materials.items()},
-        "files": {**files, "semantics": "./semantics.txt"},
+        "interaction": getattr(obj, "interaction", []),
+        "files": {**files, "semantics": "./semantics.txt", "annotations": "./annotations.json"},
         **({"retrieved_parts": obj.retrieved} if getattr(obj, "retrieved", None) else {}),
         **({"retrieval": obj.retrieval} if getattr(obj, "retrieval", None) is not None else {}),
     }))
@@ -229,6 +239,16 @@ def _exact_overrides(obj, meta: dict) -> dict:
     """Overrides are stored unrounded, so replaying an object's own overrides gives the same object."""
     meta["overrides"] = {str(k): v.item() if isinstance(v, np.generic) else v for k, v in obj.overrides.items()}
     return meta
+
+
+def write_annotations(obj, folder: Path) -> Path:
+    """``annotations.json``: the interaction targets of ``obj`` (:func:`infmob_usd.interaction.document`;
+    docs/format.md), the same list as metadata.json's ``interaction``."""
+    from infmob_usd.interaction import document
+
+    path = folder / "annotations.json"
+    write_file(path, json.dumps(_clean(document(getattr(obj, "interaction", []))), indent=2) + "\n")
+    return path
 
 
 def write_metadata(obj, folder: Path, files: dict[str, str] | None = None) -> Path:

@@ -4,7 +4,7 @@ Layout (docs/format.md describes every file of an object folder)::
 
     <name>.usda                 defaultPrim, kind=component, assetInfo, class label, payload
     payload/contents.usda       sublayers physics.usda, materials.usda, geometry.usdc
-    payload/geometry.usdc       link Xforms (flat siblings), visual and collision meshes
+    payload/geometry.usdc       link Xforms (flat siblings), visual and collision meshes, grasp frames
     payload/materials.usda      UsdPreviewSurface materials, texture readers, bindings
     payload/physics.usda        articulation root, bodies, mass, colliders, joints, drives
 
@@ -389,6 +389,34 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
                 _mesh(col, hv, extent, hf, counts)
                 _primvar(col, "normals", _NORMALS, _vec3f(hn), "uniform")
                 _new_attr(col, "xformOp:translate", _DOUBLE3, _VARYING, False).default = Gf.Vec3d(*centre.tolist())
+    _grasp_frames(root, obj)
+
+
+def _grasp_frames(root: Sdf.PrimSpec, obj) -> None:
+    """An Xform per grasp frame of every interaction target (:mod:`infmob_usd.interaction`) under the link
+    that carries it, named ``grasp_<joint>_<i>``: at the grasp's position, z along its approach and y along
+    its closing axis, with the target's facts as typed ``infmob:`` attributes (docs/format.md)."""
+    from infmob_usd.grasps import Grasp
+    from infmob_usd.interaction import grasp_rotation, quat_wxyz
+
+    for t in getattr(obj, "interaction", []):
+        link = root.nameChildren[t["link"]]
+        for i, gd in enumerate(t["grasps"]):
+            g = Grasp.make(gd["position"], gd["approach"], gd["closing"], gd["width"], gd["depth"])
+            gp = _prim(link, f"grasp_{t['joint']}_{i}", _DEF, "Xform")
+            w, x, y, z = quat_wxyz(grasp_rotation(g))
+            _attr(gp, "xformOp:translate", "double3", Gf.Vec3d(*g.position))
+            _attr(gp, "xformOp:orient", "quatf", Gf.Quatf(w, x, y, z))
+            _attr(gp, "xformOpOrder", "token[]", Vt.TokenArray(["xformOp:translate", "xformOp:orient"]), uniform=True)
+            for name, kind, value in (
+                    ("joint", "string", t["joint"]), ("partClass", "token", t["part_class"]),
+                    ("handleClass", "token", t["handle_class"] or ""), ("action", "token", t["action"]),
+                    ("approach", "float3", Gf.Vec3f(*g.approach)), ("closing", "float3", Gf.Vec3f(*g.closing)),
+                    ("width", "float", g.width), ("depth", "float", g.depth),
+                    ("rest", "float", t["rest"]), ("open", "float", t["open"]),
+                    ("openThreshold", "float", t["open_threshold"]),
+                    ("closedThreshold", "float", t["closed_threshold"])):
+                _attr(gp, f"infmob:{name}", kind, value, custom=True)
 
 
 def _materials(obj, visuals) -> str:

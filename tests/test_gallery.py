@@ -256,3 +256,42 @@ def test_browser_a_tilt_and_turn_sash_opens_one_mode(browser, tmp_path):
     q = page.evaluate(grab)
     assert q["joint_sash_0_1"] > 0.1 and q["joint_sash_0_0"] == 0.0, q
     assert not problems, problems
+
+
+@pytest.fixture(scope="module")
+def scene_site(tmp_path_factory):
+    from infmob_usd.scenes import save_scene, scene
+
+    root = tmp_path_factory.mktemp("gallery_scenes")
+    folder = save_scene(scene("bathroom", 2, texture_size=16), root)
+    return folder, build_gallery(root, render=False, log=lambda *a, **k: None)
+
+
+def test_a_scene_gets_a_card_with_its_own_pictures(scene_site, tmp_path):
+    """A scene folder is a scene card (kind, seed, objects, room, rest and all-open pictures when the scene
+    has them: ``infmob scene --preview`` writes them); its objects are object cards as well."""
+    folder, site = scene_site
+    rec = json.loads((folder / "scene.json").read_text())
+    idx = _index(site)
+    assert site["scenes"] == 1 and not site["errors"]
+    (card,) = idx["scenes"]
+    assert (card["kind"], card["seed"], card["objects"]) == ("bathroom", 2, len(rec["objects"]))
+    assert card["rest"] is None and card["open"] is None  # no pictures and render=False
+    assert len(idx["objects"]) == len({o["folder"] for o in rec["objects"]})
+    copy = tmp_path / "copy"
+    shutil.copytree(folder, copy / folder.name, symlinks=True)
+    for name in ("preview.png", "preview_open.png"):  # the pictures `infmob scene --preview` adds
+        (copy / folder.name / name).write_bytes(b"\x89PNG\r\n\x1a\n")
+    (again,) = _index(build_gallery(copy, render=False, log=lambda *a, **k: None))["scenes"]
+    assert again["rest"].endswith(f"{folder.name}/preview.png") and again["open"].endswith("preview_open.png")
+
+
+def test_browser_scenes_tab(browser, scene_site):
+    folder, site = scene_site
+    page, problems = _page(browser, site["index"].as_uri())
+    assert page.locator("#tab-scenes").is_visible()
+    page.click("#tab-scenes")
+    page.wait_for_function("document.querySelectorAll('.scene-card').length === 1", polling=250)
+    assert folder.name in page.locator(".scene-card .meta").inner_text()
+    assert page.locator("#cards").is_hidden()
+    assert not problems, problems

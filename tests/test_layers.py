@@ -22,7 +22,7 @@ def test_folder_layout(written):
     obj, folder = written
     assert folder.name == "zoo_000000"
     for rel in ["zoo_000000.usda", "zoo_000000.urdf", "payload/contents.usda", "payload/geometry.usdc",
-                "payload/materials.usda", "payload/physics.usda", "semantics.txt", "metadata.json",
+                "payload/materials.usda", "payload/physics.usda", "semantics.txt", "metadata.json", "annotations.json",
                 "textures/body_basecolor.png", "textures/part_normal.png"]:
         assert (folder / rel).is_file(), rel
     assert not [p for p in folder.parent.iterdir() if p.name.startswith(".")]  # no temp folders left

@@ -11,6 +11,7 @@ import argparse
 import importlib.util
 import json
 import math
+import subprocess
 import sys
 
 import numpy as np
@@ -284,3 +285,20 @@ def test_preview_and_writer_agree_on_the_simready_thumbnail(tmp_path):
     from infmob_usd.validate.preview import THUMB_SIZE, simready_thumbnail
 
     assert THUMB_SIZE == SIZE and simready_thumbnail(tmp_path, "x") == thumbnail_path(tmp_path, "x")
+
+
+def test_cli_preview_of_a_folder_of_scenes_pictures_each_scene_not_its_objects(tmp_path, renderer):
+    """``infmob preview DIR`` finds the scene under DIR and writes its rest and all-open pictures; the
+    scene's own object folders are part of the scene, not previews of their own."""
+    from infmob_usd.scenes import save_scene, scene
+
+    folder = save_scene(scene("bathroom", 2, texture_size=16), tmp_path / "scenes")
+    out = tmp_path / "previews"
+    done = subprocess.run([sys.executable, "-m", "infmob_usd", "preview", str(tmp_path / "scenes"), "--size", "256",
+                           "--out", str(out)], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.relative_to(out).as_posix() for p in out.rglob("*.png")) == [
+        f"{folder.name}/preview.png", f"{folder.name}/preview_open.png"]
+    rest, opened = (cv2.imread(str(out / folder.name / n)) for n in ("preview.png", "preview_open.png"))
+    assert rest.shape == (192, 256, 3) and rest.std() > 10  # a picture, not a blank
+    assert np.abs(rest.astype(int) - opened).mean() > 0.5  # doors and drawers open between the two

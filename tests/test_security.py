@@ -639,3 +639,51 @@ def test_a_ray_address_that_is_not_ray_fails_in_seconds(tmp_path):
     finally:
         stop.set()
         srv.close()
+
+
+@pytest.fixture(scope="module")
+def scene_dir(tmp_path_factory):
+    from infmob_usd.scenes import save_scene, scene
+
+    return save_scene(scene("bathroom", 2, texture_size=16), tmp_path_factory.mktemp("scene"))
+
+
+def _damage_json(scene: Path, tmp_path: Path):
+    rec = json.loads((scene / "scene.json").read_text())
+    rec["objects"][0]["folder"] = os.path.relpath(tmp_path / "secret", scene)
+    (scene / "scene.json").write_text(json.dumps(rec))
+
+
+def _damage_xml(scene: Path, tmp_path: Path):
+    xml = (scene / "scene.xml").read_text()
+    first = re.search(r'file="([^"]+)"', xml).group(1)
+    (scene / "scene.xml").write_text(xml.replace(first, str(tmp_path / "secret" / "x.xml")))
+
+
+def _damage_usd(scene: Path, tmp_path: Path):
+    usda = (scene / "scene.usda").read_text()
+    first = re.search(r"references = @([^@]+)@", usda).group(1)
+    (scene / "scene.usda").write_text(usda.replace(first, str(tmp_path / "secret" / "x.usda")))
+
+
+def _link_object(scene: Path, tmp_path: Path):
+    rec = json.loads((scene / "scene.json").read_text())
+    obj = scene / rec["objects"][0]["folder"]
+    shutil.rmtree(obj)
+    obj.symlink_to(tmp_path / "secret", target_is_directory=True)
+
+
+@pytest.mark.parametrize("damage", [_damage_json, _damage_xml, _damage_usd, _link_object])
+def test_a_scene_naming_files_outside_its_folder_is_refused_before_anything_is_loaded(scene_dir, tmp_path, capsys,
+                                                                                        damage):
+    """A scene folder from elsewhere whose scene.json, scene.xml or scene.usda (or a linked object folder)
+    reaches out of it: validate fails it without loading, preview refuses it in one line."""
+    (tmp_path / "secret").mkdir()
+    scene = tmp_path / "scene"
+    shutil.copytree(scene_dir, scene, symlinks=True)
+    damage(scene, tmp_path)
+    code, out, err = run(capsys, "validate", scene)
+    assert code == 1 and "refused" in out and "outside the scene folder" in out, out
+    code, out, err = run(capsys, "preview", scene, "--out", tmp_path / "previews")
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "outside the scene folder" in err, err
+    assert not (tmp_path / "previews").exists() or not any((tmp_path / "previews").rglob("*.png"))

@@ -9,6 +9,8 @@
 * with ``sim`` (default): SAPIEN physics on CPU (:mod:`.sim`): the URDF loads
   (``sapien_load``) and every movable joint driven alone reaches both limits, from rest and from
   the all-open state (``reach``);
+* with ``robot``: a floating Panda gripper opens every target of ``annotations.json`` (:mod:`.robot`):
+  one ``robot`` result per annotated joint, or a skip when the folder has no annotations;
 * with ``simready``: NVIDIA's validators (:mod:`.simready`): SimReady Robotics-Prop 4.0.0, the
   articulation and driven-joint features of Robot-Body 3.0.0, omniverse-asset-validator's defaults;
 * with ``physics``: the plausibility checks of ``infmob validate --sim``: passive
@@ -77,7 +79,7 @@ def _skipped(names, fmt: str) -> list[CheckResult]:
 
 
 def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
-                    simready: bool = False, mass: bool = True) -> ObjectReport:
+                    simready: bool = False, mass: bool = True, robot: bool = False) -> ObjectReport:
     """Validate one object folder (see the module docstring for what each flag adds).
 
     Every check runs under :func:`~.result.guarded`: one that raises is a failed check, never a crash.
@@ -111,6 +113,13 @@ def validate_object(folder: str | Path, sim: bool = True, physics: bool = False,
         report.checks += guarded("sapien_load", check_sapien, folder, checks=sapien)
     elif sim or physics:
         report.checks += _skipped(["sapien_load"] + sapien, "urdf")
+    if robot:
+        if "urdf" in present:
+            from .robot import check_robot
+
+            report.checks += guarded("robot", check_robot, folder)
+        else:
+            report.checks += _skipped(["robot"], "urdf")
     if physics:
         if "urdf" in present:
             from .physics import check_physics

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import json
+import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -155,6 +156,92 @@ def find_objects(paths) -> list[Path]:
             found += sorted(d for d in p.rglob("*") if d.is_dir() and (d / "metadata.json").is_file()
                             and not d.name.startswith("."))
     return found
+
+
+def find_scenes(paths) -> list[Path]:
+    """Scene folders (with ``scene.json``) among ``paths``: each path is a scene folder or a folder of them."""
+    found: set[Path] = set()
+    for p in map(Path, paths):
+        if (p / "scene.json").is_file():
+            found.add(p)
+        elif p.is_dir():
+            found |= {q.parent for q in p.rglob("scene.json")
+                      if not any(part.startswith(".") for part in q.relative_to(p).parts)}
+    return sorted(found)
+
+
+def scene_refusals(folder, rec) -> list[str]:
+    """Why the scene folder must not be loaded, or ``[]``: every object folder ``scene.json`` names and every
+    file ``scene.xml`` and ``scene.usda`` reach (MJCF ``file=`` attributes, USD references, sublayers and
+    assets, through the files they name in turn) must lie inside ``folder`` with links resolved; a scene from
+    elsewhere must not make us read the user's files."""
+    folder = Path(folder)
+    top = os.path.realpath(folder)
+    out: list[str] = []
+
+    def outside(path) -> bool:
+        real = os.path.realpath(path)
+        return not (real == top or real.startswith(top.rstrip(os.sep) + os.sep))
+
+    objects = rec.get("objects") if isinstance(rec, dict) else None
+    if not isinstance(objects, list):
+        return ["scene.json has no list of objects"]
+    for o in objects:
+        name = o.get("folder") if isinstance(o, dict) else None
+        if not isinstance(name, str) or os.path.isabs(name) or outside(folder / name):
+            out.append(f"object folder {name!r} lies outside the scene folder: refused")
+    seen: set[str] = set()
+    todo = [folder / "scene.xml"] if (folder / "scene.xml").is_file() else []
+    while todo and len(seen) < 10_000:
+        xml = todo.pop()
+        if str(xml) in seen:
+            continue
+        seen.add(str(xml))
+        try:
+            root = ET.parse(xml).getroot()
+        except (OSError, ET.ParseError):
+            continue  # MuJoCo's own load reports it
+        meshdir = next((c.get("meshdir") for c in root.iter("compiler") if c.get("meshdir")), "")
+        for el in root.iter():
+            name = el.get("file")
+            if name is None:
+                continue
+            base = xml.parent / (meshdir if el.tag in ("mesh", "hfield", "skin") else "")
+            if os.path.isabs(name) or outside(base / name):
+                out.append(f"{xml.name}: file {name!r} lies outside the scene folder: refused")
+            elif name.endswith(".xml"):
+                todo.append(base / name)
+    out += _usd_refusals(folder / "scene.usda", outside)
+    return out
+
+
+def _usd_refusals(usda: Path, outside) -> list[str]:
+    """Layers and assets reachable from ``usda`` that lie outside (``outside(path)``)."""
+    if not usda.is_file():
+        return []
+    from pxr import Sdf
+
+    out, seen, todo = [], set(), [usda]
+    while todo and len(seen) < 10_000:
+        path = todo.pop()
+        if str(path) in seen:
+            continue
+        seen.add(str(path))
+        layer = Sdf.Layer.FindOrOpen(str(path))
+        if layer is None:
+            continue
+        for dep in layer.GetCompositionAssetDependencies() + list(layer.GetExternalAssetDependencies()):
+            target = Path(layer.ComputeAbsolutePath(dep)) if dep else None
+            if target is None or outside(target):
+                out.append(f"{path.name}: {dep!r} lies outside the scene folder: refused")
+            elif target.suffix in (".usda", ".usd", ".usdc"):
+                todo.append(target)
+    return out
+
+
+def outside_scenes(objects: list[Path], scenes: list[Path]) -> list[Path]:
+    """``objects`` that are not inside one of ``scenes`` (a scene's own objects are shown as the scene)."""
+    return [o for o in objects if not any(s in o.parents for s in scenes)]
 
 
 def object_files(folder: Path, meta: dict | None = None) -> tuple[Path, Path]:

@@ -45,6 +45,7 @@ from pathlib import Path
 ASSETS = Path(__file__).with_name("gallery_assets")
 ASSET_FILES = ("three.gallery.min.js", "three.LICENSE", "gallery.js", "gallery.css")
 THUMB_SIZE = 256
+SCENE_SIZE = (640, 480)  # a scene card's picture (width, height)
 MOVABLE = ("revolute", "continuous", "prismatic")
 
 
@@ -95,8 +96,19 @@ def find_object_folders(root: str | Path) -> list[Path]:
     an object folder is an object of its own; a symlink back to a folder above it is not entered, nor
     one to a folder outside ``root`` (nothing outside ``root`` is read or served).
     """
+    return _find_marked(root, "metadata.json")
+
+
+def find_scene_folders(root: str | Path) -> list[Path]:
+    """Every scene folder (one with ``scene.json``) under ``root``, found as :func:`find_object_folders`
+    finds objects (the scene's own objects are found by that)."""
+    return _find_marked(root, "scene.json")
+
+
+def _find_marked(root: str | Path, marker: str) -> list[Path]:
+    """Folders holding a file ``marker`` under ``root``; see :func:`find_object_folders`."""
     root = Path(root)
-    if (root / "metadata.json").is_file():
+    if (root / marker).is_file():
         return [root]
     found: list[Path] = []
     top = os.path.realpath(root)
@@ -107,7 +119,7 @@ def find_object_folders(root: str | Path) -> list[Path]:
             entries = list(os.scandir(path))
         except OSError:
             continue
-        if any(e.name == "metadata.json" and e.is_file() for e in entries) and path != str(root):
+        if any(e.name == marker and e.is_file() for e in entries) and path != str(root):
             found.append(Path(path))
             continue
         for e in entries:
@@ -337,19 +349,18 @@ class _Thumbnailer:
         self.seconds: list[float] = []
         self.failed = 0
 
-    def __call__(self, folder: Path, out_png: Path) -> bool:
-        if not self.enabled:
-            return False
+    def _ready(self) -> bool:
         if self.ok is None:
             from .preview import backend_status
 
             self.ok, why = backend_status()
             if not self.ok:
                 self.log(f"gallery: cannot render thumbnails ({why.splitlines()[0]}); cards show placeholders")
-        if not self.ok:
-            return False
-        import cv2
+        return self.ok
 
+    def __call__(self, folder: Path, out_png: Path) -> bool:
+        if not self.enabled or not self._ready():
+            return False
         from .preview import render_object
 
         t0 = time.perf_counter()
@@ -359,6 +370,26 @@ class _Thumbnailer:
             self.failed += 1
             self.log(f"gallery: thumbnail of {folder} failed: {exc}")
             return False
+        return self._encode(rgb, out_png, t0)
+
+    def scene(self, folder: Path, out_png: Path, fraction: float) -> bool:
+        """Render the scene ``folder`` with every joint at ``fraction`` of its range into ``out_png``."""
+        if not self.enabled or not self._ready():
+            return False
+        from .scene_preview import render_scene
+
+        t0 = time.perf_counter()
+        try:
+            rgb = render_scene(folder, SCENE_SIZE[0], SCENE_SIZE[1], fraction=fraction)
+        except Exception as exc:  # one bad scene must not stop the gallery
+            self.failed += 1
+            self.log(f"gallery: picture of scene {folder} failed: {exc}")
+            return False
+        return self._encode(rgb, out_png, t0)
+
+    def _encode(self, rgb, out_png: Path, t0: float) -> bool:
+        import cv2
+
         ok, png = cv2.imencode(".png", rgb[..., ::-1])
         if not ok:
             self.failed += 1
@@ -458,6 +489,44 @@ def _card_thumbnail(folder: Path, png: Path, rel, thumbnailer) -> tuple[str | No
     if fresh or thumbnailer(folder, png):
         return _url(rel(png)), False
     return None, False
+
+
+def _scene_picture(folder: Path, name: str, png: Path, fraction: float, rel, thumbnailer) -> str | None:
+    """The URL of a scene's picture: the scene's own ``name`` (``infmob scene --preview``), else ``png`` if
+    fresh or rendered now, else None."""
+    own = folder / name
+    if own.is_file() and _within(os.path.realpath(own), os.path.realpath(folder)):
+        return _url(rel(own))
+    fresh = png.is_file() and png.stat().st_mtime >= (folder / "scene.json").stat().st_mtime
+    if fresh or thumbnailer.scene(folder, png, fraction):
+        return _url(rel(png))
+    return None
+
+
+def scene_cards(root: Path, site: Path, thumbdir: Path, rel, thumbnailer, errors: list[str]) -> list[dict]:
+    """One card per scene folder under ``root`` (kind, seed, room, object count, rest and all-open
+    pictures); an unreadable ``scene.json`` is an entry in ``errors``, not a stop."""
+    cards = []
+    for folder in find_scene_folders(root):
+        if _within(os.path.realpath(folder), os.path.realpath(site)):
+            continue
+        try:
+            rec = json.loads(read_bounded(inside(folder, "scene.json", "scene"), "metadata"))
+            room, objects = rec["room"], rec["objects"]
+            row = {"name": str(rec["name"]), "kind": str(rec["kind"]), "seed": int(rec["seed"]),
+                   "objects": len(objects), "fixed": sum(1 for o in objects if o.get("fixed")),
+                   "room": [float(room["depth"]), float(room["width"]), float(room["height"])],
+                   "layout": str((rec.get("overrides") or {}).get("layout") or rec.get("layout") or "")}
+        except (OSError, ValueError, KeyError, TypeError, AttributeError) as exc:
+            errors.append(f"{folder}: unreadable scene.json ({exc})")
+            continue
+        key = _key(folder)
+        row.update(path=rel(folder),
+                   rest=_scene_picture(folder, "preview.png", thumbdir / f"{key}_rest.png", 0.0, rel, thumbnailer),
+                   open=_scene_picture(folder, "preview_open.png", thumbdir / f"{key}_open.png", 1.0, rel,
+                                       thumbnailer))
+        cards.append(row)
+    return cards
 
 
 def _write_textures(textures: dict[str, Path], texdir: Path) -> None:
@@ -577,7 +646,10 @@ def _build(root: Path, folders: list[Path], index_html: Path, site: Path, render
     t_stats = time.perf_counter() - t4
     prefix = _url(os.path.relpath(site, base))
     prefix = "" if prefix == "." else prefix + "/"
-    index = {"root": str(root), "objects": rows, "generated": time.strftime("%Y-%m-%d %H:%M:%S"),
+    t5 = time.perf_counter()
+    scenes = scene_cards(root, site, thumbdir, rel, thumbnailer, errors)
+    t_thumb += time.perf_counter() - t5
+    index = {"root": str(root), "objects": rows, "scenes": scenes, "generated": time.strftime("%Y-%m-%d %H:%M:%S"),
              "data": prefix + "data"}
     _write_js(data / "index.js", "INFMOB_GALLERY.index", index)
     _write_js(data / "stats.js", "INFMOB_GALLERY.stats", stats)
@@ -586,6 +658,7 @@ def _build(root: Path, folders: list[Path], index_html: Path, site: Path, render
     _write(index_html, html.encode())
     total = time.perf_counter() - t0
     return {"index": index_html, "site": site, "folders": shown, "objects": len(rows), "distinct": len(done),
+            "scenes": len(scenes),
             "errors": errors,
             "textures": len(textures), "rendered": len(thumbnailer.seconds), "render_seconds": thumbnailer.seconds,
             "seconds": {"find": t_find, "read": t_read, "thumbnails": t_thumb, "textures": t_tex,

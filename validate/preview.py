@@ -231,7 +231,9 @@ def contact_sheet(folders, out_png, cell: int = 256, joint_fraction=0.0, columns
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("paths", nargs="*", metavar="PATH", help="an object folder or a folder of them")
+    parser.add_argument("paths", nargs="*", metavar="PATH",
+                        help="an object or scene folder, or a folder of them (a scene gets preview.png at rest and"
+                             " preview_open.png with every joint open)")
     parser.add_argument("--out", default=None,
                         help="previews: folder for DIR/<name>/preview.png + sweep.gif (default: beside each "
                              "object); with --sheet: the PNG file (default: DIR/contact_sheet.png)")
@@ -246,7 +248,7 @@ def add_arguments(parser) -> None:
 
 def main(args) -> int:
     """Run ``infmob preview`` with the namespace of :func:`add_arguments`; returns the exit code."""
-    from .files import find_objects
+    from .files import find_objects, find_scenes, outside_scenes
 
     if args.size is not None and not 16 <= args.size <= 4096:
         print(f"infmob: error: --size must be 16..4096 pixels, got {args.size}", file=sys.stderr)
@@ -286,9 +288,11 @@ def main(args) -> int:
         if not args.paths:
             print("infmob: error: give object folders (PATH...) or --sheet DIR", file=sys.stderr)
             return 2
-        found = find_objects(args.paths)
-        if not found:
-            print(f"infmob: error: no object folders (with metadata.json) in {' '.join(args.paths)}", file=sys.stderr)
+        scenes = find_scenes(args.paths)
+        found = outside_scenes(find_objects(args.paths), scenes)
+        if not found and not scenes:
+            print(f"infmob: error: no object folders (with metadata.json) or scene folders (with scene.json) in"
+                  f" {' '.join(args.paths)}", file=sys.stderr)
             return 2
         if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
             print(f"infmob: error: --out {args.out!r} is a file; give a folder for the previews", file=sys.stderr)
@@ -296,6 +300,18 @@ def main(args) -> int:
         for folder in found:
             out = Path(args.out) / folder.name if args.out else None
             written = preview(folder, out, size=args.size or 512)
+            print("  ".join(str(p) for p in written.values()))
+        for folder in scenes:
+            from .scene_preview import scene_previews
+
+            side = args.size or 1024
+            try:
+                written = scene_previews(folder, Path(args.out) / folder.name if args.out else None, side,
+                                         side * 3 // 4)
+            except (ValueError, KeyError, TypeError) as exc:  # a scene.json from elsewhere
+                print(f"infmob: error: scene {folder}: {exc}; preview only scenes written by `infmob scene`",
+                      file=sys.stderr)
+                return 2
             print("  ".join(str(p) for p in written.values()))
         return 0
     except PreviewUnavailable as exc:

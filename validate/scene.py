@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .files import scene_refusals
 from .result import CheckResult
 
 PENETRATION = 0.002  # m
@@ -47,6 +48,9 @@ def load_sapien_scene(folder, scene_json=None, timestep: float = 1 / 240):
     folder = Path(folder)
     rec = scene_json if isinstance(scene_json, dict) else json.loads(
         Path(scene_json or folder / "scene.json").read_text())
+    refused = scene_refusals(folder, rec)
+    if refused:
+        raise ValueError(f"{folder}: {refused[0]}")
     scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
     scene.set_timestep(timestep)
     room = scene.create_actor_builder()
@@ -181,6 +185,9 @@ def check_scene(folder, reach: bool = True) -> list[CheckResult]:
     """Every check of :mod:`this module <infmob_usd.validate.scene>` on one scene folder."""
     folder = Path(folder)
     rec = json.loads((folder / "scene.json").read_text())
+    refused = scene_refusals(folder, rec)
+    if refused:  # nothing of it is loaded
+        return [CheckResult("scene_load", False, "; ".join(refused[:3]))]
     t0 = time.perf_counter()
     try:
         scene, contexts = load_sapien_scene(folder, rec)

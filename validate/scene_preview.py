@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .files import scene_refusals
 from .posing import _forward_kinematics, _qpos_for, _read_object
 from .renderer import render_body
 from .studio import _look_at_matrix, _stage
@@ -100,6 +101,9 @@ def render_scene(folder, width: int = 1024, height: int = 768, fraction: float =
     hold the fewest objects: those walls and what hangs on them are left out) or ``top``."""
     folder = Path(folder)
     rec = json.loads((folder / "scene.json").read_text())
+    refused = scene_refusals(folder, rec)
+    if refused:
+        raise ValueError(f"{folder}: {refused[0]}")
     hidden, (cx, cy) = _corner(rec)
     on = _SceneOnStage(folder, rec, fraction, hidden)
     try:
@@ -127,3 +131,20 @@ def render_scene(folder, width: int = 1024, height: int = 768, fraction: float =
         return np.clip(rgb * 255 + 0.5, 0, 255).astype(np.uint8)
     finally:
         on.close()
+
+
+def scene_previews(folder, out=None, width: int = 1024, height: int = 768) -> dict[str, Path]:
+    """Write ``preview.png`` (at rest) and ``preview_open.png`` (every joint fully open) of the scene folder
+    into ``out`` (default: the scene folder); returns ``{name: path}``."""
+    import cv2
+
+    folder = Path(folder)
+    out = Path(out) if out is not None else folder
+    out.mkdir(parents=True, exist_ok=True)
+    written = {}
+    for fraction, name in ((0.0, "preview.png"), (1.0, "preview_open.png")):
+        path = out / name
+        if not cv2.imwrite(str(path), render_scene(folder, width, height, fraction=fraction)[..., ::-1]):
+            raise OSError(f"cannot write {path}")
+        written[name] = path
+    return written

@@ -16,6 +16,7 @@ from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame, polar
 from infmob_usd.grammar import Layout
+from infmob_usd.grasps import Grasp
 from infmob_usd.materials import FAMILIES
 
 STEEL = 7850.0  # kg/m^3: what a painted casing, door or drawer of sheet really is (see Category.substrates)
@@ -185,8 +186,17 @@ def push_button(x_face: float, y: float, z: float, half: tuple[float, float], sh
 def _button(half: tuple[float, float], shape: str, proud: float) -> g.Piece:
     """:func:`push_button` with its face centre at the origin (an immutable piece, shared)."""
     if shape == "rect":
-        return g.box_between([-BEHIND, -half[0], -half[1]], [proud, half[0], half[1]], "button", bevel=0.3 * half[1])
-    return g.cylinder([-BEHIND, 0.0, 0.0], [proud, 0.0, 0.0], half[0], "button", 24)
+        piece = g.box_between([-BEHIND, -half[0], -half[1]], [proud, half[0], half[1]], "button", bevel=0.3 * half[1])
+    else:
+        piece = g.cylinder([-BEHIND, 0.0, 0.0], [proud, 0.0, 0.0], half[0], "button", 24)
+    return piece.with_grasps(button_grasp(half, shape, proud))
+
+
+def button_grasp(half: tuple[float, float], shape: str, proud: float) -> Grasp:
+    """A finger's press on a :func:`push_button`: the middle of its face, straight in (-x), closing across
+    its narrow side."""
+    u, v = half if shape == "rect" else (half[0], half[0])
+    return Grasp.make((proud, 0, 0), (-1, 0, 0), (0, 1, 0) if u <= v else (0, 0, 1), 2 * min(u, v), proud / 2)
 
 
 DIALS = {"ridge": 0.6, "round": 0.4}
@@ -199,15 +209,19 @@ def dial(x_face: float, y: float, z: float, r: float, stem: float, style: str) -
     pieces = [g.cylinder([x_face - BEHIND, y, z], [x0 + 0.001, y, z], stem, "knob", 16)]
     if style == "ridge":
         depth = max(0.014, 0.7 * r)
+        grip = g.box_between([x0 + 0.0045, y - 0.18 * r, z - 0.85 * r], [x0 + depth, y + 0.18 * r, z + 0.85 * r],
+                             "knob", bevel=0.002)  # turned by its grip bar, fingers across it
         pieces += [g.cylinder([x0, y, z], [x0 + 0.005, y, z], r, "knob", 32),
-                   g.box_between([x0 + 0.0045, y - 0.18 * r, z - 0.85 * r], [x0 + depth, y + 0.18 * r, z + 0.85 * r],
-                                 "knob", bevel=0.002),
+                   grip.with_grasps(Grasp.make([x0 + depth, y, z], (-1, 0, 0), (0, 1, 0), 0.36 * r,
+                                               min(0.008, (depth - 0.0045) / 2))),
                    g.box_between([x0 + depth - 0.0005, y - 0.0015, z + 0.45 * r], [x0 + depth + 0.001, y + 0.0015,
                                                                                    z + 0.8 * r], "trim")]
     else:
         depth = max(0.016, 0.8 * r)
+        cap = g.cylinder([x0 + 0.0035, y, z], [x0 + depth, y, z], 0.8 * r, "knob", 32)  # turned across its cap
         pieces += [g.cylinder([x0, y, z], [x0 + 0.004, y, z], r, "knob", 32),
-                   g.cylinder([x0 + 0.0035, y, z], [x0 + depth, y, z], 0.8 * r, "knob", 32),
+                   cap.with_grasps(Grasp.make([x0 + depth, y, z], (-1, 0, 0), (0, 1, 0), 1.6 * r,
+                                              min(0.008, (depth - 0.0035) / 2))),
                    g.box_between([x0 + depth - 0.0005, y - 0.0015, z + 0.35 * r], [x0 + depth + 0.001, y + 0.0015,
                                                                                    z + 0.7 * r], "trim")]
     return pieces
@@ -660,6 +674,10 @@ def cooker_knob(x_face: float, y: float, z: float, r: float, stem: float, style:
                    g.cylinder([x0 + 0.0045, y, z], [x0 + depth, y, z], 0.82 * r, "knob", 32),
                    g.box_between([x0 + depth - 0.0005, y - 0.0012, z - 0.7 * r], [x0 + depth + 0.0008, y + 0.0012,
                                                                                   z + 0.7 * r], "trim")]
+    # turned by its grip (the bar, or the cap), fingers across it; the pointer line on its face is the surface
+    width = 0.4 * r if style == "ridge" else 1.64 * r
+    pieces[-1] = pieces[-1].with_grasps(Grasp.make([x0 + depth + 0.0008, y, z], (-1, 0, 0), (0, 1, 0), width,
+                                                   min(0.008, depth / 2)))
     return pieces, depth + 0.0008 + 0.003
 
 

@@ -17,6 +17,7 @@ from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Layout
+from infmob_usd.grasps import Grasp
 
 from . import appliance as A
 from .casing import Cutout
@@ -39,7 +40,8 @@ class Button:
         return Cutout.around(face, at, (2 * self.half[0], 2 * self.half[1]), A.CLEAR)
 
     def build(self, material: str = "button") -> Assembly:
-        """Anchors ``mount`` and ``press`` (on its face, z into the panel: the slide's axis)."""
+        """Anchors ``mount`` and ``press`` (on its face, z into the panel: the slide's axis); its piece
+        carries a finger's press (:func:`~.appliance.button_grasp`)."""
         piece = A._button(tuple(self.half), self.shape, self.proud)
         if material != piece.material:
             piece = piece.replace(material=material)
@@ -85,9 +87,11 @@ class Lever:
     def build(self, material: str, label: str = "lever") -> Assembly:
         """Anchors ``mount`` and ``slide`` (z down the slot: a slide along it presses the lever down)."""
         (sw, st), (pw, ph, pt), reach = self.stem, self.paddle, self.reach
+        # pressed from above, fingers across the paddle's thickness
+        grasp = Grasp.make((reach + pt / 2, 0, ph / 2), (0, 0, -1), (1, 0, 0), pt, min(ph / 2, 0.01))
         pieces = [g.box_between((-A.BEHIND, -sw / 2, -st / 2), (reach, sw / 2, st / 2), material),
                   g.box_between((reach, -pw / 2, -ph / 2), (reach + pt, pw / 2, ph / 2), material,
-                                bevel=0.25 * min(ph, pt))]
+                                bevel=0.25 * min(ph, pt)).with_grasps(grasp)]
         return Assembly.single(label, pieces, {"mount": MOUNT, "slide": Frame.at((0, 0, 0), z=(0, 0, -1), x=(1, 0, 0))})
 
 

@@ -14,6 +14,7 @@ from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.assembly import Assembly, SubPart
 from infmob_usd.frames import IDENTITY, Frame
+from infmob_usd.grasps import Grasp
 
 
 @dataclass(frozen=True)
@@ -40,22 +41,36 @@ def bar_handle(length: float, material: str, size: HandleSize = BAR) -> Assembly
     z_bar = size.standoff + size.bar_radius
     pieces = [g.cylinder((x, 0, 0), (x, 0, size.standoff), size.post_radius, material, 12, name="handle")
               for x in ends]
-    pieces.append(g.cylinder((-length / 2, 0, z_bar), (length / 2, 0, z_bar), size.bar_radius, material, 16,
-                             name="handle"))
+    bar = g.cylinder((-length / 2, 0, z_bar), (length / 2, 0, z_bar), size.bar_radius, material, 16, name="handle")
+    pieces.append(bar.with_grasps(bar_grasp(length, z_bar + size.bar_radius, size.bar_radius)))
     return Assembly.single("handle", pieces, {"mount": IDENTITY},
                            {"mount_a": (ends[0], 0, 0), "mount_b": (ends[1], 0, 0)})
 
 
+def bar_grasp(length: float, top: float, radius: float, width: float | None = None,
+              handle_class: str = "line_fixed_handle") -> Grasp:
+    """The grasp of a handle along local x standing ``top`` off its face (local z out of it): the middle of
+    its top, reached straight at the face, fingers closing across it (local y) ``radius`` deep, opening its
+    ``width`` (default the bar's diameter). Its box spans the handle from the face to its top."""
+    width = 2 * radius if width is None else width
+    return Grasp.make((0, 0, top), (0, 0, -1), (0, 1, 0), width, radius, handle_class,
+                      ((0, 0, top / 2), (length, max(width, 2 * radius), top), IDENTITY.rotation))
+
+
 def knob_handle(radius: float, depth: float, material: str) -> Assembly:
-    """A round cabinet knob: a stem and a wider cap (support point ``stem``)."""
+    """A round cabinet knob: a stem and a wider cap (support point ``stem``); grasped across its cap."""
+    cap = g.cylinder((0, 0, depth * 0.55), (0, 0, depth), radius, material, 24, name="handle")
+    grasp = Grasp.make((0, 0, depth), (0, 0, -1), (0, 1, 0), 2 * radius, min(0.45 * depth / 2, radius),
+                       "round_fixed_handle", ((0, 0, depth / 2), (2 * radius, 2 * radius, depth), IDENTITY.rotation))
     pieces = [g.cylinder((0, 0, 0), (0, 0, depth * 0.6), radius * 0.45, material, 16, name="handle"),
-              g.cylinder((0, 0, depth * 0.55), (0, 0, depth), radius, material, 24, name="handle")]
+              cap.with_grasps(grasp)]
     return Assembly.single("handle", pieces, {"mount": IDENTITY}, {"stem": (0, 0, 0)})
 
 
 def edge_pull(length: float, material: str, depth: float = 0.018, lip: float = 0.012) -> Assembly:
     """A low-profile edge pull along local x: a flat lip standing off the face."""
     piece = g.box_between((-length / 2, -lip / 2, 0), (length / 2, lip / 2, depth), material, name="handle")
+    piece = piece.with_grasps(bar_grasp(length, depth, min(depth / 2, 0.01), width=lip))
     return Assembly.single("handle", [piece], {"mount": IDENTITY},
                            {"mount_a": (-length / 2, 0, 0), "mount_b": (length / 2, 0, 0)})
 
@@ -81,7 +96,7 @@ def bow_handle(length: float, material: str, projection: float = BOW_PROJECTION,
     # an elliptic arch: square to the face at the feet (its tangent there is along z)
     path = [(-half * math.cos(a), 0.0, rise * math.sin(a)) for a in t]
     path = [(-half, 0.0, 0.0)] + [(x, y, z + foot) for x, y, z in path] + [(half, 0.0, 0.0)]
-    piece = g.tube(path, wire, material, 12, name="handle")
+    piece = g.tube(path, wire, material, 12, name="handle").with_grasps(bar_grasp(length + 2 * wire, projection, wire))
     return Assembly.single("handle", [piece], {"mount": IDENTITY},
                            {"mount_a": (-half, 0, 0), "mount_b": (half, 0, 0)})
 

@@ -20,6 +20,8 @@ from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly, SubPart
 from infmob_usd.frames import IDENTITY, Frame
 
+from .lids import rimmed
+
 CLEAR = 0.0025  # a button in its hole
 GAP = 0.003
 CISTERN_WALL = 0.012
@@ -446,8 +448,8 @@ def cistern_lid(size: CisternSize) -> Assembly:
     lip, in the frame where it rests (anchor ``seat``: the front top edge's middle, z up, the way it lifts)."""
     w = size.width
     pieces = _cistern_lid((-size.depth, 0.0), (-w / 2, w / 2), 0.0, size.lid_thickness)
-    return Assembly.single("lid", pieces, {"seat": IDENTITY, "top": Frame.at((0.0, 0.0, size.lid_thickness))},
-                           {"lip": (-size.depth / 2, 0.0, 0.0)})
+    return rimmed(Assembly.single("lid", pieces, {"seat": IDENTITY, "top": Frame.at((0.0, 0.0, size.lid_thickness))},
+                                  {"lip": (-size.depth / 2, 0.0, 0.0)}))
 
 
 def flush_button(radius: float) -> Assembly:

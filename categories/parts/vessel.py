@@ -43,7 +43,10 @@ from infmob_usd.frames import IDENTITY, Frame
 
 from . import hardware
 from . import vessel_sizes as S
-from .lids import seat_joint  # noqa: F401  (the lid family's joint, used as V.seat_joint)
+from .lids import (
+    rimmed,
+    seat_joint,  # noqa: F401  (the lid family's joint, used as V.seat_joint)
+)
 
 
 def _piece(pc: g.Piece, sheet: float | None = None, convex=None, name: str | None = None) -> g.Piece:
@@ -408,7 +411,7 @@ def polygon_jar_body(height: float, radius: float, sides: int, wall: float, neck
 
 def _closure(label: str, pieces, seat_z: float, top_z: float) -> Assembly:
     """A closure built in its vessel's frame, moved so that its seat (height ``seat_z``) is the origin."""
-    a = Assembly.single(label, pieces, {"seat": _at(seat_z), "top": _at(top_z)})
+    a = rimmed(Assembly.single(label, pieces, {"seat": _at(seat_z), "top": _at(top_z)}))
     return a.placed(a.anchor("seat").inverse())
 
 
@@ -558,9 +561,9 @@ def hinged_lid(radius: float, thickness: float, hinge_offset: float, slot: str, 
     carrier = Assembly.single("hinge", [knuckle], name="main")
     lid = Assembly.single("lid", pieces, name="lid")
     both = carrier.merged(lid)
-    return Assembly(both.parts, (J.revolute("main", "lid", tuple(hinge.origin), tuple(hinge.z), 0.0,
-                                            math.radians(110), role="lid"),),
-                    {"seat": IDENTITY, "hinge": hinge, "top": _at(thickness)}, {})
+    return rimmed(Assembly(both.parts, (J.revolute("main", "lid", tuple(hinge.origin), tuple(hinge.z), 0.0,
+                                                   math.radians(110), role="lid"),),
+                           {"seat": IDENTITY, "hinge": hinge, "top": _at(thickness)}, {}), "lid")
 
 
 def label_band(prof: Profile, zone: tuple[float, float], fill: float, offset: float, slot: str) -> Assembly:
@@ -698,8 +701,8 @@ def dome_lid(pot: Cookware, rise: float, thickness: float, slot: str, band_slot:
     b = S.LID_BAND
     band = g.shell([(r_l + b["out"], 0.0), (r_l + b["out"], t + b["height"])], b["thickness"], band_slot,
                    convex_sectors=b["sectors"])
-    lid = Assembly.single("lid", [_piece(mesh, convex=[np.array(cap)]), band],
-                          {"seat": IDENTITY, "top": _at(rise + t)})
+    lid = rimmed(Assembly.single("lid", [_piece(mesh, convex=[np.array(cap)]), band],
+                                 {"seat": IDENTITY, "top": _at(rise + t)}))
     return lid, d
 
 

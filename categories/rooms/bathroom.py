@@ -1,11 +1,16 @@
-"""Bathroom: a toilet, a vanity unit with its basin and tap, a shelf, a door and a window, bottles on the shelf.
+"""Bathroom: a toilet, a vanity unit with its basin and tap, a wall cabinet over it, a linen tower, a door and a window.
 
 The vanity is a kitchen_cabinet sink base at vanity height (0.85-0.9 m, "comfort height"; BS 6465-2 / NKBA bath
-guidelines give
-0.76-0.86 m); the toilet keeps its clear floor space in front (NKBA bath guideline: 30 x 48 in, 0.76 x 1.22 m).
+guidelines give 0.76-0.86 m); the toilet keeps its clear floor space in front (NKBA bath guideline: 30 x 48 in,
+0.76 x 1.22 m). The wall cabinet hangs 0.45-0.55 m over the vanity top (a mirror cabinet's underside at about
+eye level less a face: retail fitting guides give 0.45-0.6 m); the linen tower is a tall single-column cabinet
+(0.4-0.5 m wide, as bathroom tall units are). Vanity, wall cabinet and tower share one seed: one set of fronts.
+Toiletries stand on the vanity top.
 """
 
 from __future__ import annotations
+
+import numpy as np
 
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
@@ -17,6 +22,9 @@ from ._common import CEILING, WALL, door_in, window_in
 VANITY_HEIGHT = (0.85, 0.9)
 VANITY_WIDTH = 1.6  # m: the widest vanity unit a bathroom of 2.2-3.2 m takes (retail double vanities: 1.2-1.5 m)
 TOILET_CLEAR = 0.76  # m free in front of a toilet (NKBA bath guideline 30 in by 48 in)
+WALL_CABINET_GAP = (0.45, 0.55)  # m: vanity top to the wall cabinet's underside (mirror-cabinet fitting guides)
+WALL_RUN_MIN = 1.2  # m: the narrowest wall run kitchen_cabinet makes
+TOWER_WIDTH = (0.4, 0.5)  # m: bathroom tall units (IKEA GODMORGON high cabinet 40 cm; retail towers 40-50 cm)
 
 PARAMS = (
     Float("width", "room width (Y)", "m", 2.2, 3.2),
@@ -25,9 +33,9 @@ PARAMS = (
 )
 
 GRAMMAR = Grammar("bathroom", {
-    "bathroom": Node(required=("toilet", "vanity", "door"), optional={"shelf": 0.3, "window": 0.7},
-                     repeat={"toiletry": (1, 5)}),
-    **{k: Node() for k in ("toilet", "vanity", "door", "shelf", "window", "toiletry")},
+    "bathroom": Node(required=("toilet", "vanity", "door"),
+                     optional={"wall_cabinet": 0.7, "linen_tower": 0.35, "window": 0.7}, repeat={"toiletry": (1, 5)}),
+    **{k: Node() for k in ("toilet", "vanity", "door", "wall_cabinet", "linen_tower", "window", "toiletry")},
 })
 
 
@@ -36,7 +44,8 @@ class BathroomLayout(RoomLayout):
         p = self.p
         self.room_of(p["width"], p["depth"], p["ceiling"], WALL)
         self.hosts = []
-        for kind in ("vanity", "toilet", "shelf", "door", "window"):  # the largest unit first
+        self.cabinet_seed = None
+        for kind in ("vanity", "wall_cabinet", "toilet", "linen_tower", "door", "window"):  # the largest unit first
             if node.one(kind) is not None:
                 self.grow(node.one(kind))
         for child in node.of("toiletry"):
@@ -49,22 +58,36 @@ class BathroomLayout(RoomLayout):
     def vanity(self, node):
         # a sink base grows 1-5 columns beside its sink: the fitter picks a unit that fits the room
         height = round(float(self.rng.uniform(*VANITY_HEIGHT)), 3)
-        for _ in range(12):
-            vanity = self.make("kitchen_cabinet", design="sink_base", base_height=height, sink_width=0.8,
-                               stand_style="plinth", door_angle=1.5708)
+        for _ in range(12):  # the seed draws the columns beside the sink: the first that fits sets the fronts
+            self.cabinet_seed = self.seed()
+            vanity = self.make("kitchen_cabinet", self.cabinet_seed, design="sink_base", base_height=height,
+                               sink_width=0.8, stand_style="plinth", door_angle=1.5708)
             if vanity.size[1] <= VANITY_WIDTH:
                 got = self.on_wall(vanity, self.rng.permutation(["north", "east", "west", "south"]), self.rng)
                 if got is not None:
                     self.hosts.append(got)
                     return
 
-    def shelf(self, node):
-        rack = self.make("storage_rack", design="shelving", width=1.5, shelf_levels=4,
-                         has_goods=False,
-                         shelf_spacing=round(float(self.rng.uniform(0.3, 0.4)), 3))
-        got = self.on_wall(rack, self.rng.permutation(["north", "east", "south", "west"]), self.rng)
-        if got is not None:
-            self.hosts.append(got)
+    def wall_cabinet(self, node):
+        """A wall cabinet centred over the vanity (the narrowest wall run a kitchen_cabinet makes, 1.2 m)."""
+        if not self.hosts:
+            return
+        vanity = self.hosts[0]
+        wall = self.room.wall(vanity.wall)
+        lo = float(min(np.dot(vanity.lo - wall.origin, wall.along), np.dot(vanity.hi - wall.origin, wall.along)))
+        z = float(vanity.hi[2]) + float(self.rng.uniform(*WALL_CABINET_GAP))
+        width = round(max(WALL_RUN_MIN, float(vanity.made.size[1]) - 0.05), 3)
+        for height in (0.7, 0.6):
+            unit = self.make("kitchen_cabinet", self.cabinet_seed, design="wall_run", width=width, wall_height=height,
+                             column_count=int(self.rng.integers(1, 3)), door_angle=1.5708)
+            s = lo + (float(vanity.made.size[1]) - float(unit.size[1])) / 2
+            if self.against(unit, wall, s, z=z) is not None:
+                return
+
+    def linen_tower(self, node):
+        tower = self.make("kitchen_cabinet", self.cabinet_seed, design="larder", stand_style="plinth",
+                          column_width=round(float(self.rng.uniform(*TOWER_WIDTH)), 3), door_angle=1.5708)
+        self.on_wall(tower, self.rng.permutation(["north", "east", "south", "west"]), self.rng)
 
     def door(self, node):
         door_in(self)

@@ -365,6 +365,9 @@ class _Clearance:
         put ``hit`` there, ``j``'s upper limit is shortened if that helps. Returns whether
         anything changed (False: nothing in the core's reach resolves it)."""
         k = self.blocker(j, hit, q)
+        inner = self.inner_open(j, q) if k is None else None
+        if inner is not None:
+            return self.give_way_inner(j, inner, q)
         if k is not None and k.requires_open == j.group:
             self.closed[j.name].add(k.group)
             return True
@@ -379,6 +382,36 @@ class _Clearance:
             self.shorten(j, 1, own * self.limits[j.name][1], hit)
         else:
             return False
+        return True
+
+    def inner_open(self, j, q: dict[str, float]):
+        """An open joint that ``j`` carries (a tote's lid) without which ``j`` closes from ``q``: the part of
+        ``j``'s load that its own opening put in the way (a lid opened in a rack fits under the shelf above
+        but meets the shelf's front rail as the tote slides out); None if there is none."""
+        inner = [d for d in self.movable if d is not j and q.get(d.name, 0.0) != 0.0 and d.type != "continuous"
+                 and d.child in self.subtree[j.name]]
+        for d in sorted(inner, key=lambda d: -len(self.subtree[d.name])):  # the nearest to j first
+            if self.closing(j, {**q, d.name: 0.0}) is None:
+                return d
+        return None
+
+    def give_way_inner(self, j, d, q: dict[str, float]) -> bool:
+        """Make ``j`` close from ``q`` carrying its open part ``d`` (:meth:`inner_open`): ``d``'s upper limit
+        is shortened to the largest share (bisected, 8 steps) at which ``j`` closes, if that share is at least
+        :data:`KEEP`; otherwise ``d`` is closed before ``j`` moves (``requires_closed``: a lid shut before
+        its tote slides). Returns True (something changed)."""
+        good, bad = 0.0, 1.0
+        for _ in range(8):
+            mid = 0.5 * (good + bad)
+            if self.closing(j, {**q, d.name: mid * self.limits[d.name][1]}) is None:
+                good = mid
+            else:
+                bad = mid
+        if good >= KEEP:
+            lo, hi = self.limits[d.name]
+            self.limits[d.name] = (lo, hi * good)
+        else:
+            self.closed[j.name].add(d.group)
         return True
 
     def from_open(self) -> bool:
@@ -438,7 +471,10 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        whichever of the blocking joint's upper limit and the moving joint's own limit keeps the
        larger share of its range (at least :data:`KEEP`) is shortened (a wall-cabinet door that
        opens past 90 degrees in front of its neighbour's swing stops before it); otherwise the
-       moving joint ``requires_closed`` the blocking part. Steps 2 and 3 repeat (up to 4
+       moving joint ``requires_closed`` the blocking part. Where what stops it is a part the moving
+       joint carries, opened (a tote's lid meeting the rail of the shelf above as the tote slides),
+       that part's upper limit is shortened if it keeps :data:`KEEP` of it, else it is closed
+       first (``requires_closed``: a lid shut before its tote slides). Steps 2 and 3 repeat (up to 4
        rounds) while step 3 changes something.
 
     Returns ``{joint name: (lower, upper)}`` for every movable joint (continuous joints keep

@@ -120,6 +120,29 @@
     document.body.dataset.cards = 'ready';
   }
 
+  // ------------------------------------------------------------------------------------ scenes
+
+  function sceneCard(r) {
+    const pics = el('div', { class: 'scene-pics' });
+    for (const [url, label] of [[r.rest, 'at rest'], [r.open, 'every joint open']]) {
+      pics.append(url ? el('figure', {}, el('img', { src: url, alt: `${r.name} ${label}`, loading: 'lazy' }),
+                           el('figcaption', { text: label }))
+                      : el('div', { class: 'placeholder', text: `${r.kind}\n(no picture: infmob preview ${r.path})` }));
+    }
+    const room = r.room.map((v) => v.toFixed(2)).join(' × ');
+    const meta = el('div', { class: 'meta' }, el('b', { text: r.name }),
+      ` · ${r.kind}${r.layout ? ' (' + r.layout.replace(/_/g, ' ') + ')' : ''} · seed ${r.seed}`, el('br'),
+      `${r.objects} objects (${r.fixed} fixed) · room ${room} m · ${r.path}`);
+    return el('div', { class: 'scene-card' }, pics, meta);
+  }
+
+  function renderScenes() {
+    const box = $('scene-cards');
+    if (box.dataset.done) return;
+    box.replaceChildren(...G.data.scenes.map(sceneCard));
+    box.dataset.done = '1';
+  }
+
   // ------------------------------------------------------------------------------------ statistics (SVG)
 
   const SVGNS = 'http://www.w3.org/2000/svg';
@@ -654,19 +677,25 @@
 
   function route() {
     const h = location.hash.replace(/^#/, '');
-    const stats = h === 'stats';
-    $('objects-view').hidden = stats;
-    $('filters').style.visibility = stats ? 'hidden' : '';
+    const stats = h === 'stats', scenes = h === 'scenes' && G.data.scenes.length > 0;
+    $('objects-view').hidden = stats || scenes;
+    $('filters').style.visibility = stats || scenes ? 'hidden' : '';
     $('stats-view').hidden = !stats;
-    $('tab-objects').classList.toggle('active', !stats);
+    $('scenes-view').hidden = !scenes;
+    $('tab-objects').classList.toggle('active', !stats && !scenes);
     $('tab-stats').classList.toggle('active', stats);
+    $('tab-scenes').classList.toggle('active', scenes);
     if (stats) renderStats();
+    if (scenes) renderScenes();
     const m = /^object=(\d+)$/.exec(h);
     if (m && G.data.objects[+m[1]]) openObject(+m[1]); else closeViewer();
   }
 
   G.start = function () {
     if (!G.data) { document.body.textContent = 'gallery data (data/index.js) is missing: run `infmob gallery DIR` again'; return; }
+    G.data.scenes = G.data.scenes || [];
+    $('tab-scenes').hidden = G.data.scenes.length === 0;
+    $('tab-scenes').textContent = `Scenes (${G.data.scenes.length})`;
     fillFilters();
     applyFilters();
     $('viewer-close').onclick = () => { history.pushState('', '', location.pathname + location.search); route(); };

@@ -1,0 +1,197 @@
+"""Interaction annotations (annotations.json, metadata "interaction", grasp Xforms in the USD): every operated
+joint has a grasp a Panda hand can take, on the part's surface, and a path that follows the joint."""
+
+from __future__ import annotations
+
+import functools
+import json
+
+import numpy as np
+import pytest
+
+from infmob_usd import api
+from infmob_usd.annotations import AnnotationError, load
+from infmob_usd.grasps import MAX_WIDTH
+from infmob_usd.interaction import _carried, _mesh, operated
+
+SEEDS = (0, 1, 2)
+
+
+@functools.lru_cache(maxsize=8)
+def _made(category: str, seed: int):
+    return api.generate(category, seed, texture_size=16)
+
+
+def _seg(p, a, b):
+    ab = b - a
+    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-30), 0, 1)
+    return np.linalg.norm(p - (a + t[:, None] * ab), axis=1)
+
+
+def surface_distance(v, f, point) -> float:
+    """Distance from ``point`` to the nearest triangle of ``(v, f)`` (exact, every triangle)."""
+    p = np.asarray(point, float)[None, :]
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    n = np.cross(b - a, c - a)
+    nn = np.linalg.norm(n, axis=1)
+    ok = nn > 1e-18
+    un = n / np.where(ok, nn, 1.0)[:, None]
+    h = np.einsum("ij,ij->i", p - a, un)
+    q = p - h[:, None] * un
+    inside = ok.copy()
+    for x, y in ((a, b), (b, c), (c, a)):
+        inside &= np.einsum("ij,ij->i", np.cross(y - x, q - x), un) >= -1e-12
+    edges = np.minimum(np.minimum(_seg(p, a, b), _seg(p, b, c)), _seg(p, c, a))
+    return float(np.where(inside, np.abs(h), edges).min())
+
+
+@pytest.mark.parametrize("category", api.list_categories())
+def test_every_operated_joint_has_a_panda_grasp_on_the_surface(category):
+    """Seeds 0-2: every movable joint a person operates (not a wheel, caster swivel or coupled follower) is a
+    target with a grasp of width <= 80 mm lying on its link's mesh (within 2 mm)."""
+    for seed in SEEDS:
+        obj = _made(category, seed)
+        want = {j.name for j in obj.joints if operated(j, obj.joints)}
+        targets = {t["joint"]: t for t in obj.interaction}
+        assert set(targets) == want, f"{category} {seed}"
+        for name, t in targets.items():
+            assert any(g["width"] <= MAX_WIDTH for g in t["grasps"]), f"{category} {seed} {name}: no grasp"
+            v, f, _, _ = _carried(obj, obj.link(t["link"]))
+            for g in t["grasps"]:
+                d = surface_distance(v, f, g["position"])
+                assert d <= 0.002, f"{category} {seed} {name}: grasp {d * 1000:.1f} mm off the surface"
+                assert abs(np.dot(g["approach"], g["closing"])) < 1e-6
+                for name in g["blocked_by"]:  # a link named in the fingers' way is really there
+                    other = obj.link(name)
+                    ov, of = _mesh(other.pieces)
+                    near = surface_distance(ov + other.origin - obj.link(t["link"]).origin, of, g["position"])
+                    assert near < 0.06, f"{category} {seed} {name} blocks {t['joint']} from {near:.3f} m"
+
+
+def test_passive_joints_are_not_targets():
+    obj = _made("office_chair", 0)
+    targets = {t["joint"] for t in obj.interaction}
+    wheels = [j for j in obj.joints if j.role == "wheel"]
+    casters = [j for j in obj.joints if any(w.parent == j.child for w in wheels)]
+    assert wheels and casters and not targets & {j.name for j in wheels + casters}
+
+
+def test_a_handle_part_brings_its_grasp():
+    """A bar pull's grasp rides on its bar through placement: on the bar, across it, its diameter wide."""
+    from infmob_usd.categories.parts import hardware
+    from infmob_usd.frames import Frame
+
+    at = Frame.at((0.3, 0.1, 0.5), z=(1, 0, 0), x=(0, 0, 1))  # on a +X face, bar vertical
+    placed = hardware.bar_handle(0.16, "handle").attached("mount", to=at)
+    grasps = [g for p in placed.pieces for g in p.grasps]
+    assert len(grasps) == 1
+    g = grasps[0]
+    assert g.handle_class == "line_fixed_handle"
+    np.testing.assert_allclose(g.approach, (-1, 0, 0), atol=1e-12)
+    np.testing.assert_allclose(np.abs(g.closing), (0, 1, 0), atol=1e-12)
+    assert g.width == pytest.approx(2 * hardware.BAR.bar_radius)
+    bar = next(p for p in placed.pieces if p.grasps)
+    assert surface_distance(bar.vertices, bar.faces, g.position) < 1e-3
+
+
+def test_annotations_are_deterministic():
+    a = api.generate("kitchen_cabinet", 4, texture_size=16).interaction
+    b = api.generate("kitchen_cabinet", 4, texture_size=16).interaction
+    assert json.dumps(a) == json.dumps(b)
+    assert json.dumps(a) != json.dumps(api.generate("kitchen_cabinet", 5, texture_size=16).interaction)
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    out = tmp_path_factory.mktemp("annot")
+    return [api.save(_made(c, 0), out) for c in ("microwave", "dishwasher", "window")]
+
+
+def test_path_follows_the_joint_in_the_written_urdf(written):
+    """Each path point is the first grasp moved by the URDF's forward kinematics, the joint at its fraction."""
+    from infmob_usd.validate.files import parse_urdf
+
+    for folder in written:
+        urdf = parse_urdf(folder / f"{folder.name}.urdf")
+        for t in load(folder)["targets"]:
+            p = np.append(t["grasps"][0]["position"], 1.0)
+            for i, point in enumerate(t["path"]):
+                q = t["rest"] + (t["open"] - t["rest"]) * i / 10
+                pose = urdf.poses({t["joint"]: q})[t["link"]]
+                np.testing.assert_allclose(point, (pose @ p)[:3], atol=1e-6)
+            if t["joint_type"] != "continuous":
+                joint = urdf.joints[t["joint"]]
+                assert t["open"] in (pytest.approx(joint.upper), pytest.approx(joint.lower))
+
+
+def test_files_agree(written):
+    """annotations.json == metadata.json "interaction"; blocked_by names links; one USD grasp Xform per grasp,
+    at its position."""
+    from pxr import Usd
+
+    from infmob_usd.validate.files import parse_urdf
+
+    for folder in written:
+        doc = load(folder)
+        meta = json.loads((folder / "metadata.json").read_text())
+        assert meta["interaction"] == doc["targets"] and meta["files"]["annotations"] == "./annotations.json"
+        links = set(parse_urdf(folder / f"{folder.name}.urdf").links)
+        assert {n for t in doc["targets"] for g in t["grasps"] for n in g["blocked_by"]} <= links
+        stage = Usd.Stage.Open(str(folder / f"{folder.name}.usda"))
+        root = stage.GetDefaultPrim().GetPath()
+        for t in doc["targets"]:
+            for i, g in enumerate(t["grasps"]):
+                prim = stage.GetPrimAtPath(root.AppendChild(t["link"]).AppendChild(f"grasp_{t['joint']}_{i}"))
+                assert prim.IsValid() and prim.GetTypeName() == "Xform"
+                assert prim.GetAttribute("infmob:joint").Get() == t["joint"]
+                assert prim.GetAttribute("infmob:width").Get() == pytest.approx(g["width"], rel=1e-6)
+                np.testing.assert_allclose(prim.GetAttribute("xformOp:translate").Get(), g["position"], atol=1e-9)
+
+
+def _broken(folder, tmp_path, edit):
+    doc = json.loads((folder / "annotations.json").read_text())
+    bad = tmp_path / "bad"
+    bad.mkdir(exist_ok=True)
+    text = edit(doc)
+    (bad / "annotations.json").write_text(text if isinstance(text, str) else json.dumps(text))
+    return bad
+
+
+def _set(path, value):
+    def edit(doc):
+        node = doc
+        for k in path[:-1]:
+            node = node[k]
+        node[path[-1]] = value
+        return doc
+    return edit
+
+
+@pytest.mark.parametrize("edit, words", [
+    (lambda d: "{not json", "not valid UTF-8 JSON"),
+    (lambda d: json.dumps(d).replace('"width": 0', '"width": NaN', 1), "not a number"),
+    (_set(["format"], "infmob-annotations/9"), "format"),
+    (_set(["targets", 0, "grasps", 0, "approach"], [1, 1, 0]), "unit vector"),
+    (_set(["targets", 0, "grasps", 0, "width"], "wide"), "width"),
+    (_set(["targets", 0, "grasps", 0, "blocked_by"], [3]), "blocked_by"),
+    (_set(["targets", 0, "part_class"], "teapot"), "part_class"),
+    (_set(["targets", 0, "path"], [[0, 0, 0]]), "path"),
+    (lambda d: {**d, "targets": d["targets"][:1] * 2}, "annotated twice"),
+    (_set(["targets"], {}), "targets"),
+])
+def test_load_rejects_hostile_files_in_one_line(written, tmp_path, edit, words):
+    bad = _broken(written[0], tmp_path, edit)
+    with pytest.raises(AnnotationError) as e:
+        load(bad)
+    msg = str(e.value)
+    assert words in msg and "\n" not in msg and "annotations.json" in msg
+
+
+def test_load_refuses_missing_files_and_links(written, tmp_path):
+    with pytest.raises(AnnotationError, match="missing"):
+        load(tmp_path)
+    (tmp_path / "annotations.json").symlink_to(written[0] / "annotations.json")
+    with pytest.raises(AnnotationError, match="symbolic link"):
+        load(tmp_path)
+    with pytest.raises(AnnotationError, match="folder path"):
+        load(42)

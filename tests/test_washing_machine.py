@@ -1,0 +1,56 @@
+"""Washing machine: what a user relies on beyond the contract tests: the porthole door swings out on its left
+edge and is glazed where one looks in, the filter cap and drain hose behind the service flap move only with the
+flap open, the top loader's lid lifts at its front about a hinge at the back."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from categories.washing_machine import MATERIALS
+from tests.helpers import maker
+
+make = maker("washing_machine")
+
+
+def _box(bp, name):
+    b = np.array([pc.bounds for pc in bp.parts[name].pieces])
+    return b[:, 0].min(0), b[:, 1].max(0)
+
+
+@pytest.mark.parametrize("design", ["front_loader", "washer_dryer"])
+def test_the_porthole_door_swings_out_on_its_left_edge_and_is_glazed_in_the_middle(design):
+    for seed in range(3):
+        _, bp = make(seed, design=design)
+        door = {j.child: j for j in bp.joints}["door"]
+        d = door.dofs[0]
+        lo, hi = _box(bp, "door")
+        assert door.kind == "revolute" and np.allclose(d.axis, (0, 0, -1))  # about the vertical, opening outwards
+        assert d.origin[1] == pytest.approx(lo[1], abs=0.002) and d.upper > np.radians(150)  # left edge, wide
+        y, z = (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2  # the line one looks in along, through the ring's middle
+        near = 0.1  # m: what lies within a hand's width of that line (the ring is 17 cm or more off it)
+        on_axis = [pc for pc in bp.parts["door"].pieces
+                   if (np.hypot(pc.vertices[:, 1] - y, pc.vertices[:, 2] - z) < near).any()]
+        assert on_axis and {pc.material for pc in on_axis} == {"glass"}
+    assert MATERIALS["glass"] == "glass"  # a see-through family (smoked or clear in the appliance palette)
+
+
+def test_filter_cap_and_drain_hose_need_the_flap_open():
+    _, bp = make(0, design="front_loader", has_service_flap=True, has_drain_hose=True)
+    joints = {j.child: j for j in bp.joints}
+    flap = joints["filter_flap"]
+    assert flap.kind == "revolute" and np.allclose(flap.dofs[0].axis, (0, 1, 0))  # drops forward
+    assert flap.dofs[0].origin[2] == pytest.approx(_box(bp, "filter_flap")[0][2], abs=0.002)  # at its bottom edge
+    assert joints["filter"].requires_open == "filter_flap" and joints["filter"].kind == "revolute"
+    assert joints["drain_hose"].requires_open == "filter_flap"
+    assert np.allclose(joints["drain_hose"].dofs[0].axis, (1, 0, 0))  # pulled out of the front
+
+
+def test_top_loader_lid_lifts_at_its_front():
+    for seed in range(3):
+        _, bp = make(seed, design="top_loader")
+        lid = {j.child: j for j in bp.joints}["lid"]
+        lo, hi = _box(bp, "lid")
+        d = lid.dofs[0]
+        assert np.allclose(d.axis, (0, -1, 0)) and d.origin[0] == pytest.approx(lo[0], abs=0.002)  # hinge at back
+        assert "door" not in bp.parts and "drawer" not in bp.parts
