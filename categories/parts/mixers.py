@@ -58,7 +58,7 @@ class Design:
 # and its metal gear train about 1.2 kg.
 DESIGNS = {
     "tilt_head": Design((0.315, 0.355), (0.183, 0.222), (0.31, 0.36), 0.004, 1.3, 1),
-    "bowl_lift": Design((0.338, 0.371), (0.264, 0.287), (0.41, 0.42), 0.0035, 1.6, 1),
+    "bowl_lift": Design((0.338, 0.371), (0.264, 0.287), (0.41, 0.42), 0.003, 1.6, 1),
     "turntable": Design((0.33, 0.36), (0.22, 0.26), (0.32, 0.35), 0.003, 1.2, 2),
 }
 ZINC = 6600.0  # kg/m^3, die-cast zinc alloy (ZAMAK 3, 6.6 g/cm^3: Eastern Alloys data sheet)
