@@ -33,10 +33,11 @@ PAD = 0.01  # m, half a finger pad's width (a Panda finger pad is ~20 mm wide)
 REACH = 0.03  # m, how deep past the surface the fingers may close
 FINGER = 0.012  # m, the room a finger needs beside the part (a gap narrower than this is bridged)
 KNOB_REACH = 0.06  # m, a turning part no farther than this from its axis is turned across its cap
-PALM = (0.204, 0.063, 0.058, 0.1034)
+PALM = (0.204, 0.063, 0.058, 0.1034 + 0.10)
 """m, the Panda hand's body behind its fingers (Franka Hand drawings, ManiSkill's panda_v2_gripper.urdf): across
 the closing axis, across the pad, and from / to how far behind the pads' centre (the fingers' base, the
-hand's flange), where its body must be free for a grasp to be taken."""
+hand's flange, and 10 cm on: the hand comes in along the approach, as the robot check's pre-grasp), where its
+body must be free for a grasp to be taken."""
 GRIP = 0.075  # m, the widest opening accepted for a derived grasp (MAX_WIDTH less a margin)
 
 SQUARE = math.cos(math.radians(10))  # a far edge within 10 degrees of a world axis is taken square to it
@@ -379,6 +380,18 @@ def grasp_rotation(g: Grasp) -> np.ndarray:
     return np.column_stack([np.cross(y, z), y, z])
 
 
+def _fixed_under(obj, names) -> set[str]:
+    """``names`` and every link fixed under them."""
+    out, stack = set(names), list(names)
+    while stack:
+        n = stack.pop()
+        for j in obj.joints:
+            if j.parent == n and j.type == "fixed" and j.child not in out:
+                out.add(j.child)
+                stack.append(j.child)
+    return out
+
+
 def _carried(obj, carrier) -> tuple[np.ndarray, np.ndarray, list[Grasp], set[str]]:
     """The mesh and the declared grasps of a link and of every link fixed to it, in its frame, and the names
     of those links."""
@@ -436,7 +449,9 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     carrier = obj.link(joint.group)
     v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
-    neighbours, press = Neighbours(obj, carrier, own, (v, f)), action(joint) == "press"
+    # the gate part (a door before the rack behind it) is open when this joint is operated: not in the way
+    gate = [j.child for j in obj.joints if j.group == joint.requires_open] if joint.requires_open else []
+    neighbours, press = Neighbours(obj, carrier, own | _fixed_under(obj, gate), (v, f)), action(joint) == "press"
 
     def blocked(g: Grasp) -> list[str]:
         return neighbours(g, press)
