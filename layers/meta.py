@@ -65,6 +65,10 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                                " toaster oven)"),
     "kettle": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                            " verified item for kettle)"),
+    "stand_mixer": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                                " verified item for stand mixer or electric mixer)"),
+    "blender": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
+                            " verified item for blender)"),
     "coffee_machine": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                                    " verified item for coffee maker: WordNet's coffee_maker.n.01 has none in these"
                                    " files)"),

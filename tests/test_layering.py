@@ -172,9 +172,10 @@ def test_no_import_cycle():
 
 
 TOP = {"infmob_usd", "infmob_usd.__main__", "infmob_usd.api", "infmob_usd.cli", "infmob_usd.batch",
-       "infmob_usd.fuzz", "infmob_usd.parts_tools"}
+       "infmob_usd.fuzz", "infmob_usd.parts_tools", "infmob_usd.maniskill"}
 """The entry points: they wire the rooms together (generate, save, the command line, the fuzzer, the
-part-library tools that export and measure the categories' own parts); so does the scene composer's
+part-library tools that export and measure the categories' own parts, the ManiSkill tasks that generate
+objects and load them with the simulator checks' loaders); so does the scene composer's
 package (``infmob_usd.scenes``: it makes objects, writes and checks scenes; its modules are core)."""
 
 
