@@ -33,6 +33,11 @@ PAD = 0.01  # m, half a finger pad's width (a Panda finger pad is ~20 mm wide)
 REACH = 0.03  # m, how deep past the surface the fingers may close
 FINGER = 0.012  # m, the room a finger needs beside the part (a gap narrower than this is bridged)
 KNOB_REACH = 0.06  # m, a turning part no farther than this from its axis is turned across its cap
+PALM = (0.204, 0.063, 0.058, 0.1034 + 0.10)
+"""m, the Panda hand's body behind its fingers (Franka Hand drawings, ManiSkill's panda_v2_gripper.urdf): across
+the closing axis, across the pad, and from / to how far behind the pads' centre (the fingers' base, the
+hand's flange, and 10 cm on: the hand comes in along the approach, as the robot check's pre-grasp), where its
+body must be free for a grasp to be taken."""
 GRIP = 0.075  # m, the widest opening accepted for a derived grasp (MAX_WIDTH less a margin)
 
 SQUARE = math.cos(math.radians(10))  # a far edge within 10 degrees of a world axis is taken square to it
@@ -217,7 +222,8 @@ def _candidates(v: np.ndarray, joint, pivot: np.ndarray):
     if r.max() < KNOB_REACH:  # a knob: across its cap, from its free end
         along = rel @ a
         end = a if along.max() >= -along.min() else -a
-        yield from ((o, -end, _fan(a)) for o in _rays(v, -end, _perps(a)[0])[:1])
+        for e in (end, -end):  # the end farther from the pivot, else the other (a cap hinged at its top)
+            yield from ((o, -e, _fan(a)) for o in _rays(v, -e, _perps(a)[0])[:1])
     e = radial[int(np.argmax(r))] / max(r.max(), 1e-9)
     # square to the part where it is nearly so: a leaf's far corner is off its mid-plane by its thickness
     e = next((q for q in _perps(a) if e @ q > SQUARE), e)
@@ -245,7 +251,7 @@ def _sides(v: np.ndarray, a: np.ndarray):
                 yield u * (float((slab @ u).max()) + 0.05) + a * s + w * 0.5 * (wc.min() + wc.max()), -u, [w, a]
 
 
-TRIES = 3  # fitting pinches tried for one the neighbours leave free before the first is kept anyway
+TRIES = 12  # fitting pinches tried for one the neighbours leave free before the first is kept anyway
 
 
 def derived_grasps(v: np.ndarray, f: np.ndarray, joint, pivot, blocked=None) -> list[Grasp]:
@@ -267,12 +273,18 @@ def derived_grasps(v: np.ndarray, f: np.ndarray, joint, pivot, blocked=None) -> 
 
 
 class Neighbours:
-    """The other links of an object at rest, in one link's frame: which of them a grasp's fingers would meet
+    """The other links of an object at rest, in one link's frame: which of them a grasp's hand would meet
     (two finger boxes ``FINGER`` thick beside the pinched width, from 4 cm before the surface to ``depth``
-    past it, a pad wide; for a press, the shut fingers' way in)."""
+    past it, a pad wide, and the hand's body behind them (:data:`PALM`), which may not meet the operated part
+    itself either: it is then named among them; for a press, the shut fingers' way in)."""
 
-    def __init__(self, obj, carrier, own: set[str]):
+    def __init__(self, obj, carrier, own: set[str], mesh=None):
         self.meshes = []
+        if mesh is not None and len(mesh[1]):  # the part itself: only the hand's body may not meet it
+            tri = mesh[0][mesh[1]]
+            self.meshes.append((carrier.name, mesh[0], mesh[1], tri.min(1), tri.max(1), mesh[0].min(0),
+                                mesh[0].max(0)))
+        self.own = carrier.name
         for link in obj.links:
             if link.dummy or link.name in own or not link.pieces:
                 continue
@@ -282,21 +294,26 @@ class Neighbours:
             self.meshes.append((link.name, lv, lf, tri.min(1), tri.max(1), lv.min(0), lv.max(0)))
 
     def __call__(self, g: Grasp, press: bool = False) -> list[str]:
-        """The links in the fingers' way; ``press``: the hand pushes with its fingers shut, so only the way
+        """The links in the hand's way; ``press``: the hand pushes with its fingers shut, so only the way
         in to the surface counts (one box two fingers wide)."""
         p, d, k = (np.asarray(x) for x in (g.position, g.approach, g.closing))
         w = np.cross(d, k)
         hit = set()
-        for side in ((0.0,) if press else (1.0, -1.0)):
+        for side in ((0.0,) if press else (1.0, -1.0, 0.0)):
             if press:
                 centre, half = p - d * 0.0205, np.array([0.0195, FINGER, PAD])
+            elif side == 0.0:  # the hand's body behind the fingers
+                centre, half = p + d * (g.depth - (PALM[2] + PALM[3]) / 2), np.array([(PALM[3] - PALM[2]) / 2,
+                                                                                      PALM[0] / 2, PALM[1] / 2])
             else:
                 centre = p + d * (g.depth - 0.04) / 2 + k * side * (g.width / 2 + FINGER / 2)
                 half = np.array([(g.depth + 0.04) / 2, FINGER / 2 - 1e-4, PAD])
             axes = np.stack([d, k, w])
             reach = np.abs(axes).T @ half
             for name, lv, lf, tlo, thi, lo, hi in self.meshes:
-                if name in hit or (lo > centre + reach).any() or (hi < centre - reach).any():
+                if (name == self.own and (press or side != 0.0)) or name in hit:  # fingers close on the part
+                    continue
+                if (lo > centre + reach).any() or (hi < centre - reach).any():
                     continue
                 near = ((tlo <= centre + reach) & (thi >= centre - reach)).all(1)  # triangles whose box meets it
                 if not near.any():
@@ -363,6 +380,18 @@ def grasp_rotation(g: Grasp) -> np.ndarray:
     return np.column_stack([np.cross(y, z), y, z])
 
 
+def _fixed_under(obj, names) -> set[str]:
+    """``names`` and every link fixed under them."""
+    out, stack = set(names), list(names)
+    while stack:
+        n = stack.pop()
+        for j in obj.joints:
+            if j.parent == n and j.type == "fixed" and j.child not in out:
+                out.add(j.child)
+                stack.append(j.child)
+    return out
+
+
 def _carried(obj, carrier) -> tuple[np.ndarray, np.ndarray, list[Grasp], set[str]]:
     """The mesh and the declared grasps of a link and of every link fixed to it, in its frame, and the names
     of those links."""
@@ -420,12 +449,18 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     carrier = obj.link(joint.group)
     v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
-    neighbours, press = Neighbours(obj, carrier, own), action(joint) == "press"
+    # the gate part (a door before the rack behind it) is open when this joint is operated: not in the way
+    gate = [j.child for j in obj.joints if j.group == joint.requires_open] if joint.requires_open else []
+    neighbours, press = Neighbours(obj, carrier, own | _fixed_under(obj, gate), (v, f)), action(joint) == "press"
 
     def blocked(g: Grasp) -> list[str]:
         return neighbours(g, press)
 
     grasps = declared or (derived_grasps(v, f, joint, pivot, blocked) if len(f) else [])
+    if declared and len(f) and all(blocked(g) for g in declared):
+        # the part's own holds all meet a neighbour (a cap's side pinch reaching below it onto the bottle's
+        # shoulder): a hold from the geometry that the neighbours leave free comes after them
+        grasps = declared + [g for g in derived_grasps(v, f, joint, pivot, blocked) if not blocked(g)]
     handle = next((g for g in grasps if g.handle_class is not None), None)
     if handle is not None and handle.box is not None:
         centre, size, rot = handle.box

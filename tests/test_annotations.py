@@ -12,7 +12,7 @@ import pytest
 from infmob_usd import api
 from infmob_usd.annotations import AnnotationError, load
 from infmob_usd.grasps import MAX_WIDTH
-from infmob_usd.interaction import _carried, _mesh, operated
+from infmob_usd.interaction import PALM, _carried, _mesh, operated
 
 SEEDS = (0, 1, 2)
 
@@ -61,11 +61,14 @@ def test_every_operated_joint_has_a_panda_grasp_on_the_surface(category):
                 d = surface_distance(v, f, g["position"])
                 assert d <= 0.002, f"{category} {seed} {name}: grasp {d * 1000:.1f} mm off the surface"
                 assert abs(np.dot(g["approach"], g["closing"])) < 1e-6
-                for name in g["blocked_by"]:  # a link named in the fingers' way is really there
+                # a link named in the hand's way is really there: within the fingers' 6 cm of the grasp, or
+                # the hand's body's farthest corner behind it
+                reach = max(0.06, float(np.linalg.norm([PALM[3], PALM[0] / 2, PALM[1] / 2])) + 0.005)
+                for name in g["blocked_by"]:
                     other = obj.link(name)
                     ov, of = _mesh(other.pieces)
                     near = surface_distance(ov + other.origin - obj.link(t["link"]).origin, of, g["position"])
-                    assert near < 0.06, f"{category} {seed} {name} blocks {t['joint']} from {near:.3f} m"
+                    assert near < reach, f"{category} {seed} {name} blocks {t['joint']} from {near:.3f} m"
 
 
 def test_passive_joints_are_not_targets():
@@ -92,6 +95,24 @@ def test_a_handle_part_brings_its_grasp():
     assert g.width == pytest.approx(2 * hardware.BAR.bar_radius)
     bar = next(p for p in placed.pieces if p.grasps)
     assert surface_distance(bar.vertices, bar.faces, g.position) < 1e-3
+
+
+def test_a_hold_whose_hand_meets_a_neighbour_is_named_and_a_free_one_offered():
+    """The hand's body counts, not only its fingers: a fridge rack under another is not taken from above (the
+    hand's body meets the rack over it) but by its front wire from the front, fingers closing vertically; and
+    a screw cap whose own side pinch reaches onto the bottle's shoulder also offers a free hold (across it
+    from above, for the lift and the turn alike)."""
+    fridge = {t["joint"]: t for t in _made("beverage_fridge", 4).interaction}
+    for name in ("joint_rack_0", "joint_rack_1"):
+        g = fridge[name]["grasps"][0]
+        assert g["approach"][0] < -0.9 and abs(g["closing"][2]) > 0.9, (name, g)
+        assert set(g["blocked_by"]) <= {"door"}  # only the door, shut at rest, which the rack requires open
+    caps = [t for t in _made("bottle", 4).interaction if t["link"] == "cap"]
+    assert len(caps) == 2
+    for t in caps:
+        assert t["grasps"][0]["blocked_by"] == ["body"]  # the cap's declared edge pinch, listed first
+        free = [g for g in t["grasps"] if not g["blocked_by"]]
+        assert free and free[0]["approach"][2] < -0.9, t["joint"]
 
 
 def test_annotations_are_deterministic():
