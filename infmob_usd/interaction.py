@@ -99,13 +99,22 @@ def raycast(v: np.ndarray, f: np.ndarray, origin, direction) -> float | None:
 
 def _crop(v, f, point, planes):
     """The triangles of ``(v, f)`` inside every half-space ``(normal, offset)``: ``(x - point) . n >= -offset``."""
+    point = np.asarray(point, float)
+    normals = np.array([n for n, _ in planes], float)
+    offsets = np.array([off for _, off in planes], float)
+    # a triangle wholly outside one half-space (beyond the slicer's tolerance) is one slicing would drop: drop it
+    # first, so the slicer reads a handful of triangles instead of the whole link (same triangles out, same order)
+    outside = ((v[f] - point) @ normals.T < -offsets - 1e-6).all(axis=1).any(axis=1)
+    f = f[~outside]
     used, f = np.unique(f, return_inverse=True)  # only the vertices of these triangles: slicing reads them all
     v, f = v[used], f.reshape(-1, 3)
     for n, off in planes:
         if len(f) == 0:
             break
         n = np.asarray(n, float)
-        v, f = slice_faces_plane(v, f, n, np.asarray(point, float) - n * off)[:2]
+        if ((v - point) @ n >= -off + 1e-6).all():  # nothing to cut off: the slicer would give it back as it is
+            continue
+        v, f = slice_faces_plane(v, f, n, point - n * off)[:2]
     return v, f
 
 
