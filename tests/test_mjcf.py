@@ -216,9 +216,11 @@ def test_formats_table_and_parsing():
 def test_save_writes_only_the_formats_asked_for(tmp_path):
     folder = infmob_usd.save(zoo(texture_size=16), tmp_path, formats=["glb"])
     names = sorted(p.name for p in folder.iterdir())
-    assert names == ["metadata.json", "semantics.txt", "textures", "zoo_000000.glb"]
+    # metadata, semantics and the interaction annotations come with every format
+    assert names == ["annotations.json", "metadata.json", "semantics.txt", "textures", "zoo_000000.glb"]
     meta = json.loads((folder / "metadata.json").read_text())
-    assert meta["files"] == {"glb": "./zoo_000000.glb", "semantics": "./semantics.txt"}
+    assert meta["files"] == {"glb": "./zoo_000000.glb", "semantics": "./semantics.txt",
+                             "annotations": "./annotations.json"}
     default = infmob_usd.save(zoo(texture_size=16), tmp_path / "d")
     assert {p.suffix for p in default.iterdir()} >= {".usda", ".urdf", ".xml"}
     assert not (default / "zoo_000000.glb").exists()
