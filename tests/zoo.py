@@ -74,9 +74,19 @@ def object_limits(name, seed, bp, **overrides):
 
     obj = generate(name, seed, 16, **overrides)
     final = {j.child: j for j in obj.movable_joints}
-    bp.joints = [replace(j, dofs=(replace(j.dofs[0], lower=final[j.child].lower, upper=final[j.child].upper,
-                                          axis=tuple(final[j.child].axis)),))
-                 if j.movable and len(j.dofs) == 1 and j.child in final else j for j in bp.joints]
+    fixed = {j.child for j in obj.joints if j.type == "fixed"}  # a joint the passes left too short to move
+
+    def limited(j):
+        if not (j.movable and len(j.dofs) == 1):
+            return j
+        if j.child in final:
+            f = final[j.child]
+            return replace(j, dofs=(replace(j.dofs[0], lower=f.lower, upper=f.upper, axis=tuple(f.axis)),))
+        if j.child in fixed:
+            return replace(j, kind="fixed", dofs=())
+        return j
+
+    bp.joints = [limited(j) for j in bp.joints]
     return bp
 
 
