@@ -39,18 +39,25 @@ def _quat_z(yaw_deg: float) -> list[float]:
 
 
 def load_sapien_scene(folder, scene_json=None, timestep: float = 1 / 240):
-    """``(sapien.Scene, {placed id: SimContext})`` of the scene folder (SimContext: see :mod:`.sim`)."""
-    from sapien.wrapper.urdf_loader import URDFLoader
-
-    from .sim import _build_mimics, _context, _find_urdf, _import_sapien, _read_meta, apply_springs
-
-    sapien = _import_sapien()
+    """``(sapien.Scene, {placed id: SimContext})`` of the scene folder (SimContext: see :mod:`.sim`); a scene
+    naming files outside its folder raises ``ValueError`` before anything is loaded."""
     folder = Path(folder)
     rec = scene_json if isinstance(scene_json, dict) else json.loads(
         Path(scene_json or folder / "scene.json").read_text())
     refused = scene_refusals(folder, rec)
     if refused:
         raise ValueError(f"{folder}: {refused[0]}")
+    return _sapien_scene(folder, rec, timestep)
+
+
+def _sapien_scene(folder: Path, rec: dict, timestep: float = 1 / 240):
+    """:func:`load_sapien_scene` of a scene record already checked by :func:`scene_refusals` (the checks load
+    the scene once per fixed object: the files are checked once, in :func:`check_scene`)."""
+    from sapien.wrapper.urdf_loader import URDFLoader
+
+    from .sim import _build_mimics, _context, _find_urdf, _import_sapien, _read_meta, apply_springs
+
+    sapien = _import_sapien()
     scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
     scene.set_timestep(timestep)
     room = scene.create_actor_builder()
@@ -167,7 +174,7 @@ def _reach(folder: Path, rec: dict) -> tuple[list[str], int, int]:
         if not o["fixed"]:
             continue
         m += 1
-        scene, contexts = load_sapien_scene(folder, _near(rec, o))
+        scene, contexts = _sapien_scene(folder, _near(rec, o))
         ctx = contexts[o["id"]]
         if not ctx.joints:
             continue
@@ -190,7 +197,7 @@ def check_scene(folder, reach: bool = True) -> list[CheckResult]:
         return [CheckResult("scene_load", False, "; ".join(refused[:3]))]
     t0 = time.perf_counter()
     try:
-        scene, contexts = load_sapien_scene(folder, rec)
+        scene, contexts = _sapien_scene(folder, rec)
     except Exception as e:  # noqa: BLE001 - a load failure is the finding
         return [CheckResult("scene_load", False, f"SAPIEN: {type(e).__name__}: {e}")]
     problems = _load(folder, rec)
