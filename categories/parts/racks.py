@@ -15,6 +15,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
+from infmob_usd.grasps import Grasp
 
 BEAM_D = 0.05  # beam depth (x)
 BRACKET_H = 0.03  # height of the brackets a level's beam connectors rest on
@@ -210,7 +211,8 @@ def goods_row(kind: str, span: tuple[float, float], depth: float, rng: np.random
 # Lista / Stanley Vidmar pallet-rack drawer systems: a steel housing 22-1/2, 30 or 45 in wide (narrowest
 # first), 28-1/4 in deep, whose drawers (front heights 3-12 in, 75-300 mm) run on full-extension slides;
 # 1.2-1.5 mm sheet steel
-DRAWER_CAB = dict(widths=(0.572, 0.762, 1.143), depth=0.718, sheet=0.0015, gap=0.003, front=0.018, lip=0.02)
+DRAWER_CAB = dict(widths=(0.572, 0.762, 1.143), depth=0.718, sheet=0.0015, gap=0.003, front=0.018, lip=0.02,
+                  lip_proud=0.012)
 
 
 def drawer_housing(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
@@ -237,7 +239,14 @@ def cabinet_drawer(x0: float, x1: float, y0: float, y1: float, z0: float, z1: fl
               g.box_between([x0, y1 - 0.005 - w, z0 + w], [xf, y1 - 0.005, z0 + hs], slot).replace(sheet=s),
               g.box_between([x0, y0 + 0.005 + w, z0 + w], [x0 + w, y1 - 0.005 - w, z0 + hs], slot).replace(sheet=s)]
     lip = min(DRAWER_CAB["lip"], 0.3 * (z1 - z0))
-    pieces.append(g.box_between([x1, y0 + 0.01, z1 - lip], [x1 + 0.012, y1 - 0.01, z1 - 0.002], pull, bevel=0.002))
+    # the pull lip is what the drawer is taken by: pinched top to bottom from the front (the top edge is under
+    # the drawer above, 3 mm away: no hand reaches it from above)
+    proud, tall = DRAWER_CAB["lip_proud"], lip - 0.002
+    zc, yc = z1 - 0.002 - tall / 2, (y0 + y1) / 2
+    grasp = Grasp.make([x1 + proud, yc, zc], (-1, 0, 0), (0, 0, 1), tall, proud / 2, "line_fixed_handle",
+                       ((x1 + proud / 2, yc, zc), (proud, y1 - y0 - 0.02, tall), np.eye(3)))
+    pieces.append(g.box_between([x1, y0 + 0.01, z1 - lip], [x1 + proud, y1 - 0.01, z1 - 0.002], pull,
+                                bevel=0.002).with_grasps(grasp))
     return pieces
 
 
@@ -246,6 +255,10 @@ TOTE_WALL = 0.003  # polypropylene storage boxes: 2.5-3.5 mm walls (Really Usefu
 TOTE_RIM = 0.008  # the stacking rim around the top
 LID_T = 0.012  # lid: a 3 mm sheet on a 12 mm skirt (visual), one slab for collisions
 LID_SHEET = 0.003
+# moulded holds of a storage tote and its lid (Really Useful Box 35 L: a grip ledge moulded under the rim at each
+# end and a lid whose edge stands proud of the box; IKEA SAMLA: hand holds under the rim): m
+TOTE_GRIP = dict(width=0.1, proud=0.018, t=0.008, below=0.04)  # the ledge 40 mm under the rim: room for a finger
+LID_TAB = dict(width=0.08, proud=0.022, t=0.005)  # the lid's lifting tab out of its front edge
 
 
 def tote(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str) -> list[g.Piece]:
@@ -262,17 +275,34 @@ def tote(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: s
               g.box_between([x1 - r - w, y0, z + h - 0.015], [x1, y1, z + h], slot, bevel=0.002),
               g.box_between([x0 + r + w, y0, z + h - 0.015], [x1 - r - w, y0 + r + w, z + h], slot),
               g.box_between([x0 + r + w, y1 - r - w, z + h - 0.015], [x1 - r - w, y1, z + h], slot)]
-    yc = (y0 + y1) / 2  # a moulded grip on the front wall
-    pieces.append(g.box_between([x1 - r + w, yc - 0.05, z + h - 0.05], [x1 - r + w + 0.006, yc + 0.05, z + h - 0.03],
-                                slot))
+    pieces.append(tote_grip(x1 - r + w, (y0 + y1) / 2, z + h, slot))
     return pieces
 
 
+def tote_grip(x: float, y: float, z_rim: float, slot: str) -> g.Piece:
+    """A tote's moulded hand hold: a ledge out of the front wall (face at ``x``) under the rim at ``z_rim``, which
+    the fingers hook under to pull the tote off its shelf; a hand pinches it top to bottom from the front."""
+    c = TOTE_GRIP
+    zc, xc = z_rim - c["below"] - c["t"] / 2, x + c["proud"] / 2
+    grasp = Grasp.make([x + c["proud"], y, zc], (-1, 0, 0), (0, 0, 1), c["t"], c["proud"] / 2, "line_fixed_handle",
+                       ((xc, y, zc), (c["proud"], c["width"], c["t"]), np.eye(3)))
+    lo, hi = [x, y - c["width"] / 2, zc - c["t"] / 2], [x + c["proud"], y + c["width"] / 2, zc + c["t"] / 2]
+    return g.box_between(lo, hi, slot, bevel=0.002).with_grasps(grasp)
+
+
 def tote_lid(x0: float, x1: float, y0: float, y1: float, z: float, slot: str) -> list[g.Piece]:
-    """A flat lid lying on a tote's rim at ``z``: a slab with a raised label panel."""
+    """A flat lid lying on a tote's rim at ``z``: a slab with a raised label panel and a lifting tab standing out
+    of its front edge (a lid flush with its tote's rim gives no hold: the tab is what it is lifted by, pinched top
+    to bottom from the front)."""
+    c, yc = LID_TAB, (y0 + y1) / 2
+    zc = z + LID_T - c["t"] / 2
+    grasp = Grasp.make([x1 + c["proud"], yc, zc], (-1, 0, 0), (0, 0, 1), c["t"], c["proud"] / 2, "line_fixed_handle",
+                       ((x1 + c["proud"] / 2, yc, zc), (c["proud"], c["width"], c["t"]), np.eye(3)))
     return [g.box_between([x0, y0, z], [x1, y1, z + LID_T], slot, bevel=0.003).replace(sheet=LID_SHEET),
             g.box_between([x0 + 0.3 * (x1 - x0), y0 + 0.2 * (y1 - y0), z + LID_T],
-                          [x1 - 0.1 * (x1 - x0), y1 - 0.2 * (y1 - y0), z + LID_T + 0.002], slot)]
+                          [x1 - 0.1 * (x1 - x0), y1 - 0.2 * (y1 - y0), z + LID_T + 0.002], slot),
+            g.box_between([x1 - 0.002, yc - c["width"] / 2, z + LID_T - c["t"]],
+                          [x1 + c["proud"], yc + c["width"] / 2, z + LID_T], slot, bevel=0.001).with_grasps(grasp)]
 
 
 def louvred_bin(x0: float, x1: float, y0: float, y1: float, z: float, h: float, slot: str,
