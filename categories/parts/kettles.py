@@ -19,8 +19,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
+from infmob_usd.grasps import Grasp
 
 from .vessel import Profile, lid_gap
 
@@ -50,6 +53,7 @@ BASE = (0.012, 0.02)  # m, an electric kettle's power base: overhang round the b
 LID_T = 0.006  # m, the lid's thickness as the simulator sees it
 LID_SHEET = 0.0008  # m, pressed steel or moulded plastic of the lid (its mass)
 LID_OPENS = math.radians(95)  # kettle lids open to about upright
+LID_KNOB = (0.008, 0.015)  # m, the lid's knob: radius, top over the lid's mid-plane
 SPOUT_R = 0.011  # m, spout tube radius
 FLAP_OPENS = math.radians(80)
 HANDLE_R = 0.012  # m, a side handle's grip (solid plastic)
@@ -135,8 +139,13 @@ def lid(k: Kettle, slot: str, knob_slot: str) -> tuple[list[g.Piece], Frame]:
     """A flat lid over the mouth with a knob, and its hinge at the back of the rim (axis -Y: the front lifts)."""
     zc = k.height + lid_gap(LID_T) + LID_T / 2
     r = k.mouth + 0.006
+    # the knob is what the lid is lifted by (its edge lies on the rim: no finger gets under it): pinched across
+    # from above, down to the lid's face
+    kx, kr, top, face = 0.4 * r, LID_KNOB[0], zc + LID_KNOB[1], zc + LID_T / 2
+    grasp = Grasp.make((kx, 0, top), (0, 0, -1), (0, 1, 0), 2 * kr, (top - face) / 2, "round_fixed_handle",
+                       ((kx, 0, (top + face) / 2), (2 * kr, 2 * kr, top - face), np.eye(3)))
     pieces = [g.disc((0, 0, zc), r, LID_T, slot).replace(sheet=LID_SHEET),  # pressed sheet, massed so
-              g.cylinder((0.4 * r, 0, zc), (0.4 * r, 0, zc + 0.015), 0.008, knob_slot)]
+              g.cylinder((kx, 0, zc), (kx, 0, top), kr, knob_slot).with_grasps(grasp)]
     return pieces, Frame.at((-r, 0, zc), z=(0, -1, 0))
 
 
