@@ -120,3 +120,16 @@ def test_hand_frame_and_euler_round_trip():
     assert np.allclose(robot.euler_xyz(rx @ ry @ rz), [a, b, c])
     turn = robot.rotation_between([1, 0, 0], [0, 1, 0])
     assert np.allclose(turn @ [1, 0, 0], [0, 1, 0]) and np.allclose(turn @ [0, 0, 1], [0, 0, 1])
+
+
+def test_a_key_over_a_stand_is_pressed_with_the_hand_turned_flat(tmp_path):
+    """A TV's key in its bezel's bottom band, 7 cm over the stand's foot: the annotated way in (the fingers'
+    closing axis vertical) puts the hand's 0.2 m body into the foot; turned a quarter about the approach,
+    the shut fingers press the key."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("tv", 4, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    key = next(t for t in targets if t["action"] == "press")
+    _write(folder, [key])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(slider_button): opened" in r.detail, r.detail
+    assert len(robot.grasp_candidates(key)) > 2 * len(key["grasps"])  # turned and tilted ways in

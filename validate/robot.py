@@ -12,8 +12,10 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    towards the middle of the handle's box);
 3. the fingers close along ``closing`` with the Panda hand's continuous grip force (:data:`GRIP_FORCE`).
    When the hand cannot get to a grasp or closes on nothing, the next annotated grasp is tried, each also
-   turned a quarter about its approach where the handle's box fits between the fingers that way. A
-   ``press`` or ``push`` is done with the closed fingers' tips on the first grasp, without a grasp;
+   turned a quarter about its approach where the handle's box fits between the fingers that way, then
+   each tilted by :data:`TILTS` about its closing axis (the same hold reached at a slant). A ``press`` or
+   ``push`` is done with the closed fingers' tips on the grasp point, without a grasp, the hand turned any
+   way about the approach and tilted about either axis across it;
 4. the hand follows ``path`` (the grasp point over the joint's range) through a compliant controller:
    PhysX drives on the six virtual joints with a stiffness, damping and a force / torque limit
    (:data:`ARM_FORCE`, :data:`ARM_TORQUE`: what a Panda arm exerts at its hand), their target moving along
@@ -78,6 +80,7 @@ MIN_PATH = 0.0005  # m: a shorter path is a point (turned in place, if the joint
 TURN_SPEED = 1.5  # rad/s turning in place
 TURN_LEAD = 0.35  # rad the turn may run ahead of the hand
 PRESS_ACTIONS = ("press", "push")  # pressed with the closed fingers' tips, no grasp
+TILTS = tuple(math.radians(a) for a in (35, -35, 65, -65))  # slants tried when a hold's straight way in is blocked
 FINGERTIP = 0.0095  # m from the TCP to the tips of the closed fingers (panda_v2_gripper.urdf)
 STALL_TIME = 1.0  # s without 2 mm of progress along the path ends an attempt
 SLIP_TIME = 0.25  # s without both fingers on the part before it counts as slipped
@@ -386,17 +389,33 @@ def box_extent(box, direction) -> float | None:
     return float(np.abs(r.T @ _unit(direction)) @ np.asarray(box["size"], float))
 
 
+def tilted(g: dict, axis, angle: float) -> dict:
+    """Grasp ``g`` with its approach turned by ``angle`` (rad) about ``axis`` (unit, perpendicular to the
+    approach), its closing axis turned with it: the same hold, reached from another side."""
+    r = _about(_unit(axis), angle)
+    return {**g, "approach": (r @ _unit(g["approach"])).tolist(), "closing": (r @ _unit(g["closing"])).tolist()}
+
+
 def grasp_candidates(target: dict) -> list[dict]:
     """The annotated grasps in order, each followed by itself turned a quarter about its approach when the
     handle's box fits between the open fingers that way (a knob or a short pull under a worktop, where the
-    hand's 0.2 m across the fingers does not fit the annotated way)."""
+    hand's 0.2 m across the fingers does not fit the annotated way); then each tilted by :data:`TILTS` about
+    its closing axis (the fingers still close across the same stretch: a hold whose straight way in meets
+    the hand's body on a neighbour, a shelf above or a stand below, taken at a slant), and for a press or
+    push, whose shut fingers need no closing axis, about the other axis across the approach as well."""
+    press = target.get("action") in PRESS_ACTIONS
     out = []
     for g in target["grasps"]:
         out.append(g)
         turned = np.cross(_unit(g["approach"]), _unit(g["closing"]))
         extent = box_extent(target.get("box"), turned)
-        if extent is not None and extent <= 2 * FINGER_OPEN - 0.005:
+        if press:  # shut fingers: the hand may be turned any way about its approach (its body flat)
+            out.append({**g, "closing": turned.tolist()})
+        elif extent is not None and extent <= 2 * FINGER_OPEN - 0.005:
             out.append({**g, "closing": turned.tolist(), "width": extent})
+    for g in target["grasps"]:
+        axes = [g["closing"], np.cross(_unit(g["approach"]), _unit(g["closing"]))] if press else [g["closing"]]
+        out += [tilted(g, axis, a) for a in TILTS for axis in axes]
     return out
 
 
@@ -585,7 +604,7 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
             q[i] = (opened or {}).get(name, ctx.loaded[i].upper)
     first = None
     grip = target.get("action") not in PRESS_ACTIONS
-    for g in grasp_candidates(target) if grip else target["grasps"]:  # the next only when one cannot be taken
+    for g in grasp_candidates(target):  # the next only when one cannot be taken
         ctx.reset(q)
         ctx.make_passive()
         run = _Run(ctx, gripper, target)
