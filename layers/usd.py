@@ -500,6 +500,7 @@ def _materials(obj, visuals) -> str:
             surf.attr("float", "inputs:roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
         if "metallic" not in maps:
             surf.attr("float", "inputs:metallic", float(look.metallic))
+        _open_pbr(mat, mpath, look, FAMILIES[look.family].ior)
         if not maps:
             continue
         reader = mat.child("def", "Shader", "TexCoordReader")
@@ -546,6 +547,23 @@ def _materials(obj, visuals) -> str:
             if look.opacity < 1.0:
                 mesh.attr("float[]", "primvars:displayOpacity", [float(look.opacity)])
     return _usda(root)
+
+
+def _open_pbr(mat: _Spec, mpath: str, look, ior: float) -> None:
+    """The look as an OpenPBR surface on the MaterialX render context (SimReady VM.PBR.001), beside the
+    UsdPreviewSurface: its mean colour, metalness and roughness as constants (the maps stay on the preview
+    surface), see-through looks as transmission through a thin wall of the family's index."""
+    mat.connect("token", "outputs:mtlx:surface", f"{mpath}/OpenPBR.outputs:out")
+    pbr = mat.child("def", "Shader", "OpenPBR")
+    pbr.attr("token", "info:id", '"ND_open_pbr_surface_surfaceshader"', uniform=True)
+    pbr.attr("color3f", "inputs:base_color", _display_colour(look))
+    pbr.attr("float", "inputs:base_metalness", float(look.metallic))
+    pbr.attr("float", "inputs:specular_roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
+    pbr.attr("float", "inputs:specular_ior", min(3.0, max(1.0, float(ior))))
+    if look.opacity < 1.0:
+        pbr.attr("float", "inputs:transmission_weight", 1.0 - float(look.opacity))
+        pbr.attr("bool", "inputs:geometry_thin_walled", True)
+    pbr.attr("token", "outputs:out")
 
 
 def _display_colour(look) -> tuple[float, ...]:

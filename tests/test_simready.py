@@ -189,6 +189,25 @@ def test_grasp_lines_cross_the_part_they_grasp(microwave):
         assert d.min() < 2e-3, (prim.GetPath(), d.min())
 
 
+def test_every_look_has_an_open_pbr_surface_and_a_wrong_id_is_caught(microwave, tmp_path):
+    """VM.PBR.001: an OpenPBR surface on the MaterialX context; usd-core knows no MaterialX node, so the
+    usd_validators check judges the id against MaterialX's library: a misspelt one still fails."""
+    from infmob_usd.validate.usd_check import usd_validators
+
+    stage = _stage(microwave)
+    looks = stage.GetPrimAtPath(f"/{microwave.name}/Looks").GetChildren()
+    for mat in looks:
+        source = UsdShade.Material(mat).GetSurfaceOutput("mtlx").GetConnectedSources()[0][0].source.GetPrim()
+        assert source.GetAttribute("info:id").Get() == "ND_open_pbr_surface_surfaceshader", mat.GetPath()
+    assert usd_validators(stage).ok
+    bad = shutil.copytree(microwave, tmp_path / microwave.name)
+    text = (bad / "payload" / "materials.usda").read_text()
+    (bad / "payload" / "materials.usda").write_text(text.replace("ND_open_pbr_surface_surfaceshader",
+                                                                 "ND_open_pbr_surface_surfaceshaderX", 1))
+    result = usd_validators(_stage(bad))
+    assert not result.ok and "surfaceshaderX" in result.detail
+
+
 def test_isaaclab_robot_doctor_finds_nothing_to_warn_of(microwave):
     """isaaclab-robot-doctor reads the joint velocity limit from ``physxJoint:maxJointVelocity``; the USD and
     the URDF give it every limit it looks for."""

@@ -6,8 +6,8 @@ One check, ``simready``, passes when all of these hold for the object's root lay
   ``simready-foundation-tier-core``): no failure of a requirement the profile makes mandatory, and these
   optional features pass too: multi-body physics ``FET_004_STANDARD``, SR.001 metadata ``FET_000_STANDARD``,
   display colour ``FET_010_STANDARD``, non-visual materials ``FET_007_STANDARD``, MuJoCo and Newton colliders
-  ``FET_003/004_MUJOCO``, ``FET_003/004_NEWTON``, and grasp vectors ``FET_005_STANDARD`` where the object has
-  a part to operate (a vase without a lid has none);
+  ``FET_003/004_MUJOCO``, ``FET_003/004_NEWTON``, OpenPBR surfaces ``FET_006_OPENPBR``, and grasp vectors
+  ``FET_005_STANDARD`` where the object has a part to operate (a vase without a lid has none);
 * the features ``FET_024_STANDARD`` (articulation) and ``FET_022_STANDARD`` (driven joints) of profile
   **Robot-Body 3.0.0** pass;
 * ``omniverse-asset-validator``'s default rules report no failure or error (warnings are allowed).
@@ -32,9 +32,9 @@ from .result import CheckResult
 
 PROP = ("Robotics-Prop", "4.0.0")
 # optional in the profile, required by us: multi-body physics; SR.001 metadata; display colour; non-visual
-# (lidar/radar) materials; MuJoCo's and Newton's collider schemas
+# (lidar/radar) materials; MuJoCo's and Newton's collider schemas; OpenPBR surfaces
 PROP_OPTIONAL = ("FET_004_STANDARD", "FET_000_STANDARD", "FET_010_STANDARD", "FET_007_STANDARD",
-                 "FET_003_MUJOCO", "FET_004_MUJOCO", "FET_003_NEWTON", "FET_004_NEWTON")
+                 "FET_003_MUJOCO", "FET_004_MUJOCO", "FET_003_NEWTON", "FET_004_NEWTON", "FET_006_OPENPBR")
 GRASP_FEATURE = "FET_005_STANDARD"  # grasp vectors: required of an object with a part to operate
 BODY = ("Robot-Body", "3.0.0")
 BODY_FEATURES = ("FET_024_STANDARD", "FET_022_STANDARD")  # articulation, driven joints
