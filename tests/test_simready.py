@@ -272,3 +272,19 @@ def test_simready_check_on_every_category(tmp_path):
         checks = {c["name"]: c for c in r["checks"]}
         assert all(c["ok"] for n, c in checks.items() if n != "simready"), r["object"]
         assert checks["simready"]["ok"], f"{r['object']}: {checks['simready']['detail']}"
+
+
+@needs_validators
+def test_a_folder_moved_out_of_its_category_folder_is_told_why_np005_fails(microwave, tmp_path):
+    """SimReady NP.005 reads the folder above the object as the asset's root: moved under another name the
+    check fails with one sentence saying what to do; in its category's folder it passes."""
+    from infmob_usd.validate.simready import check_simready
+
+    moved = shutil.copytree(microwave, tmp_path / "foo" / microwave.name)
+    (result,) = check_simready(moved)
+    assert not result.ok and result.detail.startswith("NP.005:") and "'foo'" in result.detail
+    assert "microwave/microwave_000000/" in result.detail
+    home = shutil.copytree(microwave, tmp_path / "microwave" / microwave.name)
+    (result,) = check_simready(home)
+    assert result.ok, result.detail
+

@@ -283,7 +283,15 @@ def check_simready(folder: str | Path) -> list[CheckResult]:
         r = run_simready_anywhere([str(folder / f"{folder.name}.usda")])[0]
     except Exception as e:  # a validator crash is a failed check, not a crashed run
         return [CheckResult("simready", False, f"validators raised {type(e).__name__}: {e}")]
-    return [_result(r)]
+    result = _result(r)
+    if any("NP.005" in m for m in r["prop"]):
+        root = folder.resolve().parent.name
+        result = CheckResult("simready", False, (
+            f"NP.005: SimReady takes the folder above {folder.name}/ as the asset's root and wants its name "
+            f"('{root}') inside the file name {folder.name}.usda: keep the object in a folder named after its "
+            f"category, as `infmob generate` writes it ({folder.name.rsplit('_', 1)[0]}/{folder.name}/); "
+            + result.detail))
+    return [result]
 
 
 def main(argv: list[str] | None = None) -> int:
