@@ -303,7 +303,7 @@ class WindowLayout(Layout):
         a 30-40 mm slide stroke)."""
         housing, slide, start, travel = P.trickle_vent(span, x, z, h)
         self.extend("frame", housing)
-        name = self.add(f"vent_{k}", "vent", [slide])
+        name = self.add(f"vent_{k}", "vent", slide)
         self.slide("frame", name, Frame.at(start, z=(0, 1, 0)), upper=travel)
 
     def shutters(self, node, made):

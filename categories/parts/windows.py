@@ -17,6 +17,7 @@ import trimesh
 from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.frames import Frame
+from infmob_usd.grasps import Grasp
 
 from . import hardware
 
@@ -72,7 +73,9 @@ between base and lever. Double-hung sashes carry one cam lock, two on units wide
 in the rail's plane)."""
 LOCKS_FROM = 0.9
 LEVER_TURN = np.pi / 2  # an espagnolette lever's quarter turn (Hoppe, Roto: 90 degrees to open)
-VENT = dict(length=0.3, height=0.02, depth=0.012, wall=0.002, slide=0.08, stroke=0.035)
+VENT = dict(length=0.3, height=0.02, depth=0.012, wall=0.002, slide=0.08, stroke=0.035,
+            grip=(0.016, 0.02, 0.01))  # the slide's thumb grip (chosen, no datasheet): width, how far it stands
+# out of the housing's face (far enough for fingertips to pinch it clear of the housing), height
 CLR_VENT = 0.0015  # the vent's slide in its housing
 
 
@@ -597,10 +600,10 @@ def free_spindle(spindle: g.Piece) -> tuple[g.Piece, tuple]:
     return g.cylinder([x0, y, z], [float(b[1][0]), y, z], SPINDLE[1], "handle", 16, name="handle"), (x0, y, z)
 
 
-def trickle_vent(span, x: float, z: float, h: float) -> tuple[list[g.Piece], g.Piece, tuple, float]:
+def trickle_vent(span, x: float, z: float, h: float) -> tuple[list[g.Piece], list[g.Piece], tuple, float]:
     """A trickle vent (``VENT``) on a head's room face ``x``, over the sash spanning ``span`` in y, centred at
     height ``z`` in a head ``h`` high: a housing with a slot and a shutter slide that covers or opens it.
-    Returns the housing, the slide, the slide's start and its travel."""
+    Returns the housing, the slide's pieces (with its thumb grip), the slide's start and its travel."""
     ln = min(VENT["length"], 0.8 * (span[1] - span[0]))
     yc = (span[0] + span[1]) / 2
     hh = min(VENT["height"], 0.8 * h)
@@ -616,4 +619,12 @@ def trickle_vent(span, x: float, z: float, h: float) -> tuple[list[g.Piece], g.P
     ys = y0 + CLR_VENT
     slide = g.box_between([x + 0.002, ys, z - hh / 2 + t + CLR_VENT],
                           [x + d - 0.001, ys + sw, z + hh / 2 - t - CLR_VENT], "handle", bevel=0.0008)
-    return housing, slide, (x + d / 2, ys, z), travel
+    # the slide is pushed by its thumb grip, standing out of the housing's face (the slide itself lies inside
+    # the housing: nothing else of it can be taken), pinched across from the front
+    gw, gp, gh = VENT["grip"]
+    yg, xf = ys + sw / 2, x + d + gp
+    grasp = Grasp.make((xf, yg, z), (-1, 0, 0), (0, 1, 0), gw, gp / 2, "line_fixed_handle",
+                       ((x + d - 0.001 + (gp + 0.001) / 2, yg, z), (gp + 0.001, gw, gh), np.eye(3)))
+    grip = g.box_between([x + d - 0.002, yg - gw / 2, z - gh / 2], [xf, yg + gw / 2, z + gh / 2], "handle",
+                         bevel=0.001).with_grasps(grasp)
+    return housing, [slide, grip], (x + d / 2, ys, z), travel
