@@ -68,6 +68,10 @@ def limit_to_ground(links, joints) -> list:
     moved_by = {j.name: descendants(joints, j.child) for j in joints if j.movable}
     extreme = _extreme_points(links, set().union(*moved_by.values()))
     origin = {link.name: np.asarray(link.origin, float) for link in links}
+    followers: dict[str, list] = {}
+    for f in joints:
+        if f.movable and getattr(f, "mimic", None):
+            followers.setdefault(f.mimic[0], []).append(f)
     out = []
     for j in joints:
         out.append(j)
@@ -85,6 +89,9 @@ def limit_to_ground(links, joints) -> list:
             if j.type == "prismatic":
                 return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
             return pivot_z + float((rel @ axis_angle(axis, value)[2]).min())
+
+        if j.type != "continuous" and j.name in followers:
+            lowest = _coupled_lowest(j, followers[j.name], moved_by, extreme, origin)
 
         if j.type == "continuous":
             for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
@@ -108,3 +115,33 @@ def limit_to_ground(links, joints) -> list:
             out[-1] = replace(out[-1], **{end: good})
     return out
 
+
+
+def _moved(j, value: float, pts: np.ndarray, origin: dict) -> np.ndarray:
+    """World points ``pts`` moved by joint ``j`` to ``value`` from rest."""
+    axis = np.asarray(j.axis, float)
+    if j.type == "prismatic":
+        return pts + value * axis / np.linalg.norm(axis)
+    pivot = origin[j.child]
+    return (pts - pivot) @ axis_angle(axis, value).T + pivot
+
+
+def _coupled_lowest(j, followers: list, moved_by: dict, extreme: dict, origin: dict):
+    """The lowest point as leader ``j`` moves to a value with its coupled ``followers`` (``q = ratio * value +
+    offset``) moving with it, a follower below ``j`` carried along (a dual-axis hinge's second axis): the
+    states a coupled pair takes together, not each joint's alone."""
+    carried = set().union(*(moved_by[f.name] for f in followers if f.child in moved_by[j.name]))
+    own = [extreme[n] + origin[n] for n in moved_by[j.name] if n in extreme and n not in carried]
+    own = np.vstack(own) if own else np.zeros((0, 3))
+    theirs = [(f, np.vstack([extreme[n] + origin[n] for n in moved_by[f.name] if n in extreme]
+                            or [np.zeros((0, 3))])) for f in followers]
+
+    def lowest(value: float) -> float:
+        z = [_moved(j, value, own, origin)[:, 2]]
+        for f, pts in theirs:
+            p = _moved(f, f.mimic[1] * value + f.mimic[2], pts, origin)
+            z.append((_moved(j, value, p, origin) if f.child in moved_by[j.name] else p)[:, 2])
+        z = np.concatenate(z)
+        return float(z.min()) if len(z) else np.inf
+
+    return lowest
