@@ -138,3 +138,14 @@ def test_a_coupled_second_axis_is_carried_into_the_ground_check():
     lead, lid = obj.joints
     assert lead.upper < math.pi / 2 + 0.1  # not the 180 degrees each allows alone
     assert _lowest(obj, {lead.name: lead.upper, lid.name: lid.upper}) >= -GROUND_TOL
+
+
+def test_a_turn_past_half_a_revolution_is_swept_for_the_ground():
+    """A lid allowed a full turn (a convertible laptop's) is back at rest at its limit, but on the way it swings
+    through the floor: its limit is where it first meets the ground, not the full turn."""
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("base", "base", [g.box_between([-0.1, -0.1, 0.0], [0.1, 0.1, 0.02], "m")])
+    bp.add("lid", "lid", [g.box_between([-0.1, -0.1, 0.024], [0.1, 0.1, 0.03], "m")])
+    bp.join(J.revolute("base", "lid", (-0.1, 0, 0.027), (0, -1, 0), 0.0, 2 * math.pi))
+    lid = _make(bp).joints[0]
+    assert math.pi < lid.upper < math.pi + math.asin(0.03 / 0.2) + 0.01

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -54,6 +55,27 @@ def _extreme_points(links, only: set | None = None) -> dict[str, np.ndarray]:
     return out
 
 
+HALF_TURN = math.pi
+"""rad: a turn of up to half a revolution from rest dips lowest at one of its ends or not at all in between
+for a part hanging from it in practice; a longer one (a convertible laptop's 360-degree lid) passes states
+below the ground that its limit's own does not show, so it is swept."""
+SWEEP_STEP = math.radians(5.0)
+"""rad: the step of that sweep (the bisection then finds the limit within it)."""
+
+
+def _first_below(lowest, limit: float, kind: str) -> tuple[float, float] | None:
+    """A clear value and the next one from rest towards ``limit`` whose state dips below the ground: rest and
+    the limit itself, or for a turn longer than :data:`HALF_TURN` the first of its :data:`SWEEP_STEP` samples
+    that does and the one before; None if none does."""
+    if kind == "revolute" and abs(limit) > HALF_TURN:
+        n = int(math.ceil(abs(limit) / SWEEP_STEP))
+        for k in range(1, n + 1):
+            if lowest(limit * k / n) < -GROUND_TOL:
+                return limit * (k - 1) / n, limit * k / n
+        return None
+    return (0.0, limit) if lowest(limit) < -GROUND_TOL else None
+
+
 def limit_to_ground(links, joints) -> list:
     """New joints whose limits keep every part above the ground at any single joint's limit.
 
@@ -101,9 +123,12 @@ def limit_to_ground(links, joints) -> list:
             continue
         for end in ("upper", "lower"):
             limit = getattr(j, end)
-            if limit == 0 or lowest(limit) >= -GROUND_TOL:
+            if limit == 0:
                 continue
-            good, bad = 0.0, limit
+            found = _first_below(lowest, limit, j.type)
+            if found is None:
+                continue
+            good, bad = found
             for _ in range(30):
                 mid = 0.5 * (good + bad)
                 if lowest(mid) >= -GROUND_TOL:
@@ -114,7 +139,6 @@ def limit_to_ground(links, joints) -> list:
                 raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without hitting the ground")
             out[-1] = replace(out[-1], **{end: good})
     return out
-
 
 
 def _moved(j, value: float, pts: np.ndarray, origin: dict) -> np.ndarray:
