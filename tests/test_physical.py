@@ -149,3 +149,23 @@ def test_a_turn_past_half_a_revolution_is_swept_for_the_ground():
     bp.join(J.revolute("base", "lid", (-0.1, 0, 0.027), (0, -1, 0), 0.0, 2 * math.pi))
     lid = _make(bp).joints[0]
     assert math.pi < lid.upper < math.pi + math.asin(0.03 / 0.2) + 0.01
+
+
+def test_a_holding_hinge_has_the_friction_to_hold_its_load_and_the_effort_to_move_it():
+    """A lid on a ``holding`` (friction) hinge: its friction is 1.3 x the largest gravity torque of the lid about
+    the hinge, and its effort beats that friction; on a plain ``hinge`` it is the role's 0.5 N m."""
+    from infmob_usd.effort import HOLD_MARGIN
+
+    def lid(role):
+        bp = Blueprint("t", materials={"m": "painted"})
+        bp.add("base", "base", [g.box_between([-0.2, -0.2, 0.0], [0.2, 0.2, 0.02], "m")])
+        bp.add("lid", "lid", [g.box_between([-0.2, -0.2, 0.021], [0.2, 0.2, 0.041], "m")])
+        bp.join(J.revolute("base", "lid", (-0.2, 0, 0.031), (0, -1, 0), 0.0, math.radians(135), role))
+        obj = _make(bp)
+        return obj.joints[0], next(link for link in obj.links if link.name == "lid")
+
+    j, link = lid("holding")
+    load = link.mass * 9.81 * 0.2  # the centre of mass 0.2 m from the axis, level with it
+    assert j.friction == pytest.approx(HOLD_MARGIN * load, rel=0.02)
+    assert j.effort > j.friction
+    assert lid("hinge")[0].friction == DYNAMICS["hinge"].friction < j.friction
