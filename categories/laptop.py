@@ -2,14 +2,14 @@
 
 X is the front (the trackpad's side), Y across, Z up; the laptop stands closed on its rubber feet. The lid
 turns about the hinge line along the base's back edge (revolute about -Y: its front edge rises) from closed
-to its stop: a ``clamshell``'s friction hinge stops at 120-180 degrees, a ``convertible``'s two knuckles
-turn it 360 degrees, under the base (standing on a table the ground stops it near 180; real convertibles'
-hinges are dual-axis, geared 1:1, which only matters once the lid passes 180). Like a real friction hinge
-the lid stays where it is put (role ``hinge``: its joint friction holds the lid's weight at a working angle). The trackpad clicks down (a press, role
-``button``); the keys are drawn one by one, and with ``has_keys`` the space bar, the power key and the
-arrows (``moving_keys`` of them, in that order) press down on return springs (role ``button``), the others
-caps fixed to the key bed. A ``numpad`` adds a numeric pad right of the keys on a wider laptop.
-Parts: ``categories/parts/laptops.py`` (sizes from named products, keyboard layout, lid and hinges).
+to its stop: a ``clamshell``'s hinge stops at 120-180 degrees, a ``convertible``'s two knuckles turn it
+360 degrees, under the base (standing on a table the ground stops it near 180; real convertibles' hinges are
+dual-axis, geared 1:1, which only matters once the lid passes 180). Like a real friction hinge the lid stays
+where it is put (role ``holding``: the core sizes its friction to hold the lid at any angle). The trackpad
+clicks down (a press, role ``button``); the keys are drawn one by one, and with ``has_keys`` the space bar,
+the power key and the arrows (``moving_keys`` of them, in that order) press down on return springs (role
+``button``), the others caps fixed to the key bed. A ``numpad`` adds a numeric pad right of the keys on a
+wider laptop. Parts: ``categories/parts/laptops.py`` (sizes from named products, keyboard layout, lid, hinges).
 """
 
 from __future__ import annotations
@@ -46,18 +46,19 @@ PARAMS = (
     Int("moving_keys", "how many keys move: space, power, left, right, up, down in that order", "", 1,
         len(L.MOVING)),
     Choice("aspect", "display aspect ratio", choices=tuple(L.DISPLAY_ASPECT), weights=(0.55, 0.45)),
-    Choice("finish", "the shell's finish", choices=("silver", "space_grey", "black", "white"),
-           weights=(0.35, 0.25, 0.3, 0.1)),
+    Choice("finish", "the shell's finish", choices=("silver", "space_grey", "black", "white", "blue"),
+           weights=(0.35, 0.2, 0.25, 0.1, 0.1)),
 )
 
 MATERIALS = {
     "body": ("finish", {"silver": "brushed_metal", "space_grey": "painted:charcoal|graphite|grey",
-                        "black": "plastic:black|dark_grey", "white": "plastic:white|light_grey"}),
-    "bed": Same("body"), "trackpad": Same("body"),
+                        "black": "plastic:black|dark_grey", "white": "plastic:white|light_grey",
+                        "blue": "painted:navy"}),  # Surface Laptop, XPS "frost" / Spectre "nightfall" colours
+    "trackpad": Same("body"),
     "keys": "plastic:black|dark_grey", "bezel": "plastic:black", "display": "screen", "feet": "rubber",
     "logo": "chrome", "ports": "plastic:black",
 }
-SUBSTRATES = {"body": L.LAPTOP_DENSITY, "bed": L.LAPTOP_DENSITY, "trackpad": 2500.0}  # a glass click pad
+SUBSTRATES = {"body": L.LAPTOP_DENSITY, "trackpad": 2500.0}  # a glass click pad
 SLOTS = {k: k for k in ("body", "bezel", "display", "logo")}
 
 
@@ -70,7 +71,8 @@ class LaptopLayout(Layout):
         keys_node = node.one("keys")
         movers = L.moving(keys, len(keys_node.of("key"))) if keys_node else []
         pad = L.trackpad(b, kb_front, y_mid)
-        self.add("base", "base", L.base(b, "body", "feet") + L.ports(b, "ports") + [L.bed(b, keys, pad, movers, "bed")])
+        deck = L.bed(b, keys, pad, movers, "body")
+        self.add("base", "base", L.base(b, "body", "feet") + L.ports(b, "ports") + [deck])
         self.grow(node.one("keyboard"), b=b, keys=[k for k in keys if k not in movers and not k.pad])
         if node.one("numpad"):
             self.grow(node.one("numpad"), b=b, keys=[k for k in keys if k.pad])
@@ -104,7 +106,8 @@ class LaptopLayout(Layout):
         self.grow(node.one("lid"), b=b)
         knuckles, axis = L.hinge(b, "body", node.kind == "convertible")
         self.extend("lid", knuckles)
-        self.hinge("base", "lid", axis, upper=self.p["opens"] if node.kind == "clamshell" else L.CONVERTIBLE_OPENS)
+        self.hinge("base", "lid", axis, upper=self.p["opens"] if node.kind == "clamshell" else L.CONVERTIBLE_OPENS,
+                   role="holding")
 
     convertible = clamshell
 
