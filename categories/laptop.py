@@ -76,10 +76,10 @@ class LaptopLayout(Layout):
         self.grow(node.one("keyboard"), b=b, keys=[k for k in keys if k not in movers and not k.pad])
         if node.one("numpad"):
             self.grow(node.one("numpad"), b=b, keys=[k for k in keys if k.pad])
+        self.grow(node.one(node.choice), b=b)  # the lid first: the pad and the keys need it open
         self.grow(node.one("trackpad"), pad=pad, b=b)
         if keys_node:
             self.grow(keys_node, b=b, movers=movers)
-        self.grow(node.one(node.choice), b=b)
 
     def keyboard(self, node, b, keys):
         self.extend("base", L.fixed_caps(b, keys, "keys"))
@@ -92,12 +92,14 @@ class LaptopLayout(Layout):
 
     def key(self, node, key, b, name):
         placed = self.place(L.key_part(key, b.Tb + L.BED, "keys"), name)
-        self.slide("base", placed.root, placed.anchor("press"), upper=L.KEY_TRAVEL, role="button")
+        # under the closed lid: pressed once the lid is open
+        self.slide("base", placed.root, placed.anchor("press"), upper=L.KEY_TRAVEL, role="button", requires_open="lid")
 
     def trackpad(self, node, pad, b):
         placed = self.place(L.key_part(pad, b.Tb + L.BED - L.TRACKPAD["thick"] + L.TRACKPAD["proud"], "trackpad",
                                        L.TRACKPAD["thick"], "trackpad"), "trackpad")
-        self.slide("base", placed.root, placed.anchor("press"), upper=L.TRACKPAD["travel"], role="button")
+        self.slide("base", placed.root, placed.anchor("press"), upper=L.TRACKPAD["travel"], role="button",
+                   requires_open="lid")
 
     def lid(self, node, b):
         self.add("lid", "lid", L.lid(b, self.p["aspect"], self.p["bezel"], SLOTS))

@@ -45,6 +45,9 @@ LAPTOP_DENSITY = 1400.0
 """kg/m^3 a laptop's base and lid weigh as solids: its shell, battery, board and panel over its volume,
 1.0-1.7 t/m^3 from the products above (MacBook Air 13: ~0.83 kg base over 304 x 215 x 7.5 mm, 1.7;
 Inspiron 15: ~1.1 kg over 358 x 236 x 13 mm, 1.0; XPS 15: ~1.25 kg over 345 x 230 x 12 mm, 1.3)."""
+LID_AREAL = 6.5
+"""kg/m^2 a lid weighs over its area (display panel, cover, back): MacBook Air 13 ~0.41 kg over 304 x 215 mm, 6.3;
+HP 17 ~0.7 kg over 398 x 260 mm, 6.8 (estimated as a third of the spec-sheet masses, not weighed)."""
 CLAMSHELL_OPENS = (math.radians(120), math.radians(180))
 """A clamshell lid's stop: ~120-135 degrees (MacBook, XPS) to 180 (ThinkPad: "lay-flat" hinges)."""
 CONVERTIBLE_OPENS = 2 * math.pi
@@ -82,6 +85,9 @@ ROW_GAP = 0.1  # pitches between rows (a key is a pitch wide less the cap gap; r
 TRACKPAD = dict(depth=(0.065, 0.08), aspect=1.55, front=0.012, thick=0.0012, travel=0.001, proud=0.0006)
 """A mechanical click pad: 65-80 mm deep, ~1.55 x as wide (MacBook Air 13 ~121 x 79, XPS 13 112 x 70 mm),
 12 mm from the front at least, clicking ~1 mm down (a diving-board click: modelled as a press)."""
+LIP = dict(width=0.04, reach=0.01, grip=0.005)
+"""The lip on the closed lid's front edge that a thumb lifts it by (ThinkPad X1, Surface Laptop, HP Pavilion lids):
+40 mm wide, 10 mm proud of the base; a gripper pinches 5 mm of it across its thickness."""
 SEAM = 0.0008  # m, the closed lid's display clears the keycaps by this
 BEZEL = (0.004, 0.008)  # m, side and top bezel (XPS 13 ~4 mm, budget 15-inch ~8 mm)
 CHIN = 0.012  # m, the bezel above the hinge at least
@@ -286,15 +292,23 @@ def lid(b: Laptop, aspect: str, bezel: float, mats: dict[str, str]) -> list[Piec
     """The closed lid: a rounded slab whose underside carries the bezel, the display and the webcam, a logo
     on its back."""
     z0, Tl = b.lid_z, b.Tl
-    shell = _solid(slab(rounded(b.W, b.D, b.r), z0 + 0.0004, z0 + Tl, min(0.0012, 0.2 * Tl), mats["body"]))
+    # weighed by its area (its panel and cover), not its volume: a shell that weighs LID_AREAL over its two faces
+    shell = slab(rounded(b.W, b.D, b.r), z0 + 0.0004, z0 + Tl, min(0.0012, 0.2 * Tl), mats["body"]).replace(
+        wall=LID_AREAL / (2 * LAPTOP_DENSITY))
     frame = _solid(slab(rounded(b.W - 0.002, b.D - 0.002, max(b.r - 0.001, 0.001)), z0 + 0.0001, z0 + 0.0006,
                         0.0001, mats["bezel"]))
     xd0, xd1, half = display_area(b, aspect, bezel)
     screen = g.box_between((xd0, -half, z0), (xd1, half, z0 + 0.0004), mats["display"])
     xc = (xd1 + b.D / 2) / 2
-    cam = g.cylinder((xc, 0, z0 - 0.0001), (xc, 0, z0 + 0.0003), min(0.0015, 0.3 * (b.D / 2 - xd1)), mats["display"])
+    cam = g.cylinder((xc, 0, z0 - 0.0001), (xc, 0, z0 + 0.0003), min(0.0015, 0.3 * (b.D / 2 - xd1)),
+                     mats["display"])
+    lip = (b.D / 2 - 0.003, -LIP["width"] / 2, z0 + 0.0004), (b.D / 2 + LIP["reach"], LIP["width"] / 2, z0 + Tl)
+    tab = _solid(g.box_between(*lip, mats["body"], bevel=0.35 * (Tl - 0.0004)))
+    # fingers pinch the lip across its thickness from the front, short of the base's front face
+    tab = tab.with_grasps(Grasp.make((lip[1][0], 0.0, (lip[0][2] + lip[1][2]) / 2), (-1, 0, 0), (0, 0, 1),
+                                     lip[1][2] - lip[0][2], LIP["grip"]))
     logo = g.cylinder((0.0, 0.0, z0 + Tl - 0.0002), (0.0, 0.0, z0 + Tl + 0.0002), 0.08 * b.D / 2, mats["logo"])
-    return [shell, frame, screen, Piece(cam.vertices, cam.faces, cam.material),
+    return [shell, tab, frame, screen, Piece(cam.vertices, cam.faces, cam.material),
             Piece(logo.vertices, logo.faces, logo.material)]
 
 
