@@ -85,9 +85,9 @@ ROW_GAP = 0.1  # pitches between rows (a key is a pitch wide less the cap gap; r
 TRACKPAD = dict(depth=(0.065, 0.08), aspect=1.55, front=0.012, thick=0.0012, travel=0.001, proud=0.0006)
 """A mechanical click pad: 65-80 mm deep, ~1.55 x as wide (MacBook Air 13 ~121 x 79, XPS 13 112 x 70 mm),
 12 mm from the front at least, clicking ~1 mm down (a diving-board click: modelled as a press)."""
-LIP = dict(width=0.04, reach=0.01, grip=0.005)
+LIP = dict(width=0.04, reach=0.004, grip=0.003)
 """The lip on the closed lid's front edge that a thumb lifts it by (ThinkPad X1, Surface Laptop, HP Pavilion lids):
-40 mm wide, 10 mm proud of the base; a gripper pinches 5 mm of it across its thickness."""
+40 mm wide, 4 mm proud of the base; a gripper pinches 3 mm of it across its thickness."""
 SEAM = 0.0008  # m, the closed lid's display clears the keycaps by this
 BEZEL = (0.004, 0.008)  # m, side and top bezel (XPS 13 ~4 mm, budget 15-inch ~8 mm)
 CHIN = 0.012  # m, the bezel above the hinge at least
