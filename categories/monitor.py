@@ -3,9 +3,9 @@
 X is the front (the screen faces +X), Y across, Z up. The head (panel, rear housing, VESA plate) tilts on a
 barrel in a fork behind it (revolute about -Y: the top goes back, 0-21 degrees), held where it is put (role
 ``holding``, as every positioning joint here: a friction hinge or a counterbalanced slide). Carriers: a
-``fixed_stand`` (a base and a neck: tilt only), an ``adjustable_stand`` (a column on the base, optionally
+``fixed_stand`` (a base and a neck: tilt, on some a swivel), an ``adjustable_stand`` (a column on the base, optionally
 swivelling on it, +-45 degrees; a carriage sliding up its front face 100-130 mm; optionally a portrait
-``pivot`` of the head, 90 degrees, once the carriage is raised), an ``arm`` (a post on a desk plate, 1-2 links
+``pivot`` of the head, 90 degrees, once the carriage is raised), an ``arm`` (a post on a desk plate, 1-3 links
 swinging about vertical axes, optionally a portrait pivot). Optional on-screen-display keys on the panel's right
 edge press into it (role ``button``). The arm's desk clamp under the desk top is not drawn: the object
 stands on the desk top (z = 0) on the clamp's plate.
@@ -23,11 +23,11 @@ from .parts import monitors as M
 GRAMMAR = Grammar("monitor", {
     "monitor": Node(label="screen", optional={"buttons": 0.6},
                     one_of={"fixed_stand": 0.3, "adjustable_stand": 0.45, "arm": 0.25}, choice="stand_style"),
-    "fixed_stand": Node(label="stand"),
+    "fixed_stand": Node(label="stand", optional={"swivel": 0.35}),
     "adjustable_stand": Node(label="stand", required=("carriage",), optional={"swivel": 0.8, "pivot": 0.6}),
     "carriage": Node(label="carriage"),
     "swivel": Node(label="stand"),
-    "arm": Node(label="stand", repeat={"arm_link": (1, 2)}, optional={"pivot": 0.6}),
+    "arm": Node(label="stand", repeat={"arm_link": (1, 3)}, optional={"pivot": 0.6}),
     "arm_link": Node(label="arm"),
     "pivot": Node(label="head"),
     "buttons": Node(repeat={"button": "button_count"}),
@@ -43,7 +43,8 @@ PARAMS = (
     Float("housing", "depth of the rear housing behind the panel", "m", *M.HOUSING),
     Float("bezel", "the display's border", "m", 0.006, 0.02),
     Float("clearance", "the screen's bottom over the base at its lowest", "m", 0.05, 0.1),
-    Float("travel", "a height-adjustable stand's travel", "m", *M.HEIGHT_TRAVEL),
+    Float("travel", "a height-adjustable stand's travel (less on a short screen: its column stays hidden)", "m",
+          *M.HEIGHT_TRAVEL),
     Float("link", "an arm link's length", "m", *M.ARM["link"]),
     Float("base_width", "base plate width", "m", *M.BASE["width"]),
     Float("base_depth", "base plate depth", "m", *M.BASE["depth"]),
@@ -83,13 +84,15 @@ class MonitorLayout(Layout):
 
     def fixed_stand(self, node, h):
         p = self.p
-        self.add("stand", "stand", [M.base(p["base_shape"], h, p["base_width"], p["base_depth"], p["base_t"]),
-                                    M.neck(h, p["base_t"], "stand")] + M.fork(h, "stand"))
-        return "stand"
+        neck = [M.neck(h, p["base_t"], "stand")] + M.fork(h, "stand")
+        plate = M.base(p["base_shape"], h, p["base_width"], p["base_depth"], p["base_t"])
+        self.add("stand", "stand", [plate] + ([] if node.one("swivel") else neck))
+        return self.grow(node.one("swivel"), h=h, col=neck) if node.one("swivel") else "stand"
 
     def adjustable_stand(self, node, h):
         p = self.p
-        col, carriage, slide = M.column(h, p["base_t"], p["travel"], "stand")
+        self.travel = M.travel(h, p["travel"])
+        col, carriage, slide = M.column(h, p["base_t"], self.travel, "stand")
         plate = M.base(p["base_shape"], h, p["base_width"], p["base_depth"], p["base_t"])
         self.add("stand", "stand", [plate] + ([] if node.one("swivel") else col))
         holder = self.grow(node.one("swivel"), h=h, col=col) if node.one("swivel") else "stand"
@@ -103,7 +106,7 @@ class MonitorLayout(Layout):
 
     def carriage(self, node, h, parent, pieces, slide):
         self.add("carriage", "carriage", pieces)
-        self.slide(parent, "carriage", slide, upper=self.p["travel"], role="holding")
+        self.slide(parent, "carriage", slide, upper=self.travel, role="holding")
         return "carriage"
 
     def arm(self, node, h):

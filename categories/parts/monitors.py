@@ -44,7 +44,7 @@ COLUMN = (0.06, 0.035)  # m, a height-adjustable column's width and depth (P2422
 CARRIAGE = (0.07, 0.11)  # m, the carriage's width and height on the column
 ARM = dict(post=(0.016, 0.34), link=(0.2, 0.3), beam=(0.045, 0.03), plate=(0.12, 0.1, 0.01), swing=(
     math.radians(90), math.radians(150)))
-"""A desk-mounted gas-spring arm (Ergotron LX: 340 mm pole, 2 links reaching 640 mm; AmazonBasics single arm):
+"""A desk-mounted arm (Ergotron LX: 340 mm pole, 2 links reaching 640 mm; 1-3 links across makers):
 post radius and height, link length range, beam height and width, the desk plate (x, y, thickness), the
 swing of the first link and of the elbow (+- rad)."""
 
@@ -139,6 +139,15 @@ def neck(h: Head, t: float, material: str) -> Piece:
     return g.box_between((x1 - 0.03, -0.025, t - 0.001), (x1, 0.025, fork_bottom(h) + 0.001), material, bevel=0.004)
 
 
+def travel(h: Head, wanted: float) -> float:
+    """A height-adjustable stand's travel: as wanted, but its column (the carriage's top and the travel) stays
+    hidden behind the screen at rest, as real columns do."""
+    return min(wanted, h.zc + h.H / 2 - (h.zp + 1.2 * BARREL[0]) - 0.005 - COLUMN_BELOW_TOP)
+
+
+COLUMN_BELOW_TOP = 0.01  # m, a column's top under the screen's top at rest
+
+
 def column(h: Head, t: float, travel: float, material: str) -> tuple[list[Piece], list[Piece], Frame]:
     """A height-adjustable stand: the column (on the base), the carriage that slides up its front face carrying
     the tilt fork, and the slide (+z, rest at the bottom)."""
@@ -146,7 +155,7 @@ def column(h: Head, t: float, travel: float, material: str) -> tuple[list[Piece]
     plate = 0.008  # the carriage plate, between the column's face and the fork's back plate
     xf = h.xp - 1.3 * BARREL[0] - S.FORK_T - plate - GAP  # the column's front face
     zc0, zc1 = fork_bottom(h) - CARRIAGE[1] + 0.02, h.zp + 1.2 * BARREL[0]
-    col = g.box_between((xf - cd, -cw / 2, t - 0.001), (xf, cw / 2, zc1 + travel + 0.02), material, bevel=0.006)
+    col = g.box_between((xf - cd, -cw / 2, t - 0.001), (xf, cw / 2, zc1 + travel + 0.005), material, bevel=0.006)
     carriage = [g.box_between((xf + GAP, -CARRIAGE[0] / 2, zc0), (xf + GAP + plate + 0.001, CARRIAGE[0] / 2, zc1),
                               material)]
     return [col], carriage + fork(h, material), Frame.at((xf, 0.0, zc0), z=(0, 0, 1))
