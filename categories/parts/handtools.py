@@ -1,0 +1,236 @@
+"""Hand tools that lie flat on a table: scissors (and the sweeps their blades and handles are made of).
+
+Local frame: the tool lies on z = 0 with its pivot screw on the z axis, its blades (or jaws) along +x and
+its handles along -x. A half is a flat steel plate (blade, boss and tang) and a handle: moulded plastic
+shanks and finger loops on office, kitchen and pinking shears, forged steel rings on embroidery scissors.
+
+Rest pose: flat on the side, the fixed half (``body``) lying on the table, the moving half stacked on it at
+the pivot screw with its handle beside the other's, on the table too (as scissors lie on a desk); the moving
+half turns about the screw (+z) to open: its blade swings to +y, its loop away from the other loop.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import IDENTITY
+
+BLADE_GAP = 0.0003  # m, between the stacked blades: the pivot screw holds them in light contact (0.1-0.3 mm play)
+SEP = 0.0025  # m, between the two handles where they lie side by side, closed
+TIP = 0.0008  # m, width left at a pointed tip (a sharpened point is ~0.5-1 mm across at 1 mm from its end)
+
+
+# -- sweeps -------------------------------------------------------------------------------------------
+def rrect(width: float, height: float, radius: float, z0: float = 0.0, n: int = 3) -> np.ndarray:
+    """``(4 (n + 1), 2)`` rounded rectangle in (across, z), counter-clockwise, centred across, from ``z0``."""
+    r = min(radius, 0.49 * width, 0.49 * height)
+    out = []
+    for cu, cz, a0 in ((width / 2 - r, height - r, 0.0), (-width / 2 + r, height - r, 90.0),
+                       (-width / 2 + r, r, 180.0), (width / 2 - r, r, 270.0)):
+        for a in np.radians(a0 + np.linspace(0.0, 90.0, n + 1)):
+            out.append((cu + r * math.cos(a), z0 + cz + r * math.sin(a)))
+    return np.array(out)
+
+
+def sweep(path, sections, material: str, closed: bool = False, group: int = 1, wall: float = 0.0,
+          name: str = "") -> g.Piece:
+    """A solid swept along the plan polyline ``path`` (``(k, 2)``, on z = 0): at each point the convex
+    cross-section ``sections[i]`` (``(m, 2)``: across (along the path's left normal), z) stands square to
+    the path. Open sweeps are capped; ``closed`` joins the last section to the first (a ring). Every
+    ``group`` segments make one convex collision piece (the hull of their sections)."""
+    p = np.asarray(path, float)
+    s = np.asarray(sections, float)
+    if s.ndim == 2:
+        s = np.repeat(s[None], len(p), axis=0)
+    k, m = s.shape[:2]
+    d = (np.roll(p, -1, 0) - np.roll(p, 1, 0)) if closed else np.gradient(p, axis=0)
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    left = np.c_[-d[:, 1], d[:, 0]]
+    rings = np.concatenate([p[:, None, :] + s[:, :, :1] * left[:, None, :], s[:, :, 1:]], axis=2)
+    verts = rings.reshape(-1, 3)
+    faces = []
+    for a in range(k if closed else k - 1):
+        b = (a + 1) % k
+        for i in range(m):
+            j = (i + 1) % m
+            faces += [(a * m + i, a * m + j, b * m + j), (a * m + i, b * m + j, b * m + i)]
+    if not closed:
+        c0, c1 = k * m, k * m + 1
+        verts = np.vstack([verts, rings[0].mean(0), rings[-1].mean(0)])
+        last = (k - 1) * m
+        for i in range(m):
+            j = (i + 1) % m
+            faces += [(c0, j, i), (c1, last + i, last + j)]
+    f = np.asarray(faces, np.int64)
+    a, b, c = (verts[f[:, i]] for i in range(3))
+    if np.einsum("ij,ij->i", a, np.cross(b, c)).sum() < 0:
+        f = f[:, ::-1].copy()
+    ends = list(range(0, k - 1, group)) if not closed else list(range(0, k, group))
+    convex = [np.vstack([rings[(i + q) % k] for q in range(min(group, (k - 1 - i) if not closed else group) + 1)])
+              for i in ends]
+    return g.Piece(verts, f, material, convex, name, wall=wall)
+
+
+def hull(points, material: str, name: str = "") -> g.Piece:
+    """The convex hull of ``points`` as a solid piece (its own collision piece)."""
+    v, f = g.hull_arrays(np.asarray(points, float))
+    return g.Piece(v, f, material, [v], name, wall=0.0)
+
+
+def disc_points(center, radius: float, z0: float, z1: float, n: int = 16) -> np.ndarray:
+    th = 2 * math.pi * np.arange(n) / n
+    xy = np.c_[center[0] + radius * np.cos(th), center[1] + radius * np.sin(th)]
+    return np.vstack([np.c_[xy, np.full(n, z0)], np.c_[xy, np.full(n, z1)]])
+
+
+def ellipse(center, ax: float, ay: float, n: int = 24) -> np.ndarray:
+    """``(n, 2)`` points of an ellipse, counter-clockwise from +x."""
+    th = 2 * math.pi * np.arange(n) / n
+    return np.c_[center[0] + ax * np.cos(th), center[1] + ay * np.sin(th)]
+
+
+# -- scissors -----------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class ScissorDesign:
+    """One kind of scissors, from real products (sizes in metres)."""
+
+    length: tuple[float, float]  # overall, tip to the back of the loops
+    blade: float  # blade length (pivot to tip) as a share of the overall length
+    width: float  # width of one blade at the pivot
+    thick: float  # blade plate thickness
+    thumb: tuple[float, float]  # thumb loop opening (x, y)
+    finger: tuple[float, float]  # finger loop opening (x, y)
+    ring: tuple[float, float]  # loop wall: width in plan, height
+    handle: str  # "plastic" moulded handles or "metal" forged rings
+    tip: str  # "pointed" or "round"
+    teeth: float = 0.0  # pinking teeth pitch (0: a plain edge)
+    opener: bool = False  # a bottle-opener hook between the handles
+    opens: float = 60.0  # degrees the blades open before a loop meets the other half's tang
+
+
+SCISSORS = {
+    # Fiskars 8" All-Purpose (203 mm, ~70 g), Westcott 7-9" office scissors (178-229 mm): blades 85-100 mm, 15-17 mm
+    # wide at the pivot, 2 mm stainless plate; a round thumb loop ~22 mm and a 2-3 finger loop ~45 x 20 mm
+    "office": ScissorDesign((0.178, 0.229), 0.45, 0.016, 0.002, (0.022, 0.018), (0.046, 0.020), (0.0055, 0.0075),
+                            "plastic", "pointed"),
+    # KitchenAid all-purpose shears (221 mm, ~95 g), Wüsthof 5558 (205 mm): 2.5 mm blades 20 mm wide, two large
+    # symmetric loops, a bottle opener and nutcracker notch moulded between the handles
+    "kitchen": ScissorDesign((0.200, 0.225), 0.42, 0.020, 0.0025, (0.040, 0.022), (0.046, 0.022), (0.006, 0.008),
+                             "plastic", "round", opener=True, opens=55.0),
+    # Fiskars 9" pinking shears (229 mm, ~170 g): 4 mm blades 20 mm wide cutting a 5 mm zigzag
+    "pinking": ScissorDesign((0.215, 0.235), 0.42, 0.020, 0.004, (0.024, 0.020), (0.050, 0.022), (0.0065, 0.009),
+                             "plastic", "round", teeth=0.005, opens=50.0),
+    # Gingher 4" embroidery scissors (102 mm, ~20 g), Fiskars 4": 1.5 mm blades 8 mm wide, 40 mm long, round 14 mm
+    # forged rings
+    "embroidery": ScissorDesign((0.090, 0.115), 0.36, 0.0085, 0.0015, (0.015, 0.014), (0.016, 0.014),
+                                (0.003, 0.0028), "metal", "pointed", opens=50.0),
+}
+"""Designs -> sizes (retail listings and maker spec sheets named beside each)."""
+
+
+@dataclass(frozen=True)
+class Scissors:
+    design: ScissorDesign
+    length: float
+    blade: float  # pivot to tip
+    width: float
+
+    @property
+    def layer(self) -> float:
+        """z of the moving half's blade underside."""
+        return self.design.thick + BLADE_GAP
+
+
+def scissors(design: str, size: float, blade_share: float) -> Scissors:
+    """Sizes of one pair: ``size`` (0-1) within the design's length range; ``blade_share`` (+-) moves the
+    blade's share of the length."""
+    d = SCISSORS[design]
+    length = d.length[0] + size * (d.length[1] - d.length[0])
+    return Scissors(d, length, length * (d.blade + blade_share), d.width * (0.9 + 0.2 * size))
+
+
+def _blade_sections(s: Scissors, side: int, z0: float) -> tuple[np.ndarray, np.ndarray]:
+    """Plan path and cross-sections of one blade (x from the pivot to the tip); ``side`` +1: the lower
+    blade, its edge toward +y and its flat inner face on top; -1: the upper one, mirrored."""
+    d, t = s.design, s.design.thick
+    if d.teeth:
+        xs = np.arange(0.0, s.blade, d.teeth / 2)
+    else:
+        xs = np.linspace(0.0, s.blade, 16)
+    xs = np.append(xs[xs < s.blade - 1e-4], s.blade)
+    u = xs / s.blade
+    if d.tip == "pointed":
+        width = TIP + (s.width - TIP) * (1 - u) ** 0.9
+    else:
+        width = np.maximum(TIP, s.width * np.sqrt(np.clip(1 - u ** 2.2, 0, 1)) * (1 - 0.35 * u))
+    edge = 0.32 * s.width * (1 - u)  # the edges cross at the pivot and meet at the tips, closed
+    if d.teeth:
+        edge = edge - (np.arange(len(xs)) % 2) * 0.35 * d.teeth * (u < 0.97)
+        width = np.maximum(width, 0.8 * d.teeth)
+    secs = []
+    for e, w in zip(edge, width, strict=True):
+        bev = min(0.0015, 0.4 * w)
+        poly = [(e - w, 0.0), (e - bev, 0.0), (e, 0.5 * t), (e, t), (e - w, t)]
+        secs.append([(side * a, z0 + (b if side > 0 else t - b)) for a, b in poly])
+    # the upper blade mirrored (two reflections keep the winding)
+    return np.c_[xs, np.zeros_like(xs)], np.asarray(secs)
+
+
+def _handle_frame(s: Scissors, side: int, loop: tuple[float, float]) -> tuple[np.ndarray, float, float]:
+    """The loop's centre (plan), its centreline's semi-axes."""
+    d = s.design
+    ax, ay = loop[0] / 2 + d.ring[0] / 2, loop[1] / 2 + d.ring[0] / 2
+    xc = -(s.length - s.blade - ax - d.ring[0] / 2)
+    yc = SEP / 2 + ay + d.ring[0] / 2
+    return np.array([xc, side * yc]), ax, ay
+
+
+def scissor_half(s: Scissors, side: int, metal: str, grip: str, screw: str) -> Assembly:
+    """One half: the lower (``side`` +1, the body) or the upper (-1) blade with its handle and loop."""
+    d, t = s.design, s.design.thick
+    z0 = 0.0 if side > 0 else s.layer
+    path, secs = _blade_sections(s, side, z0)
+    pieces = [sweep(path, secs, metal, group=max(1, len(path) // 6), name="blade")]
+    boss = 0.5 * s.width
+    loop = d.thumb if side > 0 else d.finger
+    centre, ax, ay = _handle_frame(s, side, loop)
+    front = centre + np.array([ax, 0.0])
+    tang = min(0.45 * abs(front[0]), 0.022 if d.handle == "plastic" else 0.6 * abs(front[0]))
+    grip_w = 0.8 * d.ring[0] + 0.0035 if d.handle == "plastic" else 1.4 * d.ring[0]
+    reach = (boss * 0.6 + grip_w / 2 + 0.0025) / 2
+    p1 = np.array([-tang, side * max(reach, 0.35 * abs(centre[1]))])
+    pieces.append(hull(np.vstack([disc_points((0, 0), boss, z0, z0 + t), disc_points(p1, 0.6 * boss, z0, z0 + t, 12)]),
+                      metal, "tang"))
+    h = d.ring[1]
+    shank = np.array([p1 + (p1 / np.linalg.norm(p1)) * -0.002, front])
+    # the upper half's handle is carried by the screw just clear of the table (it would drag on it)
+    grip_sec = rrect(grip_w, h, 0.35 * min(grip_w, h), z0)
+    mat = grip if d.handle == "plastic" else metal
+    pieces.append(sweep(shank, grip_sec, mat, name="shank"))
+    ring = ellipse(centre, ax, ay, 28)
+    pieces.append(sweep(ring, rrect(d.ring[0], h, 0.4 * min(d.ring), z0), mat, closed=True, group=2, name="loop"))
+    if side < 0:  # the pivot screw's head on the upper blade (round: it turns with it or not, alike)
+        pieces.append(g.cylinder((0, 0, z0 + t - 1e-4), (0, 0, z0 + t + 0.0012), 0.55 * boss, screw, name="screw"))
+    if d.opener and side > 0:
+        pieces.append(_opener(shank, grip_w, h, metal))
+    return Assembly.single("body" if side > 0 else "blade", pieces, {"pivot": IDENTITY})
+
+
+def _opener(shank: np.ndarray, grip_w: float, h: float, metal: str) -> g.Piece:
+    """A bottle-opener hook on the lower handle's inner side, between the handles (kitchen shears):
+    a steel tooth whose hooked tip catches a crown cap's skirt."""
+    a, b = shank
+    mid = a + 0.45 * (b - a)
+    along = (b - a) / np.linalg.norm(b - a)
+    inward = np.array([-along[1], along[0]])
+    inward = -inward if inward[1] > 0 else inward  # toward -y, where the other handle lies
+    root = mid + inward * grip_w / 2
+    tip = root + inward * 0.003 + along * 0.004
+    pts = [root - along * 0.004, root + along * 0.005, tip, tip - along * 0.0015]
+    z0, z1 = 0.15 * h, 0.85 * h
+    return hull([(x, y, z) for x, y in pts for z in (z0, z1)], metal, "opener")
