@@ -18,7 +18,7 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
-from infmob_usd.frames import IDENTITY
+from infmob_usd.frames import IDENTITY, Frame
 
 BLADE_GAP = 0.0003  # m, between the stacked blades: the pivot screw holds them in light contact (0.1-0.3 mm play)
 SEP = 0.0025  # m, between the two handles where they lie side by side, closed
@@ -234,3 +234,121 @@ def _opener(shank: np.ndarray, grip_w: float, h: float, metal: str) -> g.Piece:
     pts = [root - along * 0.004, root + along * 0.005, tip, tip - along * 0.0015]
     z0, z1 = 0.15 * h, 0.85 * h
     return hull([(x, y, z) for x, y in pts for z in (z0, z1)], metal, "opener")
+
+
+# -- pliers -------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class PlierDesign:
+    """One kind of pliers, from real products (sizes in metres): the halves lie flat, stacked at the pivot
+    (each half's plate there is half the tool's thickness) and side by side at the jaws and handles."""
+
+    length: tuple[float, float]  # overall, jaw tip to handle end
+    jaw: float  # pivot to jaw tip, as a share of the length
+    jaw_width: float  # one jaw's width at its root
+    tip: float  # one jaw's width at its tip
+    thick: float  # the tool's thickness lying flat
+    grip: float  # handle grip width
+    opens: float  # degrees the jaws open
+    slip: float = 0.0  # slip joint: travel of the pivot between the slot's two holes (0: a fixed rivet)
+    lever: bool = False  # a locking plier's release lever on the moving handle
+
+
+PLIERS = {
+    # Knipex 03 02 180 / 200 combination pliers: 180-200 mm, 10 mm thick, jaws 35-40 mm with a cutter
+    "combination": PlierDesign((0.160, 0.200), 0.21, 0.011, 0.006, 0.010, 0.016, 30.0),
+    # Knipex 26 12 200 needle-nose (snipe nose) pliers: 160-200 mm, long jaws tapering to ~2 mm tips
+    "needle_nose": PlierDesign((0.160, 0.200), 0.33, 0.009, 0.0012, 0.009, 0.015, 25.0),
+    # Channellock 526 / Irwin 6-8 in slip-joint pliers: 160-200 mm; the pivot moves 5-7 mm between two holes
+    "slip_joint": PlierDesign((0.160, 0.200), 0.22, 0.011, 0.005, 0.009, 0.015, 28.0, slip=0.006),
+    # Irwin Vise-Grip 7WR / 10WR locking pliers: 180-250 mm; a release lever inside the lower handle
+    "locking": PlierDesign((0.180, 0.240), 0.20, 0.012, 0.005, 0.011, 0.014, 25.0, lever=True),
+}
+"""Designs -> sizes (maker catalogues named beside each)."""
+
+PIVOT_RADIUS = 0.55  # the pivot plate's radius as a share of the tool's width at the pivot (two jaw widths)
+LEVER = (0.045, 0.006, 0.004, 20.0)  # release lever: length, width, thickness (m), travel (degrees); Vise-Grip
+
+
+@dataclass(frozen=True)
+class Pliers:
+    design: PlierDesign
+    length: float
+    jaw: float
+
+    @property
+    def pivot(self) -> float:
+        return PIVOT_RADIUS * 2 * self.design.jaw_width
+
+    @property
+    def lift(self) -> float:
+        """z of the moving half's underside away from the pivot: clear of the table."""
+        return 0.001
+
+
+def pliers(design: str, size: float) -> Pliers:
+    d = PLIERS[design]
+    length = d.length[0] + size * (d.length[1] - d.length[0])
+    return Pliers(d, length, d.jaw * length)
+
+
+def _jaw(p: Pliers, side: int, z0: float, z1: float, metal: str) -> g.Piece:
+    """One jaw from the pivot plate to its tip, its gripping face on y = 0 (the lower half's toward +y
+    from below it, the upper's from above it)."""
+    d = p.design
+    # clear of the other half's pivot plate, also where a slip joint has moved the upper half back
+    xs = np.linspace(p.pivot * 1.08 + (d.slip if side < 0 else 0.0), p.jaw, 10)
+    u = (xs - xs[0]) / (xs[-1] - xs[0])
+    width = d.jaw_width + (d.tip - d.jaw_width) * u ** 0.8
+    gap = 0.0004
+    secs = [[(-side * gap, z0), (-side * (gap + w), z0 + 0.15 * (z1 - z0)), (-side * (gap + w), z1 - 0.15 * (z1 - z0)),
+             (-side * gap, z1)] for w in width]
+    secs = [s if side < 0 else s[::-1] for s in secs]
+    return sweep(np.c_[xs, np.zeros_like(xs)], np.asarray(secs), metal, group=3, name="jaw")
+
+
+def plier_half(p: Pliers, side: int, metal: str, grip: str) -> Assembly:
+    """One half: the lower (``side`` +1, the body: jaw toward -y, handle toward +y) or the upper (-1)."""
+    d = p.design
+    t = d.thick
+    lo, hi = (0.0, t) if side > 0 else (p.lift, t + BLADE_GAP)
+    plate = (0.0, t / 2) if side > 0 else (t / 2 + BLADE_GAP, t + BLADE_GAP)
+    reach = p.pivot * 1.1 + (d.slip if side < 0 else 0.0)
+    jaw_root = [(reach, -side * (0.0004 + w), z) for w in (0.0, d.jaw_width) for z in plate]
+    jaw_root += [(0.5 * p.pivot, y, z) for _, y, z in jaw_root]  # the plate's web out to the jaw, on its own side
+    pieces = [hull(disc_points((0, 0), p.pivot, *plate, 20), metal, "pivot_plate"), hull(jaw_root, metal, "web"),
+              _jaw(p, side, lo, hi, metal)]
+    hl = p.length - p.jaw
+    end = np.array([-hl, side * (SEP / 2 + d.grip * 0.7)])
+    # the handle's root just outside the other half's pivot plate; the neck to it in this half's own layer
+    root = -p.pivot * 1.15 - 0.45 * d.grip - d.slip
+    root = np.array([root * 0.8, side * -root * 0.6])
+    neck = np.vstack([disc_points((0, 0), 0.8 * p.pivot, *plate, 12), disc_points(root, 0.45 * d.grip, *plate, 12)])
+    pieces.append(hull(neck, metal, "neck"))
+    bow = root + (end - root) * 0.5 + np.array([0.0, side * 0.25 * d.grip])
+    path = np.array([root, root + (bow - root) * 0.5, bow, bow + (end - bow) * 0.5, end])
+    secs = [rrect(d.grip * (0.75 + 0.25 * k / 4), hi - lo + 0.002, 0.004, lo - 0.001 if side > 0 else lo)
+            for k in range(5)]
+    pieces.append(sweep(path, secs, grip, group=2, name="grip"))
+    if d.lever and side > 0:  # a locking plier's knurled adjusting screw out of the fixed handle's end
+        out = (end - bow) / np.linalg.norm(end - bow)
+        mid = (lo + hi) / 2
+        pieces.append(g.cylinder((*(end - 0.004 * out), mid), (*(end + 0.014 * out), mid), 0.42 * (hi - lo), metal,
+                                 name="adjuster"))
+    anchors = {"pivot": IDENTITY, "slot": Frame.at((0, 0, 0), z=(-1, 0, 0)),
+               "lever": Frame.at((end[0] + 0.006, end[1] - LEVER[1] / 2, hi + 0.0015))}
+    return Assembly.single("body" if side > 0 else "jaw", pieces, anchors)
+
+
+def rivet(p: Pliers, metal: str) -> Assembly:
+    """The slip joint's pivot bolt and nut (it slides between the slot's two holes)."""
+    t = p.design.thick
+    top = t + 2 * BLADE_GAP  # just clear of the upper half it holds
+    head = g.cylinder((0, 0, top), (0, 0, top + 0.0015), 0.4 * p.pivot, metal, name="bolt")
+    return Assembly.single("pivot", [head], {"pivot": IDENTITY, "slot": Frame.at((0, 0, 0), z=(-1, 0, 0))})
+
+
+def release_lever(p: Pliers, metal: str) -> Assembly:
+    """A locking plier's release lever lying along the upper handle, hinged at its end (+z at the hinge)."""
+    length, width, thick, _ = LEVER
+    body = hull([(x, y, z) for x in (0.0, length) for y in (0.0, width) for z in (0.0, thick)], metal, "lever")
+    return Assembly.single("lever", [body], {"hinge": IDENTITY})
