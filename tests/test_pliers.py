@@ -17,9 +17,11 @@ def _points(bp, part, pose=None):
     return pts @ pose[:3, :3].T + pose[:3, 3]
 
 
-@pytest.mark.parametrize("design,kinds", [("combination", {("body", "jaw"): "revolute"}),
-                                          ("slip_joint", {("body", "pivot"): "prismatic", ("pivot", "jaw"): "revolute"}),
-                                          ("locking", {("body", "jaw"): "revolute", ("jaw", "lever"): "revolute"})])
+@pytest.mark.parametrize("design,kinds", [
+    ("combination", {("body", "jaw"): "revolute"}),
+    ("slip_joint", {("body", "pivot"): "prismatic", ("pivot", "jaw"): "revolute"}),
+    ("locking", {("body", "jaw"): "revolute", ("jaw", "lever"): "revolute"}),
+])
 def test_joints_of_each_design(design, kinds):
     _, bp = make(0, design=design)
     got = {(s.parent, s.child): s.dofs[0].type for s in bp.joints if s.movable}

@@ -352,3 +352,108 @@ def release_lever(p: Pliers, metal: str) -> Assembly:
     length, width, thick, _ = LEVER
     body = hull([(x, y, z) for x in (0.0, length) for y in (0.0, width) for z in (0.0, thick)], metal, "lever")
     return Assembly.single("lever", [body], {"hinge": IDENTITY})
+
+
+# -- staplers -----------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class StaplerDesign:
+    """One kind of stapler (metres): a base carrying the anvil, a staple magazine (channel) and a top arm
+    hinged on one rear pin; the head stands ``rise`` above the anvil on its spring at rest."""
+
+    length: tuple[float, float]  # overall
+    width: float
+    base: float  # base height
+    magazine: float  # channel height
+    arm: float  # top arm height (mid-length, where it is arched highest)
+    rise: float  # the head's clearance over the anvil at rest
+
+
+STAPLERS = {
+    # Swingline 747 (206 x 44 x 66 mm, ~590 g), Rapid S27, Leitz 5502: full-strip desk staplers
+    "desk": StaplerDesign((0.160, 0.210), 0.042, 0.009, 0.012, 0.018, 0.008),
+    # Swingline long-reach (12 in throat: ~0.37 m long), Rapid 'Long Arm' 0.30-0.45 m, ~1.1 kg
+    "long_reach": StaplerDesign((0.300, 0.420), 0.045, 0.010, 0.012, 0.018, 0.010),
+    # Swingline 101 / Rapid K1 plier staplers: 150-190 mm on a slim lower handle
+    "plier": StaplerDesign((0.150, 0.190), 0.026, 0.011, 0.010, 0.014, 0.004),
+}
+"""Designs -> sizes (maker listings named beside each)."""
+
+
+@dataclass(frozen=True)
+class Stapler:
+    design: StaplerDesign
+    length: float
+
+    @property
+    def pin(self) -> np.ndarray:
+        """The rear hinge pin's point (its axis is y)."""
+        d = self.design
+        return np.array([0.012, 0.0, d.base + d.rise + d.magazine / 2])
+
+    @property
+    def deck(self) -> float:
+        """z of the magazine's underside."""
+        return self.design.base + self.design.rise
+
+
+def stapler(design: str, size: float) -> Stapler:
+    d = STAPLERS[design]
+    return Stapler(d, d.length[0] + size * (d.length[1] - d.length[0]))
+
+
+def _bar(x0: float, x1: float, width, height, z0: float, material: str, radius: float, name: str,
+         n: int = 2, wall: float | None = None) -> g.Piece:
+    """A rounded bar along x; ``width`` and ``height`` are numbers or functions of the fraction along it.
+    Massed as a shell of its material's wall (a pressed-steel or moulded casing) unless ``wall`` says."""
+    xs = np.linspace(x0, x1, n)
+    u = (xs - x0) / (x1 - x0)
+    w = [width(t) if callable(width) else width for t in u]
+    h = [height(t) if callable(height) else height for t in u]
+    secs = [rrect(a, b, radius, z0) for a, b in zip(w, h, strict=True)]
+    return sweep(np.c_[xs, np.zeros_like(xs)], secs, material, group=max(1, n // 4), name=name).replace(wall=wall)
+
+
+def stapler_base(s: Stapler, body: str, steel: str, pad: str) -> Assembly:
+    """The base (the lower handle of a plier stapler) with its anvil under the head's front and the rear
+    cheeks that carry the hinge pin."""
+    d, L, W = s.design, s.length, s.design.width
+    pieces = [_bar(0.0, L, W, d.base - 0.0015, 0.0015, body, 0.003, "base"),
+              _bar(0.004, L - 0.004, W - 0.004, 0.0015, 0.0, pad, 0.0006, "pad")]
+    front = L - 0.012
+    pieces.append(g.box_between((front - 0.016, -0.006, d.base - 1e-4), (front, 0.006, d.base + 0.0012), steel))
+    for side in (-1, 1):  # cheeks outside the arm's ears
+        y0, y1 = sorted((side * 0.44 * W, side * W / 2))
+        pieces.append(hull([(x, y, z) for x in (0.0, 0.024) for y in (y0, y1) for z in (d.base - 0.001,
+                            s.pin[2] + 0.004)], body, "cheek"))
+    pin = Frame.at(s.pin, z=(0, -1, 0))  # +rotation lifts the front
+    return Assembly.single("body", pieces, {"pin": pin, "closing": Frame.at(s.pin, z=(0, 1, 0))})
+
+
+def stapler_magazine(s: Stapler, steel: str, body: str) -> Assembly:
+    """The staple channel (0.8-1 mm chromed steel U-channel, massed as its sheet) with its pull tab in front."""
+    d, L = s.design, s.length
+    w = 0.5 * d.width
+    top = s.deck + d.magazine + 0.0003  # under the arm
+    pieces = [_bar(0.006, L - 0.01, w, d.magazine, s.deck, steel, 0.001, "channel").replace(sheet=0.0009),
+              # the driver housing over the anvil: the magazine's front cap, pulled to load
+              _bar(L - 0.0105, L + 0.002, 1.1 * w, top - s.deck + 0.0015, s.deck - 0.0015, body, 0.002, "nose")]
+    slide = Frame.at((L + 0.002, 0.0, s.deck + d.magazine / 2), z=(1, 0, 0))  # pulled out of the front to load
+    return Assembly.single("magazine", pieces, {"pin": Frame.at(s.pin, z=(0, -1, 0)), "slide": slide})
+
+
+def stapler_arm(s: Stapler, body: str) -> Assembly:
+    """The top arm (the cap a hand presses): arched along its length, its rear ears round the pin outside the
+    magazine."""
+    d, L, W = s.design, s.length, s.design.width
+    z0 = s.deck + d.magazine + 0.0008
+    def arch(t: float) -> float:  # highest a third of the way along, lowest over the nose
+        return d.arm * (0.7 + 0.3 * math.sin(math.pi * min(1.0, 1.2 * t)))
+
+    top = _bar(0.002, L + 0.002, lambda t: 0.86 * W * (1 - 0.12 * t), arch, z0, body, 0.35 * d.arm, "arm", n=12)
+    pieces = [top]
+    for side in (-1, 1):
+        y0, y1 = sorted((side * (0.25 * W + 0.0012), side * 0.42 * W))
+        ear = [(x, y, z) for x in (0.003, 0.022) for y in (y0, y1) for z in (s.pin[2] - 0.004, z0 + 0.001)]
+        pieces.append(hull(ear, body, "ear"))
+    return Assembly.single("arm", pieces, {"pin": Frame.at(s.pin, z=(0, -1, 0)),
+                                           "closing": Frame.at(s.pin, z=(0, 1, 0))})
