@@ -1,16 +1,17 @@
 """Printer: an inkjet, a laser or an all-in-one with a flatbed scanner and a document feeder.
 
 Designs (``design``): an inkjet (paper cassette, fold-down output tray with a pull-out extender, ink access door,
-maybe a rear paper support that flips up), a laser (cassette, a toner door across the front, a paper stop that
-flips up in the top's output bin, maybe a rear jam-clearing door) and an all-in-one (an inkjet's front under a
-flatbed scanner whose lid lifts at the back, maybe carrying a document feeder with a top cover). Cassettes slide
-out; doors, trays, lids and covers turn about their edges; one to six panel keys press into the front (role
-``button``). Parts: ``categories/parts/printers.py``.
+maybe a rear paper support that flips up and a top cover over the cartridges), a laser (cassette, a toner door
+across the front, a paper stop that flips up in the top's output bin, maybe a rear jam-clearing door and a
+manual-feed flap under the door) and an all-in-one (an inkjet's front under a flatbed scanner whose lid lifts at
+the back, maybe carrying a document feeder with a top cover). Cassettes slide out; doors, trays, lids and covers
+turn about their edges; one to six panel keys press into the front (role ``button``).
+Parts: ``categories/parts/printers.py``.
 """
 
 from __future__ import annotations
 
-from infmob_usd.category import Category, Same
+from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Choice, Float
 
@@ -19,23 +20,28 @@ from .parts import printers as P
 
 GRAMMAR = Grammar("printer", {
     "printer": Node(label="body", one_of={"inkjet": 0.35, "laser": 0.3, "all_in_one": 0.35}, choice="design"),
-    "inkjet": Node(required=("cassette", "output_tray", "door", "panel"), optional={"rear_feed": 0.5}),
-    "laser": Node(required=("cassette", "door", "paper_stop", "panel"), optional={"rear_door": 0.5}),
+    "inkjet": Node(required=("cassette", "output_tray", "door", "panel"), optional={"rear_feed": 0.5,
+                                                                                    "top_cover": 0.5}),
+    "laser": Node(required=("cassette", "door", "paper_stop", "panel"), optional={"rear_door": 0.5,
+                                                                                  "manual_feed": 0.5}),
     "all_in_one": Node(required=("cassette", "output_tray", "door", "panel", "scanner_lid")),
     "cassette": Node(label="tray"),
     "output_tray": Node(label="flap", optional={"extender": 0.6}),
-    "extender": Node(label="tray"),
+    "extender": Node(label="extender"),
     "door": Node(label="door"),
     "rear_door": Node(label="door"),
     "rear_feed": Node(label="flap"),
+    "top_cover": Node(label="lid"),
+    "manual_feed": Node(label="flap"),
     "paper_stop": Node(label="flap"),
     "panel": Node(repeat={"key": (1, 6)}),
     "key": Node(label="button"),
     "scanner_lid": Node(label="lid", optional={"feeder": 0.75}),
     "feeder": Node(label="lid"),
 })
-"""Designs: inkjet (maybe a rear paper support), laser (maybe a rear door), all-in-one (a scanner lid, maybe with a
-document feeder); every output tray may have a pull-out extender; 1-6 panel keys."""
+"""Designs: inkjet (maybe a rear paper support, a top cover), laser (maybe a rear door, a manual-feed flap),
+all-in-one (a scanner lid, maybe with a document feeder); every output tray may have a pull-out extender; 1-6 panel
+keys."""
 
 PARAMS = (
     Float("width_share", "width (Y) within the design's range (DESIGNS in parts/printers.py), 0 to 1", "", 0.0, 1.0),
@@ -48,17 +54,20 @@ PARAMS = (
 )
 
 MATERIALS = {"body": "plastic:white|light_grey|black|dark_grey", "trim": "plastic:black|dark_grey|light_grey",
-             "door": Same("body"), "works": "painted:charcoal|black|graphite", "paper": "painted:white",
+             "works": "painted:charcoal|black|graphite", "paper": "painted:white",
              "glass": "glass:smoked|clear", "pad": "plastic:white", "button": "plastic:black|dark_grey|light_grey",
-             "lid": "plastic:black|dark_grey|white|light_grey"}
+             "lid": "plastic:black|dark_grey|white|light_grey", "toner": "plastic:black|dark_grey",
+             "ink_k": "plastic:black", "ink_c": "plastic:teal|blue", "ink_m": "plastic:red", "ink_y": "plastic:yellow",
+             "display": "screen"}
 SUBSTRATES = {"paper": P.PAPER}
 
 
 class PrinterLayout(controls.ControlFace):
     def printer(self, node):
         p, design = self.p, node.choice
-        self.pr = pr = P.Printer.make(design, (p["width_share"], p["depth_share"], p["height_share"]), p["corner"])
         kids = node.one(design)
+        shares = (p["width_share"], p["depth_share"], p["height_share"])
+        self.pr = pr = P.Printer.make(design, shares, p["corner"], kids.one("manual_feed") is not None)
         self.key_spec = P.KEYS[p["key_shape"]]
         cuts = pr.cutouts(len(kids.one("panel").of("key")), self.key_spec)
         extras = []
@@ -67,7 +76,10 @@ class PrinterLayout(controls.ControlFace):
         elif design == "all_in_one":
             cuts["platen"], pane = P.platen(pr, "glass")
             extras = [pane]
-        for rear in ("rear_feed", "rear_door"):
+        inks = ("toner",) if design == "laser" else ("ink_k", "ink_c", "ink_m", "ink_y")
+        extras = [*extras, *P.behind_door(pr, cuts["door"], inks), *P.display(pr, len(kids.one("panel").of("key")),
+                                                                            "display")]
+        for rear in ("rear_feed", "rear_door", "top_cover"):
             if kids.one(rear):
                 cuts[rear] = P.REAR[rear](pr)
         made, volume = P.body(pr, "body", "works", cuts, extras)
@@ -106,10 +118,16 @@ class PrinterLayout(controls.ControlFace):
         self.slide(tray.root, ext.root, ext.anchor("slide"), upper=travel, requires_open="output_tray")
 
     def door(self, node):
-        self._flap("door", "door", "door", P.DOOR_OPENS, "door")
+        self._flap("door", "door", "body", P.DOOR_OPENS, "door")
 
     def rear_door(self, node):
-        self._flap("rear_door", "rear_door", "door", P.DOOR_OPENS, "door")
+        self._flap("rear_door", "rear_door", "body", P.DOOR_OPENS, "door")
+
+    def top_cover(self, node):
+        self._flap("top_cover", "top_cover", "body", P.TOP_COVER_OPENS, "lid")
+
+    def manual_feed(self, node):
+        self._flap("manual_feed", "output", "trim", P.OUTPUT_OPENS, "flap")
 
     def rear_feed(self, node):
         self._flap("rear_feed", "rear_feed", "trim", P.REAR_FEED_OPENS, "flap")

@@ -17,6 +17,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
@@ -70,12 +72,17 @@ OUTPUT_OPENS = math.radians(90)  # an output tray folds down level
 DOOR_OPENS = math.radians(85)  # access doors drop to just short of level (stay straps)
 REAR_FEED_OPENS = math.radians(105)  # a rear paper support leans back past upright
 STOP_OPENS = math.radians(90)  # a paper stop flips up square
+TOP_COVER_OPENS = math.radians(80)  # a top cover lifts to a stop short of upright
 LID_OPENS = math.radians(75)  # flatbed lids stand open at 70-80 degrees (HP, Epson user guides)
 ADF_OPENS = math.radians(70)  # a document feeder's top cover opens to clear a jam
 # Panel keys: 8-12 mm round or 12 x 8 mm rectangular, 1.5-2 mm travel (service-part photos of HP, Brother keys).
 KEYS = {"round": Button(half=(0.0045, 0.0045), shape="round", proud=0.0025, travel=0.0018),
         "rect": Button(half=(0.006, 0.004), shape="rect", proud=0.0025, travel=0.0018)}
 KEY_PITCH = 0.019
+DISPLAY = (0.045, 0.022)  # m, a 1.5-2 in monochrome LCD beside the keys (Brother HL-L2350DW, HP M404 panels)
+# Behind an inkjet's access door: four ink cartridges in their carriage (HP 305 / Canon PG-545 cartridges are
+# 12-18 mm wide, 35-60 mm tall); behind a laser's: the toner cartridge's front with its grip.
+CARTRIDGE = dict(width=0.016, gap=0.006, depth=0.03, count=4)
 # Flatbed covers 20-30 mm thick; feeders 40-60 mm tall, 90-120 mm wide at one end (HP 9015e, Brother MFC-L2710DW).
 LID = dict(thick=(0.02, 0.03), pad=0.002, adf_height=(0.04, 0.06), adf_width=(0.09, 0.12), cover=0.012,
            tray_rise=0.012)
@@ -98,12 +105,15 @@ class Printer:
     height: float
     corner: float
     engine_kg: float
+    lower_flap: bool
 
     @classmethod
-    def make(cls, design: str, shares: tuple[float, float, float], corner: float) -> Printer:
+    def make(cls, design: str, shares: tuple[float, float, float], corner: float, manual_feed: bool = False
+             ) -> Printer:
+        """``manual_feed``: a laser's front has a manual-feed flap below its door (as an inkjet's output tray)."""
         d = DESIGNS[design]
         w, dp, h = (lerp(r, t) for r, t in zip((d.width, d.depth, d.height), shares))
-        return cls(design, w, dp, h, corner, lerp(d.engine, sum(shares) / 3))
+        return cls(design, w, dp, h, corner, lerp(d.engine, sum(shares) / 3), d.output_flap or manual_feed)
 
     @property
     def spec(self) -> Design:
@@ -123,10 +133,10 @@ class Printer:
         t = self.tray()
         lo = -self.height / 2 + WALL + t.height + t.lip + 2 * CLEAR + MARGIN
         hi = self.height / 2 - MARGIN
-        free = hi - lo - (MARGIN if self.spec.output_flap else 0.0)
-        out = OUTPUT_SHARE * free if self.spec.output_flap else 0.0
+        free = hi - lo - (MARGIN if self.lower_flap else 0.0)
+        out = OUTPUT_SHARE * free if self.lower_flap else 0.0
         door_lo = lo + out + (MARGIN if out else 0.0)
-        share = DOOR_SHARE if self.spec.output_flap else 1.0
+        share = DOOR_SHARE if self.spec.output_flap else 1.0  # an inkjet's door leaves room for the keys above
         return {"output": (lo, lo + out), "door": (door_lo, door_lo + share * (hi - door_lo))}
 
     def door_span(self) -> tuple[float, float]:
@@ -139,10 +149,12 @@ class Printer:
         t, b, (u0, u1) = self.tray(), self.bands(), self.door_span()
         cuts = {"cassette": self.size.floor_opening("front", t.width, t.height + t.lip, CLEAR),
                 "door": Cutout("front", (u0, b["door"][0]), (u1, b["door"][1]))}
-        if self.spec.output_flap:
+        if self.lower_flap:
             cuts["output"] = Cutout("front", (u0, b["output"][0]), (u1, b["output"][1]))
         v = (b["door"][0] + b["door"][1]) / 2
         room = self.width / 2 - 2 * self.corner - u1 - 2 * MARGIN
+        if self.has_display(keys):
+            u1, room = u1 + DISPLAY[0] + MARGIN, room - DISPLAY[0] - MARGIN
         cols = max(1, min(keys, int(room / KEY_PITCH)))
         rows = -(-keys // cols)  # keys that do not fit in one row take a second below it
         for k in range(keys):
@@ -150,6 +162,15 @@ class Printer:
             at = (u1 + MARGIN + (c + 0.5) * KEY_PITCH, v + ((rows - 1) / 2 - r) * KEY_PITCH)
             cuts[f"key_{k}"] = key.cutout("front", at)
         return cuts
+
+    def has_display(self, keys: int) -> bool:
+        """A laser's or an all-in-one's panel has a display beside its keys where the front has room for both."""
+        room = self.width / 2 - 2 * self.corner - self.door_span()[1] - 2 * MARGIN
+        return self.design != "inkjet" and room >= DISPLAY[0] + MARGIN + min(keys, 3) * KEY_PITCH
+
+    def face_point(self, u: float, v: float, inset: float) -> tuple[float, float, float]:
+        """A point ``inset`` behind the front face at face coordinates (u, v)."""
+        return (self.depth / 2 - inset, -u, self.height / 2 + v)
 
     def engine_box(self, top: float) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
         """The print engine's box: behind the front's recess, above the cassette, up to ``top``."""
@@ -211,7 +232,7 @@ def extender(size: tuple[float, float], slot: str) -> Assembly:
     z0 = -FLAP - CLEAR - EXTENDER["thick"]
     plate = g.box_between((-v, -u, z0), (v, u, z0 + EXTENDER["thick"]), slot).replace(sheet=SHEET)
     tab = g.box_between((v - 0.004, -0.4 * u, z0), (v, 0.4 * u, -FLAP - CLEAR), slot)
-    return Assembly.single("tray", [plate, tab], {"mount": Frame.at((0, 0, 0)),
+    return Assembly.single("extender", [plate, tab], {"mount": Frame.at((0, 0, 0)),
                                                   "slide": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 0, 1))})
 
 
@@ -287,4 +308,51 @@ def rear_door(pr: Printer) -> Cutout:
     return Cutout("back", (-0.3 * pr.width, -0.1 * pr.height), (0.3 * pr.width, 0.3 * pr.height))
 
 
-REAR = {"rear_feed": rear_feed, "rear_door": rear_door}
+def top_cover(pr: Printer) -> Cutout:
+    """An inkjet's top cover over the cartridge carriage (Canon PIXMA iP / iX): the top's front part, in front of
+    a rear paper support's place."""
+    x1 = pr.depth / 2 - 0.03
+    return Cutout("top", (-0.35 * pr.width, x1 - 0.45 * pr.depth), (0.35 * pr.width, x1))
+
+
+REAR = {"rear_feed": rear_feed, "rear_door": rear_door, "top_cover": top_cover}
+
+
+def behind_door(pr: Printer, door: Cutout, slots: tuple[str, ...]) -> list[g.Piece]:
+    """What an open access door shows, on the engine's front in the door's recess: a laser's toner cartridge
+    (``slots[0]``) with its grip, or an inkjet's row of cartridges (one per slot: black, cyan, magenta, yellow)."""
+    (u0, v0), (u1, v1) = door.lo, door.hi
+    x1 = pr.depth / 2 - RECESS
+    if pr.design == "laser":
+        um, vm = 0.1 * (u1 - u0), 0.15 * (v1 - v0)
+        body = _box(pr.face_point(u1 - um, v0 + vm, RECESS), pr.face_point(u0 + um, v1 - vm, RECESS - 0.012),
+                    slots[0], 0.004)
+        grip = _box(pr.face_point(0.7 * u0 + 0.3 * u1, v1 - 2 * vm, RECESS - 0.012),
+                    pr.face_point(0.3 * u0 + 0.7 * u1, v1 - 1.5 * vm, RECESS - 0.022), slots[0], 0.002)
+        return [body, grip]
+    c = CARTRIDGE
+    pitch = c["width"] + c["gap"]
+    um = (u0 + u1) / 2
+    h = min(0.05, 0.8 * (v1 - v0))
+    pieces = []
+    for k, slot in enumerate(slots):
+        u = um + (k - (len(slots) - 1) / 2) * pitch
+        lo = (x1 - c["depth"] + 0.012, -u - c["width"] / 2, pr.height / 2 + v0 + 0.004)
+        pieces.append(g.box_between(lo, (x1 + 0.012, -u + c["width"] / 2, lo[2] + h), slot, bevel=0.002))
+    return pieces
+
+
+def display(pr: Printer, keys: int, slot: str) -> list[g.Piece]:
+    """The panel's display, slightly proud of the front beside the door (where :meth:`Printer.has_display`)."""
+    if not pr.has_display(keys):
+        return []
+    u0 = pr.door_span()[1] + MARGIN
+    b = pr.bands()["door"]
+    v = (b[0] + b[1]) / 2
+    return [_box(pr.face_point(u0, v - DISPLAY[1] / 2, 0.001), pr.face_point(u0 + DISPLAY[0], v + DISPLAY[1] / 2,
+                                                                             -0.001), slot)]
+
+
+def _box(a, b, slot: str, bevel: float = 0.0) -> g.Piece:
+    """A box between two opposite corners given in any order."""
+    return g.box_between(np.minimum(a, b), np.maximum(a, b), slot, bevel=bevel)
