@@ -2,10 +2,10 @@
 
 Designs (``design``): an inkjet (paper cassette, fold-down output tray with a pull-out extender, ink access door,
 maybe a rear paper support that flips up and a top cover over the cartridges), a laser (cassette, a toner door
-across the front, a paper stop that flips up in the top's output bin, maybe a rear jam-clearing door and a
-manual-feed flap under the door) and an all-in-one (an inkjet's front under a flatbed scanner whose lid lifts at
-the back, maybe carrying a document feeder with a top cover). Cassettes slide out; doors, trays, lids and covers
-turn about their edges; one to six panel keys press into the front (role ``button``).
+across the front, an output bin in the top maybe with a paper stop that flips up, maybe a manual-feed flap under
+the door) and an all-in-one (an inkjet's front under a flatbed scanner whose lid lifts at the back, maybe carrying
+a document feeder with a top cover); any may have a rear jam-clearing door. Cassettes slide out; doors, trays,
+lids and covers turn about their edges; one to six panel keys press into the front (role ``button``).
 Parts: ``categories/parts/printers.py``.
 """
 
@@ -20,11 +20,12 @@ from .parts import printers as P
 
 GRAMMAR = Grammar("printer", {
     "printer": Node(label="body", one_of={"inkjet": 0.35, "laser": 0.3, "all_in_one": 0.35}, choice="design"),
-    "inkjet": Node(required=("cassette", "output_tray", "door", "panel"), optional={"rear_feed": 0.5,
-                                                                                    "top_cover": 0.5}),
-    "laser": Node(required=("cassette", "door", "paper_stop", "panel"), optional={"rear_door": 0.5,
-                                                                                  "manual_feed": 0.5}),
-    "all_in_one": Node(required=("cassette", "output_tray", "door", "panel", "scanner_lid")),
+    "inkjet": Node(required=("cassette", "output_tray", "door", "panel"),
+                   optional={"rear_feed": 0.5, "top_cover": 0.5, "rear_door": 0.4}),
+    "laser": Node(required=("cassette", "door", "panel"),
+                  optional={"paper_stop": 0.75, "rear_door": 0.4, "manual_feed": 0.5}),
+    "all_in_one": Node(required=("cassette", "output_tray", "door", "panel", "scanner_lid"),
+                       optional={"rear_door": 0.4}),
     "cassette": Node(label="tray"),
     "output_tray": Node(label="flap", optional={"extender": 0.6}),
     "extender": Node(label="extender"),
@@ -39,9 +40,9 @@ GRAMMAR = Grammar("printer", {
     "scanner_lid": Node(label="lid", optional={"feeder": 0.75}),
     "feeder": Node(label="lid"),
 })
-"""Designs: inkjet (maybe a rear paper support, a top cover), laser (maybe a rear door, a manual-feed flap),
-all-in-one (a scanner lid, maybe with a document feeder); every output tray may have a pull-out extender; 1-6 panel
-keys."""
+"""Designs: inkjet (maybe a rear paper support, a top cover), laser (maybe a paper stop, a manual-feed flap),
+all-in-one (a scanner lid, maybe with a document feeder); any may have a rear door; every output tray may have a
+pull-out extender; 1-6 panel keys."""
 
 PARAMS = (
     Float("width_share", "width (Y) within the design's range (DESIGNS in parts/printers.py), 0 to 1", "", 0.0, 1.0),
@@ -71,7 +72,7 @@ class PrinterLayout(controls.ControlFace):
         self.key_spec = P.KEYS[p["key_shape"]]
         cuts = pr.cutouts(len(kids.one("panel").of("key")), self.key_spec)
         extras = []
-        if design == "laser":
+        if design == "laser":  # the output bin is there whether or not it has a paper stop
             cuts["bin"], extras, self.stop_at = P.output_bin(pr, "trim")
         elif design == "all_in_one":
             cuts["platen"], pane = P.platen(pr, "glass")
