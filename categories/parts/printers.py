@@ -21,7 +21,8 @@ import numpy as np
 
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
-from infmob_usd.frames import Frame
+from infmob_usd.frames import IDENTITY, Frame
+from infmob_usd.grasps import Grasp
 
 from .casing import CasingSize, Cutout, LinerSize, liner, sheet_casing
 from .controls import Button
@@ -85,7 +86,8 @@ DISPLAY = (0.045, 0.022)  # m, a 1.5-2 in monochrome LCD beside the keys (Brothe
 CARTRIDGE = dict(width=0.016, gap=0.006, depth=0.03, count=4)
 # Flatbed covers 20-30 mm thick; feeders 40-60 mm tall, 90-120 mm wide at one end (HP 9015e, Brother MFC-L2710DW).
 LID = dict(thick=(0.02, 0.03), pad=0.002, adf_height=(0.04, 0.06), adf_width=(0.09, 0.12), cover=0.012,
-           tray_rise=0.012)
+           tray_rise=0.012, tab=0.025)  # tab: how far the lid's front lip reaches past the body's front
+LIP = (0.010, 0.012)  # m, a pull lip's thickness and how far it stands out: a finger's (and a gripper's) hold
 STOP = (0.12, 0.05)  # the paper stop's width and length (m)
 BIN = dict(depth=0.022, front=0.06, back=0.05, side=0.06)  # a laser's top output bin, inset from the top's edges
 EXTENDER = dict(share=0.8, thick=0.003, pull=0.85)  # the output tray's pull-out extender behind it
@@ -218,11 +220,23 @@ def flap(size: tuple[float, float], slot: str, label: str, grip: bool = True) ->
     u, v = size[0] / 2 - CLEAR, size[1] / 2 - CLEAR
     pieces = [g.box_between((-v, -u, -FLAP), (v, u, 0.0), slot, bevel=0.0015)]
     if grip:
-        w = min(0.05, u)
-        pieces.append(g.box_between((v - 0.006, -w, 0.0), (v, w, 0.003), slot, bevel=0.001))
+        w, (t, proud) = min(0.04, 0.8 * u), LIP
+        pieces.append(lip((v - t, -w, 0.0), (v, w, proud), slot, (0, 0, -1), (1, 0, 0)))
     sheet = [pc.replace(sheet=SHEET) for pc in pieces]
     anchors = {"mount": Frame.at((0, 0, 0)), "hinge": Frame.at((-v, 0, 0), z=(0, -1, 0), x=(1, 0, 0))}
     return Assembly.single(label, sheet, anchors)
+
+
+def lip(lo, hi, slot: str, approach, closing) -> g.Piece:
+    """A moulded pull lip (a box ``lo``-``hi``) that a hand takes: fingers come along ``approach`` onto its outer face
+    and close across it along ``closing`` (both unit axes of the box)."""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    a, c = np.asarray(approach, float), np.asarray(closing, float)
+    centre, size = (lo + hi) / 2, hi - lo
+    face = centre - a * (np.abs(a) @ size) / 2
+    grasp = Grasp.make(face, a, c, float(np.abs(c) @ size), min(0.5 * float(np.abs(a) @ size), 0.008),
+                       "line_fixed_handle", (centre, size, IDENTITY.rotation))
+    return g.box_between(lo, hi, slot, bevel=0.001).with_grasps(grasp)
 
 
 def extender(size: tuple[float, float], slot: str) -> Assembly:
@@ -231,7 +245,7 @@ def extender(size: tuple[float, float], slot: str) -> Assembly:
     u, v = EXTENDER["share"] * size[0] / 2, EXTENDER["share"] * size[1] / 2
     z0 = -FLAP - CLEAR - EXTENDER["thick"]
     plate = g.box_between((-v, -u, z0), (v, u, z0 + EXTENDER["thick"]), slot).replace(sheet=SHEET)
-    tab = g.box_between((v - 0.004, -0.4 * u, z0), (v, 0.4 * u, -FLAP - CLEAR), slot)
+    tab = lip((v - LIP[0], -0.4 * u, z0 - LIP[1]), (v, 0.4 * u, z0), slot, (0, 0, 1), (1, 0, 0))
     return Assembly.single("extender", [plate, tab], {"mount": Frame.at((0, 0, 0)),
                                                   "slide": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 0, 1))})
 
@@ -245,7 +259,8 @@ def cassette(pr: Printer, body_slot: str, slot: str, paper_slot: str, fill: floa
     x0 = max(-t.depth + t.wall + CLEAR, x1 - SHEET_SIZE[1])
     hy = min(t.width / 2 - t.wall - CLEAR, SHEET_SIZE[0] / 2)
     stack = g.box_between((x0, -hy, t.wall), (x1, hy, t.wall + fill * (t.height - t.wall)), paper_slot)
-    grip = g.box_between((0.0, -0.04, t.height), (0.008, 0.04, t.height + t.lip - 0.002), body_slot, bevel=0.002)
+    zc = (t.height + t.lip) / 2
+    grip = lip((0.0, -0.04, zc - LIP[0] / 2), (LIP[1], 0.04, zc + LIP[0] / 2), body_slot, (-1, 0, 0), (0, 0, 1))
     return made.with_pieces(made.root, [stack, grip])
 
 
@@ -257,33 +272,35 @@ def scanner_lid(pr: Printer, slot: str, pad_slot: str, thick: float) -> Assembly
     pieces = [g.box_between((-hx, -hy, z + CLEAR), (hx, hy, z + CLEAR + thick), slot, bevel=r).replace(sheet=SHEET),
               g.box_between((-hx + 0.02, -hy + 0.02, z + CLEAR - LID["pad"] / 2), (hx - 0.02, hy - 0.02, z + CLEAR),
                             pad_slot)]
-    anchors = {"hinge": Frame.at((-hx, 0, z + CLEAR), z=(0, -1, 0), x=(1, 0, 0)),
-               "deck": Frame.at((0, 0, z + CLEAR + thick))}
+    top = z + CLEAR + thick
+    pieces.append(lip((hx, -0.05, top - LIP[0]), (hx + LID["tab"], 0.05, top), slot, (-1, 0, 0), (0, 0, 1)))
+    anchors = {"hinge": Frame.at((-hx, 0, z + CLEAR), z=(0, -1, 0), x=(1, 0, 0)), "deck": Frame.at((0, 0, top))}
     return Assembly.single("lid", pieces, anchors)
 
 
 def feeder(pr: Printer, deck: Frame, slot: str, tray_slot: str, width: float, height: float
            ) -> tuple[list[g.Piece], Frame]:
     """A document feeder on the lid's ``deck``: its housing at the +y end and the input tray beside it (pieces
-    of the lid) and the cover's hinge (the housing's outer top edge, z = -x: a positive turn lifts its inner edge)."""
+    of the lid) and the cover's hinge (the housing's back top edge, z = -y: a positive turn lifts its front)."""
     hx, hy = pr.depth / 2 - 0.015, pr.width / 2 - 0.01
     z0 = deck.origin[2]
     y0 = hy - width
     house = g.box_between((-hx, y0, z0), (hx, hy, z0 + height - LID["cover"]), slot, bevel=0.004)
     rise = LID["tray_rise"]
     tray = g.box_between((-hx + 0.02, -hy + 0.03, z0), (hx - 0.04, y0, z0 + rise), tray_slot, bevel=0.003)
-    guides = [g.box_between((-hx + 0.03, y, z0 + rise), (hx - 0.06, y + 0.004, z0 + rise + 0.012), tray_slot)
+    guides = [g.box_between((-hx + 0.03, y, z0 + rise), (hx - 0.06, y + 0.004, z0 + rise + 0.008), tray_slot)
               for y in (-hy + 0.05, y0 - 0.03)]
-    hinge = Frame.at((0.0, hy, z0 + height - LID["cover"]), z=(-1, 0, 0), x=(0, 0, 1))
+    hinge = Frame.at((-hx, y0 + width / 2, z0 + height - LID["cover"]), z=(0, -1, 0), x=(1, 0, 0))
     return [pc.replace(sheet=SHEET) for pc in (house, tray, *guides)], hinge
 
 
 def adf_cover(pr: Printer, width: float, slot: str) -> Assembly:
-    """The feeder's top cover, built in the frame of its hinge (:func:`feeder`: x up, y toward the housing's
-    outer end, z along -x): ``width`` across the housing, ``LID["cover"]`` thick. Anchor ``hinge``."""
-    hx = pr.depth / 2 - 0.015
-    piece = g.box_between((0.0, -width, -hx), (LID["cover"], 0.0, hx), slot, bevel=0.004).replace(sheet=SHEET)
-    return Assembly.single("lid", [piece], {"hinge": Frame.at((0, 0, 0))})
+    """The feeder's top cover, built about its hinge (:func:`feeder`: the housing's back top edge, z = -y: a
+    positive turn lifts its front), ``width`` across the housing, a pull lip past its front. Anchor ``hinge``."""
+    length, t = pr.depth - 0.03, LID["cover"]
+    piece = g.box_between((0.0, -width / 2, 0.0), (length, width / 2, t), slot, bevel=0.004).replace(sheet=SHEET)
+    tab = lip((length, -0.03, t - LIP[0] / 2), (length + LID["tab"] / 2, 0.03, t), slot, (-1, 0, 0), (0, 0, 1))
+    return Assembly.single("lid", [piece, tab], {"hinge": Frame.at((0, 0, 0), z=(0, -1, 0), x=(1, 0, 0))})
 
 
 def platen(pr: Printer, glass: str) -> tuple[Cutout, g.Piece]:
