@@ -110,6 +110,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "trash_can": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified"
                              " item for trash can: OEWN's 02750182-n 'ashcan, trash can, wastebin' has none, its"
                              " chain bin > container has this nearest one)"),
+    "pepper_grinder": ("Q44494", "http://www.wikidata.org/entity/Q44494 'mill' (OEWN 03771096-n 'mill, grinder';"
+                                 " no verified item for pepper mill: OEWN's 03920456-n 'pepper mill, pepper grinder'"
+                                 " has none, its hypernym mill has this one)"),
     "printer": ("Q82", "http://www.wikidata.org/entity/Q82 'printer' (OEWN 04011143-n 'an output device that"
                        " prints the results of data processing')"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
