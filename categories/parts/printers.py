@@ -245,7 +245,9 @@ def extender(size: tuple[float, float], slot: str) -> Assembly:
     u, v = EXTENDER["share"] * size[0] / 2, EXTENDER["share"] * size[1] / 2
     z0 = -FLAP - CLEAR - EXTENDER["thick"]
     plate = g.box_between((-v, -u, z0), (v, u, z0 + EXTENDER["thick"]), slot).replace(sheet=SHEET)
-    tab = lip((v - LIP[0], -0.4 * u, z0 - LIP[1]), (v, 0.4 * u, z0), slot, (0, 0, 1), (1, 0, 0))
+    # its pull is its thickened end, within the plate's thickness: anything standing off it would swing through
+    # the casing above the slot as the tray folds down
+    tab = lip((v - 0.004, -0.4 * u, z0), (v, 0.4 * u, -FLAP - CLEAR), slot, (0, 0, 1), (1, 0, 0))
     return Assembly.single("extender", [plate, tab], {"mount": Frame.at((0, 0, 0)),
                                                   "slide": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 0, 1))})
 
