@@ -71,14 +71,16 @@ class GrinderLayout(Layout):
 
     def _body(self, node, s, name, contents, frame=None):
         made = M.body(s, self.p["shape"], "body", contents, "metal")
-        placed = self.place(made if frame is None else made.mounted(frame), name)
+        return self.place(made if frame is None else made.mounted(frame), name)
+
+    def _ring(self, node, body, s):
         if node.one("ring"):
-            self.grow(node.one("ring"), body=placed, s=s)
-        return placed
+            self.grow(node.one("ring"), body=body, s=s)
 
     def manual(self, node, design):
         s = self._size(node, design)
         body = self._body(node, s, "body", "pepper")
+        self._ring(node, body, s)
         self.grow(node.one("head"), body=body, s=s)
 
     def head(self, node, body, s):
@@ -97,7 +99,9 @@ class GrinderLayout(Layout):
     def ring(self, node, body, s):
         name = body.root.replace("body", "ring") if body.root != "body" else "ring"
         made = self.place(M.ring(s, "ring").attached("axis", to=body.anchor("ring").moved(dz=M.GAP)), name)
-        self.hinge(body.root, made.root, made.anchor("axis"), upper=M.RING["turns"], role="knob")
+        # a pair's mill stands in its tray's socket, which hides its ring: it is turned with the mill lifted out
+        gate = body.root if body.root != "body" else None
+        self.hinge(body.root, made.root, made.anchor("axis"), upper=M.RING["turns"], role="knob", requires_open=gate)
 
     def pair(self, node, design):
         s = self._size(node.of("mill")[0], design)
@@ -109,6 +113,7 @@ class GrinderLayout(Layout):
     def mill(self, node, base, frame, k, s):
         body = self._body(node, s, f"body_{k}", ("pepper", "salt")[k], frame.moved(dz=M.GAP))
         self.lift(base.root, body.root, frame.moved(dz=M.GAP), engagement=M.TRAY["socket"])
+        self._ring(node, body, s)
         self.grow(node.one("mill_head"), body=body, k=k, s=s)
 
     def mill_head(self, node, body, k, s):
@@ -123,6 +128,7 @@ class GrinderLayout(Layout):
     def electric(self, node, design):
         s = self._size(node, design)
         body = self._body(node, s, "body", "pepper")
+        self._ring(node, body, s)
         self.grow(node.one("cap"), body=body, s=s)
 
     def cap(self, node, body, s):
