@@ -117,6 +117,11 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "monitor": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                              " verified item for computer monitor: OEWN's chain monitor > electronic equipment >"
                              " equipment has no nearer item)"),
+    "pepper_grinder": ("Q44494", "http://www.wikidata.org/entity/Q44494 'mill' (OEWN 03771096-n 'mill, grinder';"
+                                 " no verified item for pepper mill: OEWN's 03920456-n 'pepper mill, pepper grinder'"
+                                 " has none, its hypernym mill has this one)"),
+    "printer": ("Q82", "http://www.wikidata.org/entity/Q82 'printer' (OEWN 04011143-n 'an output device that"
+                       " prints the results of data processing')"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
