@@ -2,13 +2,14 @@
 
 Designs (``design``, sizes and sources in ``categories/parts/fans.py``): a ``desk`` fan whose motor head tilts
 (revolute about the horizontal across it) on a neck that oscillates (revolute about the vertical, or fixed on a
-fan that does not), its rotor spinning on the motor's shaft (continuous), 0-2 grille clips that flip back to free
-the front grille (revolute), and on the base's front a row of 3-4 speed keys (spring-returned: role ``button``)
-or a speed knob (revolute); a ``pedestal`` fan the same on an upper pole that slides up out of the lower tube
-(prismatic, role ``telescope``) carrying the control pod under the head; a ``box`` fan whose rotor spins in a
-square frame between flat grilles, a speed knob and maybe a timer knob on the top; a ``ceiling`` fan standing on
-its switch housing as it is unboxed, its motor shell with the blade irons and blades spinning about the downrod's
-axis (continuous) and maybe a forward/reverse slide switch on the housing (prismatic).
+fan that does not), its rotor spinning on the motor's shaft (continuous), 0-3 grille clips that flip back to free
+the front grille (revolute), maybe an oscillation knob on the motor pulled up to stop it (prismatic), on the
+base's front a row of 2-5 speed keys (spring-returned: role ``button``) or a speed knob (revolute), maybe a timer
+knob on its side; a ``pedestal`` fan the same on an upper pole that slides up out of the lower tube (prismatic,
+role ``telescope``) carrying the control pod under the head; a ``box`` fan whose rotor spins in a square frame
+between flat grilles, a speed knob and maybe a timer knob on the top; a ``ceiling`` fan standing on its switch
+housing as it is unboxed, its motor shell with the blade irons and blades spinning about the downrod's axis
+(continuous) and maybe a forward/reverse slide switch on the housing (prismatic).
 
 X is the front (where the air goes: a ceiling fan's axis is Z), Y across, Z up.
 """
@@ -40,27 +41,29 @@ PARAMS = (
 )
 
 GRAMMAR = Grammar("fan", {
-    "fan": Node(one_of={"desk": 0.3, "pedestal": 0.3, "box": 0.2, "ceiling": 0.2}, choice="design"),
+    "fan": Node(one_of={"desk": 0.35, "pedestal": 0.35, "box": 0.15, "ceiling": 0.15}, choice="design"),
     "desk": Node(label="body", required=("neck", "controls")),
     "pedestal": Node(label=("body", "pole"), required=("neck", "controls")),
     "box": Node(label="body", required=("rotor", "speed_knob"), optional={"timer": 0.4}),
     "ceiling": Node(label="body", required=("rotor",), optional={"reverse": 0.6}),
     "neck": Node(one_of={"oscillating": 0.8, "fixed": 0.2}, choice="oscillation"),
-    "oscillating": Node(label="neck", required=("head",)),
+    "oscillating": Node(label="neck", required=("head",), optional={"osc_knob": 0.5}),
+    "osc_knob": Node(label="knob"),
     "fixed": Node(label="neck", required=("head",)),
-    "head": Node(label="head", required=("rotor",), repeat={"latch": (0, 2)}),
+    "head": Node(label="head", required=("rotor",), repeat={"latch": (0, 3)}),
     "rotor": Node(label="rotor"),
     "latch": Node(label="latch"),
-    "controls": Node(one_of={"keys": 0.6, "speed_knob": 0.4}, choice="control"),
-    "keys": Node(repeat={"key": (3, 4)}),
+    "controls": Node(one_of={"keys": 0.6, "speed_knob": 0.4}, choice="control", optional={"timer": 0.35}),
+    "keys": Node(repeat={"key": (2, 5)}),
     "key": Node(label="button"),
     "speed_knob": Node(label="knob"),
     "timer": Node(label="knob"),
     "reverse": Node(label="switch"),
 })
-"""A desk or stand fan's neck oscillates unless ``oscillation`` is ``fixed``; its head has 0-2
-grille clips; its speed control is a row of keys (off and 2-3 speeds) or a knob. A box fan has a speed knob and
-maybe a timer knob; a ceiling fan maybe a forward/reverse switch."""
+"""A desk or stand fan's neck oscillates unless ``oscillation`` is ``fixed``; its head has 0-3
+grille clips and, on an oscillating fan, maybe a knob on the motor that is pulled up to stop the oscillation;
+its speed control is a row of keys (off and 1-4 speeds) or a knob, maybe with a timer knob on the side. A box fan
+has a speed knob and maybe a timer knob; a ceiling fan maybe a forward/reverse switch."""
 
 MATERIALS = {"body": "finish", "grille": "grille_finish", "blade": "blade_finish", "hub": "plastic:black|white",
              "badge": "chrome", "motor": "brushed_metal", "weight": "brushed_metal",
@@ -69,7 +72,8 @@ MATERIALS = {"body": "finish", "grille": "grille_finish", "blade": "blade_finish
              "rod": Same("body")}
 SUBSTRATES = {"body": ("finish", {"painted": 1100.0, "brushed_metal": 1100.0}),  # moulded ABS, painted or plated
               "blade": ("blade_finish", {"glass": 905.0}),  # clear blades are polypropylene (0.905 g/cm^3)
-              "board": ("board_finish", {"painted": 750.0})}  # painted MDF boards
+              "board": ("board_finish", {"painted": 750.0}),  # painted MDF boards
+              "badge": 1100.0}  # a chrome-plated ABS badge
 
 KEY = controls.Button(half=(0.009, 0.007), shape="rect", proud=0.008, travel=0.005)  # piano keys, 18 mm wide
 KNOB = controls.Dial(radius=0.018, stem=0.004, style="ridge", turns=1.57)  # off and three speeds: a quarter turn
@@ -124,17 +128,21 @@ class FanLayout(controls.ControlFace):
 
     @staticmethod
     def _control_cuts(controls_node, size, column=False):
-        """The speed knob, or the keys: in a row across a base's front, in a column down a pod's front."""
+        """The speed knob, or the keys: in a row across a base's front, in a column down a pod's front; a timer
+        knob on the left side."""
+        timer = {"timer": KNOB.cutout("left", (0.0, 0.0))} if controls_node.one("timer") else {}
         if controls_node.choice == "speed_knob":
-            return {"knob": KNOB.cutout("front", size.on("front", 0.0, 0.0))}
+            return {"knob": KNOB.cutout("front", size.on("front", 0.0, 0.0)), **timer}
         n = len(controls_node.one("keys").of("key"))
         at = [((k - (n - 1) / 2) * KEY_PITCH, 0.0) for k in range(n)]
-        return {f"key_{k}": KEY.cutout("front", (0.0, -v * KEY_ROW) if column else (v, 0.0))
-                for k, (v, _) in enumerate(at)}
+        return {**{f"key_{k}": KEY.cutout("front", (0.0, -v * KEY_ROW) if column else (v, 0.0))
+                   for k, (v, _) in enumerate(at)}, **timer}
 
     def controls(self, node, parent, placed):
         self.grow(node.one(node.choice), parent=parent, at=placed.anchor("knob") if node.choice == "speed_knob"
                   else placed)
+        if node.one("timer"):
+            self.grow(node.one("timer"), parent=parent, at=placed.anchor("timer"))
 
     def keys(self, node, parent, at):
         for k, key in enumerate(node.of("key")):
@@ -156,9 +164,15 @@ class FanLayout(controls.ControlFace):
             self.hinge(parent, neck, axis, lower=-F.OSCILLATES, upper=F.OSCILLATES, role="swivel")
         else:
             self.fix(parent, neck)
-        self.grow(node.one("head"), neck=neck, h=h)
+        head = self.grow(node.one("head"), neck=neck, h=h)
+        if node.kind == "oscillating" and node.one("osc_knob"):
+            self.grow(node.one("osc_knob"), head=head, h=h)
 
     fixed = oscillating
+
+    def osc_knob(self, node, head, h):
+        pieces, axis = F.osc_pin(h, "knob")
+        self.slide(head, self.add("osc_knob", "knob", pieces), axis, upper=F.PIN[3])
 
     def head(self, node, neck, h):
         pieces = F.grille(h, "grille", "badge") + F.motor(h, "body", "motor") + F.neck_bracket(h, "body")
@@ -167,7 +181,8 @@ class FanLayout(controls.ControlFace):
         pieces, axis = F.head_rotor(h, "blade", "hub")
         self.grow(node.one("rotor"), parent=head, pieces=pieces, axis=axis)
         for k, clip in enumerate(node.of("latch")):
-            self.grow(clip, head=head, h=h, angle=(0.0, math.pi / 2)[k], name=f"latch_{k}")  # top, then side
+            self.grow(clip, head=head, h=h, angle=(0.0, math.pi / 2, -math.pi / 2)[k], name=f"latch_{k}")  # top, sides
+        return head
 
     def rotor(self, node, parent, pieces, axis):
         self.spin(parent, self.add("rotor", "rotor", pieces), axis, role="wheel")

@@ -59,10 +59,10 @@ DESIGNS = {
 }
 MOTOR_DENSITY = 7850.0  # steel laminations and copper windings, massed as steel
 BLADE_T = {"desk": 0.002, "pedestal": 0.002, "box": 0.002, "ceiling": 0.008}  # m: moulded PP 2 mm, MDF 6-10 mm
-WIRE = 0.0016  # m, grille wire radius: 3 mm chromed or painted steel wire (replacement grille listings)
-RIM = 0.0035  # m, the grille's rim ring radius (a rolled-over band on moulded grilles)
+WIRE = 0.001  # m, grille wire radius: 2 mm chromed or painted steel wire (replacement grille listings)
+RIM = 0.0025  # m, the grille's rim ring radius (5 mm rolled rim wire)
 TIP_CLEAR = 0.012  # m, from the blade tips to the grille (guards keep fingers off 10-15 mm)
-SPOKES = {"desk": 32, "pedestal": 40}  # wires of a front grille (counts from product photos: 28-48)
+SPOKES = {"desk": 28, "pedestal": 36}  # wires of a front grille (counts from product photos: 28-48)
 RINGS = 4  # concentric wire rings of a front grille
 LATCH = (0.034, 0.026, 0.008)  # m, a grille clip: length over the rim, width, thickness (~7 g of ABS)
 LATCH_OPENS = math.radians(100)
@@ -166,7 +166,7 @@ def merged(pieces: list[g.Piece], slot: str) -> g.Piece:
         verts.append(p.vertices)
         faces.append(p.faces + k)
         k += len(p.vertices)
-    return g.Piece(np.vstack(verts), np.vstack(faces), slot, [])
+    return g.Piece(np.vstack(verts), np.vstack(faces), slot, [], wall=0.0)  # solid wire
 
 
 def rotor(blades: int, r0: float, r1: float, chord: float, pitch: float, thickness: float, slot: str,
@@ -313,15 +313,29 @@ def latch(h: Head, angle: float, slot: str) -> tuple[list[g.Piece], Frame]:
     return on_axis([tab, hook], at), hinge
 
 
+PIN = (0.008, 0.012, 0.022, 0.01)  # m, an oscillation knob: stem and cap radius, height, pull (product photos)
+
+
+def osc_pin(h: Head, slot: str) -> tuple[list[g.Piece], Frame]:
+    """The oscillation knob on top of the motor housing: pulled up it stops the oscillation (it slides up)."""
+    stem, cap, height, _ = PIN
+    z = h.zm - 0.45 * h.lm
+    x0 = h.rm + GAP
+    pieces = [g.cylinder((x0, 0, z), (x0 + height - 0.006, 0, z), stem, slot, None),
+              g.revolve([(0, 0), (cap, 0), (cap, 0.004), (0.8 * cap, 0.006), (0, 0.006)], slot)
+              .transformed(Frame.at((x0 + height - 0.006, 0, z), z=(1, 0, 0), x=(0, 0, 1)).matrix)]
+    return on_axis(pieces, h.axis), h.axis @ Frame.at((x0, 0, z), z=(1, 0, 0), x=(0, 0, 1))
+
+
 # -- bodies ------------------------------------------------------------------------------------------------------
-DESK_BASE = (0.17, 0.24)  # m, width of a desk fan's base, across the listed models (depth 0.8 of it)
+DESK_BASE = (0.2, 0.26)  # m, width of a desk fan's base, across the listed models (depth 0.8 of it)
 DESK_BASE_H = 0.055  # m
 PEDESTAL_BASE = (0.2, 0.25)  # m, radius of a stand fan's round cast base (15.7-19.7 in bases)
 STEM_R = 0.016  # m, a desk fan's stem; a stand fan's lower tube 19 mm (its upper pole 14.5 mm)
 POLE_R = (0.019, 0.0145)
 POLE_TRAVEL = 0.25  # m, 10-12 in of height adjustment (the listings' 36-48 in)
 WEIGHT = {"desk": 0.6, "pedestal": 2.2}  # kg of steel or cast iron in the base (base-weight listings)
-POD = (0.09, 0.07, 0.1)  # m, a stand fan's control pod on its upper pole: width, depth, height
+POD = (0.09, 0.07, 0.125)  # m, a stand fan's control pod on its upper pole: width, depth, height
 
 
 def desk_base(x: float, width: float, slot: str, weight_slot: str) -> tuple[CasingSize, Frame, g.Piece]:
