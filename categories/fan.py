@@ -161,7 +161,7 @@ class FanLayout(controls.ControlFace):
         pieces, axis = F.neck(h, self._neck_low(h), "body")
         neck = self.add("neck", "neck", pieces)
         if node.kind == "oscillating":
-            self.hinge(parent, neck, axis, lower=-F.OSCILLATES, upper=F.OSCILLATES, role="swivel")
+            self.hinge(parent, neck, axis, upper=F.OSCILLATES, role="swivel")
         else:
             self.fix(parent, neck)
         head = self.grow(node.one("head"), neck=neck, h=h)

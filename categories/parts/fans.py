@@ -67,7 +67,7 @@ RINGS = 4  # concentric wire rings of a front grille
 LATCH = (0.034, 0.026, 0.008)  # m, a grille clip: length over the rim, width, thickness (~7 g of ABS)
 LATCH_OPENS = math.radians(100)
 TILT = math.radians(30)  # desk and stand fan heads tilt up 25-35 degrees (listings: "adjustable tilt")
-OSCILLATES = math.radians(40)  # each side of straight ahead: 80-90 degree oscillation (listings)
+OSCILLATES = math.radians(80)  # 80-90 degree oscillation (listings), from straight ahead (rest) to one side
 GAP = 0.002  # m, between a moving part and what it turns in or rests on
 
 
@@ -89,7 +89,12 @@ class Head:
 
     @property
     def chord(self) -> float:
-        return 0.55 * self.r
+        """A blade's widest chord: three broad paddles, five narrower ones (product photos)."""
+        return chord(self.r, self.blades)
+
+    @property
+    def badge(self) -> float:
+        return 0.16 * self.rg
 
     @property
     def pivot(self) -> np.ndarray:
@@ -97,11 +102,14 @@ class Head:
         return self.axis.point((-self.rm - 0.03, 0.0, self.zm - 0.35 * self.lm))
 
 
+def chord(r: float, blades: int) -> float:
+    return r * (1.6 / blades + 0.17)
+
+
 def head(design: str, r: float, blades: int, hub_z: float) -> Head:
     """A desk or pedestal fan head whose rotor axis is ``hub_z`` up, blade radius ``r``."""
     pitch = math.radians(DESIGNS[design].pitch)
-    chord = 0.55 * r
-    a = 0.5 * chord * math.sin(pitch) + 0.006
+    a = 0.5 * chord(r, blades) * math.sin(pitch) + 0.006
     rm = 0.05 + 0.12 * r
     lm = DESIGNS[design].motor / MOTOR_DENSITY / (math.pi * (0.6 * rm) ** 2) + 0.05
     zm = -a - 0.012 - 0.28 * r
@@ -223,13 +231,13 @@ def grille(h: Head, slot: str, badge_slot: str) -> list[g.Piece]:
     def rear(rr):
         return zr0 + (h.zm - zr0) * (1.0 - (rr / rg) ** 1.5)
 
-    rf, rb = np.linspace(0.045, rg, 7), np.linspace(rg, 0.8 * h.rm, 6)
+    rf, rb = np.linspace(h.badge, rg, 7), np.linspace(rg, 0.8 * h.rm, 6)
     prof = np.vstack([np.c_[rf, front(rf)], [(rg, 0.5 * (zr0 + zr1))], np.c_[rb, rear(rb)]])
     wires = []
     for k in range(spokes):
         th = 2 * math.pi * (k + 0.5) / spokes
         wires.append(g.tube(np.c_[prof[:, 0] * math.cos(th), prof[:, 0] * math.sin(th), prof[:, 1]], WIRE, slot))
-    for rr in np.linspace(0.045, rg, RINGS + 2)[1:-1]:
+    for rr in np.linspace(h.badge, rg, RINGS + 2)[1:-1]:
         wires.append(_ring(float(rr), float(front(rr)) + WIRE, WIRE, slot))
     for rr in np.linspace(0.8 * h.rm, rg, RINGS + 1)[1:-1]:
         wires.append(_ring(float(rr), float(rear(rr)) - WIRE, WIRE, slot))
@@ -241,7 +249,8 @@ def grille(h: Head, slot: str, badge_slot: str) -> list[g.Piece]:
                                                                     np.full(16, zr1 + 0.002)]])
     cage = merged(wires, slot).replace(convex=list(band.convex) + [lens])
     zb = front(0.0)
-    badge = g.revolve([(0, zb - 0.002), (0.045, zb - 0.002), (0.043, zb + 0.006), (0.0, zb + 0.008)], badge_slot)
+    rb = h.badge
+    badge = g.revolve([(0, zb - 0.002), (rb, zb - 0.002), (0.95 * rb, zb + 0.006), (0.0, zb + 0.008)], badge_slot)
     return on_axis([cage, badge], h.axis)
 
 
