@@ -116,6 +116,8 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "fan": ("Q212920", "http://www.wikidata.org/entity/Q212920 'home appliance' (OEWN 03533443-n 'household"
                        " appliance'; no verified item for fan: OEWN's 03276485-n 'electric fan' and its chain fan >"
                        " device have none, and an electric fan is sold and used as a household appliance)"),
+    "folding_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO; no verified item for"
+                                " folding chair)"),
 }
 
 LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released
