@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import math
 
-from infmob_usd import geometry as g
 from infmob_usd.category import Category, Same
 from infmob_usd.frames import Frame
 from infmob_usd.grammar import Grammar, Node
@@ -193,23 +192,12 @@ class FanLayout(controls.ControlFace):
 
     def box(self, node):
         r, side, blades = self._scale("box")
-        side = max(side, 2 * r + 0.06)
-        hub_z = side / 2 + 0.02
-        hole = r + F.TIP_CLEAR
-        stems = [(0.0, side / 2 - 0.05), (0.0, 0.05 - side / 2)][: 1 + (node.one("timer") is not None)]
-        frame = F.box_frame(side, hole, hub_z, "body", stems, KNOB.stem + 0.002)
-        grilles = [F.flat_grille(hole, x, hub_z, "grille", 5, 6) for x in (F.BOX_DEPTH / 2 - 0.004,
-                                                                       0.004 - F.BOX_DEPTH / 2)]
-        body = self.add("body", "body", frame + grilles + [F.carry_handle(side, hub_z, "body")])
-        axis = Frame.at((0, 0, hub_z), z=(1, 0, 0), x=(0, 0, 1))
-        pitch = math.radians(F.DESIGNS["box"].pitch)
-        blades_ = F.rotor(blades, 0.08, r, 0.6 * r, pitch, F.BLADE_T["box"], "blade")
-        hub = g.revolve([(0, -0.02), (0.07, -0.02), (0.07, 0.01), (0.04, 0.025), (0, 0.027)], "hub")
-        self.grow(node.one("rotor"), parent=body, pieces=F.on_axis(blades_ + [hub], axis), axis=axis)
-        top = hub_z + side / 2
-        self.grow(node.one("speed_knob"), parent=body, at=F.knob_mount((*stems[0], top)))
+        b = F.box_fan(r, side, blades, 1 + (node.one("timer") is not None), KNOB.stem)
+        body = self.add("body", "body", b.body)
+        self.grow(node.one("rotor"), parent=body, pieces=b.rotor, axis=b.axis)
+        self.grow(node.one("speed_knob"), parent=body, at=b.knobs[0])
         if node.one("timer"):
-            self.grow(node.one("timer"), parent=body, at=F.knob_mount((*stems[1], top)))
+            self.grow(node.one("timer"), parent=body, at=b.knobs[1])
 
     def timer(self, node, parent, at):
         self.place_dial(parent, "timer", KNOB, at)

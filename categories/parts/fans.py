@@ -453,6 +453,34 @@ def _x_axis_about(hub_z: float) -> np.ndarray:
     return (Frame.at((0, 0, hub_z), z=(1, 0, 0), x=(0, 0, 1)) @ Frame.at((0, 0, -hub_z))).matrix
 
 
+@dataclass(frozen=True)
+class BoxFan:
+    """A box fan's fixed pieces (frame, grilles, handle), its rotor's pieces and axis, its knobs' mounts."""
+
+    body: list
+    rotor: list
+    axis: Frame
+    knobs: list
+
+
+def box_fan(r: float, side: float, blades: int, knobs: int, stem: float) -> BoxFan:
+    """A box fan of blade radius ``r`` in a square at least ``side`` wide, ``knobs`` (1-2) knobs of ``stem``
+    radius on the top near its ends."""
+    side = max(side, 2 * r + 0.06)
+    hub_z = side / 2 + 0.02
+    hole = r + TIP_CLEAR
+    stems = [(0.0, side / 2 - 0.05), (0.0, 0.05 - side / 2)][:knobs]
+    frame = box_frame(side, hole, hub_z, "body", stems, stem + 0.002)
+    grilles = [flat_grille(hole, x, hub_z, "grille", 5, 6) for x in (BOX_DEPTH / 2 - 0.004, 0.004 - BOX_DEPTH / 2)]
+    axis = Frame.at((0, 0, hub_z), z=(1, 0, 0), x=(0, 0, 1))
+    pitch = math.radians(DESIGNS["box"].pitch)
+    blades_ = rotor(blades, 0.08, r, 0.6 * r, pitch, BLADE_T["box"], "blade")
+    hub = g.revolve([(0, -0.02), (0.07, -0.02), (0.07, 0.01), (0.04, 0.025), (0, 0.027)], "hub")
+    top = hub_z + side / 2
+    return BoxFan(frame + grilles + [carry_handle(side, hub_z, "body")], on_axis(blades_ + [hub], axis), axis,
+                  [knob_mount((*xy, top)) for xy in stems])
+
+
 def carry_handle(side: float, hub_z: float, slot: str) -> g.Piece:
     """The moulded carry handle on the box's top: a bar across (Y) on two posts."""
     z = hub_z + side / 2
