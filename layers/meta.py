@@ -125,6 +125,11 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
+    "fan": ("Q212920", "http://www.wikidata.org/entity/Q212920 'home appliance' (OEWN 03533443-n 'household"
+                       " appliance'; no verified item for fan: OEWN's 03276485-n 'electric fan' and its chain fan >"
+                       " device have none, and an electric fan is sold and used as a household appliance)"),
+    "folding_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO; no verified item for"
+                                " folding chair)"),
 }
 
 LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released
