@@ -1,7 +1,8 @@
 """Box: a board chest with a hasp, a corrugated carton with 2 or 4 flaps, a jewellery box or a shoe box.
 
 Designs (``design``): a chest's lid turns on two hinges at its back and may carry a hasp that hangs over a staple
-on the front: the hasp must be swung up before the lid opens (``requires_open``). A carton (a regular slotted
+on the front: the hasp must be swung up before the lid opens (``requires_open``); a chest may have a drop handle
+on each end that hangs flat and swings up to carry it. A carton (a regular slotted
 shipping box) closes with two flaps meeting in the middle or with four; each flap turns
 about its crease and folds right back against its wall. The four flaps of a four-flap carton close edge to
 edge in one layer (the end flaps half the depth deep, the front and back flaps between them): each opens on its
@@ -17,6 +18,7 @@ from infmob_usd import joints as J
 from infmob_usd import lift_off
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
+from infmob_usd.materials.palettes import furniture
 from infmob_usd.params import Choice, Float
 
 from .parts import boxes as B
@@ -24,7 +26,9 @@ from .parts import boxes as B
 GRAMMAR = Grammar("box", {
     "box": Node(label="body", one_of={"chest": 0.3, "carton": 0.3, "jewellery": 0.2, "shoe_box": 0.2},
                 choice="design"),
-    "chest": Node(required=("lid",)),
+    "chest": Node(required=("lid",), optional={"handles": 0.5}),
+    "handles": Node(repeat={"handle": 2}),
+    "handle": Node(label="handle"),
     "carton": Node(one_of={"two_flaps": 0.4, "four_flaps": 0.6}, choice="flaps"),
     "two_flaps": Node(repeat={"flap": 2}),
     "four_flaps": Node(repeat={"flap": 4}),
@@ -37,7 +41,8 @@ GRAMMAR = Grammar("box", {
     "tray": Node(label="tray"),
     "shoe_lid": Node(label="lid"),
 })
-"""Designs: chest (a hinged lid, maybe a hasp), carton (2 flaps, or 4 meeting edge to edge), jewellery box (a
+"""Designs: chest (a hinged lid, maybe a hasp, maybe two drop handles on its ends), carton (2 flaps, or 4
+meeting edge to edge), jewellery box (a
 hinged lid with a mirror, maybe a clasp; a drawer; a lift-out tray), shoe box (a lift-off lid)."""
 
 PARAMS = (
@@ -73,6 +78,17 @@ class BoxLayout(Layout):
 
     def chest(self, node, body):
         self.grow(node.one("lid"), body=body, mirror=False)
+        if node.one("handles"):
+            self.grow(node.one("handles"), body=body)
+
+    def handles(self, node, body):
+        for kid, side in zip(node.of("handle"), ("left", "right")):
+            self.grow(kid, body=body, side=side)
+
+    def handle(self, node, body, side):
+        made = B.drop_handle(B.hasp_scale(self.size), "metal").attached("mount", to=body.anchor(f"handle_{side}"))
+        self.place(made, f"handle_{side}")
+        self.hinge("body", f"handle_{side}", made.anchor("pivot"), upper=B.DROP_TURNS)
 
     def carton(self, node, body):
         self.grow(node.one(node.choice), body=body)
@@ -134,4 +150,4 @@ class BoxLayout(Layout):
 
 
 CATEGORY = Category("box", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, BoxLayout, MATERIALS,
-                    substrates=SUBSTRATES)
+                    substrates=SUBSTRATES, palette=furniture)

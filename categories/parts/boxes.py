@@ -53,6 +53,11 @@ LID_OPENS = math.radians(105)  # a chest or jewellery-box lid on its hinges' sto
 # with the chest (a keepsake box carries a 40 mm hasp).
 HASP = dict(length=0.075, width=0.028, thickness=0.002, slot=(0.016, 0.009), wire=0.0018, knuckle=0.0035)
 HASP_TURNS = math.radians(170)  # a hasp swings up over its knuckle until it meets the lid
+# Chest drop handles (cast or pressed steel, hardware store listings): a 100-140 mm bail of 6-8 mm rod hanging
+# 45-60 mm from two lugs on a back plate, swinging up past horizontal; at 75 % of the wall height. Scaled as
+# the hasp.
+DROP = dict(length=0.13, drop=0.05, rod=0.0035, plate=(0.16, 0.03, 0.003), lug=0.006, at=0.72)
+DROP_TURNS = math.radians(110)
 FLAP_OPENS = math.radians(270)  # a creased flap folds right back against its wall
 FLAP_CLEARANCE = 0.0015  # m, a minor flap's ends clear of the major walls it folds in between
 # Jewellery box: the drawer takes the lower 40 % of the walls, the tray the top 40 % of the well above it
@@ -138,7 +143,37 @@ def chest(s: BoxSize, material: str, metal: str) -> Assembly:
     a, w = k * HASP["slot"][0] / 2 - 0.003, k * HASP["wire"]
     pieces.append(g.tube([(x1 - 0.002, -a, zc), (x1 + reach, -a, zc), (x1 + reach, a, zc), (x1 - 0.002, a, zc)],
                          w, metal))
-    return Assembly.single("body", pieces, _rim_anchors(s), _supports(s))
+    anchors = _rim_anchors(s)
+    for side, y in (("left", y1), ("right", y0)):
+        face = Frame.at((0, y, DROP["at"] * s.height), z=(0, math.copysign(1, y), 0), x=(math.copysign(1, y), 0, 0))
+        pieces += drop_plate(k, metal, face)
+        anchors[f"handle_{side}"] = face.moved(dz=DROP["plate"][2] + DROP["lug"] * k)
+    return Assembly.single("body", pieces, anchors, _supports(s))
+
+
+def drop_plate(k: float, metal: str, face: Frame) -> list[g.Piece]:
+    """A drop handle's back plate with its two lugs on a face (``face``: z out of it, x along the pivot, y down),
+    :data:`DROP` scaled by ``k``."""
+    (pl, pw, pt), lug, a = (k * v for v in DROP["plate"]), k * DROP["lug"], k * DROP["length"] / 2
+    pieces = [g.box_between((-pl / 2, -pw / 2, 0), (pl / 2, pw / 2, pt), metal, bevel=0.3 * pt)]
+    pieces += [g.box_between((x - lug / 2, -lug / 2, pt), (x + lug / 2, lug / 2, pt + 2 * lug), metal, bevel=0.001)
+               for x in (-a - lug, a + lug)]
+    return [pc.transformed(face.matrix) for pc in pieces]
+
+
+def drop_handle(k: float, metal: str) -> Assembly:
+    """A drop handle's bail hanging from its pivot line (anchor ``pivot``: the line between the lugs, z along
+    it; the bail hangs along local y, clear of the face behind it along -z): a positive turn swings it up
+    and out."""
+    a, drop, rod = k * DROP["length"] / 2, k * DROP["drop"], k * DROP["rod"]
+    n = 9
+    arc = [(a * math.cos(math.pi * i / (n - 1)), drop - 0.35 * drop * (1 - math.sin(math.pi * i / (n - 1))), 0)
+           for i in range(n)]
+    path = [(a + 0.5 * k * DROP["lug"], 0, 0), (a, 0.15 * drop, 0), *arc[1:-1], (-a, 0.15 * drop, 0),
+            (-a - 0.5 * k * DROP["lug"], 0, 0)]
+    piece = g.tube(path, rod, metal, name="handle")
+    return Assembly.single("handle", [piece], {"pivot": Frame.at((0, 0, 0), x=(0, 1, 0), z=(1, 0, 0)),
+                                               "mount": Frame.at((0, 0, 0))})
 
 
 def hasp_drop(s: BoxSize) -> float:
