@@ -42,8 +42,8 @@ GRAMMAR = Grammar("box", {
     "shoe_lid": Node(label="lid"),
 })
 """Designs: chest (a hinged lid, maybe a hasp, maybe two drop handles on its ends), carton (2 flaps, or 4
-meeting edge to edge), jewellery box (a
-hinged lid with a mirror, maybe a clasp; a drawer; a lift-out tray), shoe box (a lift-off lid)."""
+meeting edge to edge), jewellery box (a hinged lid with a mirror, maybe a clasp; a drawer; a lift-out tray), shoe
+box (a lift-off lid)."""
 
 PARAMS = (
     Float("width_share", "width (Y, the long side) within the design's range (SIZES in parts/boxes.py), 0 to 1",
