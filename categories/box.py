@@ -7,8 +7,9 @@ shipping box) closes with two flaps meeting in the middle or with four; each fla
 about its crease and folds right back against its wall. The four flaps of a four-flap carton close edge to
 edge in one layer (the end flaps half the depth deep, the front and back flaps between them): each opens on its
 own, where a regular slotted container's end flaps lie under both long flaps. A jewellery box has a lid with a
-mirror under it, a drawer below the well and a tray that lifts out of the well once the lid is open (role
-``lift_off``). A shoe box's lid lifts off its base (role ``lift_off``, guided by its skirt). Parts:
+mirror under it, one or two drawers below the well and a tray that lifts out of the well once the lid is open (role
+``lift_off``). A shoe box's lid lifts off its base (role ``lift_off``, guided by its skirt), or, on a one-piece
+box, is creased to the base's back wall and turns up. Parts:
 ``categories/parts/boxes.py``.
 """
 
@@ -32,18 +33,19 @@ GRAMMAR = Grammar("box", {
     "carton": Node(one_of={"two_flaps": 0.4, "four_flaps": 0.6}, choice="flaps"),
     "two_flaps": Node(repeat={"flap": 2}),
     "four_flaps": Node(repeat={"flap": 4}),
-    "jewellery": Node(required=("lid", "drawer", "tray")),
-    "shoe_box": Node(required=("shoe_lid",)),
+    "jewellery": Node(required=("lid", "tray"), repeat={"drawer": (1, 2)}),
+    "shoe_box": Node(one_of={"shoe_lid": 0.6, "box_lid": 0.4}, choice="shoe_closure"),
     "lid": Node(label="lid", optional={"latch": 0.7}),
     "latch": Node(label="latch"),
     "flap": Node(label="flap"),
     "drawer": Node(label="drawer"),
     "tray": Node(label="tray"),
     "shoe_lid": Node(label="lid"),
+    "box_lid": Node(label="lid"),
 })
 """Designs: chest (a hinged lid, maybe a hasp, maybe two drop handles on its ends), carton (2 flaps, or 4
-meeting edge to edge), jewellery box (a hinged lid with a mirror, maybe a clasp; a drawer; a lift-out tray), shoe
-box (a lift-off lid)."""
+meeting edge to edge), jewellery box (a hinged lid with a mirror, maybe a clasp; 1-2 drawers; a lift-out tray), shoe
+box (a lift-off lid, or a one-piece box's lid hinged at the back)."""
 
 PARAMS = (
     Float("width_share", "width (Y, the long side) within the design's range (SIZES in parts/boxes.py), 0 to 1",
@@ -71,7 +73,8 @@ class BoxLayout(Layout):
         p, design = self.p, node.choice
         self.size = B.BoxSize.of(design, p["width_share"], p["depth_share"], p["height_share"])
         self.slot = SLOT[design]
-        made = {"chest": B.chest, "jewellery": lambda s, m, k: B.jewellery_box(s, m, k, "lining"),
+        self.drawers = len(node.one(design).of("drawer")) if design == "jewellery" else 0
+        made = {"chest": B.chest, "jewellery": lambda s, m, k: B.jewellery_box(s, m, k, "lining", self.drawers),
                 "carton": lambda s, m, k: B.carton(s, m), "shoe_box": lambda s, m, k: B.shoe_box(s, m)}
         body = self.place(made[design](self.size, self.slot, "metal"), "body")
         self.grow(node.one(design), body=body)
@@ -123,25 +126,31 @@ class BoxLayout(Layout):
 
     def jewellery(self, node, body):
         self.grow(node.one("lid"), body=body)
-        for kind in ("drawer", "tray"):
-            self.grow(node.one(kind), body=body)
+        for k, kid in enumerate(node.of("drawer")):
+            self.grow(kid, body=body, k=k)
+        self.grow(node.one("tray"), body=body)
 
-    def drawer(self, node, body):
-        at = body.anchor("drawer")
-        made = self.place(B.jewellery_drawer(self.size, self.slot, "metal", "lining").attached("slide", to=at),
-                          "drawer")
+    def drawer(self, node, body, k):
+        at, n = body.anchor(f"drawer_{k}"), self.drawers
+        made = B.jewellery_drawer(self.size, self.slot, "metal", "lining", n).attached("slide", to=at)
+        self.place(made, f"drawer_{k}")
         depth = self.size.depth - 2 * self.size.board
-        self.slide("body", "drawer", made.anchor("slide"), upper=B.JEWEL["pull"] * depth)
+        self.slide("body", f"drawer_{k}", at, upper=B.JEWEL["pull"] * depth)
 
     def tray(self, node, body):
         at = body.anchor("tray_seat")
-        self.place(B.jewellery_tray(self.size, self.slot, "lining").attached("seat", to=at), "tray")
-        seat = B.tray_height(self.size)  # it lifts free once clear of the well
+        self.place(B.jewellery_tray(self.size, self.slot, "lining", self.drawers).attached("seat", to=at), "tray")
+        seat = B.tray_height(self.size, self.drawers)  # it lifts free once clear of the well
         self.join(J.prismatic("body", "tray", tuple(at.origin), tuple(at.z), 0.0, lift_off.lift(seat),
                               "lift_off", requires_open="lid", engagement=seat))
 
     def shoe_box(self, node, body):
-        self.grow(node.one("shoe_lid"), body=body)
+        self.grow(node.one(node.choice), body=body)
+
+    def box_lid(self, node, body):
+        at = body.anchor("hinge")
+        self.place(B.shoe_lid(self.size, self.slot, hinged=True).attached("hinge", to=at), "lid")
+        self.hinge("body", "lid", at, upper=B.LID_OPENS, role="lid")
 
     def shoe_lid(self, node, body):
         at = body.anchor("lid_seat")

@@ -60,9 +60,9 @@ DROP = dict(length=0.13, drop=0.05, rod=0.0035, plate=(0.16, 0.03, 0.003), lug=0
 DROP_TURNS = math.radians(110)
 FLAP_OPENS = math.radians(270)  # a creased flap folds right back against its wall
 FLAP_CLEARANCE = 0.0015  # m, a minor flap's ends clear of the major walls it folds in between
-# Jewellery box: the drawer takes the lower 40 % of the walls, the tray the top 40 % of the well above it
-# (tray 25-40 mm deep on two ledges); a 12 mm knob; the drawer pulls out 80 % of its depth.
-JEWEL = dict(drawer=0.4, tray=0.42, clearance=0.0015, ledge=0.006, lining=0.002, knob=(0.007, 0.014), pull=0.8)
+# Jewellery box: one drawer takes the lower 40 % of the walls (two, one over the other, 54 %), the tray the top
+# 42 % of the well above it (tray 25-40 mm deep on two ledges); a 12 mm knob; the drawer pulls out 80 % of its depth.
+JEWEL = dict(drawer=(0.4, 0.54), tray=0.42, clearance=0.0015, ledge=0.006, lining=0.002, knob=(0.007, 0.014), pull=0.8)
 # A shoe box lid: a 30-50 mm skirt over the base, 1.5 mm clear of it all round (Nike, Adidas boxes).
 SHOE_LID = dict(skirt=0.38, clearance=0.0015)
 
@@ -270,33 +270,47 @@ def flap(length: float, reach: float, board: float, material: str) -> Assembly:
     return Assembly.single("flap", [piece], {"crease": Frame.at((0, 0, 0), x=(1, 0, 0), z=(0, -1, 0))})
 
 
-def jewellery_box(s: BoxSize, material: str, metal: str, lining: str) -> Assembly:
-    """A jewellery box: a drawer bay in the lower :data:`JEWEL` ``drawer`` share of the walls (open at the
-    front), a lined well above it with a ledge on each side for the tray, hinge barrels at the back.
-    Anchors: ``hinge``, ``drawer`` (the bay's front centre, z out of it), ``tray_seat`` (the tray's bottom
-    on the ledges, z up), ``floor``, ``lid_seat``."""
+def bay(s: BoxSize, drawers: int) -> float:
+    """m, the top of a jewellery box's drawer bay (:data:`JEWEL` ``drawer``, by the number of drawers)."""
+    return JEWEL["drawer"][drawers - 1] * s.height
+
+
+def slot_height(s: BoxSize, drawers: int) -> float:
+    """m, the opening of each of ``drawers`` drawers, one over the other with a board between."""
+    return (bay(s, drawers) - drawers * s.board) / drawers
+
+
+def jewellery_box(s: BoxSize, material: str, metal: str, lining: str, drawers: int = 1) -> Assembly:
+    """A jewellery box: a bay of one or two ``drawers`` in the lower :data:`JEWEL` ``drawer`` share of the walls
+    (open at the front), a lined well above it with a ledge on each side for the tray, hinge barrels at the back.
+    Anchors: ``hinge``, ``drawer_0``, ``drawer_1`` ... (each opening's front centre, z out of it, from the
+    bottom), ``tray_seat`` (the tray's bottom on the ledges, z up), ``floor``, ``lid_seat``."""
     t, c = s.board, JEWEL["clearance"]
     x0, x1, y0, y1 = -s.depth / 2, s.depth / 2, -s.width / 2, s.width / 2
-    zb = JEWEL["drawer"] * s.height  # the bay's top: the well's floor board sits on it
+    zb = bay(s, drawers)  # the bay's top: the well's floor board sits on it
     pieces = _walls(s, material, bevel=0.2 * t, front_from=zb)
+    hs = slot_height(s, drawers)
+    pieces += [g.box_between((x0 + t, y0 + t, t + k * (hs + t) + hs), (x1, y1 - t, (k + 1) * (hs + t) + t), material)
+               for k in range(drawers - 1)]  # the boards between the drawers
     pieces.append(g.box_between((x0 + t, y0 + t, zb), (x1, y1 - t, zb + t), material))  # the well's floor
     pieces.append(g.box_between((x0 + t, y0 + t, zb + t), (x1 - t, y1 - t, zb + t + JEWEL["lining"]), lining))
-    zl = s.height - tray_height(s) - c - 0.002  # the ledges' top: the tray stands 2 mm below the rim
+    zl = s.height - tray_height(s, drawers) - c - 0.002  # the ledges' top: the tray stands 2 mm below the rim
     led = JEWEL["ledge"]
     for side in (-1, 1):
         ya, yb = sorted((side * (s.width / 2 - t), side * (s.width / 2 - t - led)))
         pieces.append(g.box_between((x0 + t, ya, zl - led), (x1 - t, yb, zl), material))
     pieces += _back_hinges(s, metal)
-    anchors = {**_rim_anchors(s), "drawer": Frame.at((x1, 0, (t + zb) / 2), z=(1, 0, 0), x=(0, 0, 1)),
-               "tray_seat": Frame.at((0, 0, zl + c))}
+    anchors = {**_rim_anchors(s), "tray_seat": Frame.at((0, 0, zl + c))}
+    for k in range(drawers):
+        anchors[f"drawer_{k}"] = Frame.at((x1, 0, t + k * (hs + t) + hs / 2), z=(1, 0, 0), x=(0, 0, 1))
     return Assembly.single("body", pieces, anchors, _supports(s))
 
 
-def jewellery_drawer(s: BoxSize, material: str, metal: str, lining: str) -> Assembly:
+def jewellery_drawer(s: BoxSize, material: str, metal: str, lining: str, drawers: int = 1) -> Assembly:
     """The drawer of :func:`jewellery_box`'s bay, lined, with a knob on its front (anchor ``slide``: the
     front's centre, z out of it)."""
     t, c = s.board, JEWEL["clearance"]
-    h = JEWEL["drawer"] * s.height - t - 2 * c
+    h = slot_height(s, drawers) - 2 * c
     w, d = s.width - 2 * t - 2 * c, s.depth - 2 * t - c
     made = panels.drawer_box(w, h, d, t, 0.6 * t, material)
     pieces = [*made.pieces, g.box_between((-d + 0.6 * t, -w / 2 + 0.6 * t, -h / 2 + 0.008),
@@ -305,11 +319,11 @@ def jewellery_drawer(s: BoxSize, material: str, metal: str, lining: str) -> Asse
     return Assembly.single("drawer", pieces, {"slide": made.anchor("slide")})
 
 
-def jewellery_tray(s: BoxSize, material: str, lining: str) -> Assembly:
+def jewellery_tray(s: BoxSize, material: str, lining: str, drawers: int = 1) -> Assembly:
     """A lift-out tray for the well of :func:`jewellery_box`, lined, with two cross dividers making three
     compartments (anchor ``seat``: its bottom's centre, z up)."""
     t, c = s.board, JEWEL["clearance"]
-    h = tray_height(s)
+    h = tray_height(s, drawers)
     w, d, wt = s.width - 2 * t - 2 * c, s.depth - 2 * t - 2 * c, 0.6 * t
     x0, x1, y0, y1 = -d / 2, d / 2, -w / 2, w / 2
     pieces = [g.box_between((x0, y0, 0), (x1, y1, wt), material),
@@ -323,31 +337,37 @@ def jewellery_tray(s: BoxSize, material: str, lining: str) -> Assembly:
     return Assembly.single("tray", pieces, {"seat": Frame.at((0, 0, 0))})
 
 
-def tray_height(s: BoxSize) -> float:
+def tray_height(s: BoxSize, drawers: int = 1) -> float:
     """m, a jewellery box's tray: :data:`JEWEL` ``tray`` of the well above the drawer bay."""
-    return JEWEL["tray"] * (s.height - JEWEL["drawer"] * s.height - s.board)
+    return JEWEL["tray"] * (s.height - bay(s, drawers) - s.board)
 
 
 def shoe_box(s: BoxSize, material: str) -> Assembly:
     """A shoe box's base: thin board walls open at the top (anchors ``lid_seat``: the rim's centre, z up;
-    ``floor``)."""
+    ``hinge``: the back rim, for a one-piece box's lid; ``floor``)."""
     pieces = _walls(s, material, bevel=0.4 * s.board)
-    return Assembly.single("body", pieces, {"lid_seat": Frame.at((0, 0, s.height)), "floor": Frame.at((0, 0, s.board))},
-                           _supports(s))
+    return Assembly.single("body", pieces, _rim_anchors(s), _supports(s))
 
 
-def shoe_lid(s: BoxSize, material: str) -> Assembly:
+def shoe_lid(s: BoxSize, material: str, hinged: bool = False) -> Assembly:
     """A shoe box's lid: a top over the base's rim and a skirt :data:`SHOE_LID` ``skirt`` of the base's height
-    down round it (anchor ``seat``: the top's underside centre, z up). Grasped at its edge."""
+    down round it (anchor ``seat``: the top's underside centre, z up). Grasped at its edge. ``hinged``: a
+    one-piece box's lid, creased to the base's back wall (no back skirt; anchor ``hinge`` on the crease, as the
+    base's)."""
     t, c = s.board, SHOE_LID["clearance"]
     hx, hy, skirt = s.depth / 2 + c + t, s.width / 2 + c + t, SHOE_LID["skirt"] * s.height
+    xb = -s.depth / 2 if hinged else -hx
     b = 0.4 * t
-    pieces = [g.box_between((-hx, -hy, 0), (hx, hy, t), material, bevel=b),
-              g.box_between((-hx, -hy, -skirt), (-hx + t, hy, 0), material, bevel=b),
+    pieces = [g.box_between((xb, -hy, 0), (hx, hy, t), material, bevel=b),
               g.box_between((hx - t, -hy, -skirt), (hx, hy, 0), material, bevel=b),
-              g.box_between((-hx + t, -hy, -skirt), (hx - t, -hy + t, 0), material, bevel=b),
-              g.box_between((-hx + t, hy - t, -skirt), (hx - t, hy, 0), material, bevel=b)]
-    return lids.rimmed(Assembly.single("lid", pieces, {"seat": Frame.at((0, 0, 0)), "top": Frame.at((0, 0, t))}))
+              g.box_between((xb + t, -hy, -skirt), (hx - t, -hy + t, 0), material, bevel=b),
+              g.box_between((xb + t, hy - t, -skirt), (hx - t, hy, 0), material, bevel=b)]
+    anchors = {"seat": Frame.at((0, 0, 0)), "top": Frame.at((0, 0, t))}
+    if hinged:
+        anchors["hinge"] = Frame.at((xb, 0, 0), x=(1, 0, 0), z=(0, -1, 0))
+    else:
+        pieces.append(g.box_between((-hx, -hy, -skirt), (-hx + t, hy, 0), material, bevel=b))
+    return lids.rimmed(Assembly.single("lid", pieces, anchors))
 
 
 def skirt(s: BoxSize) -> float:
