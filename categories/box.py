@@ -59,7 +59,7 @@ PARAMS = (
 )
 
 MATERIALS = {"body": "finish", "metal": "hardware", "lining": "fabric:burgundy|navy|cream|charcoal|teal|olive",
-             "mirror": "chrome", "carton": "cardboard:kraft|kraft|kraft_light|white_top",
+             "mirror": "chrome", "carton": "cardboard:kraft|kraft_light",
              "shoebox": "cardboard:white_top|black|orange|blue|kraft"}
 # A shoe box is folding boxboard or E-flute, not C-flute: a men's box (~0.3 m^2 of 1.8 mm board) weighs
 # 0.25-0.3 kg, ~500 kg/m^3 (greyboard 700-800, E-flute ~300).
