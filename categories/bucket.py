@@ -4,7 +4,8 @@ Designs (``design``): a pail (moulded plastic or galvanised steel, tapered) carr
 on two ears under its rim: the bail lies back against the wall and swings over the top to the front. A paint can
 (straight tinplate or a slightly tapered plastic pail, with a printed label) has the same bail and a lid pressed
 into its rim that lifts off (role ``lift_off``, guided by its plug ring). A commercial mop bucket has a down-press
-wringer over the back of its tub whose lever is pressed forward and down and springs back (role ``lever``); it
+wringer over the back of its tub whose lever is pressed forward and down and springs back (role ``lever``),
+driving the wringer's press plate forward against the mop (a coupled joint, ``Layout.couple``); it
 usually stands on four swivel casters. Parts: ``categories/parts/buckets.py``.
 """
 
@@ -24,13 +25,14 @@ GRAMMAR = Grammar("bucket", {
     "mop_bucket": Node(required=("lever",), optional={"casters": 0.75}),
     "bail": Node(label="handle"),
     "lid": Node(label="lid"),
-    "lever": Node(label="lever"),
+    "lever": Node(label="lever", required=("press",)),
+    "press": Node(label="press"),
     "casters": Node(repeat={"caster": 4}),
     "caster": Node(label="caster", required=("wheel",)),
     "wheel": Node(label="wheel"),
 })
-"""Designs: pail (a bail), paint can (a lift-off lid and a bail), mop bucket (a wringer lever, maybe on four
-casters)."""
+"""Designs: pail (a bail), paint can (a lift-off lid and a bail), mop bucket (a wringer lever driving a press plate,
+maybe on four casters)."""
 
 PARAMS = (
     Float("size", "size within the design's range (ROUND / MOP in parts/buckets.py): the top diameter, or a mop"
@@ -96,6 +98,14 @@ class BucketLayout(Layout):
         at = body.anchor("lever")
         self.place(B.mop_lever(self.mop, "lever", "grip").attached("pivot", to=at), "lever")
         self.hinge("body", "lever", at, upper=B.LEVER_PRESS, role="lever")
+        self.grow(node.one("press"), body=body)
+
+    def press(self, node, body):
+        at = body.anchor("press")
+        self.place(B.press_plate(self.mop, "wringer").attached("slide", to=at), "press")
+        travel = B.press_travel(self.mop)
+        self.slide("body", "press", at, upper=travel)
+        self.couple("press", "lever", ratio=travel / B.LEVER_PRESS)  # the lever drives the plate
 
     def casters(self, node, body):
         for i, kid in enumerate(node.of("caster")):

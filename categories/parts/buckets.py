@@ -150,13 +150,14 @@ MOP = dict(depth=(0.40, 0.55), width=(0.33, 0.40), height=(0.30, 0.36), wall=0.0
            lip=0.008, wringer=(0.4, 0.12, 0.14), wringer_wall=0.006, lever=(0.4, 0.016, 0.14, 0.017),
            lever_rest=math.radians(78), caster=0.038)
 LEVER_PRESS = math.radians(55)
+PRESS = dict(thickness=0.008, clearance=0.004, squeeze=0.05)  # the press plate; a wrung mop head is ~5 cm thick
 
 
 def mop_tub(s: MopSize, material: str, wringer: str) -> Assembly:
     """A mop bucket's tub from ``s.raised`` up, its edges rounded, a lip round its rim, and its wringer box over
-    the back (fixed: its press plate is not a part). Anchors: ``lever`` (the wringer's back top edge, z along +y: a
-    positive turn presses the lever forward and down), ``tip_0`` ... ``tip_3`` (where the casters go, z up,
-    at the ground), ``floor``."""
+    the back. Anchors: ``lever`` (the wringer's back top edge, z along +y: a positive turn presses the lever
+    forward and down), ``press`` (the press plate's back face at rest, z to the front: the way it squeezes),
+    ``tip_0`` ... ``tip_3`` (where the casters go, z up, at the ground), ``floor``."""
     t, b, z0 = MOP["wall"], MOP["bevel"], s.raised
     x0, x1, y0, y1, z1 = -s.depth / 2, s.depth / 2, -s.width / 2, s.width / 2, s.raised + s.height
     pieces = [g.box_between((x0, y0, z0), (x1, y1, z0 + t), material, bevel=b),
@@ -177,10 +178,12 @@ def mop_tub(s: MopSize, material: str, wringer: str) -> Assembly:
                g.box_between((x0 + t, y1 - t - w, za), (xw, y1 - t, zb), wringer, bevel=0.002),
                g.box_between((xw - w, y0 + t + w, za), (xw, y1 - t - w, zb), wringer, bevel=0.002),
                g.box_between((x0 - 0.01, y0 + t, zb - 0.03), (x0 + t, y1 - t, zb), wringer, bevel=0.002)]
+    c = PRESS["clearance"]
+    press = Frame.at((x0 + t + c, 0, (za + zb) / 2), z=(1, 0, 0), x=(0, 0, 1))
     k = MOP["caster"] * 1.3  # the casters' footprint in from the corners
     pivot = zb + 0.6 * MOP["lever"][1] + 0.003  # the lever's pivot rod clear over the wringer's back bar
     anchors = {"lever": Frame.at((x0 - 0.01, 0, pivot), x=(-1, 0, 0), z=(0, 1, 0)),
-               "floor": Frame.at((0, 0, z0 + t))}
+               "floor": Frame.at((0, 0, z0 + t)), "press": press}
     for i, (x, y) in enumerate(((x0 + k, y0 + k), (x0 + k, y1 - k), (x1 - k, y0 + k), (x1 - k, y1 - k))):
         anchors[f"tip_{i}"] = Frame.at((x, y, 0))
     return Assembly.single("body", pieces, anchors)
@@ -199,3 +202,21 @@ def mop_lever(s: MopSize, material: str, grip: str) -> Assembly:
     up = Frame.at((0, 0, 0)).turned("y", -(math.pi - MOP["lever_rest"]))  # from +x round over the top to the back
     pieces = [pc.transformed(up.matrix) for pc in pieces]
     return Assembly.single("lever", pieces, {"pivot": Frame.at((0, 0, 0), x=(-1, 0, 0), z=(0, 1, 0))})
+
+
+def press_plate(s: MopSize, material: str) -> Assembly:
+    """The wringer's press plate, across the wringer box at its back (anchor ``slide``: its back face's centre, z to
+    the front, as the tub's ``press``): the lever drives it forward against the box's front wall."""
+    share, above, below = MOP["wringer"]
+    c, th = PRESS["clearance"], PRESS["thickness"]
+    half = s.width / 2 - MOP["wall"] - MOP["wringer_wall"] - c
+    h = (above + below) / 2 - 2 * c
+    piece = g.box_between((0, -half, -h), (th, half, h), material, bevel=0.002)
+    return Assembly.single("press", [piece], {"slide": Frame.at((0, 0, 0), z=(1, 0, 0), x=(0, 0, 1))})
+
+
+def press_travel(s: MopSize) -> float:
+    """m, how far the press plate goes: to a wrung mop head's thickness from the wringer's front wall."""
+    share = MOP["wringer"][0]
+    return share * s.depth - MOP["wall"] - MOP["wringer_wall"] - 2 * PRESS["clearance"] - PRESS["thickness"] \
+        - PRESS["squeeze"]
