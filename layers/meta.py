@@ -122,6 +122,10 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                                  " has none, its hypernym mill has this one)"),
     "printer": ("Q82", "http://www.wikidata.org/entity/Q82 'printer' (OEWN 04011143-n 'an output device that"
                        " prints the results of data processing')"),
+    "box": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item for"
+                       " box, chest or carton: a box is a container, the nearest verified item)"),
+    "bucket": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item"
+                          " for bucket or pail: a bucket is a container, the nearest verified item)"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
