@@ -35,10 +35,11 @@ KINDS: dict[str, tuple[str, ...]] = {
 """Each kind and the simple DoF chain it expands to, parent side first."""
 
 ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "telescope", "wheel", "lid",
-         "lift_off", "plate", "grate", "lever", "plunger", "self_closing", "pedal_lid", "default")
+         "lift_off", "plate", "grate", "lever", "plunger", "self_closing", "pedal_lid", "toggle", "default")
 """Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``) and, for
 the spring-returned roles (button, lever, plunger, self-closing hinge, pedal-driven lid), its return
-spring (:data:`infmob_usd.springs.SPRINGS`)."""
+spring (:data:`infmob_usd.springs.SPRINGS`). ``toggle``: a bistable switch part (a toggle's bat, a rocker) that
+a fingertip flips or presses and that stays where it is set (no return spring)."""
 
 
 @dataclass(frozen=True)
