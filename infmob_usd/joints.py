@@ -39,7 +39,7 @@ ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "te
 """Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``) and, for
 the spring-returned roles (button, lever, plunger, self-closing hinge, pedal-driven lid), its return
 spring (:data:`infmob_usd.springs.SPRINGS`). ``toggle``: a bistable switch part (a toggle's bat, a rocker) that
-a fingertip flips or presses and that stays where it is set (no return spring)."""
+a fingertip flips or presses, with no return spring (its joint friction holds it where it is set)."""
 
 
 @dataclass(frozen=True)

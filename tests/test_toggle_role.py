@@ -1,5 +1,5 @@
 """The ``toggle`` joint role: a switch's bat or rocker, flipped or pressed by a fingertip, that stays where it is
-set (no return spring) and drives like a button."""
+set by its friction (no return spring) and drives like a button."""
 
 from __future__ import annotations
 
