@@ -1,5 +1,5 @@
-"""The ``toggle`` joint role: a switch's bat or rocker, flipped or pressed by a fingertip, that stays where it is
-set by its friction (no return spring) and drives like a button."""
+"""The ``toggle`` joint role: a switch's bat or rocker, flipped or pressed by a fingertip, held where it is set by
+its friction (no return spring), driven like a button."""
 
 from __future__ import annotations
 
@@ -20,6 +20,6 @@ def test_a_toggle_is_pressed_and_has_no_return_spring():
     assert action(bat) == "press"
     tip = np.array([[0.02, 0.0, 0.04], [0.0, 0.0, 0.05]])
     assert part_class(bat, "toggle", tip, spec.dofs[0].origin, False) == "hinge_knob"
-    assert "toggle" not in SPRINGS  # bistable: it stays flipped
+    assert "toggle" not in SPRINGS  # bistable: no spring pulls it back to rest
     assert dynamics("toggle") is DYNAMICS["toggle"]
     assert effort.role("toggle") is effort.ROLES["toggle"] is not effort.ROLES["default"]
