@@ -111,6 +111,7 @@ ROLES: dict[str, Role] = {
     "button": Role(20.0, 10.0, 0.05, "buttons: pressed with many times their weight, ~5 cm/s"),
     "turntable": Role(0.5, 5.0, 0.3, "turntable plates: turned by a motor, gently"),
     "swivel": Role(1.0, 30.0, 0.5, "lamp heads, arms, tilting screens: positioned by hand"),
+    "holding": Role(1.0, 60.0, 1.0, "laptop lids, monitor tilts and stands: positioned by hand, held where put"),
     "telescope": Role(1.0, 60.0, 0.3, "sliding poles and lifts: raised against their weight"),
     "wheel": Role(0.5, 20.0, 2.0, "wheels and casters: rolled, not pushed"),
     "lid": Role(1.0, 20.0, 0.5, "hinged and screw lids, caps: lifted or turned by hand"),
@@ -280,6 +281,29 @@ def drive(obj, j, free: float | None = None) -> Drive:
                  a_gravity, a_stop)
 
 
+HOLD_MARGIN = 1.3
+"""A ``holding`` joint's friction over the largest load gravity puts on it: friction (constant-torque) hinges are
+specified 20-50 % above the load torque so that a lid or a screen stays at any angle (Southco and Reell position
+control hinge selection guides); 1.3 within that."""
+
+
+def holding(obj, j) -> float:
+    """The Coulomb friction (N m or N) that holds joint ``j``'s load anywhere in its range: :data:`HOLD_MARGIN`
+    times the largest gravity torque about a hinge (its subtree's centre of mass level with the axis) or the
+    subtree's weight along a slide; at least the role's."""
+    m, c, _ = _subtree(obj, j)
+    axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
+    mass = float(m.sum())
+    if j.type == "prismatic":
+        load = mass * G * abs(float(axis[2]))
+    else:
+        d = c - np.asarray(j.origin, float)
+        perp = d - np.outer(d @ axis, axis)
+        com_perp = float(np.linalg.norm((m[:, None] * perp).sum(0) / max(mass, 1e-12)))
+        load = mass * G * float(np.linalg.norm(np.array([0.0, 0.0, -1.0]) - (-axis[2]) * axis)) * com_perp
+    return max(j.friction, HOLD_MARGIN * load)
+
+
 def gravity_at_rest(obj, j) -> float:
     """The force (N, slides) or torque (N m, rotations) gravity puts on joint ``j`` at rest, towards its
     upper limit (negative: it presses the part onto its rest stop)."""
@@ -313,7 +337,11 @@ def assign_drives(obj):
                 j = replace(j, damping=s.damping, friction=_round(s.friction), stiffness=_round(s.stiffness),
                             spring_ref=_round(s.reference))
                 d = drive(obj, j, free[j.name])
-            j = replace(j, effort=_round(d.effort), velocity=_round(d.velocity), armature=_round(d.armature),
+            effort = d.effort
+            if j.role == "holding":  # the hand moves it against its friction too
+                j = replace(j, friction=_round(holding(obj, j)))
+                effort += j.friction
+            j = replace(j, effort=_round(effort), velocity=_round(d.velocity), armature=_round(d.armature),
                         damping=_round(d.damping))
         joints.append(j)
     return replace(obj, joints=joints)
@@ -324,4 +352,4 @@ def _round(x: float) -> float:
     return float(f"{x:.6g}")
 
 
-__all__ = ["ROLES", "Drive", "Role", "assign_drives", "drive", "role"]
+__all__ = ["HOLD_MARGIN", "ROLES", "Drive", "Role", "assign_drives", "drive", "holding", "role"]

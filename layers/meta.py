@@ -60,6 +60,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                               " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
+    "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
+    "stapler": ("Q489157", "http://www.wikidata.org/entity/Q489157 'stapler' (WN 04310635-n, OEWN)"),
     "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
     "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"
                                " toaster oven)"),
@@ -113,9 +116,27 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "trash_can": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified"
                              " item for trash can: OEWN's 02750182-n 'ashcan, trash can, wastebin' has none, its"
                              " chain bin > container has this nearest one)"),
+    "laptop": ("Q3962", "http://www.wikidata.org/entity/Q3962 'laptop' (COCO)"),
+    "monitor": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
+                             " verified item for computer monitor: OEWN's chain monitor > electronic equipment >"
+                             " equipment has no nearer item)"),
+    "pepper_grinder": ("Q44494", "http://www.wikidata.org/entity/Q44494 'mill' (OEWN 03771096-n 'mill, grinder';"
+                                 " no verified item for pepper mill: OEWN's 03920456-n 'pepper mill, pepper grinder'"
+                                 " has none, its hypernym mill has this one)"),
+    "printer": ("Q82", "http://www.wikidata.org/entity/Q82 'printer' (OEWN 04011143-n 'an output device that"
+                       " prints the results of data processing')"),
+    "box": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item for"
+                       " box, chest or carton: a box is a container, the nearest verified item)"),
+    "bucket": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item"
+                          " for bucket or pail: a bucket is a container, the nearest verified item)"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
+    "fan": ("Q212920", "http://www.wikidata.org/entity/Q212920 'home appliance' (OEWN 03533443-n 'household"
+                       " appliance'; no verified item for fan: OEWN's 03276485-n 'electric fan' and its chain fan >"
+                       " device have none, and an electric fan is sold and used as a household appliance)"),
+    "folding_chair": ("Q15026", "http://www.wikidata.org/entity/Q15026 'chair' (COCO; no verified item for"
+                                " folding chair)"),
 }
 
 LICENSE = "Apache-2.0"  # the licence of infmob-usd, under which its generated assets are released

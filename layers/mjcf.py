@@ -6,7 +6,8 @@
 * **joints** ``hinge`` / ``slide`` at the body origin with ``range`` (continuous: unlimited),
   ``damping``, ``frictionloss``, ``armature`` and ``actuatorfrcrange`` = +-effort (what MuJoCo's
   URDF reader makes of ``<limit effort>``), ``solreflimit`` (:data:`LIMIT_SOLREF`), and a return
-  spring as ``stiffness`` + ``springref`` (:mod:`infmob_usd.springs`);
+  spring as ``stiffness`` + ``springref`` (:mod:`infmob_usd.springs`); ``solimpfriction`` of a ``holding``
+  joint (:data:`HOLD_SOLIMP`);
 * **coupled joints** as ``<equality><joint joint1 joint2 polycoef>``;
 * **visual geoms** (class ``visual``: no contacts, no mass, group 2) from the URDF's OBJ meshes, with
   one MuJoCo ``<material>`` per slot whose ``<layer>`` s are our PNG maps (base colour, normal,
@@ -73,6 +74,20 @@ def _limit_softness(joint) -> str:
     return f' solreflimit="{_f(LIMIT_SOLREF[0])} {_f(LIMIT_SOLREF[1])}"'
 
 
+HOLD_SOLIMP = (0.99, 0.999, 0.001)
+"""MuJoCo ``solimpfriction`` of a ``holding`` joint (a laptop lid's friction hinge, a monitor's tilt). MuJoCo's
+dry friction is a soft constraint that lets a loaded joint creep: with the default impedance (0.9 0.95) a 1.2 kg
+laptop lid held by 2.2 N m of friction under 0.5 N m of gravity creeps 1 degree a second; at 0.99 0.999 it creeps
+0.1 degree a second (measured), as near a real friction hinge's stillness as MuJoCo's default step keeps."""
+
+
+def _friction_softness(joint) -> str:
+    """``solimpfriction`` of a ``holding`` joint (:data:`HOLD_SOLIMP`); none for any other."""
+    if joint.role != "holding":
+        return ""
+    return f' solimpfriction="{" ".join(_f(x) for x in HOLD_SOLIMP)}"'
+
+
 def _joint(joint) -> str:
     """The ``<joint>`` element of a movable joint: range (none for continuous), damping, friction,
     armature, effort, its return spring (``stiffness`` about ``springref``) and limit softness."""
@@ -83,7 +98,7 @@ def _joint(joint) -> str:
     return (f'<joint name="{joint.name}" type="{kind}" axis="{_v(joint.axis)}"{lim}'
             f' damping="{_f(joint.damping)}" frictionloss="{_f(joint.friction)}"'
             f' armature="{_f(joint.armature)}" actuatorfrcrange="{_f(-joint.effort)} {_f(joint.effort)}"'
-            f'{spring}{_limit_softness(joint)}/>')
+            f'{spring}{_limit_softness(joint)}{_friction_softness(joint)}/>')
 
 
 def _equality(obj) -> list[str]:

@@ -484,55 +484,72 @@ def _materials(obj, visuals) -> str:
         mat.attr("token", "omni:simready:nonvisual:base", f'"{base}"')
         mat.attr("token", "omni:simready:nonvisual:coating", f'"{coating}"')
         mat.attr("token[]", "omni:simready:nonvisual:attributes", f'["{attributes}"]')
-        mat.connect("token", "outputs:surface", f"{mpath}/PreviewSurface.outputs:surface")
-        surf = mat.child("def", "Shader", "PreviewSurface")
-        surf.attr("token", "info:id", '"UsdPreviewSurface"', uniform=True)
-        surf.attr("float", "inputs:opacity", float(look.opacity))
-        if look.opacity < 1.0:
-            surf.attr("float", "inputs:ior", float(FAMILIES[look.family].ior))
-        surf.attr("int", "inputs:useSpecularWorkflow", 0)
-        surf.attr("token", "outputs:surface")
-        # constants for the maps not written (the textures room leaves out constant maps)
-        if "basecolor" not in maps:
-            surf.attr("color3f", "inputs:diffuseColor",
-                      tuple(float(c) * float(t) for c, t in zip(look.base_color, look.wear.tint)))
-        if "roughness" not in maps:
-            surf.attr("float", "inputs:roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
-        if "metallic" not in maps:
-            surf.attr("float", "inputs:metallic", float(look.metallic))
+        surf = _preview_surface(mat, mpath, look, maps, FAMILIES[look.family].ior)
         _open_pbr(mat, mpath, look, FAMILIES[look.family].ior)
-        if not maps:
-            continue
-        reader = mat.child("def", "Shader", "TexCoordReader")
-        reader.attr("token", "info:id", '"UsdPrimvarReader_float2"', uniform=True)
-        reader.attr("string", "inputs:varname", '"st"')
-        reader.attr("float2", "outputs:result")
-        wear = look.wear
-        xf = mat.child("def", "Shader", "UVTransform")  # this object's placement of the maps
-        xf.attr("token", "info:id", '"UsdTransform2d"', uniform=True)
-        xf.connect("float2", "inputs:in", f"{mpath}/TexCoordReader.outputs:result")
-        xf.attr("float", "inputs:rotation", float(wear.uv_rotation))
-        xf.attr("float2", "inputs:translation", tuple(map(float, wear.uv_offset)))
-        xf.attr("float2", "outputs:result")
-        for tex in maps:
-            inp, itype, out, otype, space = _MAPS[tex]
-            t = mat.child("def", "Shader", f"{tex}Texture")
-            t.attr("token", "info:id", '"UsdUVTexture"', uniform=True)
-            t.attr("asset", "inputs:file", f"@../textures/{slot}_{tex}.png@")
-            t.attr("token", "inputs:sourceColorSpace", f'"{space}"')
-            t.attr("token", "inputs:wrapS", '"repeat"')
-            t.attr("token", "inputs:wrapT", '"repeat"')
-            t.connect("float2", "inputs:st", f"{mpath}/UVTransform.outputs:result")
-            if tex == "normal":
-                t.attr("float4", "inputs:scale", (2.0, 2.0, 2.0, 1.0))
-                t.attr("float4", "inputs:bias", (-1.0, -1.0, -1.0, 0.0))
-            elif tex == "basecolor":
-                t.attr("float4", "inputs:scale", (*map(float, wear.tint), 1.0))
-            elif tex == "roughness":
-                r = float(wear.roughness_scale)
-                t.attr("float4", "inputs:scale", (r, r, r, 1.0))
-            t.attr(otype, f"outputs:{out}")
-            surf.connect(itype, f"inputs:{inp}", f"{mpath}/{tex}Texture.outputs:{out}")
+        if maps:
+            _preview_textures(mat, surf, mpath, slot, look.wear, maps)
+    _bindings(root, obj, visuals, lpath)
+    return _usda(root)
+
+
+def _preview_surface(mat: _Spec, mpath: str, look, maps: list[str], ior: float) -> _Spec:
+    """The UsdPreviewSurface of a look, with constants for the maps not written (the textures room leaves out
+    constant maps)."""
+    mat.connect("token", "outputs:surface", f"{mpath}/PreviewSurface.outputs:surface")
+    surf = mat.child("def", "Shader", "PreviewSurface")
+    surf.attr("token", "info:id", '"UsdPreviewSurface"', uniform=True)
+    surf.attr("float", "inputs:opacity", float(look.opacity))
+    if look.opacity < 1.0:
+        surf.attr("float", "inputs:ior", float(ior))
+    surf.attr("int", "inputs:useSpecularWorkflow", 0)
+    surf.attr("token", "outputs:surface")
+    if "basecolor" not in maps:
+        surf.attr("color3f", "inputs:diffuseColor",
+                  tuple(float(c) * float(t) for c, t in zip(look.base_color, look.wear.tint)))
+    if "roughness" not in maps:
+        surf.attr("float", "inputs:roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
+    if "metallic" not in maps:
+        surf.attr("float", "inputs:metallic", float(look.metallic))
+    return surf
+
+
+def _preview_textures(mat: _Spec, surf: _Spec, mpath: str, slot: str, wear, maps: list[str]) -> None:
+    """The UV reader, this object's placement of the maps (``UsdTransform2d``) and a ``UsdUVTexture`` per map,
+    connected to the preview surface."""
+    reader = mat.child("def", "Shader", "TexCoordReader")
+    reader.attr("token", "info:id", '"UsdPrimvarReader_float2"', uniform=True)
+    reader.attr("string", "inputs:varname", '"st"')
+    reader.attr("float2", "outputs:result")
+    xf = mat.child("def", "Shader", "UVTransform")
+    xf.attr("token", "info:id", '"UsdTransform2d"', uniform=True)
+    xf.connect("float2", "inputs:in", f"{mpath}/TexCoordReader.outputs:result")
+    xf.attr("float", "inputs:rotation", float(wear.uv_rotation))
+    xf.attr("float2", "inputs:translation", tuple(map(float, wear.uv_offset)))
+    xf.attr("float2", "outputs:result")
+    for tex in maps:
+        inp, itype, out, otype, space = _MAPS[tex]
+        t = mat.child("def", "Shader", f"{tex}Texture")
+        t.attr("token", "info:id", '"UsdUVTexture"', uniform=True)
+        t.attr("asset", "inputs:file", f"@../textures/{slot}_{tex}.png@")
+        t.attr("token", "inputs:sourceColorSpace", f'"{space}"')
+        t.attr("token", "inputs:wrapS", '"repeat"')
+        t.attr("token", "inputs:wrapT", '"repeat"')
+        t.connect("float2", "inputs:st", f"{mpath}/UVTransform.outputs:result")
+        if tex == "normal":
+            t.attr("float4", "inputs:scale", (2.0, 2.0, 2.0, 1.0))
+            t.attr("float4", "inputs:bias", (-1.0, -1.0, -1.0, 0.0))
+        elif tex == "basecolor":
+            t.attr("float4", "inputs:scale", (*map(float, wear.tint), 1.0))
+        elif tex == "roughness":
+            r = float(wear.roughness_scale)
+            t.attr("float4", "inputs:scale", (r, r, r, 1.0))
+        t.attr(otype, f"outputs:{out}")
+        surf.connect(itype, f"inputs:{inp}", f"{mpath}/{tex}Texture.outputs:{out}")
+
+
+def _bindings(root: _Spec, obj, visuals, lpath: str) -> None:
+    """Each visual mesh bound to its slot's material, with what a viewer without the material draws (SimReady
+    DISP.001): the look's mean colour, and its opacity where it is see-through."""
     for link in obj.links:
         if not visuals[link.name]:
             continue
@@ -540,13 +557,10 @@ def _materials(obj, visuals) -> str:
         for vname, slot, *_ in visuals[link.name]:
             mesh = vp.child("over", "", vname, ("MaterialBindingAPI",))
             mesh.rel("material:binding", f"{lpath}/{slot}")
-            # what a viewer without the material draws (SimReady DISP.001): the look's mean colour, and its
-            # opacity where it is see-through
             look = obj.materials[slot]
             mesh.attr("color3f[]", "primvars:displayColor", [_display_colour(look)])
             if look.opacity < 1.0:
                 mesh.attr("float[]", "primvars:displayOpacity", [float(look.opacity)])
-    return _usda(root)
 
 
 def _open_pbr(mat: _Spec, mpath: str, look, ior: float) -> None:

@@ -51,7 +51,7 @@ class Family:
         Density of the solid material in kg/m^3.
     style : str
         Texture synthesis style used by :func:`~infmob_usd.materials.synth.synthesize`:
-        one of ``"wood"``, ``"brushed"``, ``"coating"``, ``"speckle"``, ``"woven"``,
+        one of ``"wood"``, ``"brushed"``, ``"coating"``, ``"speckle"``, ``"woven"``, ``"corrugated"``,
         ``"polished"``.
     palette : tuple of (str, str)
         ``(variant name, sRGB hex colour)`` pairs; one is drawn uniformly.
@@ -539,6 +539,35 @@ FAMILIES: dict[str, Family] = {
             anisotropy=(4.0, 8.0),
         ),
         Family(
+            name="cardboard",
+            # corrugated board as modelled (one solid board at its caliper): a C-flute single-wall board is
+            # ~4 mm thick and weighs 0.5-0.65 kg/m^2 (125-200 g/m^2 liners and fluting; FEFCO/ECMA code,
+            # board grades), ~140 kg/m^3; solid folding-box board (shoe boxes) 1-2 mm of 600-800 kg/m^3 is
+            # massed by its slot's substrate
+            density=140.0,
+            style="corrugated",
+            palette=(
+                # unbleached kraft liner (brown), mottled white-top liner and the printed coated board of
+                # shoe boxes, as seen on retail shipping and shoe boxes (approximate sRGB of product photos)
+                ("kraft", "#A47D55"),
+                ("kraft_light", "#B99570"),
+                ("white_top", "#E4DFD3"),
+                ("black", "#2B2B2C"),
+                ("orange", "#D9662B"),
+                ("blue", "#3E6F9E"),
+            ),
+            hsv_jitter=(0.01, 0.06, 0.06),
+            roughness=(0.8, 0.92),  # uncoated paper: matte
+            metallic=0.0,
+            opacity=_OPAQUE,
+            color_variation=(0.05, 0.09),  # fibre mottling of recycled kraft
+            roughness_variation=(0.02, 0.04),
+            bump=(0.03, 0.06),
+            # C-flute pitch 7.4-8.1 mm, B-flute 6.1-6.9 mm (FEFCO flute profiles): 125-160 flutes a metre
+            scale=(125.0, 160.0),
+            anisotropy=(1.0, 1.0),
+        ),
+        Family(
             name="screen",
             density=2500.0,  # the cover glass of a display panel
             style="polished",
@@ -606,6 +635,9 @@ CONTACT: dict[str, Contact] = {
                       f" {_FRICTION_GLASS}; restitution: glass marble, {_RESTITUTION}"),
     "rubber": Contact(1.0, 0.7, 0.83, f"friction: rubber on dry concrete, {_FRICTION_HOWWHY}; restitution: ball of"
                       f" rubber bands, {_RESTITUTION}"),
+    "cardboard": Contact(0.5, 0.375, 0.2, "friction: corrugated board on board, static 0.3-0.6 by the TAPPI T 815"
+                         " inclined-plane test (mid-range); " + _KINETIC_RATIO + "; restitution: no published figure"
+                         " found, 0.2 chosen (board crushes on impact)"),
     "fabric": Contact(0.3, 0.225, 0.1, f"friction: cotton on cotton, {_FRICTION_TABLE_A1}; {_KINETIC_RATIO};"
                       " restitution: no published figure found, 0.1 chosen (upholstery absorbs impacts)"),
 }
@@ -628,6 +660,7 @@ NONVISUAL: dict[str, tuple[str, str]] = {
     "enamel": ("steel", "paint"),  # vitreous enamel fused on steel
     "rubber": ("rubber", "none"),
     "fabric": ("fabric", "none"),
+    "cardboard": ("wood", "none"),  # paper and board are wood fibre: the table's nearest base verified here
 }
 """Non-visual (lidar, radar) material of each family, for SimReady NVM.001-003."""
 
@@ -786,7 +819,7 @@ def sample_wear(look: Look, rng: np.random.Generator) -> Wear:
     rough = _uniform(rng, (min(0.85, top), top))
     offset = (float(rng.random()), float(rng.random()))
     turn = float(rng.random())
-    if fam.style in ("wood", "brushed"):
+    if fam.style in ("wood", "brushed", "corrugated"):  # the grain or the flutes stay along the part
         rotation = 180.0 * math.floor(2 * turn)
     elif fam.style == "woven":
         rotation = 90.0 * math.floor(4 * turn)

@@ -340,7 +340,23 @@ def _polished(look: Look, size: int) -> Fields:
     return 1.0 + look.color_variation * haze, haze, haze
 
 
+def _corrugated(look: Look, size: int) -> Fields:
+    """Corrugated board: a paper liner's fibre mottling over the flutes glued under it, which show through
+    as faint parallel ridges (``look.scale`` flutes a metre) along U."""
+    seed, s = look.noise_seed, look.scale * TILE_METRES
+    n = max(1, round(s))  # whole flutes per tile, so it tiles
+    v = (np.arange(size, dtype=np.float32) + 0.5) / size
+    flutes = np.cos(2 * np.pi * n * v)[:, None] * np.ones((1, size), np.float32)
+    fibre = periodic_noise(seed, "corrugated.fibre", size, [(1.0, 400.0 * TILE_METRES, 250.0 * TILE_METRES)])
+    low = periodic_noise(seed, "corrugated.low", size, [(1.0, 4.0, 4.0)])
+    # the liner is lighter over each flute's crest (it rubs and sun-fades first) and mottled throughout
+    tint = 1.0 + look.color_variation * (0.6 * fibre + 0.4 * low + 0.25 * flutes)
+    height = flutes + 0.35 * fibre
+    return tint, fibre + 0.3 * low, height
+
+
 _STYLES: dict[str, Callable[[Look, int], Fields]] = {
+    "corrugated": _corrugated,
     "wood": _wood,
     "brushed": _brushed,
     "coating": _coating,

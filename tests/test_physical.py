@@ -1,4 +1,5 @@
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -120,3 +121,51 @@ def test_passes_return_new_objects_and_leave_their_inputs_alone():
     assert [(j.lower, j.upper) for j in joints] == limits  # untouched
     door = next(j for j in limited if j.child == "door")
     assert door.upper < 0.75 * math.pi and next(j for j in limited if j.child == "drawer").upper == 0.3
+
+
+def test_a_coupled_second_axis_is_carried_into_the_ground_check():
+    """A dual-axis hinge (a 360-degree laptop's): a link turns about a low axis and the lid about a high one,
+    coupled 1:1. Each alone stays above the floor up to 180 degrees, together they fold the lid under the base:
+    the leader is limited where the pair meets the ground (half of about 180 degrees in all)."""
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("base", "base", [g.box_between([-0.1, -0.1, 0.0], [0.1, 0.1, 0.02], "m")])
+    bp.add("link", "hinge", [g.box_between([-0.106, -0.01, 0.008], [-0.102, 0.01, 0.03], "m")])
+    bp.add("lid", "lid", [g.box_between([-0.1, -0.1, 0.024], [0.1, 0.1, 0.03], "m")])
+    bp.join(J.revolute("base", "link", (-0.104, 0, 0.01), (0, -1, 0), 0.0, math.pi))
+    bp.join(J.revolute("link", "lid", (-0.104, 0, 0.027), (0, -1, 0), 0.0, math.pi))
+    bp.joints[-1] = replace(bp.joints[-1], mimic=J.Mimic("link", 1.0, 0.0))
+    obj = _make(bp)
+    lead, lid = obj.joints
+    assert lead.upper < math.pi / 2 + 0.1  # not the 180 degrees each allows alone
+    assert _lowest(obj, {lead.name: lead.upper, lid.name: lid.upper}) >= -GROUND_TOL
+
+
+def test_a_turn_past_half_a_revolution_is_swept_for_the_ground():
+    """A lid allowed a full turn (a convertible laptop's) is back at rest at its limit, but on the way it swings
+    through the floor: its limit is where it first meets the ground, not the full turn."""
+    bp = Blueprint("t", materials={"m": "painted"})
+    bp.add("base", "base", [g.box_between([-0.1, -0.1, 0.0], [0.1, 0.1, 0.02], "m")])
+    bp.add("lid", "lid", [g.box_between([-0.1, -0.1, 0.024], [0.1, 0.1, 0.03], "m")])
+    bp.join(J.revolute("base", "lid", (-0.1, 0, 0.027), (0, -1, 0), 0.0, 2 * math.pi))
+    lid = _make(bp).joints[0]
+    assert math.pi < lid.upper < math.pi + math.asin(0.03 / 0.2) + 0.01
+
+
+def test_a_holding_hinge_has_the_friction_to_hold_its_load_and_the_effort_to_move_it():
+    """A lid on a ``holding`` (friction) hinge: its friction is 1.3 x the largest gravity torque of the lid about
+    the hinge, and its effort beats that friction; on a plain ``hinge`` it is the role's 0.5 N m."""
+    from infmob_usd.effort import HOLD_MARGIN
+
+    def lid(role):
+        bp = Blueprint("t", materials={"m": "painted"})
+        bp.add("base", "base", [g.box_between([-0.2, -0.2, 0.0], [0.2, 0.2, 0.02], "m")])
+        bp.add("lid", "lid", [g.box_between([-0.2, -0.2, 0.021], [0.2, 0.2, 0.041], "m")])
+        bp.join(J.revolute("base", "lid", (-0.2, 0, 0.031), (0, -1, 0), 0.0, math.radians(135), role))
+        obj = _make(bp)
+        return obj.joints[0], next(link for link in obj.links if link.name == "lid")
+
+    j, link = lid("holding")
+    load = link.mass * 9.81 * 0.2  # the centre of mass 0.2 m from the axis, level with it
+    assert j.friction == pytest.approx(HOLD_MARGIN * load, rel=0.02)
+    assert j.effort > j.friction
+    assert lid("hinge")[0].friction == DYNAMICS["hinge"].friction < j.friction

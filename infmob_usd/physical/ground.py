@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -54,6 +55,27 @@ def _extreme_points(links, only: set | None = None) -> dict[str, np.ndarray]:
     return out
 
 
+HALF_TURN = math.pi
+"""rad: a turn of up to half a revolution from rest dips lowest at one of its ends or not at all in between
+for a part hanging from it in practice; a longer one (a convertible laptop's 360-degree lid) passes states
+below the ground that its limit's own does not show, so it is swept."""
+SWEEP_STEP = math.radians(5.0)
+"""rad: the step of that sweep (the bisection then finds the limit within it)."""
+
+
+def _first_below(lowest, limit: float, kind: str) -> tuple[float, float] | None:
+    """A clear value and the next one from rest towards ``limit`` whose state dips below the ground: rest and
+    the limit itself, or for a turn longer than :data:`HALF_TURN` the first of its :data:`SWEEP_STEP` samples
+    that does and the one before; None if none does."""
+    if kind == "revolute" and abs(limit) > HALF_TURN:
+        n = int(math.ceil(abs(limit) / SWEEP_STEP))
+        for k in range(1, n + 1):
+            if lowest(limit * k / n) < -GROUND_TOL:
+                return limit * (k - 1) / n, limit * k / n
+        return None
+    return (0.0, limit) if lowest(limit) < -GROUND_TOL else None
+
+
 def limit_to_ground(links, joints) -> list:
     """New joints whose limits keep every part above the ground at any single joint's limit.
 
@@ -68,6 +90,10 @@ def limit_to_ground(links, joints) -> list:
     moved_by = {j.name: descendants(joints, j.child) for j in joints if j.movable}
     extreme = _extreme_points(links, set().union(*moved_by.values()))
     origin = {link.name: np.asarray(link.origin, float) for link in links}
+    followers: dict[str, list] = {}
+    for f in joints:
+        if f.movable and getattr(f, "mimic", None):
+            followers.setdefault(f.mimic[0], []).append(f)
     out = []
     for j in joints:
         out.append(j)
@@ -86,6 +112,9 @@ def limit_to_ground(links, joints) -> list:
                 return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
             return pivot_z + float((rel @ axis_angle(axis, value)[2]).min())
 
+        if j.type != "continuous" and j.name in followers:
+            lowest = _coupled_lowest(j, followers[j.name], moved_by, extreme, origin)
+
         if j.type == "continuous":
             for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
                 if lowest(a) < -GROUND_TOL:
@@ -94,9 +123,12 @@ def limit_to_ground(links, joints) -> list:
             continue
         for end in ("upper", "lower"):
             limit = getattr(j, end)
-            if limit == 0 or lowest(limit) >= -GROUND_TOL:
+            if limit == 0:
                 continue
-            good, bad = 0.0, limit
+            found = _first_below(lowest, limit, j.type)
+            if found is None:
+                continue
+            good, bad = found
             for _ in range(30):
                 mid = 0.5 * (good + bad)
                 if lowest(mid) >= -GROUND_TOL:
@@ -108,3 +140,32 @@ def limit_to_ground(links, joints) -> list:
             out[-1] = replace(out[-1], **{end: good})
     return out
 
+
+def _moved(j, value: float, pts: np.ndarray, origin: dict) -> np.ndarray:
+    """World points ``pts`` moved by joint ``j`` to ``value`` from rest."""
+    axis = np.asarray(j.axis, float)
+    if j.type == "prismatic":
+        return pts + value * axis / np.linalg.norm(axis)
+    pivot = origin[j.child]
+    return (pts - pivot) @ axis_angle(axis, value).T + pivot
+
+
+def _coupled_lowest(j, followers: list, moved_by: dict, extreme: dict, origin: dict):
+    """The lowest point as leader ``j`` moves to a value with its coupled ``followers`` (``q = ratio * value +
+    offset``) moving with it, a follower below ``j`` carried along (a dual-axis hinge's second axis): the
+    states a coupled pair takes together, not each joint's alone."""
+    carried = set().union(*(moved_by[f.name] for f in followers if f.child in moved_by[j.name]))
+    own = [extreme[n] + origin[n] for n in moved_by[j.name] if n in extreme and n not in carried]
+    own = np.vstack(own) if own else np.zeros((0, 3))
+    theirs = [(f, np.vstack([extreme[n] + origin[n] for n in moved_by[f.name] if n in extreme]
+                            or [np.zeros((0, 3))])) for f in followers]
+
+    def lowest(value: float) -> float:
+        z = [_moved(j, value, own, origin)[:, 2]]
+        for f, pts in theirs:
+            p = _moved(f, f.mimic[1] * value + f.mimic[2], pts, origin)
+            z.append((_moved(j, value, p, origin) if f.child in moved_by[j.name] else p)[:, 2])
+        z = np.concatenate(z)
+        return float(z.min()) if len(z) else np.inf
+
+    return lowest

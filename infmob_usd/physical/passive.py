@@ -27,6 +27,8 @@ DYNAMICS: dict[str, Dynamics] = {
     "telescope": Dynamics(damping=20.0, friction=5.0, effort=100.0, velocity=0.3),  # sliding poles
     "wheel": Dynamics(damping=0.01, friction=0.005, effort=5.0, velocity=20.0),
     "lid": Dynamics(damping=0.5, friction=0.2, effort=10.0, velocity=2.0),
+    # friction hinges and counterbalanced stands: the friction is sized on the load (effort.holding), this is its least
+    "holding": Dynamics(damping=2.0, friction=0.5, effort=50.0, velocity=2.0),
     "lift_off": Dynamics(damping=0.5, friction=0.2, effort=10.0, velocity=2.0),  # as a lid: lifted by hand
     "plate": Dynamics(damping=1.0, friction=0.2, effort=50.0, velocity=2.0),       # plates in a rack
     "grate": Dynamics(damping=1.0, friction=0.2, effort=50.0, velocity=2.0),       # oven grates
