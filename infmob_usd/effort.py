@@ -118,6 +118,7 @@ ROLES: dict[str, Role] = {
     "lift_off": Role(1.0, 20.0, 0.5, "lift-off lids, stoppers, liners: lifted off their seat by hand"),
     "plate": Role(1.0, 20.0, 0.3, "plates in a rack: lifted out by hand"),
     "grate": Role(1.0, 40.0, 0.3, "oven grates: slid by hand"),
+    "toggle": Role(20.0, 10.0, 0.05, "switch bats and rockers: flipped or pressed by a fingertip, as a button"),
     "default": Role(1.0, 40.0, 0.5, "anything else moved by hand"),
 }
 

@@ -56,11 +56,12 @@ def operated(joint, joints) -> bool:
 
 
 def action(joint) -> str:
-    """What opens it: ``turn`` a continuous joint or a knob, swivel or turntable; ``press`` a button, lever
-    or pedal; ``lift`` a lid, a lift-off part, a plate or grate; ``slide`` a telescope; else ``pull``."""
+    """What opens it: ``turn`` a continuous joint or a knob, swivel or turntable; ``press`` a button, lever,
+    pedal or toggle (a switch's bat or rocker); ``lift`` a lid, a lift-off part, a plate or grate; ``slide`` a
+    telescope; else ``pull``."""
     if joint.type == "continuous" or joint.role in ("knob", "swivel", "turntable"):
         return "turn"
-    if joint.role in ("button", "lever", "pedal_lid"):
+    if joint.role in ("button", "lever", "pedal_lid", "toggle"):
         return "press"
     if joint.role in ("lid", "lift_off", "plate", "grate"):
         return "lift"
@@ -366,7 +367,7 @@ def part_class(joint, label: str, v: np.ndarray, pivot, handle: bool) -> str:
         return "hinge_handle"
     rel = v - np.asarray(pivot, float)
     reach = np.linalg.norm(rel - np.outer(rel @ a, a), axis=1).max()
-    if joint.role in ("knob", "button", "lever") or reach < KNOB_REACH:
+    if joint.role in ("knob", "button", "lever", "toggle") or reach < KNOB_REACH:
         return "hinge_knob"
     return "hinge_lid" if thin_z else "hinge_door"
 

@@ -35,11 +35,14 @@ KINDS: dict[str, tuple[str, ...]] = {
 """Each kind and the simple DoF chain it expands to, parent side first."""
 
 ROLES = ("fixed", "hinge", "slide", "knob", "button", "turntable", "swivel", "telescope", "wheel", "lid",
-         "lift_off", "plate", "grate", "lever", "plunger", "self_closing", "pedal_lid", "holding", "default")
+         "lift_off", "plate", "grate", "lever", "plunger", "self_closing", "pedal_lid", "holding", "toggle",
+         "default")
 """Joint roles: what a joint is for, which sets its passive dynamics (``physical.DYNAMICS``) and, for
 the spring-returned roles (button, lever, plunger, self-closing hinge, pedal-driven lid), its return
 spring (:data:`infmob_usd.springs.SPRINGS`); a ``holding`` joint (a laptop lid's friction hinge, a monitor's
-tilt) stays where it is put: its friction holds its load anywhere in its range (:func:`infmob_usd.effort.holding`)."""
+tilt) stays where it is put: its friction holds its load anywhere in its range (:func:`infmob_usd.effort.holding`).
+``toggle``: a bistable switch part (a toggle's bat, a rocker) that a fingertip flips or presses, with no return
+spring (its joint friction holds it where it is set)."""
 
 
 @dataclass(frozen=True)

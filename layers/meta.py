@@ -66,6 +66,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
     "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"
                                " toaster oven)"),
+    "globe": ("Q133792", "http://www.wikidata.org/entity/Q133792 'globe' (WN 03445436-n)"),
+    "clock": ("Q376", "http://www.wikidata.org/entity/Q376 'clock' (COCO)"),
+    "switch": ("Q5320", "http://www.wikidata.org/entity/Q5320 'electrical switch' (WN 04379457-n)"),
     "kettle": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"
                            " verified item for kettle)"),
     "stand_mixer": ("Q1521410", "http://www.wikidata.org/entity/Q1521410 'kitchenware' (WN 03626586-n, VU; no"

@@ -194,3 +194,23 @@ def test_velocity_from_role_and_size():
     wheels = [j for j in obj.movable_joints if j.role == "wheel"]
     lift = next(j for j in obj.movable_joints if j.role == "telescope" and j.type == "prismatic")
     assert wheels and min(w.velocity for w in wheels) > 10 * lift.velocity
+
+
+def test_pybullet_pushes_an_object_whose_joints_all_turn_freely(tmp_path):
+    """An object with only continuous joints (a wall clock's hands and knob) has no limited joint to watch:
+    each joint is still pushed, and nothing is reported past a limit."""
+    from types import SimpleNamespace
+
+    from infmob_usd import geometry as g
+    from infmob_usd.api import assemble
+    from infmob_usd.blueprint import Blueprint
+    from infmob_usd.grammar import Layout
+
+    bp = Blueprint("free_zoo", materials={"body": "painted", "part": "plastic"})
+    bp.add("base", "body", [g.box_between([-0.1, -0.1, 0.0], [0.1, 0.1, 0.05], "body")])
+    bp.add("wheel", "part", [g.cylinder([0.1, 0.0, 0.1], [0.11, 0.0, 0.1], 0.03, "part")])
+    Layout(bp, {}, np.random.default_rng(0), None).spin("base", "wheel", SimpleNamespace(
+        origin=(0.1, 0.0, 0.1), z=(1, 0, 0)))
+    folder = infmob_usd.save(assemble(bp, 0, np.random.default_rng(0), 16), tmp_path, formats="urdf")
+    pushes = push_bullet(folder / f"{folder.name}.urdf")
+    assert pushes and not failures(pushes)

@@ -106,7 +106,8 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
                 if i is not None:
                     pb.setJointMotorControl2(body, i, pb.TORQUE_CONTROL, force=force, physicsClientId=cid)
                 pb.stepSimulation(physicsClientId=cid)
-                q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid)])
+                # (PyBullet answers None, not [], for no joints: an object whose joints all turn freely)
+                q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid) or ()])
                 worst = np.maximum(worst, _past(q, lo, hi, span))
             return worst
 

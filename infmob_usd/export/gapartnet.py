@@ -33,6 +33,7 @@ CLASS_BY_LABEL = {
     ("hinge", "shutter"): "hinge_door", ("hinge", "flap"): "hinge_lid", ("hinge", "lid"): "hinge_lid",
     ("hinge", "seat"): "hinge_lid", ("hinge", "knob"): "hinge_knob", ("hinge", "lever"): "hinge_handle",
     ("hinge", "handle"): "hinge_handle", ("hinge", "switch"): "hinge_handle",
+    ("hinge", "toggle"): "hinge_knob", ("hinge", "rocker"): "hinge_knob",
     ("slider", "drawer"): "slider_drawer", ("slider", "tray"): "slider_drawer", ("slider", "basket"): "slider_drawer",
     ("slider", "rack"): "slider_drawer", ("slider", "lid"): "slider_lid", ("slider", "cap"): "slider_lid",
     ("slider", "button"): "slider_button",

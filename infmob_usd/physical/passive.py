@@ -32,6 +32,7 @@ DYNAMICS: dict[str, Dynamics] = {
     "lift_off": Dynamics(damping=0.5, friction=0.2, effort=10.0, velocity=2.0),  # as a lid: lifted by hand
     "plate": Dynamics(damping=1.0, friction=0.2, effort=50.0, velocity=2.0),       # plates in a rack
     "grate": Dynamics(damping=1.0, friction=0.2, effort=50.0, velocity=2.0),       # oven grates
+    "toggle": Dynamics(damping=0.02, friction=0.01, effort=2.0, velocity=6.0),     # switch bats, rockers: as knobs
     "default": Dynamics(damping=1.0, friction=0.2, effort=50.0, velocity=2.0),
 }
 
