@@ -110,6 +110,7 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "trash_can": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified"
                              " item for trash can: OEWN's 02750182-n 'ashcan, trash can, wastebin' has none, its"
                              " chain bin > container has this nearest one)"),
+    "suitcase": ("Q200814", "http://www.wikidata.org/entity/Q200814 'suitcase', form of luggage (COCO)"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
