@@ -19,24 +19,26 @@ from infmob_usd.params import Choice, Float
 from .parts import luggage as L
 from .parts import seating as S
 
+CASE = {"side_handle": 0.5, "lock": 0.5}  # optional on every case
+
 GRAMMAR = Grammar("suitcase", {
-    "suitcase": Node(label="body", one_of={"hard_spinner": 0.4, "soft_upright": 0.3, "carry_on": 0.3},
+    "suitcase": Node(label="body", one_of={"hard_spinner": 0.35, "soft_upright": 0.3, "carry_on": 0.35},
                      choice="design"),
-    "hard_spinner": Node(required=("lid", "telescope", "top_handle", "spinners"),
-                         optional={"side_handle": 0.6, "lock": 0.5}),
-    "soft_upright": Node(required=("pocket_lid", "telescope", "top_handle", "wheels"),
-                         optional={"side_handle": 0.6, "lock": 0.5}),
-    "carry_on": Node(required=("pocket_lid", "telescope", "top_handle", "spinners"),
-                     optional={"side_handle": 0.6, "lock": 0.5}),
-    "lid": Node(label="lid"),
-    "pocket_lid": Node(label="lid", optional={"pocket": 0.55}),
+    "hard_spinner": Node(required=("lid", "telescope", "top_handle", "spinners"), optional=CASE),
+    "soft_upright": Node(required=("pocket_lid", "telescope", "top_handle", "wheels"), optional=CASE),
+    "carry_on": Node(required=("pocket_lid", "telescope", "top_handle"), optional=CASE,
+                     one_of={"spinners": 0.6, "wheels": 0.4}),
+    "lid": Node(label="lid", optional={"divider": 0.5}),
+    "pocket_lid": Node(label="lid", optional={"divider": 0.5, "pocket": 0.5}),
+    "divider": Node(label="divider"),
     "pocket": Node(label="pocket"),
-    "telescope": Node(label="handle", required=("grip_stage",)),
+    "telescope": Node(label="handle", repeat={"mid_stage": (0, 1)}, required=("grip_stage",)),
+    "mid_stage": Node(label="handle"),
     "grip_stage": Node(label="handle"),
     "top_handle": Node(label="handle"),
     "side_handle": Node(label="handle"),
     "spinners": Node(repeat={"spinner": 4}),
-    "spinner": Node(label="caster", one_of={"twin": 0.6, "single": 0.4}, choice="caster_style"),
+    "spinner": Node(label="caster", one_of={"twin": 0.5, "single": 0.5}, choice="caster_style"),
     "twin": Node(label="wheel"),
     "single": Node(label="wheel"),
     "wheels": Node(repeat={"inline_wheel": 2}),
@@ -44,9 +46,10 @@ GRAMMAR = Grammar("suitcase", {
     "lock": Node(repeat={"thumbwheel": 3}),
     "thumbwheel": Node(label="knob"),
 })
-"""Designs: hard spinner (four casters), soft upright (two inline wheels, maybe a front pocket), carry-on (four
-casters, a hard or soft case, maybe a front pocket). Every case has a lid, a two-stage telescopic handle and a
-top carry handle; maybe a side carry handle and a three-wheel combination lock."""
+"""Designs: hard spinner (four casters), soft upright (two inline wheels), carry-on (a hard or soft case on four
+casters or two inline wheels). Every case has a lid (maybe with a zip-up divider inside; a soft upright's or a
+carry-on's maybe with a front pocket), a telescopic handle of two or three stages and a top carry handle; maybe a
+side carry handle and a three-wheel combination lock."""
 
 PARAMS = (
     Float("height_share", "height (Z, wheels included) within the design's range (SIZES in parts/luggage.py),"
@@ -81,9 +84,9 @@ class SuitcaseLayout(Layout):
         self.shell = ("shell" if hard else "fabric")
         finish = p["hard_finish"] if hard else "fabric"
         self.ribbed = hard and (p["shell_style"] == "ribbed" or finish == "brushed_metal")
-        spinners = design != "soft_upright"
+        spinners = node.one(design).one("spinners")
         if spinners:
-            self.caster = S.caster(node.one(design).one("spinners").of("spinner")[0].choice, p["caster_radius"])
+            self.caster = S.caster(spinners.of("spinner")[0].choice, p["caster_radius"])
             z0 = self.caster.stem_top + 0.012
         else:
             z0 = L.plinth_height(p["wheel_radius"])
@@ -96,7 +99,7 @@ class SuitcaseLayout(Layout):
             pieces += L.spinner_housings(s, self.tips, self.caster.stem_top, "trim")
         else:
             self.inline = L.inline_wheels(s.width, s.depth, p["wheel_radius"])
-            pieces += L.plinth(s, self.inline, "trim")
+            pieces += L.plinth(s, self.inline, self.shell, "trim")
         self.add("body", "body", pieces)
         self.grow(node.one(design))
 
@@ -110,24 +113,36 @@ class SuitcaseLayout(Layout):
     def lid(self, node):
         made = self.place(L.lid(self.size, self.shell, "lining", self.ribbed), "lid")
         self.hinge("body", made.root, made.anchor("hinge"), upper=L.LID_OPENS)
-        if node.one("pocket"):
-            self.grow(node.one("pocket"), lid=made)
+        for kind in ("pocket", "divider"):
+            if node.one(kind):
+                self.grow(node.one(kind), lid=made)
 
     pocket_lid = lid
+
+    def divider(self, node, lid):
+        made = self.place(L.divider(self.size, "lining", "trim"), "divider")
+        self.hinge(lid.root, made.root, made.anchor("hinge"), upper=L.DIVIDER_OPENS, requires_open="lid")
 
     def pocket(self, node, lid):
         made = self.place(L.pocket(self.size, self.shell, "trim"), "pocket")
         self.hinge(lid.root, made.root, made.anchor("hinge"), upper=L.POCKET_OPENS)
 
     def telescope(self, node):
-        t = L.telescope(self.size, self.p["grip_share"])
-        outer = self.place(L.stage(self.size, t, 0, "tube", "trim"), "handle_stage_0")
-        self.slide("body", outer.root, outer.anchor("slide"), upper=t.travel, role="telescope")
-        self.grow(node.one("grip_stage"), outer=outer, t=t)
+        mids = node.of("mid_stage")
+        t = L.telescope(self.size, 2 + len(mids), self.p["grip_share"])
+        below = self.place(L.stage(self.size, t, 0, "tube", "trim"), "handle_stage_0")
+        self.slide("body", below.root, below.anchor("slide"), upper=t.travel, role="telescope")
+        for k, n in enumerate(mids, start=1):
+            below = self.grow(n, below=below, t=t, k=k)
+        self.grow(node.one("grip_stage"), below=below, t=t, k=t.stages - 1)
 
-    def grip_stage(self, node, outer, t):
-        inner = self.place(L.stage(self.size, t, 1, "tube", "handle"), "handle_stage_1")
-        self.slide(outer.root, inner.root, outer.anchor("next"), upper=t.travel, role="telescope")
+    def mid_stage(self, node, below, t, k):
+        made = self.place(L.stage(self.size, t, k, "tube", "handle" if k == t.stages - 1 else "trim"),
+                          f"handle_stage_{k}")
+        self.slide(below.root, made.root, below.anchor("next"), upper=t.travel, role="telescope")
+        return made
+
+    grip_stage = mid_stage
 
     def _carry(self, name, at):
         length = sum(L.CARRY["length"]) / 2

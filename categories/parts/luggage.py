@@ -55,11 +55,11 @@ ALUMINIUM = 2700.0  # kg/m^3, an aluminium shell's substrate
 ROUND = {"hard": dict(corner=(0.045, 0.07), edge=0.04), "soft": dict(corner=(0.025, 0.04), edge=0.022)}
 RIBS = 5  # raised ribs on a grooved hard shell's face (Rimowa, Samsonite Cosmolite: 4-8)
 
-# Telescopic handles (Samsonite, Travelpro spare-part listings): aluminium tubes 25 / 19 mm across the two
-# stages, 20-28 cm apart, each stage rising 18-26 cm (a 55 cm carry-on reaches 98-105 cm extended, a 75 cm
-# case ~110 cm); a moulded grip 20-25 mm thick.
+# Telescopic handles (Samsonite, Travelpro spare-part listings): aluminium tubes 19-27 mm across, 4 mm less
+# each stage up (two stages, or three on many carry-ons), 20-28 cm apart; the grip of a 55 cm carry-on reaches
+# 98-105 cm extended, of a 75 cm case ~110 cm; a moulded grip 24-30 mm thick.
 TUBE_SHEET = 0.0012  # m, the tubes' aluminium walls (1-1.5 mm drawn tube)
-TUBES = dict(outer=0.0125, inner=0.0095, play=0.001, collar=0.004, grip=(0.024, 0.03), overlap=0.07)
+TUBES = dict(outer=0.0135, inner=0.0095, play=0.001, collar=0.004, grip=(0.024, 0.03), overlap=0.07)
 # Folding carry handles: a 13-18 cm moulded grip ~22 mm thick on two pivots 12 mm off the shell (Samsonite
 # Freeform top and side handles); it lies flat and swings out about 90 degrees.
 CARRY = dict(grip=0.011, arm=0.005, length=(0.13, 0.18), reach=0.035, boss=0.01)
@@ -75,6 +75,11 @@ SKID = 0.012  # m, a two-wheeler's base above the ground: it stands on its wheel
 # the lid's front, 70-85 % of its width and height, zipped on three sides, hinged at its right edge.
 POCKET = dict(share=(0.78, 0.72), depth=0.022, zip=0.004)
 POCKET_OPENS = math.radians(120)
+# Zip-up lid dividers (Samsonite, Away): a nylon or mesh panel across the lid's opening, zipped round three sides
+# and sewn along the hinge side, with a zip pull; modelled 4 mm thick, massed as 4 mm of the lining fabric
+# (100 kg/m^3: 0.4 kg/m^2, a 420D nylon panel with its zip tape).
+DIVIDER = dict(t=0.004, sheet=0.004, **{"in": 0.012})
+DIVIDER_OPENS = math.radians(150)
 # TSA combination locks (Travel Sentry locks on Samsonite, Away): three 12 mm thumbwheels in a ~60 x 25 mm
 # housing on the side, by the split.
 LOCK = dict(housing=(0.064, 0.028, 0.012), wheel=0.0075, thick=0.006, pitch=0.0095)
@@ -232,26 +237,47 @@ def body_shell(s: CaseSize, material: str, trim: str, lining: str, ribbed: bool)
 
 
 def lid(s: CaseSize, material: str, lining: str, ribbed: bool) -> Assembly:
-    """The front shell from the split to the front face, with a lining divider inside; anchor ``hinge``
-    (:func:`hinge_frame`) and ``front`` (the flat face's centre, z out of it) for a pocket."""
+    """The front shell from the split to the front face, lined inside; anchors ``hinge`` (:func:`hinge_frame`),
+    ``front`` (the flat face's centre, z out of it) and ``divider`` (:func:`divider_frame`)."""
     h, d = s.height - s.z0, s.depth / 2 - s.split - GAP
     place = Frame.at((s.split + GAP, 0, s.zc))
     pieces = [_tray(s.width, h, d, s.corner, s.edge, material, s.sheet, place)]
-    x = s.split + GAP + WALL + 0.001
-    y, z = s.width / 2 - WALL - 0.01, (s.height - s.z0) / 2 - WALL - 0.01
-    pieces.append(g.box_between((x, -y, s.zc - z), (x + 0.002, y, s.zc + z), lining).replace(convex=()))
+    x = s.depth / 2 - WALL - 0.004  # the lining over the face's inside
+    y, z = s.width / 2 - s.edge, (s.height - s.z0) / 2 - s.edge
+    pieces.append(g.box_between((x - 0.002, -y, s.zc - z), (x, y, s.zc + z), lining).replace(convex=()))
     if ribbed:
         pieces += _ribs(s, s.depth / 2, 1, material)
     front = Frame.at((s.depth / 2, 0, s.zc), z=(1, 0, 0), x=(0, 0, 1))
-    return Assembly.single("lid", pieces, {"hinge": hinge_frame(s), "front": front})
+    return Assembly.single("lid", pieces, {"hinge": hinge_frame(s), "front": front, "divider": divider_frame(s)})
+
+
+def divider_frame(s: CaseSize) -> Frame:
+    """A lid divider's hinge: inside the lid's hinge-side wall at the opening, z up (a positive turn swings it
+    out of the lid towards the body, as it opens once the lid is open)."""
+    return Frame.at((s.split + GAP + DIVIDER["in"], -s.width / 2 + WALL + GAP, s.zc), x=(0, 1, 0), z=(0, 0, 1))
+
+
+def divider(s: CaseSize, material: str, trim: str) -> Assembly:
+    """A zip-up divider panel across the lid's opening, hinged at its hinge-side edge (anchor ``hinge``)."""
+    x0 = s.split + GAP + DIVIDER["in"]
+    y0, y1 = -s.width / 2 + WALL + 2 * GAP, s.width / 2 - WALL - GAP
+    h = (s.height - s.z0) / 2 - WALL - GAP
+    r = max(s.corner - WALL - GAP, 0.01)
+    pieces = [g.box_between((x0, y0, s.zc - h + r), (x0 + DIVIDER["t"], y1, s.zc + h - r), material, bevel=0.001),
+              g.box_between((x0, y0 + r, s.zc - h), (x0 + DIVIDER["t"], y1 - r, s.zc + h), material, bevel=0.001)]
+    pieces = [pc.replace(sheet=DIVIDER["sheet"]) for pc in pieces]
+    pieces.append(g.box_between((x0 + DIVIDER["t"], y1 - 0.03, s.zc + 0.02), (x0 + DIVIDER["t"] + 0.004, y1 - 0.012,
+                                s.zc + 0.05), trim, name="handle"))
+    return Assembly.single("divider", pieces, {"hinge": divider_frame(s)})
 
 
 # -- what the case stands on ------------------------------------------------------------------------------
 def spinner_tips(s: CaseSize, footprint: float) -> list[Frame]:
     """The four casters' swivel frames under the case's corners (x pointing out along the diagonal), inset
-    so each caster's sweep (``footprint``) stays under the case."""
+    so each caster's sweep (``footprint``) stays under the case and clear of its neighbours'."""
     c = max(HOUSING, footprint) + 0.004
-    hx, hy = s.depth / 2 - c, s.width / 2 - c
+    # two casters along a short side sweep apart: each at least its sweep off the middle
+    hx, hy = (max(half - c, footprint + GAP) for half in (s.depth / 2, s.width / 2))
     return [Frame.at((sx * hx, sy * hy, 0.0), x=(sx, sy, 0.0), z=(0, 0, 1)) for sx in (1, -1) for sy in (1, -1)]
 
 
@@ -284,22 +310,25 @@ def plinth_height(radius: float) -> float:
     return 2 * radius + GAP + 0.009
 
 
-def plinth(s: CaseSize, w: Inline, material: str) -> list[g.Piece]:
-    """A two-wheeler's moulded base under the shell: a block with a well for each wheel at the back corners,
-    hoods over the wells and two front feet; it stands ``SKID`` off the ground on the feet and the wheels."""
+def plinth(s: CaseSize, w: Inline, material: str, trim: str) -> list[g.Piece]:
+    """A two-wheeler's base under the shell, covered as the shell (``material``, massed as its sheet): a block
+    with a well for each wheel at the back corners, hoods over the wells, and two front feet in ``trim``; it
+    stands ``SKID`` off the ground on the feet and the wheels."""
     hx, hy, top = s.depth / 2, s.width / 2 - 0.002, s.z0 - GAP
     xf = w.x + w.radius + GAP  # the wells' front
     yi, yo = w.y - w.width / 2 - GAP, w.y + w.width / 2 + GAP
     well = 2 * w.radius + GAP
-    pieces = [g.box_between((xf, -hy, SKID), (hx - 0.004, hy, top), material, bevel=0.008),
-              g.box_between((-hx + 0.004, -yi, SKID), (xf, yi, top), material, bevel=0.006)]
+    pieces = [g.box_between((xf, -hy, SKID), (hx - 0.004, hy, top), material, bevel=0.012),
+              g.box_between((-hx + 0.004, -yi, SKID), (xf + 0.01, yi, top), material, bevel=0.008)]
     for sy in (-1, 1):
         y0, y1 = sorted((sy * yo, sy * hy))
-        pieces.append(g.box_between((-hx + 0.004, y0, SKID), (xf, y1, top), material, bevel=0.003))
+        pieces.append(g.box_between((-hx + 0.004, y0, SKID), (xf + 0.01, y1, top), material, bevel=0.004))
         y0, y1 = sorted((sy * yi, sy * yo))
         pieces.append(g.box_between((-hx + 0.004, y0, well), (xf, y1, top), material, bevel=0.002))
+    pieces = [pc.replace(sheet=s.sheet) for pc in pieces]
+    for sy in (-1, 1):
         y0, y1 = sorted((sy * (hy - 0.07), sy * (hy - 0.02)))
-        pieces.append(g.box_between((hx - 0.06, y0, 0.0), (hx - 0.015, y1, SKID + 0.002), material, bevel=0.002))
+        pieces.append(g.box_between((hx - 0.06, y0, 0.0), (hx - 0.015, y1, SKID + 0.002), trim, bevel=0.002))
     return pieces
 
 
@@ -320,20 +349,25 @@ def inline_wheel(w: Inline, side: int, tyre: str, hub: str) -> Assembly:
 # -- the telescopic handle ----------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Telescope:
-    """The two stages: tube length, travel of each stage, the grip's height and thickness."""
+    """The stages: how many, their tube length, each stage's travel, the grip's thickness and height."""
 
+    stages: int
     length: float
     travel: float
     grip: tuple[float, float]
 
+    def radius(self, k: int) -> float:
+        """Stage ``k``'s tube radius: the grip stage's is :data:`TUBES` ``inner``, each stage below 2 mm more."""
+        return TUBES["inner"] + 0.002 * (self.stages - 1 - k)
 
-def telescope(s: CaseSize, grip_share: float) -> Telescope:
-    """Tubes from just over the shell's floor to the top; each stage rises so the grip reaches 1.03-1.1 m
-    (:data:`TUBES`) within the tubes' overlap."""
-    length = s.top - s.z0 - WALL - 2 * GAP
-    travel = min(max((1.08 - s.top) / 2, 0.14), 0.24, length - TUBES["overlap"])
+
+def telescope(s: CaseSize, stages: int, grip_share: float) -> Telescope:
+    """Tubes from just over the shell's floor to the top; the stages rise so the grip reaches ~1.08 m
+    (:data:`TUBES`), each within the tubes' overlap."""
+    length = s.top - s.z0 - WALL - 2 * GAP - 0.01 * (stages - 1)
+    travel = min(max((1.08 - s.top) / stages, 0.11), 0.24, length - TUBES["overlap"])
     lo, hi = TUBES["grip"]
-    return Telescope(length, travel, (lo + grip_share * (hi - lo), 0.03))
+    return Telescope(stages, length, travel, (lo + grip_share * (hi - lo), 0.03))
 
 
 def handle_housing(s: CaseSize, material: str) -> list[g.Piece]:
@@ -348,36 +382,39 @@ def telescope_anchor(s: CaseSize) -> Frame:
     return Frame.at((s.tube_x, 0, s.top + 0.004 + GAP), z=(0, 0, 1), x=(1, 0, 0))
 
 
+def _grip(s: CaseSize, t: Telescope, x: float, z0: float, material: str) -> g.Piece:
+    """The moulded grip across the top of the last stage's tubes, grasped from above."""
+    thick, tall = t.grip
+    half = s.tube_y + TUBES["outer"] + 0.006
+    bar = g.box_between((x - thick / 2, -half, z0), (x + thick / 2, half, z0 + tall), material, bevel=0.008,
+                        name="handle")
+    at = Frame.at((x, 0, z0 + tall), x=(0, 1, 0), z=(0, 0, 1))
+    grasp = Grasp.make((0, 0, 0), (0, 0, -1), (1, 0, 0), thick, min(0.01, tall / 2), "line_fixed_handle",
+                       ((0, 0, -tall / 2), (2 * half, thick, tall), np.eye(3)))
+    return bar.with_grasps(grasp.moved(at.rotation, at.origin))
+
+
 def stage(s: CaseSize, t: Telescope, k: int, material: str, grip: str) -> Assembly:
-    """Stage ``k`` (0: the outer tubes, 1: the inner tubes and the grip) at rest; anchors ``slide`` (this stage's
-    slide, at the bottom of its collar or grip) and ``next`` (the next stage's slide on its collar's top)."""
+    """Stage ``k`` at rest (0: the outer tubes; the last: the thinnest tubes and the grip); every stage but the
+    last is hollow with a collar round its mouth. Anchors ``slide`` (this stage's slide, at the bottom of its
+    collar or grip) and ``next`` (the next stage's slide on its collar's top)."""
     o = telescope_anchor(s).origin
-    r = TUBES["outer"] if k == 0 else TUBES["inner"]
-    collar = TUBES["collar"]
+    r, last, collar = t.radius(k), k == t.stages - 1, TUBES["collar"]
     z0 = o[2] + k * (2 * collar + GAP)  # this stage's top: its collar, or the grip's foot
-    bottom = o[2] - t.length + k * 0.01
+    bottom, top = o[2] - t.length + k * 0.01, z0 + (0.004 if last else 2 * collar)
     pieces = []
     for y in (-s.tube_y, s.tube_y):
-        top = z0 + (2 * collar if k == 0 else 0.004)
-        if k == 0:  # hollow: the inner stage slides in it
-            tube = g.shell([(r, bottom), (r, top)], r - TUBES["inner"] - TUBES["play"], material, center=(o[0], y, 0))
-        else:
+        if last:
             tube = g.cylinder((o[0], y, bottom), (o[0], y, top), r, material)
+        else:  # hollow: the next stage slides in it
+            tube = g.shell([(r, bottom), (r, top)], r - t.radius(k + 1) - TUBES["play"], material, center=(o[0], y, 0))
         pieces.append(tube.replace(sheet=TUBE_SHEET))
-    if k == 0:
-        rc = r + 0.0035  # a moulded collar round the tube's mouth
-        pieces += [g.shell([(rc, z0), (rc, z0 + 2 * collar)], rc - TUBES["inner"] - TUBES["play"], grip,
-                           center=(o[0], y, 0)) for y in (-s.tube_y, s.tube_y)]
+    if last:
+        pieces.append(_grip(s, t, o[0], z0, grip))
     else:
-        thick, tall = t.grip
-        half = s.tube_y + TUBES["outer"] + 0.006
-        bar = g.box_between((o[0] - thick / 2, -half, z0), (o[0] + thick / 2, half, z0 + tall), grip,
-                            bevel=0.008, name="handle")
-        top = z0 + tall
-        at = Frame.at((o[0], 0, top), x=(0, 1, 0), z=(0, 0, 1))
-        grasp = Grasp.make((0, 0, 0), (0, 0, -1), (1, 0, 0), thick, min(0.01, tall / 2), "line_fixed_handle",
-                           ((0, 0, -tall / 2), (2 * half, thick, tall), np.eye(3)))
-        pieces.append(bar.with_grasps(grasp.moved(at.rotation, at.origin)))
+        rc = r + 0.0035  # a moulded collar round the tube's mouth
+        pieces += [g.shell([(rc, z0), (rc, z0 + 2 * collar)], rc - t.radius(k + 1) - TUBES["play"], grip,
+                           center=(o[0], y, 0)) for y in (-s.tube_y, s.tube_y)]
     nxt = Frame.at((o[0], 0, z0 + 2 * collar + GAP), z=(0, 0, 1), x=(1, 0, 0))
     return Assembly.single("handle", pieces, {"slide": Frame.at((o[0], 0, z0), z=(0, 0, 1), x=(1, 0, 0)),
                                               "next": nxt})
