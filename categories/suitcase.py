@@ -4,7 +4,8 @@ Designs (``design``): a hard spinner (checked size, two moulded or aluminium she
 (cabin size, a hard or a soft case) roll on four spinner casters, each turning about its stem (swivel) and
 its wheels about their axles; a soft upright rolls on two inline wheels at its back corners over a moulded
 base. Every case opens as a clamshell: its front shell (the lid) turns about a vertical hinge at its right edge
-and lies open beside the case (the gravity torque about a vertical hinge is nil). The telescopic handle rises
+and lies open beside the case (the gravity torque about a vertical hinge is nil); an expandable case's lid is
+hinged on a gusset that slides out of the body's rim. The telescopic handle rises
 in two stages (a prismatic chain, each stage on the one below); a folding carry handle lies on the top and
 maybe one on the left side; a soft case or a carry-on may have a front pocket hinged on the lid, and a case may
 have a combination lock of three thumbwheels. Parts: ``categories/parts/luggage.py``.
@@ -19,7 +20,7 @@ from infmob_usd.params import Choice, Float
 from .parts import luggage as L
 from .parts import seating as S
 
-CASE = {"side_handle": 0.5, "lock": 0.5}  # optional on every case
+CASE = {"side_handle": 0.5, "lock": 0.5, "expander": 0.4}  # optional on every case
 
 GRAMMAR = Grammar("suitcase", {
     "suitcase": Node(label="body", one_of={"hard_spinner": 0.35, "soft_upright": 0.3, "carry_on": 0.35},
@@ -31,6 +32,7 @@ GRAMMAR = Grammar("suitcase", {
     "lid": Node(label="lid", optional={"divider": 0.5}),
     "pocket_lid": Node(label="lid", optional={"divider": 0.5, "pocket": 0.5}),
     "divider": Node(label="divider"),
+    "expander": Node(label="expander"),
     "pocket": Node(label="pocket"),
     "telescope": Node(label="handle", repeat={"mid_stage": (0, 1)}, required=("grip_stage",)),
     "mid_stage": Node(label="handle"),
@@ -48,8 +50,8 @@ GRAMMAR = Grammar("suitcase", {
 })
 """Designs: hard spinner (four casters), soft upright (two inline wheels), carry-on (a hard or soft case on four
 casters or two inline wheels). Every case has a lid (maybe with a zip-up divider inside; a soft upright's or a
-carry-on's maybe with a front pocket), a telescopic handle of two or three stages and a top carry handle; maybe a
-side carry handle and a three-wheel combination lock."""
+carry-on's maybe with a front pocket; maybe on an expansion gusset), a telescopic handle of two or three stages
+and a top carry handle; maybe a side carry handle and a three-wheel combination lock."""
 
 PARAMS = (
     Float("height_share", "height (Z, wheels included) within the design's range (SIZES in parts/luggage.py),"
@@ -104,7 +106,9 @@ class SuitcaseLayout(Layout):
         self.grow(node.one(design))
 
     def _case(self, node):
-        for kind in ("lid", "pocket_lid", "telescope", "top_handle", "side_handle", "spinners", "wheels", "lock"):
+        self.lid_parent = "body"
+        for kind in ("expander", "lid", "pocket_lid", "telescope", "top_handle", "side_handle", "spinners", "wheels",
+                     "lock"):
             if node.one(kind):
                 self.grow(node.one(kind))
 
@@ -112,12 +116,18 @@ class SuitcaseLayout(Layout):
 
     def lid(self, node):
         made = self.place(L.lid(self.size, self.shell, "lining", self.ribbed), "lid")
-        self.hinge("body", made.root, made.anchor("hinge"), upper=L.LID_OPENS)
+        self.hinge(self.lid_parent, made.root, made.anchor("hinge"), upper=L.LID_OPENS)
         for kind in ("pocket", "divider"):
             if node.one(kind):
                 self.grow(node.one(kind), lid=made)
 
     pocket_lid = lid
+
+    def expander(self, node):
+        made = self.place(L.expander(self.size, "trim" if self.size.hard else self.shell), "expander")
+        depth = L.expander_depth(self.size)
+        self.slide("body", made.root, made.anchor("slide"), upper=depth - L.EXPANDER["overlap"])
+        self.lid_parent = made.root
 
     def divider(self, node, lid):
         made = self.place(L.divider(self.size, "lining", "trim"), "divider")

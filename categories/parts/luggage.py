@@ -65,6 +65,8 @@ TUBES = dict(outer=0.0135, inner=0.0095, play=0.001, collar=0.004, grip=(0.024, 
 CARRY = dict(grip=0.011, arm=0.005, length=(0.13, 0.18), reach=0.035, boss=0.01)
 CARRY_TURN = math.radians(90)
 LID_OPENS = math.radians(180)  # a clamshell opens flat
+# Expandable cases (Samsonite "EXP", Travelpro expandable): a zipped gusset lets the front section out 4-6 cm.
+EXPANDER = dict(depth=0.05, overlap=0.012)
 # Spinner housings and wheels: moulded housings ~55 mm across round twin or single 50-65 mm wheels
 # (Samsonite, Hinomoto spare wheels); inline two-wheel uprights: 70-80 mm skate wheels 25 mm wide in
 # recessed housings at the back corners (Travelpro, Briggs & Riley).
@@ -174,9 +176,10 @@ def _tray_collision(w: float, h: float, d: float, r: float, e: float, top_to: fl
     pieces.append(g.box_between((0, -w / 2 + r, h / 2 - t), (min(x1, top_to), w / 2 - r, h / 2), "x").vertices)
     for cy, cz, a0 in ((w / 2 - r, h / 2 - r, 0.0), (-w / 2 + r, h / 2 - r, 0.5 * math.pi),
                        (-w / 2 + r, -h / 2 + r, math.pi), (w / 2 - r, -h / 2 + r, 1.5 * math.pi)):
-        a = np.linspace(a0, a0 + 0.5 * math.pi, 5)
-        arc = [(cy + rr * math.cos(b), cz + rr * math.sin(b)) for rr in (r, r - t) for b in a]
-        pieces.append(np.array([(x, y, z) for x in (0.0, x1) for y, z in arc]))
+        for k in range(3):  # three 30-degree segments: their hulls stay within 1.5 mm of the wall's inside
+            a = np.linspace(a0 + k * math.pi / 6, a0 + (k + 1) * math.pi / 6, 3)
+            arc = [(cy + rr * math.cos(b), cz + rr * math.sin(b)) for rr in (r, r - t) for b in a]
+            pieces.append(np.array([(x, y, z) for x in (0.0, x1) for y, z in arc]))
     return pieces
 
 
@@ -214,6 +217,36 @@ def _ribs(s: CaseSize, x_face: float, sign: float, material: str) -> list[g.Piec
     lo, hi = sorted((x_face - sign * 0.001, x_face + sign * 0.0025))
     return [g.box_between((lo, y - 0.006, s.zc - h / 2), (hi, y + 0.006, s.zc + h / 2), material, bevel=0.0012)
             for y in ys]
+
+
+def expander_depth(s: CaseSize) -> float:
+    """How deep an expansion gusset reaches into the body at rest: :data:`EXPANDER` ``depth``, short of the
+    handle's tubes."""
+    return min(EXPANDER["depth"], s.split - (s.tube_x + TUBES["outer"] + GAP))
+
+
+def expander(s: CaseSize, material: str) -> Assembly:
+    """An expansion gusset: a ring just inside the body's rim from ``expander_depth`` behind the split up to it,
+    which slides out along +x carrying the lid (anchors ``slide``: out along +x; ``hinge``: the lid's, as
+    :func:`hinge_frame`)."""
+    d = expander_depth(s)
+    inset = WALL + GAP
+    w, h, r = s.width - 2 * inset, s.height - s.z0 - 2 * inset, s.corner - inset
+    ring = _rounded_rect(w, h, r)
+    inner = _rounded_rect(w - 2 * WALL, h - 2 * WALL, r - WALL)
+
+    def prism(yz, a, b):
+        return _hull_mesh(np.vstack([np.column_stack([np.full(len(yz), x), yz[:, 0], yz[:, 1] + s.zc])
+                                     for x in (a, b)]))
+
+    x0, x1 = s.split - d, s.split
+    mesh = g.subtract(prism(ring, x0, x1), [prism(inner, x0 - 0.01, x1 + 0.01)])
+    convex = [c for c in _tray_collision(w, h, d, r, 0.0, math.inf)[1:]]  # its walls and corners, no face
+    place = Frame.at((x0, 0, s.zc))
+    convex = [np.asarray([place.point(p) for p in c]) for c in convex]
+    piece = g.Piece(mesh.vertices, mesh.faces, material, convex, sheet=s.sheet)
+    return Assembly.single("expander", [piece], {"slide": Frame.at((x1, 0, s.zc), z=(1, 0, 0), x=(0, 0, 1)),
+                                                 "hinge": hinge_frame(s)})
 
 
 def hinge_frame(s: CaseSize) -> Frame:
