@@ -457,7 +457,8 @@ def stage(s: CaseSize, t: Telescope, k: int, material: str, grip: str) -> Assemb
 def top_handle_frame(s: CaseSize) -> Frame:
     """The top carry handle's pivot: along -y in front of the telescopic grip, so a positive turn lifts
     its grip, which lies flat towards the front."""
-    x = s.tube_x + 0.03 + CARRY["boss"]
+    # its mounts (20 mm long) stay on the body's top, behind the split
+    x = min(s.tube_x + 0.03 + CARRY["boss"], s.split - 0.01 - GAP)
     return Frame.at((x, 0, s.top + CARRY["grip"] + GAP), x=(1, 0, 0), z=(0, -1, 0))
 
 
@@ -487,7 +488,7 @@ def carry_mounts(at: Frame, length: float, material: str) -> list[g.Piece]:
     """The two moulded mounts a carry handle pivots in, from the shell out to its pivot line (body pieces)."""
     out = []
     for z in (-length / 2 - 0.009, length / 2 + 0.009):
-        lo, hi = at.point((-0.01, -CARRY["grip"] - GAP - 0.002, z - 0.003)), at.point((0.01, 0.004, z + 0.003))
+        lo, hi = at.point((-0.01, -CARRY["grip"] - GAP, z - 0.003)), at.point((0.01, 0.004, z + 0.003))
         out.append(g.box_between(np.minimum(lo, hi), np.maximum(lo, hi), material, bevel=0.002))
     return out
 
