@@ -193,5 +193,6 @@ def assemble(bp, seed: int, materials_rng, texture_size: int = 512, params: dict
     obj = physical.limit_to_clearance(obj)
     obj = assign_drives(obj)  # after every limit is final: the stop budget depends on the range
     obj.interaction = annotate(obj)  # after the limits: the open state and the path read them
+    obj.densities = densities  # slot -> kg/m^3 of its substrate (a painted slot on steel or on wood)
     obj.timings["geometry"] += time.perf_counter() - t2
     return obj

@@ -85,8 +85,13 @@ _CONTENTS = """#usda 1.0
 
 """
 # a collider's physics (physics.usda, under <root>/<link>/collisions): as Sdf writes the prim at depth 3
+# MuJoCo's and Newton's collider schemas name the runtimes' convex-hull mesh collision (SimReady MUJOCO.COL.001,
+# NEWTON.COL.001); their attributes keep the schemas' defaults
+_COLLIDER_APIS = ", ".join(f'"{api}"' for api in (
+    "PhysicsCollisionAPI", "PhysicsMeshCollisionAPI", "MaterialBindingAPI", "MjcCollisionAPI", "NewtonCollisionAPI",
+    "NewtonMeshCollisionAPI"))
 _COLLIDER = """            over "hull_{i:03d}" (
-                prepend apiSchemas = ["PhysicsCollisionAPI", "PhysicsMeshCollisionAPI", "MaterialBindingAPI"]
+                prepend apiSchemas = [""" + _COLLIDER_APIS + """]
             )
             {{
                 rel material:binding:physics = <{material}>
@@ -191,6 +196,16 @@ def _mesh(mesh: Sdf.PrimSpec, points: np.ndarray, extent: np.ndarray, faces: np.
     _new_attr(mesh, "extent", _FLOAT3S, _VARYING, False).default = _vec3f(extent)
 
 
+def _unique_rows(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct rows of float32 ``a`` in first-seen order, and each row's index among them."""
+    keys = np.ascontiguousarray(a).view(np.dtype((np.void, a.dtype.itemsize * a.shape[1]))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    order = np.argsort(first, kind="stable")  # np.unique sorts by bytes: renumber in first-seen order
+    rank = np.empty_like(order)
+    rank[order] = np.arange(len(order))
+    return a[first[order]], rank[inverse.ravel()].astype(np.int32)
+
+
 def _visual_meshes(obj):
     """Every visual mesh of ``obj``, per link: ``[(vname, slot, role, verts, lo, hi, faces, normals, uvs)]``
     with float32 verts, normals and uvs, and the float64 bounds ``lo``, ``hi`` of the verts."""
@@ -251,6 +266,15 @@ def _hulls(obj) -> dict[str, list]:
 # -- USD text layers, written as text --------------------------------------------------
 
 
+def _tuple_text(value: tuple) -> list:
+    """``(x, y, ...)`` as :meth:`_Spec.attr` lines hold it: the floats left for :func:`_usda` to format."""
+    line: list = ["("]
+    for i, x in enumerate(value):
+        line += [", ", float(x)] if i else [float(x)]
+    line.append(")")
+    return line
+
+
 class _Spec:
     """A prim of a ``.usda`` layer written as text, exactly as Sdf writes it: specifier, type, name,
     ``prepend apiSchemas``, properties in name order, children in the order made, 4-space indents.
@@ -285,11 +309,14 @@ class _Spec:
         line = [f"{'uniform ' if uniform else ''}{type_name} {name}"]
         if value is not None:
             line.append(" = ")
-            if isinstance(value, tuple):
-                line.append("(")
-                for i, x in enumerate(value):
-                    line += [", ", float(x)] if i else [float(x)]
-                line.append(")")
+            if isinstance(value, list):  # an array of floats or of tuples of floats
+                line.append("[")
+                for k, item in enumerate(value):
+                    line += [", "] if k else []
+                    line += _tuple_text(item) if isinstance(item, tuple) else [float(item)]
+                line.append("]")
+            elif isinstance(value, tuple):
+                line += _tuple_text(value)
             elif isinstance(value, bool):
                 line.append("1" if value else "0")
             elif isinstance(value, int):
@@ -376,7 +403,9 @@ def _geometry(layer: Sdf.Layer, obj, visuals, hulls) -> None:
                 mesh = _from_template(templates, _VISUAL, layer, vpath.AppendChild(vname))  # subdivisionScheme
                 _mesh(mesh, verts, np.array([lo, hi], np.float32), faces.astype(np.int32), counts)
                 _primvar(mesh, "normals", _NORMALS, _vec3f(normals), "faceVarying")
-                _primvar(mesh, "primvars:st", _TEXCOORDS, _vec2f(uvs), "faceVarying")
+                st, st_index = _unique_rows(uvs)
+                _primvar(mesh, "primvars:st", _TEXCOORDS, _vec2f(st), "faceVarying")
+                _new_attr(mesh, "primvars:st:indices", _INTS, _VARYING, False).default = _ints(st_index)
                 if role:
                     mesh.SetInfo("apiSchemas", Sdf.TokenListOp.Create(prependedItems=["SemanticsLabelsAPI:class"]))
                     _label(mesh, role)
@@ -417,6 +446,19 @@ def _grasp_frames(root: Sdf.PrimSpec, obj) -> None:
                     ("openThreshold", "float", t["open_threshold"]),
                     ("closedThreshold", "float", t["closed_threshold"])):
                 _attr(gp, f"infmob:{name}", kind, value, custom=True)
+            _grasp_line(gp, f"grasp_identifier_{t['joint']}_{i}", g.width)
+
+
+def _grasp_line(frame: Sdf.PrimSpec, name: str, width: float) -> None:
+    """The grasp as SimReady's graspable vector (GSP.001): a guide line in the grasp frame along its closing
+    axis (y), between the two fingers' openings, through the part the fingers close on."""
+    half = float(width) / 2
+    line = _prim(frame, name, _DEF, "BasisCurves")
+    _attr(line, "type", "token", "linear", uniform=True)
+    _attr(line, "curveVertexCounts", "int[]", Vt.IntArray([2]))
+    _attr(line, "points", "point3f[]", Vt.Vec3fArray([Gf.Vec3f(0, -half, 0), Gf.Vec3f(0, half, 0)]))
+    _attr(line, "extent", "float3[]", Vt.Vec3fArray([Gf.Vec3f(0, -half, 0), Gf.Vec3f(0, half, 0)]))
+    _attr(line, "purpose", "token", "guide", uniform=True)  # drawn by tools that show guides, not rendered
 
 
 def _materials(obj, visuals) -> str:
@@ -428,6 +470,8 @@ def _materials(obj, visuals) -> str:
     roughness texture's; see-through looks get ``inputs:opacity`` and ``inputs:ior``.
     """
     from infmob_usd.materials import FAMILIES
+    from infmob_usd.materials.families import nonvisual
+    densities = getattr(obj, "densities", {})
     root = _Spec("over", "", obj.name)
     looks = root.child("def", "Scope", "Looks")
     lpath = f"/{obj.name}/Looks"
@@ -436,6 +480,10 @@ def _materials(obj, visuals) -> str:
         maps = [m for m in _MAPS if m in obj.textures.get(slot, {})]
         mat = looks.child("def", "Material", slot, ("SemanticsLabelsAPI:material",))
         mat.attr("token[]", "semantics:labels:material", f'["{look.family}"]')
+        base, coating, attributes = nonvisual(look.family, densities.get(slot), look.opacity)
+        mat.attr("token", "omni:simready:nonvisual:base", f'"{base}"')
+        mat.attr("token", "omni:simready:nonvisual:coating", f'"{coating}"')
+        mat.attr("token[]", "omni:simready:nonvisual:attributes", f'["{attributes}"]')
         mat.connect("token", "outputs:surface", f"{mpath}/PreviewSurface.outputs:surface")
         surf = mat.child("def", "Shader", "PreviewSurface")
         surf.attr("token", "info:id", '"UsdPreviewSurface"', uniform=True)
@@ -452,6 +500,7 @@ def _materials(obj, visuals) -> str:
             surf.attr("float", "inputs:roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
         if "metallic" not in maps:
             surf.attr("float", "inputs:metallic", float(look.metallic))
+        _open_pbr(mat, mpath, look, FAMILIES[look.family].ior)
         if not maps:
             continue
         reader = mat.child("def", "Shader", "TexCoordReader")
@@ -489,8 +538,37 @@ def _materials(obj, visuals) -> str:
             continue
         vp = root.child("over", "", link.name).child("over", "", "visuals")
         for vname, slot, *_ in visuals[link.name]:
-            vp.child("over", "", vname, ("MaterialBindingAPI",)).rel("material:binding", f"{lpath}/{slot}")
+            mesh = vp.child("over", "", vname, ("MaterialBindingAPI",))
+            mesh.rel("material:binding", f"{lpath}/{slot}")
+            # what a viewer without the material draws (SimReady DISP.001): the look's mean colour, and its
+            # opacity where it is see-through
+            look = obj.materials[slot]
+            mesh.attr("color3f[]", "primvars:displayColor", [_display_colour(look)])
+            if look.opacity < 1.0:
+                mesh.attr("float[]", "primvars:displayOpacity", [float(look.opacity)])
     return _usda(root)
+
+
+def _open_pbr(mat: _Spec, mpath: str, look, ior: float) -> None:
+    """The look as an OpenPBR surface on the MaterialX render context (SimReady VM.PBR.001), beside the
+    UsdPreviewSurface: its mean colour, metalness and roughness as constants (the maps stay on the preview
+    surface), see-through looks as transmission through a thin wall of the family's index."""
+    mat.connect("token", "outputs:mtlx:surface", f"{mpath}/OpenPBR.outputs:out")
+    pbr = mat.child("def", "Shader", "OpenPBR")
+    pbr.attr("token", "info:id", '"ND_open_pbr_surface_surfaceshader"', uniform=True)
+    pbr.attr("color3f", "inputs:base_color", _display_colour(look))
+    pbr.attr("float", "inputs:base_metalness", float(look.metallic))
+    pbr.attr("float", "inputs:specular_roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
+    pbr.attr("float", "inputs:specular_ior", min(3.0, max(1.0, float(ior))))
+    if look.opacity < 1.0:
+        pbr.attr("float", "inputs:transmission_weight", 1.0 - float(look.opacity))
+        pbr.attr("bool", "inputs:geometry_thin_walled", True)
+    pbr.attr("token", "outputs:out")
+
+
+def _display_colour(look) -> tuple[float, ...]:
+    """The base colour a look's texture averages to, tinted by its wear, in [0, 1] (linear, as diffuseColor)."""
+    return tuple(min(1.0, max(0.0, float(c) * float(t))) for c, t in zip(look.base_color, look.wear.tint))
 
 
 def _compound_pairs(obj) -> list[tuple[str, str]]:
@@ -630,6 +708,9 @@ def _physics(obj, hulls) -> str:
             # PhysX joint axis (current physx-usd-schemas): velocity limit (deg/s or m/s), Coulomb friction
             ax = f"physxJointAxis:{drive}:"
             uj.attr("float", ax + "maxJointVelocity", float(j.velocity / per_unit))
+            # the joint-level name PhysX schemas before the per-axis API used; Isaac Lab's importers and
+            # isaaclab-robot-doctor read this one
+            uj.attr("float", "physxJoint:maxJointVelocity", float(j.velocity / per_unit))
             uj.attr("float", ax + "staticFrictionEffort", float(j.friction))
             uj.attr("float", ax + "dynamicFrictionEffort", float(j.friction))
             armature = getattr(j, "armature", None)
@@ -669,6 +750,8 @@ def _write_interface(obj, folder: Path, bounds) -> Path:
         meta = simready_metadata(obj, bounds)
         meta["asset_extents"] = Gf.Vec3d(*meta["asset_extents"])
         meta["validation"] = {"profile": "Robotics-Prop", "profile_version": "4.0.0"}  # simready-validate's default
-        layer.customLayerData = {"SimReady_Metadata": meta}
+        # SR.001 reads these four directly in customLayerData (SR.003/SR.004 inside SimReady_Metadata)
+        direct = {k: meta[k] for k in ("asset_name", "asset_type", "source_file", "usd_date_generated")}
+        layer.customLayerData = {"SimReady_Metadata": meta, **direct}
     layer.Save()
     return path

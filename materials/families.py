@@ -29,8 +29,8 @@ from typing import Any
 import numpy as np
 
 __all__ = [
-    "CONTACT", "FAMILIES", "LOOKS_PER_VARIANT", "WOOD_SPECIES", "Contact", "Family", "Look", "Wear", "library",
-    "library_look", "sample_look", "sample_wear", "srgb_to_linear",
+    "CONTACT", "FAMILIES", "NONVISUAL", "NONVISUAL_METAL", "LOOKS_PER_VARIANT", "WOOD_SPECIES", "Contact", "Family",
+    "Look", "Wear", "library", "library_look", "nonvisual", "sample_look", "sample_wear", "srgb_to_linear",
 ]
 
 LOOKS_PER_VARIANT = 16
@@ -610,6 +610,37 @@ CONTACT: dict[str, Contact] = {
                       " restitution: no published figure found, 0.1 chosen (upholstery absorbs impacts)"),
 }
 """Physics-material data per family (friction and restitution), with the source of each figure."""
+
+
+NONVISUAL: dict[str, tuple[str, str]] = {
+    # family -> (omni:simready:nonvisual:base, :coating), from the SimReady non-visual material table (base:
+    # metals, polymers, glass, other; coating: none, paint, clearcoat, paint_clearcoat). The table has no
+    # ceramic: glazed porcelain is taken as stone under a clear glaze; chrome plate as its listed "shiny metal".
+    "wood": ("wood", "clearcoat"),  # lacquered or oiled furniture wood
+    "painted": ("wood", "paint"),  # painted wood/MDF, as CONTACT takes it; painted sheet steel: NONVISUAL_METAL
+    "brushed_metal": ("steel", "none"),
+    "chrome": ("silver", "none"),
+    "cast_iron": ("iron", "none"),
+    "plastic": ("plastic", "none"),
+    "glass": ("clear_glass", "none"),
+    "ceramic": ("stone", "clearcoat"),
+    "screen": ("clear_glass", "none"),  # a display's cover glass
+    "enamel": ("steel", "paint"),  # vitreous enamel fused on steel
+    "rubber": ("rubber", "none"),
+    "fabric": ("fabric", "none"),
+}
+"""Non-visual (lidar, radar) material of each family, for SimReady NVM.001-003."""
+
+NONVISUAL_METAL = 2000.0
+"""kg/m^3 above which a ``painted`` slot's substrate (the category's ``substrates``) is sheet steel, not wood."""
+
+
+def nonvisual(family: str, density: float | None, opacity: float) -> tuple[str, str, str]:
+    """``(base, coating, attributes)`` of a look for the SimReady non-visual material tokens."""
+    base, coating = NONVISUAL[family]
+    if family == "painted" and density is not None and density > NONVISUAL_METAL:
+        base = "steel"
+    return base, coating, "visually_transparent" if opacity < 1.0 else "none"
 
 
 def srgb_to_linear(c: np.ndarray | float) -> np.ndarray:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import itertools
 import math
 
+import numpy as np
+
 from zoo import make_bp, movable
 
 
@@ -72,3 +74,26 @@ def joint_states(joint, together: bool = False) -> list[tuple[float, ...]]:
         out += [tuple(v if i == k else 0.0 for i in range(len(lims))) for v in (lo, hi)]
     out += list(itertools.product(*lims))
     return list(dict.fromkeys(out))
+
+
+def _seg(p, a, b):
+    ab = b - a
+    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-30), 0, 1)
+    return np.linalg.norm(p - (a + t[:, None] * ab), axis=1)
+
+
+def surface_distance(v, f, point) -> float:
+    """Distance from ``point`` to the nearest triangle of ``(v, f)`` (exact, every triangle)."""
+    p = np.asarray(point, float)[None, :]
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    n = np.cross(b - a, c - a)
+    nn = np.linalg.norm(n, axis=1)
+    ok = nn > 1e-18
+    un = n / np.where(ok, nn, 1.0)[:, None]
+    h = np.einsum("ij,ij->i", p - a, un)
+    q = p - h[:, None] * un
+    inside = ok.copy()
+    for x, y in ((a, b), (b, c), (c, a)):
+        inside &= np.einsum("ij,ij->i", np.cross(y - x, q - x), un) >= -1e-12
+    edges = np.minimum(np.minimum(_seg(p, a, b), _seg(p, b, c)), _seg(p, c, a))
+    return float(np.where(inside, np.abs(h), edges).min())

@@ -14,35 +14,14 @@ from infmob_usd.annotations import AnnotationError, load
 from infmob_usd.grasps import MAX_WIDTH
 from infmob_usd.interaction import PALM, _carried, _mesh, operated
 
+from helpers import surface_distance
+
 SEEDS = (0, 1, 2)
 
 
 @functools.lru_cache(maxsize=8)
 def _made(category: str, seed: int):
     return api.generate(category, seed, texture_size=16)
-
-
-def _seg(p, a, b):
-    ab = b - a
-    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-30), 0, 1)
-    return np.linalg.norm(p - (a + t[:, None] * ab), axis=1)
-
-
-def surface_distance(v, f, point) -> float:
-    """Distance from ``point`` to the nearest triangle of ``(v, f)`` (exact, every triangle)."""
-    p = np.asarray(point, float)[None, :]
-    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
-    n = np.cross(b - a, c - a)
-    nn = np.linalg.norm(n, axis=1)
-    ok = nn > 1e-18
-    un = n / np.where(ok, nn, 1.0)[:, None]
-    h = np.einsum("ij,ij->i", p - a, un)
-    q = p - h[:, None] * un
-    inside = ok.copy()
-    for x, y in ((a, b), (b, c), (c, a)):
-        inside &= np.einsum("ij,ij->i", np.cross(y - x, q - x), un) >= -1e-12
-    edges = np.minimum(np.minimum(_seg(p, a, b), _seg(p, b, c)), _seg(p, c, a))
-    return float(np.where(inside, np.abs(h), edges).min())
 
 
 @pytest.mark.parametrize("category", api.list_categories())

@@ -41,7 +41,7 @@ def _cases(engine):
     for c, s in CASES:
         reason = KNOWN_FAILURES.get((engine, c, s))
         marks = [pytest.mark.xfail(strict=True, raises=AssertionError, reason=reason)] if reason else []
-        yield pytest.param(c, s, id=f"{c}-{s}", marks=marks)
+        yield pytest.param(c, s, id=f"{c}-{s}", marks=[*marks, pytest.mark.xdist_group(f"push-{c}-{s}")])
 
 
 @pytest.fixture(scope="module")
@@ -88,7 +88,8 @@ def test_push_in_pybullet(folders, category, seed):
     assert not _fails(pushes), _fails(pushes)
 
 
-@pytest.mark.parametrize("category", infmob_usd.list_categories())
+@pytest.mark.parametrize("category", [pytest.param(c, marks=pytest.mark.xdist_group(f"push-{c}-0"))
+                                      for c in infmob_usd.list_categories()])
 def test_mujoco_check_on_the_mjcf(folders, category):
     (result,) = check_mujoco(folders(category, 0))
     assert result.ok, result.detail

@@ -10,6 +10,7 @@ import math
 import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import cv2
 import numpy as np
@@ -22,6 +23,7 @@ from infmob_usd.layers.thumbnail import thumbnail_path
 from infmob_usd.materials.families import CONTACT
 from infmob_usd.validate.simready import available
 
+from helpers import surface_distance
 from zoo import zoo
 
 
@@ -121,6 +123,102 @@ def test_simready_metadata_and_thumbnail(zoo_folder, tmp_path, monkeypatch):
     assert layer.customLayerData["SimReady_Metadata"]["usd_date_generated"] == "2023-11-14"
 
 
+@pytest.fixture(scope="module")
+def microwave(tmp_path_factory):
+    """A microwave: painted steel, glass, rubber feet, buttons and a door with grasps."""
+    return infmob_usd.save(infmob_usd.generate("microwave", 0, texture_size=16), tmp_path_factory.mktemp("mw"))
+
+
+def test_every_drawn_mesh_has_a_display_colour_and_glass_an_opacity(microwave):
+    """DISP.001-003: what a viewer without the material draws: the look's colour, see-through where it is glass."""
+    stage = _stage(microwave)
+    meshes = [p for p in stage.Traverse() if p.IsA(UsdGeom.Mesh)
+              and UsdGeom.Imageable(p).ComputePurpose() in (UsdGeom.Tokens.default_, UsdGeom.Tokens.render)]
+    assert meshes
+    seen_glass = False
+    for prim in meshes:
+        colour = UsdGeom.PrimvarsAPI(prim).FindPrimvarWithInheritance("displayColor").Get()
+        assert colour is not None and len(colour) == 1 and all(0 <= c <= 1 for c in colour[0]), prim.GetPath()
+        material = UsdShade.MaterialBindingAPI(prim).ComputeBoundMaterial()[0].GetPrim()
+        surface = material.GetChild("PreviewSurface")
+        opacity = surface.GetAttribute("inputs:opacity").Get()
+        shown = UsdGeom.PrimvarsAPI(prim).GetPrimvar("displayOpacity")
+        assert (shown.Get()[0] == pytest.approx(opacity)) if opacity < 1 else not shown.HasAuthoredValue()
+        seen_glass |= opacity < 1
+    assert seen_glass
+
+
+def test_materials_carry_non_visual_tokens_from_simready_table(microwave):
+    """NVM.001-003: base, coating and attributes from the allowed values; glass is transparent, painted sheet
+    steel is steel (not the painted family's default wood)."""
+    bases = {"steel", "silver", "iron", "plastic", "clear_glass", "stone", "wood", "rubber", "fabric"}
+    stage = _stage(microwave)
+    found = {}
+    for prim in stage.GetPrimAtPath(f"/{microwave.name}/Looks").GetChildren():  # the visual materials
+        if prim.IsA(UsdShade.Material):
+            base = prim.GetAttribute("omni:simready:nonvisual:base").Get()
+            coating = prim.GetAttribute("omni:simready:nonvisual:coating").Get()
+            (attribute,) = prim.GetAttribute("omni:simready:nonvisual:attributes").Get()
+            family = prim.GetAttribute("semantics:labels:material").Get()[0]
+            assert base in bases and coating in {"none", "paint", "clearcoat", "paint_clearcoat"}, prim.GetPath()
+            assert (attribute == "visually_transparent") == (family == "glass"), prim.GetPath()
+            found[family] = base
+    assert found["glass"] == "clear_glass" and found.get("brushed_metal", "steel") == "steel"
+
+
+def test_grasp_lines_cross_the_part_they_grasp(microwave):
+    """GSP.001: a guide line per grasp frame, along the fingers' closing axis, through its link's mesh."""
+    stage = _stage(microwave)
+    lines = [p for p in stage.Traverse() if p.GetTypeName() == "BasisCurves"]
+    targets = json.loads((microwave / "annotations.json").read_text())["targets"]
+    assert len(lines) == sum(len(t["grasps"]) for t in targets) > 0
+    cache = UsdGeom.XformCache()
+    for prim in lines:
+        assert prim.GetName().startswith("grasp_identifier") and UsdGeom.Imageable(prim).ComputePurpose() == "guide"
+        a, b = (np.array(cache.GetLocalToWorldTransform(prim).Transform(p)) for p in prim.GetAttribute("points").Get())
+        link = prim.GetParent().GetParent()
+        tris = []
+        for mesh in (m for m in Usd.PrimRange(link) if m.IsA(UsdGeom.Mesh)
+                     and UsdGeom.Imageable(m).ComputePurpose() == "default"):
+            xf = cache.GetLocalToWorldTransform(mesh)
+            pts = np.array([xf.Transform(p) for p in mesh.GetAttribute("points").Get()])
+            tris.append(pts[np.array(mesh.GetAttribute("faceVertexIndices").Get()).reshape(-1, 3)])
+        soup = np.vstack(tris).reshape(-1, 3)
+        faces = np.arange(len(soup)).reshape(-1, 3)
+        d = np.array([surface_distance(soup, faces, a + s * (b - a)) for s in np.linspace(0, 1, 21)])
+        assert d.min() < 2e-3, (prim.GetPath(), d.min())
+
+
+def test_every_look_has_an_open_pbr_surface_and_a_wrong_id_is_caught(microwave, tmp_path):
+    """VM.PBR.001: an OpenPBR surface on the MaterialX context; usd-core knows no MaterialX node, so the
+    usd_validators check judges the id against MaterialX's library: a misspelt one still fails."""
+    from infmob_usd.validate.usd_check import usd_validators
+
+    stage = _stage(microwave)
+    looks = stage.GetPrimAtPath(f"/{microwave.name}/Looks").GetChildren()
+    for mat in looks:
+        source = UsdShade.Material(mat).GetSurfaceOutput("mtlx").GetConnectedSources()[0][0].source.GetPrim()
+        assert source.GetAttribute("info:id").Get() == "ND_open_pbr_surface_surfaceshader", mat.GetPath()
+    assert usd_validators(stage).ok
+    bad = shutil.copytree(microwave, tmp_path / microwave.name)
+    text = (bad / "payload" / "materials.usda").read_text()
+    (bad / "payload" / "materials.usda").write_text(text.replace("ND_open_pbr_surface_surfaceshader",
+                                                                 "ND_open_pbr_surface_surfaceshaderX", 1))
+    result = usd_validators(_stage(bad))
+    assert not result.ok and "surfaceshaderX" in result.detail
+
+
+def test_isaaclab_robot_doctor_finds_nothing_to_warn_of(microwave):
+    """isaaclab-robot-doctor reads the joint velocity limit from ``physxJoint:maxJointVelocity``; the USD and
+    the URDF give it every limit it looks for."""
+    doctor = shutil.which("isaaclab-robot-doctor", path=str(Path(sys.executable).parent))
+    if doctor is None:
+        pytest.skip("needs the simready extra (isaaclab-robot-doctor)")
+    for path in (microwave / f"{microwave.name}.usda", microwave / f"{microwave.name}.urdf"):
+        out = subprocess.run([doctor, "check", str(path)], capture_output=True, text=True, check=False)
+        assert out.returncode == 0 and " 0 warnings" in out.stdout, out.stdout[-2000:]
+
+
 def test_every_category_has_a_sourced_wikidata_qcode():
     """SR.004 requires `qcode`: every category has one in the table, each beside the item's URI and label as
     the cited public file gives them (a new category needs a verified item, or the nearest verified broader
@@ -174,3 +272,19 @@ def test_simready_check_on_every_category(tmp_path):
         checks = {c["name"]: c for c in r["checks"]}
         assert all(c["ok"] for n, c in checks.items() if n != "simready"), r["object"]
         assert checks["simready"]["ok"], f"{r['object']}: {checks['simready']['detail']}"
+
+
+@needs_validators
+def test_a_folder_moved_out_of_its_category_folder_is_told_why_np005_fails(microwave, tmp_path):
+    """SimReady NP.005 reads the folder above the object as the asset's root: moved under another name the
+    check fails with one sentence saying what to do; in its category's folder it passes."""
+    from infmob_usd.validate.simready import check_simready
+
+    moved = shutil.copytree(microwave, tmp_path / "foo" / microwave.name)
+    (result,) = check_simready(moved)
+    assert not result.ok and result.detail.startswith("NP.005:") and "'foo'" in result.detail
+    assert "microwave/microwave_000000/" in result.detail
+    home = shutil.copytree(microwave, tmp_path / "microwave" / microwave.name)
+    (result,) = check_simready(home)
+    assert result.ok, result.detail
+

@@ -3,8 +3,11 @@
 One check, ``simready``, passes when all of these hold for the object's root layer:
 
 * SimReady Foundation profile **Robotics-Prop 4.0.0** (``simready-validate`` with the installed
-  ``simready-foundation-tier-core``): no failure of a requirement the profile makes mandatory, and its
-  optional multi-body feature ``FET_004_STANDARD`` passes too;
+  ``simready-foundation-tier-core``): no failure of a requirement the profile makes mandatory, and these
+  optional features pass too: multi-body physics ``FET_004_STANDARD``, SR.001 metadata ``FET_000_STANDARD``,
+  display colour ``FET_010_STANDARD``, non-visual materials ``FET_007_STANDARD``, MuJoCo and Newton colliders
+  ``FET_003/004_MUJOCO``, ``FET_003/004_NEWTON``, OpenPBR surfaces ``FET_006_OPENPBR``, and grasp vectors
+  ``FET_005_STANDARD`` where the object has a part to operate (a vase without a lid has none);
 * the features ``FET_024_STANDARD`` (articulation) and ``FET_022_STANDARD`` (driven joints) of profile
   **Robot-Body 3.0.0** pass;
 * ``omniverse-asset-validator``'s default rules report no failure or error (warnings are allowed).
@@ -28,7 +31,11 @@ from pathlib import Path
 from .result import CheckResult
 
 PROP = ("Robotics-Prop", "4.0.0")
-PROP_OPTIONAL = ("FET_004_STANDARD",)  # multi-body physics: optional in the profile, required by us
+# optional in the profile, required by us: multi-body physics; SR.001 metadata; display colour; non-visual
+# (lidar/radar) materials; MuJoCo's and Newton's collider schemas; OpenPBR surfaces
+PROP_OPTIONAL = ("FET_004_STANDARD", "FET_000_STANDARD", "FET_010_STANDARD", "FET_007_STANDARD",
+                 "FET_003_MUJOCO", "FET_004_MUJOCO", "FET_003_NEWTON", "FET_004_NEWTON", "FET_006_OPENPBR")
+GRASP_FEATURE = "FET_005_STANDARD"  # grasp vectors: required of an object with a part to operate
 BODY = ("Robot-Body", "3.0.0")
 BODY_FEATURES = ("FET_024_STANDARD", "FET_022_STANDARD")  # articulation, driven joints
 PACKAGES = ("simready-validate", "simready-foundation-tier-core", "omniverse-asset-validator",
@@ -216,12 +223,21 @@ def run_simready(usd_path: str | Path) -> dict:
     else:
         bad_prop += [f"{f}: {e.get('failing requirements')}" for f, e in sorted(prop.features_summary.items())
                      if sv.is_blocking_failure(e)]
-        bad_prop += [m for f in PROP_OPTIONAL if (m := _failing(prop.features_summary, f))]
+        wanted = PROP_OPTIONAL + ((GRASP_FEATURE,) if _has_grasps(stage) else ())
+        bad_prop += [m for f in wanted if (m := _failing(prop.features_summary, f))]
     bad_body = [f"{i.requirement.code.split('.', 3)[-1] if i.requirement else _rule_name(i)}: {i.message}"
                 for i in body.issues() if i.severity.name in bad]
     bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity.name in bad]
     return {"prop": bad_prop, "body": bad_body, "omni": bad_omni, "seconds": time.perf_counter() - t0,
             "shim": st["shim"]}
+
+
+def _has_grasps(stage) -> bool:
+    """Whether the object has a grasp frame (an operable part): GSP.001 asks for one grasp line at least."""
+    from pxr import Usd
+
+    return any(prim.GetTypeName() == "BasisCurves" and prim.GetName().startswith("grasp_identifier")
+               for prim in Usd.PrimRange(stage.GetPseudoRoot()))
 
 
 def _in_subprocess(usd_paths: list[str]) -> list[dict]:
@@ -252,7 +268,8 @@ def _result(r: dict) -> CheckResult:
         [f"{BODY[0]} {BODY[1]} {'/'.join(BODY_FEATURES)}: {m[:200]}" for m in r["body"][:3]] + \
         [f"asset-validator: {m[:200]}" for m in r["omni"][:3]]
     detail = "; ".join(problems[:4]) if problems else \
-        f"{PROP[0]} {PROP[1]} (+FET_004), {BODY[0]} {BODY[1]} FET_024/FET_022, asset-validator defaults pass"
+        f"{PROP[0]} {PROP[1]} (+{len(PROP_OPTIONAL)} optional features), {BODY[0]} {BODY[1]} " \
+        "FET_024/FET_022, asset-validator defaults pass"
     return CheckResult("simready", not problems, f"{detail} [{r['seconds']:.2f} s]")
 
 
@@ -266,7 +283,15 @@ def check_simready(folder: str | Path) -> list[CheckResult]:
         r = run_simready_anywhere([str(folder / f"{folder.name}.usda")])[0]
     except Exception as e:  # a validator crash is a failed check, not a crashed run
         return [CheckResult("simready", False, f"validators raised {type(e).__name__}: {e}")]
-    return [_result(r)]
+    result = _result(r)
+    if any("NP.005" in m for m in r["prop"]):
+        root = folder.resolve().parent.name
+        result = CheckResult("simready", False, (
+            f"NP.005: SimReady takes the folder above {folder.name}/ as the asset's root and wants its name "
+            f"('{root}') inside the file name {folder.name}.usda: keep the object in a folder named after its "
+            f"category, as `infmob generate` writes it ({folder.name.rsplit('_', 1)[0]}/{folder.name}/); "
+            + result.detail))
+    return [result]
 
 
 def main(argv: list[str] | None = None) -> int:
