@@ -194,3 +194,12 @@ def test_velocity_from_role_and_size():
     wheels = [j for j in obj.movable_joints if j.role == "wheel"]
     lift = next(j for j in obj.movable_joints if j.role == "telescope" and j.type == "prismatic")
     assert wheels and min(w.velocity for w in wheels) > 10 * lift.velocity
+
+
+def test_bullet_pushes_an_object_whose_joints_are_all_continuous(tmp_path):
+    """A utility cart on four swivel casters has no limited joint: every push runs (PyBullet's
+    getJointStates of no joints returns None) and each wheel and swivel turns freely."""
+    obj = infmob_usd.generate("cart", seed=1, texture_size=16, design="utility_cart", caster_plan="four_swivel")
+    folder = infmob_usd.save(obj, tmp_path / "cart", formats="urdf")
+    pushes = push_bullet(folder / f"{folder.name}.urdf")
+    assert len(pushes) == 8 and not failures(pushes)

@@ -106,7 +106,8 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
                 if i is not None:
                     pb.setJointMotorControl2(body, i, pb.TORQUE_CONTROL, force=force, physicsClientId=cid)
                 pb.stepSimulation(physicsClientId=cid)
-                q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid)])
+                # no limited joint (a cart on casters: every joint continuous): nothing can pass a limit
+                q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid)] if limited else [])
                 worst = np.maximum(worst, _past(q, lo, hi, span))
             return worst
 
