@@ -129,6 +129,10 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                        " box, chest or carton: a box is a container, the nearest verified item)"),
     "bucket": ("Q187956", "http://www.wikidata.org/entity/Q187956 'container' (OEWN 03099154-n; no verified item"
                           " for bucket or pail: a bucket is a container, the nearest verified item)"),
+    "suitcase": ("Q200814", "http://www.wikidata.org/entity/Q200814 'suitcase', form of luggage (COCO)"),
+    "cart": ("Q15618781", "http://www.wikidata.org/entity/Q15618781 'wheeled vehicle' (WN 04583497-n; no verified"
+                          " item for handcart (03489166-n, no Wikidata id): its hypernym, broader than the verified"
+                          " Q796894 'shopping cart' (04211393-n) and Q384580 'hand truck' (03495220-n) it covers)"),
     "tv": ("Q10273457", "http://www.wikidata.org/entity/Q10273457 'equipment' (WN 03298959-n, VU; no"
                         " verified item for television set: OEWN's chain television receiver > receiver >"
                         " set > electronic equipment > equipment has no nearer item)"),
