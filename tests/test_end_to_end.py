@@ -46,10 +46,13 @@ def test_same_call_gives_identical_bytes(category, tmp_path):
 
 @functools.cache
 def _glance(category: str, seed: int) -> tuple[tuple, int]:
-    """What tells two objects apart at a glance: their box to the millimetre and their moving parts (two drip
-    coffee machines of one size differ by their keys); and how many joints move."""
+    """What tells two objects apart at a glance: their box to the millimetre, their moving parts (two drip
+    coffee machines of one size differ by their keys) and their finishes (kitchen shears of one length in red and
+    in teal handles); and how many joints move."""
     obj = infmob_usd.generate(category, seed=seed, texture_size=16)
-    return (tuple(obj.bounds().round(3).ravel()), tuple(sorted(obj.joint_kinds().items()))), len(obj.movable_joints)
+    finishes = tuple(sorted((look.family, look.variant) for look in obj.materials.values()))
+    glance = (tuple(obj.bounds().round(3).ravel()), tuple(sorted(obj.joint_kinds().items())), finishes)
+    return glance, len(obj.movable_joints)
 
 
 # one worker takes both tests of a category, so each object is generated once

@@ -53,8 +53,7 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
                 opened: dict[str, list[str]] | None = None, from_upper: bool = False) -> list[Push]:
     """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode) towards
     each limit from rest, judged on the peak over each push; ``from_upper``: the push towards the
-    lower limit starts from the upper one (``opened``: as
-    :func:`~infmob_usd.validate.mujoco_sim.push_joints`).
+    lower limit starts from the upper one (``opened``: as :func:`~infmob_usd.validate.mujoco_sim.push_joints`).
 
     Not by default: Bullet holds a limit from the step after it is crossed, so a part falling onto its
     rest stop goes ``v dt`` past it (1/240 s: a 3 g bottle cap falling 16 mm, 9 % of its travel), and a
