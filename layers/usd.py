@@ -507,7 +507,7 @@ def _preview_surface(mat: _Spec, mpath: str, look, maps: list[str], ior: float) 
         surf.attr("color3f", "inputs:diffuseColor",
                   tuple(float(c) * float(t) for c, t in zip(look.base_color, look.wear.tint)))
     if "roughness" not in maps:
-        surf.attr("float", "inputs:roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
+        surf.attr("float", "inputs:roughness", _roughness(look))
     if "metallic" not in maps:
         surf.attr("float", "inputs:metallic", float(look.metallic))
     return surf
@@ -572,12 +572,17 @@ def _open_pbr(mat: _Spec, mpath: str, look, ior: float) -> None:
     pbr.attr("token", "info:id", '"ND_open_pbr_surface_surfaceshader"', uniform=True)
     pbr.attr("color3f", "inputs:base_color", _display_colour(look))
     pbr.attr("float", "inputs:base_metalness", float(look.metallic))
-    pbr.attr("float", "inputs:specular_roughness", min(1.0, float(look.roughness * look.wear.roughness_scale)))
+    pbr.attr("float", "inputs:specular_roughness", _roughness(look))
     pbr.attr("float", "inputs:specular_ior", min(3.0, max(1.0, float(ior))))
     if look.opacity < 1.0:
         pbr.attr("float", "inputs:transmission_weight", 1.0 - float(look.opacity))
         pbr.attr("bool", "inputs:geometry_thin_walled", True)
     pbr.attr("token", "outputs:out")
+
+
+def _roughness(look) -> float:
+    """A look's mean roughness as this object wears it, at most 1."""
+    return min(1.0, float(look.roughness * look.wear.roughness_scale))
 
 
 def _display_colour(look) -> tuple[float, ...]:
@@ -721,10 +726,11 @@ def _physics(obj, hulls) -> str:
             uj.attr("float", f"state:{drive}:physics:velocity", 0.0)
             # PhysX joint axis (current physx-usd-schemas): velocity limit (deg/s or m/s), Coulomb friction
             ax = f"physxJointAxis:{drive}:"
-            uj.attr("float", ax + "maxJointVelocity", float(j.velocity / per_unit))
+            velocity = float(j.velocity / per_unit)
+            uj.attr("float", ax + "maxJointVelocity", velocity)
             # the joint-level name PhysX schemas before the per-axis API used; Isaac Lab's importers and
             # isaaclab-robot-doctor read this one
-            uj.attr("float", "physxJoint:maxJointVelocity", float(j.velocity / per_unit))
+            uj.attr("float", "physxJoint:maxJointVelocity", velocity)
             uj.attr("float", ax + "staticFrictionEffort", float(j.friction))
             uj.attr("float", ax + "dynamicFrictionEffort", float(j.friction))
             armature = getattr(j, "armature", None)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from pathlib import Path
@@ -26,21 +27,18 @@ def _validators():
 
 
 _MTLX_ID = re.compile(r"shaderId '(ND_\w+)'")
-_NODEDEFS: list = []
 
 
-def _materialx_nodedefs() -> set[str] | None:
+@functools.cache
+def _materialx_nodedefs() -> frozenset[str] | None:
     """The nodedef names of MaterialX's standard library, or None without the MaterialX package."""
-    if not _NODEDEFS:
-        try:
-            import MaterialX as mx
-        except ImportError:
-            _NODEDEFS.append(None)
-        else:
-            lib = mx.createDocument()
-            mx.loadLibraries(mx.getDefaultDataLibraryFolders(), mx.getDefaultDataSearchPath(), lib)
-            _NODEDEFS.append({nd.getName() for nd in lib.getNodeDefs()})
-    return _NODEDEFS[0]
+    try:
+        import MaterialX as mx
+    except ImportError:
+        return None
+    lib = mx.createDocument()
+    mx.loadLibraries(mx.getDefaultDataLibraryFolders(), mx.getDefaultDataSearchPath(), lib)
+    return frozenset(nd.getName() for nd in lib.getNodeDefs())
 
 
 def _known_materialx_id(error) -> bool:
