@@ -660,7 +660,7 @@ NONVISUAL: dict[str, tuple[str, str]] = {
     "enamel": ("steel", "paint"),  # vitreous enamel fused on steel
     "rubber": ("rubber", "none"),
     "fabric": ("fabric", "none"),
-    "cardboard": ("wood", "none"),  # paper and board are wood fibre: the table's nearest base verified here
+    "cardboard": ("cardboard", "none"),  # the table's own "cardboard" (boxes)
 }
 """Non-visual (lidar, radar) material of each family, for SimReady NVM.001-003."""
 
