@@ -19,6 +19,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
+from infmob_usd.grasps import Grasp
 
 from .handtools import hull, rrect
 
@@ -327,5 +328,8 @@ def blade_carrier(u: Utility, steel: str, slider: str) -> Assembly:
             for z in (zc - slot / 2 + GAP, zc + slot / 2 - GAP)]
     button = [(x, y, z) for x in (xs - 0.009, xs + 0.009) for y in (h / 2 + 0.0015, h / 2 + 0.0045)
               for z in (z0 - 0.0005, z1 + 0.0005)]
-    pieces += [hull(stem, slider, "stem"), hull(button, slider, "thumb_slider")]
+    # a thumb pushes it; a gripper pinches it across the handle's thickness from the spine and slides it
+    across = z1 - z0 + 0.001
+    grip = Grasp.make((xs, h / 2 + 0.0045, zc), (0, -1, 0), (0, 0, 1), across, 0.0015)
+    pieces += [hull(stem, slider, "stem"), hull(button, slider, "thumb_slider").with_grasps(grip)]
     return Assembly.single("blade", pieces, {"slide": Frame.at((tip, yb, zc), z=(1, 0, 0))})
