@@ -71,19 +71,6 @@ _NORMALS, _TEXCOORDS, _DOUBLE3 = _T.Normal3fArray, _T.TexCoord2fArray, _T.Double
 _VISUAL, _HULL = Sdf.Path("/Visual"), Sdf.Path("/Hull")  # in _templates()
 _UNIFORM, _VARYING = Sdf.VariabilityUniform, Sdf.VariabilityVarying
 _ORIENT_ONLY = Gf.Quatf(1.0)
-# payload/contents.usda: the stage metadata and the sublayers (SUBLAYERS), as Sdf saves them
-_CONTENTS = """#usda 1.0
-(
-    defaultPrim = "{name}"
-    kilogramsPerUnit = 1
-    metersPerUnit = 1
-    subLayers = [
-""" + ",\n".join(f"        @./{n}@" for n in SUBLAYERS) + """
-    ]
-    upAxis = "Z"
-)
-
-"""
 # a collider's physics (physics.usda, under <root>/<link>/collisions): as Sdf writes the prim at depth 3
 # MuJoCo's and Newton's collider schemas name the runtimes' convex-hull mesh collision (SimReady MUJOCO.COL.001,
 # NEWTON.COL.001); their attributes keep the schemas' defaults
@@ -366,6 +353,14 @@ def _usda(*roots: _Spec) -> str:
     return "".join(out)
 
 
+def contents_layer(name: str, sublayers: tuple[str, ...] = SUBLAYERS) -> str:
+    """A layer of the stage metadata and ``sublayers`` (payload/contents.usda), as Sdf saves it."""
+    return ("#usda 1.0\n(\n    defaultPrim = \"" + name + "\"\n    kilogramsPerUnit = 1\n    metersPerUnit = 1\n"
+            "    subLayers = [\n" + ",\n".join(f"        @./{n}@" for n in sublayers) + "\n    ]\n"
+            "    upAxis = \"Z\"\n)\n\n")
+
+
+
 # -- the layers --------------------------------------------------------------------
 
 
@@ -382,7 +377,7 @@ def write_usd(obj, folder: Path) -> Path:
         _geometry(geometry, obj, visuals, hulls)
     write_file(payload / "physics.usda", _physics(obj, hulls))
     write_file(payload / "materials.usda", _materials(obj, visuals))
-    write_file(payload / "contents.usda", _CONTENTS.format(name=name))
+    write_file(payload / "contents.usda", contents_layer(name))
     geometry.Save()
     return _write_interface(obj, folder, _bounds(obj, visuals))
 
@@ -461,8 +456,9 @@ def _grasp_line(frame: Sdf.PrimSpec, name: str, width: float) -> None:
     _attr(line, "purpose", "token", "guide", uniform=True)  # drawn by tools that show guides, not rendered
 
 
-def _materials(obj, visuals) -> str:
-    """``materials.usda``: one UsdPreviewSurface per slot, a UsdUVTexture per map written, and the bindings.
+def _materials(obj, visuals, bindings: bool = True) -> str:
+    """``materials.usda``: one UsdPreviewSurface per slot, a UsdUVTexture per map written, and (``bindings``)
+    the bindings (:func:`_instances` writes them alone).
 
     The object's :class:`~infmob_usd.materials.Wear` of each look is written as shader inputs:
     a ``UsdTransform2d`` (rotation, translation) between the UV reader and the textures, the
@@ -488,7 +484,15 @@ def _materials(obj, visuals) -> str:
         _open_pbr(mat, mpath, look, FAMILIES[look.family].ior)
         if maps:
             _preview_textures(mat, surf, mpath, slot, look.wear, maps)
-    _bindings(root, obj, visuals, lpath)
+    if bindings:
+        _bindings(root, obj, visuals, lpath)
+    return _usda(root)
+
+
+def _instances(obj, visuals) -> str:
+    """The bindings of :func:`_materials` as a layer of their own (the Isaac layout's ``instances.usda``)."""
+    root = _Spec("over", "", obj.name)
+    _bindings(root, obj, visuals, f"/{obj.name}/Looks")
     return _usda(root)
 
 
@@ -750,7 +754,9 @@ def _physics(obj, hulls) -> str:
     return _usda(root)
 
 
-def _write_interface(obj, folder: Path, bounds) -> Path:
+def _write_interface(obj, folder: Path, bounds, payload: str = f"./{PAYLOAD}/contents.usda", more=None) -> Path:
+    """The root layer: the asset's prim with its metadata and ``payload``; ``more(layer, prim, metadata)`` adds
+    to them before the layer is saved."""
     name = obj.name
     path = folder / f"{name}.usda"
     layer = Sdf.Layer.CreateNew(str(path))
@@ -766,12 +772,14 @@ def _write_interface(obj, folder: Path, bounds) -> Path:
         lo, hi = bounds
         _attr(prim, "extentsHint", "float3[]", Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]))
         _label(prim, obj.category)
-        prim.payloadList.prependedItems = [Sdf.Payload(f"./{PAYLOAD}/contents.usda")]
+        prim.payloadList.prependedItems = [Sdf.Payload(payload)]
         meta = simready_metadata(obj, bounds)
         meta["asset_extents"] = Gf.Vec3d(*meta["asset_extents"])
         meta["validation"] = {"profile": "Robotics-Prop", "profile_version": "4.0.0"}  # simready-validate's default
         # SR.001 reads these four directly in customLayerData (SR.003/SR.004 inside SimReady_Metadata)
         direct = {k: meta[k] for k in ("asset_name", "asset_type", "source_file", "usd_date_generated")}
+        if more is not None:
+            more(layer, prim, meta)
         layer.customLayerData = {"SimReady_Metadata": meta, **direct}
     layer.Save()
     return path

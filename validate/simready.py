@@ -36,6 +36,8 @@ PROP = ("Robotics-Prop", "4.0.0")
 PROP_OPTIONAL = ("FET_004_STANDARD", "FET_000_STANDARD", "FET_010_STANDARD", "FET_007_STANDARD",
                  "FET_003_MUJOCO", "FET_004_MUJOCO", "FET_003_NEWTON", "FET_004_NEWTON", "FET_006_OPENPBR")
 GRASP_FEATURE = "FET_005_STANDARD"  # grasp vectors: required of an object with a part to operate
+# required of the Isaac layout (--usd-layout isaac): a variant set per physics runtime, Isaac Sim's layers
+ISAAC_FEATURES = ("FET_000_PHYSX", "FET_000_NEWTON", "FET_000_MUJOCO", "FET_100_ISAAC")
 BODY = ("Robot-Body", "3.0.0")
 BODY_FEATURES = ("FET_024_STANDARD", "FET_022_STANDARD")  # articulation, driven joints
 PACKAGES = ("simready-validate", "simready-foundation-tier-core", "omniverse-asset-validator",
@@ -223,13 +225,20 @@ def run_simready(usd_path: str | Path) -> dict:
     else:
         bad_prop += [f"{f}: {e.get('failing requirements')}" for f, e in sorted(prop.features_summary.items())
                      if sv.is_blocking_failure(e)]
-        wanted = PROP_OPTIONAL + ((GRASP_FEATURE,) if _has_grasps(stage) else ())
+        wanted = PROP_OPTIONAL + ((GRASP_FEATURE,) if _has_grasps(stage) else ()) + (
+            ISAAC_FEATURES if _isaac_layout(stage) else ())
         bad_prop += [m for f in wanted if (m := _failing(prop.features_summary, f))]
     bad_body = [f"{i.requirement.code.split('.', 3)[-1] if i.requirement else _rule_name(i)}: {i.message}"
                 for i in body.issues() if i.severity.name in bad]
     bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity.name in bad]
     return {"prop": bad_prop, "body": bad_body, "omni": bad_omni, "seconds": time.perf_counter() - t0,
             "shim": st["shim"]}
+
+
+def _isaac_layout(stage) -> bool:
+    """Whether the asset is in the Isaac layout (its root prim has the physics runtime variant sets)."""
+    prim = stage.GetDefaultPrim()
+    return bool(prim) and {"PhysX", "Newton", "MuJoCo"} <= set(prim.GetVariantSets().GetNames())  # RV.001/004/007
 
 
 def _has_grasps(stage) -> bool:
