@@ -99,11 +99,26 @@ def _continents(gl: Globe, slot: str, rng: np.random.Generator) -> g.Piece:
     centre = v[f].mean(1)
     lat = np.degrees(np.arcsin(np.clip(centre[:, 2] / np.linalg.norm(centre, axis=1), -1.0, 1.0)))
     lon = np.degrees(np.arctan2(centre[:, 1], centre[:, 0])) + FACING[int(rng.integers(len(FACING)))]
-    land = _land()[_cell(90.0 - lat, 180), _cell((lon + 180.0) % 360.0, 360)]
+    land = _manifold(f, _land()[_cell(90.0 - lat, 180), _cell((lon + 180.0) % 360.0, 360)])
     used, faces = np.unique(f[land], return_inverse=True)
     turn = Frame.at(gl.centre, z=gl.axis, x=(1, 0, 0))
     verts = v[used] * (gl.radius + RAISE)
     return g.Piece(verts, faces.reshape(-1, 3), slot).transformed(turn.matrix)
+
+
+def _manifold(f: np.ndarray, land: np.ndarray) -> np.ndarray:
+    """``land`` grown until no vertex joins two patches by a corner alone (four or more coast edges meet
+    there): each such vertex's faces all become land, so the printed land is a manifold surface."""
+    for _ in range(20):
+        tri = f[land]
+        edges = np.sort(np.r_[tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]], axis=1)
+        uniq, count = np.unique(edges, axis=0, return_counts=True)
+        coast = np.bincount(uniq[count == 1].ravel(), minlength=f.max() + 1)
+        pinched = coast > 2
+        if not pinched.any():
+            break
+        land = land | pinched[f].any(axis=1)
+    return land
 
 
 def _cell(deg: np.ndarray, n: int) -> np.ndarray:
