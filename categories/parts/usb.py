@@ -24,6 +24,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
+from infmob_usd.grasps import Grasp
 from infmob_usd.physical import MIN_HULL_WIDTH
 
 from .handtools import rrect, sweep
@@ -187,8 +188,11 @@ def swivel_cover(u: Usb, steel: str) -> Assembly:
     # the leaf collides as a hull the core's thinnest wide, grown upward from its underside (not into the table)
     under = under.replace(convex=[np.array([(x, y, z) for x in (leaf, bight + t) for y in (-r, r)
                                             for z in (lo, lo + MIN_HULL_WIDTH)])])
-    pieces = [plate, under, slab(bight, bight + t, u.width, top + t - lo, lo, 0.45 * t, 0.0, 0.35 * t, steel,
-                                 "bight", wall=0.0),
+    end = slab(bight, bight + t, u.width, top + t - lo, lo, 0.45 * t, 0.0, 0.35 * t, steel, "bight", wall=0.0)
+    # a hand turns the cover by its bight, pinched across its two ends from above (clear of the plug)
+    end = end.with_grasps(Grasp.make((bight + t / 2, 0.0, top + t), (0, 0, -1), (0, 1, 0), u.width,
+                                     0.5 * (top + t - lo)))
+    pieces = [plate, under, end,
               g.cylinder((r, 0, top + t - 1e-4), (r, 0, top + t + 0.0005), 0.0022, steel, name="rivet")]
     return Assembly.single("cover", pieces, {"pivot": Frame.at((r, 0.0, u.mid), z=(0, 0, 1))})
 
