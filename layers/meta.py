@@ -62,6 +62,9 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
+    "camera": ("Q15328", "http://www.wikidata.org/entity/Q15328 'camera' (public Wikidata query scripts' tables:"
+                         " CAMERA_TYPE_QIDS {'Q15328': 'camera', 'Q178384': 'SLR'}, a retail category map 'cameras':"
+                         " 'Q15328' # camera)"),
     "usb": ("Q1647694", "http://www.wikidata.org/entity/Q1647694 'USB flash drive' (a public Wikidata SPARQL quiz"
                         " script's PRODUCTS table pairing it with 'the USB flash drive', beside Q5293 floppy disk and"
                         " Q5294 DVD)"),

@@ -115,10 +115,12 @@ def usb(design: str, size: float, shape: float, plug: str, roundness: float) -> 
 
 # -- shapes ----------------------------------------------------------------------------------------------
 def slab(x0: float, x1: float, width: float, height: float, z0: float, edge: float, back: float, front: float,
-         material: str, name: str, wall: float | None = None) -> g.Piece:
+         material: str, name: str, wall: float | None = None, span: float = 0.0) -> g.Piece:
     """A rounded bar along x: cross-sections ``width`` x ``height`` with edges rounded ``edge``, its plan
     corners rounded ``back`` (at x0) and ``front`` (at x1); within ``edge`` of an end the section shrinks in
-    height too, so the end face is rounded into the top and the bottom."""
+    height too, so the end face is rounded into the top and the bottom. ``span`` > 0: each convex collision
+    piece spans at least that much of x (the core widens thinner ones about their middle, past the bar's
+    ends); 0: every three sections make one."""
     def inset(r: float, d: float) -> float:
         return r - math.sqrt(max(r * r - (r - d) ** 2, 0.0)) if r > 0 and d < r else 0.0
 
@@ -133,7 +135,16 @@ def slab(x0: float, x1: float, width: float, height: float, z0: float, edge: flo
         dz = min(max(inset(min(edge, 0.45 * height), d0) if back else 0.0,
                      inset(min(edge, 0.45 * height), d1) if front else 0.0), 0.4 * height)
         secs.append(rrect(max(width - 2 * di, 0.1 * width), height - 2 * dz, edge, z0 + dz))
-    return sweep(np.c_[xs, np.zeros_like(xs)], secs, material, group=3, name=name).replace(wall=wall)
+    bar = sweep(np.c_[xs, np.zeros_like(xs)], secs, material, group=3, name=name).replace(wall=wall)
+    if span <= 0:
+        return bar
+    rings = bar.vertices[:len(xs) * len(secs[0])].reshape(len(xs), len(secs[0]), 3)
+    cuts = [0]
+    for i in range(1, len(xs)):
+        if xs[i] - xs[cuts[-1]] >= span and x1 - xs[i] >= span:
+            cuts.append(i)
+    cuts.append(len(xs) - 1)
+    return bar.replace(convex=[rings[a:b + 1].reshape(-1, 3) for a, b in zip(cuts[:-1], cuts[1:], strict=True)])
 
 
 def plug(u: Usb, x0: float, steel: str, insert: str, length: float | None = None) -> list[g.Piece]:
