@@ -54,7 +54,8 @@ stage is its close-up mode)."""
 MATERIALS = {"body": ("finish", {"black": "plastic:black", "dark_grey": "plastic:dark_grey",
                                  "silver": "brushed_metal:stainless"}),
              "pastel": ("pastel", {c: f"painted:{c}" if c != "white" else "plastic:white" for c in PASTELS}),
-             "grip": "rubber:black", "trim": "plastic:black", "metal": "chrome", "glass": "glass:smoked",
+             "grip": "rubber:black", "trim": "plastic:black", "lens": "plastic:black", "metal": "chrome",
+             "glass": "glass:smoked",
              "screen": "screen:black", "flash": "glass:frosted", "mark": "plastic:white", "lamp": "plastic:orange"}
 # bodies are massed solid at the density that gives their named products' weight in their bounding box:
 # EOS 250D 449 g in ~122 x 93 x 50 mm (+ grip) ~ 700 kg/m^3; RX100 III 290 g in 102 x 58 x 41 mm ~ 1200;
@@ -72,7 +73,7 @@ class CameraLayout(Layout):
         return 1 + int(node.one("stage").one("inner_stage") is not None)
 
     def dslr(self, node):
-        body = self.place(K.dslr_body(self.c, "body", "grip", "metal", "glass",
+        body = self.place(K.dslr_body(self.c, "body", "grip", "metal", "lens",
                                       None if node.one("screen") else "screen"), "body")
         self._controls(node, body)
 
@@ -98,7 +99,7 @@ class CameraLayout(Layout):
         self.grow(node.one("barrel"))
 
     def barrel(self, node):
-        barrel = self.place(K.inner_barrel(self.c, "body", "trim", "glass"), "barrel")
+        barrel = self.place(K.inner_barrel(self.c, "lens", "trim", "glass"), "barrel")
         self.slide("body", "barrel", barrel.anchor("slide"), upper=self.c.travel)
         self.couple("barrel", "zoom_ring", self.c.travel / K.ZOOM_TURN)
 
@@ -123,7 +124,7 @@ class CameraLayout(Layout):
 
     def screen(self, node, body):
         screen = self.place(K.tilt_screen(self.c, "trim", "screen"), "screen")
-        self.hinge(body.root, "screen", screen.anchor("hinge"), upper=K.SCREEN_TILT, role="holding")
+        self.hinge(body.root, "screen", screen.anchor("hinge"), upper=K.SCREEN_TILT, role="lid")
 
     def door(self, node, body):
         door = self.place(K.side_door(self.c, "pastel" if self.c.design == "instant" else "body"), "door")

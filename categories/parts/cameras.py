@@ -154,7 +154,7 @@ def _shell_body(c: Camera, body: str, bore: float, bore_depth: float) -> g.Piece
     return visual.replace(convex=[box_pts(lo, hi) for lo, hi in cells])
 
 
-def dslr_body(c: Camera, body: str, grip: str, metal: str, glass: str, screen: str | None) -> Assembly:
+def dslr_body(c: Camera, body: str, grip: str, metal: str, lens: str, screen: str | None) -> Assembly:
     """A DSLR body: the block, the hand grip, the pentaprism hump with the hot shoe, the lens mount and the
     fixed rear barrel of the lens (the zoom ring and the inner barrel are parts of their own), a fixed screen
     unless it tilts."""
@@ -172,7 +172,7 @@ def dslr_body(c: Camera, body: str, grip: str, metal: str, glass: str, screen: s
                                 name="hot_shoe"))
     r = c.lens
     mount = tube(c, r + 0.004, d - 0.001, d + 0.006, 0.006, metal, "mount")
-    barrel = tube(c, r, d + 0.006, d + c.length * 0.45, 0.004, body, "barrel")
+    barrel = tube(c, r, d + 0.006, d + c.length * 0.45, 0.004, lens, "barrel")
     pieces += [mount, barrel, g.cylinder((d + 0.002, y, z), (d + 0.004, y, z), r - 0.004, body, name="throat")]
     if screen:
         pieces += _screen_pieces(c, -0.0005, screen, body)
