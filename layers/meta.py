@@ -60,6 +60,10 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                               " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "eyeglasses": ("Q1751850", "http://www.wikidata.org/entity/Q1751850 'optical instrument' (OEWN 03857800-n, the"
+                               " hypernym of 04279164-n spectacles, which has no Wikidata link)"),
+    "knife": ("Q390383", "http://www.wikidata.org/entity/Q390383 'pocketknife' (OEWN 03979986-n; a multi-tool"
+                         " and a utility knife fold or retract their blades alike)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
     "camera": ("Q15328", "http://www.wikidata.org/entity/Q15328 'camera' (public Wikidata query scripts' tables:"
@@ -68,6 +72,8 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "usb": ("Q1647694", "http://www.wikidata.org/entity/Q1647694 'USB flash drive' (a public Wikidata SPARQL quiz"
                         " script's PRODUCTS table pairing it with 'the USB flash drive', beside Q5293 floppy disk and"
                         " Q5294 DVD)"),
+    "mouse": ("Q7987", "http://www.wikidata.org/entity/Q7987 'mouse' (COCO: 'hand-held device used to move a"
+              " pointer on a computer display')"),
     "stapler": ("Q489157", "http://www.wikidata.org/entity/Q489157 'stapler' (WN 04310635-n, OEWN)"),
     "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
     "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"
