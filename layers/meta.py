@@ -66,6 +66,12 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                          " and a utility knife fold or retract their blades alike)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
+    "camera": ("Q15328", "http://www.wikidata.org/entity/Q15328 'camera' (public Wikidata query scripts' tables:"
+                         " CAMERA_TYPE_QIDS {'Q15328': 'camera', 'Q178384': 'SLR'}, a retail category map 'cameras':"
+                         " 'Q15328' # camera)"),
+    "usb": ("Q1647694", "http://www.wikidata.org/entity/Q1647694 'USB flash drive' (a public Wikidata SPARQL quiz"
+                        " script's PRODUCTS table pairing it with 'the USB flash drive', beside Q5293 floppy disk and"
+                        " Q5294 DVD)"),
     "mouse": ("Q7987", "http://www.wikidata.org/entity/Q7987 'mouse' (COCO: 'hand-held device used to move a"
               " pointer on a computer display')"),
     "lighter": ("Q20459", "http://www.wikidata.org/entity/Q20459 'lighter' (WN 03671917-n)"),
