@@ -15,12 +15,14 @@ from __future__ import annotations
 
 from infmob_usd.category import Category
 from infmob_usd.grammar import Grammar, Layout, Node
-from infmob_usd.params import Float
+from infmob_usd.params import Choice, Float
 
 from .parts import remotes as R
 
 PARAMS = (
     Float("size", "where the width and length lie in the design's range (0 smallest, 1 largest)", "", 0.0, 1.0),
+    Choice("tone", "shell and key colours", choices=("dark", "grey", "light", "silver"),
+           weights=(0.4, 0.2, 0.25, 0.15)),
 )
 
 TV_KEYS = {"top_row": (2, 4), "apps": (2, 4), "numpad": (10, 12), "volume": (4, 5), "navigation": (7, 9),
@@ -33,12 +35,15 @@ GRAMMAR = Grammar("remote", {
     "remote": Node(label="body", one_of={"tv": 0.45, "ac": 0.3, "presenter": 0.25}, choice="design"),
     "tv": Node(required=("top_row", "volume", "navigation", "battery_door"),
                optional={"apps": 0.5, "numpad": 0.65, "colour_keys": 0.55, "playback": 0.45}),
-    **{kind: Node(repeat={"key": count}) for kind, count in TV_KEYS.items()},
+    **{kind: Node(repeat={"key": count}) for kind, count in TV_KEYS.items() if kind != "playback"},
+    "playback": Node(repeat={"key": TV_KEYS["playback"]}, optional={"playback_cover": 0.4}),
+    "playback_cover": Node(label="lid"),
     "ac": Node(required=("ac_main", "cover", "battery_door")),
     "ac_main": Node(repeat={"key": (4, 6)}),
     "cover": Node(label="lid", required=("ac_covered",)),
     "ac_covered": Node(repeat={"key": (6, 12)}),
-    "presenter": Node(required=("presenter_keys", "battery_door")),
+    "presenter": Node(required=("presenter_keys", "battery_door"), optional={"power_switch": 0.5}),
+    "power_switch": Node(label="switch"),
     "presenter_keys": Node(repeat={"key": (4, 6)}),
     "key": Node(label="button"),
     "battery_door": Node(label="door"),
@@ -47,12 +52,16 @@ GRAMMAR = Grammar("remote", {
 (timer on/off, sleep, eco, swing, clock ...: Daikin ARC466, Mitsubishi KM09); a presenter's back, forward, laser
 and 1-3 of blank screen, slideshow, timer (Logitech R400 / R500, Kensington K33374)."""
 
+TONES = {"dark": ("plastic:black", "plastic:dark_grey"), "grey": ("plastic:dark_grey", "plastic:black"),
+         "light": ("plastic:white", "plastic:light_grey"), "silver": ("plastic:light_grey", "plastic:dark_grey")}
+"""Shell and key colours sold together: black with grey keys (Samsung, Sony), grey with black (LG), white with
+grey (Daikin, Gree AC remotes, Apple-style presenters), silver with dark keys (Philips, Logitech R800)."""
+
 MATERIALS = {
-    "body": ("design", {"tv": "plastic:black|dark_grey", "ac": "plastic:white|light_grey",
-                        "presenter": "plastic:black|dark_grey|blue|red"}),
-    "key": ("design", {"tv": "rubber:dark_grey|soft_black", "ac": "plastic:light_grey|white",
-                       "presenter": "plastic:black|dark_grey"}),
-    "power": "plastic:red", "app": "plastic:white|light_grey", "trim": "brushed_metal", "lens": "screen:black",
+    "body": ("tone", {t: body for t, (body, _) in TONES.items()}),
+    "key": ("tone", {t: key for t, (_, key) in TONES.items()}),
+    "power": "plastic:red", "app": "plastic:red|blue|black", "trim": "brushed_metal", "lens": "screen:black",
+    "lcd": "plastic:light_grey",  # an unlit segment LCD reads pale grey-green under its window
     **{f"key_{c}": f"plastic:{c}" for c in R.COLOURS},
 }
 
@@ -71,7 +80,7 @@ class RemoteLayout(Layout):
         self.order = [k for k in (*R.TV_SECTIONS, "ac_main", "ac_covered", "presenter_keys") if k in counts]
         pieces = [R.body(self.plan, "body"), R.window(self.plan, "lens"), *R.section_trim(self.plan)]
         if node.choice == "ac":
-            pieces += R.lcd(self.plan, "lens", "body")
+            pieces += R.lcd(self.plan, "lcd", "lens")
         self.add("body", "body", pieces)
         self.grow(kit)
 
@@ -87,10 +96,26 @@ class RemoteLayout(Layout):
         for k, (key, spot) in enumerate(zip(node.of("key"), spots, strict=True)):
             self.grow(key, at=self.plan.key_frame(index, spot), spot=spot, name=f"{node.kind}_{k}", gate=gate)
 
-    top_row = apps = numpad = volume = navigation = colour_keys = playback = ac_main = presenter_keys = _section
+    top_row = apps = numpad = volume = navigation = colour_keys = ac_main = presenter_keys = _section
 
     def ac_covered(self, node):
         self._section(node, gate="cover")
+
+    def playback(self, node):
+        cover = node.one("playback_cover")
+        if cover is not None:
+            self.grow(cover)
+        self._section(node, gate=None if cover is None else "cover")
+
+    def playback_cover(self, node):
+        lid = self.place(R.cover(self.plan, "body"), "cover")
+        self.hinge("body", lid.root, lid.anchor("hinge"), upper=R.COVER_OPENS, role="lid")
+
+    def power_switch(self, node):
+        knob, slot = R.power_switch(self.plan, "key", "lens")
+        self.extend("body", slot)
+        placed = self.place(knob, "power_switch")
+        self.slide("body", placed.root, placed.anchor("slide"), upper=R.SWITCH[3], role="toggle")
 
     def key(self, node, at, spot, name, gate):
         placed = self.place(spot.key.build(spot.slot).attached("mount", to=at), name)

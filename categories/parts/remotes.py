@@ -33,6 +33,7 @@ DOOR_PLATE = 0.0012  # m, a moulded battery door (1-1.5 mm ABS)
 DOOR_ROOM = 0.0013  # m between the door and the bay's lid above it (the batteries' room, drawn as the gap)
 COVER_PLATE = 0.0015  # m, a flip cover (1.5 mm)
 COVER_CLEAR = 0.0012  # m between the covered keys' tops and the cover's underside
+TAB = (0.004, 0.014)  # m, the cover's thumb tab: how far it reaches past the cover's front edge, and its width
 COVER_OPENS = math.radians(175)  # a flip cover turns over until it lies flat behind its hinge
 SECTION_GAP = 0.004  # m between keypad sections
 FRONT = 0.010  # m from the front end to the first section (the infrared window's end)
@@ -220,9 +221,9 @@ def body(p: Plan, material: str) -> g.Piece:
 def window(p: Plan, material: str) -> g.Piece:
     """The infrared window: a dark lens let into the front end, proud of it by 0.3 mm."""
     x = p.length / 2
-    hw, hz = 0.16 * p.width, 0.14 * p.thick
-    return g.box_between((x - 0.003, -hw, p.thick / 2 - hz), (x + 0.0003, hw, p.thick / 2 + hz), material,
-                         bevel=0.4 * hz)
+    hw, hz = 0.14 * p.width, 0.12 * p.thick
+    return g.box_between((x - 0.003, -hw, p.thick / 2 - hz), (x + 0.0006, hw, p.thick / 2 + hz), material,
+                         bevel=0.8 * hz)
 
 
 def section_trim(p: Plan) -> list[g.Piece]:
@@ -397,11 +398,11 @@ def ac_plan(size: float, main: int, covered: int) -> Plan:
 
 
 def lcd(p: Plan, material: str, bezel: str) -> list[g.Piece]:
-    """The LCD under its window, in a bezel, between the front end and the keys."""
+    """The segment LCD (grey, unlit) in a dark bezel between the front end and the keys."""
     h, w = AC_SCREEN * p.width, 0.74 * p.width
     x1 = p.length / 2 - FRONT
-    frame = g.box_between((x1 - h - 0.002, -w / 2 - 0.002, p.thick - 0.001), (x1 + 0.002, w / 2 + 0.002,
-                                                                               p.thick + 0.0004), bezel, bevel=0.0003)
+    frame = g.box_between((x1 - h - 0.0025, -w / 2 - 0.0025, p.thick - 0.001),
+                          (x1 + 0.0025, w / 2 + 0.0025, p.thick + 0.0004), bezel, bevel=0.0003)
     glass = g.box_between((x1 - h, -w / 2, p.thick), (x1, w / 2, p.thick + 0.0007), material)
     return [frame, glass]
 
@@ -416,9 +417,11 @@ def cover(p: Plan, material: str) -> Assembly:
     plate = g.box_between((x0, -hw, z0), (x1, hw, z0 + COVER_PLATE), material, bevel=0.0005)
     cheeks = [g.box_between((x0, s_ * hw - 0.0012 if s_ > 0 else -hw, p.thick + 0.0003),
                             (x1, hw if s_ > 0 else -hw + 0.0012, z0), material) for s_ in (1, -1)]
-    # a fingertip lifts its front edge (the lip over the keys above it)
-    lip = Grasp.make((x1, 0, z0 + COVER_PLATE / 2), (-1, 0, 0), (0, 0, 1), 0.004, 0.002)
-    return Assembly.single("lid", [plate.with_grasps(lip), *cheeks],
+    # a thumb tab reaching forward over the gap above the main keys: a fingertip lifts it
+    tab = g.box_between((x1 - 0.001, -TAB[1] / 2, z0), (x1 + TAB[0], TAB[1] / 2, z0 + COVER_PLATE), material,
+                        bevel=0.0005)
+    lip = Grasp.make((x1 + TAB[0], 0, z0 + COVER_PLATE / 2), (-1, 0, 0), (0, 0, 1), 0.004, TAB[0] / 2)
+    return Assembly.single("lid", [plate, tab.with_grasps(lip), *cheeks],
                            {"hinge": Frame.at((x0, 0, z0 + COVER_PLATE / 2), z=(0, -1, 0), x=(1, 0, 0))})
 
 
@@ -438,3 +441,22 @@ def presenter_plan(size: float, n: int) -> Plan:
     d = DESIGNS["presenter"]
     width = d.width[0] + size * (d.width[1] - d.width[0])
     return plan("presenter", size, [presenter_keys(width, n, d.proud, d.travel)])
+
+
+SWITCH = (0.005, 0.0035, 0.0016, 0.003)  # m: knob length, width, height and throw of a presenter's on/off slide
+
+
+def power_switch(p: Plan, knob: str, slot: str) -> tuple[Assembly, list[g.Piece]]:
+    """A presenter's on/off slide behind its keys: the knob (anchor ``slide``: z along -x, off to on) and its
+    slot, a dark inlay on the face (drawn, no collision)."""
+    ln, wd, ht, throw = SWITCH
+    x = p.tops[-1] - p.sections[-1].height - SECTION_GAP - ln / 2
+    knob_piece = g.box_between((x - ln / 2, -wd / 2, p.thick), (x + ln / 2, wd / 2, p.thick + ht), knob,
+                               bevel=0.4 * ht)
+    # a fingertip on its ridged top pushes it back (along -x)
+    grip = Grasp.make((x, 0, p.thick + ht), (0, 0, -1), (1, 0, 0), ln, ht / 2)
+    inlay = g.box_between((x - ln / 2 - throw - 0.001, -wd / 2 - 0.001, p.thick - 0.0002),
+                          (x + ln / 2 + 0.001, wd / 2 + 0.001, p.thick + 0.0002), slot).replace(convex=())
+    frame = Frame.at((x, 0, p.thick), z=(-1, 0, 0), x=(0, 0, 1))
+    return Assembly.single("switch", [knob_piece.with_grasps(grip)], {"slide": frame}), [inlay]
+
