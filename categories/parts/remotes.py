@@ -185,31 +185,38 @@ def keypad_box(p: Plan) -> tuple[float, float, float]:
     return min(xs), max(xs), max(ys)
 
 
-def body(p: Plan, material: str) -> g.Piece:
-    """The moulded shell: its plan with rounded top and bottom edges (one convex hull). It collides as the
-    shell between the battery bay's lid and the keymat (:data:`KEYMAT` under the face), the rim of the top
-    around the keys, as a real top shell with a hole for each key (a key presses down into the room under it),
-    and the rim of the underside around the battery door and in front of it (the door slides out backwards)."""
+def shell(p: Plan) -> tuple[np.ndarray, np.ndarray]:
+    """``(vertices, faces)`` of the moulded shell: its plan with rounded top and bottom edges (convex)."""
     et, eb = (min(e * p.thick, 0.9 * p.d.corner * p.width) for e in p.d.edge)
     rings = []
     for a in np.radians(np.linspace(0.0, 90.0, 5)):
         rings.append(_lift(_plan_outline(p, eb * (1 - math.sin(a))), eb * (1 - math.cos(a))))
         rings.append(_lift(_plan_outline(p, et * (1 - math.sin(a))), p.thick - et * (1 - math.cos(a))))
-    v, f = g.hull_arrays(np.vstack(rings))
+    return g.hull_arrays(np.vstack(rings))
+
+
+def body(p: Plan, material: str, door: bool = True) -> g.Piece:
+    """The moulded shell: its plan with rounded top and bottom edges (one convex hull). It collides as the
+    shell between the battery bay's lid and the keymat (:data:`KEYMAT` under the face), the rim of the top
+    around the keys, as a real top shell with a hole for each key (a key presses down into the room under it),
+    and the rim of the underside around the battery door and in front of it (the door slides out backwards;
+    ``door`` False: a slab with no bay)."""
+    v, f = shell(p)
     import manifold3d
 
-    shell = manifold3d.Manifold.hull_points(v)
+    solid = manifold3d.Manifold.hull_points(v)
     x0, x1, hy = keypad_box(p)
     floor = p.thick - KEYMAT - p.d.travel
     dx, hd = door_box(p)
-    ceiling = DOOR_LIFT + DOOR_PLATE + DOOR_ROOM
+    ceiling = DOOR_LIFT + DOOR_PLATE + DOOR_ROOM if door else 0.0
     up, under = ((0, 0, 1), ceiling), ((0, 0, -1), -ceiling)
     pieces = [(up, ((0, 0, -1), -floor)), (up, ((-1, 0, 0), RIM - x0)), (up, ((1, 0, 0), x1 + RIM)),
-              (up, ((0, 1, 0), hy + RIM)), (up, ((0, -1, 0), hy + RIM)), (under, ((1, 0, 0), dx[1] + RIM)),
-              (under, ((0, 1, 0), hd + RIM)), (under, ((0, -1, 0), hd + RIM))]
+              (up, ((0, 1, 0), hy + RIM)), (up, ((0, -1, 0), hy + RIM))]
+    if door:
+        pieces += [(under, ((1, 0, 0), dx[1] + RIM)), (under, ((0, 1, 0), hd + RIM)), (under, ((0, -1, 0), hd + RIM))]
     convex = []
     for planes in pieces:
-        cut = shell
+        cut = solid
         for n, o in planes:
             cut = cut.trim_by_plane(n, o)
         pts = np.asarray(cut.to_mesh().vert_properties)[:, :3]
@@ -235,10 +242,10 @@ def section_trim(p: Plan) -> list[g.Piece]:
 
 
 # -- plans ---------------------------------------------------------------------------------------------------
-def plan(design: str, size: float, sections: list[Section], lead: float = 0.0) -> Plan:
+def plan(design: str, size: float, sections: list[Section], lead: float = 0.0, table=None) -> Plan:
     """A body just long enough for ``sections`` below a ``lead`` (an LCD), at least its design's length at
-    ``size`` (0 shortest, 1 longest of its range)."""
-    d = DESIGNS[design]
+    ``size`` (0 shortest, 1 longest of its range); ``table``: the designs (default :data:`DESIGNS`)."""
+    d = (DESIGNS if table is None else table)[design]
     width = d.width[0] + size * (d.width[1] - d.width[0])
     thick = d.thick[0] + (1 - size) * (d.thick[1] - d.thick[0])  # longer remotes of a range are slimmer
     need = FRONT + lead + sum(s.height + SECTION_GAP for s in sections) + d.door[0] * width * 0.6
