@@ -60,6 +60,8 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                               " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "phone": ("Q17517", "http://www.wikidata.org/entity/Q17517 'mobile phone' (a public Wikidata label table;"
+                        " no verified item for telephone: a desk phone takes the mobile's)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
     "remote": ("Q185091", "http://www.wikidata.org/entity/Q185091 'remote control' (COCO)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
