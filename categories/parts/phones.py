@@ -43,7 +43,8 @@ DESIGNS = {
 """Designs -> sizes (maker spec sheets and retail listings named beside each)."""
 
 LID = {"flip": 0.85, "slider": 1.0}  # the upper half's thickness as a share of the lower's
-HALF_GAP = 0.0015  # m between a lower half's key tops and the upper half closed over them
+HALF_GAP = 0.0025  # m between a lower half's key tops and the upper half closed over them (at 1.5 mm a
+# closing flip lid met them in SAPIEN's reach check)
 FLIP_OPENS = math.radians(150)  # a clamshell opens to 150-170 degrees (RAZR V3: 165)
 TAIL = 0.005  # m of a slider phone's lower half behind its keypad
 
