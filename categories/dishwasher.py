@@ -172,8 +172,8 @@ class DishwasherLayout(A.PanelNodes):
     def tine_row(self, node, name, rack, pieces, at):
         y, z = at
         self.add(name, "tines", pieces)
-        # about +X a standing tine folds towards -Y
-        self.hinge(rack, name, A.fold_line(y, z), upper=A.QUARTER_TURN)
+        # about +X a standing tine folds towards -Y; a hand folds it with its rack pulled out
+        self.hinge(rack, name, A.fold_line(y, z), upper=A.QUARTER_TURN, requires_open=rack)
 
     def door(self, node, box, band):
         _, x1, y0, y1, _, _ = box
@@ -247,8 +247,8 @@ class DishwasherLayout(A.PanelNodes):
         """The first on the left side wall, the second on the right; each swings down inwards to level."""
         pieces, y, s = DW.cup_shelf(k, xs, ry, z, w)
         name = self.add(f"{rack}_cup_shelf_{k}", "shelf", pieces)
-        # about -X (left) or +X (right) the top swings inwards
-        self.hinge(rack, name, A.fold_line(y, z, s), upper=A.QUARTER_TURN)
+        # about -X (left) or +X (right) the top swings inwards; it is folded with its rack pulled out
+        self.hinge(rack, name, A.fold_line(y, z, s), upper=A.QUARTER_TURN, requires_open=rack)
 
     def baskets(self, node, rack, xs, ry, za, top):
         """Open cutlery baskets side by side at the front of the lowest rack, fixed to it."""
@@ -262,7 +262,7 @@ class DishwasherLayout(A.PanelNodes):
         lift-off part, which the core stops at a hand's lift."""
         name = self.add(f"basket_{k}", "basket", pieces)
         if lift > DW.MIN_BASKET_LIFT:
-            self.slide(rack, name, Frame.at(at), upper=lift, role="lift_off")
+            self.slide(rack, name, Frame.at(at), upper=lift, role="lift_off", requires_open=rack)
         else:
             self.fix(rack, name)
 
