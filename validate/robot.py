@@ -11,9 +11,11 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    grasp frame, fingers open, and moves along ``approach`` to the grasp (and up to :data:`INSET` further,
    towards the middle of the handle's box);
 3. the fingers close along ``closing`` with the Panda hand's continuous grip force (:data:`GRIP_FORCE`).
-   When the hand cannot get to a grasp or closes on nothing, the next annotated grasp is tried, each also
-   turned a quarter about its approach where the handle's box fits between the fingers that way, then
-   each tilted by :data:`TILTS` about its closing axis (the same hold reached at a slant). A ``press`` or
+   When the hand cannot get to a grasp or closes on nothing, or a hold taken does not open the part (up to
+   :data:`HOLDS` holds, each from the object at rest again), the next annotated grasp is tried, each also
+   turned a quarter about its approach where the handle's box fits between the fingers that way and, for a
+   knob turned in place, wound back about its approach by half its turn (:func:`wound_back`), then each
+   tilted by :data:`TILTS` about its closing axis (the same hold reached at a slant). A ``press`` or
    ``push`` is done with the closed fingers' tips on the grasp point, without a grasp, the hand turned any
    way about the approach and tilted about either axis across it;
 4. the hand follows ``path`` (the grasp point over the joint's range) through a compliant controller:
@@ -22,14 +24,17 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is (up to ``LEAD``
    past the path's end: a compliant hand lags its target by force / stiffness); the hand turns
    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
-   on its axis) is turned in place about the joint's axis, read from the loaded URDF.
+   on its axis) is turned in place about the joint's axis, read from the loaded URDF, at most
+   :data:`REGRIP` per hold: then the fingers open, the hand turns back and takes hold again (a dial
+   turned 330 degrees in one hold would sweep the hand's body through everything around it).
 
 Success: the joint passes ``rest + open_threshold * (open - rest)`` while both fingers still touch the
 operated link (a press or push: the joint passing is enough). A failure names why: ``approach blocked by
 LINK``, ``missed handle`` (the fingers closed on nothing, or on another link), ``slipped``, ``blocked by
 LINK`` (the moving part presses on another link), ``gripper blocked by LINK``, ``held at its joint limit``
 (the path pushes the joint against a stop), ``too stiff`` (the arm pulls with its full force and the joint
-does not follow), ``stalled``.
+does not follow), ``stalled``; when every hold fails, the reason of the one that moved the part furthest,
+else the first grasp's.
 
 The scene has no floor (an appliance stands on a counter, and the hand may pass below the counter's edge;
 a part swinging into the floor is the ``reach`` check's finding). The gripper's fingers carry ManiSkill's
