@@ -174,3 +174,15 @@ def test_a_long_turn_is_made_in_holds_of_at_most_regrip(tmp_path):
         robot.TurnMotion.regrip = real
     assert r.ok, r.detail
     assert len(regrips) >= 3 and all(a < robot.REGRIP + robot.TURN_LEAD for a in regrips), regrips
+
+
+def test_a_pot_lid_is_lifted_by_its_loop(tmp_path):
+    """A pot lid with a loop handle sits on the rim with its edge over the pot's wall (the fingers cannot get
+    under it): the loop declares its grasp (from above, across the bar), which comes first and lifts it."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("pot", 3, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    lid = next(t for t in targets if t["joint"] == "joint_lid_0")
+    assert lid["handle_class"] == "line_fixed_handle" and lid["grasps"][0]["approach"] == [0.0, 0.0, -1.0]
+    _write(folder, [lid])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(slider_lid): opened" in r.detail, r.detail

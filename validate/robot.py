@@ -342,6 +342,7 @@ class _Run:
         self.fingers = {i for i, n in gripper.ids.items() if n in FINGER_LINKS}
         self.rest, self.open = float(target["rest"]), float(target["open"])
         self.time = 0.0
+        self.opening = FINGER_OPEN  # per finger, as the hand came in
 
     def fraction(self) -> float:
         q = float(np.asarray(self.art.qpos, float)[self.qi])
@@ -588,7 +589,7 @@ class TurnMotion:
         """Let go, turn the open hand back to where it took hold, and take hold again (the knob stays): how
         a hand turns a knob further than :data:`REGRIP`, its body sweeping only that much."""
         g = run.gripper
-        g.grip(FINGER_OPEN)
+        g.grip(run.opening)  # as open as it came in: no wider, beside the knobs next to it
         run.step(int(round(RELEASE_TIME / run.dt)))
         start = self.angle
         n = max(1, int(round(start / TURN_SPEED / run.dt)))
@@ -675,6 +676,7 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
         ctx.make_passive()
         run = _Run(ctx, gripper, target)
         grasp, pre, opening = _grasp_frames(run, g)
+        run.opening = opening
         why = _approach(run, grasp, pre, opening, grip)
         if why:
             first = first or run.fail(why)
