@@ -24,9 +24,9 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is (up to ``LEAD``
    past the path's end: a compliant hand lags its target by force / stiffness); the hand turns
    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
-   on its axis) is turned in place about the joint's axis, read from the loaded URDF, at most
-   :data:`REGRIP` per hold: then the fingers open, the hand turns back and takes hold again (a dial
-   turned 330 degrees in one hold would sweep the hand's body through everything around it).
+   on its axis) is turned in place about the joint's axis, read from the loaded URDF; held wound back, it
+   is turned at most :data:`REGRIP` per hold: then the fingers open, the hand turns back and takes hold
+   again (a dial turned 330 degrees in one hold sweeps the hand's body through everything around it).
 
 Success: the joint passes ``rest + open_threshold * (open - rest)`` while both fingers still touch the
 operated link (a press or push: the joint passing is enough). A failure names why: ``approach blocked by
@@ -413,10 +413,11 @@ def _turns_in_place(target: dict) -> bool:
 
 def wound_back(target: dict, g: dict) -> dict | None:
     """Grasp ``g`` of a knob turned in place, the hand wound back about its approach by half the turn (up
-    to half a turn), as a person sets the wrist before turning: the hand's 0.2 m across the fingers then
-    sweeps either side of the annotated hold instead of all to one side (a grate above an oven's knobs, a
-    lid beside a washer's dial). ``None`` when the knob's box does not fit between the open fingers that
-    way, or the target gives no way round."""
+    to half :data:`REGRIP`), as a person sets the wrist before turning, and marked ``regrip``: the knob is
+    turned at most :data:`REGRIP` per hold (let go, turn back, take hold again). The hand's 0.2 m across the
+    fingers then sweeps only either side of the annotated hold instead of all round (a grate above an
+    oven's knobs, a lid beside a washer's dial). ``None`` when the knob's box does not fit between the open
+    fingers that way, or the target gives no way round."""
     direction = target.get("direction")
     if not _turns_in_place(target) or direction is None:
         return None
@@ -429,7 +430,7 @@ def wound_back(target: dict, g: dict) -> dict | None:
     extent = box_extent(target.get("box"), closing)
     if extent is None or extent > 2 * FINGER_OPEN - 0.005:
         return None
-    return {**g, "closing": closing.tolist(), "width": max(float(g.get("width") or 0.0), extent)}
+    return {**g, "closing": closing.tolist(), "width": max(float(g.get("width") or 0.0), extent), "regrip": True}
 
 
 def grasp_candidates(target: dict) -> list[dict]:
@@ -618,9 +619,10 @@ def _motion(run: _Run, grasp: np.ndarray):
     return TurnMotion(frame[:3, 3], frame[:3, 0], run.open - run.rest, grasp)
 
 
-def _follow(run: _Run, grasp: np.ndarray, grip: bool) -> Attempt:
+def _follow(run: _Run, grasp: np.ndarray, grip: bool, regrip: bool = False) -> Attempt:
     """Move the part with the compliant hand until the joint passes its open threshold; with ``grip`` the
-    fingers must keep hold of it (a press or a push needs no hold)."""
+    fingers must keep hold of it (a press or a push needs no hold); with ``regrip`` a knob turned in place is
+    let go and taken again every :data:`REGRIP`."""
     motion = _motion(run, grasp)
     if motion is None:
         return run.fail(f"not attempted: the path is shorter than {MIN_PATH * 1000:g} mm and the joint does not"
@@ -631,7 +633,7 @@ def _follow(run: _Run, grasp: np.ndarray, grip: bool) -> Attempt:
     step = 0
     while run.time < end:
         here = motion.progress(run.gripper.tcp())
-        if grip and isinstance(motion, TurnMotion) and motion.angle >= REGRIP:
+        if regrip and grip and isinstance(motion, TurnMotion) and motion.angle >= REGRIP:
             t0 = run.time
             motion.regrip(run)
             here, goal = motion.progress(run.gripper.tcp()), here
@@ -681,7 +683,7 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
         if why:
             first = first or run.fail(why)
             continue
-        got = _follow(run, grasp, grip)
+        got = _follow(run, grasp, grip, bool(g.get("regrip")))
         if got.ok:
             return got
         best = got if best is None or got.reached > best.reached else best
