@@ -24,9 +24,10 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is (up to ``LEAD``
    past the path's end: a compliant hand lags its target by force / stiffness); the hand turns
    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
-   on its axis) is turned in place about the joint's axis, read from the loaded URDF; held wound back, it
-   is turned at most :data:`REGRIP` per hold: then the fingers open, the hand turns back and takes hold
-   again (a dial turned 330 degrees in one hold sweeps the hand's body through everything around it).
+   on its axis) is turned in place about the joint's axis, read from the loaded URDF; held wound back, or
+   when turning it in one hold did not open it, it is turned at most :data:`REGRIP` per hold: then the
+   fingers open, the hand turns back and takes hold again (a dial turned 330 degrees in one hold sweeps the
+   hand's body through everything around it).
 
 Success: the joint passes ``rest + open_threshold * (open - rest)`` while both fingers still touch the
 operated link (a press or push: the joint passing is enough). A failure names why: ``approach blocked by
@@ -674,23 +675,36 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
     first, best, holds = None, None, 0
     grip = target.get("action") not in PRESS_ACTIONS
     for g in grasp_candidates(target):  # the next when one cannot be taken, or taken does not open it
-        ctx.reset(q)
-        ctx.make_passive()
-        run = _Run(ctx, gripper, target)
-        grasp, pre, opening = _grasp_frames(run, g)
-        run.opening = opening
-        why = _approach(run, grasp, pre, opening, grip)
-        if why:
-            first = first or run.fail(why)
-            continue
-        got = _follow(run, grasp, grip, bool(g.get("regrip")))
-        if got.ok:
-            return got
-        best = got if best is None or got.reached > best.reached else best
-        holds += 1
+        # a knob turned in place in one hold that does not open is taken the same way again, turned in holds
+        # of at most REGRIP (the hand's body swept into a neighbour, or the fingers slipped over a long turn)
+        ways = [g, {**g, "regrip": True}] if grip and not g.get("regrip") and _turns_in_place(target) else [g]
+        for way in ways:
+            taken, got = _hold(ctx, gripper, target, q, way, grip)
+            if not taken:
+                first = first or got
+                break
+            if got.ok:
+                return got
+            best = got if best is None or got.reached > best.reached else best
+        else:
+            holds += 1
         if holds >= HOLDS:
             break
     return best or first
+
+
+def _hold(ctx, gripper: Gripper, target: dict, q: np.ndarray, g: dict, grip: bool) -> tuple[bool, Attempt]:
+    """One hold ``g`` from the object at ``q``: ``(False, why the hand could not take it)`` or ``(True, what
+    following the path with it did)``."""
+    ctx.reset(q)
+    ctx.make_passive()
+    run = _Run(ctx, gripper, target)
+    grasp, pre, opening = _grasp_frames(run, g)
+    run.opening = opening
+    why = _approach(run, grasp, pre, opening, grip)
+    if why:
+        return False, run.fail(why)
+    return True, _follow(run, grasp, grip, bool(g.get("regrip")))
 
 
 def check_robot(folder: str | Path) -> list[CheckResult]:
