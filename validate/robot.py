@@ -343,7 +343,7 @@ class _Run:
         self.fingers = {i for i, n in gripper.ids.items() if n in FINGER_LINKS}
         self.rest, self.open = float(target["rest"]), float(target["open"])
         self.time = 0.0
-        self.opening = FINGER_OPEN  # per finger, as the hand came in
+        self.opening = FINGER_OPEN  # per finger, how far the fingers open to let go in a regrip
 
     def fraction(self) -> float:
         q = float(np.asarray(self.art.qpos, float)[self.qi])
@@ -591,7 +591,7 @@ class TurnMotion:
         """Let go, turn the open hand back to where it took hold, and take hold again (the knob stays): how
         a hand turns a knob further than :data:`REGRIP`, its body sweeping only that much."""
         g = run.gripper
-        g.grip(run.opening)  # as open as it came in: no wider, beside the knobs next to it
+        g.grip(run.opening)
         run.step(int(round(RELEASE_TIME / run.dt)))
         start = self.angle
         n = max(1, int(round(start / TURN_SPEED / run.dt)))
@@ -700,7 +700,10 @@ def _hold(ctx, gripper: Gripper, target: dict, q: np.ndarray, g: dict, grip: boo
     ctx.make_passive()
     run = _Run(ctx, gripper, target)
     grasp, pre, opening = _grasp_frames(run, g)
-    run.opening = opening
+    # a regrip lets go of a knob as wide as its box across the hand (no wider: knobs stand beside it)
+    a, k = _unit(g["approach"]), _unit(g["closing"])
+    across = [box_extent(target.get("box"), d) for d in (k, np.cross(a, k))]
+    run.opening = opening if None in across else min(FINGER_OPEN, max(opening, math.hypot(*across) / 2 + 0.005))
     why = _approach(run, grasp, pre, opening, grip)
     if why:
         return False, run.fail(why)
