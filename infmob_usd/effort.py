@@ -281,6 +281,16 @@ def drive(obj, j, free: float | None = None) -> Drive:
                  a_gravity, a_stop)
 
 
+FRICTION_SHARE = 0.25
+"""A joint's Coulomb friction is at most this share of its effort, so that a push within the effort moves the
+part with three quarters of it left over (a hinge's 0.5 N m from the role table would hold a 20 g scissors blade
+whose effort is 0.02 N m). The friction of a joint that friction holds (:data:`HELD_ROLES`) is sized on its
+load instead, and its effort raised by it."""
+
+HELD_ROLES = ("holding", "toggle")
+"""Roles whose joint friction keeps the part where it is put (a laptop lid's friction hinge, a switch's bat):
+:func:`holding` sizes it on the load, and the effort is raised by it."""
+
 HOLD_MARGIN = 1.3
 """A ``holding`` joint's friction over the largest load gravity puts on it: friction (constant-torque) hinges are
 specified 20-50 % above the load torque so that a lid or a screen stays at any angle (Southco and Reell position
@@ -290,7 +300,8 @@ control hinge selection guides); 1.3 within that."""
 def holding(obj, j) -> float:
     """The Coulomb friction (N m or N) that holds joint ``j``'s load anywhere in its range: :data:`HOLD_MARGIN`
     times the largest gravity torque about a hinge (its subtree's centre of mass level with the axis) or the
-    subtree's weight along a slide; at least the role's."""
+    subtree's weight along a slide; at least ``j.friction`` (:func:`assign_drives` passes the role's, capped at
+    :data:`FRICTION_SHARE` of the effort)."""
     m, c, _ = _subtree(obj, j)
     axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
     mass = float(m.sum())
@@ -338,9 +349,14 @@ def assign_drives(obj):
                             spring_ref=_round(s.reference))
                 d = drive(obj, j, free[j.name])
             effort = d.effort
-            if j.role == "holding":  # the hand moves it against its friction too
-                j = replace(j, friction=_round(holding(obj, j)))
+            # a role's friction is a figure for a typical part (0.5 N m on a hinge): on a light part it is
+            # at most a share of what moves the part (a return spring sizes its own joint's friction)
+            if j.stiffness == 0:
+                j = replace(j, friction=min(j.friction, FRICTION_SHARE * effort))
+            if j.role in HELD_ROLES:  # friction holds its load; the hand moves it against that friction too
+                j = replace(j, friction=holding(obj, j))
                 effort += j.friction
+            j = replace(j, friction=_round(j.friction))
             j = replace(j, effort=_round(effort), velocity=_round(d.velocity), armature=_round(d.armature),
                         damping=_round(d.damping))
         joints.append(j)
@@ -352,4 +368,5 @@ def _round(x: float) -> float:
     return float(f"{x:.6g}")
 
 
-__all__ = ["HOLD_MARGIN", "ROLES", "Drive", "Role", "assign_drives", "drive", "holding", "role"]
+__all__ = ["FRICTION_SHARE", "HELD_ROLES", "HOLD_MARGIN", "ROLES", "Drive", "Role", "assign_drives", "drive", "holding",
+           "role"]
