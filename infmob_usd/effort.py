@@ -408,7 +408,19 @@ def assign_drives(obj):
             j = replace(j, effort=_round(effort), velocity=_round(d.velocity), armature=_round(d.armature),
                         damping=_round(d.damping))
         joints.append(j)
-    return replace(obj, joints=joints)
+    return replace(obj, joints=_drive_followers(joints))
+
+
+def _drive_followers(joints: list) -> list:
+    """``joints`` with every coupled leader's effort raised by what it takes to drive its followers: each
+    follower's effort (its weight multiple, friction, spring) times ``|ratio|``, its load seen at the leader (a
+    pedal bin's pedal opens a lid turning 5 times as far: 5 times the lid's effort at the pedal)."""
+    extra: dict[str, float] = {}
+    for j in joints:
+        if j.mimic is not None:
+            leader, ratio, _ = j.mimic
+            extra[leader] = extra.get(leader, 0.0) + abs(ratio) * j.effort
+    return [replace(j, effort=_round(j.effort + extra[j.name])) if j.name in extra else j for j in joints]
 
 
 def _round(x: float) -> float:

@@ -76,3 +76,17 @@ def test_a_sprung_lever_is_pressed_home_against_its_spring():
 def test_a_sprung_lever_reaches_its_far_stop_in_mujoco(tmp_path):
     travel = _pushed(tmp_path, "bucket", 5, "joint_lever")
     assert travel["upper"] > 0.95, travel
+
+
+def test_a_coupled_leader_drives_its_followers():
+    """A pedal bin's pedal opens a lid turning 5 times as far (trash_can seed 7): its effort (0.0087 N m) was its
+    own, not the 4.8 N m the lid's effort takes at the pedal. A wringer lever drives its press plate, a folding
+    chair's seat its legs."""
+    for category, seed in (("trash_can", 7), ("bucket", 5), ("folding_chair", 0)):
+        obj = infmob_usd.generate(category, seed=seed, texture_size=16)
+        by_name = {j.name: j for j in obj.joints}
+        followers = [j for j in obj.movable_joints if j.mimic is not None]
+        assert followers, category
+        for j in followers:
+            leader, ratio, _ = j.mimic
+            assert by_name[leader].effort > abs(ratio) * j.effort, (category, leader, j.name)
