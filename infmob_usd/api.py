@@ -134,7 +134,8 @@ def save(obj: ArticulatedObject, folder: str | Path, formats: str | list[str] | 
     """Write ``obj`` into ``folder/<name>/`` (atomically: written under a temporary name, then
     renamed) and return that path.
 
-    ``formats``: names from :data:`infmob_usd.layers.FORMATS` (``usd``, ``urdf``, ``mjcf``, ``glb``)
+    ``formats``: names from :data:`infmob_usd.layers.FORMATS` (``usd``, ``urdf``, ``mjcf``, ``glb``; ``isaac``: the USD
+    in Isaac Sim's layout, instead of ``usd``)
     as a list or a comma string; default ``usd,urdf,mjcf``. Arguments of the wrong type raise
     :class:`~infmob_usd.errors.ArgumentTypeError`; a ``folder`` that is a symbolic link or not UTF-8,
     :class:`~infmob_usd.errors.OutputError`.

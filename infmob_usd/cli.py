@@ -47,8 +47,12 @@ def _generate_command(sub) -> None:
     g.add_argument("--overwrite", action="store_true",
                    help="regenerate objects that already exist (default: skip them, resuming a run)")
     g.add_argument("--formats", default="usd,urdf,mjcf", metavar="LIST",
-                   help="comma list of usd, urdf, mjcf, glb (binary glTF with PBR materials, for web viewers);"
-                   " default usd,urdf,mjcf")
+                   help="comma list of usd, urdf, mjcf, glb (binary glTF with PBR materials, for web viewers),"
+                   " isaac (the USD in Isaac Sim's layout, instead of usd); default usd,urdf,mjcf")
+    g.add_argument("--usd-layout", choices=("payload", "isaac"), default="payload",
+                   help="payload (default: payload/ with one physics layer) or isaac (Isaac Sim's asset structure:"
+                   " payloads/base, geometries, instances, materials, physics and a PhysX / Newton / MuJoCo variant"
+                   " set each); isaac is the same as listing isaac instead of usd in --formats")
     g.add_argument("--preview", action="store_true",
                    help="also render each object's thumbnail (preview.png + sweep.gif in its folder)")
     g.add_argument("--wait", action="store_true",
@@ -382,6 +386,8 @@ def cmd_generate(args) -> int:
     from .seeding import MAX_SEED
 
     formats = parse_formats(args.formats)
+    if args.usd_layout == "isaac" and "usd" in formats:
+        formats = parse_formats(["isaac" if f == "usd" else f for f in formats])
     if args.preview and "urdf" not in formats:
         return _fail("--preview renders the URDF; add urdf to --formats")
     categories = _categories(args.category)

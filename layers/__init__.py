@@ -29,6 +29,7 @@ from .mjcf import write_mjcf
 from .thumbnail import write_thumbnail
 from .urdf import write_urdf
 from .usd import write_usd
+from .usd_isaac import write_usd_isaac
 
 TEXTURES = "textures"
 
@@ -41,6 +42,7 @@ class Format:
     stage: str
     file: str
     about: str
+    key: str = ""  # the name metadata.json lists the file under, if not the format's own (two USD layouts)
 
 
 FORMATS: dict[str, Format] = {
@@ -48,6 +50,8 @@ FORMATS: dict[str, Format] = {
     "urdf": Format(write_urdf, "urdf", "{name}.urdf", "URDF + OBJ meshes (SAPIEN, ManiSkill, PyBullet, MuJoCo)"),
     "mjcf": Format(write_mjcf, "mjcf", "{name}.xml", "MJCF for MuJoCo (materials, contact excludes)"),
     "glb": Format(write_glb, "glb", "{name}.glb", "binary glTF 2.0 with PBR materials, for web viewers"),
+    "isaac": Format(write_usd_isaac, "usd", "{name}.usda", "OpenUSD in Isaac Sim's layout (payloads/, runnables/:"
+                    " PhysX, Newton, MuJoCo variant sets), instead of usd", key="usd"),
 }
 DEFAULT_FORMATS = ("usd", "urdf", "mjcf")
 
@@ -63,6 +67,8 @@ def parse_formats(formats: str | Iterable[str] | None) -> tuple[str, ...]:
     if unknown or not names:
         what = f"unknown format(s) {', '.join(map(repr, unknown))}" if unknown else "no format given"
         raise OutputError(f"{what}; choose from {','.join(FORMATS)} (e.g. --formats usd,urdf,mjcf,glb)")
+    if "usd" in names and "isaac" in names:
+        raise OutputError("formats usd and isaac are two layouts of the same USD file; choose one")
     return tuple(n for n in FORMATS if n in names)
 
 
@@ -135,12 +141,12 @@ def write_object(obj, out: Path, formats: str | Iterable[str] | None = None, run
     except OSError as e:
         raise OutputError(f"cannot write in output folder {str(out)!r}: {e.strerror}; choose another") from None
     obj._visual_meshes = obj._mesh_files = None
-    files = {name: "./" + FORMATS[name].file.format(name=obj.name) for name in formats}
+    files = {FORMATS[name].key or name: "./" + FORMATS[name].file.format(name=obj.name) for name in formats}
     stages = [("textures_io", write_textures)]
     stages += [(FORMATS[name].stage, FORMATS[name].writer) for name in formats]
     stages += [("metadata", write_semantics), ("metadata", lambda o, f: write_metadata(o, f, files)),
                ("metadata", write_annotations)]
-    if "usd" in formats:  # the SimReady thumbnail beside the USD root layer
+    if "usd" in files:  # the SimReady thumbnail beside the USD root layer
         stages.append(("thumbnail", write_thumbnail))
     try:
         t0 = time.perf_counter()

@@ -10,7 +10,10 @@ One check, ``simready``, passes when all of these hold for the object's root lay
   ``FET_005_STANDARD`` where the object has a part to operate (a vase without a lid has none);
 * the features ``FET_024_STANDARD`` (articulation) and ``FET_022_STANDARD`` (driven joints) of profile
   **Robot-Body 3.0.0** pass;
-* ``omniverse-asset-validator``'s default rules report no failure or error (warnings are allowed).
+* ``omniverse-asset-validator``'s default rules report no failure, error or warning (``omni_asset_validate``
+  exits 0);
+* of an object in the Isaac layout (``--usd-layout isaac``), also the runtime variant features
+  ``FET_000_PHYSX/NEWTON/MUJOCO`` and Isaac's composition ``FET_100_ISAAC``.
 
 The driven-joint rules (DJ.*) import ``pxr.PhysxSchema``, which only Kit / Isaac Sim's own USD build has;
 with ``usd-core`` the import fails and those rules quietly find nothing. :func:`install_physx_shim` maps
@@ -36,6 +39,8 @@ PROP = ("Robotics-Prop", "4.0.0")
 PROP_OPTIONAL = ("FET_004_STANDARD", "FET_000_STANDARD", "FET_010_STANDARD", "FET_007_STANDARD",
                  "FET_003_MUJOCO", "FET_004_MUJOCO", "FET_003_NEWTON", "FET_004_NEWTON", "FET_006_OPENPBR")
 GRASP_FEATURE = "FET_005_STANDARD"  # grasp vectors: required of an object with a part to operate
+# required of the Isaac layout (--usd-layout isaac): a variant set per physics runtime, Isaac Sim's layers
+ISAAC_FEATURES = ("FET_000_PHYSX", "FET_000_NEWTON", "FET_000_MUJOCO", "FET_100_ISAAC")
 BODY = ("Robot-Body", "3.0.0")
 BODY_FEATURES = ("FET_024_STANDARD", "FET_022_STANDARD")  # articulation, driven joints
 PACKAGES = ("simready-validate", "simready-foundation-tier-core", "omniverse-asset-validator",
@@ -203,7 +208,7 @@ def run_simready(usd_path: str | Path) -> dict:
     dict
         ``prop``: failing Robotics-Prop 4.0.0 features (mandatory requirements, and FET_004_STANDARD);
         ``body``: failures of the requirements of FET_024/FET_022 of Robot-Body 3.0.0 (their dependency
-        FET_004_STANDARD is judged in ``prop``); ``omni``: the default rules' failures and errors as
+        FET_004_STANDARD is judged in ``prop``); ``omni``: the default rules' failures, errors and warnings as
         ``"Rule: message"``; ``seconds``; ``shim``: where ``pxr.PhysxSchema`` came from.
     """
     from pxr import Usd
@@ -223,13 +228,20 @@ def run_simready(usd_path: str | Path) -> dict:
     else:
         bad_prop += [f"{f}: {e.get('failing requirements')}" for f, e in sorted(prop.features_summary.items())
                      if sv.is_blocking_failure(e)]
-        wanted = PROP_OPTIONAL + ((GRASP_FEATURE,) if _has_grasps(stage) else ())
+        wanted = PROP_OPTIONAL + ((GRASP_FEATURE,) if _has_grasps(stage) else ()) + (
+            ISAAC_FEATURES if _isaac_layout(stage) else ())
         bad_prop += [m for f in wanted if (m := _failing(prop.features_summary, f))]
     bad_body = [f"{i.requirement.code.split('.', 3)[-1] if i.requirement else _rule_name(i)}: {i.message}"
                 for i in body.issues() if i.severity.name in bad]
-    bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity.name in bad]
+    bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity.name in bad + ("WARNING",)]
     return {"prop": bad_prop, "body": bad_body, "omni": bad_omni, "seconds": time.perf_counter() - t0,
             "shim": st["shim"]}
+
+
+def _isaac_layout(stage) -> bool:
+    """Whether the asset is in the Isaac layout (its root prim has the physics runtime variant sets)."""
+    prim = stage.GetDefaultPrim()
+    return bool(prim) and {"PhysX", "Newton", "MuJoCo"} <= set(prim.GetVariantSets().GetNames())  # RV.001/004/007
 
 
 def _has_grasps(stage) -> bool:
