@@ -60,8 +60,14 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                               " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "eyeglasses": ("Q1751850", "http://www.wikidata.org/entity/Q1751850 'optical instrument' (OEWN 03857800-n, the"
+                               " hypernym of 04279164-n spectacles, which has no Wikidata link)"),
+    "knife": ("Q390383", "http://www.wikidata.org/entity/Q390383 'pocketknife' (OEWN 03979986-n; a multi-tool"
+                         " and a utility knife fold or retract their blades alike)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
+    "mouse": ("Q7987", "http://www.wikidata.org/entity/Q7987 'mouse' (COCO: 'hand-held device used to move a"
+              " pointer on a computer display')"),
     "stapler": ("Q489157", "http://www.wikidata.org/entity/Q489157 'stapler' (WN 04310635-n, OEWN)"),
     "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
     "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"

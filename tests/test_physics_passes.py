@@ -132,7 +132,7 @@ def test_a_lever_that_gravity_pulls_off_its_stop_gets_a_counterweight():
     lever = [g.cylinder([0.002, 0, 0.2], [0.05, 0, 0.2], 0.01, "chrome", 16),
              g.box_between([0.035, 0.0, 0.195], [0.05, 0.12, 0.205], "chrome")]
     bp.add("lever", "lever", lever)
-    bp.join(J.revolute("plate", "lever", (0.002, 0, 0.2), (-1, 0, 0), 0.0, math.pi / 4, role="button"))
+    bp.join(J.revolute("plate", "lever", (0.002, 0, 0.2), (-1, 0, 0), 0.0, math.pi / 4, role="hinge"))
     before = sum(p.volume() for p in lever)
     obj = _make(bp)
     link, joint = obj.link("lever"), _joint(obj, "lever")
@@ -142,6 +142,23 @@ def test_a_lever_that_gravity_pulls_off_its_stop_gets_a_counterweight():
     torque, mass, com = gravity_torque(obj.links, obj.joints, joint)
     assert abs(torque) < 1e-9 and sum(p.volume() for p in link.pieces) > before
     assert (joint.lower, joint.upper) == (0.0, pytest.approx(math.pi / 4))
+
+
+def test_a_sprung_button_that_gravity_pulls_off_its_stop_is_held_by_its_spring_not_a_counterweight():
+    # a mouse button on its rear hinge: its front presses down (+q), the way gravity turns it; the return
+    # spring holds it on its rest stop, so no counterweight heel grows behind the hinge into the body
+    bp = Blueprint("t", materials={"m": "plastic:black"})
+    bp.add("shell", "body", [g.box_between([-0.06, -0.03, 0.0], [0.06, 0.03, 0.02], "m")])
+    button = [g.box_between([0.0, 0.002, 0.021], [0.05, 0.028, 0.0235], "m")]
+    bp.add("button", "button", button)
+    bp.join(J.revolute("shell", "button", (0.0, 0.015, 0.021), (0, 1, 0), 0.0, math.radians(2.0), role="button"))
+    obj = _make(bp)
+    link, joint = obj.link("button"), _joint(obj, "button")
+    assert not [p for p in link.pieces if p.name == "counterweight"]
+    torque, mass, _ = gravity_torque(obj.links, obj.joints, joint)
+    assert torque > BALANCED * 9.81 * mass  # gravity still turns it toward +q: off its rest stop
+    # the spring's zero lies beyond the rest stop, far enough that at q = 0 it presses harder than gravity pulls
+    assert joint.stiffness > 0 and joint.stiffness * (0.0 - joint.spring_ref) > torque
 
 
 def test_a_swivel_about_z_is_neutral_and_untouched():

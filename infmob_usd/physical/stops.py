@@ -8,6 +8,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..blueprint import descendants
+from ..springs import SPRINGS
 
 GRAVITY = np.array([0.0, 0.0, -9.81])
 """m/s^2, world."""
@@ -54,6 +55,9 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
       side that lifts the load: limits ``(0, upper)``.
     * gravity pushes toward positive q with a two-sided range: the axis is flipped and the
       limits become ``(0, -lower)`` (pressed onto the stop that was the lower side).
+    * a spring-returned joint (role in :data:`~infmob_usd.springs.SPRINGS`: a mouse button on its
+      rear hinge) whose load pulls it off its rest stop is held there by its return spring, which the
+      core sizes to hold :data:`~infmob_usd.springs.GRAVITY_HOLD` times that pull; unchanged.
     * otherwise (rest is a stop and gravity pulls away from it: a lever's grip hanging off
       its axis) a *counterweight heel* is added to the child link: a bar of the child's
       heaviest material from the axis along the side opposite the carried centre of mass,
@@ -82,6 +86,8 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
             continue
         if torque > 0 and j.lower < 0:
             joints[k] = replace(j, axis=-np.asarray(j.axis, float), lower=0.0, upper=-j.lower)
+            continue
+        if j.role in SPRINGS:  # its return spring holds it on the rest stop (springs.GRAVITY_HOLD)
             continue
         # a counterweight heel on the child: its moment about the axis cancels the carried one
         child = links[index[j.child]]

@@ -1,0 +1,40 @@
+"""A mouse's main buttons click down about their rear hinge and its thumb buttons press straight into the shell:
+checked on the grounded blueprint."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from helpers import maker
+
+make = maker("mouse")
+
+
+def _points(bp, part, pose=None):
+    pts = np.vstack([pc.vertices for pc in bp.parts[part].pieces])
+    pose = np.eye(4) if pose is None else pose
+    return pts @ pose[:3, :3].T + pose[:3, 3]
+
+
+def test_main_buttons_click_down_at_the_front_and_the_side_buttons_press_across():
+    _, bp = make(0, design="gaming", has_right_thumb=True)
+    kinds = {s.child: s.dofs[0] for s in bp.joints if s.movable}
+    body = _points(bp, "body")
+    for name in ("left_button", "right_button"):
+        d = kinds[name]
+        assert d.type == "revolute" and np.allclose(np.abs(d.axis), (0, 1, 0))
+        rest = _points(bp, name)
+        pressed = _points(bp, name, bp.poses({(name, 0): d.upper})[name])
+        front, back = rest[:, 0].argmax(), rest[:, 0].argmin()
+        # the tip goes down 1.5-2 mm onto its switch; the hinge end stays where it is
+        assert 0.0015 < rest[front, 2] - pressed[front, 2] < 0.0021
+        assert abs(rest[back, 2] - pressed[back, 2]) < 2e-4
+        assert d.origin[0] < rest[:, 0].min() + 1e-3  # hinged across its rear edge
+    assert kinds["wheel"].type == "continuous" and np.allclose(np.abs(kinds["wheel"].axis), (0, 1, 0))
+    sides = [n for n in kinds if n.startswith(("side_button", "right_side_button"))]
+    assert len(sides) >= 4
+    for name in sides:  # pressed square to the mouse's side, toward its middle
+        d = kinds[name]
+        y = _points(bp, name)[:, 1].mean()
+        assert d.type == "prismatic" and abs(d.axis[1]) > 0.999 and np.sign(d.axis[1]) == -np.sign(y)
+        assert abs(y) > 0.4 * np.ptp(body[:, 1])  # on a wall, not the top
