@@ -46,7 +46,8 @@ class OfficeLayout(RoomLayout):
         # a writing desk: a fixed top, drawers in one long side (+Y), which faces into the room
         desk = self.make("dining_table", height=round(float(self.rng.uniform(0.72, 0.76)), 3), top_style="fixed",
                          top_shape="rectangular", drawer_sides="one", has_casters=False,
-                         length=round(float(self.rng.uniform(1.4, 1.8)), 3))
+                         length=round(float(self.rng.uniform(1.4, 1.8)), 3),
+                         clearance=None)  # a desk: its chair stands at its front, not a diner's walkway
         turn = -math.pi / 2  # its -Y long side to the wall, its drawers (+Y) facing the room
         self.desk_at = self.on_wall(desk, self.rng.permutation(["north", "east", "west"]), self.rng, turn=turn)
 
