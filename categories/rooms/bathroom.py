@@ -6,7 +6,7 @@ guidelines, 0.76 m in front, 0.38 m from its centreline to a side obstruction). 
 0.45-0.55 m over the vanity top (a mirror cabinet's underside at about eye level less a face: retail fitting
 guides give 0.45-0.6 m); the linen tower is a tall single-column cabinet
 (0.4-0.5 m wide, as bathroom tall units are). Vanity, wall cabinet and tower share one seed: one set of fronts.
-Toiletries stand on the vanity top.
+Toiletries (bottles, jars, a soap pump bottle) stand on the vanity top.
 """
 
 from __future__ import annotations
@@ -97,7 +97,9 @@ class BathroomLayout(RoomLayout):
 
     def toiletry(self, node):
         if self.hosts:
-            self.scatter(self.make(str(self.rng.choice(["bottle", "jar"]))), self.hosts, self.rng)
+            what = str(self.rng.choice(["bottle", "jar", "dispenser"]))
+            made = self.make(what, design="pump_bottle") if what == "dispenser" else self.make(what)  # a soap pump
+            self.scatter(made, self.hosts, self.rng)
 
 
 KIND = SceneKind("bathroom", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, BathroomLayout)

@@ -291,10 +291,11 @@ class SceneLayout:
         return self.keep(cand)
 
     def set_on(self, made: Made, host: Placed, rng: np.random.Generator, tries: int = 12,
-               prefer=None, fixed: bool = False, yaw: float | None = None) -> Placed | None:
+               prefer=None, fixed: bool = False, yaw: float | None = None, where=None) -> Placed | None:
         """``made`` set down (free) on a support region of ``host`` where it fits: the region big enough
         for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits.
-        ``yaw``: which way its front faces (default: as the host's); a multiple of 90 degrees from the host's."""
+        ``yaw``: which way its front faces (default: as the host's); a multiple of 90 degrees from the host's.
+        ``prefer``: a sort key of the regions; ``where``: a test a region must pass (a worktop, not a shelf)."""
         host_yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
         turn = 0.0 if yaw is None else yaw - host_yaw
         lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))  # its box in the host's axes
@@ -302,7 +303,7 @@ class SceneLayout:
         steady = _steady_links(host.made.obj)
         regions = [g for g in host.made.regions if g.link in steady
                    and (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
-                   and (g.clear is None or g.clear > size[2] + 0.01)]
+                   and (g.clear is None or g.clear > size[2] + 0.01) and (where is None or where(g))]
         if prefer is not None:
             regions = sorted(regions, key=prefer)
         for region in regions[:3]:
@@ -410,10 +411,11 @@ class RoomLayout(SceneLayout):
         return None
 
     def scatter(self, made: Made, hosts: list[Placed], rng: np.random.Generator, prefer=None,
-                fixed: bool = False) -> Placed | None:
-        """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it."""
+                fixed: bool = False, where=None) -> Placed | None:
+        """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it (``prefer``,
+        ``where``: as in :meth:`set_on`)."""
         for k in rng.permutation(len(hosts)):
-            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer, fixed=fixed)
+            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer, fixed=fixed, where=where)
             if got is not None:
                 return got
         return None
