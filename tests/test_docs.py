@@ -1,6 +1,6 @@
-"""The docs stay true: docs/categories.md's table and the README's list are the discovered categories, docs/cli.md documents every flag
-of every command's ``--help``, the README's Python example runs and prints what its comment says, and every
-relative link in the docs points at a file (and heading) that exists.
+"""The docs stay true: docs/categories.md's table and the README's list are the discovered categories,
+docs/cli.md documents every flag of every command's ``--help``, the README's Python example runs and prints what
+its comment says, and every relative link in the docs points at a file (and heading) that exists.
 
 ``python tests/test_docs.py`` prints docs/categories.md's table from the code."""
 
