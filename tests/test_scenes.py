@@ -273,3 +273,17 @@ def test_an_item_set_down_opens_clear_of_its_host():
             if not _clear_of_host(host.made, *moved_box(lo, hi, local)):
                 blocked.append((item.id, group))
     assert not blocked, blocked
+
+
+def test_a_swivel_seat_sweeps_its_turn_when_placed():
+    # a counter stool's swivel seat (continuous) was left out of the swept boxes: its arms hit the island's back
+    # at 31 degrees in scene_reach (kitchen seed 2, island and peninsula)
+    from infmob_usd.scenes.layout import _measure
+
+    chair = infmob_usd.generate("bar_chair", 0, texture_size=16)
+    seat = next(j for j in chair.movable_joints if j.type == "continuous")
+    lo, hi, swept = _measure(chair)
+    turned = [b for g, *b in swept if g == seat.group]
+    assert turned, [g for g, *_ in swept]
+    # a seat wider one way than the other reaches further out turned than at rest
+    assert np.all(turned[0][0][:2] <= lo[:2] + 1e-9) and np.all(turned[0][1][:2] >= hi[:2] - 1e-9)

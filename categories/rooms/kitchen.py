@@ -187,8 +187,10 @@ class KitchenLayout(RoomLayout):
         reach = (counter.hi - counter.lo)[1 if along[0] else 0] / 2 + stool.size[0] / 2 + 0.05
         for k in range(n):
             off = (k + 0.5 - n / 2) * 0.6
-            xy = centre[:2] + back[:2] * reach + [along[0] * off, along[1] * off]
-            self.at(stool, xy, facing, )
+            for extra in (0.0, 0.05, 0.1, 0.15, 0.2):  # as close as its swivelling seat and back let it
+                xy = centre[:2] + back[:2] * (reach + extra) + [along[0] * off, along[1] * off]
+                if self.at(stool, xy, facing) is not None:
+                    break
 
     # -- everything else -----------------------------------------------------------------------------------------
     def wall_units(self, node):

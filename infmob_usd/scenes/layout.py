@@ -119,13 +119,15 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
                          np.array([p.bounds[1] for p in link.pieces]).max(0)) for link in obj.links if link.pieces}
     groups: dict[str, list] = {}
     for j in obj.movable_joints:
-        if math.isfinite(j.upper) and j.type != "continuous":
+        # a continuous joint (a stool's swivel seat) sweeps its whole turn: the scene's reach check turns it
+        # a quarter each way, and a user turns it all round
+        if math.isfinite(j.upper):
             groups.setdefault(j.group, []).append(j)
     swept = []
     for group, joints in sorted(groups.items()):
         # a turning part reaches furthest part-way (a flap door swinging up passes over its hinge): sample the
         # range every SWEEP_STEP; a slide is furthest at its end
-        turns = any(j.type == "revolute" for j in joints)
+        turns = any(j.type in ("revolute", "continuous") for j in joints)
         n = max(2, int(math.ceil(max(j.upper - j.lower for j in joints) / SWEEP_STEP)) + 1) if turns else 2
         pts = []
         for f in np.linspace(0.0, 1.0, n)[1:]:
