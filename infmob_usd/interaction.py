@@ -16,6 +16,7 @@ import numpy as np
 from trimesh.intersections import slice_faces_plane
 
 from .grasps import Grasp
+from .joints import gate_chain
 
 FORMAT = "infmob-annotations/1"
 UNITS = "metres, radians for revolute/continuous joints, metres for prismatic; Z up, fronts face +X"
@@ -455,14 +456,9 @@ def _grasp_json(g: Grasp, blocked) -> dict:
 
 
 def _gates(obj, joint) -> list[str]:
-    """The parts that must be open before ``joint`` moves: its ``requires_open`` part, then what that part's
-    own joints require open, and so on (tines on a rack that needs the dishwasher's door open), nearest
-    first."""
-    out, todo = [], joint.requires_open
-    while todo is not None and todo not in out:
-        out.append(todo)
-        todo = next((j.requires_open for j in obj.joints if j.group == todo and j.requires_open), None)
-    return out
+    """The parts that must be open before ``joint`` moves, nearest first (:func:`~.joints.gate_chain`: tines
+    on a rack that needs the dishwasher's door open)."""
+    return gate_chain(joint.requires_open, [(j.group, j.requires_open) for j in obj.joints])
 
 
 def target(obj, joint, groups: dict[str, list[str]]) -> dict:

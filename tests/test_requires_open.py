@@ -34,6 +34,15 @@ def cupboard(gated: bool) -> Blueprint:
     return bp
 
 
+def cupboard_with_rider() -> Blueprint:
+    """The gated cupboard with a small box on its tray that slides further out only with the tray pulled
+    out: it requires the tray open, which requires the door open."""
+    bp = cupboard(True)
+    bp.add("rider", "drawer", [g.box_between([-0.1, -0.05, 0.081], [0.0, 0.05, 0.12], "t")])
+    bp.join(J.prismatic("tray", "rider", (0.0, 0, 0.081), (1, 0, 0), 0.0, 0.05, requires_open="tray"))
+    return bp
+
+
 def _checks(folder):
     return {c.name: c for c in check_physics(folder)}
 
@@ -80,6 +89,41 @@ def test_reach_opens_the_door_first(tmp_path):
     ungated = infmob_usd.save(_unlimited(cupboard(False)), tmp_path / "free")
     res = {c.name: c for c in check_sapien(ungated, checks=["reach"])}
     assert not res["reach"].ok and "joint_tray" in res["reach"].detail
+
+
+def _joint(meta, child):
+    return next(j["name"] for j in meta["joints"] if j["child"] == child)
+
+
+def test_requires_open_is_transitive_in_every_check(tmp_path):
+    """A part that requires a part open that requires another open (tines on a rack behind a dishwasher's
+    door) moves with both open: every reader of metadata.json follows the chain, nearest gate first, so no
+    check pulls the tray through the closed door when it moves the rider."""
+    folder = infmob_usd.save(assemble(cupboard_with_rider(), 0, np.random.default_rng(0), 16), tmp_path / "o")
+    res = _checks(folder)
+    assert res["self_collision"].ok, res["self_collision"].detail
+    from infmob_usd.validate.files import gate_joints
+    from infmob_usd.validate.mujoco_sim import opened_by
+    from infmob_usd.validate.posing import _qpos_for, _read_object
+
+    meta = json.loads((folder / "metadata.json").read_text())
+    door, tray, rider = (_joint(meta, c) for c in ("door", "tray", "rider"))
+    assert next(j for j in meta["joints"] if j["name"] == rider)["requires_open"] == "tray"
+    assert gate_joints(meta) == {tray: [door], rider: [tray, door]}
+    assert opened_by(meta)[rider] == [tray, door]
+    files = _read_object(folder)
+    q = _qpos_for(files, {rider: 1.0})
+    assert q[door] == pytest.approx(math.pi / 2) and q[tray] == pytest.approx(0.35)
+
+
+@pytest.mark.sim
+def test_reach_opens_every_gate_of_the_chain(tmp_path):
+    pytest.importorskip("sapien")
+    from infmob_usd.validate.sim import check_sapien
+
+    folder = infmob_usd.save(assemble(cupboard_with_rider(), 0, np.random.default_rng(0), 16), tmp_path / "o")
+    res = {c.name: c for c in check_sapien(folder, checks=["reach"])}
+    assert res["reach"].ok, res["reach"].detail
 
 
 def test_the_gate_must_be_a_movable_part_declared_first():

@@ -8,7 +8,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..blueprint import descendants
-from ..joints import one_mode
+from ..joints import gate_chain, one_mode
 from .hulls import CLEARANCE, _boxes_meet, _hits, _Obstacles, _solid_hulls
 from .sweep import _Moving, _parent_limit, _sweep_limit
 
@@ -25,13 +25,8 @@ range (continuous joints at f pi), prerequisites fully open."""
 def _gate_chain(joint, groups) -> list[str]:
     """The joints that must be open before ``joint`` moves: those of its ``requires_open`` part, then those
     its part's joints require open in turn (the tines on a rack behind a dishwasher's door)."""
-    out, seen, part = [], set(), joint.requires_open
-    while part is not None and part not in seen:
-        seen.add(part)
-        gate = groups.get(part, [])
-        out += [g.name for g in gate]
-        part = next((g.requires_open for g in gate if g.requires_open), None)
-    return out
+    requires = [(part, g.requires_open) for part, gate in groups.items() for g in gate]
+    return [g.name for part in gate_chain(joint.requires_open, requires) for g in groups.get(part, [])]
 
 
 class _Clearance:
