@@ -131,3 +131,34 @@ def test_the_gate_must_be_a_movable_part_declared_first():
     bp.add("late", "drawer", [g.box_between([-0.1, -0.1, 0.2], [0.1, 0.1, 0.25], "t")])
     with pytest.raises(ModelError, match="requires 'ghost' open"):
         bp.join(J.prismatic("body", "late", (0.1, 0, 0.2), (1, 0, 0), 0.0, 0.1, requires_open="ghost"))
+
+
+def oven_with_flap() -> Blueprint:
+    """A hollow box on a 10 cm plinth with a door hinged along its bottom front edge that falls open to level,
+    and a 19 cm flap hinged near the door's top on its outer face, which swings outwards only with the door
+    open: then it swings down towards the floor, and hangs off its hinge."""
+    bp = cupboard(False)
+    del bp.parts["tray"], bp.parts["door"]
+    bp.joints[:] = []
+    bp.add("door", "door", [g.box_between([0.303, -0.3, 0.1], [0.323, 0.3, 0.497], "m")])
+    bp.join(J.revolute("body", "door", (0.323, 0.0, 0.1), (0, 1, 0), 0.0, math.pi / 2))
+    bp.add("flap", "flap", [g.box_between([0.325, -0.05, 0.3], [0.335, 0.05, 0.49], "m")])
+    bp.join(J.revolute("door", "flap", (0.325, 0.0, 0.49), (0, -1, 0), 0.0, math.pi / 2, requires_open="door"))
+    return bp
+
+
+def test_ground_and_rest_are_judged_with_the_gates_that_carry_a_joint_open(tmp_path):
+    """A part that moves only with the part carrying it open (a flap on a fall-down door) keeps clear of the
+    floor in that state, the one every check moves it in, and rests there: its centre of mass is brought onto
+    its hinge line (a counterweight heel), since with the door down gravity pulls it off its rest stop."""
+    from infmob_usd.physical import gravity_torque
+
+    obj = assemble(oven_with_flap(), 0, np.random.default_rng(0), 16)
+    flap = next(j for j in obj.joints if j.child == "flap")
+    assert 0.3 < flap.upper < math.radians(80), flap.upper
+    res = _checks(infmob_usd.save(obj, tmp_path / "o"))
+    assert res["ground"].ok, res["ground"].detail
+    link = next(k for k in obj.links if k.name == "flap")
+    assert any(p.name == "counterweight" for p in link.pieces)
+    torque, mass, _ = gravity_torque(obj.links, obj.joints, flap)
+    assert abs(torque) < 1e-3 * 9.81 * mass

@@ -8,7 +8,8 @@ from dataclasses import replace
 import numpy as np
 
 from ..blueprint import descendants
-from ..joints import gate_chain, one_mode
+from ..joints import one_mode
+from .gates import gate_names
 from .hulls import CLEARANCE, _boxes_meet, _hits, _Obstacles, _solid_hulls
 from .sweep import _Moving, _parent_limit, _sweep_limit
 
@@ -20,13 +21,6 @@ all-open state (:func:`clearance_limits`, step 3); below it the two are ordered 
 ALL_FRACTIONS = (0.5, 1.0)
 """The combined states the validators sample: every joint at once at 50 % and 100 % of its
 range (continuous joints at f pi), prerequisites fully open."""
-
-
-def _gate_chain(joint, groups) -> list[str]:
-    """The joints that must be open before ``joint`` moves: those of its ``requires_open`` part, then those
-    its part's joints require open in turn (the tines on a rack behind a dishwasher's door)."""
-    requires = [(part, g.requires_open) for part, gate in groups.items() for g in gate]
-    return [g.name for part in gate_chain(joint.requires_open, requires) for g in groups.get(part, [])]
 
 
 class _Clearance:
@@ -45,7 +39,7 @@ class _Clearance:
         # joint -> the parts (groups) that must be closed before it moves (step 3)
         self.closed: dict[str, set[str]] = {j.name: set(getattr(j, "requires_closed", ()))
                                             for j in self.movable}
-        self.gates = {j.name: _gate_chain(j, groups) for j in self.movable if j.requires_open}
+        self.gates = {j.name: gate_names(j, groups) for j in self.movable if j.requires_open}
         self.gate_of_someone = {name for names in self.gates.values() for name in names}
         # joint -> the other modes of its part that are at rest while it is open (JointSpec.exclusive)
         self.excludes = {j.name: tuple(getattr(j, "excludes", ())) for j in self.movable}
