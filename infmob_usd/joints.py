@@ -12,7 +12,7 @@ Limits are radians for rotations and metres for slides. Rest is 0 and lies in
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -105,7 +105,8 @@ class JointSpec:
     """The name of a part, the child of another declared joint, that must be fully open before this
     joint moves (a rack behind a door names the door's part); checks and users open that part first.
     The written joints keep the part name: it is the ``group`` of every joint in the gate's chain
-    (:attr:`.model.Joint.requires_open`). ``None``: moves freely."""
+    (:attr:`.model.Joint.requires_open`). ``None``: moves freely. The requirement is transitive: a part
+    that the gate part's own joint requires open is open too (:func:`gate_chain`)."""
     mimic: Mimic | None = None
     """The joint whose coordinate drives this one (:class:`Mimic`); ``None``: moves on its own."""
     exclusive: bool = False
@@ -266,4 +267,21 @@ def one_mode(q: dict[str, float], order: Sequence[str], excludes: dict[str, Sequ
             if other in out:
                 out[other] = rest.get(other, 0.0)
             shut.add(other)
+    return out
+
+
+def gate_chain(part: str | None, requires: Iterable[tuple[str, str | None]]) -> list[str]:
+    """The parts that must be open before a joint that ``requires_open`` ``part`` moves, nearest first:
+    ``part``, then the part its own joints require open, and so on (a dishwasher's tines ride on a rack
+    that slides out only with the door open: the rack, then the door). ``requires``: (part, the part its
+    joint requires open) for every joint, as read from a model, a blueprint or ``metadata.json``; of a
+    part with several joints the first naming a gate counts. A cycle ends the chain."""
+    gate_of: dict[str, str] = {}
+    for name, gate in requires:
+        if gate is not None:
+            gate_of.setdefault(name, gate)
+    out: list[str] = []
+    while part is not None and part not in out:
+        out.append(part)
+        part = gate_of.get(part)
     return out
