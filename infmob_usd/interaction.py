@@ -16,6 +16,7 @@ import numpy as np
 from trimesh.intersections import slice_faces_plane
 
 from .grasps import Grasp
+from .joints import gate_chain
 
 FORMAT = "infmob-annotations/1"
 UNITS = "metres, radians for revolute/continuous joints, metres for prismatic; Z up, fronts face +X"
@@ -57,11 +58,11 @@ def operated(joint, joints) -> bool:
 
 def action(joint) -> str:
     """What opens it: ``turn`` a continuous joint or a knob, swivel or turntable; ``press`` a button, lever,
-    pedal or toggle (a switch's bat or rocker); ``lift`` a lid, a lift-off part, a plate or grate; ``slide`` a
-    telescope; else ``pull``."""
+    pedal, toggle (a switch's bat or rocker) or plunger (a pump head pushed down its stroke); ``lift`` a lid,
+    a lift-off part, a plate or grate; ``slide`` a telescope; else ``pull``."""
     if joint.type == "continuous" or joint.role in ("knob", "swivel", "turntable"):
         return "turn"
-    if joint.role in ("button", "lever", "pedal_lid", "toggle"):
+    if joint.role in ("button", "lever", "pedal_lid", "toggle", "plunger"):
         return "press"
     if joint.role in ("lid", "lift_off", "plate", "grate"):
         return "lift"
@@ -454,13 +455,21 @@ def _grasp_json(g: Grasp, blocked) -> dict:
             "width": g.width, "depth": g.depth, "blocked_by": blocked(g)}
 
 
+def _gates(obj, joint) -> list[str]:
+    """The parts that must be open before ``joint`` moves, nearest first (:func:`~.joints.gate_chain`: tines
+    on a rack that needs the dishwasher's door open)."""
+    return gate_chain(joint.requires_open, [(j.group, j.requires_open) for j in obj.joints])
+
+
 def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     """The annotation of one operated joint (the fields of ``infmob-annotations/1``, docs/format.md)."""
     carrier = obj.link(joint.group)
     v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
-    # the gate part (a door before the rack behind it) is open when this joint is operated: not in the way
-    gate = [j.child for j in obj.joints if j.group == joint.requires_open] if joint.requires_open else []
+    # the gate parts (a door before the rack behind it, the rack before the tines on it) are open when this
+    # joint is operated: not in the way
+    gates = _gates(obj, joint)
+    gate = [j.child for j in obj.joints if j.group in gates]
     neighbours, press = Neighbours(obj, carrier, own | _fixed_under(obj, gate), (v, f)), action(joint) == "press"
 
     def blocked(g: Grasp) -> list[str]:
@@ -491,8 +500,7 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
         "rest": rest, "open": opened,
         "open_threshold": OPEN_THRESHOLD, "closed_threshold": CLOSED_THRESHOLD,
         "path": _path(obj, joint, carrier.name, grasps[0].position) if grasps else [],
-        "requires_open": [n for n in groups.get(joint.requires_open, []) if n != joint.name]
-        if joint.requires_open else [],
+        "requires_open": [n for g in gates for n in groups.get(g, []) if n != joint.name],
         "requires_closed": [n for g in joint.requires_closed for n in groups.get(g, [])],
     }
 

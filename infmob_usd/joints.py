@@ -12,7 +12,7 @@ Limits are radians for rotations and metres for slides. Rest is 0 and lies in
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -105,7 +105,8 @@ class JointSpec:
     """The name of a part, the child of another declared joint, that must be fully open before this
     joint moves (a rack behind a door names the door's part); checks and users open that part first.
     The written joints keep the part name: it is the ``group`` of every joint in the gate's chain
-    (:attr:`.model.Joint.requires_open`). ``None``: moves freely."""
+    (:attr:`.model.Joint.requires_open`). ``None``: moves freely. The requirement is transitive: a part
+    that the gate part's own joint requires open is open too (:func:`gate_chain`)."""
     mimic: Mimic | None = None
     """The joint whose coordinate drives this one (:class:`Mimic`); ``None``: moves on its own."""
     exclusive: bool = False
@@ -118,6 +119,13 @@ class JointSpec:
     hung on it, a pocket's lip for a caddy standing in it); it is free, and its slides end, that far plus
     :data:`~infmob_usd.lift_off.FREE` up (:func:`infmob_usd.lift_off.capped_joint`). ``None``: a hand's
     lift, :data:`~infmob_usd.lift_off.LIFT_OFF`."""
+    requires_closed: tuple[str, ...] = ()
+    """Names of parts, each the child of another movable joint, that must be at rest before this joint moves
+    and that cannot open while it is off rest (a folding reader's front folds only with its temples folded,
+    and its temples cannot open while it is folded): the relation holds both ways, and the written joints of
+    both sides list the other's part (:attr:`.model.Joint.requires_closed`). Open states (the clearance
+    pass's, the validators', the previews') open the first of the two in joint order and hold the other at
+    rest (:func:`closed_excludes`). ``()``: no such part."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -135,6 +143,9 @@ class JointSpec:
         if self.engagement is not None and (self.role != "lift_off" or not 0.0 < self.engagement < math.inf):
             raise ModelError(f"joint {self.parent}->{self.child}: an engagement depth (got {self.engagement!r})"
                              " is a positive length, declared on a role lift_off joint only")
+        if self.child in self.requires_closed or len(set(self.requires_closed)) != len(self.requires_closed):
+            raise ModelError(f"joint {self.parent}->{self.child}: requires_closed {self.requires_closed!r} names"
+                             " its own part or a part twice; name each other part once")
         if self.exclusive and len(self.dofs) < 2:
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} has one DoF: only the modes of a"
                              " compound joint can exclude each other")
@@ -221,6 +232,25 @@ def flip_revolute(parent: str, child: str, pivot0: V3, axis0: V3, turn0: tuple[f
         exclusive=exclusive)
 
 
+def closed_excludes(joints: Sequence[tuple[str, str, Sequence[str]]]) -> dict[str, list[str]]:
+    """Joint name -> the joints held at rest while it is off rest in an open state, from ``(joint name, group,
+    requires_closed groups)`` of the movable joints: where two parts each require the other closed
+    (:attr:`JointSpec.requires_closed`, written both ways), they are never open together, read with
+    :func:`one_mode` (the first in joint order opens). A one-way relation (the clearance pass's order, a door
+    closed after its tray) leaves both open."""
+    members: dict[str, list[str]] = {}
+    closed: dict[str, set[str]] = {}
+    for name, group, needs in joints:
+        members.setdefault(group, []).append(name)
+        closed.setdefault(group, set()).update(needs)
+    out: dict[str, list[str]] = {}
+    for name, group, needs in joints:
+        held = [n for g in sorted(set(needs)) if group in closed.get(g, ()) for n in members.get(g, [])]
+        if held:
+            out[name] = held
+    return out
+
+
 def one_mode(q: dict[str, float], order: Sequence[str], excludes: dict[str, Sequence[str]],
              rest: dict[str, float] | None = None) -> dict[str, float]:
     """``q`` (joint name -> value) with the alternative modes of an exclusive joint
@@ -237,4 +267,21 @@ def one_mode(q: dict[str, float], order: Sequence[str], excludes: dict[str, Sequ
             if other in out:
                 out[other] = rest.get(other, 0.0)
             shut.add(other)
+    return out
+
+
+def gate_chain(part: str | None, requires: Iterable[tuple[str, str | None]]) -> list[str]:
+    """The parts that must be open before a joint that ``requires_open`` ``part`` moves, nearest first:
+    ``part``, then the part its own joints require open, and so on (a dishwasher's tines ride on a rack
+    that slides out only with the door open: the rack, then the door). ``requires``: (part, the part its
+    joint requires open) for every joint, as read from a model, a blueprint or ``metadata.json``; of a
+    part with several joints the first naming a gate counts. A cycle ends the chain."""
+    gate_of: dict[str, str] = {}
+    for name, gate in requires:
+        if gate is not None:
+            gate_of.setdefault(name, gate)
+    out: list[str] = []
+    while part is not None and part not in out:
+        out.append(part)
+        part = gate_of.get(part)
     return out

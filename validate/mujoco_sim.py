@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .files import gate_joints
 from .result import CheckResult
 
 REST_TIME = 2.0  # s
@@ -140,13 +141,10 @@ def _run(mujoco, model, data, steps: int, bounds: tuple) -> np.ndarray:
 
 
 def opened_by(meta: dict) -> dict[str, list[str]]:
-    """Joint name -> the joints of the part it ``requires_open`` (``metadata.json``), for :func:`push_joints`."""
-    groups: dict[str, list[str]] = {}
-    for j in meta["joints"]:
-        if j["type"] != "fixed":
-            groups.setdefault(j["group"], []).append(j["name"])
-    return {j["name"]: groups[j["requires_open"]] for j in meta["joints"]
-            if j.get("requires_open") in groups}
+    """Joint name -> the joints that must be open before it moves (``metadata.json``: those of the part it
+    ``requires_open``, and of what that part requires in turn: :func:`.files.gate_joints`), for
+    :func:`push_joints`."""
+    return {name: gates for name, gates in gate_joints(meta).items() if gates}
 
 
 def _follow(model, data, i: int) -> None:

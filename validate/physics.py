@@ -60,7 +60,7 @@ import numpy as np
 
 from infmob_usd.joints import one_mode
 
-from .files import UrdfJoint, forward_kinematics, mode_excludes, parse_urdf
+from .files import UrdfJoint, forward_kinematics, gate_joints, mode_excludes, parse_urdf
 from .result import CheckResult
 
 __all__ = [
@@ -203,7 +203,8 @@ class Model:
     def __init__(self, name: str, links: dict[str, LinkGeometry], joints: list[KJoint],
                  requires: dict[str, list[str]] | None = None, excludes: dict[str, list[str]] | None = None):
         self.name = name
-        # joint -> joints that must be at their upper limit before it moves (metadata requires_open)
+        # joint -> joints that must be at their upper limit before it moves (metadata requires_open, the
+        # whole chain: files.gate_joints)
         self.requires = requires or {}
         # joint -> the other modes of its fitting, at rest while it is off rest (metadata excludes)
         self.excludes = excludes or {}
@@ -333,13 +334,7 @@ def load_model(folder_or_urdf: str | Path) -> Model:
         geo.dummy = dummy_flags.get(name, not link.collisions and not link.visuals)
         links[name] = geo
     joints = [KJoint.of(j) for j in urdf.joints.values()]
-    groups: dict[str, list[str]] = {}
-    for j in meta.get("joints", []):
-        if j["type"] != "fixed":
-            groups.setdefault(j["group"], []).append(j["name"])
-    requires = {j["name"]: groups.get(j["requires_open"], []) for j in meta.get("joints", [])
-                if j.get("requires_open")}
-    return Model(urdf.name or path.stem, links, joints, requires, mode_excludes(meta))
+    return Model(urdf.name or path.stem, links, joints, gate_joints(meta), mode_excludes(meta))
 
 
 # --------------------------------------------------------------------------- sampled states

@@ -17,7 +17,7 @@ import numpy as np
 
 from infmob_usd.joints import one_mode
 
-from .files import UrdfJoint, forward_kinematics, mode_excludes, parse_urdf
+from .files import UrdfJoint, forward_kinematics, gate_joints, mode_excludes, parse_urdf
 
 OPEN_FRACTION = 0.7  # "opened" preview: each joint at 70 % of its range
 CONTINUOUS_OPEN = math.pi / 2  # continuous joints: a quarter turn in the opened preview
@@ -130,15 +130,12 @@ def _forward_kinematics(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, 
 
 
 def _gates(obj: _ObjectFiles) -> dict[str, list[str]]:
-    """{joint name: the movable joints of the part it ``requires_open``} from ``metadata.json`` (a rack behind
-    a door: the door's joints), as ``validate/sim.py`` reads them."""
-    meta = [j for j in obj.metadata.get("joints", []) if j.get("type") not in (None, "fixed")]
-    groups: dict[str, list[str]] = {}
-    for j in meta:
-        groups.setdefault(j.get("group"), []).append(j["name"])
+    """{joint name: the movable joints that must be open before it moves} from ``metadata.json`` (a rack
+    behind a door: the door's joints; tines on that rack: the rack's, then the door's), as
+    ``validate/sim.py`` reads them (:func:`.files.gate_joints`)."""
     movable = {j.name for j in obj.movable}
-    return {j["name"]: [n for n in groups.get(j["requires_open"], []) if n in movable]
-            for j in meta if j.get("requires_open") and j["name"] in movable}
+    return {name: [n for n in gates if n in movable]
+            for name, gates in gate_joints(obj.metadata).items() if name in movable}
 
 
 def _open_gates(obj: _ObjectFiles, qpos: dict[str, float]) -> dict[str, float]:

@@ -84,7 +84,7 @@ import numpy as np
 
 from infmob_usd.joints import one_mode
 
-from .files import mode_excludes
+from .files import gate_joints, mode_excludes
 from .result import CheckResult
 
 __all__ = [
@@ -904,7 +904,8 @@ def _drive_phases(ctx: SimContext, batch: list[int], plans: dict, start_q: np.nd
 def _reach_plans(meta: dict) -> list[_Plan]:
     """The two start states of ``reach`` from ``metadata.json``: rest, and all open.
 
-    A joint that ``requires_open`` a part moves with that part's joints at their upper limits.
+    A joint that ``requires_open`` a part moves with that part's joints at their upper limits, and with
+    those of the parts that part requires open in turn (:func:`.files.gate_joints`).
     From the all-open state, a joint moves with the other DoFs of its own part at rest (a
     compound joint's modes one at a time, as a tilt-and-turn sash works; the joints it ``excludes``) and, if it
     ``requires_closed`` parts, with their joints at rest, and so do the joints that
@@ -913,7 +914,8 @@ def _reach_plans(meta: dict) -> list[_Plan]:
     groups: dict[str, list[str]] = {}
     for j in _movable(meta):
         groups.setdefault(j["group"], []).append(j["name"])
-    opened = {j["name"]: groups.get(j.get("requires_open"), []) for j in _movable(meta)}
+    gates = gate_joints(meta)
+    opened = {j["name"]: gates.get(j["name"], []) for j in _movable(meta)}
     closed = {}
     for j in _movable(meta):
         names = {n for g in [j["group"], *(j.get("requires_closed") or [])] for n in groups.get(g, [])

@@ -12,6 +12,7 @@ from ..errors import ModelError
 from ..hulls import hull_arrays
 from ..joints import Dof
 from ..rotation import axis_angle
+from .gates import carrying_gates, open_motion
 
 
 def rest_on_ground(bp: Blueprint) -> Blueprint:
@@ -83,8 +84,10 @@ def limit_to_ground(links, joints) -> list:
     subtree dips below ``-GROUND_TOL``, that limit is moved towards rest by
     bisection until it clears. A continuous joint that goes below the ground
     cannot be limited: that raises :class:`~infmob_usd.errors.ModelError` (the
-    category must raise its base). The joints given are not changed; joints whose
-    limits stand are returned as they are.
+    category must raise its base). A joint that ``requires_open`` parts carrying it (a flap
+    on an oven door) is checked with them fully open, as the validators move it
+    (:mod:`.gates`), and with them at rest, where nothing holds it in a simulator. The
+    joints given are not changed; joints whose limits stand are returned as they are.
     """
     # only links that some joint moves are ever tested (the root's hull, often the largest, is not)
     moved_by = {j.name: descendants(joints, j.child) for j in joints if j.movable}
@@ -94,9 +97,11 @@ def limit_to_ground(links, joints) -> list:
     for f in joints:
         if f.movable and getattr(f, "mimic", None):
             followers.setdefault(f.mimic[0], []).append(f)
+    carried, current = carrying_gates(joints), {}
     out = []
     for j in joints:
         out.append(j)
+        current[j.name] = j
         if not j.movable:
             continue
         moved = moved_by[j.name]
@@ -104,16 +109,12 @@ def limit_to_ground(links, joints) -> list:
         pts = [extreme[n] + origin[n] for n in moved if n in extreme]
         if not pts:
             continue
-        rel = np.vstack(pts) - origin[j.child]
-        pivot_z, axis = float(origin[j.child][2]), np.asarray(j.axis, float)
-
-        def lowest(value: float, j=j, rel=rel, pivot_z=pivot_z, axis=axis) -> float:
-            if j.type == "prismatic":
-                return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
-            return pivot_z + float((rel @ axis_angle(axis, value)[2]).min())
-
+        # a joint that requires open a part carrying it (a flap on an oven door) moves with that part open
+        gates = carried.get(j.name)
+        view = open_motion([current[g.name] for g in gates]) if gates else None
+        lowest = _lowest(j, np.vstack(pts) - origin[j.child], origin[j.child], view)
         if j.type != "continuous" and j.name in followers:
-            lowest = _coupled_lowest(j, followers[j.name], moved_by, extreme, origin)
+            lowest = _coupled_lowest(j, followers[j.name], moved_by, extreme, origin, view)
 
         if j.type == "continuous":
             for a in (0.5 * np.pi, np.pi, -0.5 * np.pi):
@@ -137,8 +138,32 @@ def limit_to_ground(links, joints) -> list:
                     bad = mid
             if abs(good) < 1e-6:
                 raise ModelError(f"joint {j.name} cannot move {j.child!r} at all without hitting the ground")
-            out[-1] = replace(out[-1], **{end: good})
+            out[-1] = current[j.name] = replace(out[-1], **{end: good})
     return out
+
+
+def _lowest(j, rel: np.ndarray, pivot: np.ndarray, view=None):
+    """The lowest world z of points ``rel`` (about ``j``'s child origin ``pivot``, at rest) with ``j`` at a
+    value; ``view``: ``(R, t)``, the motion of the open gates that carry ``j`` (:func:`.gates.open_motion`),
+    whose state is judged too (the lower of the two)."""
+    pivot_z, axis = float(pivot[2]), np.asarray(j.axis, float)
+
+    def lowest(value: float) -> float:
+        if j.type == "prismatic":
+            return pivot_z + float(rel[:, 2].min()) + value * float(axis[2])
+        return pivot_z + float((rel @ axis_angle(axis, value)[2]).min())
+    if view is None:
+        return lowest
+    rot, shift = view
+
+    def lowest_either(value: float) -> float:
+        # nothing in a simulator holds it while its gates are shut: clear of the ground with them shut too
+        if j.type == "prismatic":
+            p = rel + pivot + value * axis / np.linalg.norm(axis)
+        else:
+            p = rel @ axis_angle(axis, value).T + pivot
+        return min(lowest(value), float((p @ rot[2]).min()) + float(shift[2]))
+    return lowest_either
 
 
 def _moved(j, value: float, pts: np.ndarray, origin: dict) -> np.ndarray:
@@ -150,10 +175,10 @@ def _moved(j, value: float, pts: np.ndarray, origin: dict) -> np.ndarray:
     return (pts - pivot) @ axis_angle(axis, value).T + pivot
 
 
-def _coupled_lowest(j, followers: list, moved_by: dict, extreme: dict, origin: dict):
+def _coupled_lowest(j, followers: list, moved_by: dict, extreme: dict, origin: dict, view=None):
     """The lowest point as leader ``j`` moves to a value with its coupled ``followers`` (``q = ratio * value +
     offset``) moving with it, a follower below ``j`` carried along (a dual-axis hinge's second axis): the
-    states a coupled pair takes together, not each joint's alone."""
+    states a coupled pair takes together, not each joint's alone. ``view``: as :func:`_lowest`'s."""
     carried = set().union(*(moved_by[f.name] for f in followers if f.child in moved_by[j.name]))
     own = [extreme[n] + origin[n] for n in moved_by[j.name] if n in extreme and n not in carried]
     own = np.vstack(own) if own else np.zeros((0, 3))
@@ -161,11 +186,13 @@ def _coupled_lowest(j, followers: list, moved_by: dict, extreme: dict, origin: d
                             or [np.zeros((0, 3))])) for f in followers]
 
     def lowest(value: float) -> float:
-        z = [_moved(j, value, own, origin)[:, 2]]
+        placed = [_moved(j, value, own, origin)]
         for f, pts in theirs:
             p = _moved(f, f.mimic[1] * value + f.mimic[2], pts, origin)
-            z.append((_moved(j, value, p, origin) if f.child in moved_by[j.name] else p)[:, 2])
-        z = np.concatenate(z)
+            placed.append(_moved(j, value, p, origin) if f.child in moved_by[j.name] else p)
+        z = np.concatenate([p[:, 2] for p in placed])
+        if view is not None:  # and the same points with the gates that carry them open
+            z = np.concatenate([z, *(p @ view[0][2] + view[1][2] for p in placed)])
         return float(z.min()) if len(z) else np.inf
 
     return lowest

@@ -9,6 +9,7 @@ import numpy as np
 
 from ..blueprint import descendants
 from ..springs import SPRINGS
+from .gates import carrying_gates, open_motion
 
 SPRUNG_LIGHT = 0.02
 """kg: a sprung part up to this mass rests on its spring, not on a counterweight (a few-gram button or key)."""
@@ -42,6 +43,14 @@ def gravity_torque(links, joints, joint) -> tuple[float, float, np.ndarray]:
     return torque, mass, com
 
 
+def _turned_torque(joint, mass: float, com: np.ndarray, rot: np.ndarray) -> float:
+    """The gravity torque about ``joint``'s axis (as :func:`gravity_torque`, from its carried ``mass`` and
+    centre ``com`` at rest) once the gates that carry it have turned it by ``rot``: gravity seen in the rest
+    frame is ``rot.T @ g``."""
+    return float(np.cross(com - np.asarray(joint.origin, float), mass * (rot.T @ GRAVITY))
+                 @ np.asarray(joint.axis, float))
+
+
 def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, float] | None = None):
     """Make every passive revolute joint neutral under gravity or pressed onto its rest stop.
 
@@ -57,6 +66,9 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
       side that lifts the load: limits ``(0, upper)``.
     * gravity pushes toward positive q with a two-sided range: the axis is flipped and the
       limits become ``(0, -lower)`` (pressed onto the stop that was the lower side).
+    * a joint that ``requires_open`` parts that carry it (a flap on an oven door, :mod:`.gates`) is judged
+      with them at rest and fully open: flipped or cut to one side only where gravity pulls the same way in
+      both, otherwise given a heel (a centre of mass on the axis is neutral whichever way it turns);
     * a spring-returned part of at most :data:`SPRUNG_LIGHT` (role in :data:`~infmob_usd.springs.SPRINGS`: a
       mouse button on its rear hinge) whose load pulls it off its rest stop is held there by its return spring,
       which the core sizes to hold :data:`~infmob_usd.springs.GRAVITY_HOLD` times that pull; unchanged (a heavier
@@ -71,54 +83,62 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
 
     Returns new ``(links, joints)`` lists; links and joints not changed are the same objects.
     """
-    from ..mass import inertial
-    from ..primitives import box_between
-
     links, joints = list(links), list(joints)
     index = {link.name: i for i, link in enumerate(links)}
+    carried = {name: [g.name for g in gates] for name, gates in carrying_gates(joints).items()}
     for k, j in enumerate(joints):
         if j.kind != "revolute" or j.type != "revolute":
             continue
         torque, mass, com = gravity_torque(links, joints, j)
-        if abs(torque) <= BALANCED * abs(GRAVITY[2]) * mass:
+        torques = [torque]
+        if j.name in carried:  # it also rests with the gates that carry it open (a flap on an open oven door)
+            rot = open_motion([next(g for g in joints if g.name == n) for n in carried[j.name]])[0]
+            torques.append(_turned_torque(j, mass, com, rot))
+        pulls = {1 if t > 0 else -1 for t in torques if abs(t) > BALANCED * abs(GRAVITY[2]) * mass}
+        if not pulls:
             continue
-        if torque < 0 and j.lower == 0:
+        if pulls == {-1} and j.lower == 0:
             continue
-        if torque < 0 and j.upper > 0:
+        if pulls == {-1} and j.upper > 0:
             joints[k] = replace(j, lower=0.0)
             continue
-        if torque > 0 and j.lower < 0:
+        if pulls == {1} and j.lower < 0:
             joints[k] = replace(j, axis=-np.asarray(j.axis, float), lower=0.0, upper=-j.lower)
             continue
         if j.role in SPRINGS and links[index[j.child]].mass <= SPRUNG_LIGHT:  # held by its return spring
             continue
         # a counterweight heel on the child: its moment about the axis cancels the carried one
         child = links[index[j.child]]
-        if not child.pieces:
-            continue
-        axis, pivot = np.asarray(j.axis, float), np.asarray(j.origin, float)
-        arm = com - pivot
-        arm = arm - (arm @ axis) * axis  # the carried centre off the axis, perpendicular to it
-        r = float(np.linalg.norm(arm))
-        u = arm / r
-        w = np.cross(axis, u)
-        heaviest = max(child.pieces, key=lambda p: densities[p.material] * p.volume())
-        rho = densities[heaviest.material]
-        local = [v for p in child.pieces for v, _ in p.hulls()] or [p.vertices for p in child.pieces]
-        along = np.vstack(local) @ axis
-        side = float(np.clip(0.6 * np.ptp(along), *HEEL_SECTION))
-        length = math.sqrt(2.0 * mass * r / (rho * side * side))
-        # the bar in a frame (u, w, axis) at the pivot, at the carried centre's axial position
-        centre = pivot + (float((com - pivot) @ axis)) * axis - 0.5 * length * u
-        frame = np.eye(4)
-        frame[:3, :3] = np.column_stack([u, w, axis])
-        frame[:3, 3] = centre - np.asarray(child.origin, float)  # link-local
-        heel = box_between([-length / 2, -side / 2, -side / 2], [length / 2, side / 2, side / 2],
-                           heaviest.material, name="counterweight").transformed(frame).replace(wall=0.0)
-        pieces = child.pieces + [heel]
-        walls = walls or {}
-        m, c, inertia = inertial((p, densities[p.material], walls.get(p.material, 0.0)) for p in pieces)
-        links[index[j.child]] = replace(child, pieces=pieces, mass=m, com=c, inertia=inertia)
+        if child.pieces:
+            links[index[j.child]] = _with_heel(child, j, mass, com, densities, walls or {})
     return links, joints
 
 
+def _with_heel(child, j, mass: float, com: np.ndarray, densities: dict[str, float], walls: dict[str, float]):
+    """``child`` with a counterweight heel that brings the centre of mass ``com`` of the ``mass`` that
+    ``j`` carries onto its axis (:func:`rest_on_stops`), re-massed."""
+    from ..mass import inertial
+    from ..primitives import box_between
+
+    axis, pivot = np.asarray(j.axis, float), np.asarray(j.origin, float)
+    arm = com - pivot
+    arm = arm - (arm @ axis) * axis  # the carried centre off the axis, perpendicular to it
+    r = float(np.linalg.norm(arm))
+    u = arm / r
+    w = np.cross(axis, u)
+    heaviest = max(child.pieces, key=lambda p: densities[p.material] * p.volume())
+    rho = densities[heaviest.material]
+    local = [v for p in child.pieces for v, _ in p.hulls()] or [p.vertices for p in child.pieces]
+    along = np.vstack(local) @ axis
+    side = float(np.clip(0.6 * np.ptp(along), *HEEL_SECTION))
+    length = math.sqrt(2.0 * mass * r / (rho * side * side))
+    # the bar in a frame (u, w, axis) at the pivot, at the carried centre's axial position
+    centre = pivot + (float((com - pivot) @ axis)) * axis - 0.5 * length * u
+    frame = np.eye(4)
+    frame[:3, :3] = np.column_stack([u, w, axis])
+    frame[:3, 3] = centre - np.asarray(child.origin, float)  # link-local
+    heel = box_between([-length / 2, -side / 2, -side / 2], [length / 2, side / 2, side / 2],
+                       heaviest.material, name="counterweight").transformed(frame).replace(wall=0.0)
+    pieces = child.pieces + [heel]
+    m, c, inertia = inertial((p, densities[p.material], walls.get(p.material, 0.0)) for p in pieces)
+    return replace(child, pieces=pieces, mass=m, com=c, inertia=inertia)

@@ -472,10 +472,18 @@
         }
       }
       this.byName = Object.fromEntries(this.joints.map((j) => [j.name, j]));
-      // requires_open: joint -> the joints of the group that must be fully open first
-      const groupJoints = {};
+      // requires_open: joint -> the joints that must be fully open first: those of the group it names, then
+      // those of the group that group's joints name, and so on (tines on a rack behind a door); a joint's
+      // stage is the length of that chain of groups (the door opens, then the rack, then the tines)
+      const groupJoints = {}, gateOf = {};
       for (const j of this.joints) (groupJoints[j.group] = groupJoints[j.group] || []).push(j.name);
-      for (const j of this.joints) j.gate = j.requires_open ? (groupJoints[j.requires_open] || []) : [];
+      for (const j of this.joints) if (j.requires_open && !(j.group in gateOf)) gateOf[j.group] = j.requires_open;
+      for (const j of this.joints) {
+        const chain = [];
+        for (let g = j.requires_open; g && !chain.includes(g); g = gateOf[g]) chain.push(g);
+        j.gate = chain.flatMap((g) => groupJoints[g] || []);
+        j.stage = chain.length;
+      }
       this.gates = new Set(this.joints.flatMap((j) => j.gate));
       this.links = links;
       this.root = new THREE.Group();
@@ -561,21 +569,27 @@
       requestAnimationFrame(() => { this.pending = false; this.step(); this.renderer.render(this.scene, this.camera); });
     }
 
+    stages() {
+      // one phase per stage: the joints nothing requires open last, a door before the rack it gates
+      const top = Math.max(0, ...this.joints.map((j) => j.stage));
+      return Array.from({ length: top + 2 }, () => ({}));
+    }
+
     openAll(ms) {
-      // doors first (the joints others require open), then everything else
+      // doors first (the joints others require open, the outermost first), then everything else
       // of the modes that exclude each other, the first opens (a tilt-and-turn sash turns)
-      const first = {}, then = {}, shut = new Set();
+      const phases = this.stages(), shut = new Set();
       for (const j of this.joints) {
-        (this.gates.has(j.name) ? first : then)[j.name] = shut.has(j.name) ? restOf(j) : openOf(j);
+        phases[this.gates.has(j.name) ? j.stage : phases.length - 1][j.name] = shut.has(j.name) ? restOf(j) : openOf(j);
         if (!shut.has(j.name)) for (const n of j.excludes || []) shut.add(n);
       }
-      return this.animateTo([first, then], ms);
+      return this.animateTo(phases, ms);
     }
 
     reset(ms) {
-      const first = {}, then = {};
-      for (const j of this.joints) (this.gates.has(j.name) ? then : first)[j.name] = restOf(j);
-      return this.animateTo([first, then], ms);
+      const phases = this.stages();
+      for (const j of this.joints) phases[this.gates.has(j.name) ? j.stage : phases.length - 1][j.name] = restOf(j);
+      return this.animateTo(phases.reverse(), ms);
     }
 
     screenBox(linkName) {
