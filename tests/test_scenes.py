@@ -216,3 +216,74 @@ def test_the_recipes_of_docs_scenes_run(tmp_path):
     for code in blocks:
         code = code.replace("DIR/kitchen_000003", str(folder))
         exec(compile(code, "docs/scenes.md", "exec"), {})
+
+
+def _gap(a, b) -> float:
+    """Horizontal distance between two placed objects' rest boxes (0 where their footprints overlap)."""
+    d = np.maximum(np.maximum(a.lo[:2] - b.hi[:2], b.lo[:2] - a.hi[:2]), 0.0)
+    return float(np.hypot(*d))
+
+
+def test_nothing_stands_in_the_walkway_round_a_dining_table():
+    # NKBA: 36 in (0.91 m) from the table's edge to any obstruction behind a seated diner (a floor lamp was 0.34 m
+    # from the table's side in seed 0)
+    s = scene("dining_room", 0, texture_size=16)
+    table = next(p for p in s.placed if p.made.category == "dining_table")
+    near = [(p.id, round(_gap(p, table), 2)) for p in s.placed if p is not table and p.on == "floor"
+            and p.lo[2] < 1.2 and _gap(p, table) < 0.91 - 1e-3]
+    assert not near, near
+
+
+def test_a_clearance_keeps_other_furniture_out_of_its_floor_space():
+    from infmob_usd.scenes.layout import CLEARANCES, Made, Placed, SceneLayout
+    from infmob_usd.scenes.room import Room, pose_matrix
+
+    def made(category, size):
+        lo, hi = np.array([-size[0] / 2, -size[1] / 2, 0.0]), np.array([size[0] / 2, size[1] / 2, size[2]])
+        return Made(category, category, 0, {}, None, lo, hi, [], [], (np.zeros((0, 3)), np.zeros((0, 3))),
+                    CLEARANCES.get(category))
+
+    layout = SceneLayout("test", {}, np.random.default_rng(0), np.random.default_rng(0), 16, None)
+    layout.room = Room(4.0, 4.0, 2.5, 0.12)
+    toilet = layout.keep(Placed("toilet_0", made("toilet", (0.7, 0.4, 0.8)), pose_matrix((0.4, 2.0, 0.0), 0.0),
+                                True, "floor"))
+    assert toilet is not None
+    bin_ = made("trash_can", (0.3, 0.3, 0.4))
+    # 0.5 m in front of the toilet (NKBA: 0.76 m clear), beside it within 0.38 m of its centreline: refused
+    assert layout.fits(Placed("a", bin_, pose_matrix((0.75 + 0.5, 2.0, 0.0), 0.0), True, "floor")) is False
+    assert layout.fits(Placed("b", bin_, pose_matrix((0.4, 2.0 + 0.2 + 0.15 + 0.1, 0.0), 0.0), True, "floor")) is False
+    # clear of both: kept
+    assert layout.fits(Placed("c", bin_, pose_matrix((0.4, 2.0 + 0.38 + 0.16, 0.0), 0.0), True, "floor")) is True
+
+
+def test_an_item_set_down_opens_clear_of_its_host():
+    # a plate rack set on a shelf inside a base cabinet: its drip tray slid into the closed door (scene_reach
+    # of kitchen seed 2, single wall: stopped at 88 %)
+    from infmob_usd.scenes.layout import _clear_of_host
+
+    s = scene("kitchen", 2, texture_size=16, layout="single_wall")
+    by_id = {p.id: p for p in s.placed}
+    blocked = []
+    for item in s.placed:
+        host = by_id.get(item.on.split(":")[0])
+        if host is None:
+            continue
+        local = np.linalg.inv(host.pose) @ item.pose
+        for group, lo, hi in item.made.swept:
+            if not _clear_of_host(host.made, *moved_box(lo, hi, local)):
+                blocked.append((item.id, group))
+    assert not blocked, blocked
+
+
+def test_a_swivel_seat_sweeps_its_turn_when_placed():
+    # a counter stool's swivel seat (continuous) was left out of the swept boxes: its arms hit the island's back
+    # at 31 degrees in scene_reach (kitchen seed 2, island and peninsula)
+    from infmob_usd.scenes.layout import _measure
+
+    chair = infmob_usd.generate("bar_chair", 0, texture_size=16)
+    seat = next(j for j in chair.movable_joints if j.type == "continuous")
+    lo, hi, swept = _measure(chair)
+    turned = [b for g, *b in swept if g == seat.group]
+    assert turned, [g for g, *_ in swept]
+    # a seat wider one way than the other reaches further out turned than at rest
+    assert np.all(turned[0][0][:2] <= lo[:2] + 1e-9) and np.all(turned[0][1][:2] >= hi[:2] - 1e-9)

@@ -1,11 +1,12 @@
 """Bathroom: a toilet, a vanity unit with its basin and tap, a wall cabinet over it, a linen tower, a door and a window.
 
 The vanity is a kitchen_cabinet sink base at vanity height (0.85-0.9 m, "comfort height"; BS 6465-2 / NKBA bath
-guidelines give 0.76-0.86 m); the toilet keeps its clear floor space in front (NKBA bath guideline: 30 x 48 in,
-0.76 x 1.22 m). The wall cabinet hangs 0.45-0.55 m over the vanity top (a mirror cabinet's underside at about
-eye level less a face: retail fitting guides give 0.45-0.6 m); the linen tower is a tall single-column cabinet
+guidelines give 0.76-0.86 m); the toilet keeps its clear floor space (``scenes.layout.CLEARANCES``: NKBA bath
+guidelines, 0.76 m in front, 0.38 m from its centreline to a side obstruction). The wall cabinet hangs
+0.45-0.55 m over the vanity top (a mirror cabinet's underside at about eye level less a face: retail fitting
+guides give 0.45-0.6 m); the linen tower is a tall single-column cabinet
 (0.4-0.5 m wide, as bathroom tall units are). Vanity, wall cabinet and tower share one seed: one set of fronts.
-Toiletries stand on the vanity top.
+Toiletries (bottles, jars, a soap pump bottle) stand on the vanity top.
 """
 
 from __future__ import annotations
@@ -21,7 +22,6 @@ from ._common import CEILING, WALL, door_in, window_in
 
 VANITY_HEIGHT = (0.85, 0.9)
 VANITY_WIDTH = 1.6  # m: the widest vanity unit a bathroom of 2.2-3.2 m takes (retail double vanities: 1.2-1.5 m)
-TOILET_CLEAR = 0.76  # m free in front of a toilet (NKBA bath guideline 30 in by 48 in)
 WALL_CABINET_GAP = (0.45, 0.55)  # m: vanity top to the wall cabinet's underside (mirror-cabinet fitting guides)
 WALL_RUN_MIN = 1.2  # m: the narrowest wall run kitchen_cabinet makes
 TOWER_WIDTH = (0.4, 0.5)  # m: bathroom tall units (IKEA GODMORGON high cabinet 40 cm; retail towers 40-50 cm)
@@ -97,7 +97,9 @@ class BathroomLayout(RoomLayout):
 
     def toiletry(self, node):
         if self.hosts:
-            self.scatter(self.make(str(self.rng.choice(["bottle", "jar"]))), self.hosts, self.rng)
+            what = str(self.rng.choice(["bottle", "jar", "dispenser"]))
+            made = self.make(what, design="pump_bottle") if what == "dispenser" else self.make(what)  # a soap pump
+            self.scatter(made, self.hosts, self.rng)
 
 
 KIND = SceneKind("bathroom", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, BathroomLayout)

@@ -4,7 +4,8 @@ Six layouts (NKBA and scene_synthesizer's set): a single wall, a galley (two fac
 an island and a run with a peninsula (counter stools at the island's and the peninsula's back). Every cabinet
 of one kitchen is the same kitchen_cabinet seed (so the same fronts, worktop and handles) with its own design
 and width; the range's cooktop and the worktops are at one height; the dishwasher and a wine cooler fit under
-the worktop. Objects of categories that exist join in (a refrigerator once it is a category).
+the worktop. Objects of categories that exist join in: a refrigerator, and an electric kettle, a toaster and a
+coffee machine on the worktop.
 """
 
 from __future__ import annotations
@@ -38,13 +39,14 @@ PARAMS = (
 GRAMMAR = Grammar("kitchen", {
     "kitchen": Node(required=("runs", "door"), optional={"window": 0.7, "wall_units": 0.85, "microwave": 0.8,
                                                           "plate_rack": 0.4, "wine_cooler": 0.35,
-                                                          "refrigerator": 0.85},
+                                                          "refrigerator": 0.85, "kettle": 0.5, "toaster": 0.4,
+                                                          "coffee_machine": 0.3},
                     repeat={"bottle": (0, 4), "jar": (0, 3), "cookware": (1, 2)}),
     "runs": Node(one_of={"single_wall": 0.2, "galley": 0.15, "l_shape": 0.2, "u_shape": 0.15, "island": 0.15,
                          "peninsula": 0.15}, choice="layout"),
     **{k: Node() for k in ("single_wall", "galley", "l_shape", "u_shape", "island", "peninsula", "door", "window",
                            "wall_units", "microwave", "plate_rack", "wine_cooler", "refrigerator", "bottle", "jar",
-                           "cookware")},
+                           "cookware", "kettle", "toaster", "coffee_machine")},
 })
 
 
@@ -63,7 +65,7 @@ class KitchenLayout(RoomLayout):
         for kind in ("wine_cooler", "refrigerator"):
             if node.one(kind) is not None:
                 self._built.append(node.one(kind).path)
-        for kind in ("wall_units", "door", "window", "microwave", "plate_rack"):
+        for kind in ("wall_units", "door", "window", "microwave", "plate_rack", "coffee_machine", "toaster", "kettle"):
             if node.one(kind) is not None:
                 self.grow(node.one(kind))
         for kind in ("cookware", "bottle", "jar"):
@@ -185,8 +187,10 @@ class KitchenLayout(RoomLayout):
         reach = (counter.hi - counter.lo)[1 if along[0] else 0] / 2 + stool.size[0] / 2 + 0.05
         for k in range(n):
             off = (k + 0.5 - n / 2) * 0.6
-            xy = centre[:2] + back[:2] * reach + [along[0] * off, along[1] * off]
-            self.at(stool, xy, facing, )
+            for extra in (0.0, 0.05, 0.1, 0.15, 0.2):  # as close as its swivelling seat and back let it
+                xy = centre[:2] + back[:2] * (reach + extra) + [along[0] * off, along[1] * off]
+                if self.at(stool, xy, facing) is not None:
+                    break
 
     # -- everything else -----------------------------------------------------------------------------------------
     def wall_units(self, node):
@@ -214,17 +218,28 @@ class KitchenLayout(RoomLayout):
             if self.embed(window, self.room.wall(str(wall)), z=z, rng=self.rng) is not None:
                 return
 
-    def _on_worktop(self, made, fixed: bool = False):
+    def _on_worktop(self, made, fixed: bool = False, open_top: bool = False):
+        """``made`` on a worktop (the highest region first), or with ``open_top`` only on one with nothing of its
+        cabinet above it (an appliance or a drainer stands on the worktop, not on a shelf inside a unit)."""
         return self.scatter(made, [w for w in self.worktops if w.made.category == "kitchen_cabinet"], self.rng,
-                            prefer=lambda g: -g.z, fixed=fixed)
+                            prefer=lambda g: -g.z, fixed=fixed, where=(lambda g: g.clear is None) if open_top else None)
 
     def microwave(self, node):
-        self._on_worktop(self.make("microwave"))
+        self._on_worktop(self.make("microwave"), open_top=True)
 
     def plate_rack(self, node):
         # fixed where it stands: its plates lean in their slots held by joint friction, which PhysX's
         # coefficient model gives only a fixed base (on a free rack they tip 1.4 degrees at rest)
-        self._on_worktop(self.make("plate_rack"), fixed=True)
+        self._on_worktop(self.make("plate_rack"), fixed=True, open_top=True)
+
+    def kettle(self, node):
+        self._on_worktop(self.make("kettle", design="electric"), open_top=True)  # a stovetop one: on the range
+
+    def toaster(self, node):
+        self._on_worktop(self.make("toaster"), open_top=True)
+
+    def coffee_machine(self, node):
+        self._on_worktop(self.make("coffee_machine"), open_top=True)
 
     def bottle(self, node):
         self._on_worktop(self.make("bottle"))

@@ -1,7 +1,8 @@
-"""Office: a desk with an office chair, shelving along a wall, a desk lamp, a screen, a door and a window.
+"""Office: a desk with an office chair, shelving along a wall, a desk lamp, a monitor, a door and a window.
 
 The desk is a dining_table (a four-legged table 0.7-0.8 m high: office desks are 0.72-0.76 m, BIFMA X5.5);
-the shelving is a storage_rack of the shelving design; the screen stands on the desk or on the wall.
+the shelving is a storage_rack of the shelving design; the monitor stands on the desk on its stand, facing the
+chair, and a mouse may lie beside it.
 """
 
 from __future__ import annotations
@@ -46,7 +47,8 @@ class OfficeLayout(RoomLayout):
         # a writing desk: a fixed top, drawers in one long side (+Y), which faces into the room
         desk = self.make("dining_table", height=round(float(self.rng.uniform(0.72, 0.76)), 3), top_style="fixed",
                          top_shape="rectangular", drawer_sides="one", has_casters=False,
-                         length=round(float(self.rng.uniform(1.4, 1.8)), 3))
+                         length=round(float(self.rng.uniform(1.4, 1.8)), 3),
+                         clearance=None)  # a desk: its chair stands at its front, not a diner's walkway
         turn = -math.pi / 2  # its -Y long side to the wall, its drawers (+Y) facing the room
         self.desk_at = self.on_wall(desk, self.rng.permutation(["north", "east", "west"]), self.rng, turn=turn)
 
@@ -76,8 +78,8 @@ class OfficeLayout(RoomLayout):
 
     def screen(self, node):
         if self.desk_at is not None:
-            screen = self.make("tv", width=round(float(self.rng.uniform(0.6, 0.8)), 3),
-                               stand_style=str(self.rng.choice(["single_post", "two_legs"])))  # not a wall arm
+            # a desk monitor on its stand (an arm clamps under the desk top, which a set-down item cannot)
+            screen = self.make("monitor", stand_style=str(self.rng.choice(["fixed_stand", "adjustable_stand"])))
             self.set_on(screen, self.desk_at, self.rng,
                         prefer=lambda g: -g.area, yaw=self._facing())  # the screen faces the one sitting there
 
@@ -101,7 +103,7 @@ class OfficeLayout(RoomLayout):
 
     def desk_item(self, node):
         if self.desk_at is not None:
-            self.set_on(self.make(str(self.rng.choice(["bottle", "jar", "vase"]))), self.desk_at, self.rng)
+            self.set_on(self.make(str(self.rng.choice(["mouse", "bottle", "jar", "vase"]))), self.desk_at, self.rng)
 
     def shelf_item(self, node):
         if self.shelves_at is not None:

@@ -29,6 +29,42 @@ SWEEP_STEP = math.radians(15)  # rad between the poses a turning part's swept bo
 SET_DOWN = 0.0001  # m: an item is set this far above its support (a drop from higher makes its loose parts rattle)
 
 
+@dataclass(frozen=True)
+class Clearance:
+    """Floor space an object keeps free of other furniture, beyond its rest box in its own frame (front +X):
+    ``front``, ``back`` and ``sides`` (each side) in metres, each side at least ``from_centre`` from its
+    centreline, up to ``height`` above the floor (what hangs higher, a wall unit, does not block it).
+    ``source``: where the figures come from."""
+
+    front: float = 0.0
+    back: float = 0.0
+    sides: float = 0.0
+    from_centre: float = 0.0
+    height: float = 1.2
+    source: str = ""
+
+    def box(self, lo, hi) -> tuple[np.ndarray, np.ndarray]:
+        """The clear box around the rest box ``lo``..``hi`` (object frame), floor to ``height``."""
+        mid = (lo[1] + hi[1]) / 2
+        y0 = min(lo[1] - self.sides, mid - self.from_centre)
+        y1 = max(hi[1] + self.sides, mid + self.from_centre)
+        return (np.array([lo[0] - self.back, y0, lo[2]]),
+                np.array([hi[0] + self.front, y1, lo[2] + self.height]))
+
+
+# What users and fitters keep clear, as data. A kind passes one of these (or its own) when it places the object.
+CLEARANCES = {
+    # NKBA Kitchen Planning Guidelines (2021), 19: 36 in (0.91 m) from a table's edge to any wall or obstruction
+    # behind a seated diner where no one walks behind
+    "dining_table": Clearance(front=0.91, back=0.91, sides=0.91,
+                              source="NKBA kitchen guideline 19: 36 in behind a seated diner"),
+    # NKBA Bath Planning Guidelines (2021), 12-13: 15 in (0.38 m) from a toilet's centreline to a side obstruction,
+    # 30 in (0.76 m) clear floor space in front of it
+    "toilet": Clearance(front=0.76, from_centre=0.38,
+                        source="NKBA bath guidelines 12-13: 15 in to the side, 30 in in front"),
+}
+
+
 @dataclass
 class Made:
     """One distinct generated object and what placement needs of it (object frame at rest)."""
@@ -43,6 +79,7 @@ class Made:
     swept: list[tuple[str, np.ndarray, np.ndarray]]  # (joint group, lo, hi): the whole object, that group open
     regions: list[Region]
     hulls: tuple[np.ndarray, np.ndarray]  # each collision hull's box, (n, 3) lo and hi: what set-down items clear
+    clearance: Clearance | None = None  # the floor space it keeps free of other furniture
 
     @property
     def size(self) -> np.ndarray:
@@ -63,6 +100,11 @@ class Placed:
     def __post_init__(self) -> None:
         self.lo, self.hi = moved_box(self.made.lo, self.made.hi, self.pose)
 
+    def clear_box(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """Room-frame box of the floor space it keeps clear (its :class:`Clearance`), ``None`` if none."""
+        c = self.made.clearance
+        return None if c is None else moved_box(*c.box(self.made.lo, self.made.hi), self.pose)
+
     def swept_boxes(self) -> list[tuple[str, np.ndarray, np.ndarray]]:
         return [(g, *moved_box(lo, hi, self.pose)) for g, lo, hi in self.made.swept]
 
@@ -77,13 +119,15 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
                          np.array([p.bounds[1] for p in link.pieces]).max(0)) for link in obj.links if link.pieces}
     groups: dict[str, list] = {}
     for j in obj.movable_joints:
-        if math.isfinite(j.upper) and j.type != "continuous":
+        # a continuous joint (a stool's swivel seat) sweeps its whole turn: the scene's reach check turns it
+        # a quarter each way, and a user turns it all round
+        if math.isfinite(j.upper):
             groups.setdefault(j.group, []).append(j)
     swept = []
     for group, joints in sorted(groups.items()):
         # a turning part reaches furthest part-way (a flap door swinging up passes over its hinge): sample the
         # range every SWEEP_STEP; a slide is furthest at its end
-        turns = any(j.type == "revolute" for j in joints)
+        turns = any(j.type in ("revolute", "continuous") for j in joints)
         n = max(2, int(math.ceil(max(j.upper - j.lower for j in joints) / SWEEP_STEP)) + 1) if turns else 2
         pts = []
         for f in np.linspace(0.0, 1.0, n)[1:]:
@@ -145,10 +189,13 @@ class SceneLayout:
         """A fresh object seed from the scene's objects stream (what :meth:`make` uses by default)."""
         return int(self.objects_rng.integers(0, 10**9))
 
-    def make(self, category: str, seed: int | None = None, **overrides: Any) -> Made:
+    def make(self, category: str, seed: int | None = None, clearance: Clearance | None | str = "category",
+             **overrides: Any) -> Made:
         """Generate (once) the object ``category`` / ``seed`` / ``overrides`` and measure it. Objects that
         must match (the cabinets of one kitchen) share a seed: the seed draws materials, so their
-        fronts and worktops are the same; their overrides make them different units."""
+        fronts and worktops are the same; their overrides make them different units. ``clearance``: the
+        floor space it keeps clear (default: its category's in :data:`CLEARANCES`; ``None``: none, as a
+        dining table used as a desk, whose chair stands at its front)."""
         seed = self.seed() if seed is None else int(seed)
         key = (category, seed, tuple(sorted(overrides.items())))
         if key not in self._made:
@@ -159,8 +206,9 @@ class SceneLayout:
                 name = f"{obj.name}_v{n}"
             self._keys.add(name)
             lo, hi, swept = _measure(obj)
+            clear = CLEARANCES.get(category) if clearance == "category" else clearance
             self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, support_regions(obj),
-                                   hull_boxes(obj))
+                                   hull_boxes(obj), clear)
         return self._made[key]
 
     # -- placing ----------------------------------------------------------------------------------------------
@@ -181,7 +229,21 @@ class SceneLayout:
                 continue
             if boxes_overlap(cand.lo, cand.hi, other.lo, other.hi):
                 return False
-        return self._swing_clear(cand, ignore)
+        return self._clearances_kept(cand, ignore) and self._swing_clear(cand, ignore)
+
+    def _clearances_kept(self, cand: Placed, ignore: tuple[str, ...] = ()) -> bool:
+        """Whether ``cand`` stands outside every placed object's clear floor space and nothing placed stands
+        in its own (an item set down on an object is in neither: it is the object's)."""
+        mine = cand.clear_box()
+        for other in self.placed:
+            if other.id in ignore or cand.on.startswith(other.id + ":") or other.on.startswith(cand.id + ":"):
+                continue
+            theirs = other.clear_box()
+            if theirs is not None and boxes_overlap(cand.lo, cand.hi, *theirs):
+                return False
+            if mine is not None and boxes_overlap(*mine, other.lo, other.hi):
+                return False
+        return True
 
     def _swing_clear(self, cand: Placed, ignore: tuple[str, ...], room: bool = True) -> bool:
         r = self.room if room else None
@@ -198,6 +260,13 @@ class SceneLayout:
                 if boxes_overlap(lo, hi, cand.lo, cand.hi):
                     return False
         return True
+
+    @staticmethod
+    def _opens_clear_of_host(made: Made, host: Made, local: np.ndarray) -> bool:
+        """Whether every joint of ``made``, set down at ``local`` (its pose in the host's frame), opens clear of
+        the host's collision hulls at rest: a rack's drip tray set on a shelf inside a cabinet would slide into
+        the cabinet's closed door (the placement checks leave out the host, whose top the item stands on)."""
+        return all(_clear_of_host(host, *moved_box(lo, hi, local)) for _, lo, hi in made.swept)
 
     def keep(self, cand: Placed, ignore: tuple[str, ...] = ()) -> Placed | None:
         """Place ``cand`` if it :meth:`fits`; ``None`` (nothing placed) if it does not."""
@@ -224,10 +293,11 @@ class SceneLayout:
         return self.keep(cand)
 
     def set_on(self, made: Made, host: Placed, rng: np.random.Generator, tries: int = 12,
-               prefer=None, fixed: bool = False, yaw: float | None = None) -> Placed | None:
+               prefer=None, fixed: bool = False, yaw: float | None = None, where=None) -> Placed | None:
         """``made`` set down (free) on a support region of ``host`` where it fits: the region big enough
         for its footprint with room above for its height, at a drawn spot; ``None`` if nowhere fits.
-        ``yaw``: which way its front faces (default: as the host's); a multiple of 90 degrees from the host's."""
+        ``yaw``: which way its front faces (default: as the host's); a multiple of 90 degrees from the host's.
+        ``prefer``: a sort key of the regions; ``where``: a test a region must pass (a worktop, not a shelf)."""
         host_yaw = math.atan2(host.pose[1, 0], host.pose[0, 0])
         turn = 0.0 if yaw is None else yaw - host_yaw
         lo, hi = moved_box(made.lo, made.hi, pose_matrix(np.zeros(3), turn))  # its box in the host's axes
@@ -235,7 +305,7 @@ class SceneLayout:
         steady = _steady_links(host.made.obj)
         regions = [g for g in host.made.regions if g.link in steady
                    and (g.hi[0] - g.lo[0]) > size[0] and (g.hi[1] - g.lo[1]) > size[1]
-                   and (g.clear is None or g.clear > size[2] + 0.01)]
+                   and (g.clear is None or g.clear > size[2] + 0.01) and (where is None or where(g))]
         if prefer is not None:
             regions = sorted(regions, key=prefer)
         for region in regions[:3]:
@@ -244,7 +314,8 @@ class SceneLayout:
                 lx = region.lo[0] - lo[0] + u[0] * (region.hi[0] - region.lo[0] - size[0])
                 ly = region.lo[1] - lo[1] + u[1] * (region.hi[1] - region.lo[1] - size[1])
                 local = np.array([lx, ly, region.z - lo[2] + SET_DOWN])
-                if not _clear_of_host(host.made, local + lo, local + hi):
+                if not _clear_of_host(host.made, local + lo, local + hi) or not self._opens_clear_of_host(
+                        made, host.made, pose_matrix(local, turn)):
                     continue
                 position = host.pose[:3, :3] @ local + host.pose[:3, 3]
                 cand = Placed(self._id(made), made, pose_matrix(position, host_yaw + turn), fixed,
@@ -332,7 +403,7 @@ class RoomLayout(SceneLayout):
             cand = Placed(self._id(made), made, pose_matrix(position, wall.yaw), True, f"wall:{wall.name}",
                           wall=wall.name)
             if any(boxes_overlap(cand.lo, cand.hi, o.lo, o.hi) for o in self.placed) \
-                    or not self._swing_clear(cand, (), room=False):
+                    or not self._clearances_kept(cand) or not self._swing_clear(cand, (), room=False):
                 continue
             self.placed.append(cand)
             s0, z0 = float(s - made.lo[1]), float(z - made.lo[2])
@@ -342,10 +413,11 @@ class RoomLayout(SceneLayout):
         return None
 
     def scatter(self, made: Made, hosts: list[Placed], rng: np.random.Generator, prefer=None,
-                fixed: bool = False) -> Placed | None:
-        """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it."""
+                fixed: bool = False, where=None) -> Placed | None:
+        """``made`` set down on the first of ``hosts`` (in a drawn order) that has room for it (``prefer``,
+        ``where``: as in :meth:`set_on`)."""
         for k in rng.permutation(len(hosts)):
-            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer, fixed=fixed)
+            got = self.set_on(made, hosts[int(k)], rng, prefer=prefer, fixed=fixed, where=where)
             if got is not None:
                 return got
         return None
