@@ -138,19 +138,24 @@ class ObjectRenderer:
         self._entities: dict[str, object] = {}
         self._corners: dict[str, np.ndarray] = {}  # per link: AABB corners of its visuals, link frame
         self._vertices: dict[str, np.ndarray] = {}  # per link: every visual vertex, link frame
+        self._triangles: dict[str, np.ndarray] = {}  # per link: its visual triangles, rows of _vertices[link]
         self._textures: dict[tuple, object] = {}  # worn textures made for this object (tint, alpha, gain)
         for name, visuals in self.files.links.items():
             if not visuals:
                 continue
             body, shapes = render_body(sapien, visuals, self._textures)
-            corners, verts_link = [], []
+            corners, verts_link, tris_link, count = [], [], [], 0
             for vis, shape in zip(visuals, shapes, strict=True):
+                for part in shape.parts:
+                    tris_link.append(np.asarray(part.get_triangles(), np.int64).reshape(-1, 3) + count)
+                    count += len(part.get_vertices())
                 verts = np.concatenate([p.get_vertices() for p in shape.parts]) * np.asarray(vis.scale)
                 lo, hi = verts.min(0), verts.max(0)
                 box = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
                 corners.append(box @ vis.origin[:3, :3].T + vis.origin[:3, 3])
                 verts_link.append(verts @ vis.origin[:3, :3].T + vis.origin[:3, 3])
             self._vertices[name] = np.concatenate(verts_link)
+            self._triangles[name] = np.concatenate(tris_link)
             ent = sapien.Entity()
             ent.name = name
             ent.add_component(body)
@@ -166,9 +171,10 @@ class ObjectRenderer:
         self._ground_z = float(rest[:, 2].min())
         stage.configure(rest.min(0), rest.max(0))
         poses = _forward_kinematics(self.files, rest_q)
+        offsets = np.cumsum([0] + [len(v) for v in self._vertices.values()])
         self._contact = _ContactShade(
             np.concatenate([v @ poses[n][:3, :3].T + poses[n][:3, 3] for n, v in self._vertices.items()]),
-            self._ground_z)
+            self._ground_z, np.concatenate([self._triangles[n] + o for n, o in zip(self._vertices, offsets)]))
         self.qpos: dict[str, float] = {}
         self.set_fraction(0.0)
 
