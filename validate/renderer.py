@@ -140,6 +140,7 @@ class ObjectRenderer:
         self._vertices: dict[str, np.ndarray] = {}  # per link: every visual vertex, link frame
         self._triangles: dict[str, np.ndarray] = {}  # per link: its visual triangles, rows of _vertices[link]
         self._textures: dict[tuple, object] = {}  # worn textures made for this object (tint, alpha, gain)
+        self._clear: list[int] = []  # render shapes one sees through (glass): their per-scene ids
         for name, visuals in self.files.links.items():
             if not visuals:
                 continue
@@ -160,6 +161,8 @@ class ObjectRenderer:
             ent.name = name
             ent.add_component(body)
             self.scene.add_entity(ent)
+            self._clear += [shape.per_scene_id for shape in shapes  # ids are given on joining the scene
+                            if any(part.material.base_color[3] < 1.0 for part in shape.parts)]
             self._entities[name] = ent
             self._corners[name] = np.concatenate(corners)
         if not self._entities:
@@ -231,7 +234,8 @@ class ObjectRenderer:
         self.scene.update_render()
         cam.take_picture()
         color = cam.get_picture("Color")[..., :3]
-        seg = cam.get_picture("Segmentation")[..., 1].astype(np.int64)
+        segs = cam.get_picture("Segmentation")
+        seg = segs[..., 1].astype(np.int64)
         lut = np.full(int(seg.max()) + 1, -1, np.int32)
         for sid, idx in self._entity_link.items():
             if sid < lut.size:
@@ -247,6 +251,7 @@ class ObjectRenderer:
             model = cam.get_model_matrix()
             world = pos @ model[:3, :3].T + model[:3, 3]
             shade[ground] *= self._contact(world[:, :2])
+        color = self._ground_through_glass(cam, segs[..., 0], color)
         shade = np.where(ground, shade, 1.0).astype(np.float32)
         bg = np.asarray(BACKGROUND, np.float32) / 255.0
         rgb = np.where((labels >= 0)[..., None], color, bg * shade[..., None])
@@ -256,6 +261,23 @@ class ObjectRenderer:
             labels = labels[supersample // 2::supersample, supersample // 2::supersample]
             shade = cv2.resize(shade, (width, height), interpolation=cv2.INTER_AREA)
         return Frame(rgb, labels.astype(np.int32), self.link_names, shade)
+
+    def _ground_through_glass(self, cam, shape_ids: np.ndarray, color: np.ndarray) -> np.ndarray:
+        """Glass lying on the ground (a lens, a dish) shows the ground through it as rendered, brighter than the
+        shadow-caught ground round it (and without its contact shadow): such pixels wear the catcher's shading,
+        or clear lenses read as milky white discs."""
+        clear = np.isin(shape_ids, self._clear) if self._clear else np.zeros(shape_ids.shape, bool)
+        if not clear.any():
+            return color
+        model = cam.get_model_matrix()
+        world = cam.get_picture("Position")[..., :3][clear] @ model[:3, :3].T + model[:3, 3]
+        low = world[:, 2] <= self._ground_z + 0.01
+        ratio = float(np.asarray(BACKGROUND, np.float32).mean()) / 255.0 / max(self.stage.ground_lum, 1e-4)
+        gain = np.ones(len(world), np.float32)
+        gain[low] = ratio * self._contact(world[low, :2])
+        color = color.copy()
+        color[clear] *= gain[:, None]
+        return color
 
     def close(self):
         """Take the object off the stage and drop its meshes and textures from the cache."""
