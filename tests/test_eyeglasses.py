@@ -48,3 +48,14 @@ def test_folding_readers_fold_at_the_bridge():
     assert half[:, 1].max() < 0.002 and half[:, 1].min() < -0.05  # the -Y half (its knuckle on the axis)
     up = _points(bp, "front_half", bp.poses({("front_half", 0): math.radians(90)})["front_half"])
     assert up[:, 2].max() > 0.04  # turned up off the table over the other half
+
+
+@pytest.mark.parametrize("design", ["full_rim", "rimless", "sunglasses"])
+def test_folded_temples_stack_parallel_not_crossing(design):
+    """The temple folded last lies flat on the other (its hinge the higher), as real ones stack, not rising off
+    its hinge at a slope that reads as an X of temples through each other."""
+    for seed in range(3):
+        _, bp = make(seed, design=design)
+        a, b = _points(bp, "temple"), _points(bp, "over_temple")
+        assert np.ptp(b[:, 2]) < 0.008  # flat: its height (a temple's, with its ear sock) only
+        assert b[:, 2].min() > a[:, 2].max() - 0.0025  # on the other, not through it (the sock's wall aside)
