@@ -50,6 +50,17 @@ def test_folding_readers_fold_at_the_bridge():
     assert up[:, 2].max() > 0.04  # turned up off the table over the other half
 
 
+@pytest.mark.parametrize("design", ["full_rim", "rimless", "sunglasses"])
+def test_folded_temples_stack_parallel_not_crossing(design):
+    """The temple folded last lies flat on the other (its hinge the higher), as real ones stack, not rising off
+    its hinge at a slope that reads as an X of temples through each other."""
+    for seed in range(3):
+        _, bp = make(seed, design=design)
+        a, b = _points(bp, "temple"), _points(bp, "over_temple")
+        assert np.ptp(b[:, 2]) < 0.008  # flat: its height (a temple's, with its ear sock) only
+        assert b[:, 2].min() > a[:, 2].max() - 0.0025  # on the other, not through it (the sock's wall aside)
+
+
 def test_a_folding_readers_front_folds_only_with_its_temples_folded(tmp_path):
     """The bridge hinge ``requires_closed`` both temples (written both ways), so the all-open state the checks
     and previews use is the glasses worn: temples open, front flat; never the front folded with temples out."""

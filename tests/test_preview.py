@@ -302,3 +302,22 @@ def test_cli_preview_of_a_folder_of_scenes_pictures_each_scene_not_its_objects(t
     rest, opened = (cv2.imread(str(out / folder.name / n)) for n in ("preview.png", "preview_open.png"))
     assert rest.shape == (192, 256, 3) and rest.std() > 10  # a picture, not a blank
     assert np.abs(rest.astype(int) - opened).mean() > 0.5  # doors and drawers open between the two
+
+
+def test_contact_shadow_follows_a_cable_not_the_hull_of_its_ends():
+    """A mouse and its plug joined by a thin cable on the ground: the ground between them, off the cable, is
+    not darkened as if under the object (the convex hull of the three read as one grey wedge)."""
+
+    def slab(x0, y0, x1, y1):
+        pts = np.array([(x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (0.0, 0.002)])
+        faces = np.array([(0, 2, 6), (0, 6, 4)])  # the bottom (z = 0) as two triangles
+        return pts, faces
+
+    parts = [slab(0.0, -0.03, 0.1, 0.03), slab(0.1, 0.0, 0.2, 0.002), slab(0.2, -0.01, 0.24, 0.01)]
+    mouse, cable, plug = parts
+    pts = np.vstack([mouse[0], cable[0], plug[0]])
+    tris = np.vstack([mouse[1], cable[1] + 8, plug[1] + 16])
+    shade = studio._ContactShade(pts, 0.0, tris)
+    under, beside_cable, off = shade(np.array([[0.05, 0.0], [0.15, 0.001], [0.15, -0.015]]))  # off: in the hull
+    assert under < 0.7 and beside_cable < 0.7
+    assert off > 0.8  # 1.5 cm off the cable: its own soft edge only (inside the hull: 0.58)

@@ -138,23 +138,31 @@ class ObjectRenderer:
         self._entities: dict[str, object] = {}
         self._corners: dict[str, np.ndarray] = {}  # per link: AABB corners of its visuals, link frame
         self._vertices: dict[str, np.ndarray] = {}  # per link: every visual vertex, link frame
+        self._triangles: dict[str, np.ndarray] = {}  # per link: its visual triangles, rows of _vertices[link]
         self._textures: dict[tuple, object] = {}  # worn textures made for this object (tint, alpha, gain)
+        self._clear: list[int] = []  # render shapes one sees through (glass): their per-scene ids
         for name, visuals in self.files.links.items():
             if not visuals:
                 continue
             body, shapes = render_body(sapien, visuals, self._textures)
-            corners, verts_link = [], []
+            corners, verts_link, tris_link, count = [], [], [], 0
             for vis, shape in zip(visuals, shapes, strict=True):
+                for part in shape.parts:
+                    tris_link.append(np.asarray(part.get_triangles(), np.int64).reshape(-1, 3) + count)
+                    count += len(part.get_vertices())
                 verts = np.concatenate([p.get_vertices() for p in shape.parts]) * np.asarray(vis.scale)
                 lo, hi = verts.min(0), verts.max(0)
                 box = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
                 corners.append(box @ vis.origin[:3, :3].T + vis.origin[:3, 3])
                 verts_link.append(verts @ vis.origin[:3, :3].T + vis.origin[:3, 3])
             self._vertices[name] = np.concatenate(verts_link)
+            self._triangles[name] = np.concatenate(tris_link)
             ent = sapien.Entity()
             ent.name = name
             ent.add_component(body)
             self.scene.add_entity(ent)
+            self._clear += [shape.per_scene_id for shape in shapes  # ids are given on joining the scene
+                            if any(part.material.base_color[3] < 1.0 for part in shape.parts)]
             self._entities[name] = ent
             self._corners[name] = np.concatenate(corners)
         if not self._entities:
@@ -166,9 +174,10 @@ class ObjectRenderer:
         self._ground_z = float(rest[:, 2].min())
         stage.configure(rest.min(0), rest.max(0))
         poses = _forward_kinematics(self.files, rest_q)
+        offsets = np.cumsum([0] + [len(v) for v in self._vertices.values()])
         self._contact = _ContactShade(
             np.concatenate([v @ poses[n][:3, :3].T + poses[n][:3, 3] for n, v in self._vertices.items()]),
-            self._ground_z)
+            self._ground_z, np.concatenate([self._triangles[n] + o for n, o in zip(self._vertices, offsets)]))
         self.qpos: dict[str, float] = {}
         self.set_fraction(0.0)
 
@@ -225,7 +234,8 @@ class ObjectRenderer:
         self.scene.update_render()
         cam.take_picture()
         color = cam.get_picture("Color")[..., :3]
-        seg = cam.get_picture("Segmentation")[..., 1].astype(np.int64)
+        segs = cam.get_picture("Segmentation")
+        seg = segs[..., 1].astype(np.int64)
         lut = np.full(int(seg.max()) + 1, -1, np.int32)
         for sid, idx in self._entity_link.items():
             if sid < lut.size:
@@ -241,6 +251,7 @@ class ObjectRenderer:
             model = cam.get_model_matrix()
             world = pos @ model[:3, :3].T + model[:3, 3]
             shade[ground] *= self._contact(world[:, :2])
+        color = self._ground_through_glass(cam, segs[..., 0], color)
         shade = np.where(ground, shade, 1.0).astype(np.float32)
         bg = np.asarray(BACKGROUND, np.float32) / 255.0
         rgb = np.where((labels >= 0)[..., None], color, bg * shade[..., None])
@@ -250,6 +261,23 @@ class ObjectRenderer:
             labels = labels[supersample // 2::supersample, supersample // 2::supersample]
             shade = cv2.resize(shade, (width, height), interpolation=cv2.INTER_AREA)
         return Frame(rgb, labels.astype(np.int32), self.link_names, shade)
+
+    def _ground_through_glass(self, cam, shape_ids: np.ndarray, color: np.ndarray) -> np.ndarray:
+        """Glass lying on the ground (a lens, a dish) shows the ground through it as rendered, brighter than the
+        shadow-caught ground round it (and without its contact shadow): such pixels wear the catcher's shading,
+        or clear lenses read as milky white discs."""
+        clear = np.isin(shape_ids, self._clear) if self._clear else np.zeros(shape_ids.shape, bool)
+        if not clear.any():
+            return color
+        model = cam.get_model_matrix()
+        world = cam.get_picture("Position")[..., :3][clear] @ model[:3, :3].T + model[:3, 3]
+        low = world[:, 2] <= self._ground_z + 0.01
+        ratio = float(np.asarray(BACKGROUND, np.float32).mean()) / 255.0 / max(self.stage.ground_lum, 1e-4)
+        gain = np.ones(len(world), np.float32)
+        gain[low] = ratio * self._contact(world[low, :2])
+        color = color.copy()
+        color[clear] *= gain[:, None]
+        return color
 
     def close(self):
         """Take the object off the stage and drop its meshes and textures from the cache."""

@@ -211,17 +211,20 @@ def _stage() -> _Stage:
 class _ContactShade:
     """Soft darkening of the ground around an object's footprint (a cheap ambient occlusion).
 
-    The footprint is the convex hull, seen from above, of the visual mesh vertices that lie near
-    the ground at rest; the darkening fades with the distance from it.
+    The footprint is what the visual mesh's triangles lying near the ground at rest cover, seen from above
+    (a mouse's cable stays a thin line to its plug, not the hull of mouse and plug); an object with no such
+    triangles (an open-bottomed mesh) falls back to the convex hull of its low vertices. The darkening fades
+    with the distance from the footprint.
     """
 
     STRENGTH = 0.42
 
-    def __init__(self, rest_points: np.ndarray, ground_z: float):
+    def __init__(self, rest_points: np.ndarray, ground_z: float, triangles: np.ndarray | None = None):
         import cv2
 
         height = float(rest_points[:, 2].max() - ground_z)
-        low = rest_points[rest_points[:, 2] <= ground_z + 0.02 + 0.03 * height][:, :2]
+        near = rest_points[:, 2] <= ground_z + 0.02 + 0.03 * height
+        low = rest_points[near][:, :2]
         self.ok = len(low) >= 3
         if not self.ok:
             return
@@ -232,9 +235,15 @@ class _ContactShade:
         self.origin = lo - pad
         n = 256
         self.cell = float(np.max(hi - lo) + 2 * pad) / n
-        hull = cv2.convexHull(((low - self.origin) / self.cell).astype(np.float32)).round().astype(np.int32)
         inside = np.zeros((n, n), np.uint8)
-        cv2.fillPoly(inside, [hull.reshape(-1, 2)], 1)
+        flat = triangles[near[triangles].all(1)] if triangles is not None and len(triangles) else np.zeros((0, 3), int)
+        if len(flat):
+            px = ((rest_points[:, :2] - self.origin) / self.cell).round().astype(np.int32)
+            for tri in px[flat]:
+                cv2.fillConvexPoly(inside, tri, 1)
+        else:
+            hull = cv2.convexHull(((low - self.origin) / self.cell).astype(np.float32)).round().astype(np.int32)
+            cv2.fillPoly(inside, [hull.reshape(-1, 2)], 1)
         self.dist = cv2.distanceTransform(1 - inside, cv2.DIST_L2, 5) * self.cell  # metres outside the footprint
         self.n = n
 

@@ -102,6 +102,10 @@ DROP = math.radians(50.0)  # the ear bend's turn down round the ear, at its tip 
 TEMPLE = {"metal": (0.0032, 0.0028, 0.0014), "acetate": (0.0085, 0.0045, 0.0035)}
 """Temple (height at the hinge, at the tip, thickness): metal temples 1.2-1.5 mm wire-flat, 3 mm high;
 acetate temples 8-10 mm high at the hinge, tapering to 4-5 mm, 3-4 mm thick (Ray-Ban RB2140, RB5154)."""
+STACK = 0.0015
+"""Folded, the temple folded last lies on the other, parallel to it (not crossing it at a slope): its end piece
+carries the hinge one temple's thickness and this much higher (the ear sock's 0.55 mm wall and a 1 mm gap), as
+a pair's end pieces differ where one temple rides over the other (Ray-Ban RB3447, Lindberg strip titanium)."""
 
 
 @dataclass(frozen=True)
@@ -113,6 +117,7 @@ class Glasses:
     temple: float
     acetate: bool
     depth: float = 1.0  # the lens height's scale on its shape's B/A
+    lift: float = 0.0  # how much higher the -Y end piece's hinge sits (its temple folds over the other)
 
     @property
     def height(self) -> float:
@@ -140,6 +145,10 @@ class Glasses:
         y = self.dbl / 2 + a + (self.rim[0] / 2 if d.rim != "rimless" else -0.002) + 0.0025
         return np.array([x, y, self.face + d.depth])
 
+    def hinge_at(self, side: int) -> np.ndarray:
+        """The hinge point of the ``side`` end piece, y unsigned (:attr:`hinge`; the -Y one :attr:`lift` higher)."""
+        return self.hinge + (0.0, 0.0, self.lift if side < 0 else 0.0)
+
     @property
     def knuckle(self) -> float:
         """The hinge barrels' radius."""
@@ -152,8 +161,9 @@ def glasses(design: str, shape: str, size: float, bridge: float, temple: float, 
     the lens's height from its shape's by that share (a shallow or a deep version of an outline)."""
     d = DESIGNS[design]
     acetate = acetate and d.acetate[0] > 0
+    lift = 0.0 if d.fold else TEMPLE["acetate" if acetate else "metal"][2] + STACK
     return Glasses(d, SHAPES[shape], _lerp(d.eye, size), _lerp(d.dbl, bridge), _lerp(d.temple, temple), acetate,
-                   1.0 + depth)
+                   1.0 + depth, lift)
 
 
 def _lerp(r: tuple[float, float], t: float) -> float:
@@ -264,7 +274,7 @@ def fold_knuckle(gl: Glasses, side: int, material: str) -> tuple[g.Piece, Frame]
 def end_piece(gl: Glasses, side: int, material: str) -> list[g.Piece]:
     """The end piece at the rim's temple side: a block down to the rim (on the lens, rimless) and the
     hinge's lower barrel on the axis; the temple's barrel stacks on it along X."""
-    hx, hy, hz = gl.hinge
+    hx, hy, hz = gl.hinge_at(side)
     kl, rb = _knuckle_length(gl), gl.knuckle
     hh = max(gl.temple_size[0], 2 * kl)
     top = hz - rb - 0.0006
@@ -282,20 +292,34 @@ def _knuckle_length(gl: Glasses) -> float:
     return max(0.0014, 0.35 * gl.temple_size[0])
 
 
+PAD_ARM = (0.0011, 0.007)
+"""A nose pad's arm: 1.0-1.2 mm nickel-silver wire (m) and how far along the rim above the pad it is soldered
+on (m); it runs back from the rim and bends in to the pad's clamp box (Hilco, Silhouette pad arms: 12-16 mm
+long, the pad 5-7 mm behind the lens)."""
+
+
 def nose_pad(gl: Glasses, side: int, metal: str, pad: str) -> list[g.Piece]:
-    """A nose pad on its wire arm from the rim's nasal side: a 10 x 6 mm silicone oval facing the nose."""
+    """A nose pad on its wire arm from the rim's nasal side: a 10 x 6 mm silicone oval facing the nose, the
+    clamp box on its back and the arm bent from the rim back and in to the box."""
     cx, cy = -0.35 * gl.height / 2, side * (gl.dbl / 2 + 0.0008)
     cz = gl.face + 0.0045
     th = np.linspace(0, 2 * math.pi, 14, endpoint=False)
     n = np.array([0.0, -side * 0.8, 0.6])  # facing the nose and back toward the face
     along = np.array([1.0, 0.0, 0.0])
     up = np.cross(n, along)
-    ring = [np.array([cx, cy, cz]) + 0.005 * math.cos(a) * along + 0.0028 * math.sin(a) * up + d * n
+    centre = np.array([cx, cy, cz])
+    ring = [centre + 0.005 * math.cos(a) * along + 0.0028 * math.sin(a) * up + d * n
             for a in th for d in (0.0, 0.0012)]
-    root = (cx + 0.004, side * (gl.dbl / 2 + 0.001 + gl.rim[0] / 2), gl.face / 2)
-    back = np.array([cx, cy - side * 0.0012, cz - 0.0006])
-    arm = [np.asarray(root) + dv for dv in _wire(0.0005)] + [back + dv for dv in _wire(0.0005)]
-    return [hull(ring, pad, "nose_pad"), hull(arm, metal, "pad_arm")]
+    wire, rise = PAD_ARM
+    r = wire / 2
+    root = np.array([cx + rise, side * (gl.dbl / 2 + 0.0012 + gl.rim[0] / 2), gl.face / 2])
+    box = centre - 0.0009 * n
+    elbow = np.array([root[0] - 0.0015, side * (abs(box[1]) + 0.0024), box[2] - 0.0005])
+    clamp = [box + sx * 0.0014 * along + sy * 0.0009 * up + sz * 0.0005 * n for sx in (-1, 1) for sy in (-1, 1)
+             for sz in (-1, 1)]
+    return [hull(ring, pad, "nose_pad"), hull(clamp, metal, "pad_box"),
+            hull([q + dv for q in (root, elbow) for dv in _wire(r)], metal, "pad_arm"),
+            hull([q + dv for q in (elbow, box) for dv in _wire(r)], metal, "pad_arm")]
 
 
 def _wire(r: float) -> list[np.ndarray]:
@@ -316,7 +340,7 @@ def front(gl: Glasses, sides: tuple[int, ...], slots: dict, label: str, bridge_f
         if gl.design.fold:
             knuckle, anchors["fold"] = fold_knuckle(gl, s, slots["metal"])
             pieces.append(knuckle)
-        hx, hy, hz = gl.hinge
+        hx, hy, hz = gl.hinge_at(s)
         anchors["hinge+" if s > 0 else "hinge-"] = Frame.at((hx, s * hy, hz), z=(-s, 0, 0), x=(0, -s, 0))
     return Assembly.single(label, pieces, anchors)
 
@@ -350,7 +374,7 @@ def temple(gl: Glasses, side: int, frame: str, tip: str) -> Assembly:
     """The temple of the ``side`` end piece folded behind the front (pointing -side * Y), its ear bend
     dropping toward -X (:func:`temple_path`); its barrel on the hinge axis beside the end piece's. Anchor
     ``hinge`` as the end piece's."""
-    hx, hy, hz = gl.hinge
+    hx, hy, hz = gl.hinge_at(side)
     h0, h1, t = gl.temple_size
     path, bend = temple_path(gl)
     path = path * [1, side]
@@ -367,14 +391,15 @@ def temple(gl: Glasses, side: int, frame: str, tip: str) -> Assembly:
 
 def over_slope(gl: Glasses, under: Assembly) -> float:
     """The angle (rad) the temple folded last rests at over the other, from its own hinge: its underside
-    clears the first's top where the first first lies below it."""
+    clears the first's top where the first first lies below it (0 where its hinge's :attr:`Glasses.lift`
+    already does: it lies parallel on the other)."""
     hx, hy, _ = gl.hinge
     h0, _, t = gl.temple_size
     band = max(h0, 2 * _knuckle_length(gl)) / 2 + 0.001
     v = np.vstack([p.vertices for p in under.pieces])
     near = v[np.abs(v[:, 0] - hx) < band]
     r = float(np.min(near[:, 1] + hy)) if len(near) else gl.temple
-    return math.asin(min(0.5, (t + 0.0012) / max(r, 1e-3)))
+    return math.asin(min(0.5, max(0.0, t + 0.0012 - gl.lift) / max(r, 1e-3)))
 
 
 # -- a folding reader's telescoping temples -----------------------------------------------------------
@@ -410,7 +435,7 @@ def telescoping_temple(gl: Glasses, side: int, frame: str, tip: str) -> Assembly
 
 def _temple_knuckle(gl: Glasses, side: int, frame: str) -> g.Piece:
     """The temple's barrel on the hinge axis (beside the end piece's) and its web to the temple."""
-    hx, hy, hz = gl.hinge
+    hx, hy, hz = gl.hinge_at(side)
     t = gl.temple_size[2]
     kl, rb = _knuckle_length(gl), gl.knuckle
     barrel = [(x, side * (hy + rb * math.cos(a)), hz + rb * math.sin(a)) for x in (hx + GAP, hx + kl)

@@ -294,9 +294,38 @@ def utility_handle(u: Utility, body: str, grip: str) -> Assembly:
     for lo, hi in ((z0 - 1e-4, (z0 + z1 - slot) / 2), ((z0 + z1 + slot) / 2, z1 + 1e-4)):
         pieces.append(hull([(x, y, z) for x in (0.06 * L, 0.8 * L) for y in (h / 2 - wall, h / 2 - 0.0005)
                             for z in (lo, hi)], body, "rail"))
+    pieces += _nose_cheeks(u, plan, body)
     inlay = np.array([(0.08 * L, -0.3 * h), (0.6 * L, -0.36 * h), (0.6 * L, 0.3 * h), (0.1 * L, 0.36 * h)])
     pieces.append(_plate(inlay, d.thickness - 1e-4, d.thickness + 0.0012, grip, "grip"))
     return Assembly.single("body", pieces, {"slide": Frame.at((0.0, 0.0, d.thickness / 2), z=(1, 0, 0))})
+
+
+def _nose_cheeks(u: Utility, plan: np.ndarray, body: str) -> list[g.Piece]:
+    """The nose closed round the blade's slot: the channel filled either side of the blade, as far back as the
+    carrier stops short at full travel, so the retracted blade is hidden and the extended one comes out of a
+    slot (Stanley 10-099, Olfa L-1: a slot ~1 mm wide in a solid nose)."""
+    d, L = u.design, u.length
+    z0, z1 = u.channel
+    zc, bt = (z0 + z1) / 2, d.blade[2]
+    depth = min(0.010, L - _carrier_front(u) - d.travel - 0.001)
+    x0 = L - depth
+    pts = [tuple(q) for q in plan if q[0] >= x0]
+    for a, b in zip(plan, np.roll(plan, -1, 0), strict=True):  # where the plan's edges cross x0
+        if (a[0] - x0) * (b[0] - x0) < 0:
+            pts.append((x0, a[1] + (x0 - a[0]) / (b[0] - a[0]) * (b[1] - a[1])))
+    halves = ((z0 - 1e-4, zc - bt / 2 - GAP), (zc + bt / 2 + GAP, z1 + 1e-4))
+    out = [hull([(x, y, z) for x, y in pts for z in zs], body, "nose") for zs in halves]
+    for a, b in zip(plan, np.roll(plan, -1, 0), strict=True):  # the nose's top edges, behind the cheeks
+        if min(a[1], b[1]) > 0 and max(a[0], b[0]) > 0.6 * L and min(a[0], b[0]) < x0:
+            ends = [q if q[0] <= x0 else q + (x0 - q[0]) / (r[0] - q[0]) * (r - q) for q, r in ((a, b), (b, a))]
+            out += [hull([(x, y - dy, z) for x, y in ends for dy in (0.0, 0.0008) for z in zs], body, "nose_wall")
+                    for zs in halves]
+    return out
+
+
+def _carrier_front(u: Utility) -> float:
+    """x of the carrier's front, retracted (the blade reaches on beyond it)."""
+    return u.length - 0.004 - 0.55 * u.design.blade[0]
 
 
 def blade_carrier(u: Utility, steel: str, slider: str) -> Assembly:
@@ -318,7 +347,7 @@ def blade_carrier(u: Utility, steel: str, slider: str) -> Assembly:
             line = [(x + dx + f * 0.6 * bh, yb + f * bh, z) for dx in (0.0, 0.0004) for f in (0.05, 0.95)
                     for z in (zc + bt / 2, zc + bt / 2 + 0.00005)]
             pieces.append(hull(line, steel, "score").replace(convex=()))
-    c0, c1 = 0.1 * L, tip - 0.55 * bl
+    c0, c1 = 0.1 * L, _carrier_front(u)
     top = h / 2 - 0.0035
     pieces.append(hull([(x, y, z) for x in (c0, c1) for y in (-h / 2 + 0.0035, top) for z in (z0 + GAP, z1 - GAP)],
                        slider, "carrier"))

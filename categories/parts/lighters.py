@@ -27,6 +27,7 @@ from .handtools import hull, sweep
 
 SHEET = 0.0006  # m, pressed steel of a hood, chimney or windproof case (0.5-0.7 mm brass or steel: Zippo, BIC)
 PLAY = 0.0012  # m, clearance round a moving part (a wheel between its cheeks, a trigger in its slot)
+GAP_K = 0.0001  # m, half the gap between a hinge's neighbouring knuckles along its pin
 KNURL = 18  # ridges round a spark wheel (BIC, Zippo wheels: 16-20 cross-cut teeth)
 
 
@@ -194,6 +195,11 @@ WINDPROOFS = {
 CASE_WALL = 0.0012  # m, the case massed as a shell: its 0.6 mm brass or steel and the insert's 0.5 mm steel in it
 LID_OPENS = math.radians(105)  # the lid swings back against its cam spring to ~100-110 degrees
 CHIMNEY_HOLES = (4, 2)  # holes per side of the chimney: columns, rows (Zippo: 8 a side)
+CORNER = 0.2  # plan corner radius / thickness: a Zippo case's flat back and front, ~2.5 mm corners
+HINGE = (5, 0.0013, 0.78)
+"""A Zippo's five-barrel hinge at the case's back: knuckles (the case's 2nd and 4th, the lid's 1st, 3rd, 5th),
+barrel radius (m) and the share of the case's thickness it spans, soldered on the flat back by their leaves
+(Zippo 200: 2.6 mm barrels over ~10 mm of the 13 mm back)."""
 
 
 def windproof(kind: str) -> Windproof:
@@ -202,6 +208,35 @@ def windproof(kind: str) -> Windproof:
 
 def _seam(z: Windproof) -> float:
     return z.height * (1 - z.lid)
+
+
+def _corner(z: Windproof) -> float:
+    return min(0.18 * z.width, CORNER * z.thick)
+
+
+def _hinge_axis(z: Windproof) -> tuple[float, float]:
+    """(x, z) of the hinge pin: its barrels just behind the back (clear of the lid's and the case's walls), at
+    the seam."""
+    return -z.width / 2 - HINGE[1] - 0.0002, _seam(z)
+
+
+def _knuckles(z: Windproof, lid: bool, material: str) -> list[g.Piece]:
+    """The case's (or, ``lid``, the lid's) knuckles of the hinge, each with its leaf soldered to the back."""
+    n, rb, share = HINGE
+    hx, hz = _hinge_axis(z)
+    span = share * z.thick
+    step = span / n
+    out = []
+    for k in range(n):
+        if (k % 2 == 0) != lid:
+            continue
+        y0, y1 = -span / 2 + k * step + GAP_K, -span / 2 + (k + 1) * step - GAP_K
+        ring = [(hx + rb * math.cos(a), y, hz + rb * math.sin(a)) for y in (y0, y1)
+                for a in np.linspace(0, 2 * math.pi, 12, endpoint=False)]
+        dz = -1.0 if not lid else 1.0  # the leaf runs down the case's back, up the lid's
+        leaf = [(x, y, hz + dz * d) for x in (-z.width / 2 + 0.0004, hx) for y in (y0, y1) for d in (0.0, 2.4 * rb)]
+        out.append(hull(ring + leaf, material, "knuckle"))
+    return out
 
 
 def _wall_ring(w: float, t: float, r: float, z0: float, z1: float, material: str, name: str) -> g.Piece:
@@ -216,7 +251,7 @@ def windproof_body(z: Windproof, case: str, steel: str, dark: str) -> Assembly:
     its holes, the hinge's knuckles at the rear; anchors ``lid`` (the hinge, -Y: +rotation lifts the front)
     and ``wheel`` (its axle, +Y)."""
     w, t, seam = z.width, z.thick, _seam(z)
-    r = 0.18 * w
+    r = _corner(z)
     pieces = [prism(plan(w, t, r), 0.0, seam, case, "case", inset=0.001).replace(wall=CASE_WALL)]
     cw, ct = 0.62 * w, t - 0.004  # the chimney's plan, 2 mm inside the lid's walls
     cx = 0.5 * w - 0.5 * cw - 0.003
@@ -236,9 +271,8 @@ def windproof_body(z: Windproof, case: str, steel: str, dark: str) -> Assembly:
                 y = s * (ct / 2 + 0.00005)
                 pieces.append(g.cylinder((x, y - s * 0.0002, zz), (x, y, zz), 0.0011, dark, 12,
                                          "chimney_hole").replace(convex=()))
-    hinge = (-w / 2 - 0.0013, seam)
-    pieces.append(g.cylinder((hinge[0], -0.25 * t, hinge[1]), (hinge[0], 0.25 * t, hinge[1]), 0.0013, case, 12,
-                             "knuckle"))
+    hinge = _hinge_axis(z)
+    pieces += _knuckles(z, False, case)
     wheel = np.array([cx - 0.5 * cw + z.wheel + 0.0004, 0.0, top - z.wheel + 0.0003])  # level with the chimney
     pieces.append(g.cylinder(wheel - (0, ct / 2, 0), wheel + (0, ct / 2, 0), 0.0008, steel, 12,
                              "axle_rivet").replace(convex=()))
@@ -249,14 +283,12 @@ def windproof_body(z: Windproof, case: str, steel: str, dark: str) -> Assembly:
 def windproof_lid(z: Windproof, case: str) -> Assembly:
     """The lid: a rounded steel cap over the chimney, closed on the case, its knuckle on the hinge."""
     w, t, seam = z.width, z.thick, _seam(z)
-    r = 0.18 * w
+    r = _corner(z)
     gap = 0.0003
     pieces = [prism(plan(w, t, r), z.height - SHEET, z.height, case, "lid_top"),
               _wall_ring(w, t, r, seam + gap, z.height - SHEET + 1e-5, case, "lid_wall")]
-    hinge = (-w / 2 - 0.0013, seam)
-    for s in (-1, 1):
-        pieces.append(g.cylinder((hinge[0], s * 0.27 * t, hinge[1]), (hinge[0], s * 0.5 * t, hinge[1]), 0.0013,
-                                 case, 12, "knuckle"))
+    hinge = _hinge_axis(z)
+    pieces += _knuckles(z, True, case)
     return Assembly.single("lid", pieces, {"hinge": Frame.at((hinge[0], 0.0, hinge[1]), z=(0, -1, 0))})
 
 
