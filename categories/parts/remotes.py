@@ -200,7 +200,9 @@ def body(p: Plan, material: str, door: bool = True) -> g.Piece:
     shell between the battery bay's lid and the keymat (:data:`KEYMAT` under the face), the rim of the top
     around the keys, as a real top shell with a hole for each key (a key presses down into the room under it),
     and the rim of the underside around the battery door and in front of it (the door slides out backwards;
-    ``door`` False: a slab with no bay)."""
+    ``door`` False: a slab with no bay). The top's rims stand on the keymat's slab rather than reach down through
+    it: one bottom face under a phone's screen half (with two, PhysX pushed a half sliding 2.5 mm over the keypad
+    down onto a key and stopped it)."""
     v, f = shell(p)
     import manifold3d
 
@@ -209,9 +211,9 @@ def body(p: Plan, material: str, door: bool = True) -> g.Piece:
     floor = p.thick - KEYMAT - p.d.travel
     dx, hd = door_box(p)
     ceiling = DOOR_LIFT + DOOR_PLATE + DOOR_ROOM if door else 0.0
-    up, under = ((0, 0, 1), ceiling), ((0, 0, -1), -ceiling)
-    pieces = [(up, ((0, 0, -1), -floor)), (up, ((-1, 0, 0), RIM - x0)), (up, ((1, 0, 0), x1 + RIM)),
-              (up, ((0, 1, 0), hy + RIM)), (up, ((0, -1, 0), hy + RIM))]
+    up, under, rim = ((0, 0, 1), ceiling), ((0, 0, -1), -ceiling), ((0, 0, 1), floor)
+    pieces = [(up, ((0, 0, -1), -floor)), (rim, ((-1, 0, 0), RIM - x0)), (rim, ((1, 0, 0), x1 + RIM)),
+              (rim, ((0, 1, 0), hy + RIM)), (rim, ((0, -1, 0), hy + RIM))]
     if door:
         pieces += [(under, ((1, 0, 0), dx[1] + RIM)), (under, ((0, 1, 0), hd + RIM)), (under, ((0, -1, 0), hd + RIM))]
     convex = []
