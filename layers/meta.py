@@ -68,6 +68,7 @@ WIKIDATA: dict[str, tuple[str, str]] = {
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
     "mouse": ("Q7987", "http://www.wikidata.org/entity/Q7987 'mouse' (COCO: 'hand-held device used to move a"
               " pointer on a computer display')"),
+    "keyboard": ("Q1921606", "http://www.wikidata.org/entity/Q1921606 'keyboard' (COCO: 'data input device')"),
     "stapler": ("Q489157", "http://www.wikidata.org/entity/Q489157 'stapler' (WN 04310635-n, OEWN)"),
     "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
     "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"

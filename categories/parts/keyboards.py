@@ -52,6 +52,7 @@ BORDER = {"full": ((0.008, 0.016), (0.012, 0.03)), "tkl": ((0.008, 0.016), (0.01
 K380 / Magic Keyboard ~6-10 mm (measured on the spec-sheet outlines less the key count x 19 mm)."""
 FRONT = 0.010  # m, the case in front of the space bar (K120 ~12 mm, Magic Keyboard ~8 mm)
 HEIGHT = {"mechanical": (0.018, 0.030), "chiclet": (0.009, 0.016)}  # m at the back: K120 23.5, G PRO 34; K380 16
+CAP_WALL = 0.0012  # m, a full-size keycap's wall (OEM ABS / PBT caps 1.1-1.5 mm)
 WELL = 0.003  # m, the key well's margin round the caps
 RISE = 0.0025  # m, the caps' feet stand this above the well's rim once pressed (the rim hides the plate)
 PAD = dict(r=0.005, h=0.002, inset=0.018)  # rubber pads under the corners
@@ -213,7 +214,8 @@ def keycap(b: Board, k: Key, material: str) -> Assembly:
     lo = [(k.x + sx * k.dx / 2, k.y + sy * k.dy / 2, z0) for sx in (-1, 1) for sy in (-1, 1)]
     hi = [(k.x + sx * (k.dx / 2 - shrink), k.y + sy * (k.dy / 2 - shrink), z0 + h) for sx in (-1, 1)
           for sy in (-1, 1)]
-    piece = _hull(lo + hi, material).replace(wall=0.0)
+    # a full-size cap is a moulded shell (1-1.5 mm ABS walls: ~1.5 g, a space bar ~6 g); a chiclet cap is a plate
+    piece = _hull(lo + hi, material).replace(wall=CAP_WALL if h > 0.004 else 0.0)
     grasp = Grasp.make((k.x, k.y, z0 + h), (0, 0, -1), (0, 1, 0) if k.dy <= k.dx else (1, 0, 0),
                        min(k.dx, k.dy) - 2 * shrink, h / 2)
     return Assembly.single("key", [piece.with_grasps(grasp)],
