@@ -6,8 +6,9 @@ keycaps of 4 mm travel, and a ``laptop``-style board (Logitech K380, Apple Magic
 pressing 1.5 mm. Every key is a part pressed straight down (prismatic, role ``button``: its switch springs it
 back). A full-size or tenkeyless board may have two fold-out ``feet`` under its back corners: it then rests
 tilted on them (deployed is their rest state) and each folds back and up under the case (revolute about +Y,
-role ``holding``: a detent keeps a foot where it is put). Deployed feet are the rest state because a foot
-unfolding downward from a flat rest would dig into the table the board stands on. X is the keyboard's front
+role ``hinge``: deployed, a foot stands plumb on its stop, so the case's weight passes through its hinge).
+Deployed feet are the rest state because a foot unfolding downward from a flat rest would dig into the table
+the board stands on. X is the keyboard's front
 (the typist's side), Y across (the typist's left -Y), Z up.
 """
 
@@ -93,7 +94,7 @@ class KeyboardLayout(Layout):
 
     def foot(self, node, foot, name):
         placed = self.place(K.foot_part(foot, K.angle(self.set_down), "feet").placed(self.set_down), name)
-        self.hinge("case", placed.root, placed.anchor("hinge"), upper=K.FOLD, role="holding")
+        self.hinge("case", placed.root, placed.anchor("hinge"), upper=K.FOLD)
 
 
 CATEGORY = Category("keyboard", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, KeyboardLayout, MATERIALS,
