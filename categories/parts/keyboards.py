@@ -270,8 +270,10 @@ def foot_part(f: Foot, tilt_angle: float, material: str) -> Assembly:
     d = np.array([math.sin(tilt_angle), 0.0, -math.cos(tilt_angle)])  # plumb, in the level frame
     n = np.array([math.cos(tilt_angle), 0.0, math.sin(tilt_angle)])
     c = np.array([f.x, f.y, hz])
-    pts = [c + s * f.length * d + u * (t / 2) * n + (0, v * f.width / 2, 0) for s in (0.0, 1.0) for u in (-1, 1)
-           for v in (-1, 1)]
+    # a chisel tip: its edge on the table under the hinge, so folding lifts it at once (a square tip's front corner
+    # would dig into the table as the foot starts to turn)
+    pts = [c + s * f.length * d + u * (t / 2) * n + (0, v * f.width / 2, 0) for s in (0.0, 1.0 - t / f.length)
+           for u in (-1, 1) for v in (-1, 1)] + [c + f.length * d + (0, v * f.width / 2, 0) for v in (-1, 1)]
     tip = c + f.length * d + (t / 2) * n
     piece = _hull(pts, material).replace(wall=0.0)
     # a finger pushes the foot's front face back to fold it
