@@ -276,8 +276,9 @@ def foot_part(f: Foot, tilt_angle: float, material: str) -> Assembly:
            for u in (-1, 1) for v in (-1, 1)] + [c + f.length * d + (0, v * f.width / 2, 0) for v in (-1, 1)]
     tip = c + f.length * d + (t / 2) * n
     piece = _hull(pts, material).replace(wall=0.0)
-    # a finger pushes the foot's front face back to fold it
-    piece = piece.with_grasps(Grasp.make(tuple(tip - 0.3 * f.length * d), (-1, 0, 0), (0, 1, 0), t, 0.3 * f.length))
+    # a gripper reaching in under the back edge pinches the foot across its thickness near the tip and pulls it back
+    piece = piece.with_grasps(Grasp.make(tuple(tip - (t / 2) * n - 0.3 * f.length * d), (1, 0, 0), (0, 0, 1), t,
+                                         0.5 * f.width))
     return Assembly.single("foot", [piece], {"hinge": Frame.at(tuple(c), z=(0, 1, 0), x=(1, 0, 0))})
 
 
