@@ -1,12 +1,13 @@
-"""Folding chair: a steel, padded or wooden slatted folding chair whose seat folds up and front legs fold back.
+"""Folding chair: a steel, padded or wooden slatted folding chair whose seat folds up and rear legs scissor shut.
 
 Designs (``design``, sizes and sources in ``categories/parts/folding_chairs.py``): a ``metal`` folding chair
 (steel tube frames, a pressed-steel seat and a curved back panel), a ``padded`` one (the same with foam pads on
-its seat and back) and a ``wooden`` slatted one (hardwood bars,
-slats across the seat and the back). The back frame stands on its rear feet; the seat turns up about its rear
-edge (revolute about the horizontal across the chair) and carries the front leg frame, hinged under its front
-edge (revolute), up against the back; the legs' turn is coupled to the seat's (``Layout.couple``: one DoF, as the
-real linkage) so that they stay upright and the folded chair is flat.
+its seat and back) and a ``wooden`` slatted one (hardwood bars, slats across the seat and the back). The body is
+the two side members, each one piece from its front foot up into the back; the seat turns up about its top rear
+edge (revolute about the horizontal across the chair) until it stands in front of the back; the rear leg frame,
+hung under the seat on its top rail (revolute) and crossing the front legs in an X, turns back against the seat
+(``Layout.couple``: one DoF, as the real linkage) so that its feet close on the front feet and the folded chair
+is flat.
 
 X is the front (where the sitter faces), Y across, Z up.
 """
@@ -37,7 +38,7 @@ GRAMMAR = Grammar("folding_chair", {
     "seat": Node(label="seat"),
     "legs": Node(label="legs"),
 })
-"""All designs fold the same way: the seat up, the front legs back with it."""
+"""All designs fold the same way: the seat up, the rear legs forward under it."""
 
 MATERIALS = {"frame": "frame_finish", "foot": "rubber", "timber": "wood", "pad": "fabric"}
 SUBSTRATES = {"frame": ("frame_finish", {"painted": 7850.0}),  # painted steel tube
@@ -60,13 +61,14 @@ class FoldingChairLayout(Layout):
 
     def seat(self, node, c, body, slot, pad):
         seat = self.add("seat", "seat", C.seat(c, slot) + pad)
-        self.hinge(body, seat, C.seat_hinge(c), upper=C.SEAT_FOLDS)
+        self.hinge(body, seat, C.seat_hinge(c), upper=C.seat_folds(c))
         return seat
 
     def legs(self, node, c, body, slot, seat):
-        legs = self.add("legs", "legs", C.front_legs(c, slot, "foot"))
-        self.hinge(seat, legs, C.legs_hinge(c), upper=C.SEAT_FOLDS)
-        self.couple(legs, seat)  # they stay upright as the seat carries them up
+        legs = self.add("legs", "legs", C.rear_legs(c, slot, "foot"))
+        ratio = C.legs_ratio(c)
+        self.hinge(seat, legs, C.legs_hinge(c), upper=ratio * C.seat_folds(c))
+        self.couple(legs, seat, ratio)  # the X shuts as the seat lifts
 
 
 CATEGORY = Category("folding_chair", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, FoldingChairLayout,

@@ -7,8 +7,8 @@ meridian turns in the ring's notches about the front-to-back axis, revolute, rol
 The globe turns freely about its polar axis, 23.4 degrees from vertical, in its meridian (continuous, role
 ``turntable``).
 
-The map is printed: procedural continents (about 30 % land) in a land colour over an ocean colour, the equator and
-the tropics. X is the stand's front, Y across (the axis tilts towards +Y), Z up.
+The map is printed: the Earth's continents (Natural Earth 1:110m land) in a land colour over an ocean colour, the
+equator and the tropics. X is the stand's front, Y across (the axis tilts towards +Y), Z up.
 """
 
 from __future__ import annotations

@@ -101,7 +101,7 @@ class SuitcaseLayout(Layout):
             pieces += L.spinner_housings(s, self.tips, self.caster.stem_top, "trim")
         else:
             self.inline = L.inline_wheels(s.width, s.depth, p["wheel_radius"])
-            pieces += L.plinth(s, self.inline, self.shell, "trim")
+            pieces += L.plinth(s, self.inline, "trim", "trim")  # a black moulded bumper, as on soft uprights
         self.add("body", "body", pieces)
         self.grow(node.one(design))
 

@@ -29,7 +29,19 @@ DUMMY_INERTIA = 1e-6
 """kg m^2 on each principal axis of a dummy link."""
 
 MIN_MASS = 0.005
-"""kg; no link is lighter (a thin decoration would otherwise make solvers stiff)."""
+"""kg; no link is lighter (a thin decoration would otherwise make solvers stiff), except in a small
+object (:func:`link_floor`)."""
+
+SMALL_SHARE = 0.05
+"""A link of an object lighter than ``MIN_MASS / SMALL_SHARE`` (100 g) is floored at this share of the
+object's mass instead: a pen's 0.5 g push button or a USB drive's 1 g cap is a twentieth of its 10 g
+object, where a 5 g floor would make it half the object and fail its real mass; a twentieth keeps the
+ratio of the lightest link to the object that the 5 g floor keeps on a 100 g object."""
+
+
+def link_floor(object_mass: float) -> float:
+    """kg: the least mass of a link of an object of ``object_mass`` kg (its links before any floor)."""
+    return min(MIN_MASS, SMALL_SHARE * object_mass)
 
 MIN_INERTIA = DUMMY_INERTIA
 """kg m^2; no principal moment of a link is smaller."""
@@ -51,14 +63,14 @@ def wall_of(piece: Piece, family_wall: float = 0.0) -> float:
     return max(0.0, family_wall if piece.wall is None else piece.wall)
 
 
-def inertial(pieces: Iterable[tuple]) -> tuple[float, np.ndarray, np.ndarray]:
+def inertial(pieces: Iterable[tuple], min_mass: float = MIN_MASS) -> tuple[float, np.ndarray, np.ndarray]:
     """Mass (kg), centre of mass ``(3,)`` and inertia tensor ``(3, 3)`` about it.
 
     ``pieces`` yields ``(piece, density kg/m^3)`` or ``(piece, density, family wall m)`` in one
     common frame. Solids are the closed piece meshes, or their convex collision hulls where a
     mesh is open; hollow pieces (module docstring) are their shells.
     The tensor is made positive definite with a floor relative to its size and never below
-    ``MIN_INERTIA`` on a principal axis.
+    ``MIN_INERTIA`` on a principal axis; a link lighter than ``min_mass`` is scaled up to it.
     """
     masses, coms, tensors = [], [], []
     entries = [(e[0], e[1], wall_of(e[0], e[2] if len(e) > 2 else 0.0)) for e in pieces]
@@ -98,9 +110,9 @@ def inertial(pieces: Iterable[tuple]) -> tuple[float, np.ndarray, np.ndarray]:
     for m, c, t in zip(masses, coms, tensors):
         d = c - com
         inertia += t + m * (np.dot(d, d) * _EYE3 - d[:, None] * d[None, :])  # np.eye(3), np.outer
-    if total < MIN_MASS:
-        inertia *= MIN_MASS / total
-        total = MIN_MASS
+    if total < min_mass:
+        inertia *= min_mass / total
+        total = min_mass
     inertia = 0.5 * (inertia + inertia.T)
     floor = max(MIN_INERTIA, 1e-3 * float(np.trace(inertia)) / 3)
     w, v = np.linalg.eigh(inertia)

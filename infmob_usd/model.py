@@ -19,7 +19,7 @@ import numpy as np
 from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
-from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, wall_of
+from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, link_floor, wall_of
 from .measures import _measure_closed
 from .physical.passive import dynamics
 from .piece import Piece
@@ -252,10 +252,13 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
     # the closed meshes of every link measured as one batch (the same bits as link by link)
     _measure_closed([(p, wall_of(p, walls.get(p.material, 0.0)) > 0) for link in links if not link.dummy
                      for p in link.pieces])
-    for link in links:
-        if not link.dummy:
-            link.mass, link.com, link.inertia = inertial(
-                (p, densities[p.material], walls.get(p.material, 0.0)) for p in link.pieces)
+    solid = [link for link in links if not link.dummy]
+    raw = [inertial(((p, densities[p.material], walls.get(p.material, 0.0)) for p in link.pieces), 0.0)
+           for link in solid]
+    floor = link_floor(sum(r[0] for r in raw))
+    for link, r in zip(solid, raw):
+        link.mass, link.com, link.inertia = r if r[0] >= floor else inertial(
+            ((p, densities[p.material], walls.get(p.material, 0.0)) for p in link.pieces), floor)
     children: dict[str, list[str]] = {}
     for j in joints:
         children.setdefault(j.parent, []).append(j.child)

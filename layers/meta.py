@@ -60,15 +60,26 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                               " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
+    "phone": ("Q17517", "http://www.wikidata.org/entity/Q17517 'mobile phone' (a public Wikidata label table;"
+                        " no verified item for telephone: a desk phone takes the mobile's)"),
     "eyeglasses": ("Q1751850", "http://www.wikidata.org/entity/Q1751850 'optical instrument' (OEWN 03857800-n, the"
                                " hypernym of 04279164-n spectacles, which has no Wikidata link)"),
     "knife": ("Q390383", "http://www.wikidata.org/entity/Q390383 'pocketknife' (OEWN 03979986-n; a multi-tool"
                          " and a utility knife fold or retract their blades alike)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
+    "remote": ("Q185091", "http://www.wikidata.org/entity/Q185091 'remote control' (COCO)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
+    "camera": ("Q15328", "http://www.wikidata.org/entity/Q15328 'camera' (public Wikidata query scripts' tables:"
+                         " CAMERA_TYPE_QIDS {'Q15328': 'camera', 'Q178384': 'SLR'}, a retail category map 'cameras':"
+                         " 'Q15328' # camera)"),
+    "usb": ("Q1647694", "http://www.wikidata.org/entity/Q1647694 'USB flash drive' (a public Wikidata SPARQL quiz"
+                        " script's PRODUCTS table pairing it with 'the USB flash drive', beside Q5293 floppy disk and"
+                        " Q5294 DVD)"),
     "mouse": ("Q7987", "http://www.wikidata.org/entity/Q7987 'mouse' (COCO: 'hand-held device used to move a"
               " pointer on a computer display')"),
     "keyboard": ("Q1921606", "http://www.wikidata.org/entity/Q1921606 'keyboard' (COCO: 'data input device')"),
+    "lighter": ("Q20459", "http://www.wikidata.org/entity/Q20459 'lighter' (WN 03671917-n)"),
+    "pen": ("Q165447", "http://www.wikidata.org/entity/Q165447 'pen' (WN 03913116-n, OEWN)"),
     "stapler": ("Q489157", "http://www.wikidata.org/entity/Q489157 'stapler' (WN 04310635-n, OEWN)"),
     "toaster": ("Q14890", "http://www.wikidata.org/entity/Q14890 'toaster' (COCO)"),
     "toaster_oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO; no verified item for"

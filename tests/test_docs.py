@@ -25,8 +25,11 @@ DOCS = [README, ROOT / "CHANGELOG.md", *sorted((ROOT / "docs").glob("*.md"))]
 
 
 def category_table() -> list[str]:
-    """The README's category rows: each discovered category with the first line of its description."""
-    return [f"| `{n}` | {infmob_usd.get_category(n).doc.split(':', 1)[-1].strip()} |"
+    """The README's category rows: each discovered category with the first line of its description and the
+    dataset and benchmark categories it answers (:mod:`infmob_usd.answers`)."""
+    from infmob_usd.answers import answers
+
+    return [f"| `{n}` | {infmob_usd.get_category(n).doc.split(':', 1)[-1].strip()} | {answers(n) or '(ours)'} |"
             for n in infmob_usd.list_categories()]
 
 

@@ -205,7 +205,7 @@ def test_glb_is_a_valid_container_with_pbr_materials(written):
 
 
 def test_formats_table_and_parsing():
-    assert DEFAULT_FORMATS == ("usd", "urdf", "mjcf") and set(FORMATS) == {"usd", "urdf", "mjcf", "glb"}
+    assert DEFAULT_FORMATS == ("usd", "urdf", "mjcf") and set(FORMATS) == {"usd", "urdf", "mjcf", "glb", "isaac"}
     assert parse_formats("glb, URDF") == ("urdf", "glb")
     assert parse_formats(None) == DEFAULT_FORMATS
     for bad in ("usd,obj", "", [" "]):

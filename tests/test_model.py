@@ -135,3 +135,30 @@ def test_no_link_is_light_against_what_it_carries(category):
         for name, link in links.items():
             assert np.linalg.eigvalsh(link.inertia)[0] >= CHAIN_INERTIA_RATIO * below(name) * (1 - 1e-9), name
             assert np.allclose(link.inertia, link.inertia.T)
+
+
+def _button_on(body_side: float):
+    """Link masses of a cube body (side ``body_side`` m, 1000 kg/m^3) with a 0.5 g button on a slide."""
+    from infmob_usd import geometry as g
+    from infmob_usd.blueprint import Blueprint
+    from infmob_usd.model import build
+
+    bp = Blueprint("tiny", materials={"body": "plastic", "part": "plastic"})
+    s = body_side
+    bp.add("body", "body", [g.box([s, s, s], [0.0, 0.0, s / 2], "body")])
+    button = 0.0005 / 1000.0  # m^3 of a 0.5 g button at 1000 kg/m^3
+    side = button ** (1 / 3)
+    bp.add("button", "button", [g.box([side] * 3, [s / 2 + side, 0.0, s / 2], "part")])
+    bp.join(J.prismatic("body", "button", (s / 2, 0, s / 2), (-1, 0, 0), 0.0, 0.002, "button"))
+    links, _ = build(bp, {"body": 1000.0, "part": 1000.0})
+    return {link.name: link.mass for link in links}
+
+
+def test_a_small_objects_light_parts_keep_their_mass():
+    from infmob_usd.mass import MIN_MASS
+
+    pen = _button_on(0.0215)  # a 10 g object: its 0.5 g button stays near 0.5 g (floor: a twentieth of it)
+    assert pen["body"] == pytest.approx(0.01, rel=0.01)
+    assert pen["button"] == pytest.approx(0.0005, rel=0.1)
+    big = _button_on(0.1)  # a 1 kg object: the same button is floored at 5 g, as every link of one is
+    assert big["button"] == MIN_MASS

@@ -133,3 +133,54 @@ def test_a_key_over_a_stand_is_pressed_with_the_hand_turned_flat(tmp_path):
     [r] = robot.check_robot(folder)
     assert r.ok and "(slider_button): opened" in r.detail, r.detail
     assert len(robot.grasp_candidates(key)) > 2 * len(key["grasps"])  # turned and tilted ways in
+
+
+def test_an_oven_knob_under_the_grate_is_turned_with_the_wrist_wound_back(tmp_path):
+    """An oven's knobs on its backguard, 0.1 m over the hob's grate: turned a quarter in one hold from the
+    annotated grip (the hand's 0.2 m across the fingers level), the hand's body swings down into the grate.
+    Held wound back by half the turn (and let go and taken again past :data:`robot.REGRIP`), it opens."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("oven", 3, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    knob = next(t for t in targets if t["joint"] == "joint_knob_0")
+    _write(folder, [knob])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(hinge_knob): opened" in r.detail, r.detail
+    back = robot.wound_back(knob, knob["grasps"][0])
+    assert back is not None and back in robot.grasp_candidates(knob)
+    angle = math.acos(float(np.dot(back["closing"], knob["grasps"][0]["closing"])))
+    assert math.isclose(angle, min(knob["open"], robot.REGRIP) / 2, abs_tol=1e-6)
+    # turned away from the way the knob turns: the hand then sweeps either side of the annotated grip
+    assert float(np.dot(back["closing"], knob["direction"])) < 0
+
+
+def test_a_long_turn_is_made_in_holds_of_at_most_regrip(tmp_path, monkeypatch):
+    """A rotary dimmer between two others turns 300 degrees; in one hold the fingers slip off it. Taken
+    again and turned in holds of at most :data:`robot.REGRIP` (let go, turned back, taken again), it opens."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("switch", 3, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    dial = next(t for t in targets if t["joint"] == "joint_dimmer_0_1")
+    assert dial["open"] > 3 * robot.REGRIP
+    _write(folder, [dial])
+    regrips = []
+    real = robot.TurnMotion.regrip
+
+    def counted(self, run):
+        regrips.append(self.angle)
+        return real(self, run)
+
+    monkeypatch.setattr(robot.TurnMotion, "regrip", counted)
+    [r] = robot.check_robot(folder)
+    assert r.ok, r.detail
+    assert len(regrips) >= 3 and all(a < robot.REGRIP + robot.TURN_LEAD for a in regrips), regrips
+
+
+def test_a_pot_lid_is_lifted_by_its_loop(tmp_path):
+    """A pot lid with a loop handle sits on the rim with its edge over the pot's wall (the fingers cannot get
+    under it): the loop declares its grasp (from above, across the bar), which comes first and lifts it."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("pot", 3, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    lid = next(t for t in targets if t["joint"] == "joint_lid_0")
+    assert lid["handle_class"] == "line_fixed_handle" and lid["grasps"][0]["approach"] == [0.0, 0.0, -1.0]
+    _write(folder, [lid])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(slider_lid): opened" in r.detail, r.detail

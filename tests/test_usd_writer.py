@@ -125,10 +125,10 @@ def test_no_visual_mesh_has_two_points_at_one_place_and_no_face_is_lost(objects)
             source = {m[0]: m for m in visual_meshes(obj)[lname]}
             names = [m[0] for m in meshes]
             assert len(names) == len(set(names)), (obj.name, lname)
-            for name, slot, role, v, lo, hi, f, n, uv in meshes:
+            for name, _slot, _role, v, _lo, _hi, f, n, uv in meshes:
                 assert _colocated(v) == 0, (obj.name, lname, name)
                 assert len(n) == len(uv) == 3 * len(f) and f.max() < len(v)
-            for vname, _slot, _role, v, f, n, uv in source.values():
+            for vname, _slot, _role, v, f, _n, _uv in source.values():
                 parts = [m for m in meshes if m[0] == vname or m[0].startswith(vname + "_w")]
                 split += len(parts) > 1
                 assert sum(len(m[6]) for m in parts) == len(f), (obj.name, vname)

@@ -49,6 +49,26 @@ def _urdf_efforts(urdf: Path) -> dict[str, float]:
     return out
 
 
+def _gears(pb, cid: int, body: int, info: list, urdf: Path) -> None:
+    """PyBullet's URDF loader ignores ``<mimic>``: couple each hinge that follows a hinge with a gear constraint
+    (``JOINT_GEAR``; the links are world-aligned at rest, so the axes compare in world terms), as a user must, so that
+    a leader pushed with its effort drives its follower. A follower slide stays free (no gear for slides)."""
+    index = {f[1].decode(): i for i, f in enumerate(info)}
+    for j in ET.parse(urdf).getroot().iter("joint"):
+        m = j.find("mimic")
+        if m is None or j.get("type") != "revolute" or m.get("joint") not in index:
+            continue
+        lead, follow = index[m.get("joint")], index[j.get("name")]
+        if info[lead][2] != pb.JOINT_REVOLUTE:
+            continue
+        ratio = float(m.get("multiplier", "1"))
+        axis = np.asarray(info[lead][13], float)
+        c = pb.createConstraint(body, lead, body, follow, pb.JOINT_GEAR, axis.tolist(), [0, 0, 0], [0, 0, 0],
+                                physicsClientId=cid)
+        pb.changeConstraint(c, gearRatio=float(axis @ np.asarray(info[follow][13], float)) / ratio, maxForce=1e4,
+                            physicsClientId=cid)
+
+
 def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240,
                 opened: dict[str, list[str]] | None = None, from_upper: bool = False) -> list[Push]:
     """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode) towards
@@ -78,6 +98,7 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
         info = [pb.getJointInfo(body, i, physicsClientId=cid) for i in range(count)]
         moving = [i for i, f in enumerate(info) if f[2] in (pb.JOINT_REVOLUTE, pb.JOINT_PRISMATIC)]
         name = {i: info[i][1].decode() for i in moving}
+        _gears(pb, cid, body, info, urdf)
         limited = [i for i in moving if info[i][8] < info[i][9]]
         lo = np.array([info[i][8] for i in limited])
         hi = np.array([info[i][9] for i in limited])

@@ -1,12 +1,16 @@
-"""Folding chairs: the back frame that stands on its rear feet, the seat hinged at its rear, the front leg frame
-hinged under the seat's front, and what they are made of (steel tube and pressed steel, or hardwood bars and
-slats).
+"""Folding chairs: the side frames that run from the front feet up into the back (one bent tube or bar each
+side), the seat hinged to them at its rear, the rear leg frame hung under the seat and crossing the front legs
+in an X, and what they are made of (steel tube and pressed steel, or hardwood bars and slats).
 
-Built in world coordinates at rest, open, standing on z = 0, the sitter facing +X. The real chairs fold through a
-linkage (pins and a link between the seat and the legs); here it is two limited hinges that stay consistent: the
-seat turns up about its rear edge (the hinge across the chair at the back posts) and carries the front leg frame,
-hinged under its front edge, whose turn is coupled to the seat's (``Layout.couple``) so that the legs stay
-upright as they rise and fold in against the back frame.
+Built in world coordinates at rest, open, standing on z = 0, the sitter facing +X. As in the real chairs, the
+back posts and the front legs are one part (the body): each side member rises from its front foot, raked
+forward, bends under the seat's rear and leans back up into the back. The rear legs cross the front legs under
+the seat and carry its middle on their top rail. Folding is one motion: lifting the seat's front turns it about
+its rear edge until it stands against the back, in front of the back panel (the hinge is the seat's top rear
+edge, ahead of the back's face, so the folded seat never enters it); the rear legs, hinged under the seat, turn
+back against the seat's turn (``Layout.couple``: one DoF, as the real linkage) so that their feet swing forward
+under the chair and close on the front feet, the X scissoring shut. The real chair lifts off the floor as it
+folds; here the front feet stay down and the rear legs rise with the seat, never through the floor.
 
 Designs (real product types; sizes below with their sources):
 
@@ -51,25 +55,36 @@ DESIGNS = {
     "padded": Design((0.44, 0.47), (0.42, 0.47), (0.38, 0.42), (0.78, 0.84), (0.0125, 0.0125)),
     "wooden": Design((0.43, 0.46), (0.41, 0.45), (0.36, 0.40), (0.78, 0.84), (0.03, 0.02)),
 }
-SEAT_FOLDS = math.radians(85)  # the seat stands up against the back
-LEGS_RAKE = 0.012  # m, the front feet behind the legs' hinge
+# Side profile, in seat depths from the seat's middle (Cosco / Lifetime side views: the front feet under the
+# seat's front half, the rear feet behind the back, the back leaning back ~9 degrees, the X under the seat).
+KNEE = -0.45  # the side members' bend, under the seat's rear
+FRONT_FOOT = 0.55  # ahead of the bend
+BACK_LEAN = 0.16  # the back's top behind the bend
+REAR_FOOT = -0.30  # behind the bend
+REAR_TOP = 0.6  # the rear legs' top rail under the seat, from its rear edge
 GAP = 0.004  # m, between moving frames and what they pass
 SLATS = {"seat": (4, 6), "back": (2, 3)}  # slats of a wooden chair's seat and back (product photos)
 STEEL_SHEET = 0.0009  # m, a pressed-steel seat pan or back panel (20 ga)
+PAD = 0.025  # m, a padded chair's foam pad (1 in)
+BACK_FACE = {"metal": 0.002, "padded": 0.0155 + PAD / 2, "wooden": 0.006}  # the back's front ahead of its posts
 
 
 @dataclass(frozen=True)
 class Chair:
-    """Where a chair's parts go: the design, seat height ``hs``, half width ``hw`` (to the frames' centre
-    lines), seat depth ``sd``, back top ``ht``, the back posts' foot ``xr`` and top ``xt``, the bar sizes."""
+    """Where a chair's parts go: the design, seat height ``hs``, half width ``hw`` (to the side members' centre
+    lines), seat depth ``sd``, back top ``ht``, the side members' bend ``xk``, ``zk``, the back's top ``xt``,
+    the front feet ``xf`` and the rear feet ``xb``, the bar sizes."""
 
     design: str
     hs: float
     hw: float
     sd: float
     ht: float
-    xr: float
+    xk: float
+    zk: float
     xt: float
+    xf: float
+    xb: float
     bar: tuple[float, float]
 
     @property
@@ -78,13 +93,37 @@ class Chair:
         return self.design != "wooden"
 
     def post_x(self, z: float) -> float:
-        """The back posts' centre line at height ``z``."""
-        return self.xr + (self.xt - self.xr) * z / self.ht
+        """The back posts' centre line at height ``z`` (from the bend up)."""
+        return self.xk + (self.xt - self.xk) * (z - self.zk) / (self.ht - self.zk)
+
+    def front_x(self, z: float) -> float:
+        """The front legs' centre line at height ``z`` (from the floor to the bend)."""
+        return self.xf + (self.xk - self.xf) * z / self.zk
+
+    @property
+    def lean(self) -> float:
+        """The back's lean from the vertical (rad)."""
+        return math.atan2(self.xk - self.xt, self.ht - self.zk)
 
     @property
     def half_bar(self) -> float:
         """Half the bars' size across the chair (Y)."""
         return self.bar[0] if self.metal else self.bar[1] / 2
+
+    @property
+    def rear_hw(self) -> float:
+        """The rear legs' half width: just outside the side members and their feet caps."""
+        return self.hw + 2 * self.foot_r + GAP
+
+    @property
+    def foot_r(self) -> float:
+        """The feet caps' radius."""
+        return self.bar[0] + 0.002 if self.metal else 0.5 * max(self.bar) + 0.002
+
+    @property
+    def seat_hw(self) -> float:
+        """The seat's half width: just inside the side members."""
+        return self.hw - 2 * self.half_bar - GAP
 
 
 def chair(design: str, t: float, u: float) -> Chair:
@@ -95,8 +134,10 @@ def chair(design: str, t: float, u: float) -> Chair:
         return r[0] + f * (r[1] - r[0])
 
     hs, width, sd, ht = at(d.seat, t), at(d.width, t), at(d.depth, t), at(d.top, u)
-    xr, xt = -0.5 * sd, -0.58 * sd  # the back posts lean back ~5 degrees from their feet to the top
-    return Chair(design, hs, width / 2, sd, ht, xr, xt, d.bar)
+    xk = KNEE * sd
+    zk = hs - (0.02 if design != "wooden" else 0.04) - 0.03  # under the seat's rails
+    return Chair(design, hs, width / 2, sd, ht, xk, zk, xk - BACK_LEAN * sd, xk + FRONT_FOOT * sd,
+                 xk + REAR_FOOT * sd, d.bar)
 
 
 def bar(p0, p1, c: Chair, slot: str) -> g.Piece:
@@ -111,21 +152,24 @@ def bar(p0, p1, c: Chair, slot: str) -> g.Piece:
 
 
 def back_frame(c: Chair, slot: str, panel_slot: str, foot_slot: str) -> list[g.Piece]:
-    """The back posts from the rear feet to the top, the back panel (or slats) between them, a stretcher
-    across above the feet, the feet caps."""
+    """The side members from the front feet up through the bend into the back posts, the back panel (or slats)
+    between the posts, a stretcher across the front legs above the feet, the feet caps."""
     pieces = []
     for y in (-c.hw, c.hw):
-        pieces.append(bar((c.xr, y, 0.012), (c.xt, y, c.ht), c, slot))
-        pieces.append(_foot(c.xr, y, foot_slot, c))
+        knee = (c.xk, y, c.zk)
+        pieces.append(bar((c.xf, y, 0.012), knee, c, slot))
+        pieces.append(bar(knee, (c.xt, y, c.ht), c, slot))
+        if c.metal:  # the tube's bend
+            pieces.append(g.sphere(knee, c.bar[0], slot).replace(wall=0.0012))
+        pieces.append(_foot(c.xf, y, foot_slot, c))
     zs = 0.12
-    pieces.append(bar((c.post_x(zs), -c.hw + c.half_bar, zs), (c.post_x(zs), c.hw - c.half_bar, zs), c, slot))
+    pieces.append(bar((c.front_x(zs), -c.hw + c.half_bar, zs), (c.front_x(zs), c.hw - c.half_bar, zs), c, slot))
     pieces += _back(c, panel_slot)
     return pieces
 
 
 def _foot(x: float, y: float, slot: str, c: Chair) -> g.Piece:
-    r = c.bar[0] + 0.002 if c.metal else 0.5 * max(c.bar) + 0.002
-    return g.cylinder((x, y, 0.0), (x, y, 0.014), r, slot, None)
+    return g.cylinder((x, y, 0.0), (x, y, 0.014), c.foot_r, slot, None)
 
 
 def _back(c: Chair, slot: str) -> list[g.Piece]:
@@ -175,58 +219,97 @@ def _joined(pieces: list[g.Piece], slot: str) -> g.Piece:
     return g.Piece(np.vstack(verts), np.vstack(faces), slot, convex)
 
 
-def front_legs(c: Chair, slot: str, foot_slot: str) -> list[g.Piece]:
-    """The front leg frame, inside the back posts: two legs from under the seat's front down to the front feet
-    (splayed a little forward), a rail across under the seat's front (the seat rests on it) and a stretcher
-    above the feet."""
-    hw = c.hw - 2 * c.half_bar - GAP
-    xt, zt = legs_top(c)
-    xf = xt - LEGS_RAKE  # the feet a little behind the hinge: the legs hang against their rest stop
-    pieces = []
-    for y in (-hw, hw):
-        pieces.append(bar((xt, y, zt), (xf, y, 0.012), c, slot))
-        pieces.append(_foot(xf, y, foot_slot, c))
-    for z in (0.12, zt):
-        x = xt + (xf - xt) * (zt - z) / zt
-        pieces.append(bar((x, -hw + c.half_bar, z), (x, hw - c.half_bar, z), c, slot))
-    return pieces
-
-
-def legs_top(c: Chair) -> tuple[float, float]:
-    """Where the front legs' rail runs under the seat's front: x, z of its centre."""
-    return seat_x(c)[1] - 0.03, seat_z(c) - 0.4 * max(c.bar) - 0.006  # the bars' corners turn clear of the seat
-
-
-def legs_hinge(c: Chair) -> Frame:
-    """The front legs' hinge on the seat's front (their rail): a positive turn swings their feet back as much
-    as the seat lifts its front, so they stay upright while the seat carries them up against the back."""
-    xt, zt = legs_top(c)
-    return Frame.at((xt, 0.0, zt), z=(0, 1, 0), x=(1, 0, 0))
-
-
-def seat_x(c: Chair) -> tuple[float, float]:
-    x0 = c.post_x(c.hs) + c.half_bar + GAP
-    return x0, x0 + c.sd
-
-
 def seat_z(c: Chair) -> float:
     """The underside of the seat's rails."""
     return c.hs - (0.02 if c.metal else 0.04)
 
 
+def seat_top(c: Chair) -> float:
+    """The top of the seat (of its pad on a padded chair)."""
+    return c.hs + (PAD if c.design == "padded" else 0.0)
+
+
+def seat_x(c: Chair) -> tuple[float, float]:
+    """The seat's rear and front edges: the rear just ahead of the back's face, so that the seat, turned up
+    about its top rear edge, stands clear in front of the back."""
+    top = seat_top(c)
+    x0 = c.post_x(top) + (BACK_FACE[c.design] + GAP) / math.cos(c.lean)
+    return x0, x0 + c.sd
+
+
+def seat_folds(c: Chair) -> float:
+    """How far the seat turns up: until it stands parallel to the back (rad)."""
+    return math.pi / 2 - c.lean
+
+
 def seat_hinge(c: Chair) -> Frame:
-    """The seat's hinge at its rear edge's underside, across the chair; a positive turn lifts the seat's
-    front."""
-    return Frame.at((seat_x(c)[0], 0.0, seat_z(c)), z=(0, -1, 0), x=(1, 0, 0))
+    """The seat's hinge along its top rear edge, across the chair; a positive turn lifts the seat's front."""
+    return Frame.at((seat_x(c)[0], 0.0, seat_top(c)), z=(0, -1, 0), x=(1, 0, 0))
 
 
-PAD = 0.025  # m, a padded chair's foam pad (1 in)
+def legs_top(c: Chair) -> tuple[float, float]:
+    """Where the rear legs' top rail runs under the seat: x, z of its centre (the legs' hinge)."""
+    return seat_x(c)[0] + REAR_TOP * c.sd, seat_z(c) - c.half_bar - GAP
+
+
+def legs_hinge(c: Chair) -> Frame:
+    """The rear legs' hinge on their top rail under the seat: a positive turn swings their feet back, against
+    the seat's lift, so that they close forward on the front legs as the seat folds."""
+    xq, zq = legs_top(c)
+    return Frame.at((xq, 0.0, zq), z=(0, 1, 0), x=(1, 0, 0))
+
+
+def _turn(p, centre, a: float) -> np.ndarray:
+    """``p`` (x, z) turned by ``a`` about ``centre`` in the side view, +X towards +Z."""
+    d = np.subtract(p, centre)
+    ca, sa = math.cos(a), math.sin(a)
+    return np.array([centre[0] + ca * d[0] - sa * d[1], centre[1] + sa * d[0] + ca * d[1]])
+
+
+def rear_foot(c: Chair, s: float, ratio: float) -> np.ndarray:
+    """The rear feet (x, z) with the seat turned up ``s`` and the rear legs back ``ratio * s``."""
+    hinge = (seat_x(c)[0], seat_top(c))
+    return _turn(_turn((c.xb, 0.0), legs_top(c), -ratio * s), hinge, s)
+
+
+def legs_ratio(c: Chair) -> float:
+    """The rear legs' turn per unit of the seat's: the one that brings the rear feet onto the front legs when
+    the seat is folded (the X shut), found by bisection (the feet move back as the ratio grows)."""
+    lo, hi = 0.0, 2.0
+    for _ in range(50):
+        mid = (lo + hi) / 2
+        x, z = rear_foot(c, seat_folds(c), mid)
+        lo, hi = (mid, hi) if x > c.front_x(z) else (lo, mid)
+    return (lo + hi) / 2
+
+
+def rear_legs(c: Chair, slot: str, foot_slot: str) -> list[g.Piece]:
+    """The rear leg frame, just outside the side members: two legs from the top rail under the seat back down
+    to the rear feet (crossing the front legs), the top rail the seat rests on and a stretcher across just
+    above the X (below it the stretcher would meet the front legs as the X shuts)."""
+    hw = c.rear_hw
+    xq, zq = legs_top(c)
+    pieces = []
+    for y in (-hw, hw):
+        pieces.append(bar((xq, y, zq), (c.xb, y, 0.012), c, slot))
+        pieces.append(_foot(c.xb, y, foot_slot, c))
+    pieces.append(bar((xq, -hw, zq), (xq, hw, zq), c, slot))
+    if c.metal:  # the tube bent round from the rail into the legs
+        pieces += [g.sphere((xq, y, zq), c.bar[0], slot).replace(wall=0.0012) for y in (-hw, hw)]
+    zx = (c.xb - c.xf) / ((c.xk - c.xf) / c.zk - (xq - c.xb) / zq)  # where the legs cross
+    zs = zx + STRETCHER * (zq - zx)
+    x = c.xb + (xq - c.xb) * zs / zq
+    pieces.append(bar((x, -hw + c.half_bar, zs), (x, hw - c.half_bar, zs), c, slot))
+    return pieces
+
+
+STRETCHER = 0.3  # the rear legs' stretcher, from the X up to the top rail: it stays ahead of the front legs
 
 
 def pads(c: Chair, slot: str) -> tuple[list[g.Piece], list[g.Piece]]:
     """A padded chair's vinyl-covered foam pads: on the seat pan, and on the front of the back panel."""
     x0, x1 = seat_x(c)
-    hw = c.hw - 2 * c.half_bar - GAP
+    hw = c.seat_hw
     z = seat_z(c) + 0.02
     seat_pad = g.box_between((x0 + 0.004, -hw + 0.01, z), (x1 - 0.004, hw - 0.01, z + PAD), slot, bevel=0.01)
     z1 = c.ht - 0.03
@@ -239,9 +322,9 @@ def pads(c: Chair, slot: str) -> tuple[list[g.Piece], list[g.Piece]]:
 
 def seat(c: Chair, slot: str) -> list[g.Piece]:
     """The seat: a pressed-steel pan with a rolled front edge over two side rails, or slats across two wooden
-    rails; it lies on the front legs' rail."""
+    rails; it lies on the rear legs' top rail."""
     x0, x1 = seat_x(c)
-    hw = c.hw - 2 * c.half_bar - GAP
+    hw = c.seat_hw
     z = seat_z(c)
     if c.metal:
         pan = g.box_between((x0, -hw + 0.005, z + 0.012), (x1, hw - 0.005, z + 0.02), slot, bevel=0.003)

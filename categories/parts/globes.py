@@ -9,13 +9,14 @@ axis, the stand's front facing +x.
 * ``floor``: four legs carry a horizon ring at the globe's equator; the full meridian stands in two notches of the
   horizon ring (at +-y) and on a cradle under the globe, and turns in them about x (the tilt is set by hand).
 
-The map is printed: continents drawn from smooth noise on the sphere (a seeded sum of waves over its surface,
-about 30 % land, as the Earth's 29 %), raised 0.5 mm as a decoration over the ocean-coloured sphere; the equator
-and the two tropics are printed lines.
+The map is printed: the Earth's continents (Natural Earth's 1:110m land on a 1-degree grid, :mod:`.world_map`),
+raised 0.5 mm as a decoration over the ocean-coloured sphere, turned at rest to face the stand's front with the
+Americas, Europe and Africa, or Asia; the equator and the two tropics are printed lines.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -25,6 +26,8 @@ import trimesh
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
+
+from . import world_map
 
 TILT = math.radians(23.4)  # the Earth's axial tilt: every globe mounts its axis at it
 # Sizes (m). Desk globes: 20-32 cm spheres (Replogle 12 in "World Classic" 30 cm, 16-18 in tall; Waypoint
@@ -36,10 +39,9 @@ SHELL = 0.0025  # m, a globe's wall (a pressed-paper or moulded plastic sphere)
 GAP = 0.004  # m, the globe's clearance inside its meridian
 BAND = {"desk": (0.004, 0.012), "floor": (0.005, 0.018)}  # meridian's radial thickness, width across
 HORIZON = {"width": 0.06, "thick": 0.012, "notch": 0.006}  # a floor globe's horizon ring: band, its notches' play
-LAND = 0.3  # the share of the sphere that is land
 RAISE = 0.0005  # m, printed land and lines stand off the sphere (ink has no thickness; enough not to z-fight)
-WAVES = 24  # the noise the continents are drawn from: waves over the sphere, 2-8 per radian, weighted 1 / sqrt(freq)
-FREQ = (2.0, 8.0)
+MAP_DETAIL = 6  # icosphere subdivisions of the printed land: faces ~1.1 degrees across, as fine as the map
+FACING = (-75.0, 15.0, 105.0)  # longitudes (degrees E) at the front at rest: the Americas, Europe-Africa, Asia
 STRETCHER = 0.12  # m, a floor stand's stretchers' height from the floor
 MERIDIAN_SWING = {"desk": math.pi / 2, "floor": math.radians(30)}  # desk: turns on its stem; floor: tilt set
 
@@ -89,21 +91,48 @@ def sphere(gl: Globe, ocean: str, land: str, lines: str, rng: np.random.Generato
 
 
 def _continents(gl: Globe, slot: str, rng: np.random.Generator) -> g.Piece:
-    """Land: the faces of a fine sphere where a smooth random field over the sphere is in its top ``LAND`` share,
-    raised ``RAISE`` over the sphere, turned so that its poles are the globe's (one decoration piece)."""
-    ico = trimesh.creation.icosphere(subdivisions=5, radius=1.0)
+    """Land: the faces of a fine sphere whose centres fall on land in the world map (Natural Earth's 1:110m land,
+    :mod:`.world_map`), raised ``RAISE`` over the sphere, turned so that its poles are the globe's and, at rest, one
+    of :data:`FACING` faces the stand's front (drawn from ``rng``)."""
+    ico = trimesh.creation.icosphere(subdivisions=MAP_DETAIL, radius=1.0)
     v, f = np.asarray(ico.vertices), np.asarray(ico.faces)
-    dirs = rng.normal(size=(WAVES, 3))
-    dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
-    freq = rng.uniform(*FREQ, WAVES)
-    phase = rng.uniform(0, 2 * math.pi, WAVES)
     centre = v[f].mean(1)
-    face_field = (np.cos((centre @ dirs.T) * freq + phase) / np.sqrt(freq)).sum(1)
-    land = face_field > np.quantile(face_field, 1 - LAND)
+    lat = np.degrees(np.arcsin(np.clip(centre[:, 2] / np.linalg.norm(centre, axis=1), -1.0, 1.0)))
+    lon = np.degrees(np.arctan2(centre[:, 1], centre[:, 0])) + FACING[int(rng.integers(len(FACING)))]
+    land = _manifold(f, _land()[_cell(90.0 - lat, 180), _cell((lon + 180.0) % 360.0, 360)])
     used, faces = np.unique(f[land], return_inverse=True)
     turn = Frame.at(gl.centre, z=gl.axis, x=(1, 0, 0))
     verts = v[used] * (gl.radius + RAISE)
     return g.Piece(verts, faces.reshape(-1, 3), slot).transformed(turn.matrix)
+
+
+def _manifold(f: np.ndarray, land: np.ndarray) -> np.ndarray:
+    """``land`` grown until no vertex joins two patches by a corner alone (four or more coast edges meet
+    there): each such vertex's faces all become land, so the printed land is a manifold surface."""
+    for _ in range(20):
+        tri = f[land]
+        edges = np.sort(np.r_[tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]], axis=1)
+        uniq, count = np.unique(edges, axis=0, return_counts=True)
+        coast = np.bincount(uniq[count == 1].ravel(), minlength=f.max() + 1)
+        pinched = coast > 2
+        if not pinched.any():
+            break
+        land = land | pinched[f].any(axis=1)
+    return land
+
+
+def _cell(deg: np.ndarray, n: int) -> np.ndarray:
+    return np.clip((deg / world_map.RES).astype(int), 0, n - 1)
+
+
+@functools.cache
+def _land() -> np.ndarray:
+    """The world map as (180, 360) booleans, row 0 at 90 N, column 0 at 180 W."""
+    rows = []
+    for line in world_map.ROWS:
+        runs = [int(n) for n in line.split()]
+        rows.append(np.repeat(np.arange(len(runs)) % 2 == 1, runs))
+    return np.array(rows)
 
 
 def _graticule(gl: Globe, slot: str) -> list[g.Piece]:

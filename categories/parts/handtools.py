@@ -419,8 +419,7 @@ def stapler_base(s: Stapler, body: str, steel: str, pad: str) -> Assembly:
     d, L, W = s.design, s.length, s.design.width
     pieces = [_bar(0.0, L, W, d.base - 0.0015, 0.0015, body, 0.003, "base"),
               _bar(0.004, L - 0.004, W - 0.004, 0.0015, 0.0, pad, 0.0006, "pad")]
-    front = L - 0.012
-    pieces.append(g.box_between((front - 0.016, -0.006, d.base - 1e-4), (front, 0.006, d.base + 0.0012), steel))
+    pieces += _anvil(L - 0.012, d.base, steel, pad)
     for side in (-1, 1):  # cheeks outside the arm's ears
         y0, y1 = sorted((side * 0.44 * W, side * W / 2))
         pieces.append(hull([(x, y, z) for x in (0.0, 0.024) for y in (y0, y1) for z in (d.base - 0.001,
@@ -434,26 +433,71 @@ def stapler_magazine(s: Stapler, steel: str, body: str) -> Assembly:
     d, L = s.design, s.length
     w = 0.5 * d.width
     top = s.deck + d.magazine + 0.0003  # under the arm
-    pieces = [_bar(0.006, L - 0.01, w, d.magazine, s.deck, steel, 0.001, "channel").replace(sheet=0.0009),
-              # the driver housing over the anvil: the magazine's front cap, pulled to load
-              _bar(L - 0.0105, L + 0.002, 1.1 * w, top - s.deck + 0.0015, s.deck - 0.0015, body, 0.002, "nose")]
+    pieces = _channel(s, 0.006, L - 0.01, w, steel, body) + [
+        # the driver housing over the anvil: the magazine's front cap, pulled to load
+        _bar(L - 0.0105, L + 0.002, 1.1 * w, top - s.deck + 0.0015, s.deck - 0.0015, body, 0.002, "nose")]
     slide = Frame.at((L + 0.002, 0.0, s.deck + d.magazine / 2), z=(1, 0, 0))  # pulled out of the front to load
     return Assembly.single("magazine", pieces, {"pin": Frame.at(s.pin, z=(0, -1, 0)), "slide": slide})
 
 
 def stapler_arm(s: Stapler, body: str) -> Assembly:
-    """The top arm (the cap a hand presses): arched along its length, its rear ears round the pin outside the
-    magazine."""
+    """The top arm (the cover a hand presses): an arched cap along its length with side skirts down over the
+    magazine (a real cover hides the channel: opened, it reads as a shell), its rear ears round the pin outside
+    the magazine."""
     d, L, W = s.design, s.length, s.design.width
     z0 = s.deck + d.magazine + 0.0008
     def arch(t: float) -> float:  # highest a third of the way along, lowest over the nose
         return d.arm * (0.7 + 0.3 * math.sin(math.pi * min(1.0, 1.2 * t)))
 
-    top = _bar(0.002, L + 0.002, lambda t: 0.86 * W * (1 - 0.12 * t), arch, z0, body, 0.35 * d.arm, "arm", n=12)
-    pieces = [top]
+    def half(t: float) -> float:  # the cap narrows a little to its nose
+        return 0.43 * W * (1 - 0.12 * t)
+
+    top = _bar(0.002, L + 0.002, lambda t: 2 * half(t), arch, z0, body, 0.35 * d.arm, "arm", n=12)
+    pieces = [top] + [_skirt(s, side, half, z0 + 0.3 * d.arm, body) for side in (-1, 1)]
     for side in (-1, 1):
         y0, y1 = sorted((side * (0.25 * W + 0.0012), side * 0.42 * W))
         ear = [(x, y, z) for x in (0.003, 0.022) for y in (y0, y1) for z in (s.pin[2] - 0.004, z0 + 0.001)]
         pieces.append(hull(ear, body, "ear"))
     return Assembly.single("arm", pieces, {"pin": Frame.at(s.pin, z=(0, -1, 0)),
                                            "closing": Frame.at(s.pin, z=(0, 1, 0))})
+
+
+SKIRT = 0.0015  # m, a cover's side skirt (1-1.5 mm pressed steel or 1.5-2 mm moulded plastic)
+STAPLES = (0.6, 0.0055)  # a staple strip's width (share of the channel's) and height (m): 26/6 staples, 12.7 x 6 mm
+
+
+def _skirt(s: Stapler, side: int, half, z1: float, body: str) -> g.Piece:
+    """One side skirt of the cover, inside its cap's edge, from behind the base's cheeks to the nose, down
+    to just above the magazine's underside."""
+    L = s.length
+    xs = np.linspace(0.026, L, 8)
+    ys = [side * (half((x - 0.002) / L) - SKIRT / 2 - 0.0008) for x in xs]
+    z0 = s.deck + 0.001
+    sec = rrect(SKIRT, z1 - z0, 0.0005, z0)
+    return sweep(np.c_[xs, ys], sec, body, group=7, name="skirt")  # a solid plate
+
+
+def _channel(s: Stapler, x0: float, x1: float, w: float, steel: str, body: str) -> list[g.Piece]:
+    """The staple channel: a U of chromed sheet (floor and two walls, massed as their sheet) with a strip of
+    staples along it and the pusher (follower) that drives the strip forward, at its rear."""
+    d = s.design
+    t = 0.0009  # 20 ga sheet
+    floor = _bar(x0, x1, w, t, s.deck, steel, 0.0003, "channel").replace(sheet=t)
+    walls = [g.box_between((x0, y0, s.deck), (x1, y0 + t, s.deck + d.magazine), steel).replace(sheet=t)
+             for y0 in (-w / 2, w / 2 - t)]
+    sw, sh = STAPLES[0] * w, min(STAPLES[1], d.magazine - t - 0.0005)
+    pusher = 0.018
+    strip = g.box_between((x0 + pusher + 0.002, -sw / 2, s.deck + t), (x1 - 0.002, sw / 2, s.deck + t + sh), steel,
+                          bevel=0.0003).replace(wall=0.0003)  # the wire's section, not a solid block
+    follower = g.box_between((x0 + 0.002, -sw / 2, s.deck + t), (x0 + pusher, sw / 2, s.deck + t + sh), body,
+                             bevel=0.001).replace(wall=0.001)
+    return [floor, *walls, strip, follower]
+
+
+def _anvil(front: float, z: float, steel: str, pad: str) -> list[g.Piece]:
+    """The anvil under the driver: a chromed plate on the base with its two crimp grooves (where the staple's
+    legs are bent in)."""
+    plate = _bar(front - 0.02, front, 0.016, 0.0012, z - 1e-4, steel, 0.004, "anvil")
+    grooves = [g.box_between((front - 0.015, y - 0.0012, z + 0.0011), (front - 0.005, y + 0.0012, z + 0.0013), pad)
+               for y in (-0.003, 0.003)]
+    return [plate, *grooves]

@@ -344,19 +344,17 @@ def plinth_height(radius: float) -> float:
 
 
 def plinth(s: CaseSize, w: Inline, material: str, trim: str) -> list[g.Piece]:
-    """A two-wheeler's base under the shell, covered as the shell (``material``, massed as its sheet): a block
-    with a well for each wheel at the back corners, hoods over the wells, and two front feet in ``trim``; it
-    stands ``SKID`` off the ground on the feet and the wheels."""
+    """A two-wheeler's base under the shell: a moulded bumper (``material``, massed as its sheet) with a well
+    for each wheel at the back corners, open to the side and the back so the wheels show (hoods over them), and
+    two front feet in ``trim``; it stands ``SKID`` off the ground on the feet and the wheels."""
     hx, hy, top = s.depth / 2, s.width / 2 - 0.002, s.z0 - GAP
     xf = w.x + w.radius + GAP  # the wells' front
-    yi, yo = w.y - w.width / 2 - GAP, w.y + w.width / 2 + GAP
+    yi = w.y - w.width / 2 - GAP
     well = 2 * w.radius + GAP
     pieces = [g.box_between((xf, -hy, SKID), (hx - 0.004, hy, top), material, bevel=0.012),
               g.box_between((-hx + 0.004, -yi, SKID), (xf + 0.01, yi, top), material, bevel=0.008)]
     for sy in (-1, 1):
-        y0, y1 = sorted((sy * yo, sy * hy))
-        pieces.append(g.box_between((-hx + 0.004, y0, SKID), (xf + 0.01, y1, top), material, bevel=0.004))
-        y0, y1 = sorted((sy * yi, sy * yo))
+        y0, y1 = sorted((sy * yi, sy * hy))
         pieces.append(g.box_between((-hx + 0.004, y0, well), (xf, y1, top), material, bevel=0.002))
     pieces = [pc.replace(sheet=s.sheet) for pc in pieces]
     for sy in (-1, 1):

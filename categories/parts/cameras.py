@@ -1,0 +1,350 @@
+"""Cameras standing on their base plate: a DSLR with a zoom lens, a compact with a telescoping lens, an
+instant camera.
+
+Local frame: the camera stands on z = 0, its lens along +x, its back (the screen, the film door) at x = 0,
+centred on y = 0; a hand holds the grip at -y (the camera's right, seen from behind). Sizes from the
+products named beside each figure; moving parts keep :data:`GAP` from what carries them, and what turns
+about the lens axis or slides along it is a hollow tube (a wall of revolution) so the parts nest.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from infmob_usd import geometry as g
+from infmob_usd.assembly import Assembly
+from infmob_usd.frames import Frame
+from infmob_usd.grasps import Grasp
+from infmob_usd.physical import MIN_HULL_WIDTH
+
+from .handtools import hull
+from .usb import slab
+
+SPAN = 0.003  # m, the least length of a rounded block's collision piece (no end sliver for the core to widen)
+GAP = 0.0004  # m, between a moving part and its carrier (moulded barrels, rings and doors: 0.2-0.5 mm)
+WALL = MIN_HULL_WIDTH  # m, a barrel's or a door's wall (1.5-2 mm moulded polycarbonate)
+
+
+@dataclass(frozen=True)
+class CameraDesign:
+    """One kind of camera (metres): body width (y), height (z) and depth (x, lens and grip excluded), the
+    lens's radius and length at rest and how far it extends, the shutter button's radius."""
+
+    width: tuple[float, float]
+    height: tuple[float, float]
+    depth: tuple[float, float]
+    lens: tuple[float, float]  # radius range
+    length: float  # lens length out of the body at rest (DSLR: the whole zoom lens)
+    travel: float  # how far the lens (each stage) extends
+    shutter: float
+
+
+DESIGNS = {
+    # Canon EOS 250D 122.4 x 92.6 x 69.8 mm (grip included), 449 g with battery; Nikon D3500 124 x 97 x 69.5 mm,
+    # 415 g; EF-S 18-55 mm f/4-5.6 IS STM 66.5 mm across, 61.8 mm long, extends ~20 mm at 55 mm
+    "dslr": CameraDesign((0.120, 0.135), (0.090, 0.102), (0.048, 0.056), (0.031, 0.036), 0.062, 0.020, 0.0045),
+    # Sony RX100 III 101.6 x 58.1 x 41 mm, 290 g; Canon PowerShot SX620 HS 97 x 57 x 28 mm, 182 g: a lens in two
+    # telescoping stages, ~12 mm each at full zoom
+    "compact": CameraDesign((0.096, 0.110), (0.056, 0.064), (0.030, 0.042), (0.017, 0.022), 0.0025, 0.011, 0.0038),
+    # Fujifilm Instax Mini 12 104 x 122 x 66.6 mm, 306 g; Polaroid Now 150 x 112 x 94 mm, 457 g: the lens barrel
+    # pops out ~12 mm to switch on
+    "instant": CameraDesign((0.104, 0.118), (0.112, 0.124), (0.060, 0.072), (0.026, 0.031), 0.004, 0.012, 0.0055),
+}
+"""Designs -> sizes (maker data sheets named beside each)."""
+
+ZOOM_TURN = math.radians(75.0)  # the zoom ring's throw, 18 to 55 mm (EF-S 18-55, AF-P 18-55: 70-80 degrees)
+SHUTTER_TRAVEL = 0.0012  # m, half-press and full press of a shutter button (~0.5 + 0.7 mm)
+SCREEN_TILT = math.radians(175.0)  # a tilting screen turns up to face the front for selfies (Sony RX100 III+)
+DOOR_OPENS = math.radians(100.0)  # a side card door or a film door on its hinge
+GRIP_OUT = 0.019  # m, a DSLR grip stands out of the body's front (EOS 250D: 69.8 mm deep overall, ~50 mm body)
+
+
+@dataclass(frozen=True)
+class Camera:
+    design: str
+    width: float
+    height: float
+    depth: float
+    lens: float  # radius
+    round: float  # 0-1: from crisp to soft edges
+    reach: float = 1.0  # a DSLR lens's length and zoom travel over the kit zoom's (1.5: an 18-135 mm)
+
+    @property
+    def length(self) -> float:
+        return self.d.length * self.reach
+
+    @property
+    def travel(self) -> float:
+        return self.d.travel * self.reach
+
+    @property
+    def d(self) -> CameraDesign:
+        return DESIGNS[self.design]
+
+    @property
+    def edge(self) -> float:
+        return (0.06 + (0.1 if self.design == "dslr" else 0.18) * self.round) * min(self.depth, self.height)
+
+    @property
+    def axis(self) -> tuple[float, float]:
+        """(y, z) of the lens axis: centred over the base high enough to clear the table."""
+        y = 0.06 * self.width if self.design == "dslr" else (0.18 * self.width if self.design == "compact" else 0.0)
+        z = self.lens + 0.004 if self.design == "dslr" else (0.5 * self.height if self.design == "compact"
+                                                               else 0.42 * self.height)
+        return y, max(z, self.lens + 0.004)
+
+    @property
+    def grip(self) -> tuple[float, float]:
+        """A DSLR grip's width (y) and how far it stands out of the front (x)."""
+        return 0.26 * self.width, GRIP_OUT
+
+
+def camera(design: str, size: float, shape: float, roundness: float, reach: float = 1.0) -> Camera:
+    d = DESIGNS[design]
+    lerp = lambda r, t: r[0] + t * (r[1] - r[0])  # noqa: E731
+    return Camera(design, lerp(d.width, size), lerp(d.height, shape), lerp(d.depth, 1 - shape), lerp(d.lens, size),
+                  roundness, reach if design == "dslr" else 1.0)
+
+
+# -- helpers ----------------------------------------------------------------------------------------
+def along_lens(c: Camera, piece: g.Piece) -> g.Piece:
+    """A piece made about +z (a revolve or a shell, z along the lens) turned onto the lens axis (+x)."""
+    y, z = c.axis
+    return piece.transformed(Frame.at((0.0, y, z), z=(1, 0, 0), x=(0, 0, 1)).matrix)
+
+
+def tube(c: Camera, r: float, x0: float, x1: float, thick: float, material: str, name: str) -> g.Piece:
+    """A hollow tube about the lens axis from x0 to x1, outer radius ``r``."""
+    # 24 wedges round: a wedge's inner face is a chord, 0.2-0.3 mm inside a 30 mm bore (8 would be 2 mm)
+    return along_lens(c, g.shell([(r, x0), (r, x1)], thick, material, convex_sectors=24, name=name))
+
+
+def lens_axis(c: Camera, x: float) -> Frame:
+    y, z = c.axis
+    return Frame.at((x, y, z), z=(1, 0, 0))
+
+
+def _front_glass(c: Camera, r: float, x: float, rim: str, glass: str) -> list[g.Piece]:
+    """The front of a lens: a rim ring and the front element just behind it, in a dark throat."""
+    y, z = c.axis
+    return [tube(c, r, x - 0.003, x, 0.18 * r, rim, "rim"),
+            g.cylinder((x - 0.004, y, z), (x - 0.0025, y, z), 0.84 * r, glass, name="element")]
+
+
+def box_pts(lo, hi) -> np.ndarray:
+    return np.array([(a, b, e) for a in (lo[0], hi[0]) for b in (lo[1], hi[1]) for e in (lo[2], hi[2])])
+
+
+# -- bodies ----------------------------------------------------------------------------------------
+def _shell_body(c: Camera, body: str, bore: float, bore_depth: float) -> g.Piece:
+    """The body's rounded block, colliding as boxes round a square bore (``bore`` half side, ``bore_depth``
+    deep from the front) where a lens retracts into it."""
+    w, h, d = c.width, c.height, c.depth
+    visual = slab(0.0, d, w, h, 0.0, c.edge, c.edge, c.edge, body, "body", wall=0.0, span=SPAN)
+    if bore <= 0:
+        return visual
+    y, z = c.axis
+    x0 = d - bore_depth
+    cells = [((0.0, -w / 2, 0.0), (x0, w / 2, h)),
+             ((x0, -w / 2, 0.0), (d, y - bore, h)), ((x0, y + bore, 0.0), (d, w / 2, h)),
+             ((x0, y - bore, 0.0), (d, y + bore, z - bore)), ((x0, y - bore, z + bore), (d, y + bore, h))]
+    return visual.replace(convex=[box_pts(lo, hi) for lo, hi in cells])
+
+
+def dslr_body(c: Camera, body: str, grip: str, metal: str, lens: str, screen: str | None) -> Assembly:
+    """A DSLR body: the block, the hand grip, the pentaprism hump with the hot shoe, the lens mount and the
+    fixed rear barrel of the lens (the zoom ring and the inner barrel are parts of their own), a fixed screen
+    unless it tilts."""
+    w, h, d = c.width, c.height, c.depth
+    gw, gd = c.grip
+    y, z = c.axis
+    pieces = [_shell_body(c, body, 0.0, 0.0),
+              slab(d - 0.012, d + gd, gw, 0.92 * h, 0.0, 0.2 * gw, 0.25 * gw, 0.45 * gd, grip, "grip", wall=0.0,
+                   span=SPAN).translated((0.0, -w / 2 + gw / 2, 0.0))]
+    ph = 0.2 * h
+    pieces.append(hull(np.vstack([box_pts((0.18 * d, y - 0.18 * w, h - 0.004), (0.92 * d, y + 0.18 * w, h)),
+                                  box_pts((0.3 * d, y - 0.13 * w, h + ph - 0.001), (0.72 * d, y + 0.13 * w, h + ph))]),
+                       body, "prism"))
+    pieces.append(g.box_between((0.35 * d, y - 0.011, h + ph), (0.65 * d, y + 0.011, h + ph + 0.002), metal,
+                                name="hot_shoe"))
+    r = c.lens
+    mount = tube(c, r + 0.004, d - 0.001, d + 0.006, 0.006, metal, "mount")
+    barrel = tube(c, r, d + 0.006, d + c.length * 0.45, 0.004, lens, "barrel")
+    pieces += [mount, barrel, g.cylinder((d + 0.002, y, z), (d + 0.004, y, z), r - 0.004, body, name="throat")]
+    if screen:
+        pieces += _screen_pieces(c, -0.0005, screen, body)
+    return Assembly.single("body", pieces, {"shutter": Frame.at((d + 0.5 * gd - 0.006, -w / 2 + 0.5 * gw, 0.92 * h)),
+                                            "dial": Frame.at((0.5 * d, 0.34 * w, h))})
+
+
+def _screen_pieces(c: Camera, x_back: float, screen: str, frame: str) -> list[g.Piece]:
+    """A rear screen lying on the back (x from ``x_back`` back by its frame): a dark frame and the panel."""
+    sw, sh = 0.62 * c.width, 0.56 * c.height
+    y0 = 0.12 * c.width if c.design != "instant" else 0.0
+    z0 = 0.12 * c.height
+    t = WALL + 0.004
+    return [slab(x_back - t, x_back, sw, sh, z0, 0.002, 0.002, 0.0005, frame, "screen_frame", wall=0.0, span=SPAN)
+            .translated((0.0, -y0, 0.0)),
+            g.box_between((x_back - t - 2e-4, -y0 - 0.44 * sw, z0 + 0.07 * sh), (x_back - t + 1e-4, -y0 + 0.44 * sw,
+                                                                                 z0 + 0.93 * sh), screen,
+                          name="lcd").replace(convex=())]
+
+
+def compact_body(c: Camera, body: str, metal: str, stages: int) -> Assembly:
+    """A compact's block with the lens collar round the bore its ``stages`` telescoping barrels retract into."""
+    d = c.depth
+    r = c.lens
+    w, h = c.width, c.height
+    pieces = [_shell_body(c, body, r + GAP, bore_depth(c, stages)),
+              tube(c, r + 0.004, d - 0.001, d + c.length, 0.004 - 2 * GAP, metal, "collar"),
+              # the pop-up flash's window and the AF-assist lamp at the top corner away from the lens
+              g.box_between((d - 0.001, -0.42 * w, 0.74 * h), (d + 0.0008, -0.2 * w, 0.88 * h), "flash", bevel=0.0006,
+                            name="flash"),
+              g.cylinder((d - 0.001, -0.12 * w, 0.8 * h), (d + 0.0008, -0.12 * w, 0.8 * h), 0.0022, "lamp",
+                         name="lamp")]
+    return Assembly.single("body", pieces, {"shutter": Frame.at((0.5 * d, -0.32 * w, h)),
+                                            "dial": Frame.at((0.5 * d, -0.12 * w, h))})
+
+
+def bore_depth(c: Camera, stages: int) -> float:
+    """How deep the lens's stages reach into the body at rest."""
+    return min(c.depth - 0.006, c.travel + 0.004 + 0.002 * stages)
+
+
+def instant_body(c: Camera, body: str, trim: str, glass: str, stages: int) -> Assembly:
+    """An instant camera's block: the lens collar round the bore the barrel pops out of, the viewfinder
+    window and the flash window on the front, the film slot on top."""
+    w, h, d = c.width, c.height, c.depth
+    y, z = c.axis
+    r = c.lens
+    pieces = [_shell_body(c, body, r + GAP, bore_depth(c, stages)),
+              tube(c, r + 0.006, d - 0.001, d + c.length, 0.006 - GAP, trim, "collar"),
+              g.box_between((d - 0.001, 0.22 * w, 0.80 * h), (d + 0.0015, 0.40 * w, 0.90 * h), glass, bevel=0.0006,
+                            name="viewfinder"),
+              g.box_between((d - 0.001, -0.42 * w, 0.78 * h), (d + 0.0015, -0.12 * w, 0.92 * h), "flash",
+                            bevel=0.0008, name="flash"),
+              g.box_between((0.3 * d, -0.32 * w, h - 5e-4), (0.62 * d, 0.32 * w, h + 1e-4), trim,
+                            name="film_slot").replace(convex=())]
+    del y, z
+    return Assembly.single("body", pieces, {"shutter": Frame.at((d, -0.36 * w, 0.7 * h), z=(1, 0, 0), x=(0, 0, 1))})
+
+
+# -- moving parts ------------------------------------------------------------------------------------
+def zoom_ring(c: Camera, rubber: str) -> Assembly:
+    """A DSLR lens's ribbed zoom ring on the rear barrel (turns about the lens axis, +x)."""
+    d, r = c.depth, c.lens
+    x0, x1 = d + c.length * 0.45 + GAP, d + c.length * 0.8
+    ring = tube(c, r + 0.0015, x0, x1, 0.005, rubber, "zoom_ring")
+    y, z = c.axis
+    ribs = []
+    for k in range(28):
+        a = 2 * math.pi * k / 28
+        cy, cz = y + (r + 0.0015) * math.cos(a), z + (r + 0.0015) * math.sin(a)
+        ribs.append(g.box_between((x0 + 0.002, cy - 0.0008, cz - 0.0008), (x1 - 0.002, cy + 0.0008, cz + 0.0008),
+                                  rubber).replace(convex=()))
+    top = np.array([(x0 + x1) / 2, y, z + r + 0.0015])
+    ring = ring.with_grasps(Grasp.make(top, (0, 0, -1), (1, 0, 0), x1 - x0, 0.004))
+    return Assembly.single("zoom_ring", [ring, *_merged(ribs, rubber, "ribs")], {"axis": lens_axis(c, x0)})
+
+
+def _merged(pieces: list[g.Piece], material: str, name: str) -> list[g.Piece]:
+    """Decoration pieces as one mesh (no collision)."""
+    v, f, n = [], [], 0
+    for p in pieces:
+        v.append(p.vertices)
+        f.append(p.faces + n)
+        n += len(p.vertices)
+    return [g.Piece(np.vstack(v), np.vstack(f), material, (), name)]
+
+
+def inner_barrel(c: Camera, body: str, rim: str, glass: str) -> Assembly:
+    """A DSLR lens's inner barrel: it slides out of the ring's front as the ring zooms in (+x)."""
+    d, r = c.depth, c.lens
+    x_front = d + c.length
+    back = d + c.length * 0.45 - c.travel  # inside the rear barrel, clear of the mount's throat
+    pieces = [tube(c, r - 0.0045 - GAP, back, x_front - 0.003, WALL, body, "inner_barrel"),
+              *_front_glass(c, r - 0.0045 - GAP, x_front, rim, glass)]
+    return Assembly.single("barrel", pieces, {"slide": lens_axis(c, x_front)})
+
+
+def lens_stage(c: Camera, k: int, stages: int, body: str, rim: str, glass: str) -> Assembly:
+    """Stage ``k`` (0 outermost) of a telescoping lens: a tube nested in the last, standing 2 mm further out
+    at rest, the front element on the innermost; anchor ``slide`` (+x)."""
+    r = c.lens - k * (WALL + GAP)
+    front = c.depth + c.length + 0.002 * (k + 1)
+    back = c.depth - bore_depth(c, stages) + GAP * (k + 1) + 0.0015 * k
+    pieces = [tube(c, r, back, front - (0.003 if k == stages - 1 else 0.0008), WALL, body, "stage")]
+    if k == stages - 1:
+        pieces += _front_glass(c, r, front, rim, glass)
+        y, z = c.axis
+        pieces.append(g.cylinder((front - 0.006, y, z), (front - 0.005, y, z), r - WALL, rim, name="throat"))
+    else:
+        pieces.append(tube(c, r, front - 0.0008, front, WALL + 0.0006, rim, "stage_rim"))
+    return Assembly.single("barrel", pieces, {"slide": lens_axis(c, front)})
+
+
+def shutter(c: Camera, metal: str) -> Assembly:
+    """The shutter button in its collar (pressed along the ``press`` anchor's z)."""
+    r = c.d.shutter
+    cap = g.cylinder((0, 0, SHUTTER_TRAVEL + GAP), (0, 0, SHUTTER_TRAVEL + GAP + 0.0022), r, metal, name="button")
+    cap = cap.with_grasps(Grasp.make((0, 0, SHUTTER_TRAVEL + GAP + 0.0022), (0, 0, -1), (1, 0, 0), 2 * r, 0.001))
+    return Assembly.single("shutter", [cap], {"mount": Frame.at((0, 0, 0)), "press": Frame.at(
+        (0, 0, 0), z=(0, 0, -1))})
+
+
+def shutter_collar(c: Camera, trim: str) -> g.Piece:
+    """The collar round a shutter button (its carrier's piece, in the button's frame)."""
+    r = c.d.shutter
+    return g.shell([(r + GAP + 0.0016, -0.0005), (r + GAP + 0.0016, SHUTTER_TRAVEL + GAP + 0.0012)], 0.0016, trim,
+                   name="collar")
+
+
+def mode_dial(c: Camera, metal: str, mark: str) -> Assembly:
+    """A knurled mode dial standing on the top plate (turns about +z); frame ``mount`` at its foot."""
+    r = 0.011 if c.design == "dslr" else 0.0075
+    hgt = 0.0065 if c.design == "dslr" else 0.0045
+    knurl = g.cylinder((0, 0, GAP), (0, 0, GAP + hgt), r, metal, sections=40, name="dial")
+    top = g.box_between((0.45 * r, -0.0006, GAP + hgt - 1e-4), (0.9 * r, 0.0006, GAP + hgt + 2e-4), mark,
+                        name="index").replace(convex=())
+    knurl = knurl.with_grasps(Grasp.make((0, 0, GAP + hgt), (0, 0, -1), (0, 1, 0), 2 * r, 0.6 * hgt))
+    return Assembly.single("dial", [knurl, top], {"mount": Frame.at((0, 0, 0)), "axis": Frame.at((0, 0, 0))})
+
+
+def tilt_screen(c: Camera, frame: str, screen: str) -> Assembly:
+    """A tilting rear screen hinged along its top edge (+y: its foot swings out and up)."""
+    pieces = _screen_pieces(c, -GAP, screen, frame)
+    top = 0.12 * c.height + 0.56 * c.height
+    t = WALL + 0.004
+    return Assembly.single("screen", pieces, {"hinge": Frame.at((-GAP - t / 2, 0.0, top), z=(0, 1, 0))})
+
+
+def side_door(c: Camera, body: str, side: int = -1) -> Assembly:
+    """A card or battery door on the ``side`` face (-1: -y, the grip's), hinged at its back edge and
+    opening outward; a thumb notch at its front edge."""
+    w, h, d = c.width, c.height, c.depth
+    x0, x1 = 0.22 * d, 0.82 * d
+    z0, z1 = 0.3 * h, 0.72 * h
+    y1 = side * (w / 2 + GAP)
+    y0 = y1 + side * WALL
+    lo, hi = (x0, min(y0, y1), z0), (x1, max(y0, y1), z1)
+    door = slab(x0, x1, z1 - z0, WALL, 0.0, 0.0005, 0.002, 0.002, body, "door", wall=0.0, span=SPAN)
+    door = door.transformed(Frame.at((0, min(y0, y1), (z0 + z1) / 2), z=(0, 1, 0), x=(1, 0, 0)).matrix)
+    door = door.replace(convex=[box_pts(lo, hi)])
+    door = door.with_grasps(Grasp.make((x1, (y0 + y1) / 2, (z0 + z1) / 2), (-1, 0, 0), (0, 1, 0), WALL, 0.002))
+    return Assembly.single("door", [door], {"hinge": Frame.at((x0, (y0 + y1) / 2, 0.0), z=(0, 0, side))})
+
+
+def film_door(c: Camera, body: str, trim: str) -> Assembly:
+    """An instant camera's back: the film door over most of it, hinged on its +y edge, opening outward."""
+    w, h = c.width, c.height
+    y0, y1, z0, z1 = -0.42 * w, 0.42 * w, 0.1 * h, 0.78 * h
+    x1, x0 = -GAP, -GAP - WALL - 0.002
+    door = slab(z0, z1, y1 - y0, x1 - x0, 0.0, 0.001, 0.004, 0.004, body, "film_door", wall=0.0, span=SPAN)
+    door = door.transformed(Frame.at((x0, (y0 + y1) / 2, 0.0), z=(1, 0, 0), x=(0, 0, 1)).matrix)
+    window = g.box_between((x0 - 2e-4, y0 + 0.1 * w, 0.6 * h), (x0 + 1e-4, y0 + 0.3 * w, 0.72 * h), trim,
+                           name="counter").replace(convex=())
+    door = door.with_grasps(Grasp.make((x0, y0, (z0 + z1) / 2), (0, 1, 0), (1, 0, 0), x1 - x0, 0.003))
+    return Assembly.single("door", [door, window], {"hinge": Frame.at((x0, y1, 0.0), z=(0, 0, -1))})
