@@ -8,8 +8,7 @@ behind the hinge line, so gravity presses it shut. Optional: a control panel alo
 door front (display and push buttons), and a handle (bar or pocket pull). 1-4 wire racks roll out
 along +X on rails: a tall lower rack with plate tines, an upper rack, a cutlery tray on top when
 there are three or more; the lowest may carry cutlery baskets. Every rack runs above the open
-door and slides out only with the door open (``requires_open``); its fold-down tines, cup shelves and
-lift-out baskets are worked with it pulled out (they require it open in turn).
+door and slides out only with the door open (``requires_open``).
 Parts: ``categories/parts/dishwashers.py`` (layout), ``appliance.py`` (pieces), ``hardware``; sizes in
 ``appliance_sizes.py``.
 """
@@ -173,8 +172,8 @@ class DishwasherLayout(A.PanelNodes):
     def tine_row(self, node, name, rack, pieces, at):
         y, z = at
         self.add(name, "tines", pieces)
-        # about +X a standing tine folds towards -Y; a hand folds it with its rack pulled out
-        self.hinge(rack, name, A.fold_line(y, z), upper=A.QUARTER_TURN, requires_open=self._slid(rack))
+        # about +X a standing tine folds towards -Y
+        self.hinge(rack, name, A.fold_line(y, z), upper=A.QUARTER_TURN)
 
     def door(self, node, box, band):
         _, x1, y0, y1, _, _ = box
@@ -248,8 +247,8 @@ class DishwasherLayout(A.PanelNodes):
         """The first on the left side wall, the second on the right; each swings down inwards to level."""
         pieces, y, s = DW.cup_shelf(k, xs, ry, z, w)
         name = self.add(f"{rack}_cup_shelf_{k}", "shelf", pieces)
-        # about -X (left) or +X (right) the top swings inwards; it is folded with its rack pulled out
-        self.hinge(rack, name, A.fold_line(y, z, s), upper=A.QUARTER_TURN, requires_open=self._slid(rack))
+        # about -X (left) or +X (right) the top swings inwards
+        self.hinge(rack, name, A.fold_line(y, z, s), upper=A.QUARTER_TURN)
 
     def baskets(self, node, rack, xs, ry, za, top):
         """Open cutlery baskets side by side at the front of the lowest rack, fixed to it."""
@@ -258,17 +257,12 @@ class DishwasherLayout(A.PanelNodes):
         for k, (kid, (pieces, at)) in enumerate(zip(kids, made, strict=True)):
             self.grow(kid, k=k, rack=rack, pieces=pieces, at=at, lift=lift)
 
-    def _slid(self, rack: str) -> str | None:
-        """``rack`` if it slides out (what rides on it is worked with it pulled out), else ``None`` (a dish
-        drawer's rack stands fixed in its drawer)."""
-        return rack if any(j.child == rack and j.movable for j in self.bp.joints) else None
-
     def basket(self, node, k, rack, pieces, at, lift):
         """A cutlery basket stands in its rack and lifts straight up out of it (below the rack above): a
         lift-off part, which the core stops at a hand's lift."""
         name = self.add(f"basket_{k}", "basket", pieces)
         if lift > DW.MIN_BASKET_LIFT:
-            self.slide(rack, name, Frame.at(at), upper=lift, role="lift_off", requires_open=self._slid(rack))
+            self.slide(rack, name, Frame.at(at), upper=lift, role="lift_off")
         else:
             self.fix(rack, name)
 

@@ -454,26 +454,13 @@ def _grasp_json(g: Grasp, blocked) -> dict:
             "width": g.width, "depth": g.depth, "blocked_by": blocked(g)}
 
 
-def _gates(obj, joint) -> list[str]:
-    """The parts that must be open before ``joint`` moves: its ``requires_open`` part, then what that part's
-    own joints require open, and so on (tines on a rack that needs the dishwasher's door open), nearest
-    first."""
-    out, todo = [], joint.requires_open
-    while todo is not None and todo not in out:
-        out.append(todo)
-        todo = next((j.requires_open for j in obj.joints if j.group == todo and j.requires_open), None)
-    return out
-
-
 def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     """The annotation of one operated joint (the fields of ``infmob-annotations/1``, docs/format.md)."""
     carrier = obj.link(joint.group)
     v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
-    # the gate parts (a door before the rack behind it, the rack before the tines on it) are open when this
-    # joint is operated: not in the way
-    gates = _gates(obj, joint)
-    gate = [j.child for j in obj.joints if j.group in gates]
+    # the gate part (a door before the rack behind it) is open when this joint is operated: not in the way
+    gate = [j.child for j in obj.joints if j.group == joint.requires_open] if joint.requires_open else []
     neighbours, press = Neighbours(obj, carrier, own | _fixed_under(obj, gate), (v, f)), action(joint) == "press"
 
     def blocked(g: Grasp) -> list[str]:
@@ -504,7 +491,8 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
         "rest": rest, "open": opened,
         "open_threshold": OPEN_THRESHOLD, "closed_threshold": CLOSED_THRESHOLD,
         "path": _path(obj, joint, carrier.name, grasps[0].position) if grasps else [],
-        "requires_open": [n for g in gates for n in groups.get(g, []) if n != joint.name],
+        "requires_open": [n for n in groups.get(joint.requires_open, []) if n != joint.name]
+        if joint.requires_open else [],
         "requires_closed": [n for g in joint.requires_closed for n in groups.get(g, [])],
     }
 

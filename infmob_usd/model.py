@@ -249,6 +249,14 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
     missing = set(bp.parts) - reached
     if missing:
         raise ModelError(f"parts not connected to the root {root!r}: {sorted(missing)}")
+    _mass_links(links, joints, densities, walls)
+    return links, joints
+
+
+def _mass_links(links: list[Link], joints: list[Joint], densities: dict[str, float], walls: dict[str, float]
+                ) -> None:
+    """Each real link's mass, centre of mass and inertia from its pieces (the lightest floored, :func:`link_floor`),
+    then the inertia floor along every chain."""
     # the closed meshes of every link measured as one batch (the same bits as link by link)
     _measure_closed([(p, wall_of(p, walls.get(p.material, 0.0)) > 0) for link in links if not link.dummy
                      for p in link.pieces])
@@ -265,4 +273,3 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
     floored = floor_chain_inertia({link.name: link.inertia for link in links}, children)
     for link in links:
         link.inertia = floored[link.name]
-    return links, joints

@@ -60,14 +60,11 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                               " verified item for stove, hob or cooktop)"),
     "refrigerator": ("Q37828", "http://www.wikidata.org/entity/Q37828 'refrigerator' (COCO)"),
     "oven": ("Q36539", "http://www.wikidata.org/entity/Q36539 'oven' (COCO)"),
-    "phone": ("Q17517", "http://www.wikidata.org/entity/Q17517 'mobile phone' (a public Wikidata label table;"
-                        " no verified item for telephone: a desk phone takes the mobile's)"),
     "eyeglasses": ("Q1751850", "http://www.wikidata.org/entity/Q1751850 'optical instrument' (OEWN 03857800-n, the"
                                " hypernym of 04279164-n spectacles, which has no Wikidata link)"),
     "knife": ("Q390383", "http://www.wikidata.org/entity/Q390383 'pocketknife' (OEWN 03979986-n; a multi-tool"
                          " and a utility knife fold or retract their blades alike)"),
     "pliers": ("Q13049940", "http://www.wikidata.org/entity/Q13049940 'pliers' (WN 03973308-n)"),
-    "remote": ("Q185091", "http://www.wikidata.org/entity/Q185091 'remote control' (COCO)"),
     "scissors": ("Q40847", "http://www.wikidata.org/entity/Q40847 'scissors' (COCO)"),
     "camera": ("Q15328", "http://www.wikidata.org/entity/Q15328 'camera' (public Wikidata query scripts' tables:"
                          " CAMERA_TYPE_QIDS {'Q15328': 'camera', 'Q178384': 'SLR'}, a retail category map 'cameras':"

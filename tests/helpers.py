@@ -24,6 +24,13 @@ def maker(name: str, **defaults):
     return make
 
 
+def part_points(bp, part: str, pose=None):
+    """The vertices of a blueprint part's pieces, moved by the 4x4 ``pose`` (default: where they are)."""
+    pts = np.vstack([pc.vertices for pc in bp.parts[part].pieces])
+    pose = np.eye(4) if pose is None else pose
+    return pts @ pose[:3, :3].T + pose[:3, 3]
+
+
 def _at(d, f: float) -> float:
     """A DoF at fraction ``f`` of its range; a continuous one at ``f`` half turns."""
     return f * math.pi if d.type == "continuous" else d.lower + f * (d.upper - d.lower)

@@ -195,16 +195,3 @@ def test_load_refuses_missing_files_and_links(written, tmp_path):
         load(tmp_path)
     with pytest.raises(AnnotationError, match="folder path"):
         load(42)
-
-
-def test_requires_open_names_the_whole_chain_of_gates():
-    """A dishwasher's tines and cutlery baskets ride on a rack that slides out only with the door open: they
-    are operated with the rack pulled out, so their targets require the rack's joint and the door's."""
-    obj = _made("dishwasher", 0)
-    by_child = {j.child: j.name for j in obj.joints if j.movable}
-    riders = [t for t in obj.interaction if "_tines_" in t["link"] or t["link"].startswith("basket_")]
-    assert riders
-    for t in riders:
-        rack = next(j.parent for j in obj.joints if j.child == t["link"] or j.group == t["link"])
-        assert t["requires_open"][:1] == [by_child[rack]], t
-        assert by_child["door"] in t["requires_open"], t

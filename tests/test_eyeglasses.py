@@ -10,14 +10,9 @@ import numpy as np
 import pytest
 
 from helpers import maker
+from helpers import part_points as _points
 
 make = maker("eyeglasses")
-
-
-def _points(bp, part, pose=None):
-    pts = np.vstack([pc.vertices for pc in bp.parts[part].pieces])
-    pose = np.eye(4) if pose is None else pose
-    return pts @ pose[:3, :3].T + pose[:3, 3]
 
 
 def _joint(bp, child):

@@ -7,14 +7,9 @@ from __future__ import annotations
 import numpy as np
 
 from helpers import maker
+from helpers import part_points as _points
 
 make = maker("lighter")
-
-
-def _points(bp, part, pose=None):
-    pts = np.vstack([pc.vertices for pc in bp.parts[part].pieces])
-    pose = np.eye(4) if pose is None else pose
-    return pts @ pose[:3, :3].T + pose[:3, 3]
 
 
 def test_the_windproof_lid_opens_back_and_uncovers_the_wheel():

@@ -3,17 +3,10 @@ a capped pen's cap pulls clear of the point: checked on the grounded blueprint."
 
 from __future__ import annotations
 
-import numpy as np
-
 from helpers import maker
+from helpers import part_points as _points
 
 make = maker("pen")
-
-
-def _points(bp, part, pose=None):
-    pts = np.vstack([pc.vertices for pc in bp.parts[part].pieces])
-    pose = np.eye(4) if pose is None else pose
-    return pts @ pose[:3, :3].T + pose[:3, 3]
 
 
 def test_pressing_the_button_brings_the_point_out_of_the_nose():

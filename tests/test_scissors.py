@@ -6,14 +6,9 @@ import numpy as np
 import pytest
 
 from helpers import maker
+from helpers import part_points as _points
 
 make = maker("scissors")
-
-
-def _points(bp, part, pose=None):
-    pts = np.vstack([pc.vertices for pc in bp.parts[part].pieces])
-    pose = np.eye(4) if pose is None else pose
-    return pts @ pose[:3, :3].T + pose[:3, 3]
 
 
 @pytest.mark.parametrize("design", ["office", "kitchen", "pinking", "embroidery"])

@@ -69,6 +69,14 @@ def _gears(pb, cid: int, body: int, info: list, urdf: Path) -> None:
                             physicsClientId=cid)
 
 
+def _pybullet():
+    try:
+        import pybullet as pb
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise RuntimeError("the PyBullet push needs pybullet: pip install -e .[sim]") from None
+    return pb
+
+
 def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240,
                 opened: dict[str, list[str]] | None = None, from_upper: bool = False) -> list[Push]:
     """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode) towards
@@ -82,10 +90,7 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
     The base is fixed; PyBullet's default velocity motors are switched off so a joint is free
     but for its URDF damping; the effort is applied as a joint torque / force every step.
     """
-    try:
-        import pybullet as pb
-    except ImportError:  # pragma: no cover - depends on the environment
-        raise RuntimeError("the PyBullet push needs pybullet: pip install -e .[sim]") from None
+    pb = _pybullet()
     urdf = Path(urdf)
     efforts = _urdf_efforts(urdf)
     cid = pb.connect(pb.DIRECT)

@@ -11,11 +11,9 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    grasp frame, fingers open, and moves along ``approach`` to the grasp (and up to :data:`INSET` further,
    towards the middle of the handle's box);
 3. the fingers close along ``closing`` with the Panda hand's continuous grip force (:data:`GRIP_FORCE`).
-   When the hand cannot get to a grasp or closes on nothing, or a hold taken does not open the part (up to
-   :data:`HOLDS` holds, each from the object at rest again), the next annotated grasp is tried, each also
-   turned a quarter about its approach where the handle's box fits between the fingers that way and, for a
-   knob turned in place, wound back about its approach by half its turn (:func:`wound_back`), then each
-   tilted by :data:`TILTS` about its closing axis (the same hold reached at a slant). A ``press`` or
+   When the hand cannot get to a grasp or closes on nothing, the next annotated grasp is tried, each also
+   turned a quarter about its approach where the handle's box fits between the fingers that way, then
+   each tilted by :data:`TILTS` about its closing axis (the same hold reached at a slant). A ``press`` or
    ``push`` is done with the closed fingers' tips on the grasp point, without a grasp, the hand turned any
    way about the approach and tilted about either axis across it;
 4. the hand follows ``path`` (the grasp point over the joint's range) through a compliant controller:
@@ -24,18 +22,14 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is (up to ``LEAD``
    past the path's end: a compliant hand lags its target by force / stiffness); the hand turns
    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
-   on its axis) is turned in place about the joint's axis, read from the loaded URDF; held wound back, or
-   when turning it in one hold did not open it, it is turned at most :data:`REGRIP` per hold: then the
-   fingers open, the hand turns back and takes hold again (a dial turned 330 degrees in one hold sweeps the
-   hand's body through everything around it).
+   on its axis) is turned in place about the joint's axis, read from the loaded URDF.
 
 Success: the joint passes ``rest + open_threshold * (open - rest)`` while both fingers still touch the
 operated link (a press or push: the joint passing is enough). A failure names why: ``approach blocked by
 LINK``, ``missed handle`` (the fingers closed on nothing, or on another link), ``slipped``, ``blocked by
 LINK`` (the moving part presses on another link), ``gripper blocked by LINK``, ``held at its joint limit``
 (the path pushes the joint against a stop), ``too stiff`` (the arm pulls with its full force and the joint
-does not follow), ``stalled``; when every hold fails, the reason of the one that moved the part furthest,
-else the first grasp's.
+does not follow), ``stalled``.
 
 The scene has no floor (an appliance stands on a counter, and the hand may pass below the counter's edge;
 a part swinging into the floor is the ``reach`` check's finding). The gripper's fingers carry ManiSkill's
@@ -85,11 +79,8 @@ LEAD = 0.05  # m the path target may run ahead of the hand's own place on the pa
 MIN_PATH = 0.0005  # m: a shorter path is a point (turned in place, if the joint turns)
 TURN_SPEED = 1.5  # rad/s turning in place
 TURN_LEAD = 0.35  # rad the turn may run ahead of the hand
-REGRIP = math.radians(60)  # rad a knob is turned per hold: then the hand lets go, turns back and takes it again
-RELEASE_TIME = 0.2  # s for the fingers to open (and the hand to settle) in a regrip
 PRESS_ACTIONS = ("press", "push")  # pressed with the closed fingers' tips, no grasp
 TILTS = tuple(math.radians(a) for a in (35, -35, 65, -65))  # slants tried when a hold's straight way in is blocked
-HOLDS = 4  # holds taken (approached and closed on) before a target counts as failed: a robot tries again
 FINGERTIP = 0.0095  # m from the TCP to the tips of the closed fingers (panda_v2_gripper.urdf)
 STALL_TIME = 1.0  # s without 2 mm of progress along the path ends an attempt
 SLIP_TIME = 0.25  # s without both fingers on the part before it counts as slipped
@@ -343,7 +334,6 @@ class _Run:
         self.fingers = {i for i, n in gripper.ids.items() if n in FINGER_LINKS}
         self.rest, self.open = float(target["rest"]), float(target["open"])
         self.time = 0.0
-        self.opening = FINGER_OPEN  # per finger, how far the fingers open to let go in a regrip
 
     def fraction(self) -> float:
         q = float(np.asarray(self.art.qpos, float)[self.qi])
@@ -406,42 +396,13 @@ def tilted(g: dict, axis, angle: float) -> dict:
     return {**g, "approach": (r @ _unit(g["approach"])).tolist(), "closing": (r @ _unit(g["closing"])).tolist()}
 
 
-def _turns_in_place(target: dict) -> bool:
-    """A knob held on its axis: the annotated path is a point and the hand turns it."""
-    path = np.asarray(target.get("path") or [[0.0, 0.0, 0.0]], float)
-    return target.get("action") == "turn" and float(np.ptp(path, axis=0).max()) < MIN_PATH
-
-
-def wound_back(target: dict, g: dict) -> dict | None:
-    """Grasp ``g`` of a knob turned in place, the hand wound back about its approach by half the turn (up
-    to half :data:`REGRIP`), as a person sets the wrist before turning, and marked ``regrip``: the knob is
-    turned at most :data:`REGRIP` per hold (let go, turn back, take hold again). The hand's 0.2 m across the
-    fingers then sweeps only either side of the annotated hold instead of all round (a grate above an
-    oven's knobs, a lid beside a washer's dial). ``None`` when the knob's box does not fit between the open
-    fingers that way, or the target gives no way round."""
-    direction = target.get("direction")
-    if not _turns_in_place(target) or direction is None:
-        return None
-    a, k = _unit(g["approach"]), _unit(g["closing"])
-    d = np.asarray(direction, float) - a * float(np.dot(direction, a))  # where the closing axis turns to
-    if np.linalg.norm(d) < 0.5:
-        return None
-    half = min(abs(float(target["open"]) - float(target["rest"])), REGRIP) / 2
-    closing = _unit(math.cos(half) * k - math.sin(half) * _unit(d))
-    extent = box_extent(target.get("box"), closing)
-    if extent is None or extent > 2 * FINGER_OPEN - 0.005:
-        return None
-    return {**g, "closing": closing.tolist(), "width": max(float(g.get("width") or 0.0), extent), "regrip": True}
-
-
 def grasp_candidates(target: dict) -> list[dict]:
     """The annotated grasps in order, each followed by itself turned a quarter about its approach when the
     handle's box fits between the open fingers that way (a knob or a short pull under a worktop, where the
-    hand's 0.2 m across the fingers does not fit the annotated way) and, for a knob turned in place, wound
-    back by half its turn (:func:`wound_back`); then each tilted by :data:`TILTS` about its closing axis (the
-    fingers still close across the same stretch: a hold whose straight way in meets the hand's body on a
-    neighbour, a shelf above or a stand below, taken at a slant), and for a press or push, whose shut
-    fingers need no closing axis, about the other axis across the approach as well."""
+    hand's 0.2 m across the fingers does not fit the annotated way); then each tilted by :data:`TILTS` about
+    its closing axis (the fingers still close across the same stretch: a hold whose straight way in meets
+    the hand's body on a neighbour, a shelf above or a stand below, taken at a slant), and for a press or
+    push, whose shut fingers need no closing axis, about the other axis across the approach as well."""
     press = target.get("action") in PRESS_ACTIONS
     out = []
     for g in target["grasps"]:
@@ -452,9 +413,6 @@ def grasp_candidates(target: dict) -> list[dict]:
             out.append({**g, "closing": turned.tolist()})
         elif extent is not None and extent <= 2 * FINGER_OPEN - 0.005:
             out.append({**g, "closing": turned.tolist(), "width": extent})
-        back = wound_back(target, g)
-        if back is not None:
-            out.append(back)
     for g in target["grasps"]:
         axes = [g["closing"], np.cross(_unit(g["approach"]), _unit(g["closing"]))] if press else [g["closing"]]
         out += [tilted(g, axis, a) for a in TILTS for axis in axes]
@@ -568,7 +526,6 @@ class TurnMotion:
         k = int(np.argmin(np.abs(grasp[:3, :3].T @ self.axis)))  # the hand's axis most across the turn axis
         self.k = k
         self.ref, self.angle = self._across(grasp), 0.0
-        self.back = 0.0  # rad the hand has been turned back by regrips (the knob stays where it was)
 
     def _across(self, tcp: np.ndarray) -> np.ndarray:
         v = tcp[:3, self.k]
@@ -578,32 +535,11 @@ class TurnMotion:
         u = self._across(tcp)
         a = math.atan2(float(np.cross(self.ref, u) @ self.axis), float(self.ref @ u))
         self.angle += (a - self.angle + math.pi) % (2 * math.pi) - math.pi  # unwrapped
-        return self.angle + self.back
-
-    def _hand(self, angle: float) -> np.ndarray:
-        r = _about(self.axis, angle)
-        return _pose(r @ self.grasp[:3, :3], self.pivot + r @ (self.grasp[:3, 3] - self.pivot))
+        return self.angle
 
     def pose(self, here: float, goal: float) -> np.ndarray:
-        return self._hand(goal - self.back)
-
-    def regrip(self, run: _Run) -> None:
-        """Let go, turn the open hand back to where it took hold, and take hold again (the knob stays): how
-        a hand turns a knob further than :data:`REGRIP`, its body sweeping only that much."""
-        g = run.gripper
-        g.grip(run.opening)
-        run.step(int(round(RELEASE_TIME / run.dt)))
-        start = self.angle
-        n = max(1, int(round(start / TURN_SPEED / run.dt)))
-        for i in range(1, n + 1):
-            g.move(self._hand(start * (1 - i / n)))
-            run.step()
-            self.progress(g.tcp())
-        run.step(int(round(RELEASE_TIME / run.dt)))
-        self.progress(g.tcp())
-        self.back += start - self.angle
-        g.grip(0.0)
-        run.step(int(round(CLOSE_TIME / run.dt)))
+        r = _about(self.axis, goal)
+        return _pose(r @ self.grasp[:3, :3], self.pivot + r @ (self.grasp[:3, 3] - self.pivot))
 
 
 def _motion(run: _Run, grasp: np.ndarray):
@@ -620,10 +556,9 @@ def _motion(run: _Run, grasp: np.ndarray):
     return TurnMotion(frame[:3, 3], frame[:3, 0], run.open - run.rest, grasp)
 
 
-def _follow(run: _Run, grasp: np.ndarray, grip: bool, regrip: bool = False) -> Attempt:
+def _follow(run: _Run, grasp: np.ndarray, grip: bool) -> Attempt:
     """Move the part with the compliant hand until the joint passes its open threshold; with ``grip`` the
-    fingers must keep hold of it (a press or a push needs no hold); with ``regrip`` a knob turned in place is
-    let go and taken again every :data:`REGRIP`."""
+    fingers must keep hold of it (a press or a push needs no hold)."""
     motion = _motion(run, grasp)
     if motion is None:
         return run.fail(f"not attempted: the path is shorter than {MIN_PATH * 1000:g} mm and the joint does not"
@@ -634,11 +569,6 @@ def _follow(run: _Run, grasp: np.ndarray, grip: bool, regrip: bool = False) -> A
     step = 0
     while run.time < end:
         here = motion.progress(run.gripper.tcp())
-        if regrip and grip and isinstance(motion, TurnMotion) and motion.angle >= REGRIP:
-            t0 = run.time
-            motion.regrip(run)
-            here, goal = motion.progress(run.gripper.tcp()), here
-            end, best_time = end + run.time - t0, run.time
         goal = min(motion.length + motion.lead, goal + motion.speed * run.dt, here + motion.lead)
         run.gripper.move(motion.pose(here, goal))
         run.step()
@@ -672,42 +602,18 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
         if name in names:
             i = names.index(name)
             q[i] = (opened or {}).get(name, ctx.loaded[i].upper)
-    first, best, holds = None, None, 0
+    first = None
     grip = target.get("action") not in PRESS_ACTIONS
-    for g in grasp_candidates(target):  # the next when one cannot be taken, or taken does not open it
-        # a knob turned in place in one hold that does not open is taken the same way again, turned in holds
-        # of at most REGRIP (the hand's body swept into a neighbour, or the fingers slipped over a long turn)
-        ways = [g, {**g, "regrip": True}] if grip and not g.get("regrip") and _turns_in_place(target) else [g]
-        for way in ways:
-            taken, got = _hold(ctx, gripper, target, q, way, grip)
-            if not taken:
-                first = first or got
-                break
-            if got.ok:
-                return got
-            best = got if best is None or got.reached > best.reached else best
-        else:
-            holds += 1
-        if holds >= HOLDS:
-            break
-    return best or first
-
-
-def _hold(ctx, gripper: Gripper, target: dict, q: np.ndarray, g: dict, grip: bool) -> tuple[bool, Attempt]:
-    """One hold ``g`` from the object at ``q``: ``(False, why the hand could not take it)`` or ``(True, what
-    following the path with it did)``."""
-    ctx.reset(q)
-    ctx.make_passive()
-    run = _Run(ctx, gripper, target)
-    grasp, pre, opening = _grasp_frames(run, g)
-    # a regrip lets go of a knob as wide as its box across the hand (no wider: knobs stand beside it)
-    a, k = _unit(g["approach"]), _unit(g["closing"])
-    across = [box_extent(target.get("box"), d) for d in (k, np.cross(a, k))]
-    run.opening = opening if None in across else min(FINGER_OPEN, max(opening, math.hypot(*across) / 2 + 0.005))
-    why = _approach(run, grasp, pre, opening, grip)
-    if why:
-        return False, run.fail(why)
-    return True, _follow(run, grasp, grip, bool(g.get("regrip")))
+    for g in grasp_candidates(target):  # the next only when one cannot be taken
+        ctx.reset(q)
+        ctx.make_passive()
+        run = _Run(ctx, gripper, target)
+        grasp, pre, opening = _grasp_frames(run, g)
+        why = _approach(run, grasp, pre, opening, grip)
+        if not why:
+            return _follow(run, grasp, grip)
+        first = first or run.fail(why)
+    return first
 
 
 def check_robot(folder: str | Path) -> list[CheckResult]:

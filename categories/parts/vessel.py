@@ -40,7 +40,6 @@ from infmob_usd import geometry as g
 from infmob_usd import joints as J
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
-from infmob_usd.grasps import Grasp
 
 from . import hardware
 from . import vessel_sizes as S
@@ -723,12 +722,8 @@ def lid_loop(dome: Dome, knob_radius: float, slot: str) -> Assembly:
     for s in (-1, 1):
         zb = float(dome.under(yp)) + dome.thickness - L["sink"] - top
         pieces.append(g.cylinder((0, s * yp, zb), (0, s * yp, L["rise"]), L["post"], slot, 16, name="handle"))
-    bar = g.cylinder((0, -length / 2, L["rise"]), (0, length / 2, L["rise"]), L["radius"], slot, 20, name="handle")
-    # taken from above across its bar, as a hand lifts a lid by its loop
-    top = L["rise"] + L["radius"]
-    grasp = Grasp.make((0, 0, top), (0, 0, -1), (1, 0, 0), 2 * L["radius"], L["radius"], "line_fixed_handle",
-                       ((0, 0, top / 2), (2 * L["radius"], length, top), IDENTITY.rotation))
-    pieces.append(bar.with_grasps(grasp))
+    pieces.append(g.cylinder((0, -length / 2, L["rise"]), (0, length / 2, L["rise"]), L["radius"], slot, 20,
+                             name="handle"))
     return Assembly.single("handle", pieces, {"base": IDENTITY})
 
 

@@ -22,18 +22,6 @@ ALL_FRACTIONS = (0.5, 1.0)
 range (continuous joints at f pi), prerequisites fully open."""
 
 
-def _gate_chain(joint, groups) -> list[str]:
-    """The joints that must be open before ``joint`` moves: those of its ``requires_open`` part, then those
-    its part's joints require open in turn (the tines on a rack behind a dishwasher's door)."""
-    out, seen, part = [], set(), joint.requires_open
-    while part is not None and part not in seen:
-        seen.add(part)
-        gate = groups.get(part, [])
-        out += [g.name for g in gate]
-        part = next((g.requires_open for g in gate if g.requires_open), None)
-    return out
-
-
 class _Clearance:
     """What the passes of :func:`clearance_limits` share: the solid hulls, the movable joints and
     their current limits, the subtree each moves, the ``requires_open`` gates, and caches of
@@ -50,7 +38,8 @@ class _Clearance:
         # joint -> the parts (groups) that must be closed before it moves (step 3)
         self.closed: dict[str, set[str]] = {j.name: set(getattr(j, "requires_closed", ()))
                                             for j in self.movable}
-        self.gates = {j.name: _gate_chain(j, groups) for j in self.movable if j.requires_open}
+        self.gates = {j.name: [g.name for g in groups.get(j.requires_open, [])]
+                      for j in self.movable if j.requires_open}
         self.gate_of_someone = {name for names in self.gates.values() for name in names}
         # joint -> the other modes of its part that are at rest while it is open (JointSpec.exclusive)
         self.excludes = {j.name: tuple(getattr(j, "excludes", ())) for j in self.movable}

@@ -10,6 +10,8 @@ import numpy as np
 from ..blueprint import descendants
 from ..springs import SPRINGS
 
+SPRUNG_LIGHT = 0.02
+"""kg: a sprung part up to this mass rests on its spring, not on a counterweight (a few-gram button or key)."""
 GRAVITY = np.array([0.0, 0.0, -9.81])
 """m/s^2, world."""
 
@@ -55,9 +57,10 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
       side that lifts the load: limits ``(0, upper)``.
     * gravity pushes toward positive q with a two-sided range: the axis is flipped and the
       limits become ``(0, -lower)`` (pressed onto the stop that was the lower side).
-    * a spring-returned joint (role in :data:`~infmob_usd.springs.SPRINGS`: a mouse button on its
-      rear hinge) whose load pulls it off its rest stop is held there by its return spring, which the
-      core sizes to hold :data:`~infmob_usd.springs.GRAVITY_HOLD` times that pull; unchanged.
+    * a spring-returned part of at most :data:`SPRUNG_LIGHT` (role in :data:`~infmob_usd.springs.SPRINGS`: a
+      mouse button on its rear hinge) whose load pulls it off its rest stop is held there by its return spring,
+      which the core sizes to hold :data:`~infmob_usd.springs.GRAVITY_HOLD` times that pull; unchanged (a heavier
+      lever, a toilet's 50 g flush lever, keeps its counterweight, as real ones are balanced);
     * otherwise (rest is a stop and gravity pulls away from it: a lever's grip hanging off
       its axis) a *counterweight heel* is added to the child link: a bar of the child's
       heaviest material from the axis along the side opposite the carried centre of mass,
@@ -87,7 +90,7 @@ def rest_on_stops(links, joints, densities: dict[str, float], walls: dict[str, f
         if torque > 0 and j.lower < 0:
             joints[k] = replace(j, axis=-np.asarray(j.axis, float), lower=0.0, upper=-j.lower)
             continue
-        if j.role in SPRINGS:  # its return spring holds it on the rest stop (springs.GRAVITY_HOLD)
+        if j.role in SPRINGS and links[index[j.child]].mass <= SPRUNG_LIGHT:  # held by its return spring
             continue
         # a counterweight heel on the child: its moment about the axis cancels the carried one
         child = links[index[j.child]]
