@@ -110,7 +110,9 @@ class TrashCanLayout(Layout):
     def bucket(self, node, body, size, gate):
         inner = B.bucket_size(size)
         made = self.place(B.bucket(inner, "bucket", BUCKET_SHEET).attached("seat", to=body.anchor("floor")), "bucket")
-        self.slide("body", "bucket", made.anchor("seat"), upper=inner.height, role="lift_off", requires_open=gate)
+        # the body's walls guide the bucket until its bottom clears the rim: it lifts right out
+        guided = float(body.anchor("rim").origin[2] - body.anchor("floor").origin[2])
+        self.lift("body", "bucket", made.anchor("seat"), engagement=guided, requires_open=gate)
         if node.one("bail"):
             self.grow(node.one("bail"), bucket=made, size=inner)
 

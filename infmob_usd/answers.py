@@ -1,7 +1,7 @@
 """Which category of the datasets and benchmarks each of ours answers, and the category lists themselves.
 
 A user coming from PartNet-Mobility, Infinigen-Sim, RoboCasa or the Infinite Mobility paper looks for their
-category by its own name; the README's category table prints :func:`answers` beside each of ours, and
+category by its own name; docs/categories.md's table prints :func:`answers` beside each of ours, and
 ``tests/test_answers.py`` holds that every category of the four lists is answered by one we generate.
 
 Sources of the lists:

@@ -70,7 +70,8 @@ class Blueprint:
             self.add(names[local], part.label, part.pieces)
         for j in assembly.joints:
             self.join(replace(j, parent=names[j.parent], child=names[j.child],
-                              requires_open=names.get(j.requires_open, j.requires_open)))
+                              requires_open=names.get(j.requires_open, j.requires_open),
+                              requires_closed=tuple(names.get(n, n) for n in j.requires_closed)))
         return Placed(names, assembly)
 
     def join(self, spec: JointSpec) -> None:

@@ -345,22 +345,27 @@ class Layout:
 
     # -- joints declared on frames: the axis is the frame's z, rest is 0 ---------------------------------
     def hinge(self, parent: str, child: str, at, upper: float, lower: float = 0.0, role: str = "hinge",
-              requires_open: str | None = None) -> None:
+              requires_open: str | None = None, requires_closed: tuple[str, ...] = ()) -> None:
         """A revolute joint about ``at.z`` through ``at.origin``; ``upper`` is the mechanical maximum
-        (the core shortens it to clearance and ground)."""
-        self.bp.join(J.revolute(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+        (the core shortens it to clearance and ground); ``requires_closed``: parts closed while it moves
+        (:attr:`~.joints.JointSpec.requires_closed`)."""
+        self.bp.join(replace(J.revolute(parent, child, at.origin, at.z, lower, upper, role, requires_open),
+                             requires_closed=tuple(requires_closed)))
 
     def slide(self, parent: str, child: str, at, upper: float, lower: float = 0.0, role: str = "slide",
-              requires_open: str | None = None) -> None:
-        """A prismatic joint along ``at.z``."""
-        self.bp.join(J.prismatic(parent, child, at.origin, at.z, lower, upper, role, requires_open))
+              requires_open: str | None = None, requires_closed: tuple[str, ...] = ()) -> None:
+        """A prismatic joint along ``at.z``; ``requires_closed``: :attr:`~.joints.JointSpec.requires_closed`."""
+        self.bp.join(replace(J.prismatic(parent, child, at.origin, at.z, lower, upper, role, requires_open),
+                             requires_closed=tuple(requires_closed)))
 
-    def lift(self, parent: str, child: str, at, engagement: float | None = None) -> None:
+    def lift(self, parent: str, child: str, at, engagement: float | None = None,
+             requires_open: str | None = None) -> None:
         """A lift-off part lifted along ``at.z`` (role ``lift_off``): free, and its joint's end, once lifted
         past its seat's ``engagement`` (m) by :data:`~infmob_usd.lift_off.FREE`; without one, a hand's lift
-        (:data:`~infmob_usd.lift_off.LIFT_OFF`: :func:`~infmob_usd.lift_off.lift`)."""
+        (:data:`~infmob_usd.lift_off.LIFT_OFF`: :func:`~infmob_usd.lift_off.lift`). ``requires_open``: the
+        joint that must be open first (a bin's lid over its bucket)."""
         self.bp.join(J.prismatic(parent, child, at.origin, at.z, 0.0, lift_off.lift(engagement), "lift_off",
-                                 engagement=engagement))
+                                 requires_open, engagement=engagement))
 
     def spin(self, parent: str, child: str, at, role: str = "knob", requires_open: str | None = None) -> None:
         """A continuous joint about ``at.z``."""

@@ -57,11 +57,11 @@ def operated(joint, joints) -> bool:
 
 def action(joint) -> str:
     """What opens it: ``turn`` a continuous joint or a knob, swivel or turntable; ``press`` a button, lever,
-    pedal or toggle (a switch's bat or rocker); ``lift`` a lid, a lift-off part, a plate or grate; ``slide`` a
-    telescope; else ``pull``."""
+    pedal, toggle (a switch's bat or rocker) or plunger (a pump head pushed down its stroke); ``lift`` a lid,
+    a lift-off part, a plate or grate; ``slide`` a telescope; else ``pull``."""
     if joint.type == "continuous" or joint.role in ("knob", "swivel", "turntable"):
         return "turn"
-    if joint.role in ("button", "lever", "pedal_lid", "toggle"):
+    if joint.role in ("button", "lever", "pedal_lid", "toggle", "plunger"):
         return "press"
     if joint.role in ("lid", "lift_off", "plate", "grate"):
         return "lift"

@@ -118,6 +118,13 @@ class JointSpec:
     hung on it, a pocket's lip for a caddy standing in it); it is free, and its slides end, that far plus
     :data:`~infmob_usd.lift_off.FREE` up (:func:`infmob_usd.lift_off.capped_joint`). ``None``: a hand's
     lift, :data:`~infmob_usd.lift_off.LIFT_OFF`."""
+    requires_closed: tuple[str, ...] = ()
+    """Names of parts, each the child of another movable joint, that must be at rest before this joint moves
+    and that cannot open while it is off rest (a folding reader's front folds only with its temples folded,
+    and its temples cannot open while it is folded): the relation holds both ways, and the written joints of
+    both sides list the other's part (:attr:`.model.Joint.requires_closed`). Open states (the clearance
+    pass's, the validators', the previews') open the first of the two in joint order and hold the other at
+    rest (:func:`closed_excludes`). ``()``: no such part."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -135,6 +142,9 @@ class JointSpec:
         if self.engagement is not None and (self.role != "lift_off" or not 0.0 < self.engagement < math.inf):
             raise ModelError(f"joint {self.parent}->{self.child}: an engagement depth (got {self.engagement!r})"
                              " is a positive length, declared on a role lift_off joint only")
+        if self.child in self.requires_closed or len(set(self.requires_closed)) != len(self.requires_closed):
+            raise ModelError(f"joint {self.parent}->{self.child}: requires_closed {self.requires_closed!r} names"
+                             " its own part or a part twice; name each other part once")
         if self.exclusive and len(self.dofs) < 2:
             raise ModelError(f"{self.kind} joint {self.parent}->{self.child} has one DoF: only the modes of a"
                              " compound joint can exclude each other")
@@ -219,6 +229,25 @@ def flip_revolute(parent: str, child: str, pivot0: V3, axis0: V3, turn0: tuple[f
     return JointSpec("flip_revolute", parent, child, (
         Dof("revolute", pivot0, axis0, *turn0), Dof("revolute", pivot1, axis1, *turn1)), role, requires_open,
         exclusive=exclusive)
+
+
+def closed_excludes(joints: Sequence[tuple[str, str, Sequence[str]]]) -> dict[str, list[str]]:
+    """Joint name -> the joints held at rest while it is off rest in an open state, from ``(joint name, group,
+    requires_closed groups)`` of the movable joints: where two parts each require the other closed
+    (:attr:`JointSpec.requires_closed`, written both ways), they are never open together, read with
+    :func:`one_mode` (the first in joint order opens). A one-way relation (the clearance pass's order, a door
+    closed after its tray) leaves both open."""
+    members: dict[str, list[str]] = {}
+    closed: dict[str, set[str]] = {}
+    for name, group, needs in joints:
+        members.setdefault(group, []).append(name)
+        closed.setdefault(group, set()).update(needs)
+    out: dict[str, list[str]] = {}
+    for name, group, needs in joints:
+        held = [n for g in sorted(set(needs)) if group in closed.get(g, ()) for n in members.get(g, [])]
+        if held:
+            out[name] = held
+    return out
 
 
 def one_mode(q: dict[str, float], order: Sequence[str], excludes: dict[str, Sequence[str]],

@@ -183,6 +183,22 @@ def _resolve_mimics(joints: list[Joint]) -> list[Joint]:
     return out
 
 
+def _closed_both_ways(bp: Blueprint) -> dict[str, tuple[str, ...]]:
+    """Part -> the parts that must be closed while it moves, from the declared
+    :attr:`~.joints.JointSpec.requires_closed` of either side (the relation holds both ways)."""
+    movable = {spec.child for spec in bp.joints if spec.movable}
+    out: dict[str, set[str]] = {}
+    for spec in bp.joints:
+        for other in spec.requires_closed:
+            if other not in movable or not spec.movable:
+                raise ModelError(f"joint of {spec.child!r} requires {other!r} closed, but "
+                                 + ("it is fixed" if not spec.movable else "that part has no movable joint")
+                                 + "; name parts that move, on a movable joint")
+            out.setdefault(spec.child, set()).add(other)
+            out.setdefault(other, set()).add(spec.child)
+    return {part: tuple(sorted(names)) for part, names in out.items()}
+
+
 def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | None = None
           ) -> tuple[list[Link], list[Joint]]:
     """Place frames and expand compound joints. ``densities``: slot -> kg/m^3; ``walls``: slot ->
@@ -192,6 +208,7 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
     by_parent: dict[str, list] = {}
     for spec in bp.joints:
         by_parent.setdefault(spec.parent, []).append(spec)
+    closed_by = _closed_both_ways(bp)
 
     links: list[Link] = []
     joints: list[Joint] = []
@@ -239,6 +256,7 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
                                         np.asarray(dof.axis, float), float(dof.lower), float(dof.upper),
                                         dyn.damping, dyn.friction, dyn.effort, dyn.velocity,
                                         spec.kind, spec.role, part.name, spec.requires_open,
+                                        requires_closed=closed_by.get(part.name, ()),
                                         mimic=None if spec.mimic is None else
                                         (spec.mimic.leader, spec.mimic.ratio, spec.mimic.offset),
                                         excludes=tuple(names[:i] + names[i + 1:]) if spec.exclusive else ()))

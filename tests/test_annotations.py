@@ -58,6 +58,21 @@ def test_passive_joints_are_not_targets():
     assert wheels and casters and not targets & {j.name for j in wheels + casters}
 
 
+@pytest.mark.parametrize("design", ["pump_bottle", "sauce_pump"])
+def test_a_plunger_is_pressed_down_its_stroke_like_a_button(design):
+    """A pump head (role ``plunger``) is pushed down along its axis by the fingertips, as a button is: action
+    ``press``, GAPartNet ``slider_button``, the hand's grasps approaching along the stroke; not a drawer pulled."""
+    obj = api.generate("dispenser", 1, texture_size=16, design=design)
+    pumps = [j for j in obj.joints if j.role == "plunger" and operated(j, obj.joints)]
+    assert pumps, design
+    targets = {t["joint"]: t for t in obj.interaction}
+    for j in pumps:
+        t = targets[j.name]
+        assert t["action"] == "press" and t["part_class"] == "slider_button", (design, t["action"], t["part_class"])
+        assert np.allclose(t["direction"], [0.0, 0.0, -1.0]), t["direction"]
+        assert any(np.dot(g["approach"], t["direction"]) > 0.9 for g in t["grasps"]), "no grasp along the stroke"
+
+
 def test_a_handle_part_brings_its_grasp():
     """A bar pull's grasp rides on its bar through placement: on the bar, across it, its diameter wide."""
     from infmob_usd.categories.parts import hardware

@@ -1,8 +1,8 @@
-"""The docs stay true: the README's category table is the discovered categories, docs/cli.md documents every flag
-of every command's ``--help``, the README's Python example runs and prints what its comment says, and every
-relative link in the docs points at a file (and heading) that exists.
+"""The docs stay true: docs/categories.md's table and the README's list are the discovered categories,
+docs/cli.md documents every flag of every command's ``--help``, the README's Python example runs and prints what
+its comment says, and every relative link in the docs points at a file (and heading) that exists.
 
-``python tests/test_docs.py`` prints the README's category table from the code."""
+``python tests/test_docs.py`` prints docs/categories.md's table from the code."""
 
 from __future__ import annotations
 
@@ -21,11 +21,12 @@ from infmob_usd.cli import _parser
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
 CLI_MD = ROOT / "docs" / "cli.md"
+CATEGORIES_MD = ROOT / "docs" / "categories.md"
 DOCS = [README, ROOT / "CHANGELOG.md", *sorted((ROOT / "docs").glob("*.md"))]
 
 
 def category_table() -> list[str]:
-    """The README's category rows: each discovered category with the first line of its description and the
+    """docs/categories.md's rows: each discovered category with the first line of its description and the
     dataset and benchmark categories it answers (:mod:`infmob_usd.answers`)."""
     from infmob_usd.answers import answers
 
@@ -33,11 +34,16 @@ def category_table() -> list[str]:
             for n in infmob_usd.list_categories()]
 
 
-def test_the_readme_lists_the_discovered_categories():
-    text = README.read_text()
+def test_the_category_docs_list_the_discovered_categories():
+    names = infmob_usd.list_categories()
+    text = CATEGORIES_MD.read_text()
     rows = [ln for ln in text.splitlines() if re.match(r"\| `[a-z_]+` \| ", ln)]
-    assert rows == category_table(), "README's category table is stale: paste `python tests/test_docs.py`"
-    assert f"{len(infmob_usd.list_categories())} categories, discovered" in text
+    assert rows == category_table(), "docs/categories.md's table is stale: paste `python tests/test_docs.py`"
+    readme = README.read_text()
+    listed = next((ln for ln in readme.splitlines() if ln.startswith("`") and " · " in ln), "")
+    assert listed == " · ".join(f"`{n}`" for n in names), "README's category list is not the discovered categories"
+    for doc in (text, readme):
+        assert f"{len(names)} categories, discovered" in doc
 
 
 def _commands(parser: argparse.ArgumentParser, prefix=()):

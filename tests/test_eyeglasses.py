@@ -48,3 +48,22 @@ def test_folding_readers_fold_at_the_bridge():
     assert half[:, 1].max() < 0.002 and half[:, 1].min() < -0.05  # the -Y half (its knuckle on the axis)
     up = _points(bp, "front_half", bp.poses({("front_half", 0): math.radians(90)})["front_half"])
     assert up[:, 2].max() > 0.04  # turned up off the table over the other half
+
+
+def test_a_folding_readers_front_folds_only_with_its_temples_folded(tmp_path):
+    """The bridge hinge ``requires_closed`` both temples (written both ways), so the all-open state the checks
+    and previews use is the glasses worn: temples open, front flat; never the front folded with temples out."""
+    import json
+
+    import infmob_usd
+    from infmob_usd.validate.posing import _qpos_for, _read_object
+
+    assert set(_joint(make(0, design="folding_readers")[1], "front_half").requires_closed) == {"temple", "over_temple"}
+    obj = infmob_usd.generate("eyeglasses", 0, texture_size=16, design="folding_readers")
+    folder = infmob_usd.save(obj, tmp_path, formats="urdf")
+    joints = {j["child"]: j for j in json.loads((folder / "metadata.json").read_text())["joints"]}
+    assert joints["front_half"]["requires_closed"] == ["over_temple", "temple"]
+    assert joints["temple"]["requires_closed"] == joints["over_temple"]["requires_closed"] == ["front_half"]
+    q = _qpos_for(_read_object(folder), 1.0)
+    assert q[joints["front_half"]["name"]] == 0.0
+    assert q[joints["temple"]["name"]] > 1.5 and q[joints["over_temple"]["name"]] > 1.5

@@ -150,3 +150,42 @@ def test_a_tote_whose_open_lid_meets_the_shelf_rail_closes_its_lid_first_or_the_
     held = {} if "lid" in tote.requires_closed else {lid.name: lid.upper}
     assert _worst(obj, "tote", "body", held) == 0.0
     assert lid.upper > 0.05  # the lid still opens
+
+
+def test_two_doors_that_require_each_other_closed_keep_their_swings_and_are_never_open_together(tmp_path):
+    """A joint declares ``requires_closed``: the relation is written both ways, every open state (the clearance
+    pass's, the validators', the previews') opens the first door only, so neither gives up its swing to the
+    other; both are still swept from rest and closed from the all-open state clear of each other."""
+    from dataclasses import replace
+
+    from infmob_usd.validate.files import mode_excludes
+    from infmob_usd.validate.physics import check_self_collision, load_model
+    from infmob_usd.validate.posing import _qpos_for, _read_object
+
+    bp = wall_doors()
+    bp.joints[-1] = replace(bp.joints[-1], requires_closed=("a",))
+    obj = _make(bp)
+    a, b = _joint(obj, "a"), _joint(obj, "b")
+    assert a.upper == pytest.approx(2.0) and b.upper == pytest.approx(2.0)  # without it b stops short
+    assert a.requires_closed == ("b",) and b.requires_closed == ("a",)
+    assert _worst(obj, "a", "b", {}) == 0.0 and _worst(obj, "b", "a", {}) == 0.0
+    folder = infmob_usd.save(obj, tmp_path)
+    meta = json.loads((folder / "metadata.json").read_text())
+    by_child = {j["child"]: j for j in meta["joints"]}
+    assert by_child["a"]["requires_closed"] == ["b"] and by_child["b"]["requires_closed"] == ["a"]
+    assert mode_excludes(meta) == {a.name: [b.name], b.name: [a.name]}
+    q = _qpos_for(_read_object(folder), 1.0)  # the all-open state the previews and checks draw
+    assert q[a.name] == pytest.approx(2.0) and q[b.name] == 0.0
+    result = check_self_collision(load_model(folder))
+    assert result.ok, result.detail
+
+
+def test_requires_closed_names_a_part_that_moves():
+    from dataclasses import replace
+
+    from infmob_usd.errors import ModelError
+
+    bp = wall_doors()
+    bp.joints[-1] = replace(bp.joints[-1], requires_closed=("body",))
+    with pytest.raises(ModelError, match="requires 'body' closed"):
+        _make(bp)

@@ -6,7 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tests.helpers import maker
+from tests.helpers import maker, part_points
+
+from zoo import object_limits
 
 make = maker("toaster_oven")
 
@@ -36,3 +38,17 @@ def test_controls_are_right_of_the_door():
         for name in knobs:
             lo = np.array([pc.bounds for pc in bp.parts[name].pieces])[:, 0].min(0)
             assert lo[1] > door_hi[1]  # +Y: the right-hand side as one faces the front
+
+
+@pytest.mark.parametrize("design", ["compact", "six_slice", "air_fry"])
+def test_the_door_drops_to_horizontal_with_its_handle_over_the_counter(design):
+    """A real toaster oven's door lies flat when open, its bar clear of the counter and no lower than the
+    casing's bottom: the ground pass must not have to stop the door short of horizontal."""
+    for seed in range(2):
+        p, bp = make(seed, design=design)
+        bp = object_limits("toaster_oven", seed, bp, design=design)
+        door = next(j for j in bp.joints if j.child == "door").dofs[0]
+        assert door.upper == pytest.approx(np.pi / 2, abs=0.01)  # horizontal, not cut by the counter
+        open_door = part_points(bp, "door", bp.poses({("door", 0): door.upper})["door"])
+        casing_bottom = min(pc.bounds[0][2] for pc in bp.parts["body"].pieces if pc.material != "feet")
+        assert open_door[:, 2].min() >= casing_bottom

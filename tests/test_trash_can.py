@@ -57,3 +57,21 @@ def test_a_pedal_bin_with_a_bucket_passes_the_sapien_checks(pedal_bin):
     report = validate_object(pedal_bin, sim=True)
     failed = [c for c in report.checks if not c.ok]
     assert not failed, [f"{c.name}: {c.detail}" for c in failed]
+
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_an_open_bins_bucket_lifts_right_out(seed):
+    """A lidless bin's one joint is its bucket: the body's walls guide it until its bottom clears the rim, so at
+    its limit the bucket stands clear of the body (not a hand's 3 cm lift hidden inside it)."""
+    obj = infmob_usd.generate("trash_can", seed=seed, texture_size=16, design="open_bin")
+    bucket = next(j for j in obj.movable_joints if j.child == "bucket")
+    links = {link.name: link for link in obj.links}
+
+    def lowest_top(name):
+        b = [pc.bounds + links[name].origin for pc in links[name].pieces]
+        return min(x[0][2] for x in b), max(x[1][2] for x in b)
+
+    bottom, _ = lowest_top("bucket")
+    _, rim = lowest_top("body")
+    assert bottom + bucket.upper > rim

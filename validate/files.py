@@ -18,6 +18,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from infmob_usd.joints import closed_excludes
 from infmob_usd.rotation import motion, transform
 
 
@@ -268,8 +269,15 @@ def object_files(folder: Path, meta: dict | None = None) -> tuple[Path, Path]:
 
 def mode_excludes(meta: dict) -> dict[str, list[str]]:
     """Joint name -> the joints it ``excludes`` (``metadata.json``): the other modes of one fitting, at rest
-    while it is off rest (a tilt-and-turn sash tilts or turns); read with :func:`infmob_usd.joints.one_mode`."""
-    return {j["name"]: list(j["excludes"]) for j in meta.get("joints", []) if j.get("excludes")}
+    while it is off rest (a tilt-and-turn sash tilts or turns), and the joints of parts that it and they each
+    ``requires_closed`` (never open together: :func:`infmob_usd.joints.closed_excludes`); read with
+    :func:`infmob_usd.joints.one_mode`."""
+    movable = [j for j in meta.get("joints", []) if j.get("type") not in (None, "fixed")]
+    out = {j["name"]: list(j["excludes"]) for j in movable if j.get("excludes")}
+    pairs = closed_excludes([(j["name"], j.get("group"), j.get("requires_closed") or []) for j in movable])
+    for name, held in pairs.items():
+        out[name] = out.get(name, []) + [n for n in held if n not in out.get(name, [])]
+    return out
 
 
 def load_metadata(folder: Path) -> dict:

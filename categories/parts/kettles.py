@@ -24,6 +24,7 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
+from infmob_usd.rotation import rotation_between
 
 from .vessel import Profile, lid_gap
 
@@ -54,9 +55,20 @@ LID_T = 0.006  # m, the lid's thickness as the simulator sees it
 LID_SHEET = 0.0008  # m, pressed steel or moulded plastic of the lid (its mass)
 LID_OPENS = math.radians(95)  # kettle lids open to about upright
 LID_KNOB = (0.008, 0.015)  # m, the lid's knob: radius, top over the lid's mid-plane
-SPOUT_R = 0.011  # m, spout tube radius
+# Spouts (product photos, approximate: Le Creuset 1.7 l and OXO Uplift whistling kettles, Russell Hobbs 20460
+# jug): an open, tapering tube rising from low on the body (a stovetop kettle's) or from mid-height (a jug's)
+# at 40-55 degrees to a tip over the fill line (~85 % of the height), ~35 mm across at the root and ~22 mm at
+# the tip, a 1.5-2 mm wall.
+SPOUT = {"jug": dict(root=0.5, tip=1.0, rise=math.radians(55), r0=0.017, r1=0.012),
+         "stovetop": dict(root=0.25, tip=1.0, rise=math.radians(40), r0=0.018, r1=0.011)}
+SPOUT_WALL = 0.002  # m
+FILL_LINE = 0.85  # the max-fill mark as a share of the body's height (kettle listings: 1.7 l of ~2 l brimful)
 FLAP_OPENS = math.radians(80)
-HANDLE_R = 0.012  # m, a side handle's grip (solid plastic)
+# Side handles (Russell Hobbs 20460, Bosch TWK7203, Le Creuset kettle, product photos): a 10-12 cm grip ~3 cm
+# thick with 3-4 cm of room for the fingers between it and the body, on two arms into the wall.
+HANDLE_R = 0.015  # m, the grip's radius (solid plastic)
+HANDLE_ROOM = 0.035  # m, between the grip and the body's widest
+GRIP = 0.1  # m, the upright grip's least length (on a squat kettle its top rises over its upper arm's root)
 BAIL_R = 0.0025  # m, a camping kettle's wire bail
 BAIL_OPENS = math.radians(95)  # the bail rises from folded back to just past upright
 SWITCH = (0.018, 0.02, 0.006)  # m, on/off paddle: reach, width, thickness (product photos)
@@ -98,7 +110,7 @@ def body(k: Kettle, design: str, slot: str, handle_slot: str) -> list[g.Piece]:
     d = DESIGNS[design]
     pieces = [k.profile.wall(slot, sheet=d.sheet),
               g.disc((0, 0, k.z0 + WALL), k.profile.base_radius - WALL, 2 * WALL, slot).replace(sheet=d.sheet)]
-    pieces.append(g.tube(spout_path(k), SPOUT_R, slot))
+    pieces.append(spout(k, slot))
     if design != "camping":
         pieces.append(g.tube(handle_path(k), HANDLE_R, handle_slot))
     if design == "electric":
@@ -111,28 +123,41 @@ def _r_at(k: Kettle, z: float) -> float:
     return float(f[:, 0][abs(f[:, 1] - z).argmin()])
 
 
-def spout_path(k: Kettle) -> list[tuple[float, float, float]]:
-    """From the front wall up and out; its last run is level (the flap closes its end). A jug kettle's spout
-    is a short one under the rim, a stovetop kettle's rises from low on the body."""
-    h = k.height - k.z0
-    jug = k.z0 > 0
-    za, zb = k.z0 + (0.72 if jug else 0.3) * h, k.z0 + (0.9 if jug else 0.8) * h
-    xa = _r_at(k, za) - 2 * SPOUT_R
-    xb = k.radius + (0.025 if jug else 0.05)
-    return [(xa, 0, za), (xb - 0.025, 0, zb), (xb, 0, zb)]
+def _spout_line(k: Kettle) -> tuple[np.ndarray, np.ndarray, float, dict]:
+    """The spout's root (inside the front wall), its unit axis, its length and its :data:`SPOUT` sizes."""
+    h, jug = k.height - k.z0, k.z0 > 0
+    s = SPOUT["jug" if jug else "stovetop"]
+    za, zb = k.z0 + s["root"] * h, k.z0 + s["tip"] * h
+    root = np.array([_r_at(k, za) - s["r0"], 0.0, za])  # buried in the wall: no gap at the joint
+    axis = np.array([math.cos(s["rise"]), 0.0, math.sin(s["rise"])])
+    return root, axis, (zb - za) / axis[2], s
+
+
+def spout(k: Kettle, slot: str) -> g.Piece:
+    """The spout: an open tapering tube from low on the front wall up and out to its tip over the fill line."""
+    root, axis, length, s = _spout_line(k)
+    tube = g.shell([(s["r0"], 0.0), (s["r1"], length)], SPOUT_WALL, slot, sections=24, convex_sectors=8)
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = rotation_between((0, 0, 1), axis), root
+    return tube.transformed(m)
 
 
 def spout_tip(k: Kettle) -> tuple[float, float, float]:
-    return spout_path(k)[-1]
+    """The centre of the spout's open end."""
+    root, axis, length, _ = _spout_line(k)
+    return tuple(root + length * axis)
 
 
 def handle_path(k: Kettle) -> list[tuple[float, float, float]]:
-    """A D-shaped grip behind the body from under the rim down to near the bottom."""
+    """A D-shaped grip behind the body: level arms from under the rim and from low on the body, their ends
+    buried in the wall, and an upright grip :data:`HANDLE_ROOM` clear of the body's widest."""
     h = k.height - k.z0
-    zt, zb = k.height - 0.12 * h, k.z0 + 0.2 * h
-    xt, xb = -_r_at(k, zt) + WALL, -_r_at(k, zb) + WALL  # its ends into the wall, not through it
-    out = -k.radius - 0.045
-    return [(xt, 0, zt), (out + 0.01, 0, zt + 0.01), (out, 0, zt - 0.02), (out, 0, zb + 0.02), (xb - 0.01, 0, zb)]
+    zt, zb = k.height - 0.06 * h, k.z0 + 0.1 * h
+    xt, xb = -_r_at(k, zt) + HANDLE_R, -_r_at(k, zb) + HANDLE_R  # into the wall, not through it
+    out, bend = -k.radius - HANDLE_ROOM - HANDLE_R, 0.015
+    top = max(zt, zb + 2 * bend + GRIP)
+    return [(xt, 0, zt), (out + bend, 0, top), (out, 0, top - bend), (out, 0, zb + bend), (out + bend, 0, zb),
+            (xb, 0, zb)]
 
 
 def lid(k: Kettle, slot: str, knob_slot: str) -> tuple[list[g.Piece], Frame]:
@@ -152,10 +177,11 @@ def lid(k: Kettle, slot: str, knob_slot: str) -> tuple[list[g.Piece], Frame]:
 def flap(k: Kettle, slot: str) -> tuple[list[g.Piece], Frame]:
     """The whistle flap over the spout's end, hinged on its top edge (axis -Y: it swings out and up); the hinge
     line is behind the flap's middle, so its weight holds it shut against its stop."""
-    x, _, z = spout_tip(k)
-    r = SPOUT_R + 0.003
-    pieces = [g.cylinder((x + 0.002, 0, z), (x + 0.006, 0, z), r, slot)]
-    return pieces, Frame.at((x + 0.002, 0, z + r), z=(0, -1, 0))
+    _, axis, _, s = _spout_line(k)
+    tip, r = np.asarray(spout_tip(k)), s["r1"] + 0.003
+    up = np.array([-axis[2], 0.0, axis[0]])  # across the end face, towards its top edge
+    pieces = [g.cylinder(tip + 0.002 * axis, tip + 0.006 * axis, r, slot)]
+    return pieces, Frame.at(tuple(tip + 0.002 * axis + r * up), z=(0, -1, 0))
 
 
 def bail(k: Kettle, slot: str) -> tuple[list[g.Piece], Frame]:

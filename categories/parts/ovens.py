@@ -240,14 +240,14 @@ def drawer(xs, ys, zs, warming: bool, handle_length: float, travel: float) -> A.
                     travel * (xf + d["front_gap"] - (xb + T + d["tray_back"])))
 
 
-def door(box, margin: float, handle_length: float) -> list[g.Piece]:
+def door(box, margin: float, handle_length: float, handle: hardware.HandleSize = HANDLE) -> list[g.Piece]:
     """An oven door (:func:`.appliance.oven_door`) with its window ``margin`` inside the frame (more below
-    and above it) and a tube bar handle under its top."""
+    and above it) and a tube bar ``handle`` (a range's by default) under its top."""
     x0, x1, y0, y1, z0, z1 = box
     m = margin
     below, above = O["window"]
     hole = (y0 + m, z0 + below * m, y1 - m, z1 - above * m)
-    bar = hardware.bar_handle(handle_length * (y1 - y0), "handle", HANDLE).attached(
+    bar = hardware.bar_handle(handle_length * (y1 - y0), "handle", handle).attached(
         "mount", to=Frame.at((x1, 0.0, z1 - O["handle_below"]), z=(1, 0, 0), x=(0, 1, 0)))
     return A.oven_door(box, hole) + [pc.replace(sheet=O["handle_tube"]) for pc in bar.parts[bar.root].pieces]
 

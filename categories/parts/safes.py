@@ -1,5 +1,5 @@
-"""Safes: a thick steel body open at the front, its heavy door (a hollow steel box with the lock's holes),
-a three-spoke bolt handle and an inner drawer.
+"""Safes: a thick steel body open at the front, its heavy door (a hollow steel box with the lock's holes and its
+bolts), a three-spoke bolt handle and an inner drawer.
 
 The body stands on z = 0 centred on the z axis, its opening facing +x. Its anchors ``hinge_neg`` / ``hinge_pos``
 are the door's hinge line at the front corner on the -y / +y side (z the axis a positive turn opens the door
@@ -44,15 +44,22 @@ class Build:
     sheet: float
     door_sheet: float
     opens: float
+    bolt_r: float = 0.0
+    bolts: int = 0
 
 
 # Fire-rated home safes: 2-4 cm walls of steel skin round a gypsum/concrete fill and 6-8 cm doors, 35-60 kg
 # (SentrySafe SFW123 ~39 kg): massed as ~6 mm of steel. Hotel safes: 2-3 mm body, a 6-8 mm door plate on a
 # 3 cm door, 9-15 kg. Gun cabinets: 14-16 gauge (1.5-1.9 mm) steel, a 3 cm door of one folded sheet and a thin
 # liner, 25-45 kg. Doors open 100-180 degrees on their external or concealed hinges.
-BUILD = {"home_safe": Build(0.03, 0.065, 0.006, 0.005, math.radians(120)),
-         "hotel_safe": Build(0.006, 0.03, 0.003, 0.0035, math.radians(110)),
-         "gun_cabinet": Build(0.004, 0.03, 0.0019, 0.0011, math.radians(120))}
+# Bolts: the handle throws live bolts out of the door's free edge and dead bolts stand in its hinge edge
+# (SentrySafe SFW123: 1 in / 25 mm live bolts, dead bolts on the hinge side; Elsafe hotel safes: two 20 mm
+# bolts; Stack-On cabinets: 3-point locking, ~16 mm). Drawn withdrawn, their heads showing on both edges
+# ``bolt_r`` round, ``bolts`` to an edge; they are not jointed (the handle's quarter turn stands for them).
+BUILD = {"home_safe": Build(0.03, 0.065, 0.006, 0.005, math.radians(120), 0.0125, 2),
+         "hotel_safe": Build(0.006, 0.03, 0.003, 0.0035, math.radians(110), 0.01, 2),
+         "gun_cabinet": Build(0.004, 0.03, 0.0019, 0.0011, math.radians(120), 0.008, 3)}
+BOLT = dict(depth=0.03, proud=0.002)  # m, a bolt's length in the door and its head past the edge
 
 # Locks (SentrySafe, Sargent & Greenleaf, Elsafe listings): a 6-7 cm combination dial on a 6 mm spindle; a
 # 12-key pad of ~10 x 8 mm keys pressing 2 mm on a 22 x 17 mm pitch; a three-spoke bolt handle ~10-14 cm
@@ -101,10 +108,14 @@ def handle_cutout(at: tuple[float, float]) -> Cutout:
 
 def door(width: float, height: float, b: Build, material: str, cutouts: dict[str, Cutout]) -> Assembly:
     """The door: a hollow steel box ``b.thick`` deep covering the body's front, its lock's ``cutouts`` in its front
-    face (anchors of their names). Anchors ``hinge_neg`` / ``hinge_pos`` (as the body's)."""
+    face (anchors of their names), its bolts' heads on both upright edges. Anchors ``hinge_neg`` / ``hinge_pos``
+    (as the body's)."""
     size = CasingSize(width, b.thick, height, min(0.004, b.thick / 4), b.door_sheet, 0.005)
     made = sheet_casing(size, material, cutouts, label="door")
     t2, w2 = b.thick / 2, width / 2
+    bolts = [g.cylinder((0, s * (w2 - BOLT["depth"]), z), (0, s * (w2 + BOLT["proud"]), z), b.bolt_r, "handle")
+             for s in (-1, 1) for z in (height * (k + 1) / (b.bolts + 1) for k in range(b.bolts))]
+    made = made.with_pieces(made.root, bolts) if bolts else made
     anchors = {**made.anchors, "hinge_neg": Frame.at((-t2, -w2, 0), x=(1, 0, 0), z=(0, 0, -1)),
                "hinge_pos": Frame.at((-t2, w2, 0), x=(1, 0, 0), z=(0, 0, 1))}
     return Assembly(made.parts, anchors=anchors, supports=made.supports)

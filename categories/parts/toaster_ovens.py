@@ -20,7 +20,7 @@ from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 
 from . import appliance as A
-from . import controls, ovens
+from . import controls, hardware, ovens
 from .casing import CasingSize, Cutout, LinerSize, sheet_casing
 
 
@@ -59,7 +59,12 @@ SHEET = 0.0006  # m, 0.5-0.7 mm steel casing sheet (massed so)
 WALL = 0.003  # m, walls as the simulator sees them
 FEET = (0.008, 0.012)  # m, rubber feet radius and height
 PANEL = 0.105  # m, the control column's width (Breville BOV800XL ~4 in, Black+Decker TO1313 ~3.5 in)
-FLOOR = 0.035  # m, the cavity floor over the casing's bottom: the crumb tray slides in under it
+FLOOR = 0.04  # m, the cavity floor over the casing's bottom: the crumb tray slides in under it
+# A toaster oven's door bar is a 12-14 mm tube standing ~22 mm off the glass (product photos: Black+Decker
+# TO1313SB, Cuisinart TOB-135), far slighter than a range's 20 mm bar 40 mm out: the door drops to horizontal
+# with the bar hanging clear over the counter, under the hinge at FLOOR + the feet (HANDLE_REACH < FLOOR).
+HANDLE = hardware.HandleSize(standoff=0.022, bar_radius=0.0065, post_radius=0.005, inset=0.02)
+HANDLE_REACH = HANDLE.standoff + 2 * HANDLE.bar_radius  # m, the open door's bar hangs this far under its hinge
 TOP = 0.02  # m, the casing over the door's top
 DOOR = dict(thickness=0.022, gap=0.003, margin=0.02, handle=0.7)  # a glazed door 20-25 mm thick, its bar 70 % wide
 DOOR_OPENS = 1.571  # rad, a drop-down door opens to horizontal
@@ -163,4 +168,4 @@ def rack(o: Oven, racks: int, k: int) -> tuple[list[g.Piece], float]:
 
 def door(o: Oven) -> list[g.Piece]:
     """The glazed drop-down door with its bar handle (:func:`.ovens.door`)."""
-    return ovens.door(o.door, DOOR["margin"], DOOR["handle"])
+    return ovens.door(o.door, DOOR["margin"], DOOR["handle"], HANDLE)

@@ -8,7 +8,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..blueprint import descendants
-from ..joints import one_mode
+from ..joints import closed_excludes, one_mode
 from .hulls import CLEARANCE, _boxes_meet, _hits, _Obstacles, _solid_hulls
 from .sweep import _Moving, _parent_limit, _sweep_limit
 
@@ -43,6 +43,8 @@ class _Clearance:
         self.gate_of_someone = {name for names in self.gates.values() for name in names}
         # joint -> the other modes of its part that are at rest while it is open (JointSpec.exclusive)
         self.excludes = {j.name: tuple(getattr(j, "excludes", ())) for j in self.movable}
+        for name, held in closed_excludes([(j.name, j.group, j.requires_closed) for j in self.movable]).items():
+            self.excludes[name] += tuple(held)  # parts that require each other closed: never open together
         self.order = [j.name for j in self.movable]
         self.by_name = {link.name: link for link in obj.links}
         self.into = {j.child: j for j in obj.joints}
