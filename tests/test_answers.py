@@ -1,5 +1,5 @@
 """Every category of PartNet-Mobility, Infinigen-Sim, RoboCasa's articulated fixtures and the Infinite Mobility paper
-is answered by a category we generate, and the README says which answers which."""
+is answered by a category we generate, and docs/categories.md says which answers which."""
 
 import infmob_usd
 from infmob_usd.answers import _MAP, PARTNET_MOBILITY, answers, unanswered
