@@ -1,7 +1,8 @@
 """Writing a scene: every distinct object once under ``objects/``, and three views of the room.
 
 * ``scene.usda``: the root layer. ``/Scene/physicsScene`` (the one ``PhysicsScene``), ``/Scene/Room`` (floor,
-  ceiling and walls as static box colliders, split around the openings doors and windows fill) and
+  ceiling and walls as static box colliders, split around the openings doors and windows fill, and the room's
+  fixtures: a worktop carried over a run's under-counter appliances) and
   ``/Scene/Objects/<id>``: each placed object an ``Xform`` that references its own object stage
   (``objects/<key>/<name>/<name>.usda``) with its pose; an object standing free (an item set down) has its
   fixed ``root_joint`` disabled, so it rests on what carries it. An object placed twice is written once and
@@ -26,6 +27,7 @@ import numpy as np
 from . import check_output_dir, publish, write_object
 
 SCENE_FILES = ("scene.usda", "scene.json", "scene.xml")
+ROOM_COLOR = (0.85, 0.84, 0.8)  # walls, floor and ceiling; a fixture (a worktop) carries its own
 
 
 def _r(x, n: int = 6):
@@ -55,7 +57,9 @@ def scene_record(s, folders: dict[str, str]) -> dict:
                      "openings": [{"wall": o.wall, "start": round(o.start, 6), "end": round(o.end, 6),
                                    "bottom": round(o.bottom, 6), "top": round(o.top, 6), "filled_by": o.what}
                                   for o in room.openings],
-                     "boxes": [{"name": n, "min": _r(lo), "max": _r(hi)} for n, lo, hi in room.wall_boxes()]},
+                     "boxes": [{"name": n, "min": _r(lo), "max": _r(hi)} for n, lo, hi in room.wall_boxes()]
+                     + [{"name": f.name, "min": _r(f.lo), "max": _r(f.hi), "color": _r(f.color, 4)}
+                        for f in room.fixtures]},
             "objects": objects}
 
 
@@ -91,7 +95,7 @@ def write_usd(s, rec: dict, folder: Path) -> None:
         cube.CreateSizeAttr(1.0)
         cube.AddTranslateOp().Set(Gf.Vec3d(*_r((lo + hi) / 2)))
         cube.AddScaleOp().Set(Gf.Vec3f(*_r(hi - lo)))
-        cube.CreateDisplayColorAttr([Gf.Vec3f(0.85, 0.84, 0.8)])
+        cube.CreateDisplayColorAttr([Gf.Vec3f(*box.get("color", ROOM_COLOR))])
         UsdPhysics.CollisionAPI.Apply(cube.GetPrim())
     UsdGeom.Scope.Define(stage, "/Scene/Objects")
     free_joints: dict[str, list[str]] = {}
@@ -123,7 +127,7 @@ def write_mjcf(rec: dict, folder: Path) -> None:
         lo, hi = np.array(box["min"]), np.array(box["max"])
         c, h = _r((lo + hi) / 2), _r((hi - lo) / 2)
         lines.append(f'    <geom name="room/{box["name"]}" type="box" pos="{" ".join(map(str, c))}"'
-                     f' size="{" ".join(map(str, h))}" rgba="0.85 0.84 0.8 1"/>')
+                     f' size="{" ".join(map(str, h))}" rgba="{" ".join(map(str, box.get("color", ROOM_COLOR)))} 1"/>')
     for o in rec["objects"]:
         pos, yaw = " ".join(map(str, o["position"])), round(math.radians(o["yaw"]), 9)
         attach = f'<attach model="{models[o["folder"]]}" prefix="{o["id"]}/"/>'

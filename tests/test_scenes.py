@@ -282,8 +282,64 @@ def test_a_swivel_seat_sweeps_its_turn_when_placed():
 
     chair = infmob_usd.generate("bar_chair", 0, texture_size=16)
     seat = next(j for j in chair.movable_joints if j.type == "continuous")
-    lo, hi, swept = _measure(chair)
+    lo, hi, swept, _ = _measure(chair)
     turned = [b for g, *b in swept if g == seat.group]
     assert turned, [g for g, *_ in swept]
     # a seat wider one way than the other reaches further out turned than at rest
     assert np.all(turned[0][0][:2] <= lo[:2] + 1e-9) and np.all(turned[0][1][:2] >= hi[:2] - 1e-9)
+
+
+UNDER_COUNTER = ("dishwasher", "beverage_fridge")
+
+
+def _base_runs(s) -> list[list]:
+    """Each stretch of a wall's floor units that one worktop covers: base cabinets and the under-counter
+    appliances between them, split at a range or a fridge (in order along the wall)."""
+    by_wall: dict[str, list] = {}
+    for p in s.placed:
+        if p.on == "floor" and p.wall is not None:
+            by_wall.setdefault(p.wall, []).append(p)
+    out = []
+    for wall, units in by_wall.items():
+        k = int(np.argmax(np.abs(s.room.wall(wall).along[:2])))
+        stretch = []
+        for p in sorted(units, key=lambda p: float(p.lo[k])) + [None]:
+            if p is not None and p.made.category in ("kitchen_cabinet", *UNDER_COUNTER):
+                stretch.append(p)
+                continue
+            if any(q.made.category in UNDER_COUNTER for q in stretch):
+                out.append((k, stretch))
+            stretch = []
+    return out
+
+
+@pytest.mark.parametrize(("seed", "layout"), [(0, "u_shape"), (3, "peninsula"), (2, "galley")])
+def test_a_base_run_carries_one_worktop_over_its_under_counter_appliances(seed, layout):
+    # the cabinets' worktops stopped at the dishwasher and the wine cooler: a gap in the counter the width of
+    # each appliance (and of each filler strip), where a real worktop is one slab the appliances slide under
+    from infmob_usd.categories.rooms.kitchen import _worktop_box
+
+    s = scene("kitchen", seed, texture_size=16, layout=layout)
+    runs = _base_runs(s)
+    assert runs, [p.id for p in s.placed]
+    fixtures = [(f.lo, f.hi) for f in getattr(s.room, "fixtures", [])]
+    for k, stretch in runs:
+        tops = [_worktop_box(p) for p in stretch if p.made.category == "kitchen_cabinet"] + [
+            (lo, hi) for lo, hi in fixtures if lo[k] < stretch[-1].hi[k] and hi[k] > stretch[0].lo[k]]
+        z = {round(float(hi[2]), 4) for _, hi in tops}
+        assert z == {round(float(tops[0][1][2]), 4)}, z  # one height
+        # the worktop's top surface covers the stretch end to end, no gap over 3 mm
+        reach, gaps = float(stretch[0].lo[k]), []
+        for lo, hi in sorted(tops, key=lambda b: float(b[0][k])):
+            if lo[k] - reach > 0.003:
+                gaps.append((round(reach, 3), round(float(lo[k]), 3)))
+            reach = max(reach, float(hi[k]))
+        if stretch[-1].hi[k] - reach > 0.003:
+            gaps.append((round(reach, 3), round(float(stretch[-1].hi[k]), 3)))
+        assert not gaps, (seed, layout, [p.id for p in stretch], gaps)
+        # each appliance slides under it, clear of it
+        for p in stretch:
+            if p.made.category in UNDER_COUNTER:
+                assert p.hi[2] < min(lo[2] for lo, _ in tops) - 0.002, (p.id, p.hi[2])
+    for lo, hi in fixtures:  # and no fixture stands in a placed object
+        assert not [p.id for p in s.placed if boxes_overlap(lo, hi, p.lo, p.hi)]

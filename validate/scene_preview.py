@@ -78,7 +78,10 @@ class _SceneOnStage:
                 continue  # the walls between the camera and the room
             lo, hi = np.array(box["min"]), np.array(box["max"])
             body = sapien.render.RenderBodyComponent()
-            shape = sapien.render.RenderShapeBox(((hi - lo) / 2).tolist(), floor if box["name"] == "floor" else wall)
+            look = floor if box["name"] == "floor" else wall
+            if "color" in box:  # a fixture (a worktop) in its own colour
+                look = sapien.render.RenderMaterial(base_color=[*box["color"], 1], roughness=0.5)
+            shape = sapien.render.RenderShapeBox(((hi - lo) / 2).tolist(), look)
             body.attach(shape)
             ent = sapien.Entity()
             ent.add_component(body)

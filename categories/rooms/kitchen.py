@@ -12,10 +12,13 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
 from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
+from infmob_usd.scenes.room import Fixture, boxes_overlap, moved_box
 
 # NKBA Kitchen Planning Guidelines (2021): work aisle >= 42 in (1.07 m) for one cook, 48 in (1.22 m) for two;
 # 36 in (0.91 m) behind a seated diner where no one passes, 44 in (1.12 m) where one walks behind.
@@ -28,6 +31,8 @@ WALL = 0.12  # m: a 100 mm stud partition with 12.5 mm plasterboard each side
 STOOL_SEAT = (0.61, 0.66)
 DOOR_ANGLE = math.pi / 2  # cabinet hinges in a fitted run: 90-110 degrees; 90 keeps a door clear of its neighbour
 SILL = (0.95, 1.1)  # m: a kitchen window's sill above the floor, over worktop height
+# built in under the worktop, between base cabinets: the run's worktop is carried over them
+UNDER_COUNTER = ("dishwasher", "beverage_fridge")
 
 PARAMS = (
     Float("worktop_height", "floor to worktop top (and to the range's cooktop)", "m", 0.86, 0.92),
@@ -48,6 +53,15 @@ GRAMMAR = Grammar("kitchen", {
                            "wall_units", "microwave", "plate_rack", "wine_cooler", "refrigerator", "bottle", "jar",
                            "cookware", "kettle", "toaster", "coffee_machine")},
 })
+
+
+def _worktop_box(placed) -> tuple[np.ndarray, np.ndarray]:
+    """Room-frame box of a placed cabinet's worktop (its ``top`` pieces at rest)."""
+    obj = placed.made.obj
+    poses = obj.poses({j.name: j.lower for j in obj.movable_joints})
+    boxes = [moved_box(*p.bounds, placed.pose @ poses[link.name]) for link in obj.links for p in link.pieces
+             if p.material == "top"]
+    return np.min([b[0] for b in boxes], 0), np.max([b[1] for b in boxes], 0)
 
 
 class KitchenLayout(RoomLayout):
@@ -113,7 +127,46 @@ class KitchenLayout(RoomLayout):
         for pl, _ in placed:
             if pl.made.category == "kitchen_cabinet" or pl.made.category == "oven":
                 self.worktops.append(pl)
+        self.carry_worktop([pl for pl, _ in placed])
         return placed
+
+    def carry_worktop(self, run: list) -> None:
+        """One worktop over each stretch of ``run`` between its tall or freestanding units (a range, a fridge):
+        where the cabinets' own worktops leave off (over a dishwasher, a wine cooler, a filler) a slab at their
+        height and depth joins them, a static fixture of the room; the appliances slide under it, their tops
+        4 mm below it (:meth:`under_counter`). A piece that would meet a placed object or its swing is left out."""
+        if not run:
+            return
+        k = int(np.argmax(np.abs(self.room.wall(run[0].wall).along[:2])))  # the axis the run lies along
+        stretch: list = []
+        for pl in sorted(run, key=lambda pl: float(pl.lo[k])) + [None]:
+            if pl is not None and pl.made.category in ("kitchen_cabinet", *UNDER_COUNTER):
+                stretch.append(pl)
+                continue
+            cabinets = [c for c in stretch if c.made.category == "kitchen_cabinet"]
+            if cabinets and len(stretch) > 1:
+                self._bridge(stretch, cabinets, k)
+            stretch = []
+
+    def _bridge(self, stretch: list, cabinets: list, k: int) -> None:
+        top = {c.id: _worktop_box(c) for c in cabinets}
+        lo, hi = top[cabinets[0].id]
+        look = cabinets[0].made.obj.materials["top"]
+        covered = sorted((float(a[k]), float(b[k])) for a, b in top.values())
+        s, end = float(min(pl.lo[k] for pl in stretch)), float(max(pl.hi[k] for pl in stretch))
+        gaps = []
+        for a, b in covered + [(end, end)]:
+            if a - s > 1e-4:
+                gaps.append((s, a))
+            s = max(s, b)
+        for s0, s1 in gaps:
+            g_lo, g_hi = lo.copy(), hi.copy()
+            g_lo[k], g_hi[k] = s0, s1
+            clear = all(not boxes_overlap(g_lo, g_hi, o.lo, o.hi) and not any(
+                boxes_overlap(g_lo, g_hi, a, b) for _, a, b in o.moving_boxes()) for o in self.placed)
+            if clear:
+                name = f"worktop_{len(self.room.fixtures)}"
+                self.room.fixtures.append(Fixture(name, g_lo, g_hi, tuple(float(c) for c in look.base_color[:3])))
 
     # -- layouts -----------------------------------------------------------------------------------------------
     def single_wall(self, node, wine):

@@ -80,6 +80,8 @@ class Made:
     regions: list[Region]
     hulls: tuple[np.ndarray, np.ndarray]  # each collision hull's box, (n, 3) lo and hi: what set-down items clear
     clearance: Clearance | None = None  # the floor space it keeps free of other furniture
+    moving: list[tuple[str, np.ndarray, np.ndarray]] = field(default_factory=list)  # (group, lo, hi): only the
+    # parts that group moves, over their whole travel (what a fixture beside the object must keep clear of)
 
     @property
     def size(self) -> np.ndarray:
@@ -108,12 +110,27 @@ class Placed:
     def swept_boxes(self) -> list[tuple[str, np.ndarray, np.ndarray]]:
         return [(g, *moved_box(lo, hi, self.pose)) for g, lo, hi in self.made.swept]
 
+    def moving_boxes(self) -> list[tuple[str, np.ndarray, np.ndarray]]:
+        """Room-frame boxes each joint group's moving parts sweep (not the rest of the object)."""
+        return [(g, *moved_box(lo, hi, self.pose)) for g, lo, hi in self.made.moving]
+
     def region_in_room(self, region: Region) -> tuple[np.ndarray, np.ndarray]:
         lo, hi = moved_box((*region.lo, region.z), (*region.hi, region.z), self.pose)
         return lo, hi
 
 
-def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
+def _moved_links(obj, joints) -> set[str]:
+    """The links ``joints`` move: their children and everything hung below them."""
+    out, todo = set(), [j.child for j in joints]
+    while todo:
+        name = todo.pop()
+        if name not in out:
+            out.add(name)
+            todo += [j.child for j in obj.joints if j.parent == name]
+    return out
+
+
+def _measure(obj) -> tuple[np.ndarray, np.ndarray, list, list]:
     lo, hi = obj.bounds()
     local = {link.name: (np.array([p.bounds[0] for p in link.pieces]).min(0),
                          np.array([p.bounds[1] for p in link.pieces]).max(0)) for link in obj.links if link.pieces}
@@ -123,19 +140,27 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list]:
         # a quarter each way, and a user turns it all round
         if math.isfinite(j.upper):
             groups.setdefault(j.group, []).append(j)
-    swept = []
+    swept, parts = [], []
     for group, joints in sorted(groups.items()):
         # a turning part reaches furthest part-way (a flap door swinging up passes over its hinge): sample the
         # range every SWEEP_STEP; a slide is furthest at its end
         turns = any(j.type in ("revolute", "continuous") for j in joints)
         n = max(2, int(math.ceil(max(j.upper - j.lower for j in joints) / SWEEP_STEP)) + 1) if turns else 2
-        pts = []
+        pts, moving = [], []
+        moved = _moved_links(obj, joints)
         for f in np.linspace(0.0, 1.0, n)[1:]:
             poses = obj.poses({j.name: j.lower + f * (j.upper - j.lower) for j in joints})
-            pts += [moved_box(a, b, poses[name])[0:2] for name, (a, b) in local.items()]
+            for name, (a, b) in local.items():
+                box = moved_box(a, b, poses[name])[0:2]
+                pts.append(box)
+                if name in moved:
+                    moving.append(box)
         pts = np.vstack(pts)
         swept.append((group, pts.min(0), pts.max(0)))
-    return lo, hi, swept
+        if moving:
+            moving = np.vstack(moving)
+            parts.append((group, moving.min(0), moving.max(0)))
+    return lo, hi, swept, parts
 
 
 def _steady_links(obj) -> set[str]:
@@ -205,10 +230,10 @@ class SceneLayout:
                 n += 1
                 name = f"{obj.name}_v{n}"
             self._keys.add(name)
-            lo, hi, swept = _measure(obj)
+            lo, hi, swept, moving = _measure(obj)
             clear = CLEARANCES.get(category) if clearance == "category" else clearance
             self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, support_regions(obj),
-                                   hull_boxes(obj), clear)
+                                   hull_boxes(obj), clear, moving)
         return self._made[key]
 
     # -- placing ----------------------------------------------------------------------------------------------

@@ -47,6 +47,17 @@ class Opening:
     what: str  # the id of the placed object that fills it (a door, a window)
 
 
+@dataclass(frozen=True)
+class Fixture:
+    """A static box built into the room that is no object of its own: a worktop carried over the
+    under-counter appliances of a run. ``lo``..``hi`` room frame; ``color``: linear RGB it is drawn in."""
+
+    name: str
+    lo: np.ndarray
+    hi: np.ndarray
+    color: tuple[float, float, float]
+
+
 @dataclass
 class Room:
     width: float  # Y
@@ -54,6 +65,7 @@ class Room:
     height: float
     wall_thickness: float
     openings: list[Opening] = field(default_factory=list)
+    fixtures: list[Fixture] = field(default_factory=list)
 
     def wall(self, name: str) -> Wall:
         w, d = self.width, self.depth
