@@ -159,3 +159,19 @@ def test_missing_sapien_raises_with_install_hint(monkeypatch, good):
     with pytest.raises(sim.SimUnavailableError, match=r"pip install -e \.\[sim\]"):
         sim.check_sapien(good)
     assert issubclass(sim.SimUnavailableError, RuntimeError)
+
+
+def test_a_scene_is_judged_with_sapiens_defaults_whatever_ran_before(good):
+    """ManiSkill sets PhysX's process-wide defaults for its scenes (a 0.02 m contact offset, its own solver
+    iterations and friction); a check run after it in the same process used them (phone seed 236's slider stalled
+    on a false contact only after the ManiSkill tests had run)."""
+    import sapien.physx as physx
+
+    physx.set_shape_config(contact_offset=0.02, rest_offset=0.001)
+    physx.set_body_config(solver_position_iterations=15, solver_velocity_iterations=1, sleep_threshold=0.005)
+    physx.set_default_material(1.0, 1.0, 0.0)
+    scene, art = sim.load_sapien(next(good.glob("*.urdf")))
+    shapes = [s for link in art.get_links() for s in link.get_collision_shapes()]
+    assert shapes and all(s.get_contact_offset() == pytest.approx(0.01) for s in shapes)
+    assert all(s.get_rest_offset() == 0.0 for s in shapes)
+    assert physx.get_default_material().static_friction == pytest.approx(0.3)

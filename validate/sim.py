@@ -259,6 +259,16 @@ def capture_native_log(echo: bool = True) -> Iterator[NativeLog]:
 # --------------------------------------------------------------------------- loading
 
 
+def _sapien_defaults(physx) -> None:
+    """Put PhysX's process-wide scene, shape, body and material defaults back to SAPIEN's own: ManiSkill sets
+    them for its scenes (a 0.02 m contact offset, other solver iterations and friction), and a scene made after
+    it in the same process would be judged with those: a check's result would depend on what ran before it."""
+    physx.set_scene_config(physx.PhysxSceneConfig())
+    physx.set_shape_config(physx.PhysxShapeConfig())
+    physx.set_body_config(physx.PhysxBodyConfig())
+    physx.set_default_material(0.3, 0.3, 0.1)
+
+
 def load_sapien(urdf: str | Path, *, ground: bool = True, timestep: float = 1 / 240):
     """Load a URDF into a physics-only SAPIEN 3 scene on the CPU.
 
@@ -293,6 +303,7 @@ def load_sapien(urdf: str | Path, *, ground: bool = True, timestep: float = 1 / 
     urdf = Path(urdf)
     if not urdf.is_file():
         raise FileNotFoundError(f"no URDF at {urdf}")
+    _sapien_defaults(sapien.physx)
     scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
     scene.set_timestep(timestep)
     if ground:
