@@ -77,6 +77,7 @@ WIKIDATA: dict[str, tuple[str, str]] = {
                         " Q5294 DVD)"),
     "mouse": ("Q7987", "http://www.wikidata.org/entity/Q7987 'mouse' (COCO: 'hand-held device used to move a"
               " pointer on a computer display')"),
+    "keyboard": ("Q1921606", "http://www.wikidata.org/entity/Q1921606 'keyboard' (COCO: 'data input device')"),
     "lighter": ("Q20459", "http://www.wikidata.org/entity/Q20459 'lighter' (WN 03671917-n)"),
     "pen": ("Q165447", "http://www.wikidata.org/entity/Q165447 'pen' (WN 03913116-n, OEWN)"),
     "stapler": ("Q489157", "http://www.wikidata.org/entity/Q489157 'stapler' (WN 04310635-n, OEWN)"),
