@@ -24,7 +24,7 @@ from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
 from infmob_usd.piece import Piece
 
-from .laptops import rounded
+from .laptops import Key, rounded
 from .tables import _hull, slab
 
 # -- real products ---------------------------------------------------------------------------------------
@@ -93,16 +93,6 @@ LAPTOP = (
 """A laptop-style board (K380, Magic Keyboard): half-height function keys (14), the four main rows (14, 14, 13,
 12) and a bottom row of 8 keys with the arrows (left, up over down, right): 78 keys."""
 ROW_GAP = 0.5  # units between the function row and the number row (full size and tenkeyless)
-
-
-@dataclass(frozen=True)
-class Key:
-    """A key's centre (x, y) and size along x and y (m)."""
-
-    x: float
-    y: float
-    dx: float
-    dy: float
 
 
 def _row(widths, x: float, y0: float, pitch: float, foot: float, height: float = 1.0) -> list[Key]:
