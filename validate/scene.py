@@ -55,9 +55,10 @@ def _sapien_scene(folder: Path, rec: dict, timestep: float = 1 / 240):
     the scene once per fixed object: the files are checked once, in :func:`check_scene`)."""
     from sapien.wrapper.urdf_loader import URDFLoader
 
-    from .sim import _build_mimics, _context, _find_urdf, _import_sapien, _read_meta, apply_springs
+    from .sim import _build_mimics, _context, _find_urdf, _import_sapien, _read_meta, _sapien_defaults, apply_springs
 
     sapien = _import_sapien()
+    _sapien_defaults(sapien.physx)  # as every object check: not the defaults whatever ran before left
     scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
     scene.set_timestep(timestep)
     room = scene.create_actor_builder()
