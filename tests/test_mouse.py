@@ -33,3 +33,12 @@ def test_main_buttons_click_down_at_the_front_and_the_side_buttons_press_across(
         y = _points(bp, name)[:, 1].mean()
         assert d.type == "prismatic" and abs(d.axis[1]) > 0.999 and np.sign(d.axis[1]) == -np.sign(y)
         assert abs(y) > 0.4 * np.ptp(body[:, 1])  # on a wall, not the top
+
+
+def test_the_buttons_are_moulded_in_the_shells_colour():
+    from categories.mouse import CATEGORY
+
+    for finish in next(p for p in CATEGORY.params if p.name == "finish").choices:
+        spec = CATEGORY.resolve_materials({**make(0)[0], "finish": finish})
+        # one variant: the shell and the buttons are drawn from the same colour, never two of a list
+        assert "|" not in spec["shell"] and spec["buttons"] == spec["shell"], finish
