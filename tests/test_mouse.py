@@ -42,3 +42,16 @@ def test_the_buttons_are_moulded_in_the_shells_colour():
         spec = CATEGORY.resolve_materials({**make(0)[0], "finish": finish})
         # one variant: the shell and the buttons are drawn from the same colour, never two of a list
         assert "|" not in spec["shell"] and spec["buttons"] == spec["shell"], finish
+
+
+def test_the_plan_ranges_from_an_even_office_mouse_to_an_egg():
+    widths = {}
+    for taper in (0.0, 1.0):
+        _, bp = make(3, design="wired", taper=taper, size=0.5, width=0.5)
+        shell = [pc.vertices for pc in bp.parts["body"].pieces if pc.name in ("palm", "wall")]
+        body = np.vstack([*shell, _points(bp, "left_button"), _points(bp, "right_button")])
+        x0, x1 = body[:, 0].min(), body[:, 0].max()
+        front = body[body[:, 0] > x0 + 0.8 * (x1 - x0)]
+        back = body[body[:, 0] < x0 + 0.4 * (x1 - x0)]
+        widths[taper] = np.ptp(front[:, 1]) / np.ptp(back[:, 1])
+    assert widths[1.0] < widths[0.0] - 0.08, widths  # the egg's front fifth is clearly narrower
