@@ -98,15 +98,13 @@ def _soup(pieces) -> tuple:
     return v, f, tri, tri.min(1), tri.max(1), v.min(0), v.max(0)
 
 
-def raycast(v: np.ndarray, f: np.ndarray, origin, direction, edges=None) -> float | None:
+def raycast(v: np.ndarray, f: np.ndarray, origin, direction, edges=None, facing=None) -> float | None:
     """Distance along ``direction`` (unit) from ``origin`` to the first triangle hit, or ``None``
-    (Moeller-Trumbore over every triangle); ``edges``: :func:`_edges` of ``(v, f)``, where the caller has them."""
+    (Moeller-Trumbore over every triangle); ``edges``: :func:`_edges` of ``(v, f)`` and ``facing``:
+    :func:`_facing` of them along ``direction``, where the caller has them."""
     o, d = np.asarray(origin, float), np.asarray(direction, float)
     a, e1, e2 = edges if edges is not None else _edges(v, f)
-    p = np.cross(d, e2)
-    det = np.einsum("ij,ij->i", e1, p)
-    ok = np.abs(det) > 1e-12
-    inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+    p, ok, inv = facing if facing is not None else _facing(d, e1, e2)
     s = o - a
     u = np.einsum("ij,ij->i", s, p) * inv
     q = np.cross(s, e1)
@@ -114,6 +112,14 @@ def raycast(v: np.ndarray, f: np.ndarray, origin, direction, edges=None) -> floa
     t = np.einsum("ij,ij->i", e2, q) * inv
     hit = ok & (u >= -1e-9) & (w >= -1e-9) & (u + w <= 1 + 1e-9) & (t > 1e-9)
     return float(t[hit].min()) if hit.any() else None
+
+
+def _facing(d: np.ndarray, e1: np.ndarray, e2: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """What :func:`raycast` reads of the triangles along ``d`` wherever the ray starts."""
+    p = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, p)
+    ok = np.abs(det) > 1e-12
+    return p, ok, np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
 
 
 def _edges(v: np.ndarray, f: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -180,7 +186,7 @@ def _perps(a: np.ndarray) -> list[np.ndarray]:
     for e in ((0, 0, 1), (1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, -1)):
         p = np.array(e, float) - (np.array(e, float) @ a) * a
         n = np.linalg.norm(p)
-        if n > 0.5 and not any(np.allclose(p / n, q, atol=1e-6) for q in out):
+        if n > 0.5 and not any((np.abs(p / n - q) <= 1e-6 + 1e-5 * np.abs(q)).all() for q in out):  # np.allclose
             out.append(p / n)
     return out
 
@@ -208,17 +214,29 @@ def _rays(v: np.ndarray, d: np.ndarray, k: np.ndarray) -> list[np.ndarray]:
 
 
 class _Part:
-    """A part's mesh with its triangles and their bounds, read once for all of its candidate pinches."""
+    """A part's mesh with its triangles, their bounds and edges, read once for all of its candidate pinches
+    (and, per direction, what a ray reads of them)."""
 
     def __init__(self, v: np.ndarray, f: np.ndarray):
         self.v, self.f = v, f
         self.tri = v[f]
         self.lo, self.hi = self.tri.min(1), self.tri.max(1)
         self.edges = _edges(v, f)
+        self._facing: dict[bytes, tuple] = {}
 
     def near(self, c: np.ndarray) -> np.ndarray:
-        """The faces within 20 cm of ``c``: what a hand there can meet."""
-        return self.f[((self.lo <= c + 0.2) & (self.hi >= c - 0.2)).all(1)]
+        """Which faces are within 20 cm of ``c``: what a hand there can meet."""
+        return ((self.lo <= c + 0.2) & (self.hi >= c - 0.2)).all(1)
+
+    def cast(self, origin: np.ndarray, d: np.ndarray, rows=None) -> float | None:
+        """:func:`raycast` on the part (on its faces ``rows`` only, where given)."""
+        key = d.tobytes()
+        if key not in self._facing:
+            self._facing[key] = _facing(d, *self.edges[1:])
+        edges, facing = self.edges, self._facing[key]
+        if rows is not None:
+            edges, facing = tuple(x[rows] for x in edges), tuple(x[rows] for x in facing)
+        return raycast(self.v, self.f, origin, d, edges, facing)
 
 
 _PINCH_OFFSETS = np.array([1e-4, REACH, PAD, PAD, 0.15, 0.15])  # pinch's half-spaces: how far each reaches past c
@@ -282,7 +300,7 @@ def _pinches(part: _Part, problems: list) -> list:
     """:func:`pinch` of every ``(c, approach, closing)`` of ``problems`` on ``part``, the same floats, all cut
     at once (:func:`~infmob_usd.clipping.clip`)."""
     if not EXACT or not problems:  # this machine's BLAS rounds unlike the batched cut: one slicer call per plane
-        return [pinch(part.v, part.near(c), c, d, k) for c, d, k in problems]
+        return [pinch(part.v, part.f[part.near(c)], c, d, k) for c, d, k in problems]
     c, d, k = (np.array([p[i] for p in problems], float) for i in range(3))
     normals, origins = _pinch_planes(c, d, k)
     half = np.array([(REACH + 1e-4) / 2, PAD, 0.15])
@@ -300,7 +318,7 @@ def _tries(part: _Part, candidates: list) -> list:
     hits = []
     for origin, d, _ in candidates:
         origin, d = np.asarray(origin, float), np.asarray(d, float)
-        t = raycast(part.v, part.f, origin, d, part.edges)
+        t = part.cast(origin, d)
         hits.append(None if t is None else (origin + t * d, d))
     problems = [(i, k) for i, (hit, cand) in enumerate(zip(hits, candidates)) if hit is not None for k in cand[2]]
     got = _pinches(part, [(hits[i][0], hits[i][1], np.asarray(k, float)) for i, k in problems])
@@ -316,7 +334,7 @@ def _tries(part: _Part, candidates: list) -> list:
         (c, d), (width, depth, middle, k) = hit, best[i]
         # the fingers straddle the pinched stretch: the grasp on the surface over its middle
         mid = c + middle * k
-        t = raycast(part.v, part.near(c), mid - 0.05 * d, d)
+        t = part.cast(mid - 0.05 * d, d, part.near(c))
         if t is not None and abs(t - 0.05) < REACH / 2:
             c = mid - 0.05 * d + t * d
         out.append(Grasp.make(c, d, k, width, depth))
@@ -486,17 +504,25 @@ class Neighbours:
 
     def _cut(self, grasps: list[Grasp], press: bool) -> list[list[str]]:
         boxes = [(gi, b) for gi, g in enumerate(grasps) for b in self._boxes(g, press)]
-        pid, face, normals, origins, count = [], [], [], [], len(self.meshes)
-        for bi, (_, (centre, half, axes, reach, own)) in enumerate(boxes):
-            near = ((self._lo <= centre + reach) & (self._hi >= centre - reach)).all(1)
-            if not own and self.meshes[0][0] == self.own:
-                near &= self._of != 0
-            face.append(np.flatnonzero(near))
-            pid.append(bi * count + self._of[face[-1]])
-            planes = [(s * e, h) for e, h in zip(axes, half) for s in (1.0, -1.0)]
-            normals.append([n for n, _ in planes])
-            origins.append([centre - n * off for n, off in planes])
-        _, pid = clip(self._tri[np.concatenate(face)], np.concatenate(pid), np.repeat(normals, count, axis=0),
+        centre, half, axes, reach = (np.array([b[i] for _, b in boxes]) for i in range(4))
+        top, bottom = centre + reach, centre - reach
+        own = np.array([b[4] for _, b in boxes])
+        box, face, ends = [], [], np.cumsum([0] + [len(m[2]) for m in self.meshes])
+        for m, (name, _, _, _, _, lo, hi) in enumerate(self.meshes):  # the links whose bounds a box meets
+            meet = ~((lo > top).any(1) | (hi < bottom).any(1)) & (own | (name != self.own))
+            if meet.any():
+                which = np.flatnonzero(meet)
+                near = ((self._lo[ends[m]:ends[m + 1]] <= top[which, None]) &
+                        (self._hi[ends[m]:ends[m + 1]] >= bottom[which, None])).all(2)
+                b, f = np.nonzero(near)
+                box.append(which[b])
+                face.append(f + ends[m])
+        if not box:
+            return [[] for _ in grasps]
+        box, face, count = np.concatenate(box), np.concatenate(face), len(self.meshes)
+        normals = np.stack([s * axes[:, i] for i in range(3) for s in (1.0, -1.0)], 1)
+        origins = centre[:, None, :] - normals * np.repeat(half, 2, axis=1)[:, :, None]
+        _, pid = clip(self._tri[face], box * count + self._of[face], np.repeat(normals, count, axis=0),
                       np.repeat(origins, count, axis=0))
         hit: list[set] = [set() for _ in grasps]
         for p in np.unique(pid).tolist():

@@ -77,7 +77,7 @@ def test_batched_pinches_are_pinch(cabinet):
         d /= np.linalg.norm(d)
         k = np.cross(d, rng.normal(size=3))
         problems.append((c, d, k / np.linalg.norm(k)))
-    want = [pinch(v, part.near(c), c, d, k) for c, d, k in problems]
+    want = [pinch(v, f[part.near(c)], c, d, k) for c, d, k in problems]
     assert sum(w is not None for w in want) > 50  # most of them hold material: the floats are compared
     assert _pinches(part, problems) == want
 
