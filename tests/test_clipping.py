@@ -104,3 +104,9 @@ def test_path_is_read_from_poses(cabinet):
         want = [(cabinet.poses({joint.name: t["rest"] + (t["open"] - t["rest"]) * i / 10})[t["link"]] @ p)[:3]
                 .tolist() for i in range(11)]
         assert t["path"] == want
+
+
+def test_the_one_at_a_time_fallback_annotates_the_same(cabinet, monkeypatch):
+    """Where the BLAS rounds unlike the batch (clipping.EXACT false), the slicer path gives the same targets."""
+    monkeypatch.setattr(interaction, "EXACT", False)
+    assert interaction.annotate(cabinet) == cabinet.interaction
