@@ -438,25 +438,28 @@ class Neighbours:
     where the caller has them already."""
 
     def __init__(self, obj, carrier, own: set[str], mesh=None, press: bool = False, meshes=None):
-        self.meshes, self.press, self._seen = [], press, {}
+        self.press, self.own, self._seen = press, carrier.name, {}
+        self._soups: list[tuple] = []  # (name, _soup in its link's frame, offset into the carrier's frame)
         if mesh is not None and len(mesh[1]):  # the part itself: only the hand's body may not meet it
             tri = mesh[0][mesh[1]]
-            self.meshes.append((carrier.name, mesh[0], mesh[1], tri.min(1), tri.max(1), mesh[0].min(0),
-                                mesh[0].max(0)))
-        self.own = carrier.name
-        tris = [mesh[0][mesh[1]]] if self.meshes else []
+            self._soups.append((carrier.name, (mesh[0], mesh[1], tri, tri.min(1), tri.max(1), mesh[0].min(0),
+                                               mesh[0].max(0)), None))
         for link in obj.links:
             if link.dummy or link.name in own or not link.pieces:
                 continue
-            lv, lf, tri, tlo, thi, lo, hi = meshes[link.name] if meshes is not None else _soup(link.pieces)
-            # moved into the carrier's frame: a sum keeps the order of floats, so bounds move with them
-            off = link.origin - carrier.origin
-            self.meshes.append((link.name, lv + off, lf, tlo + off, thi + off, lo + off, hi + off))
-            tris.append(tri + off)
-        if self.meshes:  # every link's triangles in one array, for :meth:`many`
-            self._tri = np.concatenate(tris)
-            self._lo, self._hi = (np.concatenate([m[i] for m in self.meshes]) for i in (3, 4))
-            self._of = np.repeat(np.arange(len(self.meshes)), [len(m[2]) for m in self.meshes])
+            soup = meshes[link.name] if meshes is not None else _soup(link.pieces)
+            self._soups.append((link.name, soup, link.origin - carrier.origin))
+        # each link's bounds in the carrier's frame (a sum keeps the order of floats: bounds move with them)
+        self.bounds = [(s[5], s[6]) if off is None else (s[5] + off, s[6] + off) for _, s, off in self._soups]
+        self._moved: dict[int, tuple] = {}
+
+    def mesh(self, m: int) -> tuple:
+        """Link ``m``'s ``_soup`` moved into the carrier's frame (moved once, when a box first reaches it)."""
+        if m not in self._moved:
+            _, (lv, lf, tri, tlo, thi, lo, hi), off = self._soups[m]
+            self._moved[m] = (lv, lf, tri, tlo, thi) if off is None else (lv + off, lf, tri + off, tlo + off,
+                                                                         thi + off)
+        return self._moved[m]
 
     def _boxes(self, g: Grasp, press: bool) -> list:
         """``(centre, half, axes, reach, own)`` of each box the hand fills (``own``: the part itself counts)."""
@@ -479,11 +482,12 @@ class Neighbours:
     def _one(self, g: Grasp, press: bool) -> list[str]:
         hit = set()
         for centre, half, axes, reach, own in self._boxes(g, press):
-            for name, lv, lf, tlo, thi, lo, hi in self.meshes:
+            for m, ((name, _, _), (lo, hi)) in enumerate(zip(self._soups, self.bounds)):
                 if (name == self.own and not own) or name in hit:  # fingers close on the part
                     continue
                 if (lo > centre + reach).any() or (hi < centre - reach).any():
                     continue
+                lv, lf, _, tlo, thi = self.mesh(m)
                 near = ((tlo <= centre + reach) & (thi >= centre - reach)).all(1)  # triangles whose box meets it
                 if not near.any():
                     continue
@@ -496,7 +500,7 @@ class Neighbours:
         """The links in the hand's way, per grasp: :meth:`__call__` of each, all cut at once."""
         press = self.press if press is None else press
         todo = [g for g in dict.fromkeys(grasps) if (g, press) not in self._seen]
-        if not EXACT or not self.meshes:
+        if not EXACT or not self._soups:
             self._seen.update({(g, press): self._one(g, press) for g in todo})
         elif todo:
             self._seen.update(zip(((g, press) for g in todo), self._cut(todo, press)))
@@ -507,26 +511,24 @@ class Neighbours:
         centre, half, axes, reach = (np.array([b[i] for _, b in boxes]) for i in range(4))
         top, bottom = centre + reach, centre - reach
         own = np.array([b[4] for _, b in boxes])
-        box, face, ends = [], [], np.cumsum([0] + [len(m[2]) for m in self.meshes])
-        for m, (name, _, _, _, _, lo, hi) in enumerate(self.meshes):  # the links whose bounds a box meets
+        pid, tri, count = [], [], len(self._soups)
+        for m, ((name, _, _), (lo, hi)) in enumerate(zip(self._soups, self.bounds)):  # links a box reaches
             meet = ~((lo > top).any(1) | (hi < bottom).any(1)) & (own | (name != self.own))
             if meet.any():
                 which = np.flatnonzero(meet)
-                near = ((self._lo[ends[m]:ends[m + 1]] <= top[which, None]) &
-                        (self._hi[ends[m]:ends[m + 1]] >= bottom[which, None])).all(2)
-                b, f = np.nonzero(near)
-                box.append(which[b])
-                face.append(f + ends[m])
-        if not box:
+                _, _, mt, tlo, thi = self.mesh(m)
+                b, f = np.nonzero(((tlo <= top[which, None]) & (thi >= bottom[which, None])).all(2))
+                pid.append(which[b] * count + m)
+                tri.append(mt[f])
+        if not pid:
             return [[] for _ in grasps]
-        box, face, count = np.concatenate(box), np.concatenate(face), len(self.meshes)
         normals = np.stack([s * axes[:, i] for i in range(3) for s in (1.0, -1.0)], 1)
         origins = centre[:, None, :] - normals * np.repeat(half, 2, axis=1)[:, :, None]
-        _, pid = clip(self._tri[face], box * count + self._of[face], np.repeat(normals, count, axis=0),
+        _, pid = clip(np.concatenate(tri), np.concatenate(pid), np.repeat(normals, count, axis=0),
                       np.repeat(origins, count, axis=0))
         hit: list[set] = [set() for _ in grasps]
         for p in np.unique(pid).tolist():
-            hit[boxes[p // count][0]].add(self.meshes[p % count][0])
+            hit[boxes[p // count][0]].add(self._soups[p % count][0])
         return [sorted(h) for h in hit]
 
     def __call__(self, g: Grasp, press: bool | None = None) -> list[str]:
