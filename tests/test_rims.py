@@ -40,12 +40,14 @@ def test_a_flared_band_over_a_near_parallel_face_gets_upright_sides():
     assert _band(links) is not band and np.hypot(*_band(links)[:, :2].T).max() > R1 - 1e-9  # input untouched
 
 
-@pytest.mark.parametrize("case", ["far", "thick", "upright", "jointed"])
+@pytest.mark.parametrize("case", ["far", "thick", "upright", "jointed", "mostly_overhang"])
 def test_what_is_left_alone(case):
     """Faces farther apart than NEAR, a hull thicker than PCM's witness tolerance, a band that rises square
-    already, and a link against the one it is jointed to (PhysX never tests that pair)."""
+    already, a link against the one it is jointed to (PhysX never tests that pair), and a band that would
+    keep under KEEP of itself (flared out 15 mm: 57 %)."""
     links = {"far": _links(NEAR + 0.001), "thick": _links(0.0015, thickness=0.012),
-             "upright": _links(0.0015, flare=0.0), "jointed": _links(0.0015)}[case]
+             "upright": _links(0.0015, flare=0.0), "jointed": _links(0.0015),
+             "mostly_overhang": _links(0.0015, flare=0.015)}[case]
     joints = [SimpleNamespace(parent="body", child="head")] if case == "jointed" else []
     out = square_rims(links, joints)
     assert all(a is b for a, b in zip(out, links, strict=True))

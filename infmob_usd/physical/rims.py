@@ -2,11 +2,10 @@
 of another link's hull across a small gap.
 
 PhysX's persistent contact manifold (PCM, on by default in SAPIEN, ManiSkill and Isaac) misreads such a
-pair while one of them moves: a pepper grinder's head turning 1.5 mm above the body's window bars, a
-slider phone's fillet-edged slide passing 2.5 mm over its keys. Now and then, with no overlap at all, it
-reports a contact as deep as the gap plus the thin hull's thickness with the normal flipped (the far
-face of the thin hull taken for the near one; a freshly posed scene reads the true gap), and the part
-stalls. In a parameter sweep of the grinder's head band over the bars (the band's lateral position and
+pair while one of them moves (a pepper grinder's head turning 1.5 mm above the body's window bars): now
+and then, with no overlap at all, it reports a contact as deep as the gap plus the thin hull's thickness
+with the normal flipped (the far face of the thin hull taken for the near one; a freshly posed scene reads
+the true gap), and the part stalls. In a parameter sweep of the grinder's head band over the bars (the band's lateral position and
 the gap varied over 99 poses), a 5.9 mm band whose side flares out 14 degrees over the bars stalled in
 29; the same band with a square rim (upright sides, the bottom face's outline) in none, nor did a band
 half as flared or one 8.8 mm thick; the contact offset (3 mm to 2 cm) made no difference.
@@ -14,8 +13,9 @@ half as flared or one 8.8 mm thick; the contact offset (3 mm to 2 cm) made no di
 The rule: where a hull face ``f`` and an anti-parallel face of another link's hull are less than
 :data:`NEAR` apart and overlap seen along their normal, and the hull is thinner than
 :data:`WITNESS_TOL` across ``f``, the hull is cut to the upright prism over ``f`` (what of it lies over
-``f``'s outline): its sides rise square from that face. Pairs of links joined by one joint are skipped
-(a PhysX articulation never tests a link against its parent).
+``f``'s outline): its sides rise square from that face. A hull that would keep less than :data:`KEEP` of
+its volume is left as it is. Pairs of links joined by one joint are skipped (a PhysX articulation never
+tests a link against its parent).
 """
 
 from __future__ import annotations
@@ -45,6 +45,18 @@ PARALLEL_COS = math.cos(math.radians(1.0))
 
 OVERHANG = 1e-4
 """m; a hull that reaches less than this beyond a face's outline already rises square from it."""
+
+KEEP = 0.75
+"""The least share of its volume a hull keeps when squared: a rim's chamfer or flare is cut, a hull that is
+mostly overhang (a cone's blunt tip towards the neighbour, a key whose small top faces the slide) is left
+as it is."""
+
+
+def _volume(v: np.ndarray, f: np.ndarray) -> float:
+    """Volume of a closed hull with outward faces."""
+    c = v.mean(0)
+    t = v[f] - c
+    return float(np.abs(np.einsum("ij,ij->i", t[:, 0], np.cross(t[:, 1], t[:, 2])).sum()) / 6)
 
 
 def _planes(v: np.ndarray, f: np.ndarray) -> list[tuple[np.ndarray, float, np.ndarray]]:
@@ -152,7 +164,7 @@ def _squares(a: _Hull, b: _Hull) -> list[int]:
 
 def _squared(h: _Hull, faces: list[int], origin: np.ndarray) -> tuple | None:
     """Hull ``h`` cut to the upright prisms over its ``faces``: ``(points, hull vertices, hull
-    faces)`` in the link frame, or None if the cut leaves no solid."""
+    faces)`` in the link frame, or None if the cut leaves no solid or less than :data:`KEEP` of it."""
     halves = [np.r_[n, -d] for n, d, _ in h.planes]
     for i in faces:
         n, _, on = h.planes[i]
@@ -173,6 +185,8 @@ def _squared(h: _Hull, faces: list[int], origin: np.ndarray) -> tuple | None:
     if not np.all(np.isfinite(pts)) or len(pts) < 4:
         return None
     v, f = hull_arrays(pts - origin)
+    if _volume(v, f) < KEEP * _volume(*h.hull):
+        return None
     return v, v, f
 
 
