@@ -224,7 +224,8 @@ def _loft(rings: np.ndarray, material: str, name: str, convex, cap_strip: bool =
             faces += [(a * k + i, a * k + j, (a + 1) * k + j), (a * k + i, (a + 1) * k + j, (a + 1) * k + i)]
     if cap_strip:
         h = k // 2
-        for base, flip in ((0, True), ((s - 1) * k, False)):
+        # a cap runs its ring edges against the side walls': the first ring's forwards, the last's backwards
+        for base, flip in ((0, False), ((s - 1) * k, True)):
             for i in range(h - 1):
                 quad = [(base + i, base + k - 1 - i, base + i + 1), (base + i + 1, base + k - 1 - i, base + k - 2 - i)]
                 faces += [q[::-1] if flip else q for q in quad]
