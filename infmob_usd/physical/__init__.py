@@ -5,6 +5,8 @@
 * :func:`rest_on_stops` makes every passive hinge neutral under gravity or pressed onto its
   rest stop (picking the side of a two-sided range, or adding a counterweight heel) (:mod:`.stops`).
 * :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent (:mod:`.gaps`).
+* :func:`square_rims` cuts a thin hull's chamfer or flare at a face that looks onto a parallel face of another
+  link's hull across a few millimetres, which PhysX's contact manifold misreads as a deep contact (:mod:`.rims`).
 * :func:`keep_meeting_gaps` erodes a hinged part's collision hulls that pass within :data:`MEETING_GAP` of an
   independently moving neighbour (the twin leaf of a double door) over its swing (:mod:`.meeting`).
 * :func:`limit_to_ground` shortens limits so nothing goes below the ground (:mod:`.ground`).
@@ -22,6 +24,7 @@ from .ground import GROUND_TOL, limit_to_ground, rest_on_ground
 from .hulls import CLEARANCE, CONTACT_VOLUME
 from .meeting import MEETING_GAP, keep_meeting_gaps
 from .passive import DYNAMICS, Dynamics, dynamics
+from .rims import square_rims
 from .stops import BALANCED, GRAVITY, HEEL_SECTION, gravity_torque, rest_on_stops
 from .sweep import PARENT_GROWTH, SWEEP_SAGITTA
 
@@ -30,4 +33,5 @@ __all__ = [
     "GROUND_TOL", "HEEL_SECTION", "PARENT_GROWTH", "SWEEP_SAGITTA", "clearance_limits", "dynamics",
     "ensure_gaps", "gap_size", "gravity_torque", "limit_to_clearance", "limit_to_ground", "rest_on_ground",
     "rest_on_stops", "MIN_HULL_WIDTH", "thicken_hulls", "MEETING_GAP", "keep_meeting_gaps",
+    "square_rims",
 ]
