@@ -140,8 +140,30 @@ def write_mjcf(rec: dict, folder: Path) -> None:
     (folder / "scene.xml").write_text("\n".join(lines))
 
 
-def write_scene(s, out) -> Path:
-    """Write scene ``s`` into ``out/<name>/`` (atomically: built in a temporary folder beside it, then renamed)."""
+def _write_objects(s, tmp: Path, pool) -> dict[str, str]:
+    """Every distinct object of ``s`` written once under ``tmp/objects/`` (in ``pool`` when given, all finished
+    before this returns, even when one fails); ``{key: its folder, relative}``."""
+    jobs, folders = [], {}
+    for made in s.objects:
+        where = tmp / "objects" / made.key
+        where.mkdir(parents=True)
+        jobs.append((made.obj, where))
+        folders[made.key] = f"objects/{made.key}/{made.obj.name}"
+    if pool is None:
+        for obj, where in jobs:
+            write_object(obj, where, None)
+        return folders
+    futures = [pool.submit(write_object, obj, where, None) for obj, where in jobs]
+    for f in futures:
+        f.exception()  # wait for every one: the caller removes tmp on failure
+    for f in futures:
+        f.result()
+    return folders
+
+
+def write_scene(s, out, pool=None) -> Path:
+    """Write scene ``s`` into ``out/<name>/`` (atomically: built in a temporary folder beside it, then renamed);
+    ``pool``: an executor the object folders are written in."""
     from infmob_usd.runs import new_run_id, temp_prefix
 
     out = check_output_dir(Path(out))
@@ -149,12 +171,7 @@ def write_scene(s, out) -> Path:
     prefix = temp_prefix(s.name, new_run_id())
     tmp = Path(tempfile.mkdtemp(prefix=prefix, suffix=".tmp", dir=out))
     try:
-        folders = {}
-        for made in s.objects:
-            where = tmp / "objects" / made.key
-            where.mkdir(parents=True)
-            write_object(made.obj, where, None)
-            folders[made.key] = f"objects/{made.key}/{made.obj.name}"
+        folders = _write_objects(s, tmp, pool)
         rec = scene_record(s, folders)
         (tmp / "scene.json").write_text(json.dumps(rec, indent=1, sort_keys=False) + "\n")
         write_usd(s, rec, tmp)

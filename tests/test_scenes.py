@@ -343,3 +343,20 @@ def test_a_base_run_carries_one_worktop_over_its_under_counter_appliances(seed, 
                 assert p.hi[2] < min(lo[2] for lo, _ in tops) - 0.002, (p.id, p.hi[2])
     for lo, hi in fixtures:  # and no fixture stands in a placed object
         assert not [p.id for p in s.placed if boxes_overlap(lo, hi, p.lo, p.hi)]
+
+
+def test_a_scene_made_in_a_pool_is_the_same_files(tmp_path):
+    # with fewer scenes than workers, one scene's objects are made and written in parallel: the files must
+    # not depend on which worker made what, or in what order they finished
+    from concurrent.futures import ProcessPoolExecutor
+
+    a = save_scene(scene("kitchen", 2, texture_size=16), tmp_path / "a")
+    with ProcessPoolExecutor(2) as pool:
+        b = save_scene(scene("kitchen", 2, texture_size=16, pool=pool), tmp_path / "b", pool=pool)
+    assert _digests(a) == _digests(b)
+    out = tmp_path / "cli"
+    cmd = [sys.executable, "-m", "infmob_usd", "scene", "bathroom", "--seed", "4", "--texture-size", "16",
+           "--workers", "2", "--out", str(out)]
+    assert subprocess.run(cmd, capture_output=True, text=True).returncode == 0
+    assert _digests(out / "bathroom_000004") == _digests(save_scene(scene("bathroom", 4, texture_size=16),
+                                                                      tmp_path / "one"))

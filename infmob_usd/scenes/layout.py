@@ -65,9 +65,16 @@ CLEARANCES = {
 }
 
 
+# what :func:`made_in_worker` computes: read off a pending Made when first used
+_MEASURED = ("obj", "lo", "hi", "swept", "regions", "hulls", "moving")
+
+
 @dataclass
 class Made:
-    """One distinct generated object and what placement needs of it (object frame at rest)."""
+    """One distinct generated object and what placement needs of it (object frame at rest).
+
+    Made in a process pool (:meth:`pending`), its object and measures arrive when first read: a layout
+    that makes several objects before it looks at them (a kitchen's run of units) has them made at once."""
 
     key: str  # folder under objects/: unique per (category, seed, overrides)
     category: str
@@ -86,6 +93,37 @@ class Made:
     @property
     def size(self) -> np.ndarray:
         return self.hi - self.lo
+
+    @classmethod
+    def pending(cls, key: str, category: str, seed: int, overrides: dict, clearance: Clearance | None,
+                future) -> Made:
+        """A Made whose object and measures ``future`` (of :func:`made_in_worker`) delivers when first read."""
+        made = cls.__new__(cls)
+        made.key, made.category, made.seed, made.overrides, made.clearance = key, category, seed, overrides, clearance
+        made._future = future
+        return made
+
+    def __getattr__(self, name: str):
+        # only reached for an attribute not set yet: the measured ones of a pending Made
+        future = self.__dict__.get("_future")
+        if name not in _MEASURED or future is None:
+            raise AttributeError(name)
+        self.__dict__.update(zip(_MEASURED, future.result()))
+        del self.__dict__["_future"]
+        return self.__dict__[name]
+
+
+def measured(obj) -> tuple:
+    """``obj`` and what placement needs of it, in :data:`_MEASURED`'s order."""
+    lo, hi, swept, moving = _measure(obj)
+    return obj, lo, hi, swept, support_regions(obj), hull_boxes(obj), moving
+
+
+def made_in_worker(category: str, seed: int, texture_size: int, overrides: dict) -> tuple:
+    """Generate and measure one object (a pool worker's job): :func:`measured` of it."""
+    from ..api import generate
+
+    return measured(generate(category, seed, texture_size=texture_size, **overrides))
 
 
 @dataclass
@@ -186,11 +224,13 @@ class SceneLayout:
     """Base of a scene kind's layout: object making and placing; the kind adds one method per node kind."""
 
     def __init__(self, kind: str, params: dict, rng: np.random.Generator, objects_rng: np.random.Generator,
-                 texture_size: int, generate, categories: tuple[str, ...] = ()) -> None:
+                 texture_size: int, generate, categories: tuple[str, ...] = (), pool=None) -> None:
         """``generate``: ``(category, seed, texture_size=..., **overrides) -> ArticulatedObject`` (the API's);
-        ``categories``: the category ids that exist."""
+        ``categories``: the category ids that exist; ``pool``: an executor that makes the objects (with
+        the API's ``generate``) while the layout goes on, or ``None``: each made here when asked for."""
         self.kind, self.p, self.rng, self.objects_rng = kind, params, rng, objects_rng
         self.texture_size, self._generate, self._categories = texture_size, generate, tuple(categories)
+        self.pool = pool
         self.room: Room | None = None
         self.placed: list[Placed] = []
         self._made: dict[tuple, Made] = {}
@@ -224,16 +264,21 @@ class SceneLayout:
         seed = self.seed() if seed is None else int(seed)
         key = (category, seed, tuple(sorted(overrides.items())))
         if key not in self._made:
-            obj = self._generate(category, seed, texture_size=self.texture_size, **overrides)
-            name, n = obj.name, 1
+            base = f"{category}_{seed:06d}"  # the object's name (ArticulatedObject.name), known before it is made
+            name, n = base, 1
             while name in self._keys:
                 n += 1
-                name = f"{obj.name}_v{n}"
+                name = f"{base}_v{n}"
             self._keys.add(name)
-            lo, hi, swept, moving = _measure(obj)
             clear = CLEARANCES.get(category) if clearance == "category" else clearance
-            self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, support_regions(obj),
-                                   hull_boxes(obj), clear, moving)
+            if self.pool is not None:
+                future = self.pool.submit(made_in_worker, category, seed, self.texture_size, dict(overrides))
+                self._made[key] = Made.pending(name, category, seed, dict(overrides), clear, future)
+            else:
+                obj, lo, hi, swept, regions, hulls, moving = measured(
+                    self._generate(category, seed, texture_size=self.texture_size, **overrides))
+                self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, regions, hulls,
+                                       clear, moving)
         return self._made[key]
 
     # -- placing ----------------------------------------------------------------------------------------------
