@@ -31,14 +31,19 @@ def _inside(s) -> list[str]:
 
 
 def _overlapping(s) -> list[tuple[str, str]]:
-    """Pairs of objects whose rest boxes overlap, but an item and what it stands on."""
+    """Pairs of objects whose rest boxes overlap, but an item and what it stands on, and a chair pushed in
+    under a table whose collision hulls clear the table's."""
+    from infmob_usd.scenes.layout import SceneLayout
+
     out = []
     for i, a in enumerate(s.placed):
         for b in s.placed[i + 1:]:
             if a.on.startswith(b.id + ":") or b.on.startswith(a.id + ":"):
                 continue
             if boxes_overlap(a.lo, a.hi, b.lo, b.hi):
-                out.append((a.id, b.id))
+                tucked = {a.made.category, b.made.category} == {"dining_table", "folding_chair"}
+                if not (tucked and SceneLayout.hulls_clear(a, b, 0.0)):
+                    out.append((a.id, b.id))
     return out
 
 
@@ -230,7 +235,7 @@ def test_nothing_stands_in_the_walkway_round_a_dining_table():
     s = scene("dining_room", 0, texture_size=16)
     table = next(p for p in s.placed if p.made.category == "dining_table")
     near = [(p.id, round(_gap(p, table), 2)) for p in s.placed if p is not table and p.on == "floor"
-            and p.lo[2] < 1.2 and _gap(p, table) < 0.91 - 1e-3]
+            and p.lo[2] < 1.2 and _gap(p, table) < 0.91 - 1e-3 and p.made.category != "folding_chair"]
     assert not near, near
 
 
@@ -360,3 +365,32 @@ def test_a_scene_made_in_a_pool_is_the_same_files(tmp_path):
     assert subprocess.run(cmd, capture_output=True, text=True).returncode == 0
     assert _digests(out / "bathroom_000004") == _digests(save_scene(scene("bathroom", 4, texture_size=16),
                                                                       tmp_path / "one"))
+
+
+@pytest.mark.parametrize("seed", [1, 3])
+def test_chairs_stand_round_a_dining_table_facing_it_pushed_in(seed):
+    # NKBA 17: 24 in (0.61 m) of table edge per diner; each chair faces the table, its front at most 0.25 m
+    # from the edge (pushed in as far as its hulls, and its folding seat, clear the table's)
+    from infmob_usd.scenes.layout import SceneLayout
+
+    s = scene("dining_room", seed, texture_size=16)
+    table = next(p for p in s.placed if p.made.category == "dining_table")
+    chairs = [p for p in s.placed if p.made.category == "folding_chair"]
+    size = table.hi - table.lo
+    assert len(chairs) >= 2 * int(max(size[0], size[1]) // 0.61), (seed, len(chairs))
+    assert len({c.made.key for c in chairs}) == 1  # one set
+    centre = (table.lo + table.hi)[:2] / 2
+    sides = set()
+    for c in chairs:
+        front = c.pose[:2, :2] @ [1.0, 0.0]
+        to_table = centre - c.pose[:2, 3]
+        axis = int(np.argmax(np.abs(front)))
+        assert np.sign(front[axis]) == np.sign(to_table[axis]) and abs(front[axis]) > 0.999, c.id
+        tip = c.pose[:2, 3] + front * c.made.hi[0]
+        beyond = max(table.lo[0] - tip[0], tip[0] - table.hi[0], table.lo[1] - tip[1], tip[1] - table.hi[1])
+        assert -0.07 < beyond <= 0.25 + 1e-6, (c.id, beyond)
+        assert SceneLayout.hulls_clear(c, table, 0.0), c.id
+        sides.add((axis, np.sign(front[axis])))
+    # both long sides; an end only where the table's extension leaves room (seed 3's slides 0.4 m out)
+    assert len(sides) >= (3 if seed == 1 else 2), sides
+    assert not _overlapping(s), _overlapping(s)

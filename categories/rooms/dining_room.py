@@ -1,10 +1,14 @@
-"""Dining room: a dining table in the middle, a sideboard, a floor lamp, a door and windows, things on the table.
+"""Dining room: a dining table with chairs round it, a sideboard, a lamp, a door and windows, things on the table.
 
-Dining chairs join when a dining-chair category exists (the bar chairs are counter height); the sideboard is a
-kitchen_cabinet base run against a wall (a low cabinet with drawers and doors, as a sideboard is).
+The chairs are folding chairs of one seed (a wooden or a padded set; the bar chairs are counter height), one per
+0.61 m of the table's edge, each facing the table and pushed in as far as its hulls clear the table's at rest
+and over every joint's travel (a drawer, an extension, a leaf); the sideboard is a kitchen_cabinet base run
+against a wall (a low cabinet with drawers and doors, as a sideboard is).
 """
 
 from __future__ import annotations
+
+import numpy as np
 
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
@@ -15,6 +19,10 @@ from ._common import CEILING, WALKWAY, WALL, YAWS, door_in, window_in
 
 # a sideboard: 0.8-0.9 m tall, 0.4-0.5 m deep (IKEA Hemnes / Besta, John Lewis ranges)
 SIDEBOARD_HEIGHT = (0.8, 0.9)
+# NKBA Kitchen Planning Guidelines (2021), 17: 24 in (0.61 m) of table edge per seated diner
+SEAT_WIDTH = 0.61
+# dining chairs: the designs of a dining set (a metal folding chair is for events)
+CHAIR_DESIGNS = ("wooden", "padded")
 
 PARAMS = (
     Float("width", "room width (Y)", "m", 3.2, 4.5),
@@ -23,10 +31,10 @@ PARAMS = (
 )
 
 GRAMMAR = Grammar("dining_room", {
-    "dining_room": Node(required=("table", "door"), optional={"sideboard": 0.8, "lamp": 0.6, "window": 0.85,
-                                                               "tv": 0.2},
+    "dining_room": Node(required=("table", "chairs", "door"), optional={"sideboard": 0.8, "lamp": 0.6,
+                                                                         "window": 0.85, "tv": 0.2},
                         repeat={"tableware": (1, 5)}),
-    **{k: Node() for k in ("table", "door", "sideboard", "lamp", "window", "tv", "tableware")},
+    **{k: Node() for k in ("table", "chairs", "door", "sideboard", "lamp", "window", "tv", "tableware")},
 })
 
 
@@ -34,7 +42,7 @@ class DiningRoomLayout(RoomLayout):
     def dining_room(self, node):
         p = self.p
         self.room_of(p["width"], p["depth"], p["ceiling"], WALL)
-        for kind in ("table", "sideboard", "tv", "lamp", "door", "window"):
+        for kind in ("table", "chairs", "sideboard", "tv", "lamp", "door", "window"):
             if node.one(kind) is not None:
                 self.grow(node.one(kind))
         for child in node.of("tableware"):
@@ -49,6 +57,26 @@ class DiningRoomLayout(RoomLayout):
         # a dining table keeps a walkway round it (NKBA 36 in behind a seated diner)
         self.table_at = self.at(table, (r.depth / 2, r.width / 2), yaw) or self.on_floor(table, self.rng, YAWS,
                                                                                          margin=WALKWAY)
+
+    def chairs(self, node):
+        """A chair per SEAT_WIDTH of each edge of the table, centred in its share, facing the table."""
+        table = getattr(self, "table_at", None)
+        if table is None:
+            return
+        chair = self.make("folding_chair", design=str(self.rng.choice(CHAIR_DESIGNS)))
+        lo, hi = table.lo[:2], table.hi[:2]
+        mid = (lo + hi) / 2
+        for axis, sign in ((0, 1), (0, -1), (1, 1), (1, -1)):
+            along = 1 - axis
+            length = float(hi[along] - lo[along])
+            n = int(length // SEAT_WIDTH)
+            for k in range(n):
+                xy = mid.copy()
+                xy[axis] = hi[axis] if sign > 0 else lo[axis]
+                xy[along] = lo[along] + (k + 0.5) * length / n
+                out = np.zeros(2)
+                out[axis] = sign
+                self.tuck(chair, table, xy, out)
 
     def sideboard(self, node):
         unit = self.make("kitchen_cabinet", design="base_run", width=round(float(self.rng.uniform(1.2, 1.8)), 3),
