@@ -394,3 +394,11 @@ def test_chairs_stand_round_a_dining_table_facing_it_pushed_in(seed):
     # both long sides; an end only where the table's extension leaves room (seed 3's slides 0.4 m out)
     assert len(sides) >= (3 if seed == 1 else 2), sides
     assert not _overlapping(s), _overlapping(s)
+
+
+def test_a_dining_table_is_sized_to_the_room():
+    # a 3.6 x 3.6 m room cannot keep NKBA's 0.91 m round a 2.4 m table: seed 4 drew one and had no table at all
+    s = scene("dining_room", 4, texture_size=16)
+    table = next((p for p in s.placed if p.made.category == "dining_table"), None)
+    assert table is not None
+    assert min(table.lo[0], table.lo[1], s.room.depth - table.hi[0], s.room.width - table.hi[1]) >= 0.91 - 1e-3

@@ -49,8 +49,12 @@ class DiningRoomLayout(RoomLayout):
             self.grow(child)
 
     def table(self, node):
-        table = self.make("dining_table")
         r = self.room
+        # a table the room keeps the walkway round (the category's 1.4-2.8 x 0.9-1.2 m, as much as fits)
+        spare = 2 * WALKWAY + 0.05
+        long_cap, short_cap = max(r.width, r.depth) - spare, min(r.width, r.depth) - spare
+        table = self.make("dining_table", length=round(float(self.rng.uniform(1.4, max(1.4, min(2.8, long_cap)))), 3),
+                          width=round(float(self.rng.uniform(0.9, max(0.9, min(1.2, short_cap)))), 3))
         # its long axis (X) along the room's longer side
         longer = YAWS[1] if r.width > r.depth else 0.0
         yaw = YAWS[int(self.rng.integers(2))] if abs(r.width - r.depth) < 0.3 else longer
