@@ -8,21 +8,15 @@ against a wall (a low cabinet with drawers and doors, as a sideboard is).
 
 from __future__ import annotations
 
-import numpy as np
-
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
 from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 
-from ._common import CEILING, WALKWAY, WALL, YAWS, door_in, window_in
+from ._common import CEILING, WALKWAY, WALL, YAWS, chairs_round, door_in, window_in
 
 # a sideboard: 0.8-0.9 m tall, 0.4-0.5 m deep (IKEA Hemnes / Besta, John Lewis ranges)
 SIDEBOARD_HEIGHT = (0.8, 0.9)
-# NKBA Kitchen Planning Guidelines (2021), 17: 24 in (0.61 m) of table edge per seated diner
-SEAT_WIDTH = 0.61
-# dining chairs: the designs of a dining set (a metal folding chair is for events)
-CHAIR_DESIGNS = ("wooden", "padded")
 
 PARAMS = (
     Float("width", "room width (Y)", "m", 3.2, 4.5),
@@ -63,24 +57,9 @@ class DiningRoomLayout(RoomLayout):
                                                                                          margin=WALKWAY)
 
     def chairs(self, node):
-        """A chair per SEAT_WIDTH of each edge of the table, centred in its share, facing the table."""
         table = getattr(self, "table_at", None)
-        if table is None:
-            return
-        chair = self.make("folding_chair", design=str(self.rng.choice(CHAIR_DESIGNS)))
-        lo, hi = table.lo[:2], table.hi[:2]
-        mid = (lo + hi) / 2
-        for axis, sign in ((0, 1), (0, -1), (1, 1), (1, -1)):
-            along = 1 - axis
-            length = float(hi[along] - lo[along])
-            n = int(length // SEAT_WIDTH)
-            for k in range(n):
-                xy = mid.copy()
-                xy[axis] = hi[axis] if sign > 0 else lo[axis]
-                xy[along] = lo[along] + (k + 0.5) * length / n
-                out = np.zeros(2)
-                out[axis] = sign
-                self.tuck(chair, table, xy, out)
+        if table is not None:
+            chairs_round(self, table)
 
     def sideboard(self, node):
         unit = self.make("kitchen_cabinet", design="base_run", width=round(float(self.rng.uniform(1.2, 1.8)), 3),
