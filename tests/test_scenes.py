@@ -447,3 +447,25 @@ def test_a_single_wall_kitchen_is_an_aisle_deep_or_eats_in(seed):
         assert sum(p.made.category == "folding_chair" for p in s.placed) >= 4
         assert not _overlapping(s), _overlapping(s)
     assert [p.made.category for p in run][-1] in ("refrigerator", "kitchen_cabinet")
+
+
+def test_a_carried_worktop_wears_the_cabinets_worktop_material(tmp_path):
+    # the slab over a dishwasher was a flat-coloured box, paler than the wood or stone worktops beside it
+    from pxr import Sdf, Usd, UsdGeom, UsdShade
+
+    folder = save_scene(scene("kitchen", 0, texture_size=16), tmp_path)
+    rec = json.loads((folder / "scene.json").read_text())
+    slabs = [b for b in rec["room"]["boxes"] if b["name"].startswith("worktop_")]
+    assert slabs
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    for box in slabs:
+        cabinet = next(o for o in rec["objects"] if o["id"] == box["wears"]["object"])
+        assert cabinet["category"] == "kitchen_cabinet" and box["wears"]["slot"] == "top"
+        prim = stage.GetPrimAtPath(f"/Scene/Room/{box['name']}")
+        assert prim.IsA(UsdGeom.Mesh) and UsdGeom.PrimvarsAPI(prim).GetPrimvar("st").HasValue()
+        extent = np.array(UsdGeom.Mesh(prim).ComputeLocalBound(0, "default").ComputeAlignedRange().GetSize())
+        assert np.allclose(extent, np.subtract(box["max"], box["min"]), atol=1e-4)
+        material, _ = UsdShade.MaterialBindingAPI(prim).ComputeBoundMaterial()
+        files = {Path(a.Get().resolvedPath) for s in material.GetPrim().GetChildren() for a in s.GetAttributes()
+                 if a.GetTypeName() == Sdf.ValueTypeNames.Asset and a.Get() is not None}
+        assert folder / cabinet["folder"] / "textures" / "top_basecolor.png" in files, files

@@ -179,7 +179,9 @@ class KitchenLayout(RoomLayout):
                 boxes_overlap(g_lo, g_hi, a, b) for _, a, b in o.moving_boxes()) for o in self.placed)
             if clear:
                 name = f"worktop_{len(self.room.fixtures)}"
-                self.room.fixtures.append(Fixture(name, g_lo, g_hi, tuple(float(c) for c in look.base_color[:3])))
+                worn = np.asarray(look.base_color[:3], float) * np.asarray(look.wear.tint, float)
+                self.room.fixtures.append(Fixture(name, g_lo, g_hi, tuple(float(c) for c in worn),
+                                                  wears=(cabinets[0].id, "top"), grain=k))
 
     # -- layouts -----------------------------------------------------------------------------------------------
     def single_wall(self, node, wine):
