@@ -117,7 +117,9 @@ def _scene_command(sub) -> None:
                     help="override a scene parameter (repeatable); see --params")
     sc.add_argument("--texture-size", type=int, default=256, metavar="PX",
                     help="texture edge of every object, a power of two 16..4096; default 256")
-    sc.add_argument("--workers", type=int, default=None, help="scenes made in parallel; default: all cores")
+    sc.add_argument("--workers", type=int, default=None,
+                    help="processes; default: all cores. With at least as many scenes as workers, scenes are made"
+                    " in parallel; else one at a time, each one's objects in parallel")
     sc.add_argument("--params", action="store_true", help="print the kind's parameters and growth rules, and exit")
     sc.add_argument("--preview", action="store_true",
                     help="also render preview.png (at rest) and preview_open.png (every joint open) in each scene")
@@ -469,11 +471,11 @@ def retrieval_line(rows: list[dict]) -> str:
     return text
 
 
-def _make_scene(job) -> str:
+def _make_scene(job, pool=None) -> str:
     from .scenes import save_scene, scene
 
     kind, seed, overrides, texture_size, out, preview = job
-    folder = save_scene(scene(kind, seed, texture_size=texture_size, **overrides), out)
+    folder = save_scene(scene(kind, seed, texture_size=texture_size, pool=pool, **overrides), out, pool=pool)
     if preview:
         from .validate.scene_preview import scene_previews
 
@@ -499,7 +501,7 @@ def cmd_scene(args) -> int:
         return _fail(f"--count must be 1..{MAX_COUNT}, got {args.count}")
     if args.seed < 0 or args.seed + args.count - 1 > MAX_SEED:
         return _fail(f"--seed must be 0..{MAX_SEED} (and --seed + --count - 1 too), got {args.seed}")
-    workers = _workers(args.workers, args.count, "scenes")
+    workers = _workers(args.workers)
     out = _out_dir(args.out)
     jobs = [(args.kind, s, overrides, args.texture_size, out, args.preview)
             for s in range(args.seed, args.seed + args.count)]
@@ -507,9 +509,15 @@ def cmd_scene(args) -> int:
         for job in jobs:
             print(_make_scene(job), flush=True)
         return 0
-    with ProcessPoolExecutor(workers) as pool:
-        for folder in pool.map(_make_scene, jobs):
-            print(folder, flush=True)
+    from .batch import _die_with_parent
+
+    with ProcessPoolExecutor(workers, initializer=_die_with_parent) as pool:
+        if args.count >= workers:  # a scene per worker
+            for folder in pool.map(_make_scene, jobs):
+                print(folder, flush=True)
+        else:  # fewer scenes than workers: one scene at a time, its objects made and written in parallel
+            for job in jobs:
+                print(_make_scene(job, pool), flush=True)
     return 0
 
 

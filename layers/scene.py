@@ -58,9 +58,50 @@ def scene_record(s, folders: dict[str, str]) -> dict:
                                    "bottom": round(o.bottom, 6), "top": round(o.top, 6), "filled_by": o.what}
                                   for o in room.openings],
                      "boxes": [{"name": n, "min": _r(lo), "max": _r(hi)} for n, lo, hi in room.wall_boxes()]
-                     + [{"name": f.name, "min": _r(f.lo), "max": _r(f.hi), "color": _r(f.color, 4)}
-                        for f in room.fixtures]},
+                     + [_fixture_record(f) for f in room.fixtures]},
             "objects": objects}
+
+
+def _fixture_record(f) -> dict:
+    """A fixture in ``scene.json``: its box, its flat colour, and the material it wears (an object's slot)."""
+    rec = {"name": f.name, "min": _r(f.lo), "max": _r(f.hi), "color": _r(f.color, 4)}
+    if f.wears is not None:
+        rec["wears"] = {"object": f.wears[0], "slot": f.wears[1], "grain": "XY"[f.grain]}
+    return rec
+
+
+def _fixture_mesh(stage, path: str, box: dict, worn: dict) -> None:
+    """A fixture as a box mesh with the UVs an object's piece gets (its grain along the run), wearing
+    ``worn``'s (an object record's) material of the slot: a reference to that object's own material prim,
+    so its textures and shading are the object's own."""
+    from pxr import Gf, Sdf, UsdGeom, UsdPhysics, UsdShade, Vt
+
+    from infmob_usd.primitives import box_between
+    from infmob_usd.shading import corner_attributes
+
+    lo, hi = np.array(box["min"]), np.array(box["max"])
+    piece = box_between(lo - (lo + hi) / 2, hi - (lo + hi) / 2, box["wears"]["slot"])
+    long = np.eye(3)[0 if box["wears"]["grain"] == "X" else 1]
+    frame = np.column_stack([long, np.cross([0.0, 0.0, 1.0], long), [0.0, 0.0, 1.0]])
+    normals, uvs = corner_attributes(piece.vertices, piece.faces, np.repeat(frame[None], len(piece.faces), 0))
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    mesh.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(np.asarray(piece.vertices, np.float32)))
+    mesh.CreateFaceVertexCountsAttr([3] * len(piece.faces))
+    mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(np.asarray(piece.faces, np.int32).ravel()))
+    mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(np.asarray(normals, np.float32)))
+    mesh.SetNormalsInterpolation(UsdGeom.Tokens.faceVarying)
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    st = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray,
+                                                 UsdGeom.Tokens.faceVarying)
+    st.Set(Vt.Vec2fArray.FromNumpy(np.asarray(uvs, np.float32)))
+    mesh.AddTranslateOp().Set(Gf.Vec3d(*_r((lo + hi) / 2)))
+    mesh.CreateDisplayColorAttr([Gf.Vec3f(*box["color"])])
+    UsdPhysics.CollisionAPI.Apply(mesh.GetPrim())
+    UsdPhysics.MeshCollisionAPI.Apply(mesh.GetPrim()).CreateApproximationAttr(UsdPhysics.Tokens.convexHull)
+    look = UsdShade.Material.Define(stage, f"/Scene/Room/Looks/{box['name']}")
+    look.GetPrim().GetReferences().AddReference(f"./{worn['folder']}/{worn['name']}.usda",
+                                                f"/{worn['name']}/Looks/{box['wears']['slot']}")
+    UsdShade.MaterialBindingAPI.Apply(mesh.GetPrim()).Bind(look)
 
 
 def _root_joint_paths(usda: Path) -> list[str]:
@@ -89,8 +130,12 @@ def write_usd(s, rec: dict, folder: Path) -> None:
     physics.CreateGravityDirectionAttr(Gf.Vec3f(0, 0, -1))
     physics.CreateGravityMagnitudeAttr(9.81)
     UsdGeom.Scope.Define(stage, "/Scene/Room")
+    placed = {o["id"]: o for o in rec["objects"]}
     for box in rec["room"]["boxes"]:
         lo, hi = np.array(box["min"]), np.array(box["max"])
+        if "wears" in box:
+            _fixture_mesh(stage, f"/Scene/Room/{box['name']}", box, placed[box["wears"]["object"]])
+            continue
         cube = UsdGeom.Cube.Define(stage, f"/Scene/Room/{box['name']}")
         cube.CreateSizeAttr(1.0)
         cube.AddTranslateOp().Set(Gf.Vec3d(*_r((lo + hi) / 2)))
@@ -140,8 +185,30 @@ def write_mjcf(rec: dict, folder: Path) -> None:
     (folder / "scene.xml").write_text("\n".join(lines))
 
 
-def write_scene(s, out) -> Path:
-    """Write scene ``s`` into ``out/<name>/`` (atomically: built in a temporary folder beside it, then renamed)."""
+def _write_objects(s, tmp: Path, pool) -> dict[str, str]:
+    """Every distinct object of ``s`` written once under ``tmp/objects/`` (in ``pool`` when given, all finished
+    before this returns, even when one fails); ``{key: its folder, relative}``."""
+    jobs, folders = [], {}
+    for made in s.objects:
+        where = tmp / "objects" / made.key
+        where.mkdir(parents=True)
+        jobs.append((made.obj, where))
+        folders[made.key] = f"objects/{made.key}/{made.obj.name}"
+    if pool is None:
+        for obj, where in jobs:
+            write_object(obj, where, None)
+        return folders
+    futures = [pool.submit(write_object, obj, where, None) for obj, where in jobs]
+    for f in futures:
+        f.exception()  # wait for every one: the caller removes tmp on failure
+    for f in futures:
+        f.result()
+    return folders
+
+
+def write_scene(s, out, pool=None) -> Path:
+    """Write scene ``s`` into ``out/<name>/`` (atomically: built in a temporary folder beside it, then renamed);
+    ``pool``: an executor the object folders are written in."""
     from infmob_usd.runs import new_run_id, temp_prefix
 
     out = check_output_dir(Path(out))
@@ -149,12 +216,7 @@ def write_scene(s, out) -> Path:
     prefix = temp_prefix(s.name, new_run_id())
     tmp = Path(tempfile.mkdtemp(prefix=prefix, suffix=".tmp", dir=out))
     try:
-        folders = {}
-        for made in s.objects:
-            where = tmp / "objects" / made.key
-            where.mkdir(parents=True)
-            write_object(made.obj, where, None)
-            folders[made.key] = f"objects/{made.key}/{made.obj.name}"
+        folders = _write_objects(s, tmp, pool)
         rec = scene_record(s, folders)
         (tmp / "scene.json").write_text(json.dumps(rec, indent=1, sort_keys=False) + "\n")
         write_usd(s, rec, tmp)

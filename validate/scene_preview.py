@@ -57,7 +57,7 @@ class _SceneOnStage:
             for name, visuals in f.links.items():
                 if visuals:
                     self._add(visuals, place @ poses[name], textures)
-        self._room(rec["room"], hidden)
+        self._room(rec["room"], hidden, folder, {o["id"]: o for o in rec["objects"]})
         stage.owner = self
 
     def _add(self, visuals, pose, textures):
@@ -69,7 +69,36 @@ class _SceneOnStage:
         self.stage.scene.add_entity(ent)
         self.entities.append(ent)
 
-    def _room(self, room: dict, hidden: tuple[str, str]):
+    def _worn(self, box: dict, folder: Path, placed: dict):
+        """The look a fixture wears: its object's texture of the slot, tinted as that object's MTL asks
+        (``Kd``); its flat colour where the texture is not there."""
+        import cv2
+
+        sapien, o = self.sapien, placed.get(box["wears"]["object"])
+        slot = box["wears"]["slot"]
+        look = sapien.render.RenderMaterial(base_color=[*box["color"], 1], roughness=0.5)
+        texture = None if o is None else folder / o["folder"] / "textures" / f"{slot}_basecolor.png"
+        if texture is None or not texture.is_file():
+            return look
+        kd = np.ones(3, np.float32)
+        for mtl in sorted((folder / o["folder"] / "meshes").glob("*.mtl")):
+            lines = [ln.strip() for ln in mtl.read_text(errors="replace").splitlines()]
+            if f"newmtl {slot}" in lines:
+                after = lines[lines.index(f"newmtl {slot}") + 1:]
+                kd_line = next((ln for ln in after if ln.startswith(("Kd ", "newmtl "))), "")
+                if kd_line.startswith("Kd "):
+                    kd = np.array([float(x) for x in kd_line.split()[1:4]], np.float32)
+                break
+        img = cv2.imread(str(texture), cv2.IMREAD_COLOR)[..., ::-1].astype(np.float32) / 255.0
+        lin = np.clip(np.where(img <= 0.04045, img / 12.92, ((img + 0.055) / 1.055) ** 2.4) * kd, 0.0, 1.0)
+        srgb = np.where(lin <= 0.0031308, 12.92 * lin, 1.055 * lin ** (1 / 2.4) - 0.055)
+        rgba = np.concatenate([srgb, np.ones(srgb.shape[:2] + (1,), np.float32)], -1)
+        look.base_color = [1.0, 1.0, 1.0, 1.0]
+        look.base_color_texture = sapien.render.RenderTexture2D(
+            np.ascontiguousarray(np.rint(rgba * 255).astype(np.uint8)), "R8G8B8A8Unorm", mipmap_levels=8, srgb=True)
+        return look
+
+    def _room(self, room: dict, hidden: tuple[str, str], folder: Path, placed: dict):
         sapien = self.sapien
         wall = sapien.render.RenderMaterial(base_color=[0.86, 0.85, 0.82, 1], roughness=0.9)
         floor = sapien.render.RenderMaterial(base_color=[0.55, 0.45, 0.35, 1], roughness=0.7)
@@ -79,7 +108,9 @@ class _SceneOnStage:
             lo, hi = np.array(box["min"]), np.array(box["max"])
             body = sapien.render.RenderBodyComponent()
             look = floor if box["name"] == "floor" else wall
-            if "color" in box:  # a fixture (a worktop) in its own colour
+            if "wears" in box:  # a fixture (a worktop) in the material of the object it joins
+                look = self._worn(box, folder, placed)
+            elif "color" in box:  # a fixture in its own colour
                 look = sapien.render.RenderMaterial(base_color=[*box["color"], 1], roughness=0.5)
             shape = sapien.render.RenderShapeBox(((hi - lo) / 2).tolist(), look)
             body.attach(shape)

@@ -1,7 +1,9 @@
-"""Dining room: a dining table in the middle, a sideboard, a floor lamp, a door and windows, things on the table.
+"""Dining room: a dining table with chairs round it, a sideboard, a lamp, a door and windows, things on the table.
 
-Dining chairs join when a dining-chair category exists (the bar chairs are counter height); the sideboard is a
-kitchen_cabinet base run against a wall (a low cabinet with drawers and doors, as a sideboard is).
+The chairs are folding chairs of one seed (a wooden or a padded set; the bar chairs are counter height), one per
+0.61 m of the table's edge, each facing the table and pushed in as far as its hulls clear the table's at rest
+and over every joint's travel (a drawer, an extension, a leaf); the sideboard is a kitchen_cabinet base run
+against a wall (a low cabinet with drawers and doors, as a sideboard is).
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ from infmob_usd.params import Float
 from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 
-from ._common import CEILING, WALKWAY, WALL, YAWS, door_in, window_in
+from ._common import CEILING, WALKWAY, WALL, YAWS, chairs_round, door_in, window_in
 
 # a sideboard: 0.8-0.9 m tall, 0.4-0.5 m deep (IKEA Hemnes / Besta, John Lewis ranges)
 SIDEBOARD_HEIGHT = (0.8, 0.9)
@@ -23,10 +25,10 @@ PARAMS = (
 )
 
 GRAMMAR = Grammar("dining_room", {
-    "dining_room": Node(required=("table", "door"), optional={"sideboard": 0.8, "lamp": 0.6, "window": 0.85,
-                                                               "tv": 0.2},
+    "dining_room": Node(required=("table", "chairs", "door"), optional={"sideboard": 0.8, "lamp": 0.6,
+                                                                         "window": 0.85, "tv": 0.2},
                         repeat={"tableware": (1, 5)}),
-    **{k: Node() for k in ("table", "door", "sideboard", "lamp", "window", "tv", "tableware")},
+    **{k: Node() for k in ("table", "chairs", "door", "sideboard", "lamp", "window", "tv", "tableware")},
 })
 
 
@@ -34,21 +36,30 @@ class DiningRoomLayout(RoomLayout):
     def dining_room(self, node):
         p = self.p
         self.room_of(p["width"], p["depth"], p["ceiling"], WALL)
-        for kind in ("table", "sideboard", "tv", "lamp", "door", "window"):
+        for kind in ("table", "chairs", "sideboard", "tv", "lamp", "door", "window"):
             if node.one(kind) is not None:
                 self.grow(node.one(kind))
         for child in node.of("tableware"):
             self.grow(child)
 
     def table(self, node):
-        table = self.make("dining_table")
         r = self.room
+        # a table the room keeps the walkway round (the category's 1.4-2.8 x 0.9-1.2 m, as much as fits)
+        spare = 2 * WALKWAY + 0.05
+        long_cap, short_cap = max(r.width, r.depth) - spare, min(r.width, r.depth) - spare
+        table = self.make("dining_table", length=round(float(self.rng.uniform(1.4, max(1.4, min(2.8, long_cap)))), 3),
+                          width=round(float(self.rng.uniform(0.9, max(0.9, min(1.2, short_cap)))), 3))
         # its long axis (X) along the room's longer side
         longer = YAWS[1] if r.width > r.depth else 0.0
         yaw = YAWS[int(self.rng.integers(2))] if abs(r.width - r.depth) < 0.3 else longer
         # a dining table keeps a walkway round it (NKBA 36 in behind a seated diner)
         self.table_at = self.at(table, (r.depth / 2, r.width / 2), yaw) or self.on_floor(table, self.rng, YAWS,
                                                                                          margin=WALKWAY)
+
+    def chairs(self, node):
+        table = getattr(self, "table_at", None)
+        if table is not None:
+            chairs_round(self, table)
 
     def sideboard(self, node):
         unit = self.make("kitchen_cabinet", design="base_run", width=round(float(self.rng.uniform(1.2, 1.8)), 3),

@@ -14,16 +14,22 @@ import math
 
 import numpy as np
 
+from infmob_usd.categories.parts.dishwashers import DW
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
 from infmob_usd.scenes.kind import SceneKind
 from infmob_usd.scenes.layout import RoomLayout
 from infmob_usd.scenes.room import Fixture, boxes_overlap, moved_box
 
+from ._common import chairs_round
+
 # NKBA Kitchen Planning Guidelines (2021): work aisle >= 42 in (1.07 m) for one cook, 48 in (1.22 m) for two;
 # 36 in (0.91 m) behind a seated diner where no one passes, 44 in (1.12 m) where one walks behind.
 AISLE = (1.07, 1.3)
 SEATING_CLEAR = 0.91
+SEATING_WALK = 1.12  # NKBA 44 in behind a seated diner where one walks behind: between an eat-in table and a run
+SINGLE_WALL_BASE = (1.2, 1.4)  # m: a single-wall run's plain base runs (kitchen_cabinet's shortest base run: 1.2 m)
+EAT_IN = 0.6  # a single-wall kitchen with a table in it (else the room is only the run and its aisle deep)
 # residential ceilings: 8-9 ft (2.44-2.74 m; 2.4 m the UK/EU minimum of most building codes)
 CEILING = (2.4, 2.7)
 WALL = 0.12  # m: a 100 mm stud partition with 12.5 mm plasterboard each side
@@ -101,8 +107,15 @@ class KitchenLayout(RoomLayout):
         return next(m for m in self._made.values() if m.category == "kitchen_cabinet").obj.params
 
     def under_counter(self, category: str, **kw):
-        worktop = self.cabinet_params()["worktop_thickness"]
-        return self.make(category, height=round(self.h - worktop - 0.004, 4), **kw)
+        """An appliance built in under the worktop: 4 mm under it, its door flush with the cabinets' fronts
+        (an integrated dishwasher's niche is the carcass depth, its door panel a cabinet front: Bosch, Miele
+        installation sheets); a deeper one stood up to 47 mm proud of the run."""
+        p = self.cabinet_params()
+        depth = p["base_depth"] + p["front_thickness"]  # to the cabinets' door fronts
+        if kw.get("design") == "integrated":  # the decor board on its door is the cabinet front
+            depth -= DW["front"]["board"]
+        return self.make(category, height=round(self.h - p["worktop_thickness"] - 0.004, 4), depth=round(depth, 4),
+                         **kw)
 
     def sink_side(self, wine: bool) -> list:
         units = [self.cabinet("sink_base"), self.under_counter("dishwasher", design="integrated")]
@@ -166,14 +179,43 @@ class KitchenLayout(RoomLayout):
                 boxes_overlap(g_lo, g_hi, a, b) for _, a, b in o.moving_boxes()) for o in self.placed)
             if clear:
                 name = f"worktop_{len(self.room.fixtures)}"
-                self.room.fixtures.append(Fixture(name, g_lo, g_hi, tuple(float(c) for c in look.base_color[:3])))
+                worn = np.asarray(look.base_color[:3], float) * np.asarray(look.wear.tint, float)
+                self.room.fixtures.append(Fixture(name, g_lo, g_hi, tuple(float(c) for c in worn),
+                                                  wears=(cabinets[0].id, "top"), grain=k))
 
     # -- layouts -----------------------------------------------------------------------------------------------
     def single_wall(self, node, wine):
-        a = self.cook_side() + self.sink_side(wine) + [self.base()]
-        self._room(self.run_length(a) + 0.5 + float(self.rng.uniform(0, 0.8)),
-                   self._depth(a) + self.p["aisle"] + float(self.rng.uniform(0.8, 1.6)))
+        """One run on the north wall, and in front of it either an eat-in table with chairs (the room as
+        deep as NKBA's clearances round it ask) or nothing (the room only the run and its aisle deep, as a
+        kitchen of one wall is in a flat): never a bare floor too small for a table and too big for an aisle."""
+        # NKBA 12 and 15 ask 0.38 m of landing beside a cooktop and 0.91 m of preparation counter next to the
+        # sink: the shortest base runs made (1.2-1.4 m) give both, and the fridge ends the run (NKBA's work
+        # triangle: each leg 1.2-2.7 m); two plain 1.2-1.8 m runs and a third after the fridge made a wall of
+        # 8-10 m with nothing in front of it
+        short = SINGLE_WALL_BASE
+        a = [self.base(float(self.rng.uniform(*short))), self.make("oven", height=self.h),
+             self.base(float(self.rng.uniform(*short)))] + self.sink_side(wine)
+        if not self.fridge:
+            a.append(self.base(float(self.rng.uniform(*short))))
+        da, width = self._depth(a), self.run_length(a) + 0.5 + float(self.rng.uniform(0, 0.8))
+        eat_in = self.rng.uniform() < EAT_IN
+        table = None
+        if eat_in:
+            spare = 2 * SEATING_CLEAR + 0.05
+            length = float(self.rng.uniform(1.4, max(1.4, min(2.2, width - spare))))
+            breadth = float(self.rng.uniform(0.9, 1.0))
+            table = self.make("dining_table", length=round(length, 3), width=round(breadth, 3))
+            depth = da + SEATING_WALK + table.size[1] + SEATING_CLEAR + float(self.rng.uniform(0.0, 0.3))
+        else:
+            depth = da + self.p["aisle"] + float(self.rng.uniform(0.1, 0.4))
+        self._room(width, depth)
         self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
+        if table is not None:
+            # its long side to the run, SEATING_WALK from the run's front (a cook passes behind the diners)
+            x = da + SEATING_WALK + table.size[1] / 2
+            got = self.at(table, (x, self.room.width / 2), math.pi / 2)
+            if got is not None:
+                chairs_round(self, got)
 
     def galley(self, node, wine):
         a, b = self.cook_side(), self.sink_side(wine) + [self.base()]

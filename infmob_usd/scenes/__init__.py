@@ -69,12 +69,13 @@ def scene_streams(kind: str, seed: int) -> dict[str, np.random.Generator]:
     return {n: np.random.default_rng(s) for n, s in zip(names, root.spawn(len(names)))}
 
 
-def scene(kind: str, seed: int = 0, texture_size: int = 256, **overrides: Any) -> Scene:
+def scene(kind: str, seed: int = 0, texture_size: int = 256, pool=None, **overrides: Any) -> Scene:
     """Compose one scene: a pure function of ``(kind, seed, overrides)``.
 
     ``texture_size``: edge of every object's texture maps (power of two, 16..4096; a room holds dozens
-    of objects, so the default is smaller than an object's). ``overrides``: the kind's parameters
-    (``infmob scene KIND --params``)."""
+    of objects, so the default is smaller than an object's). ``pool``: a ``concurrent.futures`` process
+    pool that makes the scene's objects in parallel (the same scene, byte for byte, as without one).
+    ``overrides``: the kind's parameters (``infmob scene KIND --params``)."""
     from ..api import check_texture_size, generate, list_categories
 
     k = get_kind(kind)
@@ -83,18 +84,18 @@ def scene(kind: str, seed: int = 0, texture_size: int = 256, **overrides: Any) -
     params = k.schema.sample(rng["params"], overrides)
     tree = k.grammar.grow(params, rng["structure"])
     layout: SceneLayout = k.layout(kind, k.grammar.resolve(params), rng["placement"], rng["objects"], texture_size,
-                                   generate, tuple(list_categories()))
+                                   generate, tuple(list_categories()), pool=pool)
     layout.run(tree)
     return Scene(kind, int(seed), params, k.schema.validate(overrides), layout.room, layout.placed, texture_size)
 
 
-def save_scene(s: Scene, folder) -> Any:
+def save_scene(s: Scene, folder, pool=None) -> Any:
     """Write ``s`` into ``folder/<kind>_<seed>/`` (atomically) and return that path: every distinct
     object once under ``objects/``, ``scene.usda`` (each object a reference to its own stage),
-    ``scene.json`` and ``scene.xml`` (MuJoCo)."""
+    ``scene.json`` and ``scene.xml`` (MuJoCo). ``pool``: as in :func:`scene`, writes the object folders."""
     from ..layers.scene import write_scene
 
-    return write_scene(s, folder)
+    return write_scene(s, folder, pool=pool)
 
 
 def load_sapien(folder, scene_json=None, **kw):

@@ -65,9 +65,16 @@ CLEARANCES = {
 }
 
 
+# what :func:`made_in_worker` computes: read off a pending Made when first used
+_MEASURED = ("obj", "lo", "hi", "swept", "regions", "hulls", "moving")
+
+
 @dataclass
 class Made:
-    """One distinct generated object and what placement needs of it (object frame at rest)."""
+    """One distinct generated object and what placement needs of it (object frame at rest).
+
+    Made in a process pool (:meth:`pending`), its object and measures arrive when first read: a layout
+    that makes several objects before it looks at them (a kitchen's run of units) has them made at once."""
 
     key: str  # folder under objects/: unique per (category, seed, overrides)
     category: str
@@ -86,6 +93,43 @@ class Made:
     @property
     def size(self) -> np.ndarray:
         return self.hi - self.lo
+
+    def hull_sweep(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:func:`_hull_sweep` of the object (worked out once, when first asked for)."""
+        if "_sweep" not in self.__dict__:
+            self.__dict__["_sweep"] = _hull_sweep(self.obj)
+        return self.__dict__["_sweep"]
+
+    @classmethod
+    def pending(cls, key: str, category: str, seed: int, overrides: dict, clearance: Clearance | None,
+                future) -> Made:
+        """A Made whose object and measures ``future`` (of :func:`made_in_worker`) delivers when first read."""
+        made = cls.__new__(cls)
+        made.key, made.category, made.seed, made.overrides, made.clearance = key, category, seed, overrides, clearance
+        made._future = future
+        return made
+
+    def __getattr__(self, name: str):
+        # only reached for an attribute not set yet: the measured ones of a pending Made
+        future = self.__dict__.get("_future")
+        if name not in _MEASURED or future is None:
+            raise AttributeError(name)
+        self.__dict__.update(zip(_MEASURED, future.result()))
+        del self.__dict__["_future"]
+        return self.__dict__[name]
+
+
+def measured(obj) -> tuple:
+    """``obj`` and what placement needs of it, in :data:`_MEASURED`'s order."""
+    lo, hi, swept, moving = _measure(obj)
+    return obj, lo, hi, swept, support_regions(obj), hull_boxes(obj), moving
+
+
+def made_in_worker(category: str, seed: int, texture_size: int, overrides: dict) -> tuple:
+    """Generate and measure one object (a pool worker's job): :func:`measured` of it."""
+    from ..api import generate
+
+    return measured(generate(category, seed, texture_size=texture_size, **overrides))
 
 
 @dataclass
@@ -163,6 +207,54 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list, list]:
     return lo, hi, swept, parts
 
 
+def _hull_sweep(obj) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``(rest_lo, rest_hi, moving_lo, moving_hi)``, each ``(n, 3)`` in the object frame: the box of every
+    collision hull at rest, and of every hull a joint group moves at each pose over its travel (sampled as
+    :func:`_measure` samples it). Finer than the object's boxes: what lets a chair's seat slide under a
+    table's top while its back stays clear of the table's edge."""
+    hulls: dict[str, list[np.ndarray]] = {}
+    for link in obj.links:
+        for p in link.pieces:
+            hulls.setdefault(link.name, []).extend(np.asarray(c, float) for c in p.convex if len(c) >= 4)
+    rest = [h + link.origin for link in obj.links for h in hulls.get(link.name, [])]
+    groups: dict[str, list] = {}
+    for j in obj.movable_joints:
+        if math.isfinite(j.upper):
+            groups.setdefault(j.group, []).append(j)
+    moving = []
+    for _, joints in sorted(groups.items()):
+        turns = any(j.type in ("revolute", "continuous") for j in joints)
+        n = max(2, int(math.ceil(max(j.upper - j.lower for j in joints) / SWEEP_STEP)) + 1) if turns else 2
+        moved = _moved_links(obj, joints)
+        for f in np.linspace(0.0, 1.0, n)[1:]:
+            poses = obj.poses({j.name: j.lower + f * (j.upper - j.lower) for j in joints})
+            moving += [h @ poses[name][:3, :3].T + poses[name][:3, 3] for name in sorted(moved)
+                       for h in hulls.get(name, [])]
+
+    def boxes(points):
+        return (np.array([h.min(0) for h in points]).reshape(-1, 3),
+                np.array([h.max(0) for h in points]).reshape(-1, 3))
+
+    return (*boxes(rest), *boxes(moving))
+
+
+def _moved_boxes(lo: np.ndarray, hi: np.ndarray, pose: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Room-frame AABBs of the boxes ``lo``..``hi`` (``(n, 3)`` each, in a frame at ``pose``)."""
+    pick = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)])
+    both = np.stack([lo, hi], axis=1)  # (n, 2, 3)
+    corners = both[:, pick, np.arange(3)] @ pose[:3, :3].T + pose[:3, 3]  # (n, 8, 3)
+    return corners.min(1), corners.max(1)
+
+
+def _any_overlap(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray], gap: float) -> bool:
+    """Whether any box of ``a`` comes within ``gap`` of any box of ``b`` (``(lo, hi)`` arrays, ``(n, 3)``)."""
+    if not len(a[0]) or not len(b[0]):
+        return False
+    lo = np.maximum(a[0][:, None], b[0][None])
+    hi = np.minimum(a[1][:, None], b[1][None])
+    return bool(np.any(np.all(hi - lo > -gap, axis=2)))
+
+
 def _steady_links(obj) -> set[str]:
     """Links something may be set down on: those no joint moves (the body, a fixed sink). Not a drawer, a door
     or a turntable, which move under a load, nor a lift-off part (a range's grate): loaded, it no longer
@@ -186,11 +278,13 @@ class SceneLayout:
     """Base of a scene kind's layout: object making and placing; the kind adds one method per node kind."""
 
     def __init__(self, kind: str, params: dict, rng: np.random.Generator, objects_rng: np.random.Generator,
-                 texture_size: int, generate, categories: tuple[str, ...] = ()) -> None:
+                 texture_size: int, generate, categories: tuple[str, ...] = (), pool=None) -> None:
         """``generate``: ``(category, seed, texture_size=..., **overrides) -> ArticulatedObject`` (the API's);
-        ``categories``: the category ids that exist."""
+        ``categories``: the category ids that exist; ``pool``: an executor that makes the objects (with
+        the API's ``generate``) while the layout goes on, or ``None``: each made here when asked for."""
         self.kind, self.p, self.rng, self.objects_rng = kind, params, rng, objects_rng
         self.texture_size, self._generate, self._categories = texture_size, generate, tuple(categories)
+        self.pool = pool
         self.room: Room | None = None
         self.placed: list[Placed] = []
         self._made: dict[tuple, Made] = {}
@@ -224,16 +318,21 @@ class SceneLayout:
         seed = self.seed() if seed is None else int(seed)
         key = (category, seed, tuple(sorted(overrides.items())))
         if key not in self._made:
-            obj = self._generate(category, seed, texture_size=self.texture_size, **overrides)
-            name, n = obj.name, 1
+            base = f"{category}_{seed:06d}"  # the object's name (ArticulatedObject.name), known before it is made
+            name, n = base, 1
             while name in self._keys:
                 n += 1
-                name = f"{obj.name}_v{n}"
+                name = f"{base}_v{n}"
             self._keys.add(name)
-            lo, hi, swept, moving = _measure(obj)
             clear = CLEARANCES.get(category) if clearance == "category" else clearance
-            self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, support_regions(obj),
-                                   hull_boxes(obj), clear, moving)
+            if self.pool is not None:
+                future = self.pool.submit(made_in_worker, category, seed, self.texture_size, dict(overrides))
+                self._made[key] = Made.pending(name, category, seed, dict(overrides), clear, future)
+            else:
+                obj, lo, hi, swept, regions, hulls, moving = measured(
+                    self._generate(category, seed, texture_size=self.texture_size, **overrides))
+                self._made[key] = Made(name, category, seed, dict(overrides), obj, lo, hi, swept, regions, hulls,
+                                       clear, moving)
         return self._made[key]
 
     # -- placing ----------------------------------------------------------------------------------------------
@@ -292,6 +391,17 @@ class SceneLayout:
         the host's collision hulls at rest: a rack's drip tray set on a shelf inside a cabinet would slide into
         the cabinet's closed door (the placement checks leave out the host, whose top the item stands on)."""
         return all(_clear_of_host(host, *moved_box(lo, hi, local)) for _, lo, hi in made.swept)
+
+    @staticmethod
+    def hulls_clear(a: Placed, b: Placed, gap: float = 0.01) -> bool:
+        """Whether ``a`` and ``b`` stay ``gap`` apart hull by hull: each one's collision hulls at rest clear
+        of the other's at rest and over the other's joints' travel (each joint opened alone)."""
+        a_rest_lo, a_rest_hi, a_mov_lo, a_mov_hi = a.made.hull_sweep()
+        b_rest_lo, b_rest_hi, b_mov_lo, b_mov_hi = b.made.hull_sweep()
+        a_rest, a_mov = _moved_boxes(a_rest_lo, a_rest_hi, a.pose), _moved_boxes(a_mov_lo, a_mov_hi, a.pose)
+        b_rest, b_mov = _moved_boxes(b_rest_lo, b_rest_hi, b.pose), _moved_boxes(b_mov_lo, b_mov_hi, b.pose)
+        return not (_any_overlap(a_rest, b_rest, gap) or _any_overlap(a_rest, b_mov, gap)
+                    or _any_overlap(a_mov, b_rest, gap))
 
     def keep(self, cand: Placed, ignore: tuple[str, ...] = ()) -> Placed | None:
         """Place ``cand`` if it :meth:`fits`; ``None`` (nothing placed) if it does not."""
@@ -472,6 +582,22 @@ class RoomLayout(SceneLayout):
             got = self.at(made, xy, yaw, fixed=fixed)
             if got is not None:
                 return got
+        return None
+
+    def tuck(self, made: Made, host: Placed, xy, outward, reach: tuple[float, float] = (-0.06, 0.25),
+             gap: float = 0.01) -> Placed | None:
+        """``made`` on the floor facing ``host`` (a chair at a table): its front ``reach`` beyond the point
+        ``xy`` of the host's edge along ``outward`` (room frame, a unit vector square to the walls), from
+        under the edge outwards in 2 cm steps, at the first distance where its hulls clear the host's
+        (:meth:`hulls_clear`) and it fits among everything else; ``None`` where none does."""
+        out = np.array([outward[0], outward[1]], float)
+        yaw = math.atan2(-out[1], -out[0])  # its front (+X) towards the host
+        for d in np.arange(reach[0], reach[1] + 1e-9, 0.02):
+            centre = np.asarray(xy, float) + out * (float(d) + float(made.hi[0]))
+            cand = Placed(self._id(made), made, pose_matrix((centre[0], centre[1], -made.lo[2]), yaw), True, "floor")
+            if self.hulls_clear(cand, host, gap) and self.fits(cand, ignore=(host.id,)):
+                self.placed.append(cand)
+                return cand
         return None
 
     def room_of(self, width: float, depth: float, height: float, wall: float) -> Room:

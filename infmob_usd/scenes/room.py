@@ -50,12 +50,17 @@ class Opening:
 @dataclass(frozen=True)
 class Fixture:
     """A static box built into the room that is no object of its own: a worktop carried over the
-    under-counter appliances of a run. ``lo``..``hi`` room frame; ``color``: linear RGB it is drawn in."""
+    under-counter appliances of a run. ``lo``..``hi`` room frame; ``color``: linear RGB it is drawn in where
+    a reader shows flat colours (its look's colour as worn: base colour times tint); ``wears``: ``(placed id,
+    slot)`` of the object whose material it wears (a cabinet's ``top``: the same wood or stone), or ``None``.
+    ``grain``: the room axis (0 X, 1 Y) its texture's grain runs along (the run's)."""
 
     name: str
     lo: np.ndarray
     hi: np.ndarray
     color: tuple[float, float, float]
+    wears: tuple[str, str] | None = None
+    grain: int = 0
 
 
 @dataclass
