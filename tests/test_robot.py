@@ -213,3 +213,16 @@ def test_a_tote_lid_is_lifted_through_its_arc(tmp_path):
     _write(folder, [next(t for t in targets if t["joint"] == "joint_level_0_3_tote_0_lid")])
     [r] = robot.check_robot(folder)
     assert r.ok and "(hinge_lid): opened" in r.detail, r.detail
+
+
+def test_a_front_loaders_door_and_detergent_drawer_are_pulled_by_their_grips(tmp_path):
+    """A front loader's porthole door and detergent drawer sit flush in the front: pinched across their edges
+    the back finger meets the cabinet. Each has a grip (a bar on the door's free edge, a lip along the
+    drawer front's bottom) that declares its hold; taken by it, both open."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("washing_machine", 5, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    keep = [next(t for t in targets if t["joint"] == j) for j in ("joint_door", "joint_drawer")]
+    assert all(t["handle_class"] == "line_fixed_handle" and t["grasp_source"] == "part" for t in keep)
+    _write(folder, keep)
+    results = robot.check_robot(folder)
+    assert all(r.ok for r in results), [r.detail for r in results]
