@@ -226,3 +226,17 @@ def test_a_front_loaders_door_and_detergent_drawer_are_pulled_by_their_grips(tmp
     _write(folder, keep)
     results = robot.check_robot(folder)
     assert all(r.ok for r in results), [r.detail for r in results]
+
+
+def test_progress_on_an_arc_takes_off_the_inset_turned_with_the_part():
+    """A knob held 10 mm in from its rim on an 18 mm arc: the hand is sent to the path's point with the inset
+    turned as far as the part has come, and its place is read back the same way (the inset taken off
+    unturned, a quarter turn read 2-3 mm off: the target ran ahead of the knob or lagged it)."""
+    r, inset = 0.018, 0.01
+    angles = np.linspace(0, math.pi / 2, 11)
+    arc = robot.Path3([[r * math.cos(a), r * math.sin(a), 0.0] for a in angles])
+    grasp = np.eye(4)
+    grasp[:3, 3] = [r - inset, 0.0, 0.0]
+    motion = robot.PathMotion(arc, grasp)
+    for s in np.linspace(0, arc.length, 21)[1:]:
+        assert motion.progress(motion.pose(s, s)) == pytest.approx(s, abs=2e-4), s

@@ -549,10 +549,16 @@ class PathMotion:
         self.length = path.length
         self.eps = min(0.002, path.length / 20)  # progress that is not a stall (a button travels ~2 mm)
         self.t0, self.offset = path.tangent(0.0), self.grasp[:3, 3] - path.at(0.0)
+        self.here = 0.0  # the last progress read
 
     def progress(self, tcp: np.ndarray) -> float:
-        local = np.linalg.inv(self.frame()) @ tcp
-        return self.path.nearest(local[:3, 3] - self.offset)
+        local = (np.linalg.inv(self.frame()) @ tcp)[:3, 3]
+        for _ in range(10):  # the offset turns with the tangent (as in pose): from the last place, refined
+            here = self.path.nearest(local - rotation_between(self.t0, self.path.tangent(self.here)) @ self.offset)
+            here, self.here = self.here, here
+            if abs(here - self.here) < 1e-5:
+                break
+        return self.here
 
     def pose(self, here: float, goal: float) -> np.ndarray:
         turn = rotation_between(self.t0, self.path.tangent(here))  # the part turns as far as the hand has come
