@@ -184,3 +184,59 @@ def test_a_pot_lid_is_lifted_by_its_loop(tmp_path):
     _write(folder, [lid])
     [r] = robot.check_robot(folder)
     assert r.ok and "(slider_lid): opened" in r.detail, r.detail
+
+
+def test_progress_is_the_grasp_points_place_on_the_path_riding_on_the_parent():
+    """The hand goes up to ``INSET`` past the annotated grasp point: its place on the path is read with that
+    offset taken off (else a drawer pulled 0.1 m reads 0.09 m and the target runs ahead of the part). The
+    path rides on the operated joint's parent: moved 0.2 m (a rack pulled out, a tote slid on its shelf), the
+    hand's target moves with it and its progress is read there."""
+    grasp = np.eye(4)
+    grasp[:3, 3] = [-0.01, 0.0, 0.0]  # 10 mm inset along a -x approach into a drawer front pulled along +x
+    parent = np.eye(4)
+    motion = robot.PathMotion(robot.Path3([[0, 0, 0], [0.3, 0, 0]]), grasp, lambda: parent)
+    moved = grasp.copy()
+    moved[0, 3] += 0.1
+    assert motion.progress(grasp) == pytest.approx(0.0) and motion.progress(moved) == pytest.approx(0.1)
+    parent[1, 3] = 0.2  # the parent gives way sideways under the pull
+    moved[1, 3] += 0.2
+    assert motion.progress(moved) == pytest.approx(0.1)
+    assert np.allclose(motion.pose(0.1, 0.15)[:3, 3], [0.14, 0.2, 0.0])
+
+
+def test_a_tote_lid_is_lifted_through_its_arc(tmp_path):
+    """A tote's lid on the top level of a storage rack, lifted by its front tab (the hand 10 mm in past the
+    tab's edge) through 109 degrees: the hand's place on the arc read without that inset ran the target
+    ahead, the hand dragged the tote 13 cm off its shelf and lost the tab at half the range."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("storage_rack", 5, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    _write(folder, [next(t for t in targets if t["joint"] == "joint_level_0_3_tote_0_lid")])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(hinge_lid): opened" in r.detail, r.detail
+
+
+def test_a_front_loaders_door_and_detergent_drawer_are_pulled_by_their_grips(tmp_path):
+    """A front loader's porthole door and detergent drawer sit flush in the front: pinched across their edges
+    the back finger meets the cabinet. Each has a grip (a bar on the door's free edge, a lip along the
+    drawer front's bottom) that declares its hold; taken by it, both open."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("washing_machine", 5, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    keep = [next(t for t in targets if t["joint"] == j) for j in ("joint_door", "joint_drawer")]
+    assert all(t["handle_class"] == "line_fixed_handle" and t["grasp_source"] == "part" for t in keep)
+    _write(folder, keep)
+    results = robot.check_robot(folder)
+    assert all(r.ok for r in results), [r.detail for r in results]
+
+
+def test_progress_on_an_arc_takes_off_the_inset_turned_with_the_part():
+    """A knob held 10 mm in from its rim on an 18 mm arc: the hand is sent to the path's point with the inset
+    turned as far as the part has come, and its place is read back the same way (the inset taken off
+    unturned, a quarter turn read 2-3 mm off: the target ran ahead of the knob or lagged it)."""
+    r, inset = 0.018, 0.01
+    angles = np.linspace(0, math.pi / 2, 11)
+    arc = robot.Path3([[r * math.cos(a), r * math.sin(a), 0.0] for a in angles])
+    grasp = np.eye(4)
+    grasp[:3, 3] = [r - inset, 0.0, 0.0]
+    motion = robot.PathMotion(arc, grasp)
+    for s in np.linspace(0, arc.length, 21)[1:]:
+        assert motion.progress(motion.pose(s, s)) == pytest.approx(s, abs=2e-4), s

@@ -22,7 +22,9 @@ documented fields are read), in a physics-only SAPIEN 3 scene on the CPU:
    PhysX drives on the six virtual joints with a stiffness, damping and a force / torque limit
    (:data:`ARM_FORCE`, :data:`ARM_TORQUE`: what a Panda arm exerts at its hand), their target moving along
    the path at :data:`SPEED` but never more than :data:`LEAD` ahead of where the hand is (up to ``LEAD``
-   past the path's end: a compliant hand lags its target by force / stiffness); the hand turns
+   past the path's end: a compliant hand lags its target by force / stiffness; the hand's place on the
+   path is read less its inset past the grasp point); the path rides on the operated joint's parent as
+   that is now (tines on a rack pulled out, a tote that gives way on its shelf under the pull); the hand turns
    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
    on its axis) is turned in place about the joint's axis, read from the loaded URDF; held wound back, or
    when turning it in one hold did not open it, it is turned at most :data:`REGRIP` per hold: then the
@@ -344,6 +346,7 @@ class _Run:
         self.rest, self.open = float(target["rest"]), float(target["open"])
         self.time = 0.0
         self.opening = FINGER_OPEN  # per finger, how far the fingers open to let go in a regrip
+        self.parent_rest: np.ndarray | None = None  # the parent link's pose with every joint at rest
 
     def fraction(self) -> float:
         q = float(np.asarray(self.art.qpos, float)[self.qi])
@@ -532,23 +535,34 @@ def _diagnose(run: _Run, pairs) -> str:
 
 class PathMotion:
     """Along the annotated path (the grasp point over the range): progress is arc length (m); the hand turns
-    as the path's tangent turns (a door's handle turns with the door). A path that is a point (a knob held
-   on its axis) is turned in place about the joint's axis, read from the loaded URDF."""
+    as the path's tangent turns (a door's handle turns with the door). The path is the one annotated with the
+    object at rest: it rides on the operated part's parent as the parent is now (``frame()``: the parent's
+    pose now times the inverse of its pose at rest), so that a part whose parent is open (tines on a rack
+    pulled out) or gives way under the pull (a tote sliding on its shelf as its lid is lifted) is followed
+    where it is, as an arm's controller tracks the part in its hand."""
 
     speed, lead = SPEED, LEAD
 
-    def __init__(self, path: Path3, grasp: np.ndarray):
-        self.path, self.grasp = path, grasp
+    def __init__(self, path: Path3, grasp: np.ndarray, frame=None):
+        self.path, self.frame = path, frame or (lambda: np.eye(4))
+        self.grasp = np.linalg.inv(self.frame()) @ grasp  # in the path's frame (the parent at rest)
         self.length = path.length
         self.eps = min(0.002, path.length / 20)  # progress that is not a stall (a button travels ~2 mm)
-        self.t0, self.offset = path.tangent(0.0), grasp[:3, 3] - path.at(0.0)
+        self.t0, self.offset = path.tangent(0.0), self.grasp[:3, 3] - path.at(0.0)
+        self.here = 0.0  # the last progress read
 
     def progress(self, tcp: np.ndarray) -> float:
-        return self.path.nearest(tcp[:3, 3])
+        local = (np.linalg.inv(self.frame()) @ tcp)[:3, 3]
+        for _ in range(10):  # the offset turns with the tangent (as in pose): from the last place, refined
+            here = self.path.nearest(local - rotation_between(self.t0, self.path.tangent(self.here)) @ self.offset)
+            here, self.here = self.here, here
+            if abs(here - self.here) < 1e-5:
+                break
+        return self.here
 
     def pose(self, here: float, goal: float) -> np.ndarray:
         turn = rotation_between(self.t0, self.path.tangent(here))  # the part turns as far as the hand has come
-        return _pose(turn @ self.grasp[:3, :3], self.path.at(goal) + turn @ self.offset)
+        return self.frame() @ _pose(turn @ self.grasp[:3, :3], self.path.at(goal) + turn @ self.offset)
 
 
 def _about(axis: np.ndarray, angle: float) -> np.ndarray:
@@ -612,7 +626,11 @@ def _motion(run: _Run, grasp: np.ndarray):
     root = _matrix(run.art.root.entity_pose)
     path = Path3([(root @ np.array([*map(float, p), 1.0]))[:3] for p in run.target["path"]])
     if path.length >= MIN_PATH:
-        return PathMotion(path, grasp)
+        parent = run.ctx.joints[run.qi].parent_link  # the operated joint's (the link may ride on dummies)
+        if parent is None or run.parent_rest is None:
+            return PathMotion(path, grasp)
+        back = np.linalg.inv(run.parent_rest)
+        return PathMotion(path, grasp, lambda: _matrix(parent.entity_pose) @ back)
     joint = run.ctx.joints[run.qi]
     if joint.type not in ("revolute", "revolute_unwrapped"):
         return None
@@ -696,9 +714,13 @@ def run_target(ctx, gripper: Gripper, target: dict, opened: dict[str, float] | N
 def _hold(ctx, gripper: Gripper, target: dict, q: np.ndarray, g: dict, grip: bool) -> tuple[bool, Attempt]:
     """One hold ``g`` from the object at ``q``: ``(False, why the hand could not take it)`` or ``(True, what
     following the path with it did)``."""
+    ctx.reset()  # the annotated path is the grasp point's with every joint at rest: its parent's pose then
+    parent = ctx.joints[[j.name for j in ctx.joints].index(target["joint"])].parent_link
+    parent_rest = None if parent is None else _matrix(parent.entity_pose)
     ctx.reset(q)
     ctx.make_passive()
     run = _Run(ctx, gripper, target)
+    run.parent_rest = parent_rest
     grasp, pre, opening = _grasp_frames(run, g)
     # a regrip lets go of a knob as wide as its box across the hand (no wider: knobs stand beside it)
     a, k = _unit(g["approach"]), _unit(g["closing"])

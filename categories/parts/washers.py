@@ -23,6 +23,7 @@ import trimesh
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
+from infmob_usd.grasps import Grasp
 
 from . import appliance as A
 from . import controls
@@ -351,6 +352,11 @@ def porthole_door(m: Machine) -> Assembly:
               g.cylinder((0, 0, zb - d["bowl"] - d["glass"]), (0, 0, zb - d["bowl"]), 0.7 * rb, "glass"),
               g.box_between((-0.04, -(rd - 0.006), zf - 0.005), (0.04, -(rd - 0.03), zf + 0.014), "handle",
                             bevel=0.004)]
+    # the grip is what a hand pulls the door open by: pinched across its 24 mm from the front, the inner finger
+    # down to the ring's face, the outer one past the ring's edge
+    y, top = -(rd - 0.018), zf + 0.014
+    pieces[-1] = pieces[-1].with_grasps(Grasp.make((0, y, top), (0, 0, -1), (0, 1, 0), 0.024, 0.01, "line_fixed_handle",
+                                                   ((0, y, zf + 0.0045), (0.08, 0.024, 0.019), IDENTITY.rotation)))
     hinge = Frame.at((0.0, rd, zf), z=(-1, 0, 0))
     return Assembly.single("door", pieces, {"mount": IDENTITY, "hinge": hinge})
 
@@ -362,6 +368,9 @@ def detergent_drawer() -> Assembly:
     size = LinerSize(d["width"], d["depth"], d["height"], d["wall"], d["sheet"], d["lip"], d["wall"])
     tray = liner(size, "drawer", "drawer", label="drawer")
     grip = g.box_between((0.0, -0.35 * d["width"], 0.004), (0.008, 0.35 * d["width"], 0.016), "handle", bevel=0.003)
+    # fingers close on the grip's top and bottom from the front (a person hooks a finger under it)
+    grip = grip.with_grasps(Grasp.make((0.008, 0, 0.01), (-1, 0, 0), (0, 0, 1), 0.012, 0.006, "line_fixed_handle",
+                                       ((0.004, 0, 0.01), (0.008, 0.7 * d["width"], 0.012), IDENTITY.rotation)))
     return tray.with_pieces(tray.root, [grip, *compartments(size)])
 
 
