@@ -77,11 +77,26 @@ def _pybullet():
     return pb
 
 
+def _springs(urdf: Path) -> dict[str, tuple[float, float]]:
+    """Joint name -> ``(stiffness, reference)`` of every return spring in the ``metadata.json`` beside ``urdf``
+    (a URDF has no element for one; none where there is no metadata)."""
+    meta = urdf.parent / "metadata.json"
+    if not meta.is_file():
+        return {}
+    joints = json.loads(meta.read_text()).get("joints", [])
+    return {j["name"]: (float(j["spring"]["stiffness"]), float(j["spring"]["reference"])) for j in joints
+            if "spring" in j}
+
+
 def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240,
                 opened: dict[str, list[str]] | None = None, from_upper: bool = False) -> list[Push]:
     """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode) towards
     each limit from rest, judged on the peak over each push; ``from_upper``: the push towards the
     lower limit starts from the upper one (``opened``: as :func:`~infmob_usd.validate.mujoco_sim.push_joints`).
+    Return springs (``metadata.json`` ``joints[].spring``; PyBullet has no joint spring) act as joint torques
+    ``stiffness * (reference - q)`` every step, as a user loading the URDF sets them (SAPIEN's recipe:
+    :func:`~infmob_usd.validate.sim.apply_springs`); without them a key that its spring holds up falls onto its
+    pressed stop.
 
     Not by default: Bullet holds a limit from the step after it is crossed, so a part falling onto its
     rest stop goes ``v dt`` past it (1/240 s: a 3 g bottle cap falling 16 mm, 9 % of its travel), and a
@@ -93,6 +108,7 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
     pb = _pybullet()
     urdf = Path(urdf)
     efforts = _urdf_efforts(urdf)
+    springs = _springs(urdf)
     cid = pb.connect(pb.DIRECT)
     try:
         pb.setGravity(0, 0, -9.81, physicsClientId=cid)
@@ -112,6 +128,10 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
         steps = int(round(duration / timestep))
 
         index = {name[k]: k for k in moving}
+        sprung = [k for k in limited if name[k] in springs]
+        stiff = np.array([springs[name[k]][0] for k in sprung])
+        zero = np.array([springs[name[k]][1] for k in sprung])
+        at = [limited.index(k) for k in sprung]
 
         def run(i: int | None, force: float) -> np.ndarray:
             """From rest (pushed down: from its upper limit), joint ``i`` (None: none) pushed with ``force``
@@ -127,11 +147,16 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
             pb.setJointMotorControlArray(body, moving, pb.VELOCITY_CONTROL, forces=[0.0] * len(moving),
                                          physicsClientId=cid)
             worst = np.full((2, len(limited)), -np.inf)
+            # (PyBullet answers None, not [], for no joints: an object whose joints all turn freely)
+            q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid) or ()])
             for _ in range(steps):
+                torque = dict(zip(sprung, stiff * (zero - q[at]))) if sprung else {}
                 if i is not None:
-                    pb.setJointMotorControl2(body, i, pb.TORQUE_CONTROL, force=force, physicsClientId=cid)
+                    torque[i] = torque.get(i, 0.0) + force
+                if torque:
+                    pb.setJointMotorControlArray(body, list(torque), pb.TORQUE_CONTROL,
+                                                 forces=[float(t) for t in torque.values()], physicsClientId=cid)
                 pb.stepSimulation(physicsClientId=cid)
-                # (PyBullet answers None, not [], for no joints: an object whose joints all turn freely)
                 q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid) or ()])
                 worst = np.maximum(worst, _past(q, lo, hi, span))
             return worst
