@@ -125,6 +125,7 @@ PARAMS = (
 
 MATERIALS = {
     "body": "body_finish", "liner": "plastic:black|dark_grey|white", "glass": "glass:clear|clear_blue",
+    "frost": "glass:smoked",
     "handle": ("handle_finish", {"plastic": "plastic:black|dark_grey"}), "trim": "trim_finish", "wire": "chrome",
     "grille": "plastic:black|dark_grey", "feet": "rubber", "display": "rubber", "gasket": "rubber",
     "bin": "plastic:white|light_grey", "wood": "wood", "button": "plastic:black|dark_grey|light_grey",

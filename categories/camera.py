@@ -55,7 +55,9 @@ MATERIALS = {"body": ("finish", {"black": "plastic:black", "dark_grey": "plastic
                                  "silver": "brushed_metal:stainless"}),
              "pastel": ("pastel", {c: f"painted:{c}" if c != "white" else "plastic:white" for c in PASTELS}),
              "grip": "rubber:black", "trim": "plastic:black", "lens": "plastic:black", "metal": "chrome",
-             "glass": "glass:smoked",
+             # a lens's coated front element: glossy glass over the barrel's black inside (the screen family's
+             # cover glass: it mirrors the room, where a see-through glass over black reads as a grey disc)
+             "glass": "glass:smoked", "element": "screen:blue_black",
              "screen": "screen:black", "flash": "glass:frosted", "mark": "plastic:white", "lamp": "plastic:orange"}
 # bodies are massed solid at the density that gives their named products' weight in their bounding box:
 # EOS 250D 449 g in ~122 x 93 x 50 mm (+ grip) ~ 700 kg/m^3; RX100 III 290 g in 102 x 58 x 41 mm ~ 1200;
@@ -99,13 +101,13 @@ class CameraLayout(Layout):
         self.grow(node.one("barrel"))
 
     def barrel(self, node):
-        barrel = self.place(K.inner_barrel(self.c, "lens", "trim", "glass"), "barrel")
+        barrel = self.place(K.inner_barrel(self.c, "lens", "trim", "element", "mark"), "barrel")
         self.slide("body", "barrel", barrel.anchor("slide"), upper=self.c.travel)
         self.couple("barrel", "zoom_ring", self.c.travel / K.ZOOM_TURN)
 
     def stage(self, node, parent, k, stages, body):
         name = "barrel" if k == 0 else "inner_barrel"
-        st = self.place(K.lens_stage(self.c, k, stages, body, "trim", "glass"), name)
+        st = self.place(K.lens_stage(self.c, k, stages, body, "trim", "element", "mark"), name)
         self.slide(parent, st.root, st.anchor("slide"), upper=self.c.travel)
         if node.one("inner_stage") is not None:
             self.grow(node.one("inner_stage"), parent=st.root, k=k + 1, stages=stages, body=body)

@@ -65,7 +65,7 @@ keys or a row of 1-3 rocker switches (``controls``; power, brew, steam: Gaggia C
 MATERIALS = {"body": "finish", "lid": "plastic:black|dark_grey", "button": "plastic:black|dark_grey|light_grey",
              "knob": "plastic:black",
              "trim": "brushed_metal", "works": "brushed_metal", "carafe": "glass:clear", "band": "plastic:black",
-             "grip": "plastic:black", "tank": "glass:clear", "metal": "chrome", "tray": "plastic:black|dark_grey",
+             "grip": "plastic:black", "tank": "glass:smoked", "metal": "chrome", "tray": "plastic:black|dark_grey",
              "grate": "brushed_metal"}
 SUBSTRATES = {"body": ("finish", {"painted": 7850.0}),  # a painted shell is painted steel sheet
               "tank": C.TANK_DENSITY}  # a clear tank is SAN, drawn as clear glass

@@ -20,7 +20,9 @@ from infmob_usd.params import Choice, Float
 
 from .parts import dispensers as D
 from .parts import vessel as V
-from .parts.vessel_sizes import BOTTLE_CAP_TRAVEL
+from .parts.vessel_sizes import BOTTLE_CAP_TRAVEL, BOTTLE_KINDS
+
+LABEL_FILL = 0.7  # the label covers this share of the straight part (Method, Softsoap, Dove pump bottles)
 
 PARAMS = (
     Float("size", "where the dispenser lies in its design's size range (0 smallest, 1 largest)", "", 0.0, 1.0),
@@ -57,6 +59,7 @@ MATERIALS = {
     "pump": "plastic:white|black|light_grey", "housing": "plastic:white|light_grey|black|dark_grey",
     "panel": "plastic:light_grey|dark_grey|black|white", "trim": "plastic:dark_grey|black", "lock": "chrome",
     "jar": "plastic:white|light_grey", "metal": "brushed_metal", "spout": "plastic:white|black",
+    "label": "painted:pastel_yellow|pastel_blue|navy|sage|black",  # a printed label that stands off the bottle
 }
 
 
@@ -70,6 +73,11 @@ class DispenserLayout(Layout):
         height = D.Sized(p["size"]).of(D.BOTTLE["height"])
         prof = V.bottle_profile("dispenser", "screw", height, D.BOTTLE["radius_ratio"] * height, p["wall"])
         body = self.place(V.bottle_body(prof, 0.0, "glass", "screw"), "body")
+        # a soap or lotion bottle is sold labelled: a printed label round its straight part (the bottle's
+        # dispenser label zone, :data:`.parts.vessel_sizes.BOTTLE_KINDS`)
+        zone = tuple(z * height for z in BOTTLE_KINDS["dispenser"][5])
+        band = V.label_band(prof, zone, LABEL_FILL, 0.5, "label")
+        self.extend(body.root, band.attached("vessel", to=body.anchor("base")).pieces)
         self.grow(node.one("collar"), body=body, prof=prof)
 
     def collar(self, node, body, prof):

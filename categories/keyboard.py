@@ -56,6 +56,9 @@ MATERIALS = {
     "keys": ("finish", {"black": "plastic:black|dark_grey", "grey": "plastic:light_grey|dark_grey",
                         "white": "plastic:white", "silver": "plastic:white|light_grey"}),
     "pads": "rubber", "feet": "plastic:black|dark_grey",
+    # pad-printed or laser-etched legends: white on dark caps, dark on white ones (Logitech K120, Apple)
+    "legend": ("finish", {"black": "plastic:white", "grey": "plastic:white", "white": "plastic:dark_grey",
+                          "silver": "plastic:dark_grey"}),
 }
 SUBSTRATES = {"case": K.KEYBOARD_DENSITY}
 
@@ -85,7 +88,7 @@ class KeyboardLayout(Layout):
             self.grow(kid, key=key, name=f"key_{k}")
 
     def key(self, node, key, name):
-        placed = self.place(K.keycap(self.b, key, "keys").placed(self.set_down), name)
+        placed = self.place(K.keycap(self.b, key, "keys", "legend", int(name[4:])).placed(self.set_down), name)
         self.slide("case", placed.root, placed.anchor("press"), upper=self.b.cap[4], role="button")
 
     def feet(self, node):

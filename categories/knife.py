@@ -55,7 +55,7 @@ MATERIALS = {"scale": ("handle", {"wood": "wood:walnut|cherry|oak", "plastic": "
              "alox": "brushed_metal:stainless_dark",
              "handle_colour": ("handle_colour", {c: f"plastic:{c}" for c in PARAMS[2].choices}),
              "liner": "brushed_metal:stainless", "steel": ("steel", {"brushed_metal": "brushed_metal:stainless"}),
-             "pin": "chrome", "grip": "rubber:black"}
+             "pin": "chrome", "grip": "rubber:black", "edge": "chrome"}
 # aluminium liners and 'alox' scales (Victorinox: aluminium alloy, 2700 kg/m^3) look brushed steel
 SUBSTRATES = {"liner": 2700.0, "alox": 2700.0}
 OPENS = math.radians(180)  # a folding tool opens straight (its tang's stop against the backspring)
@@ -93,7 +93,7 @@ class KnifeLayout(Layout):
         self.grow(node.one(node.choice or node.children[0].kind), k=k)
 
     def _tool(self, kind, k, name, point="clip"):
-        t = self.place(K.tool(self.fold, kind, k, "steel", point), name)
+        t = self.place(K.tool(self.fold, kind, k, "steel", point, "edge"), name)
         self.hinge("body", name, t.anchor("pivot"), upper=OPENS)
 
     def large_blade(self, node, k):
@@ -110,7 +110,7 @@ class KnifeLayout(Layout):
     snap_off = retractable
 
     def carrier(self, node):
-        c = self.place(K.blade_carrier(self.cut, "steel", "handle_colour"), "blade")
+        c = self.place(K.blade_carrier(self.cut, "steel", "handle_colour", "edge"), "blade")
         self.slide("body", "blade", c.anchor("slide"), upper=self.cut.design.travel)
 
 

@@ -25,6 +25,8 @@ def thumb_grid_count(params, rng) -> int:
     return counts[int(rng.choice(len(counts), p=[x / sum(w) for x in w]))]
 
 
+FINISHES = ("black", "dark_grey", "light_grey", "white", "red", "blue", "teal")
+
 GRAMMAR = Grammar("mouse", {
     "mouse": Node(label="body", required=("left_button", "right_button", "wheel"),
                   one_of={"wired": 0.3, "wireless": 0.25, "gaming": 0.45}, choice="design"),
@@ -57,13 +59,13 @@ PARAMS = (
     Float("height", "where the height lies in its design's range", "", 0.0, 1.0),
     Float("hump", "moves the hump's peak back (-) or forward (+), as a share of the length", "", -0.06, 0.06),
     Float("bend", "which way and how far the cable curves off (-1 right, +1 left)", "", -1.0, 1.0),
-    Choice("finish", "the shell's colour", choices=("black", "grey", "white", "colour"),
-           weights=(0.45, 0.2, 0.2, 0.15)),
+    Float("taper", "the plan: an even office mouse (0) to an egg narrowing to its nose (1)", "", 0.0, 1.0),
+    # one colour for the shell and the buttons (an office mouse's buttons are moulded to match its shell)
+    Choice("finish", "the shell's colour", choices=FINISHES, weights=(0.45, 0.12, 0.08, 0.2, 0.05, 0.05, 0.05)),
 )
 
 MATERIALS = {
-    "shell": ("finish", {"black": "plastic:black", "grey": "plastic:dark_grey|light_grey",
-                         "white": "plastic:white", "colour": "plastic:red|blue|teal|green"}),
+    "shell": ("finish", {c: f"plastic:{c}" for c in FINISHES}),
     "buttons": Same("shell"), "keys": "plastic:black|dark_grey", "wheel": "rubber", "hub": "plastic:dark_grey",
     "feet": "plastic:white", "cable": "rubber", "plug": "plastic:black|dark_grey", "metal": "chrome",
 }
@@ -73,7 +75,7 @@ SUBSTRATES = {"shell": M.MOUSE_DENSITY}
 class MouseLayout(Layout):
     def mouse(self, node):
         p = self.p
-        self.m = m = M.mouse(node.choice, p["size"], p["width"], p["height"], p["hump"])
+        self.m = m = M.mouse(node.choice, p["size"], p["width"], p["height"], p["hump"], p["taper"])
         d = node.one(node.choice)
         grid = d.one("thumb_grid") or d.one("thumb_buttons")
         self.left = M.thumb_grid(m, len(grid.of("side_button")), 1, d.one("sniper") is not None) if grid else []

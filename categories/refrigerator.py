@@ -103,12 +103,13 @@ PARAMS = (
     Int("basket_count", "slide-out baskets at the bottom of a side-by-side's freezer", "", *C["basket_count"]),
     Float("drawer_travel", "a freezer drawer's travel as a fraction of its basket's depth", "", *R["drawer_travel"]),
     Choice("body_finish", "cabinet and door skin", choices=("painted", "brushed_metal"), weights=(0.45, 0.55)),
-    Choice("handle_finish", "door handle material", choices=("brushed_metal", "chrome", "plastic"),
-           weights=(0.5, 0.25, 0.25)),
+    # full-size fridge handles are stainless tube (Samsung RF28, GE GSS25, LG LRFVS stainless models) or a
+    # moulded plastic bar on painted ones (Whirlpool WRT318FZDW white); bright chrome is a wine-cooler finish
+    Choice("handle_finish", "door handle material", choices=("brushed_metal", "plastic"), weights=(0.7, 0.3)),
 )
 
 MATERIALS = {
-    "body": "body_finish", "liner": "plastic:white|light_grey", "glass": "glass:clear",
+    "body": "body_finish", "liner": "plastic:white|light_grey", "glass": "glass:clear", "frost": "glass:smoked",
     "handle": ("handle_finish", {"plastic": "plastic:black|dark_grey"}), "trim": "plastic:white|light_grey|dark_grey",
     "wire": "chrome", "grille": "plastic:black|dark_grey", "feet": "rubber", "gasket": "rubber",
     "bin": "plastic:white|light_grey", "display": "plastic:black|dark_grey", "paddle": "plastic:black|dark_grey",

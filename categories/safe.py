@@ -42,7 +42,9 @@ PARAMS = (
     Choice("hand", "the side the door is hinged on, seen from the front", choices=("left", "right")),
 )
 
-MATERIALS = {"body": "enamel:black|graphite|white", "knob": "chrome",
+# home safes, hotel safes and gun cabinets come black or graphite (SentrySafe, Honeywell, Elsafe, Stack-On ranges);
+# inside, grey felt
+MATERIALS = {"body": "enamel:black|graphite|anthracite", "knob": "chrome", "lining": "fabric:grey",
              "trim": "plastic:black", "button": "plastic:black|dark_grey", "handle": "chrome", "drawer": "enamel:black"}
 
 # where the lock and the handle sit on the door's front, as fractions of its half width and half height
@@ -69,7 +71,10 @@ class SafeLayout(controls.ControlFace):
         if node.one("drawer"):
             self.grow(node.one("drawer"), body=body)
 
-    gun_cabinet = home_safe
+    def gun_cabinet(self, node, body):
+        w, d, h = self.size
+        self.extend(body.root, S.barrel_comb(w, d, h, self.build.wall))
+        self.home_safe(node, body)
 
     def hotel_safe(self, node, body):
         self.grow(node.one("hotel_door"), body=body)

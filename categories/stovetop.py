@@ -70,6 +70,7 @@ PARAMS = (
 
 MATERIALS = {
     "top": "top_family", "housing": "brushed_metal", "feet": "rubber", "burner": "brushed_metal",
+    "element": "cast_iron",  # a coil's Incoloy sheath, dark grey once fired
     "cap": "enamel:black", "grate": "cast_iron", "trim": "chrome", "display": "plastic:light_grey|dark_grey",
     "knob": "plastic:black|dark_grey|light_grey", "button": "plastic:black|dark_grey",
 }

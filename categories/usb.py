@@ -27,8 +27,10 @@ PARAMS = (
     Choice("body_colour", "moulded body colour", choices=COLOURS, weights=(0.3, 0.12, 0.12, 0.12, 0.1, 0.08, 0.08,
                                                                             0.08)),
     Choice("accent", "cap, sled and button colour: the body's or black", choices=("body", "black")),
-    Choice("insert", "the USB-A insert: blue (USB 3), black or white (USB 2)", choices=("blue", "black", "white")),
-    Choice("steel", "plug shell and swivel cover finish", choices=("brushed_metal", "chrome")),
+    # white inserts are the cheapest USB 2.0 drives' (a white tongue in the shell reads as a plastic plug)
+    Choice("insert", "the USB-A insert: blue (USB 3), black or white (USB 2)", choices=("blue", "black", "white"),
+           weights=(0.45, 0.45, 0.1)),
+    Choice("steel", "swivel cover finish", choices=("brushed_metal", "chrome")),
 )
 
 GRAMMAR = Grammar("usb", {
@@ -45,6 +47,8 @@ GRAMMAR = Grammar("usb", {
 MATERIALS = {"body": ("body_colour", {c: f"plastic:{c}" for c in COLOURS}),
              "accent": ("accent", {"black": "plastic:black"} | {"body": "plastic:black|dark_grey|white"}),
              "steel": ("steel", {"brushed_metal": "brushed_metal:stainless"}),
+             # a plug's shell is nickel-plated steel (USB 2.0 spec 6.5.3: 'nickel plate'), a bright plating
+             "shell": "chrome:chrome",
              "insert": ("insert", {c: f"plastic:{c}" for c in ("blue", "black", "white")}), "mouth": "plastic:black"}
 SWIVELS = math.pi  # the cover turns half round, from over the plug to behind the body
 
@@ -58,11 +62,11 @@ class UsbLayout(Layout):
         self.grow(node.one(node.choice))
 
     def swivel(self, node):
-        self.place(U.swivel_body(self.u, "body", "steel", self.insert), "body")
+        self.place(U.swivel_body(self.u, "body", "shell", self.insert), "body")
         self.grow(node.one("cover"))
 
     def capped(self, node):
-        self.place(U.capped_body(self.u, "body", "steel", self.insert), "body")
+        self.place(U.capped_body(self.u, "body", "shell", self.insert, self.accent), "body")
         self.grow(node.one("cap"))
 
     def slider(self, node):
@@ -78,7 +82,7 @@ class UsbLayout(Layout):
         self.lift("body", "cap", cap.anchor("pull"), engagement=U.cap_engagement(self.u))
 
     def sled(self, node):
-        sled = self.place(U.slider_sled(self.u, "body", self.accent, "steel", self.insert), "sled")
+        sled = self.place(U.slider_sled(self.u, "body", self.accent, "shell", self.insert), "sled")
         self.slide("body", "sled", sled.anchor("slide"), upper=U.slider_travel(self.u))
 
 

@@ -73,7 +73,10 @@ FINISHES = {"white": ("painted:white", "plastic:white|light_grey"),
 """A casing finish and the door ring's plastics that go with it."""
 
 MATERIALS = {"body": ("finish", {k: v[0] for k, v in FINISHES.items()}), "lid": Same("body"),
-             "door": ("finish", {k: v[1] for k, v in FINISHES.items()}), "trim": "chrome", "glass": "glass",
+             "door": ("finish", {k: v[1] for k, v in FINISHES.items()}), "trim": "chrome",
+             # a porthole's glass bowl is clear (Bosch, Samsung, LG doors; a faint blue on some): smoked oven glass,
+             # two layers of it, reads as an opaque grey disc from inside
+             "glass": "glass:clear|clear_blue",
              "drum": "brushed_metal:stainless", "gasket": "rubber", "liner": "plastic:light_grey|dark_grey|white",
              "drawer": "plastic:white|light_grey",
              "handle": Same("trim"), "knob": "plastic", "button": "plastic", "display": "rubber", "feet": "rubber",

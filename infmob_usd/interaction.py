@@ -10,13 +10,16 @@ USD); the schema is ``infmob-annotations/1`` (docs/format.md).
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
 from trimesh.intersections import slice_faces_plane
 
+from .clipping import EXACT, clip, gemv_rows
 from .grasps import Grasp
 from .joints import gate_chain
+from .rotation import motion
 
 FORMAT = "infmob-annotations/1"
 UNITS = "metres, radians for revolute/continuous joints, metres for prismatic; Z up, fronts face +X"
@@ -80,16 +83,28 @@ def _mesh(pieces) -> tuple[np.ndarray, np.ndarray]:
     return np.concatenate(vs), np.concatenate(fs)
 
 
-def raycast(v: np.ndarray, f: np.ndarray, origin, direction) -> float | None:
+def _cross(a, b) -> np.ndarray:
+    """``np.cross`` of two 3-vectors, the same floats (its products and differences, in its order), without
+    its per-call overhead."""
+    a0, a1, a2 = np.asarray(a, float).tolist()
+    b0, b1, b2 = np.asarray(b, float).tolist()
+    return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
+
+
+def _soup(pieces) -> tuple:
+    """A link's ``_mesh``, its triangles, their bounds and the mesh's bounds."""
+    v, f = _mesh(pieces)
+    tri = v[f]
+    return v, f, tri, tri.min(1), tri.max(1), v.min(0), v.max(0)
+
+
+def raycast(v: np.ndarray, f: np.ndarray, origin, direction, edges=None, facing=None) -> float | None:
     """Distance along ``direction`` (unit) from ``origin`` to the first triangle hit, or ``None``
-    (Moeller-Trumbore over every triangle)."""
+    (Moeller-Trumbore over every triangle); ``edges``: :func:`_edges` of ``(v, f)`` and ``facing``:
+    :func:`_facing` of them along ``direction``, where the caller has them."""
     o, d = np.asarray(origin, float), np.asarray(direction, float)
-    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
-    e1, e2 = b - a, c - a
-    p = np.cross(d, e2)
-    det = np.einsum("ij,ij->i", e1, p)
-    ok = np.abs(det) > 1e-12
-    inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+    a, e1, e2 = edges if edges is not None else _edges(v, f)
+    p, ok, inv = facing if facing is not None else _facing(d, e1, e2)
     s = o - a
     u = np.einsum("ij,ij->i", s, p) * inv
     q = np.cross(s, e1)
@@ -97,6 +112,20 @@ def raycast(v: np.ndarray, f: np.ndarray, origin, direction) -> float | None:
     t = np.einsum("ij,ij->i", e2, q) * inv
     hit = ok & (u >= -1e-9) & (w >= -1e-9) & (u + w <= 1 + 1e-9) & (t > 1e-9)
     return float(t[hit].min()) if hit.any() else None
+
+
+def _facing(d: np.ndarray, e1: np.ndarray, e2: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """What :func:`raycast` reads of the triangles along ``d`` wherever the ray starts."""
+    p = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, p)
+    ok = np.abs(det) > 1e-12
+    return p, ok, np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+
+
+def _edges(v: np.ndarray, f: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Each triangle's first corner and its two edges from it, as :func:`raycast` reads them."""
+    a = v[f[:, 0]]
+    return a, v[f[:, 1]] - a, v[f[:, 2]] - a
 
 
 def _crop(v, f, point, planes):
@@ -157,7 +186,7 @@ def _perps(a: np.ndarray) -> list[np.ndarray]:
     for e in ((0, 0, 1), (1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, -1)):
         p = np.array(e, float) - (np.array(e, float) @ a) * a
         n = np.linalg.norm(p)
-        if n > 0.5 and not any(np.allclose(p / n, q, atol=1e-6) for q in out):
+        if n > 0.5 and not any((np.abs(p / n - q) <= 1e-6 + 1e-5 * np.abs(q)).all() for q in out):  # np.allclose
             out.append(p / n)
     return out
 
@@ -165,14 +194,14 @@ def _perps(a: np.ndarray) -> list[np.ndarray]:
 def _fan(a: np.ndarray, count: int = 12) -> list[np.ndarray]:
     """``count`` unit directions perpendicular to ``a``, half a turn."""
     u = _perps(a)[0]
-    w = np.cross(a, u)
+    w = _cross(a, u)
     return [math.cos(t) * u + math.sin(t) * w for t in np.arange(count) * math.pi / count]
 
 
 def _rays(v: np.ndarray, d: np.ndarray, k: np.ndarray) -> list[np.ndarray]:
     """Ray origins for a pinch across ``k`` of the part's edge facing ``-d``: the middle of that edge's
     strip, then its ``+k`` and ``-k`` sides, each at the middle of the strip's width."""
-    up, w = -d, np.cross(d, k)
+    up, w = -d, _cross(d, k)
     top = float((v @ up).max())
     strip = v[v @ up >= top - 0.01]
     kc = strip @ k
@@ -184,28 +213,137 @@ def _rays(v: np.ndarray, d: np.ndarray, k: np.ndarray) -> list[np.ndarray]:
     return out
 
 
+class _Part:
+    """A part's mesh with its triangles, their bounds and edges, read once for all of its candidate pinches
+    (and, per direction, what a ray reads of them)."""
+
+    def __init__(self, v: np.ndarray, f: np.ndarray):
+        self.v, self.f = v, f
+        self.tri = v[f]
+        self.lo, self.hi = self.tri.min(1), self.tri.max(1)
+        self.edges = _edges(v, f)
+        self._facing: dict[bytes, tuple] = {}
+
+    def near(self, c: np.ndarray) -> np.ndarray:
+        """Which faces are within 20 cm of ``c``: what a hand there can meet."""
+        return ((self.lo <= c + 0.2) & (self.hi >= c - 0.2)).all(1)
+
+    def cast(self, origin: np.ndarray, d: np.ndarray, rows=None) -> float | None:
+        """:func:`raycast` on the part (on its faces ``rows`` only, where given)."""
+        key = d.tobytes()
+        if key not in self._facing:
+            self._facing[key] = _facing(d, *self.edges[1:])
+        edges, facing = self.edges, self._facing[key]
+        if rows is not None:
+            edges, facing = tuple(x[rows] for x in edges), tuple(x[rows] for x in facing)
+        return raycast(self.v, self.f, origin, d, edges, facing)
+
+
+_PINCH_OFFSETS = np.array([1e-4, REACH, PAD, PAD, 0.15, 0.15])  # pinch's half-spaces: how far each reaches past c
+
+
+def _pinch_planes(c: np.ndarray, d: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The half-spaces :func:`pinch` crops to (``(P, 3)`` rows of ``c``, ``d``, ``k``), as
+    :func:`~infmob_usd.clipping.clip` takes them: normals and points on the planes, the same floats."""
+    w = np.cross(d, k)
+    normals = np.stack([d, -d, w, -w, k, -k], 1)
+    return normals, c[:, None, :] - normals * _PINCH_OFFSETS[:, None]
+
+
+def _box_faces(lo, hi, centres, reaches) -> tuple[np.ndarray, np.ndarray]:
+    """``(problem, face)`` of every face whose bounds ``lo``/``hi`` meet a problem's box (``centres`` ± ``reaches``,
+    a margin wider than the slicer's tolerance: a face outside it has nothing left after the crop)."""
+    hit = ((lo[None] <= (centres + reaches)[:, None]) & (hi[None] >= (centres - reaches)[:, None])).all(2)
+    return np.nonzero(hit)
+
+
+def _stretches(pid: np.ndarray, s0: np.ndarray, s1: np.ndarray, deep: np.ndarray, count: int) -> list:
+    """:func:`pinch`'s reading of its cut triangles, for every problem at once: each triangle's span
+    ``(s0, s1)`` along the closing axis and its deepest point along the approach, tagged with its problem
+    ``pid``; per problem ``(width, depth, middle)`` or ``None``, the same floats as :func:`pinch`'s loop."""
+    out: list = [None] * count
+    if not len(pid):
+        return out
+    order = np.lexsort((s0, pid))  # each problem's spans by their start, as pinch sorts them
+    pid, s0, s1, deep = pid[order], s0[order], s1[order], deep[order]
+    n = len(pid)
+    start = np.ones(n, bool)
+    start[1:] = pid[1:] != pid[:-1]
+    seg = np.cumsum(start) - 1
+    # the highest end so far within the problem (= within the merged stretch, whose first span ends past
+    # every span before it): a running maximum of ranks, the problem's index above them, so no float is redone
+    by = np.argsort(s1, kind="stable")
+    rank = np.empty(n, np.int64)
+    rank[by] = np.arange(n)
+    high = s1[by[np.maximum.accumulate(seg * n + rank) - seg * n]]
+    brk = start.copy()
+    brk[1:] |= s0[1:] > high[:-1] + FINGER  # a gap a finger fits: a new stretch
+    first = np.flatnonzero(brk)
+    lo, hi, of = s0[first], high[np.r_[first[1:] - 1, n - 1]], pid[first]
+    holds = (lo - 1e-4 <= 0.0) & (0.0 <= hi + 1e-4)
+    taken, at = np.unique(of[holds], return_index=True)  # each problem's first stretch that holds c
+    if not len(taken):
+        return out
+    lo, hi = lo[holds][at], hi[holds][at]
+    where = np.full(count, -1)
+    where[taken] = np.arange(len(taken))
+    row = where[pid]
+    inside = (row >= 0) & (s0 >= lo[row] - 1e-9) & (s1 <= hi[row] + 1e-9)
+    deepest = np.full(len(taken), -np.inf)
+    np.maximum.at(deepest, row[inside], deep[inside])
+    for p, a, b, dp in zip(taken.tolist(), lo.tolist(), hi.tolist(), deepest.tolist()):
+        out[p] = (float(b - a), min(dp if dp > -np.inf else 0.0, REACH / 2), float(a + b) / 2)
+    return out
+
+
+def _pinches(part: _Part, problems: list) -> list:
+    """:func:`pinch` of every ``(c, approach, closing)`` of ``problems`` on ``part``, the same floats, all cut
+    at once (:func:`~infmob_usd.clipping.clip`)."""
+    if not EXACT or not problems:  # this machine's BLAS rounds unlike the batched cut: one slicer call per plane
+        return [pinch(part.v, part.f[part.near(c)], c, d, k) for c, d, k in problems]
+    c, d, k = (np.array([p[i] for p in problems], float) for i in range(3))
+    normals, origins = _pinch_planes(c, d, k)
+    half = np.array([(REACH + 1e-4) / 2, PAD, 0.15])
+    reach = np.abs(normals[:, ::2]).transpose(0, 2, 1) @ half + 1e-5
+    pid, face = _box_faces(part.lo, part.hi, c + d * (REACH - 1e-4) / 2, reach)
+    tri, pid = clip(part.tri[face], pid, normals, origins)
+    rel = tri - c[pid][:, None, :]
+    along = gemv_rows(rel, k[pid][:, None, :])  # pinch's (tri - c) @ k
+    deep = gemv_rows(rel, d[pid][:, None, :]).max(1)
+    return _stretches(pid, along.min(1), along.max(1), deep, len(problems))
+
+
+def _tries(part: _Part, candidates: list) -> list:
+    """:func:`_try` of each candidate ``(origin, d, closings)`` on ``part``, their pinches cut at once."""
+    hits = []
+    for origin, d, _ in candidates:
+        origin, d = np.asarray(origin, float), np.asarray(d, float)
+        t = part.cast(origin, d)
+        hits.append(None if t is None else (origin + t * d, d))
+    problems = [(i, k) for i, (hit, cand) in enumerate(zip(hits, candidates)) if hit is not None for k in cand[2]]
+    got = _pinches(part, [(hits[i][0], hits[i][1], np.asarray(k, float)) for i, k in problems])
+    best: dict[int, tuple] = {}
+    for (i, k), g in zip(problems, got):
+        if g is not None and 0.001 <= g[0] <= GRIP and (i not in best or g[0] < best[i][0]):
+            best[i] = (*g, k)
+    out = []
+    for i, hit in enumerate(hits):
+        if i not in best:
+            out.append(None)
+            continue
+        (c, d), (width, depth, middle, k) = hit, best[i]
+        # the fingers straddle the pinched stretch: the grasp on the surface over its middle
+        mid = c + middle * k
+        t = part.cast(mid - 0.05 * d, d, part.near(c))
+        if t is not None and abs(t - 0.05) < REACH / 2:
+            c = mid - 0.05 * d + t * d
+        out.append(Grasp.make(c, d, k, width, depth))
+    return out
+
+
 def _try(v, f, origin, d, closings) -> Grasp | None:
     """The narrowest pinch across one of ``closings`` where a ray from ``origin`` along ``d`` meets the part."""
-    t = raycast(v, f, origin, d)
-    if t is None:
-        return None
-    c = origin + t * d
-    tri = v[f]
-    near = (v, f[((tri.min(1) <= c + 0.2) & (tri.max(1) >= c - 0.2)).all(1)])  # what a hand there can meet
-    best = None
-    for k in closings:
-        got = pinch(*near, c, d, k)
-        if got is not None and 0.001 <= got[0] <= GRIP and (best is None or got[0] < best[0]):
-            best = (*got, k)
-    if best is None:
-        return None
-    width, depth, middle, k = best
-    # the fingers straddle the pinched stretch: the grasp on the surface over its middle
-    mid = c + middle * k
-    t = raycast(*near, mid - 0.05 * d, d)
-    if t is not None and abs(t - 0.05) < REACH / 2:
-        c = mid - 0.05 * d + t * d
-    return Grasp.make(c, d, k, width, depth)
+    return _tries(_Part(v, f), [(origin, d, closings)])[0]
 
 
 def _candidates(v: np.ndarray, joint, pivot: np.ndarray):
@@ -221,7 +359,7 @@ def _candidates(v: np.ndarray, joint, pivot: np.ndarray):
         for u in _perps(a):  # an edge facing u pinched along the slide (a drawer front's top edge)
             yield from ((o, -u, [a]) for o in _rays(v, -u, a))
         for u in _perps(a):  # ... or across it
-            yield from ((o, -u, [np.cross(a, u)]) for o in _rays(v, -u, np.cross(a, u)))
+            yield from ((o, -u, [_cross(a, u)]) for o in _rays(v, -u, _cross(a, u)))
         for d in faces + [-a]:  # a rim from its end
             for u in _perps(a):
                 yield from ((o, d, [u]) for o in _rays(v, d, u)[1:])
@@ -238,9 +376,9 @@ def _candidates(v: np.ndarray, joint, pivot: np.ndarray):
     e = radial[int(np.argmax(r))] / max(r.max(), 1e-9)
     # square to the part where it is nearly so: a leaf's far corner is off its mid-plane by its thickness
     e = next((q for q in _perps(a) if e @ q > SQUARE), e)
-    n = np.cross(a, e)
+    n = _cross(a, e)
     for u in (e, n, -n, -e):  # the far edge first: across the leaf, then along the axis
-        yield from ((o, -u, [np.cross(a, u)]) for o in _rays(v, -u, np.cross(a, u)))
+        yield from ((o, -u, [_cross(a, u)]) for o in _rays(v, -u, _cross(a, u)))
         yield from ((o, -u, [a]) for o in _rays(v, -u, a))
     for d in (-a, a):
         yield from ((o, d, [n, e]) for o in _rays(v, d, n))
@@ -253,7 +391,7 @@ def _sides(v: np.ndarray, a: np.ndarray):
     along = v @ a
     lo, hi = along.min(), along.max()
     for u in _perps(a):
-        w = np.cross(a, u)
+        w = _cross(a, u)
         for frac in (0.5, 0.25, 0.75, 0.1, 0.9):
             s = lo + frac * (hi - lo)
             slab = v[np.abs(along - s) < 0.01]
@@ -269,17 +407,25 @@ def derived_grasps(v: np.ndarray, f: np.ndarray, joint, pivot, blocked=None) -> 
     """A grasp on a part that declares none, from its link's mesh ``(v, f)`` (link frame) and its joint
     (``pivot``: a point of its axis in the link frame): the first candidate (:func:`_candidates`) whose
     pinch needs at most :data:`GRIP` and whose fingers ``blocked(grasp)`` finds free (a list of the links in
-    their way); else the first that fits, blocked."""
-    first, fits = None, 0
-    for origin, d, closings in _candidates(v, joint, np.asarray(pivot, float)):
-        g = _try(v, f, np.asarray(origin, float), np.asarray(d, float), closings)
-        if g is None:
+    their way); else the first that fits, blocked. ``blocked`` may offer ``many(grasps)``: the lists of a
+    batch at once."""
+    part, first, fits = _Part(v, f), None, 0
+    todo = _candidates(v, joint, np.asarray(pivot, float))
+    # a part is mostly taken at its first candidate or at none: one alone, then the rest of them together
+    for size in (1, 4, None):
+        grasps = [g for g in _tries(part, list(itertools.islice(todo, size))) if g is not None]
+        if blocked is None:
+            if grasps:
+                return grasps[:1]
             continue
-        if blocked is None or not blocked(g):
-            return [g]
-        first, fits = first or g, fits + 1
-        if fits >= TRIES:
-            break
+        many = getattr(blocked, "many", None)
+        ways = many(grasps[:TRIES - fits]) if many is not None else map(blocked, grasps)
+        for g, way in zip(grasps, ways):
+            if not way:
+                return [g]
+            first, fits = first or g, fits + 1
+            if fits >= TRIES:
+                return [first]
     return [first] if first is not None else []
 
 
@@ -287,29 +433,39 @@ class Neighbours:
     """The other links of an object at rest, in one link's frame: which of them a grasp's hand would meet
     (two finger boxes ``FINGER`` thick beside the pinched width, from 4 cm before the surface to ``depth``
     past it, a pad wide, and the hand's body behind them (:data:`PALM`), which may not meet the operated part
-    itself either: it is then named among them; for a press, the shut fingers' way in)."""
+    itself either: it is then named among them; ``press``: the hand pushes with its fingers shut, so only the
+    way in to the surface counts (one box two fingers wide)). ``meshes``: each link's ``_soup``, by name,
+    where the caller has them already."""
 
-    def __init__(self, obj, carrier, own: set[str], mesh=None):
-        self.meshes = []
+    def __init__(self, obj, carrier, own: set[str], mesh=None, press: bool = False, meshes=None):
+        self.press, self.own, self._seen = press, carrier.name, {}
+        self._soups: list[tuple] = []  # (name, _soup in its link's frame, offset into the carrier's frame)
         if mesh is not None and len(mesh[1]):  # the part itself: only the hand's body may not meet it
             tri = mesh[0][mesh[1]]
-            self.meshes.append((carrier.name, mesh[0], mesh[1], tri.min(1), tri.max(1), mesh[0].min(0),
-                                mesh[0].max(0)))
-        self.own = carrier.name
+            self._soups.append((carrier.name, (mesh[0], mesh[1], tri, tri.min(1), tri.max(1), mesh[0].min(0),
+                                               mesh[0].max(0)), None))
         for link in obj.links:
             if link.dummy or link.name in own or not link.pieces:
                 continue
-            lv, lf = _mesh(link.pieces)
-            lv = lv + (link.origin - carrier.origin)
-            tri = lv[lf]
-            self.meshes.append((link.name, lv, lf, tri.min(1), tri.max(1), lv.min(0), lv.max(0)))
+            soup = meshes[link.name] if meshes is not None else _soup(link.pieces)
+            self._soups.append((link.name, soup, link.origin - carrier.origin))
+        # each link's bounds in the carrier's frame (a sum keeps the order of floats: bounds move with them)
+        self.bounds = [(s[5], s[6]) if off is None else (s[5] + off, s[6] + off) for _, s, off in self._soups]
+        self._moved: dict[int, tuple] = {}
 
-    def __call__(self, g: Grasp, press: bool = False) -> list[str]:
-        """The links in the hand's way; ``press``: the hand pushes with its fingers shut, so only the way
-        in to the surface counts (one box two fingers wide)."""
+    def mesh(self, m: int) -> tuple:
+        """Link ``m``'s ``_soup`` moved into the carrier's frame (moved once, when a box first reaches it)."""
+        if m not in self._moved:
+            _, (lv, lf, tri, tlo, thi, lo, hi), off = self._soups[m]
+            self._moved[m] = (lv, lf, tri, tlo, thi) if off is None else (lv + off, lf, tri + off, tlo + off,
+                                                                         thi + off)
+        return self._moved[m]
+
+    def _boxes(self, g: Grasp, press: bool) -> list:
+        """``(centre, half, axes, reach, own)`` of each box the hand fills (``own``: the part itself counts)."""
         p, d, k = (np.asarray(x) for x in (g.position, g.approach, g.closing))
-        w = np.cross(d, k)
-        hit = set()
+        w = _cross(d, k)
+        out = []
         for side in ((0.0,) if press else (1.0, -1.0, 0.0)):
             if press:
                 centre, half = p - d * 0.0205, np.array([0.0195, FINGER, PAD])
@@ -320,12 +476,18 @@ class Neighbours:
                 centre = p + d * (g.depth - 0.04) / 2 + k * side * (g.width / 2 + FINGER / 2)
                 half = np.array([(g.depth + 0.04) / 2, FINGER / 2 - 1e-4, PAD])
             axes = np.stack([d, k, w])
-            reach = np.abs(axes).T @ half
-            for name, lv, lf, tlo, thi, lo, hi in self.meshes:
-                if (name == self.own and (press or side != 0.0)) or name in hit:  # fingers close on the part
+            out.append((centre, half, axes, np.abs(axes).T @ half, not press and side == 0.0))
+        return out
+
+    def _one(self, g: Grasp, press: bool) -> list[str]:
+        hit = set()
+        for centre, half, axes, reach, own in self._boxes(g, press):
+            for m, ((name, _, _), (lo, hi)) in enumerate(zip(self._soups, self.bounds)):
+                if (name == self.own and not own) or name in hit:  # fingers close on the part
                     continue
                 if (lo > centre + reach).any() or (hi < centre - reach).any():
                     continue
+                lv, lf, _, tlo, thi = self.mesh(m)
                 near = ((tlo <= centre + reach) & (thi >= centre - reach)).all(1)  # triangles whose box meets it
                 if not near.any():
                     continue
@@ -333,6 +495,45 @@ class Neighbours:
                 if len(_crop(lv, lf[near], centre, planes)[1]):
                     hit.add(name)
         return sorted(hit)
+
+    def many(self, grasps: list[Grasp], press: bool | None = None) -> list[list[str]]:
+        """The links in the hand's way, per grasp: :meth:`__call__` of each, all cut at once."""
+        press = self.press if press is None else press
+        todo = [g for g in dict.fromkeys(grasps) if (g, press) not in self._seen]
+        if not EXACT or not self._soups:
+            self._seen.update({(g, press): self._one(g, press) for g in todo})
+        elif todo:
+            self._seen.update(zip(((g, press) for g in todo), self._cut(todo, press)))
+        return [self._seen[g, press] for g in grasps]
+
+    def _cut(self, grasps: list[Grasp], press: bool) -> list[list[str]]:
+        boxes = [(gi, b) for gi, g in enumerate(grasps) for b in self._boxes(g, press)]
+        centre, half, axes, reach = (np.array([b[i] for _, b in boxes]) for i in range(4))
+        top, bottom = centre + reach, centre - reach
+        own = np.array([b[4] for _, b in boxes])
+        pid, tri, count = [], [], len(self._soups)
+        for m, ((name, _, _), (lo, hi)) in enumerate(zip(self._soups, self.bounds)):  # links a box reaches
+            meet = ~((lo > top).any(1) | (hi < bottom).any(1)) & (own | (name != self.own))
+            if meet.any():
+                which = np.flatnonzero(meet)
+                _, _, mt, tlo, thi = self.mesh(m)
+                b, f = np.nonzero(((tlo <= top[which, None]) & (thi >= bottom[which, None])).all(2))
+                pid.append(which[b] * count + m)
+                tri.append(mt[f])
+        if not pid:
+            return [[] for _ in grasps]
+        normals = np.stack([s * axes[:, i] for i in range(3) for s in (1.0, -1.0)], 1)
+        origins = centre[:, None, :] - normals * np.repeat(half, 2, axis=1)[:, :, None]
+        _, pid = clip(np.concatenate(tri), np.concatenate(pid), np.repeat(normals, count, axis=0),
+                      np.repeat(origins, count, axis=0))
+        hit: list[set] = [set() for _ in grasps]
+        for p in np.unique(pid).tolist():
+            hit[boxes[p // count][0]].add(self._soups[p % count][0])
+        return [sorted(h) for h in hit]
+
+    def __call__(self, g: Grasp, press: bool | None = None) -> list[str]:
+        """The links in the hand's way (``press``: as the hand presses; default: as made)."""
+        return self.many([g], press)[0]
 
 
 def rim_grasp(pieces, axis) -> Grasp | None:
@@ -388,7 +589,7 @@ def grasp_rotation(g: Grasp) -> np.ndarray:
     """A grasp frame's axes as matrix columns: z along the approach, y along the closing axis (the
     Panda hand's own frame: it closes its fingers along its y and reaches along its z)."""
     z, y = np.asarray(g.approach), np.asarray(g.closing)
-    return np.column_stack([np.cross(y, z), y, z])
+    return np.column_stack([_cross(y, z), y, z])
 
 
 def _fixed_under(obj, names) -> set[str]:
@@ -431,11 +632,35 @@ def _range(joint) -> tuple[float, float]:
 def _path(obj, joint, carrier: str, point) -> list[list[float]]:
     rest, opened = _range(joint)
     p = np.append(np.asarray(point, float), 1.0)
+    # obj.poses()'s products for the carrier alone: along its chain from the root, in the same order
+    parent = {j.child: j for j in obj.joints}
+    chain, name = [], carrier
+    while name in parent:
+        chain.append(parent[name])
+        name = parent[name].parent
+    chain.reverse()
+    origin = {link.name: link.origin for link in obj.links}
+    first = next((i for i, j in enumerate(chain) if j.name == joint.name), len(chain))
+    fixed = _steps(_move(origin[obj.links[0].name]), chain[:first], origin, joint.name, 0.0)
     out = []
     for i in range(PATH_STEPS + 1):
-        pose = obj.poses({joint.name: rest + (opened - rest) * i / PATH_STEPS})[carrier]
+        pose = _steps(fixed, chain[first:], origin, joint.name, float(rest + (opened - rest) * i / PATH_STEPS))
         out.append((pose @ p)[:3].tolist())
     return out
+
+
+def _move(t) -> np.ndarray:
+    m = np.eye(4)
+    m[:3, 3] = t
+    return m
+
+
+def _steps(pose: np.ndarray, chain, origin: dict, name: str, value: float) -> np.ndarray:
+    """``pose`` carried down ``chain`` (joints, parent first) with joint ``name`` at ``value``, the rest at 0."""
+    for j in chain:
+        pose = pose @ _move(origin[j.child] - origin[j.parent]) @ motion(j.type, j.axis, value if j.name == name
+                                                                            else 0.0)
+    return pose
 
 
 def _direction(joint, g: Grasp, pivot) -> list[float]:
@@ -444,9 +669,9 @@ def _direction(joint, g: Grasp, pivot) -> list[float]:
     a = np.asarray(joint.axis, float) * math.copysign(1.0, opened - rest)
     if joint.type == "prismatic":
         return a.tolist()
-    t = np.cross(a, np.asarray(g.position) - np.asarray(pivot, float))
+    t = _cross(a, np.asarray(g.position) - np.asarray(pivot, float))
     if np.linalg.norm(t) < 1e-6:  # on the axis: a finger's way round
-        t = np.cross(a, g.closing)
+        t = _cross(a, g.closing)
     return (t / np.linalg.norm(t)).tolist()
 
 
@@ -461,8 +686,9 @@ def _gates(obj, joint) -> list[str]:
     return gate_chain(joint.requires_open, [(j.group, j.requires_open) for j in obj.joints])
 
 
-def target(obj, joint, groups: dict[str, list[str]]) -> dict:
-    """The annotation of one operated joint (the fields of ``infmob-annotations/1``, docs/format.md)."""
+def target(obj, joint, groups: dict[str, list[str]], meshes=None) -> dict:
+    """The annotation of one operated joint (the fields of ``infmob-annotations/1``, docs/format.md);
+    ``meshes``: every link's ``_soup`` by name, where the caller has them already."""
     carrier = obj.link(joint.group)
     v, f, declared, own = _carried(obj, carrier)
     pivot = np.asarray(joint.origin, float) - carrier.origin
@@ -470,11 +696,7 @@ def target(obj, joint, groups: dict[str, list[str]]) -> dict:
     # joint is operated: not in the way
     gates = _gates(obj, joint)
     gate = [j.child for j in obj.joints if j.group in gates]
-    neighbours, press = Neighbours(obj, carrier, own | _fixed_under(obj, gate), (v, f)), action(joint) == "press"
-
-    def blocked(g: Grasp) -> list[str]:
-        return neighbours(g, press)
-
+    blocked = Neighbours(obj, carrier, own | _fixed_under(obj, gate), (v, f), action(joint) == "press", meshes)
     grasps = declared or (derived_grasps(v, f, joint, pivot, blocked) if len(f) else [])
     if declared and len(f) and all(blocked(g) for g in declared):
         # the part's own holds all meet a neighbour (a cap's side pinch reaching below it onto the bottle's
@@ -511,7 +733,8 @@ def annotate(obj) -> list[dict]:
     for j in obj.joints:
         if j.movable:
             groups.setdefault(j.group, []).append(j.name)
-    return [target(obj, j, groups) for j in obj.joints if operated(j, obj.joints)]
+    meshes = {link.name: _soup(link.pieces) for link in obj.links if not link.dummy and link.pieces}
+    return [target(obj, j, groups, meshes) for j in obj.joints if operated(j, obj.joints)]
 
 
 def document(targets: list[dict]) -> dict:

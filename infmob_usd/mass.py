@@ -39,9 +39,15 @@ object, where a 5 g floor would make it half the object and fail its real mass; 
 ratio of the lightest link to the object that the 5 g floor keeps on a 100 g object."""
 
 
+LEAST_MASS = 0.001
+"""kg; no link of any object is lighter: Isaac Lab's robot doctor warns of a link under 1 g beside heavier
+ones (PhysX articulations handle such mass ratios badly, its 'easily bullied bodies'), and a click pen's
+button or a lighter's lever, 0.3-1 g in the product, moves the same at 1 g under its spring."""
+
+
 def link_floor(object_mass: float) -> float:
     """kg: the least mass of a link of an object of ``object_mass`` kg (its links before any floor)."""
-    return min(MIN_MASS, SMALL_SHARE * object_mass)
+    return max(LEAST_MASS, min(MIN_MASS, SMALL_SHARE * object_mass))
 
 MIN_INERTIA = DUMMY_INERTIA
 """kg m^2; no principal moment of a link is smaller."""

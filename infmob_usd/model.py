@@ -19,6 +19,7 @@ import numpy as np
 from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
+from .joints import gate_chain
 from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, link_floor, wall_of
 from .measures import _measure_closed
 from .physical.passive import dynamics
@@ -185,7 +186,8 @@ def _resolve_mimics(joints: list[Joint]) -> list[Joint]:
 
 def _closed_both_ways(bp: Blueprint) -> dict[str, tuple[str, ...]]:
     """Part -> the parts that must be closed while it moves, from the declared
-    :attr:`~.joints.JointSpec.requires_closed` of either side (the relation holds both ways)."""
+    :attr:`~.joints.JointSpec.requires_closed` of either side (the relation holds both ways). A part never
+    requires closed a part of its ``requires_open`` chain (it could then never move): a ModelError."""
     movable = {spec.child for spec in bp.joints if spec.movable}
     out: dict[str, set[str]] = {}
     for spec in bp.joints:
@@ -196,6 +198,12 @@ def _closed_both_ways(bp: Blueprint) -> dict[str, tuple[str, ...]]:
                                  + "; name parts that move, on a movable joint")
             out.setdefault(spec.child, set()).add(other)
             out.setdefault(other, set()).add(spec.child)
+    requires = [(spec.child, spec.requires_open) for spec in bp.joints]
+    for spec in bp.joints:
+        held = sorted(set(gate_chain(spec.requires_open, requires)) & out.get(spec.child, set()))
+        if held:
+            raise ModelError(f"{spec.child!r} moves only with {held[0]!r} open but requires it closed (requires_closed"
+                             " holds both ways); drop the requires_closed between a part and its gate")
     return {part: tuple(sorted(names)) for part, names in out.items()}
 
 

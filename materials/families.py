@@ -369,10 +369,13 @@ FAMILIES: dict[str, Family] = {
             roughness=(0.35, 0.6),
             metallic=0.0,
             opacity=_OPAQUE,
-            color_variation=(0.015, 0.035),
-            roughness_variation=(0.03, 0.06),
-            bump=(0.015, 0.04),
-            scale=(220.0, 340.0),  # moulded texture ~3-4 mm
+            # injection-moulded shells are one even colour with a fine spark-eroded grain (VDI 3400 Ref 18-30:
+            # Ra 0.8-3.2 um, features well under a millimetre): a few-percent tint or a steep bump at the
+            # noise's mm-to-cm scale reads as blotchy dough on a hand-held part, so both stay faint
+            color_variation=(0.004, 0.01),
+            roughness_variation=(0.01, 0.025),
+            bump=(0.003, 0.008),
+            scale=(220.0, 340.0),
             anisotropy=(1.0, 1.0),
         ),
         Family(

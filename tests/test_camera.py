@@ -37,3 +37,31 @@ def test_a_two_stage_lens_stands_out_by_both_stages():
     front = lambda q: max(bp.poses(q)["inner_barrel"][0, 3] + p.vertices[:, 0].max()  # noqa: E731
                           for p in bp.parts["inner_barrel"].pieces)
     assert front(q) - front({}) > 0.02  # two stages of 11-12 mm
+
+
+def test_the_front_element_is_a_glossy_dome_behind_a_printed_rim():
+    from infmob_usd.materials import FAMILIES, split_spec
+
+    for design in ("dslr", "compact", "instant"):
+        _, bp = make(1, design=design)
+        part = next(n for n, p in bp.parts.items() if any(pc.name == "element" for pc in p.pieces))
+        pieces = {pc.name: pc for pc in bp.parts[part].pieces}
+        glass = pieces["element"]
+        fam = FAMILIES[split_spec(bp.materials[glass.material])[0]]
+        assert fam.roughness[1] <= 0.1  # a coated front element mirrors the room, it is not a matte disc
+        x = glass.vertices[:, 0]
+        assert np.ptp(x) >= 0.004  # domed: a meniscus 3-5 mm deep, not a flat plate
+        rim = pieces["rim"].vertices[:, 0].max()
+        assert x.max() < rim  # the dome stays behind the rim's face
+        assert bp.materials[pieces["print"].material].endswith("white")  # the printed ring and inscription
+
+
+def test_a_camera_carries_strap_lugs_on_its_sides():
+    for design, count in (("dslr", 2), ("compact", 1), ("instant", 2)):
+        _, bp = make(1, design=design)
+        lugs = [pc.vertices for pc in bp.parts["body"].pieces if pc.name == "strap_lugs"]
+        assert lugs, design
+        pts = np.vstack(lugs)
+        body = next(pc.vertices for pc in bp.parts["body"].pieces if pc.name == "body")
+        sides = {int(np.sign(y)) for y in pts[:, 1] if abs(y) > body[:, 1].max() - 1e-6}
+        assert len(sides) == count, (design, sides)

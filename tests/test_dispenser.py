@@ -50,3 +50,18 @@ def test_a_pressed_pump_springs_back_when_let_go(design, tmp_path):
         scene.step()
     assert abs(float(art.get_qpos()[i])) < 0.05 * pump["upper"], f"{design}: the pump stayed down"
     assert springs >= 1
+
+
+def test_a_pump_bottle_is_labelled():
+    """A soap or lotion pump bottle carries a printed label round its straight part, on the body (glued)."""
+    from helpers import maker
+
+    _, bp = maker("dispenser")(2, design="pump_bottle")
+    band = [pc for pc in bp.parts["body"].pieces if pc.material == "label"]
+    wall = [pc for pc in bp.parts["body"].pieces if pc.material == "glass"]
+    assert len(band) == 1
+    lo, hi = band[0].vertices.min(0), band[0].vertices.max(0)
+    top = max(pc.vertices[:, 2].max() for pc in wall)
+    assert 0.2 * top < (lo[2] + hi[2]) / 2 < 0.6 * top  # round the body, under the shoulder
+    assert hi[0] - lo[0] > 0.9 * (max(pc.vertices[:, 0].max() for pc in wall) - min(pc.vertices[:, 0].min()
+                                                                                   for pc in wall))

@@ -221,3 +221,46 @@ def test_a_cabinet_always_moves():
     for seed in range(40):
         _, bp = make_bp(kitchen_cabinet, "kitchen_cabinet", seed, column_count=1)
         assert movable(bp), seed
+
+
+# A 4.8 m run of 10 columns (fuzz draw 690125): drawer 2_2 closing from all open meets door 3_0, a gate
+# (inner drawers behind it) hinged on their shared divider, opened to 90 degrees.
+LONG_RUN = dict(width=4.8, column_count=10, base_height=0.8538748790262356, wall_depth=0.3, corner_size=0.92,
+                sink_width=0.8267688880382087, kitchen_width=3.668039922761717, front_thickness=0.016,
+                worktop_thickness=0.028605979466563954, front_style="glazed", handle_finish="brushed_metal",
+                design="kitchen")
+
+
+@pytest.fixture(scope="module")
+def long_run():
+    return infmob_usd.generate("kitchen_cabinet", seed=690125, texture_size=16, **LONG_RUN)
+
+
+def test_a_gate_keeps_the_opening_its_inner_drawers_pass(long_run):
+    """The clearance pass may not stop a door short of the swing its inner drawers need to pass it (the
+    neighbouring drawer gives way instead), and no part ever requires its own gate closed."""
+    from infmob_usd.categories.parts import cabinetry as cab
+    from infmob_usd.joints import gate_chain
+
+    joints = {j.name: j for j in long_run.movable_joints}
+    requires = [(j.group, j.requires_open) for j in joints.values()]
+    for j in joints.values():
+        gates = gate_chain(j.requires_open, requires)
+        assert not set(gates) & set(j.requires_closed), f"{j.name} requires its gate closed: {j.requires_closed}"
+    assert joints["joint_door_3_0"].upper == pytest.approx(cab.GATE)
+    inner = [j for j in joints.values() if j.child.startswith("inner_")]
+    full = max(j.upper for j in inner)
+    for r in range(3):  # the inner drawers behind door 3_0 travel as far as every other inner drawer
+        assert joints[f"joint_inner_3_{r}"].upper == pytest.approx(full)
+
+
+@pytest.mark.sim
+def test_a_long_run_closes_and_reopens_every_part_from_all_open(long_run, tmp_path):
+    """SAPIEN's reach check on the long run: every inner drawer closes and opens again from all open
+    (it stalled at 18 % when its door had been stopped short and then held shut for it)."""
+    pytest.importorskip("sapien")
+    from infmob_usd.validate.sim import check_sapien
+
+    folder = infmob_usd.save(long_run, tmp_path)
+    (reach,) = [c for c in check_sapien(folder, checks=["reach"]) if c.name == "reach"]
+    assert reach.ok, reach.detail

@@ -32,3 +32,24 @@ def test_the_utility_trigger_waits_for_its_safety():
     assert spec["trigger"].dofs[0].axis[0] < -0.99 and spec["safety"].dofs[0].axis[0] > 0.99
     _, bp = make(0, design="utility", has_safety=False)
     assert {s.child: s for s in bp.joints if s.movable}["trigger"].requires_open is None
+
+
+def test_the_disposables_hood_sits_on_its_tank_without_overhanging_it():
+    from scipy.spatial import ConvexHull
+
+    for seed in range(3):
+        _, bp = make(seed, design="disposable")
+        pieces = bp.parts["body"].pieces
+        tank = next(pc.vertices for pc in pieces if pc.name == "tank")
+        plan = ConvexHull(tank[:, :2])
+        hood = np.vstack([pc.vertices for pc in pieces if pc.name in ("cheek", "chimney_front", "chimney_top")])
+        # a BIC's steel hood is crimped onto the tank's shoulder inside its outline, not a box on top of it
+        assert (hood[:, :2] @ plan.equations[:, :2].T + plan.equations[:, 2]).max() <= 1e-6, seed
+        assert hood[:, 2].min() >= tank[:, 2].max() - 0.002  # crimped at most 2 mm down over the tank
+
+
+def test_the_windproof_wheel_stands_over_the_chimney():
+    for seed in range(3):
+        _, bp = make(seed, design="windproof")
+        chimney = next(pc.vertices for pc in bp.parts["body"].pieces if pc.name == "chimney")
+        assert _points(bp, "wheel")[:, 2].max() >= chimney[:, 2].max() + 0.001, seed

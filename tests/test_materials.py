@@ -432,3 +432,17 @@ def test_oven_cavity_enamel_is_dark():
     for variant in variants:
         lightness, a, b = _lab(dict(FAMILIES["enamel"].palette)[variant])
         assert lightness < 35.0 and math.hypot(a, b) < 15.0, variant
+
+
+@pytest.mark.parametrize("size", [256, 512])
+def test_moulded_plastic_is_one_even_colour_not_blotchy(size):
+    """An injection-moulded shell (a mouse, a remote, a phone) is one colour with a sub-millimetre grain:
+    neither its colour nor its normal map may show the centimetre blotches that read as dough."""
+    for variant in ("white", "light_grey", "blue"):
+        for index in range(0, LOOKS_PER_VARIANT, 5):
+            maps = synthesize(library_look("plastic", variant, index), size)
+            lum = srgb_to_linear(maps["basecolor"].astype(np.float64) / 255.0).mean(axis=2)
+            assert lum.std() / lum.mean() < 0.02, (variant, index)
+            n = maps["normal"].astype(np.float64) / 127.5 - 1.0
+            tilt = np.hypot(n[..., 0], n[..., 1]) / np.maximum(n[..., 2], 1e-6)
+            assert np.sqrt((tilt**2).mean()) < 0.012, (variant, index)

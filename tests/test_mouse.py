@@ -33,3 +33,25 @@ def test_main_buttons_click_down_at_the_front_and_the_side_buttons_press_across(
         y = _points(bp, name)[:, 1].mean()
         assert d.type == "prismatic" and abs(d.axis[1]) > 0.999 and np.sign(d.axis[1]) == -np.sign(y)
         assert abs(y) > 0.4 * np.ptp(body[:, 1])  # on a wall, not the top
+
+
+def test_the_buttons_are_moulded_in_the_shells_colour():
+    from categories.mouse import CATEGORY
+
+    for finish in next(p for p in CATEGORY.params if p.name == "finish").choices:
+        spec = CATEGORY.resolve_materials({**make(0)[0], "finish": finish})
+        # one variant: the shell and the buttons are drawn from the same colour, never two of a list
+        assert "|" not in spec["shell"] and spec["buttons"] == spec["shell"], finish
+
+
+def test_the_plan_ranges_from_an_even_office_mouse_to_an_egg():
+    widths = {}
+    for taper in (0.0, 1.0):
+        _, bp = make(3, design="wired", taper=taper, size=0.5, width=0.5)
+        shell = [pc.vertices for pc in bp.parts["body"].pieces if pc.name in ("palm", "wall")]
+        body = np.vstack([*shell, _points(bp, "left_button"), _points(bp, "right_button")])
+        x0, x1 = body[:, 0].min(), body[:, 0].max()
+        front = body[body[:, 0] > x0 + 0.8 * (x1 - x0)]
+        back = body[body[:, 0] < x0 + 0.4 * (x1 - x0)]
+        widths[taper] = np.ptp(front[:, 1]) / np.ptp(back[:, 1])
+    assert widths[1.0] < widths[0.0] - 0.08, widths  # the egg's front fifth is clearly narrower

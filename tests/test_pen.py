@@ -3,6 +3,8 @@ a capped pen's cap pulls clear of the point: checked on the grounded blueprint."
 
 from __future__ import annotations
 
+import numpy as np
+
 from helpers import maker
 from helpers import part_points as _points
 
@@ -29,3 +31,20 @@ def test_the_cap_pulls_clear_of_the_point():
     tip = _points(bp, "body")[:, 0].max()
     off = _points(bp, "cap", bp.poses({("cap", 0): cap.dofs[0].upper})["cap"])[:, 0].min()
     assert off > tip  # the cap's mouth is past the point: it is off
+
+
+def test_the_pocket_clip_stands_off_the_barrel_along_its_length():
+    for design, part, barrel in (("click", "body", "barrel"), ("capped", "cap", "cap"),
+                                 ("multi", "body", "upper_barrel")):
+        for seed in range(3):
+            _, bp = make(seed, design=design)
+            pieces = bp.parts[part].pieces
+            strip = next(pc.vertices for pc in pieces if pc.name == "clip")
+            tube = next(pc.vertices for pc in pieces if pc.name == barrel)
+            (y0, y1), (z0, z1) = ((tube[:, k].min(), tube[:, k].max()) for k in (1, 2))
+            radial = np.hypot(strip[:, 1] - (y0 + y1) / 2, strip[:, 2] - (z0 + z1) / 2)
+            # the strip's underside at its two ends (its vertices at the least and most x): the gap a pocket's
+            # cloth goes in is a millimetre or more along the clip's middle
+            x = strip[:, 0]
+            lo = [radial[np.isclose(x, e)].min() for e in (x.min(), x.max())]
+            assert (lo[0] + lo[1]) / 2 - (z1 - z0) / 2 >= 0.001, (design, seed, lo, (z1 - z0) / 2)

@@ -104,6 +104,35 @@ def test_generated_objects_pass(results, case, check):
     assert r.ok, r.detail
 
 
+def _miswound_meshes(folder: Path) -> list[str]:
+    """Meshes of the object's USD in which two faces sharing an edge run it the same way (faces flipped
+    against their neighbours: shading and NVIDIA's ManifoldChecker read them as inside out)."""
+    from pxr import Usd, UsdGeom
+
+    stage = Usd.Stage.Open(str(folder / f"{folder.name}.usda"))
+    bad = []
+    for prim in Usd.PrimRange(stage.GetPseudoRoot(), Usd.TraverseInstanceProxies()):
+        if not prim.IsA(UsdGeom.Mesh):
+            continue
+        mesh = UsdGeom.Mesh(prim)
+        counts = np.asarray(mesh.GetFaceVertexCountsAttr().Get())
+        idx = np.asarray(mesh.GetFaceVertexIndicesAttr().Get())
+        starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+        nxt = np.arange(len(idx)) + 1
+        ends = starts + counts
+        nxt[ends - 1] = starts  # each face's last corner runs back to its first
+        edges = np.stack([idx, idx[nxt]], axis=1)
+        if len(np.unique(edges, axis=0)) < len(edges):
+            bad.append(str(prim.GetPath()))
+    return bad
+
+
+@pytest.mark.parametrize("case", [pytest.param(c, id=_case_id(c), marks=pytest.mark.xdist_group(
+    f"physics-{_case_id(c)}")) for c in CASES if c[1] == 0])
+def test_faces_sharing_an_edge_are_wound_alike(folders, case):
+    assert _miswound_meshes(folders[case]) == []
+
+
 # ----------------------------------------------------------------------------- kinematics
 
 

@@ -3,6 +3,7 @@ dispenser's sprung paddle, and clearances at the states a robot reaches."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from collide import contacts
@@ -79,3 +80,46 @@ def test_no_overlap_at_sampled_states(design):
     for label, q in labelled_states(bp):
         bad = contacts(bp, opened(bp, q), VOL)
         assert not bad, f"(part, part, m^3) overlapping at {label}: {bad}"
+
+
+@pytest.mark.parametrize("design", DESIGNS)
+def test_the_mullion_shows_the_liner_to_both_zones(design):
+    """Inside, a zone is lined all round in light plastic: the mullion between fresh food and freezer is no
+    patch of the (possibly black) cabinet finish. Every body piece that faces a cavity is liner."""
+    _, bp = make(3, design=design)
+    body = bp.parts["body"].pieces
+    liner = [pc for pc in body if pc.material == "liner"]
+    # the cabinet's five liner walls per cavity plus the mullion's two faces
+    assert len(liner) >= 7
+    cab = [pc for pc in body if pc.material == "body"]
+    lo = np.min([pc.vertices.min(0) for pc in liner], axis=0)
+    hi = np.max([pc.vertices.max(0) for pc in liner], axis=0)
+    inside = [pc for pc in cab if np.all(pc.vertices.min(0)[1:] > lo[1:] + 1e-4)
+              and np.all(pc.vertices.max(0)[1:] < hi[1:] - 1e-4)]  # within the liner across (y) and up (z)
+    assert len(inside) == 1
+    for pc in inside:  # the mullion's core: every face of it but its front is covered by liner skins
+        a, b = pc.vertices.min(0), pc.vertices.max(0)
+        axis = int(np.argmin(b - a))
+        faces = [a[axis], b[axis]]
+        touching = [lp for lp in liner if any(abs(lp.vertices[:, axis].min() - f) < 1e-6 or
+                                               abs(lp.vertices[:, axis].max() - f) < 1e-6 for f in faces)]
+        assert len(touching) >= 2
+
+
+@pytest.mark.parametrize("design", DESIGNS)
+def test_glass_shelves_are_a_pane_with_a_printed_border(design):
+    """A shelf is a glass pane (clear middle, a printed border that shows where the pane is) in its trims,
+    not a bare frame."""
+    _, bp = make(5, design=design)
+    shelves = [n for n, part in bp.parts.items() if part.label == "shelf"]
+    assert shelves
+    for n in shelves:
+        mats = [pc.material for pc in bp.parts[n].pieces]
+        assert mats.count("glass") == 1 and mats.count("frost") == 4, (n, mats)
+
+
+def test_fridge_handles_are_stainless_or_plastic():
+    """Full-size fridge handles are stainless tube or moulded plastic, never mirror chrome."""
+    from infmob_usd.api import get_category
+    params = {p.name: p for p in get_category("refrigerator").params}
+    assert set(params["handle_finish"].choices) == {"brushed_metal", "plastic"}

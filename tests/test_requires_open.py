@@ -133,6 +133,18 @@ def test_the_gate_must_be_a_movable_part_declared_first():
         bp.join(J.prismatic("body", "late", (0.1, 0, 0.2), (1, 0, 0), 0.0, 0.1, requires_open="ghost"))
 
 
+def test_a_part_never_requires_its_own_gate_closed():
+    """Closed both ways, a door that requires its tray closed would have the tray require the door closed as
+    well as open: refused, naming the two parts."""
+    from dataclasses import replace
+
+    for gated, closed in (("tray", "door"), ("door", "tray")):
+        bp = cupboard(True)
+        bp.joints[:] = [replace(s, requires_closed=(closed,)) if s.child == gated else s for s in bp.joints]
+        with pytest.raises(ModelError, match="'tray' moves only with 'door' open but requires it closed"):
+            assemble(bp, 0, np.random.default_rng(0), 16)
+
+
 def oven_with_flap() -> Blueprint:
     """A hollow box on a 10 cm plinth with a door hinged along its bottom front edge that falls open to level,
     and a 19 cm flap hinged near the door's top on its outer face, which swings outwards only with the door

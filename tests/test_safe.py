@@ -27,3 +27,24 @@ def test_the_door_shows_its_bolts_on_both_upright_edges(design):
             assert len(heads) == b.bolts
             assert all(x0 < bb[0][0] and bb[1][0] < x1 for bb in heads)  # inside the door's thickness
             assert 2 * b.bolt_r >= 0.015
+
+
+@pytest.mark.parametrize("design", ["home_safe", "gun_cabinet"])
+def test_inside_is_lined_in_felt_and_a_gun_cabinet_has_a_barrel_rest(design):
+    """Inside a home safe or gun cabinet: felt on the floor, back and sides (not bare black steel); a gun cabinet
+    carries a comb across its back the barrels lean into, its teeth ~5-6 cm apart."""
+    _, bp = make(2, design=design)
+    felt = [pc for pc in bp.parts["body"].pieces if pc.material == "lining"]
+    assert len(felt) >= 4
+    if design == "gun_cabinet":
+        teeth = [pc for pc in felt if np.ptp(pc.vertices[:, 1]) < 0.03 and np.ptp(pc.vertices[:, 0]) > 0.03]
+        assert len(teeth) >= 4
+        ys = np.sort([pc.vertices[:, 1].mean() for pc in teeth])
+        assert 0.03 < np.median(np.diff(ys)) < 0.08
+
+
+def test_safes_are_dark_steel():
+    """Safes come black, graphite or anthracite (SentrySafe, Stack-On, Elsafe ranges), not white."""
+    from categories.safe import MATERIALS
+
+    assert "white" not in MATERIALS["body"]

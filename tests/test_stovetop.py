@@ -48,3 +48,28 @@ def test_a_counter_cooker_has_at_most_two_zones_and_knobs_on_its_front(design):
     _, bp = make(3, design=design, mount="counter", zone_count=5, induction_controls="knobs")
     knobs = [j for j in movable(bp) if j.child.startswith("knob_")]
     assert len(knobs) == 2 and all(j.dofs[0].axis[0] > 0.99 for j in knobs)
+
+
+@pytest.mark.parametrize("mount", ("built_in", "counter"))
+def test_a_coil_is_a_spiral_tube_standing_over_a_lipped_drip_pan(mount):
+    """An electric coil is a sheathed tube wound in 3 or more turns, gaps between them, standing on its support over a drip pan whose
+    lip rises round it: not flat rings printed on the pan."""
+    import numpy as np
+
+    _, bp = make(2, design="coil", mount=mount)
+    pieces = bp.parts["body"].pieces
+    pans = [pc for pc in pieces if pc.material == "trim" and pc.convex]
+    lips = [pc for pc in pieces if pc.material == "trim" and not pc.convex]
+    coils = [pc for pc in pieces if pc.material == "element" and np.ptp(pc.vertices[:, 0]) > 0.1]
+    assert pans and len(lips) == len(pans) and len(coils) == len(pans)
+    for coil in coils:
+        pan = min(pans, key=lambda pc: np.linalg.norm(pc.vertices[:, :2].mean(0) - coil.vertices[:, :2].mean(0)))
+        c = (pan.vertices[:, :2].min(0) + pan.vertices[:, :2].max(0)) / 2  # the coil is wound round the pan's centre
+        assert coil.vertices[:, 2].min() > pan.vertices[:, 2].max() + 0.002  # on its support, over the pan
+        # the wound tube: a ray out from the centre crosses it 3 times or more, at growing radii
+        d = coil.vertices[:, :2] - c
+        ang, rad = np.arctan2(d[:, 1], d[:, 0]), np.linalg.norm(d, axis=1)
+        for ray in (0.5, 2.0, -2.5):
+            near = np.sort(rad[np.abs(np.angle(np.exp(1j * (ang - ray)))) < 0.12])
+            crossings = 1 + int(np.sum(np.diff(near) > 0.004)) if len(near) else 0
+            assert crossings >= 3, (ray, crossings)

@@ -48,3 +48,24 @@ def test_the_swivel_cover_turns_behind_the_body():
     assert np.allclose(joint.dofs[0].axis, (0, 0, 1)) and joint.dofs[0].upper > 3.0
     plug_root = _points(bp, "body", ("body",))[:, 0].max()
     assert _points(bp, "cover", q=opened)[:, 0].max() < plug_root  # the plug is bare
+
+
+@pytest.mark.parametrize("design", ["swivel", "capped", "slider"])
+def test_the_plug_is_a_bright_plated_shell_round_a_moulded_insert(design):
+    from infmob_usd.materials import FAMILIES, split_spec
+
+    for seed in range(3):
+        _, bp = make(seed, design=design, plug="a")
+        part = "sled" if design == "slider" else "body"
+        pieces = {pc.name: pc for pc in bp.parts[part].pieces}
+        shell = FAMILIES[split_spec(bp.materials[pieces["plug_top"].material])[0]]
+        # nickel-plated steel (USB 2.0 spec: 'nickel plate'): a metal that mirrors, not a satin grey
+        assert shell.metallic == 1.0 and shell.roughness[1] <= 0.1
+        assert split_spec(bp.materials[pieces["insert"].material])[0] == "plastic"
+
+
+def test_a_two_tone_capped_drive_moulds_its_neck_in_the_caps_colour():
+    _, bp = make(0, design="capped", accent="black", body_colour="white")
+    neck = next(pc for pc in bp.parts["body"].pieces if pc.name == "neck")
+    cap = bp.parts["cap"].pieces[0]
+    assert neck.material == cap.material

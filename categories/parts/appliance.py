@@ -368,11 +368,23 @@ def glass_door(box, hole) -> list[g.Piece]:
     return pieces
 
 
+SHELF_FROST = 0.02
+"""m, the printed border round a fridge's tempered glass shelf, inside its trims: Samsung, LG and Bosch shelves
+carry a 15-25 mm grey ceramic-frit (or etched) band at the edges (product photos); it is what makes a clear pane
+read as a pane and not as an empty frame."""
+
+
 def glass_shelf(xs, ry: float, zb: float, hr: float) -> list[g.Piece]:
-    """A glass shelf in a trim between ``xs`` in x and ``-ry..ry`` in y, from ``zb`` up."""
+    """A glass shelf in a trim between ``xs`` in x and ``-ry..ry`` in y, from ``zb`` up: a 6 mm pane, clear in
+    the middle and printed (slot ``frost``) in a :data:`SHELF_FROST` band round its edges."""
     rx0, rx1 = xs
-    t = RACK_TRIM
-    return [g.box_between([rx0, -ry, zb], [rx1 - t, ry, zb + 0.006], "glass"),
+    t, b, e = RACK_TRIM, SHELF_FROST, 0.01
+    xa, xb, ya, yb, z1 = rx0 + b, rx1 - t - b, -ry + e + b, ry - e - b, zb + 0.006
+    return [g.box_between([xa, ya, zb], [xb, yb, z1], "glass"),
+            g.box_between([rx0, -ry, zb], [xa, ry, z1], "frost"),
+            g.box_between([xb, -ry, zb], [rx1 - t, ry, z1], "frost"),
+            g.box_between([xa, -ry, zb], [xb, ya, z1], "frost"),
+            g.box_between([xa, yb, zb], [xb, ry, z1], "frost"),
             g.box_between([rx0, -ry, zb], [rx1 - t, -ry + 0.01, zb + 0.012], "trim"),
             g.box_between([rx0, ry - 0.01, zb], [rx1 - t, ry, zb + 0.012], "trim"),
             g.box_between([rx1 - t, -ry, zb], [rx1, ry, zb + min(0.022, hr)], "trim", bevel=0.002)]

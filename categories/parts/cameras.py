@@ -127,11 +127,52 @@ def lens_axis(c: Camera, x: float) -> Frame:
     return Frame.at((x, y, z), z=(1, 0, 0))
 
 
-def _front_glass(c: Camera, r: float, x: float, rim: str, glass: str) -> list[g.Piece]:
-    """The front of a lens: a rim ring and the front element just behind it, in a dark throat."""
+def _front_glass(c: Camera, r: float, x: float, rim: str, glass: str, mark: str) -> list[g.Piece]:
+    """The front of a lens: a black rim ring printed with a white ring and the lens's inscription (drawn as
+    dashes), the front element behind it a domed meniscus of coated glass (its curve catches a highlight,
+    as a real front element does) over the black inside of the barrel."""
     y, z = c.axis
-    return [tube(c, r, x - 0.003, x, 0.18 * r, rim, "rim"),
-            g.cylinder((x - 0.004, y, z), (x - 0.0025, y, z), 0.84 * r, glass, name="element")]
+    ge = 0.84 * r
+    sag = min(0.3 * ge, 0.0045)  # a front element's dome: 3-5 mm on a compact's or a kit zoom's front lens
+    edge = x - 0.0008 - sag  # its apex 0.8 mm inside the rim's face
+    back = edge - 0.0012
+    dome = [(0.0, back), (ge, back), (ge, edge)]
+    dome += [(ge * math.cos(a), edge + sag * math.sin(a)) for a in np.linspace(0.3, math.pi / 2, 7)]
+    dome[-1] = (0.0, dome[-1][1])
+    face = 0.18 * r  # the rim's front face, from its outside inward
+    pieces = [tube(c, r, x - 0.003, x, face, rim, "rim"),
+              along_lens(c, g.revolve(dome, glass, name="element")),
+              g.cylinder((back - 0.0012, y, z), (back - 0.0002, y, z), ge, rim, name="inside").replace(convex=())]
+    ring = tube(c, r - 0.62 * face, x, x + 6e-5, 0.08 * face, mark, "print").replace(convex=())
+    dashes = []
+    for k, a in enumerate(np.linspace(0.25 * math.pi, 1.55 * math.pi, 14)):  # the text round the ring's top
+        if k % 5 == 4:
+            continue  # word spaces
+        rr = r - 0.3 * face
+        cy, cz = y + rr * math.cos(a), z + rr * math.sin(a)
+        t = np.array([0.0, -math.sin(a), math.cos(a)])
+        n = np.array([0.0, math.cos(a), math.sin(a)])
+        pts = [np.array([xx, cy, cz]) + u * t * 0.22 * face + v * n * 0.12 * face
+               for xx in (x, x + 6e-5) for u in (-1, 1) for v in (-1, 1)]
+        dashes.append(hull(pts, mark, "print"))
+    return pieces + [ring, *_merged(dashes, mark, "inscription")]
+
+
+def strap_lugs(c: Camera, metal: str, sides: tuple[int, ...] = (-1, 1)) -> list[g.Piece]:
+    """The strap lugs: a steel eyelet standing out of each of ``sides`` of the body near its top (DSLRs and
+    instant cameras carry two, a compact one on its right; Canon EOS 250D, Instax Mini 12, Sony RX100).
+    Drawn: a strap's ring is no collision shape."""
+    out = []
+    for s in sides:
+        yw = s * c.width / 2
+        zc, xc = 0.78 * c.height, 0.62 * c.depth
+        ring = [(xc + 0.0028 * math.cos(a), 0.0, zc + 0.0020 * math.sin(a))
+                for a in np.linspace(0, 2 * math.pi, 13)[:-1]]
+        for a, b in zip(ring, ring[1:] + ring[:1], strict=True):
+            pts = [(p[0], yw + s * dy, p[2] + dz) for p in (a, b) for dy in (0.0003, 0.0016)
+                   for dz in (-0.00045, 0.00045)]
+            out.append(hull(pts, metal, "lug").replace(convex=()))
+    return _merged(out, metal, "strap_lugs")
 
 
 def box_pts(lo, hi) -> np.ndarray:
@@ -174,6 +215,7 @@ def dslr_body(c: Camera, body: str, grip: str, metal: str, lens: str, screen: st
     mount = tube(c, r + 0.004, d - 0.001, d + 0.006, 0.006, metal, "mount")
     barrel = tube(c, r, d + 0.006, d + c.length * 0.45, 0.004, lens, "barrel")
     pieces += [mount, barrel, g.cylinder((d + 0.002, y, z), (d + 0.004, y, z), r - 0.004, body, name="throat")]
+    pieces += strap_lugs(c, metal)
     if screen:
         pieces += _screen_pieces(c, -0.0005, screen, body)
     return Assembly.single("body", pieces, {"shutter": Frame.at((d + 0.5 * gd - 0.006, -w / 2 + 0.5 * gw, 0.92 * h)),
@@ -204,7 +246,8 @@ def compact_body(c: Camera, body: str, metal: str, stages: int) -> Assembly:
               g.box_between((d - 0.001, -0.42 * w, 0.74 * h), (d + 0.0008, -0.2 * w, 0.88 * h), "flash", bevel=0.0006,
                             name="flash"),
               g.cylinder((d - 0.001, -0.12 * w, 0.8 * h), (d + 0.0008, -0.12 * w, 0.8 * h), 0.0022, "lamp",
-                         name="lamp")]
+                         name="lamp"),
+              *strap_lugs(c, metal, (1,))]
     return Assembly.single("body", pieces, {"shutter": Frame.at((0.5 * d, -0.32 * w, h)),
                                             "dial": Frame.at((0.5 * d, -0.12 * w, h))})
 
@@ -227,7 +270,8 @@ def instant_body(c: Camera, body: str, trim: str, glass: str, stages: int) -> As
               g.box_between((d - 0.001, -0.42 * w, 0.78 * h), (d + 0.0015, -0.12 * w, 0.92 * h), "flash",
                             bevel=0.0008, name="flash"),
               g.box_between((0.3 * d, -0.32 * w, h - 5e-4), (0.62 * d, 0.32 * w, h + 1e-4), trim,
-                            name="film_slot").replace(convex=())]
+                            name="film_slot").replace(convex=()),
+              *strap_lugs(c, trim)]
     del y, z
     return Assembly.single("body", pieces, {"shutter": Frame.at((d, -0.36 * w, 0.7 * h), z=(1, 0, 0), x=(0, 0, 1))})
 
@@ -260,17 +304,17 @@ def _merged(pieces: list[g.Piece], material: str, name: str) -> list[g.Piece]:
     return [g.Piece(np.vstack(v), np.vstack(f), material, (), name)]
 
 
-def inner_barrel(c: Camera, body: str, rim: str, glass: str) -> Assembly:
+def inner_barrel(c: Camera, body: str, rim: str, glass: str, mark: str) -> Assembly:
     """A DSLR lens's inner barrel: it slides out of the ring's front as the ring zooms in (+x)."""
     d, r = c.depth, c.lens
     x_front = d + c.length
     back = d + c.length * 0.45 - c.travel  # inside the rear barrel, clear of the mount's throat
     pieces = [tube(c, r - 0.0045 - GAP, back, x_front - 0.003, WALL, body, "inner_barrel"),
-              *_front_glass(c, r - 0.0045 - GAP, x_front, rim, glass)]
+              *_front_glass(c, r - 0.0045 - GAP, x_front, rim, glass, mark)]
     return Assembly.single("barrel", pieces, {"slide": lens_axis(c, x_front)})
 
 
-def lens_stage(c: Camera, k: int, stages: int, body: str, rim: str, glass: str) -> Assembly:
+def lens_stage(c: Camera, k: int, stages: int, body: str, rim: str, glass: str, mark: str) -> Assembly:
     """Stage ``k`` (0 outermost) of a telescoping lens: a tube nested in the last, standing 2 mm further out
     at rest, the front element on the innermost; anchor ``slide`` (+x)."""
     r = c.lens - k * (WALL + GAP)
@@ -278,9 +322,7 @@ def lens_stage(c: Camera, k: int, stages: int, body: str, rim: str, glass: str) 
     back = c.depth - bore_depth(c, stages) + GAP * (k + 1) + 0.0015 * k
     pieces = [tube(c, r, back, front - (0.003 if k == stages - 1 else 0.0008), WALL, body, "stage")]
     if k == stages - 1:
-        pieces += _front_glass(c, r, front, rim, glass)
-        y, z = c.axis
-        pieces.append(g.cylinder((front - 0.006, y, z), (front - 0.005, y, z), r - WALL, rim, name="throat"))
+        pieces += _front_glass(c, r, front, rim, glass, mark)
     else:
         pieces.append(tube(c, r, front - 0.0008, front, WALL + 0.0006, rim, "stage_rim"))
     return Assembly.single("barrel", pieces, {"slide": lens_axis(c, front)})

@@ -95,6 +95,11 @@ GROUP = (0.04, 0.02)  # m, the group head's radius and how far it hangs under th
 # swinging out 60-90 degrees.
 WAND = (0.0048, 0.14)  # m, tube radius, longest length
 WAND_SWINGS = math.radians(60)
+# A capsule machine's outlet (Nespresso Essenza Mini, Keurig K-Classic): a spout 26-30 mm across hanging 20-25 mm
+# under the head, over the cup; its capsule holder: a pocket for a 37 mm Nespresso capsule (Keurig K-cup holder 50 mm
+# across) ringed by a 4-5 mm rim, under the lid.
+POD_OUTLET = (0.014, 0.022)  # m, radius, drop under the head
+CAPSULE_BAY = (0.021, 0.005)  # m, pocket radius, rim width
 TRAY_HEIGHT = 0.035  # m, a drip tray's depth (Breville, Nespresso: 3-5 cm)
 TRAY_PULL = 0.8  # it pulls out this share of its depth before it leaves its guides
 # Keys on a coffee machine's front (Breville BES870 1-cup / 2-cup / power / program; Keurig cup-size keys):
@@ -180,9 +185,10 @@ def _keyed(lo, hi, holes: list[tuple[Frame, float, float]], slot: str, sheet: fl
     return g.panel(lo, hi, slot, "x", rects).replace(sheet=sheet)
 
 
-def body(m: Machine, slot: str, trim: str, keys: int, dial: bool = False) -> list[g.Piece]:
+def body(m: Machine, slot: str, trim: str, keys: int, dial: bool = False, dark: str = "lid") -> list[g.Piece]:
     """The shell: tower, head and floor (and the tank's cradle) with the holes of ``keys`` keys and a
-    ``dial``'s stem, plus the warming plate or the group head and an espresso machine's boiler."""
+    ``dial``'s stem, plus the warming plate, a capsule machine's outlet and capsule bay (``dark``: the slot of
+    their openings) or the group head and an espresso machine's boiler."""
     s, w, h = m.sheet, m.width / 2, m.height
     lid = LID_T + GAP if m.design == "drip" else 0.0
     head, floor = ((m.tower_front - WALL, -w, m.head_bottom), (m.front, w, h)), \
@@ -201,8 +207,8 @@ def body(m: Machine, slot: str, trim: str, keys: int, dial: bool = False) -> lis
                                    m.d.floor + rim), slot).replace(sheet=s) for k in (-1, 1))]
     if m.design == "drip":
         pieces.append(g.disc((m.bay, 0, m.d.floor + 0.001), 0.9 * CARAFE_R, 0.002, trim))
-    if m.design == "pod":  # the brew chamber's outlet over the cup
-        pieces.append(g.cylinder((m.bay, 0, m.head_bottom - 0.012), (m.bay, 0, m.head_bottom + 0.001), 0.012, trim))
+    if m.design == "pod":
+        pieces += pod_outlet(m, trim, dark) + capsule_bay(m, trim, dark)
     if m.design == "espresso":
         r, drop = GROUP
         pieces.append(g.cylinder((m.bay, 0, m.head_bottom - drop), (m.bay, 0, m.head_bottom + 0.001), r, trim))
@@ -210,6 +216,26 @@ def body(m: Machine, slot: str, trim: str, keys: int, dial: bool = False) -> lis
         x = (m.tank_front + m.tower_front) / 2
         pieces.append(g.cylinder((x, 0, m.d.floor), (x, 0, 0.6 * h), m.works, "works").replace(wall=0.0))  # solid
     return pieces
+
+
+def pod_outlet(m: Machine, trim: str, dark: str) -> list[g.Piece]:
+    """A capsule machine's coffee outlet over the cup: a nozzle housing hanging under the head's front (a round
+    spout 26-30 mm across, 20-25 mm under the head: Nespresso Essenza Mini, Keurig K-Classic exit needle
+    housing) with its dark orifice underneath."""
+    r, drop = POD_OUTLET
+    x, z = m.bay, m.head_bottom
+    return [g.cylinder((x, 0, z - drop), (x, 0, z + 0.001), r, trim, 32),
+            g.disc((x, 0, z - drop - 0.0005), 0.55 * r, 0.001, dark).replace(convex=())]
+
+
+def capsule_bay(m: Machine, trim: str, dark: str) -> list[g.Piece]:
+    """The capsule holder the lid closes over, on the head's top (decoration, flush: the lid clears it): a
+    bright rim round the dark pocket a capsule drops into (:data:`CAPSULE_BAY`)."""
+    r, rim = CAPSULE_BAY
+    x0, z = m.tower_front + LID_T, m.height
+    x = max(m.bay, x0 + r + rim + 0.006)
+    return [g.disc((x, 0, z + 0.0002), r + rim, 0.0008, trim, 48).replace(convex=()),
+            g.disc((x, 0, z + 0.0006), r, 0.0008, dark, 48).replace(convex=())]
 
 
 def tank_size(m: Machine) -> tuple[float, float, float]:

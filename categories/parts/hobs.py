@@ -39,7 +39,9 @@ HOB = {
     "margin": 0.03,  # zones keep this far inside the plate's edges
     # electric zones: 145-210 mm coils / induction zones (GE WB30M1, WB30M2 coils; Bosch PIE631 zones)
     "zone": {"radius": 0.105, "side": 0.012, "small": 0.75},
-    "coil": {"wire": 0.0045, "turns": 3.0, "points": 14, "pan": 0.012, "over": 0.004},
+    # a coil element's sheath 8-9 mm wide wound at a 13-15 mm pitch, 4 turns on a 6 in coil, 5 on an 8 in one
+    # (GE WB30M1, WB30M2), on a wire support 3-5 mm over a chrome drip pan with a 4 mm lip (GE WB31M19/20 pans)
+    "coil": {"wire": 0.0045, "pitch": 0.014, "points": 32, "pan": 0.012, "over": 0.004, "lip": 0.004},
     "ring": 0.0008,  # an induction zone's printed ring (proud of the glass, massless in effect)
     # knobs: gas valve knobs 38-45 mm turning ~270 deg from off (push-to-turn); infinite switches 300 deg
     "knob": {"radius": 0.02, "stem": 0.004, "gas": math.radians(270), "electric": math.radians(300)},
@@ -80,17 +82,37 @@ def zones(xs, ys, n: int) -> list[tuple[float, float, float]]:
 
 
 def coil(x: float, y: float, z: float, r: float) -> list[g.Piece]:
-    """An electric coil element on its chrome drip pan: a flat spiral of sheathed wire (drawn, no collision:
-    the pan under it carries what stands on it) and the pan."""
+    """An electric coil element on its chrome drip pan (:data:`HOB` ``coil``): the pan (the collision: it carries
+    what stands on it) with a raised lip and its dark centre hole, a spiral of sheathed tube standing on a
+    three-armed support over it, its straight tail running out to the terminal block at the pan's back edge
+    (element, support and terminal drawn, no collision)."""
     c = HOB["coil"]
-    w = c["wire"]
-    t = np.linspace(0.0, 1.0, int(c["turns"] * c["points"]) + 1)
-    rr = 0.25 * r + t * (0.95 * r - 0.25 * r)
-    ang = 2 * math.pi * c["turns"] * t
-    zc = z + c["over"] + w
+    w, top = c["wire"], z + c["pan"] / 2
+    turns = max(3.0, math.floor(2 * 0.72 * r / c["pitch"]) / 2)  # as many half turns as the pitch lets
+    t = np.linspace(0.0, 1.0, int(turns * c["points"]) + 1)
+    rr = 0.2 * r + t * (0.92 * r - 0.2 * r)
+    ang = 2 * math.pi * turns * t
+    zc = top + c["over"] + w
     path = np.stack([x + rr * np.cos(ang), y + rr * np.sin(ang), np.full_like(t, zc)], axis=1)
-    return [g.disc([x, y, z + c["pan"] / 4], r + 0.01, c["pan"] / 2, "trim", None),
-            g.tube(path, w, "burner").replace(convex=())]
+    a = ang[-1]
+    out = np.array([math.cos(a), math.sin(a), 0.0])
+    tail = [path[-1], [x + (r + 0.004) * out[0], y + (r + 0.004) * out[1], zc], [x + (r + 0.014) * out[0],
+                                                                                   y + (r + 0.014) * out[1], top]]
+    pieces = [g.disc([x, y, z + c["pan"] / 4], r + 0.01, c["pan"] / 2, "trim", None),
+              g.shell([(r + 0.01, top - 0.001), (r + 0.014, top + c["lip"])], 0.003, "trim").translated((x, y, 0))
+              .replace(convex=()),
+              g.disc([x, y, top + 0.0003], 0.12 * r, 0.0006, "element", 24).replace(convex=()),
+              g.tube(path, w, "element").replace(convex=()), g.tube(tail, w, "element").replace(convex=())]
+    for k in range(3):  # the support arms under the coil
+        b = a + (k + 0.5) * 2 * math.pi / 3
+        d = np.array([math.cos(b), math.sin(b)])
+        lo, hi = 0.18 * r, 0.95 * r
+        arm = g.box(((hi - lo), 0.004, c["over"]), ((lo + hi) / 2, 0.0, 0.0), "burner")
+        m = np.eye(4)
+        m[:2, :2] = [[d[0], -d[1]], [d[1], d[0]]]
+        m[:3, 3] = (x, y, top + c["over"] / 2)
+        pieces.append(arm.transformed(m).replace(convex=()))
+    return pieces
 
 
 def induction_ring(x: float, y: float, z: float, r: float) -> list[g.Piece]:

@@ -195,9 +195,41 @@ def case(b: Board, material: str, pads: str) -> list[Piece]:
     return out
 
 
-def keycap(b: Board, k: Key, material: str) -> Assembly:
+LEGEND = (0.0035, 0.0005)  # m, a printed legend's glyph height and stroke (OEM caps: ~3.5 mm letters, top-left)
+GLYPHS = (((0.0, 0.0, 0.0, 1.0), (0.0, 1.0, 0.6, 1.0)),  # L
+          ((0.0, 0.0, 0.7, 0.0), (0.35, 0.0, 0.35, 1.0)),  # T
+          ((0.0, 0.0, 0.0, 1.0), (0.6, 0.0, 0.6, 1.0), (0.0, 0.5, 0.6, 0.5)),  # H
+          ((0.0, 0.0, 0.6, 0.0), (0.0, 0.0, 0.0, 1.0), (0.0, 0.5, 0.5, 0.5), (0.0, 1.0, 0.6, 1.0)))  # E
+"""Generic glyphs as strokes ((u0, v0, u1, v1) in glyph heights; u to the reader's right, v down the cap)."""
+
+
+def legend(k: Key, z: float, top: tuple[float, float], index: int, material: str) -> list[Piece]:
+    """A printed legend at a cap top's back-left corner (as the typist reads it: they sit at +x facing -x, so
+    their right is +y and down the cap is +x); none on a bar over 2.5 times as long as wide (the space bar).
+    Drawn."""
+    if max(k.dx, k.dy) > 2.5 * min(k.dx, k.dy):
+        return []
+    size, w = min(LEGEND[0], 0.38 * min(top)), LEGEND[1]  # smaller on a laptop's half-height function keys
+    x0, y0 = k.x - top[0] / 2 + 0.25 * top[0], k.y - top[1] / 2 + 0.22 * min(top)
+    v, f = [], []
+    for u0, v0, u1, v1 in GLYPHS[index % len(GLYPHS)]:
+        a = np.array([x0 + v0 * size, y0 + u0 * size])
+        c = np.array([x0 + v1 * size, y0 + u1 * size])
+        d = c - a
+        n = np.array([-d[1], d[0]]) / max(float(np.hypot(*d)), 1e-9) * w / 2
+        ext = d / max(float(np.hypot(*d)), 1e-9) * w / 2
+        quad = [a - ext - n, c + ext - n, c + ext + n, a - ext + n]
+        base = len(v)
+        v += [(q[0], q[1], z) for q in quad] + [(q[0], q[1], z + 6e-5) for q in quad]
+        f += [[base + i for i in tri] for tri in ((4, 5, 6), (4, 6, 7), (0, 2, 1), (0, 3, 2), (0, 1, 5), (0, 5, 4),
+                                                   (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6), (3, 0, 4), (3, 4, 7))]
+    return [Piece(np.array(v, float), np.array(f, np.int64), material, [], "legend")]
+
+
+def keycap(b: Board, k: Key, material: str, marks: str | None = None, index: int = 0) -> Assembly:
     """A keycap pressed straight down (anchor ``press``, z down): a tapered cap (its top ``cap[2]`` narrower than
-    its foot on a full-size pitch) standing its travel and ``RISE`` above the well's rim."""
+    its foot on a full-size pitch) standing its travel and ``RISE`` above the well's rim; its printed legend
+    in ``marks`` where given."""
     _, foot, top, h, _ = b.cap
     shrink = (foot - top) / 2
     z0 = b.cap_z
@@ -208,8 +240,10 @@ def keycap(b: Board, k: Key, material: str) -> Assembly:
     piece = _hull(lo + hi, material).replace(wall=CAP_WALL if h > 0.004 else 0.0)
     grasp = Grasp.make((k.x, k.y, z0 + h), (0, 0, -1), (0, 1, 0) if k.dy <= k.dx else (1, 0, 0),
                        min(k.dx, k.dy) - 2 * shrink, h / 2)
-    return Assembly.single("key", [piece.with_grasps(grasp)],
-                           {"press": Frame.at((k.x, k.y, z0 + h), z=(0, 0, -1), x=(1, 0, 0))})
+    pieces = [piece.with_grasps(grasp)]
+    if marks:
+        pieces += legend(k, z0 + h, (k.dx - 2 * shrink, k.dy - 2 * shrink), index, marks)
+    return Assembly.single("key", pieces, {"press": Frame.at((k.x, k.y, z0 + h), z=(0, 0, -1), x=(1, 0, 0))})
 
 
 @dataclass(frozen=True)

@@ -150,10 +150,10 @@ def _blade_outline(length: float, height: float, point: str) -> np.ndarray:
     return np.array(tang + spine + tip + edge)
 
 
-def tool(f: Folding, kind: str, k: int, steel: str, point: str = "clip") -> Assembly:
+def tool(f: Folding, kind: str, k: int, steel: str, point: str = "clip", polish: str | None = None) -> Assembly:
     """Tool ``kind`` in layer ``k``, folded into the handle about its pivot: a blade lies from the front pivot
     back toward -X, a back-pivot tool from the back pivot toward +X, each with its edge or hook toward the
-    open side (-Y). Anchor ``pivot`` (z: the opening sense)."""
+    open side (-Y); a blade's ground bevel in ``polish`` where given. Anchor ``pivot`` (z: the opening sense)."""
     share, hs, where = TOOLS[kind]
     d = f.design
     length = share * f.length
@@ -162,7 +162,7 @@ def tool(f: Folding, kind: str, k: int, steel: str, point: str = "clip") -> Asse
     zc = (z0 + z1) / 2
     if kind in ("large_blade", "small_blade", "saw", "spey_blade"):
         plan = _blade_outline(length, h, {"large_blade": point, "small_blade": "drop"}.get(kind, "sheep"))
-        pieces = [_ground(plan, z0, z1, zc, steel, kind)]
+        pieces = _ground(plan, z0, z1, zc, steel, kind, polish)
         if kind == "saw":
             pieces += _teeth(length, h, z0, z1, steel)
     else:
@@ -178,14 +178,40 @@ def tool(f: Folding, kind: str, k: int, steel: str, point: str = "clip") -> Asse
     return Assembly.single(LABELS[kind], pieces).placed(fold).with_anchors(pivot=Frame.at((*piv, 0.0), z=axis))
 
 
-def _ground(plan: np.ndarray, z0: float, z1: float, zc: float, steel: str, name: str) -> g.Piece:
-    """A flat-ground blade: full thickness at the spine, down to a 0.3 mm edge on -Y."""
+def _clip_below(plan: np.ndarray, y0: float, below: bool) -> np.ndarray:
+    """The part of the convex plan below (or above) the line y = ``y0``, with the points where it crosses."""
+    out = []
+    for a, b in zip(plan, np.roll(plan, -1, 0), strict=True):
+        if (a[1] <= y0) == below:
+            out.append(a)
+        if (a[1] - y0) * (b[1] - y0) < 0:
+            out.append(a + (y0 - a[1]) / (b[1] - a[1]) * (b - a))
+    return np.array(out)
+
+
+def _ground(plan: np.ndarray, z0: float, z1: float, zc: float, steel: str, name: str,
+            polish: str | None = None, line: float | None = None) -> list[g.Piece]:
+    """A flat-ground blade: full thickness from the spine to the grind line, ground down from it to a
+    0.3 mm edge on -Y. With ``polish`` the grind is its own polished band (a satin-finished flat and a
+    bright ground bevel, as Victorinox and Opinel blades are sold); the blade collides as one hull. The
+    grind starts at y = ``line`` (default: a tenth of the blade's height below its middle)."""
     y = plan[:, 1]
-    edge = y < -0.2 * (y.max() - y.min()) / 2
+    line = -0.2 * (y.max() - y.min()) / 2 if line is None else line
+    edge = y < line
     pts = []
     for (x, yy), sharp in zip(plan, edge, strict=True):
         pts += [(x, yy, zc - 0.00015), (x, yy, zc + 0.00015)] if sharp else [(x, yy, z0), (x, yy, z1)]
-    return hull(pts, steel, name)
+    whole = hull(pts, steel, name)
+    if polish is None:
+        return [whole]
+    flat = _clip_below(plan, line, False)
+    below = _clip_below(plan, line, True)
+    on_line = np.isclose(below[:, 1], line)
+    grind = [(x, yy, z) for (x, yy), full in zip(below, on_line, strict=True)
+             for z in ((z0, z1) if full else (zc - 0.00015, zc + 0.00015))]
+    # the flat overlaps the grind by a hair along the line, so no seam opens between the two meshes
+    return [hull([(x, yy, z) for x, yy in flat for z in (z0, z1)], steel, name).replace(convex=whole.convex),
+            hull(grind, polish, "grind").replace(convex=())]
 
 
 def _teeth(length: float, h: float, z0: float, z1: float, steel: str) -> list[g.Piece]:
@@ -271,8 +297,23 @@ def _utility_plan(u: Utility) -> np.ndarray:
     if u.design.snap:
         return np.array([(0.0, -h / 2), (0.97 * L, -h / 2), (L, yb - 0.002), (L, h / 2 - 0.002), (0.97 * L, h / 2),
                          (0.0, h / 2)])
-    return np.array([(0.0, -0.35 * h), (0.04 * L, -h / 2), (0.86 * L, -h / 2), (L, yb - 0.002), (L, 0.18 * h),
+    return np.array([(0.0, -0.35 * h), (0.04 * L, -h / 2), (0.86 * L, -h / 2), (L, yb - 0.002), (L, _nose_top(u)),
                      (0.8 * L, h / 2), (0.05 * L, h / 2), (0.0, 0.4 * h)])
+
+
+def _nose_top(u: Utility) -> float:
+    """y of the nose's front top corner: 18 % of the height over the middle, or higher where the blade,
+    pushed out its full travel, would otherwise stand out through the nose's sloping top edge (the blade
+    leaves only through the slot in the nose's front)."""
+    L, h = u.length, u.design.height
+    x0, need = 0.8 * L, 0.18 * h
+    blade = _blade_plan(u) + [u.design.travel, 0.0]
+    for (xa, ya), (xb, yb) in zip(blade, np.roll(blade, -1, 0), strict=True):
+        for t in np.linspace(0.0, 1.0, 9):  # along each edge of the blade's plan, where it is inside the nose
+            x, y = xa + t * (xb - xa), ya + t * (yb - ya)
+            if x0 < x <= L:
+                need = max(need, h / 2 + (y + 0.0015 - h / 2) * (L - x0) / (x - x0))
+    return min(need, h / 2 - 0.002)
 
 
 def utility_handle(u: Utility, body: str, grip: str) -> Assembly:
@@ -328,7 +369,17 @@ def _carrier_front(u: Utility) -> float:
     return u.length - 0.004 - 0.55 * u.design.blade[0]
 
 
-def blade_carrier(u: Utility, steel: str, slider: str) -> Assembly:
+def _blade_plan(u: Utility) -> np.ndarray:
+    """The blade's plan, retracted: a snap-off strip's end snapped square to a point, or a trapezoid blade
+    with its front corner the point, its edge along the blade line."""
+    bl, bh, _ = u.design.blade
+    tip, yb = u.length - 0.004, blade_line(u)
+    if u.design.snap:
+        return np.array([(tip - bl, yb), (tip, yb), (tip - bh * 0.6, yb + bh), (tip - bl, yb + bh)])
+    return np.array([(tip - bl, yb + 0.2 * bh), (tip, yb), (tip - 0.3 * bl, yb + bh), (tip - 0.75 * bl, yb + bh)])
+
+
+def blade_carrier(u: Utility, steel: str, slider: str, polish: str | None = None) -> Assembly:
     """The carrier with its blade, retracted: the blade's tip just inside the nose, the carrier behind it in
     the channel and its thumb slider standing out of the slot along the spine. Anchor ``slide`` (z: +X)."""
     d, L, h = u.design, u.length, u.design.height
@@ -337,11 +388,9 @@ def blade_carrier(u: Utility, steel: str, slider: str) -> Assembly:
     zc = (z0 + z1) / 2
     tip = L - 0.004
     yb = blade_line(u)  # the edge's line, level with the nose slot's lower lip
-    if d.snap:  # a long strip, its end snapped off square to a point
-        plan = np.array([(tip - bl, yb), (tip, yb), (tip - bh * 0.6, yb + bh), (tip - bl, yb + bh)])
-    else:  # a trapezoid blade, its front corner the point
-        plan = np.array([(tip - bl, yb + 0.2 * bh), (tip, yb), (tip - 0.3 * bl, yb + bh), (tip - 0.75 * bl, yb + bh)])
-    pieces = [_plate(plan, zc - bt / 2, zc + bt / 2, steel, "blade")]
+    plan = _blade_plan(u)
+    # the edge bevel of a utility blade is a bright band ~2 mm wide along its edge (Stanley 1992, Olfa LB)
+    pieces = _ground(plan, zc - bt / 2, zc + bt / 2, zc, steel, "blade", polish, line=yb + 0.12 * bh)
     if d.snap:  # the snap lines scored across the strip (drawn: the blade's hull collides)
         for x in np.arange(tip - bh * 0.6 - d.snap, tip - bl + 0.005, -d.snap):
             line = [(x + dx + f * 0.6 * bh, yb + f * bh, z) for dx in (0.0, 0.0004) for f in (0.05, 0.95)

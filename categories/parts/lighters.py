@@ -88,6 +88,7 @@ DISPOSABLES = {
 
 TANK_WALL = 0.0016  # m, a disposable's moulded tank (1.5-2 mm acetal: a BIC J26 weighs ~16 g empty, ~21 g filled)
 LEVER_PRESS = math.radians(12)  # the fork's stroke: its thumb pad goes down 2-3 mm to open the valve
+TANK_CORNER = 0.42  # a disposable's tank plan corner radius / its thickness (the BIC J26's rounded ends)
 HOOD = 0.016  # m, the hood's height over the body's shoulder (BIC J26: 80 mm overall on a 64 mm tank)
 
 
@@ -97,6 +98,16 @@ def disposable(size: float) -> Disposable:
         (a.width, a.thick, a.height, a.wheel), (b.width, b.thick, b.height, b.wheel), strict=True)))
 
 
+def _hood_front(d: Disposable) -> float:
+    """x of the hood's front (and, mirrored, its cheeks' back): where the tank's (faceted) plan meets the
+    cheeks' outer faces, 0.3 mm inside its sides."""
+    y = d.thick / 2 - 0.0006 + SHEET / 2
+    o = plan(d.width, d.thick, TANK_CORNER * d.thick)
+    xs = [a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) for a, b in zip(o, np.roll(o, -1, 0), strict=True)
+          if (a[1] - y) * (b[1] - y) < 0]
+    return max(xs) - 1e-5
+
+
 def _pivot(d: Disposable) -> tuple[float, float]:
     """x, z of the fork's pivot: under the wheel, behind the fork's centre of mass (its prongs reach forward)."""
     return -0.3 * d.width, d.height + 0.0035
@@ -104,7 +115,7 @@ def _pivot(d: Disposable) -> tuple[float, float]:
 
 def _burner(d: Disposable) -> tuple[float, float]:
     """x and radius of the burner nozzle, under the chimney's flame hole."""
-    return 0.5 * (0.12 * d.width + d.width / 2 - 0.0006), 0.0016
+    return 0.5 * (0.12 * d.width + _hood_front(d)), 0.0016
 
 
 def _wheel_at(d: Disposable) -> np.ndarray:
@@ -117,21 +128,22 @@ def disposable_body(d: Disposable, body: str, steel: str, dark: str) -> Assembly
     axle, a chimney over the burner with its flame hole; anchors ``wheel`` (its axle, +Y: a thumb rolls the
     top back) and ``lever`` (the fork's pivot, -Y: +rotation presses its thumb pad down)."""
     w, t, h = d.width, d.thick, d.height
-    pieces = [prism(plan(w, t, 0.42 * t), 0.0, h, body, "tank", inset=0.0015).replace(wall=TANK_WALL)]
+    pieces = [prism(plan(w, t, TANK_CORNER * t), 0.0, h, body, "tank", inset=0.0015).replace(wall=TANK_WALL)]
     cheek_y = t / 2 - 0.0006
     c = _wheel_at(d)
+    front = _hood_front(d)
     # the cheeks stand full height round the chimney and drop behind it to just over the wheel's axle, so the
-    # wheel's top and the fork's pad stand free for the thumb
-    outline = [(w / 2 - 0.0006, h - 0.003), (w / 2 - 0.0006, h + HOOD), (0.05 * w, h + HOOD),
-               (-w / 2 + 0.0006, c[2] + 0.0015), (-w / 2 + 0.0006, h - 0.003)]
+    # wheel's top and the fork's pad stand free for the thumb; crimped 1.5 mm over the tank's shoulder, their
+    # ends where the tank's rounded corners meet them (the hood never overhangs the tank)
+    outline = [(front, h - 0.0015), (front, h + HOOD), (0.05 * w, h + HOOD),
+               (-front, c[2] + 0.0015), (-front, h - 0.0015)]
     for s in (-1, 1):
         pieces.append(hull([(x, s * cheek_y + dy, z) for x, z in outline for dy in (-SHEET / 2, SHEET / 2)], steel,
                            "cheek"))
-    front = w / 2 - 0.0006
     chimney = (0.12 * w, front)
     pieces.append(g.box_between((chimney[0], -cheek_y, h + HOOD - SHEET), (front, cheek_y, h + HOOD), steel,
                                 name="chimney_top"))
-    pieces.append(g.box_between((front - SHEET, -cheek_y, h - 0.003), (front, cheek_y, h + HOOD), steel,
+    pieces.append(g.box_between((front - SHEET, -cheek_y, h - 0.0015), (front, cheek_y, h + HOOD), steel,
                                 name="chimney_front"))
     hole, burner_r = _burner(d)
     pieces.append(g.cylinder((hole, 0.0, h + HOOD - 0.0003), (hole, 0.0, h + HOOD + 0.00005), 0.0018, dark, 16,
@@ -167,7 +179,8 @@ def fork(d: Disposable, plastic: str) -> Assembly:
     pad = hull([(x, y, z) for x in (x0, x0 + 0.0035) for y in (-half, half) for z in (z0, top + 0.0012)], plastic,
                "thumb_pad")
     inner = burner[1] + PLAY
-    prongs = [hull([(x, s * y, z) for x in (x1 - 0.001, w / 2 - 0.0025) for y in (inner, half)
+    prongs = [hull([(x, s * y, z) for x in (x1 - 0.001, min(w / 2 - 0.0025, _hood_front(d) - SHEET - PLAY))
+                    for y in (inner, half)
                     for z in (z0, z0 + 0.0022)], plastic, "prong") for s in (-1, 1)]
     return Assembly.single("lever", [arm, pad, *prongs], {"pivot": Frame.at((x_p, 0.0, z_p), z=(0, -1, 0))})
 
@@ -273,7 +286,9 @@ def windproof_body(z: Windproof, case: str, steel: str, dark: str) -> Assembly:
                                          "chimney_hole").replace(convex=()))
     hinge = _hinge_axis(z)
     pieces += _knuckles(z, False, case)
-    wheel = np.array([cx - 0.5 * cw + z.wheel + 0.0004, 0.0, top - z.wheel + 0.0003])  # level with the chimney
+    # the wheel's knurl stands ~1.3 mm over the chimney's top (a thumb rolls it there; Zippo 200 insert), still
+    # 0.6 mm under the closed lid
+    wheel = np.array([cx - 0.5 * cw + z.wheel + 0.0004, 0.0, top - z.wheel + 0.0013])
     pieces.append(g.cylinder(wheel - (0, ct / 2, 0), wheel + (0, ct / 2, 0), 0.0008, steel, 12,
                              "axle_rivet").replace(convex=()))
     anchors = {"lid": Frame.at((hinge[0], 0.0, hinge[1]), z=(0, -1, 0)), "wheel": Frame.at(wheel, z=(0, 1, 0))}

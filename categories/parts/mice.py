@@ -95,6 +95,7 @@ class Mouse:
     H: float
     peak: float
     squareness: float
+    taper: float = 0.0  # 0: an office mouse's even plan; 1: an egg, narrowing to its nose (Logitech M185, M330)
 
     # -- the shell's shape -------------------------------------------------------------------------------
     def x(self, t):
@@ -108,7 +109,8 @@ class Mouse:
 
     def half(self, t):
         """Half-width at ``t``: widest behind the middle, a waist where the thumb lies, rounded ends."""
-        w = np.interp(t, (0.0, 0.3, 0.58, 0.85, 1.0), (0.9, 1.0, 0.93, 0.96, 0.9))
+        even, egg = np.array((0.9, 1.0, 0.93, 0.96, 0.9)), np.array((0.93, 1.0, 0.9, 0.84, 0.74))
+        w = np.interp(t, (0.0, 0.3, 0.58, 0.85, 1.0), even + self.taper * (egg - even))
         return 0.5 * self.W * w * self.end(t)
 
     def height(self, t):
@@ -158,13 +160,15 @@ class Mouse:
         return float(self.ztop(t, self.u_edge(t))) - SHELL - TIP_TRAVEL - UNDER
 
 
-def mouse(design: str, size: float, width: float, height: float, peak: float) -> Mouse:
-    """Sizes from the parameters, each a fraction (0..1) of its design's sourced range; ``peak`` moves the hump."""
+def mouse(design: str, size: float, width: float, height: float, peak: float, taper: float = 0.0) -> Mouse:
+    """Sizes from the parameters, each a fraction (0..1) of its design's sourced range; ``peak`` moves the hump,
+    ``taper`` (0..1) narrows the front half from an even plan to an egg's."""
     d = MICE[design]
     def lerp(r, f):
         return r[0] + f * (r[1] - r[0])
 
-    return Mouse(d, lerp(d.length, size), lerp(d.width, width), lerp(d.height, height), d.peak + peak, d.square)
+    return Mouse(d, lerp(d.length, size), lerp(d.width, width), lerp(d.height, height), d.peak + peak, d.square,
+                 taper)
 
 
 # -- meshes ------------------------------------------------------------------------------------------------
@@ -224,7 +228,8 @@ def _loft(rings: np.ndarray, material: str, name: str, convex, cap_strip: bool =
             faces += [(a * k + i, a * k + j, (a + 1) * k + j), (a * k + i, (a + 1) * k + j, (a + 1) * k + i)]
     if cap_strip:
         h = k // 2
-        for base, flip in ((0, True), ((s - 1) * k, False)):
+        # a cap runs its ring edges against the side walls': the first ring's forwards, the last's backwards
+        for base, flip in ((0, False), ((s - 1) * k, True)):
             for i in range(h - 1):
                 quad = [(base + i, base + k - 1 - i, base + i + 1), (base + i + 1, base + k - 1 - i, base + k - 2 - i)]
                 faces += [q[::-1] if flip else q for q in quad]

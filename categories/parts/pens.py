@@ -62,7 +62,10 @@ PENS = {
 }
 """Designs -> sizes (maker listings named beside each)."""
 
-CLIP = (0.045, 0.0036, 0.0009, 0.0012)  # clip length, width, thickness, stand-off (m): Pilot G2 / BIC Cristal clips
+# clip length, width, thickness, stand-off at the root (m): Pilot G2 / Parker Jotter clips stand 1.5-2 mm off the
+# barrel at their root and touch it only at the bead
+CLIP = (0.045, 0.0036, 0.0009, 0.0017)
+CLIP_BEND = 0.82  # share of the clip's length that runs straight before it bends down to its bead
 SLIDER = (0.018, 0.0034, 0.0016, 0.0021)  # slider tab length, width, height, hook height (m): BIC 4 Colours
 SLIDER_AT = -0.001  # m, the tabs' rear ends from the pen's rear end: their hooks stand 1 mm proud of it
 SIDES = {"round": None, "hex": 6}  # a barrel's cross-section: round or a hexagonal stick (BIC Cristal)
@@ -131,18 +134,23 @@ def _nose(p: Pen, material: str, r0: float) -> g.Piece:
 
 def clip(p: Pen, z0: float, r: float, material: str, forward: bool = True) -> list[g.Piece]:
     """A pocket clip on +x: its root block on the barrel at ``z0`` (radius ``r``), its strip running
-    ``forward`` (+z) or back, standing off the barrel and closing on it at a bead."""
+    ``forward`` (+z) or back, standing off the barrel along most of its length (the gap a pocket's cloth
+    goes in) and bent down at its end to the bead that presses on the barrel."""
     length, width, thick, off = CLIP
     s = 1.0 if forward else -1.0
-    z1 = z0 + s * length
+    z1, zb = z0 + s * length, z0 + s * CLIP_BEND * length
     w = width / 2
     root = hull([(x, y, z) for x in (r - 0.4 * WALL, r + off + thick) for y in (-w, w)
                  for z in (z0, z0 + s * 0.006)], material, "clip_root")
+    # the strip closes on the barrel by a fifth of its stand-off over its straight run, then bends down
     strip = hull([(x, y, z) for y in (-w, w) for x, z in ((r + off, z0), (r + off + thick, z0),
-                                                          (r + 0.25 * off, z1), (r + 0.25 * off + thick, z1))],
+                                                          (r + 0.8 * off, zb), (r + 0.8 * off + thick, zb))],
                  material, "clip")
-    bead = g.sphere((r + 0.25 * off + 0.5 * thick, 0.0, z1), 0.75 * thick, material, name="clip_bead")
-    return [root, strip, bead]
+    bend = hull([(x, y, z) for y in (-0.9 * w, 0.9 * w) for x, z in (
+        (r + 0.8 * off, zb), (r + 0.8 * off + thick, zb), (r + 0.1 * off, z1), (r + 0.1 * off + thick, z1))],
+        material, "clip_end")
+    bead = g.sphere((r + 0.1 * off + 0.5 * thick, 0.0, z1), 0.75 * thick, material, name="clip_bead")
+    return [root, strip, bend, bead]
 
 
 # -- click pen ----------------------------------------------------------------------------------------

@@ -141,8 +141,19 @@ def _zone(cav, xb1: float, y_edge: float) -> Zone:
     return Zone(cav, xs, abs(cav[2] - y_edge) if y_edge < 0 else abs(y_edge - cav[3]))
 
 
-def _mullion(lo, hi) -> g.Piece:
-    return g.box_between(lo, hi, "body").replace(sheet=A.FRIDGE_SHEET)
+def _mullion(lo, hi, axis: int) -> list[g.Piece]:
+    """An insulated mullion between ``lo`` and ``hi``: a steel-fronted foam core whose two faces towards the
+    zones (across ``axis``: 1 a side-by-side's, 2 a stacked one's) are the liner's moulded plastic, as in
+    every real cabinet (the liner is one white or light grey shell around each zone, the mullion included)."""
+    L = A.LINER
+    lo_in, hi_in = list(lo), list(hi)
+    lo_in[axis] += L
+    hi_in[axis] -= L
+    a_hi, b_lo = list(hi), list(lo)
+    a_hi[axis] = lo[axis] + L
+    b_lo[axis] = hi[axis] - L
+    return [g.box_between(lo_in, hi_in, "body").replace(sheet=A.FRIDGE_SHEET),
+            g.box_between(lo, a_hi, "liner"), g.box_between(b_lo, hi, "liner")]
 
 
 def cabinet(design: str, W, D, H, wall, ft, feet, kick, share: float) -> Cabinet:
@@ -159,7 +170,7 @@ def cabinet(design: str, W, D, H, wall, ft, feet, kick, share: float) -> Cabinet
     x0 = xf - ft
     if design == "side_by_side":
         ys = y0 + share * W
-        pieces.append(_mullion([cav[0], ys - m / 2, cav[4]], [xb1, ys + m / 2, cav[5]]))
+        pieces += _mullion([cav[0], ys - m / 2, cav[4]], [xb1, ys + m / 2, cav[5]], 1)
         gc = _meeting_gap(ft, ys - y0)
         fz, fr = (*cav[:3], ys - m / 2, *cav[4:]), (*cav[:2], ys + m / 2, *cav[3:])
         doors = {"freezer_door": Door((x0, xf, y0, ys - gc / 2, zk + gap, H), True, (fz[2], fz[4], fz[3], fz[5])),
@@ -167,7 +178,7 @@ def cabinet(design: str, W, D, H, wall, ft, feet, kick, share: float) -> Cabinet
         return Cabinet(pieces, W, _zone(fr, xb1, y1), _zone(fz, xb1, y0), doors)
     top = design == "top_freezer"
     zs = cav[5] - share * (cav[5] - cav[4]) if top else cav[4] + share * (cav[5] - cav[4])
-    pieces.append(_mullion([cav[0], cav[2], zs - m / 2], [xb1, cav[3], zs + m / 2]))
+    pieces += _mullion([cav[0], cav[2], zs - m / 2], [xb1, cav[3], zs + m / 2], 2)
     low, high = (*cav[:5], zs - m / 2), (*cav[:4], zs + m / 2, cav[5])
     fr, fz = (low, high) if top else (high, low)
     lower, upper = (x0, xf, y0, y1, zk + gap, zs - gap / 2), (x0, xf, y0, y1, zs + gap / 2, H)

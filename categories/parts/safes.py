@@ -83,7 +83,7 @@ def body(width: float, depth: float, height: float, b: Build, material: str) -> 
               g.box_between((-hx + t, hy - t, 0), (hx, hy, height), material),
               g.box_between((-hx + t, -hy + t, 0), (hx, hy - t, t), material),
               g.box_between((-hx + t, -hy + t, height - t), (hx, hy - t, height), material)]
-    pieces = [pc.replace(sheet=b.sheet) for pc in pieces]
+    pieces = [pc.replace(sheet=b.sheet) for pc in pieces] + lining(hx, hy, height, t)
     z_drawer = height - t - DRAWER["clearance"] - DRAWER["height"] / 2
     anchors = {"hinge_neg": Frame.at((hx, -hy, 0), x=(1, 0, 0), z=(0, 0, -1)),
                "hinge_pos": Frame.at((hx, hy, 0), x=(1, 0, 0), z=(0, 0, 1)),
@@ -91,6 +91,37 @@ def body(width: float, depth: float, height: float, b: Build, material: str) -> 
                "floor": Frame.at((0, 0, t))}
     supports = {f"foot_{i}": (x, y, 0) for i, (x, y) in enumerate(((-hx, -hy), (-hx, hy), (hx, -hy), (hx, hy)))}
     return Assembly.single("body", pieces, anchors, supports)
+
+
+LINING = 0.003  # m, the felt / carpet lining glued inside a home safe or gun cabinet (SentrySafe, Stack-On photos)
+# A gun cabinet's barrel rest: a felt-covered comb across the back at ~60 % of the height, its slots ~5-6 cm apart
+# (Stack-On GCB-8: 8 guns in 55 cm; 5-14 gun cabinets), teeth 5-6 cm deep
+COMB = dict(at=0.6, depth=0.065, bar=0.02, tooth=0.016, pitch=0.055, height=0.025)
+
+
+def lining(hx: float, hy: float, height: float, t: float) -> list[g.Piece]:
+    """The felt lining on the floor, back and sides inside the walls (drawn, no collision: it is 3 mm of cloth)."""
+    a, L = t, LINING
+    x0, x1, y0, y1, z0, z1 = -hx + a, hx - 0.002, -hy + a, hy - a, a, height - a
+    return [g.box_between(lo, hi, "lining").replace(convex=()) for lo, hi in (
+        ((x0, y0, z0), (x1, y1, z0 + L)), ((x0, y0, z0 + L), (x0 + L, y1, z1)),
+        ((x0 + L, y0, z0 + L), (x1, y0 + L, z1)), ((x0 + L, y1 - L, z0 + L), (x1, y1, z1)))]
+
+
+def barrel_comb(width: float, depth: float, height: float, t: float) -> list[g.Piece]:
+    """A gun cabinet's barrel rest (:data:`COMB`): a bar across the back wall and the teeth between the slots
+    the barrels lean into (drawn, no collision)."""
+    c = COMB
+    x0, y0, y1 = -depth / 2 + t + LINING, -width / 2 + t + LINING, width / 2 - t - LINING
+    z0 = c["at"] * height
+    z1 = z0 + c["height"]
+    pieces = [g.box_between((x0, y0, z0), (x0 + c["bar"], y1, z1), "lining")]
+    n = max(2, int((y1 - y0) / c["pitch"]))
+    for k in range(n + 1):
+        y = y0 + k * (y1 - y0) / n
+        ya, yb = max(y0, y - c["tooth"] / 2), min(y1, y + c["tooth"] / 2)
+        pieces.append(g.box_between((x0 + c["bar"], ya, z0), (x0 + c["depth"], yb, z1), "lining", bevel=0.004))
+    return [pc.replace(convex=()) for pc in pieces]
 
 
 def keypad_cutouts(at: tuple[float, float]) -> dict[str, Cutout]:

@@ -208,13 +208,14 @@ def swivel_cover(u: Usb, steel: str) -> Assembly:
     return Assembly.single("cover", pieces, {"pivot": Frame.at((r, 0.0, u.mid), z=(0, 0, 1))})
 
 
-def capped_body(u: Usb, body: str, steel: str, insert: str) -> Assembly:
-    """A capped drive's body: the grip, the neck the cap's skirt slides over, the plug; anchor ``pull`` (+x)."""
+def capped_body(u: Usb, body: str, steel: str, insert: str, neck: str | None = None) -> Assembly:
+    """A capped drive's body: the grip, the neck the cap's skirt slides over (moulded in the ``neck`` colour,
+    the cap's on two-tone drives), the plug; anchor ``pull`` (+x)."""
     inset = MIN_HULL_WIDTH + GAP  # inside the cap's walls (their collision is the core's thinnest hull)
     grip = u.length - NECK
     pieces = [slab(0.0, grip, u.width, u.thick, 0.0, u.edge, u.corner, 0.0008, body, "body"),
               slab(grip - 0.001, u.length, u.width - 2 * inset, u.thick - LEAF_CLEAR - 2 * inset, LEAF_CLEAR + inset,
-                   max(u.edge - inset, 0.0005), 0.0, 0.0005, body, "neck")]
+                   max(u.edge - inset, 0.0005), 0.0, 0.0005, neck or body, "neck")]
     pieces += plug(u, u.length, steel, insert)
     pieces.append(_lanyard_eye(u, body))
     return Assembly.single("body", pieces, {"pull": Frame.at((u.tip, 0.0, u.mid), z=(1, 0, 0))})

@@ -82,6 +82,10 @@ DRUM = dict(radius=0.235, sheet=0.0006, lifters=3, from_back=0.1)  # 46-48 cm st
 DRAWER = dict(width=0.22, depth=0.40, height=0.075, lip=0.008, wall=0.003, sheet=0.002, pull=0.72, side=0.03)
 # m: 20-24 cm wide detergent drawers pulling out ~30 cm to their stop (Bosch, Samsung, LG manuals' pictures);
 # moulded PP 2-3 mm (massed so)
+COMPARTMENTS = dict(split=(0.5, 0.75), wall=0.85, siphon=(0.009, 0.025), siphon_back=0.04)
+# a drawer's main-wash compartment takes half its width, pre-wash and softener a quarter each, their walls 85 %
+# of its height; the softener's siphon cap, 18 mm across and 25 mm tall, stands near its back (Bosch Serie 4,
+# Samsung WW90 drawers in their manuals)
 FLAP = dict(width=0.16, height=0.12, side=0.03, above=0.02, recess=0.045)  # m, the service flap bottom right
 FLAP_OPENS = math.radians(90)  # it drops forward to flat
 FILTER = controls.Dial(radius=0.03, stem=0.01, style="ridge", turns=math.pi)  # a drain-pump filter cap with a
@@ -358,7 +362,24 @@ def detergent_drawer() -> Assembly:
     size = LinerSize(d["width"], d["depth"], d["height"], d["wall"], d["sheet"], d["lip"], d["wall"])
     tray = liner(size, "drawer", "drawer", label="drawer")
     grip = g.box_between((0.0, -0.35 * d["width"], 0.004), (0.008, 0.35 * d["width"], 0.016), "handle", bevel=0.003)
-    return tray.with_pieces(tray.root, [grip])
+    return tray.with_pieces(tray.root, [grip, *compartments(size)])
+
+
+def compartments(size: LinerSize) -> list[g.Piece]:
+    """The drawer's three compartments (:data:`COMPARTMENTS`): main wash, pre-wash and softener split by two
+    moulded walls running front to back, the softener's siphon cap standing in its compartment."""
+    c, t = COMPARTMENTS, size.wall
+    x0, xf, y0, h = -size.depth + t, -size.front, -size.width / 2 + t, c["wall"] * size.height
+    inner = size.width - 2 * t
+    pieces = []
+    for share in c["split"]:
+        y = y0 + share * inner
+        pieces.append(g.box_between((x0, y - t / 2, t), (xf, y + t / 2, h), "drawer").replace(sheet=size.sheet))
+    ys = y0 + (c["split"][-1] + 1.0) / 2 * inner  # the softener compartment's middle
+    xs = x0 + c["siphon_back"]
+    r, ht = c["siphon"]
+    pieces.append(g.cylinder((xs, ys, t), (xs, ys, t + ht), r, "knob", 24))
+    return pieces
 
 
 def filter_cap() -> Assembly:

@@ -361,9 +361,11 @@ class _Clearance:
     def give_way(self, j, value: float, hit: str, q: dict[str, float]) -> bool:
         """Make ``j``'s closing from the all-open state ``q``, stopped at ``value`` by link
         ``hit``, pass: a part inside ``j`` (it ``requires_open`` ``j``) is closed first
-        (``requires_closed``); otherwise the blocking joint's upper limit or ``j``'s own is
-        shortened, whichever keeps the larger share of its range, if that share is at least
-        :data:`KEEP`; otherwise ``j`` ``requires_closed`` the blocking part. Where no open joint
+        (``requires_closed``); a gate of ``j`` (in its ``requires_open`` chain) is neither closed
+        first nor shortened, ``j``'s own upper limit is; otherwise the blocking joint's upper limit
+        or ``j``'s own is shortened, whichever keeps the larger share of its range, if that share is
+        at least :data:`KEEP` (a gate only as far as the parts behind it still pass:
+        :meth:`riders_pass`); otherwise ``j`` ``requires_closed`` the blocking part. Where no open joint
         put ``hit`` there, ``j``'s upper limit is shortened if that helps. Returns whether
         anything changed (False: nothing in the core's reach resolves it)."""
         k = self.blocker(j, hit, q)
@@ -374,7 +376,15 @@ class _Clearance:
             self.closed[j.name].add(k.group)
             return True
         own = self.own_share(j, q)
+        if k is not None and k.name in self.gates.get(j.name, ()):
+            # j moves only with k open: k can neither be closed first nor give up what j needs
+            if own <= 0:
+                return False
+            self.shorten(j, 1, own * self.limits[j.name][1], hit)
+            return True
         other = self.spare(j, k, q) if k is not None else 0.0
+        if other > 0 and k.name in self.gate_of_someone and not self.riders_pass(k, other):
+            other = 0.0  # a gate keeps the opening the parts behind it pass through
         if k is not None and max(own, other) < KEEP:
             self.closed[j.name].add(k.group)
         elif k is not None and other >= own:
@@ -384,6 +394,20 @@ class _Clearance:
             self.shorten(j, 1, own * self.limits[j.name][1], hit)
         else:
             return False
+        return True
+
+    def riders_pass(self, k, share: float) -> bool:
+        """Whether every joint that ``requires_open`` ``k`` (through its gate chain) still sweeps its whole
+        range from rest, its gates open, with ``k`` open only ``share`` of its upper limit: an inner
+        drawer behind a door stopped short of its full swing must still clear the door."""
+        hi = self.limits[k.name][1]
+        for name, gates in self.gates.items():
+            if k.name not in gates:
+                continue
+            q = {g: self.limits[g][1] for g in gates}
+            q[k.name] = share * hi
+            if any(side == 1 for side, _, _ in self.blocks(self.by_joint[name], q)):
+                return False
         return True
 
     def inner_open(self, j, q: dict[str, float]):
@@ -432,6 +456,8 @@ class _Clearance:
                 if attempt < 16 or k is None:
                     if not self.give_way(j, *found, q):
                         break  # left as it is: the validators' reach reports it
+                elif k.name in self.gates.get(j.name, ()):
+                    break  # never its own gate closed first: the validators' reach reports it
                 else:  # (never seen) an order that does not settle: the parts in the way close first
                     self.closed[j.name].add(k.group)
                 changed = True
@@ -469,11 +495,13 @@ def clearance_limits(obj) -> dict[str, tuple[float, float]]:
        any one and open it again. A start overlapping a link the moving part is apart from at rest
        stops the sweep where it starts (:meth:`_Clearance.start_hit`). Where the sweep is stopped by a part that an
        open joint moved there (:meth:`_Clearance.give_way`): a part that ``requires_open`` the
-       moving one (a rack in a door) must be closed first (``requires_closed``); otherwise
-       whichever of the blocking joint's upper limit and the moving joint's own limit keeps the
-       larger share of its range (at least :data:`KEEP`) is shortened (a wall-cabinet door that
-       opens past 90 degrees in front of its neighbour's swing stops before it); otherwise the
-       moving joint ``requires_closed`` the blocking part. Where what stops it is a part the moving
+       moving one (a rack in a door) must be closed first (``requires_closed``); a part is never
+       made to require its own gate closed (an inner drawer closing past its door gives up travel
+       instead); otherwise whichever of the blocking joint's upper limit and the moving joint's own
+       limit keeps the larger share of its range (at least :data:`KEEP`) is shortened (a
+       wall-cabinet door that opens past 90 degrees in front of its neighbour's swing stops before
+       it; a gate only as far as the parts that require it open still sweep their whole range past
+       it); otherwise the moving joint ``requires_closed`` the blocking part. Where what stops it is a part the moving
        joint carries, opened (a tote's lid meeting the rail of the shelf above as the tote slides),
        that part's upper limit is shortened if it keeps :data:`KEEP` of it, else it is closed
        first (``requires_closed``: a lid shut before its tote slides). Steps 2 and 3 repeat (up to 4

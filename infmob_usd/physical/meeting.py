@@ -92,18 +92,39 @@ def _offenders(obj, child, others, angles) -> dict[tuple[int, int], list]:
     reach = np.vstack([_world(c, pose) for p in child.pieces for c in p.convex for pose in (angles[0], angles[-1])])
     lo_all, hi_all = reach.min(0) - child_span(child), reach.max(0) + child_span(child)
     theirs = [(b, nb) for b, nb in theirs if not (np.any(b.min(0) > hi_all) or np.any(b.max(0) < lo_all))]
-    near = {}
+    near: dict = {}
+    if not theirs:
+        return near
+    bmin, bmax = np.array([b.min(0) for b, _ in theirs]), np.array([b.max(0) for b, _ in theirs])
     for n, piece in enumerate(child.pieces):
         for k, (c, h) in enumerate(zip(piece.convex, piece.hulls(), strict=True)):
-            posed = _posed(c, _face_normals(*h), angles)
-            swept = np.vstack([w for w, _ in posed])
+            posed = _Posed(c, _face_normals(*h), angles)
+            swept = np.vstack(posed.points)
             lo, hi = swept.min(0) - MEETING_GAP, swept.max(0) + MEETING_GAP
-            for b, nb in theirs:
-                if np.any(b.min(0) > hi) or np.any(b.max(0) < lo) or _close(*posed[0], b, nb, MEETING_GAP):
+            for t in np.flatnonzero(~((bmin > hi).any(1) | (bmax < lo).any(1))).tolist():
+                # _close's box test of every pose at once: a pose whose box is that far is not close
+                b, nb = theirs[t]
+                met = np.flatnonzero(~((posed.lo - MEETING_GAP > bmax[t]).any(1) |
+                                       (bmin[t] - MEETING_GAP > posed.hi).any(1))).tolist()
+                if not met or met[0] == 0 and _close(*posed[0], b, nb, MEETING_GAP):
                     continue  # far, or as close at rest by design: not the swing's doing
-                if any(_close(w, nw, b, nb, MEETING_GAP) for w, nw in posed[1:]):
+                if any(_close(*posed[i], b, nb, MEETING_GAP) for i in met if i > 0):
                     near.setdefault((n, k), []).append((b, nb))
     return near
+
+
+class _Posed:
+    """A hull's world points at each pose, their boxes, and its face normals at a pose when asked
+    (:func:`_posed`'s, the same floats)."""
+
+    def __init__(self, c: np.ndarray, normals: np.ndarray, poses):
+        self.poses, self.normals = poses, normals
+        self.points = [_world(c, pose) for pose in poses]
+        self.lo = np.array([w.min(0) for w in self.points])
+        self.hi = np.array([w.max(0) for w in self.points])
+
+    def __getitem__(self, i: int) -> tuple[np.ndarray, np.ndarray]:
+        return self.points[i], self.normals @ self.poses[i][:3, :3].T
 
 
 def child_span(child) -> float:
