@@ -2,11 +2,11 @@
 
 X is depth (the front faces +X), Y is width, Z is up. A built-in hob is a top plate (stainless or enamelled
 steel, or black glass-ceramic) over a shallow housing that drops into the worktop cut-out; a counter-top
-cooker is a casing on rubber feet with its controls on a front fascia. Gas hobs carry 2-6 burners in
+cooker is a casing on rubber feet with its knobs on a front fascia. Gas hobs carry 2-6 burners in
 columns, each column under a loose cast grate that lifts off its seat (a short vertical slide, role
 ``lift_off``) and a knob per burner (push-to-turn valves, 270 degrees from off); electric coil hobs carry
 sheathed coils on chrome drip pans and a knob per coil (infinite switches, 300 degrees); induction hobs
-carry zones printed on the glass and either knobs or, on a counter cooker, touch keys on the fascia (push
+carry zones printed on the glass and either knobs or touch keys along the glass's front edge (push
 keys sprung back, role ``button``). Built-in knobs stand on a strip along the front of the top (their
 axis vertical); a counter cooker's stand on its fascia (axis +X).
 Parts: ``categories/parts/hobs.py`` (body, zones, fascia), ``ovens.py`` (burners, grates), ``controls.py``.
@@ -50,19 +50,20 @@ GRAMMAR = Grammar("stovetop", {
 })
 """Designs (``design``): a ``gas`` hob (burners under cast grates that lift off, a knob each), an electric
 ``coil`` hob (coils on drip pans, a knob each), an ``induction`` hob (zones on glass; knobs, or touch keys on
-a counter cooker's fascia). ``mount``: ``built_in`` (a top plate over a housing, knobs on a front strip) or
-``counter`` (a casing on feet, controls on its front fascia, 1-2 zones)."""
+the glass's front edge). ``mount``: ``built_in`` (a top plate over a housing, knobs on a front strip) or
+``counter`` (a casing on feet, knobs on its front fascia, 1-2 zones)."""
 
 PARAMS = (
-    Choice("mount", "built into a worktop or a counter-top cooker (an induction hob with touch keys is always a"
-           " counter cooker: its keys sit on a fascia)", choices=("built_in", "counter"), weights=(0.7, 0.3)),
+    Choice("mount", "built into a worktop or a counter-top cooker", choices=("built_in", "counter"),
+           weights=(0.7, 0.3)),
     Float("width", "built-in width (Y; 2 zones: a 0.3 m domino, 5-6 zones at least 0.75 m); a counter"
           " cooker maps it onto 0.5-0.6 m", "m", 0.58, 0.92),
     Float("depth", "built-in depth (X); a counter cooker maps it onto 0.3-0.36 m", "m", *B["depth"]),
     Float("height", "built-in height, top plate and housing (Z); a counter cooker maps it onto 0.06-0.11 m",
           "m", *B["housing"]),
     Int("zone_count", "burners or cooking zones (a counter cooker: at most 2)", "", 2, 6),
-    Int("key_count", "touch keys on an induction cooker's fascia (power, function, -, +, timer)", "", 3, 5),
+    Int("key_count", "touch keys along an induction hob's glass front edge (power, function, -, +, timer)", "",
+        3, 5),
     Choice("top_finish", "a gas or coil hob's top: stainless or enamelled steel", choices=("stainless", "enamel")),
     Choice("knob_style", "knob shape", choices=("ridge", "round"), weights=(0.6, 0.4)),
 )
@@ -78,11 +79,8 @@ SUBSTRATES = {"top": ("design", {"induction": 2500.0})}  # glass-ceramic (Schott
 
 
 def derive(p: dict) -> dict:
-    """The top's family from the design and finish; touch keys make an induction hob a counter cooker."""
-    out = {**p, "top_family": TOPS["induction" if p.get("design") == "induction" else p["top_finish"]]}
-    if p.get("design") == "induction" and p.get("induction_controls") == "keys":
-        out["mount"] = "counter"
-    return out
+    """The top's family from the design and finish."""
+    return {**p, "top_family": TOPS["induction" if p.get("design") == "induction" else p["top_finish"]]}
 
 
 class StovetopLayout(controls.ControlFace):
@@ -90,13 +88,13 @@ class StovetopLayout(controls.ControlFace):
         p = self.p
         design, n = node.choice, zone_count(p)
         W, D, H = HB.size(p["mount"], n, p["width"], p["depth"], p["height"])
-        made, cols, (area_x, _) = HB.hob_body(design, p["mount"], W, D, H, n)
         style = node.one(design)
         keys = style.one("keys")
-        if p["mount"] == "counter":
+        n_keys = len(keys.of("key")) if keys else 0
+        made, cols, (area_x, _) = HB.hob_body(design, p["mount"], W, D, H, n, n_keys)
+        if p["mount"] == "counter":  # knobs on the fascia; keys on the glass (a plain fascia)
             knobs = style.one("knobs")
-            pieces, spots = HB.fascia(W, D, H, n if knobs else 0, len(keys.of("key")) if keys else 0,
-                                      HB.HOB["plate"][design])
+            pieces, spots = HB.fascia(W, D, H, n if knobs else 0, 0, HB.HOB["plate"][design])
             made = made.__class__.single("body", [*made.parts[made.root].pieces, *pieces], {**made.anchors, **spots})
         body = self.place(made, "body")
         self.grow(style, body=body, cols=cols, area_x=area_x, H=H)

@@ -57,7 +57,8 @@ was still 6.9 % of its travel out after its 0.1 s in MuJoCo)."""
 
 GRAVITY_HOLD = 2.0
 """At rest the spring presses the part on its stop with at least this many times the pull of gravity
-along the joint."""
+along the joint (less, down to :data:`~infmob_usd.effort.LANDING_HOLD`'s last, where the excess would throw a
+light part home too hard: :func:`infmob_usd.effort._sprung`)."""
 
 FRICTION_SHARE = 0.5
 """A spring-returned joint's Coulomb friction is at most this share of the spring's force at rest, less
@@ -99,11 +100,13 @@ class Spring:
 
 
 def spring(role: str, lower: float, upper: float, m_eff: float, a_gravity: float, friction: float,
-           damping_max: float) -> Spring | None:
+           damping_max: float, hold: float = GRAVITY_HOLD) -> Spring | None:
     """The return spring of a joint of ``role`` (None where the role has none): range ``[lower, upper]``,
     meeting ``m_eff``, pulled off its rest stop by gravity with ``a_gravity`` (m/s^2 or rad/s^2; 0 where
     gravity presses it onto its stop); ``friction``
-    the role's, ``damping_max`` the largest damping the joint may have (module docstring)."""
+    the role's, ``damping_max`` the largest damping the joint may have (module docstring); ``hold``: how many
+    times gravity's pull the spring presses with at rest (:data:`GRAVITY_HOLD`; lowered where the part would
+    otherwise land too hard, :func:`infmob_usd.effort._sprung`)."""
     r = SPRINGS.get(role)
     if r is None:
         return None
@@ -111,7 +114,7 @@ def spring(role: str, lower: float, upper: float, m_eff: float, a_gravity: float
     if not (span > 0 and math.isfinite(span)):
         raise ModelError(f"a {role} spring needs a limited range, got [{lower}, {upper}]")
     omega = RETURN_UT / r.time
-    pre = max(PRELOAD * span, GRAVITY_HOLD * a_gravity / omega**2)  # held on its stop against its weight
+    pre = max(PRELOAD * span, hold * a_gravity / omega**2)  # held on its stop against its weight
     stiffness = m_eff * omega**2
     damping = min(2.0 * m_eff * omega, damping_max)
     friction = min(friction, FRICTION_SHARE * m_eff * (omega**2 * pre - a_gravity))

@@ -1,8 +1,9 @@
-"""The stovetop category: a knob per zone, gas grates that lift off their seats, touch keys on a counter
-cooker's fascia, and a counter cooker's two zones."""
+"""The stovetop category: a knob per zone, gas grates that lift off their seats, touch keys on the glass
+top's front edge, and a counter cooker's two zones."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from helpers import maker
@@ -23,12 +24,23 @@ def test_gas_hob_has_a_knob_per_burner_and_grates_that_lift_off(n):
     assert all(j.dofs[0].axis[2] > 0.99 and 0.0 < j.dofs[0].upper <= 0.03 + 1e-9 for j in grates)
 
 
-def test_induction_touch_keys_make_a_counter_cooker_with_keys_on_its_fascia():
-    p, bp = make(2, design="induction", induction_controls="keys", mount="built_in", key_count=4)
-    assert p["mount"] == "counter"
+@pytest.mark.parametrize("mount", ("built_in", "counter"))
+def test_induction_touch_keys_sit_on_the_glass_front_edge_and_press_down(mount):
+    """Touch keys belong on the glass top's front edge, where a hob sunk into a worktop shows them (not on a
+    side skirt hidden in the cut-out); they press down through it and sit in front of every zone."""
+    p, bp = make(2, design="induction", induction_controls="keys", mount=mount, key_count=4)
+    assert p["mount"] == mount
     keys = [j for j in movable(bp) if j.child.startswith("key_")]
-    assert len(keys) == 4 and all(j.role == "button" and j.dofs[0].axis[0] < -0.99 for j in keys)
+    assert len(keys) == 4 and all(j.role == "button" and j.dofs[0].axis[2] < -0.99 for j in keys)
     assert not any(j.child.startswith("knob_") for j in movable(bp))
+    top = max(pc.bounds[1][2] for pc in bp.parts["body"].pieces if pc.material == "top")
+    front = max(pc.bounds[1][0] for pc in bp.parts["body"].pieces if pc.material == "top")
+    rings = [pc.bounds for pc in bp.parts["body"].pieces if pc.material == "display"]
+    for j in keys:
+        lo = np.array([pc.bounds[0] for pc in bp.parts[j.child].pieces]).min(0)
+        hi = np.array([pc.bounds[1] for pc in bp.parts[j.child].pieces]).max(0)
+        assert top - 0.001 < hi[2] < top + 0.01 and hi[0] < front  # on the glass, inside its front edge
+        assert all(lo[0] > r[1][0] for r in rings)  # in front of the zones
 
 
 @pytest.mark.parametrize("design", ("gas", "coil", "induction"))

@@ -77,11 +77,44 @@ def _pybullet():
     return pb
 
 
+def _springs(urdf: Path) -> dict[str, tuple[float, float]]:
+    """Joint name -> ``(stiffness, reference)`` of every return spring in the ``metadata.json`` beside ``urdf``
+    (a URDF has no element for one; none where there is no metadata)."""
+    meta = urdf.parent / "metadata.json"
+    if not meta.is_file():
+        return {}
+    joints = json.loads(meta.read_text()).get("joints", [])
+    return {j["name"]: (float(j["spring"]["stiffness"]), float(j["spring"]["reference"])) for j in joints
+            if "spring" in j}
+
+
+def _spring_torques(urdf: Path, limited: list[int], name: dict[int, str]):
+    """``torques(q) -> {joint index: spring torque}`` of the return springs of ``metadata.json`` (:func:`_springs`)
+    among the ``limited`` joints (``q``: their positions, in that order)."""
+    springs = _springs(urdf)
+    sprung = [k for k in limited if name[k] in springs]
+    stiff = np.array([springs[name[k]][0] for k in sprung])
+    zero = np.array([springs[name[k]][1] for k in sprung])
+    at = [limited.index(k) for k in sprung]
+    return lambda q: dict(zip(sprung, stiff * (zero - q[at]))) if sprung else {}
+
+
+def _travel(info: tuple, q_end: float, side: str, limited: bool) -> float:
+    """Fraction of its range joint ``info`` (PyBullet's joint info) covered towards ``side`` (half-turns where it
+    has no limits)."""
+    if not limited:
+        return q_end / math.pi
+    a, b = info[8], info[9]
+    return (q_end - a) / (b - a) if side == "upper" else (b - q_end) / (b - a)
+
+
 def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float = 1 / 240,
                 opened: dict[str, list[str]] | None = None, from_upper: bool = False) -> list[Push]:
     """Push every movable joint of ``urdf`` alone with its URDF effort in PyBullet (DIRECT mode) towards
     each limit from rest, judged on the peak over each push; ``from_upper``: the push towards the
     lower limit starts from the upper one (``opened``: as :func:`~infmob_usd.validate.mujoco_sim.push_joints`).
+    Return springs (``metadata.json``; PyBullet has none) act as joint torques ``stiffness * (reference - q)``
+    every step, as a user sets them (SAPIEN's: :func:`~infmob_usd.validate.sim.apply_springs`).
 
     Not by default: Bullet holds a limit from the step after it is crossed, so a part falling onto its
     rest stop goes ``v dt`` past it (1/240 s: a 3 g bottle cap falling 16 mm, 9 % of its travel), and a
@@ -112,6 +145,7 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
         steps = int(round(duration / timestep))
 
         index = {name[k]: k for k in moving}
+        springs = _spring_torques(urdf, limited, name)
 
         def run(i: int | None, force: float) -> np.ndarray:
             """From rest (pushed down: from its upper limit), joint ``i`` (None: none) pushed with ``force``
@@ -126,12 +160,16 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
                 pb.resetJointState(body, k, start.get(k, 0.0), 0.0, physicsClientId=cid)
             pb.setJointMotorControlArray(body, moving, pb.VELOCITY_CONTROL, forces=[0.0] * len(moving),
                                          physicsClientId=cid)
-            worst = np.full((2, len(limited)), -np.inf)
+            worst = np.full((2, len(limited)), -np.inf)  # (PyBullet answers None, not [], for no joints)
+            q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid) or ()])
             for _ in range(steps):
+                torque = springs(q)
                 if i is not None:
-                    pb.setJointMotorControl2(body, i, pb.TORQUE_CONTROL, force=force, physicsClientId=cid)
+                    torque[i] = torque.get(i, 0.0) + force
+                if torque:
+                    pb.setJointMotorControlArray(body, list(torque), pb.TORQUE_CONTROL,
+                                                 forces=[float(t) for t in torque.values()], physicsClientId=cid)
                 pb.stepSimulation(physicsClientId=cid)
-                # (PyBullet answers None, not [], for no joints: an object whose joints all turn freely)
                 q = np.array([s[0] for s in pb.getJointStates(body, limited, physicsClientId=cid) or ()])
                 worst = np.maximum(worst, _past(q, lo, hi, span))
             return worst
@@ -144,12 +182,7 @@ def push_bullet(urdf: str | Path, duration: float = PUSH_TIME, timestep: float =
             sides = ("upper", "lower") if i in limited else ("upper",)
             for side in sides:
                 worst = run(i, (1.0 if side == "upper" else -1.0) * effort)
-                q_end = pb.getJointState(body, i, physicsClientId=cid)[0]
-                if i in limited:
-                    a, b = info[i][8], info[i][9]
-                    travel = (q_end - a) / (b - a) if side == "upper" else (b - q_end) / (b - a)
-                else:
-                    travel = q_end / math.pi
+                travel = _travel(info[i], pb.getJointState(body, i, physicsClientId=cid)[0], side, i in limited)
                 out.append(_push(name[i], side, effort, travel, [name[k] for k in limited], worst, rest,
                                  info[i][9] - info[i][8] if i in limited else 0.0, info[i][2] == pb.JOINT_PRISMATIC))
         return out

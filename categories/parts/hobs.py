@@ -45,8 +45,11 @@ HOB = {
     "ring": 0.0008,  # an induction zone's printed ring (proud of the glass, massless in effect)
     # knobs: gas valve knobs 38-45 mm turning ~270 deg from off (push-to-turn); infinite switches 300 deg
     "knob": {"radius": 0.02, "stem": 0.004, "gas": math.radians(270), "electric": math.radians(300)},
-    # touch keys on a counter cooker's fascia (Duxtop 9600LS: power, function, -, +, timer)
+    # touch keys on the glass's front edge, in a row across the middle (Duxtop 9600LS, Bosch PIE631FB1E
+    # installation sheets: power, function, -, +, timer in a 50-60 mm band, keys ~40 mm apart); a key on
+    # the top stays in view and reach on a hob sunk into a worktop, where a side skirt would be hidden
     "key": controls.Button(half=(0.011, 0.007), shape="rect", proud=0.003, travel=0.002),
+    "key_strip": 0.055, "key_pitch": 0.04,
 }
 KNOB = controls.Dial(radius=HOB["knob"]["radius"], stem=HOB["knob"]["stem"], style="ridge",
                      turns=HOB["knob"]["gas"])
@@ -131,18 +134,19 @@ def size(mount: str, n: int, W: float, D: float, H: float) -> tuple[float, float
     return (max(W, b["five"]) if n >= 5 else W), D, H
 
 
-def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int) -> tuple[Assembly, list, list]:
+def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int, n_keys: int = 0
+             ) -> tuple[Assembly, list, list]:
     """A hob of ``design`` (gas, coil, induction) and ``mount`` (built_in, counter) ``W`` x ``D``, ``H`` tall,
-    with ``n`` zones. Returns its body assembly (anchors ``knob_<k>`` per zone, ``grate_<k>`` per gas column;
-    the fascia's ``keys`` anchor row for a counter cooker), the gas columns (for :func:`grate`) and the
-    cooking height."""
+    with ``n`` zones and ``n_keys`` touch keys (else knobs). Returns its body assembly (anchors ``knob_<k>`` per
+    zone on a built-in top, or ``key_<k>`` per key on the top's front strip; ``grate_<k>`` per gas column), the
+    gas columns (for :func:`grate`) and the cooking height."""
     plate_t = HOB["plate"][design]
     x0, x1, y0, y1 = -D / 2, D / 2, -W / 2, W / 2
     zt = H - plate_t  # plate's underside
     m = HOB["margin"]
     pieces, anchors = [], {}
-    top_knobs = mount == "built_in"
-    strip = HOB["strip"] if top_knobs else 0.0
+    top_knobs = mount == "built_in" and not n_keys
+    strip = HOB["strip"] if top_knobs else HOB["key_strip"] if n_keys else 0.0
     area_x, area_y = (x0 + m, x1 - m - strip), (y0 + m, y1 - m)
     holes = []
     if mount == "built_in":  # the housing stops short of the knob strip: the valves' stems reach under it
@@ -151,7 +155,7 @@ def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int) -> t
                       .replace(sheet=A.OVEN_SHEET))
     else:  # a hollow behind the fascia (the controls' stems), closed at the sides
         ft, room = HOB["counter"]["feet"], HOB["counter"]["room"]
-        xr = x1 - 0.004 - room
+        xr = x1 - 0.004 - max(room, strip)  # and the keys' travel under the strip
         pieces += [g.box_between([x0, y0, ft], [xr, y1, zt], "housing").replace(sheet=A.OVEN_SHEET)]
         pieces += [g.box_between([xr, y, ft], [x1 - 0.004, y + 0.004, zt], "housing").replace(sheet=A.OVEN_SHEET)
                    for y in (y0, y1 - 0.004)]
@@ -163,6 +167,13 @@ def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int) -> t
         for k, y in enumerate(spots):
             anchors[f"knob_{k}"] = Frame.at((xk, float(y), H), z=(0, 0, 1), x=(1, 0, 0))
             holes.append(_hole_xy(xk, float(y), KNOB.stem))
+    if n_keys:
+        key, xk = HOB["key"], x1 - strip / 2
+        for k in range(n_keys):
+            y = (k - (n_keys - 1) / 2) * HOB["key_pitch"]
+            anchors[f"key_{k}"] = Frame.at((xk, y, H), z=(0, 0, 1), x=(1, 0, 0))
+            c = A.CLEAR
+            holes.append((xk - key.half[1] - c, y - key.half[0] - c, xk + key.half[1] + c, y + key.half[0] + c))
     top = g.panel([x0, y0, zt], [x1, y1, H], "top", "z", holes=holes)
     pieces.append(top if design == "induction" else top.replace(sheet=HOB["sheet"]))
     cols = []
@@ -182,12 +193,13 @@ def _hole_xy(x: float, y: float, r: float) -> tuple[float, float, float, float]:
 
 def fascia(W: float, D: float, H: float, n_knobs: int, n_keys: int, plate_t: float) -> tuple[list, dict]:
     """A counter cooker's front fascia (the housing's front face, 4 mm thick) with holes for ``n_knobs``
-    knob stems or ``n_keys`` touch keys in a row; its pieces and the controls' anchors (z +X, x up)."""
+    knob stems or ``n_keys`` touch keys in a row (none: a plain face); its pieces and the controls' anchors
+    (z +X, x up)."""
     x1, ft = D / 2, HOB["counter"]["feet"]
     zc = (ft + H - plate_t) / 2
     anchors, holes = {}, []
     n = n_knobs or n_keys
-    ys = np.linspace(-W / 2 + W / (2 * n), W / 2 - W / (2 * n), n) if n > 1 else [0.0]
+    ys = [] if not n else np.linspace(-W / 2 + W / (2 * n), W / 2 - W / (2 * n), n) if n > 1 else [0.0]
     key = HOB["key"]
     for k, y in enumerate(ys):
         y = float(y)
