@@ -52,8 +52,8 @@ def test_a_counter_cooker_has_at_most_two_zones_and_knobs_on_its_front(design):
 
 @pytest.mark.parametrize("mount", ("built_in", "counter"))
 def test_a_coil_is_a_spiral_tube_standing_over_a_lipped_drip_pan(mount):
-    """An electric coil is a sheathed tube wound in 3 or more turns, gaps between them, standing on its support over a drip pan whose
-    lip rises round it: not flat rings printed on the pan."""
+    """An electric coil is a sheathed tube wound in 3 or more turns, gaps between them, standing on its
+    support over a drip pan whose lip rises round it: not flat rings printed on the pan."""
     import numpy as np
 
     _, bp = make(2, design="coil", mount=mount)

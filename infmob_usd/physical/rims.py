@@ -5,10 +5,11 @@ PhysX's persistent contact manifold (PCM, on by default in SAPIEN, ManiSkill and
 pair while one of them moves (a pepper grinder's head turning 1.5 mm above the body's window bars): now
 and then, with no overlap at all, it reports a contact as deep as the gap plus the thin hull's thickness
 with the normal flipped (the far face of the thin hull taken for the near one; a freshly posed scene reads
-the true gap), and the part stalls. In a parameter sweep of the grinder's head band over the bars (the band's lateral position and
-the gap varied over 99 poses), a 5.9 mm band whose side flares out 14 degrees over the bars stalled in
-29; the same band with a square rim (upright sides, the bottom face's outline) in none, nor did a band
-half as flared or one 8.8 mm thick; the contact offset (3 mm to 2 cm) made no difference.
+the true gap), and the part stalls. In a parameter sweep of the grinder's head band over the bars (the
+band's lateral position and the gap varied over 99 poses), a 5.9 mm band whose side flares out 14
+degrees over the bars stalled in 29; the same band with a square rim (upright sides, the bottom face's
+outline) in none, nor did a band half as flared or one 8.8 mm thick;
+the contact offset (3 mm to 2 cm) made no difference.
 
 The rule: where a hull face ``f`` and an anti-parallel face of another link's hull are less than
 :data:`NEAR` apart and overlap seen along their normal, and the hull is thinner than
