@@ -155,10 +155,10 @@ def _button_on(body_side: float):
 
 
 def test_a_small_objects_light_parts_keep_their_mass():
-    from infmob_usd.mass import MIN_MASS
+    from infmob_usd.mass import LEAST_MASS, MIN_MASS
 
-    pen = _button_on(0.0215)  # a 10 g object: its 0.5 g button stays near 0.5 g (floor: a twentieth of it)
+    pen = _button_on(0.0215)  # a 10 g object: its 0.5 g button is floored at 1 g (the least link), not 5 g
     assert pen["body"] == pytest.approx(0.01, rel=0.01)
-    assert pen["button"] == pytest.approx(0.0005, rel=0.1)
+    assert pen["button"] == pytest.approx(LEAST_MASS)
     big = _button_on(0.1)  # a 1 kg object: the same button is floored at 5 g, as every link of one is
     assert big["button"] == MIN_MASS

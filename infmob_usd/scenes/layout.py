@@ -125,10 +125,9 @@ def measured(obj) -> tuple:
     return obj, lo, hi, swept, support_regions(obj), hull_boxes(obj), moving
 
 
-def made_in_worker(category: str, seed: int, texture_size: int, overrides: dict) -> tuple:
-    """Generate and measure one object (a pool worker's job): :func:`measured` of it."""
-    from ..api import generate
-
+def made_in_worker(generate, category: str, seed: int, texture_size: int, overrides: dict) -> tuple:
+    """Generate (with ``generate``, the layout's: the core does not import the API) and measure one object
+    (a pool worker's job): :func:`measured` of it."""
     return measured(generate(category, seed, texture_size=texture_size, **overrides))
 
 
@@ -326,7 +325,8 @@ class SceneLayout:
             self._keys.add(name)
             clear = CLEARANCES.get(category) if clearance == "category" else clearance
             if self.pool is not None:
-                future = self.pool.submit(made_in_worker, category, seed, self.texture_size, dict(overrides))
+                future = self.pool.submit(made_in_worker, self._generate, category, seed, self.texture_size,
+                                          dict(overrides))
                 self._made[key] = Made.pending(name, category, seed, dict(overrides), clear, future)
             else:
                 obj, lo, hi, swept, regions, hulls, moving = measured(
