@@ -752,7 +752,9 @@ def _physics(obj, hulls) -> str:
     """``physics.usda``: articulation root, rigid bodies with mass, colliders bound to physics materials,
     joints with drives, joint state, PhysX joint-axis limits and friction, and contact filters across
     compound chains."""
-    root = _Spec("over", "", obj.name, ("PhysicsArticulationRootAPI",))
+    root = _Spec("over", "", obj.name, ("PhysicsArticulationRootAPI", "NewtonArticulationRootAPI"))
+    # parts collide with each other (not with the part they hang on): what PhysX does by default, said for Newton
+    root.attr("bool", "newton:selfCollisionEnabled", True)
     rp = f"/{obj.name}"
     origins = {link.name: link.origin for link in obj.links}
     contact = _physics_materials(root, obj)
@@ -787,7 +789,7 @@ def _physics(obj, hulls) -> str:
             kind = "PhysicsPrismaticJoint" if j.type == "prismatic" else "PhysicsRevoluteJoint"
             mimic = ("PhysxMimicJointAPI:rotX",) if j.mimic is not None else ()
             uj = joints.child("def", kind, j.name, (f"PhysicsDriveAPI:{drive}", f"PhysicsJointStateAPI:{drive}",
-                                                    f"PhysxJointAxisAPI:{drive}") + mimic)
+                                                    f"PhysxJointAxisAPI:{drive}", "MjcJointAPI") + mimic)
             # USD angles are degrees: limits, angular velocity and angular damping (per degree; URDF's per radian)
             per_unit = 1.0 if j.type == "prismatic" else math.pi / 180
             if j.type == "prismatic":
@@ -815,6 +817,8 @@ def _physics(obj, hulls) -> str:
             if armature is not None:
                 uj.attr("float", ax + "armature", float(armature))
             _newton_joint(uj, j, per_unit, free[j.name] + j.armature)
+            # MuJoCo's USD joint schema: the armature the MJCF writes (kg or kg m^2)
+            uj.attr("float", "mjc:armature", float(j.armature))
             if j.mimic is not None:
                 _mimic(uj, j, f"{rp}/Joints/{j.mimic[0]}")
         uj.rel("physics:body0", f"{rp}/{j.parent}")

@@ -90,8 +90,15 @@ def test_movable_joints_carry_state_limits_and_physx_axis(zoo_folder):
         assert prim.GetAttribute(f"physxJointAxis:{axis}:maxJointVelocity").Get() == pytest.approx(j.velocity / per)
         assert prim.GetAttribute(f"physxJointAxis:{axis}:staticFrictionEffort").Get() == pytest.approx(j.friction)
         assert not prim.GetAttribute("physxJoint:jointFriction")  # the old bare custom attribute is gone
+        # MuJoCo's joint schema (SimReady MUJOCO.DJ.001) with the armature the MJCF has
+        assert "MjcJointAPI" in applied
+        assert prim.GetAttribute("mjc:armature").Get() == pytest.approx(j.armature)
         n += 1
     assert n == sum(j.movable for j in obj.joints)
+    # Newton's articulation root says whether parts collide with each other (SimReady NEWTON.BA.001)
+    root = stage.GetDefaultPrim()
+    assert "NewtonArticulationRootAPI" in root.GetMetadata("apiSchemas").ApplyOperations([])
+    assert root.GetAttribute("newton:selfCollisionEnabled").Get() is True
 
 
 def test_compound_chains_filter_their_real_parent_and_child(zoo_folder):

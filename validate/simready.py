@@ -8,8 +8,10 @@ One check, ``simready``, passes when all of these hold for the object's root lay
   display colour ``FET_010_STANDARD``, non-visual materials ``FET_007_STANDARD``, MuJoCo and Newton colliders
   ``FET_003/004_MUJOCO``, ``FET_003/004_NEWTON``, OpenPBR surfaces ``FET_006_OPENPBR``, and grasp vectors
   ``FET_005_STANDARD`` where the object has a part to operate (a vase without a lid has none);
-* the features ``FET_024_STANDARD`` (articulation) and ``FET_022_STANDARD`` (driven joints) of profile
-  **Robot-Body 3.0.0** pass;
+* the features ``FET_024_STANDARD`` (articulation), ``FET_022_STANDARD`` (driven joints) and
+  ``FET_024_NEWTON`` (Newton's articulation root) of profile **Robot-Body 3.0.0** pass; its other optional
+  features are a robot's (a robot type, ROS bridge graphs, MuJoCo actuators, Isaac's robot folder) or have no
+  validator (RM.002);
 * ``omniverse-asset-validator``'s default rules report no failure or error (its warnings are reported by
   ``omni_asset_validate``, not judged here: a new category's mesh may still carry one);
 * of an object in the Isaac layout (``--usd-layout isaac``), also the runtime variant features
@@ -42,7 +44,7 @@ GRASP_FEATURE = "FET_005_STANDARD"  # grasp vectors: required of an object with 
 # required of the Isaac layout (--usd-layout isaac): a variant set per physics runtime, Isaac Sim's layers
 ISAAC_FEATURES = ("FET_000_PHYSX", "FET_000_NEWTON", "FET_000_MUJOCO", "FET_100_ISAAC")
 BODY = ("Robot-Body", "3.0.0")
-BODY_FEATURES = ("FET_024_STANDARD", "FET_022_STANDARD")  # articulation, driven joints
+BODY_FEATURES = ("FET_024_STANDARD", "FET_022_STANDARD", "FET_024_NEWTON")  # articulation, driven joints, Newton's
 PACKAGES = ("simready-validate", "simready-foundation-tier-core", "omniverse-asset-validator",
             "usd-validation-nvidia", "physx-usd-schemas")
 INSTALL_HINT = "the simready check needs NVIDIA's validators: pip install -e '.[simready]'"
@@ -207,8 +209,8 @@ def run_simready(usd_path: str | Path) -> dict:
     -------
     dict
         ``prop``: failing Robotics-Prop 4.0.0 features (mandatory requirements, and FET_004_STANDARD);
-        ``body``: failures of the requirements of FET_024/FET_022 of Robot-Body 3.0.0 (their dependency
-        FET_004_STANDARD is judged in ``prop``); ``omni``: the default rules' failures and errors as
+        ``body``: failures of the requirements of FET_024/FET_022/FET_024_NEWTON of Robot-Body 3.0.0 (their
+        dependency FET_004_STANDARD is judged in ``prop``); ``omni``: the default rules' failures and errors as
         ``"Rule: message"``; ``seconds``; ``shim``: where ``pxr.PhysxSchema`` came from.
     """
     from pxr import Usd
@@ -220,7 +222,8 @@ def run_simready(usd_path: str | Path) -> dict:
     with _quiet():
         stage = Usd.Stage.Open(str(usd_path))
         prop = sv.validate_stage(stage, *PROP)
-        body = _run_requirements(stage, _feature_requirements(BODY, BODY_FEATURES), "robot_body")
+        body = _body_isaac(stage) if _isaac_layout(stage) else list(
+            _run_requirements(stage, _feature_requirements(BODY, BODY_FEATURES), "robot_body").issues())
         omni = engine_cls(init_rules=True, variants=False).validate(stage)
     bad_prop = []
     if prop is None:
@@ -232,10 +235,27 @@ def run_simready(usd_path: str | Path) -> dict:
             ISAAC_FEATURES if _isaac_layout(stage) else ())
         bad_prop += [m for f in wanted if (m := _failing(prop.features_summary, f))]
     bad_body = [f"{i.requirement.code.split('.', 3)[-1] if i.requirement else _rule_name(i)}: {i.message}"
-                for i in body.issues() if i.severity.name in bad]
+                for i in body if i.severity.name in bad]
     bad_omni = [f"{_rule_name(i)}: {i.message}" for i in omni.issues() if i.severity.name in bad]
     return {"prop": bad_prop, "body": bad_body, "omni": bad_omni, "seconds": time.perf_counter() - t0,
             "shim": st["shim"]}
+
+
+def _body_isaac(stage):
+    """The Robot-Body features of an Isaac-layout asset: the runtime-neutral ones on the stage as opened, Newton's
+    with its variant selected (the layout keeps each runtime's schemas in its own variant)."""
+    neutral = [f for f in BODY_FEATURES if not f.endswith("_NEWTON")]
+    issues = list(_run_requirements(stage, _feature_requirements(BODY, neutral), "robot_body").issues())
+    prim = stage.GetDefaultPrim()
+    vset = prim.GetVariantSets().GetVariantSet("Newton")
+    before = vset.GetVariantSelection()
+    vset.SetVariantSelection("Enabled")
+    try:
+        newton = [f for f in BODY_FEATURES if f.endswith("_NEWTON")]
+        issues += list(_run_requirements(stage, _feature_requirements(BODY, newton), "robot_body").issues())
+    finally:
+        vset.SetVariantSelection(before)
+    return issues
 
 
 def _isaac_layout(stage) -> bool:
@@ -281,7 +301,7 @@ def _result(r: dict) -> CheckResult:
         [f"asset-validator: {m[:200]}" for m in r["omni"][:3]]
     detail = "; ".join(problems[:4]) if problems else \
         f"{PROP[0]} {PROP[1]} (+{len(PROP_OPTIONAL)} optional features), {BODY[0]} {BODY[1]} " \
-        "FET_024/FET_022, asset-validator defaults pass"
+        "FET_024/FET_022/FET_024_NEWTON, asset-validator defaults pass"
     return CheckResult("simready", not problems, f"{detail} [{r['seconds']:.2f} s]")
 
 
