@@ -748,19 +748,10 @@ def _mimic(uj, j, leader: str) -> None:
     uj.attr("float", m + "offset", float(-j.mimic[2]))
 
 
-def _physics(obj, hulls) -> str:
-    """``physics.usda``: articulation root, rigid bodies with mass, colliders bound to physics materials,
-    joints with drives, joint state, PhysX joint-axis limits and friction, and contact filters across
-    compound chains."""
-    root = _Spec("over", "", obj.name, ("PhysicsArticulationRootAPI", "NewtonArticulationRootAPI"))
-    # parts collide with each other (not with the part they hang on): what PhysX does by default, said for Newton
-    root.attr("bool", "newton:selfCollisionEnabled", True)
-    rp = f"/{obj.name}"
-    origins = {link.name: link.origin for link in obj.links}
-    contact = _physics_materials(root, obj)
+def _rigid_bodies(root, obj, hulls, contact: dict, rp: str) -> None:
+    """Each link of ``obj`` under ``root``: rigid body, mass, principal inertia, the contact filter across a
+    compound chain, and its collision hulls bound to their physics materials (``contact``)."""
     filtered = dict(_compound_pairs(obj))
-    free = free_inertias(obj)
-    identity = (1.0, 0.0, 0.0, 0.0)
     for link in obj.links:
         apis = ("PhysicsRigidBodyAPI", "PhysicsMassAPI") + (("PhysicsFilteredPairsAPI",) if link.name in filtered
                                                              else ())
@@ -778,6 +769,21 @@ def _physics(obj, hulls) -> str:
             cp = prim.child("over", "", "collisions")
             for i, hull in enumerate(hulls[link.name]):  # collision APIs, convexHull, its physics material
                 cp.child_text(_COLLIDER.format(i=i, material=contact[hull[5]]))
+
+
+def _physics(obj, hulls) -> str:
+    """``physics.usda``: articulation root, rigid bodies with mass, colliders bound to physics materials,
+    joints with drives, joint state, PhysX joint-axis limits and friction, and contact filters across
+    compound chains."""
+    root = _Spec("over", "", obj.name, ("PhysicsArticulationRootAPI", "NewtonArticulationRootAPI"))
+    # parts collide with each other (not with the part they hang on): what PhysX does by default, said for Newton
+    root.attr("bool", "newton:selfCollisionEnabled", True)
+    rp = f"/{obj.name}"
+    origins = {link.name: link.origin for link in obj.links}
+    contact = _physics_materials(root, obj)
+    free = free_inertias(obj)
+    identity = (1.0, 0.0, 0.0, 0.0)
+    _rigid_bodies(root, obj, hulls, contact, rp)
     joints = root.child("def", "Scope", "Joints")
     joints.child("def", "PhysicsFixedJoint", "root_joint").rel("physics:body1", f"{rp}/{obj.links[0].name}")
     for j in obj.joints:
