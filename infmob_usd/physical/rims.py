@@ -30,6 +30,7 @@ from scipy.optimize import linprog
 from scipy.spatial import HalfspaceIntersection, QhullError
 
 from ..hulls import hull_arrays
+from ..partlib import hull_volume
 from ..triangles import triangle_cross
 
 NEAR = 0.005
@@ -51,13 +52,6 @@ KEEP = 0.75
 """The least share of its volume a hull keeps when squared: a rim's chamfer or flare is cut, a hull that is
 mostly overhang (a cone's blunt tip towards the neighbour, a key whose small top faces the slide) is left
 as it is."""
-
-
-def _volume(v: np.ndarray, f: np.ndarray) -> float:
-    """Volume of a closed hull with outward faces."""
-    c = v.mean(0)
-    t = v[f] - c
-    return float(np.abs(np.einsum("ij,ij->i", t[:, 0], np.cross(t[:, 1], t[:, 2])).sum()) / 6)
 
 
 def _planes(v: np.ndarray, f: np.ndarray) -> list[tuple[np.ndarray, float, np.ndarray]]:
@@ -186,7 +180,7 @@ def _squared(h: _Hull, faces: list[int], origin: np.ndarray) -> tuple | None:
     if not np.all(np.isfinite(pts)) or len(pts) < 4:
         return None
     v, f = hull_arrays(pts - origin)
-    if _volume(v, f) < KEEP * _volume(*h.hull):
+    if hull_volume(v, f) < KEEP * hull_volume(*h.hull):
         return None
     return v, v, f
 
