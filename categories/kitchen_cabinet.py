@@ -13,7 +13,7 @@ X is depth (fronts face +X), Y is width, Z is up. Five designs (``design``), eac
   continuous joint: pole and trays turn together on a bearing), beside 2-5 base columns.
 - ``sink_base``: a sink base with a tilt-out false front (hinged at its bottom edge, a
   sponge tray behind it), two doors below and an inset bowl and tap in the worktop, beside
-  1-5 base columns.
+  1-5 base columns (``column_count``).
 - ``wall_run``: hung wall cabinets (0.30-0.35 m deep) on a suspension rail: doors, glazed
   doors, lift-up flaps (hinged at the top edge) or open shelves.
 - ``kitchen``: a whole kitchen wall, 2.4-4.8 m: a sink base and base columns under one worktop, a
@@ -62,8 +62,15 @@ def wall_columns(p, rng) -> int:
 
 
 def leaves(p, rng) -> int:
-    """two doors in a column wider than 0.6 m, else one"""
-    return 2 if run_width(p) / columns(p, rng) > cab.DOUBLE else 1
+    """two doors in a column wider than 0.6 m, else one (a column beside a sink or corner unit is
+    column_width wide)"""
+    width = p["column_width"] if p["design"] in ("sink_base", "corner") else run_width(p) / columns(p, rng)
+    return 2 if width > cab.DOUBLE else 1
+
+
+def sink_columns(p, rng) -> int:
+    """a sink base's columns beside its sink: column_count, else 1-5 drawn"""
+    return p["column_count"] or int(rng.integers(1, 6))
 
 
 MOVING = {"drawer", "door", "inner_drawer", "flap", "pullout", "tilt_front", "carousel"}
@@ -88,7 +95,8 @@ GRAMMAR = Grammar("kitchen_cabinet", {
     "sink_unit": Node(required=("sink", "tilt_front"), repeat={"sink_door": 2}),
     "larder": Node(required=("stand",), repeat={"tall": (2, 4)}),
     "corner": Node(required=("stand", "worktop", "corner_unit"), repeat={"column": (2, 5)}),
-    "sink_base": Node(required=("stand", "worktop", "sink", "tilt_front"), repeat={"sink_door": 2, "column": (1, 5)}),
+    "sink_base": Node(required=("stand", "worktop", "sink", "tilt_front"), repeat={"sink_door": 2,
+                                                                                   "column": sink_columns}),
     "wall_run": Node(required=("rail",), repeat={"wall_column": columns}),
     "stand": Node(one_of={"plinth": 0.65, "legs": 0.35}, choice="stand_style"),
     "plinth": Node(), "legs": Node(), "worktop": Node(), "rail": Node(),
@@ -122,7 +130,8 @@ GRAMMAR = Grammar("kitchen_cabinet", {
 
 PARAMS = (  # ranges and their sources: cabinetry.RANGES
     Float("width", "run width (Y) of a base or wall run", "m", *R["width"]),
-    Int("column_count", "columns of a base or wall run; auto = max(1, floor(width / 0.45)); kept 0.2-1 m wide",
+    Int("column_count", "columns of a base or wall run (auto = max(1, floor(width / 0.45)); kept 0.2-1 m wide),"
+        " or beside a sink base's sink (column_width each; auto = 1-5 drawn)",
         "", 1, 10, auto=True),
     Float("base_depth", "base and tall carcass depth (X), front excluded", "m", *R["base_depth"]),
     Float("base_height", "floor to worktop top", "m", *R["base_height"]),

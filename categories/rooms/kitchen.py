@@ -18,7 +18,7 @@ from infmob_usd.categories.parts.dishwashers import DW
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.params import Float
 from infmob_usd.scenes.kind import SceneKind
-from infmob_usd.scenes.layout import RoomLayout
+from infmob_usd.scenes.layout import RUN_GAP, RoomLayout
 from infmob_usd.scenes.room import Fixture, boxes_overlap, moved_box
 
 from ._common import chairs_round
@@ -28,7 +28,22 @@ from ._common import chairs_round
 AISLE = (1.07, 1.3)
 SEATING_CLEAR = 0.91
 SEATING_WALK = 1.12  # NKBA 44 in behind a seated diner where one walks behind: between an eat-in table and a run
-SINGLE_WALL_BASE = (1.2, 1.4)  # m: a single-wall run's plain base runs (kitchen_cabinet's shortest base run: 1.2 m)
+# one-wall kitchens are 8-15 ft long (2.4-4.5 m; NKBA Kitchen Planning Guidelines' one-wall plans, Houzz / Kitchen
+# Design Institute sizing guides); the one run holds every unit, each sized from its real range to fill a drawn length
+SINGLE_WALL_RUN = (2.4, 4.5)
+SINGLE_WALL_UNITS = {  # m: the width range the composer sizes each unit of a one-wall run in
+    "refrigerator": (0.6, 0.91),  # 60 cm (EU) to 36 in (US) full-size fridges
+    "beverage_fridge": (0.45, 0.6),  # 15 in / 60 cm under-counter wine coolers
+    "dishwasher": (0.45, 0.6),  # slimline 45 cm, standard 60 cm / 24 in (Bosch, Miele)
+    "sink": (0.8, 1.0),  # kitchen_cabinet's sink_width: sink bases 80 / 90 / 100 cm (IKEA METOD)
+    "column": (0.4, 0.6),  # the sink base's one column beside its sink (IKEA METOD 40 / 60 cm)
+    "oven": (0.6, 0.76),  # freestanding ranges 60 cm (EN) / 30 in (US)
+    # a plain base run on the range's other side: kitchen_cabinet's shortest base run (1.2 m) gives NKBA 12
+    # and 15's landing (0.38 m beside a cooktop) and 0.91 m of preparation counter
+    "base": (1.2, 1.4),
+}
+# a sink base in a fitted run: its sink and 1-2 base cabinets beside it (the category draws 1-5, up to 4 m wide)
+SINK_COLUMNS = (1, 2)
 EAT_IN = 0.6  # a single-wall kitchen with a table in it (else the room is only the run and its aisle deep)
 # residential ceilings: 8-9 ft (2.44-2.74 m; 2.4 m the UK/EU minimum of most building codes)
 CEILING = (2.4, 2.7)
@@ -59,6 +74,24 @@ GRAMMAR = Grammar("kitchen", {
                            "wall_units", "microwave", "plate_rack", "wine_cooler", "refrigerator", "bottle", "jar",
                            "cookware", "kettle", "toaster", "coffee_machine")},
 })
+
+
+def fill_widths(spans: dict[str, tuple[float, float]], total: float, rng: np.random.Generator) -> dict[str, float]:
+    """A width for each unit inside its span ``(least, most)``, together ``total`` where the spans allow (else
+    each at its nearer end): what the least widths leave is shared by drawn weights, a unit's share past its
+    most passed on to the others. Rounded to the millimetre."""
+    out = {k: lo for k, (lo, _) in spans.items()}
+    weight = dict(zip(spans, rng.dirichlet(np.ones(len(spans)))))
+    left, growing = total - sum(out.values()), [k for k, (lo, hi) in spans.items() if hi > lo]
+    while left > 1e-9 and growing:
+        share = left / sum(weight[k] for k in growing)
+        for k in list(growing):
+            give = min(share * weight[k], spans[k][1] - out[k])
+            out[k] += give
+            left -= give
+            if out[k] >= spans[k][1] - 1e-9:
+                growing.remove(k)
+    return {k: round(v, 3) for k, v in out.items()}
 
 
 def _worktop_box(placed) -> tuple[np.ndarray, np.ndarray]:
@@ -118,7 +151,8 @@ class KitchenLayout(RoomLayout):
                          **kw)
 
     def sink_side(self, wine: bool) -> list:
-        units = [self.cabinet("sink_base"), self.under_counter("dishwasher", design="integrated")]
+        columns = int(self.rng.integers(SINK_COLUMNS[0], SINK_COLUMNS[1] + 1))
+        units = [self.cabinet("sink_base", column_count=columns), self.under_counter("dishwasher", design="integrated")]
         if wine:
             units.append(self.under_counter("beverage_fridge"))
         if self.fridge:
@@ -187,16 +221,25 @@ class KitchenLayout(RoomLayout):
     def single_wall(self, node, wine):
         """One run on the north wall, and in front of it either an eat-in table with chairs (the room as
         deep as NKBA's clearances round it ask) or nothing (the room only the run and its aisle deep, as a
-        kitchen of one wall is in a flat): never a bare floor too small for a table and too big for an aisle."""
-        # NKBA 12 and 15 ask 0.38 m of landing beside a cooktop and 0.91 m of preparation counter next to the
-        # sink: the shortest base runs made (1.2-1.4 m) give both, and the fridge ends the run (NKBA's work
-        # triangle: each leg 1.2-2.7 m); two plain 1.2-1.8 m runs and a third after the fridge made a wall of
-        # 8-10 m with nothing in front of it
-        short = SINGLE_WALL_BASE
-        a = [self.base(float(self.rng.uniform(*short))), self.make("oven", height=self.h),
-             self.base(float(self.rng.uniform(*short)))] + self.sink_side(wine)
-        if not self.fridge:
-            a.append(self.base(float(self.rng.uniform(*short))))
+        kitchen of one wall is in a flat): never a bare floor too small for a table and too big for an aisle.
+
+        The run, from the west end: the fridge, a wine cooler, the dishwasher beside the sink (NKBA 25: within
+        36 in of it), the sink base with its one column between the sink and the range (preparation and
+        landing counter), the range, a plain base run (its other landing). Each unit is sized in its real
+        range so that the run is a drawn one-wall length (:data:`SINGLE_WALL_RUN`)."""
+        names = [*(["refrigerator"] if self.fridge else []), *(["beverage_fridge"] if wine else []),
+                 "dishwasher", "sink", "column", "oven", "base"]
+        spans = {n: SINGLE_WALL_UNITS[n] for n in names}
+        least = sum(lo for lo, _ in spans.values()) + RUN_GAP * (len(names) - 2)
+        run = float(self.rng.uniform(max(SINGLE_WALL_RUN[0], least), max(SINGLE_WALL_RUN[1], least)))
+        w = fill_widths(spans, run - RUN_GAP * (len(names) - 2), self.rng)
+        # the sink base first: the under-counter units are sized to the cabinets' worktop and fronts
+        sink = self.cabinet("sink_base", column_count=1, sink_width=w["sink"], column_width=w["column"])
+        a = [self.make("refrigerator", width=w["refrigerator"])] if self.fridge else []
+        if wine:
+            a.append(self.under_counter("beverage_fridge", width=w["beverage_fridge"]))
+        a += [self.under_counter("dishwasher", design="integrated", width=w["dishwasher"]), sink,
+              self.make("oven", height=self.h, width=w["oven"]), self.base(w["base"])]
         da, width = self._depth(a), self.run_length(a) + 0.5 + float(self.rng.uniform(0, 0.8))
         eat_in = self.rng.uniform() < EAT_IN
         table = None
