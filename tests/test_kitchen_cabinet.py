@@ -264,3 +264,18 @@ def test_a_long_run_closes_and_reopens_every_part_from_all_open(long_run, tmp_pa
     folder = infmob_usd.save(long_run, tmp_path)
     (reach,) = [c for c in check_sapien(folder, checks=["reach"]) if c.name == "reach"]
     assert reach.ok, reach.detail
+
+
+def test_a_sink_base_takes_its_column_count_and_one_leaf_per_column():
+    # a sink base's columns are column_width (0.4-0.6 m) wide: they had two 0.25 m leaves each when the unrelated
+    # run width over its auto column count came out over 0.6 m, and column_count did not reach them
+    obj = infmob_usd.generate("kitchen_cabinet", seed=0, texture_size=16, design="sink_base", width=1.3,
+                              column_count=2)
+    cols = {j.name.split("_")[2] for j in obj.movable_joints if j.name.startswith(("joint_door_", "joint_drawer_"))
+            and "sink" not in j.name}
+    assert len(cols) == 2, cols
+    for j in obj.movable_joints:
+        if j.name.startswith("joint_door_") and "sink" not in j.name:
+            link = next(lk for lk in obj.links if lk.name == j.child)
+            b = np.array([p.bounds for p in link.pieces])
+            assert b[:, 1, 1].max() - b[:, 0, 1].min() >= obj.params["column_width"] - 0.02, j.name
