@@ -28,8 +28,9 @@ from ._common import chairs_round
 AISLE = (1.07, 1.3)
 SEATING_CLEAR = 0.91
 SEATING_WALK = 1.12  # NKBA 44 in behind a seated diner where one walks behind: between an eat-in table and a run
-# one-wall kitchens are 8-15 ft long (2.4-4.5 m; NKBA Kitchen Planning Guidelines' one-wall plans, Houzz / Kitchen
-# Design Institute sizing guides); the one run holds every unit, each sized from its real range to fill a drawn length
+# one-wall kitchens are 8-15 ft (2.4-4.5 m) long; the one run holds every unit, each sized in its real range to fill a
+# drawn length, never shorter than its units at their least (3.45 m without a fridge, 4.05 m with one: a dishwasher
+# and NKBA's landing either side of the range are kept)
 SINGLE_WALL_RUN = (2.4, 4.5)
 SINGLE_WALL_UNITS = {  # m: the width range the composer sizes each unit of a one-wall run in
     "refrigerator": (0.6, 0.91),  # 60 cm (EU) to 36 in (US) full-size fridges
