@@ -515,3 +515,19 @@ def test_every_bathroom_has_its_vanity():
     assert len(vanity) == 1 and vanity[0].on == "floor" and vanity[0].wall is not None
     assert vanity[0].made.obj.params["column_count"] == 1
     assert 1.2 - 1e-3 <= vanity[0].made.size[1] <= 1.45
+
+
+@pytest.mark.parametrize("seed", [4, 9])
+def test_every_dining_room_has_its_door(seed):
+    # a table 0.91 m off a wall to the millimetre kept its walkway over the door's casing (seed 4), and the chairs
+    # round it left no spot a door's swing cleared (seed 9): two rooms of ten had no door
+    from infmob_usd.scenes.layout import SceneLayout
+
+    s = scene("dining_room", seed, texture_size=16)
+    doors = [p for p in s.placed if p.made.category == "door"]
+    assert len(doors) == 1
+    table = next(p for p in s.placed if p.made.category == "dining_table")
+    for c in (p for p in s.placed if p.made.category == "folding_chair"):
+        assert SceneLayout.hulls_clear(c, table, 0.0), c.id
+        assert not any(boxes_overlap(lo, hi, c.lo, c.hi) for _, lo, hi in doors[0].swept_boxes()), c.id
+    assert not _overlapping(s), _overlapping(s)

@@ -19,12 +19,14 @@ SEAT_WIDTH = 0.61
 CHAIR_DESIGNS = ("wooden", "padded")
 
 
-def door_in(layout, walls=("south", "east", "west", "north")) -> None:
-    """A door set into the first wall (in a drawn order) where it and its swing fit."""
+def door_in(layout, walls=("south", "east", "west", "north")):
+    """A door set into the first wall (in a drawn order) where it and its swing fit: the placed door, or None."""
     door = layout.make("door")
     for wall in layout.rng.permutation(list(walls)):
-        if layout.embed(door, layout.room.wall(str(wall)), rng=layout.rng) is not None:
-            return
+        got = layout.embed(door, layout.room.wall(str(wall)), rng=layout.rng)
+        if got is not None:
+            return got
+    return None
 
 
 def window_in(layout, walls=("north", "east", "south", "west"), sill=SILL) -> None:
