@@ -377,6 +377,12 @@ class SceneLayout:
                 return False
             if any(boxes_overlap(lo, hi, o.lo, o.hi) for o in self.placed if o.id not in ignore):
                 return False
+        # a moving part keeps the fitter's gap off a wall: a dishwasher's door flush with a side wall drags on it
+        # and stops a quarter open in the simulators (a unit at the end of a run gets its filler strip)
+        gap = WALL_GAP - 1e-3
+        for _, lo, hi in cand.moving_boxes() if r is not None else ():
+            if np.any(lo[:2] < gap) or hi[0] > r.depth - gap or hi[1] > r.width - gap:
+                return False
         for other in self.placed:
             if other.id in ignore or other.on.startswith(cand.id + ":"):
                 continue
