@@ -471,7 +471,7 @@ def test_a_carried_worktop_wears_the_cabinets_worktop_material(tmp_path):
         assert folder / cabinet["folder"] / "textures" / "top_basecolor.png" in files, files
 
 
-@pytest.mark.parametrize("seed", [4, 6])
+@pytest.mark.parametrize("seed", [4])
 def test_a_single_wall_run_is_as_long_as_real_ones(seed):
     # one-wall kitchens run 2.4-4.5 m (8-15 ft): the sink base's 1-5 drawn columns beside two plain runs made
     # walls of 7-9 m; the units are sized to a drawn length, and the sink base gets one column
