@@ -191,11 +191,12 @@ def _measure(obj) -> tuple[np.ndarray, np.ndarray, list, list]:
         n = max(2, int(math.ceil(max(j.upper - j.lower for j in joints) / SWEEP_STEP)) + 1) if turns else 2
         pts, moving = [], []
         moved = _moved_links(obj, joints)
-        for f in np.linspace(0.0, 1.0, n)[1:]:
+        for f in np.linspace(0.0, 1.0, n):  # the moving parts from rest (a door flush with a wall at rest sticks)
             poses = obj.poses({j.name: j.lower + f * (j.upper - j.lower) for j in joints})
             for name, (a, b) in local.items():
                 box = moved_box(a, b, poses[name])[0:2]
-                pts.append(box)
+                if f > 0:
+                    pts.append(box)
                 if name in moved:
                     moving.append(box)
         pts = np.vstack(pts)
@@ -377,8 +378,9 @@ class SceneLayout:
                 return False
             if any(boxes_overlap(lo, hi, o.lo, o.hi) for o in self.placed if o.id not in ignore):
                 return False
-        # a moving part keeps the fitter's gap off a wall: a dishwasher's door flush with a side wall drags on it
-        # and stops a quarter open in the simulators (a unit at the end of a run gets its filler strip)
+        # a moving part, at rest and over its travel, keeps the fitter's gap off a wall: a dishwasher's or a wine
+        # cooler's door flush with a side wall drags on it and stops 0-25 % open in the simulators (a unit at the
+        # end of a run gets its filler strip)
         gap = WALL_GAP - 1e-3
         for _, lo, hi in cand.moving_boxes() if r is not None else ():
             if np.any(lo[:2] < gap) or hi[0] > r.depth - gap or hi[1] > r.width - gap:
