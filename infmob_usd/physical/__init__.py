@@ -6,7 +6,8 @@
   rest stop (picking the side of a two-sided range, or adding a counterweight heel) (:mod:`.stops`).
 * :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent (:mod:`.gaps`).
 * :func:`square_rims` cuts a thin hull's chamfer or flare at a face that looks onto a parallel face of another
-  link's hull across a few millimetres, which PhysX's contact manifold misreads as a deep contact (:mod:`.rims`).
+  link's hull across a few millimetres, at rest or as a slide carries one over the other, which PhysX's contact
+  manifold misreads as a deep contact (:mod:`.rims`).
 * :func:`keep_meeting_gaps` erodes a hinged part's collision hulls that pass within :data:`MEETING_GAP` of an
   independently moving neighbour (the twin leaf of a double door) over its swing (:mod:`.meeting`).
 * :func:`limit_to_ground` shortens limits so nothing goes below the ground (:mod:`.ground`).
