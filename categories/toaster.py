@@ -47,9 +47,11 @@ GRAMMAR = Grammar("toaster", {
 (dual control); a group's dial is drawn object-wide (``has_dial``: keys-only models set the shade with keys),
 its keys (0-3: cancel, defrost, bagel) per group."""
 
+# down a slot: a mica card (amber-cream sheet) wound with nichrome ribbon (dark grey once fired) behind
+# chrome guard wires (toaster teardown photos)
 MATERIALS = {"body": "finish", "lever": "plastic:black", "knob": "plastic:black", "button": "plastic:black",
-             "tray": "brushed_metal", "trim": "chrome",
-             "chassis": "brushed_metal"}
+             "tray": "brushed_metal", "trim": "chrome", "chassis": "brushed_metal", "mica": "ceramic:cream|ivory",
+             "element": "cast_iron", "carriage": "plastic:black"}
 SUBSTRATES = {"body": ("finish", {"painted": 7850.0})}  # a painted casing is painted steel sheet
 
 
@@ -61,7 +63,7 @@ class ToasterLayout(controls.ControlFace):
         cuts = T.cutouts(design, size, p["slot_width"],
                          [(g.one("dial") is not None, len(g.of("button"))) for g in groups])
         body = self.place(casing.sheet_casing(size, "body", cuts), "body")
-        self.extend(body.root, T.slot_walls(size, cuts, "chassis"))
+        self.extend(body.root, T.slot_walls(size, cuts, "chassis") + T.carriage_guides(size, cuts, "carriage"))
         self.grow(node.one(design), body=body)
         self.grow(node.one("tray"), body=body, size=T.crumb_tray(size))
 

@@ -19,8 +19,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from infmob_usd import geometry as g
 
+from . import appliance as A
 from . import controls
 from .casing import CasingSize, Cutout, LinerSize
 
@@ -135,12 +138,67 @@ def slot_walls(size: CasingSize, cuts: dict[str, Cutout], material: str) -> list
              g.box_between((x1, y0 - t, z0), (x1 + t, y1 + t, z1), material),
              g.box_between((x0, y0 - t, z0), (x1, y0, z1), material),
              g.box_between((x0, y1, z0), (x1, y1 + t, z1), material)]
+    elements = []
     for c in slots:
         (v0, u0), (v1, u1) = (c.lo[1], c.lo[0]), (c.hi[1], c.hi[0])
         if u1 - u0 > v1 - v0:  # runs across the width: its long edges are at x = v0 and v1
             walls += [g.box_between((v0 - t, u0, z0), (v0, u1, z1), material),
                       g.box_between((v1, u0, z0), (v1 + t, u1, z1), material)]
+            edges = [((v0, u0), (v0, u1), (1.0, 0.0)), ((v1, u0), (v1, u1), (-1.0, 0.0))]
         else:
             walls += [g.box_between((v0, u0 - t, z0), (v1, u0, z1), material),
                       g.box_between((v0, u1, z0), (v1, u1 + t, z1), material)]
-    return [w.replace(sheet=size.sheet) for w in walls]
+            edges = [((v0, u0), (v1, u0), (0.0, 1.0)), ((v0, u1), (v1, u1), (0.0, -1.0))]
+        for a, b, inward in edges:
+            elements += element(np.array(a), np.array(b), np.array(inward), z0, z1)
+    return [w.replace(sheet=size.sheet) for w in walls] + elements
+
+
+def carriage_guides(size: CasingSize, cuts: dict[str, Cutout], material: str) -> list[g.Piece]:
+    """Behind each lever slot of ``cuts`` (on the front face), the dark carriage guide the lever's stem rides
+    in: seen through the slot, it makes the slot read as a slot with the lever in it, not a pale gap
+    (drawn, no collision; behind the stem's end, so the lever never meets it)."""
+    x, out = size.depth / 2 - A.BEHIND - 0.003, []
+    for name, c in sorted(cuts.items()):
+        if name.startswith("lever_"):
+            (u0, v0), (u1, v1) = c.lo, c.hi
+            m, hz = 0.006, size.height / 2
+            out.append(g.box_between((x - 0.001, -u1 - m, v0 + hz - m), (x, -u0 + m, v1 + hz + m), material)
+                       .replace(convex=()))
+    return out
+
+
+# A toaster's heating element (replacement elements and teardown photos: Dualit, Sunbeam, Breville): a mica
+# card ~1 mm thick lining each long side of a slot, wound with flat nichrome ribbon in a zig-zag at a ~12 mm
+# pitch, behind a guard of vertical steel wires ~1.5 mm thick, ~25 mm apart and ~5 mm off the card, that keeps
+# the bread off the element. ``ELEMENT``: card thickness and standoff from the slot wall, ribbon half-thickness,
+# zig-zag pitch, guard wire radius, its standoff from the card and its spacing (m).
+ELEMENT = dict(card=0.001, off=0.0005, ribbon=0.0006, pitch=0.012, guard=0.0008, guard_off=0.005,
+               guard_pitch=0.025)
+
+
+def element(a: np.ndarray, b: np.ndarray, inward: np.ndarray, z0: float, z1: float) -> list[g.Piece]:
+    """The element lining one long side of a slot, from ``a`` to ``b`` (x, y) along the slot wall, facing the
+    slot along ``inward`` (x, y), between heights ``z0`` and ``z1``: the mica card, its nichrome zig-zag and the
+    guard wires in front of it (drawn, no collision: the chassis walls carry the slot's collision)."""
+    e = ELEMENT
+    along = (b - a) / np.linalg.norm(b - a)
+    length = float(np.linalg.norm(b - a))
+    lo, hi = z0 + 0.006, z1 - 0.01
+
+    def at(s: float, d: float, z: float) -> tuple[float, float, float]:
+        p = a + s * along + d * inward
+        return float(p[0]), float(p[1]), z
+
+    c0, c1 = np.array(at(0.004, e["off"], lo)), np.array(at(length - 0.004, e["off"] + e["card"], hi))
+    card = g.box_between(np.minimum(c0, c1), np.maximum(c0, c1), "mica")
+    d = e["off"] + e["card"] + e["ribbon"]
+    n = max(2, int((length - 0.012) / (e["pitch"] / 2)))
+    zig = [at(0.006 + k * (length - 0.012) / n, d, lo + 0.004 if k % 2 else hi - 0.004) for k in range(n + 1)]
+    pieces = [card, g.tube(zig, e["ribbon"], "element", 6)]
+    wires = max(2, int(length / e["guard_pitch"]))
+    for k in range(wires):
+        s = (k + 0.5) * length / wires
+        pieces.append(g.cylinder(at(s, e["off"] + e["card"] + e["guard_off"], z0 + 0.002),
+                                 at(s, e["off"] + e["card"] + e["guard_off"], z1 - 0.002), e["guard"], "trim", 8))
+    return [pc.replace(convex=()) for pc in pieces]
