@@ -8,11 +8,14 @@ and the buttons on the casing's anchors of those names (``lever_0``, ``dial_0``,
 Designs (real product types, sizes below with their sources):
 
 * ``two_slot``: two bread slots side by side across the width, the controls on the long front face at its
-  right end (Breville BTA720XL, Cuisinart CPT-122 layout).
+  right end (Breville BTA720XL, Cuisinart CPT-122 layout), or stood end on: the controls on its short end,
+  which is then its front, the lever in a vertical slot up its middle and the slots running front to back
+  (Dualit Classic, Smeg TSF01, KitchenAid KMT2115 layout).
 * ``four_slot``: four slots running front to back in a row across the width, two control groups (one per
   pair of slots) at the left and right of the front (Cuisinart CPT-180, Hamilton Beach 24910 layout).
 * ``long_slot``: two extra-long slots (two slices end to end each) across a long body, one control group or
-  one per slot (Breville BTA730XL and BTA830XL 4-slice long slot, Dualit Lite long slot).
+  one per slot (Breville BTA730XL and BTA830XL 4-slice long slot, Dualit Lite long slot); with one group it
+  may stand end on as a two-slot.
 """
 
 from __future__ import annotations
@@ -78,11 +81,22 @@ TRAY_PULL = 0.8  # the tray slides out this share of its depth before it leaves 
 LEVER_AT = (0.68, 0.55)
 DIAL_AT = (0.3, 0.5)
 KEYS_V = (0.05, -0.2, -0.45)
+# A control group on an end face (the short side: Dualit Classic, Smeg TSF01, KitchenAid KMT2115 product
+# photos): the lever in a vertical slot up the middle, the dial under one side of it, the keys in a column
+# beside it, all clear of the paddle's path down the slot and of the rounded corners' hulls (fractions of the
+# end face's half extents).
+END_LEVER_AT = (0.0, 0.55)
+END_DIAL_AT = (-0.45, -0.5)
+END_KEYS_U = 0.4
+CONTROL_FACES = ("front", "end")  # a toaster's controls on its long side, or on its short end (end on)
 
 
-def casing_size(design: str, t: float, corner: float) -> CasingSize:
-    """The casing of ``design`` at ``t`` of its size range, upright edges rounded to ``corner``."""
+def casing_size(design: str, t: float, corner: float, end: bool = False) -> CasingSize:
+    """The casing of ``design`` at ``t`` of its size range, upright edges rounded to ``corner`` (``end``: stood
+    end on, its short end the front: width and depth swapped)."""
     width, depth, height = DESIGNS[design].at(t)
+    if end:
+        width, depth = depth, width
     return CasingSize(width, depth, height, WALL, SHEET, corner)
 
 
@@ -98,23 +112,44 @@ def group_sides(groups: int) -> tuple[int, ...]:
     return (-1,) if groups == 1 else (-1, 1)
 
 
-def cutouts(design: str, size: CasingSize, slot_width: float, groups: list[tuple[bool, int]]) -> dict[str, Cutout]:
+def end_on(design: str, face: str, groups: int) -> bool:
+    """Whether a toaster stands end on: its controls on the short end face, which is then its front (+x), the
+    slots running front to back; a design with slots across its width and a single control group only."""
+    return face == "end" and DESIGNS[design].along == "u" and groups == 1
+
+
+def _group_cuts(i: int, side: int, dial: bool, keys: int, size: CasingSize, end: bool) -> dict[str, Cutout]:
+    """Control group ``i``'s holes on the front: at its ``side`` end of a long front, or (``end``) up the
+    middle of an end-on toaster's short front."""
+    if end:
+        at = {"lever": END_LEVER_AT, "dial": END_DIAL_AT, "keys": [(END_KEYS_U, v) for v in KEYS_V]}
+    else:
+        at = {"lever": (side * LEVER_AT[0], LEVER_AT[1]), "dial": (side * DIAL_AT[0], DIAL_AT[1]),
+              "keys": [(side * DIAL_AT[0], v) for v in KEYS_V]}
+    cuts = {f"lever_{i}": LEVER.cutout("front", size.on("front", *at["lever"]))}
+    if dial:
+        cuts[f"dial_{i}"] = DIAL.cutout("front", size.on("front", *at["dial"]))
+    for k in range(keys):
+        cuts[f"button_{i}_{k}"] = BUTTON.cutout("front", size.on("front", *at["keys"][k]))
+    return cuts
+
+
+def cutouts(design: str, size: CasingSize, slot_width: float, groups: list[tuple[bool, int]],
+            face: str = "front") -> dict[str, Cutout]:
     """Every hole of the casing: the bread slots on the top, the crumb tray's opening at the foot of the front
-    and, per control group ``(has_dial, buttons)``, its lever slot, dial hole and key holes."""
+    and, per control group ``(has_dial, buttons)``, its lever slot, dial hole and key holes (``face`` "end": an
+    end-on toaster, :func:`end_on`, its casing from :func:`casing_size` with ``end``)."""
     d, tray = DESIGNS[design], crumb_tray(size)
+    end = end_on(design, face, len(groups))
     cuts = {"tray_opening": size.floor_opening("front", tray.width, tray.height + tray.lip, TRAY_CLEARANCE)}
-    if d.along == "u":
+    if d.along == "u" and not end:
         cuts.update(size.slots("top", d.slot_length, slot_width, SLOT_GAP, d.slots))
     else:
         pitch = slot_width + SLOT_GAP
         cuts.update({f"slot_{k}": Cutout.around("top", ((k - (d.slots - 1) / 2) * pitch, 0.0),
                                                 (slot_width, d.slot_length)) for k in range(d.slots)})
     for i, (side, (dial, keys)) in enumerate(zip(group_sides(len(groups)), groups, strict=True)):
-        cuts[f"lever_{i}"] = LEVER.cutout("front", size.on("front", side * LEVER_AT[0], LEVER_AT[1]))
-        if dial:
-            cuts[f"dial_{i}"] = DIAL.cutout("front", size.on("front", side * DIAL_AT[0], DIAL_AT[1]))
-        for k in range(keys):
-            cuts[f"button_{i}_{k}"] = BUTTON.cutout("front", size.on("front", side * DIAL_AT[0], KEYS_V[k]))
+        cuts.update(_group_cuts(i, side, dial, keys, size, end))
     return cuts
 
 
@@ -158,11 +193,10 @@ def carriage_guides(size: CasingSize, cuts: dict[str, Cutout], material: str) ->
     """Behind each lever slot of ``cuts`` (on the front face), the dark carriage guide the lever's stem rides
     in: seen through the slot, it makes the slot read as a slot with the lever in it, not a pale gap
     (drawn, no collision; behind the stem's end, so the lever never meets it)."""
-    x, out = size.depth / 2 - A.BEHIND - 0.003, []
+    x, m, hz, out = size.depth / 2 - A.BEHIND - 0.003, 0.006, size.height / 2, []
     for name, c in sorted(cuts.items()):
-        if name.startswith("lever_"):
+        if name.startswith("lever_"):  # front face: u = -y, v = z - height / 2
             (u0, v0), (u1, v1) = c.lo, c.hi
-            m, hz = 0.006, size.height / 2
             out.append(g.box_between((x - 0.001, -u1 - m, v0 + hz - m), (x, -u0 + m, v1 + hz + m), material)
                        .replace(convex=()))
     return out
