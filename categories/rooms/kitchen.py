@@ -241,8 +241,8 @@ class KitchenLayout(RoomLayout):
             a.append(self.under_counter("beverage_fridge", width=w["beverage_fridge"]))
         a += [self.under_counter("dishwasher", design="integrated", width=w["dishwasher"]), sink,
               self.make("oven", height=self.h, width=w["oven"]), self.base(w["base"])]
-        spare = 0.5 + float(self.rng.uniform(0, 0.8))  # floor beyond the run's end
-        da, width = self._depth(a), self.run_length(a) + spare
+        beyond = 0.5 + float(self.rng.uniform(0, 0.8))  # floor beyond the run's end
+        da, width = self._depth(a), self.run_length(a) + beyond
         eat_in = self.rng.uniform() < EAT_IN
         table = None
         if eat_in:
@@ -257,7 +257,7 @@ class KitchenLayout(RoomLayout):
         # as wide as the run came out and its spare: a fridge's clearance had pushed the last base run out
         self._room(width + 0.6 * len(a), depth)
         self.runs["north"] = self._runs(self.run_along(a, self.room.wall("north")))
-        self.room.width = round(max(float(pl.hi[1]) for pl, _ in self.runs["north"]) + spare, 4)
+        self.room.width = round(max(float(pl.hi[1]) for pl, _ in self.runs["north"]) + beyond, 4)
         if table is not None:
             # its long side to the run, SEATING_WALK from the run's front (a cook passes behind the diners)
             x = da + SEATING_WALK + table.size[1] / 2
