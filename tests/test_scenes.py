@@ -490,7 +490,7 @@ def test_a_single_wall_run_is_as_long_as_real_ones(seed):
     assert 0 < k < len(order) - 1, cats
 
 
-@pytest.mark.parametrize("seed", [0, 1])
+@pytest.mark.parametrize("seed", [0, 8])
 def test_a_dining_room_has_its_sideboard_with_a_walkway_to_the_table(seed):
     # placed after the table and its chairs, a 0.55-0.62 m deep sideboard found no wall outside the table's
     # 0.91 m walkway and its drawers' travel: no dining room of seeds 0-9 had one. Now placed first, on a wall
