@@ -127,8 +127,11 @@ def _walls(s: BinSize, material: str, z0: float) -> list[g.Piece]:
     hx, hy = s.half
     t, top, out, hb = WALL, z0 + s.height, BASE["out"], BASE["height"]
     if s.shape == "round":
+        b = ROUND["bead"]
+        bead = [(hx + b * math.cos(a), top - b + b * math.sin(a)) for a in np.radians(np.linspace(-90, 90, 7))]
         pieces = [g.shell([(hx, z0), (hx, top)], t, material), g.cylinder((0, 0, z0), (0, 0, z0 + t), hx - t, material,
-                                                                         None)]
+                                                                         None),
+                  g.shell(bead, b, material).replace(convex=())]  # the rolled rim, drawn
         if not z0:
             pieces.append(g.shell([(hx + out, 0.0), (hx + out, hb)], out, material))
         return pieces
