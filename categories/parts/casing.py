@@ -22,7 +22,8 @@ import trimesh
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.errors import ModelError
-from infmob_usd.frames import Frame
+from infmob_usd.frames import IDENTITY, Frame
+from infmob_usd.grasps import Grasp
 
 
 @dataclass(frozen=True)
@@ -263,6 +264,18 @@ def liner(size: LinerSize, material: str, front_material: str | None = None, lab
     anchors = {"front": Frame.at((0, 0, hf / 2), z=(1, 0, 0), x=(0, 0, 1)), "seat": Frame.at((x0 / 2, 0, 0))}
     supports = {f"corner_{i}": (x, y, 0) for i, (x, y) in enumerate(((x0, y0), (x0, y1), (xf, y0), (xf, y1)))}
     return Assembly.single(label, pieces, anchors, supports)
+
+
+def pull_tab(size: LinerSize, proud: float, thick: float, material: str) -> g.Piece:
+    """A liner's pull tab: an upright lug ``thick`` across standing ``proud`` out of the middle of its front plate
+    (x = 0), as tall as the plate, folded from the same sheet. A front that sits flush in its opening leaves no
+    gap a finger fits; the tab is what the fingers pinch, from the front across its thickness (the pads beside
+    it stay in front of the casing and above the tray's floor, never below the appliance's foot)."""
+    hf = size.height + size.lip
+    tab = g.box_between((0.0, -thick / 2, 0.0), (proud, thick / 2, hf), material).replace(sheet=size.sheet)
+    box = ((proud / 2, 0.0, hf / 2), (proud, thick, hf), IDENTITY.rotation)
+    return tab.with_grasps(Grasp.make((proud, 0.0, hf / 2), (-1, 0, 0), (0, 1, 0), thick, proud / 2,
+                                      "line_fixed_handle", box))
 
 
 @dataclass(frozen=True)
