@@ -1,6 +1,7 @@
 """URDF beside the USD, with OBJ meshes: for SAPIEN, ManiSkill and MuJoCo.
 
-* one visual OBJ (+ MTL with PBR texture maps) per link and material slot,
+* one visual OBJ per link and material slot, its material a ``newmtl`` of the object's one
+  ``materials.mtl`` (PBR constants and texture maps),
   named ``handle_*`` where the pieces are handles (ManiSkill looks for that);
   no ``<material>`` elements: colours live in the MTL, and SAPIEN's loader would
   need a render device to build URDF materials;
@@ -32,6 +33,7 @@ from infmob_usd.rotation import matrix_rpy as rotation_rpy
 from .common import collision_placements, visual_meshes, write_file
 
 MESHES = "meshes"
+MTL = "materials.mtl"  # every material of the object, one ``newmtl`` each, in meshes/
 
 
 def _f(x: float) -> str:
@@ -392,7 +394,7 @@ def _mtl(slot: str, look, maps) -> str:
 
 
 def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
-    """Write ``meshes/`` (visual OBJ + MTL per link and slot, collision OBJ per distinct hull) once
+    """Write ``meshes/`` (visual OBJ per link and slot, one MTL of every slot, collision OBJ per distinct hull) once
     per object folder, for the URDF and the MJCF; return, per link, ``(visuals, collisions)``:
     ``visuals`` ``[(vname, slot, file)]``, ``collisions`` ``[(file, position (3,), rotation or None)]``
     (files relative to ``meshes/``). OBJ files of the same bytes (a keypad's buttons, a run of equal
@@ -404,8 +406,9 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
         return cached[1]
     meshes = folder / MESHES
     meshes.mkdir()
-    for slot, look in obj.materials.items():
-        write_file(meshes / f"{slot}.mtl", _mtl(slot, look, obj.textures.get(slot, {})))
+    if obj.materials:
+        write_file(meshes / MTL, "\n".join(_mtl(slot, look, obj.textures.get(slot, {}))
+                                            for slot, look in obj.materials.items()))
     visuals = visual_meshes(obj)
     text, names = _Text(), []  # every OBJ laid out first, their numbers formatted together
     table = {}
@@ -422,7 +425,7 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
         for vname, slot, _role, v, f, _n, _uv in visuals[link.name]:
             fname = f"{link.name}__{vname}.obj"
             c = next(corners)
-            _obj(text, v, f, c[1], c[0], mtl=f"{slot}.mtl", material=slot, lists=next(lists))
+            _obj(text, v, f, c[1], c[0], mtl=MTL, material=slot, lists=next(lists))
             names.append(fname)
             vis.append((vname, slot, fname))
         col = []
