@@ -1,6 +1,7 @@
 """URDF beside the USD, with OBJ meshes: for SAPIEN, ManiSkill and MuJoCo.
 
-* one visual OBJ (+ MTL with PBR texture maps) per link and material slot,
+* one visual OBJ per link and material slot, its material a ``newmtl`` of the object's one
+  ``materials.mtl`` (PBR constants and texture maps),
   named ``handle_*`` where the pieces are handles (ManiSkill looks for that);
   no ``<material>`` elements: colours live in the MTL, and SAPIEN's loader would
   need a render device to build URDF materials;
@@ -8,7 +9,8 @@
   centred on its own origin and placed by ``<collision><origin>`` (PhysX's contacts misbehave
   otherwise); the wedges of a shell band are turned copies of one wedge, so they share its
   OBJ and differ by their origin's ``xyz rpy`` (a pot writes ~30 collision files, not ~180),
-  and identical hulls of a link (a keypad's buttons) share one file;
+  and an OBJ file of the same bytes as another of the object (equal hulls, a keypad's buttons, a run
+  of equal drawers: each mesh is in its link's frame) is written once and shared;
 * ``<inertial>`` with the full tensor about the centre of mass;
 * ``<limit>`` with effort and velocity, ``<dynamics damping friction>``; ``<mimic>`` on a coupled joint
   (a return spring has no URDF element: ``metadata.json`` carries it, :mod:`infmob_usd.springs`; a
@@ -34,6 +36,7 @@ from infmob_usd.rotation import matrix_rpy as rotation_rpy
 from .common import collision_placements, visual_meshes, write_file
 
 MESHES = "meshes"
+MTL = "materials.mtl"  # every material of the object, one ``newmtl`` each, in meshes/
 
 
 def _f(x: float) -> str:
@@ -394,18 +397,21 @@ def _mtl(slot: str, look, maps) -> str:
 
 
 def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
-    """Write ``meshes/`` (visual OBJ + MTL per link and slot, collision OBJ per distinct hull) once
+    """Write ``meshes/`` (visual OBJ per link and slot, one MTL of every slot, collision OBJ per distinct hull) once
     per object folder, for the URDF and the MJCF; return, per link, ``(visuals, collisions)``:
     ``visuals`` ``[(vname, slot, file)]``, ``collisions`` ``[(file, position (3,), rotation or None)]``
-    (files relative to ``meshes/``). Kept on the object while :func:`~infmob_usd.layers.write_object`
+    (files relative to ``meshes/``). OBJ files of the same bytes (a keypad's buttons, a run of equal
+    drawers: the same mesh in each link's frame) are written once, under the first one's name, and
+    shared by every link that has them. Kept on the object while :func:`~infmob_usd.layers.write_object`
     runs, so the second writer only reads it."""
     cached = getattr(obj, "_mesh_files", None)
     if cached is not None and cached[0] == folder:
         return cached[1]
     meshes = folder / MESHES
     meshes.mkdir()
-    for slot, look in obj.materials.items():
-        write_file(meshes / f"{slot}.mtl", _mtl(slot, look, obj.textures.get(slot, {})))
+    if obj.materials:
+        write_file(meshes / MTL, "\n".join(_mtl(slot, look, obj.textures.get(slot, {}))
+                                            for slot, look in obj.materials.items()))
     visuals = visual_meshes(obj)
     text, names = _Text(), []  # every OBJ laid out first, their numbers formatted together
     table = {}
@@ -422,7 +428,7 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
         for vname, slot, _role, v, f, _n, _uv in visuals[link.name]:
             fname = f"{link.name}__{vname}.obj"
             c = next(corners)
-            _obj(text, v, f, c[1], c[0], mtl=f"{slot}.mtl", material=slot, lists=next(lists))
+            _obj(text, v, f, c[1], c[0], mtl=MTL, material=slot, lists=next(lists))
             names.append(fname)
             vis.append((vname, slot, fname))
         col = []
@@ -439,8 +445,14 @@ def write_meshes(obj, folder: Path) -> dict[str, tuple[list, list]]:
             col.append((file_of[mesh], pos, rot))  # an instance's prototype comes before it
         table[link.name] = (vis, col)
     into = os.path.join(meshes, "")  # ~70 files: a string join, not a Path each
+    same: dict[str, str] = {}  # file -> the first file of the object with its bytes, which it shares
+    first: dict[bytes, str] = {}
     for fname, data in zip(names, text.render()):
-        write_file(into + fname, data)
+        same[fname] = first.setdefault(data, fname)
+        if same[fname] == fname:
+            write_file(into + fname, data)
+    table = {name: ([(vname, slot, same[f]) for vname, slot, f in vis], [(same[f], pos, rot) for f, pos, rot in col])
+             for name, (vis, col) in table.items()}
     obj._mesh_files = (folder, table)
     return table
 

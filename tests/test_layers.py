@@ -28,6 +28,24 @@ def test_folder_layout(written):
     assert not [p for p in folder.parent.iterdir() if p.name.startswith(".")]  # no temp folders left
 
 
+
+def test_one_mtl_holds_every_material_and_each_visual_obj_finds_its_own(written):
+    """meshes/ holds one MTL with a ``newmtl`` per material slot; every visual OBJ names that file and a
+    material in it, and every map it lists is a file of the object."""
+    obj, folder = written
+    meshes = folder / "meshes"
+    assert [m.name for m in meshes.glob("*.mtl")] == ["materials.mtl"]
+    lines = (meshes / "materials.mtl").read_text().splitlines()
+    assert [ln.split(" ", 1)[1] for ln in lines if ln.startswith("newmtl ")] == list(obj.materials)
+    for ln in lines:
+        if ln.startswith(("map_", "norm ")):
+            assert (meshes / ln.split()[-1]).is_file(), ln
+    visuals = [p for p in meshes.glob("*.obj") if "__collision_" not in p.name]
+    assert visuals
+    for p in visuals:
+        head = [ln for ln in p.read_text().splitlines() if ln.startswith(("mtllib ", "usemtl "))]
+        assert head[0] == "mtllib materials.mtl" and head[1].split(" ", 1)[1] in obj.materials, p.name
+
 def test_interface_layer(written):
     obj, folder = written
     stage = Usd.Stage.Open(str(folder / "zoo_000000.usda"))

@@ -102,8 +102,11 @@ def window(tmp_path_factory):
 
 
 def _mtl(folder, slot: str) -> dict[str, str]:
-    lines = (folder / "meshes" / f"{slot}.mtl").read_text().splitlines()
-    return {ln.split(" ", 1)[0]: ln.split(" ", 1)[1] for ln in lines if " " in ln}
+    """The ``newmtl slot`` block of the object's MTL."""
+    lines = (folder / "meshes" / "materials.mtl").read_text().splitlines()
+    block = lines[lines.index(f"newmtl {slot}") + 1:]
+    block = block[:next((i for i, ln in enumerate(block) if ln.startswith("newmtl ")), len(block))]
+    return {ln.split(" ", 1)[0]: ln.split(" ", 1)[1] for ln in block if " " in ln}
 
 
 def test_writers_apply_the_wear_as_shader_inputs(window):

@@ -251,6 +251,52 @@ def test_quaternions_agree_with_scipy():
         assert np.allclose(_quat(m), q if q[0] >= 0 else -q, atol=1e-12) or abs(q[0]) < 1e-12
 
 
+def test_equal_obj_files_are_written_once_and_every_link_finds_its_meshes(tmp_path):
+    """A microwave's keypad buttons are links of the same meshes: each OBJ is written once and shared; the
+    URDF and the MJCF name only files that exist, and MuJoCo places every collision mesh where the model's
+    hull is (the shared file read from each link's own frame)."""
+    import hashlib
+
+    from scipy.optimize import linear_sum_assignment
+
+    obj = infmob_usd.generate("microwave", seed=0, texture_size=16)
+    folder = infmob_usd.save(obj, tmp_path)
+    objs = sorted((folder / "meshes").glob("*.obj"))
+    digests = [hashlib.sha256(p.read_bytes()).hexdigest() for p in objs]
+    assert len(set(digests)) == len(digests)  # no two files of the same bytes
+    urdf = ET.parse(folder / f"{folder.name}.urdf").getroot()
+    used = {}  # file -> the links that name it
+    for link in urdf.findall("link"):
+        for mesh in link.iter("mesh"):
+            used.setdefault(mesh.get("filename"), set()).add(link.get("name"))
+    assert {f"meshes/{p.name}" for p in objs} == set(used)  # every file named, every name a file
+    assert any(len(links) > 1 for links in used.values())  # some file serves several links
+    mjcf_files = {el.get("file") for el in _xml(folder).iter("mesh")}
+    assert mjcf_files == {p.name for p in objs}
+
+    model = mujoco.MjModel.from_xml_path(str(folder / f"{folder.name}.xml"))
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    got: dict[str, list] = {}
+    for g in range(model.ngeom):
+        name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_GEOM, g)
+        if "__collision_" not in name:
+            continue
+        m = model.geom_dataid[g]
+        v = model.mesh_vert[model.mesh_vertadr[m]:model.mesh_vertadr[m] + model.mesh_vertnum[m]]
+        w = v @ data.geom_xmat[g].reshape(3, 3).T + data.geom_xpos[g]
+        got.setdefault(name.split("__collision_")[0], []).append(np.concatenate([w.min(0), w.max(0)]))
+    for link in obj.links:
+        want = [np.concatenate([v.min(0), v.max(0)]) + np.tile(link.origin, 2)
+                for p in link.pieces for v, _ in p.hulls()]
+        assert len(got.get(link.name, [])) == len(want), link.name
+        if want:  # each hull's box matched to one geom's box
+            a, b = np.array(got[link.name]), np.array(want)
+            cost = np.abs(a[:, None] - b[None]).max(-1)
+            rows, cols = linear_sum_assignment(cost)
+            assert cost[rows, cols].max() < 1e-5, link.name
+
+
 def test_sprung_parts_stay_up_in_mujocos_urdf_reader(tmp_path):
     """A URDF has no spring: a toaster's carriage lever and its buttons must not sink onto their pressed stops
     when MuJoCo reads the URDF (the lever fell its whole 20 mm before the URDF's holding friction and no-slip
