@@ -69,13 +69,13 @@ MATERIALS = {"body": ("finish", {"black": "plastic:black", "dark_grey": "plastic
              # cover glass: it mirrors the room, where a see-through glass over black reads as a grey disc)
              "glass": "glass:smoked", "element": "screen:blue_black",
              "screen": "screen:black", "flash": "glass:frosted", "mark": "plastic:white", "lamp": "plastic:orange",
-             "rubberised": "rubber:black"}  # an action camera's soft-touch shell
+             "action_shell": "plastic:black|dark_grey"}  # an action camera's matte shell (GoPro black, DJI grey)
 # bodies are massed solid at the density that gives their named products' weight in their bounding box:
 # EOS 250D 449 g in ~122 x 93 x 50 mm (+ grip) ~ 700 kg/m^3; RX100 III 290 g in 102 x 58 x 41 mm ~ 1200;
 # Instax Mini 12 306 g in 104 x 122 x 67 mm ~ 360 (a hollow moulded shell round the film pack); a6400 403 g in
 # 120 x 67 x 60 mm ~ 840; GoPro HERO12 154 g in 72 x 51 x 34 mm ~ 1250
 SUBSTRATES = {"body": ("design", {"dslr": 700.0, "mirrorless": 840.0, "compact": 1200.0, "instant": 700.0,
-                                  "action": 1250.0}), "pastel": 360.0, "rubberised": 1250.0}
+                                  "action": 1250.0}), "pastel": 360.0, "action_shell": 1250.0}
 
 
 class CameraLayout(Layout):
@@ -95,7 +95,7 @@ class CameraLayout(Layout):
     mirrorless = dslr
 
     def action(self, node):
-        body = self.place(K.action_body(self.c, "rubberised", "trim", "element", "mark", "screen"), "body")
+        body = self.place(K.action_body(self.c, "action_shell", "trim", "element", "mark", "screen"), "body")
         self._controls(node, body)
 
     def compact(self, node):
@@ -148,7 +148,7 @@ class CameraLayout(Layout):
         self.hinge(body.root, "screen", screen.anchor("hinge"), upper=K.SCREEN_TILT, role="lid")
 
     def door(self, node, body):
-        shell = {"instant": "pastel", "action": "rubberised"}.get(self.c.design, "body")
+        shell = {"instant": "pastel", "action": "action_shell"}.get(self.c.design, "body")
         door = self.place(K.side_door(self.c, shell), "door")
         self.hinge(body.root, "door", door.anchor("hinge"), upper=K.DOOR_OPENS, role="lid")
 

@@ -19,6 +19,7 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
 from infmob_usd.physical import MIN_HULL_WIDTH
+from infmob_usd.profiles import sections_for
 
 from .handtools import hull
 from .usb import slab
@@ -59,8 +60,8 @@ DESIGNS = {
                                0.0042),
     # GoPro HERO12 Black 71.8 x 50.8 x 33.6 mm, 154 g; DJI Osmo Action 4 70.5 x 44.2 x 32.8 mm, 145 g: a block
     # with a fixed wide-angle lens in a square cover off to one side, a front status screen, the shutter on top
-    # and the battery door on the side; lens: its cover glass ~16 mm across
-    "action": CameraDesign((0.0705, 0.0720), (0.044, 0.051), (0.026, 0.030), (0.0075, 0.0090), 0.004, 0.0, 0.0040),
+    # and the battery door on the side; its front element ~18 mm across
+    "action": CameraDesign((0.0705, 0.0720), (0.044, 0.051), (0.026, 0.030), (0.0085, 0.0100), 0.004, 0.0, 0.0040),
 }
 """Designs -> sizes (maker data sheets named beside each)."""
 
@@ -144,7 +145,14 @@ def along_lens(c: Camera, piece: g.Piece) -> g.Piece:
 def tube(c: Camera, r: float, x0: float, x1: float, thick: float, material: str, name: str) -> g.Piece:
     """A hollow tube about the lens axis from x0 to x1, outer radius ``r``."""
     # 24 wedges round: a wedge's inner face is a chord, 0.2-0.3 mm inside a 30 mm bore (8 would be 2 mm)
-    return along_lens(c, g.shell([(r, x0), (r, x1)], thick, material, convex_sectors=24, name=name))
+    return along_lens(c, g.shell([(r, x0), (r, x1)], thick, material, sections=round_sections(r), convex_sectors=24,
+                                 name=name))
+
+
+def round_sections(r: float) -> int:
+    """Sections round a lens's rings and glass: a camera is seen close up, where the 12-16 facets the chord
+    tolerance allows a 1-2 cm ring show as a polygon."""
+    return max(32, sections_for(r))
 
 
 def lens_axis(c: Camera, x: float) -> Frame:
@@ -166,7 +174,7 @@ def _front_glass(c: Camera, r: float, x: float, rim: str, glass: str, mark: str)
     dome[-1] = (0.0, dome[-1][1])
     face = 0.18 * r  # the rim's front face, from its outside inward
     pieces = [tube(c, r, x - 0.003, x, face, rim, "rim"),
-              along_lens(c, g.revolve(dome, glass, name="element")),
+              along_lens(c, g.revolve(dome, glass, sections=round_sections(ge), name="element")),
               g.cylinder((back - 0.0012, y, z), (back - 0.0002, y, z), ge, rim, name="inside").replace(convex=())]
     ring = tube(c, r - 0.62 * face, x, x + 6e-5, 0.08 * face, mark, "print").replace(convex=())
     dashes = []
@@ -339,7 +347,7 @@ def action_body(c: Camera, shell: str, trim: str, element: str, mark: str, scree
     DJI Osmo Action 3-4)."""
     w, h, d = c.width, c.height, c.depth
     y, z = c.axis
-    r, s = c.lens, 1.45 * c.lens  # the square cover: 24 mm over a 16 mm lens
+    r, s = c.lens, 1.35 * c.lens  # the square cover: ~26 mm over an ~18 mm front element
     pieces = [_shell_body(c, shell, 0.0, 0.0),
               g.box_between((d - 0.001, y - s, z - s), (d + 0.0035, y + s, z + s), trim, bevel=0.0015,
                             name="lens_cover"),
