@@ -56,8 +56,8 @@ the glass's front edge). ``mount``: ``built_in`` (a top plate over a housing, kn
 PARAMS = (
     Choice("mount", "built into a worktop or a counter-top cooker", choices=("built_in", "counter"),
            weights=(0.7, 0.3)),
-    Float("width", "built-in width (Y; 2 zones: a 0.3 m domino, 5-6 zones at least 0.75 m); a counter"
-          " cooker maps it onto 0.5-0.6 m", "m", 0.58, 0.92),
+    Float("width", "built-in width (Y), mapped onto the zone count's range (2 zones: a 0.3 m domino; 3: 0.45-0.6 m;"
+          " 4: 0.58-0.77 m; 5-6: 0.75-0.92 m); a counter cooker maps it onto 0.5-0.6 m", "m", *HB.WIDTH),
     Float("depth", "built-in depth (X); a counter cooker maps it onto 0.3-0.36 m", "m", *B["depth"]),
     Float("height", "built-in height, top plate and housing (Z); a counter cooker maps it onto 0.06-0.11 m",
           "m", *B["housing"]),

@@ -5,8 +5,10 @@ control group on its front; a ``four_slot`` side-by-side toaster with a control 
 ``long_slot`` toaster (two extra-long slots) with one control group or one per slot. A control group is a
 carriage lever that rests at the top of its slot and slides down (prismatic, held up by its return spring:
 role ``lever``), a browning dial turning 270 degrees from light to dark (most models; some set the shade with
-keys), and up to three push keys pressed into the front (cancel, defrost, bagel: role ``button``). The crumb
-tray under the slots pulls out of the front (prismatic).
+keys), and up to three push keys pressed into the front (cancel, defrost, bagel: role ``button``); a two-slot
+or single-control long-slot toaster has them at one end of its long side or stands end on, its controls up
+the middle of its short end (``control_face``).
+The crumb tray under the slots pulls out of the front (prismatic).
 
 X is depth (the controls face +X), Y is width, Z is up. The casing is a sheet box with rounded upright
 corners; every hole in it (slots, lever slots, dial and key holes, the tray's opening) is a named cut-out
@@ -29,6 +31,10 @@ PARAMS = (
     Float("slot_width", "bread slot width", "m", 0.028, 0.038),
     Float("corner", "radius of the casing's upright corners", "m", 0.01, 0.025),
     Choice("finish", "casing finish", choices=("brushed_metal", "painted", "plastic")),
+    # both layouts are common: Cuisinart CPT-122, Breville BTA720XL (long side); Dualit, Smeg, KitchenAid (end)
+    Choice("control_face", "a two-slot or single-control long-slot toaster's lever, dial and keys: at one end of"
+           " its long side, or on its short end (then its front: the slots run front to back)",
+           choices=T.CONTROL_FACES),
 )
 
 GRAMMAR = Grammar("toaster", {
@@ -47,21 +53,23 @@ GRAMMAR = Grammar("toaster", {
 (dual control); a group's dial is drawn object-wide (``has_dial``: keys-only models set the shade with keys),
 its keys (0-3: cancel, defrost, bagel) per group."""
 
+# down a slot: a mica card (amber-cream sheet) wound with nichrome ribbon (dark grey once fired) behind
+# chrome guard wires (toaster teardown photos)
 MATERIALS = {"body": "finish", "lever": "plastic:black", "knob": "plastic:black", "button": "plastic:black",
-             "tray": "brushed_metal", "trim": "chrome",
-             "chassis": "brushed_metal"}
+             "tray": "brushed_metal", "trim": "chrome", "chassis": "brushed_metal", "mica": "ceramic:cream|ivory",
+             "element": "cast_iron", "carriage": "plastic:black"}
 SUBSTRATES = {"body": ("finish", {"painted": 7850.0})}  # a painted casing is painted steel sheet
 
 
 class ToasterLayout(controls.ControlFace):
     def toaster(self, node):
         p, design = self.p, node.choice
-        size = T.casing_size(design, p["size"], p["corner"])
         groups = node.one(design).of("controls")
+        size = T.casing_size(design, p["size"], p["corner"], T.end_on(design, p["control_face"], len(groups)))
         cuts = T.cutouts(design, size, p["slot_width"],
-                         [(g.one("dial") is not None, len(g.of("button"))) for g in groups])
+                         [(g.one("dial") is not None, len(g.of("button"))) for g in groups], p["control_face"])
         body = self.place(casing.sheet_casing(size, "body", cuts), "body")
-        self.extend(body.root, T.slot_walls(size, cuts, "chassis"))
+        self.extend(body.root, T.slot_walls(size, cuts, "chassis") + T.carriage_guides(size, cuts, "carriage"))
         self.grow(node.one(design), body=body)
         self.grow(node.one("tray"), body=body, size=T.crumb_tray(size))
 

@@ -53,10 +53,12 @@ GRAMMAR = Grammar("toaster_oven", {
 })
 """Racks, knobs and keys are counted per design (``categories/parts/toaster_ovens.py`` ``DESIGNS``)."""
 
-MATERIALS = {"body": "finish", "door": "plastic:black", "door_inner": "plastic:black", "interior": "enamel",
-             "glass": "glass", "handle": "handle_finish", "rack": "chrome", "knob": "plastic:black",
-             "button": "plastic:black", "trim": "chrome", "element": "brushed_metal", "feet": "rubber",
-             "tray": "brushed_metal"}
+# A toaster oven's cavity is dark non-stick or enamelled steel (Breville BOV800XL, Cuisinart TOB-260,
+# Black+Decker TO1313SB product photos), its quartz heating tubes milky white when cold
+MATERIALS = {"body": "finish", "door": "plastic:black", "door_inner": "plastic:black",
+             "interior": "enamel:black|graphite|anthracite", "glass": "glass", "handle": "handle_finish",
+             "rack": "chrome", "knob": "plastic:black", "button": "plastic:black", "trim": "chrome",
+             "element": "ceramic:white|ivory", "feet": "rubber", "tray": "brushed_metal"}
 SUBSTRATES = {"body": ("finish", {"painted": 7850.0})}  # a painted casing is painted steel sheet
 
 

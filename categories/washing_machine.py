@@ -8,7 +8,9 @@ between stops (revolute), beside it keys press in (prismatic, spring-returned) a
 temperature or drying-time knob turns (revolute); the service flap at the bottom right drops forward
 (revolute about +Y) and only then does the drain-pump filter cap behind it turn (revolute, ``requires_open``).
 A ``top_loader`` (US, 27 in wide) loads through a lid hinged at the back of its top (revolute about -Y), its
-dials and keys on the front of the console at the back.
+dials and keys on the front of the console at the back; it washes with an agitator up the middle of its basket
+(a fabric-softener cup pressed on its post lifts off) or a low impeller plate on the basket floor
+(``wash_action``).
 
 X is depth (the front faces +X), Y is width, Z is up.
 """
@@ -45,6 +47,10 @@ PARAMS = (
            choices=("selector", "timer"), weights=(0.6, 0.4)),
     Choice("lid_style", "a top loader's lid: a frame round a glass window, or a solid panel",
            choices=("glass", "solid"), weights=(0.6, 0.4)),
+    # US top-loader line-ups (Whirlpool, Maytag, GE, Speed Queen, approximate): agitator models still the larger
+    # share, low-profile impeller models the rest
+    Choice("wash_action", "a top loader's: an agitator up the middle of the basket, or a low impeller plate on its"
+           " floor (no softener cup: it sits on an agitator's post)", choices=WM.WASH_ACTIONS, weights=(0.6, 0.4)),
 )
 
 GRAMMAR = Grammar("washing_machine", {
@@ -78,17 +84,25 @@ MATERIALS = {"body": ("finish", {k: v[0] for k, v in FINISHES.items()}), "lid": 
              # two layers of it, reads as an opaque grey disc from inside
              "glass": "glass:clear|clear_blue",
              "drum": "brushed_metal:stainless", "gasket": "rubber", "liner": "plastic:light_grey|dark_grey|white",
+             "agitator": "plastic:white|light_grey",  # agitators and impellers: white or grey moulded PP
              "drawer": "plastic:white|light_grey",
              "handle": Same("trim"), "knob": "plastic", "button": "plastic", "display": "rubber", "feet": "rubber",
              "machine": "brushed_metal", "filter": "plastic:white|light_grey|dark_grey"}
 SUBSTRATES = {"body": A.STEEL, "lid": A.STEEL}  # a painted casing and lid are painted steel sheet
 
 
+def derive(p: dict) -> dict:
+    """An impeller has no post for a softener cup to sit on."""
+    if p.get("wash_action") == "impeller" and p.get("has_softener_cup"):
+        return {**p, "has_softener_cup": False}
+    return p
+
+
 class WashingMachineLayout(controls.ControlFace):
     def washing_machine(self, node):
         p, design = self.p, node.choice
-        m = WM.machine(design, p["size"], p["tall"], p["door_size"], p["corner"])
         style, ctl = node.one(design), node.one("controls")
+        m = WM.machine(design, p["size"], p["tall"], p["door_size"], p["corner"], p["wash_action"])
         flap = style.one("service_flap")
         body = self.place(WM.body(m, len(ctl.of("dial")), len(ctl.of("key")), bool(flap)), "body")
         self.grow(style, body=body, m=m)
@@ -104,7 +118,7 @@ class WashingMachineLayout(controls.ControlFace):
 
     def top_loader(self, node, body, m):
         self.grow(node.one("lid"), body=body, m=m)
-        if cup := node.one("softener_cup"):
+        if cup := node.one("softener_cup"):  # pressed on the agitator's post
             self.grow(cup, body=body)
 
     def softener_cup(self, node, body):
@@ -159,4 +173,4 @@ class WashingMachineLayout(controls.ControlFace):
 
 
 CATEGORY = Category("washing_machine", __doc__.strip().splitlines()[0], PARAMS, GRAMMAR, WashingMachineLayout,
-                    MATERIALS, substrates=SUBSTRATES, palette=appliance)
+                    MATERIALS, substrates=SUBSTRATES, palette=appliance, derive=derive)

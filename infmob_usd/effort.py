@@ -470,6 +470,8 @@ def assign_drives(obj):
             if j.role in HELD_ROLES:  # friction holds its load; the hand moves it against that friction too
                 j = replace(j, friction=holding(obj, j))
                 effort += j.friction
+            elif j.stiffness > 0 and (hold := _round(holding(obj, j))) > j.friction:
+                j = replace(j, hold_friction=hold)
             j = replace(j, friction=_round(j.friction))
             j = replace(j, effort=_round(effort), velocity=_round(d.velocity), armature=_round(d.armature),
                         damping=_round(d.damping))

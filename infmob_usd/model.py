@@ -73,6 +73,10 @@ class Joint:
     # joints of the same part that must be at rest while this one is off rest, and it while they are:
     # the alternative modes of an exclusive compound joint (JointSpec.exclusive; a tilt-and-turn sash)
     excludes: tuple[str, ...] = ()
+    # a spring-returned joint's friction where its spring cannot be written (a URDF has no spring element):
+    # holds the part against its weight anywhere in its range, or a reader without the spring lets it fall
+    # onto its far stop (0: the joint's own friction; set by effort.assign_drives)
+    hold_friction: float = 0.0
 
     @property
     def movable(self) -> bool:

@@ -250,10 +250,11 @@ def metadata(obj, files: dict[str, str] | None = None) -> dict:
 def _spring_and_mimic(j) -> dict:
     """``spring``: a return spring (N/m or N m/rad about ``reference``, m or rad; the joint's ``damping``
     goes with it), which a URDF cannot carry: in SAPIEN set it as the joint's drive,
-    ``set_drive_property(stiffness, damping)`` and ``set_drive_target(reference)``. ``mimic``: the joint
-    follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``). ``excludes``: the
-    joints of the same part that must be at rest while this one is off rest (and it while they are), the
-    alternative modes of one fitting (a tilt-and-turn sash tilts or turns)."""
+    ``set_drive_property(stiffness, damping)`` and ``set_drive_target(reference)``, with the joint's ``friction``
+    here (the URDF's holds the part against its weight where no spring is: :attr:`.model.Joint.hold_friction`).
+    ``mimic``: the joint follows ``joint``, ``q = multiplier * q_joint + offset`` (also the URDF's ``<mimic>``).
+    ``excludes``: the joints of the same part that must be at rest while this one is off rest (and it while they
+    are), the alternative modes of one fitting (a tilt-and-turn sash tilts or turns)."""
     out = {}
     if j.excludes:
         out["excludes"] = list(j.excludes)

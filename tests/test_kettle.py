@@ -33,14 +33,29 @@ def test_the_spout_is_open_and_rises_from_low_on_the_body_over_the_fill_line(des
     for seed in range(3):
         p, bp = make(seed, design=design)
         k = K.kettle(design, p["girth"], p["tallness"])
-        root, axis, length, s = K._spout_line(k)
-        tip = root + length * axis
+        sp = K.spout_of(k)
+        root, tip = sp.point(np.array([0.0, 1.0]))
         h = k.height - k.z0
         assert tip[2] >= k.z0 + K.FILL_LINE * h and root[2] <= k.z0 + 0.5 * h
         spout = next(pc for pc in _pieces(bp, "body") if pc.bounds[1][0] > k.radius + 0.01)
-        for f in (0.7, 0.9, 0.99):  # a bore runs out of its tip: no end cap, no solid rod
-            assert _winding(spout.vertices, spout.faces, root + f * length * axis) < 0.5
-        assert np.linalg.norm(spout.vertices - tip, axis=1).min() < s["r1"] + 1e-3
+        for q in sp.point(np.array([0.5, 0.7, 0.9, 0.99])):  # a bore runs out of its tip: no end cap, no rod
+            assert _winding(spout.vertices, spout.faces, q) < 0.5
+        assert np.linalg.norm(spout.vertices - tip, axis=1).min() < max(sp.across[1], sp.along[1]) + 1e-3
+
+
+@pytest.mark.parametrize("design", ["electric", "whistling", "camping"])
+def test_the_spout_tapers_from_a_root_moulded_into_the_wall_to_a_narrow_tip(design):
+    """A real spout is wide where it leaves the body and narrow at the tip (not a constant-width tube stuck
+    on): its section at the root is at least twice its tip's, and the root's wide section meets the wall."""
+    for seed in range(3):
+        p, bp = make(seed, design=design)
+        k = K.kettle(design, p["girth"], p["tallness"])
+        sp = K.spout_of(k)
+        a, b = sp.half_widths(np.linspace(0, 1, 5))
+        assert (np.diff(a) < 0).all() and (np.diff(b) < 0).all()
+        assert a[0] * b[0] >= 4 * a[-1] * b[-1]
+        root = sp.point(np.array([0.0]))[0]
+        assert root[0] < K._r_at(k, root[2]) < root[0] + b[0]  # the root's centre inside the wall, its rim out
 
 
 @pytest.mark.parametrize("design", ["electric", "whistling"])

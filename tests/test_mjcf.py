@@ -249,3 +249,21 @@ def test_quaternions_agree_with_scipy():
         x, y, z, w = Rotation.from_matrix(m).as_quat()
         q = np.array([w, x, y, z])
         assert np.allclose(_quat(m), q if q[0] >= 0 else -q, atol=1e-12) or abs(q[0]) < 1e-12
+
+
+def test_sprung_parts_stay_up_in_mujocos_urdf_reader(tmp_path):
+    """A URDF has no spring: a toaster's carriage lever and its buttons must not sink onto their pressed stops
+    when MuJoCo reads the URDF (the lever fell its whole 20 mm before the URDF's holding friction and no-slip
+    pass), yet the lever still goes down under its effort."""
+    from infmob_usd.validate.mujoco_sim import REST_MAX_PRISMATIC, REST_MAX_REVOLUTE, rest_motion
+
+    obj = infmob_usd.generate("toaster", seed=0, texture_size=16)
+    folder = infmob_usd.save(obj, tmp_path, formats="urdf")
+    sprung = {j.name: j for j in obj.joints if j.stiffness > 0}
+    assert any(j.hold_friction > j.friction for j in sprung.values())
+    model = load_model(folder / f"{folder.name}.urdf")
+    motion, _ = rest_motion(model)
+    for name, j in sprung.items():
+        assert motion[name] <= (REST_MAX_PRISMATIC if j.type == "prismatic" else REST_MAX_REVOLUTE), name
+    lever = next(p for p in push_joints(model) if "lever" in p.joint and p.side == "upper")
+    assert lever.travel > 0.9, lever

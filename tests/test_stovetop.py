@@ -73,3 +73,29 @@ def test_a_coil_is_a_spiral_tube_standing_over_a_lipped_drip_pan(mount):
             near = np.sort(rad[np.abs(np.angle(np.exp(1j * (ang - ray)))) < 0.12])
             crossings = 1 + int(np.sum(np.diff(near) > 0.004)) if len(near) else 0
             assert crossings >= 3, (ray, crossings)
+
+
+@pytest.mark.parametrize("design", ("coil", "induction"))
+@pytest.mark.parametrize("n", (2, 3, 4, 5, 6))
+def test_zones_keep_real_spacing_and_sizes(design, n):
+    """Zones never touch: every pair of zones (a coil measured to its drip pan's lip, an induction zone to its
+    ring) keeps >= 50 mm of bare top between them, and every zone is a real one (>= 110 mm across: a 6 in
+    coil's smaller sibling on a crowded hob), all inside the top."""
+    from infmob_usd.categories.parts import hobs as HB
+
+    for seed, width in ((0, 0.58), (1, 0.75), (2, 0.92)):
+        _, bp = make(seed, design=design, mount="built_in", zone_count=n, width=width, induction_controls="knobs")
+        pieces = bp.parts["body"].pieces
+        if design == "coil":
+            rings = [pc for pc in pieces if pc.material == "trim" and not pc.convex]  # the pans' lips
+        else:
+            rings = [pc for pc in pieces if pc.material == "display"]
+        assert len(rings) == n
+        discs = [((pc.bounds[0][:2] + pc.bounds[1][:2]) / 2, float(np.ptp(pc.vertices[:, 0])) / 2) for pc in rings]
+        for i, (c, r) in enumerate(discs):
+            assert r >= 0.055
+            for c2, r2 in discs[i + 1:]:
+                assert np.linalg.norm(c - c2) - r - r2 >= HB.HOB["zone"]["gap"] - 1e-6
+        top = next(pc for pc in pieces if pc.material == "top")
+        lo, hi = top.bounds
+        assert all((c - r > lo[:2]).all() and (c + r < hi[:2]).all() for c, r in discs)

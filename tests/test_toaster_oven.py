@@ -52,3 +52,20 @@ def test_the_door_drops_to_horizontal_with_its_handle_over_the_counter(design):
         open_door = part_points(bp, "door", bp.poses({("door", 0): door.upper})["door"])
         casing_bottom = min(pc.bounds[0][2] for pc in bp.parts["body"].pieces if pc.material != "feet")
         assert open_door[:, 2].min() >= casing_bottom
+
+
+@pytest.mark.parametrize("design", ["compact", "six_slice", "air_fry"])
+def test_heating_tubes_run_under_the_roof_and_over_the_floor_in_their_sockets(design):
+    """A toaster oven's defining feature: quartz tubes across the cavity, two over the floor and two under the
+    roof, each end in a metal cap on the side walls, light against the dark cavity."""
+    from infmob_usd.categories.parts import toaster_ovens as TO
+
+    _, bp = make(0, design=design)
+    pieces = bp.parts["body"].pieces
+    tubes = [pc for pc in pieces if pc.material == "element"]
+    caps = [pc for pc in pieces if pc.material == "trim" and not pc.convex]
+    assert len(tubes) == 4 and len(caps) == 4 * 2 * 2  # a cap and a bracket at both ends of each
+    z = sorted(pc.bounds[0][2] for pc in tubes)
+    assert z[1] < z[2] - 0.05  # two low, two high
+    assert all(np.ptp(pc.vertices[:, 1]) > 0.15 and np.ptp(pc.vertices[:, 2]) <= 2 * TO.ELEMENT_R + 1e-6
+               for pc in tubes)

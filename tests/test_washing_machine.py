@@ -76,3 +76,29 @@ def test_door_glass_is_clear():
     spec = MATERIALS["glass"]
     family, variants = spec.split(":")
     assert family == "glass" and set(variants.split("|")) <= {"clear", "clear_blue"}
+
+
+@pytest.mark.parametrize("wash", ["agitator", "impeller"])
+def test_a_top_loader_washes_with_an_agitator_or_an_impeller_in_its_basket(wash):
+    """A top loader's basket is not empty: an agitator stands up its middle from a flared skirt on the floor to
+    near the rim (a softener cup may sit on its post), or a low finned impeller plate covers most of the floor
+    (and then no softener cup: there is no post for it)."""
+    from categories.parts import washers as WM
+
+    for seed in range(3):
+        p, bp = make(seed, design="top_loader", wash_action=wash, has_softener_cup=True)
+        body = bp.parts["body"].pieces
+        drum = [pc for pc in body if pc.material == "drum"]
+        floor = min(pc.bounds[0][2] for pc in drum)
+        rim = max(pc.bounds[1][2] for pc in drum)
+        rb = max(np.ptp(pc.vertices[:, 1]) for pc in drum) / 2
+        parts = [pc for pc in body if pc.material == "agitator"]
+        lo = np.min([pc.bounds[0] for pc in parts], axis=0)
+        hi = np.max([pc.bounds[1] for pc in parts], axis=0)
+        assert lo[2] == pytest.approx(floor + WM.WALL, abs=0.01)  # standing on the basket floor
+        if wash == "agitator":
+            assert hi[2] > rim - 0.12 and np.ptp([lo[1], hi[1]]) > 1.2 * rb  # to near the rim, its skirt wide
+            assert len(parts) >= 1 + 2 * WM.AGITATOR["vanes"]
+        else:
+            assert hi[2] - lo[2] < 0.08 and np.ptp([lo[1], hi[1]]) > 1.5 * rb  # low, across most of the floor
+            assert "softener_cup" not in bp.parts and len(parts) == 1 + WM.IMPELLER["fins"]

@@ -37,8 +37,14 @@ HOB = {
     "sheet": 0.0008,  # a steel top's sheet (0.6-1 mm stainless or enamelled); a glass-ceramic top is solid
     "strip": 0.075,  # a built-in hob's control strip along its front edge (knobs on top)
     "margin": 0.03,  # zones keep this far inside the plate's edges
-    # electric zones: 145-210 mm coils / induction zones (GE WB30M1, WB30M2 coils; Bosch PIE631 zones)
-    "zone": {"radius": 0.105, "side": 0.012, "small": 0.75},
+    # electric zones: 145-210 mm coils / induction zones (GE WB30M1 6 in and WB30M2 8 in coils; Bosch
+    # PIE631FB1E: 145, 180 and 210 mm zones on a 592 x 522 mm glass); a smaller zone is ~0.75 of the larger.
+    # Neighbouring zones (a coil with its drip pan) keep >= 50 mm of bare top between them, as on every hob in
+    # those installation sheets (centres 250-290 mm apart on a 60 cm four-zone hob): pans never touch.
+    "zone": {"radius": 0.105, "least": 0.0725, "small": 0.75, "gap": 0.05},
+    # built-in widths by zone count (Bosch / NEFF / Frigidaire hob ranges): a 30 cm domino carries 2 zones,
+    # 45-60 cm 3, 58-77 cm 4, 75-92 cm 5 or 6; the ``width`` parameter is mapped onto its count's range
+    "widths": {3: (0.45, 0.6), 4: (0.58, 0.77), 5: (0.75, 0.92), 6: (0.75, 0.92)},
     # a coil element's sheath 8-9 mm wide wound at a 13-15 mm pitch, 4 turns on a 6 in coil, 5 on an 8 in one
     # (GE WB30M1, WB30M2), on a wire support 3-5 mm over a chrome drip pan with a 4 mm lip (GE WB31M19/20 pans)
     "coil": {"wire": 0.0045, "pitch": 0.014, "points": 32, "pan": 0.012, "over": 0.004, "lip": 0.004},
@@ -51,6 +57,7 @@ HOB = {
     "key": controls.Button(half=(0.011, 0.007), shape="rect", proud=0.003, travel=0.002),
     "key_strip": 0.055, "key_pitch": 0.04,
 }
+PAN_RIM = 0.014  # m, a coil's drip pan reaches this far past the coil (its flared lip)
 KNOB = controls.Dial(radius=HOB["knob"]["radius"], stem=HOB["knob"]["stem"], style="ridge",
                      turns=HOB["knob"]["gas"])
 COIL_KNOB = controls.Dial(radius=HOB["knob"]["radius"], stem=HOB["knob"]["stem"], style="round",
@@ -66,18 +73,30 @@ def columns(n: int, W: float) -> list[int]:
     return {1: [1], 2: [1, 1], 3: [2, 1], 4: [2, 2], 5: [2, 1, 2], 6: [2, 2, 2]}[n]
 
 
-def zones(xs, ys, n: int) -> list[tuple[float, float, float]]:
-    """Electric zones (x, y, radius) in :func:`columns` over the area ``xs`` x ``ys``."""
+def zones(xs, ys, n: int, rim: float = 0.0) -> list[tuple[float, float, float]]:
+    """Electric zones (x, y, radius) in :func:`columns` over the area ``xs`` x ``ys`` (which each zone's outer
+    edge, its radius plus ``rim``, e.g. a coil's drip pan, stays inside). Every zone is as large as the area
+    lets up to :data:`HOB` ``zone`` radius, its neighbours at least ``gap`` away edge to edge; a column of two
+    pairs a large zone with a small one, the room left spread evenly before, between and after them."""
     z = HOB["zone"]
     per = columns(n, ys[1] - ys[0] + 2 * HOB["margin"])
-    gw = (ys[1] - ys[0]) / len(per)
+    gw, depth = (ys[1] - ys[0]) / len(per), xs[1] - xs[0]
     out = []
     for k, m in enumerate(per):
-        r = min(gw / 2 - z["side"], (xs[1] - xs[0]) / m / 2 - z["side"], z["radius"])
-        for j in range(m):
-            small = (j + k) % 2 == 1
-            out.append((xs[0] + (xs[1] - xs[0]) * (j + 0.5) / m, ys[0] + (k + 0.5) * gw, r * (z["small"] if small
-                                                                                             else 1.0)))
+        if m == 1:
+            r = min(gw / 2 - z["gap"] / 2, depth / 2) - rim
+        else:  # a large and a small zone one behind the other, their radii summing to at most ``pair``
+            pair = (depth - z["gap"]) / 2 - 2 * rim
+            r = min(gw / 2 - z["gap"] / 2 - rim, pair / (1 + z["small"]))
+        r = min(r, z["radius"])
+        small = min(r, max(z["small"] * r, z["least"]), pair - r) if m == 2 else r  # no smaller than a real one
+        radii = [r] if m == 1 else ([r, small] if k % 2 == 0 else [small, r])
+        slack = (depth - sum(2 * (q + rim) for q in radii) - (m - 1) * z["gap"]) / (m + 1)
+        x = xs[0]
+        for j, q in enumerate(radii):
+            x += slack + (z["gap"] if j else 0.0) + q + rim
+            out.append((x, ys[0] + (k + 0.5) * gw, q))
+            x += q + rim
     return out
 
 
@@ -99,7 +118,7 @@ def coil(x: float, y: float, z: float, r: float) -> list[g.Piece]:
     tail = [path[-1], [x + (r + 0.004) * out[0], y + (r + 0.004) * out[1], zc], [x + (r + 0.014) * out[0],
                                                                                    y + (r + 0.014) * out[1], top]]
     pieces = [g.disc([x, y, z + c["pan"] / 4], r + 0.01, c["pan"] / 2, "trim", None),
-              g.shell([(r + 0.01, top - 0.001), (r + 0.014, top + c["lip"])], 0.003, "trim").translated((x, y, 0))
+              g.shell([(r + 0.01, top - 0.001), (r + PAN_RIM, top + c["lip"])], 0.003, "trim").translated((x, y, 0))
               .replace(convex=()),
               g.disc([x, y, top + 0.0003], 0.12 * r, 0.0006, "element", 24).replace(convex=()),
               g.tube(path, w, "element").replace(convex=()), g.tube(tail, w, "element").replace(convex=())]
@@ -121,9 +140,13 @@ def induction_ring(x: float, y: float, z: float, r: float) -> list[g.Piece]:
     return [g.shell([(r, z), (r, z + t)], 0.003, "display", center=(x, y, 0.0))]
 
 
+WIDTH = (0.58, 0.92)  # the stovetop category's ``width`` parameter range (mapped per zone count by :func:`size`)
+
+
 def size(mount: str, n: int, W: float, D: float, H: float) -> tuple[float, float, float]:
-    """A hob's (width, depth, height): a built-in two-zone hob is a 30 cm domino, five or six zones need
-    at least 75 cm (Bosch PCR9A5B90, Frigidaire FFGC3626S); a counter cooker's own ranges mapped from the
+    """A hob's (width, depth, height): a built-in two-zone hob is a 30 cm domino, more zones span their count's
+    :data:`HOB` ``widths`` (``W`` mapped from :data:`WIDTH` onto it; Bosch PCR9A5B90, Frigidaire FFGC3626S); a
+    counter cooker's own ranges mapped from the
     parameters' (``W``, ``D`` over the built-in ranges, ``H`` over the housing range)."""
     b, c = HOB["built_in"], HOB["counter"]
     if mount == "counter":
@@ -131,7 +154,8 @@ def size(mount: str, n: int, W: float, D: float, H: float) -> tuple[float, float
                      ((W, b["width"], c["width"]), (D, b["depth"], c["depth"]), (H, b["housing"], c["height"])))
     if n == 2:
         return b["width"][0], D, H
-    return (max(W, b["five"]) if n >= 5 else W), D, H
+    lo, hi = HOB["widths"][n]
+    return lo + (hi - lo) * (W - WIDTH[0]) / (WIDTH[1] - WIDTH[0]), D, H
 
 
 def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int, n_keys: int = 0
@@ -181,7 +205,7 @@ def hob_body(design: str, mount: str, W: float, D: float, H: float, n: int, n_ke
         burners, cols = OV.burner_columns(area_x, area_y, H, columns(n, W))
         pieces += burners
     else:
-        for x, y, r in zones(area_x, area_y, n):
+        for x, y, r in zones(area_x, area_y, n, PAN_RIM if design == "coil" else 0.0):
             pieces += coil(x, y, H, r) if design == "coil" else induction_ring(x, y, H, r)
     return Assembly.single("body", pieces, anchors), cols, (area_x, zt)
 

@@ -24,8 +24,8 @@ import numpy as np
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
-from infmob_usd.rotation import rotation_between
 
+from . import spouts as S
 from .vessel import Profile, lid_gap
 
 
@@ -55,13 +55,20 @@ LID_T = 0.006  # m, the lid's thickness as the simulator sees it
 LID_SHEET = 0.0008  # m, pressed steel or moulded plastic of the lid (its mass)
 LID_OPENS = math.radians(95)  # kettle lids open to about upright
 LID_KNOB = (0.008, 0.015)  # m, the lid's knob: radius, top over the lid's mid-plane
-# Spouts (product photos, approximate: Le Creuset 1.7 l and OXO Uplift whistling kettles, Russell Hobbs 20460
-# jug): an open, tapering tube rising from low on the body (a stovetop kettle's) or from mid-height (a jug's)
-# at 40-55 degrees to a tip over the fill line (~85 % of the height), ~35 mm across at the root and ~22 mm at
-# the tip, a 1.5-2 mm wall.
-SPOUT = {"jug": dict(root=0.5, tip=1.0, rise=math.radians(55), r0=0.017, r1=0.012),
-         "stovetop": dict(root=0.25, tip=1.0, rise=math.radians(40), r0=0.018, r1=0.011)}
-SPOUT_WALL = 0.002  # m
+# Spouts (product photos, approximate: Russell Hobbs 20460, Bosch TWK7203 and Smeg KLF03 jugs; Le Creuset 1.7 l,
+# OXO Uplift and GSI Glacier stovetop kettles). A jug's spout is a beak moulded into its upper front: it leaves the
+# wall over ~7-8 cm of height, ~6 cm across, and narrows to a ~2 cm lip level with the rim, ~3.5 cm proud of
+# the wall. A stovetop kettle's is a cone curving up from low on the body, ~5 cm across at the root and 1.6-2 cm
+# at the tip, its tip ~5 cm proud of the body at about rim height. ``root``/``tip``: heights as shares of the
+# body's; ``reach``: the tip's distance out from the body's widest (m); ``rise``: the centreline's
+# angle over level at the root and at the tip; ``across``/``along``: the section's half-widths (m), root, tip.
+SPOUT = {"jug": dict(root=0.5, tip=1.02, reach=0.03, rise=(60, 20), across=(0.03, 0.013), along=(0.04, 0.009),
+                     flare=2.0),
+         "stovetop": dict(root=0.3, tip=1.0, reach=0.05, rise=(30, 60), across=(0.025, 0.01),
+                          along=(0.032, 0.01), flare=2.0),
+         "camping": dict(root=0.3, tip=1.0, reach=0.035, rise=(30, 55), across=(0.019, 0.008),
+                         along=(0.024, 0.008), flare=2.0)}
+SPOUT_WALL = 0.0015  # m
 FILL_LINE = 0.85  # the max-fill mark as a share of the body's height (kettle listings: 1.7 l of ~2 l brimful)
 FLAP_OPENS = math.radians(80)
 # Side handles (Russell Hobbs 20460, Bosch TWK7203, Le Creuset kettle, product photos): a 10-12 cm grip ~3 cm
@@ -123,29 +130,30 @@ def _r_at(k: Kettle, z: float) -> float:
     return float(f[:, 0][abs(f[:, 1] - z).argmin()])
 
 
-def _spout_line(k: Kettle) -> tuple[np.ndarray, np.ndarray, float, dict]:
-    """The spout's root (inside the front wall), its unit axis, its length and its :data:`SPOUT` sizes."""
-    h, jug = k.height - k.z0, k.z0 > 0
-    s = SPOUT["jug" if jug else "stovetop"]
+def spout_of(k: Kettle) -> S.Spout:
+    """The spout's centreline and sections: its root centre buried in the front wall (the wide root then
+    leaves the wall as a flared bulge), its tip over the fill line and proud of the body."""
+    h = k.height - k.z0
+    kind = "jug" if k.z0 > 0 else ("camping" if k.radius < DESIGNS["whistling"].radius[0] else "stovetop")
+    s = SPOUT[kind]
     za, zb = k.z0 + s["root"] * h, k.z0 + s["tip"] * h
-    root = np.array([_r_at(k, za) - s["r0"], 0.0, za])  # buried in the wall: no gap at the joint
-    axis = np.array([math.cos(s["rise"]), 0.0, math.sin(s["rise"])])
-    return root, axis, (zb - za) / axis[2], s
+    root = np.array([_r_at(k, za) - 0.4 * s["across"][0], 0.0, za])
+    tip = np.array([k.radius + s["reach"], 0.0, zb])
+    span = float(np.linalg.norm(tip - root))
+    a0, a1 = (math.radians(x) for x in s["rise"])
+    c1 = root + 0.4 * span * np.array([math.cos(a0), 0.0, math.sin(a0)])
+    c2 = tip - 0.35 * span * np.array([math.cos(a1), 0.0, math.sin(a1)])
+    return S.Spout(tuple(map(tuple, (root, c1, c2, tip))), s["across"], s["along"], s["flare"], SPOUT_WALL)
 
 
 def spout(k: Kettle, slot: str) -> g.Piece:
-    """The spout: an open tapering tube from low on the front wall up and out to its tip over the fill line."""
-    root, axis, length, s = _spout_line(k)
-    tube = g.shell([(s["r0"], 0.0), (s["r1"], length)], SPOUT_WALL, slot, sections=24, convex_sectors=8)
-    m = np.eye(4)
-    m[:3, :3], m[:3, 3] = rotation_between((0, 0, 1), axis), root
-    return tube.transformed(m)
+    """The spout: an open tube tapering from a wide root moulded into the front wall up and out to its tip."""
+    return S.spout(spout_of(k), slot)
 
 
 def spout_tip(k: Kettle) -> tuple[float, float, float]:
     """The centre of the spout's open end."""
-    root, axis, length, _ = _spout_line(k)
-    return tuple(root + length * axis)
+    return tuple(spout_of(k).tip)
 
 
 def handle_path(k: Kettle) -> list[tuple[float, float, float]]:
@@ -177,8 +185,8 @@ def lid(k: Kettle, slot: str, knob_slot: str) -> tuple[list[g.Piece], Frame]:
 def flap(k: Kettle, slot: str) -> tuple[list[g.Piece], Frame]:
     """The whistle flap over the spout's end, hinged on its top edge (axis -Y: it swings out and up); the hinge
     line is behind the flap's middle, so its weight holds it shut against its stop."""
-    _, axis, _, s = _spout_line(k)
-    tip, r = np.asarray(spout_tip(k)), s["r1"] + 0.003
+    sp = spout_of(k)
+    axis, tip, r = sp.tip_axis, sp.tip, max(sp.across[1], sp.along[1]) + 0.003
     up = np.array([-axis[2], 0.0, axis[0]])  # across the end face, towards its top edge
     pieces = [g.cylinder(tip + 0.002 * axis, tip + 0.006 * axis, r, slot)]
     return pieces, Frame.at(tuple(tip + 0.002 * axis + r * up), z=(0, -1, 0))

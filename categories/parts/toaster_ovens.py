@@ -72,6 +72,10 @@ RACK_LEVELS = {1: (0.35,), 2: (0.22, 0.6)}  # rack heights as shares of the cavi
 RACK_FRONT, RACK_BACK, RACK_SIDE = 0.025, 0.015, 0.004  # m, a rack's wires inside the cavity
 RACK_PULL = 0.55  # a rack slides out this share of its depth to its stop
 ELEMENT_R = 0.005  # m, quartz / sheathed heating element tubes, two under the roof and two over the floor
+# Each quartz tube ends in a metal cap held in a socket bracket on the side walls (Breville BOV800XL,
+# Cuisinart TOB-260 product photos: ~14 mm caps ~12 mm long, on a ~25 x 20 mm bracket)
+ELEMENT_CAP = (0.007, 0.012)  # m, the cap's radius and length
+ELEMENT_BRACKET = (0.025, 0.02, 0.0015)  # m, the socket bracket's height, width (along x) and thickness
 TRAY = dict(height=0.012, lip=0.008, clearance=0.002, pull=0.9)
 # Knobs: temperature (~270 degrees), function (~180), timer (~300) on 32-40 mm knobs (product photos).
 KNOB = controls.Dial(radius=0.017, stem=0.004, style="ridge", turns=4.712)
@@ -140,6 +144,7 @@ def casing(o: Oven, racks: int, cuts: dict[str, Cutout]) -> Assembly:
     for z in (z0 + 2 * ELEMENT_R, z1 - 2 * ELEMENT_R):
         pieces += [g.cylinder((x, y0, z), (x, y1, z), ELEMENT_R, "element", 12) for x in (x0 / 2, x1 / 2)]
     pieces = [pc.replace(sheet=SHEET) for pc in pieces]
+    pieces += element_sockets(o)
     xf, yf = s.depth / 2 - 2 * rf, s.width / 2 - 2 * rf
     pieces += [g.cylinder((x, y, -fh), (x, y, 0.0), rf, "feet", 12) for x in (-xf, xf) for y in (-yf, yf)]
     anchors = {"hinge": A.drop_hinge(o.door)}
@@ -151,6 +156,20 @@ def casing(o: Oven, racks: int, cuts: dict[str, Cutout]) -> Assembly:
                    for ya, yb in ((y0, y0 + w), (y1 - w, y1))]
         anchors[f"rack_{k}"] = A.rack_slide(xs, zc, RACK_PULL, (ys[0] + ys[1]) / 2)[0]
     return body.with_pieces(body.root, pieces).with_anchors(**anchors)
+
+
+def element_sockets(o: Oven) -> list[g.Piece]:
+    """The heating tubes' metal end caps and the brackets holding them on the cavity's side walls: what makes
+    the tubes read as elements wired into the oven (drawn, no collision: the tubes collide)."""
+    x0, x1, y0, y1, z0, z1 = o.cav
+    (rc, lc), (bh, bw, bt), out = ELEMENT_CAP, ELEMENT_BRACKET, []
+    for z in (z0 + 2 * ELEMENT_R, z1 - 2 * ELEMENT_R):
+        for x in (x0 / 2, x1 / 2):
+            for y, s in ((y0, 1.0), (y1, -1.0)):
+                out += [g.cylinder((x, y, z), (x, y + s * lc, z), rc, "trim", 16),
+                        g.box_between((x - bw / 2, min(y, y + s * bt), z - bh / 2),
+                                      (x + bw / 2, max(y, y + s * bt), z + bh / 2), "trim")]
+    return [pc.replace(convex=()) for pc in out]
 
 
 def rack_box(o: Oven, racks: int, k: int) -> tuple:

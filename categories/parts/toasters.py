@@ -8,19 +8,25 @@ and the buttons on the casing's anchors of those names (``lever_0``, ``dial_0``,
 Designs (real product types, sizes below with their sources):
 
 * ``two_slot``: two bread slots side by side across the width, the controls on the long front face at its
-  right end (Breville BTA720XL, Cuisinart CPT-122 layout).
+  right end (Breville BTA720XL, Cuisinart CPT-122 layout), or stood end on: the controls on its short end,
+  which is then its front, the lever in a vertical slot up its middle and the slots running front to back
+  (Dualit Classic, Smeg TSF01, KitchenAid KMT2115 layout).
 * ``four_slot``: four slots running front to back in a row across the width, two control groups (one per
   pair of slots) at the left and right of the front (Cuisinart CPT-180, Hamilton Beach 24910 layout).
 * ``long_slot``: two extra-long slots (two slices end to end each) across a long body, one control group or
-  one per slot (Breville BTA730XL and BTA830XL 4-slice long slot, Dualit Lite long slot).
+  one per slot (Breville BTA730XL and BTA830XL 4-slice long slot, Dualit Lite long slot); with one group it
+  may stand end on as a two-slot.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from infmob_usd import geometry as g
 
+from . import appliance as A
 from . import controls
 from .casing import CasingSize, Cutout, LinerSize
 
@@ -75,11 +81,22 @@ TRAY_PULL = 0.8  # the tray slides out this share of its depth before it leaves 
 LEVER_AT = (0.68, 0.55)
 DIAL_AT = (0.3, 0.5)
 KEYS_V = (0.05, -0.2, -0.45)
+# A control group on an end face (the short side: Dualit Classic, Smeg TSF01, KitchenAid KMT2115 product
+# photos): the lever in a vertical slot up the middle, the dial under one side of it, the keys in a column
+# beside it, all clear of the paddle's path down the slot and of the rounded corners' hulls (fractions of the
+# end face's half extents).
+END_LEVER_AT = (0.0, 0.55)
+END_DIAL_AT = (-0.45, -0.5)
+END_KEYS_U = 0.4
+CONTROL_FACES = ("front", "end")  # a toaster's controls on its long side, or on its short end (end on)
 
 
-def casing_size(design: str, t: float, corner: float) -> CasingSize:
-    """The casing of ``design`` at ``t`` of its size range, upright edges rounded to ``corner``."""
+def casing_size(design: str, t: float, corner: float, end: bool = False) -> CasingSize:
+    """The casing of ``design`` at ``t`` of its size range, upright edges rounded to ``corner`` (``end``: stood
+    end on, its short end the front: width and depth swapped)."""
     width, depth, height = DESIGNS[design].at(t)
+    if end:
+        width, depth = depth, width
     return CasingSize(width, depth, height, WALL, SHEET, corner)
 
 
@@ -95,23 +112,44 @@ def group_sides(groups: int) -> tuple[int, ...]:
     return (-1,) if groups == 1 else (-1, 1)
 
 
-def cutouts(design: str, size: CasingSize, slot_width: float, groups: list[tuple[bool, int]]) -> dict[str, Cutout]:
+def end_on(design: str, face: str, groups: int) -> bool:
+    """Whether a toaster stands end on: its controls on the short end face, which is then its front (+x), the
+    slots running front to back; a design with slots across its width and a single control group only."""
+    return face == "end" and DESIGNS[design].along == "u" and groups == 1
+
+
+def _group_cuts(i: int, side: int, dial: bool, keys: int, size: CasingSize, end: bool) -> dict[str, Cutout]:
+    """Control group ``i``'s holes on the front: at its ``side`` end of a long front, or (``end``) up the
+    middle of an end-on toaster's short front."""
+    if end:
+        at = {"lever": END_LEVER_AT, "dial": END_DIAL_AT, "keys": [(END_KEYS_U, v) for v in KEYS_V]}
+    else:
+        at = {"lever": (side * LEVER_AT[0], LEVER_AT[1]), "dial": (side * DIAL_AT[0], DIAL_AT[1]),
+              "keys": [(side * DIAL_AT[0], v) for v in KEYS_V]}
+    cuts = {f"lever_{i}": LEVER.cutout("front", size.on("front", *at["lever"]))}
+    if dial:
+        cuts[f"dial_{i}"] = DIAL.cutout("front", size.on("front", *at["dial"]))
+    for k in range(keys):
+        cuts[f"button_{i}_{k}"] = BUTTON.cutout("front", size.on("front", *at["keys"][k]))
+    return cuts
+
+
+def cutouts(design: str, size: CasingSize, slot_width: float, groups: list[tuple[bool, int]],
+            face: str = "front") -> dict[str, Cutout]:
     """Every hole of the casing: the bread slots on the top, the crumb tray's opening at the foot of the front
-    and, per control group ``(has_dial, buttons)``, its lever slot, dial hole and key holes."""
+    and, per control group ``(has_dial, buttons)``, its lever slot, dial hole and key holes (``face`` "end": an
+    end-on toaster, :func:`end_on`, its casing from :func:`casing_size` with ``end``)."""
     d, tray = DESIGNS[design], crumb_tray(size)
+    end = end_on(design, face, len(groups))
     cuts = {"tray_opening": size.floor_opening("front", tray.width, tray.height + tray.lip, TRAY_CLEARANCE)}
-    if d.along == "u":
+    if d.along == "u" and not end:
         cuts.update(size.slots("top", d.slot_length, slot_width, SLOT_GAP, d.slots))
     else:
         pitch = slot_width + SLOT_GAP
         cuts.update({f"slot_{k}": Cutout.around("top", ((k - (d.slots - 1) / 2) * pitch, 0.0),
                                                 (slot_width, d.slot_length)) for k in range(d.slots)})
     for i, (side, (dial, keys)) in enumerate(zip(group_sides(len(groups)), groups, strict=True)):
-        cuts[f"lever_{i}"] = LEVER.cutout("front", size.on("front", side * LEVER_AT[0], LEVER_AT[1]))
-        if dial:
-            cuts[f"dial_{i}"] = DIAL.cutout("front", size.on("front", side * DIAL_AT[0], DIAL_AT[1]))
-        for k in range(keys):
-            cuts[f"button_{i}_{k}"] = BUTTON.cutout("front", size.on("front", side * DIAL_AT[0], KEYS_V[k]))
+        cuts.update(_group_cuts(i, side, dial, keys, size, end))
     return cuts
 
 
@@ -135,12 +173,66 @@ def slot_walls(size: CasingSize, cuts: dict[str, Cutout], material: str) -> list
              g.box_between((x1, y0 - t, z0), (x1 + t, y1 + t, z1), material),
              g.box_between((x0, y0 - t, z0), (x1, y0, z1), material),
              g.box_between((x0, y1, z0), (x1, y1 + t, z1), material)]
+    elements = []
     for c in slots:
         (v0, u0), (v1, u1) = (c.lo[1], c.lo[0]), (c.hi[1], c.hi[0])
         if u1 - u0 > v1 - v0:  # runs across the width: its long edges are at x = v0 and v1
             walls += [g.box_between((v0 - t, u0, z0), (v0, u1, z1), material),
                       g.box_between((v1, u0, z0), (v1 + t, u1, z1), material)]
+            edges = [((v0, u0), (v0, u1), (1.0, 0.0)), ((v1, u0), (v1, u1), (-1.0, 0.0))]
         else:
             walls += [g.box_between((v0, u0 - t, z0), (v1, u0, z1), material),
                       g.box_between((v0, u1, z0), (v1, u1 + t, z1), material)]
-    return [w.replace(sheet=size.sheet) for w in walls]
+            edges = [((v0, u0), (v1, u0), (0.0, 1.0)), ((v0, u1), (v1, u1), (0.0, -1.0))]
+        for a, b, inward in edges:
+            elements += element(np.array(a), np.array(b), np.array(inward), z0, z1)
+    return [w.replace(sheet=size.sheet) for w in walls] + elements
+
+
+def carriage_guides(size: CasingSize, cuts: dict[str, Cutout], material: str) -> list[g.Piece]:
+    """Behind each lever slot of ``cuts`` (on the front face), the dark carriage guide the lever's stem rides
+    in: seen through the slot, it makes the slot read as a slot with the lever in it, not a pale gap
+    (drawn, no collision; behind the stem's end, so the lever never meets it)."""
+    x, m, hz, out = size.depth / 2 - A.BEHIND - 0.003, 0.006, size.height / 2, []
+    for name, c in sorted(cuts.items()):
+        if name.startswith("lever_"):  # front face: u = -y, v = z - height / 2
+            (u0, v0), (u1, v1) = c.lo, c.hi
+            out.append(g.box_between((x - 0.001, -u1 - m, v0 + hz - m), (x, -u0 + m, v1 + hz + m), material)
+                       .replace(convex=()))
+    return out
+
+
+# A toaster's heating element (replacement elements and teardown photos: Dualit, Sunbeam, Breville): a mica
+# card ~1 mm thick lining each long side of a slot, wound with flat nichrome ribbon in a zig-zag at a ~12 mm
+# pitch, behind a guard of vertical steel wires ~1.5 mm thick, ~25 mm apart and ~5 mm off the card, that keeps
+# the bread off the element. ``ELEMENT``: card thickness and standoff from the slot wall, ribbon half-thickness,
+# zig-zag pitch, guard wire radius, its standoff from the card and its spacing (m).
+ELEMENT = dict(card=0.001, off=0.0005, ribbon=0.0006, pitch=0.012, guard=0.0008, guard_off=0.005,
+               guard_pitch=0.025)
+
+
+def element(a: np.ndarray, b: np.ndarray, inward: np.ndarray, z0: float, z1: float) -> list[g.Piece]:
+    """The element lining one long side of a slot, from ``a`` to ``b`` (x, y) along the slot wall, facing the
+    slot along ``inward`` (x, y), between heights ``z0`` and ``z1``: the mica card, its nichrome zig-zag and the
+    guard wires in front of it (drawn, no collision: the chassis walls carry the slot's collision)."""
+    e = ELEMENT
+    along = (b - a) / np.linalg.norm(b - a)
+    length = float(np.linalg.norm(b - a))
+    lo, hi = z0 + 0.006, z1 - 0.01
+
+    def at(s: float, d: float, z: float) -> tuple[float, float, float]:
+        p = a + s * along + d * inward
+        return float(p[0]), float(p[1]), z
+
+    c0, c1 = np.array(at(0.004, e["off"], lo)), np.array(at(length - 0.004, e["off"] + e["card"], hi))
+    card = g.box_between(np.minimum(c0, c1), np.maximum(c0, c1), "mica")
+    d = e["off"] + e["card"] + e["ribbon"]
+    n = max(2, int((length - 0.012) / (e["pitch"] / 2)))
+    zig = [at(0.006 + k * (length - 0.012) / n, d, lo + 0.004 if k % 2 else hi - 0.004) for k in range(n + 1)]
+    pieces = [card, g.tube(zig, e["ribbon"], "element", 6)]
+    wires = max(2, int(length / e["guard_pitch"]))
+    for k in range(wires):
+        s = (k + 0.5) * length / wires
+        pieces.append(g.cylinder(at(s, e["off"] + e["card"] + e["guard_off"], z0 + 0.002),
+                                 at(s, e["off"] + e["card"] + e["guard_off"], z1 - 0.002), e["guard"], "trim", 8))
+    return [pc.replace(convex=()) for pc in pieces]

@@ -102,8 +102,16 @@ CONSOLE = dict(depth=0.12, height=0.14, hinge=0.05, lid=0.025, margin=0.025, sid
 # back console (depth, height over the top), the lid's hinge in front of it, lid thickness, front and side margins
 LID_OPENS = math.radians(90)  # a top loader's lid stands up against the console
 LID_WINDOW = 0.06  # m, a glass lid's frame round its window
-TUB = dict(rim=0.03, bottom=0.25, agitator=0.05, post=0.08)  # m: the tub under the top, its floor, agitator
-# radius, its post's top under the tub ring
+TUB = dict(rim=0.03, bottom=0.25, agitator=0.05, post=0.08, depth=0.5)  # m: the tub under the top, its floor,
+# agitator radius, its post's top under the tub ring, the basket's depth (a 3.5-4.7 cu ft basket ~0.5 m across
+# and ~0.5 m deep: Whirlpool WTW4816, WTW5000DW, Speed Queen TR service manuals, approximate)
+# A top loader washes with one of two real mechanisms (Whirlpool, GE, Speed Queen, LG product photos):
+# an ``agitator``, a tapering post the basket's depth with a flared skirt ~0.7 of the basket across and 4-6
+# vanes on it, and fins down the post; or an ``impeller`` (pulsator), a low domed plate ~0.8 of the basket across
+# and 4-6 cm high with raised radial fins round a hub. Sizes as shares of the basket radius / depth.
+AGITATOR = dict(skirt=0.7, skirt_h=0.22, top_r=0.035, vanes=4, vane_t=0.012, fins=3, fin_out=0.02)
+IMPELLER = dict(radius=0.8, height=0.05, hub=0.18, fins=6, fin_t=0.012)
+WASH_ACTIONS = ("agitator", "impeller")
 HOSE = dict(radius=0.008, plug=0.011, length=0.02, cap=0.012, beside=0.055, pull=0.15)  # m: an emergency drain
 # hose clipped beside the filter, its plug; it pulls ~15 cm out to drain into a bowl (Bosch, Samsung manuals)
 CUP = dict(radius=0.045, height=0.05, wall=0.003, seat=0.02)  # m: a fabric-softener dispenser cup on the
@@ -121,6 +129,7 @@ class Machine:
     band: tuple
     zc: float
     rd: float
+    wash: str = "agitator"  # a top loader's wash action (:data:`WASH_ACTIONS`)
 
     @property
     def front(self) -> bool:
@@ -131,9 +140,10 @@ class Machine:
         return self.size.depth / 2
 
 
-def machine(design: str, t: float, tall: float, door: float, corner: float) -> Machine:
+def machine(design: str, t: float, tall: float, door: float, corner: float, wash: str = "agitator") -> Machine:
     """The layout of a ``design`` washing machine at ``t`` of its footprint range, ``tall`` of its height range and
-    ``door`` of its door (tub opening) range, upright edges rounded to ``corner``."""
+    ``door`` of its door (tub opening) range, upright edges rounded to ``corner`` (a top loader washing with
+    ``wash``)."""
     d = DESIGNS[design]
     W, D, H = d.at(t, tall)
     rd = (d.door[0] + door * (d.door[1] - d.door[0])) / 2
@@ -143,7 +153,7 @@ def machine(design: str, t: float, tall: float, door: float, corner: float) -> M
         lid = (xc + CONSOLE["hinge"], D / 2 - CONSOLE["margin"])
         r = min(rd, (lid[1] - lid[0]) / 2 - TUB["rim"], W / 2 - CONSOLE["side"])
         return Machine(design, CasingSize(W, D, hc, WALL, SHEET, corner), (xc, hc, hc + CONSOLE["height"]),
-                       (lid[0] + lid[1]) / 2, r)
+                       (lid[0] + lid[1]) / 2, r, wash)
     hc = H - FEET[1]
     top = hc - BAND["top"]
     band = (top - BAND["height"], top)
@@ -238,7 +248,7 @@ def drum(m: Machine, at: Frame) -> list[g.Piece]:
     or tub ring (a top), the stainless drum with its lifters and back, seen through the door's glass."""
     ro, gw = r_open(m), GASKET["wall"]
     pieces = [holed_plate(ro + gw, ro, WALL, "body").replace(sheet=SHEET)]
-    deep = (m.size.depth if m.front else m.size.height) - DRUM["from_back"] - GASKET["depth"]
+    deep = m.size.depth - DRUM["from_back"] - GASKET["depth"] if m.front else TUB["depth"]
     rdrum = DRUM["radius"] if m.front else ro + TUB["rim"] - WALL
     z0 = -GASKET["depth"]
     pieces.append(g.shell([(ro, z0), (ro, 0.0)], gw, "gasket" if m.front else "liner"))
@@ -251,12 +261,48 @@ def drum(m: Machine, at: Frame) -> list[g.Piece]:
         turn = Frame.at((0, 0, 0)).turned("z", 2 * math.pi * k / DRUM["lifters"]).matrix
         pieces.append(g.box_between((rdrum - lift, -lift / 2, z0 - deep), (rdrum - WALL, lift / 2, z0 - WALL),
                                     "drum", bevel=0.004).transformed(turn))
-    if not m.front:  # an agitator post up the middle of the tub
-        ra = TUB["agitator"]
-        top = z0 - TUB["post"]
-        pieces.append(g.revolve([(0, z0 - deep), (1.8 * ra, z0 - deep), (ra, z0 - deep + 0.1), (0.7 * ra, top),
-                                 (0, top)], "liner"))
+    if not m.front:  # what washes the load: an agitator up the middle of the basket, or a low impeller plate
+        pieces += (agitator if m.wash == "agitator" else impeller)(rdrum, z0 - deep, z0 - TUB["post"])
     return _placed(pieces, at)
+
+
+def agitator(rb: float, floor: float, top: float) -> list[g.Piece]:
+    """A top loader's agitator on the basket floor (radius ``rb``, floor at ``floor``, z up the basket) up to
+    ``top``: a post flaring into a skirt with vanes on it, and fins down the upper post (:data:`AGITATOR`)."""
+    a, ra = AGITATOR, TUB["agitator"]
+    rs, hs = a["skirt"] * rb, a["skirt_h"] * (top - floor)
+    post = g.revolve([(0, floor), (rs, floor), (rs, floor + 0.015), (0.45 * rs, floor + 0.4 * hs),
+                      (ra, floor + hs), (a["top_r"], top - 0.01), (a["top_r"] - 0.006, top), (0, top)], "agitator")
+    out = [post]
+    for k in range(a["vanes"]):  # vanes standing on the skirt, from the post out to its rim
+        turn = Frame.at((0, 0, 0)).turned("z", 2 * math.pi * (k + 0.5) / a["vanes"]).matrix
+        vane = g.box_between((ra, -a["vane_t"] / 2, floor + 0.01), (0.95 * rs, a["vane_t"] / 2, floor + 0.045),
+                             "agitator", bevel=0.004)
+        rise = g.box_between((ra - 0.01, -a["vane_t"] / 2, floor + 0.04), (0.55 * rs, a["vane_t"] / 2,
+                                                                           floor + 0.8 * hs), "agitator", bevel=0.004)
+        out += [vane.transformed(turn), rise.transformed(turn)]
+    for k in range(a["fins"]):  # fins down the upper post (the "dual action" auger's, drawn straight)
+        turn = Frame.at((0, 0, 0)).turned("z", 2 * math.pi * k / a["fins"]).matrix
+        fin = g.box_between((a["top_r"] - 0.004, -0.004, floor + hs + 0.02), (a["top_r"] + a["fin_out"], 0.004,
+                                                                              top - 0.03), "agitator", bevel=0.002)
+        out.append(fin.transformed(turn))
+    return out
+
+
+def impeller(rb: float, floor: float, top: float) -> list[g.Piece]:
+    """A low-profile impeller on the basket floor (radius ``rb``): a shallow dome with a hub and raised radial
+    fins (:data:`IMPELLER`); ``top`` is unused (it stays low: the load fills the basket over it)."""
+    i = IMPELLER
+    r, h = i["radius"] * rb, i["height"]
+    out = [g.revolve([(0, floor), (r, floor), (r, floor + 0.01), (0.6 * r, floor + 0.45 * h),
+                      (i["hub"] * rb, floor + h), (0, floor + h + 0.01)], "agitator")]
+    for k in range(i["fins"]):
+        turn = Frame.at((0, 0, 0)).turned("z", 2 * math.pi * k / i["fins"]).matrix
+        fin = g.box_between((i["hub"] * rb, -i["fin_t"] / 2, floor + 0.005), (0.95 * r, i["fin_t"] / 2,
+                                                                              floor + 0.4 * h + 0.012),
+                            "agitator", bevel=0.004)
+        out.append(fin.transformed(turn))
+    return out
 
 
 def body(m: Machine, knobs: int, keys: int, flap: bool) -> Assembly:
@@ -273,7 +319,7 @@ def body(m: Machine, knobs: int, keys: int, flap: bool) -> Assembly:
     pieces += [g.cylinder((x, y, -fh), (x, y, 0.0), fr, "feet", 12) for x in (-xf, xf) for y in (-yf, yf)]
     under = m.zc - (DRUM["radius"] if m.front else 0.0) - 2 * WALL
     if not m.front:
-        under = s.height - GASKET["depth"] - (s.height - DRUM["from_back"] - GASKET["depth"]) - 2 * WALL
+        under = s.height - GASKET["depth"] - TUB["depth"] - 2 * WALL
     pieces.append(A.machine_can(0.0, WALL, under - WALL, DRUM["from_back"], "machine", DESIGNS[m.design].machine,
                                 "works"))
     knob_at, key_at, display = control_spots(m, knobs, keys)
