@@ -5,8 +5,11 @@
 * :func:`rest_on_stops` makes every passive hinge neutral under gravity or pressed onto its
   rest stop (picking the side of a two-sided range, or adding a counterweight heel) (:mod:`.stops`).
 * :func:`ensure_gaps` erodes moving collision hulls that come too close to their parent (:mod:`.gaps`).
+* :func:`clear_bores` cuts a shaft's collision hull out of the bore of a link it only turns and slides in
+  through a chain of joints on one axis (a push-to-turn knob), a pair PhysX misreads (:mod:`.bores`).
 * :func:`square_rims` cuts a thin hull's chamfer or flare at a face that looks onto a parallel face of another
-  link's hull across a few millimetres, which PhysX's contact manifold misreads as a deep contact (:mod:`.rims`).
+  link's hull across a few millimetres, at rest or as a slide carries one over the other, which PhysX's contact
+  manifold misreads as a deep contact (:mod:`.rims`).
 * :func:`keep_meeting_gaps` erodes a hinged part's collision hulls that pass within :data:`MEETING_GAP` of an
   independently moving neighbour (the twin leaf of a double door) over its swing (:mod:`.meeting`).
 * :func:`limit_to_ground` shortens limits so nothing goes below the ground (:mod:`.ground`).
@@ -18,6 +21,7 @@
   where they are left and knobs do not spin freely (:mod:`.passive`).
 """
 
+from .bores import clear_bores
 from .clearance import ALL_FRACTIONS, clearance_limits, limit_to_clearance
 from .gaps import MIN_HULL_WIDTH, ensure_gaps, gap_size, thicken_hulls
 from .ground import GROUND_TOL, limit_to_ground, rest_on_ground
@@ -33,5 +37,5 @@ __all__ = [
     "GROUND_TOL", "HEEL_SECTION", "PARENT_GROWTH", "SWEEP_SAGITTA", "clearance_limits", "dynamics",
     "ensure_gaps", "gap_size", "gravity_torque", "limit_to_clearance", "limit_to_ground", "rest_on_ground",
     "rest_on_stops", "MIN_HULL_WIDTH", "thicken_hulls", "MEETING_GAP", "keep_meeting_gaps",
-    "square_rims",
+    "square_rims", "clear_bores",
 ]
