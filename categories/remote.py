@@ -123,6 +123,7 @@ class RemoteLayout(Layout):
 
     def playback_cover(self, node):
         lid = self.place(R.cover(self.plan, "body"), "cover")
+        self.extend("body", R.cover_hinge(self.plan, "body")[0])
         self.hinge("body", lid.root, lid.anchor("hinge"), upper=R.COVER_OPENS, role="lid")
 
     def power_switch(self, node):
@@ -138,6 +139,7 @@ class RemoteLayout(Layout):
 
     def cover(self, node):
         lid = self.place(R.cover(self.plan, "body"), "cover")
+        self.extend("body", R.cover_hinge(self.plan, "body")[0])
         self.hinge("body", lid.root, lid.anchor("hinge"), upper=R.COVER_OPENS, role="lid")
         self.grow(node.one("ac_covered"))
 

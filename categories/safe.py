@@ -9,7 +9,7 @@ once the door is open (``requires_open``). Keys are pressed into the door's fron
 
 from __future__ import annotations
 
-from infmob_usd.category import Category
+from infmob_usd.category import Category, Same
 from infmob_usd.grammar import Grammar, Node
 from infmob_usd.materials.palettes import appliance
 from infmob_usd.params import Choice, Float
@@ -45,7 +45,8 @@ PARAMS = (
 # home safes, hotel safes and gun cabinets come black or graphite (SentrySafe, Honeywell, Elsafe, Stack-On ranges);
 # inside, grey felt
 MATERIALS = {"body": "enamel:black|graphite|anthracite", "knob": "chrome", "lining": "fabric:grey",
-             "trim": "plastic:black", "button": "plastic:black|dark_grey", "handle": "chrome", "drawer": "enamel:black"}
+             "trim": "plastic:black", "button": "plastic:black|dark_grey", "handle": "chrome", "drawer": "enamel:black",
+             "hinge": Same("handle")}
 
 # where the lock and the handle sit on the door's front, as fractions of its half width and half height
 # (from the hinge side: u > 0 is away from the hinge); a tall cabinet's lock at hand height
@@ -93,6 +94,9 @@ class SafeLayout(controls.ControlFace):
         # the door is painted as the body
         made = S.door(w, h, self.build, "body", cuts).attached(self.side, to=body.anchor(self.side))
         door = self.place(made, "door")
+        on_body, on_door = S.hinges(self.size[1], w, h, self.build, -1 if self.side == "hinge_neg" else 1, "hinge")
+        self.extend(body.root, on_body)
+        self.extend(door.root, on_door)
         self.hinge(body.root, door.root, body.anchor(self.side), upper=self.build.opens)
         self.grow(node.one("handle"), door=door)
         self.grow(node.one(lock), door=door)

@@ -8,7 +8,7 @@ role ``lever``), a browning dial turning 270 degrees from light to dark (most mo
 keys), and up to three push keys pressed into the front (cancel, defrost, bagel: role ``button``); a two-slot
 or single-control long-slot toaster has them at one end of its long side or stands end on, its controls up
 the middle of its short end (``control_face``).
-The crumb tray under the slots pulls out of the front (prismatic).
+The crumb tray under the slots pulls out of the front (prismatic) by a lug on its front (the front sits flush).
 
 X is depth (the controls face +X), Y is width, Z is up. The casing is a sheet box with rounded upright
 corners; every hole in it (slots, lever slots, dial and key holes, the tray's opening) is a named cut-out
@@ -97,7 +97,9 @@ class ToasterLayout(controls.ControlFace):
 
     def tray(self, node, body, size):
         # its front is the casing's finish
-        made = casing.liner(size, "tray", "body", label="tray").attached("front", to=body.anchor("tray_opening"))
+        made = casing.liner(size, "tray", "body", label="tray")
+        made = made.with_pieces(made.root, [casing.pull_tab(size, *T.TRAY_TAB, "body")])
+        made = made.attached("front", to=body.anchor("tray_opening"))
         tray = self.place(made, "tray")
         self.slide(body.root, tray.root, tray.anchor("front"), upper=T.TRAY_PULL * size.depth)
 

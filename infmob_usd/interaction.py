@@ -476,7 +476,10 @@ class Neighbours:
                 centre = p + d * (g.depth - 0.04) / 2 + k * side * (g.width / 2 + FINGER / 2)
                 half = np.array([(g.depth + 0.04) / 2, FINGER / 2 - 1e-4, PAD])
             axes = np.stack([d, k, w])
-            out.append((centre, half, axes, np.abs(axes).T @ half, not press and side == 0.0))
+            # the part itself counts for the hand's body and for the fingers beside the pinched stretch (the
+            # stretch is free of the part by construction; in front of the surface a lid's rim, a seat's back
+            # or the part's own overhang may stand in the fingers' way in)
+            out.append((centre, half, axes, np.abs(axes).T @ half, not press))
         return out
 
     def _one(self, g: Grasp, press: bool) -> list[str]:

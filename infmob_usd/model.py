@@ -20,7 +20,7 @@ from ._version import __version__
 from .blueprint import Blueprint
 from .errors import ModelError
 from .joints import gate_chain
-from .mass import DUMMY_INERTIA, DUMMY_MASS, floor_chain_inertia, inertial, link_floor, wall_of
+from .mass import DUMMY_INERTIA, DUMMY_MASS, dummy_masses, floor_chain_inertia, inertial, link_floor, wall_of
 from .measures import _measure_closed
 from .physical.passive import dynamics
 from .piece import Piece
@@ -286,7 +286,8 @@ def build(bp: Blueprint, densities: dict[str, float], walls: dict[str, float] | 
 def _mass_links(links: list[Link], joints: list[Joint], densities: dict[str, float], walls: dict[str, float]
                 ) -> None:
     """Each real link's mass, centre of mass and inertia from its pieces (the lightest floored, :func:`link_floor`),
-    then the inertia floor along every chain."""
+    then each dummy's share of what it carries (:func:`~infmob_usd.mass.dummy_masses`) and the inertia floor along
+    every chain."""
     # the closed meshes of every link measured as one batch (the same bits as link by link)
     _measure_closed([(p, wall_of(p, walls.get(p.material, 0.0)) > 0) for link in links if not link.dummy
                      for p in link.pieces])
@@ -300,6 +301,9 @@ def _mass_links(links: list[Link], joints: list[Joint], densities: dict[str, flo
     children: dict[str, list[str]] = {}
     for j in joints:
         children.setdefault(j.parent, []).append(j.child)
+    weights = dummy_masses({link.name: link.mass for link in links}, children, {lk.name for lk in links if lk.dummy})
+    for link in links:
+        link.mass = weights.get(link.name, link.mass)
     floored = floor_chain_inertia({link.name: link.inertia for link in links}, children)
     for link in links:
         link.inertia = floored[link.name]

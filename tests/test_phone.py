@@ -83,6 +83,25 @@ def test_a_bar_phone_has_its_screen_over_its_keys_on_one_shell():
     assert np.ptp(screen[:, 0]) > 0.22 * np.ptp(body[:, 0])  # a real screen, not a strip
 
 
+def test_a_desk_phones_handset_sits_in_pockets_over_its_hook_switch():
+    """Lifted, the handset reads as taken out of its cradle, not floating: each cup sits in a pocket walled on its
+    outer end and both sides, clear of the walls, and the hook switch's plunger stands under the grip."""
+    for seed in range(3):
+        _, bp = make(seed, design="desk")
+        body = [pc.bounds for pc in bp.parts["body"].pieces]
+        grip = next(pc.bounds for pc in bp.parts["handset"].pieces if not pc.name)
+        for cup in (pc.bounds for pc in bp.parts["handset"].pieces if pc.name == "cup"):
+            (x0, y0, z0), (x1, y1, _) = cup
+            walls = [b for b in body if b[1][2] > z0 + 0.005 and b[0][0] < x1 + 0.01 and b[1][0] > x0 - 0.01
+                     and b[0][1] < y1 + 0.01 and b[1][1] > y0 - 0.01]
+            assert len(walls) >= 3, seed
+            for (a0, b0, _), (a1, b1, _) in walls:  # clear of the cup all round: it lifts straight out
+                assert a1 <= x0 - 0.001 or a0 >= x1 + 0.001 or b1 <= y0 - 0.001 or b0 >= y1 + 0.001
+        under = [b for b in body if b[0][0] > grip[0][0] and b[1][0] < grip[1][0] and b[0][1] > grip[0][1] - 0.01
+                 and b[1][1] < grip[1][1] + 0.01 and grip[0][2] - 0.005 < b[1][2] < grip[0][2]]
+        assert under, seed
+
+
 def _overlap(a, b) -> float:
     import manifold3d
 

@@ -326,3 +326,18 @@ def test_contact_shadow_follows_a_cable_not_the_hull_of_its_ends():
     under, beside_cable, off = shade(np.array([[0.05, 0.0], [0.15, 0.001], [0.15, -0.015]]))  # off: in the hull
     assert under < 0.7 and beside_cable < 0.7
     assert off > 0.8  # 1.5 cm off the cable: its own soft edge only (inside the hull: 0.58)
+
+
+def test_the_studio_has_no_hard_edges_for_chrome_to_alias_on(tmp_path):
+    """A mirror-like thin tube sweeps the whole environment across a few pixels: every hard edge in the map
+    (a black card's, the horizon's) draws a painted-on stripe. The cube faces change by a few levels from one
+    texel to the next (the cards' soft middle, the cone prefilter), and the cards still darken the studio
+    (metal keeps its light and dark bands)."""
+    pytest.importorskip("cv2")
+    import cv2
+
+    faces = [cv2.imread(p).astype(int) for p in studio._environment_map(tmp_path)]
+    steps = max(max(np.abs(np.diff(f, axis=a)).max() for a in (0, 1)) for f in faces)
+    assert steps <= 20
+    side = np.concatenate([f[:, :, 1].ravel() for f in faces[:2] + faces[4:]])  # the four side faces (green)
+    assert side.max() - side.min() > 60

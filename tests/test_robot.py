@@ -240,3 +240,31 @@ def test_progress_on_an_arc_takes_off_the_inset_turned_with_the_part():
     motion = robot.PathMotion(arc, grasp)
     for s in np.linspace(0, arc.length, 21)[1:]:
         assert motion.progress(motion.pose(s, s)) == pytest.approx(s, abs=2e-4), s
+
+
+def test_an_office_chairs_arm_is_taken_where_its_own_pad_leaves_the_fingers_room(tmp_path):
+    """An office chair's flip-up arm (seed 5), pinched at its pad's front: the grasp search let the fingers
+    overlap the arm's own pad in front of the pinched stretch (only the hand's body was checked against the
+    part itself), the fingers pushed the pad on the way in, the seat swivelled away and they closed on
+    nothing. With the fingers kept clear of the part's own mesh the hold is taken and the arm flips up."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("office_chair", 5, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    arm = next(t for t in targets if t["joint"] == "joint_arm_left")
+    assert arm["grasps"][0]["blocked_by"] == [], arm["grasps"]
+    _write(folder, [arm])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(hinge_lid): opened" in r.detail, r.detail
+
+
+def test_a_toasters_crumb_tray_is_pulled_by_its_tab(tmp_path):
+    """A toaster's crumb tray sits flush in the casing's front with 2 mm round it: pinched across its front
+    plate's edge, the lower finger met the casing (seed 5: "approach blocked by body"). Its front carries a
+    pull tab that declares its hold; taken by it, the tray slides out."""
+    folder = Path(infmob_usd.save(infmob_usd.generate("toaster", 5, texture_size=16), tmp_path))
+    targets = json.loads((folder / "annotations.json").read_text())["targets"]
+    tray = next(t for t in targets if t["joint"] == "joint_tray")
+    assert tray["handle_class"] == "line_fixed_handle" and tray["grasp_source"] == "part", tray
+    assert tray["grasps"][0]["blocked_by"] == []
+    _write(folder, [tray])
+    [r] = robot.check_robot(folder)
+    assert r.ok and "(slider_drawer): opened" in r.detail, r.detail

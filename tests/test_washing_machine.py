@@ -14,7 +14,8 @@ make = maker("washing_machine")
 
 
 def _box(bp, name):
-    b = np.array([pc.bounds for pc in bp.parts[name].pieces])
+    """A part's bounds, its hinge's knuckles and leaves left out (they stand round the joint's axis)."""
+    b = np.array([pc.bounds for pc in bp.parts[name].pieces if not pc.name.startswith("hinge")])
     return b[:, 0].min(0), b[:, 1].max(0)
 
 

@@ -82,22 +82,69 @@ def _softbox(az, el, a0, e0, wa, we):
     return np.clip((1.0 - r) / 0.35, 0, 1) * (el > 0)
 
 
-_CARDS = ((-55.0, 12.0), (5.0, 6.0), (100.0, 10.0))
+_CARDS = ((-55.0, 14.0), (5.0, 8.0), (100.0, 12.0))
 """Black cards round the object: (azimuth, half-width) in degrees.  A vertical wall seen from the camera
 (azimuth 38) mirrors azimuth 2 * normal - 38, so these land left of centre, near the centre and right
 on a pot's wall, and the first one on the lower part of a screen facing +X."""
+CARD_DEPTH = 0.45  # how far a card darkens the studio at its middle (0.75 drew black stripes on chrome)
+BLUR_DEG = 7.0  # the studio as a polished metal mirrors it: every texel the mean over a cone this wide
+BLUR_SAMPLES = 48
 
 
 def _card(az, el, a0, wa):
-    """1 on a black card standing round the object (azimuth a0 +- wa degrees, from under the sweep's
-    edge to 30 degrees up), soft edges."""
+    """1 in the middle of a dark card standing round the object (azimuth a0 +- wa degrees, from under the
+    sweep's edge to 30 degrees up), falling smoothly to 0 at its edges."""
     da = (az - a0 + 180.0) % 360.0 - 180.0
-    r = np.maximum(np.abs(da) / wa, np.abs(el + 20.0) / 50.0)
-    return np.clip((1.0 - r) / 0.3, 0, 1)
+    r = np.clip(1.0 - np.maximum(np.abs(da) / wa, np.abs(el + 20.0) / 50.0), 0, 1)
+    return r * r * (3 - 2 * r)
+
+
+def _studio(d: np.ndarray) -> np.ndarray:
+    """The studio's radiance (grey, 0-1) seen along unit world directions ``d`` (..., 3), Z up.
+
+    A product studio: a white sweep under the object, softboxes above, and dark cards standing round it, as
+    photographers light metal: a polished or brushed surface then mirrors bright sweep beside dark card (a
+    steel pot shows vertical light and dark bands, a screen a faint gradient) instead of one even grey that
+    makes steel read as grey plastic.
+    """
+    up = np.clip(d[..., 2], -1, 1)
+    az = np.degrees(np.arctan2(d[..., 1], d[..., 0]))
+    el = np.degrees(np.arcsin(up))
+    sky = 0.58 + 0.27 * np.clip(up, 0, 1) ** 0.6
+    floor = 0.78 + 0.06 * np.clip(up + 1, 0, 1)
+    v = np.where(up >= 0, sky, floor)
+    v = v - 0.2 * np.exp(-((el - 2.0) / 9.0) ** 2)  # a darker band at the horizon: chrome reads as chrome
+    for a0, wa in _CARDS:
+        v = np.minimum(v, 1.0 - CARD_DEPTH * _card(az, el, a0, wa))
+    v = np.maximum(v, _softbox(az, el, -25.0, 50.0, 28.0, 20.0))  # key softbox, where the key light is
+    return np.maximum(v, 0.9 * _softbox(az, el, 130.0, 28.0, 18.0, 14.0))  # rim softbox behind the right
+
+
+def _cone(n: int, half_angle: float) -> np.ndarray:
+    """``n`` unit directions spread evenly over a cone of ``half_angle`` (radians) round +Z (a Fibonacci
+    spiral: the same every run)."""
+    k = np.arange(n) + 0.5
+    cos_t = 1.0 - (k / n) * (1.0 - math.cos(half_angle))
+    phi = k * math.pi * (3.0 - math.sqrt(5.0))
+    sin_t = np.sqrt(1.0 - cos_t ** 2)
+    return np.stack([sin_t * np.cos(phi), sin_t * np.sin(phi), cos_t], -1)
+
+
+def _blurred(d: np.ndarray) -> np.ndarray:
+    """:func:`_studio` averaged over a :data:`BLUR_DEG` cone round each direction of ``d`` (n, 3): the map a
+    thin chrome tube mirrors, whose normal sweeps the whole studio across a few pixels, without aliasing."""
+    cone = _cone(BLUR_SAMPLES, math.radians(BLUR_DEG))
+    helper = np.where(np.abs(d[:, 2:3]) < 0.9, [[0.0, 0.0, 1.0]], [[1.0, 0.0, 0.0]])
+    t1 = np.cross(helper, d)
+    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+    t2 = np.cross(d, t1)
+    dirs = cone[None, :, 0:1] * t1[:, None] + cone[None, :, 1:2] * t2[:, None] + cone[None, :, 2:3] * d[:, None]
+    return _studio(dirs).mean(1)
 
 
 def _environment_map(d: Path) -> list[str]:
-    """Six cube faces of a soft studio: bright sky fading to a grey horizon, a darker floor."""
+    """Six cube faces of a soft studio (:func:`_studio`, prefiltered by :func:`_blurred`): bright sky fading
+    to a grey horizon, a darker floor."""
     import cv2
 
     n = 64
@@ -114,22 +161,9 @@ def _environment_map(d: Path) -> list[str]:
     paths = []
     for key in ("px", "nx", "py", "ny", "pz", "nz"):
         x, y, z = faces[key]
-        norm = np.sqrt(x * x + y * y + z * z)
-        up = y / norm  # sine of elevation in the world (cube y = world z)
-        az = np.degrees(np.arctan2(z, x))  # world azimuth: cube z = world y
-        el = np.degrees(np.arcsin(np.clip(up, -1, 1)))
-        # A product studio: a white sweep under the object, softboxes above, and black cards standing
-        # round it, as photographers light metal: a polished or brushed surface then mirrors bright sweep
-        # beside dark card (a steel pot shows vertical light and dark bands, a screen a faint gradient)
-        # instead of one even grey that makes steel read as grey plastic.
-        sky = 0.58 + 0.27 * np.clip(up, 0, 1) ** 0.6
-        floor = 0.78 + 0.06 * np.clip(up + 1, 0, 1)
-        v = np.where(up >= 0, sky, floor)
-        v = v - 0.3 * np.exp(-((el - 2.0) / 5.0) ** 2)  # a darker band at the horizon: chrome reads as chrome
-        for a0, wa in _CARDS:
-            v = np.minimum(v, 1.0 - 0.75 * _card(az, el, a0, wa))
-        v = np.maximum(v, _softbox(az, el, -25.0, 50.0, 28.0, 20.0))  # key softbox, where the key light is
-        v = np.maximum(v, 0.9 * _softbox(az, el, 130.0, 28.0, 18.0, 14.0))  # rim softbox behind the right
+        world = np.stack([x, z, y], -1).reshape(-1, 3)  # cube z = world y, cube y = world z
+        world /= np.linalg.norm(world, axis=1, keepdims=True)
+        v = _blurred(world).reshape(n, n)
         img = np.clip(np.stack([v * 0.98, v, v * 1.03], -1) * 255, 0, 255).astype(np.uint8)
         path = d / f"{key}.png"
         cv2.imwrite(str(path), img[..., ::-1])

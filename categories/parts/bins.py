@@ -21,7 +21,8 @@ from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 
-from .casing import CasingSize, Cutout, sheet_casing
+from .casing import CasingSize, Cutout, rounded_sweep, sheet_casing
+from .laptops import rounded
 
 
 @dataclass(frozen=True)
@@ -63,6 +64,11 @@ BAIL_TURN = math.radians(95)
 # swinging about 60 degrees either way.
 FLAP = dict(share=0.65, thickness=0.003, clearance=0.004, below_top=0.035)
 FLAP_SWINGS = math.radians(60)
+# Square bins are moulded or folded with rounded upright corners, 3-5 cm radius on household bins (simplehuman
+# rectangular step cans, Brabantia and Curver square bins, product pictures, approximate): a share of the smaller
+# side, at most ``corner``; their rims are rolled into a bead (``bead`` radius, the steel cans' curled edge or a
+# moulded lip) and the lids' edges rounded (``lid_edge``).
+ROUND = dict(share=0.14, corner=0.045, bead=0.003, lid_edge=0.005)
 # A sensor can's infrared window: a dark strip on the lid's front (simplehuman ST2007 ~6 x 2 cm).
 SENSOR = dict(length=0.06, width=0.02, proud=0.002)
 
@@ -85,27 +91,58 @@ class BinSize:
         return self.depth / 2, self.width / 2
 
 
+def corner(s: BinSize) -> float:
+    """A square body's upright corner radius (:data:`ROUND`)."""
+    return min(ROUND["share"] * min(s.width, s.depth), ROUND["corner"])
+
+
+def _outline_slab(hx: float, hy: float, r: float, z0: float, z1: float, edge: float, material: str,
+                  cx: float = 0.0) -> g.Piece:
+    """A convex slab over a rounded rectangle centred on (``cx``, 0), its top edge rounded ``edge``."""
+    edge = min(edge, 0.45 * (z1 - z0))
+    rings = [(0.0, z0), (0.0, z1 - edge), (0.3 * edge, z1 - 0.3 * edge), (edge, z1)]
+    pts = [np.column_stack([rounded(2 * hy - 2 * d, 2 * hx - 2 * d, max(r - d, 1e-4), 7) + (cx, 0), np.full(28, z)])
+           for d, z in rings]
+    v, f = g.hull_arrays(np.vstack(pts))
+    return g.Piece(v, f, material, [v])
+
+
+def _square_walls(hx: float, hy: float, r: float, z0: float, top: float, material: str, bead: float
+                  ) -> list[g.Piece]:
+    """An open square body with rounded corners ``r``: the floor and the walls (drawn as one moulding, a rolled
+    bead of radius ``bead`` round the rim; colliding as the floor and four wall boxes)."""
+    t = WALL
+    boxes = [((-hx, -hy, z0 + t), (-hx + t, hy, top)), ((hx - t, -hy, z0 + t), (hx, hy, top)),
+             ((-hx + t, -hy, z0 + t), (hx - t, -hy + t, top)), ((-hx + t, hy - t, z0 + t), (hx - t, hy, top))]
+    convex = [g.box_between(lo, hi, material).convex[0] for lo, hi in boxes]
+    arc = [(bead * math.cos(a), top - bead + bead * math.sin(a)) for a in np.radians(np.linspace(-90, 90, 7))]
+    profile = [(-t, z0), (0.0, z0), *arc, (-t, top)]
+    floor = _outline_slab(hx, hy, r, z0, z0 + t, 0.0, material)
+    return [floor, rounded_sweep(hx, hy, r, profile, material, convex)]
+
+
 def _walls(s: BinSize, material: str, z0: float) -> list[g.Piece]:
     """The body's walls and floor from ``z0`` up, open at the top; on the ground (``z0`` = 0) a base ring
     round their foot."""
     hx, hy = s.half
     t, top, out, hb = WALL, z0 + s.height, BASE["out"], BASE["height"]
     if s.shape == "round":
+        b = ROUND["bead"]
+        bead = [(hx + b * math.cos(a), top - b + b * math.sin(a)) for a in np.radians(np.linspace(-90, 90, 7))]
         pieces = [g.shell([(hx, z0), (hx, top)], t, material), g.cylinder((0, 0, z0), (0, 0, z0 + t), hx - t, material,
-                                                                         None)]
+                                                                         None),
+                  g.shell(bead, b, material).replace(convex=())]  # the rolled rim, drawn
         if not z0:
             pieces.append(g.shell([(hx + out, 0.0), (hx + out, hb)], out, material))
         return pieces
-    pieces = [g.box_between((-hx, -hy, z0), (hx, hy, z0 + t), material),
-              g.box_between((-hx, -hy, z0 + t), (-hx + t, hy, top), material),
-              g.box_between((hx - t, -hy, z0 + t), (hx, hy, top), material),
-              g.box_between((-hx + t, -hy, z0 + t), (hx - t, -hy + t, top), material),
-              g.box_between((-hx + t, hy - t, z0 + t), (hx - t, hy, top), material)]
-    if not z0:  # the lip round the foot, outside the walls
-        pieces += [g.box_between((-hx - out, -hy - out, 0), (hx + out, -hy, hb), material),
-                   g.box_between((-hx - out, hy, 0), (hx + out, hy + out, hb), material),
-                   g.box_between((-hx - out, -hy, 0), (-hx, hy, hb), material),
-                   g.box_between((hx, -hy, 0), (hx + out, hy, hb), material)]
+    r = corner(s)
+    pieces = _square_walls(hx, hy, r, z0, top, material, ROUND["bead"])
+    if not z0:  # the lip round the foot, outside the walls, its top edge chamfered
+        boxes = [((-hx - out, -hy - out, 0), (hx + out, -hy, hb)), ((-hx - out, hy, 0), (hx + out, hy + out, hb)),
+                 ((-hx - out, -hy, 0), (-hx, hy, hb)), ((hx, -hy, 0), (hx + out, hy, hb))]
+        convex = [g.box_between(lo, hi, material).convex[0] for lo, hi in boxes]
+        profile = [(0.0, 0.0), (out, 0.0), (out, hb - 0.6 * out), (0.4 * out, hb), (0.0, hb)]
+        pieces.append(rounded_sweep(hx, hy, r, profile, material, convex))
     return pieces
 
 
@@ -160,8 +197,9 @@ def lid(s: BinSize, material: str, trim: str, sheet: float, sensor: str | None =
         pieces = [g.revolve(prof, material, center=(cx, 0, z0)).replace(sheet=sheet)]
         front, top = cx + 0.55 * r, z0 + 1.04 * LID_T  # on the dome, where its profile is 1.03-1.05 LID_T
     else:
-        pieces = [g.box_between((0, -hy - OVERHANG, z0), (2 * cx, hy + OVERHANG, z0 + LID_T), material,
-                                bevel=0.004).replace(sheet=sheet)]
+        o = OVERHANG
+        pieces = [_outline_slab(hx + o, hy + o, corner(s) + o, z0, z0 + LID_T, ROUND["lid_edge"], material, cx)
+                  .replace(sheet=sheet)]
         front, top = 2 * cx - 0.03, z0 + LID_T
     pieces.append(g.cylinder((0, -0.28 * hy, 0), (0, 0.28 * hy, 0), 0.6 * KNUCKLE, trim, 12))
     if sensor:
@@ -197,11 +235,10 @@ def bucket(s: BinSize, material: str, sheet: float) -> Assembly:
         pieces = [g.shell([(0.97 * hx, 0.0), (hx, s.height)], t, material),
                   g.cylinder((0, 0, 0), (0, 0, t), 0.97 * hx - t, material, None)]
     else:
-        pieces = [g.box_between((-hx, -hy, 0), (hx, hy, t), material),
-                  g.box_between((-hx, -hy, t), (-hx + t, hy, s.height), material),
-                  g.box_between((hx - t, -hy, t), (hx, hy, s.height), material),
-                  g.box_between((-hx + t, -hy, t), (hx - t, -hy + t, s.height), material),
-                  g.box_between((-hx + t, hy - t, t), (hx - t, hy, s.height), material)]
+        # concentric with the body's corners, inside them by its wall and clearance
+        inset = WALL + BUCKET["clearance"]
+        r = max(corner(BinSize(s.shape, s.width + 2 * inset, s.depth + 2 * inset, s.height)) - inset, 0.005)
+        pieces = _square_walls(hx, hy, r, 0.0, s.height, material, 0.0015)
     zb = s.height - lug
     for side in (-1, 1):
         y0, y1 = sorted((side * (hy - t), side * (hy - t - 0.006)))

@@ -12,13 +12,18 @@ category computing where the hole is.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+
+import numpy as np
+import trimesh
 
 from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.errors import ModelError
-from infmob_usd.frames import Frame
+from infmob_usd.frames import IDENTITY, Frame
+from infmob_usd.grasps import Grasp
 
 
 @dataclass(frozen=True)
@@ -146,6 +151,81 @@ def sheet_casing(size: CasingSize, material: str, cutouts: Mapping[str, Cutout] 
     return Assembly.single(label, pieces, anchors, supports)
 
 
+def rounded_sweep(hx: float, hy: float, r: float, profile, material: str, convex=(), per_corner: int = 7
+                  ) -> g.Piece:
+    """A closed profile swept round a rounded rectangle (half extents ``hx``, ``hy`` in x, y, corners of radius
+    ``r``): each profile point ``(d, z)`` is the rectangle's offset curve ``d`` outward at height ``z``, so the
+    corners stay concentric (a moulded bin's wall with its rolled rim, a base ring). Every ``r + d`` must be
+    positive. ``convex``: its collision point sets (the walls' boxes; default none), as a moulding's rounded
+    corners are drawn, not simulated."""
+    prof = np.asarray(profile, float)
+    centres = ((hx - r, hy - r, 0.0), (-hx + r, hy - r, 90.0), (-hx + r, -hy + r, 180.0), (hx - r, -hy + r, 270.0))
+    angles = [(cx, cy, np.radians(np.linspace(a0, a0 + 90.0, per_corner))) for cx, cy, a0 in centres]
+    rings = []
+    for d, z in prof:
+        ring = [(cx + (r + d) * np.cos(a), cy + (r + d) * np.sin(a)) for cx, cy, a in angles]
+        xy = np.hstack([np.vstack(c) for c in ring]).T
+        rings.append(np.column_stack([xy, np.full(len(xy), z)]))
+    n, m = len(rings[0]), len(rings)
+    i, j = np.meshgrid(np.arange(m), np.arange(n), indexing="ij")
+    a, b = i * n + j, i * n + (j + 1) % n
+    c, e = ((i + 1) % m) * n + (j + 1) % n, ((i + 1) % m) * n + j
+    faces = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3), np.stack([a, c, e], -1).reshape(-1, 3)])
+    v = np.vstack(rings)
+    if trimesh.Trimesh(v, faces, process=False).volume < 0:  # the profile ran clockwise: faces inward
+        faces = faces[:, ::-1]
+    return g.Piece(v, faces, material, convex)
+
+
+def edged_box(lo, hi, material: str, edge: float, name: str = "") -> g.Piece:
+    """A box from corner ``lo`` to ``hi`` with all twelve edges chamfered ``edge`` wide (a rolled steel edge, a
+    moulding's radius seen from a metre away): the hull of three copies, each cut back ``edge`` on two axes.
+    (:func:`~infmob_usd.geometry.box`'s ``bevel`` cuts the eight corners only: its edges stay sharp.)"""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    e = min(edge, 0.45 * float((hi - lo).min()))
+    pts = []
+    for keep in range(3):
+        a, b = lo + e, hi - e
+        a[keep], b[keep] = lo[keep], hi[keep]
+        pts += [(x, y, z) for x in (a[0], b[0]) for y in (a[1], b[1]) for z in (a[2], b[2])]
+    v, f = g.hull_arrays(np.array(pts))
+    return g.Piece(v, f, material, [v], name)
+
+
+def inset_outline(outline, d: float) -> np.ndarray:
+    """A convex outline (``(k, 2)``, counter-clockwise) moved ``d`` inwards, every edge parallel to its own."""
+    o = np.asarray(outline, float)
+    e = np.roll(o, -1, 0) - o
+    n = np.column_stack([-e[:, 1], e[:, 0]]) / np.maximum(np.linalg.norm(e, axis=1, keepdims=True), 1e-12)
+    n1, n2 = np.roll(n, 1, 0), n  # the inward normals of the edges before and after each corner
+    return o + d * (n1 + n2) / np.maximum(1.0 + (n1 * n2).sum(1, keepdims=True), 1e-6)
+
+
+def moulded_slab(outline, z0: float, z1: float, edge: float, material: str, name: str = "",
+                 ends: tuple[bool, bool] = (True, True), steps: int = 3) -> g.Piece:
+    """A convex slab over a convex ``outline`` from ``z0`` to ``z1`` whose bottom and top edges (``ends``) are
+    rounded to radius ``edge`` (a moulding's 1-5 mm radius, a die-cast half's): the outline inset along a quarter
+    circle towards each rounded face. Collision: its hull."""
+    o = np.asarray(outline, float)
+    o = o if _ccw(o) else o[::-1]
+    e = min(edge, 0.45 * (z1 - z0), 0.45 * float(np.ptp(o, 0).min()))
+    quarter = np.radians(np.linspace(0.0, 90.0, steps + 1))
+    rings = []
+    for rounded, z, s in ((ends[0], z0, 1.0), (ends[1], z1, -1.0)):
+        if rounded and e > 0:
+            rings += [(e * (1 - math.cos(a)), z + s * e * (1 - math.sin(a))) for a in quarter]
+        else:
+            rings.append((0.0, z))
+    pts = [np.column_stack([inset_outline(o, d), np.full(len(o), z)]) for d, z in rings]
+    v, f = g.hull_arrays(np.vstack(pts))
+    return g.Piece(v, f, material, [v], name)
+
+
+def _ccw(o: np.ndarray) -> bool:
+    x, y = o[:, 0], o[:, 1]
+    return float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y)) > 0
+
+
 @dataclass(frozen=True)
 class LinerSize:
     """An open tray or liner: outer ``width`` (y), ``depth`` (x), ``height`` (z), walls ``wall`` thick
@@ -184,6 +264,18 @@ def liner(size: LinerSize, material: str, front_material: str | None = None, lab
     anchors = {"front": Frame.at((0, 0, hf / 2), z=(1, 0, 0), x=(0, 0, 1)), "seat": Frame.at((x0 / 2, 0, 0))}
     supports = {f"corner_{i}": (x, y, 0) for i, (x, y) in enumerate(((x0, y0), (x0, y1), (xf, y0), (xf, y1)))}
     return Assembly.single(label, pieces, anchors, supports)
+
+
+def pull_tab(size: LinerSize, proud: float, thick: float, material: str) -> g.Piece:
+    """A liner's pull tab: an upright lug ``thick`` across standing ``proud`` out of the middle of its front plate
+    (x = 0), as tall as the plate, folded from the same sheet. A front that sits flush in its opening leaves no
+    gap a finger fits; the tab is what the fingers pinch, from the front across its thickness (the pads beside
+    it stay in front of the casing and above the tray's floor, never below the appliance's foot)."""
+    hf = size.height + size.lip
+    tab = g.box_between((0.0, -thick / 2, 0.0), (proud, thick / 2, hf), material).replace(sheet=size.sheet)
+    box = ((proud / 2, 0.0, hf / 2), (proud, thick, hf), IDENTITY.rotation)
+    return tab.with_grasps(Grasp.make((proud, 0.0, hf / 2), (-1, 0, 0), (0, 1, 0), thick, proud / 2,
+                                      "line_fixed_handle", box))
 
 
 @dataclass(frozen=True)

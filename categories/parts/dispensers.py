@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from infmob_usd import geometry as g
 from infmob_usd.frames import Frame
 
+from . import hardware
 from .vessel import Profile, _sleeve_cap
 
 # Pump bottles (maker and retail listings): 250-500 ml Boston rounds 0.13-0.18 m tall to the neck, 60-75 mm
@@ -46,6 +47,8 @@ SHELL = 0.0025  # m, an ABS housing's moulded wall (its mass)
 PANEL = (0.32, 0.006, 0.032)  # push panel: share of the height, thickness (m), the recess behind it (m)
 PANEL_PUSH = math.radians(14)  # a push panel's stroke: 15-25 mm at its bottom edge
 LID_OPENS = math.radians(100)
+LID_HINGE = (0.6, 0.004)  # the refill lid's moulded barrel hinge along its back edge: share of the width, knuckle
+# radius (m) (GOJO, Tork wall dispensers' back-hinged covers, manufacturers' pictures)
 LOCK = (0.008, 0.006)  # m, the key lock's barrel radius and how far it stands out of the side
 LOCK_TURNS = math.radians(90)
 # Condiment pumps (Server Products 83800, Tablecraft 664 listings): a 1.5-3 qt jar 0.12-0.17 m across and
@@ -137,6 +140,8 @@ def housing_body(h: Housing, slot: str, trim: str, lid: bool) -> list[g.Piece]:
     pieces = [g.box_between((x0, -w, zt), (x1, w, top), slot, bevel=0.005),
               g.box_between((x0, -w, 0), (x1 - PANEL[2], w, zt + 0.001), slot, bevel=0.004),
               g.box_between((x0 - 0.006, -0.8 * w, 0), (x0, 0.8 * w, 0.9 * h.height), trim)]
+    if lid:
+        pieces += lid_hinge(h, trim)[0]
     xn = x1 - PANEL[2] / 2 - 0.01
     pieces += [g.cylinder((xn, h.chamber(k)[0], zt - 0.012), (xn, h.chamber(k)[0], zt + 0.001), 0.005, trim, 12)
                for k in range(h.chambers)]
@@ -148,7 +153,24 @@ def wall_lid(h: Housing, slot: str) -> tuple[list[g.Piece], Frame]:
     w, x0, z0 = h.width / 2 - 0.002, -h.depth / 2 + 0.002, h.height - 0.01 + 0.0015
     pieces = [g.box_between((x0, -w, z0), (h.front - 0.002, w, h.height + 0.0015), slot, bevel=0.003)
               .replace(sheet=SHELL)]
-    return pieces, Frame.at((x0, 0, z0 + 0.004), z=(0, -1, 0))
+    return pieces + lid_hinge(h, slot)[1], _lid_axis(h)
+
+
+def _lid_axis(h: Housing) -> Frame:
+    return Frame.at((-h.depth / 2 + 0.002, 0, h.height - 0.0045), z=(0, -1, 0))
+
+
+def lid_hinge(h: Housing, slot: str) -> tuple[list[g.Piece], list[g.Piece]]:
+    """The refill lid's barrel hinge on its axis at the housing's back top edge (:data:`LID_HINGE`), its two end
+    knuckles on the housing with a leaf down its back, the middle one on the lid (decoration,
+    :func:`~.hardware.barrel_hinge`); returns (housing pieces, lid pieces)."""
+    share, r = LID_HINGE
+    length = share * h.width
+    fixed, moving = hardware.barrel_hinge(length, r, slot, moving_share=0.4, sections=12)
+    # the pin frame: x out of the back, y down the back, z along the axis
+    fixed.append(hardware.leaf((0.002, 0.0, -length / 2), (0.0032, 0.028, length / 2), slot, 0.0005))
+    pin = Frame.at(_lid_axis(h).origin, x=(-1, 0, 0), z=(0, -1, 0))
+    return [pc.transformed(pin.matrix) for pc in fixed], [pc.transformed(pin.matrix) for pc in moving]
 
 
 def push_panel(h: Housing, k: int, slot: str) -> tuple[list[g.Piece], Frame]:

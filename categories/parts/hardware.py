@@ -1,4 +1,5 @@
-"""Small hardware: handles (bar, bow, knob, edge pull), knobs, push buttons, rocker switches, hinge knuckles.
+"""Small hardware: handles (bar, bow, knob, edge pull), knobs, push buttons, rocker switches, hinge knuckles and barrel
+hinges.
 
 Every builder here returns an :class:`~infmob_usd.assembly.Assembly` whose
 anchor ``"mount"`` is the mounting surface (z out of it) and whose support
@@ -130,6 +131,31 @@ def hinge_knuckle(length: float, radius: float, material: str) -> Assembly:
     """A hinge barrel along local z, centred on the origin (anchor ``"axis"``: z along the pin)."""
     piece = g.cylinder((0, 0, -length / 2), (0, 0, length / 2), radius, material, 12, name="hinge")
     return Assembly.single("hinge", [piece], {"axis": IDENTITY, "mount": IDENTITY})
+
+
+def barrel_hinge(length: float, radius: float, material: str, moving_share: float = 1 / 3, gap: float = 0.001,
+                 sections: int = 16) -> tuple[list[g.Piece], list[g.Piece]]:
+    """A visible barrel hinge in its pin's frame (local z along the pin, centred on the origin): three knuckles,
+    the two end ones on the fixed side and the middle one (``moving_share`` of ``length``) on the moving side,
+    ``gap`` apart, with the pin's domed heads proud of the ends. Decoration only: no collision (the joint is the
+    core's and the knuckles turn in place about it), so a hinge can be shown where the simulator needs nothing.
+    Returns (fixed pieces, moving pieces), both in the pin frame: place each with the joint's frame at rest,
+    the moving ones on the part that turns."""
+    h, m = length / 2, moving_share * length / 2
+
+    def knuckle(z0: float, z1: float, r: float = radius) -> g.Piece:
+        return g.cylinder((0, 0, z0), (0, 0, z1), r, material, sections, name="hinge").replace(convex=())
+
+    head = 0.25 * radius  # the pin's heads, proud of each end
+    fixed = [knuckle(-h, -m - gap), knuckle(m + gap, h), knuckle(-h - head, -h, 0.7 * radius),
+             knuckle(h, h + head, 0.7 * radius)]
+    return fixed, [knuckle(-m, m)]
+
+
+def leaf(lo, hi, material: str, bevel: float = 0.0) -> g.Piece:
+    """A hinge leaf or arm between corners ``lo`` and ``hi`` (in the pin frame of :func:`barrel_hinge`):
+    decoration, without collision, joining knuckles to what carries them."""
+    return g.box_between(lo, hi, material, bevel=bevel, name="hinge_leaf").replace(convex=())
 
 
 def turn_button(length: float, material: str, stem: float = 0.008, thickness: float = 0.005) -> Assembly:

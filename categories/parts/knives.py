@@ -21,6 +21,7 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
 
+from .casing import moulded_slab
 from .handtools import hull, rrect
 
 GAP = 0.0003  # m, between a tool and the liners or scales either side (tools turn stiffly on the pivot)
@@ -266,6 +267,7 @@ UTILITY = {
 }
 """Designs -> sizes (maker listings named beside each)."""
 
+EDGE = 0.0018  # m, the radius of a utility knife handle's outer edges
 SHELL = 0.003  # m, one handle half's wall either side of the channel (die-cast or moulded, 2.5-3.5 mm)
 
 
@@ -322,7 +324,9 @@ def utility_handle(u: Utility, body: str, grip: str) -> Assembly:
     d, L, h = u.design, u.length, u.design.height
     z0, z1 = u.channel
     plan = _utility_plan(u)
-    pieces = [_plate(plan, 0.0, z0, body, "half"), _plate(plan, z1, d.thickness, body, "half")]
+    # die-cast or moulded halves: their outer edges rounded (a Stanley 10-099's ~1.5 mm, an Olfa L-1's ~2 mm)
+    pieces = [moulded_slab(plan, 0.0, z0, EDGE, body, "half", (True, False)),
+              moulded_slab(plan, z1, d.thickness, EDGE, body, "half", (False, True))]
     wall = 0.003
     plan_lo = plan[plan[:, 1] < blade_line(u)]  # the belly's corners, back to the nose under the blade
     for a, b in zip(plan_lo[:-1], plan_lo[1:], strict=True):  # one wall along each edge of the plan

@@ -23,6 +23,7 @@ from infmob_usd import geometry as g
 from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 
+from .casing import moulded_slab
 from .handtools import hull, sweep
 
 SHEET = 0.0006  # m, pressed steel of a hood, chimney or windproof case (0.5-0.7 mm brass or steel: Zippo, BIC)
@@ -333,6 +334,8 @@ UTILITIES = {
 }
 """Utility lighters -> sizes (BIC, Scripto listings)."""
 
+GRIP_EDGE = 0.3  # a utility lighter's grip: its moulded edges' radius as a share of its thickness (BIC
+# Multi-Purpose, Scripto: a soft, near-oval section)
 HANDLE_WALL = 0.0012  # m, a utility lighter's moulded handle shell (1-1.5 mm; the BIC Multi-Purpose weighs ~40 g)
 WAND_WALL = 0.0008  # m, its wand: a thin steel gas tube in a moulded sleeve, massed as one 0.8 mm wall
 TRIGGER = (0.016, 0.009, 0.007)  # trigger length, how far it stands out under the handle, its travel (m): BIC MP
@@ -359,13 +362,13 @@ def utility_body(u: Utility, body: str, wand: str, steel: str, dark: str) -> Ass
     x_g = x_t - travel - PLAY  # the grip ends where the pulled trigger stops
     y_slot = -H / 2 + 0.45 * H  # the trigger's slot runs up to here
     wy = 0.18 * H  # the wand's axis, high in the nose
-    pieces = [prism(plan(x_g, H, 0.3 * H), 0.0, T, body, "grip", at=(x_g / 2, 0.0), inset=0.0015)
-              .replace(wall=HANDLE_WALL)]
-    nose = [(x, y, zz) for x, y0, y1, z0, z1 in ((x_g - 0.004, y_slot + PLAY, H / 2 - 0.002, 0.0015, T - 0.0015),
-                                                   (x_g, y_slot + PLAY, H / 2, 0.0, T),
-                                                   (L, wy - u.wand_r - 0.003, wy + u.wand_r + 0.003, T / 2 - u.wand_r
-                                                    - 0.003, T / 2 + u.wand_r + 0.003))
-            for y in (y0, y1) for zz in (z0, z1)]
+    grip = plan(x_g, H, 0.3 * H, 6) + (x_g / 2, 0.0)
+    pieces = [moulded_slab(grip, 0.0, T, GRIP_EDGE * T, body, "grip").replace(wall=HANDLE_WALL)]
+    # the nose housing tapers from the grip's section to a collar round the wand, its edges rounded as the grip's
+    sections = ((x_g - 0.004, y_slot + PLAY, H / 2 - 0.002, 0.0015, T - 0.0015), (x_g, y_slot + PLAY, H / 2, 0.0, T),
+                (L, wy - u.wand_r - 0.003, wy + u.wand_r + 0.003, T / 2 - u.wand_r - 0.003, T / 2 + u.wand_r + 0.003))
+    nose = [(x, y, z) for x, y0, y1, z0, z1 in sections
+            for y, z in plan(y1 - y0, z1 - z0, GRIP_EDGE * min(T, z1 - z0), 4) + ((y0 + y1) / 2, (z0 + z1) / 2)]
     pieces.append(hull(nose, body, "nose").replace(wall=HANDLE_WALL))
     tip = L + u.wand
     pieces.append(g.cylinder((L - 0.004, wy, T / 2), (tip - 0.012, wy, T / 2), u.wand_r, wand, None, "wand")

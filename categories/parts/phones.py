@@ -236,6 +236,11 @@ HANDSET = {"cup": 0.050, "grip": (0.030, 0.024), "depth": 0.030}
 """A corded handset (Panasonic KX-TS500, Cisco 7911): 180-210 mm long (0.9 of its deck), 50 mm ear and mouth
 cups, a 30 x 24 mm grip, 30 mm deep, 140-180 g."""
 SADDLE = 0.012  # m the cradle's saddles stand above the deck
+POCKET = dict(rim=0.008, wall=0.004, clear=0.002, plunger=(0.012, 0.016), under=0.003)
+"""The cradle's two pockets (Panasonic KX-TS500, Cisco 7911 bases): a rim 8 mm above each saddle round the ear
+and mouth cups on three sides (open towards the middle, where the grip passes), 4 mm walls with 2 mm of play
+round the cups, which guide the handset over the first 8 mm of its lift; the hook switch's plunger
+(12 x 16 mm) stands between them 3 mm under the grip (m)."""
 
 
 def desk_plan(size: float, pad: int, functions: int) -> Plan:
@@ -255,12 +260,28 @@ def desk_display(p: Plan, screen: str, bezel: str) -> list[g.Piece]:
 
 
 def desk_cradle(p: Plan, material: str) -> list[g.Piece]:
-    """The cradle's two saddles the handset's cups rest on (its ends), on the left of the deck."""
-    y = CRADLE * p.width / 2 - 0.5 * p.width
-    half = handset_half(p)
-    return [g.box_between((sx * half - 0.02, y - 0.02, p.thick - 0.002), (sx * half + 0.02, y + 0.02,
-                                                                          p.thick + SADDLE), material, bevel=0.004)
-            for sx in (1, -1)]
+    """The cradle on the left of the deck: two saddles the handset's cups rest on (its ends), each in a pocket
+    walled on three sides (:data:`POCKET`), and the hook switch's plunger between them under the grip."""
+    y, half, k = CRADLE * p.width / 2 - 0.5 * p.width, handset_half(p), POCKET
+    z0 = p.thick + SADDLE
+    a, b = HANDSET["cup"] / 2 + k["clear"], 0.45 * HANDSET["cup"] + k["clear"]  # the pocket's inner half sizes
+    t, top = k["wall"], z0 + k["rim"]
+    pieces = []
+    for sx in (1, -1):
+        xc = sx * half
+        pieces.append(g.box_between((xc - a, y - b, p.thick - 0.002), (xc + a, y + b, z0), material, bevel=0.003))
+        end = (xc + sx * a, xc + sx * (a + t))
+        pieces.append(g.box_between((min(end), y - b - t, p.thick - 0.002), (max(end), y + b + t, top), material,
+                                    bevel=0.0015))
+        for side in (-1, 1):
+            ys = (y + side * b, y + side * (b + t))
+            pieces.append(g.box_between((xc - a, min(ys), p.thick - 0.002), (xc + a, max(ys), top), material,
+                                        bevel=0.0015))
+    grip_bottom = z0 + HANDSET["depth"] - HANDSET["grip"][1]
+    w, d = k["plunger"]
+    pieces.append(g.box_between((-w / 2, y - d / 2, p.thick - 0.002), (w / 2, y + d / 2, grip_bottom - k["under"]),
+                                "trim", bevel=0.002))
+    return pieces
 
 
 def _cup(x: float, y: float, z0: float, size: tuple[float, float], height: float, material: str) -> g.Piece:

@@ -25,6 +25,8 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import IDENTITY, Frame
 from infmob_usd.grasps import Grasp
 
+from . import hardware
+
 SINK = 0.0005  # m a key reaches below the top face at rest (the skirt of a rubber key in its hole)
 KEYMAT = 0.0022  # m from the face down to the keymat a pressed key's skirt stops above (2 mm top shell)
 RIM = 0.0015  # m of the top shell's hole edge around the keypad's keys
@@ -475,8 +477,27 @@ def cover(p: Plan, material: str) -> Assembly:
     tab = g.box_between((x1 - 0.001, -TAB[1] / 2, z0), (x1 + TAB[0], TAB[1] / 2, z0 + COVER_PLATE), material,
                         bevel=0.0005)
     lip = Grasp.make((x1 + TAB[0], 0, z0 + COVER_PLATE / 2), (-1, 0, 0), (0, 0, 1), 0.004, TAB[0] / 2)
-    return Assembly.single("lid", [plate, tab.with_grasps(lip), *cheeks],
-                           {"hinge": Frame.at((x0, 0, z0 + COVER_PLATE / 2), z=(0, -1, 0), x=(1, 0, 0))})
+    return Assembly.single("lid", [plate, tab.with_grasps(lip), *cheeks, *cover_hinge(p, material)[1]],
+                           {"hinge": _cover_axis(p)})
+
+
+def _cover_axis(p: Plan) -> Frame:
+    s, top = p.sections[-1], p.tops[-1]
+    return Frame.at((top - s.height - 0.002, 0, p.thick + p.d.proud + COVER_CLEAR + COVER_PLATE / 2), z=(0, -1, 0),
+                    x=(1, 0, 0))
+
+
+def cover_hinge(p: Plan, material: str) -> tuple[list[g.Piece], list[g.Piece]]:
+    """The flip cover's barrel hinge on its axis (its back edge): the body's two end knuckles on posts up from
+    the face, the cover's middle one (decoration, :func:`~.hardware.barrel_hinge`); returns (body, cover)."""
+    axis = _cover_axis(p)
+    length, r = 0.7 * p.width, 0.75 * COVER_PLATE
+    fixed, moving = hardware.barrel_hinge(length, r, material, moving_share=0.5, sections=10)
+    # the pin frame: x over the cover, y up, z along the axis; a post under each end knuckle
+    drop = axis.origin[2] - p.thick + 0.0003
+    fixed += [hardware.leaf((-r, -drop, z0), (0.0, 0.0, z1), material)
+              for z0, z1 in ((-length / 2, -length / 4), (length / 4, length / 2))]
+    return [pc.transformed(axis.matrix) for pc in fixed], [pc.transformed(axis.matrix) for pc in moving]
 
 
 # -- a presenter ---------------------------------------------------------------------------------------------

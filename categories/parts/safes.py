@@ -21,7 +21,8 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 
 from . import appliance as A
-from .casing import CasingSize, Cutout, LinerSize, liner, sheet_casing
+from . import hardware
+from .casing import CasingSize, Cutout, LinerSize, edged_box, liner, sheet_casing
 from .controls import MOUNT, Button, Dial
 
 # Outer sizes (width Y, depth X, height Z; metres): home safes SentrySafe SFW082 37 x 41 x 44 cm to SFW205
@@ -46,6 +47,8 @@ class Build:
     opens: float
     bolt_r: float = 0.0
     bolts: int = 0
+    hinge_r: float = 0.008
+    hinges: int = 2
 
 
 # Fire-rated home safes: 2-4 cm walls of steel skin round a gypsum/concrete fill and 6-8 cm doors, 35-60 kg
@@ -56,10 +59,18 @@ class Build:
 # (SentrySafe SFW123: 1 in / 25 mm live bolts, dead bolts on the hinge side; Elsafe hotel safes: two 20 mm
 # bolts; Stack-On cabinets: 3-point locking, ~16 mm). Drawn withdrawn, their heads showing on both edges
 # ``bolt_r`` round, ``bolts`` to an edge; they are not jointed (the handle's quarter turn stands for them).
-BUILD = {"home_safe": Build(0.03, 0.065, 0.006, 0.005, math.radians(120), 0.0125, 2),
-         "hotel_safe": Build(0.006, 0.03, 0.003, 0.0035, math.radians(110), 0.01, 2),
-         "gun_cabinet": Build(0.004, 0.03, 0.0019, 0.0011, math.radians(120), 0.008, 3)}
-BOLT = dict(depth=0.03, proud=0.002)  # m, a bolt's length in the door and its head past the edge
+# A gun cabinet's door is a folded box section deep enough for its 3-point locking bar and ~16 mm bolts to run
+# inside it: 40-50 mm (a 30 mm door read as a sheet; gun safes proper have 75-125 mm doors).
+# External barrel hinges: 2 on a home or hotel safe, 3 on a cabinet's tall door, 16-20 mm knuckles
+# (``hinge_r``) on a fire safe, 12 mm on a hotel safe (SentrySafe, Stack-On, Elsafe product pictures).
+BUILD = {"home_safe": Build(0.03, 0.065, 0.006, 0.005, math.radians(120), 0.0125, 2, 0.01, 2),
+         "hotel_safe": Build(0.006, 0.03, 0.003, 0.0035, math.radians(110), 0.01, 2, 0.006, 2),
+         "gun_cabinet": Build(0.004, 0.045, 0.0019, 0.0011, math.radians(120), 0.008, 3, 0.008, 3)}
+BOLT = dict(depth=0.03, proud=0.005)  # m, a bolt's length in the door and its head past the edge (the live bolts'
+# rounded heads stand 4-6 mm out of the free edge when withdrawn: SentrySafe, Stack-On doors)
+EDGE = 0.35  # a steel body's rolled edges: chamfer as a share of its wall, at most :data:`EDGE_MAX`
+EDGE_MAX = 0.006  # m (a fire safe's 5-8 mm rolled edge, a cabinet's 1-2 mm sheet bend)
+HINGE_LEAF = 3.5  # a hinge leaf's width (m) as a multiple of its knuckle's radius
 
 # Locks (SentrySafe, Sargent & Greenleaf, Elsafe listings): a 6-7 cm combination dial on a 6 mm spindle; a
 # 12-key pad of ~10 x 8 mm keys pressing 2 mm on a 22 x 17 mm pitch; a three-spoke bolt handle ~10-14 cm
@@ -78,11 +89,12 @@ def body(width: float, depth: float, height: float, b: Build, material: str) -> 
     """The open-front steel body (five walls ``b.wall`` thick). Anchors: ``hinge_neg``, ``hinge_pos``, ``drawer``
     (see the module), ``floor``."""
     hx, hy, t = depth / 2, width / 2, b.wall
-    pieces = [g.box_between((-hx, -hy, 0), (-hx + t, hy, height), material),
-              g.box_between((-hx + t, -hy, 0), (hx, -hy + t, height), material),
-              g.box_between((-hx + t, hy - t, 0), (hx, hy, height), material),
-              g.box_between((-hx + t, -hy + t, 0), (hx, hy - t, t), material),
-              g.box_between((-hx + t, -hy + t, height - t), (hx, hy - t, height), material)]
+    e = min(EDGE * t, EDGE_MAX)
+    # the top and floor plates span the whole width, so their bevelled edges are the body's outer edges
+    pieces = [edged_box(lo, hi, material, e) for lo, hi in (
+        ((-hx, -hy + t, t), (-hx + t, hy - t, height - t)), ((-hx, -hy, t), (hx, -hy + t, height - t)),
+        ((-hx, hy - t, t), (hx, hy, height - t)), ((-hx, -hy, 0), (hx, hy, t)),
+        ((-hx, -hy, height - t), (hx, hy, height)))]
     pieces = [pc.replace(sheet=b.sheet) for pc in pieces] + lining(hx, hy, height, t)
     z_drawer = height - t - DRAWER["clearance"] - DRAWER["height"] / 2
     anchors = {"hinge_neg": Frame.at((hx, -hy, 0), x=(1, 0, 0), z=(0, 0, -1)),
@@ -150,6 +162,27 @@ def door(width: float, height: float, b: Build, material: str, cutouts: dict[str
     anchors = {**made.anchors, "hinge_neg": Frame.at((-t2, -w2, 0), x=(1, 0, 0), z=(0, 0, -1)),
                "hinge_pos": Frame.at((-t2, w2, 0), x=(1, 0, 0), z=(0, 0, 1))}
     return Assembly(made.parts, anchors=anchors, supports=made.supports)
+
+
+def hinges(depth: float, width: float, height: float, b: Build, side: int, material: str
+           ) -> tuple[list[g.Piece], list[g.Piece]]:
+    """The door's external barrel hinges (``b.hinges`` of ``b.hinge_r``) on its axis, the body's front corner on
+    the ``side`` (-1: -y, +1: +y): each a leaf on the body's side, one on the door's, knuckles between
+    (decoration, :func:`~.hardware.barrel_hinge`). Returns (body pieces, door pieces) at rest."""
+    r, hx, hy = b.hinge_r, depth / 2, width / 2
+    length, leaf = 8 * r, HINGE_LEAF * r
+    y0, y1 = sorted((side * hy, side * (hy + 0.15 * r)))
+    body, door = [], []
+    for k in range(b.hinges):
+        zc = height * (0.12 + 0.76 * k / (b.hinges - 1))
+        fixed, moving = hardware.barrel_hinge(length, r, material, moving_share=0.4)
+        at = Frame.at((hx, side * hy, zc)).matrix
+        body += [pc.transformed(at) for pc in fixed]
+        door += [pc.transformed(at) for pc in moving]
+        body.append(hardware.leaf((hx - leaf, y0, zc - length / 2), (hx - 0.5 * r, y1, zc + length / 2), material))
+        door.append(hardware.leaf((hx + 0.5 * r, y0, zc - 0.2 * length), (hx + leaf, y1, zc + 0.2 * length),
+                                  material))
+    return body, door
 
 
 def spoke_handle(material: str) -> Assembly:

@@ -75,6 +75,9 @@ BUTTON = controls.Button(half=(0.009, 0.0045), shape="rect", proud=0.003, travel
 BUTTONS_MAX = 3  # cancel, defrost, bagel (a reheat key takes the place of one on some models)
 TRAY_HEIGHT, TRAY_LIP, TRAY_CLEARANCE = 0.01, 0.01, 0.002  # a crumb tray 10 mm deep with a 20 mm front
 TRAY_PULL = 0.8  # the tray slides out this share of its depth before it leaves its rails
+# The crumb tray's front sits flush in the casing with 2 mm round it: it is pulled by a lug on the front's middle,
+# 10 mm proud and 5 mm across (sized for a pinch: a Panda finger pad is 20 mm wide; not measured from a product)
+TRAY_TAB = (0.01, 0.005)  # m, proud, thick
 
 # A control group on the front face, for a group on the right (+1) or left (-1), as fractions of the front's
 # half width and half height: the lever near the end, the dial and the key column inside it.

@@ -26,7 +26,7 @@ from infmob_usd.frames import IDENTITY, Frame
 from infmob_usd.grasps import Grasp
 
 from . import appliance as A
-from . import controls
+from . import controls, hardware
 from .casing import CasingSize, Cutout, LinerSize, liner, sheet_casing
 
 
@@ -77,6 +77,11 @@ OPENING = 0.33  # the loading opening's diameter as a share of the door's (32-34
 RIM = 0.25  # the door ring's width as a share of its radius (a 34-38 cm window in a 49-52 cm door)
 DOOR = dict(gap=0.006, ring=0.05, trim=0.004, bowl=0.06, glass=0.006)  # m: off the front, ring depth, trim
 # ring, glass bowl depth into the opening and its wall (5-8 mm tempered glass)
+HINGE = dict(length=0.24, radius=0.008, moving=0.55, plate=0.004, reach=0.018, arm=0.03)  # m: the porthole door's
+# hinge at its left edge, a 20-25 cm block on the front with the door's arm between its two knuckles (Bosch Serie
+# 4, Samsung WW90 doors, manufacturers' pictures), the arm's share of it, the block's plate on the front (in the
+# door's 6 mm gap), its reach beside the pin and the door arm's reach into the ring. The body's knuckles sit where
+# the round ring's edge is more than their radius from the pin, so the ring never sweeps through them.
 DOOR_OPENS = math.radians(170)  # porthole doors open 165-180 degrees (Bosch Serie 4 ~171, Samsung 180, approx.)
 GASKET = dict(depth=0.07, wall=0.015)  # m, the rubber boot from the opening back to the drum
 DRUM = dict(radius=0.235, sheet=0.0006, lifters=3, from_back=0.1)  # 46-48 cm stainless drums, three lifters
@@ -314,6 +319,8 @@ def body(m: Machine, knobs: int, keys: int, flap: bool) -> Assembly:
     casing = sheet_casing(s, "body", cuts)
     hole = "porthole" if m.front else "tub"
     pieces = drum(m, casing.anchor(hole))
+    if m.front:
+        pieces += _placed(door_hinge(m)[0], casing.anchor(hole))
     fr, fh = FEET
     xf, yf = s.depth / 2 - 2 * fr, s.width / 2 - 2 * fr
     pieces += [g.cylinder((x, y, -fh), (x, y, 0.0), fr, "feet", 12) for x in (-xf, xf) for y in (-yf, yf)]
@@ -381,6 +388,21 @@ def console(m: Machine, knob_at, key_at, display) -> list[g.Piece]:
     return pieces
 
 
+def door_hinge(m: Machine) -> tuple[list[g.Piece], list[g.Piece]]:
+    """The porthole door's visible hinge (:data:`HINGE`) in the porthole anchor's frame (the door's rest frame):
+    the casing's block with its two knuckles, from a plate on the front out to the pin, and the door's arm
+    from its ring into the middle knuckle. Decoration (:func:`~.hardware.barrel_hinge`); returns (body, door)."""
+    hg, zf = HINGE, DOOR["gap"] + DOOR["ring"]
+    fixed, moving = hardware.barrel_hinge(hg["length"], hg["radius"], "trim", hg["moving"])
+    h, mid, r = hg["length"] / 2, hg["moving"] * hg["length"] / 2, hg["radius"]
+    # the pin frame: x out of the front, y out of the ring's edge, z along the pin
+    fixed += [hardware.leaf((-zf, -0.006, -h), (-zf + hg["plate"], hg["reach"], h), "door", 0.001)]
+    fixed += [hardware.leaf((-zf, -0.2 * r, z0), (0.0, r, z1), "door", 0.002) for z0, z1 in ((-h, -mid), (mid, h))]
+    moving += [hardware.leaf((-0.7 * DOOR["ring"], -hg["arm"], -mid), (0.0, 0.0, mid), "door", 0.002)]
+    pin = Frame.at((0.0, m.rd, zf), x=(0, 0, 1), z=(-1, 0, 0))
+    return _placed(fixed, pin), _placed(moving, pin)
+
+
 def porthole_door(m: Machine) -> Assembly:
     """A porthole door in the porthole anchor's frame (local z out of the front, x up, y to the machine's left):
     a plastic ring with a chrome trim ring, a flat cover glass and a glass bowl reaching into the opening, a grip
@@ -404,7 +426,7 @@ def porthole_door(m: Machine) -> Assembly:
     pieces[-1] = pieces[-1].with_grasps(Grasp.make((0, y, top), (0, 0, -1), (0, 1, 0), 0.024, 0.01, "line_fixed_handle",
                                                    ((0, y, zf + 0.0045), (0.08, 0.024, 0.019), IDENTITY.rotation)))
     hinge = Frame.at((0.0, rd, zf), z=(-1, 0, 0))
-    return Assembly.single("door", pieces, {"mount": IDENTITY, "hinge": hinge})
+    return Assembly.single("door", pieces + door_hinge(m)[1], {"mount": IDENTITY, "hinge": hinge})
 
 
 def detergent_drawer() -> Assembly:
