@@ -1,13 +1,16 @@
-"""Camera: a DSLR with a zoom lens, a compact with a telescoping lens, or an instant camera, on its base.
+"""Camera: a DSLR, a mirrorless, a compact, an instant or an action camera, standing on its base.
 
 Designs (``design``, sizes and sources in ``categories/parts/cameras.py``): a ``dslr`` whose zoom ring turns
 about the lens axis (revolute) and drives the inner barrel out of the lens (prismatic, coupled to the ring),
 a shutter button on the grip (prismatic, sprung), a mode dial (continuous), and optionally a tilting rear
-screen (revolute about its top edge) and a card door on the grip side (revolute); a ``compact`` whose lens
+screen (revolute about its top edge) and a card door on the grip side (revolute); a ``mirrorless`` camera is
+the same mechanism on a slimmer body with a shallower grip and a short retracting kit zoom, its viewfinder in
+a hump over the lens or in the top corner (``viewfinder``); a ``compact`` whose lens
 telescopes out in one or two stages (prismatic each, the inner riding in the outer), with a shutter
 button, optionally a mode dial, a tilting screen and a side door; an ``instant`` camera whose lens barrel
 pops out (prismatic), its shutter button on the front, its film door on the back (revolute) and optionally
-a battery door on the side. X is the lens's direction, Y across, Z up.
+a battery door on the side; an ``action`` camera's fixed lens sits behind a square cover beside its front
+screen, its shutter button on top and its battery door on the side. X is the lens's direction, Y across, Z up.
 """
 
 from __future__ import annotations
@@ -27,17 +30,24 @@ PARAMS = (
     Float("roundness", "edges: crisp (0) to soft (1)", "", 0.0, 1.0),
     Float("reach", "a DSLR lens's length and zoom travel over an 18-55 kit zoom's (1.5: an 18-135 mm)", "", 1.0,
           1.5),
-    Choice("finish", "body finish of a DSLR or a compact: black plastic, dark grey or silver metal",
-           choices=("black", "dark_grey", "silver"), weights=(0.55, 0.2, 0.25)),
+    Choice("finish", "body finish of a DSLR, a mirrorless camera or a compact: black plastic, dark grey or silver"
+           " metal", choices=("black", "dark_grey", "silver"), weights=(0.55, 0.2, 0.25)),
     Choice("pastel", "an instant camera's moulded colour", choices=PASTELS),
+    Choice("viewfinder", "a mirrorless camera's viewfinder: in a hump over the lens or in the top corner",
+           choices=K.VIEWFINDERS, weights=(0.6, 0.4)),
 )
 
 GRAMMAR = Grammar("camera", {
-    "camera": Node(one_of={"dslr": 0.35, "compact": 0.35, "instant": 0.3}, choice="design"),
+    "camera": Node(one_of={"dslr": 0.22, "mirrorless": 0.2, "compact": 0.23, "instant": 0.2, "action": 0.15},
+                   choice="design"),
     "dslr": Node(label="body", required=("zoom_ring", "shutter", "dial"), optional={"screen": 0.6, "door": 0.7}),
+    # most mirrorless bodies tilt or flip their screen (a6400, Z50, R50)
+    "mirrorless": Node(label="body", required=("zoom_ring", "shutter", "dial"), optional={"screen": 0.8,
+                                                                                          "door": 0.7}),
     "compact": Node(label="body", required=("stage", "shutter"), optional={"dial": 0.6, "screen": 0.5,
                                                                           "door": 0.6}),
     "instant": Node(label="body", required=("stage", "shutter", "film_door"), optional={"door": 0.5}),
+    "action": Node(label="body", required=("shutter", "door")),
     "zoom_ring": Node(label="zoom_ring", required=("barrel",)),
     "barrel": Node(label="barrel"),
     "stage": Node(label="barrel", optional={"inner_stage": 0.6}),
@@ -58,25 +68,34 @@ MATERIALS = {"body": ("finish", {"black": "plastic:black", "dark_grey": "plastic
              # a lens's coated front element: glossy glass over the barrel's black inside (the screen family's
              # cover glass: it mirrors the room, where a see-through glass over black reads as a grey disc)
              "glass": "glass:smoked", "element": "screen:blue_black",
-             "screen": "screen:black", "flash": "glass:frosted", "mark": "plastic:white", "lamp": "plastic:orange"}
+             "screen": "screen:black", "flash": "glass:frosted", "mark": "plastic:white", "lamp": "plastic:orange",
+             "action_shell": "plastic:black|dark_grey"}  # an action camera's matte shell (GoPro black, DJI grey)
 # bodies are massed solid at the density that gives their named products' weight in their bounding box:
 # EOS 250D 449 g in ~122 x 93 x 50 mm (+ grip) ~ 700 kg/m^3; RX100 III 290 g in 102 x 58 x 41 mm ~ 1200;
-# Instax Mini 12 306 g in 104 x 122 x 67 mm ~ 360 (a hollow moulded shell round the film pack)
-SUBSTRATES = {"body": ("design", {"dslr": 700.0, "compact": 1200.0, "instant": 700.0}), "pastel": 360.0}
+# Instax Mini 12 306 g in 104 x 122 x 67 mm ~ 360 (a hollow moulded shell round the film pack); a6400 403 g in
+# 120 x 67 x 60 mm ~ 840; GoPro HERO12 154 g in 72 x 51 x 34 mm ~ 1250
+SUBSTRATES = {"body": ("design", {"dslr": 700.0, "mirrorless": 840.0, "compact": 1200.0, "instant": 700.0,
+                                  "action": 1250.0}), "pastel": 360.0, "action_shell": 1250.0}
 
 
 class CameraLayout(Layout):
     def camera(self, node):
         p = self.p
-        self.c = K.camera(node.choice, p["size"], p["shape"], p["roundness"], p["reach"])
+        self.c = K.camera(node.choice, p["size"], p["shape"], p["roundness"], p["reach"], p["viewfinder"])
         self.grow(node.one(node.choice))
 
     def _stages(self, node) -> int:
         return 1 + int(node.one("stage").one("inner_stage") is not None)
 
     def dslr(self, node):
-        body = self.place(K.dslr_body(self.c, "body", "grip", "metal", "lens",
-                                      None if node.one("screen") else "screen"), "body")
+        body = self.place(K.mount_body(self.c, "body", "grip", "metal", "lens",
+                                       None if node.one("screen") else "screen"), "body")
+        self._controls(node, body)
+
+    mirrorless = dslr
+
+    def action(self, node):
+        body = self.place(K.action_body(self.c, "action_shell", "trim", "element", "mark", "screen"), "body")
         self._controls(node, body)
 
     def compact(self, node):
@@ -129,7 +148,8 @@ class CameraLayout(Layout):
         self.hinge(body.root, "screen", screen.anchor("hinge"), upper=K.SCREEN_TILT, role="lid")
 
     def door(self, node, body):
-        door = self.place(K.side_door(self.c, "pastel" if self.c.design == "instant" else "body"), "door")
+        shell = {"instant": "pastel", "action": "action_shell"}.get(self.c.design, "body")
+        door = self.place(K.side_door(self.c, shell), "door")
         self.hinge(body.root, "door", door.anchor("hinge"), upper=K.DOOR_OPENS, role="lid")
 
     def film_door(self, node):

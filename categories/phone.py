@@ -1,10 +1,11 @@
-"""Phone: a flip phone, a slider phone or a corded desk phone with its handset and keypad.
+"""Phone: a flip, slider or bar mobile phone or a corded desk phone with its handset and keypad.
 
 Designs (``design``, sizes and sources in ``categories/parts/phones.py``): a ``flip`` phone (clamshell) lies
 closed on its back, its lid over the keypad of its base; the lid turns open about the hinge barrel at the top
 (revolute) and the base's keys ``requires_open`` it; a ``slider`` phone's screen half slides up off the keypad
 of its lower half (prismatic; the keypad ``requires_open`` it) and carries the navigation keys under its
-screen; a ``desk`` phone has its handset lying in the cradle on the left of its deck, lifted off it (role
+screen; a ``bar`` phone (candybar) carries its screen, navigation keys and keypad on one shell; a ``desk``
+phone has its handset lying in the cradle on the left of its deck, lifted off it (role
 ``lift_off``), a numeric pad with function keys and a two-line display. Every key presses down against its
 return spring (prismatic, role ``button``: 12 numeric keys, 9-13 navigation keys: d-pad, soft, call, end,
 clear); a mobile phone's battery cover slides out of its back (prismatic, ``has_battery_cover``). A mobile
@@ -29,9 +30,10 @@ PARAMS = (
 )
 
 GRAMMAR = Grammar("phone", {
-    "phone": Node(label="body", one_of={"flip": 0.35, "slider": 0.3, "desk": 0.35}, choice="design"),
+    "phone": Node(label="body", one_of={"flip": 0.27, "slider": 0.22, "bar": 0.23, "desk": 0.28}, choice="design"),
     "flip": Node(required=("lid", "nav_keys", "keypad"), optional={"battery_cover": 0.7}),
     "slider": Node(required=("slider_half", "keypad"), optional={"battery_cover": 0.7}),
+    "bar": Node(required=("nav_keys", "keypad"), optional={"battery_cover": 0.8}),
     "desk": Node(required=("handset", "keypad", "function_keys")),
     "lid": Node(label="lid"),
     "slider_half": Node(label="slider", required=("nav_keys",)),
@@ -73,6 +75,10 @@ class PhoneLayout(Layout):
             self.plan = P.flip_plan(size, counts["nav_keys"], counts["keypad"])
             self.order = {"nav_keys": (0, 0), "keypad": (1, 0)}
             extra = P.flip_base_hinge(self.plan, "body")
+        elif design == "bar":
+            self.plan = P.bar_plan(size, counts["nav_keys"], counts["keypad"])
+            self.order = {"nav_keys": (0, 0), "keypad": (1, 0)}
+            extra = P.bar_face(self.plan, "screen", "lens")
         elif design == "slider":
             self.plan = P.slider_base_plan(size, counts["keypad"])
             self.up = P.slider_plan(self.plan, counts["nav_keys"])
@@ -97,7 +103,7 @@ class PhoneLayout(Layout):
             if child.kind in self.order:
                 self.grow(child, parent="body", gate=gate)
 
-    flip = slider = desk = _kit
+    flip = slider = bar = desk = _kit
 
     def nav_keys(self, node, parent, gate, anchors=None):
         if anchors is not None:  # on the screen half: its own anchors

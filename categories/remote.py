@@ -1,14 +1,16 @@
-"""Remote: a TV remote, an air-conditioner remote with a flip cover or a presenter, lying on its back.
+"""Remote: a TV, streaming or air-conditioner remote, or a presenter, lying on its back.
 
 Designs (``design``, sizes and sources in ``categories/parts/remotes.py``): a ``tv`` remote is a long slab whose
 keys lie in the sections of a real keypad, front to back: power and input keys, streaming shortcut keys, a
 numeric pad, volume and channel keys, a d-pad on a metallic disc with its menu keys, the four colour keys and
 the transport keys (each section but the first three object-wide optional: ``has_numpad`` ...); an ``ac``
 remote has an LCD above its main keys (on/off, temperature, mode, fan) and its timer and swing keys under a
-cover hinged at its back edge (revolute; the keys it covers ``requires_open`` it); a ``presenter`` is a pebble
-with back / forward keys, a laser key and 1-3 more. Every key presses down against its return spring
-(prismatic, role ``button``); the battery door in the underside slides out backwards (prismatic). X is the end
-that points at the set, Y across, Z up.
+cover hinged at its back edge (revolute; the keys it covers ``requires_open`` it); a ``streaming`` remote is a
+slim bar with round ends: power and voice keys, a large round pad (select and four arrows), 3-9 round keys in
+rows of three and optionally app keys, its battery door optional (a rechargeable one has none); a
+``presenter`` is a pebble with back / forward keys, a laser key and 1-3 more. Every key presses down against
+its return spring (prismatic, role ``button``); the battery door in the underside slides out backwards
+(prismatic). X is the end that points at the set, Y across, Z up.
 """
 
 from __future__ import annotations
@@ -32,12 +34,18 @@ VOL and CH pairs and a mute; OK, four arrows and 2-4 of menu, back, home, exit; 
 3-8 transport keys (Samsung BN59, LG AKB, Sony RMT remotes)."""
 
 GRAMMAR = Grammar("remote", {
-    "remote": Node(label="body", one_of={"tv": 0.45, "ac": 0.3, "presenter": 0.25}, choice="design"),
+    "remote": Node(label="body", one_of={"tv": 0.35, "streaming": 0.25, "ac": 0.22, "presenter": 0.18},
+                   choice="design"),
     "tv": Node(required=("top_row", "volume", "navigation", "battery_door"),
                optional={"apps": 0.5, "numpad": 0.65, "colour_keys": 0.55, "playback": 0.45}),
     **{kind: Node(repeat={"key": count}) for kind, count in TV_KEYS.items() if kind != "playback"},
     "playback": Node(repeat={"key": TV_KEYS["playback"]}, optional={"playback_cover": 0.4}),
     "playback_cover": Node(label="lid"),
+    "streaming": Node(required=("stream_top", "stream_pad", "stream_keys"), optional={"apps": 0.5,
+                                                                                     "battery_door": 0.75}),
+    "stream_top": Node(repeat={"key": (1, 2)}),
+    "stream_pad": Node(repeat={"key": 5}),
+    "stream_keys": Node(repeat={"key": (3, 9)}),
     "ac": Node(required=("ac_main", "cover", "battery_door")),
     "ac_main": Node(repeat={"key": (4, 6)}),
     "cover": Node(label="lid", required=("ac_covered",)),
@@ -62,6 +70,7 @@ MATERIALS = {
     "key": ("tone", {t: key for t, (_, key) in TONES.items()}),
     "power": "plastic:red", "app": "plastic:red|blue|black", "trim": "brushed_metal", "lens": "screen:black",
     "lcd": "plastic:light_grey",  # an unlit segment LCD reads pale grey-green under its window
+    "pad": "plastic:black|dark_grey|light_grey", "ring": "plastic:black|dark_grey|blue",
     **{f"key_{c}": f"plastic:{c}" for c in R.COLOURS},
 }
 
@@ -73,12 +82,16 @@ class RemoteLayout(Layout):
         size = self.p["size"]
         if node.choice == "tv":
             self.plan = R.tv_plan(size, counts)
+        elif node.choice == "streaming":
+            self.plan = R.streaming_plan(size, counts)
         elif node.choice == "ac":
             self.plan = R.ac_plan(size, counts["ac_main"], counts["ac_covered"])
         else:
             self.plan = R.presenter_plan(size, counts["presenter_keys"])
-        self.order = [k for k in (*R.TV_SECTIONS, "ac_main", "ac_covered", "presenter_keys") if k in counts]
-        pieces = [R.body(self.plan, "body"), R.window(self.plan, "lens"), *R.section_trim(self.plan)]
+        sections = R.STREAM_SECTIONS if node.choice == "streaming" else R.TV_SECTIONS
+        self.order = [k for k in (*sections, "ac_main", "ac_covered", "presenter_keys") if k in counts]
+        door = kit.one("battery_door") is not None  # a rechargeable streaming remote has no battery bay
+        pieces = [R.body(self.plan, "body", door=door), R.window(self.plan, "lens"), *R.section_trim(self.plan)]
         if node.choice == "ac":
             pieces += R.lcd(self.plan, "lcd", "lens")
         self.add("body", "body", pieces)
@@ -88,7 +101,7 @@ class RemoteLayout(Layout):
         for child in node.children:
             self.grow(child)
 
-    tv = ac = presenter = _kit
+    tv = ac = presenter = streaming = _kit
 
     def _section(self, node, gate=None):
         index = self.order.index(node.kind)
@@ -97,6 +110,7 @@ class RemoteLayout(Layout):
             self.grow(key, at=self.plan.key_frame(index, spot), spot=spot, name=f"{node.kind}_{k}", gate=gate)
 
     top_row = apps = numpad = volume = navigation = colour_keys = ac_main = presenter_keys = _section
+    stream_top = stream_pad = stream_keys = _section
 
     def ac_covered(self, node):
         self._section(node, gate="cover")

@@ -65,3 +65,48 @@ def test_a_camera_carries_strap_lugs_on_its_sides():
         body = next(pc.vertices for pc in bp.parts["body"].pieces if pc.name == "body")
         sides = {int(np.sign(y)) for y in pts[:, 1] if abs(y) > body[:, 1].max() - 1e-6}
         assert len(sides) == count, (design, sides)
+
+
+def _designs(category, seeds=range(100)):
+    from infmob_usd import api
+    from infmob_usd.seeding import streams
+
+    schema = api.get_category(category).schema
+    return {schema.sample(streams(category, s)["params"], {})["design"] for s in seeds}
+
+
+def test_seeds_draw_five_camera_families():
+    assert _designs("camera") == {"dslr", "mirrorless", "compact", "instant", "action"}
+
+
+def _body(bp, name):
+    return next(pc.vertices for pc in bp.parts["body"].pieces if pc.name == name)
+
+
+def test_a_mirrorless_camera_zooms_on_a_slimmer_body_under_its_viewfinder():
+    _, dslr = make(0, design="dslr", has_screen=False)
+    for evf in ("hump", "corner"):
+        _, bp = make(0, design="mirrorless", viewfinder=evf, has_screen=False)
+        barrel = next(j for j in bp.joints if j.child == "barrel")
+        assert barrel.mimic is not None and barrel.mimic.leader == "zoom_ring"  # the kit zoom's ring drives it
+        body = _body(bp, "body")
+        assert np.ptp(body[:, 0]) < np.ptp(_body(dslr, "body")[:, 0])  # no mirror box: a slimmer body
+        assert np.ptp(body[:, 2]) < np.ptp(_body(dslr, "body")[:, 2])
+        if evf == "hump":  # the EVF in a hump over the lens, its eyepiece on the hump's back
+            hump = _body(bp, "evf")
+            assert hump[:, 2].max() > body[:, 2].max() + 0.01
+        else:  # a flat top plate, the eyecup standing out of the back's corner away from the grip (-y)
+            cup = _body(bp, "eyecup")
+            assert not any(pc.name == "evf" for pc in bp.parts["body"].pieces)
+            assert cup[:, 0].min() < body[:, 0].min() - 0.004 and cup[:, 1].min() > 0
+
+
+def test_an_action_camera_has_a_fixed_lens_a_shutter_on_top_and_a_side_door():
+    _, bp = make(0, design="action")
+    moving = {j.child: j.dofs[0].type for j in bp.joints if j.movable}
+    assert moving == {"shutter": "prismatic", "door": "revolute"}
+    body = _body(bp, "body")
+    assert 0.070 <= np.ptp(body[:, 1]) <= 0.073 and np.ptp(body[:, 2]) <= 0.052  # GoPro HERO12, Osmo Action 4
+    lens = _body(bp, "element")
+    assert lens[:, 0].max() > body[:, 0].max()  # the lens stands out of the front
+    assert lens[:, 1].mean() > 0 > _body(bp, "front_screen")[:, 1].mean()  # the status screen beside it

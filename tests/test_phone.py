@@ -60,6 +60,29 @@ def test_a_desk_phones_handset_lifts_out_of_its_cradle():
     assert len(_keys(bp, "keypad_")) == 12 and 3 <= len(_keys(bp, "function_keys_")) <= 10
 
 
+def test_seeds_draw_four_phone_families():
+    from infmob_usd import api
+    from infmob_usd.seeding import streams
+
+    schema = api.get_category("phone").schema
+    assert {schema.sample(streams("phone", s)["params"], {})["design"] for s in range(100)} == {
+        "flip", "slider", "bar", "desk"}
+
+
+def test_a_bar_phone_has_its_screen_over_its_keys_on_one_shell():
+    _, bp = make(0, design="bar", has_battery_cover=True)
+    assert {s.child for s in bp.joints if s.movable and not s.child.startswith(("keypad_", "nav_keys_"))} == {
+        "battery_cover"}  # no lid, no slide: one shell
+    keys = _keys(bp, "keypad_") + _keys(bp, "nav_keys_")
+    assert len(_keys(bp, "keypad_")) == 12 and all(s.requires_open is None for s in keys)
+    body = _points(bp, "body")
+    assert 0.10 <= np.ptp(body[:, 0]) <= 0.115 and 0.043 <= np.ptp(body[:, 1]) <= 0.049  # Nokia 3310, 1100
+    screen = next(pc.vertices for pc in bp.parts["body"].pieces if pc.name == "screen")
+    # lying as picked up, its top end (the screen) away from the front: every key nearer the bottom end
+    assert all(_points(bp, s.child)[:, 0].min() > screen[:, 0].max() for s in keys)
+    assert np.ptp(screen[:, 0]) > 0.22 * np.ptp(body[:, 0])  # a real screen, not a strip
+
+
 def test_a_desk_phones_handset_sits_in_pockets_over_its_hook_switch():
     """Lifted, the handset reads as taken out of its cradle, not floating: each cup sits in a pocket walled on its
     outer end and both sides, clear of the walls, and the hook switch's plunger stands under the grip."""
@@ -91,7 +114,7 @@ def test_a_shells_rims_stand_on_its_floor_hull_not_through_it():
     down through the floor put a second bottom face under a slider's half, and PhysX then pushes the half down
     onto a key it passes 2.5 mm over (seed 236's slider stopped at a third of its travel in SAPIEN's reach
     check)."""
-    for design in ("flip", "slider", "desk"):
+    for design in ("flip", "slider", "bar", "desk"):
         _, bp = make(0, design=design)
         for part in ("body", "slider"):
             if part not in bp.parts:

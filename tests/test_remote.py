@@ -49,9 +49,36 @@ def test_the_keys_under_an_ac_remotes_cover_wait_for_it_to_open():
 
 
 def test_the_battery_door_slides_out_backwards_from_the_underside():
-    for design in ("tv", "ac", "presenter"):
-        _, bp = make(1, design=design)
+    for design in ("tv", "ac", "presenter", "streaming"):
+        _, bp = make(1, design=design, **({"has_battery_door": True} if design == "streaming" else {}))
         door = next(s for s in bp.joints if s.child == "battery_door")
         d = door.dofs[0]
         assert d.type == "prismatic" and d.axis[0] < -0.99 and d.upper > 0.02
         assert _points(bp, "battery_door")[:, 2].max() < 0.005  # in the underside
+
+
+def test_seeds_draw_four_remote_families():
+    from infmob_usd import api
+    from infmob_usd.seeding import streams
+
+    schema = api.get_category("remote").schema
+    assert {schema.sample(streams("remote", s)["params"], {})["design"] for s in range(100)} == {
+        "tv", "streaming", "ac", "presenter"}
+
+
+def test_a_streaming_remote_is_a_slim_bar_with_a_round_pad_and_few_keys():
+    _, bp = make(0, design="streaming", has_battery_door=False, has_apps=False)
+    keys = _keys(bp)
+    assert 9 <= len(keys) <= 16 and all(s.requires_open is None for s in keys)
+    assert not any(s.child == "battery_door" for s in bp.joints)  # rechargeable: no battery bay
+    body = _points(bp, "body")
+    width, length = np.ptp(body[:, 1]), np.ptp(body[:, 0])
+    assert 0.034 <= width <= 0.040 and 0.12 <= length <= 0.16
+    pad = np.array([_points(bp, s.child).mean(0) for s in keys if s.child.startswith("stream_pad_")])
+    assert len(pad) == 5
+    centre, ring = pad[0], pad[1:]
+    reach = np.linalg.norm(ring[:, :2] - centre[:2], axis=1)
+    assert np.ptp(reach) < 1e-4 and reach.min() > 0.35 * width / 2  # four arrows round the select key
+    for s in keys:  # every key within the flat of the face
+        k = _points(bp, s.child)
+        assert np.abs(k[:, 1]).max() < width / 2 - 0.002

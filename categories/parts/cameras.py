@@ -1,5 +1,5 @@
-"""Cameras standing on their base plate: a DSLR with a zoom lens, a compact with a telescoping lens, an
-instant camera.
+"""Cameras standing on their base plate: a DSLR with a zoom lens, a mirrorless camera with a short retracting
+zoom, a compact with a telescoping lens, an instant camera, an action camera.
 
 Local frame: the camera stands on z = 0, its lens along +x, its back (the screen, the film door) at x = 0,
 centred on y = 0; a hand holds the grip at -y (the camera's right, seen from behind). Sizes from the
@@ -19,6 +19,7 @@ from infmob_usd.assembly import Assembly
 from infmob_usd.frames import Frame
 from infmob_usd.grasps import Grasp
 from infmob_usd.physical import MIN_HULL_WIDTH
+from infmob_usd.profiles import sections_for
 
 from .handtools import hull
 from .usb import slab
@@ -52,6 +53,15 @@ DESIGNS = {
     # Fujifilm Instax Mini 12 104 x 122 x 66.6 mm, 306 g; Polaroid Now 150 x 112 x 94 mm, 457 g: the lens barrel
     # pops out ~12 mm to switch on
     "instant": CameraDesign((0.104, 0.118), (0.112, 0.124), (0.060, 0.072), (0.026, 0.031), 0.004, 0.012, 0.0055),
+    # Sony a6400 120 x 66.9 x 59.7 mm (grip included), 403 g; Nikon Z50 126.5 x 93.5 x 60 mm (EVF hump included),
+    # 450 g; Canon EOS R50 116.3 x 85.5 x 68.8 mm, 375 g: a body ~40 mm deep with a shallow grip; kit zooms
+    # Sony E PZ 16-50 (64.7 mm across, 29.9 mm long), Nikon Z DX 16-50 (70 x 32 mm) unlock ~10 mm longer
+    "mirrorless": CameraDesign((0.116, 0.127), (0.066, 0.076), (0.036, 0.044), (0.028, 0.033), 0.036, 0.010,
+                               0.0042),
+    # GoPro HERO12 Black 71.8 x 50.8 x 33.6 mm, 154 g; DJI Osmo Action 4 70.5 x 44.2 x 32.8 mm, 145 g: a block
+    # with a fixed wide-angle lens in a square cover off to one side, a front status screen, the shutter on top
+    # and the battery door on the side; its front element ~18 mm across
+    "action": CameraDesign((0.0705, 0.0720), (0.044, 0.051), (0.026, 0.030), (0.0085, 0.0100), 0.004, 0.0, 0.0040),
 }
 """Designs -> sizes (maker data sheets named beside each)."""
 
@@ -59,7 +69,12 @@ ZOOM_TURN = math.radians(75.0)  # the zoom ring's throw, 18 to 55 mm (EF-S 18-55
 SHUTTER_TRAVEL = 0.0012  # m, half-press and full press of a shutter button (~0.5 + 0.7 mm)
 SCREEN_TILT = math.radians(175.0)  # a tilting screen turns up to face the front for selfies (Sony RX100 III+)
 DOOR_OPENS = math.radians(100.0)  # a side card door or a film door on its hinge
-GRIP_OUT = 0.019  # m, a DSLR grip stands out of the body's front (EOS 250D: 69.8 mm deep overall, ~50 mm body)
+GRIP_OUT = {"dslr": 0.019, "mirrorless": 0.017}
+"""m, how far a grip stands out of the body's front (EOS 250D: 69.8 mm deep overall over a ~50 mm body; a6400:
+59.7 mm over ~42 mm)."""
+VIEWFINDERS = ("hump", "corner")
+"""A mirrorless camera's electronic viewfinder: in a hump over the lens (Nikon Z50, Canon R50, Fujifilm X-T30) or
+in the body's top corner with a flat top plate, rangefinder style (Sony a6400, Fujifilm X-E4)."""
 
 
 @dataclass(frozen=True)
@@ -71,6 +86,7 @@ class Camera:
     lens: float  # radius
     round: float  # 0-1: from crisp to soft edges
     reach: float = 1.0  # a DSLR lens's length and zoom travel over the kit zoom's (1.5: an 18-135 mm)
+    evf: str = "hump"  # a mirrorless camera's viewfinder (:data:`VIEWFINDERS`)
 
     @property
     def length(self) -> float:
@@ -85,28 +101,38 @@ class Camera:
         return DESIGNS[self.design]
 
     @property
+    def interchangeable(self) -> bool:
+        """A body with a lens mount and a grip (DSLR, mirrorless)."""
+        return self.design in GRIP_OUT
+
+    @property
     def edge(self) -> float:
-        return (0.06 + (0.1 if self.design == "dslr" else 0.18) * self.round) * min(self.depth, self.height)
+        soft = {"dslr": 0.1, "mirrorless": 0.12, "action": 0.1}.get(self.design, 0.18)
+        return (0.06 + soft * self.round) * min(self.depth, self.height)
 
     @property
     def axis(self) -> tuple[float, float]:
-        """(y, z) of the lens axis: centred over the base high enough to clear the table."""
-        y = 0.06 * self.width if self.design == "dslr" else (0.18 * self.width if self.design == "compact" else 0.0)
-        z = self.lens + 0.004 if self.design == "dslr" else (0.5 * self.height if self.design == "compact"
-                                                               else 0.42 * self.height)
+        """(y, z) of the lens axis: low on a lens mount (its barrel just clears the table), centred on a compact,
+        above the middle of an instant camera, high and off to the side on an action camera."""
+        y = {"dslr": 0.06, "mirrorless": 0.1, "compact": 0.18, "action": 0.2}.get(self.design, 0.0) * self.width
+        z = {"compact": 0.5, "instant": 0.42, "action": 0.62}.get(self.design, 0.0) * self.height
         return y, max(z, self.lens + 0.004)
 
     @property
     def grip(self) -> tuple[float, float]:
-        """A DSLR grip's width (y) and how far it stands out of the front (x)."""
-        return 0.26 * self.width, GRIP_OUT
+        """A grip's width (y) and how far it stands out of the front (x)."""
+        return (0.26 if self.design == "dslr" else 0.22) * self.width, GRIP_OUT[self.design]
 
 
-def camera(design: str, size: float, shape: float, roundness: float, reach: float = 1.0) -> Camera:
+def camera(design: str, size: float, shape: float, roundness: float, reach: float = 1.0, evf: str = "hump"
+           ) -> Camera:
     d = DESIGNS[design]
     lerp = lambda r, t: r[0] + t * (r[1] - r[0])  # noqa: E731
-    return Camera(design, lerp(d.width, size), lerp(d.height, shape), lerp(d.depth, 1 - shape), lerp(d.lens, size),
-                  roundness, reach if design == "dslr" else 1.0)
+    height, lens = lerp(d.height, shape), lerp(d.lens, size)
+    if design == "mirrorless":  # its mount's flange (4 mm round the lens) stays under the top plate
+        lens = min(lens, 0.5 * height - 0.0045)
+    return Camera(design, lerp(d.width, size), height, lerp(d.depth, 1 - shape), lens, roundness,
+                  reach if design == "dslr" else 1.0, evf)
 
 
 # -- helpers ----------------------------------------------------------------------------------------
@@ -119,7 +145,14 @@ def along_lens(c: Camera, piece: g.Piece) -> g.Piece:
 def tube(c: Camera, r: float, x0: float, x1: float, thick: float, material: str, name: str) -> g.Piece:
     """A hollow tube about the lens axis from x0 to x1, outer radius ``r``."""
     # 24 wedges round: a wedge's inner face is a chord, 0.2-0.3 mm inside a 30 mm bore (8 would be 2 mm)
-    return along_lens(c, g.shell([(r, x0), (r, x1)], thick, material, convex_sectors=24, name=name))
+    return along_lens(c, g.shell([(r, x0), (r, x1)], thick, material, sections=round_sections(r), convex_sectors=24,
+                                 name=name))
+
+
+def round_sections(r: float) -> int:
+    """Sections round a lens's rings and glass: a camera is seen close up, where the 12-16 facets the chord
+    tolerance allows a 1-2 cm ring show as a polygon."""
+    return max(32, sections_for(r))
 
 
 def lens_axis(c: Camera, x: float) -> Frame:
@@ -141,7 +174,7 @@ def _front_glass(c: Camera, r: float, x: float, rim: str, glass: str, mark: str)
     dome[-1] = (0.0, dome[-1][1])
     face = 0.18 * r  # the rim's front face, from its outside inward
     pieces = [tube(c, r, x - 0.003, x, face, rim, "rim"),
-              along_lens(c, g.revolve(dome, glass, name="element")),
+              along_lens(c, g.revolve(dome, glass, sections=round_sections(ge), name="element")),
               g.cylinder((back - 0.0012, y, z), (back - 0.0002, y, z), ge, rim, name="inside").replace(convex=())]
     ring = tube(c, r - 0.62 * face, x, x + 6e-5, 0.08 * face, mark, "print").replace(convex=())
     dashes = []
@@ -195,31 +228,63 @@ def _shell_body(c: Camera, body: str, bore: float, bore_depth: float) -> g.Piece
     return visual.replace(convex=[box_pts(lo, hi) for lo, hi in cells])
 
 
-def dslr_body(c: Camera, body: str, grip: str, metal: str, lens: str, screen: str | None) -> Assembly:
-    """A DSLR body: the block, the hand grip, the pentaprism hump with the hot shoe, the lens mount and the
-    fixed rear barrel of the lens (the zoom ring and the inner barrel are parts of their own), a fixed screen
-    unless it tilts."""
+def mount_body(c: Camera, body: str, grip: str, metal: str, lens: str, screen: str | None) -> Assembly:
+    """A DSLR's or a mirrorless camera's body: the block, the hand grip, the viewfinder (a DSLR's pentaprism
+    hump, a mirrorless camera's EVF hump or corner eyepiece) with the hot shoe, the lens mount and the fixed rear
+    barrel of the lens (the zoom ring and the inner barrel are parts of their own), a fixed screen unless it
+    tilts."""
     w, h, d = c.width, c.height, c.depth
     gw, gd = c.grip
     y, z = c.axis
     pieces = [_shell_body(c, body, 0.0, 0.0),
               slab(d - 0.012, d + gd, gw, 0.92 * h, 0.0, 0.2 * gw, 0.25 * gw, 0.45 * gd, grip, "grip", wall=0.0,
-                   span=SPAN).translated((0.0, -w / 2 + gw / 2, 0.0))]
-    ph = 0.2 * h
-    pieces.append(hull(np.vstack([box_pts((0.18 * d, y - 0.18 * w, h - 0.004), (0.92 * d, y + 0.18 * w, h)),
-                                  box_pts((0.3 * d, y - 0.13 * w, h + ph - 0.001), (0.72 * d, y + 0.13 * w, h + ph))]),
-                       body, "prism"))
-    pieces.append(g.box_between((0.35 * d, y - 0.011, h + ph), (0.65 * d, y + 0.011, h + ph + 0.002), metal,
-                                name="hot_shoe"))
+                   span=SPAN).translated((0.0, -w / 2 + gw / 2, 0.0)),
+              *_finder(c, body, grip, metal, lens)]
     r = c.lens
-    mount = tube(c, r + 0.004, d - 0.001, d + 0.006, 0.006, metal, "mount")
+    # the mount's bright steel flange shows as a thin ring between the body and the lens's black base
+    mount = tube(c, r + 0.004, d - 0.001, d + 0.0022, 0.006, metal, "mount")
+    base = tube(c, r + 0.0025, d + 0.0022, d + 0.006, 0.0045, lens, "lens_base")
     barrel = tube(c, r, d + 0.006, d + c.length * 0.45, 0.004, lens, "barrel")
-    pieces += [mount, barrel, g.cylinder((d + 0.002, y, z), (d + 0.004, y, z), r - 0.004, body, name="throat")]
+    pieces += [mount, base, barrel, g.cylinder((d + 0.002, y, z), (d + 0.004, y, z), r - 0.004, body, name="throat")]
     pieces += strap_lugs(c, metal)
     if screen:
         pieces += _screen_pieces(c, -0.0005, screen, body)
+    # a DSLR's mode dial on the shoulder left of the prism (seen from behind); a mirrorless camera's on the top
+    # plate between the grip and the viewfinder (Nikon Z50, Canon R50, Sony a6400's on the right shoulder)
+    dial = (0.5 * d, 0.34 * w, h) if c.design == "dslr" else (0.45 * d, -0.25 * w, h)
     return Assembly.single("body", pieces, {"shutter": Frame.at((d + 0.5 * gd - 0.006, -w / 2 + 0.5 * gw, 0.92 * h)),
-                                            "dial": Frame.at((0.5 * d, 0.34 * w, h))})
+                                            "dial": Frame.at(dial)})
+
+
+def _finder(c: Camera, body: str, eyecup: str, metal: str, window: str) -> list[g.Piece]:
+    """The viewfinder: a DSLR's pentaprism hump over the lens (tapering to its top, the hot shoe on it); a
+    mirrorless camera's squarer EVF hump, its eyepiece window on its flat back, or a rangefinder-style flat top
+    with the eyepiece's rubber cup standing out of the back's top corner away from the grip and the hot shoe on
+    the plate."""
+    w, h, d = c.width, c.height, c.depth
+    y = c.axis[0]
+    ph = 0.2 * h
+    if c.design == "dslr":
+        hump = hull(np.vstack([box_pts((0.18 * d, y - 0.18 * w, h - 0.004), (0.92 * d, y + 0.18 * w, h)),
+                               box_pts((0.3 * d, y - 0.13 * w, h + ph - 0.001), (0.72 * d, y + 0.13 * w, h + ph))]),
+                    body, "prism")
+        return [hump, g.box_between((0.35 * d, y - 0.011, h + ph), (0.65 * d, y + 0.011, h + ph + 0.002), metal,
+                                    name="hot_shoe")]
+    if c.evf == "hump":
+        ph = 0.22 * h
+        hump = hull(np.vstack([box_pts((0.0, y - 0.16 * w, h - 0.004), (0.85 * d, y + 0.16 * w, h)),
+                               box_pts((0.0, y - 0.12 * w, h + ph - 0.002), (0.62 * d, y + 0.12 * w, h + ph))]),
+                    body, "evf")
+        eyepiece = g.box_between((-3e-4, y - 0.075 * w, h + 0.12 * ph), (1e-4, y + 0.075 * w, h + 0.78 * ph),
+                                 window, bevel=0.0008, name="eyepiece").replace(convex=())
+        return [hump, eyepiece, g.box_between((0.15 * d, y - 0.011, h + ph), (0.5 * d, y + 0.011, h + ph + 0.002),
+                                              metal, name="hot_shoe")]
+    y0, y1, z0, z1 = 0.22 * w, 0.44 * w, 0.72 * h, 0.95 * h
+    cup = g.box_between((-0.006, y0, z0), (0.001, y1, z1), eyecup, bevel=0.002, name="eyecup")
+    eyepiece = g.box_between((-0.0063, y0 + 0.003, z0 + 0.003), (-0.0059, y1 - 0.003, z1 - 0.003), window,
+                             name="eyepiece").replace(convex=())
+    shoe = g.box_between((0.25 * d, y - 0.011, h - 1e-4), (0.6 * d, y + 0.011, h + 0.0018), metal, name="hot_shoe")
+    return [cup, eyepiece, shoe]
 
 
 def _screen_pieces(c: Camera, x_back: float, screen: str, frame: str) -> list[g.Piece]:
@@ -274,6 +339,31 @@ def instant_body(c: Camera, body: str, trim: str, glass: str, stages: int) -> As
               *strap_lugs(c, trim)]
     del y, z
     return Assembly.single("body", pieces, {"shutter": Frame.at((d, -0.36 * w, 0.7 * h), z=(1, 0, 0), x=(0, 0, 1))})
+
+
+def action_body(c: Camera, shell: str, trim: str, element: str, mark: str, screen: str) -> Assembly:
+    """An action camera's block: the fixed wide-angle lens behind its square cover glass off to the +y side of
+    the front, the square status screen beside it, the touch screen over most of the back (GoPro HERO9-12,
+    DJI Osmo Action 3-4)."""
+    w, h, d = c.width, c.height, c.depth
+    y, z = c.axis
+    r, s = c.lens, 1.35 * c.lens  # the square cover: ~26 mm over an ~18 mm front element
+    pieces = [_shell_body(c, shell, 0.0, 0.0),
+              g.box_between((d - 0.001, y - s, z - s), (d + 0.0035, y + s, z + s), trim, bevel=0.0015,
+                            name="lens_cover"),
+              *_front_glass(c, r, d + 0.0065, trim, element, mark)]
+    side = 0.5 * h  # the front status screen (HERO12: 1.4 in square)
+    y1 = y - s - 0.004
+    pieces += [g.box_between((d - 0.001, y1 - side - 0.002, 0.22 * h), (d + 0.0008, y1, 0.22 * h + side + 0.002),
+                             trim, bevel=0.0006, name="front_bezel"),
+               g.box_between((d + 0.0006, y1 - side, 0.22 * h + 0.002), (d + 0.0010, y1 - 0.002, 0.22 * h + side),
+                             screen, name="front_screen").replace(convex=())]
+    t = 0.0012
+    sw, sh = 0.84 * w, 0.78 * h  # the rear touch screen (HERO12: 2.27 in)
+    pieces += [slab(-t, 0.0005, sw, sh, 0.11 * h, 0.002, 0.001, 0.0, trim, "screen_frame", wall=0.0, span=0.0),
+               g.box_between((-t - 2e-4, -0.45 * sw, 0.11 * h + 0.05 * sh),
+                             (-t + 1e-4, 0.45 * sw, 0.11 * h + 0.95 * sh), screen, name="lcd").replace(convex=())]
+    return Assembly.single("body", pieces, {"shutter": Frame.at((0.5 * d, -0.2 * w, h))})
 
 
 # -- moving parts ------------------------------------------------------------------------------------
@@ -346,8 +436,8 @@ def shutter_collar(c: Camera, trim: str) -> g.Piece:
 
 def mode_dial(c: Camera, metal: str, mark: str) -> Assembly:
     """A knurled mode dial standing on the top plate (turns about +z); frame ``mount`` at its foot."""
-    r = 0.011 if c.design == "dslr" else 0.0075
-    hgt = 0.0065 if c.design == "dslr" else 0.0045
+    r = {"dslr": 0.011, "mirrorless": 0.0085}.get(c.design, 0.0075)
+    hgt = {"dslr": 0.0065, "mirrorless": 0.0055}.get(c.design, 0.0045)
     knurl = g.cylinder((0, 0, GAP), (0, 0, GAP + hgt), r, metal, sections=40, name="dial")
     top = g.box_between((0.45 * r, -0.0006, GAP + hgt - 1e-4), (0.9 * r, 0.0006, GAP + hgt + 2e-4), mark,
                         name="index").replace(convex=())

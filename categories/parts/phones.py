@@ -35,6 +35,10 @@ DESIGNS = {
     # (99 x 47 x 16 mm, 99 g): two 7-8 mm halves, the keypad on the lower one
     "slider": Design((0.094, 0.100), (0.045, 0.049), (0.0072, 0.0085), 1.0, 0.14, (0.35, 0.35), (0.80, 0.68),
                      0.0016, 0.0012),
+    # Nokia 3310 (113 x 48 x 22 mm, 133 g), Nokia 1100 (106 x 46 x 20 mm, 86 g), Nokia 6300 (106 x 44 x 12 mm, 91 g):
+    # a candybar, its screen over the navigation keys and the keypad in one shell
+    "bar": Design((0.104, 0.113), (0.044, 0.048), (0.012, 0.020), 1.0, 0.20, (0.40, 0.40), (0.80, 0.68),
+                  0.0016, 0.0012),
     # Panasonic KX-TS500 (corded, 205 x 165 x 85 mm with its handset, 0.6 kg), Cisco IP Phone 7911 (210 x 180 mm),
     # Avaya 1608: a 30-45 mm deck, the handset on its left; keys 2-3 mm proud, 2 mm travel (drawn 1.2 mm)
     "desk": Design((0.190, 0.215), (0.180, 0.215), (0.032, 0.045), 1.0, 0.10, (0.35, 0.20), (0.40, 0.30),
@@ -70,19 +74,23 @@ def _plan(design: str, size: float, sections: list[Section], back: float = 0.0, 
 
 
 # -- keypads ----------------------------------------------------------------------------------------------
-def numpad(width: float, n: int, proud: float, travel: float, span: float = 0.64, shift: float = 0.0) -> Section:
-    """1-9, then *, 0, # (12 keys) in four rows of three; ``shift`` moves the pad across (a desk phone's)."""
-    key = Key((0.0068 if width < 0.1 else 0.011, 0.23 * span * width), "rect", proud, travel)
+def numpad(width: float, n: int, proud: float, travel: float, span: float = 0.64, shift: float = 0.0,
+           dense: bool = False) -> Section:
+    """1-9, then *, 0, # (12 keys) in four rows of three; ``shift`` moves the pad across (a desk phone's);
+    ``dense``: a candybar's short keys at an 8 mm pitch (Nokia 3310, 1100)."""
+    mobile = 0.0054 if dense else 0.0068
+    key = Key((mobile if width < 0.1 else 0.011, 0.23 * span * width), "rect", proud, travel)
     ys = [y + shift for y in R._cols(3, span * width)]
-    pitch = key.size[0] + (0.0032 if width < 0.1 else 0.006)
+    pitch = key.size[0] + ((0.0025 if dense else 0.0032) if width < 0.1 else 0.006)
     spots = [Spot(-0.004 - pitch * (k // 3), ys[k % 3], key) for k in range(n)]
     return Section(pitch * ((n + 2) // 3) + 0.002, tuple(spots))
 
 
-def navigation(width: float, n: int, proud: float, travel: float) -> Section:
-    """A mobile phone's navigation keys: a round d-pad (OK and four arrows) between the two soft keys, the green
-    call and red end keys below them (5 + 2 + 2), and 0-2 more (clear, menu) beside the end keys."""
-    rd = 0.19 * width
+def navigation(width: float, n: int, proud: float, travel: float, pad: float = 0.19) -> Section:
+    """A mobile phone's navigation keys: a round d-pad (OK and four arrows; ``pad``: its radius over the width)
+    between the two soft keys, the green call and red end keys below them (5 + 2 + 2), and 0-2 more (clear,
+    menu) beside the end keys."""
+    rd = pad * width
     ok = Key((0.7 * rd, 0.7 * rd), "round", proud, travel)
     arrow = Key((0.28 * rd, 0.62 * rd), "pill", proud, travel)
     cx, reach = -rd - 0.001, 0.62 * rd
@@ -155,6 +163,30 @@ def flip_lid(p: Plan, body: str, screen: str, lens: str) -> Assembly:
     grip = Grasp.make((-p.length / 2, 0, z), (1, 0, 0), (0, 0, 1), t + 0.004, 0.004)
     return Assembly.single("lid", [slab.with_grasps(grip), knuckle, inner, outer, cam],
                            {"hinge": Frame.at((x, 0, z), z=(0, 1, 0), x=(1, 0, 0))})
+
+
+# -- a bar phone ------------------------------------------------------------------------------------------
+def bar_plan(size: float, nav: int, keys: int) -> Plan:
+    """A candybar's shell: the navigation keys and the keypad run down from under its screen to 6 mm from its
+    bottom end, the screen over the top 40 % (Nokia 3310: a 30 mm screen over 60 mm of keys)."""
+    d = DESIGNS["bar"]
+    width = _size(d, size)[1]
+    secs = [navigation(width, nav, d.proud, d.travel, pad=0.16), numpad(width, keys, d.proud, d.travel, dense=True)]
+    return _plan("bar", size, secs, 0.006)
+
+
+def bar_face(p: Plan, screen: str, bezel: str) -> list[g.Piece]:
+    """A candybar's face above its keys: the screen in a dark window and the earpiece slot over it (drawn on
+    the shell, which collides)."""
+    x0, x1 = p.tops[0] + 0.003, p.length / 2 - 0.011
+    hw = 0.38 * p.width
+    frame = g.box_between((x0 - 0.002, -hw - 0.002, p.thick - 0.0008), (x1 + 0.002, hw + 0.002, p.thick + 0.0003),
+                          bezel, bevel=0.0004).replace(convex=())
+    glass = g.box_between((x0, -hw, p.thick), (x1, hw, p.thick + 0.0005), screen, name="screen").replace(convex=())
+    slot = g.box_between((x1 + 0.003, -0.08 * p.width, p.thick - 0.0005), (x1 + 0.0045, 0.08 * p.width,
+                                                                            p.thick + 0.0002), bezel,
+                         bevel=0.0005).replace(convex=())
+    return [frame, glass, slot]
 
 
 # -- a slider phone ----------------------------------------------------------------------------------------

@@ -70,6 +70,11 @@ DESIGNS = {
     # (125 x 32 x 18 mm), Targus AMP13 (113 x 36 x 22 mm): a pebble, wider at the keys, 2 x AAA
     "presenter": Design((0.105, 0.125), (0.033, 0.040), (0.018, 0.025), 0.82, 0.42, (0.50, 0.22), (1.25, 0.72),
                         0.0015, 0.0010),
+    # Amazon Fire TV Alexa Voice Remote 3rd gen (142 x 38 x 17 mm, 2 x AAA), Chromecast with Google TV Voice Remote
+    # (122 x 38 x 17 mm, 2 x AAA), Apple Siri Remote 2021 (136 x 35 x 9.3 mm, 63 g, built-in battery): a slim bar
+    # with round ends, a large round pad and a dozen keys or fewer
+    "streaming": Design((0.122, 0.145), (0.035, 0.039), (0.011, 0.018), 1.0, 0.45, (0.30, 0.40), (1.35, 0.62),
+                        0.0012, 0.0010),
 }
 """Designs -> sizes (maker spec sheets and retail listings named beside each)."""
 
@@ -375,6 +380,46 @@ def tv_plan(size: float, counts: dict[str, int]) -> Plan:
     width = d.width[0] + size * (d.width[1] - d.width[0])
     secs = [TV_SECTIONS[k](width, counts[k], d.proud, d.travel) for k in TV_SECTIONS if k in counts]
     return plan("tv", size, secs)
+
+
+# -- a streaming-stick remote -------------------------------------------------------------------------------
+def stream_top(width: float, n: int, proud: float, travel: float) -> Section:
+    """Power and the voice (microphone) key, side by side; or the voice key alone (Chromecast's remote)."""
+    key = Key((0.0068, 0.0068), "round", proud, travel)
+    return Section(0.010, tuple(Spot(-0.005, y, key) for y in _cols(n, 0.42 * width)))
+
+
+def stream_pad(width: float, n: int, proud: float, travel: float) -> Section:
+    """The round pad that fills the remote's width: the select key in a ring of four arrow segments (Fire TV,
+    Roku, Chromecast), on a dark printed ring."""
+    rd = 0.36 * width
+    ok = Key((0.8 * rd, 0.8 * rd), "round", proud, travel)
+    arrow = Key((0.24 * rd, 0.62 * rd), "pill", proud, travel)
+    cx, reach = -rd - 0.001, 0.7 * rd
+    spots = [Spot(cx, 0.0, ok, "pad")] + [Spot(cx + reach * math.cos(a), reach * math.sin(a), arrow, "key", a)
+                                          for a in (0.0, math.pi / 2, math.pi, 3 * math.pi / 2)][:n - 1]
+    # printed, 0.2 mm high: a key pressed its whole travel sinks to it, not under it
+    ring = g.disc((cx, 0.0, 0.0001), rd, 0.0002, "ring", None).replace(convex=())
+    return Section(2 * rd + 0.002, tuple(spots), (ring,))
+
+
+def stream_keys(width: float, n: int, proud: float, travel: float) -> Section:
+    """Back, home and menu; rewind, play / pause and forward; volume and mute: round keys three to a row."""
+    key = Key((0.0072, 0.0072), "round", proud, travel)
+    ys = _cols(3, 0.56 * width)
+    spots = [Spot(-0.006 - 0.0105 * (k // 3), ys[k % 3], key) for k in range(n)]
+    return Section(0.0105 * ((n + 2) // 3) + 0.002, tuple(spots))
+
+
+STREAM_SECTIONS = {"stream_top": stream_top, "stream_pad": stream_pad, "stream_keys": stream_keys, "apps": apps}
+"""A streaming remote's sections, front to back, as on Fire TV, Roku and Chromecast voice remotes."""
+
+
+def streaming_plan(size: float, counts: dict[str, int]) -> Plan:
+    d = DESIGNS["streaming"]
+    width = d.width[0] + size * (d.width[1] - d.width[0])
+    secs = [STREAM_SECTIONS[k](width, counts[k], d.proud, d.travel) for k in STREAM_SECTIONS if k in counts]
+    return plan("streaming", size, secs)
 
 
 # -- an air-conditioner remote ------------------------------------------------------------------------------
