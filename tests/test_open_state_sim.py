@@ -75,13 +75,17 @@ def test_a_leaf_swinging_shut_keeps_the_meeting_gap_from_its_twin():
 
     from collide import overlap
 
-    category, seed, overrides = FUZZ_12345_FIXED["kitchen_door_stalls_on_its_twin_leaf"]
-    obj = infmob_usd.generate(category, seed, texture_size=16, **overrides)
-    leaf, twin = obj.link("door_2_1"), obj.link("door_2_0")  # the twin on the leaf's -Y side
-    nearer = obj.poses({})["door_2_0"].copy()
+    # the fuzz draw's corner unit no longer has a double door (a column beside a corner is column_width wide,
+    # at most 0.6 m): the same fronts on a sink base's double door
+    _, _, overrides = FUZZ_12345_FIXED["kitchen_door_stalls_on_its_twin_leaf"]
+    overrides = {k: v for k, v in overrides.items() if k not in ("design", "sink_width")}
+    obj = infmob_usd.generate("kitchen_cabinet", 0, texture_size=16, **overrides)
+    leaf, twin = obj.link("door_sink_1"), obj.link("door_sink_0")  # the twin on the leaf's -Y side
+    assert twin.origin[1] < leaf.origin[1]
+    nearer = obj.poses({})["door_sink_0"].copy()
     nearer[1, 3] += 0.0025  # the twin moved 2.5 mm towards the leaf: the leaf must still pass it
     for a in np.linspace(0.0, 0.15, 11):
-        pose = obj.poses({"joint_door_2_1": float(a)})["door_2_1"]
+        pose = obj.poses({"joint_door_sink_1": float(a)})["door_sink_1"]
         assert overlap(leaf, pose, twin, nearer) < 1e-10, a
 
 

@@ -174,7 +174,7 @@ def test_the_overlap_check_finds_a_unit_pushed_into_the_wall(tmp_path):
     folder = save_scene(scene("kitchen", 2, texture_size=16, layout="single_wall"), tmp_path)
     rec = json.loads((folder / "scene.json").read_text())
     unit = next(o for o in rec["objects"] if o["category"] == "kitchen_cabinet")
-    unit["position"][0] -= 0.05  # 5 cm into the north wall
+    unit["position"][0] -= 0.15  # 15 cm back: a sink base is open at the back, its hulls start ~8 cm in
     from infmob_usd.validate.scene import _overlaps, load_sapien_scene
 
     sim, contexts = load_sapien_scene(folder, rec)

@@ -86,7 +86,7 @@ def spout(s: Spout, slot: str, rings: int = 14, sections: int = 24) -> g.Piece:
             o0, o1, p0, p1 = k * m + i, k * m + j, (k + 1) * m + i, (k + 1) * m + j
             faces += [(o0, p0, p1), (o0, p1, o1)]  # outer skin
             faces += [(n * m + o0, n * m + o1, n * m + p1), (n * m + o0, n * m + p1, n * m + p0)]  # inner skin
-    for k, flip in ((0, False), (n - 1, True)):  # the end annuli
+    for k, flip in ((0, True), (n - 1, False)):  # the end annuli, run against the skins they close
         for i in range(m):
             j = (i + 1) % m
             quad = [(k * m + i, n * m + k * m + i, n * m + k * m + j), (k * m + i, n * m + k * m + j, k * m + j)]
